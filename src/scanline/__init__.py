@@ -1,0 +1,47 @@
+"""scanline: the classic computer-graphics pipeline, as taught and as fast as C.
+
+The public surface is loaded lazily, so ``import scanline`` is quick and does not
+import numba; the compiled kernels load on first use.
+
+>>> import scanline as sl
+>>> fb = sl.FrameBuffer(8, 4, mode="1")
+>>> sl.draw.line(fb, 0, 0, 7, 3)
+>>> print(sl.text_image(fb))
+......##
+....##..
+..##....
+##......
+"""
+
+import importlib
+
+__version__ = "0.1.0"
+
+_LAZY = {
+    "FrameBuffer": ("scanline.framebuffer", "FrameBuffer"),
+    "text_image": ("scanline.framebuffer", "text_image"),
+    "ScanlineError": ("scanline.errors", "ScanlineError"),
+    "ArgumentValueError": ("scanline.errors", "ArgumentValueError"),
+    "ArgumentTypeError": ("scanline.errors", "ArgumentTypeError"),
+    "draw": ("scanline.draw", None),
+    "trace": ("scanline.trace", None),
+    "color": ("scanline.color", None),
+}
+
+__all__ = sorted(_LAZY) + ["__version__"]
+
+
+def __getattr__(name):
+    try:
+        module, attr = _LAZY[name]
+    except KeyError:
+        raise AttributeError(f"module 'scanline' has no attribute {name!r}") from None
+    value = importlib.import_module(module)
+    if attr is not None:
+        value = getattr(value, attr)
+    globals()[name] = value
+    return value
+
+
+def __dir__():
+    return __all__

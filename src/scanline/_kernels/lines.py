@@ -1,0 +1,218 @@
+"""Line scan conversion: DDA and Bresenham (notes, chapter 2, Q.1-Q.3).
+
+Both kernels work in every octant by naming the axes: ``u`` is the major axis (the one
+stepped by one pixel per iteration) and ``w`` the minor axis.  Lines are clipped to
+the frame buffer before the loop starts, so a line from -10**9 to 10**9 costs only the
+pixels that can be seen; the per-pixel bounds check in ``put`` makes any error in that
+clipping harmless.
+"""
+
+import math
+
+from ._jit import inline, kernel
+from .raster import put
+
+BRESENHAM = 0
+DDA = 1
+
+
+@inline
+def step_range(u0, su, du, w0, sw, dw, umax, wmax):
+    """Steps ``i`` in [0, du] whose pixel (u0 + su*i, w0 + sw*i*dw/du) may lie in
+    [0, umax] x [0, wmax]; a conservative ``(lo, hi)``, empty when ``lo > hi``."""
+    if su > 0:
+        lo = max(0, -u0)
+        hi = min(du, umax - u0)
+    else:
+        lo = max(0, u0 - umax)
+        hi = min(du, u0)
+    if lo > hi:
+        return 1, 0
+    if dw == 0:
+        if w0 < 0 or w0 > wmax:
+            return 1, 0
+        return lo, hi
+    slope = du / dw
+    if sw > 0:
+        a = (-w0 - 1) * slope
+        b = (wmax - w0 + 1) * slope
+    else:
+        a = (w0 - wmax - 1) * slope
+        b = (w0 + 1) * slope
+    a = max(a, -1.0)
+    b = min(b, du + 1.0)
+    lo = max(lo, int(math.floor(a)) - 1)
+    hi = min(hi, int(math.ceil(b)) + 1)
+    return lo, hi
+
+
+@inline
+def bresenham_setup(x0, y0, x1, y1):
+    """Name the axes as the notes' algorithm needs them.
+
+    Returns ``(swap, u0, w0, du, dw, sw)``: the line starts at its left endpoint when
+    x is the major axis (|dy| <= |dx|, notes: "store the left end point in (x0, y0)")
+    and at its lower endpoint when y is (``swap``); ``du >= dw >= 0`` and ``sw`` is the
+    direction (+1 or -1) of the minor axis.
+    """
+    swap = abs(y1 - y0) > abs(x1 - x0)
+    if swap:
+        if y0 > y1:
+            x0, y0, x1, y1 = x1, y1, x0, y0
+        return swap, y0, x0, y1 - y0, abs(x1 - x0), 1 if x1 >= x0 else -1
+    if x0 > x1:
+        x0, y0, x1, y1 = x1, y1, x0, y0
+    return swap, x0, y0, x1 - x0, abs(y1 - y0), 1 if y1 >= y0 else -1
+
+
+@inline
+def bresenham_decide(p, two_dw, two_dw_minus_two_du):
+    """One step of the notes' decision: if p_k < 0 keep the minor coordinate and
+    add 2dy, otherwise advance it and add 2dy - 2dx.  Returns (p_k+1, advance)."""
+    if p < 0:
+        return p + two_dw, 0
+    return p + two_dw_minus_two_du, 1
+
+
+@inline
+def bresenham_state(i, du, dw):
+    """The loop's state after ``i`` steps, in closed form: the minor offset
+    j_i = floor((2*dw*i + du) / (2*du)) and p_i = 2dw(i+1) - du - 2du*j_i, computed
+    without overflow for du, dw, i < 2**31."""
+    if du == 0:
+        return 0, 2 * dw - du
+    q = (dw * i) // du
+    r = dw * i - q * du
+    t = (2 * r + du) // (2 * du)
+    return q + t, 2 * dw + 2 * r - 2 * du * t - du
+
+
+@inline
+def bresenham_line(buf, packed, width, height, x0, y0, x1, y1, color):
+    """Draw the line (x0, y0)-(x1, y1), both endpoints included, with Bresenham's
+    integer decision parameter."""
+    swap, u0, w0, du, dw, sw = bresenham_setup(x0, y0, x1, y1)
+    if swap:
+        lo, hi = step_range(u0, 1, du, w0, sw, dw, height - 1, width - 1)
+    else:
+        lo, hi = step_range(u0, 1, du, w0, sw, dw, width - 1, height - 1)
+    if lo > hi:
+        return
+    j, p = bresenham_state(lo, du, dw)
+    two_dw = 2 * dw
+    two_dw_minus_two_du = 2 * dw - 2 * du
+    for i in range(lo, hi + 1):
+        if swap:
+            put(buf, packed, width, height, w0 + sw * j, u0 + i, color)
+        else:
+            put(buf, packed, width, height, u0 + i, w0 + sw * j, color)
+        p, advance = bresenham_decide(p, two_dw, two_dw_minus_two_du)
+        j += advance
+
+
+@inline
+def nearest(v):
+    """Round half up to the nearest integer: the notes' round()."""
+    return int(math.floor(v + 0.5))
+
+
+@inline
+def dda_setup(x0, y0, x1, y1):
+    """Steps and increments of the DDA: ``steps = max(|dx|, |dy|)`` and the
+    per-step increments dx/steps, dy/steps (one of them is +-1)."""
+    dx = x1 - x0
+    dy = y1 - y0
+    steps = max(abs(dx), abs(dy))
+    if steps == 0:
+        return 0, 0.0, 0.0
+    return steps, dx / steps, dy / steps
+
+
+@inline
+def dda_line(buf, packed, width, height, x0, y0, x1, y1, color):
+    """Draw the line (x0, y0)-(x1, y1) with the DDA: x and y are real numbers
+    incremented by dx/steps and dy/steps from the first endpoint, and each point is
+    rounded to the nearest pixel."""
+    steps, xinc, yinc = dda_setup(x0, y0, x1, y1)
+    if abs(x1 - x0) >= abs(y1 - y0):
+        lo, hi = step_range(x0, 1 if x1 >= x0 else -1, steps, y0, 1 if y1 >= y0 else -1,
+                            abs(y1 - y0), width - 1, height - 1)
+    else:
+        lo, hi = step_range(y0, 1 if y1 >= y0 else -1, steps, x0, 1 if x1 >= x0 else -1,
+                            abs(x1 - x0), height - 1, width - 1)
+    if lo > hi:
+        return
+    x = float(x0)
+    y = float(y0)
+    if lo > 0:  # clipped start: jump instead of accumulating invisible steps
+        x += lo * xinc
+        y += lo * yinc
+    for _ in range(lo, hi + 1):
+        put(buf, packed, width, height, nearest(x), nearest(y), color)
+        x += xinc
+        y += yinc
+
+
+@inline
+def any_line(buf, packed, width, height, x0, y0, x1, y1, color, method):
+    if method == DDA:
+        dda_line(buf, packed, width, height, x0, y0, x1, y1, color)
+    else:
+        bresenham_line(buf, packed, width, height, x0, y0, x1, y1, color)
+
+
+@kernel
+def draw_line(buf, packed, width, height, x0, y0, x1, y1, color, method):
+    """Draw one line; ``method`` is BRESENHAM or DDA."""
+    any_line(buf, packed, width, height, x0, y0, x1, y1, color, method)
+
+
+@kernel
+def draw_lines(buf, packed, width, height, segments, colors, method):
+    """Draw N lines, ``segments[i] = (x0, y0, x1, y1)``, with ``colors[i]`` (or
+    ``colors[0]`` for all when ``colors`` has one row)."""
+    one = colors.shape[0] == 1
+    for i in range(segments.shape[0]):
+        s = segments[i]
+        any_line(buf, packed, width, height, s[0], s[1], s[2], s[3],
+                 colors[0] if one else colors[i], method)
+
+
+@kernel
+def bresenham_trace(x0, y0, x1, y1, out):
+    """Fill ``out`` (shape (du, 4), int64) with the notes' table: for k = 0 ..
+    du-1 the decision parameter p_k, the pixel (x_k+1, y_k+1) it selects, and the
+    increment added to p.  Returns ``(swap, u0, w0, du, dw, sw)``."""
+    swap, u0, w0, du, dw, sw = bresenham_setup(x0, y0, x1, y1)
+    j, p = bresenham_state(0, du, dw)
+    two_dw = 2 * dw
+    two_dw_minus_two_du = 2 * dw - 2 * du
+    for k in range(du):
+        p_next, advance = bresenham_decide(p, two_dw, two_dw_minus_two_du)
+        j += advance
+        u = u0 + k + 1
+        w = w0 + sw * j
+        out[k, 0] = p
+        out[k, 1] = w if swap else u
+        out[k, 2] = u if swap else w
+        out[k, 3] = p_next - p
+        p = p_next
+    return swap, u0, w0, du, dw, sw
+
+
+@kernel
+def dda_trace(x0, y0, x1, y1, out):
+    """Fill ``out`` (shape (steps + 1, 4), float64) with the DDA's real x and y at
+    k = 0 .. steps (k = 0 is the first endpoint) and the pixel they round to.
+    Returns (steps, xinc, yinc)."""
+    steps, xinc, yinc = dda_setup(x0, y0, x1, y1)
+    x = float(x0)
+    y = float(y0)
+    for k in range(steps + 1):
+        out[k, 0] = x
+        out[k, 1] = y
+        out[k, 2] = nearest(x)
+        out[k, 3] = nearest(y)
+        x += xinc
+        y += yinc
+    return steps, xinc, yinc

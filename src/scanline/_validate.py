@@ -1,0 +1,119 @@
+"""Argument checking shared by the functional API.
+
+Each helper takes the argument's *name* so that the message names it, shows the value
+that was given and says what would work (DESIGN.md, convention 7).
+"""
+
+import math
+import numbers
+
+import numpy as np
+
+from .errors import ArgumentTypeError, ArgumentValueError
+
+#: Largest magnitude accepted for a device coordinate.  Within +-2**30 every
+#: scan-conversion kernel does exact int64 arithmetic (products such as
+#: ``dy * (x - x0)`` stay below 2**62); anything drawn outside the frame buffer is
+#: clipped.
+COORD_LIMIT = 2**30
+
+
+def _show(value):
+    text = repr(value)
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+def number(name, value):
+    """Return ``value`` as a finite float, or raise naming ``name``."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise ArgumentTypeError(
+            f"{name} must be a real number, got {_show(value)} of type {type(value).__name__}"
+        )
+    v = float(value)
+    if not math.isfinite(v):
+        raise ArgumentValueError(f"{name} must be a finite number, got {_show(value)}")
+    return v
+
+
+def coordinate(name, value):
+    """Round a device coordinate to the nearest pixel center (halves round up).
+
+    Returns a Python int within +-COORD_LIMIT.
+    """
+    if type(value) is int:  # fast path: most calls pass plain ints
+        v = value
+    else:
+        v = math.floor(number(name, value) + 0.5)
+    if -COORD_LIMIT <= v <= COORD_LIMIT:
+        return v
+    raise ArgumentValueError(
+        f"{name}={_show(value)} is outside the supported coordinate range "
+        f"[-{COORD_LIMIT}, {COORD_LIMIT}]; anything drawn beyond the frame buffer is "
+        "clipped anyway"
+    )
+
+
+def radius(name, value, limit=COORD_LIMIT):
+    """Round a radius to an int in [0, limit], or raise naming ``name``."""
+    v = value if type(value) is int else math.floor(number(name, value) + 0.5)
+    if v < 0:
+        raise ArgumentValueError(f"{name} must be >= 0, got {_show(value)}")
+    if v > limit:
+        raise ArgumentValueError(f"{name}={_show(value)} is too large; the limit is {limit}")
+    return v
+
+
+def choice(name, value, options):
+    """Check that ``value`` is one of ``options`` (a tuple of strings)."""
+    if isinstance(value, str) and value in options:
+        return value
+    listed = ", ".join(repr(o) for o in options)
+    raise ArgumentValueError(f"{name} must be one of {listed}; got {_show(value)}")
+
+
+def positive_int(name, value, minimum=1):
+    """Check an integer size argument (``width``, ``height`` ...)."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+        raise ArgumentTypeError(
+            f"{name} must be an integer, got {_show(value)} of type {type(value).__name__}"
+        )
+    if value < minimum:
+        raise ArgumentValueError(f"{name} must be >= {minimum}, got {value}")
+    return int(value)
+
+
+def coordinate_array(name, value, columns, radius_columns=()):
+    """Convert an (N, columns) array of primitives to int64, rounding to pixels.
+
+    ``radius_columns`` lists the columns that hold radii, which must be >= 0.
+    """
+    try:
+        a = np.asarray(value, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise ArgumentTypeError(
+            f"{name} must be a numeric array of shape (N, {columns}), got {_show(value)}"
+        ) from None
+    if a.ndim == 1 and a.size == columns:
+        a = a.reshape(1, columns)
+    if a.ndim != 2 or a.shape[1] != columns:
+        raise ArgumentValueError(
+            f"{name} must have shape (N, {columns}), got shape {a.shape}"
+        )
+    if not np.isfinite(a).all():
+        row = int(np.argwhere(~np.isfinite(a))[0][0])
+        raise ArgumentValueError(
+            f"{name} must be finite; row {row} is {a[row].tolist()}"
+        )
+    if a.size and np.abs(a).max() > COORD_LIMIT:
+        row = int(np.argwhere(np.abs(a) > COORD_LIMIT)[0][0])
+        raise ArgumentValueError(
+            f"{name} row {row} = {a[row].tolist()} is outside the supported coordinate "
+            f"range [-{COORD_LIMIT}, {COORD_LIMIT}]"
+        )
+    for c in radius_columns:
+        if a.size and (a[:, c] < 0).any():
+            row = int(np.argwhere(a[:, c] < 0)[0][0])
+            raise ArgumentValueError(
+                f"{name} column {c} holds radii, which must be >= 0; row {row} is {a[row].tolist()}"
+            )
+    return np.ascontiguousarray(np.floor(a + 0.5).astype(np.int64))

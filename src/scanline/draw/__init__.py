@@ -1,0 +1,12 @@
+"""Output primitives drawn into a :class:`~scanline.FrameBuffer` (notes, chapter 2).
+
+Every function takes the frame buffer first, device coordinates (x right, y up,
+pixel centers at integers) and a ``color``.  Anything outside the frame buffer is
+clipped.  Batch functions (``lines``, ``circles``, ``ellipses``) take N primitives as
+one array and draw them in one compiled call.
+"""
+
+from .lines import line, lines
+from .conics import circle, circles, ellipse, ellipses
+
+__all__ = ["line", "lines", "circle", "circles", "ellipse", "ellipses"]

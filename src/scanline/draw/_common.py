@@ -1,0 +1,65 @@
+"""Argument handling shared by the drawing functions."""
+
+import numpy as np
+
+from ..errors import ArgumentTypeError, ArgumentValueError
+from ..framebuffer import FrameBuffer
+
+
+def target(fb):
+    """Check that ``fb`` is a FrameBuffer; return ``(buf, packed, width, height)``."""
+    if not isinstance(fb, FrameBuffer):
+        raise ArgumentTypeError(f"fb must be a scanline.FrameBuffer, got {type(fb).__name__}")
+    buf, packed = fb._raster()
+    return buf, packed, fb.width, fb.height
+
+
+def _direct(fb, a, name):
+    """Per-primitive values given as an integer array: (N,) bits / gray levels /
+    indices, or (N, 3|4) RGB(A) for an RGB or RGBA frame buffer.  None if the array
+    needs per-color conversion."""
+    if not np.issubdtype(a.dtype, np.integer):
+        raise ArgumentTypeError(f"{name} array must hold integers, got dtype {a.dtype}")
+    mode = fb.mode
+    if a.ndim == 1 and mode in ("L", "P", "1"):
+        top = {"L": 255, "1": 1, "P": len(fb.color_table) - 1 if mode == "P" else 0}[mode]
+        if a.size and (a.min() < 0 or a.max() > top):
+            raise ArgumentValueError(f"{name} values must be in 0..{top} for mode {mode!r}")
+        return a.astype(np.uint8)[:, None]
+    if a.ndim == 2 and mode in ("RGB", "RGBA") and a.shape[1] in (3, 4):
+        if a.size and (a.min() < 0 or a.max() > 255):
+            raise ArgumentValueError(f"{name} values must be in 0..255")
+        if mode == "RGB":
+            return a[:, :3].astype(np.uint8)
+        if a.shape[1] == 4:
+            return a.astype(np.uint8)
+        return np.hstack([a.astype(np.uint8), np.full((len(a), 1), 255, np.uint8)])
+    return None
+
+
+def colors(fb, color, n, name="color"):
+    """Pixel values for N primitives, shape (1, channels) or (n, channels).
+
+    A string, tuple or integer is one color for all.  A list holds one color spec per
+    primitive; an integer array holds N bits / gray levels / color-table indices, or
+    an (N, 3|4) array of RGB(A) values.
+    """
+    if not isinstance(color, (list, np.ndarray)):
+        return fb.pixel(color, name)[None, :]
+    if len(color) != n:
+        raise ArgumentValueError(
+            f"{name} holds {len(color)} colors but there are {n} primitives; give one "
+            "color per primitive, or a single color (a string, tuple or integer)"
+        )
+    if isinstance(color, np.ndarray):
+        if color.ndim not in (1, 2):
+            raise ArgumentValueError(f"{name} array must have shape (N,) or (N, 3|4), got {color.shape}")
+        direct = _direct(fb, color, name)
+        if direct is not None:
+            return direct
+        color = [tuple(row.tolist()) if color.ndim == 2 else int(row) for row in color]
+    channels = fb._raster()[0].shape[2]
+    out = np.empty((n, channels), np.uint8)
+    for i, spec in enumerate(color):
+        out[i] = fb.pixel(spec, f"{name}[{i}]")
+    return out

@@ -1,0 +1,141 @@
+"""Circles and ellipses by the midpoint method (notes, chapter 2, Q.4-Q.6)."""
+
+import numpy as np
+
+from .. import _validate as v
+from .._kernels import conics as k
+from ..errors import ArgumentValueError
+from ._common import colors, target
+
+#: Ellipse limits: the decision parameters stay exact in 64-bit integers while
+#: r_x * r_y <= 2**29, and one ellipse takes at most r_x + r_y steps.
+ELLIPSE_AXIS_LIMIT = 2**24
+ELLIPSE_PRODUCT_LIMIT = 2**29
+
+
+def circle(fb, xc, yc, r, color="white"):
+    """Draw the circle of radius ``r`` about ``(xc, yc)`` by the midpoint algorithm.
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+    xc, yc : number
+        Center, rounded to the nearest pixel center.
+    r : number
+        Radius >= 0, rounded to an integer; r = 0 draws the center pixel.
+    color : color
+
+    Notes
+    -----
+    Notes, chapter 2, Q.4-Q.5: the octant from (0, r) to the diagonal is computed
+    with p_0 = 1 - r and the increments 2x_k+1 + 1 (p_k < 0) or 2x_k+1 + 1 - 2y_k+1,
+    and mirrored into the other seven octants; each pixel is written once.  Only the
+    part of a large circle that can be visible is computed.
+
+    References
+    ----------
+    J. E. Bresenham, "A linear algorithm for incremental digital display of circular
+    arcs", Communications of the ACM 20(2), 100-106, 1977.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> fb = sl.FrameBuffer(7, 7, mode="1")
+    >>> sl.draw.circle(fb, 3, 3, 3)
+    >>> print(sl.text_image(fb))
+    ..###..
+    .#...#.
+    #.....#
+    #.....#
+    #.....#
+    .#...#.
+    ..###..
+    """
+    buf, packed, width, height = target(fb)
+    k.draw_circle(buf, packed, width, height, v.coordinate("xc", xc), v.coordinate("yc", yc),
+                  v.radius("r", r), fb.pixel(color))
+
+
+def circles(fb, circles, color="white"):
+    """Draw N circles in one compiled call; ``circles`` has rows ``(xc, yc, r)``.
+
+    ``color`` is one color or one per circle (see :func:`line` and :func:`lines`).
+    """
+    buf, packed, width, height = target(fb)
+    arr = v.coordinate_array("circles", circles, 3, radius_columns=(2,))
+    k.draw_circles(buf, packed, width, height, arr, colors(fb, color, len(arr)))
+
+
+def _check_ellipse(rx, ry, name="rx * ry"):
+    if max(rx, ry) > ELLIPSE_AXIS_LIMIT or rx * ry > ELLIPSE_PRODUCT_LIMIT:
+        raise ArgumentValueError(
+            f"ellipse radii rx={rx}, ry={ry} are too large: the midpoint ellipse needs "
+            f"rx, ry <= {ELLIPSE_AXIS_LIMIT} and rx * ry <= {ELLIPSE_PRODUCT_LIMIT} for exact "
+            "64-bit decision parameters"
+        )
+
+
+def ellipse(fb, xc, yc, rx, ry, color="white"):
+    """Draw the axis-aligned ellipse with semi-axes ``rx``, ``ry`` about ``(xc, yc)``
+    by the midpoint algorithm.
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+    xc, yc : number
+        Center, rounded to the nearest pixel center.
+    rx, ry : number
+        Semi-axes >= 0, rounded to integers (rx * ry <= 2**29).  ``ry = 0`` or
+        ``rx = 0`` draws the degenerate ellipse, a segment; both 0 the center pixel.
+    color : color
+
+    Notes
+    -----
+    Notes, chapter 2, Q.6: region 1 (|slope| < 1) steps x from (0, r_y) with
+    p1_0 = r_y^2 - r_x^2 r_y + r_x^2/4 until 2 r_y^2 x >= 2 r_x^2 y; region 2 steps y
+    down to 0 with p2_0 = r_y^2 (x + 1/2)^2 + r_x^2 (y - 1)^2 - r_x^2 r_y^2; four-way
+    symmetry gives the other quadrants.  Decision parameters are kept times 4, so
+    they are exact integers (the notes round them).  One addition to the notes: a very
+    flat ellipse can leave region 2 at y = 0 before x reaches r_x; the remaining run
+    to (r_x, 0) is drawn (shown as region "tip" by ``scanline trace``).
+
+    References
+    ----------
+    D. Hearn and M. P. Baker, *Computer Graphics*, 2nd ed., section 3-7 (the
+    midpoint ellipse algorithm); M. L. V. Pitteway, "Algorithm for drawing ellipses
+    or hyperbolae with a digital plotter", Computer Journal 10(3), 282-289, 1967.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> fb = sl.FrameBuffer(9, 5, mode="1")
+    >>> sl.draw.ellipse(fb, 4, 2, 4, 2)
+    >>> print(sl.text_image(fb))
+    ..#####..
+    ##.....##
+    #.......#
+    ##.....##
+    ..#####..
+    """
+    buf, packed, width, height = target(fb)
+    rx = v.radius("rx", rx)
+    ry = v.radius("ry", ry)
+    _check_ellipse(rx, ry)
+    k.draw_ellipse(buf, packed, width, height, v.coordinate("xc", xc), v.coordinate("yc", yc),
+                   rx, ry, fb.pixel(color))
+
+
+def ellipses(fb, ellipses, color="white"):
+    """Draw N ellipses in one compiled call; ``ellipses`` has rows ``(xc, yc, rx, ry)``.
+
+    ``color`` is one color or one per ellipse.
+    """
+    buf, packed, width, height = target(fb)
+    arr = v.coordinate_array("ellipses", ellipses, 4, radius_columns=(2, 3))
+    if len(arr):
+        big = (np.maximum(arr[:, 2], arr[:, 3]) > ELLIPSE_AXIS_LIMIT) | (
+            arr[:, 2].astype(np.float64) * arr[:, 3] > ELLIPSE_PRODUCT_LIMIT)
+        if big.any():
+            row = int(np.flatnonzero(big)[0])
+            _check_ellipse(int(arr[row, 2]), int(arr[row, 3]))
+    k.draw_ellipses(buf, packed, width, height, arr, colors(fb, color, len(arr)))

@@ -1,0 +1,96 @@
+"""Straight lines: ``line`` and ``lines`` (notes, chapter 2, Q.1-Q.3, Q.7)."""
+
+from .. import _validate as v
+from .._kernels import lines as k
+from ._common import colors, target
+
+METHODS = {"bresenham": k.BRESENHAM, "dda": k.DDA}
+
+
+def _method(method):
+    code = METHODS.get(method) if isinstance(method, str) else None
+    if code is None:
+        v.choice("method", method, tuple(METHODS))
+    return code
+
+
+def line(fb, x0, y0, x1, y1, color="white", method="bresenham"):
+    """Draw the line segment from (x0, y0) to (x1, y1), both endpoints included.
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+    x0, y0, x1, y1 : number
+        Endpoints in device coordinates, rounded to the nearest pixel center
+        (halves round up); within +-2**30.  What falls outside ``fb`` is clipped.
+    color : color
+        See :mod:`scanline.color`.
+    method : {"bresenham", "dda"}
+        ``"bresenham"``: integer decision parameter, exact.  ``"dda"``: the digital
+        differential analyzer, real increments dx/steps and dy/steps rounded to the
+        nearest pixel at each step.
+
+    Notes
+    -----
+    Notes, chapter 2, Q.1 (DDA), Q.2-Q.3 (Bresenham) and Q.7 (why DDA is slower and
+    drifts).  Bresenham scans from the left endpoint when x is the major axis
+    (|dy| <= |dx|) and from the lower endpoint otherwise, as the notes prescribe, so
+    the pixels do not depend on the endpoint order.
+
+    *Tie rule.*  When the line passes exactly halfway between the two candidate
+    pixels (p_k = 0), the notes' test "p_k < 0 keeps y" takes the step: the minor
+    coordinate advances, away from the start endpoint.  The DDA rounds halves up
+    (floor(v + 0.5)) in absolute coordinates and follows the endpoints in the order
+    given; its accumulated floating-point error can move a tie either way.
+
+    References
+    ----------
+    J. E. Bresenham, "Algorithm for computer control of a digital plotter",
+    IBM Systems Journal 4(1), 25-30, 1965.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> fb = sl.FrameBuffer(6, 3, mode="1")
+    >>> sl.draw.line(fb, 0, 0, 5, 2)
+    >>> print(sl.text_image(fb))
+    ....##
+    ..##..
+    ##....
+    """
+    buf, packed, width, height = target(fb)
+    code = _method(method)
+    k.draw_line(buf, packed, width, height,
+                v.coordinate("x0", x0), v.coordinate("y0", y0),
+                v.coordinate("x1", x1), v.coordinate("y1", y1),
+                fb.pixel(color), code)
+
+
+def lines(fb, segments, color="white", method="bresenham"):
+    """Draw N line segments in one compiled call.
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+    segments : array_like, shape (N, 4)
+        Rows ``(x0, y0, x1, y1)``, rounded to pixel centers like :func:`line`.
+    color : color or list/array of N colors
+        One color for all, or one per segment (see :func:`scanline.draw._common.colors`).
+    method : {"bresenham", "dda"}
+
+    Examples
+    --------
+    >>> import numpy as np, scanline as sl
+    >>> fb = sl.FrameBuffer(5, 5, mode="1")
+    >>> sl.draw.lines(fb, np.array([[0, 0, 4, 4], [0, 4, 4, 0]]))
+    >>> print(sl.text_image(fb))
+    #...#
+    .#.#.
+    ..#..
+    .#.#.
+    #...#
+    """
+    buf, packed, width, height = target(fb)
+    code = _method(method)
+    segs = v.coordinate_array("segments", segments, 4)
+    k.draw_lines(buf, packed, width, height, segs, colors(fb, color, len(segs)), code)

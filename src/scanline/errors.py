@@ -1,0 +1,19 @@
+"""Exceptions raised by scanline.
+
+Every error the package raises on purpose derives from :class:`ScanlineError`, so
+``except scanline.ScanlineError`` catches them all.  Bad arguments raise
+:class:`ArgumentValueError` or :class:`ArgumentTypeError`, which are also plain
+``ValueError`` / ``TypeError``: code that expects the built-in types keeps working.
+"""
+
+
+class ScanlineError(Exception):
+    """Base class of every error raised by scanline."""
+
+
+class ArgumentValueError(ScanlineError, ValueError):
+    """An argument has the right type but a value scanline cannot use."""
+
+
+class ArgumentTypeError(ScanlineError, TypeError):
+    """An argument has a type scanline cannot use."""

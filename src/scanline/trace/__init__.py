@@ -1,0 +1,23 @@
+"""Step tables: each algorithm run step by step, as the notes tabulate it.
+
+Each function returns a :class:`Table`: ``print(table)`` shows it, ``table.rows`` is a
+list of dicts keyed by the notes' column names (``k``, ``p``, ``x``, ``y`` ...),
+``table.to_json()`` and ``table.to_csv()`` export it, and ``table.pixels()`` is the set
+of pixels the algorithm plots, the same set :mod:`scanline.draw` draws.
+
+The command line gives the same tables: ``scanline trace bresenham 20 10 30 18``.
+"""
+
+from .table import Table
+from .lines import bresenham, dda
+from .conics import midpoint_circle, midpoint_ellipse
+
+#: CLI name -> function
+ALGORITHMS = {
+    "bresenham": bresenham,
+    "dda": dda,
+    "midpoint-circle": midpoint_circle,
+    "midpoint-ellipse": midpoint_ellipse,
+}
+
+__all__ = ["Table", "bresenham", "dda", "midpoint_circle", "midpoint_ellipse", "ALGORITHMS"]

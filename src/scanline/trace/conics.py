@@ -1,0 +1,122 @@
+"""Step tables of the midpoint circle and ellipse (notes, chapter 2, Q.4-Q.6)."""
+
+import numpy as np
+
+from .. import _validate as v
+from .._kernels import conics as k
+from ..draw.conics import _check_ellipse
+from .table import Table
+
+MAX_RADIUS = 100_000
+_REGIONS = {k.REGION_1: "1", k.REGION_2: "2", k.TIP: "tip"}
+
+
+def _center(center):
+    if center is None:
+        return 0, 0
+    try:
+        xc, yc = center
+    except (TypeError, ValueError):
+        raise v.ArgumentTypeError(f"center must be a pair (xc, yc), got {center!r}") from None
+    return v.coordinate("center x", xc), v.coordinate("center y", yc)
+
+
+def _mirror4(xc, yc, a, b):
+    return {(xc + a, yc + b), (xc - a, yc + b), (xc + a, yc - b), (xc - a, yc - b)}
+
+
+def _radius(name, r):
+    r = v.radius(name, r)
+    if r > MAX_RADIUS:
+        raise v.ArgumentValueError(f"{name}={r}: a trace lists every step; use {name} <= {MAX_RADIUS}")
+    return r
+
+
+def _quarters(value):
+    """A decision parameter kept times 4, as the notes' exact value."""
+    return value // 4 if value % 4 == 0 else value / 4
+
+
+def midpoint_circle(r, center=None):
+    """The midpoint circle algorithm step by step: k, p_k, the point
+    (x_k+1, y_k+1) of the octant from (0, r) to the diagonal, and 2x_k+1, 2y_k+1.
+
+    ``center=(xc, yc)`` adds the plotted pixel (xc + x, yc + y) to each row; the
+    other seven octants follow by symmetry.
+
+    >>> t = midpoint_circle(10)
+    >>> [(r["p"], r["x"], r["y"]) for r in t.rows]
+    [(-9, 1, 10), (-6, 2, 10), (-1, 3, 10), (6, 4, 9), (-3, 5, 9), (8, 6, 8), (5, 7, 7)]
+    """
+    r = _radius("r", r)
+    xc, yc = _center(center)
+    out = np.zeros((r + 1, 3), np.int64)
+    n = k.circle_trace(r, out)
+    columns = ["k", "p", "x", "y", "2x", "2y"]
+    rows = []
+    for i, (p, x, y) in enumerate(out[:n].tolist()):
+        row = {"k": i, "p": p, "x": x, "y": y, "2x": 2 * x, "2y": 2 * y}
+        if center is not None:
+            row["xc+x"], row["yc+y"] = xc + x, yc + y
+        rows.append(row)
+    if center is not None:
+        columns += ["xc+x", "yc+y"]
+    pixels = set()
+    for x, y in [(0, r)] + [(row["x"], row["y"]) for row in rows]:
+        pixels |= _mirror4(xc, yc, x, y) | _mirror4(xc, yc, y, x)
+    notes = [
+        f"start at (x0, y0) = (0, {r}), p0 = 1 - r = {1 - r}, 2x0 = 0, 2y0 = {2 * r}",
+        "p_k < 0: next point (x_k + 1, y_k), p_k+1 = p_k + 2x_k+1 + 1;",
+        "otherwise (x_k + 1, y_k - 1), p_k+1 = p_k + 2x_k+1 + 1 - 2y_k+1; stop when x >= y",
+        f"eight-way symmetry about the center ({xc}, {yc}) gives the other octants",
+    ]
+    return Table(f"Midpoint circle r = {r}, center ({xc}, {yc})", columns, rows, notes, pixels)
+
+
+def midpoint_ellipse(rx, ry, center=None):
+    """The midpoint ellipse algorithm step by step, both regions: region, k, p1_k or
+    p2_k, the point (x_k+1, y_k+1), 2 r_y^2 x_k+1 and 2 r_x^2 y_k+1.
+
+    ``k`` restarts at 0 in region 2, as in the notes.  Rows of region ``"tip"``
+    complete a very flat ellipse along y = 0 (see :func:`scanline.draw.ellipse`).
+
+    >>> t = midpoint_ellipse(8, 6)
+    >>> [(r["region"], r["p"], r["x"], r["y"]) for r in t.rows]  # doctest: +NORMALIZE_WHITESPACE
+    [('1', -332, 1, 6), ('1', -224, 2, 6), ('1', -44, 3, 6), ('1', 208, 4, 5),
+     ('1', -108, 5, 5), ('1', 288, 6, 4), ('1', 244, 7, 3),
+     ('2', -23, 8, 2), ('2', 361, 8, 1), ('2', 297, 8, 0)]
+    """
+    rx = _radius("rx", rx)
+    ry = _radius("ry", ry)
+    _check_ellipse(rx, ry)
+    xc, yc = _center(center)
+    out = np.zeros((rx + ry + 1, 6), np.int64)
+    n = k.ellipse_trace(rx, ry, out)
+    columns = ["region", "k", "p", "x", "y", "2ry2x", "2rx2y"]
+    rows = []
+    counter = {}
+    for region, p4, x, y, px, py in out[:n].tolist():
+        name = _REGIONS[region]
+        i = counter.get(name, 0)
+        counter[name] = i + 1
+        row = {"region": name, "k": i, "p": None if name == "tip" else _quarters(p4),
+               "x": x, "y": y, "2ry2x": px, "2rx2y": py}
+        if center is not None:
+            row["xc+x"], row["yc+y"] = xc + x, yc + y
+        rows.append(row)
+    if center is not None:
+        columns += ["xc+x", "yc+y"]
+    pixels = set()
+    for x, y in [(0, ry)] + [(row["x"], row["y"]) for row in rows]:
+        pixels |= _mirror4(xc, yc, x, y)
+    p10 = _quarters(4 * ry * ry - 4 * rx * rx * ry + rx * rx)
+    notes = [
+        f"r_x^2 = {rx * rx}, r_y^2 = {ry * ry}, 2r_x^2 = {2 * rx * rx}, 2r_y^2 = {2 * ry * ry}",
+        f"region 1 starts at (0, {ry}): p1_0 = r_y^2 - r_x^2 r_y + r_x^2/4 = {p10}; "
+        "p1_k < 0 keeps y, otherwise y - 1; it ends when 2r_y^2 x >= 2r_x^2 y",
+        "region 2 starts at region 1's last point: p2_0 = r_y^2 (x + 1/2)^2 + r_x^2 (y - 1)^2 "
+        "- r_x^2 r_y^2; p2_k > 0 keeps x, otherwise x + 1; it ends at y = 0",
+        f"four-way symmetry about the center ({xc}, {yc}) gives the other quadrants",
+    ]
+    return Table(f"Midpoint ellipse r_x = {rx}, r_y = {ry}, center ({xc}, {yc})",
+                 columns, rows, notes, pixels)

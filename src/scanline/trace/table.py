@@ -1,0 +1,68 @@
+"""The step table returned by every tracer."""
+
+import csv
+import io
+import json
+
+
+def _cell(value):
+    if value is None:
+        return ""
+    if isinstance(value, float):
+        text = f"{value:.6f}".rstrip("0").rstrip(".")
+        return "0" if text == "-0" else text
+    return str(value)
+
+
+class Table:
+    """Rows of an algorithm's steps.
+
+    Attributes
+    ----------
+    title : str
+        What was traced.
+    notes : list of str
+        Set-up lines printed above the table (constants, initial values).
+    columns : list of str
+        Column names, in order; the keys of each row.
+    rows : list of dict
+        One dict per step.
+    """
+
+    def __init__(self, title, columns, rows, notes=(), pixels=()):
+        self.title = title
+        self.columns = list(columns)
+        self.rows = list(rows)
+        self.notes = list(notes)
+        self._pixels = frozenset(pixels)
+
+    def pixels(self):
+        """The set of (x, y) pixels that the algorithm plots, symmetry included."""
+        return set(self._pixels)
+
+    def __len__(self):
+        return len(self.rows)
+
+    def __repr__(self):
+        return f"<Table {self.title!r}: {len(self.rows)} rows>"
+
+    def __str__(self):
+        cells = [[_cell(r.get(c)) for c in self.columns] for r in self.rows]
+        widths = [max([len(c)] + [len(row[i]) for row in cells]) for i, c in enumerate(self.columns)]
+        line = "  ".join(c.rjust(w) for c, w in zip(self.columns, widths))
+        out = [self.title] + self.notes + ["", line, "  ".join("-" * w for w in widths)]
+        out += ["  ".join(v.rjust(w) for v, w in zip(row, widths)) for row in cells]
+        return "\n".join(out)
+
+    def to_json(self, indent=None):
+        """The rows as a JSON list of objects keyed by the column names."""
+        return json.dumps(self.rows, indent=indent)
+
+    def to_csv(self):
+        """The rows as CSV text with a header line."""
+        out = io.StringIO()
+        writer = csv.DictWriter(out, fieldnames=self.columns, lineterminator="\n")
+        writer.writeheader()
+        for row in self.rows:
+            writer.writerow({c: _cell(row.get(c)) for c in self.columns})
+        return out.getvalue()

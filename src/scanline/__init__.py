@@ -7,10 +7,10 @@ import numba; the compiled kernels load on first use.
 >>> fb = sl.FrameBuffer(8, 4, mode="1")
 >>> sl.draw.line(fb, 0, 0, 7, 3)
 >>> print(sl.text_image(fb))
-......##
-....##..
-..##....
-##......
+------##
+----##--
+--##----
+##------
 """
 
 import importlib

@@ -406,15 +406,15 @@ class FrameBuffer:
         return out.getvalue()
 
 
-def text_image(fb, on="#", off="."):
+def text_image(fb, on="#", off="-"):
     """The frame buffer as text, top row first: ``on`` where a pixel differs from
     the background, ``off`` elsewhere.  Handy in doctests and terminals.
 
     >>> fb = FrameBuffer(3, 2, mode="L")
     >>> fb.set_pixel(2, 0, 200)
     >>> print(text_image(fb))
-    ...
-    ..#
+    ---
+    --#
     """
     if not isinstance(fb, FrameBuffer):
         raise ArgumentTypeError(f"fb must be a scanline.FrameBuffer, got {type(fb).__name__}")

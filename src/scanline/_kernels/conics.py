@@ -9,7 +9,7 @@ blending writes.
 
 import math
 
-from ._jit import inline, kernel
+from ._jit import helper, inline, kernel
 from .raster import put
 
 #: Ellipse region labels in traces; TIP is the run along y = 0 that completes flat
@@ -20,23 +20,26 @@ TIP = 3
 
 
 @inline
-def plot4(buf, packed, width, height, xc, yc, a, b, color):
-    """Plot (xc +- a, yc +- b), each distinct pixel once."""
-    put(buf, packed, width, height, xc + a, yc + b, color)
-    if a != 0:
-        put(buf, packed, width, height, xc - a, yc + b, color)
-    if b != 0:
-        put(buf, packed, width, height, xc + a, yc - b, color)
-        if a != 0:
-            put(buf, packed, width, height, xc - a, yc - b, color)
+def mirror4(k, a, b):
+    """The k-th (0..3) of the four mirror images (+-a, +-b), and whether it is a
+    new pixel: images on an axis coincide and are plotted once."""
+    if k == 0:
+        return a, b, True
+    if k == 1:
+        return -a, b, a != 0
+    if k == 2:
+        return a, -b, b != 0
+    return -a, -b, a != 0 and b != 0
 
 
 @inline
-def plot8(buf, packed, width, height, xc, yc, x, y, color):
-    """Eight-way symmetry: plot (x, y) mirrored into all octants, once each."""
-    plot4(buf, packed, width, height, xc, yc, x, y, color)
-    if x != y:
-        plot4(buf, packed, width, height, xc, yc, y, x, color)
+def mirror8(k, x, y):
+    """The k-th (0..7) of the eight-way images of (x, y) (notes, Q.4: "determine
+    symmetry points in other seven octants"), and whether it is a new pixel."""
+    if k < 4:
+        return mirror4(k, x, y)
+    a, b, new = mirror4(k - 4, y, x)
+    return a, b, new and x != y
 
 
 @inline
@@ -61,7 +64,7 @@ def isqrt(n):
     return s
 
 
-@inline
+@helper
 def circle_state(x, r):
     """The midpoint circle's (y, p) at column ``x`` (0 <= x < r), in closed form.
 
@@ -77,6 +80,55 @@ def circle_state(x, r):
 
 
 @inline
+def run_start(a, b, x, start):
+    """Fold the run [a, b] into ``start``, the first column >= x of any run."""
+    if b >= x and a <= b:
+        s = max(a, x)
+        if start < 0 or s < start:
+            return s
+    return start
+
+
+@inline
+def run_end(a, b, end):
+    """Extend ``end`` through the run [a, b] if it overlaps or touches it."""
+    if a <= end + 1 and b > end:
+        return b
+    return end
+
+
+@helper
+def next_run(xc, yc, width, height, x):
+    """The next run of octant columns, from column ``x`` on, in which one of the
+    eight mirrored pixels can lie on the raster: a column x is needed only if xc + x,
+    xc - x, yc + x or yc - x is in range.  Returns ``(start, end)``, or (-1, -1)."""
+    a0, b0 = -xc, width - 1 - xc
+    a1, b1 = xc - width + 1, xc
+    a2, b2 = -yc, height - 1 - yc
+    a3, b3 = yc - height + 1, yc
+    start = run_start(a3, b3, x, run_start(a2, b2, x, run_start(a1, b1, x, run_start(a0, b0, x, -1))))
+    if start < 0:
+        return -1, -1
+    end = start
+    for _ in range(4):  # each pass merges at least one more run, if any is left
+        end = run_end(a3, b3, run_end(a2, b2, run_end(a1, b1, run_end(a0, b0, end))))
+    return start, end
+
+
+@helper
+def circle_run(buf, packed, width, height, xc, yc, x, y, p, end, color):
+    """The notes' loop over octant columns x .. end (or to the diagonal), each
+    point plotted eight ways.  Returns the state (x, y, p) after it."""
+    while x <= end and x <= y:
+        for k in range(8):  # one call site of put keeps the loop fast
+            a, b, new = mirror8(k, x, y)
+            if new:
+                put(buf, packed, width, height, xc + a, yc + b, color)
+        x, y, p = circle_step(x, y, p)
+    return x, y, p
+
+
+@helper
 def midpoint_circle(buf, packed, width, height, xc, yc, r, color):
     """Draw the circle of radius r >= 0 about (xc, yc).
 
@@ -87,50 +139,46 @@ def midpoint_circle(buf, packed, width, height, xc, yc, r, color):
     """
     if xc + r < 0 or xc - r > width - 1 or yc + r < 0 or yc - r > height - 1:
         return
-    # runs of x in which xc + x, xc - x, yc + x or yc - x is on the raster
-    runs = (-xc, width - 1 - xc, xc - width + 1, xc, -yc, height - 1 - yc, yc - height + 1, yc)
     x = 0
     y = r
     p = 1 - r
     while x <= y:
-        start = -1
-        for k in range(4):
-            a = runs[2 * k]
-            b = runs[2 * k + 1]
-            if b >= x and a <= b:
-                s = max(a, x)
-                if start < 0 or s < start:
-                    start = s
+        start, end = next_run(xc, yc, width, height, x)
         if start < 0:
             return
-        end = start
-        for k in range(4):
-            if runs[2 * k] <= start and runs[2 * k + 1] > end:
-                end = runs[2 * k + 1]
         if start != x:
-            x = start
-            if x >= r:  # y(x) <= 0 < x: past the diagonal
+            if start >= r:  # y(x) <= 0 < x: past the diagonal
                 return
+            x = start
             y, p = circle_state(x, r)
-        while x <= end and x <= y:
-            plot8(buf, packed, width, height, xc, yc, x, y, color)
-            x, y, p = circle_step(x, y, p)
+        x, y, p = circle_run(buf, packed, width, height, xc, yc, x, y, p, end, color)
 
 
 @kernel
 def draw_circle(buf, packed, width, height, xc, yc, r, color):
     """Draw one midpoint circle."""
-    midpoint_circle(buf, packed, width, height, xc, yc, r, color)
+    if packed:
+        midpoint_circle(buf, True, width, height, xc, yc, r, color)
+    else:
+        midpoint_circle(buf, False, width, height, xc, yc, r, color)
+
+
+@helper
+def circles_loop(buf, packed, width, height, circles, colors):
+    one = colors.shape[0] == 1
+    for i in range(circles.shape[0]):
+        c = circles[i]
+        midpoint_circle(buf, packed, width, height, c[0], c[1], c[2], colors[0] if one else colors[i])
 
 
 @kernel
 def draw_circles(buf, packed, width, height, circles, colors):
     """Draw N circles, ``circles[i] = (xc, yc, r)``, with ``colors[i]`` (or
     ``colors[0]`` for all)."""
-    one = colors.shape[0] == 1
-    for i in range(circles.shape[0]):
-        c = circles[i]
-        midpoint_circle(buf, packed, width, height, c[0], c[1], c[2], colors[0] if one else colors[i])
+    if packed:
+        circles_loop(buf, True, width, height, circles, colors)
+    else:
+        circles_loop(buf, False, width, height, circles, colors)
 
 
 @kernel
@@ -202,48 +250,80 @@ def ellipse_region2_step(x, y, p, px, py, rx2, ry2):
     return x, y, p, px, py
 
 
-@inline
-def midpoint_ellipse(buf, packed, width, height, xc, yc, rx, ry, color):
-    """Draw the axis-aligned ellipse with semi-axes rx, ry >= 0 about (xc, yc).
+@helper
+def ellipse_next(region, x, y, p, px, py, rx, rx2, ry2):
+    """Advance the midpoint ellipse by one point.
 
-    Region 1 runs while 2 r_y^2 x < 2 r_x^2 y, region 2 while y > 0.  When the
-    ellipse is so flat that region 2 reaches y = 0 before x = r_x (region 2 can
-    advance x by at most one per row), the run along y = 0 is completed to x = r_x
-    (the "tip"); for r_y = 0 the ellipse is the segment from xc - rx to xc + rx.
+    Returns ``(region, x, y, p_k, p, px, py)``: the region of the new point, the
+    point, the decision parameter p_k that chose it (times 4; 0 in the tip) and the
+    state after it.  ``region`` 0 means the quadrant is complete.  Region 1 runs
+    while 2 r_y^2 x < 2 r_x^2 y, region 2 while y > 0; then the tip completes a
+    flat ellipse along y = 0 up to x = r_x (region 2 advances x by at most one per
+    row, so a very flat ellipse reaches y = 0 early).
     """
+    if region == REGION_1 and px >= py:
+        region = REGION_2
+        p = ellipse_region2_start(x, y, rx2, ry2)
+    if region == REGION_2 and y <= 0:
+        region = TIP
+    p_k = p
+    if region == REGION_1:
+        x, y, p, px, py = ellipse_region1_step(x, y, p, px, py, rx2, ry2)
+    elif region == REGION_2:
+        x, y, p, px, py = ellipse_region2_step(x, y, p, px, py, rx2, ry2)
+    elif x < rx:
+        x += 1
+        px += 2 * ry2
+        p_k = 0
+    else:
+        region = 0
+    return region, x, y, p_k, p, px, py
+
+
+@helper
+def midpoint_ellipse(buf, packed, width, height, xc, yc, rx, ry, color):
+    """Draw the axis-aligned ellipse with semi-axes rx, ry >= 0 about (xc, yc)
+    (for r_y = 0 the segment from xc - rx to xc + rx)."""
     if xc + rx < 0 or xc - rx > width - 1 or yc + ry < 0 or yc - ry > height - 1:
         return
     rx2 = rx * rx
     ry2 = ry * ry
     x, y, p, px, py = ellipse_region1_start(rx, ry)
-    plot4(buf, packed, width, height, xc, yc, x, y, color)
-    while px < py:
-        x, y, p, px, py = ellipse_region1_step(x, y, p, px, py, rx2, ry2)
-        plot4(buf, packed, width, height, xc, yc, x, y, color)
-    p = ellipse_region2_start(x, y, rx2, ry2)
-    while y > 0:
-        x, y, p, px, py = ellipse_region2_step(x, y, p, px, py, rx2, ry2)
-        plot4(buf, packed, width, height, xc, yc, x, y, color)
-    while x < rx:
-        x += 1
-        plot4(buf, packed, width, height, xc, yc, x, 0, color)
+    region = REGION_1
+    while region != 0:
+        for k in range(4):
+            a, b, new = mirror4(k, x, y)
+            if new:
+                put(buf, packed, width, height, xc + a, yc + b, color)
+        region, x, y, _, p, px, py = ellipse_next(region, x, y, p, px, py, rx, rx2, ry2)
 
 
 @kernel
 def draw_ellipse(buf, packed, width, height, xc, yc, rx, ry, color):
     """Draw one midpoint ellipse."""
-    midpoint_ellipse(buf, packed, width, height, xc, yc, rx, ry, color)
+    if packed:
+        midpoint_ellipse(buf, True, width, height, xc, yc, rx, ry, color)
+    else:
+        midpoint_ellipse(buf, False, width, height, xc, yc, rx, ry, color)
+
+
+@helper
+def ellipses_loop(buf, packed, width, height, ellipses, colors):
+    one = colors.shape[0] == 1
+    for i in range(ellipses.shape[0]):
+        e = ellipses[i]
+        midpoint_ellipse(buf, packed, width, height, e[0], e[1], e[2], e[3],
+                         colors[0] if one else colors[i])
 
 
 @kernel
 def draw_ellipses(buf, packed, width, height, ellipses, colors):
     """Draw N ellipses, ``ellipses[i] = (xc, yc, rx, ry)``, with ``colors[i]`` (or
     ``colors[0]`` for all)."""
-    one = colors.shape[0] == 1
-    for i in range(ellipses.shape[0]):
-        e = ellipses[i]
-        midpoint_ellipse(buf, packed, width, height, e[0], e[1], e[2], e[3],
-                         colors[0] if one else colors[i])
+    if packed:
+        ellipses_loop(buf, True, width, height, ellipses, colors)
+    else:
+        ellipses_loop(buf, False, width, height, ellipses, colors)
 
 
 @kernel
@@ -254,36 +334,16 @@ def ellipse_trace(rx, ry, out):
     rx2 = rx * rx
     ry2 = ry * ry
     x, y, p, px, py = ellipse_region1_start(rx, ry)
+    region = REGION_1
     n = 0
-    while px < py:
-        p_k = p
-        x, y, p, px, py = ellipse_region1_step(x, y, p, px, py, rx2, ry2)
-        out[n, 0] = REGION_1
+    while True:
+        region, x, y, p_k, p, px, py = ellipse_next(region, x, y, p, px, py, rx, rx2, ry2)
+        if region == 0:
+            return n
+        out[n, 0] = region
         out[n, 1] = p_k
         out[n, 2] = x
         out[n, 3] = y
         out[n, 4] = px
         out[n, 5] = py
         n += 1
-    p = ellipse_region2_start(x, y, rx2, ry2)
-    while y > 0:
-        p_k = p
-        x, y, p, px, py = ellipse_region2_step(x, y, p, px, py, rx2, ry2)
-        out[n, 0] = REGION_2
-        out[n, 1] = p_k
-        out[n, 2] = x
-        out[n, 3] = y
-        out[n, 4] = px
-        out[n, 5] = py
-        n += 1
-    while x < rx:
-        x += 1
-        px += 2 * ry2
-        out[n, 0] = TIP
-        out[n, 1] = 0
-        out[n, 2] = x
-        out[n, 3] = 0
-        out[n, 4] = px
-        out[n, 5] = 0
-        n += 1
-    return n

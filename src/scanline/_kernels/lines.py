@@ -9,14 +9,14 @@ clipping harmless.
 
 import math
 
-from ._jit import inline, kernel
+from ._jit import helper, inline, kernel
 from .raster import put
 
 BRESENHAM = 0
 DDA = 1
 
 
-@inline
+@helper
 def step_range(u0, su, du, w0, sw, dw, umax, wmax):
     """Steps ``i`` in [0, du] whose pixel (u0 + su*i, w0 + sw*i*dw/du) may lie in
     [0, umax] x [0, wmax]; a conservative ``(lo, hi)``, empty when ``lo > hi``."""
@@ -46,7 +46,7 @@ def step_range(u0, su, du, w0, sw, dw, umax, wmax):
     return lo, hi
 
 
-@inline
+@helper
 def bresenham_setup(x0, y0, x1, y1):
     """Name the axes as the notes' algorithm needs them.
 
@@ -65,7 +65,7 @@ def bresenham_setup(x0, y0, x1, y1):
     return swap, x0, y0, x1 - x0, abs(y1 - y0), 1 if y1 >= y0 else -1
 
 
-@inline
+@helper
 def bresenham_decide(p, two_dw, two_dw_minus_two_du):
     """One step of the notes' decision: if p_k < 0 keep the minor coordinate and
     add 2dy, otherwise advance it and add 2dy - 2dx.  Returns (p_k+1, advance)."""
@@ -87,20 +87,57 @@ def bresenham_state(i, du, dw):
     return q + t, 2 * dw + 2 * r - 2 * du * t - du
 
 
-@inline
-def bresenham_line(buf, packed, width, height, x0, y0, x1, y1, color):
-    """Draw the line (x0, y0)-(x1, y1), both endpoints included, with Bresenham's
-    integer decision parameter."""
-    swap, u0, w0, du, dw, sw = bresenham_setup(x0, y0, x1, y1)
-    if swap:
-        lo, hi = step_range(u0, 1, du, w0, sw, dw, height - 1, width - 1)
+@helper
+def bresenham_first(target, du, dw):
+    """Smallest step i in [0, du] with j_i >= target (du + 1 if there is none)."""
+    if target <= 0:
+        return 0
+    if target > dw:
+        return du + 1
+    # j_i >= J  <=>  i >= (2 du J - du) / (2 dw); estimate in floating point (the
+    # exact product can reach 2**63), then settle it with the exact j_i.
+    i = min(max(int(math.ceil((target - 0.5) * du / dw)), 0), du)
+    while i > 0 and bresenham_state(i - 1, du, dw)[0] >= target:
+        i -= 1
+    while bresenham_state(i, du, dw)[0] < target:
+        i += 1
+    return i
+
+
+@helper
+def bresenham_clip(u0, w0, du, dw, sw, umax, wmax):
+    """The exact range of steps ``(lo, hi)`` whose pixels lie in [0, umax] x
+    [0, wmax] (empty when lo > hi).  Both coordinates are monotone along the line,
+    so the pixels between two visible pixels are visible too."""
+    lo = max(0, -u0)
+    hi = min(du, umax - u0)
+    if sw > 0:
+        j_lo, j_hi = -w0, wmax - w0
     else:
-        lo, hi = step_range(u0, 1, du, w0, sw, dw, width - 1, height - 1)
-    if lo > hi:
-        return
-    j, p = bresenham_state(lo, du, dw)
-    two_dw = 2 * dw
-    two_dw_minus_two_du = 2 * dw - 2 * du
+        j_lo, j_hi = w0 - wmax, w0
+    if j_lo > j_hi or lo > hi:
+        return 1, 0
+    lo = max(lo, bresenham_first(j_lo, du, dw))
+    hi = min(hi, bresenham_first(j_hi + 1, du, dw) - 1)
+    return lo, hi
+
+
+@helper
+def store(flat, offset, color):
+    """Write the channels of ``color`` at ``flat[offset:]``."""
+    n = color.shape[0]
+    flat[offset] = color[0]
+    if n > 1:
+        flat[offset + 1] = color[1]
+        flat[offset + 2] = color[2]
+        if n > 3:
+            flat[offset + 3] = color[3]
+
+
+@helper
+def bresenham_checked(buf, packed, width, height, swap, u0, w0, sw, lo, hi, j, p,
+                      two_dw, two_dw_minus_two_du, color):
+    """The Bresenham loop over steps lo..hi, each pixel written through ``put``."""
     for i in range(lo, hi + 1):
         if swap:
             put(buf, packed, width, height, w0 + sw * j, u0 + i, color)
@@ -110,13 +147,62 @@ def bresenham_line(buf, packed, width, height, x0, y0, x1, y1, color):
         j += advance
 
 
+@helper
+def bresenham_flat(buf, width, height, swap, u0, w0, sw, lo, hi, j, p, w_last,
+                   two_dw, two_dw_minus_two_du, color):
+    """The Bresenham loop for unpacked storage: it walks a flat offset, as a
+    hardware line generator walks the frame-buffer address.  The first and last
+    pixels are checked; by monotonicity every pixel between them is inside too."""
+    nc = buf.shape[2]
+    w_first = w0 + sw * j
+    wlim = width if swap else height
+    ulim = height if swap else width
+    if not (0 <= u0 + lo < ulim and 0 <= u0 + hi < ulim and 0 <= w_first < wlim and 0 <= w_last < wlim):
+        return
+    flat = buf.reshape(-1)
+    row = width * nc
+    if swap:
+        offset = (u0 + lo) * row + w_first * nc
+        u_step, w_step = row, sw * nc
+    else:
+        offset = w_first * row + (u0 + lo) * nc
+        u_step, w_step = nc, sw * row
+    for _ in range(lo, hi + 1):
+        store(flat, offset, color)
+        offset += u_step
+        p, advance = bresenham_decide(p, two_dw, two_dw_minus_two_du)
+        if advance:
+            offset += w_step
+
+
+@helper
+def bresenham_line(buf, packed, width, height, x0, y0, x1, y1, color):
+    """Draw the line (x0, y0)-(x1, y1), both endpoints included, with Bresenham's
+    integer decision parameter, clipped exactly to the frame buffer."""
+    swap, u0, w0, du, dw, sw = bresenham_setup(x0, y0, x1, y1)
+    if swap:
+        lo, hi = bresenham_clip(u0, w0, du, dw, sw, height - 1, width - 1)
+    else:
+        lo, hi = bresenham_clip(u0, w0, du, dw, sw, width - 1, height - 1)
+    if lo > hi:
+        return
+    j, p = bresenham_state(lo, du, dw)
+    if packed:
+        bresenham_checked(buf, packed, width, height, swap, u0, w0, sw, lo, hi, j, p,
+                          2 * dw, 2 * dw - 2 * du, color)
+    else:
+        w_last = w0 + sw * bresenham_state(hi, du, dw)[0]
+        bresenham_flat(buf, width, height, swap, u0, w0, sw, lo, hi, j, p, w_last,
+                       2 * dw, 2 * dw - 2 * du, color)
+
+
 @inline
 def nearest(v):
     """Round half up to the nearest integer: the notes' round()."""
     return int(math.floor(v + 0.5))
 
 
-@inline
+@helper
 def dda_setup(x0, y0, x1, y1):
     """Steps and increments of the DDA: ``steps = max(|dx|, |dy|)`` and the
     per-step increments dx/steps, dy/steps (one of them is +-1)."""
@@ -128,7 +214,7 @@ def dda_setup(x0, y0, x1, y1):
     return steps, dx / steps, dy / steps
 
 
-@inline
+@helper
 def dda_line(buf, packed, width, height, x0, y0, x1, y1, color):
     """Draw the line (x0, y0)-(x1, y1) with the DDA: x and y are real numbers
     incremented by dx/steps and dy/steps from the first endpoint, and each point is
@@ -153,7 +239,7 @@ def dda_line(buf, packed, width, height, x0, y0, x1, y1, color):
         y += yinc
 
 
-@inline
+@helper
 def any_line(buf, packed, width, height, x0, y0, x1, y1, color, method):
     if method == DDA:
         dda_line(buf, packed, width, height, x0, y0, x1, y1, color)
@@ -164,18 +250,29 @@ def any_line(buf, packed, width, height, x0, y0, x1, y1, color, method):
 @kernel
 def draw_line(buf, packed, width, height, x0, y0, x1, y1, color, method):
     """Draw one line; ``method`` is BRESENHAM or DDA."""
-    any_line(buf, packed, width, height, x0, y0, x1, y1, color, method)
+    if packed:
+        any_line(buf, True, width, height, x0, y0, x1, y1, color, method)
+    else:
+        any_line(buf, False, width, height, x0, y0, x1, y1, color, method)
+
+
+@helper
+def lines_loop(buf, packed, width, height, segments, colors, method):
+    one = colors.shape[0] == 1
+    for i in range(segments.shape[0]):
+        s = segments[i]
+        any_line(buf, packed, width, height, s[0], s[1], s[2], s[3],
+                 colors[0] if one else colors[i], method)
 
 
 @kernel
 def draw_lines(buf, packed, width, height, segments, colors, method):
     """Draw N lines, ``segments[i] = (x0, y0, x1, y1)``, with ``colors[i]`` (or
     ``colors[0]`` for all when ``colors`` has one row)."""
-    one = colors.shape[0] == 1
-    for i in range(segments.shape[0]):
-        s = segments[i]
-        any_line(buf, packed, width, height, s[0], s[1], s[2], s[3],
-                 colors[0] if one else colors[i], method)
+    if packed:
+        lines_loop(buf, True, width, height, segments, colors, method)
+    else:
+        lines_loop(buf, False, width, height, segments, colors, method)
 
 
 @kernel

@@ -43,13 +43,13 @@ def circle(fb, xc, yc, r, color="white"):
     >>> fb = sl.FrameBuffer(7, 7, mode="1")
     >>> sl.draw.circle(fb, 3, 3, 3)
     >>> print(sl.text_image(fb))
-    ..###..
-    .#...#.
-    #.....#
-    #.....#
-    #.....#
-    .#...#.
-    ..###..
+    --###--
+    -#---#-
+    #-----#
+    #-----#
+    #-----#
+    -#---#-
+    --###--
     """
     buf, packed, width, height = target(fb)
     k.draw_circle(buf, packed, width, height, v.coordinate("xc", xc), v.coordinate("yc", yc),
@@ -111,11 +111,11 @@ def ellipse(fb, xc, yc, rx, ry, color="white"):
     >>> fb = sl.FrameBuffer(9, 5, mode="1")
     >>> sl.draw.ellipse(fb, 4, 2, 4, 2)
     >>> print(sl.text_image(fb))
-    ..#####..
-    ##.....##
-    #.......#
-    ##.....##
-    ..#####..
+    --#####--
+    -#-----#-
+    #-------#
+    -#-----#-
+    --#####--
     """
     buf, packed, width, height = target(fb)
     rx = v.radius("rx", rx)

@@ -54,9 +54,9 @@ def line(fb, x0, y0, x1, y1, color="white", method="bresenham"):
     >>> fb = sl.FrameBuffer(6, 3, mode="1")
     >>> sl.draw.line(fb, 0, 0, 5, 2)
     >>> print(sl.text_image(fb))
-    ....##
-    ..##..
-    ##....
+    ----##
+    --##--
+    ##----
     """
     buf, packed, width, height = target(fb)
     code = _method(method)
@@ -84,11 +84,11 @@ def lines(fb, segments, color="white", method="bresenham"):
     >>> fb = sl.FrameBuffer(5, 5, mode="1")
     >>> sl.draw.lines(fb, np.array([[0, 0, 4, 4], [0, 4, 4, 0]]))
     >>> print(sl.text_image(fb))
-    #...#
-    .#.#.
-    ..#..
-    .#.#.
-    #...#
+    #---#
+    -#-#-
+    --#--
+    -#-#-
+    #---#
     """
     buf, packed, width, height = target(fb)
     code = _method(method)

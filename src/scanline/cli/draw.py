@@ -1,0 +1,200 @@
+"""``scanline draw [options] -o OUT.png ITEMS...``: draw primitives into an image.
+
+ITEMS is a little language: a word followed by its arguments, item after item, for
+instance ``line 2 3 60 40 color red circle 32 24 15``.  :func:`parse_items` turns it
+into :class:`Item` tuples without importing the drawing code; :func:`render` draws them
+with :mod:`scanline.draw`.
+"""
+
+import argparse
+import re
+import textwrap
+from collections import namedtuple
+
+from ..errors import ArgumentValueError
+
+#: Words that draw, with their numeric arguments and what they draw.
+SHAPES = {
+    "line": ("X0 Y0 X1 Y1", "the segment from (X0, Y0) to (X1, Y1), both endpoints included"),
+    "circle": ("XC YC R", "the circle of radius R about (XC, YC), by the midpoint algorithm"),
+    "ellipse": ("XC YC RX RY", "the axis-aligned ellipse with semi-axes RX, RY about (XC, YC)"),
+    "point": ("X Y", "the single pixel (X, Y)"),
+}
+
+#: Words that set an attribute of the items after them, with their argument.
+SETTINGS = {
+    "color": ("NAME", "the color of the following items (default white): a name such as "
+              "red, #rrggbb, or an integer (a gray level in mode L, a bit in mode 1, "
+              "a color-table index in mode P)"),
+    "method": ("dda|bresenham", "the line algorithm of the following lines (default bresenham)"),
+}
+
+#: scanline.framebuffer.MODES, spelled out so that --help does not import numpy.
+MODES = ("1", "L", "RGB", "RGBA", "P")
+
+#: One parsed item: ``word``, its ``args`` (numbers, or one string for a setting),
+#: ``position``, the 1-based index of the word in ITEMS, and ``text``, the item as
+#: written (for messages).
+Item = namedtuple("Item", "word args position text")
+
+
+def _epilog():
+    """The --help text of the ITEMS language, made from SHAPES and SETTINGS."""
+    rows = [(f"{word} {params}", text) for word, (params, text) in {**SHAPES, **SETTINGS}.items()]
+    width = max(len(head) for head, _ in rows) + 4
+    lines = [textwrap.fill(text, 79, initial_indent=f"  {head}".ljust(width),
+                           subsequent_indent=" " * width) for head, text in rows]
+    return "\n".join([
+        "ITEMS, drawn in order (x to the right, y up, (0, 0) the bottom-left pixel;",
+        "numbers may be negative or fractional and round to the nearest pixel; what",
+        "falls outside the image is clipped):",
+        *lines,
+        "",
+        "Examples:",
+        "  scanline draw --size 64x48 line 2 3 60 40 circle 32 24 15 -o out.png",
+        "  scanline draw --scale 4 color red method dda line -5 3 40 20 \\",
+        "      color '#00a0ff' ellipse 20 12 15 8 -o out.gif",
+    ])
+
+
+def size(text):
+    """argparse type: ``WIDTHxHEIGHT`` such as ``64x48``."""
+    match = re.fullmatch(r"\s*(\d+)\s*[xX]\s*(\d+)\s*", text)
+    if not match:
+        raise argparse.ArgumentTypeError(f"expected WIDTHxHEIGHT such as 64x48, got {text!r}")
+    return int(match[1]), int(match[2])
+
+
+def positive_int(text):
+    """argparse type: an integer >= 1."""
+    try:
+        value = int(text)
+    except ValueError:
+        value = None
+    if value is None or value < 1:
+        raise argparse.ArgumentTypeError(f"expected an integer >= 1, got {text!r}")
+    return value
+
+
+def register(subparsers):
+    """Add the ``draw`` command."""
+    parser = subparsers.add_parser(
+        "draw", help="draw lines, circles, ellipses and points into a PNG, GIF or BMP",
+        description="Draw ITEMS into a frame buffer and save it; the extension of OUT\n"
+        "(.png, .gif, .bmp) picks the format.  Options may come before or after ITEMS.",
+        epilog=_epilog(), formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    parser.add_argument("items", metavar="ITEMS", nargs="+", help="what to draw (see below)")
+    parser.add_argument("-o", "--output", metavar="OUT", required=True,
+                        help="the image file to write (.png, .gif or .bmp)")
+    parser.add_argument("--size", metavar="WxH", type=size, default=(128, 128),
+                        help="width x height in pixels (default 128x128)")
+    parser.add_argument("--mode", choices=MODES, default="RGB",
+                        help="pixel format: 1 (bitmap), L (gray), RGB (default), RGBA, "
+                        "P (color table)")
+    parser.add_argument("--background", metavar="COLOR", default="black",
+                        help="background color (default black)")
+    parser.add_argument("--scale", metavar="N", type=positive_int, default=1,
+                        help="enlarge each pixel to an N x N block in the saved image")
+    parser.set_defaults(run=run)
+
+
+def _number(text):
+    """``text`` as an int or float, or None if it is not a number."""
+    for convert in (int, float):
+        try:
+            return convert(text)
+        except ValueError:
+            pass
+    return None
+
+
+def _color(text):
+    """A color argument: an integer literal is an int (gray level, bit or index)."""
+    try:
+        return int(text)
+    except ValueError:
+        return text
+
+
+def parse_items(words):
+    """Parse the ITEMS words into a list of :class:`Item`.
+
+    Raises :class:`~scanline.errors.ArgumentValueError` naming the word's position
+    when a word is unknown, or an argument is missing or is not a number.
+
+    >>> [item[:3] for item in parse_items(["color", "red", "circle", "1", "2", "-3.5"])]
+    [('color', ('red',), 1), ('circle', (1, 2, -3.5), 3)]
+    """
+    keywords = {**SHAPES, **SETTINGS}
+    items = []
+    i = 0
+    while i < len(words):
+        word, position = words[i], i + 1
+        if word not in keywords:
+            if items and _number(word) is not None:
+                hint = f"{items[-1].text!r} takes only {keywords[items[-1].word][0]}"
+            else:
+                hint = f"use one of {', '.join(keywords)}"
+            raise ArgumentValueError(f"ITEMS word {position}: unexpected {word!r}; {hint}")
+        params = keywords[word][0].split()
+        given = []
+        for text in words[i + 1:i + 1 + len(params)]:
+            if text in keywords:
+                break
+            given.append(text)
+        if len(given) < len(params):
+            raise ArgumentValueError(f"ITEMS word {position}: {word} needs {keywords[word][0]}, "
+                                     f"got only {' '.join([word, *given])!r}")
+        if word in SETTINGS:
+            args = (_color(given[0]),) if word == "color" else (given[0],)
+        else:
+            args = tuple(map(_number, given))
+            for j, (param, value) in enumerate(zip(params, args)):
+                if value is None:
+                    raise ArgumentValueError(f"ITEMS word {position + 1 + j}: {param} of {word} "
+                                             f"must be a number, got {given[j]!r}")
+        items.append(Item(word, args, position, " ".join([word, *given])))
+        i += 1 + len(params)
+    return items
+
+
+def render(items, width, height, mode="RGB", background="black"):
+    """Draw ``items`` into a new frame buffer and return it.
+
+    Colors start white, lines start with Bresenham's method.  An error from the
+    drawing functions is raised again naming the item.
+    """
+    from .. import _validate, draw
+    from ..draw.lines import METHODS
+    from ..framebuffer import FrameBuffer
+
+    fb = FrameBuffer(width, height, mode=mode, background=background)
+    color, method = "white", "bresenham"
+    for item in items:
+        try:
+            if item.word == "color":
+                color = item.args[0]
+                fb.pixel(color)  # check it here, where it is given
+            elif item.word == "method":
+                method = _validate.choice("method", item.args[0], tuple(METHODS))
+            elif item.word == "line":
+                draw.line(fb, *item.args, color=color, method=method)
+            elif item.word == "point":
+                fb.set_pixel(*item.args, color)
+            else:  # circle, ellipse
+                getattr(draw, item.word)(fb, *item.args, color=color)
+        except (ValueError, TypeError) as exc:
+            raise ArgumentValueError(
+                f"ITEMS word {item.position} ({item.text}): {exc}") from exc
+    return fb
+
+
+def run(args):
+    """Parse the items, draw them and save the image atomically."""
+    items = parse_items(args.items)
+    fb = render(items, *args.size, mode=args.mode, background=args.background)
+    try:
+        fb.save(args.output, scale=args.scale)
+    except ValueError as exc:
+        raise ArgumentValueError(f"-o/--output: {exc}") from exc

@@ -1,0 +1,86 @@
+"""``scanline trace ALGORITHM ARGS... [--format table|csv|json]``: print a step table.
+
+The tables come from :mod:`scanline.trace`, which runs the same algorithm that
+:mod:`scanline.draw` uses to draw.
+"""
+
+import argparse
+
+#: CLI name -> (description, positional arguments with their help, takes --center).
+#: The names are those of :data:`scanline.trace.ALGORITHMS` (a test checks this; the
+#: list is spelled out here so that building the parser does not import numba).
+ALGORITHMS = {
+    "bresenham": (
+        "Bresenham's line algorithm (notes, chapter 2, Q.2-Q.3)",
+        {"X0": "x of the first endpoint", "Y0": "y of the first endpoint",
+         "X1": "x of the second endpoint", "Y1": "y of the second endpoint"},
+        False,
+    ),
+    "dda": (
+        "the DDA line algorithm (notes, chapter 2, Q.1 and Q.7)",
+        {"X0": "x of the first endpoint", "Y0": "y of the first endpoint",
+         "X1": "x of the second endpoint", "Y1": "y of the second endpoint"},
+        False,
+    ),
+    "midpoint-circle": (
+        "the midpoint circle algorithm, one octant (notes, chapter 2, Q.4-Q.5)",
+        {"R": "radius, >= 0"},
+        True,
+    ),
+    "midpoint-ellipse": (
+        "the midpoint ellipse algorithm, regions 1 and 2 (notes, chapter 2, Q.6)",
+        {"RX": "semi-axis along x, >= 0", "RY": "semi-axis along y, >= 0"},
+        True,
+    ),
+}
+
+FORMATS = ("table", "csv", "json")
+
+
+def integer(text):
+    """argparse type: an integer such as ``20`` or ``-5``."""
+    try:
+        return int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not an integer") from None
+
+
+def register(subparsers):
+    """Add the ``trace`` command, with one sub-command per algorithm."""
+    parser = subparsers.add_parser(
+        "trace", help="print an algorithm's step table, as the notes tabulate it",
+        description="Run a scan-conversion algorithm step by step and print its table:\n"
+        "the decision parameter p and the pixel chosen at each step k.",
+        epilog="Examples:\n  scanline trace bresenham 20 10 30 18\n"
+        "  scanline trace midpoint-circle 10 --center 5 5 --format csv\n"
+        "  scanline trace midpoint-ellipse 8 6 --format json\n"
+        "Negative numbers work as arguments: scanline trace dda -5 3 10 -2",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    algorithms = parser.add_subparsers(title="algorithms", metavar="ALGORITHM", required=True)
+    for name, (description, params, centered) in ALGORITHMS.items():
+        sub = algorithms.add_parser(name, help=description, description=f"Trace {description}.")
+        for param, text in params.items():
+            sub.add_argument(param.lower(), metavar=param, type=integer, help=text)
+        if centered:
+            sub.add_argument("--center", nargs=2, metavar=("XC", "YC"), type=integer,
+                             help="center; adds the plotted pixel (xc + x, yc + y) to each row")
+        sub.add_argument("--format", choices=FORMATS, default="table",
+                         help="table (default): aligned text with the set-up notes; "
+                         "csv: a header and one line per row; json: a list of row objects")
+        sub.set_defaults(run=run, algorithm=name, params=[p.lower() for p in params])
+
+
+def run(args):
+    """Print the table of ``args.algorithm`` in ``args.format``."""
+    from ..trace import ALGORITHMS as functions
+
+    values = [getattr(args, p) for p in args.params]
+    options = {"center": args.center} if "center" in vars(args) else {}
+    table = functions[args.algorithm](*values, **options)
+    if args.format == "json":
+        print(table.to_json(indent=2))
+    elif args.format == "csv":
+        print(table.to_csv(), end="")
+    else:
+        print(table)

@@ -1,0 +1,58 @@
+"""``scanline demo``: the gallery, its page and its pictures."""
+
+import contextlib
+import io
+import re
+
+import pytest
+from PIL import Image
+
+from scanline.cli import demo, figures, main
+
+
+@pytest.fixture(scope="module")
+def gallery(tmp_path_factory):
+    """Run ``scanline demo`` once (in-process) into a fresh folder."""
+    out = tmp_path_factory.mktemp("demo") / "gallery"
+    stdout = io.StringIO()
+    with contextlib.redirect_stdout(stdout):
+        code = main(["demo", "--out", str(out)])
+    return out, code, stdout.getvalue()
+
+
+def test_demo_writes_every_figure_gallery_and_page(gallery):
+    out, code, stdout = gallery
+    assert code == 0
+    assert str(out) in stdout
+    assert len(figures.FIGURES) == 9
+    pngs = sorted(p.name for p in out.glob("*.png"))
+    assert "gallery.png" in pngs and len(pngs) == 10
+    for png in pngs:
+        with Image.open(out / png) as image:
+            image.verify()
+    assert sorted(p.name for p in out.iterdir()) == sorted(pngs + ["index.html"])
+
+
+def test_page_shows_each_figure_with_caption_and_tables(gallery):
+    out = gallery[0]
+    page = (out / "index.html").read_text(encoding="utf-8")
+    images = re.findall(r'<img src="([^"]+)"', page)
+    assert len(images) == 9 and all((out / name).is_file() for name in images)
+    assert page.count("<figcaption>") == 9
+    assert page.count("Notes, chapter") >= 9
+    assert page.count("<pre>") == 4  # Bresenham, DDA vs Bresenham, circle, ellipse
+    for value in ("Bresenham line (20, 10) -&gt; (30, 18)", "Midpoint circle r = 10",
+                  "Midpoint ellipse r_x = 8, r_y = 6", "-332"):
+        assert value in page
+    assert "http" not in page  # self-contained
+
+
+def test_demo_into_the_default_folder(run, tmp_path):
+    result = run("demo", cwd=tmp_path)
+    assert result.code == 0 and result.err == ""
+    assert (tmp_path / demo.DEFAULT_DIR / "index.html").is_file()
+
+
+def test_demo_into_a_file_fails_cleanly(call, one_line_error, tmp_path):
+    (tmp_path / "taken").write_text("")
+    one_line_error(call("demo", "--out", tmp_path / "taken"), "taken")

@@ -266,6 +266,8 @@ def _rows_or_none(value, columns, radius_columns=()):
         a = np.asarray(value, dtype=np.float64)
     except (TypeError, ValueError):
         return None
+    if a.ndim == 1 and a.size == 0:  # [] is an empty batch: nothing to draw
+        return []
     if a.ndim == 1 and a.size == columns:
         a = a.reshape(1, columns)
     if a.ndim != 2 or a.shape[1] != columns or not np.isfinite(a).all() or (np.abs(a) > LIMIT).any():

@@ -29,7 +29,10 @@ def number(name, value):
         raise ArgumentTypeError(
             f"{name} must be a real number, got {_show(value)} of type {type(value).__name__}"
         )
-    v = float(value)
+    try:
+        v = float(value)
+    except OverflowError:
+        v = math.inf
     if not math.isfinite(v):
         raise ArgumentValueError(f"{name} must be a finite number, got {_show(value)}")
     return v
@@ -88,11 +91,24 @@ def coordinate_array(name, value, columns, radius_columns=()):
     ``radius_columns`` lists the columns that hold radii, which must be >= 0.
     """
     try:
-        a = np.asarray(value, dtype=np.float64)
+        a = np.asarray(value)
+        if a.dtype.kind in "iu" or a.dtype == object:
+            a = a.astype(np.float64)
+    except OverflowError:
+        raise ArgumentValueError(
+            f"{name} holds a number beyond the supported coordinate range "
+            f"[-{COORD_LIMIT}, {COORD_LIMIT}]"
+        ) from None
     except (TypeError, ValueError):
         raise ArgumentTypeError(
             f"{name} must be a numeric array of shape (N, {columns}), got {_show(value)}"
         ) from None
+    if a.dtype.kind != "f":
+        raise ArgumentTypeError(
+            f"{name} must hold real numbers, got an array of dtype {a.dtype}"
+        )
+    if a.ndim == 1 and a.size == 0:  # [] is an empty batch
+        a = a.reshape(0, columns)
     if a.ndim == 1 and a.size == columns:
         a = a.reshape(1, columns)
     if a.ndim != 2 or a.shape[1] != columns:

@@ -45,6 +45,12 @@ def _physical_memory():
         return 1 << 40
 
 
+def _umask():
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
 def write_atomically(path, write):
     """Call ``write(file)`` on a temporary file beside ``path``, then rename it.
 
@@ -58,6 +64,7 @@ def write_atomically(path, write):
     try:
         with os.fdopen(fd, "wb") as f:
             write(f)
+        os.chmod(tmp, 0o666 & ~_umask())  # mkstemp makes 0600; give the usual mode
         os.replace(tmp, path)
     except BaseException:
         try:
@@ -175,8 +182,12 @@ class FrameBuffer:
         In mode ``"P"`` an integer is a color-table index; any other color is looked
         up in the table and appended to it when absent.
         """
-        key = (color if isinstance(color, (str, int, tuple)) else None), name
-        if key[0] is not None:
+        # cache exact types only: True == 1 and (1.0, 2) == (1, 2) must not share
+        # an entry, and a tuple holding a list must not be hashed
+        cacheable = type(color) in (str, int) or (
+            type(color) is tuple and all(type(c) is int for c in color))
+        key = (color, name)
+        if cacheable:
             hit = self._cache.get(key)
             if hit is not None:
                 return hit
@@ -185,7 +196,7 @@ class FrameBuffer:
         else:
             value = pixel_value(color, self._mode, name)
         out = np.array(value, np.uint8)
-        if key[0] is not None:
+        if cacheable:
             self._cache[key] = out
         return out
 

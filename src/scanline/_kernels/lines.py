@@ -15,6 +15,11 @@ from .raster import put
 BRESENHAM = 0
 DDA = 1
 
+#: A DDA line clipped at its start replays up to this many invisible steps, so that
+#: its pixels carry exactly the round-off of the unclipped line (and of its trace);
+#: beyond it the start is computed as x0 + lo * dx/steps.
+DDA_REPLAY = 1 << 22
+
 
 @helper
 def step_range(u0, su, du, w0, sw, dw, umax, wmax):
@@ -230,7 +235,11 @@ def dda_line(buf, packed, width, height, x0, y0, x1, y1, color):
         return
     x = float(x0)
     y = float(y0)
-    if lo > 0:  # clipped start: jump instead of accumulating invisible steps
+    if lo <= DDA_REPLAY:  # replay the invisible steps: the same round-off as unclipped
+        for _ in range(lo):
+            x += xinc
+            y += yinc
+    else:  # a start far outside: jump (round-off may then differ at exact halves)
         x += lo * xinc
         y += lo * yinc
     for _ in range(lo, hi + 1):

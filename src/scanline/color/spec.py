@@ -29,9 +29,12 @@ def rgba(color, name="color"):
         raise ArgumentValueError(f"{name}={color!r}: a gray level must be in 0..255")
     if isinstance(color, (tuple, list)) or hasattr(color, "__array__"):
         values = list(color) if not hasattr(color, "tolist") else color.tolist()
+        if not all(isinstance(v, numbers.Real) and not isinstance(v, bool) for v in values):
+            raise ArgumentTypeError(
+                f"{name}={color!r} is not a color; a tuple needs 3 or 4 integers in 0..255"
+            )
         if len(values) in (3, 4) and all(
-            isinstance(v, numbers.Integral) and not isinstance(v, bool) and 0 <= v <= 255
-            for v in values
+            isinstance(v, numbers.Integral) and 0 <= v <= 255 for v in values
         ):
             return tuple(int(v) for v in values) + ((255,) if len(values) == 3 else ())
         raise ArgumentValueError(

@@ -21,6 +21,15 @@ def _center(center):
     return v.coordinate("center x", xc), v.coordinate("center y", yc)
 
 
+def _add_screen_columns(columns, rows, center, xc, yc):
+    """With an explicit center, add the plotted pixel (xc + x, yc + y) to each row."""
+    if center is None:
+        return columns
+    for row in rows:
+        row["xc+x"], row["yc+y"] = xc + row["x"], yc + row["y"]
+    return columns + ["xc+x", "yc+y"]
+
+
 def _mirror4(xc, yc, a, b):
     return {(xc + a, yc + b), (xc - a, yc + b), (xc + a, yc - b), (xc - a, yc - b)}
 
@@ -52,15 +61,9 @@ def midpoint_circle(r, center=None):
     xc, yc = _center(center)
     out = np.zeros((r + 1, 3), np.int64)
     n = k.circle_trace(r, out)
-    columns = ["k", "p", "x", "y", "2x", "2y"]
-    rows = []
-    for i, (p, x, y) in enumerate(out[:n].tolist()):
-        row = {"k": i, "p": p, "x": x, "y": y, "2x": 2 * x, "2y": 2 * y}
-        if center is not None:
-            row["xc+x"], row["yc+y"] = xc + x, yc + y
-        rows.append(row)
-    if center is not None:
-        columns += ["xc+x", "yc+y"]
+    rows = [{"k": i, "p": p, "x": x, "y": y, "2x": 2 * x, "2y": 2 * y}
+            for i, (p, x, y) in enumerate(out[:n].tolist())]
+    columns = _add_screen_columns(["k", "p", "x", "y", "2x", "2y"], rows, center, xc, yc)
     pixels = set()
     for x, y in [(0, r)] + [(row["x"], row["y"]) for row in rows]:
         pixels |= _mirror4(xc, yc, x, y) | _mirror4(xc, yc, y, x)
@@ -99,13 +102,9 @@ def midpoint_ellipse(rx, ry, center=None):
         name = _REGIONS[region]
         i = counter.get(name, 0)
         counter[name] = i + 1
-        row = {"region": name, "k": i, "p": None if name == "tip" else _quarters(p4),
-               "x": x, "y": y, "2ry2x": px, "2rx2y": py}
-        if center is not None:
-            row["xc+x"], row["yc+y"] = xc + x, yc + y
-        rows.append(row)
-    if center is not None:
-        columns += ["xc+x", "yc+y"]
+        rows.append({"region": name, "k": i, "p": None if name == "tip" else _quarters(p4),
+                     "x": x, "y": y, "2ry2x": px, "2rx2y": py})
+    columns = _add_screen_columns(columns, rows, center, xc, yc)
     pixels = set()
     for x, y in [(0, ry)] + [(row["x"], row["y"]) for row in rows]:
         pixels |= _mirror4(xc, yc, x, y)

@@ -10,7 +10,7 @@ blending writes.
 import math
 
 from ._jit import helper, inline, kernel
-from .raster import put
+from .raster import band_sorted, put, store
 
 #: Ellipse region labels in traces; TIP is the run along y = 0 that completes flat
 #: ellipses (see ``ellipse_tip``).
@@ -129,6 +129,21 @@ def circle_run(buf, packed, width, height, xc, yc, x, y, p, end, color):
 
 
 @helper
+def circle_inside(buf, width, xc, yc, r, color):
+    """The notes' loop for a circle wholly inside unpacked storage: each of the
+    eight images is written with no bounds checks."""
+    x = 0
+    y = r
+    p = 1 - r
+    while x <= y:
+        for k in range(8):
+            a, b, new = mirror8(k, x, y)
+            if new:
+                store(buf, yc + b, xc + a, color)
+        x, y, p = circle_step(x, y, p)
+
+
+@helper
 def midpoint_circle(buf, packed, width, height, xc, yc, r, color):
     """Draw the circle of radius r >= 0 about (xc, yc).
 
@@ -138,6 +153,9 @@ def midpoint_circle(buf, packed, width, height, xc, yc, r, color):
     what its visible part costs.
     """
     if xc + r < 0 or xc - r > width - 1 or yc + r < 0 or yc - r > height - 1:
+        return
+    if not packed and xc - r >= 0 and xc + r < width and yc - r >= 0 and yc + r < height:
+        circle_inside(buf, width, xc, yc, r, color)
         return
     x = 0
     y = r
@@ -165,10 +183,15 @@ def draw_circle(buf, packed, width, height, xc, yc, r, color):
 
 @helper
 def circles_loop(buf, packed, width, height, circles, colors):
-    one = colors.shape[0] == 1
-    for i in range(circles.shape[0]):
-        c = circles[i]
-        midpoint_circle(buf, packed, width, height, c[0], c[1], c[2], colors[0] if one else colors[i])
+    if colors.shape[0] == 1:  # one color: any order gives the same image
+        color = colors[0]
+        circles = band_sorted(circles, 1, height)
+        for i in range(circles.shape[0]):
+            midpoint_circle(buf, packed, width, height, circles[i, 0], circles[i, 1], circles[i, 2], color)
+    else:
+        for i in range(circles.shape[0]):
+            midpoint_circle(buf, packed, width, height, circles[i, 0], circles[i, 1], circles[i, 2],
+                            colors[i])
 
 
 @kernel
@@ -281,10 +304,30 @@ def ellipse_next(region, x, y, p, px, py, rx, rx2, ry2):
 
 
 @helper
+def ellipse_inside(buf, width, xc, yc, rx, ry, color):
+    """The midpoint ellipse wholly inside unpacked storage: each of the four images
+    is written with no bounds checks.  This loop repeats ``midpoint_ellipse``'s with
+    ``store`` for ``put``: one loop with a run-time choice ran twice as slow."""
+    rx2 = rx * rx
+    ry2 = ry * ry
+    x, y, p, px, py = ellipse_region1_start(rx, ry)
+    region = REGION_1
+    while region != 0:
+        for k in range(4):
+            a, b, new = mirror4(k, x, y)
+            if new:
+                store(buf, yc + b, xc + a, color)
+        region, x, y, _, p, px, py = ellipse_next(region, x, y, p, px, py, rx, rx2, ry2)
+
+
+@helper
 def midpoint_ellipse(buf, packed, width, height, xc, yc, rx, ry, color):
     """Draw the axis-aligned ellipse with semi-axes rx, ry >= 0 about (xc, yc)
     (for r_y = 0 the segment from xc - rx to xc + rx)."""
     if xc + rx < 0 or xc - rx > width - 1 or yc + ry < 0 or yc - ry > height - 1:
+        return
+    if not packed and xc - rx >= 0 and xc + rx < width and yc - ry >= 0 and yc + ry < height:
+        ellipse_inside(buf, width, xc, yc, rx, ry, color)
         return
     rx2 = rx * rx
     ry2 = ry * ry
@@ -309,11 +352,16 @@ def draw_ellipse(buf, packed, width, height, xc, yc, rx, ry, color):
 
 @helper
 def ellipses_loop(buf, packed, width, height, ellipses, colors):
-    one = colors.shape[0] == 1
-    for i in range(ellipses.shape[0]):
-        e = ellipses[i]
-        midpoint_ellipse(buf, packed, width, height, e[0], e[1], e[2], e[3],
-                         colors[0] if one else colors[i])
+    if colors.shape[0] == 1:  # one color: any order gives the same image
+        color = colors[0]
+        ellipses = band_sorted(ellipses, 1, height)
+        for i in range(ellipses.shape[0]):
+            midpoint_ellipse(buf, packed, width, height, ellipses[i, 0], ellipses[i, 1],
+                             ellipses[i, 2], ellipses[i, 3], color)
+    else:
+        for i in range(ellipses.shape[0]):
+            midpoint_ellipse(buf, packed, width, height, ellipses[i, 0], ellipses[i, 1],
+                             ellipses[i, 2], ellipses[i, 3], colors[i])
 
 
 @kernel

@@ -10,7 +10,7 @@ clipping harmless.
 import math
 
 from ._jit import helper, inline, kernel
-from .raster import put
+from .raster import band_sorted, put, store
 
 BRESENHAM = 0
 DDA = 1
@@ -128,18 +128,6 @@ def bresenham_clip(u0, w0, du, dw, sw, umax, wmax):
 
 
 @helper
-def store(flat, offset, color):
-    """Write the channels of ``color`` at ``flat[offset:]``."""
-    n = color.shape[0]
-    flat[offset] = color[0]
-    if n > 1:
-        flat[offset + 1] = color[1]
-        flat[offset + 2] = color[2]
-        if n > 3:
-            flat[offset + 3] = color[3]
-
-
-@helper
 def bresenham_checked(buf, packed, width, height, swap, u0, w0, sw, lo, hi, j, p,
                       two_dw, two_dw_minus_two_du, color):
     """The Bresenham loop over steps lo..hi, each pixel written through ``put``."""
@@ -155,29 +143,26 @@ def bresenham_checked(buf, packed, width, height, swap, u0, w0, sw, lo, hi, j, p
 @helper
 def bresenham_flat(buf, width, height, swap, u0, w0, sw, lo, hi, j, p, w_last,
                    two_dw, two_dw_minus_two_du, color):
-    """The Bresenham loop for unpacked storage: it walks a flat offset, as a
-    hardware line generator walks the frame-buffer address.  The first and last
-    pixels are checked; by monotonicity every pixel between them is inside too."""
-    nc = buf.shape[2]
+    """The Bresenham loop for unpacked storage, without per-pixel bounds checks:
+    the first and last pixels are checked, and by monotonicity every pixel between
+    them is inside too."""
     w_first = w0 + sw * j
     wlim = width if swap else height
     ulim = height if swap else width
     if not (0 <= u0 + lo < ulim and 0 <= u0 + hi < ulim and 0 <= w_first < wlim and 0 <= w_last < wlim):
         return
-    flat = buf.reshape(-1)
-    row = width * nc
     if swap:
-        offset = (u0 + lo) * row + w_first * nc
-        u_step, w_step = row, sw * nc
+        x, y, ux, uy, wx, wy = w_first, u0 + lo, 0, 1, sw, 0
     else:
-        offset = w_first * row + (u0 + lo) * nc
-        u_step, w_step = nc, sw * row
+        x, y, ux, uy, wx, wy = u0 + lo, w_first, 1, 0, 0, sw
     for _ in range(lo, hi + 1):
-        store(flat, offset, color)
-        offset += u_step
+        store(buf, y, x, color)
+        x += ux
+        y += uy
         p, advance = bresenham_decide(p, two_dw, two_dw_minus_two_du)
         if advance:
-            offset += w_step
+            x += wx
+            y += wy
 
 
 @helper
@@ -185,6 +170,11 @@ def bresenham_line(buf, packed, width, height, x0, y0, x1, y1, color):
     """Draw the line (x0, y0)-(x1, y1), both endpoints included, with Bresenham's
     integer decision parameter, clipped exactly to the frame buffer."""
     swap, u0, w0, du, dw, sw = bresenham_setup(x0, y0, x1, y1)
+    if not packed and 0 <= min(x0, x1) and max(x0, x1) < width and 0 <= min(y0, y1) and max(y0, y1) < height:
+        # wholly inside: no clipping, no divisions
+        bresenham_flat(buf, width, height, swap, u0, w0, sw, 0, du, 0, 2 * dw - du,
+                       w0 + sw * dw, 2 * dw, 2 * dw - 2 * du, color)
+        return
     if swap:
         lo, hi = bresenham_clip(u0, w0, du, dw, sw, height - 1, width - 1)
     else:
@@ -267,11 +257,16 @@ def draw_line(buf, packed, width, height, x0, y0, x1, y1, color, method):
 
 @helper
 def lines_loop(buf, packed, width, height, segments, colors, method):
-    one = colors.shape[0] == 1
-    for i in range(segments.shape[0]):
-        s = segments[i]
-        any_line(buf, packed, width, height, s[0], s[1], s[2], s[3],
-                 colors[0] if one else colors[i], method)
+    if colors.shape[0] == 1:  # one color: any order gives the same image
+        color = colors[0]
+        segments = band_sorted(segments, 1, height)
+        for i in range(segments.shape[0]):
+            any_line(buf, packed, width, height, segments[i, 0], segments[i, 1],
+                     segments[i, 2], segments[i, 3], color, method)
+    else:
+        for i in range(segments.shape[0]):
+            any_line(buf, packed, width, height, segments[i, 0], segments[i, 1],
+                     segments[i, 2], segments[i, 3], colors[i], method)
 
 
 @kernel

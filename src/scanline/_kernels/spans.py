@@ -1,0 +1,30 @@
+"""Horizontal spans: the unit of work of every area fill (notes, chapter 2, Q.8:
+"determine the overlap intervals for scan lines that cross the area").
+"""
+
+from ._jit import inline
+from .raster import put_bit
+
+
+@inline
+def span(buf, packed, width, height, y, x0, x1, color):
+    """Fill pixels x0..x1 (inclusive) of scan line y with ``color``, clipped to the
+    raster; nothing is written when x0 > x1 or the span is off the raster."""
+    if y < 0 or y >= height:
+        return
+    if x0 < 0:
+        x0 = 0
+    if x1 > width - 1:
+        x1 = width - 1
+    if packed:
+        for x in range(x0, x1 + 1):
+            put_bit(buf, x, y, color[0])
+        return
+    n = color.shape[0]
+    for x in range(x0, x1 + 1):
+        buf[y, x, 0] = color[0]
+        if n > 1:
+            buf[y, x, 1] = color[1]
+            buf[y, x, 2] = color[2]
+            if n > 3:
+                buf[y, x, 3] = color[3]

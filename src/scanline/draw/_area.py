@@ -1,0 +1,29 @@
+"""Painting a filled area with a fill style (notes, syllabus: "Area-Fill Attributes -
+Fill styles. Pattern fill. Soft fill").
+
+Every area primitive (polygons, filled circles and ellipses, chords, pies) hands this
+module two callables, so that a style can be applied without knowing the shape:
+
+``draw(buf, packed, width, height, ox, oy, color)``
+    fills the area's spans into the storage ``buf`` (see ``FrameBuffer._raster``) of
+    a ``width`` x ``height`` raster whose pixel (0, 0) is device pixel (ox, oy),
+    with the uint8 channel values ``color``.
+``outline()``
+    draws the area's boundary into the frame buffer (the hollow style).
+"""
+
+from ._common import target
+
+
+def fill_area(fb, color, style, bbox, draw, outline):
+    """Fill an area of ``fb`` with ``color`` in ``style``.
+
+    ``style`` None (or a solid style) fills directly; any other style object must
+    provide ``paint(fb, color, bbox, draw, outline)``.  ``bbox`` is
+    ``(xmin, ymin, xmax, ymax)``, the device pixels (inclusive) that can be covered.
+    """
+    if style is None or getattr(style, "kind", None) == "solid":
+        buf, packed, width, height = target(fb)
+        draw(buf, packed, width, height, 0, 0, fb.pixel(color))
+    else:
+        style.paint(fb, color, bbox, draw, outline)

@@ -26,6 +26,9 @@ _LAZY = {
     "draw": ("scanline.draw", None),
     "trace": ("scanline.trace", None),
     "color": ("scanline.color", None),
+    "geometry": ("scanline.geometry", None),
+    "attributes": ("scanline.attributes", None),
+    "FillStyle": ("scanline.attributes", "FillStyle"),
 }
 
 __all__ = sorted(_LAZY) + ["__version__"]

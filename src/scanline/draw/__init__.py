@@ -8,5 +8,6 @@ one array and draw them in one compiled call.
 
 from .lines import line, lines
 from .conics import circle, circles, ellipse, ellipses
+from .polygon import polygon, polygons
 
 __all__ = ["line", "lines", "circle", "circles", "ellipse", "ellipses"]

@@ -536,3 +536,53 @@ def _primitive(name):
     if function is None:
         pytest.skip(f"sl.draw.{name} is not there yet")
     return function
+
+
+def styled_pixels(draw_shape, style, size=(40, 30), mode="L"):
+    fb = sl.FrameBuffer(*size, mode=mode)
+    draw_shape(fb, style)
+    return lit(fb)
+
+
+SHAPES = {
+    "polygon": lambda fb, style: _primitive("polygon")(
+        fb, [(2.3, 1.7), (37.5, 5.2), (20.1, 28.4), (18.0, 12.5), (4.0, 26.0)], color="white",
+        style=style),
+    "fill_circle": lambda fb, style: _primitive("fill_circle")(fb, 19, 14, 12, color="white", style=style),
+    "fill_ellipse": lambda fb, style: _primitive("fill_ellipse")(fb, 19, 14, 17, 9, color="white",
+                                                                 style=style),
+    "pie": lambda fb, style: _primitive("pie")(fb, 19, 14, 15, 11, 0.3, 4.0, color="white", style=style),
+}
+
+
+@pytest.mark.parametrize("shape", sorted(SHAPES))
+@pytest.mark.parametrize("mode", MODES)
+def test_primitives_styled_pixels_are_the_solid_pixels_that_the_style_selects(shape, mode):
+    tile = FillStyle.TILES["bricks"].tolist()
+    solid = styled_pixels(SHAPES[shape], None, mode=mode)
+    assert solid
+    assert styled_pixels(SHAPES[shape], FillStyle.pattern("bricks"), mode=mode) == {
+        (x, y) for x, y in solid if pattern_cell(tile, x, y)}
+    assert styled_pixels(SHAPES[shape], FillStyle.hatch(0.7, spacing=4, cross=True), mode=mode) == {
+        (x, y) for x, y in solid if hatch_pixel(x, y, 0.7, 4, 1, cross=True)}
+    assert styled_pixels(SHAPES[shape], FillStyle.solid(), mode=mode) == solid
+
+
+def test_polygon_pattern_moves_with_the_polygon_only_when_anchored_to_the_shape():
+    polygon = _primitive("polygon")
+    ring = np.array([(3.5, 2.5), (30.5, 4.5), (16.5, 25.5)])
+    for anchor, moves in (("shape", True), ("origin", False)):
+        style = FillStyle.pattern([[True, False, False], [False, True, False]], anchor=anchor)
+        first, moved = sl.FrameBuffer(48, 40, mode="1"), sl.FrameBuffer(48, 40, mode="1")
+        polygon(first, ring, color=1, style=style)
+        polygon(moved, ring + (7, 5), color=1, style=style)
+        assert (lit(moved) == {(x + 7, y + 5) for x, y in lit(first)}) == moves
+
+
+def test_polygon_hollow_draws_only_the_boundary():
+    polygon = _primitive("polygon")
+    ring = [(2, 2), (25, 3), (12, 20)]
+    hollow, lines = sl.FrameBuffer(30, 25, mode="1"), sl.FrameBuffer(30, 25, mode="1")
+    polygon(hollow, ring, color=1, style=FillStyle.hollow())
+    sl.draw.lines(lines, [(2, 2, 25, 3), (25, 3, 12, 20), (12, 20, 2, 2)], color=1)
+    assert lit(hollow) == lit(lines)

@@ -20,7 +20,8 @@ Styles (Hearn & Baker, section 4-4, "Area-fill attributes"):
 
 How a pattern or hatch is painted: the shape is scan-converted into a mask the size
 of its bounding box clipped to the frame buffer (so the cost follows the shape, not the
-frame buffer); each masked pixel then takes the style's value at that device position.
+frame buffer); a compiled loop (``_kernels/styles.py``) then gives each masked pixel
+the style's value at its device position.  Creating a style does not load numba.
 """
 
 import math
@@ -198,22 +199,6 @@ def _clip(fb, bbox):
             min(xmax, fb.width - 1), min(ymax, fb.height - 1))
 
 
-def _write(fb, x0, y0, write, values):
-    """Store ``values`` (k, channels) at the pixels of the (h, w) boolean ``write``
-    whose (0, 0) is device pixel (x0, y0); rows are bottom-up, like the storage."""
-    buf, packed = fb._raster()
-    h, w = write.shape
-    if not packed:
-        buf[y0:y0 + h, x0:x0 + w][write] = values
-        return
-    b0, b1 = x0 >> 3, (x0 + w - 1) >> 3
-    block = buf[y0:y0 + h, b0:b1 + 1, 0]
-    bits = np.unpackbits(block, axis=1)
-    start = x0 - 8 * b0
-    bits[:, start:start + w][write] = values[:, 0]
-    block[...] = np.packbits(bits, axis=1)
-
-
 class FillStyle:
     """How an area is filled: ``"solid"``, ``"hollow"``, ``"pattern"`` or ``"hatch"``.
 
@@ -246,6 +231,9 @@ class FillStyle:
     ----------
     D. Hearn and M. P. Baker, "Computer Graphics", 2nd ed., Prentice Hall, 1994,
     section 4-4, "Area-fill attributes" (fill styles, pattern fill, hatch fill).
+    J. D. Foley, A. van Dam, S. K. Feiner and J. F. Hughes, "Computer Graphics:
+    Principles and Practice", 2nd ed., Addison-Wesley, 1990, chapter 3, "Pattern
+    filling" (patterns anchored to the screen origin or to the primitive).
 
     Examples
     --------
@@ -311,8 +299,8 @@ class FillStyle:
         >>> import scanline as sl
         >>> fb = sl.FrameBuffer(6, 4, mode="1")
         >>> style = sl.FillStyle.pattern([[True, False, False], [False, True, False]])
-        >>> from scanline.draw._area import fill_area
-        >>> fill_area(fb, 1, style, (0, 0, 5, 3), *sl.attributes._box_area(0, 0, 5, 3))
+        >>> box = [(-0.5, -0.5), (5.5, -0.5), (5.5, 3.5), (-0.5, 3.5)]  # pixels 0..5 x 0..3
+        >>> sl.draw.polygon(fb, box, color=1, style=style)
         >>> print(sl.text_image(fb))
         #--#--
         -#--#-
@@ -364,8 +352,8 @@ class FillStyle:
         >>> import scanline as sl
         >>> fb = sl.FrameBuffer(8, 5, mode="1")
         >>> style = sl.FillStyle.hatch(angle=0.0, spacing=2)
-        >>> from scanline.draw._area import fill_area
-        >>> fill_area(fb, 1, style, (0, 0, 7, 4), *sl.attributes._box_area(0, 0, 7, 4))
+        >>> box = [(-0.5, -0.5), (7.5, -0.5), (7.5, 4.5), (-0.5, 4.5)]  # pixels 0..7 x 0..4
+        >>> sl.draw.polygon(fb, box, color=1, style=style)
         >>> print(sl.text_image(fb))
         ########
         --------
@@ -401,7 +389,7 @@ class FillStyle:
             out = self._cells >= 0
         else:
             lookup = np.empty(len(self._palette) + 1, object)
-            lookup[:-1] = [True if p is _FILL else p for p in self._palette]
+            lookup[:-1] = [True if p == _FILL else p for p in self._palette]
             lookup[-1] = None
             out = lookup[self._cells]
         out.flags.writeable = False
@@ -458,44 +446,36 @@ class FillStyle:
         xmin, ymin, x0, y0, x1, y1 = _clip(fb, bbox)
         if x0 > x1 or y0 > y1:
             return
+        from ._kernels.styles import paint_styled
+
         w, h = x1 - x0 + 1, y1 - y0 + 1
         mask = np.zeros((h, w, 1), np.uint8)
         draw(mask, False, w, h, x0, y0, np.array([1], np.uint8))
-        ref = self._params["reference"]
-        ax, ay = (0, 0) if self._params["anchor"] == "origin" else ref or (xmin, ymin)
-        xs = np.arange(x0 - ax, x1 - ax + 1, dtype=np.int64)
-        ys = np.arange(y0 - ay, y1 - ay + 1, dtype=np.int64)
-        select = self._pattern(xs, ys) if self._kind == "pattern" else self._hatch(xs, ys)
-        write = (mask[:, :, 0] != 0) & (select >= 0)
-        _write(fb, x0, y0, write, self._values(fb, color)[select[write]])
-
-    def _values(self, fb, color):
-        """Channel values of the palette entries, shape (k, channels)."""
-        if self._kind == "hatch":
-            entries = [(color, "color"), (self._params["background"], "background")]
-        else:
-            entries = [(color if spec is _FILL else spec,
-                        "color" if spec is _FILL else f"tile[{r}][{c}]")
-                       for spec, (r, c) in zip(self._palette, self._where)]
-        return np.array([fb.pixel(spec, name) for spec, name in entries if spec is not None])
-
-    def _pattern(self, xs, ys):
-        """Palette index (-1: transparent) of each pixel; ``xs``/``ys`` relative to the
-        anchor.  Tile rows are image order, so device row y reads row th-1-(y mod th)."""
-        th, tw = self._cells.shape
-        return self._cells[(th - 1 - ys % th)[:, None], (xs % tw)[None, :]]
-
-    def _hatch(self, xs, ys):
-        """0 for hatch pixels, 1 (background) or -1 (no background) for the others."""
         p = self._params
-        c, s = _direction(p["angle"])
-        families = [(c, s), (-s, c)] if p["cross"] else [(c, s)]
-        on = np.zeros((len(ys), len(xs)), bool)
-        for c, s in families:
-            width = p["line_width"] * max(abs(c), abs(s))
-            d = (c * ys.astype(np.float64))[:, None] - (s * xs.astype(np.float64))[None, :]
-            on |= np.mod(d + width / 2, p["spacing"]) < width
-        return np.where(on, 0, -1 if p["background"] is None else 1).astype(np.int32)
+        ax, ay = (0, 0) if p["anchor"] == "origin" else p["reference"] or (xmin, ymin)
+        hatch = self._kind == "hatch"
+        if hatch:
+            cells = np.zeros((1, 1), np.int32)
+            families = _families(p["angle"], p["line_width"], p["cross"])
+            spacing, other = float(p["spacing"]), -1 if p["background"] is None else 1
+            entries = [(color, "color"), (p["background"], "background")][:1 + (other > 0)]
+        else:
+            cells = np.ascontiguousarray(self._cells[::-1])  # tile rows bottom-up, like y
+            families, spacing, other = np.zeros((0, 3)), 1.0, -1
+            entries = [(color, "color") if spec == _FILL else (spec, f"tile[{r}][{c}]")
+                       for spec, (r, c) in zip(self._palette, self._where)]
+        lut = np.array([fb.pixel(spec, name) for spec, name in entries])
+        buf, packed = fb._raster()
+        paint_styled(buf, packed, hatch, fb.width, fb.height, mask, x0, y0, ax, ay, cells,
+                     families, spacing, other, lut)
+
+
+def _families(angle, line_width, cross):
+    """Rows (c, s, w') of the hatch line families: direction (c, s) = (cos, sin) of
+    the angle (and of angle + pi/2 for cross-hatch), minor-axis width w'."""
+    c, s = _direction(angle)
+    directions = [(c, s), (-s, c)] if cross else [(c, s)]
+    return np.array([(c, s, line_width * max(abs(c), abs(s))) for c, s in directions])
 
 
 def _fields(style, kind, params, cells, palette, where):
@@ -552,13 +532,3 @@ def _plain(value):
 
 _BUILDERS = {"solid": _no_arguments, "hollow": _no_arguments,
              "pattern": _pattern_arguments, "hatch": _hatch_arguments}
-
-
-def _box_area(xmin, ymin, xmax, ymax):
-    """``(draw, outline)`` callables of an axis-aligned box, for the doctests."""
-    def draw(buf, packed, width, height, ox, oy, value):
-        ys = slice(max(ymin - oy, 0), max(min(ymax - oy + 1, height), 0))
-        xs = slice(max(xmin - ox, 0), max(min(xmax - ox + 1, width), 0))
-        buf[ys, xs] = value
-
-    return draw, lambda: None

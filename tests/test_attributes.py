@@ -529,6 +529,29 @@ def test_fuzz_pattern_bbox(x0, y0, w, h, tile):
     assert lit(fb) == expected
 
 
+@pytest.mark.parametrize("text, style", [
+    ("solid", FillStyle.solid()),
+    (" hollow ", FillStyle.hollow()),
+    ("pattern:dots", FillStyle.pattern("dots")),
+    ("pattern:bricks:shape", FillStyle.pattern("bricks", anchor="shape")),
+    ("hatch:90", FillStyle.hatch(math.pi / 2)),
+    ("hatch:30:5", FillStyle.hatch(math.radians(30), spacing=5)),
+    ("crosshatch:-45:6.5:2", FillStyle.hatch(-math.pi / 4, spacing=6.5, line_width=2, cross=True)),
+])
+def test_parse(text, style):
+    assert FillStyle.parse(text) == style
+
+
+@pytest.mark.parametrize("text", ["", "dotted", "solid:1", "pattern", "pattern:marble", "pattern:dots:center",
+                                  "hatch", "hatch:x", "hatch:45:0", "hatch:nan", "hatch:1:2:3:4",
+                                  "crosshatch:45:8:-1"])
+def test_parse_bad_text_names_style(text):
+    with pytest.raises(sl.ArgumentValueError, match="style="):
+        FillStyle.parse(text)
+    with pytest.raises(sl.ArgumentTypeError, match="style"):
+        FillStyle.parse(45)
+
+
 # -- with the real area primitives (when they exist) --------------------------------------
 
 def _primitive(name):

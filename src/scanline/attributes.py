@@ -364,6 +364,39 @@ class FillStyle:
         return cls("hatch", angle=angle, spacing=spacing, cross=cross, line_width=line_width,
                    background=background, anchor=anchor, reference=reference)
 
+    @classmethod
+    def parse(cls, text):
+        """A style from one word, as the command line and scene files spell it.
+
+        ``solid``, ``hollow``, ``pattern:NAME[:shape]`` (NAME one of :attr:`TILES`;
+        ``:shape`` anchors it to the shape), ``hatch:DEGREES[:SPACING[:WIDTH]]`` and
+        ``crosshatch:DEGREES[:SPACING[:WIDTH]]`` (the angle in degrees here).
+
+        >>> FillStyle.parse("crosshatch:45:6")
+        FillStyle.hatch(angle=0.7853981633974483, spacing=6, cross=True, line_width=1, background=None, anchor='origin')
+        >>> FillStyle.parse("pattern:bricks:shape") == FillStyle.pattern("bricks", anchor="shape")
+        True
+        """
+        if not isinstance(text, str):
+            raise ArgumentTypeError(f"style must be a string such as 'hatch:45:8', got {v._show(text)}")
+        word, *args = text.strip().split(":")
+        try:
+            if word in ("solid", "hollow") and not args:
+                return cls(word)
+            if word == "pattern" and 1 <= len(args) <= 2 and args[1:] in ([], ["shape"]):
+                return cls.pattern(args[0], anchor="shape" if args[1:] else "origin")
+            if word in ("hatch", "crosshatch") and 1 <= len(args) <= 3:
+                values = [float(a) for a in args]
+                kw = dict(zip(("spacing", "line_width"), values[1:]))
+                return cls.hatch(math.radians(values[0]), cross=word == "crosshatch", **kw)
+        except (ValueError, TypeError) as error:
+            raise ArgumentValueError(f"style={text!r}: {error}") from None
+        raise ArgumentValueError(
+            f"style={text!r} is not a fill style; use solid, hollow, pattern:NAME[:shape] "
+            f"(NAME: {', '.join(TILES)}), hatch:DEGREES[:SPACING[:WIDTH]] or "
+            "crosshatch:DEGREES[:SPACING[:WIDTH]]"
+        )
+
     # -- value semantics -------------------------------------------------------------------
     def __setattr__(self, name, value):
         raise AttributeError(f"FillStyle is immutable; make a new one with FillStyle.{self._kind}(...)")

@@ -1,0 +1,388 @@
+"""Curved boundary areas: filled circles and ellipses, arcs, chords and pie slices
+(notes, chapter 2, Q.8; syllabus "Scan-Line fill of curved Boundary Areas").
+
+Angles are in radians, counterclockwise from +x with y up, and are *polar* angles:
+the angle of a pixel (x, y) is atan2(y - yc, x - xc), also on an ellipse (so a pie's
+straight edges leave the center at exactly the angles given; OpenCV's ``ellipse``
+uses the parametric angle instead, which differs unless rx = ry).  An arc, chord or
+pie runs counterclockwise from ``start`` to ``end``: ``end - start`` is taken modulo
+2 pi, except that a difference of 2 pi or more is the whole ellipse.
+"""
+
+import math
+
+import numpy as np
+
+from .. import _validate as v
+from .._kernels import curved as k
+from ._area import fill_area
+from ._common import colors, target
+from .conics import _check_ellipse, circle, ellipse
+from .lines import lines
+
+TAU = 2 * math.pi
+
+#: Direction vectors and normals are integers of this length (exact int64 tests for
+#: coordinates within +-2**30; an angle is resolved to about 1e-9 radians).
+UNIT = 2**30
+
+#: The half-plane holding every pixel (0 x + 0 y + 0 = 0, tie).
+EVERYWHERE = (0, 0, 0, 1)
+
+
+def _top_left(nx, ny):
+    """Does a pixel center exactly on the edge belong to the area whose inward
+    normal is (nx, ny)?  Yes for a left edge (area to the right: nx > 0) and a top
+    edge (horizontal, area below), as in the polygon fill."""
+    return nx > 0 or (nx == 0 and ny < 0)
+
+
+def _center(xc, yc):
+    return v.coordinate("xc", xc), v.coordinate("yc", yc)
+
+
+def _axes(rx, ry):
+    """Rounded semi-axes and whether they make a circle (drawn by the midpoint
+    circle, radii up to 2**30) or an ellipse (the midpoint ellipse's limits)."""
+    rx = v.radius("rx", rx)
+    ry = v.radius("ry", ry)
+    if rx != ry:
+        _check_ellipse(rx, ry)
+    return rx, ry, rx == ry
+
+
+def _paint(fb, color, style, xc, yc, rx, ry, is_circle, hp, combine, outline):
+    def draw(buf, packed, width, height, ox, oy, pixel):
+        k.draw_region(buf, packed, width, height, xc - ox, yc - oy, rx, ry, is_circle, False,
+                      hp, combine, pixel)
+
+    fill_area(fb, color, style, (xc - rx, yc - ry, xc + rx, yc + ry), draw, outline)
+
+
+def _whole():
+    return np.array([EVERYWHERE, EVERYWHERE], np.int64), k.BOTH
+
+
+def fill_circle(fb, xc, yc, r, color="white", style=None):
+    """Fill the disk bounded by the midpoint circle of radius ``r`` about ``(xc, yc)``.
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+    xc, yc : number
+        Center, rounded to the nearest pixel center.
+    r : number
+        Radius >= 0 (up to 2**30), rounded; r = 0 fills the center pixel.
+    color : color
+    style : FillStyle, optional
+        None fills solid; see :func:`scanline.draw._area.fill_area`.
+
+    Notes
+    -----
+    Notes, chapter 2, Q.8 (scan-line fill of curved boundary areas): each scan line
+    is filled from the left-most to the right-most pixel that
+    :func:`scanline.draw.circle` draws on it, so the disk holds exactly the outline
+    and everything between.  The extents come from the same midpoint stepping as the
+    outline (Q.4): the octant point (x, y) bounds rows yc +- y and, by symmetry,
+    rows yc +- x.  One span per scan line, each pixel written once; only visible
+    rows are computed (a closed form replaces the stepping for huge radii).
+
+    References
+    ----------
+    D. Hearn and M. P. Baker, *Computer Graphics*, 2nd ed., section 3-11 (scan-line
+    fill of curved boundary areas); J. E. Bresenham, "A linear algorithm for
+    incremental digital display of circular arcs", CACM 20(2), 100-106, 1977.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> fb = sl.FrameBuffer(7, 7, mode="1")
+    >>> sl.draw.fill_circle(fb, 3, 3, 3)
+    >>> print(sl.text_image(fb))
+    --###--
+    -#####-
+    #######
+    #######
+    #######
+    -#####-
+    --###--
+    """
+    xc, yc = _center(xc, yc)
+    r = v.radius("r", r)
+    hp, combine = _whole()
+    _paint(fb, color, style, xc, yc, r, r, True, hp, combine, lambda: circle(fb, xc, yc, r, color))
+
+
+def fill_ellipse(fb, xc, yc, rx, ry, color="white", style=None):
+    """Fill the area bounded by the midpoint ellipse with semi-axes ``rx``, ``ry``.
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+    xc, yc : number
+        Center, rounded to the nearest pixel center.
+    rx, ry : number
+        Semi-axes >= 0, rounded (the limits of :func:`scanline.draw.ellipse`).
+    color : color
+    style : FillStyle, optional
+
+    Notes
+    -----
+    Notes, chapter 2, Q.8 with the midpoint ellipse of Q.6: the first and last
+    quadrant points of each row y give the extents of rows yc +- y; each scan line
+    is one span from the left-most to the right-most pixel of
+    :func:`scanline.draw.ellipse`.
+
+    References
+    ----------
+    D. Hearn and M. P. Baker, *Computer Graphics*, 2nd ed., sections 3-7 and 3-11;
+    M. L. V. Pitteway, "Algorithm for drawing ellipses or hyperbolae with a digital
+    plotter", Computer Journal 10(3), 282-289, 1967.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> fb = sl.FrameBuffer(9, 5, mode="1")
+    >>> sl.draw.fill_ellipse(fb, 4, 2, 4, 2)
+    >>> print(sl.text_image(fb))
+    --#####--
+    -#######-
+    #########
+    -#######-
+    --#####--
+    """
+    xc, yc = _center(xc, yc)
+    rx = v.radius("rx", rx)
+    ry = v.radius("ry", ry)
+    _check_ellipse(rx, ry)
+    hp, combine = _whole()
+    _paint(fb, color, style, xc, yc, rx, ry, False, hp, combine,
+           lambda: ellipse(fb, xc, yc, rx, ry, color))
+
+
+def fill_circles(fb, circles, color="white"):
+    """Fill N disks in one compiled call; ``circles`` has rows ``(xc, yc, r)``.
+
+    ``color`` is one color or one per disk (see :func:`scanline.draw.lines`).
+    """
+    buf, packed, width, height = target(fb)
+    arr = v.coordinate_array("circles", circles, 3, radius_columns=(2,))
+    k.fill_regions(buf, packed, width, height, arr, True, colors(fb, color, len(arr)))
+
+
+def fill_ellipses(fb, ellipses, color="white"):
+    """Fill N ellipses in one compiled call; ``ellipses`` has rows ``(xc, yc, rx, ry)``.
+
+    ``color`` is one color or one per ellipse.
+    """
+    buf, packed, width, height = target(fb)
+    arr = v.coordinate_array("ellipses", ellipses, 4, radius_columns=(2, 3))
+    if len(arr):  # the rows with the largest axis and product are the ones to check
+        for row in (np.argmax(arr[:, 2:].max(axis=1)), np.argmax(arr[:, 2].astype(np.float64) * arr[:, 3])):
+            _check_ellipse(int(arr[row, 2]), int(arr[row, 3]))
+    k.fill_regions(buf, packed, width, height, arr, False, colors(fb, color, len(arr)))
+
+
+# -- arcs, chords and pies ----------------------------------------------------------------
+def _sweep(start, end):
+    """(a, b, sweep): the angles modulo 2 pi and the counterclockwise sweep from a to
+    b, or sweep = None for the whole turn."""
+    start = v.number("start", start)
+    end = v.number("end", end)
+    if end - start >= TAU:
+        return start % TAU, end % TAU, None
+    return start % TAU, end % TAU, (end - start) % TAU
+
+
+def _direction(angle):
+    return round(math.cos(angle) * UNIT), round(math.sin(angle) * UNIT)
+
+
+def _sector(start, end, closed):
+    """Half-planes and their combination for the angular sector from ``start`` to
+    ``end``; None when it is empty.
+
+    A pixel belongs to the sector when its angle is in it.  ``closed`` (arcs) keeps
+    the pixels on both bounding rays; otherwise (pies) a pixel center exactly on a
+    ray goes by the top-left rule, so that slices sharing a ray cover it once, and
+    the center pixel belongs to the slice holding the direction just below +x.
+    """
+    a, b, sweep = _sweep(start, end)
+    if sweep is None:
+        return _whole()
+    ua, ub = _direction(a), _direction(b)
+    if ua == ub:  # less than the angular resolution apart
+        return _whole() if sweep >= math.pi else None
+    na = (-ua[1], ua[0])  # counterclockwise of ray a
+    nb = (ub[1], -ub[0])  # clockwise of ray b
+    cross = ua[0] * ub[1] - ua[1] * ub[0]
+    convex = cross > 0 or (cross == 0 and ua[0] * ub[0] + ua[1] * ub[1] < 0)
+    hp = np.array([(*n, 0, 1 if closed else int(_top_left(*n))) for n in (na, nb)], np.int64)
+    return hp, k.BOTH if convex else k.EITHER
+
+
+def _polar_point(rx, ry, angle):
+    """The point of the ideal ellipse at polar ``angle``, relative to the center."""
+    c, s = math.cos(angle), math.sin(angle)
+    h = math.hypot(ry * c, rx * s)
+    rho = rx * ry / h if h else 0.0
+    return rho * c, rho * s
+
+
+def _chord_plane(rx, ry, start, end):
+    """The half-plane on the arc's side of the chord (right of P_a -> P_b) and the
+    chord's end points; None when the chord cuts off nothing."""
+    a, b, sweep = _sweep(start, end)
+    pa, pb = _polar_point(rx, ry, a), _polar_point(rx, ry, b)
+    if sweep is None:
+        return _whole(), pa, pb
+    # The line is computed from the end points in a fixed order, so the chords
+    # (start, end) and (end, start) use exactly opposite half-planes.
+    p, q = sorted((pa, pb))
+    dx, dy = q[0] - p[0], q[1] - p[1]
+    length = math.hypot(dx, dy)
+    n = (round(dy / length * UNIT), round(-dx / length * UNIT)) if length else (0, 0)
+    if n == (0, 0):
+        return (_whole(), pa, pb) if sweep > math.pi else None
+    c = -round(n[0] * p[0] + n[1] * p[1])
+    if (p, q) != (pa, pb):
+        n, c = (-n[0], -n[1]), -c
+    hp = np.array([(*n, c, int(_top_left(*n))), EVERYWHERE], np.int64)
+    return (hp, k.BOTH), pa, pb
+
+
+def _segments(xc, yc, points):
+    return [(xc + p[0], yc + p[1], xc + q[0], yc + q[1]) for p, q in points]
+
+
+def arc(fb, xc, yc, rx, ry, start, end, color="white"):
+    """Draw the pixels of the midpoint ellipse (circle when rx = ry) whose polar
+    angle lies in [start, end], counterclockwise.
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+    xc, yc : number
+        Center, rounded to the nearest pixel center.
+    rx, ry : number
+        Semi-axes; rx = ry draws part of :func:`scanline.draw.circle` (r <= 2**30),
+        otherwise part of :func:`scanline.draw.ellipse` (its limits).
+    start, end : float
+        Angles in radians (see the module notes); an arc is closed, both bounding
+        rays included, so the arcs [a, b] and [b, c] together are [a, c].  Angles
+        closer than ~1e-9 radians draw nothing unless end - start >= 2 pi.
+    color : color
+
+    Notes
+    -----
+    Notes, chapter 2, Q.4-Q.6: the outline's runs on each scan line come from the
+    same midpoint stepping as the filled areas and are clipped to the angular sector.
+
+    Examples
+    --------
+    >>> import math
+    >>> import scanline as sl
+    >>> fb = sl.FrameBuffer(7, 7, mode="1")
+    >>> sl.draw.arc(fb, 3, 3, 3, 3, 0, math.pi / 2)
+    >>> print(sl.text_image(fb))
+    ---##--
+    -----#-
+    ------#
+    ------#
+    -------
+    -------
+    -------
+    """
+    buf, packed, width, height = target(fb)
+    xc, yc = _center(xc, yc)
+    rx, ry, is_circle = _axes(rx, ry)
+    region = _sector(start, end, closed=True)
+    if region is not None:
+        k.draw_region(buf, packed, width, height, xc, yc, rx, ry, is_circle, True, *region,
+                      fb.pixel(color))
+
+
+def pie(fb, xc, yc, rx, ry, start, end, color="white", style=None):
+    """Fill the pie slice of the ellipse (circle when rx = ry) between the rays at
+    ``start`` and ``end``, counterclockwise.
+
+    A pixel is in the slice iff it is in :func:`fill_ellipse` (:func:`fill_circle`)
+    and its center's polar angle is in the sector.  A center exactly on a bounding
+    ray follows the top-left rule (it belongs to the slice on its right, or below a
+    horizontal ray), and the center pixel belongs to the slice holding the direction
+    just below +x; so slices that share rays, e.g. 0..a, a..b, b..2 pi, cover the
+    disk exactly once.  Angles as for :func:`arc`.
+
+    Examples
+    --------
+    The first quadrant: its +x ray is a bottom edge, so the pixels on it (and the
+    center) belong to the fourth quadrant's slice; its +y ray is a left edge.
+
+    >>> import math
+    >>> import scanline as sl
+    >>> fb = sl.FrameBuffer(7, 7, mode="1")
+    >>> sl.draw.pie(fb, 3, 3, 3, 3, 0, math.pi / 2)
+    >>> print(sl.text_image(fb))
+    ---##--
+    ---###-
+    ---####
+    -------
+    -------
+    -------
+    -------
+    """
+    xc, yc = _center(xc, yc)
+    rx, ry, is_circle = _axes(rx, ry)
+    region = _sector(start, end, closed=False)
+    if region is None:
+        return
+    a, b, _ = _sweep(start, end)
+    ends = [(0, 0), _polar_point(rx, ry, a)], [(0, 0), _polar_point(rx, ry, b)]
+
+    def outline():
+        arc(fb, xc, yc, rx, ry, start, end, color)
+        lines(fb, _segments(xc, yc, ends), color)
+
+    _paint(fb, color, style, xc, yc, rx, ry, is_circle, *region, outline)
+
+
+def chord(fb, xc, yc, rx, ry, start, end, color="white", style=None):
+    """Fill the region between the arc from ``start`` to ``end`` and the chord
+    joining its end points.
+
+    A pixel is in the chord iff it is in :func:`fill_ellipse` (:func:`fill_circle`)
+    and its center is on the arc's side of the straight line through the ideal
+    ellipse's points at the two angles; centers exactly on that line follow the
+    top-left rule, so the chords (a, b) and (b, a) cover the disk exactly once.
+    Angles as for :func:`arc`.
+
+    Examples
+    --------
+    The upper half disk: the diameter is its bottom edge, so its pixels belong to
+    the lower half.
+
+    >>> import math
+    >>> import scanline as sl
+    >>> fb = sl.FrameBuffer(7, 7, mode="1")
+    >>> sl.draw.chord(fb, 3, 3, 3, 3, 0, math.pi)
+    >>> print(sl.text_image(fb))
+    --###--
+    -#####-
+    #######
+    -------
+    -------
+    -------
+    -------
+    """
+    xc, yc = _center(xc, yc)
+    rx, ry, is_circle = _axes(rx, ry)
+    plane = _chord_plane(rx, ry, start, end)
+    if plane is None:
+        return
+    region, pa, pb = plane
+
+    def outline():
+        arc(fb, xc, yc, rx, ry, start, end, color)
+        lines(fb, _segments(xc, yc, [(pa, pb)]), color)
+
+    _paint(fb, color, style, xc, yc, rx, ry, is_circle, *region, outline)

@@ -8,6 +8,7 @@ one array and draw them in one compiled call.
 
 from .lines import line, lines
 from .conics import circle, circles, ellipse, ellipses
+from .curved import arc, chord, fill_circle, fill_circles, fill_ellipse, fill_ellipses, pie
 from .polygon import polygon, polygons
 
 __all__ = ["line", "lines", "circle", "circles", "ellipse", "ellipses"]

@@ -11,6 +11,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 from skimage.draw import disk
+from skimage.draw import ellipse as sk_ellipse
 
 import scanline as sl
 from tests.reference import (
@@ -241,6 +242,29 @@ def test_skimage_disk_and_opencv_bracket_the_midpoint_disk():
         cv_worst = max(cv_worst, len(ours - cv))
     assert (sk_same, sk_worst) == (8, 72)
     assert (cv_same, cv_worst) == (1, 336)
+
+
+def test_skimage_and_opencv_ellipses_differ_only_next_to_the_outline():
+    """skimage.draw.ellipse with semi-axes + 1/2 and cv2.ellipse(thickness=-1) are
+    neither inside nor around the midpoint ellipse area in general (skimage contains
+    it for 93 of these 130 shapes), but every pixel they disagree on is next to the
+    midpoint outline; at most 36 pixels differ (measured)."""
+    contained = 0
+    for rx in range(1, 40, 3):
+        for ry in range(1, 40, 4):
+            ours = filled_ellipse(rx, ry)
+            outline = ellipse_pixels(0, 0, rx, ry)
+            near = {(x + dx, y + dy) for x, y in outline for dx in (-1, 0, 1) for dy in (-1, 0, 1)}
+            rr, cc = sk_ellipse(0, 0, ry + 0.5, rx + 0.5, shape=None)
+            sk = set(zip(cc.tolist(), rr.tolist()))
+            img = np.zeros((2 * ry + 5, 2 * rx + 5), np.uint8)
+            cv2.ellipse(img, (rx + 2, ry + 2), (rx, ry), 0, 0, 360, 255, -1, cv2.LINE_8)
+            rows, cols = np.nonzero(img)
+            cv = {(c - rx - 2, q - ry - 2) for q, c in zip(rows.tolist(), cols.tolist())}
+            for theirs in (sk, cv):
+                assert ours ^ theirs <= near and len(ours ^ theirs) <= 36
+            contained += ours <= sk
+    assert contained == 93
 
 
 # == arcs =====================================================================================

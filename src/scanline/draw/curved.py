@@ -229,13 +229,13 @@ def _polar_point(rx, ry, angle):
     return rho * c, rho * s
 
 
-def _chord_plane(rx, ry, start, end):
+def _chord_region(rx, ry, start, end):
     """The half-plane on the arc's side of the chord (right of P_a -> P_b) and the
-    chord's end points; None when the chord cuts off nothing."""
+    chord as a segment; None when the chord cuts off nothing."""
     a, b, sweep = _sweep(start, end)
     pa, pb = _polar_point(rx, ry, a), _polar_point(rx, ry, b)
     if sweep is None:
-        return _whole(), pa, pb
+        return _whole(), [(pa, pb)]
     # The line is computed from the end points in a fixed order, so the chords
     # (start, end) and (end, start) use exactly opposite half-planes.
     p, q = sorted((pa, pb))
@@ -243,16 +243,39 @@ def _chord_plane(rx, ry, start, end):
     length = math.hypot(dx, dy)
     n = (round(dy / length * UNIT), round(-dx / length * UNIT)) if length else (0, 0)
     if n == (0, 0):
-        return (_whole(), pa, pb) if sweep > math.pi else None
+        return (_whole(), [(pa, pb)]) if sweep > math.pi else None
     c = -round(n[0] * p[0] + n[1] * p[1])
     if (p, q) != (pa, pb):
         n, c = (-n[0], -n[1]), -c
     hp = np.array([(*n, c, int(_top_left(*n))), EVERYWHERE], np.int64)
-    return (hp, k.BOTH), pa, pb
+    return (hp, k.BOTH), [(pa, pb)]
 
 
-def _segments(xc, yc, points):
-    return [(xc + p[0], yc + p[1], xc + q[0], yc + q[1]) for p, q in points]
+def _pie_region(rx, ry, start, end):
+    """The sector from ``start`` to ``end`` and its two radii as segments; None when
+    it is empty."""
+    region = _sector(start, end, closed=False)
+    if region is None:
+        return None
+    a, b, _ = _sweep(start, end)
+    return region, [((0, 0), _polar_point(rx, ry, a)), ((0, 0), _polar_point(rx, ry, b))]
+
+
+def _cut(fb, xc, yc, rx, ry, start, end, color, style, shape):
+    """Paint the part of the filled ellipse (circle) that ``shape(rx, ry, start,
+    end)`` keeps; its straight edges and the arc are the hollow outline."""
+    xc, yc = _center(xc, yc)
+    rx, ry, is_circle = _axes(rx, ry)
+    found = shape(rx, ry, start, end)
+    if found is None:
+        return
+    region, segments = found
+
+    def outline():
+        arc(fb, xc, yc, rx, ry, start, end, color)
+        lines(fb, [(xc + p[0], yc + p[1], xc + q[0], yc + q[1]) for p, q in segments], color)
+
+    _paint(fb, color, style, xc, yc, rx, ry, is_circle, *region, outline)
 
 
 def arc(fb, xc, yc, rx, ry, start, end, color="white"):
@@ -331,19 +354,7 @@ def pie(fb, xc, yc, rx, ry, start, end, color="white", style=None):
     -------
     -------
     """
-    xc, yc = _center(xc, yc)
-    rx, ry, is_circle = _axes(rx, ry)
-    region = _sector(start, end, closed=False)
-    if region is None:
-        return
-    a, b, _ = _sweep(start, end)
-    ends = [(0, 0), _polar_point(rx, ry, a)], [(0, 0), _polar_point(rx, ry, b)]
-
-    def outline():
-        arc(fb, xc, yc, rx, ry, start, end, color)
-        lines(fb, _segments(xc, yc, ends), color)
-
-    _paint(fb, color, style, xc, yc, rx, ry, is_circle, *region, outline)
+    _cut(fb, xc, yc, rx, ry, start, end, color, style, _pie_region)
 
 
 def chord(fb, xc, yc, rx, ry, start, end, color="white", style=None):
@@ -374,15 +385,4 @@ def chord(fb, xc, yc, rx, ry, start, end, color="white", style=None):
     -------
     -------
     """
-    xc, yc = _center(xc, yc)
-    rx, ry, is_circle = _axes(rx, ry)
-    plane = _chord_plane(rx, ry, start, end)
-    if plane is None:
-        return
-    region, pa, pb = plane
-
-    def outline():
-        arc(fb, xc, yc, rx, ry, start, end, color)
-        lines(fb, _segments(xc, yc, [(pa, pb)]), color)
-
-    _paint(fb, color, style, xc, yc, rx, ry, is_circle, *region, outline)
+    _cut(fb, xc, yc, rx, ry, start, end, color, style, _chord_region)

@@ -23,6 +23,9 @@ CALLS = {
     "sl.draw.circles": ("circles", ([[30, 30, 12]],)),
     "sl.draw.ellipse": ("ellipse", (30, 30, 12, 7)),
     "sl.draw.ellipses": ("ellipses", ([[30, 30, 12, 7]],)),
+    "sl.draw.polygon": ("polygon", ([[3, 4], [40, 20], [10, 30]],)),
+    "sl.draw.polygons": ("polygons", ([[[3, 4], [40, 20], [10, 30]]],)),
+    "sl.draw.flood_fill": ("flood_fill", (3, 4)),
 }
 
 

@@ -3,7 +3,8 @@
     python benchmarks/run.py                 # full run, writes benchmarks/results/latest.json
     python benchmarks/run.py --quick         # workloads ~10x smaller, a fast check
     python benchmarks/run.py --only circles  # one workload (or: short-lines, long-lines,
-                                             # circles, ellipses; comma-separated)
+                                             # circles, ellipses, polygons, flood-fill;
+                                             # comma-separated)
 
 Ratios are peer time / scanline time: above 1 means scanline is faster.  Warm times
 are the best (minimum) of ``--repeats`` runs, after a first call on one primitive
@@ -34,20 +35,23 @@ sys.path.insert(0, HERE)
 import report  # noqa: E402
 import workloads as wl  # noqa: E402
 
-WORKLOADS = ("short-lines", "long-lines", "circles", "ellipses")
+WORKLOADS = ("short-lines", "long-lines", "circles", "ellipses", "polygons", "flood-fill")
 SECTIONS = WORKLOADS
 
 # Full-size workloads (the issue's) and, per workload and variant, the most
 # primitives that are timed; slower per-primitive loops are timed on a prefix and
 # scaled linearly to the whole workload (said in the output and in the JSON).
-SIZES = {"short-lines": 1_000_000, "long-lines": 10_000, "circles": 100_000, "ellipses": 100_000}
+# (flood-fill: the side of the maze image; one fill per run)
+SIZES = {"short-lines": 1_000_000, "long-lines": 10_000, "circles": 100_000, "ellipses": 100_000,
+         "polygons": 10_000, "flood-fill": 4096}
 CAPS = {
     ("short-lines", "sk-loop"): 100_000,
     ("circles", "sk-loop"): 25_000,
     ("ellipses", "sk-loop"): 25_000,
 }
 BUILDERS = {"short-lines": wl.short_lines, "long-lines": wl.long_lines,
-            "circles": wl.circles, "ellipses": wl.ellipses}
+            "circles": wl.circles, "ellipses": wl.ellipses, "polygons": wl.polygons,
+            "flood-fill": lambda size: wl.flood_fill(size=size)}
 
 # Targets (from the issue).  "fastest peer loop" = the fastest of OpenCV, Pillow and
 # scikit-image called once per primitive in a Python loop.
@@ -58,6 +62,10 @@ TARGETS = [
      "what": "sl.draw.circles (1 call) >= 3x faster than the fastest peer's per-primitive loop"},
     {"id": "long-line-single-call", "workload": "long-lines", "threshold": 1 / 1.2,
      "what": "one sl.draw.line call on a long line within 1.2x of cv2.line (ratio >= 0.83)"},
+    {"id": "polygon-fill-vs-opencv", "workload": "polygons", "threshold": 1.0,
+     "what": "sl.draw.polygons (1 call) no slower than a cv2.fillPoly loop (ratio >= 1.0)"},
+    {"id": "flood-fill-vs-opencv", "workload": "flood-fill", "threshold": 1 / 1.5,
+     "what": "sl.draw.flood_fill within 1.5x of cv2.floodFill's time (ratio >= 0.67)"},
 ]
 
 
@@ -186,6 +194,12 @@ def time_variant(w, v, repeats, log):
     data = v.prepare(w, w.prims[:n_timed])
     prepare_s = time.perf_counter() - t0
     before = wl.kernel_cache_stats(w.kind, v.kind) if v.library == "scanline" else None
+    if v.single_run:  # too slow to repeat: one run is the first call and the time
+        first = _timed(v.draw, canvas, data)
+        res = _result(w, v, n_timed, first, None, [first], prepare_s, log)
+        if n_timed >= w.sanity_n:  # the sanity check reuses these pixels
+            res["_mask"] = canvas.mask()
+        return res
     first = _timed(v.draw, canvas, first_data)
     after = wl.kernel_cache_stats(w.kind, v.kind) if v.library == "scanline" else None
     cache = None
@@ -197,6 +211,10 @@ def time_variant(w, v, repeats, log):
     for _ in range(repeats):
         canvas.clear()
         runs.append(_timed(v.draw, canvas, data))
+    return _result(w, v, n_timed, first, cache, runs, prepare_s, log)
+
+
+def _result(w, v, n_timed, first, cache, runs, prepare_s, log):
     scale = w.n / n_timed
     best = min(runs) * scale
     res = {
@@ -207,16 +225,23 @@ def time_variant(w, v, repeats, log):
         "prepare_s": prepare_s,
     }
     note = f" (timed on {n_timed:,}, scaled x{scale:g})" if scale != 1 else ""
+    if v.single_run:
+        note += " (one run)"
     log(f"  {v.library:<12} {v.call:<48} warm {best:9.4f} s{note}")
     return res
 
 
-def sanity_check(w, vs):
+def sanity_check(w, vs, done=None):
     """Draw the first ``w.sanity_n`` primitives with every variant on fresh canvases
-    and compare the set pixels with scanline's batch call."""
+    and compare the set pixels with scanline's batch call.  ``done`` maps variant
+    keys to masks already drawn (the one-run variants)."""
+    done = done or {}
     prims = w.prims[:w.sanity_n]
     masks = {}
     for v in vs:
+        if v.key in done:
+            masks[v.key] = done[v.key]
+            continue
         c = v.canvas(w.width, w.height)
         v.draw(c, v.prepare(w, prims))
         masks[v.key] = c.mask()
@@ -248,7 +273,16 @@ def evaluate_targets(results):
         if r is None:
             continue
         rows = {x["key"]: x for x in r["results"]}
-        if t["id"] == "long-line-single-call":
+        if t["id"] in ("polygon-fill-vs-opencv", "flood-fill-vs-opencv"):
+            if "sl-batch" not in rows:
+                continue
+            peer, ours = rows["cv2-loop"], rows["sl-batch"]
+            value = peer["warm_s"] / ours["warm_s"]
+            detail = f"{peer['call']} {peer['warm_s']:.3f} s, {ours['call']} {ours['warm_s']:.3f} s"
+            if "sl-loop" in rows:
+                detail += (f"; sl.draw.polygon loop {rows['sl-loop']['warm_s']:.3f} s "
+                           f"(ratio {peer['warm_s'] / rows['sl-loop']['warm_s']:.2f})")
+        elif t["id"] == "long-line-single-call":
             peer, ours = rows["cv2-loop"], rows["sl-loop"]
             value = peer["per_primitive_us"] / ours["per_primitive_us"]
             detail = (f"cv2.line {peer['per_primitive_us']:.1f} us/call, "
@@ -265,7 +299,8 @@ def evaluate_targets(results):
 
 def add_ratios(res):
     rows = {x["key"]: x for x in res}
-    batch, loop = rows["sl-batch"]["warm_s"], rows["sl-loop"]["warm_s"]
+    batch = rows["sl-batch"]["warm_s"]
+    loop = rows["sl-loop"]["warm_s"] if "sl-loop" in rows else batch  # flood fill: one call
     for x in res:
         x["ratio_vs_sl_batch"] = x["warm_s"] / batch
         x["ratio_vs_sl_loop"] = x["warm_s"] / loop
@@ -393,13 +428,19 @@ def run(a, cache_dir):
         caps = {k: c // shrink for k, c in CAPS.items()}
         log(f"\n[{name}] {w.description} (RGB), seed {w.seed}")
         vs = wl.variants(w, caps)
+        if not any(v.key == "sl-batch" for v in vs):
+            log("  SKIPPED: sl.draw.flood_fill is not available yet (scanline has no flood "
+                "fill to time)")
+            record.setdefault("skipped", {})[name] = "sl.draw.flood_fill not available"
+            continue
         t_w = time.perf_counter()
         res = [time_variant(w, v, a.repeats, log) for v in vs]
         add_ratios(res)
         entry = {"description": w.description, "kind": w.kind, "n": w.n,
                  "canvas": [w.width, w.height], "seed": w.seed, "params": w.params,
                  "results": res}
-        entry["sanity"] = sanity_check(w, vs)
+        done = {r["key"]: r.pop("_mask") for r in res if "_mask" in r}
+        entry["sanity"] = sanity_check(w, vs, done)
         entry["elapsed_s"] = time.perf_counter() - t_w
         gc.collect()  # between workloads, untimed
         log(f"  ({entry['elapsed_s']:.0f} s for this workload, including compilation, "

@@ -46,6 +46,9 @@ def check_vertices(name, verts, offsets=None):
     ``name[p]``."""
     if verts.size == 0:
         return
+    lo, hi = verts.min(), verts.max()   # NaN propagates: one fast test for the usual case
+    if -COORD_LIMIT <= lo and hi <= COORD_LIMIT:
+        return
     for bad, what in ((~np.isfinite(verts).all(axis=1), "must be finite"),
                       ((np.abs(verts) > COORD_LIMIT).any(axis=1),
                        f"must be within the supported coordinate range [-{COORD_LIMIT}, "
@@ -134,13 +137,14 @@ def batch(name, value):
             f"{name} must be a list of polygons ((N, 2) arrays of vertices) or an "
             f"(M, K, 2) array, got {_show(value)}"
         )
-    if all(isinstance(p, np.ndarray) and p.ndim == 2 and p.shape[1:] == (2,) for p in value):
-        # the fast path: one contour per polygon, already arrays
+    try:  # the fast path: one contour per polygon, (N_i, 2) array-likes
+        verts = np.concatenate(value) if len(value) else np.empty((0, 2), np.float64)
+    except (TypeError, ValueError):
+        verts = None
+    if verts is not None and verts.ndim == 2 and verts.shape[1] == 2:
         m = len(value)
         offsets = np.zeros(m + 1, np.int64)
-        offsets[1:] = np.cumsum([p.shape[0] for p in value])
-        verts = (np.ascontiguousarray(np.concatenate(value), dtype=None) if m
-                 else np.empty((0, 2), np.float64))
+        offsets[1:] = np.cumsum(np.fromiter(map(len, value), np.int64, m))
         verts = np.ascontiguousarray(_numeric(name, verts))
         check_vertices(name, verts, offsets)
         return verts, offsets, np.arange(m + 1, dtype=np.int64)

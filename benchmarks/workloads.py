@@ -603,11 +603,19 @@ def _flood_variants(w):
 def variants(workload, caps):
     """The variants for ``workload``; ``caps`` maps variant key -> max primitives timed."""
     kind = workload.kind
-    if kind in ("polygon", "flood"):
-        out = _polygon_variants(workload) if kind == "polygon" else _flood_variants(workload)
-        for v in out:
-            v.max_timed = caps.get((workload.name, v.key), 0)
-        return out
+    if kind == "polygon":
+        out = _polygon_variants(workload)
+    elif kind == "flood":
+        out = _flood_variants(workload)
+    else:
+        out = _primitive_variants(kind)
+    for v in out:
+        v.max_timed = caps.get((workload.name, v.key), 0)
+    return out
+
+
+def _primitive_variants(kind):
+    """Lines, circles, ellipses: scanline's batch and loop, the peers' loops."""
     out = [
         Variant("sl-batch", "scanline", f"{batch_name(kind)} (1 call)", "batch",
                 ScanlineCanvas, _as_array, _sl_batch(kind)),
@@ -625,6 +633,4 @@ def variants(workload, caps):
         prepare, draw = _cv2_polylines()
         out.append(Variant("cv2-polylines", "OpenCV", "cv2.polylines, N 2-point polylines (1 call)",
                            "batch", ArrayCanvas, prepare, draw, info_only=True))
-    for v in out:
-        v.max_timed = caps.get((workload.name, v.key), 0)
     return out

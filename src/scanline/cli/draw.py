@@ -19,7 +19,23 @@ SHAPES = {
     "circle": ("XC YC R", "the circle of radius R about (XC, YC), by the midpoint algorithm"),
     "ellipse": ("XC YC RX RY", "the axis-aligned ellipse with semi-axes RX, RY about (XC, YC)"),
     "point": ("X Y", "the single pixel (X, Y)"),
+    "polygon": ("X1 Y1 X2 Y2 X3 Y3 ...", "the polygon through the vertices, filled by the "
+                "scan-line algorithm with the current rule and style (as many vertices as "
+                "numbers follow)"),
+    "fill-circle": ("XC YC R", "the filled circle: the midpoint outline and every pixel "
+                    "between it on each scan line"),
+    "fill-ellipse": ("XC YC RX RY", "the filled axis-aligned ellipse"),
+    "arc": ("XC YC RX RY START END", "the part of the ellipse outline from angle START to "
+            "END, counterclockwise, in degrees"),
+    "chord": ("XC YC RX RY START END", "the area between that arc and the segment joining "
+              "its ends"),
+    "pie": ("XC YC RX RY START END", "the area between that arc and the two radii"),
+    "flood": ("X Y", "flood fill: recolor the connected region of (X, Y)'s color"),
+    "boundary": ("X Y", "boundary fill from (X, Y), stopping at the boundary color"),
 }
+
+#: Shapes that fill an area, and so take the current style.
+AREAS = ("polygon", "fill-circle", "fill-ellipse", "chord", "pie")
 
 #: Words that set an attribute of the items after them, with their argument.
 SETTINGS = {
@@ -27,6 +43,15 @@ SETTINGS = {
               "red, #rrggbb, or an integer (a gray level in mode L, a bit in mode 1, "
               "a color-table index in mode P)"),
     "method": ("dda|bresenham", "the line algorithm of the following lines (default bresenham)"),
+    "rule": ("even-odd|nonzero", "the inside-outside rule of the following polygons "
+             "(default: --rule)"),
+    "style": ("STYLE", "the fill style of the following areas: solid, hollow, "
+              "pattern:NAME[:shape] (NAME checker, dots, diagonal, grid or bricks), "
+              "hatch:DEG[:SPACING[:WIDTH]] or crosshatch:DEG[:SPACING[:WIDTH]]"),
+    "connectivity": ("4|8", "the connectivity of the following flood and boundary fills "
+                     "(default 4)"),
+    "boundary-color": ("COLOR", "the boundary color of the following boundary fills "
+                       "(default white)"),
 }
 
 #: scanline.framebuffer.MODES, spelled out so that --help does not import numpy.
@@ -52,6 +77,11 @@ def _epilog():
         "",
         "Examples:",
         "  scanline draw --size 64x48 line 2 3 60 40 circle 32 24 15 -o out.png",
+        "  scanline draw --size 64x64 --rule nonzero color gold \\",
+        "      polygon 32 60 13 4 62 40 2 40 51 4 -o star.png",
+        "  scanline draw --size 64x64 style crosshatch:45:6 color red fill-circle 32 32 25 \\",
+        "      style solid color blue pie 32 32 20 20 0 90 -o pie.png",
+        "  scanline draw circle 64 64 30 color green flood 64 64 -o disk.png",
         "  scanline draw --scale 4 color red method dda line -5 3 40 20 \\",
         "      color '#00a0ff' ellipse 20 12 15 8 -o out.gif",
     ])
@@ -79,7 +109,7 @@ def positive_int(text):
 def register(subparsers):
     """Add the ``draw`` command."""
     parser = subparsers.add_parser(
-        "draw", help="draw lines, circles, ellipses and points into a PNG, GIF or BMP",
+        "draw", help="draw lines, circles, ellipses, polygons, fills and points into a PNG, GIF or BMP",
         description="Draw ITEMS into a frame buffer and save it; the extension of OUT\n"
         "(.png, .gif, .bmp) picks the format.  Options may come before or after ITEMS.",
         epilog=_epilog(), formatter_class=argparse.RawDescriptionHelpFormatter,
@@ -96,6 +126,8 @@ def register(subparsers):
                         help="background color (default black)")
     parser.add_argument("--scale", metavar="N", type=positive_int, default=1,
                         help="enlarge each pixel to an N x N block in the saved image")
+    parser.add_argument("--rule", choices=("even-odd", "nonzero"), default="even-odd",
+                        help="inside-outside rule of polygons (default even-odd)")
     parser.set_defaults(run=run)
 
 
@@ -138,6 +170,11 @@ def parse_items(words):
                 hint = f"use one of {', '.join(keywords)}"
             raise ArgumentValueError(f"ITEMS word {position}: unexpected {word!r}; {hint}")
         params = keywords[word][0].split()
+        if params[-1] == "...":  # as many numbers as follow
+            params = params[:-1]
+            count = next((k for k, text in enumerate(words[i + 1:]) if _number(text) is None),
+                         len(words) - i - 1)
+            params = (params * (count // len(params) + 1))[:max(count, len(params))]
         given = []
         for text in words[i + 1:i + 1 + len(params)]:
             if text in keywords:
@@ -147,7 +184,7 @@ def parse_items(words):
             raise ArgumentValueError(f"ITEMS word {position}: {word} needs {keywords[word][0]}, "
                                      f"got only {' '.join([word, *given])!r}")
         if word in SETTINGS:
-            args = (_color(given[0]),) if word == "color" else (given[0],)
+            args = (_color(given[0]),) if word in ("color", "boundary-color") else (given[0],)
         else:
             args = tuple(map(_number, given))
             for j, (param, value) in enumerate(zip(params, args)):
@@ -159,41 +196,81 @@ def parse_items(words):
     return items
 
 
-def render(items, width, height, mode="RGB", background="black"):
+def _degrees(args):
+    """The CLI's arc items give angles in degrees; the API takes radians."""
+    import math
+
+    return (*args[:4], math.radians(args[4]), math.radians(args[5]))
+
+
+def render(items, width, height, mode="RGB", background="black", rule="even-odd"):
     """Draw ``items`` into a new frame buffer and return it.
 
-    Colors start white, lines start with Bresenham's method.  An error from the
-    drawing functions is raised again naming the item.
+    Colors start white, lines with Bresenham's method, areas solid, fills
+    4-connected.  An error from the drawing functions is raised again naming the item.
     """
     from .. import _validate, draw
+    from ..attributes import FillStyle
     from ..draw.lines import METHODS
     from ..framebuffer import FrameBuffer
 
     fb = FrameBuffer(width, height, mode=mode, background=background)
-    color, method = "white", "bresenham"
+    state = {"color": "white", "method": "bresenham", "rule": rule, "style": None,
+             "connectivity": 4, "boundary-color": "white"}
     for item in items:
         try:
-            if item.word == "color":
-                color = item.args[0]
-                fb.pixel(color)  # check it here, where it is given
-            elif item.word == "method":
-                method = _validate.choice("method", item.args[0], tuple(METHODS))
-            elif item.word == "line":
-                draw.line(fb, *item.args, color=color, method=method)
-            elif item.word == "point":
-                fb.set_pixel(*item.args, color)
-            else:  # circle, ellipse
-                getattr(draw, item.word)(fb, *item.args, color=color)
+            if item.word in SETTINGS:
+                value = item.args[0]
+                if item.word in ("color", "boundary-color"):
+                    fb.pixel(value)  # check it here, where it is given
+                elif item.word == "method":
+                    _validate.choice("method", value, tuple(METHODS))
+                elif item.word == "rule":
+                    _validate.choice("rule", value, ("even-odd", "nonzero"))
+                elif item.word == "style":
+                    value = FillStyle.parse(value)
+                else:  # connectivity
+                    value = int(_validate.choice("connectivity", value, ("4", "8")))
+                state[item.word] = value
+            else:
+                _draw(fb, item, state, draw)
         except (ValueError, TypeError) as exc:
             raise ArgumentValueError(
                 f"ITEMS word {item.position} ({item.text}): {exc}") from exc
     return fb
 
 
+def _draw(fb, item, state, draw):
+    """Draw one shape item with the current settings."""
+    word, args, color = item.word, item.args, state["color"]
+    if word == "line":
+        draw.line(fb, *args, color=color, method=state["method"])
+    elif word == "point":
+        fb.set_pixel(*args, color)
+    elif word in ("circle", "ellipse"):
+        getattr(draw, word)(fb, *args, color=color)
+    elif word == "polygon":
+        if len(args) % 2:
+            raise ArgumentValueError(f"polygon needs x y pairs, got {len(args)} numbers")
+        points = [args[k:k + 2] for k in range(0, len(args), 2)]
+        draw.polygon(fb, points, color=color, rule=state["rule"], style=state["style"])
+    elif word in ("fill-circle", "fill-ellipse"):
+        getattr(draw, word.replace("-", "_"))(fb, *args, color=color, style=state["style"])
+    elif word == "arc":
+        draw.arc(fb, *_degrees(args), color=color)
+    elif word in ("chord", "pie"):
+        getattr(draw, word)(fb, *_degrees(args), color=color, style=state["style"])
+    elif word == "flood":
+        draw.flood_fill(fb, *args, color, connectivity=state["connectivity"])
+    else:  # boundary
+        draw.boundary_fill(fb, *args, color, boundary=state["boundary-color"],
+                           connectivity=state["connectivity"])
+
+
 def run(args):
     """Parse the items, draw them and save the image atomically."""
     items = parse_items(args.items)
-    fb = render(items, *args.size, mode=args.mode, background=args.background)
+    fb = render(items, *args.size, mode=args.mode, background=args.background, rule=args.rule)
     try:
         fb.save(args.output, scale=args.scale)
     except ValueError as exc:

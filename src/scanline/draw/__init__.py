@@ -2,8 +2,9 @@
 
 Every function takes the frame buffer first, device coordinates (x right, y up,
 pixel centers at integers) and a ``color``.  Anything outside the frame buffer is
-clipped.  Batch functions (``lines``, ``circles``, ``ellipses``) take N primitives as
-one array and draw them in one compiled call.
+clipped.  Batch functions (``lines``, ``circles``, ``ellipses``, ``polygons``,
+``fill_circles``, ``fill_ellipses``) take N primitives as one array and draw them in one
+compiled call.  Area functions take a ``style`` (:class:`scanline.FillStyle`).
 """
 
 from .lines import line, lines
@@ -11,4 +12,5 @@ from .conics import circle, circles, ellipse, ellipses
 from .curved import arc, chord, fill_circle, fill_circles, fill_ellipse, fill_ellipses, pie
 from .polygon import polygon, polygons
 
-__all__ = ["line", "lines", "circle", "circles", "ellipse", "ellipses"]
+__all__ = ["line", "lines", "circle", "circles", "ellipse", "ellipses", "polygon", "polygons",
+           "fill_circle", "fill_circles", "fill_ellipse", "fill_ellipses", "arc", "chord", "pie"]

@@ -1,0 +1,252 @@
+"""Scan-line seed fill with an explicit stack: flood fill, boundary fill, soft fill
+(notes, chapter 2, Q.8: "start from a given interior position and paint outward from
+this point until we specify the boundary conditions").
+
+One loop serves the three fills; they differ only in the test that says whether a
+pixel belongs to the region (``kind``) and in how a span is painted:
+
+``FLOOD``
+    the pixel's channels lie within ``ref[0]..ref[1]`` (the seed's value minus and
+    plus the tolerance, per channel);
+``BOUNDARY``
+    the pixel is none of the colors in the rows of ``ref``;
+``SOFT``
+    the pixel is a blend P = t*F + (1 - t)*B of ``F = ref[0]`` and ``B = ref[1]``
+    with t > 0 (least-squares t, residual at most ``SOFT_RESIDUAL`` per channel);
+    it is repainted t*F' + (1 - t)*B with ``F' = ref[2]``.
+
+Visited pixels are marked in ``mask`` (one byte per pixel), never recognized by their
+color: a pixel that already has the fill color, or that still passes the test after
+painting, is filled once and the loop ends.
+"""
+
+import numpy as np
+
+from ._jit import helper, inline, kernel
+from .spans import span
+
+FLOOD = 0
+BOUNDARY = 1
+SOFT = 2
+
+#: Soft fill: largest distance, in levels per channel, between a pixel and the blend
+#: t*F + (1 - t)*B that best explains it (each stored channel is rounded, so exact
+#: blends are within half a level; a level more absorbs the error of t).
+SOFT_RESIDUAL = 1.0
+
+#: Columns of a trace step: popped seed x, y; span x_left, x_right (-1, -1 when
+#: the seed was already filled); number of seeds pushed.
+STEP_COLUMNS = 5
+
+
+@inline
+def bit(buf, x, y):
+    """The bit of pixel (x, y) in packed storage."""
+    return (buf[y, x >> 3, 0] >> (7 - (x & 7))) & 1
+
+
+@helper
+def classify_row(buf, packed, kind, width, y, ref, todo):
+    """Set ``todo[y, x]`` to 1 for the pixels of scan line y that belong to the
+    region (see the module doc), 0 for the others."""
+    if packed:
+        for x in range(width):
+            v = bit(buf, x, y)
+            if kind == BOUNDARY:
+                t = 1
+                for k in range(ref.shape[0]):
+                    if v == ref[k, 0]:
+                        t = 0
+                todo[y, x] = t
+            else:
+                todo[y, x] = ref[0, 0] <= v and v <= ref[1, 0]
+        return
+    n = buf.shape[2]
+    for x in range(width):
+        t = 1
+        if kind == BOUNDARY:
+            for k in range(ref.shape[0]):
+                same = True
+                for c in range(n):
+                    if buf[y, x, c] != ref[k, c]:
+                        same = False
+                if same:
+                    t = 0
+        elif kind == SOFT:
+            t = blend_fraction(buf, x, y, ref) > 0.0
+        else:
+            for c in range(n):
+                v = buf[y, x, c]
+                if v < ref[0, c] or v > ref[1, c]:
+                    t = 0
+        todo[y, x] = t
+
+
+@helper
+def blend_fraction(buf, x, y, ref):
+    """Soft fill: t = (P - B).(F - B) / |F - B|**2 clipped to 1 for pixel P, if
+    t > 0 and P is within SOFT_RESIDUAL of t*F + (1 - t)*B in every channel; else 0."""
+    n = buf.shape[2]
+    dot = 0.0
+    norm = 0.0
+    for c in range(n):
+        d = float(ref[0, c] - ref[1, c])
+        dot += (float(buf[y, x, c]) - ref[1, c]) * d
+        norm += d * d
+    if dot <= 0.0:
+        return 0.0
+    t = min(dot / norm, 1.0)
+    for c in range(n):
+        r = float(buf[y, x, c]) - ref[1, c] - t * (ref[0, c] - ref[1, c])
+        if abs(r) > SOFT_RESIDUAL:
+            return 0.0
+    return t
+
+
+@helper
+def soft_span(buf, y, x0, x1, ref):
+    """Repaint pixels x0..x1 of scan line y as round(t*F' + (1 - t)*B), t each
+    pixel's blend fraction (all of them are members: t > 0)."""
+    n = buf.shape[2]
+    for x in range(x0, x1 + 1):
+        t = blend_fraction(buf, x, y, ref)
+        for c in range(n):
+            buf[y, x, c] = np.uint8(np.floor(ref[1, c] + t * (ref[2, c] - ref[1, c]) + 0.5))
+
+
+@helper
+def classify_near(buf, packed, kind, width, height, y, ref, todo, ready):
+    """Classify scan lines y - 1, y and y + 1 (those on the raster) on first use;
+    ``ready[y]`` records that row y is done.  Each row is tested once, before any of
+    its pixels is painted, in one tight loop."""
+    for r in range(max(y - 1, 0), min(y + 1, height - 1) + 1):
+        if ready[r] == 0:
+            ready[r] = 1
+            classify_row(buf, packed, kind, width, r, ref, todo)
+
+
+@inline
+def paint(buf, packed, kind, width, height, y, x0, x1, color, ref):
+    """Paint the span x0..x1 of scan line y (the loop's one pixel-writing call)."""
+    if kind == SOFT:
+        soft_span(buf, y, x0, x1, ref)
+    else:
+        span(buf, packed, width, height, y, x0, x1, color)
+
+
+@helper
+def enlarged(a, used, need):
+    """``a`` if it has at least ``need`` rows, else a copy with twice as many (or
+    ``need``) rows, its first ``used`` rows kept: the stack and the trace logs have no
+    fixed limit.  (Called once per span, outside the pixel loops: reassigning an array
+    inside them made the loop five times slower.)"""
+    if need <= a.shape[0]:
+        return a
+    b = np.empty((max(2 * a.shape[0], need), a.shape[1]), a.dtype)
+    b[:used] = a[:used]
+    return b
+
+
+@helper
+def seed_loop(buf, packed, kind, width, height, x0, y0, eight, ref, color, tracing):
+    """Fill the region of seed (x0, y0); return the number of pixels filled and, when
+    ``tracing``, the step log (rows of STEP_COLUMNS: popped seed x, y; span x_left,
+    x_right, or -1, -1 when the seed was filled already; number of seeds pushed) and
+    the seeds pushed, in order.
+
+    ``todo[y, x]`` is 1 for a region pixel not yet filled.  Pop a seed; if it is
+    still to be filled, extend it left and right to the ends of its span, paint the
+    span and clear its ``todo``, then scan the row above and the row below over
+    x_left..x_right (one pixel further each way when ``eight``) and push the
+    rightmost pixel of each run still to be filled.
+
+    The steps are written out in this one loop: moved into a helper (inlined either
+    way) they ran 2.5 to 3 times slower.  One step pushes at most ``width + 2``
+    seeds, so the inner loop runs while that much room is left and the stack is
+    enlarged between its runs (reassigning it inside made the loop slower too).
+    """
+    todo = np.zeros((height, width), np.uint8)
+    ready = np.zeros(height, np.uint8)
+    stack = np.empty((width + 256, 2), np.int64)
+    stack[0, 0] = x0
+    stack[0, 1] = y0
+    top = 1
+    count = 0
+    steps = np.empty((16 if tracing else 0, STEP_COLUMNS), np.int64)
+    pushed = np.empty((16 if tracing else 0, 2), np.int64)
+    nsteps = 0
+    npushed = 0
+    while top > 0:
+        stack = enlarged(stack, top, top + width + 2)
+        room = stack.shape[0] - width - 2
+        while 0 < top <= room:
+            top -= 1
+            before = top
+            x = stack[top, 0]
+            y = stack[top, 1]
+            if ready[max(y - 1, 0)] == 0 or ready[y] == 0 or ready[min(y + 1, height - 1)] == 0:
+                classify_near(buf, packed, kind, width, height, y, ref, todo, ready)
+            xl = -1
+            xr = -1
+            if todo[y, x] != 0:
+                xl = x
+                while xl > 0 and todo[y, xl - 1] != 0:
+                    xl -= 1
+                xr = x
+                while xr < width - 1 and todo[y, xr + 1] != 0:
+                    xr += 1
+                paint(buf, packed, kind, width, height, y, xl, xr, color, ref)
+                todo[y, xl:xr + 1] = 0
+                count += xr - xl + 1
+                a = max(xl - eight, 0)
+                b = min(xr + eight, width - 1)
+                for side in range(2):
+                    ny = y + 1 - 2 * side
+                    if ny < 0 or ny >= height:
+                        continue
+                    i = a
+                    while i <= b:
+                        if todo[ny, i] != 0:
+                            while i < b and todo[ny, i + 1] != 0:
+                                i += 1
+                            stack[top, 0] = i
+                            stack[top, 1] = ny
+                            top += 1
+                        i += 1
+            if tracing:
+                steps = enlarged(steps, nsteps, nsteps + 1)
+                pushed = enlarged(pushed, npushed, npushed + top - before)
+                steps[nsteps, 0] = x
+                steps[nsteps, 1] = y
+                steps[nsteps, 2] = xl
+                steps[nsteps, 3] = xr
+                steps[nsteps, 4] = top - before
+                nsteps += 1
+                pushed[npushed:npushed + top - before] = stack[before:top]
+                npushed += top - before
+    return count, steps[:nsteps], pushed[:npushed]
+
+
+@kernel
+def seed_fill(buf, packed, kind, width, height, x0, y0, eight, ref, color):
+    """Fill the region of seed (x0, y0), which must be on the raster; return the
+    number of pixels filled.  ``kind`` is FLOOD, BOUNDARY or SOFT (not packed).
+
+    (Each call passes literal flags, so that numba compiles a loop for each case
+    with the tests of the others removed.)"""
+    if packed:
+        if kind == BOUNDARY:
+            return seed_loop(buf, True, BOUNDARY, width, height, x0, y0, eight, ref, color, False)[0]
+        return seed_loop(buf, True, FLOOD, width, height, x0, y0, eight, ref, color, False)[0]
+    if kind == BOUNDARY:
+        return seed_loop(buf, False, BOUNDARY, width, height, x0, y0, eight, ref, color, False)[0]
+    if kind == SOFT:
+        return seed_loop(buf, False, SOFT, width, height, x0, y0, eight, ref, color, False)[0]
+    return seed_loop(buf, False, FLOOD, width, height, x0, y0, eight, ref, color, False)[0]
+
+
+@kernel
+def seed_fill_trace(buf, packed, kind, width, height, x0, y0, eight, ref, color):
+    """:func:`seed_fill` step by step: return the number of pixels filled, the step
+    log and the seeds pushed (see :func:`seed_loop`)."""
+    return seed_loop(buf, packed, kind, width, height, x0, y0, eight, ref, color, True)

@@ -11,6 +11,9 @@ from .lines import line, lines
 from .conics import circle, circles, ellipse, ellipses
 from .curved import arc, chord, fill_circle, fill_circles, fill_ellipse, fill_ellipses, pie
 from .polygon import polygon, polygons
+from .seedfill import boundary_fill, flood_fill
+from .softfill import soft_fill
 
 __all__ = ["line", "lines", "circle", "circles", "ellipse", "ellipses", "polygon", "polygons",
-           "fill_circle", "fill_circles", "fill_ellipse", "fill_ellipses", "arc", "chord", "pie"]
+           "fill_circle", "fill_circles", "fill_ellipse", "fill_ellipses", "arc", "chord", "pie",
+           "flood_fill", "boundary_fill", "soft_fill"]

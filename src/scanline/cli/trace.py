@@ -32,7 +32,28 @@ ALGORITHMS = {
         {"RX": "semi-axis along x, >= 0", "RY": "semi-axis along y, >= 0"},
         True,
     ),
+    "flood-fill": (
+        "the scan-line seed fill with its stack (notes, chapter 2, Q.8)",
+        {"X": "x of the seed (0 = left column of the grid)",
+         "Y": "y of the seed (0 = bottom row of the grid)"},
+        False,
+    ),
 }
+
+
+def fill_options(sub):
+    """``--grid`` and ``--connectivity`` of ``flood-fill``; returns their names."""
+    sub.add_argument("--grid", help="rows of characters, top row first, separated by '/' "
+                     "(e.g. '#####/#..##/#...#/#####'); each character is a color; "
+                     "default: a built-in example with two rooms")
+    sub.add_argument("--connectivity", type=integer, choices=(4, 8), default=4,
+                     help="4 (default): edge neighbors; 8: edge and corner neighbors")
+    return ["grid", "connectivity"]
+
+
+#: Algorithms with options of their own: CLI name -> function that adds them to the
+#: sub-command's parser and returns their names (passed on as keywords).
+OPTIONS = {"flood-fill": fill_options}
 
 FORMATS = ("table", "csv", "json")
 
@@ -54,6 +75,7 @@ def register(subparsers):
         epilog="Examples:\n  scanline trace bresenham 20 10 30 18\n"
         "  scanline trace midpoint-circle 10 --center 5 5 --format csv\n"
         "  scanline trace midpoint-ellipse 8 6 --format json\n"
+        "  scanline trace flood-fill 1 2 --connectivity 8\n"
         "Negative numbers work as arguments: scanline trace dda -5 3 10 -2",
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
@@ -68,7 +90,9 @@ def register(subparsers):
         sub.add_argument("--format", choices=FORMATS, default="table",
                          help="table (default): aligned text with the set-up notes; "
                          "csv: a header and one line per row; json: a list of row objects")
-        sub.set_defaults(run=run, algorithm=name, params=[p.lower() for p in params])
+        extra = OPTIONS[name](sub) if name in OPTIONS else []
+        sub.set_defaults(run=run, algorithm=name, params=[p.lower() for p in params],
+                         options=extra)
 
 
 def run(args):
@@ -77,6 +101,7 @@ def run(args):
 
     values = [getattr(args, p) for p in args.params]
     options = {"center": args.center} if "center" in vars(args) else {}
+    options.update({o: getattr(args, o) for o in args.options if getattr(args, o) is not None})
     table = functions[args.algorithm](*values, **options)
     if args.format == "json":
         print(table.to_json(indent=2))

@@ -11,6 +11,7 @@ The command line gives the same tables: ``scanline trace bresenham 20 10 30 18``
 from .table import Table
 from .lines import bresenham, dda
 from .conics import midpoint_circle, midpoint_ellipse
+from .seedfill import flood_fill
 
 #: CLI name -> function
 ALGORITHMS = {
@@ -18,6 +19,8 @@ ALGORITHMS = {
     "dda": dda,
     "midpoint-circle": midpoint_circle,
     "midpoint-ellipse": midpoint_ellipse,
+    "flood-fill": flood_fill,
 }
 
-__all__ = ["Table", "bresenham", "dda", "midpoint_circle", "midpoint_ellipse", "ALGORITHMS"]
+__all__ = ["Table", "bresenham", "dda", "midpoint_circle", "midpoint_ellipse", "flood_fill",
+           "ALGORITHMS"]

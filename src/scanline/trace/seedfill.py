@@ -1,0 +1,126 @@
+"""Step table of the scan-line seed fill (notes, chapter 2, Q.8)."""
+
+import numpy as np
+
+from .. import _validate as v
+from ..errors import ArgumentTypeError, ArgumentValueError
+from .table import Table
+
+#: The grid traced when none is given, rows top first: '#' walls, a room with a
+#: pillar (left), a second room (right) and a gap that joins them only diagonally,
+#: so that connectivity 4 and 8 differ.
+EXAMPLE_GRID = (
+    "###########",
+    "#.....#...#",
+    "#.###.#...#",
+    "#.....#...#",
+    "######.####",
+    "###########",
+)
+
+#: A trace prints every step; bigger grids would print pages nobody reads.
+MAX_CELLS = 10_000
+
+
+def _rows(grid):
+    """The grid's rows, top first: a string (rows separated by newlines or '/') or
+    a sequence of strings, all of one length."""
+    if isinstance(grid, str):
+        rows = grid.replace("/", "\n").split("\n")
+    elif isinstance(grid, (list, tuple)) and all(isinstance(r, str) for r in grid):
+        rows = list(grid)
+    else:
+        raise ArgumentTypeError(
+            f"grid must be a string of rows (separated by newlines or '/') or a list of "
+            f"strings, got {v._show(grid)}"
+        )
+    rows = [r for r in rows if r.strip()]
+    if not rows or len({len(r) for r in rows}) != 1:
+        raise ArgumentValueError(
+            f"grid must have at least one row and rows of equal length, got row lengths "
+            f"{[len(r) for r in rows]}"
+        )
+    if len(rows) * len(rows[0]) > MAX_CELLS:
+        raise ArgumentValueError(
+            f"grid has {len(rows)} x {len(rows[0])} cells; a trace takes at most {MAX_CELLS}"
+        )
+    return rows
+
+
+def grid_frame(grid):
+    """A mode "L" frame buffer holding ``grid``: each distinct character becomes one
+    gray level (in order of first appearance), row 0 of the text is the top scan line.
+    Returns the frame buffer and the list of characters, indexed by level."""
+    from ..framebuffer import FrameBuffer
+
+    rows = _rows(grid)
+    chars = list(dict.fromkeys("".join(rows)))
+    if len(chars) > 255:
+        raise ArgumentValueError("grid uses more than 255 distinct characters")
+    levels = {c: i for i, c in enumerate(chars)}
+    image = np.array([[levels[c] for c in row] for row in rows], np.uint8)
+    return FrameBuffer.from_array(image, mode="L"), chars
+
+
+def flood_fill(x, y, grid=EXAMPLE_GRID, connectivity=4):
+    """The scan-line seed fill step by step, flood-filling the region of ``grid``
+    that holds the seed's character.
+
+    Each row of the table is one step k: the seed popped from the stack, the span
+    filled from it (x_left..x_right on scan line y; "already filled" when an earlier
+    span covered the seed), the seeds pushed (the rightmost pixel of each run still
+    to be filled in the rows above and below) and the stack after pushing, top last.
+    ``table.pixels()`` is the set of pixels filled: exactly those that
+    :func:`scanline.draw.flood_fill` paints, since both run the same kernel.
+
+    Parameters
+    ----------
+    x, y : int
+        The seed, in device coordinates: x to the right, y up, (0, 0) the
+        bottom-left character of the grid.
+    grid : str or list of str
+        Rows of characters, top row first; a string separates rows with newlines or
+        '/'.  Each character is a color.  Default: :data:`EXAMPLE_GRID`.
+    connectivity : {4, 8}
+
+    Examples
+    --------
+    >>> t = flood_fill(1, 1, ["####", "#..#", "#..#", "####"])
+    >>> [(r["k"], r["x"], r["y"], r["span"], r["stack"]) for r in t.rows]
+    [(0, 1, 1, '1..2', '(2, 2)'), (1, 2, 2, '1..2', '')]
+    """
+    from ..draw.seedfill import eight_connected, seed, seed_value
+    from .._kernels import seedfill as k
+
+    fb, chars = grid_frame(grid)
+    x, y = seed(fb, x, y)
+    eight = eight_connected(connectivity)
+    buf, packed = fb._raster()
+    value = seed_value(buf, packed, x, y)
+    ref = np.stack([value, value])
+    _, steps, pushed = k.seed_fill_trace(buf, packed, k.FLOOD, fb.width, fb.height, x, y,
+                                         eight, ref, np.array([255], np.uint8))
+    rows, pixels, stack, j = [], [], [(x, y)], 0
+    for i, (sx, sy, xl, xr, n) in enumerate(steps.tolist()):
+        stack.pop()
+        new = [tuple(p) for p in pushed[j:j + n].tolist()]
+        j += n
+        stack += new
+        if xl >= 0:
+            pixels += [(px, sy) for px in range(xl, xr + 1)]
+        rows.append({
+            "k": i, "x": sx, "y": sy,
+            "span": f"{xl}..{xr}" if xl >= 0 else "already filled",
+            "pushed": " ".join(f"({a}, {b})" for a, b in new),
+            "stack": " ".join(f"({a}, {b})" for a, b in stack),
+        })
+    notes = [
+        f"flood fill of the {chars[int(value[0])]!r} region from seed ({x}, {y}), "
+        f"{connectivity}-connected, on a {fb.width} x {fb.height} grid (y up, "
+        "(0, 0) bottom left)",
+        "pop a seed, fill its span x_left..x_right, push the rightmost pixel of each "
+        "unfilled run above and below" + (" (one pixel wider each way)" if eight else ""),
+        f"stack at the start: ({x}, {y}); top of the stack last",
+    ]
+    return Table(f"Scan-line seed fill from ({x}, {y})",
+                 ["k", "x", "y", "span", "pushed", "stack"], rows, notes, pixels)

@@ -134,6 +134,7 @@ def flood_fill(fb, x, y, color="white", connectivity=4, tolerance=0):
     ####---
     ####---
     """
+    target(fb)  # type check
     tol = _tolerance(fb, tolerance)
 
     def ref(buf, packed, sx, sy):
@@ -194,6 +195,7 @@ def boundary_fill(fb, x, y, color="white", boundary="white", connectivity=4):
     ----------
     See :func:`flood_fill`.
     """
+    target(fb)  # type check
     if isinstance(boundary, (list, np.ndarray)):
         if len(boundary) == 0:
             raise ArgumentValueError("boundary must hold at least one color, got an empty list")

@@ -231,25 +231,32 @@ def seed_loop(buf, packed, kind, width, height, x0, y0, eight, ref, color, traci
 
 
 @kernel
-def seed_fill(buf, packed, kind, width, height, x0, y0, eight, ref, color):
-    """Fill the region of seed (x0, y0), which must be on the raster; return the
-    number of pixels filled.  ``kind`` is FLOOD, BOUNDARY or SOFT (not packed).
-
-    (Each call passes literal flags, so that numba compiles a loop for each case
-    with the tests of the others removed.)"""
+def flood(buf, packed, width, height, x0, y0, eight, ref, color):
+    """Flood fill from seed (x0, y0), which must be on the raster; return the number
+    of pixels filled.  (One kernel per fill, each calling the loop with literal
+    flags: numba compiles a loop per case, without the tests of the others, and only
+    for the fills in use.)"""
     if packed:
-        if kind == BOUNDARY:
-            return seed_loop(buf, True, BOUNDARY, width, height, x0, y0, eight, ref, color, False)[0]
         return seed_loop(buf, True, FLOOD, width, height, x0, y0, eight, ref, color, False)[0]
-    if kind == BOUNDARY:
-        return seed_loop(buf, False, BOUNDARY, width, height, x0, y0, eight, ref, color, False)[0]
-    if kind == SOFT:
-        return seed_loop(buf, False, SOFT, width, height, x0, y0, eight, ref, color, False)[0]
     return seed_loop(buf, False, FLOOD, width, height, x0, y0, eight, ref, color, False)[0]
 
 
 @kernel
+def boundary(buf, packed, width, height, x0, y0, eight, ref, color):
+    """Boundary fill from seed (x0, y0); see :func:`flood`."""
+    if packed:
+        return seed_loop(buf, True, BOUNDARY, width, height, x0, y0, eight, ref, color, False)[0]
+    return seed_loop(buf, False, BOUNDARY, width, height, x0, y0, eight, ref, color, False)[0]
+
+
+@kernel
+def soft(buf, width, height, x0, y0, eight, ref, color):
+    """Soft fill (unpacked storage) from seed (x0, y0); see :func:`flood`."""
+    return seed_loop(buf, False, SOFT, width, height, x0, y0, eight, ref, color, False)[0]
+
+
+@kernel
 def seed_fill_trace(buf, packed, kind, width, height, x0, y0, eight, ref, color):
-    """:func:`seed_fill` step by step: return the number of pixels filled, the step
+    """A seed fill of ``kind`` step by step: return the number of pixels filled, the step
     log and the seeds pushed (see :func:`seed_loop`)."""
     return seed_loop(buf, packed, kind, width, height, x0, y0, eight, ref, color, True)

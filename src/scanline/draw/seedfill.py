@@ -41,15 +41,19 @@ def eight_connected(connectivity):
 
 
 def fill(fb, x, y, kind, connectivity, ref, color):
-    """Run the seed fill of ``kind`` from (x, y); return the number of pixels filled."""
+    """Run the seed fill ``kind`` ("flood", "boundary" or "soft") from (x, y); return
+    the number of pixels filled.  ``ref`` is the kernel's reference colors (see
+    :mod:`scanline._kernels.seedfill`) or a function of (buf, packed, x, y) giving them."""
     from .._kernels import seedfill as k
 
     buf, packed, width, height = target(fb)
     x, y = seed(fb, x, y)
     eight = eight_connected(connectivity)
     ref = ref(buf, packed, x, y) if callable(ref) else ref
-    return int(k.seed_fill(buf, packed, getattr(k, kind), width, height, x, y, eight,
-                           np.ascontiguousarray(ref, np.int64), color))
+    ref = np.ascontiguousarray(ref, np.int64)
+    if kind == "soft":
+        return int(k.soft(buf, width, height, x, y, eight, ref, color))
+    return int(getattr(k, kind)(buf, packed, width, height, x, y, eight, ref, color))
 
 
 def seed_value(buf, packed, x, y):
@@ -141,7 +145,7 @@ def flood_fill(fb, x, y, color="white", connectivity=4, tolerance=0):
         value = seed_value(buf, packed, sx, sy)
         return np.stack([value - tol, value + tol])
 
-    return fill(fb, x, y, "FLOOD", connectivity, ref, fb.pixel(color))
+    return fill(fb, x, y, "flood", connectivity, ref, fb.pixel(color))
 
 
 def boundary_fill(fb, x, y, color="white", boundary="white", connectivity=4):
@@ -202,4 +206,4 @@ def boundary_fill(fb, x, y, color="white", boundary="white", connectivity=4):
         ref = colors(fb, boundary, len(boundary), "boundary")
     else:
         ref = fb.pixel(boundary, "boundary")[None, :]
-    return fill(fb, x, y, "BOUNDARY", connectivity, ref, fb.pixel(color))
+    return fill(fb, x, y, "boundary", connectivity, ref, fb.pixel(color))

@@ -80,4 +80,4 @@ def soft_fill(fb, x, y, color, foreground, background, connectivity=4):
             f"foreground and background must differ (both are {tuple(old.tolist())}): "
             "the blend fraction t of P = t*F + (1 - t)*B is then undefined"
         )
-    return fill(fb, x, y, "SOFT", connectivity, np.stack([old, back, new]), new)
+    return fill(fb, x, y, "soft", connectivity, np.stack([old, back, new]), new)

@@ -80,3 +80,33 @@ def test_bad_area_items_exit_2(call, one_line_error, tmp_path, items, fragments)
     result = call("draw", *items, "-o", out)
     one_line_error(result, *fragments)
     assert not out.exists()
+
+
+def test_flood_boundary_and_soft_fills_match_the_api(call, tmp_path):
+    got = _draw(call, tmp_path, "circle", 20, 20, 10, "color", "green", "flood", 20, 20,
+                "color", "white", "circle", 45, 45, 10, "line", 35, 45, 55, 45,
+                "color", "red", "boundary", 45, 50,
+                "color", "white", "fill-circle", 45, 15, 8,
+                "color", "blue", "soft", 45, 15, "white", "black")
+
+    def build(fb):
+        sl.draw.circle(fb, 20, 20, 10)
+        sl.draw.flood_fill(fb, 20, 20, "green")
+        sl.draw.circle(fb, 45, 45, 10)
+        sl.draw.line(fb, 35, 45, 55, 45)
+        sl.draw.boundary_fill(fb, 45, 50, "red", boundary="white")
+        sl.draw.fill_circle(fb, 45, 15, 8)
+        sl.draw.soft_fill(fb, 45, 15, "blue", "white", "black")
+
+    expected = _api(build)
+    assert np.array_equal(got, expected)
+    assert got[63 - 20, 20].tolist() == [0, 128, 0]      # inside the flooded circle
+    assert got[63 - 50, 45].tolist() == [255, 0, 0]      # the boundary-filled half
+    assert got[63 - 40, 45].tolist() == [0, 0, 0]        # below the line: not reached
+    assert got[63 - 15, 45].tolist() == [0, 0, 255]      # soft fill recolored the disk
+
+
+def test_tolerance_widens_a_flood(call, tmp_path):
+    got = _draw(call, tmp_path, "--background", "#101010", "color", "#141414",
+                "fill-circle", 32, 32, 10, "color", "red", "tolerance", 4, "flood", 1, 1)
+    assert got[63 - 32, 32].tolist() == [255, 0, 0]      # within 4 levels of the seed

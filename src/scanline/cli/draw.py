@@ -32,7 +32,12 @@ SHAPES = {
     "pie": ("XC YC RX RY START END", "the area between that arc and the two radii"),
     "flood": ("X Y", "flood fill: recolor the connected region of (X, Y)'s color"),
     "boundary": ("X Y", "boundary fill from (X, Y), stopping at the boundary color"),
+    "soft": ("X Y FOREGROUND BACKGROUND", "soft (tint) fill from (X, Y): pixels that blend "
+             "FOREGROUND over BACKGROUND are re-blended with the current color"),
 }
+
+#: Shape parameters that are colors, not numbers.
+COLOR_PARAMS = ("FOREGROUND", "BACKGROUND")
 
 #: Shapes that fill an area, and so take the current style.
 AREAS = ("polygon", "fill-circle", "fill-ellipse", "chord", "pie")
@@ -52,6 +57,8 @@ SETTINGS = {
                      "(default 4)"),
     "boundary-color": ("COLOR", "the boundary color of the following boundary fills "
                        "(default white)"),
+    "tolerance": ("N", "the largest channel difference from the seed's color that the "
+                  "following flood fills still recolor (default 0)"),
 }
 
 #: scanline.framebuffer.MODES, spelled out so that --help does not import numpy.
@@ -186,7 +193,8 @@ def parse_items(words):
         if word in SETTINGS:
             args = (_color(given[0]),) if word in ("color", "boundary-color") else (given[0],)
         else:
-            args = tuple(map(_number, given))
+            args = tuple(_color(text) if param in COLOR_PARAMS else _number(text)
+                         for param, text in zip(params, given))
             for j, (param, value) in enumerate(zip(params, args)):
                 if value is None:
                     raise ArgumentValueError(f"ITEMS word {position + 1 + j}: {param} of {word} "
@@ -216,7 +224,7 @@ def render(items, width, height, mode="RGB", background="black", rule="even-odd"
 
     fb = FrameBuffer(width, height, mode=mode, background=background)
     state = {"color": "white", "method": "bresenham", "rule": rule, "style": None,
-             "connectivity": 4, "boundary-color": "white"}
+             "connectivity": 4, "boundary-color": "white", "tolerance": 0}
     for item in items:
         try:
             if item.word in SETTINGS:
@@ -229,6 +237,8 @@ def render(items, width, height, mode="RGB", background="black", rule="even-odd"
                     _validate.choice("rule", value, ("even-odd", "nonzero"))
                 elif item.word == "style":
                     value = FillStyle.parse(value)
+                elif item.word == "tolerance":
+                    value = _validate.positive_int("tolerance", _number(value), minimum=0)
                 else:  # connectivity
                     value = int(_validate.choice("connectivity", value, ("4", "8")))
                 state[item.word] = value
@@ -261,7 +271,10 @@ def _draw(fb, item, state, draw):
     elif word in ("chord", "pie"):
         getattr(draw, word)(fb, *_degrees(args), color=color, style=state["style"])
     elif word == "flood":
-        draw.flood_fill(fb, *args, color, connectivity=state["connectivity"])
+        draw.flood_fill(fb, *args, color, connectivity=state["connectivity"],
+                        tolerance=state["tolerance"])
+    elif word == "soft":
+        draw.soft_fill(fb, *args[:2], color, *args[2:], connectivity=state["connectivity"])
     else:  # boundary
         draw.boundary_fill(fb, *args, color, boundary=state["boundary-color"],
                            connectivity=state["connectivity"])

@@ -24,9 +24,9 @@ def test_demo_writes_every_figure_gallery_and_page(gallery):
     out, code, stdout = gallery
     assert code == 0
     assert str(out) in stdout
-    assert len(figures.FIGURES) == 9
+    assert len(figures.FIGURES) == 13
     pngs = sorted(p.name for p in out.glob("*.png"))
-    assert "gallery.png" in pngs and len(pngs) == 10
+    assert "gallery.png" in pngs and len(pngs) == 14
     for png in pngs:
         with Image.open(out / png) as image:
             image.verify()
@@ -37,12 +37,15 @@ def test_page_shows_each_figure_with_caption_and_tables(gallery):
     out = gallery[0]
     page = (out / "index.html").read_text(encoding="utf-8")
     images = re.findall(r'<img src="([^"]+)"', page)
-    assert len(images) == 9 and all((out / name).is_file() for name in images)
-    assert page.count("<figcaption>") == 9
-    assert page.count("Notes, chapter") >= 9
-    assert page.count("<pre>") == 4  # Bresenham, DDA vs Bresenham, circle, ellipse
+    assert len(images) == 13 and all((out / name).is_file() for name in images)
+    assert page.count("<figcaption>") == 13
+    assert page.count("Notes, chapter") >= 13
+    assert page.count("<pre>") == 5  # Bresenham, DDA vs Bresenham, circle, ellipse, seed fill
     for value in ("Bresenham line (20, 10) -&gt; (30, 18)", "Midpoint circle r = 10",
-                  "Midpoint ellipse r_x = 8, r_y = 6", "-332"):
+                  "Midpoint ellipse r_x = 8, r_y = 6", "-332",
+                  "Scan-line seed fill from (1, 2)", "4-connected", "8-connected",
+                  "left room (12 pixels)", "right room (22 pixels in all)",  # 4- vs 8-connected
+                  "tile the disk exactly"):
         assert value in page
     assert "http" not in page  # self-contained
 

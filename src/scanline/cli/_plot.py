@@ -123,16 +123,33 @@ def side_by_side(images, titles, gap=24):
     return out
 
 
+def stacked(images, gap=24):
+    """Put pictures one above another, each centered, on white paper (e.g. rows made
+    by :func:`side_by_side`)."""
+    width = max(im.width for im in images)
+    out = Image.new("RGB", (width, sum(im.height for im in images) + gap * (len(images) - 1)),
+                    PAPER)
+    y = 0
+    for im in images:
+        out.paste(im.convert("RGB"), ((width - im.width) // 2, y))
+        y += im.height + gap
+    return out
+
+
 def grid_of(images, titles, columns=3, cell=(400, 300), gap=16):
-    """A contact sheet: each picture shrunk to fit ``cell`` with its title below."""
+    """A contact sheet: each picture shrunk to fit ``cell`` with its title below; a
+    last row that is not full is centered."""
     title_font = font(15)
     foot = title_font.size + 12
     rows = -(-len(images) // columns)
     cw, ch = cell
     out = Image.new("RGB", (columns * (cw + gap) + gap, rows * (ch + foot + gap) + gap), PAPER)
     draw = ImageDraw.Draw(out)
+    last_row = (rows - 1) * columns
     for i, (im, title) in enumerate(zip(images, titles)):
         x0 = gap + (i % columns) * (cw + gap)
+        if i >= last_row:
+            x0 += (rows * columns - len(images)) * (cw + gap) // 2
         y0 = gap + (i // columns) * (ch + foot + gap)
         thumb = im.convert("RGB")
         thumb.thumbnail(cell, Image.Resampling.LANCZOS)

@@ -10,11 +10,11 @@ import time
 from collections import namedtuple
 
 import numpy as np
-from PIL import Image
+from PIL import Image, ImageColor
 
 import scanline as sl
 
-from ._plot import INK, GraphPaper, enlarge, side_by_side
+from ._plot import INK, GraphPaper, enlarge, side_by_side, stacked
 
 #: ``name`` (file stem), ``title``, ``caption`` (plain text), ``source`` (the notes'
 #: section), ``image`` (a Pillow image) and ``table`` (step-table text or None).
@@ -263,6 +263,199 @@ def figure_batch():
                      [f"{n_lines:,} lines", f"{n_circles:,} circles"]), None)
 
 
-#: Every figure of the demo, in gallery order (a) to (i).
+def _star(xc, yc, r, turns=2, n=5):
+    """The vertices of the star polygon {n/turns} about (xc, yc), first vertex up."""
+    angles = math.pi / 2 + np.arange(n) * (2 * math.pi * turns / n)
+    return np.column_stack([xc + r * np.cos(angles), yc + r * np.sin(angles)])
+
+
+def _contours_on_paper(fb, contours, scale):
+    """Graph paper of ``fb`` with the ideal edges of ``contours`` in red."""
+    paper = GraphPaper(fb, scale=scale)
+    for contour in contours:
+        for (x0, y0), (x1, y1) in zip(contour, np.roll(contour, -1, axis=0)):
+            paper.line(x0, y0, x1, y1)
+    return paper.image
+
+
+def figure_fill_rules():
+    """(j) Inside-outside tests: a pentagram and a polygon with a hole under both rules."""
+    size, c = 33, 16
+    star = _star(c, c, 15.5)
+    square = np.array([(2, 3), (30, 3), (30, 29), (2, 29)], float)
+    hexagon = _star(c, c - 1, 10, turns=1, n=6)  # counterclockwise, like the square
+    rows = []
+    for contours, color in (([star], PIXEL), ([square, hexagon], SECOND)):
+        probe = [(c, c)]
+        panels, titles = [], []
+        for rule in ("even-odd", "nonzero"):
+            fb = sl.FrameBuffer(size, size, background=PAPER)
+            sl.draw.polygon(fb, contours, color=color, rule=rule)
+            inside = bool(sl.geometry.inside(probe, contours, rule=rule)[0])
+            panels.append(_contours_on_paper(fb, contours, 9))
+            titles.append(f"{rule}: center {'inside' if inside else 'outside'}")
+        winding = int(sl.geometry.winding_number(probe, contours)[0])
+        rows.append(side_by_side(panels, [f"{t} (w = {winding})" for t in titles]))
+    return Figure(
+        "fill-rules", "Inside-outside tests: even-odd and nonzero",
+        "The scan-line polygon fill fills a pixel iff its center is inside, and 'inside' "
+        "is a rule. Even-odd (odd parity): a ray from the point crosses the boundary an "
+        "odd number of times. Nonzero: the boundary winds around the point (winding "
+        "number w) a nonzero number of times. Top: the pentagram's center has w = 2, so "
+        "it is outside under even-odd and inside under nonzero. Bottom: one polygon of "
+        "two contours, a square and a hexagon, both counterclockwise: the hexagon is a "
+        "hole under even-odd, but filled under nonzero (w = 2); wound clockwise it would "
+        "be a hole under both rules. Titles from sl.geometry.inside and winding_number "
+        "at the center, which agree with the pixels; the red lines are the ideal edges.",
+        "Notes, chapter 2, Q.8 (syllabus: Scan-line polygon fill algorithm. "
+        "Inside-Outside tests)",
+        stacked(rows), None)
+
+
+def figure_curved_areas():
+    """(k) Filled circle and ellipse, a pie chart of pie slices, a chord and an arc."""
+    shares = np.array([0.34, 0.24, 0.18, 0.14, 0.10])
+    bounds = 2 * math.pi * np.concatenate([[0], np.cumsum(shares)])
+    c, r = 32, 30
+
+    disks = sl.FrameBuffer(48, 65, background=PAPER)
+    sl.draw.fill_circle(disks, 24, 46, 17, color=PIXEL)
+    sl.draw.fill_ellipse(disks, 24, 13, 22, 11, color=HIGHLIGHT)
+
+    chart = sl.FrameBuffer(2 * c + 1, 2 * c + 1, background=PAPER)
+    count = np.zeros((2 * c + 1, 2 * c + 1), int)  # how often each pixel is in a slice
+    for i, (start, end) in enumerate(zip(bounds[:-1], bounds[1:])):
+        sl.draw.pie(chart, c, c, r, r, start, end, color=OCTANT_COLORS[i])
+        one = sl.FrameBuffer(2 * c + 1, 2 * c + 1, mode="1")
+        sl.draw.pie(one, c, c, r, r, start, end, color=1)
+        count += one.to_array()
+    disk = sl.FrameBuffer(2 * c + 1, 2 * c + 1, mode="1")
+    sl.draw.fill_circle(disk, c, c, r, color=1)
+    exact = bool(np.array_equal(count, disk.to_array().astype(int)))
+
+    cut = sl.FrameBuffer(2 * c + 1, 2 * c + 1, background=PAPER)
+    a, b = math.radians(200), math.radians(340)
+    sl.draw.chord(cut, c, c, r, r, a, b, color=SECOND)
+    sl.draw.arc(cut, c, c, r, r, b, a, color=PIXEL)
+    sl.draw.pie(cut, c, c + 4, 22, 14, math.radians(30), math.radians(150), color=HIGHLIGHT)
+
+    panels = [enlarge(fb.to_pil(), 4) for fb in (disks, chart, cut)]
+    return Figure(
+        "curved-areas", "Scan-line fill of curved boundary areas",
+        "Left: sl.draw.fill_circle and fill_ellipse fill each scan line between the "
+        "outermost pixels of the midpoint circle and ellipse, so the area holds its "
+        "outline exactly. Middle: a pie chart of five sl.draw.pie slices "
+        f"({', '.join(f'{s:.0%}' for s in shares)}); pixel centers on a shared ray "
+        "follow the top-left rule, so the slices "
+        + ("tile the disk exactly: every pixel of fill_circle is in one slice, none in "
+           "two" if exact else "do NOT tile the disk exactly (a bug)")
+        + f" ({int(count.sum()):,} pixels). Right: the chord from 200 to 340 degrees "
+        "(green), the arc from 340 back to 200 degrees (blue), and a pie slice of an "
+        "ellipse (orange, 30 to 150 degrees; its edges leave the center at the polar "
+        "angles given).",
+        "Notes, chapter 2, Q.8 (syllabus: Scan-Line fill of curved Boundary Areas)",
+        side_by_side(panels, ["fill_circle, fill_ellipse", "pie (5 slices)",
+                              "chord, arc, elliptic pie"]), None)
+
+
+def figure_fill_styles():
+    """(l) One shape in six fill styles: hollow, solid, patterns, hatch, cross-hatch."""
+    house = [(5, 4), (45, 4), (45, 28), (25, 46), (5, 28)]
+    o, g = ImageColor.getrgb(HIGHLIGHT), ImageColor.getrgb(SECOND)
+    tile = [[o, o, None, None], [o, o, None, None], [None, None, g, g], [None, None, g, g]]
+    styles = [(word, sl.FillStyle.parse(word)) for word in
+              ("hollow", "solid", "pattern:bricks:shape", "hatch:45:5", "crosshatch:30:6")]
+    styles.append(("pattern: colored tile", sl.FillStyle.pattern(tile, anchor="shape")))
+    panels = []
+    for _, style in styles:
+        fb = sl.FrameBuffer(51, 51, background=PAPER)
+        sl.draw.polygon(fb, house, color=PIXEL, style=style)
+        panels.append(enlarge(fb.to_pil(), 4))
+    titles = [word for word, _ in styles]
+    return Figure(
+        "fill-styles", "Fill styles: hollow, solid, pattern, hatch",
+        "One polygon, six values of the area-fill attribute sl.FillStyle (titles as "
+        "FillStyle.parse spells them): hollow draws only the boundary; solid fills "
+        "every pixel; a pattern repeats a rectangular tile (FillStyle.TILES has "
+        f"{', '.join(sl.FillStyle.TILES)}) anchored here at the shape's lower-left "
+        "corner, so it moves with the shape; hatching draws parallel lines at an angle "
+        "and spacing, cross-hatching two perpendicular families. A tile may hold its "
+        "own colors and transparent cells (last panel). The same styles work for "
+        "circles, ellipses, chords and pies.",
+        "Notes, chapter 2, Q.8 (syllabus: Area-Fill Attributes - Fill styles. "
+        "Pattern fill)",
+        stacked([side_by_side(panels[:3], titles[:3]), side_by_side(panels[3:], titles[3:])]),
+        None)
+
+
+#: Walls '#' and floor '.': a room with a pillar, a second room, and a gap (x = 6,
+#: y = 1) that joins them only diagonally (rows top first).
+ROOMS = ("###########",
+         "#.....#...#",
+         "#.###.#...#",
+         "#.....#...#",
+         "######.####",
+         "###########")
+WALL = (90, 90, 90)
+
+
+def _soft_disk(r, foreground, background):
+    """An RGB frame buffer with an antialiased-looking disk: each pixel is
+    t F + (1 - t) B, t the share of the pixel (roughly) covered by the disk."""
+    c = math.ceil(r) + 1
+    yy, xx = np.mgrid[-c:c + 1, -c:c + 1]
+    t = np.clip(r + 0.5 - np.hypot(xx, yy), 0, 1)[..., None]
+    blend = t * np.array(foreground) + (1 - t) * np.array(background)
+    return sl.FrameBuffer.from_array(np.round(blend).astype(np.uint8)), c
+
+
+def figure_seed_fills():
+    """(m) Flood fill 4- and 8-connected through a diagonal gap; soft fill."""
+    seed = (1, 2)
+    floor = np.array([[ch == "." for ch in row] for row in ROOMS])
+    tables, papers = [], []
+    for connectivity, color in ((4, HIGHLIGHT), (8, SECOND)):
+        table = sl.trace.flood_fill(*seed, grid=ROOMS, connectivity=connectivity)
+        fb = sl.FrameBuffer.from_array(
+            np.where(floor[..., None], ImageColor.getrgb(PAPER), WALL).astype(np.uint8))
+        sl.draw.flood_fill(fb, *seed, color=color, connectivity=connectivity)
+        paper = GraphPaper(fb, scale=26)
+        for row in table.rows:
+            if row["span"] != "already filled":
+                left, right = map(int, row["span"].split(".."))
+                for x in range(left, right + 1):
+                    paper.label(x, row["y"], str(row["k"]))
+        papers.append(paper.image)
+        tables.append(table)
+
+    blue, orange, white = map(ImageColor.getrgb, (PIXEL, HIGHLIGHT, PAPER))
+    fb, c = _soft_disk(10.5, blue, white)
+    before = fb.to_pil()
+    flooded = sl.FrameBuffer.from_array(fb.to_array())
+    sl.draw.flood_fill(flooded, c, c, color=orange)
+    soft = sl.draw.soft_fill(fb, c, c, color=orange, foreground=blue, background=white)
+    fills = [enlarge(im, 7) for im in (before, flooded.to_pil(), fb.to_pil())]
+    counts = [len(t.pixels()) for t in tables]
+    return Figure(
+        "seed-fills", "Seed fills: 4- and 8-connected flood fill, soft fill",
+        f"Top: sl.draw.flood_fill from the seed {seed} recolors the connected floor "
+        f"pixels. 4-connected (orange) it stays in the left room ({counts[0]} pixels); "
+        "8-connected (green) it also steps through the diagonal gap at (6, 1) into the "
+        f"right room ({counts[1]} pixels in all). Each pixel is labeled with the step k "
+        "of the table that filled its span: the scan-line seed fill pops a seed, fills "
+        "its whole span, and pushes one seed per unfilled run above and below. Bottom: "
+        "a disk with soft (antialiased) edges, made with numpy, each pixel "
+        "t F + (1 - t) B; a flood fill recolors only the pixels of exactly F and leaves "
+        "a blue fringe; sl.draw.soft_fill recovers t per pixel and repaints "
+        f"t F' + (1 - t) B ({soft} pixels), so the edge stays soft.",
+        "Notes, chapter 2, Q.8 (Flood Fill Algorithm; 4- and 8-connected areas; "
+        "syllabus: Soft fill)",
+        stacked([side_by_side(papers, ["flood fill, 4-connected", "flood fill, 8-connected"]),
+                 side_by_side(fills, ["antialiased disk", "flood fill", "soft fill"])]),
+        "\n\n".join(map(str, tables)))
+
+
+#: Every figure of the demo, in gallery order (a) to (m).
 FIGURES = (figure_bresenham, figure_dda_vs_bresenham, figure_octants, figure_circle,
-           figure_ellipse, figure_concentric, figure_color_table, figure_bitmap, figure_batch)
+           figure_ellipse, figure_concentric, figure_color_table, figure_bitmap, figure_batch,
+           figure_fill_rules, figure_curved_areas, figure_fill_styles, figure_seed_fills)

@@ -186,7 +186,9 @@ def fill_polygon(buf, packed, width, height, ox, oy, verts, contours, c0, c1, co
                 xc = xlo + ((y - ylo) * (verts[hi, 0] - xlo)) / (verts[hi, 1] - ylo)
                 key = int(math.ceil(xc)) - ox
             b = k
-            while b > 0 and keys[b - 1] > key:
+            while b > 0:  # (an ``and`` in this test compiled to much slower code)
+                if keys[b - 1] <= key:
+                    break
                 keys[b] = keys[b - 1]
                 dirs[b] = dirs[b - 1]
                 active[b] = active[b - 1]

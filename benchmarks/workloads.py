@@ -490,8 +490,12 @@ def _polygon_variants(w):
     import scanline as sl
     color = np.array(WHITE, np.uint8)
 
-    def sl_batch(c, polys, polygons=sl.draw.polygons):
-        polygons(c.fb, polys, color=WHITE)
+    def sl_flat(w, prims):  # the batch API's flat form, prepared like the peers' inputs
+        return np.concatenate(prims), np.array([len(p) for p in prims], np.int64)
+
+    def sl_batch(c, flat, polygons=sl.draw.polygons):
+        vertices, counts = flat
+        polygons(c.fb, vertices, counts=counts, color=WHITE)
 
     def sl_loop(c, polys, polygon=sl.draw.polygon):
         fb = c.fb
@@ -531,8 +535,8 @@ def _polygon_variants(w):
         return list(prims)
 
     return [
-        Variant("sl-batch", "scanline", "sl.draw.polygons (1 call)", "batch", ScanlineCanvas,
-                as_list, sl_batch),
+        Variant("sl-batch", "scanline", "sl.draw.polygons (1 call, flat vertices + counts)",
+                "batch", ScanlineCanvas, sl_flat, sl_batch),
         Variant("sl-loop", "scanline", "sl.draw.polygon loop", "loop", ScanlineCanvas,
                 as_list, sl_loop),
         Variant("cv2-loop", "OpenCV", "cv2.fillPoly loop", "loop", ArrayCanvas, cv_prepare, cv_loop),

@@ -456,3 +456,28 @@ def test_fuzz_non_finite_is_a_clear_error(points):
     else:
         with pytest.raises(sl.ArgumentValueError, match="points"):
             sl.draw.polygon(fb, points)
+
+
+def test_flat_batch_with_counts_equals_the_list_form():
+    rng = np.random.default_rng(11)
+    polys = [rng.uniform(-5, 45, (int(k), 2)) for k in rng.integers(3, 9, 40)]
+    a = sl.FrameBuffer(40, 30)
+    b = sl.FrameBuffer(40, 30)
+    sl.draw.polygons(a, polys, color="red", rule="nonzero")
+    sl.draw.polygons(b, np.concatenate(polys), counts=[len(p) for p in polys],
+                     color="red", rule="nonzero")
+    assert np.array_equal(a.to_array(), b.to_array())
+    assert a.to_array().any()
+
+
+@pytest.mark.parametrize("vertices, counts, fragment", [
+    (np.zeros((7, 2)), [4, 4], "add up to 8"),
+    (np.zeros((7, 2)), [8, -1], ">= 0"),
+    (np.zeros((7, 2)), [[7]], "counts"),
+    (np.zeros((7, 3)), [7], "(V, 2)"),
+    ([[0, 0], [1, float("nan")], [2, 2]], [3], "finite"),
+])
+def test_flat_batch_bad_input(vertices, counts, fragment):
+    with pytest.raises(sl.ScanlineError) as e:
+        sl.draw.polygons(sl.FrameBuffer(5, 5), vertices, counts=counts)
+    assert fragment in str(e.value)

@@ -147,7 +147,7 @@ def polygon(fb, points, color="white", rule="even-odd", style=None):
     fill_area(fb, color, style, _bbox(verts), draw, outline)
 
 
-def polygons(fb, polygons, color="white", rule="even-odd"):
+def polygons(fb, polygons, color="white", rule="even-odd", counts=None):
     """Fill M polygons in one compiled call.
 
     Parameters
@@ -163,6 +163,10 @@ def polygons(fb, polygons, color="white", rule="even-odd"):
         ones.
     rule : {"even-odd", "nonzero"}
         Applied to each polygon on its own.
+    counts : array_like of int, optional
+        The flat form for numpy data: ``polygons`` is then one (V, 2) array holding
+        the vertices of every polygon in turn, and ``counts[p]`` is the vertex count
+        of polygon ``p`` (one contour each).  Nothing is converted per polygon.
 
     Notes
     -----
@@ -186,7 +190,10 @@ def polygons(fb, polygons, color="white", rule="even-odd"):
     triangle's row y = 1 is its only pixel.
     """
     buf, packed, width, height = target(fb)
-    verts, offsets, polys = parse.batch("polygons", polygons)
+    if counts is None:
+        verts, offsets, polys = parse.batch("polygons", polygons)
+    else:
+        verts, offsets, polys = parse.flat("polygons", polygons, counts)
     code = _rule(rule)
     cols = colors(fb, color, len(polys) - 1)
     k.fill_polygons(buf, packed, width, height, 0, 0, verts, offsets, polys, cols, code,

@@ -159,3 +159,34 @@ def batch(name, value):
     verts = (np.ascontiguousarray(np.concatenate([v for v, _ in parts]))
              if parts else np.empty((0, 2), np.float64))
     return verts, np.concatenate(offs), polys
+
+
+def flat(name, vertices, counts):
+    """Parse a batch given flat: all vertices in one (V, 2) array and the vertex
+    count of each polygon (one contour each) in ``counts``, so that numpy data needs
+    no per-polygon conversion.
+
+    Returns ``(verts, contour_offsets, polygon_offsets)`` like :func:`batch`.
+    """
+    try:
+        verts = np.asarray(vertices)
+    except (TypeError, ValueError):
+        raise ArgumentTypeError(f"{name} must be a (V, 2) array of vertices when counts "
+                                f"is given, got {_show(vertices)}") from None
+    verts = np.ascontiguousarray(_numeric(name, verts))
+    if verts.ndim != 2 or verts.shape[1] != 2:
+        raise ArgumentValueError(f"{name} must be a (V, 2) array of vertices when counts is "
+                                 f"given, got shape {verts.shape}")
+    c = np.asarray(counts)
+    if c.ndim != 1 or (c.size and not np.issubdtype(c.dtype, np.integer)):
+        raise ArgumentTypeError(f"counts must be a 1-D array of integers (vertices per "
+                                f"polygon), got {_show(counts)}")
+    if c.size and c.min() < 0:
+        raise ArgumentValueError(f"counts must be >= 0, got {int(c.min())}")
+    if int(c.sum()) != verts.shape[0]:
+        raise ArgumentValueError(f"counts add up to {int(c.sum())} but {name} holds "
+                                 f"{verts.shape[0]} vertices")
+    offsets = np.zeros(c.size + 1, np.int64)
+    np.cumsum(c, out=offsets[1:])
+    check_vertices(name, verts, offsets)
+    return verts, offsets, np.arange(c.size + 1, dtype=np.int64)

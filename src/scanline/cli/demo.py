@@ -57,9 +57,10 @@ def page(figures):
         f"<style>{_STYLE}</style>\n</head>\n<body>",
         "<h1>scanline demo</h1>",
         f"<p>Scan conversion as the notes (<i>computer-graphics-notes.txt</i>) teach it, "
-        f"drawn by scanline {html.escape(__version__)}. Every pixel comes from "
-        "<code>scanline.draw</code>; the grids, labels and red ideal curves are "
-        "annotations. Each table is <code>scanline trace</code>'s output for the figure "
+        f"drawn by scanline {html.escape(__version__)}. The scan-converted pixels come "
+        "from <code>scanline.draw</code> (the soft-edged disk that the soft fill "
+        "starts from is made with numpy, as its caption says); the grids, labels and "
+        "red ideal curves are annotations. Each table is <code>scanline trace</code>'s output for the figure "
         "next to it.</p>",
         *sections,
         "</body>\n</html>\n",

@@ -11,6 +11,13 @@ coordinates, composite and inverse transformations -- and the reflections and sh
 follow Hearn & Baker, chapter 5.  See docs/errata.md, "Chapter 3".
 
 Everything here is plain numpy: no numba kernel is involved.
+
+References
+----------
+.. [1] D. Hearn and M. P. Baker, *Computer Graphics, C Version*, 2nd ed., Prentice
+   Hall, 1997, chapter 5.
+.. [2] J. D. Foley, A. van Dam, S. K. Feiner and J. F. Hughes, *Computer Graphics:
+   Principles and Practice*, 2nd ed., Addison-Wesley, 1990, chapter 5.
 """
 
 import math
@@ -154,10 +161,8 @@ def translation(tx, ty):
 
     References
     ----------
-    .. [1] D. Hearn and M. P. Baker, *Computer Graphics, C Version*, 2nd ed., Prentice
-       Hall, 1997, chapter 5, sections 5-1 and 5-2.
-    .. [2] J. D. Foley, A. van Dam, S. K. Feiner and J. F. Hughes, *Computer Graphics:
-       Principles and Practice*, 2nd ed., Addison-Wesley, 1990, chapter 5.
+    Hearn & Baker, chapter 5, sections 5-1 and 5-2;
+    Foley et al., chapter 5 (cited in full in the module docstring).
 
     Examples
     --------
@@ -212,10 +217,8 @@ def rotation(angle, pivot=None):
 
     References
     ----------
-    .. [1] D. Hearn and M. P. Baker, *Computer Graphics, C Version*, 2nd ed., Prentice
-       Hall, 1997, chapter 5, sections 5-1 to 5-3.
-    .. [2] J. D. Foley, A. van Dam, S. K. Feiner and J. F. Hughes, *Computer Graphics:
-       Principles and Practice*, 2nd ed., Addison-Wesley, 1990, chapter 5.
+    Hearn & Baker, chapter 5, sections 5-1 to 5-3;
+    Foley et al., chapter 5 (cited in full in the module docstring).
 
     Examples
     --------
@@ -274,10 +277,8 @@ def scaling(sx, sy=None, fixed=None):
 
     References
     ----------
-    .. [1] D. Hearn and M. P. Baker, *Computer Graphics, C Version*, 2nd ed., Prentice
-       Hall, 1997, chapter 5, sections 5-1 and 5-3.
-    .. [2] J. D. Foley, A. van Dam, S. K. Feiner and J. F. Hughes, *Computer Graphics:
-       Principles and Practice*, 2nd ed., Addison-Wesley, 1990, chapter 5.
+    Hearn & Baker, chapter 5, sections 5-1 and 5-3;
+    Foley et al., chapter 5 (cited in full in the module docstring).
 
     Examples
     --------
@@ -338,10 +339,8 @@ def reflection(axis):
 
     References
     ----------
-    .. [1] D. Hearn and M. P. Baker, *Computer Graphics, C Version*, 2nd ed., Prentice
-       Hall, 1997, chapter 5, section 5-4.
-    .. [2] J. D. Foley, A. van Dam, S. K. Feiner and J. F. Hughes, *Computer Graphics:
-       Principles and Practice*, 2nd ed., Addison-Wesley, 1990, chapter 5.
+    Hearn & Baker, chapter 5, section 5-4;
+    Foley et al., chapter 5 (cited in full in the module docstring).
 
     Examples
     --------
@@ -388,10 +387,8 @@ def reflection_about_line(point, direction):
 
     References
     ----------
-    .. [1] D. Hearn and M. P. Baker, *Computer Graphics, C Version*, 2nd ed., Prentice
-       Hall, 1997, chapter 5, sections 5-3 and 5-4.
-    .. [2] J. D. Foley, A. van Dam, S. K. Feiner and J. F. Hughes, *Computer Graphics:
-       Principles and Practice*, 2nd ed., Addison-Wesley, 1990, chapter 5.
+    Hearn & Baker, chapter 5, sections 5-3 and 5-4;
+    Foley et al., chapter 5 (cited in full in the module docstring).
 
     Examples
     --------
@@ -462,10 +459,8 @@ def shear(shx=0.0, shy=0.0, reference=None):
 
     References
     ----------
-    .. [1] D. Hearn and M. P. Baker, *Computer Graphics, C Version*, 2nd ed., Prentice
-       Hall, 1997, chapter 5, section 5-4.
-    .. [2] J. D. Foley, A. van Dam, S. K. Feiner and J. F. Hughes, *Computer Graphics:
-       Principles and Practice*, 2nd ed., Addison-Wesley, 1990, chapter 5.
+    Hearn & Baker, chapter 5, section 5-4;
+    Foley et al., chapter 5 (cited in full in the module docstring).
 
     Examples
     --------
@@ -510,10 +505,8 @@ def compose(*matrices):
 
     References
     ----------
-    .. [1] D. Hearn and M. P. Baker, *Computer Graphics, C Version*, 2nd ed., Prentice
-       Hall, 1997, chapter 5, section 5-3.
-    .. [2] J. D. Foley, A. van Dam, S. K. Feiner and J. F. Hughes, *Computer Graphics:
-       Principles and Practice*, 2nd ed., Addison-Wesley, 1990, chapter 5.
+    Hearn & Baker, chapter 5, section 5-3;
+    Foley et al., chapter 5 (cited in full in the module docstring).
 
     Examples
     --------
@@ -568,10 +561,8 @@ def inverse(m):
 
     References
     ----------
-    .. [1] D. Hearn and M. P. Baker, *Computer Graphics, C Version*, 2nd ed., Prentice
-       Hall, 1997, chapter 5.
-    .. [2] J. D. Foley, A. van Dam, S. K. Feiner and J. F. Hughes, *Computer Graphics:
-       Principles and Practice*, 2nd ed., Addison-Wesley, 1990, chapter 5.
+    Hearn & Baker, chapter 5;
+    Foley et al., chapter 5 (cited in full in the module docstring).
 
     Examples
     --------
@@ -639,8 +630,7 @@ def apply(m, points):
 
     References
     ----------
-    .. [1] D. Hearn and M. P. Baker, *Computer Graphics, C Version*, 2nd ed., Prentice
-       Hall, 1997, chapter 5, section 5-2.
+    Hearn & Baker, chapter 5, section 5-2 (cited in full in the module docstring).
 
     Examples
     --------

@@ -67,17 +67,29 @@ def page(figures):
     ])
 
 
+#: The modules of figures, in gallery order; each has a ``FIGURES`` tuple of
+#: functions that return a :class:`scanline.cli.figures.Figure`.
+FIGURE_MODULES = ("figures",)
+
+
+def all_figures():
+    """Every figure function of the gallery, in order."""
+    import importlib
+
+    return [make for name in FIGURE_MODULES
+            for make in importlib.import_module(f"{__package__}.{name}").FIGURES]
+
+
 def run(args):
     """Render every figure, then write the PNGs, gallery.png and index.html."""
     from ..framebuffer import write_atomically
     from ._plot import grid_of
-    from .figures import FIGURES
 
     def save_png(image, name):
         write_atomically(os.path.join(args.out, name), lambda f: image.save(f, format="PNG"))
 
     os.makedirs(args.out, exist_ok=True)
-    figures = [make() for make in FIGURES]
+    figures = [make() for make in all_figures()]
     for fig in figures:
         save_png(fig.image, f"{fig.name}.png")
     save_png(grid_of([f.image for f in figures], [f.title for f in figures]), "gallery.png")

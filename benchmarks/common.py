@@ -1,0 +1,106 @@
+"""Timing and reporting shared by the topic benchmarks (``strokes.py``, ``text.py``,
+``clip.py``, ``curves.py`` ...).
+
+Each topic script times scanline and its peers on the same workload in one run,
+prints one line per variant with the ratio peer time / scanline time, and writes a
+JSON record to ``benchmarks/results/<topic>.json``.  Timings are the minimum of
+``repeats`` warm runs (the first call, which compiles numba kernels, is reported
+apart as ``first_s``); the cyclic garbage collector is off while timing.
+"""
+
+import datetime as _dt
+import gc
+import json
+import os
+import platform
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def timed(fn, repeats=3):
+    """``(first_s, best_s)``: the time of a first call and the best of ``repeats``
+    further calls of ``fn()``."""
+    gc.collect()
+    gc.disable()
+    try:
+        t0 = time.perf_counter()
+        fn()
+        first = time.perf_counter() - t0
+        best = float("inf")
+        for _ in range(repeats):
+            t0 = time.perf_counter()
+            fn()
+            best = min(best, time.perf_counter() - t0)
+    finally:
+        gc.enable()
+    return first, best
+
+
+class Report:
+    """Collects the timings of one topic and prints them as they come.
+
+    >>> r = Report("example", quick=True)            # doctest: +SKIP
+    >>> r.add("thick polylines", "scanline", "sl.draw.polylines", fn)   # doctest: +SKIP
+    """
+
+    def __init__(self, topic, quick=False):
+        self.topic = topic
+        self.quick = quick
+        self.rows = []
+        self.targets = []
+        print(f"scanline benchmarks: {topic}  {'(quick) ' if quick else ''}"
+              f"{platform.processor() or platform.machine()}, Python {platform.python_version()}",
+              flush=True)
+
+    def add(self, workload, library, call, fn, repeats=3, n=None):
+        """Time ``fn`` and record it; returns the best time in seconds."""
+        first, best = timed(fn, repeats)
+        self.rows.append({"workload": workload, "library": library, "call": call,
+                          "first_s": first, "best_s": best, "n": n})
+        print(f"  {workload:<28} {library:<12} {best * 1e3:10.2f} ms  (first {first * 1e3:.1f} ms)"
+              f"  {call}", flush=True)
+        return best
+
+    def best(self, workload, library):
+        """The best time recorded for ``library`` on ``workload``."""
+        return min(r["best_s"] for r in self.rows
+                   if r["workload"] == workload and r["library"] == library)
+
+    def target(self, workload, peer, minimum, text):
+        """Record the target "peer time / scanline time >= minimum" and print it."""
+        ratio = self.best(workload, peer) / self.best(workload, "scanline")
+        met = ratio >= minimum
+        self.targets.append({"workload": workload, "peer": peer, "ratio": ratio,
+                             "minimum": minimum, "met": met, "text": text})
+        print(f"  -> {workload}: {peer} time / scanline time = {ratio:.2f}x "
+              f"(target {text}: {'met' if met else 'NOT met'})", flush=True)
+        return ratio
+
+    def write(self):
+        """Write ``results/<topic>[-quick].json`` atomically; return its path."""
+        record = {
+            "schema": 1, "topic": self.topic, "quick": self.quick,
+            "date": _dt.datetime.now(_dt.timezone.utc).isoformat(timespec="seconds"),
+            "command": " ".join([os.path.basename(sys.executable), *sys.argv]),
+            "python": platform.python_version(), "machine": platform.machine(),
+            "cpu_count": os.cpu_count(), "load_average": list(os.getloadavg()),
+            "rows": self.rows, "targets": self.targets,
+        }
+        folder = os.path.join(HERE, "results")
+        os.makedirs(folder, exist_ok=True)
+        path = os.path.join(folder, f"{self.topic}{'-quick' if self.quick else ''}.json")
+        fd, tmp = tempfile.mkstemp(suffix=".tmp", dir=folder)
+        try:
+            with os.fdopen(fd, "w") as f:
+                json.dump(record, f, indent=1)
+                f.write("\n")
+            os.chmod(tmp, 0o644)
+            os.replace(tmp, path)
+        except BaseException:
+            os.unlink(tmp)
+            raise
+        print(f"wrote {path}")
+        return path

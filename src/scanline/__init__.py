@@ -27,6 +27,7 @@ _LAZY = {
     "trace": ("scanline.trace", None),
     "color": ("scanline.color", None),
     "geometry": ("scanline.geometry", None),
+    "curves": ("scanline.curves", None),
     "transform": ("scanline.transform", None),
     "attributes": ("scanline.attributes", None),
     "FillStyle": ("scanline.attributes", "FillStyle"),

@@ -1,0 +1,115 @@
+"""Alpha compositing: the "over" operator of Porter & Duff (1984) in every
+frame-buffer mode.
+
+A *source* is one color as a float64 row ``(c0, c1, c2, alpha)`` prepared by
+``scanline.draw._blend.sources``: the channels in the frame buffer's terms (RGB for
+modes "RGB", "RGBA" and "P"; the gray level in ``c0`` for "L"; the bit in ``c0`` for
+"1") and the color's alpha in 0..1.  A pixel is composited with an *effective
+alpha* ``a`` = coverage x alpha, in 0..1:
+
+====== ====================================================================
+mode   result
+====== ====================================================================
+"L"    ``d + (s - d) a``, rounded to the nearest level
+"RGB"  the same per channel
+"RGBA" Porter-Duff over with destination alpha, straight (non-premultiplied)
+       storage: ``ao = a + ad (1 - a)``,
+       ``co = (s a + d ad (1 - a)) / ao``; a fully transparent result is left as is
+"P"    the table colors blended as in "RGB", then the nearest table entry
+       (least squared RGB distance, the first of equals)
+"1"    the pixel takes the source bit when ``a >= 1/2``, else it is unchanged
+====== ====================================================================
+
+References
+----------
+T. Porter, T. Duff, "Compositing digital images", SIGGRAPH '84, Computer Graphics
+18(3), 253-259, 1984.
+"""
+
+import numpy as np
+
+from ._jit import helper, inline, kernel
+from .raster import put_bit
+
+#: Mode codes (``scanline.draw._blend.MODES`` maps the mode names to them).
+BIT = 0
+GRAY = 1
+RGB = 2
+RGBA = 3
+INDEXED = 4
+
+
+@helper
+def nearest(table, r, g, b):
+    """The index of the table entry nearest to (r, g, b) (squared distance; the
+    first of equals)."""
+    best = 0
+    best_d = 1e300
+    for i in range(table.shape[0]):
+        dr = table[i, 0] - r
+        dg = table[i, 1] - g
+        db = table[i, 2] - b
+        d = dr * dr + dg * dg + db * db
+        if d < best_d:
+            best_d = d
+            best = i
+    return best
+
+
+@inline
+def level(v):
+    """A channel value in 0..255 rounded half up to uint8."""
+    return np.uint8(int(v + 0.5))
+
+
+@inline
+def over(buf, mode, table, x, y, src, a):
+    """Composite ``src`` with effective alpha ``a`` over pixel (x, y) of ``buf``.
+
+    The caller has proved (x, y) inside; ``a`` is clamped to [0, 1] here, and
+    ``a <= 0`` (or NaN) changes nothing."""
+    if not a > 0.0:
+        return
+    if a > 1.0:
+        a = 1.0
+    if mode == RGB:
+        for c in range(3):
+            d = np.float64(buf[y, x, c])
+            buf[y, x, c] = level(d + (src[c] - d) * a)
+    elif mode == GRAY:
+        d = np.float64(buf[y, x, 0])
+        buf[y, x, 0] = level(d + (src[0] - d) * a)
+    elif mode == RGBA:
+        da = buf[y, x, 3] / 255.0
+        k = da * (1.0 - a)
+        oa = a + k
+        for c in range(3):
+            buf[y, x, c] = level((src[c] * a + buf[y, x, c] * k) / oa)
+        buf[y, x, 3] = level(oa * 255.0)
+    elif mode == INDEXED:
+        i = buf[y, x, 0]
+        r = table[i, 0] + (src[0] - table[i, 0]) * a
+        g = table[i, 1] + (src[1] - table[i, 1]) * a
+        b = table[i, 2] + (src[2] - table[i, 2]) * a
+        buf[y, x, 0] = nearest(table, r, g, b)
+    else:
+        if a >= 0.5:
+            put_bit(buf, x, y, src[0] != 0.0)
+
+
+@kernel
+def composite(buf, mode, width, height, table, mask, ox, oy, src):
+    """Composite ``src`` through the coverage ``mask`` (uint8, 255 = covered; pixel
+    (0, 0) of the mask is device pixel (ox, oy)) over ``buf``.  Mask pixels outside
+    the ``width`` x ``height`` raster are skipped."""
+    h, w = mask.shape[0], mask.shape[1]
+    j0 = max(0, -oy)
+    j1 = min(h, height - oy)
+    i0 = max(0, -ox)
+    i1 = min(w, width - ox)
+    alpha = src[3] / 255.0  # mask levels 0..255 to coverage 0..1, times alpha
+    for j in range(j0, j1):
+        for i in range(i0, i1):
+            m = mask[j, i, 0]
+            if m != 0:
+                over(buf, mode, table, ox + i, oy + j, src, m * alpha)

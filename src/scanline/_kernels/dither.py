@@ -1,0 +1,149 @@
+"""Dithering kernels: ordered (threshold-matrix) dithering and Floyd-Steinberg error
+diffusion, to evenly spaced levels per channel or to the nearest color of a palette.
+
+Images are float32 arrays ``src[row, col, channel]`` in image order (row 0 at the
+top) with values in [0, 1]; the kernels write level indices (0 .. levels - 1 per
+channel) or palette indices into a uint8 array ``out`` of the same rows and columns.
+Threshold matrices have power-of-two sides, so that ``row & (n - 1)`` tiles them.
+"""
+
+import numpy as np
+
+from ._jit import helper, kernel
+
+
+@kernel
+def ordered_levels(src, thresholds, levels, out):
+    """Ordered dithering to ``levels`` evenly spaced levels per channel.
+
+    A value ``v`` lies between levels ``q = floor(v * (levels - 1))`` and ``q + 1``;
+    the pixel takes ``q + 1`` when the fraction beyond ``q`` exceeds the threshold
+    ``thresholds[row mod n, col mod m]`` (values in (0, 1)).
+    """
+    height, width, channels = src.shape
+    row_mask = thresholds.shape[0] - 1
+    col_mask = thresholds.shape[1] - 1
+    top = levels - 1
+    for row in range(height):
+        trow = thresholds[row & row_mask]
+        for col in range(width):
+            t = trow[col & col_mask]
+            for k in range(channels):
+                v = src[row, col, k] * top
+                q = int(v)
+                if q >= top:
+                    q = top
+                elif v - q > t:
+                    q += 1
+                out[row, col, k] = q
+
+
+@helper
+def nearest_color(palette, want):
+    """Index of the palette row closest to ``want`` (squared Euclidean distance; the
+    first of equally close rows)."""
+    best = 0
+    best_d = np.inf
+    for i in range(palette.shape[0]):
+        d = 0.0
+        for k in range(want.shape[0]):
+            diff = want[k] - palette[i, k]
+            d += diff * diff
+        if d < best_d:
+            best_d = d
+            best = i
+    return best
+
+
+@kernel
+def ordered_palette(src, thresholds, spread, palette, out):
+    """Ordered dithering to a palette: each pixel, offset by
+    ``(threshold - 1/2) * spread`` in every channel, takes the nearest palette color.
+    With ``spread = 0`` this is plain nearest-color quantization."""
+    height, width, channels = src.shape
+    row_mask = thresholds.shape[0] - 1
+    col_mask = thresholds.shape[1] - 1
+    want = np.empty(channels, np.float32)
+    for row in range(height):
+        trow = thresholds[row & row_mask]
+        for col in range(width):
+            offset = (trow[col & col_mask] - 0.5) * spread
+            for k in range(channels):
+                want[k] = src[row, col, k] + offset
+            out[row, col, 0] = nearest_color(palette, want)
+
+
+@helper
+def _diffuse(cur, nxt, col, step, k, e):
+    """Floyd-Steinberg's weights: 7/16 ahead on this row, 3/16 behind, 5/16 below and
+    1/16 ahead on the next row (``col`` is the padded column, ``step`` +-1)."""
+    cur[col + step, k] += e * np.float32(7.0 / 16.0)
+    nxt[col - step, k] += e * np.float32(3.0 / 16.0)
+    nxt[col, k] += e * np.float32(5.0 / 16.0)
+    nxt[col + step, k] += e * np.float32(1.0 / 16.0)
+
+
+@helper
+def _levels_row(src, out, cur, nxt, row, start, stop, step, top):
+    channels = src.shape[2]
+    for col in range(start, stop, step):
+        for k in range(channels):
+            v = src[row, col, k] + cur[col + 1, k]
+            q = int(np.floor(v * top + np.float32(0.5)))
+            if q < 0:
+                q = 0
+            elif q > top:
+                q = top
+            out[row, col, k] = q
+            _diffuse(cur, nxt, col + 1, step, k, v - np.float32(q) / np.float32(top))
+
+
+@kernel
+def diffuse_levels(src, levels, serpentine, out):
+    """Floyd-Steinberg error diffusion to ``levels`` evenly spaced levels per channel.
+
+    Rows are scanned top to bottom, left to right (right to left on odd rows when
+    ``serpentine``); each pixel plus the error it received is rounded to the nearest
+    level and its error spread to the unvisited neighbors.  Error that would leave
+    the image is dropped.
+    """
+    height, width, channels = src.shape
+    errors = np.zeros((2, width + 2, channels), np.float32)
+    top = levels - 1
+    for row in range(height):
+        cur = errors[row & 1]
+        nxt = errors[(row + 1) & 1]
+        nxt[:, :] = 0.0
+        if serpentine and row & 1:
+            _levels_row(src, out, cur, nxt, row, width - 1, -1, -1, top)
+        else:
+            _levels_row(src, out, cur, nxt, row, 0, width, 1, top)
+
+
+@helper
+def _palette_row(src, palette, out, cur, nxt, want, row, start, stop, step):
+    channels = src.shape[2]
+    for col in range(start, stop, step):
+        for k in range(channels):
+            want[k] = src[row, col, k] + cur[col + 1, k]
+        best = nearest_color(palette, want)
+        out[row, col, 0] = best
+        for k in range(channels):
+            _diffuse(cur, nxt, col + 1, step, k, want[k] - palette[best, k])
+
+
+@kernel
+def diffuse_palette(src, palette, serpentine, out):
+    """Floyd-Steinberg error diffusion to the nearest colors of ``palette`` (float32
+    rows in [0, 1], as many channels as ``src``); ``out`` receives palette indices."""
+    height, width, channels = src.shape
+    errors = np.zeros((2, width + 2, channels), np.float32)
+    want = np.empty(channels, np.float32)
+    for row in range(height):
+        cur = errors[row & 1]
+        nxt = errors[(row + 1) & 1]
+        nxt[:, :] = 0.0
+        if serpentine and row & 1:
+            _palette_row(src, palette, out, cur, nxt, want, row, width - 1, -1, -1)
+        else:
+            _palette_row(src, palette, out, cur, nxt, want, row, 0, width, 1)

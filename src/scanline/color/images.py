@@ -1,0 +1,71 @@
+"""Reading a frame buffer or an image array as float intensities in [0, 1], the form
+the gray-scale, color-table and dithering functions work on.
+
+An image *source* is a :class:`~scanline.FrameBuffer` (any mode; mode ``"P"`` is read
+through its color table, the alpha of ``"RGBA"`` is ignored) or an array in image
+order (top row first): ``(h, w)`` gray or ``(h, w, 3)`` RGB (``(h, w, 4)`` RGBA, alpha
+ignored), of bool, uint8 (0..255) or floats in [0, 1].
+"""
+
+import numpy as np
+
+from ..errors import ArgumentTypeError, ArgumentValueError
+from .models import LUMA_WEIGHTS
+
+
+def unit_floats(name, value):
+    """``value`` as a float32 array in [0, 1]: uint8 / 255, bool as 0 or 1, floats
+    checked to be finite and in [0, 1]."""
+    a = np.asarray(value)
+    if a.dtype == bool:
+        return a.astype(np.float32)
+    if a.dtype == np.uint8:
+        return a.astype(np.float32) / np.float32(255)
+    if a.dtype.kind != "f":
+        raise ArgumentTypeError(
+            f"{name} must hold uint8 (0..255), bool or floats in [0, 1], got dtype {a.dtype}")
+    if not np.isfinite(a).all():
+        raise ArgumentValueError(f"{name} must hold finite numbers (it has NaN or infinity)")
+    if a.size and (a.min() < 0 or a.max() > 1):
+        raise ArgumentValueError(
+            f"{name} must hold floats in [0, 1]; got values from {a.min():g} to {a.max():g}")
+    return a.astype(np.float32)
+
+
+def source_pixels(source, name="source"):
+    """``(pixels, is_gray)``: float32 ``(h, w, 1)`` gray or ``(h, w, 3)`` RGB in [0, 1]."""
+    from ..framebuffer import FrameBuffer
+
+    if isinstance(source, FrameBuffer):
+        a = source.to_array()
+        if source.mode == "P":
+            a = source.color_table[a]
+    elif isinstance(source, (np.ndarray, list, tuple)):
+        a = np.asarray(source)
+    else:
+        raise ArgumentTypeError(
+            f"{name} must be a scanline.FrameBuffer or an image array, got {type(source).__name__}")
+    if a.ndim == 3 and a.shape[2] == 4:
+        a = a[:, :, :3]
+    if not (a.ndim == 2 or (a.ndim == 3 and a.shape[2] == 3)) or a.shape[0] < 1 or a.shape[1] < 1:
+        raise ArgumentValueError(
+            f"{name} must be a non-empty (h, w) gray or (h, w, 3|4) color image, got shape {a.shape}")
+    pixels = unit_floats(name, a)
+    if pixels.ndim == 2:
+        return pixels[:, :, None], True
+    return pixels, False
+
+
+def gray_image(source, name="source"):
+    """The source's luminance (BT.601), float32 ``(h, w, 1)`` in [0, 1]."""
+    pixels, is_gray = source_pixels(source, name)
+    if is_gray:
+        return pixels
+    gray = pixels @ LUMA_WEIGHTS.astype(np.float32)
+    return np.clip(gray, 0, 1)[:, :, None]
+
+
+def rgb_image(source, name="source"):
+    """The source as float32 RGB ``(h, w, 3)`` in [0, 1] (a gray source repeated)."""
+    pixels, is_gray = source_pixels(source, name)
+    return np.repeat(pixels, 3, axis=2) if is_gray else pixels

@@ -1,0 +1,154 @@
+"""Color tables (palettes) for indexed frame buffers (mode ``"P"``).
+
+A color table here is a uint8 array of shape (n, 3), 1 <= n <= 256: row ``i`` is the
+RGB color that index ``i`` displays.  ``FrameBuffer(..., mode="P",
+color_table=table)`` takes one; editing a frame buffer's table recolors its image
+(see :class:`scanline.FrameBuffer`).
+
+Notes
+-----
+Notes, chapter "Attributes of output primitives", *Color-tables* and *Gray scale*:
+with a color table (a video lookup table) each pixel stores a short index instead of
+the full color, so a frame buffer of 8 bits per pixel shows 256 colors chosen from
+2**24, and the notes' color-table animation recolors without redrawing.  A table of
+equally spaced grays gives the gray-scale levels: with 2 bits per pixel, 4 levels.
+"""
+
+import numbers
+
+import numpy as np
+
+from ..errors import ArgumentTypeError, ArgumentValueError
+from .spec import rgba
+
+
+def gray_table(n):
+    """``n`` evenly spaced gray levels from black to white, ``round(255 i / (n - 1))``.
+
+    >>> gray_table(4)[:, 0].tolist()       # 2 bits per pixel: 4 levels
+    [0, 85, 170, 255]
+    """
+    n = levels_argument("n", n)
+    values = np.floor(np.arange(n) * (255.0 / (n - 1)) + 0.5).astype(np.uint8)
+    return np.repeat(values[:, None], 3, axis=1)
+
+
+def rgb332_table():
+    """The 256-color "3-3-2" table: index ``r << 5 | g << 2 | b`` with 8 levels of red,
+    8 of green and 4 of blue (an 8-bit frame buffer read directly as RGB).
+
+    >>> rgb332_table()[0b111_000_11].tolist()
+    [255, 0, 255]
+    """
+    i = np.arange(256)
+    r, g, b = i >> 5, (i >> 2) & 7, i & 3
+    return np.floor(np.stack([r * 255 / 7, g * 255 / 7, b * 255 / 3], axis=1) + 0.5).astype(np.uint8)
+
+
+def web_safe_table():
+    """The 216 "web-safe" colors: 6 levels (0, 51, ..., 255) of each primary, index
+    ``36 r + 6 g + b``.
+
+    >>> web_safe_table()[[0, 5, 215]].tolist()
+    [[0, 0, 0], [0, 0, 255], [255, 255, 255]]
+    """
+    i = np.arange(216)
+    return (np.stack([i // 36, (i // 6) % 6, i % 6], axis=1) * 51).astype(np.uint8)
+
+
+def median_cut_table(source, colors=16):
+    """A table of at most ``colors`` colors fitted to an image by Heckbert's median
+    cut, as Pillow's ``Image.quantize(method=MEDIANCUT)`` computes it.
+
+    ``source`` is a FrameBuffer or an image array (see :func:`scanline.color.dither`).
+    The table may be shorter than ``colors`` when the image has fewer colors.
+
+    References
+    ----------
+    .. [1] P. Heckbert, "Color image quantization for frame buffer display",
+       Computer Graphics (SIGGRAPH '82) 16(3), 297-307, 1982.
+    """
+    from PIL import Image
+
+    from .images import rgb_image
+
+    colors = levels_argument("colors", colors, minimum=1)
+    rgb = np.ascontiguousarray(np.floor(rgb_image(source) * 255 + 0.5).astype(np.uint8))
+    image = Image.fromarray(rgb, "RGB").quantize(colors=colors, method=Image.Quantize.MEDIANCUT)
+    used = int(np.asarray(image).max()) + 1
+    return np.array(image.getpalette("RGB")[: 3 * used], np.uint8).reshape(used, 3)
+
+
+def levels_argument(name, value, minimum=2):
+    """Check a count of levels or colors: an int in ``minimum`` .. 256."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+        raise ArgumentTypeError(
+            f"{name}={value!r} must be an integer from {minimum} to 256, "
+            f"not {type(value).__name__}")
+    if not minimum <= value <= 256:
+        raise ArgumentValueError(
+            f"{name}={value!r} must be from {minimum} to 256 "
+            f"(2 levels = 1 bit per pixel, 4 = 2 bits, 256 = 8 bits)")
+    return int(value)
+
+
+def color_table(colors, name="palette"):
+    """Return ``colors`` as a color table, a uint8 (n, 3) array with 1 <= n <= 256.
+
+    ``colors`` is an (n, 3) array of uint8 (or of floats in [0, 1]), or a sequence of
+    color specifications (``"red"``, ``"#ff8000"``, ``(r, g, b)``).
+
+    >>> color_table(["black", (255, 128, 0)]).tolist()
+    [[0, 0, 0], [255, 128, 0]]
+    """
+    if isinstance(colors, str):
+        raise ArgumentTypeError(
+            f"{name}={colors!r} must be a sequence of colors, not one string; "
+            "e.g. ['black', 'white'] or an (n, 3) uint8 array")
+    a = np.asarray(colors) if isinstance(colors, np.ndarray) else None
+    if a is not None and a.dtype.kind in "uif" and a.ndim == 2 and a.shape[1] == 3:
+        if a.dtype.kind == "f":
+            if not (np.isfinite(a).all() and (a >= 0).all() and (a <= 1).all()):
+                raise ArgumentValueError(f"{name}: a float color table must hold values in [0, 1]")
+            a = np.floor(a * 255 + 0.5)
+        elif a.size and (a.min() < 0 or a.max() > 255):
+            raise ArgumentValueError(f"{name}: an integer color table must hold values in 0..255")
+        table = a.astype(np.uint8)
+    else:
+        try:
+            entries = list(colors)
+        except TypeError:
+            raise ArgumentTypeError(
+                f"{name} must be a sequence of colors or an (n, 3) array, "
+                f"got {type(colors).__name__}") from None
+        table = np.array([rgba(c, f"{name}[{i}]")[:3] for i, c in enumerate(entries)],
+                         np.uint8).reshape(-1, 3)
+    if not 1 <= len(table) <= 256:
+        raise ArgumentValueError(
+            f"{name} must have 1 to 256 colors, got {len(table)}; "
+            "e.g. scanline.color.web_safe_table() or gray_table(4)")
+    return np.ascontiguousarray(table)
+
+
+def nearest(colors, table):
+    """Index of the nearest table color (Euclidean distance in RGB; the lowest index
+    among equally near ones) for each color of ``colors``.
+
+    ``colors`` has any leading shape and 3 components, uint8 or floats in [0, 1]; the
+    result has shape ``colors.shape[:-1]``, dtype uint8.
+
+    >>> nearest(np.array([[250, 10, 10], [20, 20, 20]], np.uint8), ["black", "red"]).tolist()
+    [1, 0]
+    """
+    from .._kernels import dither as kernels
+    from .images import unit_floats
+
+    a = unit_floats("colors", colors)
+    if a.ndim == 0 or a.shape[-1] != 3:
+        raise ArgumentValueError(f"colors must have 3 components (RGB) on its last axis, got shape {a.shape}")
+    palette = color_table(table, "table").astype(np.float32) / np.float32(255)
+    flat = np.ascontiguousarray(a.reshape(1, -1, 3))
+    out = np.empty(flat.shape[:2] + (1,), np.uint8)
+    if flat.size:
+        kernels.ordered_palette(flat, np.full((1, 1), 0.5, np.float32), 0.0, palette, out)
+    return out.reshape(a.shape[:-1])

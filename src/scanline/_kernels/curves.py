@@ -1,0 +1,88 @@
+"""Curve evaluation kernels: de Casteljau (Bezier) and de Boor (B-spline).
+
+Arrays in, arrays out; the API layer (:mod:`scanline.curves`) checks shapes, that the
+parameters lie in the curve's domain and that the knot vector is non-decreasing, so
+every index computed here stays inside its array.
+"""
+
+import numpy as np
+
+from ._jit import helper, kernel
+
+
+@kernel
+def de_casteljau(points, u, out):
+    """out[i] = the Bezier curve with control ``points`` (n+1, dim) at ``u[i]``.
+
+    de Casteljau's repeated linear interpolation, in place in a work copy.
+    """
+    m, dim = points.shape
+    work = np.empty((m, dim))
+    for i in range(u.shape[0]):
+        t = u[i]
+        s = 1.0 - t
+        for j in range(m):
+            for c in range(dim):
+                work[j, c] = points[j, c]
+        for r in range(1, m):
+            for j in range(m - r):
+                for c in range(dim):
+                    work[j, c] = s * work[j, c] + t * work[j + 1, c]
+        for c in range(dim):
+            out[i, c] = work[0, c]
+
+
+@helper
+def find_span(knots, lo, hi, t, guess):
+    """The index l in [lo, hi] with knots[l] <= t < knots[l + 1].
+
+    ``t`` at or beyond ``knots[hi + 1]`` gives the last non-empty span (so the curve is
+    closed at its right end); ``guess`` is tried first (sorted parameters hit it).
+    """
+    if knots[guess] <= t < knots[guess + 1]:
+        return guess
+    if t >= knots[hi + 1]:
+        l = hi
+        while l > lo and knots[l] >= knots[l + 1]:
+            l -= 1
+        return l
+    a = lo
+    b = hi
+    while a < b:  # the last l in [lo, hi] with knots[l] <= t
+        mid = (a + b + 1) // 2
+        if knots[mid] <= t:
+            a = mid
+        else:
+            b = mid - 1
+    return a
+
+
+@kernel
+def de_boor(points, knots, order, u, out):
+    """out[i] = the B-spline of ``order`` d with control ``points`` at ``u[i]``.
+
+    ``knots`` has len(points) + d values, non-decreasing, with
+    knots[d-1] < knots[n+1]; every u[i] lies in [knots[d-1], knots[n+1]].
+    de Boor's algorithm on the d control points that act on u's knot span.
+    """
+    m, dim = points.shape
+    d = order
+    work = np.empty((d, dim))
+    lo = d - 1
+    hi = m - 1
+    span = lo
+    for i in range(u.shape[0]):
+        t = u[i]
+        span = find_span(knots, lo, hi, t, span)
+        base = span - d + 1
+        for j in range(d):
+            for c in range(dim):
+                work[j, c] = points[base + j, c]
+        for r in range(1, d):
+            for j in range(d - 1, r - 1, -1):
+                k = base + j
+                a = (t - knots[k]) / (knots[k + d - r] - knots[k])
+                for c in range(dim):
+                    work[j, c] = (1.0 - a) * work[j - 1, c] + a * work[j, c]
+        for c in range(dim):
+            out[i, c] = work[d - 1, c]

@@ -1,0 +1,172 @@
+"""Bezier curves of any degree, plain and rational (notes, chapter 5, Q.1).
+
+>>> import scanline as sl
+>>> c = sl.curves.Bezier([(0, 0), (1, 2), (3, 2), (4, 0)])
+>>> c.evaluate(0.5)
+array([2. , 1.5])
+>>> c.evaluate([0, 0.5, 1], method="bernstein").tolist()
+[[0.0, 0.0], [2.0, 1.5], [4.0, 0.0]]
+"""
+
+from math import comb
+
+import numpy as np
+
+from .. import _validate as v
+from .._kernels import curves as _k
+from .base import Curve, control_points, parameters, weights_array
+from .matrices import bezier_matrix, power_basis
+from .rational import RationalDerivative, project
+
+METHODS = ("de-casteljau", "bernstein", "recursive", "matrix")
+
+
+def bernstein(degree, u):
+    """The Bezier blending functions BEZ_{k,n}(u) = C(n, k) uᵏ (1 − u)ⁿ⁻ᵏ, k = 0 … n.
+
+    Notes, ch. 5, Q.1, eqs. 2–3.  Returns shape ``np.shape(u) + (n + 1,)``.
+    """
+    n = v.positive_int("degree", degree, minimum=0)
+    u = np.asarray(u, dtype=np.float64)[..., None]
+    k = np.arange(n + 1)
+    binomial = np.array([comb(n, i) for i in k], dtype=np.float64)
+    return binomial * u**k * (1.0 - u) ** (n - k)
+
+
+def bernstein_recursive(degree, u):
+    """BEZ_{k,n}(u) by the notes' recursion (ch. 5, Q.1, eq. 4).
+
+    BEZ_{k,n} = (1 − u) BEZ_{k,n−1} + u BEZ_{k−1,n−1}, starting from BEZ_{0,0} = 1 and
+    taking BEZ_{k,m} = 0 for k < 0 or k > m (the base cases the notes leave out,
+    erratum E42).  Returns shape ``np.shape(u) + (n + 1,)``.
+    """
+    n = v.positive_int("degree", degree, minimum=0)
+    u = np.asarray(u, dtype=np.float64)[..., None]
+    row = np.ones(u.shape[:-1] + (1,))
+    for _ in range(n):
+        padded = np.concatenate([row, np.zeros_like(row[..., :1])], axis=-1)
+        shifted = np.concatenate([np.zeros_like(row[..., :1]), row], axis=-1)
+        row = (1.0 - u) * padded + u * shifted
+    return row
+
+
+class Bezier(Curve):
+    """A Bezier curve P(u) = Σ Pₖ BEZ_{k,n}(u), 0 ≤ u ≤ 1, of degree n = len(points) − 1.
+
+    Parameters
+    ----------
+    points : array_like, shape (n + 1, dim)
+        Control points P₀ … Pₙ, 2-D or 3-D (any dim ≥ 1 works), finite.
+    weights : array_like, shape (n + 1,), optional
+        Positive weights wₖ: the rational curve Σ wₖPₖBEZ_{k,n} / Σ wₖBEZ_{k,n}.
+        Equal weights give the plain curve.
+
+    Notes
+    -----
+    Notes, chapter 5, Q.1.  ``evaluate(u, method=...)`` offers the notes' three
+    formulations and de Casteljau's: ``"de-casteljau"`` (default, compiled, the
+    numerically stable one), ``"bernstein"`` (binomial coefficients, eqs. 2–3),
+    ``"recursive"`` (eq. 4) and ``"matrix"`` ([uⁿ … u 1] · M_bez · P, see
+    :func:`~scanline.curves.matrices.bezier_matrix`).  Rational curves are evaluated
+    in homogeneous coordinates [wP, w] and projected.
+
+    References
+    ----------
+    P. Bézier, *Numerical Control: Mathematics and Applications*, Wiley, 1972.
+    P. de Casteljau, *Outillages méthodes calcul*, Citroën, 1959.
+    """
+
+    def __init__(self, points, weights=None):
+        self.points = control_points("points", points)
+        self.degree = len(self.points) - 1
+        self.dimension = self.points.shape[1]
+        self.domain = (0.0, 1.0)
+        self.weights = None if weights is None else weights_array(
+            "weights", weights, len(self.points))
+
+    @property
+    def rational(self):
+        return self.weights is not None
+
+    def homogeneous(self):
+        """The control points [wₖPₖ, wₖ] (plain curves: [Pₖ, 1]) as an (n+1, dim+1) array."""
+        w = np.ones(len(self.points)) if self.weights is None else self.weights
+        return np.hstack([self.points * w[:, None], w[:, None]])
+
+    def evaluate(self, u, method="de-casteljau"):
+        """Points on the curve; see :meth:`Curve.evaluate`.  ``method`` is one of
+        "de-casteljau", "bernstein", "recursive", "matrix"."""
+        v.choice("method", method, METHODS)
+        u = parameters("u", u, self.domain)
+        return self._evaluate(u.ravel(), method).reshape(u.shape + (self.dimension,))
+
+    __call__ = evaluate
+
+    def _evaluate(self, u, method="de-casteljau"):
+        pts = self.homogeneous() if self.rational else self.points
+        if method == "de-casteljau":
+            out = np.empty((len(u), pts.shape[1]))
+            _k.de_casteljau(pts, np.ascontiguousarray(u), out)
+        elif method == "bernstein":
+            out = bernstein(self.degree, u) @ pts
+        elif method == "recursive":
+            out = bernstein_recursive(self.degree, u) @ pts
+        else:
+            if self.degree == 0:
+                out = np.repeat(pts, len(u), axis=0)
+            else:
+                out = power_basis(u, self.degree) @ bezier_matrix(self.degree) @ pts
+        return project(out) if self.rational else out
+
+    def _derivative(self):
+        if self.rational:
+            return RationalDerivative(Bezier(self.homogeneous()), 1)
+        if self.degree == 0:
+            return Bezier(np.zeros_like(self.points))
+        return Bezier(self.degree * np.diff(self.points, axis=0))
+
+    def de_casteljau(self, u):
+        """de Casteljau's triangle at one parameter u: a list of n + 1 arrays.
+
+        Level r holds the n + 1 − r points Pᵢʳ = (1 − u)Pᵢʳ⁻¹ + u Pᵢ₊₁ʳ⁻¹; level n is the
+        curve point (in homogeneous coordinates [wP, w] for a rational curve).
+        """
+        u = float(parameters("u", v.number("u", u), self.domain))
+        level = self.homogeneous() if self.rational else self.points.copy()
+        triangle = [level]
+        for _ in range(self.degree):
+            level = (1.0 - u) * level[:-1] + u * level[1:]
+            triangle.append(level)
+        return triangle
+
+    def subdivide(self, u=0.5):
+        """Split the curve at u into two Bezier curves of the same degree.
+
+        The left curve's control points are the first points of de Casteljau's
+        triangle, the right curve's the last ones (reversed order of levels).
+        """
+        triangle = self.de_casteljau(u)
+        left = np.array([level[0] for level in triangle])
+        right = np.array([level[-1] for level in triangle[::-1]])
+        return self._from_homogeneous(left), self._from_homogeneous(right)
+
+    def elevate(self, times=1):
+        """The same curve as a Bezier curve of degree n + ``times``.
+
+        Qᵢ = i/(n+1) Pᵢ₋₁ + (1 − i/(n+1)) Pᵢ, i = 0 … n + 1, applied ``times`` times
+        (to [wP, w] for a rational curve).
+        """
+        times = v.positive_int("times", times, minimum=0)
+        pts = self.homogeneous() if self.rational else self.points
+        for _ in range(times):
+            n = len(pts) - 1
+            a = (np.arange(n + 2) / (n + 1))[:, None]
+            padded = np.vstack([pts, np.zeros_like(pts[:1])])
+            shifted = np.vstack([np.zeros_like(pts[:1]), pts])
+            pts = a * shifted + (1.0 - a) * padded
+        return self._from_homogeneous(pts)
+
+    def _from_homogeneous(self, pts):
+        if not self.rational:
+            return Bezier(pts)
+        return Bezier(project(pts), weights=pts[:, -1])

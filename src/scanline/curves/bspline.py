@@ -1,0 +1,323 @@
+"""B-spline curves and NURBS (notes, chapter 5, Q.2).
+
+>>> import scanline as sl
+>>> c = sl.curves.BSpline([(0, 0), (1, 2), (3, 2), (4, 0)], order=4, knots="periodic")
+>>> c.domain
+(0.0, 4.0)
+>>> (6 * c.evaluate(0.0)).round(12).tolist()     # P0 + 4 P1 + P2, 6 times the notes' P(0)
+[7.0, 10.0]
+"""
+
+import numbers
+
+import numpy as np
+
+from .. import _validate as v
+from .._kernels import curves as _k
+from ..errors import ArgumentTypeError, ArgumentValueError
+from .._validate import _show
+from .base import Curve, control_points, parameters, weights_array
+from .rational import RationalDerivative, project
+
+KNOT_KINDS = ("open", "uniform", "periodic")
+METHODS = ("de-boor", "cox-de-boor")
+
+
+def open_uniform_knots(count, order):
+    """The open uniform knot vector for ``count`` = n + 1 control points of order d.
+
+    uⱼ = 0 for j < d, j − d + 1 for d ≤ j ≤ n, n − d + 2 for j > n (Hearn & Baker,
+    §10-9): the notes' [0 0 1 2 3 3] (d = 2, n = 3) and [0 0 0 0 1 2 2 2 2] (d = 4, n = 4).
+    """
+    n, d = count - 1, order
+    j = np.arange(n + d + 1)
+    return np.clip(j - d + 1, 0, n - d + 2).astype(np.float64)
+
+
+def _order(order, count):
+    if isinstance(order, bool) or not isinstance(order, numbers.Integral):
+        raise ArgumentTypeError(f"order must be an integer, got {_show(order)}")
+    if not 1 <= order <= count:
+        raise ArgumentValueError(
+            f"order must satisfy 1 <= order <= number of control points ({count}) "
+            f"(the notes: 2 <= d <= n + 1), got order={order}; use more control points "
+            "or a lower order"
+        )
+    return int(order)
+
+
+def check_knots(knots, count, order):
+    """Validate an explicit knot vector: n + d + 1 finite non-decreasing values with
+    u_{d−1} < u_{n+1}.  Returns it as float64."""
+    try:
+        u = np.array(knots, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise ArgumentTypeError(
+            f"knots must be 'open', 'uniform', 'periodic' or an array of numbers, got "
+            f"{_show(knots)}"
+        ) from None
+    need = count + order
+    if u.shape != (need,):
+        raise ArgumentValueError(
+            f"knots must hold n + d + 1 = {need} values for {count} control points of "
+            f"order {order}, got shape {u.shape}"
+        )
+    if not np.isfinite(u).all():
+        raise ArgumentValueError(f"knots must be finite, got {_show(u.tolist())}")
+    if (np.diff(u) < 0).any():
+        i = int(np.argmax(np.diff(u) < 0))
+        raise ArgumentValueError(
+            f"knots must be non-decreasing; knots[{i}] = {u[i]:g} > knots[{i + 1}] = "
+            f"{u[i + 1]:g}"
+        )
+    if not u[order - 1] < u[count]:
+        raise ArgumentValueError(
+            f"knots give an empty parameter range: u_(d-1) = knots[{order - 1}] = "
+            f"{u[order - 1]:g} must be < u_(n+1) = knots[{count}] = {u[count]:g}"
+        )
+    return u
+
+
+def knot_span(knots, order, u):
+    """Index ℓ of the knot span [u_ℓ, u_ℓ₊₁) holding each u, over the whole knot vector.
+
+    A u equal to the last knot belongs to the last non-empty span (the curve is closed
+    at its right end).
+    """
+    knots = np.asarray(knots, dtype=np.float64)
+    u = np.asarray(u, dtype=np.float64)
+    last = len(knots) - 2
+    while knots[last] >= knots[last + 1]:
+        last -= 1
+    return np.minimum(np.searchsorted(knots, u, side="right") - 1, last)
+
+
+def basis(knots, order, u):
+    """All blending functions B_{k,d}(u), k = 0 … n, by the Cox–de Boor recursion.
+
+    Parameters
+    ----------
+    knots : array_like
+        Non-decreasing knot vector u₀ … u_{n+d}.
+    order : int
+        d ≥ 1 (degree d − 1).
+    u : float or array_like
+        Parameters in [u₀, u_{n+d}].
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape ``np.shape(u) + (n + 1,)``.
+
+    Notes
+    -----
+    Notes, ch. 5, Q.2: B_{k,1}(u) = 1 if u_k ≤ u < u_{k+1} else 0 (half-open: the
+    notes' closed interval counts a knot twice, erratum E43), and
+    B_{k,d} = (u − u_k)/(u_{k+d−1} − u_k) B_{k,d−1} + (u_{k+d} − u)/(u_{k+d} − u_{k+1}) B_{k+1,d−1},
+    a term with a zero denominator being 0.  The last non-empty span is closed on the
+    right, so the curve reaches u = u_{n+1}.
+
+    References
+    ----------
+    M. G. Cox, "The numerical evaluation of B-splines", *J. Inst. Maths Applics* 10, 1972.
+    C. de Boor, "On calculating with B-splines", *J. Approx. Theory* 6, 1972.
+    """
+    knots = np.asarray(knots, dtype=np.float64)
+    d = int(order)
+    u = np.asarray(u, dtype=np.float64)
+    flat = u.ravel()
+    count = len(knots) - 1  # number of order-1 functions
+    b = np.zeros((flat.size, count))
+    b[np.arange(flat.size), knot_span(knots, 1, flat)] = 1.0
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for r in range(2, d + 1):
+            k = np.arange(count - r + 1)
+            left = knots[k + r - 1] - knots[k]
+            right = knots[k + r] - knots[k + 1]
+            a = np.where(left > 0, (flat[:, None] - knots[k]) / left, 0.0)
+            c = np.where(right > 0, (knots[k + r] - flat[:, None]) / right, 0.0)
+            b = a * b[:, :-1] + c * b[:, 1:]
+    return b.reshape(u.shape + (b.shape[1],))
+
+
+class BSpline(Curve):
+    """A B-spline curve P(u) = Σₖ Pₖ B_{k,d}(u) of order d (degree d − 1).
+
+    Parameters
+    ----------
+    points : array_like, shape (n + 1, dim)
+        Control points P₀ … Pₙ, finite.
+    order : int
+        d, with 1 ≤ d ≤ n + 1 (the notes: 2 ≤ d ≤ n + 1; d = 1 is the piecewise
+        constant base case, which derivatives of linear splines reach).
+    knots : {"open", "uniform", "periodic"} or array_like, default "open"
+        ``"open"``: open uniform, the end knots repeated d times, so the curve starts
+        at P₀ and ends at Pₙ.  ``"uniform"``: the integers 0 … n + d.  ``"periodic"``:
+        a closed curve: the first d − 1 points are appended again and the knots are
+        uniform, with the domain [0, n + 1], one unit per section.  An array: n + d + 1
+        non-decreasing values (non-uniform B-splines; repeated knots allowed).
+    weights : array_like, shape (n + 1,), optional
+        Positive weights: a rational B-spline (NURBS).
+
+    Notes
+    -----
+    Notes, chapter 5, Q.2.  The curve is defined on [u_{d−1}, u_{n+1}] (property 5):
+    :attr:`domain`; a parameter outside it raises ``ArgumentValueError`` (no
+    clamping).  ``evaluate(u, method="de-boor")`` (default) runs de Boor's algorithm
+    compiled; ``method="cox-de-boor"`` sums the control points times the blending
+    functions of :func:`basis`.
+
+    References
+    ----------
+    C. de Boor, "On calculating with B-splines", *J. Approx. Theory* 6, 1972.
+    W. Boehm, "Inserting new knots into B-spline curves", *CAD* 12(4), 1980.
+    L. Piegl and W. Tiller, *The NURBS Book*, 2nd ed., Springer, 1997.
+    """
+
+    def __init__(self, points, order=4, knots="open", weights=None):
+        pts = control_points("points", points)
+        d = _order(order, len(pts))
+        w = None if weights is None else weights_array("weights", weights, len(pts))
+        self.closed = isinstance(knots, str) and knots == "periodic"
+        if knots is None:
+            knots = "open"
+        if isinstance(knots, str):
+            v.choice("knots", knots, KNOT_KINDS)
+            if self.closed:
+                pts = np.vstack([pts, pts[: d - 1]])
+                w = None if w is None else np.concatenate([w, w[: d - 1]])
+                u = np.arange(len(pts) + d, dtype=np.float64) - (d - 1)
+            elif knots == "uniform":
+                u = np.arange(len(pts) + d, dtype=np.float64)
+            else:
+                u = open_uniform_knots(len(pts), d)
+        else:
+            u = check_knots(knots, len(pts), d)
+        self._set(pts, d, u, w)
+
+    def _set(self, points, order, knots, weights):
+        self.points = points
+        self.order = order
+        self.degree = order - 1
+        self.knots = knots
+        self.weights = weights
+        self.dimension = points.shape[1]
+        self.domain = (float(knots[order - 1]), float(knots[len(points)]))
+
+    @classmethod
+    def _raw(cls, points, order, knots, weights=None):
+        curve = cls.__new__(cls)
+        curve.closed = False
+        curve._set(points, order, knots, weights)
+        return curve
+
+    @property
+    def rational(self):
+        return self.weights is not None
+
+    def homogeneous(self):
+        """Control points [wₖPₖ, wₖ] (plain curves: [Pₖ, 1]), shape (n + 1, dim + 1)."""
+        w = np.ones(len(self.points)) if self.weights is None else self.weights
+        return np.hstack([self.points * w[:, None], w[:, None]])
+
+    def evaluate(self, u, method="de-boor"):
+        """Points on the curve; see :meth:`Curve.evaluate`.  ``method`` is "de-boor"
+        or "cox-de-boor"."""
+        v.choice("method", method, METHODS)
+        u = parameters("u", u, self.domain)
+        return self._evaluate(u.ravel(), method).reshape(u.shape + (self.dimension,))
+
+    __call__ = evaluate
+
+    def _evaluate(self, u, method="de-boor"):
+        pts = self.homogeneous() if self.rational else self.points
+        if method == "de-boor":
+            out = np.empty((len(u), pts.shape[1]))
+            _k.de_boor(pts, self.knots, self.order, np.ascontiguousarray(u), out)
+        else:
+            out = basis(self.knots, self.order, u) @ pts
+        return project(out) if self.rational else out
+
+    def basis(self, u):
+        """The blending functions B_{k,d}(u) of this curve, shape np.shape(u) + (n + 1,)."""
+        return basis(self.knots, self.order, parameters("u", u, self.domain))
+
+    def _derivative(self):
+        if self.rational:
+            return RationalDerivative(BSpline._raw(self.homogeneous(), self.order, self.knots), 1)
+        if self.order == 1:
+            return BSpline._raw(np.zeros_like(self.points), 1, self.knots)
+        d, u = self.order, self.knots
+        n = len(self.points) - 1
+        gap = (u[d: n + d] - u[1: n + 1])[:, None]
+        diff = np.diff(self.points, axis=0)
+        q = np.divide((d - 1) * diff, gap, out=np.zeros_like(diff), where=gap > 0)
+        return BSpline._raw(q, d - 1, u[1:-1])
+
+    def insert_knot(self, u, times=1):
+        """The same curve with the knot u inserted ``times`` times (Boehm 1980).
+
+        The control points P_{ℓ−d+2} … P_ℓ of u's span ℓ are replaced by
+        Qᵢ = (1 − aᵢ) Pᵢ₋₁ + aᵢ Pᵢ, aᵢ = (u − uᵢ)/(u_{i+d−1} − uᵢ); the others are kept.
+        u must lie in [u_{d−1}, u_{n+1}) and no knot may end up repeated more than d
+        times.
+        """
+        lo, hi = self.domain
+        u = v.number("u", u)
+        if not lo <= u < hi:
+            raise ArgumentValueError(
+                f"u must lie in [{lo:g}, {hi:g}) to insert a knot, got {u!r}"
+            )
+        times = v.positive_int("times", times, minimum=0)
+        d = self.order
+        mult = int(np.count_nonzero(self.knots == u))
+        if mult + times > d:
+            raise ArgumentValueError(
+                f"inserting u={u:g} {times} times would repeat it {mult + times} times; "
+                f"at most order={d} allowed"
+            )
+        pts = self.homogeneous() if self.rational else self.points
+        knots = self.knots
+        for _ in range(times):
+            span = int(knot_span(knots, d, u))
+            i = np.arange(span - d + 2, span + 1)
+            a = ((u - knots[i]) / (knots[i + d - 1] - knots[i]))[:, None]
+            new = (1.0 - a) * pts[i - 1] + a * pts[i]
+            pts = np.vstack([pts[: span - d + 2], new, pts[span:]])
+            knots = np.insert(knots, span + 1, u)
+        if self.rational:
+            return type(self)._raw(project(pts), d, knots, pts[:, -1].copy())
+        return type(self)._raw(pts, d, knots)
+
+
+class NURBS(BSpline):
+    """A non-uniform rational B-spline: :class:`BSpline` with ``weights`` (default all 1).
+
+    Notes
+    -----
+    The curve is Σ wₖPₖB_{k,d}(u) / Σ wₖB_{k,d}(u): a B-spline in homogeneous
+    coordinates, projected.  Conic sections are exact, e.g. :func:`nurbs_circle`.
+    """
+
+    def __init__(self, points, order=4, knots="open", weights=None):
+        if weights is None:
+            weights = np.ones(len(control_points("points", points)))
+        super().__init__(points, order, knots, weights)
+
+
+def nurbs_circle(center=(0.0, 0.0), radius=1.0):
+    """An exact circle: a quadratic NURBS with 9 control points (a square's corners and
+    edge midpoints), corner weights √2/2 and knots [0 0 0 ¼ ¼ ½ ½ ¾ ¾ 1 1 1].
+
+    Counterclockwise, starting and ending at (xc + r, yc).  Every point lies at distance
+    ``radius`` from ``center`` (the parameterization is not by arc length).
+    """
+    xc, yc = (v.number("center[0]", center[0]), v.number("center[1]", center[1]))
+    r = v.number("radius", radius)
+    if r <= 0:
+        raise ArgumentValueError(f"radius must be > 0, got {radius!r}")
+    square = np.array([(1, 0), (1, 1), (0, 1), (-1, 1), (-1, 0), (-1, -1), (0, -1),
+                       (1, -1), (1, 0)], dtype=np.float64)
+    w = np.where(np.arange(9) % 2 == 1, np.sqrt(0.5), 1.0)
+    knots = [0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1]
+    return NURBS(square * r + (xc, yc), order=3, knots=knots, weights=w)

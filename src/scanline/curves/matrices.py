@@ -1,0 +1,146 @@
+"""Characteristic matrices of cubic curves, derived exactly (notes, chapter 5).
+
+Each cubic section is written P(u) = [u³ u² u 1] · M · G, G the geometry (control
+points, or end points and tangents).  The matrices are *derived* here in exact rational
+arithmetic rather than copied: the notes print the Bezier matrix and the periodic
+B-spline matrix wrongly (docs/errata.md, E40 and E41).
+
+>>> bezier_matrix()
+array([[-1.,  3., -3.,  1.],
+       [ 3., -6.,  3.,  0.],
+       [-3.,  3.,  0.,  0.],
+       [ 1.,  0.,  0.,  0.]])
+>>> 6 * bspline_matrix()
+array([[-1.,  3., -3.,  1.],
+       [ 3., -6.,  3.,  0.],
+       [-3.,  0.,  3.,  0.],
+       [ 1.,  4.,  1.,  0.]])
+>>> hermite_matrix()
+array([[ 2., -2.,  1.,  1.],
+       [-3.,  3., -2., -1.],
+       [ 0.,  0.,  1.,  0.],
+       [ 1.,  0.,  0.,  0.]])
+"""
+
+from fractions import Fraction
+
+import numpy as np
+
+from .. import _validate as v
+
+#: The notes' Hermite boundary-constraint matrix (ch. 5, Q.3, eq. 5): rows give
+#: P(0), P(1), P'(0), P'(1) from the coefficients [a b c d] of au³ + bu² + cu + d.
+HERMITE_CONSTRAINTS = ((0, 0, 0, 1), (1, 1, 1, 1), (0, 0, 1, 0), (3, 2, 1, 0))
+
+
+def span_polynomials(knots, order, span):
+    """Exact Cox–de Boor blending functions on one knot span, as polynomials.
+
+    Returns a list ``B`` with ``B[k][p]`` the coefficient of tᵖ in B_{k,order}(u_span + t)
+    for k = span - order + 1 ... span (the blending functions not identically zero
+    on [u_span, u_span+1]); Fractions throughout.
+    """
+    u = [Fraction(x) for x in knots]
+    origin = u[span]
+
+    def lin(c0, c1):  # the polynomial c0 + c1 t
+        return [Fraction(c0), Fraction(c1)]
+
+    def mul(p, q):
+        r = [Fraction(0)] * (len(p) + len(q) - 1)
+        for i, a in enumerate(p):
+            for j, b in enumerate(q):
+                r[i + j] += a * b
+        return r
+
+    def add(p, q):
+        n = max(len(p), len(q))
+        return [(p[i] if i < len(p) else 0) + (q[i] if i < len(q) else 0) for i in range(n)]
+
+    # level 1: B_{k,1} = 1 on [u_k, u_k+1): only k == span is non-zero here
+    basis = {k: [Fraction(int(k == span))] for k in range(len(u) - 1)}
+    for d in range(2, order + 1):
+        nxt = {}
+        for k in range(len(u) - d):
+            term = [Fraction(0)]
+            den = u[k + d - 1] - u[k]
+            if den:  # 0/0 is taken as 0
+                term = add(term, mul(lin((origin - u[k]) / den, 1 / den), basis[k]))
+            den = u[k + d] - u[k + 1]
+            if den:
+                term = add(term, mul(lin((u[k + d] - origin) / den, -1 / den), basis[k + 1]))
+            nxt[k] = term
+        basis = nxt
+    return [basis[k] + [Fraction(0)] * (order - len(basis[k]))
+            for k in range(span - order + 1, span + 1)]
+
+
+def _matrix(polys):
+    """[u^(n) ... u 1] · M = blending functions: row i holds the u^(n-i) coefficients."""
+    n = len(polys)
+    return np.array([[float(polys[k][n - 1 - i]) for k in range(n)] for i in range(n)])
+
+
+def bezier_matrix(degree=3):
+    """M_bez, with P(u) = [uⁿ … u 1] · M_bez · [P₀ … Pₙ]ᵀ for a degree-n Bezier curve.
+
+    Derived from the Bernstein polynomials, which are the Cox–de Boor functions of the
+    knot vector [0ⁿ⁺¹ 1ⁿ⁺¹].  For n = 3 the first row is [-1 3 -3 1]; the notes print
+    [1 0 -3 1] (erratum E40).
+    """
+    n = v.positive_int("degree", degree, minimum=1)
+    return _matrix(span_polynomials([0] * (n + 1) + [1] * (n + 1), n + 1, n))
+
+
+def bspline_matrix(order=4):
+    """M_B of the uniform periodic B-spline: P(u) = [u^(d-1) … u 1] · M_B · [P₀ … P_{d-1}]ᵀ.
+
+    Derived by the Cox–de Boor recursion on the integer knots 0, 1, …, 2d−1 over the
+    span [d−1, d].  For d = 4 it is ⅙[[-1 3 -3 1] [3 -6 3 0] [-3 0 3 0] [1 4 1 0]];
+    the notes print ⅙ times the Bezier matrix, itself misprinted (erratum E41).
+    """
+    d = v.positive_int("order", order, minimum=2)
+    return _matrix(span_polynomials(range(2 * d), d, d - 1))
+
+
+def _inverse(rows):
+    """Exact inverse of a small invertible matrix (Gauss–Jordan on Fractions)."""
+    n = len(rows)
+    a = [[Fraction(x) for x in row] + [Fraction(int(i == j)) for j in range(n)]
+         for i, row in enumerate(rows)]
+    for col in range(n):
+        pivot = next(r for r in range(col, n) if a[r][col] != 0)
+        a[col], a[pivot] = a[pivot], a[col]
+        p = a[col][col]
+        a[col] = [x / p for x in a[col]]
+        for r in range(n):
+            if r != col and a[r][col] != 0:
+                f = a[r][col]
+                a[r] = [x - f * y for x, y in zip(a[r], a[col])]
+    return [row[n:] for row in a]
+
+
+def hermite_matrix():
+    """M_H, the inverse of the notes' boundary-constraint matrix (ch. 5, Q.3, eq. 6).
+
+    P(u) = [u³ u² u 1] · M_H · [P_k, P_k+1, DP_k, DP_k+1]ᵀ.
+    """
+    return np.array([[float(x) for x in row] for row in _inverse(HERMITE_CONSTRAINTS)])
+
+
+def cardinal_matrix(tension=0.0):
+    """M_C of the cardinal spline, P(u) = [u³ u² u 1] · M_C · [P_k-1 P_k P_k+1 P_k+2]ᵀ.
+
+    With s = (1 − t)/2: M_C = M_H · G, where G maps the four points to
+    [P_k, P_k+1, s(P_k+1 − P_k-1), s(P_k+2 − P_k)] (Hearn & Baker, §10-8).
+    ``tension`` t = 0 gives the Catmull–Rom spline.
+    """
+    s = (1.0 - v.number("tension", tension)) / 2
+    geometry = np.array([[0, 1, 0, 0], [0, 0, 1, 0], [-s, 0, s, 0], [0, -s, 0, s]])
+    return hermite_matrix() @ geometry
+
+
+def power_basis(u, degree):
+    """The row vectors [uⁿ … u 1] for each u: shape np.shape(u) + (n + 1,)."""
+    u = np.asarray(u, dtype=np.float64)
+    return u[..., None] ** np.arange(degree, -1, -1)

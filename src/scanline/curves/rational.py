@@ -1,0 +1,41 @@
+"""Derivatives of rational curves (rational Bezier, NURBS).
+
+A rational curve is C(u) = A(u) / w(u), where [A, w] is a polynomial (non-rational)
+curve in homogeneous coordinates, one dimension higher.  Leibniz's rule on A = w·C gives
+C⁽ᵏ⁾ = (A⁽ᵏ⁾ − Σᵢ₌₁ᵏ C(k, i) w⁽ⁱ⁾ C⁽ᵏ⁻ⁱ⁾) / w (Piegl & Tiller, *The NURBS Book*, eq. 4.8).
+"""
+
+from math import comb
+
+import numpy as np
+
+from .base import Curve
+
+
+def project(homogeneous):
+    """Points (..., dim + 1) in homogeneous coordinates -> (..., dim) Cartesian points."""
+    return homogeneous[..., :-1] / homogeneous[..., -1:]
+
+
+class RationalDerivative(Curve):
+    """The k-th derivative of the rational curve whose homogeneous form is ``homogeneous``."""
+
+    def __init__(self, homogeneous, k):
+        self.homogeneous = homogeneous
+        self.k = k
+        self.domain = homogeneous.domain
+        self.dimension = homogeneous.dimension - 1
+
+    def _evaluate(self, u):
+        h = [self.homogeneous.derivative(j)._evaluate(u) for j in range(self.k + 1)]
+        w = h[0][:, -1:]
+        c = [h[0][:, :-1] / w]
+        for k in range(1, self.k + 1):
+            a = h[k][:, :-1].copy()
+            for i in range(1, k + 1):
+                a -= comb(k, i) * h[i][:, -1:] * c[k - i]
+            c.append(a / w)
+        return np.ascontiguousarray(c[self.k])
+
+    def _derivative(self):
+        return RationalDerivative(self.homogeneous, self.k + 1)

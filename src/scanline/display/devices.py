@@ -1,0 +1,273 @@
+"""Devices the display-file interpreter drives: raster and random-scan (vector).
+
+Every device has ``width`` and ``height`` (device units, pixel centers at integers,
+y up) and two drawing operations, called with geometry already clipped to the device:
+
+``stroke(pieces, closed, attributes)``
+    Polylines, each a (K, 2) array; ``closed`` when one unclipped ring is given;
+    ``attributes`` the line attributes (color, width, cap, join, miter_limit, dash,
+    dash_phase).
+``fill(contours, attributes)``
+    One area: contours combined by ``attributes["rule"]``, painted in
+    ``attributes["style"]`` (None: solid) and ``attributes["color"]``.
+
+:class:`RasterDevice` scan-converts into a :class:`~scanline.FrameBuffer`;
+:class:`VectorDevice` records the MOVE/LINE commands a random-scan display would
+refresh; :class:`SVGDevice` writes an SVG document.
+"""
+
+import math
+from xml.sax.saxutils import quoteattr
+
+import numpy as np
+
+from .. import draw
+from ..color.spec import rgba
+from ..framebuffer import FrameBuffer, write_atomically
+from . import spans
+
+def _simple(attributes):
+    """True when a stroke is a plain one-pixel line (Bresenham segments suffice)."""
+    return attributes["width"] <= 1.0 and attributes["dash"] is None
+
+
+def _segments(pieces, closed):
+    """The polylines as (N, 4) line segments."""
+    rows = []
+    for p in pieces:
+        q = np.vstack([p, p[:1]]) if closed and len(p) > 2 else p
+        if len(q) == 1:
+            q = np.vstack([q, q])
+        rows.append(np.hstack([q[:-1], q[1:]]))
+    return np.vstack(rows) if rows else np.zeros((0, 4))
+
+
+class RasterDevice:
+    """Scan-converts the display file into a frame buffer (``sl.draw``).
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+        Drawn into as it is (not cleared).
+    """
+
+    def __init__(self, fb):
+        if not isinstance(fb, FrameBuffer):
+            from ..errors import ArgumentTypeError
+
+            raise ArgumentTypeError(f"fb must be a scanline.FrameBuffer, got {type(fb).__name__}")
+        self.fb = fb
+        self.width, self.height = fb.width, fb.height
+
+    def stroke(self, pieces, closed, attributes):
+        a = attributes
+        if _simple(a) or not hasattr(draw, "polylines"):
+            draw.lines(self.fb, _segments(pieces, closed), color=a["color"])
+            return
+        draw.polylines(self.fb, list(pieces), color=a["color"], closed=closed,
+                       width=a["width"], cap=a["cap"], join=a["join"],
+                       miter_limit=a["miter_limit"], dash=a["dash"],
+                       dash_phase=a["dash_phase"])
+
+    def fill(self, contours, attributes):
+        draw.polygon(self.fb, list(contours), color=attributes["color"],
+                     rule=attributes["rule"], style=attributes["style"])
+
+
+def _fill_strokes(contours, attributes):
+    """The strokes a vector device draws for an area: hatch lines for a hatch style,
+    the scan-line spans for any other painted style; none for a hollow one."""
+    style = attributes["style"]
+    if style is not None and style.kind == "hollow":
+        return np.zeros((0, 4))
+    if style is not None and style.kind == "hatch":
+        angles = [style.angle] + ([style.angle + math.pi / 2] if style.cross else [])
+        return np.vstack([spans.hatch(contours, attributes["rule"], a, style.spacing)
+                          for a in angles])
+    return spans.spans(contours, attributes["rule"])
+
+
+class VectorDevice:
+    """A random-scan (vector, calligraphic) display: a list of beam commands.
+
+    The refresh display file of the notes (chapter 1, Q.3) is "a set of
+    line-drawing commands"; this device records them as ``("COLOR", r, g, b, a)``,
+    ``("MOVE", x, y)`` and ``("LINE", x, y)`` tuples in device coordinates.  A beam
+    has one width, so line width and dash patterns are not represented; areas are
+    drawn as their outline plus strokes: hatch lines for a hatch style, one stroke
+    per scan line (exactly the pixels of the raster fill) for the other styles,
+    only the outline for a hollow one.
+
+    Parameters
+    ----------
+    width, height : int
+        The addressable area (the same frame as a raster device's).
+    """
+
+    def __init__(self, width, height):
+        self.width, self.height = width, height
+        self.commands = []
+        self._color = None
+        self._beam = None
+
+    def _set_color(self, color):
+        c = rgba(color)
+        if c != self._color:
+            self.commands.append(("COLOR",) + c)
+            self._color = c
+
+    def _segment(self, x0, y0, x1, y1):
+        if self._beam != (x0, y0):
+            self.commands.append(("MOVE", x0, y0))
+        self.commands.append(("LINE", x1, y1))
+        self._beam = (x1, y1)
+
+    def _draw(self, segments, color):
+        if len(segments):
+            self._set_color(color)
+        for x0, y0, x1, y1 in segments.tolist():
+            self._segment(x0, y0, x1, y1)
+
+    def stroke(self, pieces, closed, attributes):
+        self._draw(_segments(pieces, closed), attributes["color"])
+
+    def fill(self, contours, attributes):
+        self._draw(_fill_strokes(contours, attributes), attributes["color"])
+        self._draw(_segments(contours, True), attributes["color"])
+
+    def lines(self):
+        """The LINE commands as (N, 4) segments (x0, y0, x1, y1) in device units."""
+        out, beam = [], None
+        for cmd in self.commands:
+            if cmd[0] == "MOVE":
+                beam = cmd[1:]
+            elif cmd[0] == "LINE":
+                out.append(beam + cmd[1:])
+                beam = cmd[1:]
+        return np.array(out, np.float64).reshape(-1, 4)
+
+    def listing(self):
+        """The commands as text, one per line (``MOVE x y``, ``LINE x y``,
+        ``COLOR r g b a``), coordinates rounded to 1/1000 of a device unit."""
+        rows = [f"; random-scan display file, {self.width} x {self.height} device units"]
+        for cmd in self.commands:
+            if cmd[0] == "COLOR":
+                rows.append("COLOR " + " ".join(str(c) for c in cmd[1:]))
+            else:
+                rows.append(f"{cmd[0]} {_num(cmd[1])} {_num(cmd[2])}")
+        return "\n".join(rows) + "\n"
+
+    def save(self, path):
+        """Write :meth:`listing` to ``path`` atomically."""
+        write_atomically(path, lambda f: f.write(self.listing().encode("utf-8")))
+
+
+def _num(x):
+    """A coordinate for text output: at most 3 decimals, no trailing zeros."""
+    text = f"{x:.3f}".rstrip("0").rstrip(".")
+    return "0" if text in ("-0", "") else text
+
+
+#: Named dash patterns in device units (dash, gap, ...), for SVG's stroke-dasharray.
+DASH_ARRAYS = {"dashed": (6, 4), "dotted": (1, 3), "dash-dot": (6, 3, 1, 3)}
+
+
+def _dash_array(dash, phase):
+    """SVG (stroke-dasharray, stroke-dashoffset) for a dash attribute; None when solid."""
+    if dash is None:
+        return None
+    if isinstance(dash, str):
+        return DASH_ARRAYS[dash], phase
+    if isinstance(dash, int):  # a 16-bit raster mask, most significant bit first
+        bits = f"{dash:016b}"
+        if "0" not in bits:
+            return None
+        start = bits.index("1")
+        bits = bits[start:] + bits[:start]  # SVG patterns begin with a dash
+        runs = [len(r) for r in bits.replace("10", "1 0").replace("01", "0 1").split()]
+        return tuple(runs), phase + (16 - start) % 16
+    return tuple(dash), phase
+
+
+class SVGDevice:
+    """An SVG document, the display file as resolution-independent vector output.
+
+    Device coordinates map to SVG user units by ``(x + 0.5, height - 0.5 - y)``: the
+    SVG canvas is the frame of a ``width`` x ``height`` raster, y flipped.  Strokes keep
+    their width, caps, joins and dashes; areas are paths filled by their rule; a
+    hatch style is drawn as its hatch strokes, a pattern as its fill color.
+
+    Parameters
+    ----------
+    width, height : int
+    background : color or None
+    """
+
+    def __init__(self, width, height, background=None):
+        self.width, self.height = width, height
+        self.elements = []
+        if background is not None:
+            self.elements.append(
+                f'<rect width="{width}" height="{height}"{_paint("fill", background)}/>')
+
+    def _path(self, pieces, closed):
+        parts = []
+        for p in pieces:
+            xs = [_num(x + 0.5) for x in p[:, 0]]
+            ys = [_num(self.height - 0.5 - y) for y in p[:, 1]]
+            coords = [f"{x} {y}" for x, y in zip(xs, ys)]
+            if len(coords) == 1:
+                coords.append(coords[0])
+            parts.append("M" + " L".join(coords) + (" Z" if closed else ""))
+        return quoteattr(" ".join(parts))
+
+    def stroke(self, pieces, closed, attributes):
+        if not pieces:
+            return
+        a = attributes
+        extra = ""
+        dashes = _dash_array(a["dash"], a["dash_phase"])
+        if dashes:
+            extra = (f' stroke-dasharray="{" ".join(_num(d) for d in dashes[0])}"'
+                     f' stroke-dashoffset="{_num(dashes[1])}"')
+        self.elements.append(
+            f'<path d={self._path(pieces, closed)} fill="none"{_paint("stroke", a["color"])}'
+            f' stroke-width="{_num(a["width"])}" stroke-linecap="{a["cap"]}"'
+            f' stroke-linejoin="{a["join"]}" stroke-miterlimit="{_num(a["miter_limit"])}"'
+            f'{extra}/>')
+
+    def fill(self, contours, attributes):
+        style = attributes["style"]
+        line = {"color": attributes["color"], "width": 1.0, "cap": "butt", "join": "miter",
+                "miter_limit": 10.0, "dash": None, "dash_phase": 0.0}
+        if style is not None and style.kind in ("hollow", "hatch"):
+            if style.kind == "hatch":
+                hatch = _fill_strokes(contours, attributes)
+                self.stroke([h.reshape(2, 2) for h in hatch], False,
+                            {**line, "width": float(style.line_width)})
+            self.stroke(contours, True, line)
+            return
+        rule = "evenodd" if attributes["rule"] == "even-odd" else "nonzero"
+        self.elements.append(
+            f'<path d={self._path(contours, True)} fill-rule="{rule}"'
+            f'{_paint("fill", attributes["color"])}/>')
+
+    def svg(self):
+        """The SVG document as a string."""
+        body = "\n".join(self.elements)
+        return (f'<svg xmlns="http://www.w3.org/2000/svg" version="1.1" '
+                f'width="{self.width}" height="{self.height}" '
+                f'viewBox="0 0 {self.width} {self.height}">\n{body}\n</svg>\n')
+
+    def save(self, path):
+        """Write :meth:`svg` to ``path`` atomically."""
+        write_atomically(path, lambda f: f.write(self.svg().encode("utf-8")))
+
+
+def _paint(attribute, color):
+    """`` fill="rgb(...)"`` (with an opacity when translucent) for a color spec."""
+    r, g, b, a = rgba(color)
+    text = f' {attribute}="rgb({r},{g},{b})"'
+    if a < 255:
+        text += f' {attribute}-opacity="{_num(a / 255)}"'
+    return text

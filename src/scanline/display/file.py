@@ -1,0 +1,370 @@
+"""The display file: named segments of output primitives, in the style of GKS.
+
+The notes (chapter 1, Q.3) describe the display file as the store of graphics
+commands that the graphics package builds from the application program and that the
+display processor reads to refresh the screen; the syllabus of chapter 2 lists the
+display file, its structure, the display-file algorithm and the display-file
+interpreter.  This module is the structure; :mod:`scanline.display.interpreter` walks
+it.  As in GKS (ISO 7942), the file is a set of *segments*, each a named group of
+primitives with its own visibility, highlighting, priority and segment
+transformation, and the primitives are stored in normalized device coordinates.
+"""
+
+import math
+import numbers
+
+import numpy as np
+
+from .. import _validate as v
+from .. import transform as tf
+from ..errors import ArgumentTypeError, ArgumentValueError
+from . import primitives as p
+from .viewing import normalization, ndc_rectangle
+
+_UNIT = (0.0, 0.0, 1.0, 1.0)
+
+
+class Segment:
+    """A named group of primitives with its segment attributes.
+
+    Attributes
+    ----------
+    name : str
+    primitives : list of Primitive
+        In NDC, in the order they were created.
+    visible : bool
+        Invisible segments are kept but not drawn.
+    highlighted : bool
+        Highlighted segments are drawn with a frame around them.
+    priority : float
+        Segments are drawn in increasing priority (higher ones on top); equal
+        priorities keep the order of creation.
+    transformation : ndarray, shape (3, 3)
+        The segment transformation, applied to the NDC geometry when drawing.
+    """
+
+    __slots__ = ("name", "primitives", "visible", "highlighted", "priority",
+                 "transformation", "_order")
+
+    def __init__(self, name, order):
+        self.name = name
+        self.primitives = []
+        self.visible = True
+        self.highlighted = False
+        self.priority = 0.0
+        self.transformation = np.eye(3)
+        self._order = order
+
+    def __repr__(self):
+        flags = [f for f, on in (("invisible", not self.visible),
+                                 ("highlighted", self.highlighted)) if on]
+        return (f"<Segment {self.name!r}: {len(self.primitives)} primitives, priority "
+                f"{self.priority:g}{''.join(', ' + f for f in flags)}>")
+
+
+def _name(value, what="name"):
+    if not isinstance(value, str) or not value:
+        raise ArgumentTypeError(f"{what} must be a non-empty string, got {v._show(value)}")
+    return value
+
+
+class DisplayFile:
+    """A retained picture: named segments of primitives in normalized device
+    coordinates, with a current normalization transformation and current attributes.
+
+    Output functions (:meth:`polyline`, :meth:`polygon`, :meth:`circle`,
+    :meth:`ellipse`, :meth:`text`, :meth:`markers`) take world coordinates, map them
+    to NDC through the current window and viewport, and append the primitive to the
+    open segment.  :func:`scanline.display.interpret` (or :meth:`draw`,
+    :meth:`save`) draws the file on a device.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> df = sl.DisplayFile()
+    >>> df.set_viewing(window=(-0.5, -0.5, 7.5, 3.5))  # world units = pixels
+    >>> df.create_segment("base")
+    >>> df.polyline([(0, 0), (7, 3)])
+    >>> df.close_segment()
+    >>> fb = sl.FrameBuffer(8, 4, mode="1")
+    >>> df.draw(fb)
+    >>> print(sl.text_image(fb))
+    -------#
+    ----##--
+    --##----
+    ##------
+
+    Notes
+    -----
+    Notes, chapter 1, Q.3 (the refresh display file of a random-scan system) and the
+    syllabus of chapter 2 (display-file structure, normalized device coordinates);
+    segment operations after GKS: create, close, delete, rename (and reopen, to
+    append), segment visibility, highlighting, priority and transformation.
+
+    References
+    ----------
+    ISO 7942:1985, Graphical Kernel System (GKS), chapter 4.7 (segments).
+    F. R. A. Hopgood, D. A. Duce, J. R. Gallop and D. C. Sutcliffe, *Introduction to
+    the Graphical Kernel System (GKS)*, Academic Press, 1983.
+    """
+
+    def __init__(self):
+        self._segments = {}
+        self._open = None
+        self._created = 0
+        self.set_viewing()
+
+    # -- viewing --------------------------------------------------------------------------
+    def set_viewing(self, window=_UNIT, viewport=_UNIT, view_up=(0.0, 1.0),
+                    keep_aspect=False, clip=True):
+        """Set the current normalization transformation (world -> NDC).
+
+        Parameters
+        ----------
+        window : (xmin, ymin, xmax, ymax)
+            The world-coordinate window, in the viewing frame: with a ``view_up``
+            other than (0, 1) the window is turned about its center so that
+            ``view_up`` points up in the viewport.
+        viewport : (xmin, ymin, xmax, ymax)
+            The viewport in NDC, inside the unit square.
+        view_up : (float, float)
+        keep_aspect : bool
+            Keep the window's aspect ratio (the picture is centered in the viewport).
+        clip : bool
+            Clip later primitives to the viewport (GKS's clipping indicator).
+        """
+        self._normalization = normalization(window, viewport, view_up, keep_aspect)
+        self._clip = ndc_rectangle("viewport", viewport) if clip else None
+        if not isinstance(clip, bool):
+            raise ArgumentTypeError(f"clip must be True or False, got {v._show(clip)}")
+
+    @property
+    def normalization(self):
+        """The current world -> NDC matrix (3x3)."""
+        return self._normalization.copy()
+
+    def world_transformation(self, m):
+        """A transformation given in world coordinates, as the NDC segment
+        transformation that has the same effect: N · m · N⁻¹."""
+        n = self._normalization
+        return tf.compose(n, m, tf.inverse(n))
+
+    # -- segments ---------------------------------------------------------------------------
+    def create_segment(self, name, priority=0.0, visible=True, highlighted=False):
+        """Open a new segment; later primitives go into it until :meth:`close_segment`."""
+        _name(name)
+        if self._open is not None:
+            raise ArgumentValueError(
+                f"cannot create segment {name!r}: segment {self._open.name!r} is still "
+                "open; close it first (close_segment())"
+            )
+        if name in self._segments:
+            raise ArgumentValueError(
+                f"segment {name!r} already exists; reopen it to append "
+                "(reopen_segment) or delete it first"
+            )
+        seg = Segment(name, self._created)
+        self._created += 1
+        self._segments[name] = seg
+        self._open = seg
+        self.set_priority(name, priority)
+        self.set_visibility(name, visible)
+        self.set_highlighting(name, highlighted)
+
+    def close_segment(self):
+        """Close the open segment."""
+        if self._open is None:
+            raise ArgumentValueError("no segment is open; create_segment(name) opens one")
+        self._open = None
+
+    def reopen_segment(self, name):
+        """Open an existing segment again, to append primitives to it."""
+        seg = self.segment(name)
+        if self._open is not None:
+            raise ArgumentValueError(
+                f"cannot reopen segment {name!r}: segment {self._open.name!r} is open; "
+                "close it first"
+            )
+        self._open = seg
+
+    def delete_segment(self, name):
+        """Remove a closed segment and its primitives."""
+        seg = self.segment(name)
+        if seg is self._open:
+            raise ArgumentValueError(f"segment {name!r} is open; close it before deleting it")
+        del self._segments[name]
+
+    def rename_segment(self, old, new):
+        """Give segment ``old`` the name ``new`` (which must be free)."""
+        seg = self.segment(old)
+        _name(new, "new")
+        if new in self._segments:
+            raise ArgumentValueError(f"cannot rename {old!r} to {new!r}: {new!r} already exists")
+        self._segments = {(new if k == old else k): s for k, s in self._segments.items()}
+        seg.name = new
+
+    def segment(self, name):
+        """The :class:`Segment` called ``name``."""
+        seg = self._segments.get(name) if isinstance(name, str) else None
+        if seg is None:
+            known = ", ".join(repr(k) for k in self._segments) or "none yet"
+            raise ArgumentValueError(f"no segment named {v._show(name)}; segments: {known}")
+        return seg
+
+    @property
+    def segments(self):
+        """The segments in order of creation."""
+        return list(self._segments.values())
+
+    @property
+    def open_segment(self):
+        """The name of the open segment, or None."""
+        return None if self._open is None else self._open.name
+
+    def __contains__(self, name):
+        return name in self._segments
+
+    def __len__(self):
+        return len(self._segments)
+
+    def set_visibility(self, name, visible):
+        """Show or hide a segment."""
+        self.segment(name).visible = _flag("visible", visible)
+
+    def set_highlighting(self, name, highlighted):
+        """Turn a segment's highlighting on or off."""
+        self.segment(name).highlighted = _flag("highlighted", highlighted)
+
+    def set_priority(self, name, priority):
+        """Set a segment's priority (higher is drawn later, on top)."""
+        self.segment(name).priority = v.number("priority", priority)
+
+    def set_transformation(self, name, matrix):
+        """Set a segment's transformation: an affine 3x3 matrix acting on NDC (use
+        :meth:`world_transformation` to give one in world coordinates)."""
+        m = tf.compose(matrix)
+        tf.apply(m, (0.0, 0.0))  # refuses a non-affine matrix, saying why
+        self.segment(name).transformation = m
+
+    # -- output primitives ----------------------------------------------------------------
+    def _add(self, kind, geometry, attributes):
+        if self._open is None:
+            raise ArgumentValueError(
+                f"no segment is open to hold the {kind}; call create_segment(name) first"
+            )
+        self._open.primitives.append(p.Primitive(kind, geometry, attributes, self._clip))
+
+    def _ndc(self, pts):
+        return tf.apply(self._normalization, pts)
+
+    def polyline(self, points, color="white", closed=False, **line):
+        """Append a polyline (``closed=True``: a polygon outline).
+
+        ``line`` holds the line attributes of :func:`scanline.draw.polyline`:
+        ``width`` (device units), ``cap``, ``join``, ``miter_limit``, ``dash``,
+        ``dash_phase``.
+        """
+        pts = p.points("points", points, 1)
+        attrs = p.line_attributes(color, **line)
+        attrs["closed"] = _flag("closed", closed)
+        self._add("polyline", {"points": self._ndc(pts)}, attrs)
+
+    def polygon(self, contours, color="white", rule="even-odd", style=None, edge=None,
+                **line):
+        """Append a fill area: one contour or several (holes combine by ``rule``).
+
+        ``style`` is a :class:`scanline.FillStyle` or its word (``"hollow"``,
+        ``"hatch:45:8"``); ``edge`` an optional outline color drawn with the line
+        attributes ``line``.
+        """
+        cs = p.contours("points", contours)
+        attrs = {
+            "color": p.color("color", color),
+            "rule": v.choice("rule", rule, p.RULES),
+            "style": p.fill_style("style", style),
+            "edge": None if edge is None else p.line_attributes(edge, prefix="edge ", **line),
+        }
+        self._add("polygon", {"contours": [self._ndc(c) for c in cs]}, attrs)
+
+    def ellipse(self, center, rx, ry, angle=0.0, color="white", fill=False, rule="even-odd",
+                style=None, **line):
+        """Append an ellipse with semi-axes ``rx``, ``ry`` turned by ``angle`` radians;
+        ``fill=True`` makes it a fill area (with ``style``), else an outline."""
+        c = p.points("center", [center], 1)
+        rx, ry = p._nonnegative("rx", rx), p._nonnegative("ry", ry)
+        a = v.number("angle", angle)
+        axes = np.array([[math.cos(a), -math.sin(a)], [math.sin(a), math.cos(a)]]) @ np.diag([rx, ry])
+        lin = self._normalization[:2, :2]
+        attrs = {"fill": _flag("fill", fill)}
+        if attrs["fill"]:
+            attrs.update(color=p.color("color", color), rule=v.choice("rule", rule, p.RULES),
+                         style=p.fill_style("style", style), edge=None)
+        else:
+            attrs.update(p.line_attributes(color, **line), closed=True)
+        self._add("ellipse", {"center": self._ndc(c)[0], "axes": lin @ axes}, attrs)
+
+    def circle(self, center, r, color="white", fill=False, **attributes):
+        """Append a circle (an ellipse with equal semi-axes)."""
+        self.ellipse(center, r, r, 0.0, color, fill, **attributes)
+
+    def text(self, position, string, height=1.0, angle=0.0, color="white", font="stroke",
+             align=("left", "base"), expansion=1.0, spacing=0.0, path="right",
+             clip="character"):
+        """Append a text string at ``position`` (world coordinates).
+
+        ``height`` is the character height in world units; ``angle`` turns the
+        baseline (radians); ``font``, ``align``, ``expansion``, ``spacing`` and
+        ``path`` are those of :func:`scanline.draw.text`.  ``clip`` says how the
+        string is clipped: ``"string"`` (all or none), ``"character"`` (each
+        character all or none) or ``"stroke"`` (strokes and pixels).
+        """
+        if not isinstance(string, str):
+            raise ArgumentTypeError(f"string must be a str, got {v._show(string)}")
+        pos = p.points("position", [position], 1)
+        if not (isinstance(align, (tuple, list)) and len(align) == 2):
+            raise ArgumentValueError(
+                f"align must be a pair (horizontal, vertical) such as ('left', 'base'), "
+                f"got {v._show(align)}"
+            )
+        attrs = {
+            "color": p.color("color", color),
+            "font": v.choice("font", font, p.FONTS),
+            "align": (v.choice("align[0]", align[0], p.HORIZONTAL),
+                      v.choice("align[1]", align[1], p.VERTICAL)),
+            "expansion": p._positive("expansion", expansion),
+            "spacing": v.number("spacing", spacing),
+            "path": v.choice("path", path, p.TEXT_PATHS),
+            "clip": v.choice("clip", clip, p.TEXT_CLIPS),
+        }
+        frame = self._normalization[:2, :2] @ p.text_frame(p._positive("height", height),
+                                                           v.number("angle", angle))
+        self._add("text", {"anchor": self._ndc(pos)[0], "frame": frame, "string": string},
+                  attrs)
+
+    def markers(self, points, kind="plus", size=7.0, color="white"):
+        """Append polymarkers: ``kind`` one of dot, plus, asterisk, circle, cross
+        (GKS types 1-5), ``size`` in device units (markers do not scale)."""
+        pts = p.points("points", points, 1)
+        attrs = {"color": p.color("color", color),
+                 "kind": v.choice("kind", kind, p.MARKERS),
+                 "size": p._positive("size", size)}
+        self._add("markers", {"points": self._ndc(pts)}, attrs)
+
+    # -- drawing ----------------------------------------------------------------------------
+    def draw(self, fb, **options):
+        """Draw the file on a frame buffer (see :func:`scanline.display.interpret`)."""
+        from .devices import RasterDevice
+        from .interpreter import interpret
+
+        interpret(self, RasterDevice(fb), **options)
+
+    def __repr__(self):
+        return f"<DisplayFile: {len(self._segments)} segments, open: {self.open_segment!r}>"
+
+
+def _flag(name, value):
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    if isinstance(value, numbers.Integral) and value in (0, 1):
+        return bool(value)
+    raise ArgumentTypeError(f"{name} must be True or False, got {v._show(value)}")

@@ -1,0 +1,77 @@
+"""From a primitive in device coordinates to the commands a device draws.
+
+The interpreter maps each primitive to device coordinates (workstation matrix times
+segment transformation) and hands it here with the device clipping rectangle.  What
+comes out is the same for every device -- clipped polylines to stroke and clipped
+contours to fill -- so the raster and the vector output of one display file agree.
+"""
+
+import math
+
+import numpy as np
+
+from .. import clip as clipping
+
+#: Largest distance (device units) between a flattened ellipse and the true curve.
+FLATNESS = 0.25
+
+#: Marker strokes of a unit marker (size 1), as (x0, y0, x1, y1) rows.
+_S = math.sqrt(0.5) / 2
+_MARKER_STROKES = {
+    "dot": np.array([[0.0, 0.0, 0.0, 0.0]]),
+    "plus": np.array([[-0.5, 0, 0.5, 0], [0, -0.5, 0, 0.5]]),
+    "cross": np.array([[-_S, -_S, _S, _S], [-_S, _S, _S, -_S]]),
+    "asterisk": np.array([[-0.5, 0, 0.5, 0], [0, -0.5, 0, 0.5],
+                          [-_S, -_S, _S, _S], [-_S, _S, _S, -_S]]),
+}
+
+
+def ellipse_points(center, axes):
+    """The ellipse ``center + axes @ (cos t, sin t)`` as a closed polygon (first point
+    not repeated) within :data:`FLATNESS` of the curve."""
+    r = float(np.sqrt((axes * axes).sum(axis=0)).max())
+    if r <= FLATNESS:
+        n = 4
+    else:
+        n = int(min(8192, max(16, math.ceil(math.pi / math.acos(1.0 - FLATNESS / r)))))
+    t = np.linspace(0.0, 2.0 * math.pi, n, endpoint=False)
+    return center + np.stack([np.cos(t), np.sin(t)], axis=1) @ axes.T
+
+
+def marker_segments(points, kind, size):
+    """Device-space line segments (N, 4) drawing ``kind`` markers at ``points``."""
+    if kind == "circle":
+        unit = ellipse_points(np.zeros(2), np.eye(2) * 0.5)
+        ring = np.hstack([unit, np.roll(unit, -1, axis=0)])
+    else:
+        ring = _MARKER_STROKES[kind]
+    offsets = np.hstack([points, points])
+    return (offsets[:, None, :] + size * ring[None, :, :]).reshape(-1, 4)
+
+
+def polylines(pts, closed, rect):
+    """Clip one polyline to ``rect``: a list of (K, 2) pieces and whether the result
+    is still one closed ring."""
+    ring = np.vstack([pts, pts[:1]]) if closed and len(pts) > 1 else pts
+    inside = (len(pts) > 0 and (ring[:, 0] >= rect[0]).all() and (ring[:, 0] <= rect[2]).all()
+              and (ring[:, 1] >= rect[1]).all() and (ring[:, 1] <= rect[3]).all())
+    if inside:
+        return [pts], closed
+    return clipping.polyline(ring, rect), False
+
+
+def contours(cs, rect):
+    """Clip a fill area (contours combined by a fill rule) to ``rect``.
+
+    Sutherland-Hodgman clips each contour; inside a convex window that keeps every
+    point's winding number, so both fill rules still hold.  The edges it adds along
+    the window boundary enclose no area.
+    """
+    return [c for c in clipping.polygon(list(cs), rect, method="sutherland-hodgman")
+            if len(c) >= 3]
+
+
+def intersect(a, b):
+    """The intersection of two rectangles, or None when it is empty."""
+    r = (max(a[0], b[0]), max(a[1], b[1]), min(a[2], b[2]), min(a[3], b[3]))
+    return r if r[0] <= r[2] and r[1] <= r[3] else None

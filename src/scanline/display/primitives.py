@@ -1,0 +1,205 @@
+"""The output primitives a display file stores, with their attributes.
+
+A primitive holds its geometry in normalized device coordinates (NDC: the unit square
+(0, 0)-(1, 1), x right, y up), the attributes that were current when it was created,
+and the clipping rectangle of the normalization transformation it came through.
+Geometry that an affine matrix maps exactly is stored so that it stays exact under a
+segment transformation:
+
+* polylines, fill areas and markers as points;
+* circles and ellipses as a center ``c`` and a 2x2 matrix ``A`` whose columns are the
+  two semi-axis vectors: the curve is ``c + A (cos t, sin t)``, and a matrix ``M``
+  (linear part ``L``) maps it to ``M c + L A (cos t, sin t)``;
+* text as an anchor point and a 2x2 *frame* whose columns are the baseline direction
+  and the up vector, each as long as the character height.
+
+Attributes are validated when the primitive is made, so that a bad value is reported
+where it was given (the scene loader adds the key path), not when the file is drawn.
+"""
+
+import math
+import numbers
+
+import numpy as np
+
+from .. import _validate as v
+from ..attributes import FillStyle
+from ..color.spec import rgba
+from ..errors import ArgumentTypeError, ArgumentValueError
+
+#: The primitive kinds, as scene files name them.
+KINDS = ("polyline", "polygon", "ellipse", "text", "markers")
+
+CAPS = ("butt", "round", "square")
+JOINS = ("miter", "round", "bevel")
+DASHES = ("solid", "dashed", "dotted", "dash-dot")
+RULES = ("even-odd", "nonzero")
+#: GKS polymarker types 1-5.
+MARKERS = ("dot", "plus", "asterisk", "circle", "cross")
+#: Fonts a display file can hold: geometry a vector device can draw too.
+FONTS = ("stroke", "sans")
+HORIZONTAL = ("left", "center", "right")
+VERTICAL = ("top", "cap", "half", "base", "bottom")
+TEXT_PATHS = ("right", "left", "up", "down")
+#: How text is clipped: the whole string, whole characters, or strokes and pixels.
+TEXT_CLIPS = ("string", "character", "stroke")
+
+
+def color(name, value):
+    """Check a color spec (anything ``FrameBuffer.pixel`` takes); return it unchanged."""
+    if isinstance(value, list):
+        value = tuple(value)
+    rgba(value, name)
+    return value
+
+
+def _nonnegative(name, value):
+    x = v.number(name, value)
+    if x < 0:
+        raise ArgumentValueError(f"{name} must be >= 0, got {x}")
+    return x
+
+
+def _positive(name, value):
+    x = v.number(name, value)
+    if x <= 0:
+        raise ArgumentValueError(f"{name} must be > 0, got {x}")
+    return x
+
+
+def _dash(name, value):
+    """None, a dash name, a 16-bit raster mask or a sequence of dash/gap lengths."""
+    if value is None or (isinstance(value, str) and value in DASHES):
+        return None if value in (None, "solid") else value
+    if isinstance(value, numbers.Integral) and not isinstance(value, bool):
+        if 0 < value < 2**16:
+            return int(value)
+        raise ArgumentValueError(f"{name}={value!r}: a bit mask must be in 1..65535")
+    if isinstance(value, (list, tuple)) and value:
+        lengths = tuple(_nonnegative(f"{name}[{i}]", x) for i, x in enumerate(value))
+        if sum(lengths) > 0:
+            return lengths
+        raise ArgumentValueError(f"{name}={value!r}: the dash lengths must not all be 0")
+    raise ArgumentValueError(
+        f"{name}={v._show(value)} is not a dash pattern; use 'solid', 'dashed', "
+        "'dotted', 'dash-dot', a 16-bit mask such as 0xF0F0, or lengths such as [6, 3]"
+    )
+
+
+def line_attributes(color_="white", width=1.0, cap="butt", join="miter", miter_limit=10.0,
+                    dash=None, dash_phase=0.0, prefix=""):
+    """The validated line attributes (A1's ``LineStyle`` fields) as a dict."""
+    return {
+        "color": color(prefix + "color", color_),
+        "width": _positive(prefix + "width", width),
+        "cap": v.choice(prefix + "cap", cap, CAPS),
+        "join": v.choice(prefix + "join", join, JOINS),
+        "miter_limit": _positive(prefix + "miter_limit", miter_limit),
+        "dash": _dash(prefix + "dash", dash),
+        "dash_phase": v.number(prefix + "dash_phase", dash_phase),
+    }
+
+
+def fill_style(name, value):
+    """None, a :class:`FillStyle` or its one-word spelling (``"hatch:45:8"``)."""
+    if value is None or isinstance(value, FillStyle):
+        return value
+    if isinstance(value, str):
+        style = FillStyle.parse(value)
+        return None if style.kind == "solid" else style
+    raise ArgumentTypeError(
+        f"{name} must be a FillStyle or a word such as 'hollow' or 'hatch:45:8', "
+        f"got {v._show(value)}"
+    )
+
+
+def points(name, value, minimum=1):
+    """An (N, 2) float64 array of finite points, N >= minimum."""
+    try:
+        a = np.asarray(value, dtype=np.float64)
+    except (TypeError, ValueError, OverflowError):
+        raise ArgumentTypeError(
+            f"{name} must be a list of points [x, y], got {v._show(value)}"
+        ) from None
+    if a.ndim == 1 and a.size == 0:
+        a = a.reshape(0, 2)
+    if a.ndim != 2 or a.shape[1] != 2:
+        raise ArgumentValueError(
+            f"{name} must be a list of points [x, y] (shape (N, 2)), got {v._show(value)}"
+        )
+    if len(a) < minimum:
+        raise ArgumentValueError(f"{name} needs at least {minimum} points, got {len(a)}")
+    if not np.isfinite(a).all():
+        row = int(np.argwhere(~np.isfinite(a))[0][0])
+        raise ArgumentValueError(f"{name} must be finite; point {row} is {a[row].tolist()}")
+    return a
+
+
+def contours(name, value):
+    """A fill area: one list of points or a list of such lists -> list of (K, 2) arrays."""
+    try:
+        a = np.asarray(value, dtype=np.float64)
+        if a.ndim == 2:
+            return [points(name, a, 3)]
+    except (TypeError, ValueError, OverflowError):
+        pass  # ragged: several contours of different lengths
+    if not isinstance(value, (list, tuple)) or not value:
+        raise ArgumentValueError(
+            f"{name} must be a list of points [x, y] or a list of such contours, "
+            f"got {v._show(value)}"
+        )
+    return [points(f"{name}[{i}]", c, 3) for i, c in enumerate(value)]
+
+
+class Primitive:
+    """One output primitive of a segment (see the module docstring).
+
+    Attributes
+    ----------
+    kind : str
+        One of :data:`KINDS`.
+    geometry : dict
+        The NDC geometry: ``points`` (polyline, markers), ``contours`` (polygon),
+        ``center`` and ``axes`` (ellipse), ``anchor``, ``frame`` and ``string`` (text).
+    attributes : dict
+        The validated attributes.
+    clip : tuple of 4 floats or None
+        The NDC clipping rectangle (xmin, ymin, xmax, ymax), or None for no clipping.
+    """
+
+    __slots__ = ("kind", "geometry", "attributes", "clip")
+
+    def __init__(self, kind, geometry, attributes, clip):
+        self.kind = kind
+        self.geometry = geometry
+        self.attributes = attributes
+        self.clip = clip
+
+    def transformed(self, m):
+        """This primitive with its geometry mapped by the affine 3x3 matrix ``m``
+        (the clipping rectangle is not moved: GKS clips after the segment
+        transformation)."""
+        lin, t = m[:2, :2], m[:2, 2]
+        g = self.geometry
+
+        def move(p):
+            return p @ lin.T + t
+
+        if self.kind in ("polyline", "markers"):
+            geometry = {**g, "points": move(g["points"])}
+        elif self.kind == "polygon":
+            geometry = {**g, "contours": [move(c) for c in g["contours"]]}
+        elif self.kind == "ellipse":
+            geometry = {**g, "center": move(g["center"]), "axes": lin @ g["axes"]}
+        else:
+            geometry = {**g, "anchor": move(g["anchor"]), "frame": lin @ g["frame"]}
+        return Primitive(self.kind, geometry, self.attributes, self.clip)
+
+    def __repr__(self):
+        return f"<{self.kind} primitive>"
+
+
+def text_frame(height, angle):
+    """The 2x2 text frame: columns baseline (cos, sin) and up (-sin, cos), times height."""
+    c, s = math.cos(angle), math.sin(angle)
+    return height * np.array([[c, -s], [s, c]])

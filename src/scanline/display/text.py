@@ -1,0 +1,58 @@
+"""Text primitives of the display file, drawn as glyph geometry.
+
+The text is laid out by :func:`scanline.text.layout` in device coordinates; each
+glyph's strokes (stroke font) or outline contours (outline font) go to the device, so
+raster and vector output show the same characters.  Clipping follows the text
+primitive's ``clip`` attribute (GKS text precision): ``"string"`` keeps the whole
+string or nothing, ``"character"`` keeps the characters whose boxes lie inside, and
+``"stroke"`` clips every stroke and outline to the rectangle.
+"""
+
+import math
+
+import numpy as np
+
+from . import pipeline
+
+
+def _inside(box, rect):
+    return box[0] >= rect[0] and box[1] >= rect[1] and box[2] <= rect[2] and box[3] <= rect[3]
+
+
+def glyphs(prim):
+    """The placed glyphs of a text primitive in device coordinates."""
+    from .. import text
+
+    g, a = prim.geometry, prim.attributes
+    frame = g["frame"]
+    height = float(np.hypot(*frame[:, 1]))
+    angle = math.atan2(frame[1, 0], frame[0, 0])
+    x, y = g["anchor"]
+    return text.layout(g["string"], float(x), float(y), font=a["font"], height=height,
+                       expansion=a["expansion"], spacing=a["spacing"], angle=angle,
+                       path=a["path"], align=a["align"])
+
+
+def draw(prim, rect, device):
+    """Draw a text primitive clipped to ``rect``; return the point arrays drawn."""
+    placed = glyphs(prim)
+    mode = prim.attributes["clip"]
+    if mode == "string" and not all(_inside(gl.box, rect) for gl in placed):
+        return []
+    if mode != "stroke":
+        placed = [gl for gl in placed if _inside(gl.box, rect)]
+    color = prim.attributes["color"]
+    strokes, contours = [], []
+    for gl in placed:
+        for s in getattr(gl, "strokes", None) or ():
+            strokes.extend(pipeline.polylines(np.asarray(s, np.float64), False, rect)[0])
+        cs = [np.asarray(c, np.float64) for c in getattr(gl, "contours", None) or ()]
+        if cs:
+            contours.extend(pipeline.contours(cs, rect))
+    if strokes:
+        device.stroke(strokes, False, {"color": color, "width": 1.0, "cap": "round",
+                                       "join": "round", "miter_limit": 10.0,
+                                       "dash": None, "dash_phase": 0.0})
+    if contours:
+        device.fill(contours, {"color": color, "rule": "nonzero", "style": None})
+    return strokes + contours

@@ -38,6 +38,13 @@ ALGORITHMS = {
          "Y": "y of the seed (0 = bottom row of the grid)"},
         False,
     ),
+    "de-casteljau": (
+        "de Casteljau's triangle for a Bezier curve (notes, chapter 5, Q.1)", {}, False,
+    ),
+    "cox-de-boor": (
+        "the Cox-de Boor recursion of the B-spline blending functions (notes, chapter 5, Q.2)",
+        {}, False,
+    ),
 }
 
 
@@ -54,6 +61,36 @@ def fill_options(sub):
 #: Algorithms with options of their own: CLI name -> function that adds them to the
 #: sub-command's parser and returns their names (passed on as keywords).
 OPTIONS = {"flood-fill": fill_options}
+
+
+def numbers(text):
+    """argparse type: numbers separated by commas or spaces, such as ``0,0,1,2``."""
+    try:
+        return [float(t) for t in text.replace(",", " ").split()]
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a list of numbers") from None
+
+
+def de_casteljau_options(sub):
+    """The control points and ``--u`` of ``de-casteljau``."""
+    sub.add_argument("points", metavar="X,Y", nargs="+", type=numbers,
+                     help="control points P0 ... Pn, each 'x,y' or 'x,y,z' (put '--' before "
+                     "the points if the first starts with '-')")
+    sub.add_argument("--u", type=float, default=0.5, help="the parameter, 0 <= u <= 1 "
+                     "(default 0.5)")
+    return ["points", "u"]
+
+
+def cox_de_boor_options(sub):
+    """``--knots``, ``--order`` and ``--u`` of ``cox-de-boor``."""
+    sub.add_argument("--knots", type=numbers, required=True,
+                     help="the knot vector, e.g. 0,0,0,0,1,2,2,2,2")
+    sub.add_argument("--order", type=integer, required=True, help="d (degree d - 1)")
+    sub.add_argument("--u", type=float, required=True, help="the parameter")
+    return ["knots", "order", "u"]
+
+
+OPTIONS.update({"de-casteljau": de_casteljau_options, "cox-de-boor": cox_de_boor_options})
 
 FORMATS = ("table", "csv", "json")
 

@@ -12,6 +12,7 @@ from .table import Table
 from .lines import bresenham, dda
 from .conics import midpoint_circle, midpoint_ellipse
 from .seedfill import flood_fill
+from .curves import de_casteljau, cox_de_boor
 
 #: CLI name -> function
 ALGORITHMS = {
@@ -20,7 +21,10 @@ ALGORITHMS = {
     "midpoint-circle": midpoint_circle,
     "midpoint-ellipse": midpoint_ellipse,
     "flood-fill": flood_fill,
+    "de-casteljau": de_casteljau,
+    "cox-de-boor": cox_de_boor,
 }
 
 __all__ = ["Table", "bresenham", "dda", "midpoint_circle", "midpoint_ellipse", "flood_fill",
+           "de_casteljau", "cox_de_boor",
            "ALGORITHMS"]

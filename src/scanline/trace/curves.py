@@ -1,0 +1,99 @@
+"""Step tables of de Casteljau's algorithm and the Cox–de Boor recursion (notes, ch. 5).
+
+>>> print(de_casteljau([(0, 0), (0, 4), (4, 4), (4, 0)], u=0.5))
+de Casteljau's algorithm, degree 3, u = 0.5
+P_i^r = (1 - u) P_i^(r-1) + u P_(i+1)^(r-1); P(u) = P_0^3 = (2, 3)
+<BLANKLINE>
+r  i  x  y
+-  -  -  -
+0  0  0  0
+0  1  0  4
+0  2  4  4
+0  3  4  0
+1  0  0  2
+1  1  2  4
+1  2  4  2
+2  0  1  3
+2  1  3  3
+3  0  2  3
+"""
+
+import numpy as np
+
+from .. import _validate as v
+from ..curves.bezier import Bezier
+from ..curves.bspline import basis, knot_span
+from ..errors import ArgumentValueError
+from .table import Table
+
+_AXES = ("x", "y", "z")
+
+
+def de_casteljau(points, u=0.5):
+    """de Casteljau's triangle at u: every intermediate point Pᵢʳ, level by level.
+
+    Row ``r``, ``i``, ``x``, ``y`` (``z`` for 3-D points): Pᵢʳ = (1 − u)Pᵢʳ⁻¹ + uPᵢ₊₁ʳ⁻¹,
+    Pᵢ⁰ = Pᵢ.  The last row, P₀ⁿ, is the curve point P(u) that
+    :meth:`scanline.curves.Bezier.evaluate` returns.  The first points of each level
+    are the control points of the left half of the subdivided curve, the last points
+    those of the right half.
+    """
+    curve = Bezier(points)
+    if curve.dimension > 3:
+        raise ArgumentValueError(f"points must be 2-D or 3-D, got {curve.dimension}-D points")
+    triangle = curve.de_casteljau(u)
+    u = v.number("u", u)
+    axes = _AXES[: curve.dimension]
+    rows = [dict({"r": r, "i": i}, **{a: float(c) for a, c in zip(axes, p)})
+            for r, level in enumerate(triangle) for i, p in enumerate(level)]
+    end = ", ".join(f"{c:g}" for c in triangle[-1][0])
+    notes = [f"P_i^r = (1 - u) P_i^(r-1) + u P_(i+1)^(r-1); P(u) = P_0^{curve.degree} = ({end})"]
+    return Table(f"de Casteljau's algorithm, degree {curve.degree}, u = {u:g}",
+                 ["r", "i", *axes], rows, notes=notes)
+
+
+def cox_de_boor(knots, order, u):
+    """The Cox–de Boor recursion at u: B_{k,r}(u) for r = 1 … d on u's knot span.
+
+    Rows ``r``, ``k``, ``interval`` (the support [u_k, u_{k+r})) and ``B`` = B_{k,r}(u),
+    for the r blending functions of each order r that can be non-zero on the span
+    [u_ℓ, u_ℓ₊₁) holding u — the recursion's triangle.  All other B_{k,r}(u) are 0.
+    The last r = d rows are the weights that :class:`scanline.curves.BSpline` gives the
+    control points P_{ℓ−d+1} … P_ℓ.
+
+    Parameters
+    ----------
+    knots : array_like
+        Non-decreasing knot vector (at least ``order`` + 1 values).
+    order : int
+        d ≥ 1.
+    u : float
+        A parameter in [u₀, u_last].
+    """
+    order = v.positive_int("order", order, minimum=1)
+    try:
+        t = np.array(knots, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise v.ArgumentTypeError(f"knots must be an array of numbers, got {knots!r}") from None
+    if t.ndim != 1 or len(t) < order + 1 or not np.isfinite(t).all():
+        raise ArgumentValueError(
+            f"knots must be at least order + 1 = {order + 1} finite numbers, got {knots!r}"
+        )
+    if (np.diff(t) < 0).any() or t[0] == t[-1]:
+        raise ArgumentValueError(f"knots must be non-decreasing and not all equal, got {knots!r}")
+    u = v.number("u", u)
+    if not t[0] <= u <= t[-1]:
+        raise ArgumentValueError(f"u must lie in [{t[0]:g}, {t[-1]:g}], got {u!r}")
+    span = int(knot_span(t, order, u))
+    rows = []
+    for r in range(1, order + 1):
+        values = basis(t, r, u)
+        for k in range(max(span - r + 1, 0), min(span, len(values) - 1) + 1):
+            rows.append({"r": r, "k": k, "interval": f"[{t[k]:g}, {t[k + r]:g})",
+                         "B": float(values[k])})
+    notes = [f"knots = [{', '.join(f'{x:g}' for x in t)}], d = {order}, "
+             f"u = {u:g} in span {span}: [{t[span]:g}, {t[span + 1]:g})",
+             "B_k,1 = 1 on [u_k, u_k+1); B_k,r = (u - u_k)/(u_k+r-1 - u_k) B_k,r-1 "
+             "+ (u_k+r - u)/(u_k+r - u_k+1) B_k+1,r-1 (0/0 = 0)"]
+    return Table(f"Cox-de Boor recursion, order {order}, u = {u:g}",
+                 ["r", "k", "interval", "B"], rows, notes=notes)

@@ -29,8 +29,15 @@ _LAZY = {
     "geometry": ("scanline.geometry", None),
     "curves": ("scanline.curves", None),
     "transform": ("scanline.transform", None),
+    "clip": ("scanline.clip", None),
+    "viewing": ("scanline.viewing", None),
+    "display": ("scanline.display", None),
+    "DisplayFile": ("scanline.display", "DisplayFile"),
+    "Context": ("scanline.context", "Context"),
+    "scene": ("scanline.scene", None),
     "attributes": ("scanline.attributes", None),
     "FillStyle": ("scanline.attributes", "FillStyle"),
+    "LineStyle": ("scanline.attributes", "LineStyle"),
 }
 
 __all__ = sorted(_LAZY) + ["__version__"]

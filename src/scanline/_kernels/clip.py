@@ -1,0 +1,355 @@
+"""Line and polygon clipping (notes, chapter 4, Q.3-Q.4).
+
+Each line clipper is one helper that clips one segment and can log its steps into
+an array: the batch kernels pass a log with no rows, the step tables
+(:mod:`scanline.trace.clip`) pass a log with room for every step.  The table and the
+clipped segments therefore come from the same code.
+
+Windows are closed: a point on the boundary is inside (the notes' inequalities
+``xwmin <= x <= xwmax``).  Convex polygon windows are given counterclockwise, so the
+outward normal of the edge from ``a`` to ``b`` is ``(by - ay, -(bx - ax))``.
+"""
+
+import numpy as np
+
+from ._jit import helper, kernel
+
+#: Region-code bits, numbered 1 to 4 from the right as in the notes.
+LEFT = 1
+RIGHT = 2
+BELOW = 4
+ABOVE = 8
+
+#: Cohen-Sutherland log columns: endpoint (0 or 1, -1 for the final decision),
+#: code0, code1, code0 AND code1, action, boundary bit, new x, new y.
+CS_ACCEPT = 0
+CS_REJECT = 1
+CS_CLIP = 2
+CS_COLUMNS = 8
+#: At most two clips per boundary and endpoint, even with round-off near a corner.
+CS_MAX_STEPS = 16
+
+#: Liang-Barsky / Cyrus-Beck log columns: k, p (= -N.D), q (= N.(P0 - PE)) sign as
+#: the notes' t formula, t, kind, u1 (t_E), u2 (t_L).
+KIND_PARALLEL_INSIDE = 0
+KIND_PARALLEL_OUTSIDE = 1
+KIND_ENTERING = 2
+KIND_LEAVING = 3
+PARAM_COLUMNS = 7
+
+
+@helper
+def region_code(x, y, xmin, ymin, xmax, ymax):
+    """The notes' 4-bit region code: bit 1 left, 2 right, 3 below, 4 above."""
+    code = 0
+    if x < xmin:
+        code |= LEFT
+    elif x > xmax:
+        code |= RIGHT
+    if y < ymin:
+        code |= BELOW
+    elif y > ymax:
+        code |= ABOVE
+    return code
+
+
+@helper
+def cohen_sutherland(x0, y0, x1, y1, xmin, ymin, xmax, ymax, out, log):
+    """Clip one segment; write it into ``out[0:4]``; return True if any part is
+    visible.  Logs one row per step when ``log`` has rows.
+
+    The outside endpoint is moved to its crossing with the first boundary its code
+    names, in the order left, right, below, above, using the notes' formulas
+    y = y0 + m (x - x0) for a vertical boundary and x = x0 + (y - y0) / m for a
+    horizontal one (m from the original endpoints).
+    """
+    ax, ay, bx, by = x0, y0, x1, y1
+    dx = x1 - x0
+    dy = y1 - y0
+    c0 = region_code(ax, ay, xmin, ymin, xmax, ymax)
+    c1 = region_code(bx, by, xmin, ymin, xmax, ymax)
+    n = 0
+    for _ in range(CS_MAX_STEPS):
+        both = c0 & c1
+        if (c0 | c1) == 0 or both != 0:
+            action = CS_ACCEPT if (c0 | c1) == 0 else CS_REJECT
+            if n < log.shape[0]:
+                log[n, 0] = -1
+                log[n, 1] = c0
+                log[n, 2] = c1
+                log[n, 3] = both
+                log[n, 4] = action
+                log[n, 5] = 0
+                log[n, 6] = np.nan
+                log[n, 7] = np.nan
+            out[0] = ax
+            out[1] = ay
+            out[2] = bx
+            out[3] = by
+            return action == CS_ACCEPT
+        end = 0 if c0 != 0 else 1
+        code = c0 if end == 0 else c1
+        if code & LEFT:
+            bit = LEFT
+            x = xmin
+            y = y0 + dy * ((xmin - x0) / dx)
+        elif code & RIGHT:
+            bit = RIGHT
+            x = xmax
+            y = y0 + dy * ((xmax - x0) / dx)
+        elif code & BELOW:
+            bit = BELOW
+            y = ymin
+            x = x0 + dx * ((ymin - y0) / dy)
+        else:
+            bit = ABOVE
+            y = ymax
+            x = x0 + dx * ((ymax - y0) / dy)
+        if n < log.shape[0]:
+            log[n, 0] = end
+            log[n, 1] = c0
+            log[n, 2] = c1
+            log[n, 3] = both
+            log[n, 4] = CS_CLIP
+            log[n, 5] = bit
+            log[n, 6] = x
+            log[n, 7] = y
+        n += 1
+        if end == 0:
+            ax, ay = x, y
+            c0 = region_code(ax, ay, xmin, ymin, xmax, ymax)
+        else:
+            bx, by = x, y
+            c1 = region_code(bx, by, xmin, ymin, xmax, ymax)
+    # Round-off near a corner made the endpoints chase each other: the segment
+    # only grazes the corner.  Accept what is left if it is inside.
+    out[0] = ax
+    out[1] = ay
+    out[2] = bx
+    out[3] = by
+    return (c0 | c1) == 0
+
+
+@helper
+def parametric_edge(p, q, k, u, log):
+    """One boundary of the parametric clippers (Liang-Barsky's p_k, q_k; Cyrus-Beck
+    with p = N.D, q = -N.(P0 - PE), so t = q / p): narrow ``u = [u1, u2]``.
+
+    Returns False when the segment is rejected.
+    """
+    r = np.nan
+    if p == 0.0:
+        kind = KIND_PARALLEL_OUTSIDE if q < 0.0 else KIND_PARALLEL_INSIDE
+    else:
+        r = q / p
+        if p < 0.0:
+            kind = KIND_ENTERING
+            if r > u[0]:
+                u[0] = r
+        else:
+            kind = KIND_LEAVING
+            if r < u[1]:
+                u[1] = r
+    if k < log.shape[0]:
+        log[k, 0] = k + 1
+        log[k, 1] = p
+        log[k, 2] = q
+        log[k, 3] = r
+        log[k, 4] = kind
+        log[k, 5] = u[0]
+        log[k, 6] = u[1]
+    return kind != KIND_PARALLEL_OUTSIDE and u[0] <= u[1]
+
+
+@helper
+def parametric_result(x0, y0, x1, y1, u, out):
+    """Write the segment from t = u1 to t = u2 into ``out``."""
+    dx = x1 - x0
+    dy = y1 - y0
+    out[0] = x0 + u[0] * dx if u[0] > 0.0 else x0
+    out[1] = y0 + u[0] * dy if u[0] > 0.0 else y0
+    out[2] = x0 + u[1] * dx if u[1] < 1.0 else x1
+    out[3] = y0 + u[1] * dy if u[1] < 1.0 else y1
+
+
+@helper
+def liang_barsky(x0, y0, x1, y1, xmin, ymin, xmax, ymax, out, log):
+    """Liang-Barsky: p1 = -dx, q1 = x0 - xmin; p2 = dx, q2 = xmax - x0;
+    p3 = -dy, q3 = y0 - ymin; p4 = dy, q4 = ymax - y0; u1 = max(0, q/p for p < 0),
+    u2 = min(1, q/p for p > 0); visible iff u1 <= u2."""
+    dx = x1 - x0
+    dy = y1 - y0
+    u = np.empty(2)
+    u[0] = 0.0
+    u[1] = 1.0
+    ok = (parametric_edge(-dx, x0 - xmin, 0, u, log)
+          and parametric_edge(dx, xmax - x0, 1, u, log)
+          and parametric_edge(-dy, y0 - ymin, 2, u, log)
+          and parametric_edge(dy, ymax - y0, 3, u, log))
+    parametric_result(x0, y0, x1, y1, u, out)
+    return ok
+
+
+@helper
+def cyrus_beck(x0, y0, x1, y1, win, out, log):
+    """Cyrus-Beck against the convex counterclockwise polygon ``win`` (M, 2).
+
+    For edge i from PE_i = win[i] to win[i+1], the outward normal is
+    N_i = (dy_i, -dx_i); N_i.D < 0 marks a potentially entering (PE) crossing,
+    N_i.D > 0 a potentially leaving (PL) one, and t = N_i.(P0 - PE_i) / -N_i.D.
+    :func:`parametric_edge` gets p = N_i.D and q = -N_i.(P0 - PE_i), so that
+    t = q / p and p < 0 is entering, as in Liang-Barsky.
+    """
+    dx = x1 - x0
+    dy = y1 - y0
+    m = win.shape[0]
+    u = np.empty(2)
+    u[0] = 0.0
+    u[1] = 1.0
+    ok = True
+    for i in range(m):
+        ax = win[i, 0]
+        ay = win[i, 1]
+        j = i + 1 if i + 1 < m else 0
+        nx = win[j, 1] - ay
+        ny = ax - win[j, 0]
+        if not parametric_edge(nx * dx + ny * dy, -(nx * (x0 - ax) + ny * (y0 - ay)),
+                               i, u, log):
+            ok = False
+            break
+    parametric_result(x0, y0, x1, y1, u, out)
+    return ok
+
+
+@kernel
+def cohen_sutherland_lines(seg, xmin, ymin, xmax, ymax, out, accepted):
+    """Clip every row (x0, y0, x1, y1) of ``seg`` into ``out``; ``accepted[i]``
+    says whether row i is visible (rejected rows are left as given)."""
+    log = np.empty((0, CS_COLUMNS))
+    for i in range(seg.shape[0]):
+        accepted[i] = cohen_sutherland(seg[i, 0], seg[i, 1], seg[i, 2], seg[i, 3],
+                                       xmin, ymin, xmax, ymax, out[i], log)
+        if not accepted[i]:
+            out[i, :] = seg[i, :]
+
+
+@kernel
+def liang_barsky_lines(seg, xmin, ymin, xmax, ymax, out, accepted):
+    """Liang-Barsky on every row of ``seg`` (see :func:`cohen_sutherland_lines`)."""
+    log = np.empty((0, PARAM_COLUMNS))
+    for i in range(seg.shape[0]):
+        accepted[i] = liang_barsky(seg[i, 0], seg[i, 1], seg[i, 2], seg[i, 3],
+                                   xmin, ymin, xmax, ymax, out[i], log)
+        if not accepted[i]:
+            out[i, :] = seg[i, :]
+
+
+@kernel
+def cyrus_beck_lines(seg, win, out, accepted):
+    """Cyrus-Beck on every row of ``seg`` against the convex CCW polygon ``win``."""
+    log = np.empty((0, PARAM_COLUMNS))
+    for i in range(seg.shape[0]):
+        accepted[i] = cyrus_beck(seg[i, 0], seg[i, 1], seg[i, 2], seg[i, 3], win,
+                                 out[i], log)
+        if not accepted[i]:
+            out[i, :] = seg[i, :]
+
+
+@kernel
+def trace_line(method, seg, win, out, log):
+    """One segment through clipper ``method`` (0 Cohen-Sutherland, 1 Liang-Barsky,
+    2 Cyrus-Beck) with its steps logged; ``win`` is (xmin, ymin, xmax, ymax) as a
+    (1, 4) array for the first two, the polygon for Cyrus-Beck."""
+    if method == 0:
+        return cohen_sutherland(seg[0], seg[1], seg[2], seg[3], win[0, 0], win[0, 1],
+                                win[0, 2], win[0, 3], out, log)
+    if method == 1:
+        return liang_barsky(seg[0], seg[1], seg[2], seg[3], win[0, 0], win[0, 1],
+                            win[0, 2], win[0, 3], out, log)
+    return cyrus_beck(seg[0], seg[1], seg[2], seg[3], win, out, log)
+
+
+@helper
+def clip_stage(src, n, dst, ax, ay, bx, by):
+    """One Sutherland-Hodgman stage: the ``n`` vertices of ``src`` clipped by the
+    half-plane left of (or on) the directed line a -> b, into ``dst``.
+
+    Returns the number of vertices written, or -1 if ``dst`` is too small.
+    Consecutive duplicate vertices (a vertex on the boundary) are written once.
+    """
+    ex = bx - ax
+    ey = by - ay
+    cap = dst.shape[0]
+    m = 0
+    if n == 0:
+        return 0
+    sx = src[n - 1, 0]
+    sy = src[n - 1, 1]
+    sd = ex * (sy - ay) - ey * (sx - ax)
+    for i in range(n):
+        px = src[i, 0]
+        py = src[i, 1]
+        pd = ex * (py - ay) - ey * (px - ax)
+        if (sd >= 0.0) != (pd >= 0.0):
+            # The edge s -> p crosses the boundary: emit the intersection.
+            t = sd / (sd - pd)
+            if m >= cap:
+                return -1
+            dst[m, 0] = sx + t * (px - sx)
+            dst[m, 1] = sy + t * (py - sy)
+            if m == 0 or dst[m, 0] != dst[m - 1, 0] or dst[m, 1] != dst[m - 1, 1]:
+                m += 1
+        if pd >= 0.0:
+            if m >= cap:
+                return -1
+            dst[m, 0] = px
+            dst[m, 1] = py
+            if m == 0 or px != dst[m - 1, 0] or py != dst[m - 1, 1]:
+                m += 1
+        sx = px
+        sy = py
+        sd = pd
+    if m > 1 and dst[0, 0] == dst[m - 1, 0] and dst[0, 1] == dst[m - 1, 1]:
+        m -= 1
+    return m
+
+
+@kernel
+def sutherland_hodgman(verts, counts, win, out, out_counts, scratch):
+    """Clip each polygon (``counts[i]`` consecutive rows of ``verts``) by the convex
+    CCW window ``win``, one window edge after another.
+
+    The results are written one after another into ``out`` with their vertex counts
+    in ``out_counts``.  Returns the number of rows of ``out`` used, or -1 if ``out``
+    or ``scratch`` (two ping-pong buffers, shape (2, K, 2)) was too small.
+    """
+    m = win.shape[0]
+    start = 0
+    used = 0
+    cap = scratch.shape[1]
+    for p in range(counts.shape[0]):
+        n = counts[p]
+        if n > cap:
+            return -1
+        a = scratch[0]
+        b = scratch[1]
+        for i in range(n):
+            a[i, 0] = verts[start + i, 0]
+            a[i, 1] = verts[start + i, 1]
+        start += n
+        for e in range(m):
+            f = e + 1 if e + 1 < m else 0
+            n = clip_stage(a, n, b, win[e, 0], win[e, 1], win[f, 0], win[f, 1])
+            if n < 0:
+                return -1
+            a, b = b, a
+        if n < 3:
+            n = 0
+        if used + n > out.shape[0]:
+            return -1
+        for i in range(n):
+            out[used + i, 0] = a[i, 0]
+            out[used + i, 1] = a[i, 1]
+        out_counts[p] = n
+        used += n
+    return used

@@ -1,0 +1,20 @@
+"""Clipping (notes, chapter 4): points, lines, polylines, polygons, curves and text.
+
+A *window* is an upright rectangle ``(xmin, ymin, xmax, ymax)`` or, where the
+algorithm allows it, a polygon ((M, 2) vertices, either orientation).  Windows are
+closed: what lies on the boundary is kept.  Each algorithm of the notes is chosen by
+name with ``method=``:
+
+- lines: ``"cohen-sutherland"`` (region codes), ``"liang-barsky"`` (the default) and
+  ``"cyrus-beck"`` (any convex polygon window);
+- polygons: ``"sutherland-hodgman"`` (convex windows; one contour per subject
+  contour) and ``"weiler-atherton"`` (concave windows and subjects; separate pieces).
+
+The step tables of the line clippers are in :mod:`scanline.trace`
+(``scanline trace cohen-sutherland ...``).
+"""
+
+from .lines import line, lines, point, points, polyline
+from .polygons import polygon, polygons
+
+__all__ = ["point", "points", "line", "lines", "polyline", "polygon", "polygons"]

@@ -1,0 +1,226 @@
+"""Point, line and polyline clipping (notes, chapter 4, Q.2-Q.4)."""
+
+import numpy as np
+
+from .. import _validate as v
+from .._kernels import clip as k
+from ..errors import ArgumentTypeError, ArgumentValueError
+from . import window as w
+
+METHODS = ("cohen-sutherland", "liang-barsky", "cyrus-beck")
+
+
+def _segments(segments, name="segments"):
+    """(N, 4) float64 array of finite segments within +-2**30."""
+    try:
+        a = np.asarray(segments, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise ArgumentTypeError(
+            f"{name} must be a numeric array of shape (N, 4) (rows x0, y0, x1, y1), got "
+            f"{v._show(segments)}") from None
+    if a.ndim == 1 and a.size in (0, 4):
+        a = a.reshape(-1, 4)
+    if a.ndim != 2 or a.shape[1] != 4:
+        raise ArgumentValueError(
+            f"{name} must have shape (N, 4) (rows x0, y0, x1, y1), got shape {a.shape}")
+    bad = ~(np.abs(a) <= v.COORD_LIMIT).all(axis=1)   # NaN compares False
+    if bad.any():
+        row = int(np.argmax(bad))
+        raise ArgumentValueError(
+            f"{name} row {row} = {a[row].tolist()} must be finite and within the "
+            f"supported coordinate range [-{v.COORD_LIMIT}, {v.COORD_LIMIT}]")
+    return np.ascontiguousarray(a)
+
+
+def _points(pts, name):
+    """(N, 2) float64 array of finite points within +-2**30."""
+    try:
+        a = np.asarray(pts, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise ArgumentTypeError(
+            f"{name} must be a numeric array of shape (N, 2), got {v._show(pts)}") from None
+    if a.size == 0:
+        return np.empty((0, 2))
+    if a.ndim != 2 or a.shape[1] != 2:
+        raise ArgumentValueError(f"{name} must have shape (N, 2), got shape {a.shape}")
+    return _segments(np.hstack([a, a]), name)[:, :2]
+
+
+def _method(method):
+    return v.choice("method", method, METHODS)
+
+
+def point(x, y, window):
+    """Whether the point (x, y) survives point clipping.
+
+    Parameters
+    ----------
+    x, y : float
+    window : (xmin, ymin, xmax, ymax) or convex polygon
+        A closed window: points on its boundary are kept.
+
+    Returns
+    -------
+    bool
+
+    Notes
+    -----
+    Notes, chapter 4, Q.2: keep (x, y) iff xw_min <= x <= xw_max and
+    yw_min <= y <= yw_max.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> sl.clip.point(5, 0, (0, 0, 10, 10)), sl.clip.point(11, 5, (0, 0, 10, 10))
+    (True, False)
+    """
+    return bool(points([(x, y)], window)[0])
+
+
+def points(pts, window):
+    """Point clipping for many points: a bool mask, True where a point is kept.
+
+    Parameters
+    ----------
+    pts : array_like, shape (N, 2)
+    window : (xmin, ymin, xmax, ymax) or convex polygon (counterclockwise or not)
+
+    Returns
+    -------
+    ndarray of bool, shape (N,)
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> sl.clip.points([(0, 0), (10, 10.5), (-1e-9, 3)], (0, 0, 10, 10)).tolist()
+    [True, False, False]
+    """
+    p = _points(pts, "pts")
+    if w._is_rectangle_spec(window):
+        xmin, ymin, xmax, ymax = w.rectangle(window)
+        return ((xmin <= p[:, 0]) & (p[:, 0] <= xmax) & (ymin <= p[:, 1]) & (p[:, 1] <= ymax))
+    ring = w.polygon(window, convex=True, algorithm="point clipping")
+    a = ring
+    d = np.roll(ring, -1, axis=0) - a
+    cross = (d[None, :, 0] * (p[:, None, 1] - a[None, :, 1])
+             - d[None, :, 1] * (p[:, None, 0] - a[None, :, 0]))
+    return (cross >= 0).all(axis=1)
+
+
+def lines(segments, window, method="liang-barsky"):
+    """Clip N line segments in one compiled call.
+
+    Parameters
+    ----------
+    segments : array_like, shape (N, 4)
+        Rows (x0, y0, x1, y1); any finite coordinates within +-2**30.
+    window : (xmin, ymin, xmax, ymax), or a convex polygon for ``"cyrus-beck"``
+        Closed: a segment that only touches the boundary is kept (as the touching
+        part, possibly a single point).
+    method : {"liang-barsky", "cohen-sutherland", "cyrus-beck"}
+
+    Returns
+    -------
+    clipped : ndarray of float64, shape (N, 4)
+        The visible part of each segment, in the same direction as given.  Rows
+        that are not accepted hold the segment as given.
+    accepted : ndarray of bool, shape (N,)
+
+    Notes
+    -----
+    Notes, chapter 4, Q.3 (Cohen-Sutherland: region codes, trivial accept and
+    reject, intersections with y = y1 + m (x - x1)) and Q.4 (Cyrus-Beck:
+    t = N_i.(P0 - PE_i) / -N_i.D, potentially entering when N_i.D < 0, leaving when
+    N_i.D > 0, visible from t_E = max(0, PE) to t_L = min(1, PL) if t_E <= t_L).
+    Liang-Barsky is Cyrus-Beck for an upright rectangle, written with
+    p_k and q_k.  All three give the same segments (to round-off).
+
+    References
+    ----------
+    I. E. Sutherland, W. M. Newman, "Principles of Interactive Computer Graphics",
+    McGraw-Hill, 1973 (the Cohen-Sutherland algorithm).
+    M. Cyrus, J. Beck, "Generalized two- and three-dimensional clipping",
+    Computers & Graphics 3(1), 23-28, 1978.
+    Y.-D. Liang, B. A. Barsky, "A new concept and method for line clipping",
+    ACM Transactions on Graphics 3(1), 1-22, 1984.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> seg, ok = sl.clip.lines([(-5, 5, 15, 5), (20, 0, 30, 5)], (0, 0, 10, 10))
+    >>> seg[0].tolist(), ok.tolist()
+    ([0.0, 5.0, 10.0, 5.0], [True, False])
+    """
+    method = _method(method)
+    seg = _segments(segments)
+    out = seg.copy()
+    accepted = np.zeros(len(seg), np.bool_)
+    if method == "cyrus-beck":
+        ring = w.polygon(window, convex=True, algorithm="Cyrus-Beck")
+        k.cyrus_beck_lines(seg, ring, out, accepted)
+        return out, accepted
+    if not w._is_rectangle_spec(window):
+        raise ArgumentValueError(
+            f"window must be a rectangle (xmin, ymin, xmax, ymax) for {method}; "
+            f"use method='cyrus-beck' for a convex polygon window, got {v._show(window)}")
+    xmin, ymin, xmax, ymax = w.rectangle(window)
+    kern = k.cohen_sutherland_lines if method == "cohen-sutherland" else k.liang_barsky_lines
+    kern(seg, xmin, ymin, xmax, ymax, out, accepted)
+    return out, accepted
+
+
+def line(x0, y0, x1, y1, window, method="liang-barsky"):
+    """Clip the segment from (x0, y0) to (x1, y1).
+
+    Returns the visible part ``(x0, y0, x1, y1)`` (same direction) or None.  See
+    :func:`lines` for ``window`` and ``method``.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> sl.clip.line(-5, -5, 15, 15, (0, 0, 10, 10), method="cohen-sutherland")
+    (0.0, 0.0, 10.0, 10.0)
+    >>> sl.clip.line(-5, 12, 15, 12, (0, 0, 10, 10)) is None
+    True
+    """
+    ends = [v.number(n, c) for n, c in (("x0", x0), ("y0", y0), ("x1", x1), ("y1", y1))]
+    out, ok = lines([ends], window, method)
+    return tuple(out[0].tolist()) if ok[0] else None
+
+
+def polyline(pts, window, method="liang-barsky"):
+    """Clip a polyline: the list of its visible pieces, each a (K, 2) array.
+
+    The polyline's segments are clipped in one batch; consecutive visible segments
+    that still meet (neither was cut at the shared vertex) are joined into one piece.
+
+    Parameters
+    ----------
+    pts : array_like, shape (N, 2)
+    window : (xmin, ymin, xmax, ymax), or a convex polygon for ``"cyrus-beck"``
+    method : {"liang-barsky", "cohen-sutherland", "cyrus-beck"}
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> [p.tolist() for p in sl.clip.polyline([(-2, 1), (2, 1), (2, 12), (6, 4)], (0, 0, 10, 10))]
+    [[[0.0, 1.0], [2.0, 1.0], [2.0, 10.0]], [[3.0, 10.0], [6.0, 4.0]]]
+    """
+    p = _points(pts, "pts")
+    if len(p) == 1:
+        return [p.copy()] if points(p, window)[0] else []
+    seg = np.hstack([p[:-1], p[1:]])
+    out, ok = lines(seg, window, method)
+    pieces = []
+    current = None
+    for i in range(len(seg)):
+        if not ok[i]:
+            current = None
+            continue
+        a, b = out[i, :2], out[i, 2:]
+        if current is not None and current[-1] == tuple(a):
+            current.append(tuple(b))
+        else:
+            current = [tuple(a), tuple(b)]
+            pieces.append(current)
+    return [np.array(c, np.float64) for c in pieces]

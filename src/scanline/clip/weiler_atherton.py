@@ -1,0 +1,255 @@
+"""Weiler-Atherton polygon clipping: concave subjects, concave windows, holes.
+
+Both polygons are oriented so that their inside lies to the left of every edge
+(outer contours counterclockwise, holes clockwise).  Every crossing of a subject
+edge with a window edge is inserted, with the very same coordinates, into both
+vertex lists, which splits each boundary into pieces that lie wholly inside,
+wholly outside or wholly on the other polygon's boundary.  The traversal of
+Weiler & Atherton then follows the subject boundary while it is inside the window;
+at a crossing where the subject leaves the window it turns onto the window boundary
+and follows it, in the same orientation, while that is inside the subject; at the
+next crossing it turns back onto the subject; and so on until it returns to its
+start.  Each return closes one output contour, so a concave result comes out as
+separate pieces.
+
+Keeping the pieces as directed edges between shared crossing points makes the
+degenerate cases of the original algorithm (a vertex on the other boundary, edges
+that overlap, a contour that touches without crossing) ordinary: a piece on the
+other boundary is kept once if both insides lie on the same side of it and dropped
+if they lie on opposite sides; where several kept pieces leave one point (two
+pieces that touch at a corner), the traversal takes the sharpest turn into its own
+inside, which keeps touching pieces apart.  A subject with no crossings is inside
+the window (kept whole), contains it (the window is the result) or misses it.
+"""
+
+import math
+
+import numpy as np
+
+#: Relative tolerance, in units of the coordinates' extent, for snapping a crossing
+#: onto a vertex and for calling a point "on" a boundary.
+EPS = 1e-11
+
+
+def orient(rings):
+    """The rings of one polygon, outer contours counterclockwise and holes
+    (contours inside an odd number of others) clockwise."""
+    out = []
+    for i, r in enumerate(rings):
+        others = [q for j, q in enumerate(rings) if j != i]
+        depth = int(inside_even_odd(r[:1], others)[0]) if others else 0
+        area = _area(r)
+        ccw = area > 0
+        out.append(r if ccw != bool(depth) else r[::-1].copy())
+    return out
+
+
+def _area(r):
+    x, y = r[:, 0], r[:, 1]
+    return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(np.roll(x, -1), y))
+
+
+def _edges(rings):
+    a = np.concatenate([r for r in rings])
+    b = np.concatenate([np.roll(r, -1, axis=0) for r in rings])
+    return a, b
+
+
+def inside_even_odd(pts, rings):
+    """Even-odd inside test of the (P, 2) points against the rings (ray to +x)."""
+    if not rings:
+        return np.zeros(len(pts), bool)
+    a, b = _edges(rings)
+    px, py = pts[:, 0:1], pts[:, 1:2]
+    ay, by = a[None, :, 1], b[None, :, 1]
+    straddle = (ay > py) != (by > py)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        xc = a[None, :, 0] + (py - ay) * (b[None, :, 0] - a[None, :, 0]) / (by - ay)
+    return ((straddle & (xc > px)).sum(axis=1) % 2) == 1
+
+
+def _distance_to_boundary(pts, a, b):
+    """Distance from each point to the nearest of the segments a -> b."""
+    d = b - a
+    ll = np.einsum("ij,ij->i", d, d)
+    rel = pts[:, None, :] - a[None, :, :]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = np.clip(np.einsum("pij,ij->pi", rel, d) / ll, 0.0, 1.0)
+    t = np.where(ll > 0, t, 0.0)
+    near = a[None] + t[..., None] * d[None]
+    return np.sqrt(((pts[:, None, :] - near) ** 2).sum(axis=2)).min(axis=1)
+
+
+def _splits(sa, sb, ca, cb, tol):
+    """Crossing points of every subject edge with every window edge, as split lists:
+    ``(subject_splits, window_splits)``, for each edge a list of (param, point)."""
+    ns, nc = len(sa), len(ca)
+    s_splits = [[] for _ in range(ns)]
+    c_splits = [[] for _ in range(nc)]
+    r = sb - sa
+    s = cb - ca
+    rlen = np.hypot(r[:, 0], r[:, 1])
+    slen = np.hypot(s[:, 0], s[:, 1])
+    qp = ca[None, :, :] - sa[:, None, :]                    # (ns, nc, 2)
+    denom = r[:, None, 0] * s[None, :, 1] - r[:, None, 1] * s[None, :, 0]
+    qxr = qp[..., 0] * r[:, None, 1] - qp[..., 1] * r[:, None, 0]
+    qxs = qp[..., 0] * s[None, :, 1] - qp[..., 1] * s[None, :, 0]
+    scale = rlen[:, None] * slen[None, :]
+    parallel = np.abs(denom) <= EPS * scale
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = qxs / denom
+        u = qxr / denom
+    teps = tol / np.maximum(rlen, tol)[:, None]
+    ueps = tol / np.maximum(slen, tol)[None, :]
+    hit = (~parallel & (t >= -teps) & (t <= 1 + teps) & (u >= -ueps) & (u <= 1 + ueps))
+    for i, j in zip(*np.nonzero(hit)):
+        ti, uj = float(t[i, j]), float(u[i, j])
+        if abs(ti) <= teps[i, 0]:
+            ti, p = 0.0, sa[i]
+        elif abs(ti - 1) <= teps[i, 0]:
+            ti, p = 1.0, sb[i]
+        elif abs(uj) <= ueps[0, j]:
+            p = ca[j]
+        elif abs(uj - 1) <= ueps[0, j]:
+            p = cb[j]
+        else:
+            p = sa[i] + ti * r[i]
+        uj = min(max(uj, 0.0), 1.0)
+        p = (float(p[0]), float(p[1]))
+        s_splits[i].append((ti, p))
+        c_splits[j].append((uj, p))
+    # Collinear overlaps: each segment's endpoints that lie on the other split it.
+    line_dist = np.abs(qxr) / np.maximum(rlen[:, None], tol)
+    for i, j in zip(*np.nonzero(parallel & (line_dist <= tol))):
+        for p in (ca[j], cb[j]):
+            tt = float(np.dot(p - sa[i], r[i]) / max(rlen[i] ** 2, tol * tol))
+            if 0.0 <= tt <= 1.0:
+                s_splits[i].append((tt, (float(p[0]), float(p[1]))))
+        for p in (sa[i], sb[i]):
+            uu = float(np.dot(p - ca[j], s[j]) / max(slen[j] ** 2, tol * tol))
+            if 0.0 <= uu <= 1.0:
+                c_splits[j].append((uu, (float(p[0]), float(p[1]))))
+    return s_splits, c_splits
+
+
+def _pieces(a, b, splits):
+    """The directed pieces of the edges a -> b cut at their split points."""
+    out = []
+    for i in range(len(a)):
+        pts = [(0.0, (float(a[i, 0]), float(a[i, 1])))]
+        pts += sorted(splits[i])
+        pts.append((1.0, (float(b[i, 0]), float(b[i, 1]))))
+        chain = [pts[0][1]]
+        for _, p in pts[1:]:
+            if p != chain[-1]:
+                chain.append(p)
+        out += list(zip(chain[:-1], chain[1:]))
+    return out
+
+
+def _classify(pieces, rings, a, b, tol):
+    """-1 outside, 0 on the boundary, 1 inside ``rings`` for each piece's midpoint."""
+    if not pieces:
+        return np.zeros(0, int)
+    p = np.array(pieces, np.float64)
+    mid = 0.5 * (p[:, 0] + p[:, 1])
+    on = _distance_to_boundary(mid, a, b) <= tol
+    ins = inside_even_odd(mid, rings)
+    return np.where(on, 0, np.where(ins, 1, -1))
+
+
+def _snap_vertices(rings, targets, tol):
+    """Move window vertices lying within ``tol`` of a subject vertex onto it, so that
+    shared corners are one point."""
+    t = np.concatenate(targets)
+    out = []
+    for r in rings:
+        d = np.hypot(r[:, None, 0] - t[None, :, 0], r[:, None, 1] - t[None, :, 1])
+        near = d.min(axis=1) <= tol
+        r = r.copy()
+        r[near] = t[d.argmin(axis=1)[near]]
+        out.append(r)
+    return out
+
+
+def _angle_cw(incoming, outgoing):
+    """Clockwise angle in (0, 2 pi] from the reversed incoming direction to the
+    outgoing one."""
+    back = math.atan2(-incoming[1], -incoming[0])
+    ang = math.atan2(outgoing[1], outgoing[0])
+    cw = (back - ang) % (2 * math.pi)
+    return cw if cw > 0 else 2 * math.pi
+
+
+def _traverse(kept):
+    """Link the kept directed pieces into closed contours."""
+    starts = {}
+    for idx, (p, q) in enumerate(kept):
+        starts.setdefault(p, []).append(idx)
+    used = [False] * len(kept)
+    contours = []
+    for first in range(len(kept)):
+        if used[first]:
+            continue
+        used[first] = True
+        ring = [kept[first][0]]
+        cur = first
+        for _ in range(len(kept) + 1):
+            p, q = kept[cur]
+            ring.append(q)
+            cand = [i for i in starts.get(q, []) if not used[i] or i == first]
+            if not cand:
+                break
+            d_in = (q[0] - p[0], q[1] - p[1])
+            nxt = min(cand, key=lambda i: _angle_cw(
+                d_in, (kept[i][1][0] - q[0], kept[i][1][1] - q[1])))
+            if nxt == first:
+                break
+            used[nxt] = True
+            cur = nxt
+        ring = _drop_collinear(np.array(ring[:-1] if ring[-1] == ring[0] else ring))
+        if len(ring) >= 3:
+            low = int(np.lexsort((ring[:, 0], ring[:, 1]))[0])   # start lowest, leftmost
+            contours.append(np.roll(ring, -low, axis=0))
+    return contours
+
+
+def _drop_collinear(r):
+    """Remove vertices that lie on the straight line through their neighbors (the
+    split points that turned out not to be corners)."""
+    changed = True
+    while changed and len(r) > 3:
+        prev, nxt = np.roll(r, 1, axis=0), np.roll(r, -1, axis=0)
+        d1, d2 = r - prev, nxt - r
+        cross = d1[:, 0] * d2[:, 1] - d1[:, 1] * d2[:, 0]
+        scale = np.hypot(*d1.T) * np.hypot(*d2.T)
+        dot = np.einsum("ij,ij->i", d1, d2)
+        straight = (np.abs(cross) <= 1e-12 * scale) & (dot > 0)
+        changed = bool(straight.any())
+        if changed:
+            keep = np.ones(len(r), bool)
+            keep[int(np.argmax(straight))] = False
+            r = r[keep]
+    return r
+
+
+def clip(subject, window):
+    """Intersection of two polygons given as lists of (N, 2) rings (even-odd
+    inside); returns a list of contours (outer CCW, holes CW)."""
+    subject = orient(subject)
+    allpts = np.concatenate(subject + window)
+    extent = float(np.max(allpts.max(axis=0) - allpts.min(axis=0))) or 1.0
+    tol = EPS * max(extent, float(np.abs(allpts).max()))
+    window = orient(_snap_vertices(window, subject, tol))
+    sa, sb = _edges(subject)
+    ca, cb = _edges(window)
+    s_splits, c_splits = _splits(sa, sb, ca, cb, tol)
+    s_pieces = _pieces(sa, sb, s_splits)
+    c_pieces = _pieces(ca, cb, c_splits)
+    s_class = _classify(s_pieces, window, ca, cb, tol)
+    c_class = _classify(c_pieces, subject, sa, sb, tol)
+    c_on = {piece for piece, c in zip(c_pieces, c_class) if c == 0}
+    kept = [piece for piece, c in zip(s_pieces, s_class)
+            if c == 1 or (c == 0 and piece in c_on)]
+    kept += [piece for piece, c in zip(c_pieces, c_class) if c == 1]
+    return _traverse(kept)

@@ -1,0 +1,126 @@
+"""Clip windows: an upright rectangle ``(xmin, ymin, xmax, ymax)`` or a polygon.
+
+Every clipper takes its window through one of these parsers, so the checks and the
+messages are the same everywhere: a window must have a positive width and height
+(or area), finite coordinates within +-2**30, and, where the algorithm needs it, be
+convex.  Any object with a ``bounds`` attribute (such as
+:class:`scanline.viewing.Window`) is taken as the rectangle ``bounds``.
+"""
+
+import math
+
+import numpy as np
+
+from .. import _validate as v
+from ..errors import ArgumentTypeError, ArgumentValueError
+from ..geometry.contours import contours
+
+
+def _is_rectangle_spec(window):
+    if hasattr(window, "bounds"):
+        return True
+    if isinstance(window, np.ndarray):
+        return window.ndim == 1
+    if isinstance(window, (list, tuple)) and len(window) == 4:
+        return all(not isinstance(c, (list, tuple, np.ndarray)) for c in window)
+    return False
+
+
+def rectangle(window, name="window"):
+    """``(xmin, ymin, xmax, ymax)`` as floats, checked.
+
+    Raises ArgumentValueError for a window of zero (or negative) width or height.
+    """
+    spec = window.bounds if hasattr(window, "bounds") else window
+    if isinstance(spec, (str, bytes)) or not hasattr(spec, "__len__"):
+        raise ArgumentTypeError(
+            f"{name} must be (xmin, ymin, xmax, ymax), got {v._show(window)}")
+    if len(spec) != 4:
+        raise ArgumentValueError(
+            f"{name} must be a rectangle (xmin, ymin, xmax, ymax) with 4 numbers, got "
+            f"{v._show(window)}")
+    xmin, ymin, xmax, ymax = (v.number(f"{name}[{i}]", c) for i, c in enumerate(spec))
+    for i, c in enumerate((xmin, ymin, xmax, ymax)):
+        if abs(c) > v.COORD_LIMIT:
+            raise ArgumentValueError(
+                f"{name}[{i}]={c!r} is outside the supported coordinate range "
+                f"[-{v.COORD_LIMIT}, {v.COORD_LIMIT}]")
+    if not (xmin < xmax and ymin < ymax):
+        raise ArgumentValueError(
+            f"{name}={v._show(window)} is degenerate: it needs xmin < xmax and "
+            f"ymin < ymax (a window of zero width or height shows nothing), e.g. "
+            f"(0, 0, 10, 10)")
+    return xmin, ymin, xmax, ymax
+
+
+def rectangle_polygon(xmin, ymin, xmax, ymax):
+    """The rectangle's corners, counterclockwise from the lower left."""
+    return np.array([(xmin, ymin), (xmax, ymin), (xmax, ymax), (xmin, ymax)], np.float64)
+
+
+def _ring(points):
+    """Drop repeated consecutive vertices (and a repeated first vertex at the end)."""
+    if len(points) == 0:
+        return points
+    keep = np.any(points != np.roll(points, 1, axis=0), axis=1)
+    if not keep.any():
+        return points[:1]
+    return points[keep]
+
+
+def signed_area(points):
+    """Shoelace area: positive for a counterclockwise ring."""
+    x, y = points[:, 0], points[:, 1]
+    return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(np.roll(x, -1), y))
+
+
+def polygon(window, name="window", convex=False, algorithm=None):
+    """A polygon window as a counterclockwise (M, 2) float64 array.
+
+    A rectangle spec is turned into its four corners.  With ``convex=True`` a
+    non-convex polygon raises ArgumentValueError naming ``algorithm``.
+    """
+    if _is_rectangle_spec(window):
+        return rectangle_polygon(*rectangle(window, name))
+    verts, offsets = contours(name, window)
+    if len(offsets) != 2:
+        raise ArgumentValueError(
+            f"{name} must be one polygon contour (an (M, 2) array of vertices), got "
+            f"{len(offsets) - 1} contours")
+    ring = _ring(verts)
+    area = signed_area(ring) if len(ring) >= 3 else 0.0
+    if len(ring) < 3 or area == 0.0:
+        raise ArgumentValueError(
+            f"{name} is degenerate: a polygon window needs at least 3 distinct vertices "
+            f"and a nonzero area, got {v._show(window)}")
+    if area < 0:
+        ring = ring[::-1].copy()
+    if convex:
+        check_convex(ring, name, algorithm)
+    return np.ascontiguousarray(ring)
+
+
+def check_convex(ring, name, algorithm):
+    """Raise unless the counterclockwise ``ring`` is convex (collinear vertices are
+    allowed): every turn is a left turn and the turns add up to one revolution."""
+    d = np.roll(ring, -1, axis=0) - ring
+    e = np.roll(d, -1, axis=0)
+    cross = d[:, 0] * e[:, 1] - d[:, 1] * e[:, 0]
+    turning = float(np.sum(np.arctan2(cross, np.einsum("ij,ij->i", d, e))))
+    if (cross < 0).any() or abs(turning - 2 * math.pi) > 1e-6:
+        bad = int(np.argmax(cross < 0)) if (cross < 0).any() else 0
+        vertex = ring[(bad + 1) % len(ring)].tolist()
+        raise ArgumentValueError(
+            f"{name} must be a convex polygon for {algorithm}, but it turns the other "
+            f"way at vertex {vertex} (or winds more than once); use "
+            f"method='weiler-atherton' for concave windows, or split the window into "
+            f"convex parts")
+
+
+def is_convex(ring):
+    """Whether the counterclockwise ring is convex."""
+    try:
+        check_convex(ring, "window", "")
+    except ArgumentValueError:
+        return False
+    return True

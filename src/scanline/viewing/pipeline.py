@@ -1,0 +1,359 @@
+"""The 2-D viewing pipeline: world -> viewing coordinates (window) -> normalized
+device coordinates -> device (viewport).
+
+Matrices are 3x3 with column vectors (``p' = M @ (x, y, 1)``), built from
+:mod:`scanline.transform` and composed right to left.
+
+References
+----------
+D. Hearn, M. P. Baker, "Computer Graphics, C Version", 2nd ed., Prentice Hall,
+1997, chapter 6 (sections 6-2 to 6-4: the viewing pipeline, viewing coordinate
+reference frame, window-to-viewport coordinate transformation).
+"""
+
+import math
+
+import numpy as np
+
+from .. import _validate as v
+from .. import transform as tf
+from ..errors import ArgumentTypeError, ArgumentValueError
+
+ALIGNS = ("center", "lower-left")
+
+
+def _rect(name, bounds):
+    """Four finite numbers with xmin < xmax and ymin < ymax."""
+    if isinstance(bounds, (str, bytes)) or not hasattr(bounds, "__len__") or len(bounds) != 4:
+        raise ArgumentTypeError(
+            f"{name} must be (xmin, ymin, xmax, ymax), got {v._show(bounds)}")
+    b = tuple(v.number(f"{name}[{i}]", c) for i, c in enumerate(bounds))
+    if not (b[0] < b[2] and b[1] < b[3]):
+        raise ArgumentValueError(
+            f"{name}={b} is degenerate: it needs xmin < xmax and ymin < ymax (zero width "
+            "or height cannot be mapped), e.g. (0, 0, 1, 1)")
+    return b
+
+
+class Rectangle:
+    """An upright rectangle ``(xmin, ymin, xmax, ymax)``; base of Window and Viewport."""
+
+    def __init__(self, xmin, ymin, xmax, ymax):
+        name = type(self).__name__.lower()
+        self.xmin, self.ymin, self.xmax, self.ymax = _rect(name, (xmin, ymin, xmax, ymax))
+
+    @property
+    def bounds(self):
+        """``(xmin, ymin, xmax, ymax)``."""
+        return (self.xmin, self.ymin, self.xmax, self.ymax)
+
+    @property
+    def width(self):
+        return self.xmax - self.xmin
+
+    @property
+    def height(self):
+        return self.ymax - self.ymin
+
+    @property
+    def aspect(self):
+        """Width / height."""
+        return self.width / self.height
+
+    def __eq__(self, other):
+        return type(other) is type(self) and vars(self) == vars(other)
+
+    def __repr__(self):
+        return f"{type(self).__name__}{self.bounds}"
+
+
+class Window(Rectangle):
+    """The clip window: an upright rectangle in *viewing* coordinates.
+
+    Parameters
+    ----------
+    xmin, ymin, xmax, ymax : float
+        The window in viewing coordinates (with the defaults below, these are world
+        coordinates).
+    origin : (float, float), default (0, 0)
+        Origin P0 of the viewing frame, in world coordinates.
+    view_up : (float, float), default (0, 1)
+        The view-up vector V, in world coordinates: the viewing frame's y axis.  A
+        tilted V gives a rotated window on the world.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> w = sl.viewing.Window(-1, -1, 1, 1, view_up=(-1, 0))   # y axis pointing left
+    >>> sl.transform.apply(w.matrix, (0, 1)).round(12).tolist()     # world (0, 1) ...
+    [1.0, 0.0]
+    """
+
+    def __init__(self, xmin, ymin, xmax, ymax, origin=(0.0, 0.0), view_up=(0.0, 1.0)):
+        super().__init__(xmin, ymin, xmax, ymax)
+        self.matrix = viewing_matrix(origin, view_up)
+        self.origin = tuple(float(c) for c in origin)
+        self.view_up = tuple(float(c) for c in view_up)
+
+    def __eq__(self, other):
+        return (type(other) is type(self) and self.bounds == other.bounds
+                and self.origin == other.origin and self.view_up == other.view_up)
+
+    def corners(self):
+        """The window's corners in world coordinates, (4, 2), counterclockwise from
+        the lower left (a rotated rectangle when ``view_up`` is tilted)."""
+        c = [(self.xmin, self.ymin), (self.xmax, self.ymin),
+             (self.xmax, self.ymax), (self.xmin, self.ymax)]
+        return tf.apply(tf.inverse(self.matrix), c)
+
+    def __repr__(self):
+        return (f"Window{self.bounds}" if self.origin == (0.0, 0.0) and self.view_up == (0.0, 1.0)
+                else f"Window({self.xmin}, {self.ymin}, {self.xmax}, {self.ymax}, "
+                f"origin={self.origin}, view_up={self.view_up})")
+
+
+class Viewport(Rectangle):
+    """A viewport: an upright rectangle in normalized device coordinates (the unit
+    square) or in device coordinates, depending on where it is used.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> sl.viewing.Viewport(0, 0, 0.5, 1).aspect
+    0.5
+    """
+
+
+def _as(cls, name, value):
+    if isinstance(value, cls):
+        return value
+    if isinstance(value, Rectangle):
+        return cls(*value.bounds)
+    return cls(*_rect(name, value))
+
+
+def viewing_matrix(origin=(0.0, 0.0), view_up=(0.0, 1.0)):
+    """World -> viewing coordinates: M = R . T.
+
+    T translates the viewing origin P0 to the world origin; R rotates the unit
+    view-up vector v = V / |V| onto the y axis, its first row being
+    u = (v_y, -v_x), the viewing x axis::
+
+        R = | v_y  -v_x  0 |     T = | 1  0  -x0 |
+            | v_x   v_y  0 |         | 0  1  -y0 |
+            |  0     0   1 |         | 0  0   1  |
+
+    Parameters
+    ----------
+    origin : (float, float)
+        P0 = (x0, y0), world coordinates.
+    view_up : (float, float)
+        V, any nonzero length.
+
+    Returns
+    -------
+    ndarray, shape (3, 3)
+
+    Notes
+    -----
+    Notes, syllabus "2-D Viewing: the viewing pipeline, viewing coordinate
+    reference frame"; Hearn & Baker, section 6-3.
+
+    Examples
+    --------
+    >>> m = viewing_matrix((2, 1), (0, 1))      # just a translation
+    >>> m.tolist()
+    [[1.0, 0.0, -2.0], [0.0, 1.0, -1.0], [0.0, 0.0, 1.0]]
+    """
+    x0, y0 = tf.affine2d._point("origin", origin)
+    vx, vy = tf.affine2d._point("view_up", view_up)
+    length = math.hypot(vx, vy)
+    if length == 0.0 or not math.isfinite(length):
+        raise ArgumentValueError(
+            f"view_up must be a nonzero vector such as (0, 1), got {v._show(view_up)}")
+    vx, vy = vx / length, vy / length
+    r = np.array([[vy, -vx, 0.0], [vx, vy, 0.0], [0.0, 0.0, 1.0]]) + 0.0
+    return tf.compose(r, tf.translation(-x0, -y0))
+
+
+def window_to_viewport(window, viewport, keep_aspect=False, align="center"):
+    """Viewing coordinates in ``window`` -> coordinates in ``viewport``.
+
+    ::
+
+        xv = xvmin + (xw - xwmin) sx,   sx = (xvmax - xvmin) / (xwmax - xwmin)
+        yv = yvmin + (yw - ywmin) sy,   sy = (yvmax - yvmin) / (ywmax - ywmin)
+
+    that is, M = T(xvmin, yvmin) . S(sx, sy) . T(-xwmin, -ywmin).
+
+    Parameters
+    ----------
+    window, viewport : Window, Viewport or (xmin, ymin, xmax, ymax)
+    keep_aspect : bool
+        False (default): the window fills the viewport, stretched if their aspect
+        ratios differ.  True: both scales are min(sx, sy), so shapes keep their
+        proportions, and the window lands in a sub-rectangle of the viewport
+        (letterbox), placed by ``align``.
+    align : {"center", "lower-left"}
+        Where the letterboxed window sits in the viewport.
+
+    Returns
+    -------
+    ndarray, shape (3, 3)
+
+    Notes
+    -----
+    Notes, syllabus "Windows to view ports co-ordinate transformation"; Hearn &
+    Baker, section 6-4.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> m = window_to_viewport((0, 0, 10, 5), (100, 100, 300, 200))
+    >>> sl.transform.apply(m, [(0, 0), (10, 5), (5, 2.5)]).tolist()
+    [[100.0, 100.0], [300.0, 200.0], [200.0, 150.0]]
+    >>> m = window_to_viewport((0, 0, 10, 5), (0, 0, 100, 100), keep_aspect=True)
+    >>> sl.transform.apply(m, [(0, 0), (10, 5)]).tolist()     # centered letterbox
+    [[0.0, 25.0], [100.0, 75.0]]
+    """
+    w = _as(Rectangle, "window", window)
+    vp = _as(Rectangle, "viewport", viewport)
+    v.choice("align", align, ALIGNS)
+    sx = vp.width / w.width
+    sy = vp.height / w.height
+    ox = oy = 0.0
+    if keep_aspect:
+        sx = sy = min(sx, sy)
+        if align == "center":
+            ox = (vp.width - sx * w.width) / 2
+            oy = (vp.height - sy * w.height) / 2
+    return tf.compose(tf.translation(vp.xmin + ox, vp.ymin + oy), tf.scaling(sx, sy),
+                      tf.translation(-w.xmin, -w.ymin))
+
+
+def ndc_to_device(width, height):
+    """Normalized device coordinates (the unit square) -> device coordinates of a
+    ``width`` x ``height`` frame buffer.
+
+    NDC (0, 0) goes to the center of the bottom-left pixel (0, 0) and (1, 1) to the
+    center of the top-right pixel (width - 1, height - 1), so a window's boundary
+    lands on the outermost pixels rather than half a pixel outside them.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> sl.transform.apply(ndc_to_device(101, 51), (0.5, 1)).tolist()
+    [50.0, 50.0]
+    """
+    w = v.positive_int("width", width, 2)
+    h = v.positive_int("height", height, 2)
+    return tf.scaling(w - 1, h - 1)
+
+
+def tile(rows, columns, bounds=(0.0, 0.0, 1.0, 1.0), gap=0.0):
+    """Viewports that tile ``bounds`` in a grid, row by row from the top left.
+
+    Use it to put several views on one frame buffer (``gap`` is the space between
+    neighbors, in the units of ``bounds``).
+
+    Examples
+    --------
+    >>> [vp.bounds for vp in tile(1, 2, gap=0.1)]
+    [(0.0, 0.0, 0.45, 1.0), (0.55, 0.0, 1.0, 1.0)]
+    """
+    r = v.positive_int("rows", rows)
+    c = v.positive_int("columns", columns)
+    xmin, ymin, xmax, ymax = _rect("bounds", bounds)
+    g = v.number("gap", gap)
+    cw = (xmax - xmin - (c - 1) * g) / c
+    ch = (ymax - ymin - (r - 1) * g) / r
+    if g < 0 or cw <= 0 or ch <= 0:
+        raise ArgumentValueError(
+            f"gap={gap!r} must be >= 0 and leave room for {r} x {c} viewports in {bounds}")
+    out = []
+    for i in range(r):
+        top = ymax - i * (ch + g)
+        for j in range(c):
+            left = xmin + j * (cw + g)
+            out.append(Viewport(left, top - ch, left + cw, top))
+    return out
+
+
+def device_viewport(viewport, width, height):
+    """A viewport given in normalized device coordinates, in device coordinates of a
+    ``width`` x ``height`` frame buffer (see :func:`ndc_to_device`).
+
+    Examples
+    --------
+    >>> device_viewport((0, 0, 0.5, 1), 101, 51)
+    Viewport(0.0, 0.0, 50.0, 50.0)
+    """
+    vp = _as(Viewport, "viewport", viewport)
+    (x0, y0), (x1, y1) = tf.apply(ndc_to_device(width, height),
+                                  [(vp.xmin, vp.ymin), (vp.xmax, vp.ymax)]).tolist()
+    return Viewport(x0, y0, x1, y1)
+
+
+class View:
+    """One window shown in one viewport: the whole pipeline as one object.
+
+    ``matrix`` maps world coordinates to viewport coordinates:
+    M = M_window-to-viewport . M_viewing (= R . T, see :func:`viewing_matrix`).
+    Clipping happens in viewing coordinates, against the upright window, before
+    the mapping, as in the notes' pipeline.
+
+    Parameters
+    ----------
+    window : Window or (xmin, ymin, xmax, ymax)
+    viewport : Viewport or (xmin, ymin, xmax, ymax)
+        In the coordinates the view should produce (device coordinates to draw into
+        a frame buffer; see :func:`device_viewport` for NDC viewports).
+    keep_aspect, align
+        See :func:`window_to_viewport`.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> view = sl.viewing.View((0, 0, 10, 10), (0, 0, 20, 20))
+    >>> seg, ok = view.clip_lines([(-5, 5, 5, 5)])
+    >>> seg.tolist(), ok.tolist()
+    ([[0.0, 10.0, 10.0, 10.0]], [True])
+    """
+
+    def __init__(self, window, viewport, keep_aspect=False, align="center"):
+        self.window = _as(Window, "window", window)
+        self.viewport = _as(Viewport, "viewport", viewport)
+        self.window_to_viewport = window_to_viewport(self.window, self.viewport,
+                                                     keep_aspect, align)
+        self.matrix = tf.compose(self.window_to_viewport, self.window.matrix)
+        self.inverse = tf.inverse(self.matrix)
+
+    def to_viewport(self, points):
+        """World points -> viewport coordinates."""
+        return tf.apply(self.matrix, points)
+
+    def to_world(self, points):
+        """Viewport coordinates -> world points (the round trip of
+        :meth:`to_viewport`)."""
+        return tf.apply(self.inverse, points)
+
+    def clip_lines(self, segments, method="liang-barsky"):
+        """World segments (N, 4) clipped by the window and mapped to the viewport:
+        ``(segments, accepted)`` as :func:`scanline.clip.lines` returns them."""
+        from .. import clip
+
+        seg = np.asarray(segments, np.float64).reshape(-1, 4)
+        ends = tf.apply(self.window.matrix, seg.reshape(-1, 2)).reshape(-1, 4)
+        out, ok = clip.lines(ends, self.window.bounds, method)
+        return tf.apply(self.window_to_viewport, out.reshape(-1, 2)).reshape(-1, 4), ok
+
+    def clip_polygon(self, points, method="sutherland-hodgman"):
+        """A world polygon clipped by the window, as contours in the viewport."""
+        from .. import clip
+        from ..geometry.contours import contours
+
+        verts, offsets = contours("points", points)
+        local = tf.apply(self.window.matrix, verts) if len(verts) else verts
+        rings = [local[offsets[c]:offsets[c + 1]] for c in range(len(offsets) - 1)]
+        return [tf.apply(self.window_to_viewport, c)
+                for c in clip.polygon(rings, self.window.bounds, method)]

@@ -1,0 +1,260 @@
+"""Adaptive flattening: a curve becomes a polyline within a tolerance.
+
+Raster devices draw straight segments; a curve is drawn (notes, chapter 5) by
+replacing it with a polyline that stays within ``tolerance`` of it -- a quarter of
+a pixel by default, in device units.
+
+*Bezier form* (Bezier curves, rational or not; Hermite, cardinal, Catmull-Rom and
+Kochanek-Bartels splines, section by section; B-splines and NURBS, cut into their
+Bezier pieces): recursive subdivision at u = 1/2 by de Casteljau's algorithm until
+every control point of a piece lies within ``tolerance`` of the piece's chord.  The
+curve lies in the convex hull of its control points (for rational curves: of the
+projected control points, the weights being positive) and the distance to a segment
+is convex, so **every point of the curve is within** ``tolerance`` **of the
+polyline** -- a guaranteed bound.  The polyline's vertices are points of the curve,
+both ends included.
+
+``method="wang"`` (plain, non-rational Bezier form only) cuts each piece into equal
+parameter steps, as many as Wang's bound asks for (see
+:func:`scanline.geometry.flatten.steps`); more points, same guarantee.
+
+*Any other curve* (anything with ``evaluate`` and ``domain``): the domain starts as 16
+equal intervals and an interval is halved while one of 7 samples inside it lies
+farther than ``tolerance`` from its chord.  The bound holds at the samples; a
+feature narrower than an eighth of an interval could slip between them, so this
+path documents its bound rather than guaranteeing it.
+
+References
+----------
+P. de Casteljau, *Outillages methodes calcul*, Citroen, 1959.
+J. M. Lane, R. F. Riesenfeld, "A theoretical development for the computer generation
+and display of piecewise polynomial surfaces", IEEE PAMI 2(1), 35-46, 1980
+(subdivision, the convex-hull flatness test).
+W. Boehm, "Inserting new knots into B-spline curves", Computer-Aided Design 12(4),
+199-201, 1980 (B-spline -> Bezier pieces).
+"""
+
+import numpy as np
+
+from .. import _validate as v
+from ..errors import ArgumentTypeError, ArgumentValueError
+from .base import Curve
+
+METHODS = ("subdivision", "wang")
+
+#: Subdivision never goes deeper than this (2**-40 of the parameter range).
+MAX_DEPTH = 40
+
+#: Most points one call returns; more means the tolerance is too small for the
+#: curve's size.
+MAX_POINTS = 1 << 22
+
+#: Generic path: initial intervals and samples per interval.
+_START = 16
+_SAMPLES = np.arange(1, 8) / 8.0
+
+
+def tolerance_value(tolerance):
+    """Check a flattening tolerance: a finite number > 0."""
+    t = v.number("tolerance", tolerance)
+    if t <= 0:
+        raise ArgumentValueError(
+            f"tolerance must be > 0 (the largest distance allowed between curve and "
+            f"polyline, in the curve's units), got {tolerance!r}"
+        )
+    return t
+
+
+def flatten(curve, tolerance=0.25, method="subdivision"):
+    """A polyline within ``tolerance`` of ``curve``.
+
+    Parameters
+    ----------
+    curve : scanline.curves.Curve
+        Any curve: Bezier (rational or not), B-spline, NURBS, Hermite-family splines
+        or a curve of your own with ``evaluate`` and ``domain``.
+    tolerance : float
+        Largest distance from a curve point to the polyline, in the curve's
+        coordinates (device units when they are device coordinates).  > 0.
+    method : {"subdivision", "wang"}
+        Adaptive subdivision (default) or Wang's uniform steps (plain Bezier form
+        only).  See the module docstring.
+
+    Returns
+    -------
+    numpy.ndarray, shape (K, dimension)
+        The polyline, from the curve's first point to its last (equal for a closed
+        curve), K >= 2, no two consecutive points equal.
+
+    Notes
+    -----
+    Notes, chapter 5 (Bezier curves, the convex hull property).  The guaranteed
+    bound and the sampled one are described in :mod:`scanline.curves.flatten`.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> c = sl.curves.Bezier([(0, 0), (0, 10), (10, 10), (10, 0)])
+    >>> p = flatten(c, tolerance=0.5)
+    >>> p[0].tolist(), p[-1].tolist(), len(p)
+    ([0.0, 0.0], [10.0, 0.0], 9)
+    >>> len(flatten(c, tolerance=0.05)) > len(p)
+    True
+    """
+    if not isinstance(curve, Curve):
+        raise ArgumentTypeError(
+            f"curve must be a scanline.curves.Curve (Bezier, BSpline, ...), got "
+            f"{type(curve).__name__}"
+        )
+    tol = tolerance_value(tolerance)
+    v.choice("method", method, METHODS)
+    pieces = bezier_pieces(curve)
+    if pieces is None:
+        if method == "wang":
+            raise ArgumentValueError(
+                f"method='wang' needs a curve in Bezier form (Bezier, BSpline); "
+                f"{type(curve).__name__} is flattened by method='subdivision'"
+            )
+        return _distinct(_sampled(curve, tol))
+    if method == "wang":
+        return _distinct(_wang(pieces, tol))
+    return _distinct(subdivide(pieces, tol))
+
+
+def subdivide(segments, tolerance):
+    """Flatten Bezier segments given in homogeneous form, (S, n + 1, dim + 1) arrays of
+    [w x, w] with w > 0, by recursive subdivision; returns the (K, dim) points (each
+    segment's start, then the end of each piece)."""
+    from .._kernels import flatten as k
+
+    segments = np.ascontiguousarray(segments, dtype=np.float64)
+    if segments.shape[1] < 2:  # degree 0: a point
+        return segments[:, 0, :-1] / segments[:, 0, -1:]
+    points, _, truncated = k.subdivide(segments, tolerance * tolerance, MAX_DEPTH, MAX_POINTS)
+    if truncated:
+        raise ArgumentValueError(
+            f"tolerance={tolerance!r} is too small for a curve this large: flattening "
+            f"would take more than {MAX_POINTS} points; use a larger tolerance"
+        )
+    return points
+
+
+def _wang(segments, tolerance):
+    from ..geometry.flatten import MAX_STEPS, steps
+    from .bezier import bernstein
+
+    if not np.all(segments[:, :, -1] == 1.0):
+        raise ArgumentValueError(
+            "method='wang' flattens plain (non-rational) curves; this one has weights; "
+            "use method='subdivision'"
+        )
+    ctrl = segments[:, :, :-1]
+    n = ctrl.shape[1] - 1
+    if n < 1:
+        return ctrl[:, 0]
+    m = steps(ctrl, tolerance) if n >= 2 else np.ones(len(ctrl), np.int64)
+    if (m >= MAX_STEPS).any():
+        raise ArgumentValueError(
+            f"tolerance={tolerance!r} is too small for a curve this large "
+            f"(more than {MAX_STEPS} steps per piece); use a larger tolerance"
+        )
+    seg = np.repeat(np.arange(len(ctrl)), m + 1)
+    i = np.arange(int((m + 1).sum())) - np.repeat(np.cumsum(m + 1) - (m + 1), m + 1)
+    u = i / m[seg]
+    return np.einsum("ak,akc->ac", bernstein(n, u), ctrl[seg])
+
+
+def _distinct(points):
+    """Drop points equal to their predecessor (segment joins); keep at least two."""
+    if len(points) < 2:
+        return np.vstack([points, points])[:2] if len(points) else points
+    keep = np.ones(len(points), bool)
+    keep[1:] = (points[1:] != points[:-1]).any(axis=1)
+    out = points[keep]
+    return out if len(out) >= 2 else points[[0, -1]]
+
+
+# -- Bezier form of the known curve types ---------------------------------------------
+
+
+def bezier_pieces(curve):
+    """The curve as homogeneous Bezier segments (S, n + 1, dim + 1), or None if its
+    type has no Bezier form here.
+
+    Bezier curves are one segment; Hermite-family curves (piecewise polynomials) are
+    their sections' Bezier forms; a B-spline or NURBS of order d is cut into its
+    polynomial pieces, one per non-empty knot span of the valid range (Boehm 1980:
+    the pieces' control points are those of the spline with every knot raised to
+    multiplicity d - 1; computed here by interpolating d points of each piece, which
+    gives the same points up to rounding).
+    """
+    from .bezier import Bezier
+    from .bspline import BSpline
+    from .hermite import PiecewisePolynomial
+
+    if isinstance(curve, Bezier):
+        return curve.homogeneous()[None]
+    if isinstance(curve, PiecewisePolynomial):
+        return np.stack([section.homogeneous() for section in curve.sections])
+    if isinstance(curve, BSpline):
+        return spline_pieces(curve.homogeneous(), curve.knots, curve.order, curve.domain)
+    return None
+
+
+def spline_pieces(homogeneous, knots, order, domain):
+    """Bezier control points of each polynomial piece of the B-spline with control
+    points ``homogeneous`` (n + 1, c), knot vector ``knots`` and ``order`` d, on the
+    non-empty knot spans inside ``domain``: (S, d, c)."""
+    from .bezier import bernstein
+    from .bspline import basis
+
+    lo, hi = domain
+    breaks = np.unique(np.clip(knots, lo, hi))
+    degree = order - 1
+    # Chebyshev points of the first kind on [0, 1]: a well-conditioned collocation
+    t = 0.5 - 0.5 * np.cos((2 * np.arange(order) + 1) * np.pi / (2 * order))
+    collocation = bernstein(degree, t)  # (d, d): row s = the basis at t_s
+    a, b = breaks[:-1], breaks[1:]
+    u = (a[:, None] + (b - a)[:, None] * t[None, :]).ravel()
+    values = basis(knots, order, u) @ homogeneous  # (S * d, c)
+    values = values.reshape(len(a), order, -1)
+    return np.linalg.solve(collocation[None], values)
+
+
+# -- any other curve: sampled -----------------------------------------------------------
+
+
+def _segment_distance(p, a, b):
+    """Distance from points p (I, k, dim) to the segments a-b (I, dim) each."""
+    ab = (b - a)[:, None, :]
+    ap = p - a[:, None, :]
+    len2 = (ab * ab).sum(axis=2)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        t = np.where(len2 > 0, (ap * ab).sum(axis=2) / np.where(len2 > 0, len2, 1), 0.0)
+    t = np.clip(t, 0.0, 1.0)
+    return np.linalg.norm(ap - t[..., None] * ab, axis=2)
+
+
+def _sampled(curve, tolerance):
+    lo, hi = curve.domain
+    done = []
+    edges = np.linspace(lo, hi, _START + 1)
+    left, right = edges[:-1], edges[1:]
+    for _ in range(MAX_DEPTH):
+        if not len(left):
+            break
+        inner = left[:, None] + (right - left)[:, None] * _SAMPLES[None, :]
+        ends = curve.evaluate(np.stack([left, right], axis=1))
+        samples = curve.evaluate(inner)
+        far = _segment_distance(samples, ends[:, 0], ends[:, 1]).max(axis=1) > tolerance
+        done.append(left[~far])
+        mid = (left[far] + right[far]) / 2
+        left, right = np.concatenate([left[far], mid]), np.concatenate([mid, right[far]])
+        if sum(len(d) for d in done) + len(left) > MAX_POINTS:
+            raise ArgumentValueError(
+                f"tolerance={tolerance!r} is too small for this curve: flattening would "
+                f"take more than {MAX_POINTS} points; use a larger tolerance"
+            )
+    done.append(left)
+    breaks = np.sort(np.concatenate(done + [[hi]]))
+    return curve.evaluate(breaks)

@@ -57,9 +57,10 @@ def nearest_color(palette, want):
 
 @kernel
 def ordered_palette(src, thresholds, spread, palette, out):
-    """Ordered dithering to a palette: each pixel, offset by
-    ``(threshold - 1/2) * spread`` in every channel, takes the nearest palette color.
-    With ``spread = 0`` this is plain nearest-color quantization."""
+    """Ordered dithering to a palette: channel ``k`` of each pixel, offset by
+    ``(1/2 - threshold) * spread[k]``, then the nearest palette color (for evenly
+    spaced levels and ``spread`` one step, the same choice as :func:`ordered_levels`).
+    With a zero ``spread`` this is plain nearest-color quantization."""
     height, width, channels = src.shape
     row_mask = thresholds.shape[0] - 1
     col_mask = thresholds.shape[1] - 1
@@ -67,9 +68,9 @@ def ordered_palette(src, thresholds, spread, palette, out):
     for row in range(height):
         trow = thresholds[row & row_mask]
         for col in range(width):
-            offset = (trow[col & col_mask] - 0.5) * spread
+            offset = np.float32(0.5) - trow[col & col_mask]
             for k in range(channels):
-                want[k] = src[row, col, k] + offset
+                want[k] = src[row, col, k] + offset * spread[k]
             out[row, col, 0] = nearest_color(palette, want)
 
 

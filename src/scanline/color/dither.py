@@ -77,14 +77,16 @@ def _output_mode(mode, levels, palette):
 
 
 def _spread(table):
-    """How far ordered dithering pushes a color toward its neighbors in ``table``
-    (floats in [0, 1]): the median distance from a table color to its nearest other
-    table color, the palette's typical step (a gray table of n levels: 1 / (n - 1))."""
-    if len(table) < 2:
-        return 0.0
-    d = np.sqrt(((table[:, None, :] - table[None, :, :]) ** 2).sum(axis=2))
-    np.fill_diagonal(d, np.inf)
-    return float(np.median(d.min(axis=1)))
+    """How far ordered dithering pushes each channel toward the neighboring table
+    colors (floats in [0, 1]): per channel, the median gap between the distinct
+    values the table uses (a gray table of n levels: 1 / (n - 1); the 3-3-2 table:
+    1/7, 1/7, 1/3)."""
+    spread = np.zeros(table.shape[1], np.float32)
+    for k in range(table.shape[1]):
+        gaps = np.diff(np.unique(table[:, k]))
+        if gaps.size:
+            spread[k] = np.median(gaps)
+    return spread
 
 
 def dither(source, method="floyd-steinberg", levels=None, palette=None, *, mode=None,
@@ -133,9 +135,10 @@ def dither(source, method="floyd-steinberg", levels=None, palette=None, *, mode=
     (``M[row mod n, col mod n]``, image rows from the top).  An n x n matrix renders
     n**2 + 1 patterns between two levels: a constant intensity is shown exactly when
     it is one of them, and otherwise within half a pattern step, 1 / (2 n**2) of the
-    level spacing.  Ordered dithering to a palette offsets each pixel by ``(threshold
-    - 1/2)`` times the palette's typical step (the median distance between a color
-    and its nearest neighbor in the table), then takes the nearest color.
+    level spacing.  Ordered dithering to a palette offsets each channel by
+    ``(1/2 - threshold)`` times the palette's typical step in that channel (the
+    median gap between the distinct values the table uses), then takes the nearest
+    color.
 
     See the module docstring for the notes' sections and the references.
 
@@ -170,7 +173,7 @@ def dither(source, method="floyd-steinberg", levels=None, palette=None, *, mode=
         if method == "floyd-steinberg":
             kernels.diffuse_palette(pixels, floats, bool(serpentine), out)
         else:
-            spread = 0.0 if method == "none" else _spread(floats)
+            spread = _spread(floats) * (method != "none")
             kernels.ordered_palette(pixels, _thresholds(method), spread, floats, out)
         return FrameBuffer.from_array(out[:, :, 0], mode="P", color_table=table)
 
@@ -205,6 +208,7 @@ def gray_levels(source, n=None, *, bits=None):
         if bits > 8:
             raise ArgumentValueError(f"bits={bits} must be 1 to 8 (2 to 256 levels)")
         n = 2 ** bits
+    n = levels_argument("n", n)
     fb = dither(source, "none", levels=n, mode="L")
     return fb if isinstance(source, FrameBuffer) else fb.to_array()
 

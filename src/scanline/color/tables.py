@@ -150,5 +150,6 @@ def nearest(colors, table):
     flat = np.ascontiguousarray(a.reshape(1, -1, 3))
     out = np.empty(flat.shape[:2] + (1,), np.uint8)
     if flat.size:
-        kernels.ordered_palette(flat, np.full((1, 1), 0.5, np.float32), 0.0, palette, out)
+        kernels.ordered_palette(flat, np.full((1, 1), 0.5, np.float32), np.zeros(3, np.float32),
+                                palette, out)
     return out.reshape(a.shape[:-1])

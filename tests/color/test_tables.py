@@ -1,0 +1,131 @@
+"""Color tables, nearest-color lookup, indexed frame buffers and gray-scale levels."""
+
+import numpy as np
+import pytest
+from PIL import Image
+
+import scanline as sl
+
+RNG = np.random.default_rng(332)
+
+
+def test_gray_tables():
+    assert sl.color.gray_table(2).tolist() == [[0, 0, 0], [255, 255, 255]]
+    # 2 bits per pixel: 4 levels
+    assert sl.color.gray_table(4)[:, 0].tolist() == [0, 85, 170, 255]
+    assert sl.color.gray_table(256)[:, 0].tolist() == list(range(256))
+    t = sl.color.gray_table(7)
+    assert (t[:, 0] == t[:, 1]).all() and (t[:, 1] == t[:, 2]).all()
+    assert t[:, 0].tolist() == [0, 43, 85, 128, 170, 213, 255]   # 42.5 and 212.5 round up
+
+
+def test_rgb332_table():
+    t = sl.color.rgb332_table()
+    assert t.shape == (256, 3) and len({tuple(c) for c in t}) == 256
+    for index in (0, 1, 0b001_000_00, 0b000_001_00, 0b101_110_10, 255):
+        r, g, b = index >> 5, (index >> 2) & 7, index & 3
+        assert t[index].tolist() == [round(r * 255 / 7), round(g * 255 / 7), round(b * 255 / 3)]
+
+
+def test_web_safe_table():
+    t = sl.color.web_safe_table()
+    assert t.shape == (216, 3) and len({tuple(c) for c in t}) == 216
+    assert set(np.unique(t).tolist()) == {0, 51, 102, 153, 204, 255}
+    assert t[36 * 5 + 6 * 2 + 1].tolist() == [255, 102, 51]
+
+
+def test_median_cut_matches_pillow():
+    image = RNG.integers(0, 256, (40, 50, 3), dtype=np.uint8)
+    table = sl.color.median_cut_table(image, 8)
+    pillow = Image.fromarray(image).quantize(8, method=Image.Quantize.MEDIANCUT)
+    assert table.tolist() == np.array(pillow.getpalette()[:24]).reshape(8, 3).tolist()
+    # from a frame buffer, and fewer colors than asked when the image has fewer
+    two = sl.FrameBuffer(4, 4, background="red")
+    two.set_pixel(0, 0, "blue")
+    assert sorted(map(tuple, sl.color.median_cut_table(two, 16).tolist())) == [(0, 0, 255), (255, 0, 0)]
+
+
+def test_nearest_against_brute_force():
+    table = RNG.integers(0, 256, (37, 3), dtype=np.uint8)
+    colors = RNG.integers(0, 256, (20, 30, 3), dtype=np.uint8)
+    got = sl.color.nearest(colors, table)
+    assert got.shape == (20, 30)
+    d = ((colors[:, :, None, :].astype(int) - table[None, None].astype(int)) ** 2).sum(axis=3)
+    best = d.min(axis=2)
+    # the chosen entry is a nearest one (float32 cannot break exact integer ties wrongly)
+    assert (np.take_along_axis(d, got[..., None].astype(int), axis=2)[..., 0] == best).all()
+    # floats in [0, 1] and a single color work too
+    assert sl.color.nearest(colors / 255.0, table).tolist() == got.tolist()
+    assert sl.color.nearest(np.array([1.0, 0.0, 0.0]), ["black", "red"]).tolist() == 1
+
+
+def test_nearest_ties_take_the_lowest_index():
+    assert sl.color.nearest(np.array([[128, 128, 128]], np.uint8), ["black", "white"]).tolist() == [1]
+    assert sl.color.nearest(np.array([[0, 0, 0]], np.uint8), ["black", "black"]).tolist() == [0]
+
+
+def test_indexed_frame_buffer_and_recoloring():
+    image = np.zeros((3, 4, 3), np.uint8)
+    image[0, :2] = (250, 5, 5)        # top row, left: reddish
+    fb = sl.color.indexed(image, ["black", "red", "white"])
+    assert fb.mode == "P" and fb.color_table.tolist() == [[0, 0, 0], [255, 0, 0], [255, 255, 255]]
+    assert fb.to_array().tolist() == [[1, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0]]
+    assert fb.get_pixel(0, 2) == 1    # device y up: the top row is y = 2
+    # editing the table recolors without touching the indices (the notes' color-table
+    # animation)
+    fb.set_table_entry(1, "lime")
+    assert fb.to_pil().convert("RGB").getpixel((0, 0)) == (0, 255, 0)
+    assert fb.to_array()[0, 0] == 1
+    # drawing by index still works on the result
+    sl.draw.line(fb, 0, 0, 3, 0, color=2)
+    assert fb.to_array()[2].tolist() == [2, 2, 2, 2]
+
+
+def test_indexed_with_standard_tables_is_exact_on_table_colors():
+    for table in (sl.color.web_safe_table(), sl.color.rgb332_table(), sl.color.gray_table(16)):
+        image = table[RNG.integers(0, len(table), (10, 12))]
+        fb = sl.color.indexed(image, table)
+        assert (fb.color_table[fb.to_array()] == image).all()
+
+
+def test_gray_levels():
+    ramp = np.arange(256, dtype=np.uint8)[None]
+    two_bits = sl.color.gray_levels(ramp, bits=2)
+    assert sorted(set(two_bits[0].tolist())) == [0, 85, 170, 255]
+    # nearest level: |value - level| <= half a step
+    assert (np.abs(two_bits.astype(int) - ramp) <= 85 / 2).all()
+    assert (sl.color.gray_levels(ramp, 256) == ramp).all()
+    assert sl.color.gray_levels(ramp, 2)[0, :128].max() == 0
+    assert sl.color.gray_levels(ramp, 2)[0, 128:].min() == 255
+    # a frame buffer gives a frame buffer; color is reduced to its luminance
+    # (3 levels: 0, 128, 255, i.e. 0, 1/2, 1)
+    fb = sl.FrameBuffer(3, 1, mode="RGB", background="blue")
+    out = sl.color.gray_levels(fb, 3)
+    assert out.mode == "L" and out.to_array().tolist() == [[0, 0, 0]]   # luma .114 -> 0
+    out = sl.color.gray_levels(sl.FrameBuffer(3, 1, background="red"), 3)
+    assert out.to_array().tolist() == [[128, 128, 128]]               # luma .299 -> 1/2
+    out = sl.color.gray_levels(sl.FrameBuffer(3, 1, background="yellow"), 3)
+    assert out.to_array().tolist() == [[255, 255, 255]]               # luma 226 -> 255
+
+
+@pytest.mark.parametrize("call, words", [
+    (lambda: sl.color.gray_table(1), "n=1"),
+    (lambda: sl.color.gray_table(300), "n=300"),
+    (lambda: sl.color.gray_levels(np.zeros((2, 2)), 1), "n=1"),
+    (lambda: sl.color.gray_levels(np.zeros((2, 2))), "exactly one"),
+    (lambda: sl.color.gray_levels(np.zeros((2, 2)), 4, bits=2), "exactly one"),
+    (lambda: sl.color.gray_levels(np.zeros((2, 2)), bits=9), "bits=9"),
+    (lambda: sl.color.gray_levels(np.zeros((2, 2)), bits=0), "bits"),
+    (lambda: sl.color.median_cut_table(np.zeros((2, 2)), 0), "colors=0"),
+    (lambda: sl.color.color_table([]), "1 to 256"),
+    (lambda: sl.color.color_table(np.full((2, 3), 1.5)), "[0, 1]"),
+    (lambda: sl.color.color_table(np.full((2, 3), 300)), "0..255"),
+    (lambda: sl.color.color_table(5), "sequence"),
+    (lambda: sl.color.nearest(np.zeros((2, 2)), ["red"]), "3 components"),
+    (lambda: sl.color.nearest(np.zeros((2, 3)), []), "table must have"),
+    (lambda: sl.color.indexed(np.zeros((2, 2)), []), "palette must have"),
+])
+def test_bad_input(call, words):
+    with pytest.raises((sl.ArgumentValueError, sl.ArgumentTypeError)) as info:
+        call()
+    assert words in str(info.value)

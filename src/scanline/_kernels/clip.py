@@ -191,30 +191,26 @@ def liang_barsky(x0, y0, x1, y1, xmin, ymin, xmax, ymax, out, log):
 
 
 @helper
-def cyrus_beck(x0, y0, x1, y1, win, out, log):
-    """Cyrus-Beck against the convex counterclockwise polygon ``win`` (M, 2).
+def cyrus_beck(x0, y0, x1, y1, win, normals, out, log):
+    """Cyrus-Beck against the convex polygon ``win`` (M, 2) with the outward normals
+    ``normals`` (M, 2) of its edges (edge i runs from PE_i = win[i] to win[i+1]).
 
-    For edge i from PE_i = win[i] to win[i+1], the outward normal is
-    N_i = (dy_i, -dx_i); N_i.D < 0 marks a potentially entering (PE) crossing,
-    N_i.D > 0 a potentially leaving (PL) one, and t = N_i.(P0 - PE_i) / -N_i.D.
-    :func:`parametric_edge` gets p = N_i.D and q = -N_i.(P0 - PE_i), so that
-    t = q / p and p < 0 is entering, as in Liang-Barsky.
+    N_i.D < 0 marks a potentially entering (PE) crossing, N_i.D > 0 a potentially
+    leaving (PL) one, and t = N_i.(P0 - PE_i) / -N_i.D.  :func:`parametric_edge`
+    gets p = N_i.D and q = -N_i.(P0 - PE_i), so that t = q / p and p < 0 is
+    entering, as in Liang-Barsky.
     """
     dx = x1 - x0
     dy = y1 - y0
-    m = win.shape[0]
     u = np.empty(2)
     u[0] = 0.0
     u[1] = 1.0
     ok = True
-    for i in range(m):
-        ax = win[i, 0]
-        ay = win[i, 1]
-        j = i + 1 if i + 1 < m else 0
-        nx = win[j, 1] - ay
-        ny = ax - win[j, 0]
-        if not parametric_edge(nx * dx + ny * dy, -(nx * (x0 - ax) + ny * (y0 - ay)),
-                               i, u, log):
+    for i in range(win.shape[0]):
+        nx = normals[i, 0]
+        ny = normals[i, 1]
+        if not parametric_edge(nx * dx + ny * dy,
+                               -(nx * (x0 - win[i, 0]) + ny * (y0 - win[i, 1])), i, u, log):
             ok = False
             break
     parametric_result(x0, y0, x1, y1, u, out)
@@ -245,18 +241,19 @@ def liang_barsky_lines(seg, xmin, ymin, xmax, ymax, out, accepted):
 
 
 @kernel
-def cyrus_beck_lines(seg, win, out, accepted):
-    """Cyrus-Beck on every row of ``seg`` against the convex CCW polygon ``win``."""
+def cyrus_beck_lines(seg, win, normals, out, accepted):
+    """Cyrus-Beck on every row of ``seg`` against the convex polygon ``win`` with
+    outward edge normals ``normals``."""
     log = np.empty((0, PARAM_COLUMNS))
     for i in range(seg.shape[0]):
         accepted[i] = cyrus_beck(seg[i, 0], seg[i, 1], seg[i, 2], seg[i, 3], win,
-                                 out[i], log)
+                                 normals, out[i], log)
         if not accepted[i]:
             out[i, :] = seg[i, :]
 
 
 @kernel
-def trace_line(method, seg, win, out, log):
+def trace_line(method, seg, win, normals, out, log):
     """One segment through clipper ``method`` (0 Cohen-Sutherland, 1 Liang-Barsky,
     2 Cyrus-Beck) with its steps logged; ``win`` is (xmin, ymin, xmax, ymax) as a
     (1, 4) array for the first two, the polygon for Cyrus-Beck."""
@@ -266,7 +263,7 @@ def trace_line(method, seg, win, out, log):
     if method == 1:
         return liang_barsky(seg[0], seg[1], seg[2], seg[3], win[0, 0], win[0, 1],
                             win[0, 2], win[0, 3], out, log)
-    return cyrus_beck(seg[0], seg[1], seg[2], seg[3], win, out, log)
+    return cyrus_beck(seg[0], seg[1], seg[2], seg[3], win, normals, out, log)
 
 
 @helper

@@ -45,6 +45,16 @@ ALGORITHMS = {
         "the Cox-de Boor recursion of the B-spline blending functions (notes, chapter 5, Q.2)",
         {}, False,
     ),
+    "cohen-sutherland": (
+        "Cohen-Sutherland line clipping with region codes (notes, chapter 4, Q.3)", {}, False,
+    ),
+    "liang-barsky": (
+        "Liang-Barsky line clipping: p_k, q_k, u1, u2 (notes, chapter 4, Q.4)", {}, False,
+    ),
+    "cyrus-beck": (
+        "Cyrus-Beck line clipping against a convex polygon (notes, chapter 4, Q.4, Table 1)",
+        {}, False,
+    ),
 }
 
 
@@ -91,6 +101,26 @@ def cox_de_boor_options(sub):
 
 
 OPTIONS.update({"de-casteljau": de_casteljau_options, "cox-de-boor": cox_de_boor_options})
+
+
+def clip_options(sub):
+    """The segment X0 Y0 X1 Y1, ``--window`` and (cyrus-beck) ``--window-polygon``."""
+    for name, text in (("x0", "x of P0"), ("y0", "y of P0"), ("x1", "x of P1"),
+                       ("y1", "y of P1")):
+        sub.add_argument(name, metavar=name.upper(), type=float, help=text)
+    sub.add_argument("--window", nargs=4, type=float, metavar=("XMIN", "YMIN", "XMAX", "YMAX"),
+                     help="the clip rectangle (default 0 0 10 10)")
+    names = ["x0", "y0", "x1", "y1", "window"]
+    if sub.prog.endswith("cyrus-beck"):
+        sub.add_argument("--window-polygon", type=numbers, metavar="X,Y,X,Y,...",
+                         help="a convex clip polygon instead, e.g. 0,0,10,0,5,8 (either "
+                         "orientation)")
+        names.append("window_polygon")
+    return names
+
+
+OPTIONS.update({"cohen-sutherland": clip_options, "liang-barsky": clip_options,
+                "cyrus-beck": clip_options})
 
 FORMATS = ("table", "csv", "json")
 

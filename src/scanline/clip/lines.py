@@ -157,7 +157,7 @@ def lines(segments, window, method="liang-barsky"):
     accepted = np.zeros(len(seg), np.bool_)
     if method == "cyrus-beck":
         ring = w.polygon(window, convex=True, algorithm="Cyrus-Beck")
-        k.cyrus_beck_lines(seg, ring, out, accepted)
+        k.cyrus_beck_lines(seg, ring, w.outward_normals(ring), out, accepted)
         return out, accepted
     if not w._is_rectangle_spec(window):
         raise ArgumentValueError(

@@ -124,3 +124,11 @@ def is_convex(ring):
     except ArgumentValueError:
         return False
     return True
+
+
+def outward_normals(ring):
+    """Unit outward normals (M, 2) of the edges of the counterclockwise ``ring``
+    (edge i from ring[i] to ring[i + 1]): N = (dy, -dx) / |d|."""
+    d = np.roll(ring, -1, axis=0) - ring
+    n = np.stack([d[:, 1], -d[:, 0]], axis=1) / np.hypot(d[:, 0], d[:, 1])[:, None]
+    return np.ascontiguousarray(n + 0.0)

@@ -13,6 +13,7 @@ from .lines import bresenham, dda
 from .conics import midpoint_circle, midpoint_ellipse
 from .seedfill import flood_fill
 from .curves import de_casteljau, cox_de_boor
+from .clip import cohen_sutherland, cyrus_beck, liang_barsky
 
 #: CLI name -> function
 ALGORITHMS = {
@@ -23,8 +24,12 @@ ALGORITHMS = {
     "flood-fill": flood_fill,
     "de-casteljau": de_casteljau,
     "cox-de-boor": cox_de_boor,
+    "cohen-sutherland": cohen_sutherland,
+    "liang-barsky": liang_barsky,
+    "cyrus-beck": cyrus_beck,
 }
 
 __all__ = ["Table", "bresenham", "dda", "midpoint_circle", "midpoint_ellipse", "flood_fill",
            "de_casteljau", "cox_de_boor",
+           "cohen_sutherland", "liang_barsky", "cyrus_beck",
            "ALGORITHMS"]

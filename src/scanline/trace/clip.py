@@ -1,0 +1,194 @@
+"""Step tables of the line clippers (notes, chapter 4, Q.3-Q.4).
+
+The steps are logged by the same compiled helpers that :func:`scanline.clip.lines`
+runs (:mod:`scanline._kernels.clip`), so the table and the clipped segment cannot
+disagree.
+"""
+
+import numpy as np
+
+from .. import _validate as v
+from .._kernels import clip as k
+from ..clip import window as w
+from .table import Table, _cell
+
+DEFAULT_WINDOW = (0.0, 0.0, 10.0, 10.0)
+
+_BITS = {k.LEFT: "left", k.RIGHT: "right", k.BELOW: "below", k.ABOVE: "above"}
+_KINDS = {k.KIND_PARALLEL_INSIDE: "parallel, inside", k.KIND_PARALLEL_OUTSIDE:
+          "parallel, outside: reject", k.KIND_ENTERING: "PE (entering)",
+          k.KIND_LEAVING: "PL (leaving)"}
+
+
+def code_string(code):
+    """A region code as the notes write it: bits 4 3 2 1 = above below right left."""
+    return format(int(code), "04b")
+
+
+def _vector(x, y):
+    return f"({_cell(float(x))}, {_cell(float(y))})"
+
+
+def _run(method, x0, y0, x1, y1, win, rows, columns, normals=None):
+    seg = np.array([v.number(n, c) for n, c in
+                    (("x0", x0), ("y0", y0), ("x1", x1), ("y1", y1))])
+    bad = ~(np.abs(seg) <= v.COORD_LIMIT)
+    if bad.any():
+        raise v.ArgumentValueError(
+            f"{('x0', 'y0', 'x1', 'y1')[int(np.argmax(bad))]} must be within "
+            f"+-{v.COORD_LIMIT}")
+    out = np.empty(4)
+    log = np.full((rows, columns), np.nan)
+    if normals is None:
+        normals = np.zeros((0, 2))
+    ok = k.trace_line(method, seg, win, normals, out, log)
+    used = int(np.sum(~np.isnan(log[:, 0])))
+    return seg, bool(ok), out, log[:used]
+
+
+def _result(ok, out):
+    if not ok:
+        return None, "result: rejected, nothing is visible"
+    r = tuple(float(c) for c in out)
+    return r, f"result: visible from ({_cell(r[0])}, {_cell(r[1])}) to ({_cell(r[2])}, {_cell(r[3])})"
+
+
+def cohen_sutherland(x0, y0, x1, y1, window=DEFAULT_WINDOW):
+    """Cohen-Sutherland step by step: the region codes of both endpoints, their
+    AND, and at each step the trivial accept, the trivial reject or the boundary
+    an outside endpoint is moved to.
+
+    Region codes are written bit 4 to bit 1: above, below, right, left (notes,
+    chapter 4, Q.3).  ``table.result`` is the clipped (x0, y0, x1, y1) or None.
+
+    >>> t = cohen_sutherland(-5, 2, 15, 22, window=(0, 0, 10, 10))
+    >>> for r in t.rows:
+    ...     print(r["code0"], r["code1"], r["decision"], r["x"], r["y"])
+    0001 1010 clip P0 at left (x = 0) 0.0 7.0
+    0000 1010 clip P1 at right (x = 10) 10.0 17.0
+    0000 1000 clip P1 at above (y = 10) 3.0 10.0
+    0000 0000 accept: both codes 0000 None None
+    >>> t.result
+    (0.0, 7.0, 3.0, 10.0)
+    """
+    xmin, ymin, xmax, ymax = w.rectangle(window)
+    win = np.array([[xmin, ymin, xmax, ymax]])
+    seg, ok, out, log = _run(0, x0, y0, x1, y1, win, k.CS_MAX_STEPS + 1, k.CS_COLUMNS)
+    edge = {k.LEFT: ("x", xmin), k.RIGHT: ("x", xmax), k.BELOW: ("y", ymin),
+            k.ABOVE: ("y", ymax)}
+    rows = []
+    for i, (end, c0, c1, both, action, bit, x, y) in enumerate(log.tolist()):
+        if action == k.CS_CLIP:
+            axis, value = edge[int(bit)]
+            decision = f"clip P{int(end)} at {_BITS[int(bit)]} ({axis} = {_cell(value)})"
+        elif action == k.CS_ACCEPT:
+            decision = "accept: both codes 0000"
+            x = y = None
+        else:
+            decision = "reject: code0 AND code1 != 0000"
+            x = y = None
+        rows.append({"step": i, "code0": code_string(c0), "code1": code_string(c1),
+                     "and": code_string(both), "decision": decision, "x": x, "y": y})
+    result, line = _result(ok, out)
+    notes = [f"window xmin = {_cell(xmin)}, ymin = {_cell(ymin)}, xmax = {_cell(xmax)}, "
+             f"ymax = {_cell(ymax)}",
+             "region code bits 4 3 2 1 = above below right left; x, y: the new endpoint",
+             line]
+    t = Table(f"Cohen-Sutherland clip ({_cell(seg[0])}, {_cell(seg[1])}) -> "
+              f"({_cell(seg[2])}, {_cell(seg[3])})",
+              ["step", "code0", "code1", "and", "decision", "x", "y"], rows, notes)
+    t.result = result
+    return t
+
+
+def _parametric_rows(log, names):
+    rows = []
+    for kk, p, q, r, kind, u1, u2 in log.tolist():
+        i = int(kk) - 1
+        rows.append({"k": int(kk), "edge": names[i], "p": p, "q": q,
+                     "t": None if np.isnan(r) else r, "kind": _KINDS[int(kind)],
+                     "u1": u1, "u2": u2})
+    return rows
+
+
+def liang_barsky(x0, y0, x1, y1, window=DEFAULT_WINDOW):
+    """Liang-Barsky step by step: for k = 1..4 (left, right, bottom, top) the
+    p_k and q_k, t = q_k / p_k, whether the line enters (p_k < 0) or leaves
+    (p_k > 0), and u1 = max(0, entering t), u2 = min(1, leaving t) so far.
+
+    p1 = -dx, q1 = x0 - xmin; p2 = dx, q2 = xmax - x0; p3 = -dy, q3 = y0 - ymin;
+    p4 = dy, q4 = ymax - y0.  The segment is visible from u1 to u2 if u1 <= u2.
+
+    >>> t = liang_barsky(-5, 2, 15, 12, window=(0, 0, 10, 10))
+    >>> [(r["k"], r["p"], r["q"], r["t"], r["u1"], r["u2"]) for r in t.rows]
+    [(1, -20.0, -5.0, 0.25, 0.25, 1.0), (2, 20.0, 15.0, 0.75, 0.25, 0.75), (3, -10.0, 2.0, -0.2, 0.25, 0.75), (4, 10.0, 8.0, 0.8, 0.25, 0.75)]
+    >>> t.result
+    (0.0, 4.5, 10.0, 9.5)
+    """
+    xmin, ymin, xmax, ymax = w.rectangle(window)
+    win = np.array([[xmin, ymin, xmax, ymax]])
+    seg, ok, out, log = _run(1, x0, y0, x1, y1, win, 4, k.PARAM_COLUMNS)
+    rows = _parametric_rows(log, ["left", "right", "bottom", "top"])
+    result, line = _result(ok, out)
+    dx, dy = seg[2] - seg[0], seg[3] - seg[1]
+    notes = [f"window xmin = {_cell(xmin)}, ymin = {_cell(ymin)}, xmax = {_cell(xmax)}, "
+             f"ymax = {_cell(ymax)}; dx = {_cell(dx)}, dy = {_cell(dy)}",
+             "p_k < 0: entering, u1 = max(u1, q/p); p_k > 0: leaving, u2 = min(u2, q/p); "
+             "p_k = 0 and q_k < 0: parallel and outside",
+             line]
+    t = Table(f"Liang-Barsky clip ({_cell(seg[0])}, {_cell(seg[1])}) -> "
+              f"({_cell(seg[2])}, {_cell(seg[3])})",
+              ["k", "edge", "p", "q", "t", "kind", "u1", "u2"], rows, notes)
+    t.result = result
+    return t
+
+
+def cyrus_beck(x0, y0, x1, y1, window=DEFAULT_WINDOW, window_polygon=None):
+    """Cyrus-Beck step by step, as the notes' Table 1: for each clip edge i its
+    outward normal N_i, the point PE_i (the edge's first vertex), P0 - PE_i,
+    N_i.D, t = N_i.(P0 - PE_i) / -N_i.D, and whether the crossing is potentially
+    entering (N_i.D < 0) or leaving (N_i.D > 0); t_E and t_L so far.
+
+    ``window`` is a rectangle or a convex polygon (either orientation; it is
+    walked counterclockwise); ``window_polygon``, if given, is the polygon as a
+    flat list x0, y0, x1, y1, ... (the command line's ``--window-polygon``).
+
+    >>> t = cyrus_beck(-5, 2, 15, 12, window=(0, 0, 10, 10))
+    >>> [(r["edge"], r["N"], r["t"], r["kind"]) for r in t.rows]
+    [(1, '(0, -1)', -0.2, 'PE (entering)'), (2, '(1, 0)', 0.75, 'PL (leaving)'), (3, '(0, 1)', 0.8, 'PL (leaving)'), (4, '(-1, 0)', 0.25, 'PE (entering)')]
+    >>> t.result
+    (0.0, 4.5, 10.0, 9.5)
+    """
+    if window_polygon is not None:
+        flat = list(window_polygon)
+        if len(flat) % 2:
+            raise v.ArgumentValueError(
+                f"window_polygon must list x, y pairs (an even count of numbers), got "
+                f"{len(flat)} numbers")
+        window = [flat[i:i + 2] for i in range(0, len(flat), 2)]
+    ring = w.polygon(window, convex=True, algorithm="Cyrus-Beck")
+    normals = w.outward_normals(ring)
+    seg, ok, out, log = _run(2, x0, y0, x1, y1, ring, len(ring), k.PARAM_COLUMNS, normals)
+    dx, dy = seg[2] - seg[0], seg[3] - seg[1]
+    rows = []
+    for kk, p, q, r, kind, u1, u2 in log.tolist():
+        i = int(kk) - 1
+        a = ring[i]
+        nx, ny = normals[i]
+        rows.append({"edge": int(kk), "N": _vector(nx, ny), "PE": _vector(*a),
+                     "P0 - PE": _vector(seg[0] - a[0], seg[1] - a[1]), "N.D": p,
+                     "t": None if np.isnan(r) else r, "kind": _KINDS[int(kind)],
+                     "t_E": u1, "t_L": u2})
+    result, line = _result(ok, out)
+    notes = [f"window (counterclockwise): "
+             + ", ".join(_vector(*pt) for pt in ring),
+             f"D = P1 - P0 = {_vector(dx, dy)}; N_i = outward normal of the edge from "
+             "PE_i to the next vertex",
+             "N.D < 0: PE, t_E = max(t_E, t); N.D > 0: PL, t_L = min(t_L, t); "
+             "visible from t_E to t_L if t_E <= t_L",
+             line]
+    t = Table(f"Cyrus-Beck clip ({_cell(seg[0])}, {_cell(seg[1])}) -> "
+              f"({_cell(seg[2])}, {_cell(seg[3])})",
+              ["edge", "N", "PE", "P0 - PE", "N.D", "t", "kind", "t_E", "t_L"], rows, notes)
+    t.result = result
+    return t

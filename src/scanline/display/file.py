@@ -89,7 +89,7 @@ class DisplayFile:
     >>> fb = sl.FrameBuffer(8, 4, mode="1")
     >>> df.draw(fb)
     >>> print(sl.text_image(fb))
-    -------#
+    ------##
     ----##--
     --##----
     ##------
@@ -269,7 +269,7 @@ class DisplayFile:
         attrs["closed"] = _flag("closed", closed)
         self._add("polyline", {"points": self._ndc(pts)}, attrs)
 
-    def polygon(self, contours, color="white", rule="even-odd", style=None, edge=None,
+    def polygon(self, points, color="white", rule="even-odd", style=None, edge=None,
                 **line):
         """Append a fill area: one contour or several (holes combine by ``rule``).
 
@@ -277,12 +277,12 @@ class DisplayFile:
         ``"hatch:45:8"``); ``edge`` an optional outline color drawn with the line
         attributes ``line``.
         """
-        cs = p.contours("points", contours)
+        cs = p.contours("points", points)
         attrs = {
             "color": p.color("color", color),
             "rule": v.choice("rule", rule, p.RULES),
             "style": p.fill_style("style", style),
-            "edge": None if edge is None else p.line_attributes(edge, prefix="edge ", **line),
+            "edge": None if edge is None else p.line_attributes(edge, color_name="edge", **line),
         }
         self._add("polygon", {"contours": [self._ndc(c) for c in cs]}, attrs)
 
@@ -303,9 +303,10 @@ class DisplayFile:
             attrs.update(p.line_attributes(color, **line), closed=True)
         self._add("ellipse", {"center": self._ndc(c)[0], "axes": lin @ axes}, attrs)
 
-    def circle(self, center, r, color="white", fill=False, **attributes):
+    def circle(self, center, radius, color="white", fill=False, **attributes):
         """Append a circle (an ellipse with equal semi-axes)."""
-        self.ellipse(center, r, r, 0.0, color, fill, **attributes)
+        radius = p._nonnegative("radius", radius)
+        self.ellipse(center, radius, radius, 0.0, color, fill, **attributes)
 
     def text(self, position, string, height=1.0, angle=0.0, color="white", font="stroke",
              align=("left", "base"), expansion=1.0, spacing=0.0, path="right",
@@ -321,21 +322,7 @@ class DisplayFile:
         if not isinstance(string, str):
             raise ArgumentTypeError(f"string must be a str, got {v._show(string)}")
         pos = p.points("position", [position], 1)
-        if not (isinstance(align, (tuple, list)) and len(align) == 2):
-            raise ArgumentValueError(
-                f"align must be a pair (horizontal, vertical) such as ('left', 'base'), "
-                f"got {v._show(align)}"
-            )
-        attrs = {
-            "color": p.color("color", color),
-            "font": v.choice("font", font, p.FONTS),
-            "align": (v.choice("align[0]", align[0], p.HORIZONTAL),
-                      v.choice("align[1]", align[1], p.VERTICAL)),
-            "expansion": p._positive("expansion", expansion),
-            "spacing": v.number("spacing", spacing),
-            "path": v.choice("path", path, p.TEXT_PATHS),
-            "clip": v.choice("clip", clip, p.TEXT_CLIPS),
-        }
+        attrs = p.text_attributes(color, font, align, expansion, spacing, path, clip)
         frame = self._normalization[:2, :2] @ p.text_frame(p._positive("height", height),
                                                            v.number("angle", angle))
         self._add("text", {"anchor": self._ndc(pos)[0], "frame": frame, "string": string},
@@ -345,9 +332,7 @@ class DisplayFile:
         """Append polymarkers: ``kind`` one of dot, plus, asterisk, circle, cross
         (GKS types 1-5), ``size`` in device units (markers do not scale)."""
         pts = p.points("points", points, 1)
-        attrs = {"color": p.color("color", color),
-                 "kind": v.choice("kind", kind, p.MARKERS),
-                 "size": p._positive("size", size)}
+        attrs = p.marker_attributes(kind, size, color)
         self._add("markers", {"points": self._ndc(pts)}, attrs)
 
     # -- drawing ----------------------------------------------------------------------------

@@ -55,9 +55,10 @@ def _area(prim, rect, device, where):
     return clipped
 
 
-def _primitive(prim, rect, device, where):
-    """Draw one primitive (already in device coordinates); return the point arrays
-    drawn, for the highlight frame."""
+def draw_primitive(prim, rect, device, where):
+    """Draw one primitive (already in device coordinates) clipped to ``rect`` (a
+    rectangle or a convex polygon, see :func:`pipeline.inside`); return the point
+    arrays drawn, for the highlight frame.  ``where`` names it in error messages."""
     kind, g, a = prim.kind, prim.geometry, prim.attributes
     if kind == "ellipse":
         ring = pipeline.ellipse_points(g["center"], g["axes"])
@@ -76,9 +77,8 @@ def _primitive(prim, rect, device, where):
     if kind == "markers":
         _check_range(g["points"], where)
         pts = g["points"]
-        keep = ((pts[:, 0] >= rect[0]) & (pts[:, 0] <= rect[2])
-                & (pts[:, 1] >= rect[1]) & (pts[:, 1] <= rect[3]))
-        segments = pipeline.marker_segments(pts[keep], a["kind"], a["size"])
+        segments = pipeline.marker_segments(pts[pipeline.inside(pts, rect)], a["kind"],
+                                            a["size"])
         pieces = [s.reshape(2, 2) for s in segments]
         pieces = [q for s in pieces for q in pipeline.polylines(s, False, rect)[0]]
         if pieces:
@@ -122,7 +122,7 @@ def interpret(display_file, device, highlight="magenta"):
                 device_rectangle(ws, prim.clip), frame)
             if rect is not None:
                 where = f"segment {seg.name!r}, primitive {i} ({prim.kind})"
-                drawn += _primitive(prim.transformed(m), rect, device, where)
+                drawn += draw_primitive(prim.transformed(m), rect, device, where)
         if seg.highlighted and drawn:
             _frame(np.vstack(drawn), frame, device, highlight)
 

@@ -49,25 +49,36 @@ def marker_segments(points, kind, size):
     return (offsets[:, None, :] + size * ring[None, :, :]).reshape(-1, 4)
 
 
-def polylines(pts, closed, rect):
-    """Clip one polyline to ``rect``: a list of (K, 2) pieces and whether the result
-    is still one closed ring."""
+def inside(pts, window):
+    """Which points lie in the window: a rectangle (xmin, ymin, xmax, ymax) or a
+    convex polygon (M, 2), counterclockwise; the boundary counts as inside."""
+    if isinstance(window, tuple):
+        return ((pts[:, 0] >= window[0]) & (pts[:, 0] <= window[2])
+                & (pts[:, 1] >= window[1]) & (pts[:, 1] <= window[3]))
+    a, b = window, np.roll(window, -1, axis=0)
+    cross = ((b[:, 0] - a[:, 0]) * (pts[:, 1, None] - a[:, 1])
+             - (b[:, 1] - a[:, 1]) * (pts[:, 0, None] - a[:, 0]))
+    return (cross >= 0).all(axis=1)
+
+
+def polylines(pts, closed, window):
+    """Clip one polyline to ``window`` (see :func:`inside`): a list of (K, 2) pieces
+    and whether the result is still one closed ring."""
     ring = np.vstack([pts, pts[:1]]) if closed and len(pts) > 1 else pts
-    inside = (len(pts) > 0 and (ring[:, 0] >= rect[0]).all() and (ring[:, 0] <= rect[2]).all()
-              and (ring[:, 1] >= rect[1]).all() and (ring[:, 1] <= rect[3]).all())
-    if inside:
+    if len(pts) and inside(ring, window).all():
         return [pts], closed
-    return clipping.polyline(ring, rect), False
+    method = "liang-barsky" if isinstance(window, tuple) else "cyrus-beck"
+    return clipping.polyline(ring, window, method=method), False
 
 
-def contours(cs, rect):
-    """Clip a fill area (contours combined by a fill rule) to ``rect``.
+def contours(cs, window):
+    """Clip a fill area (contours combined by a fill rule) to ``window``.
 
     Sutherland-Hodgman clips each contour; inside a convex window that keeps every
     point's winding number, so both fill rules still hold.  The edges it adds along
     the window boundary enclose no area.
     """
-    return [c for c in clipping.polygon(list(cs), rect, method="sutherland-hodgman")
+    return [c for c in clipping.polygon(list(cs), window, method="sutherland-hodgman")
             if len(c) >= 3]
 
 

@@ -41,6 +41,9 @@ FONTS = ("stroke", "sans")
 HORIZONTAL = ("left", "center", "right")
 VERTICAL = ("top", "cap", "half", "base", "bottom")
 TEXT_PATHS = ("right", "left", "up", "down")
+#: Widest line and largest marker, in device units.
+MAX_WIDTH = 4096.0
+
 #: How text is clipped: the whole string, whole characters, or strokes and pixels.
 TEXT_CLIPS = ("string", "character", "stroke")
 
@@ -87,16 +90,49 @@ def _dash(name, value):
 
 
 def line_attributes(color_="white", width=1.0, cap="butt", join="miter", miter_limit=10.0,
-                    dash=None, dash_phase=0.0, prefix=""):
-    """The validated line attributes (A1's ``LineStyle`` fields) as a dict."""
+                    dash=None, dash_phase=0.0, color_name="color"):
+    """The validated line attributes (A1's ``LineStyle`` fields) as a dict;
+    ``color_name`` is the color's name in messages."""
+    width = _positive("width", width)
+    if width > MAX_WIDTH:
+        raise ArgumentValueError(f"width={width} is too wide; the limit is {MAX_WIDTH}")
     return {
-        "color": color(prefix + "color", color_),
-        "width": _positive(prefix + "width", width),
-        "cap": v.choice(prefix + "cap", cap, CAPS),
-        "join": v.choice(prefix + "join", join, JOINS),
-        "miter_limit": _positive(prefix + "miter_limit", miter_limit),
-        "dash": _dash(prefix + "dash", dash),
-        "dash_phase": v.number(prefix + "dash_phase", dash_phase),
+        "color": color(color_name, color_),
+        "width": width,
+        "cap": v.choice("cap", cap, CAPS),
+        "join": v.choice("join", join, JOINS),
+        "miter_limit": _positive("miter_limit", miter_limit),
+        "dash": _dash("dash", dash),
+        "dash_phase": v.number("dash_phase", dash_phase),
+    }
+
+
+def marker_attributes(kind="plus", size=7.0, color_="white"):
+    """The validated polymarker attributes as a dict."""
+    size = _positive("size", size)
+    if size > MAX_WIDTH:
+        raise ArgumentValueError(f"size={size} is too large; the limit is {MAX_WIDTH}")
+    return {"color": color("color", color_), "kind": v.choice("kind", kind, MARKERS),
+            "size": size}
+
+
+def text_attributes(color_="white", font="stroke", align=("left", "base"), expansion=1.0,
+                    spacing=0.0, path="right", clip="character"):
+    """The validated text attributes (besides height and angle) as a dict."""
+    if not (isinstance(align, (tuple, list)) and len(align) == 2):
+        raise ArgumentValueError(
+            f"align must be a pair (horizontal, vertical) such as ('left', 'base'), "
+            f"got {v._show(align)}"
+        )
+    return {
+        "color": color("color", color_),
+        "font": v.choice("font", font, FONTS),
+        "align": (v.choice("align[0]", align[0], HORIZONTAL),
+                  v.choice("align[1]", align[1], VERTICAL)),
+        "expansion": _positive("expansion", expansion),
+        "spacing": v.number("spacing", spacing),
+        "path": v.choice("path", path, TEXT_PATHS),
+        "clip": v.choice("clip", clip, TEXT_CLIPS),
     }
 
 

@@ -15,8 +15,11 @@ import numpy as np
 from . import pipeline
 
 
-def _inside(box, rect):
-    return box[0] >= rect[0] and box[1] >= rect[1] and box[2] <= rect[2] and box[3] <= rect[3]
+def _inside(box, window):
+    """Whether a glyph box (xmin, ymin, xmax, ymax) lies inside the window."""
+    corners = np.array([(box[0], box[1]), (box[2], box[1]), (box[2], box[3]), (box[0], box[3])],
+                       np.float64)
+    return bool(pipeline.inside(corners, window).all())
 
 
 def glyphs(prim):
@@ -33,22 +36,22 @@ def glyphs(prim):
                        path=a["path"], align=a["align"])
 
 
-def draw(prim, rect, device):
-    """Draw a text primitive clipped to ``rect``; return the point arrays drawn."""
+def draw(prim, window, device):
+    """Draw a text primitive clipped to ``window``; return the point arrays drawn."""
     placed = glyphs(prim)
     mode = prim.attributes["clip"]
-    if mode == "string" and not all(_inside(gl.box, rect) for gl in placed):
+    if mode == "string" and not all(_inside(gl.box, window) for gl in placed):
         return []
     if mode != "stroke":
-        placed = [gl for gl in placed if _inside(gl.box, rect)]
+        placed = [gl for gl in placed if _inside(gl.box, window)]
     color = prim.attributes["color"]
     strokes, contours = [], []
     for gl in placed:
         for s in getattr(gl, "strokes", None) or ():
-            strokes.extend(pipeline.polylines(np.asarray(s, np.float64), False, rect)[0])
+            strokes.extend(pipeline.polylines(np.asarray(s, np.float64), False, window)[0])
         cs = [np.asarray(c, np.float64) for c in getattr(gl, "contours", None) or ()]
         if cs:
-            contours.extend(pipeline.contours(cs, rect))
+            contours.extend(pipeline.contours(cs, window))
     if strokes:
         device.stroke(strokes, False, {"color": color, "width": 1.0, "cap": "round",
                                        "join": "round", "miter_limit": 10.0,

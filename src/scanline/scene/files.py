@@ -1,0 +1,161 @@
+"""Reading and writing scene files: TOML and JSON, one schema.
+
+Parse errors carry the file name and the line (TOML's and JSON's decoders report
+it); :class:`SceneError` keeps them apart from the message so that the command line
+prints ``FILE:LINE: MESSAGE``.  TOML is written by :func:`dumps` (Python reads TOML
+but does not write it; scene data need only tables, arrays of tables, strings,
+numbers, booleans and arrays).
+"""
+
+import json
+import math
+import os
+import re
+import sys
+
+from ..errors import ArgumentValueError
+
+if sys.version_info >= (3, 11):
+    import tomllib
+else:  # pragma: no cover - Python 3.10
+    import tomli as tomllib
+
+#: Formats by file extension.
+FORMATS = {".toml": "toml", ".json": "json"}
+
+
+class SceneError(ArgumentValueError):
+    """A scene file that cannot be used.
+
+    Attributes
+    ----------
+    file : str or None
+        The file name.
+    line : int or None
+        The line, when known (parse errors).
+    path : str or None
+        The key path, e.g. ``segments[2].primitives[0].points``.
+    """
+
+    def __init__(self, message, file=None, line=None, path=None):
+        self.file, self.line, self.path, self.message = file, line, path, message
+        where = ":".join(str(x) for x in (file, line) if x is not None)
+        super().__init__(f"{where}: {message}" if where else message)
+
+
+def format_of(path, format=None):
+    """The format of a file: ``format`` if given, else from the extension."""
+    if format is not None:
+        if format not in ("toml", "json"):
+            raise ArgumentValueError(f"format must be 'toml' or 'json', got {format!r}")
+        return format
+    ext = os.path.splitext(os.fspath(path))[1].lower()
+    if ext not in FORMATS:
+        raise SceneError(f"unknown scene file type {ext!r}; use .toml or .json",
+                         file=os.fspath(path))
+    return FORMATS[ext]
+
+
+def loads(text, format="toml", file=None):
+    """Parse scene text into a dict; errors name ``file`` and the line."""
+    if format == "json":
+        try:
+            data = json.loads(text, parse_constant=_no_constant)
+        except json.JSONDecodeError as error:
+            raise SceneError(f"invalid JSON: {error.msg} (column {error.colno})",
+                             file=file, line=error.lineno) from None
+        except ValueError as error:  # NaN / Infinity
+            raise SceneError(f"invalid JSON: {error}", file=file) from None
+    else:
+        try:
+            data = tomllib.loads(text)
+        except tomllib.TOMLDecodeError as error:
+            message = str(error)
+            found = re.search(r"\(at line (\d+), column (\d+)\)", message)
+            line = int(found.group(1)) if found else None
+            message = re.sub(r"\s*\(at line \d+, column \d+\)", "", message)
+            if found:
+                message += f" (column {found.group(2)})"
+            raise SceneError(f"invalid TOML: {message}", file=file, line=line) from None
+    if not isinstance(data, dict):
+        raise SceneError("a scene must be a table (a JSON object) at the top level",
+                         file=file, line=1)
+    return data
+
+
+def _no_constant(name):
+    raise ValueError(f"{name} is not a number a scene can use")
+
+
+def read(path, format=None):
+    """Read and parse a scene file into a dict."""
+    name = os.fspath(path)
+    fmt = format_of(name, format)
+    try:
+        with open(name, "rb") as f:
+            raw = f.read()
+    except OSError as error:
+        raise SceneError(f"cannot read the file: {error.strerror}", file=name) from None
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError as error:
+        line = raw[:error.start].count(b"\n") + 1
+        raise SceneError("the file is not UTF-8 text", file=name, line=line) from None
+    return loads(text, fmt, name)
+
+
+# -- writing ---------------------------------------------------------------------------------
+def dumps(data, format="toml"):
+    """Scene data (a dict) as TOML or JSON text."""
+    if format == "json":
+        return json.dumps(data, indent=2, allow_nan=False) + "\n"
+    if format != "toml":
+        raise ArgumentValueError(f"format must be 'toml' or 'json', got {format!r}")
+    lines = []
+    _table(data, [], lines)
+    return "\n".join(lines).strip("\n") + "\n"
+
+
+_BARE = re.compile(r"^[A-Za-z0-9_-]+$")
+
+
+def _key(k):
+    return k if _BARE.match(k) else json.dumps(k)
+
+
+def _value(x):
+    if isinstance(x, bool):
+        return "true" if x else "false"
+    if isinstance(x, int):
+        return str(x)
+    if isinstance(x, float):
+        if not math.isfinite(x):
+            raise ArgumentValueError(f"cannot write the number {x!r} in a scene")
+        return repr(x)
+    if isinstance(x, str):
+        return json.dumps(x, ensure_ascii=False)
+    if isinstance(x, (list, tuple)):
+        return "[" + ", ".join(_value(i) for i in x) + "]"
+    if isinstance(x, dict):
+        return "{" + ", ".join(f"{_key(k)} = {_value(v)}" for k, v in x.items()) + "}"
+    raise ArgumentValueError(f"cannot write a {type(x).__name__} in a scene")
+
+
+def _is_tables(x):
+    return isinstance(x, list) and x and all(isinstance(i, dict) for i in x)
+
+
+def _table(d, path, lines):
+    """Key/value lines of table ``d``, then its sub-tables and arrays of tables."""
+    for k, x in d.items():
+        if not isinstance(x, dict) and not _is_tables(x):
+            lines.append(f"{_key(k)} = {_value(x)}")
+    for k, x in d.items():
+        here = path + [_key(k)]
+        if isinstance(x, dict):
+            lines += ["", f"[{'.'.join(here)}]"]
+            _table(x, here, lines)
+        elif _is_tables(x):
+            for item in x:
+                lines += ["", f"[[{'.'.join(here)}]]"]
+                _table(item, here, lines)

@@ -1,0 +1,93 @@
+"""The :class:`Scene`: checked scene data, its display file and its outputs."""
+
+import copy
+import os
+
+from ..display import RasterDevice, SVGDevice, VectorDevice, interpret
+from ..framebuffer import FrameBuffer
+from . import files
+from .files import SceneError
+from .schema import build
+
+#: Output types by extension: raster images, SVG, and the vector listing.
+OUTPUTS = {".png": "raster", ".gif": "raster", ".bmp": "raster", ".svg": "svg",
+           ".txt": "listing", ".vec": "listing"}
+
+
+class Scene:
+    """A checked scene.
+
+    Parameters
+    ----------
+    data : dict
+        The scene's data as parsed from TOML or JSON.
+    file : str, optional
+        The file it came from, named in error messages.
+
+    Attributes
+    ----------
+    data : dict
+        A copy of the data.
+    canvas
+        ``width``, ``height``, ``background``, ``mode``, ``highlight``.
+    display_file : DisplayFile
+    """
+
+    def __init__(self, data, file=None):
+        try:
+            self.canvas, self.display_file = build(data)
+        except SceneError as error:
+            raise SceneError(error.message, file=file, path=error.path) from None
+        self.data = copy.deepcopy(data)
+        self.file = file
+
+    def raster(self):
+        """The scene drawn on a new :class:`~scanline.FrameBuffer`."""
+        c = self.canvas
+        fb = FrameBuffer(c.width, c.height, mode=c.mode, background=c.background)
+        interpret(self.display_file, RasterDevice(fb), highlight=c.highlight)
+        return fb
+
+    def svg(self):
+        """The scene as an SVG document (text)."""
+        c = self.canvas
+        device = SVGDevice(c.width, c.height, background=c.background)
+        interpret(self.display_file, device, highlight=c.highlight)
+        return device.svg()
+
+    def vector(self):
+        """The scene on a random-scan display: a :class:`~scanline.display.VectorDevice`."""
+        device = VectorDevice(self.canvas.width, self.canvas.height)
+        interpret(self.display_file, device, highlight=self.canvas.highlight)
+        return device
+
+    def render(self, path):
+        """Write the scene to ``path``: ``.png``, ``.gif``, ``.bmp`` (raster), ``.svg``,
+        or ``.txt`` / ``.vec`` (the MOVE/LINE listing).  Atomic: on any error no file
+        is left at ``path``."""
+        from ..framebuffer import write_atomically
+
+        kind = OUTPUTS.get(os.path.splitext(os.fspath(path))[1].lower())
+        if kind is None:
+            raise SceneError(f"cannot write {os.fspath(path)!r}: use one of "
+                             + ", ".join(OUTPUTS))
+        if kind == "raster":
+            self.raster().save(path)
+            return
+        text = self.svg() if kind == "svg" else self.vector().listing()
+        write_atomically(path, lambda f: f.write(text.encode("utf-8")))
+
+    def dumps(self, format="toml"):
+        """The scene's data as TOML or JSON text."""
+        return files.dumps(self.data, format)
+
+
+def loads(text, format="toml", file=None):
+    """A :class:`Scene` from TOML or JSON text."""
+    return Scene(files.loads(text, format, file), file)
+
+
+def load(path, format=None):
+    """A :class:`Scene` from a ``.toml`` or ``.json`` file (or ``format``)."""
+    name = os.fspath(path)
+    return Scene(files.read(name, format), name)

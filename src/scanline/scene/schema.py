@@ -1,0 +1,287 @@
+"""The scene schema, version 1: checking a scene's data and building its display file.
+
+See docs/scene-format.md for the format.  Every error is a :class:`SceneError` whose
+message starts with the key path of the offending value
+(``segments[2].primitives[0].points must be ...``).
+"""
+
+import math
+import numbers
+
+from .. import transform as tf
+from ..display import DisplayFile
+from ..errors import ScanlineError
+from .files import SceneError
+
+#: The schema versions this module reads.
+VERSIONS = (1,)
+
+#: Largest canvas side, in pixels.
+MAX_SIZE = 16384
+
+_CANVAS = {"width", "height", "background", "mode", "highlight"}
+_VIEWPORT = {"name", "window", "viewport", "view_up", "keep_aspect", "clip", "border"}
+_SEGMENT = {"name", "viewport", "priority", "visible", "highlighted", "transform",
+            "primitives"}
+_LINE = {"color", "width", "cap", "join", "miter_limit", "dash", "dash_phase"}
+_AREA = {"color", "rule", "style"}
+#: Keys of each primitive type besides ``type``.
+PRIMITIVES = {
+    "polyline": {"points", "closed"} | _LINE,
+    "polygon": {"points", "edge"} | _AREA | (_LINE - {"color"}),
+    "circle": {"center", "radius", "fill"} | _AREA | _LINE,
+    "ellipse": {"center", "rx", "ry", "angle", "fill"} | _AREA | _LINE,
+    "text": {"position", "string", "height", "angle", "color", "font", "align",
+             "expansion", "spacing", "path", "clip"},
+    "markers": {"points", "kind", "size", "color"},
+}
+#: The keys each primitive type needs.
+REQUIRED = {"polyline": ("points",), "polygon": ("points",), "circle": ("center", "radius"),
+            "ellipse": ("center", "rx", "ry"), "text": ("position", "string"),
+            "markers": ("points",)}
+_STEPS = ("translate", "rotate", "scale", "reflect", "shear", "matrix")
+
+
+def _fail(path, message):
+    raise SceneError(f"{path} {message}", path=path)
+
+
+def _table(value, path, known, required=()):
+    if not isinstance(value, dict):
+        _fail(path, f"must be a table (an object), got {_kind(value)}")
+    for k in value:
+        if k not in known:
+            _fail(f"{path}.{k}" if path else k,
+                  f"is not a known key here; known keys: {', '.join(sorted(known))}")
+    for k in required:
+        if k not in value:
+            _fail(path or "the scene", f"needs the key {k!r}")
+    return value
+
+
+def _kind(value):
+    return {dict: "a table", list: "an array", str: "a string", bool: "a boolean"}.get(
+        type(value), f"a {type(value).__name__}")
+
+
+def _list(value, path):
+    if not isinstance(value, list):
+        _fail(path, f"must be an array, got {_kind(value)}")
+    return value
+
+
+def _join(path, key):
+    return f"{path}.{key}" if path else key
+
+
+def _call(path, function, *args, **kwargs):
+    """Call a display-file function; its errors name the argument, which is the scene
+    key, so the message gets the key path in front."""
+    try:
+        return function(*args, **kwargs)
+    except ScanlineError as error:
+        raise SceneError(f"{path}.{error}" if path else str(error), path=path) from None
+
+
+def angle(value, path):
+    """An angle given as ``{degrees = x}`` or ``{radians = x}`` -> radians."""
+    if isinstance(value, dict) and len(value) == 1 and set(value) <= {"degrees", "radians"}:
+        (unit, x), = value.items()
+        if isinstance(x, numbers.Real) and not isinstance(x, bool) and math.isfinite(x):
+            return math.radians(x) if unit == "degrees" else float(x)
+        _fail(_join(path, unit), f"must be a finite number, got {x!r}")
+    _fail(path, f"must say its unit: {{degrees = 30}} or {{radians = 0.5}}, got {value!r}")
+
+
+def _real(value, path):
+    if isinstance(value, numbers.Real) and not isinstance(value, bool) and math.isfinite(value):
+        return float(value)
+    _fail(path, f"must be a finite number, got {value!r}")
+
+
+def _step(step, path):
+    """One transformation step -> its 3x3 matrix (in world coordinates)."""
+    if not isinstance(step, dict) or len(step) != 1:
+        _fail(path, "must be a table with one key: " + ", ".join(_STEPS)
+              + " (e.g. {translate = [10, 5]})")
+    (name, arg), = step.items()
+    here = _join(path, name)
+    if name == "translate":
+        pair = _list(arg, here)
+        if len(pair) != 2:
+            _fail(here, f"must be [tx, ty], got {arg!r}")
+        return tf.translation(_real(pair[0], f"{here}[0]"), _real(pair[1], f"{here}[1]"))
+    if name == "rotate":
+        a = _table(arg, here, {"degrees", "radians", "pivot"})
+        unit = {k: a[k] for k in a if k != "pivot"}
+        return _call(here, tf.rotation, angle(unit, here), pivot=a.get("pivot"))
+    if name == "scale":
+        if isinstance(arg, dict):
+            a = _table(arg, here, {"factors", "fixed"}, ("factors",))
+            factors, fixed = a["factors"], a.get("fixed")
+        else:
+            factors, fixed = arg, None
+        f = [factors] if isinstance(factors, numbers.Real) else _list(factors, here)
+        if len(f) not in (1, 2):
+            _fail(here, f"must be a factor or [sx, sy], got {factors!r}")
+        return _call(here, tf.scaling, *f, fixed=fixed)
+    if name == "reflect":
+        if isinstance(arg, dict):
+            a = _table(arg, here, {"point", "direction"}, ("point", "direction"))
+            return _call(here, tf.reflection_about_line, a["point"], a["direction"])
+        return _call(here, tf.reflection, arg)
+    if name == "shear":
+        a = _table(arg, here, {"x", "y", "reference"})
+        return _call(here, tf.shear, a.get("x", 0.0), a.get("y", 0.0), a.get("reference"))
+    if name == "matrix":
+        m = _call(here, tf.compose, arg)
+        _call(here, tf.apply, m, (0.0, 0.0))
+        return m
+    _fail(path, f"has an unknown transformation {name!r}; use one of {', '.join(_STEPS)}")
+
+
+def transformation(steps, path):
+    """A list of steps, applied in the order listed (the first acts first)."""
+    m = tf.compose()
+    for i, step in enumerate(_list(steps, path)):
+        m = tf.compose(_step(step, f"{path}[{i}]"), m)
+    return m
+
+
+def _flag(value, path):
+    if isinstance(value, bool):
+        return value
+    _fail(path, f"must be true or false, got {value!r}")
+
+
+class Canvas:
+    """The device: size, background, raster mode, highlight color."""
+
+    def __init__(self, data, path="canvas"):
+        from ..display.primitives import color
+
+        d = _table(data, path, _CANVAS)
+        self.width = _size(d.get("width", 400), f"{path}.width")
+        self.height = _size(d.get("height", 300), f"{path}.height")
+        self.background = _call(path, color, "background", d.get("background", "white"))
+        self.highlight = _call(path, color, "highlight", d.get("highlight", "magenta"))
+        mode = d.get("mode", "RGB")
+        if mode not in ("1", "L", "RGB", "RGBA", "P"):
+            _fail(f"{path}.mode", f"must be one of '1', 'L', 'RGB', 'RGBA', 'P'; got {mode!r}")
+        self.mode = mode
+
+
+def _size(value, path):
+    if isinstance(value, int) and not isinstance(value, bool) and 1 <= value <= MAX_SIZE:
+        return value
+    _fail(path, f"must be an integer from 1 to {MAX_SIZE}, got {value!r}")
+
+
+def build(data):
+    """Check scene data (a dict) and build it: returns (Canvas, DisplayFile)."""
+    d = _table(data, "", {"version", "canvas", "window", "viewports", "segments"},
+               ("version",))
+    if d["version"] not in VERSIONS or isinstance(d["version"], bool):
+        _fail("version", f"must be 1 (the schema this scanline reads), got {d['version']!r}")
+    canvas = Canvas(d.get("canvas", {}))
+    default_window = d.get("window", (-0.5, -0.5, canvas.width - 0.5, canvas.height - 0.5))
+    df = DisplayFile()
+    viewports = _viewports(d.get("viewports"), default_window, df)
+    names = list(viewports)
+    for i, seg in enumerate(_list(d.get("segments", []), "segments")):
+        _segment(seg, f"segments[{i}]", df, viewports, names[0])
+    bottom = min((seg.priority for seg in df.segments), default=0.0) - 1.0
+    for name, v in viewports.items():
+        if v["border"] is not None:
+            _border(df, name, v, bottom)
+    return canvas, df
+
+
+def _viewports(data, default_window, df):
+    if data is None:
+        data = [{"name": "main"}]
+    out = {}
+    for i, v in enumerate(_list(data, "viewports")):
+        path = f"viewports[{i}]"
+        t = _table(v, path, _VIEWPORT)
+        name = t.get("name", f"viewport{i}")
+        if not isinstance(name, str) or not name:
+            _fail(f"{path}.name", f"must be a non-empty string, got {name!r}")
+        if name in out:
+            _fail(f"{path}.name", f"repeats the viewport name {name!r}")
+        window = t.get("window", default_window)
+        keep = _flag(t.get("keep_aspect", False), f"{path}.keep_aspect")
+        clip = _flag(t.get("clip", True), f"{path}.clip")
+        viewing = dict(window=window, viewport=t.get("viewport", (0.0, 0.0, 1.0, 1.0)),
+                       view_up=t.get("view_up", (0.0, 1.0)), keep_aspect=keep, clip=clip)
+        _call(path, df.set_viewing, **viewing)
+        border = t.get("border")
+        if border is not None:
+            from ..display.primitives import color
+
+            _call(path, color, "border", border)
+        out[name] = {"viewing": viewing, "border": border}
+    if not out:
+        _fail("viewports", "must hold at least one viewport")
+    return out
+
+
+def _segment(data, path, df, viewports, default):
+    s = _table(data, path, _SEGMENT, ("name",))
+    name = s["name"]
+    if not isinstance(name, str) or not name:
+        _fail(f"{path}.name", f"must be a non-empty string, got {name!r}")
+    if name in df:
+        _fail(f"{path}.name", f"repeats the segment name {name!r}")
+    vp = s.get("viewport", default)
+    if vp not in viewports:
+        _fail(f"{path}.viewport", f"names no viewport: {vp!r}; viewports: "
+              + ", ".join(repr(k) for k in viewports))
+    df.set_viewing(**viewports[vp]["viewing"])
+    m = transformation(s.get("transform", []), f"{path}.transform")
+    df.create_segment(name)
+    _call(path, df.set_priority, name, s.get("priority", 0.0))
+    _call(path, df.set_visibility, name, _flag(s.get("visible", True), f"{path}.visible"))
+    _call(path, df.set_highlighting, name,
+          _flag(s.get("highlighted", False), f"{path}.highlighted"))
+    _call(f"{path}.transform", df.set_transformation, name, df.world_transformation(m))
+    try:
+        for j, prim in enumerate(_list(s.get("primitives", []), f"{path}.primitives")):
+            _primitive(prim, f"{path}.primitives[{j}]", df)
+    finally:
+        df.close_segment()
+
+
+def _primitive(data, path, df):
+    if not isinstance(data, dict):
+        _fail(path, f"must be a table (an object), got {_kind(data)}")
+    kind = data.get("type")
+    if kind not in PRIMITIVES:
+        _fail(f"{path}.type", f"must be one of {', '.join(PRIMITIVES)}; got {kind!r}")
+    _table(data, path, PRIMITIVES[kind] | {"type"}, REQUIRED[kind])
+    args = {k: x for k, x in data.items() if k != "type"}
+    if "angle" in args:
+        args["angle"] = angle(args["angle"], f"{path}.angle")
+    if "fill" in args:
+        args["fill"] = _flag(args["fill"], f"{path}.fill")
+    if "closed" in args:
+        args["closed"] = _flag(args["closed"], f"{path}.closed")
+    if "align" in args and isinstance(args["align"], list):
+        args["align"] = tuple(args["align"])
+    method = {"polyline": df.polyline, "polygon": df.polygon, "circle": df.circle,
+              "ellipse": df.ellipse, "text": df.text, "markers": df.markers}[kind]
+    _call(path, method, **args)
+
+
+def _border(df, name, viewport, priority):
+    """A segment with the viewport's outline, drawn under everything else."""
+    seg = f"viewport:{name}"
+    if seg in df:
+        raise SceneError(f"the segment name {seg!r} is reserved for the border of "
+                         f"viewport {name!r}", path="segments")
+    view = viewport["viewing"]
+    df.set_viewing(window=(0.0, 0.0, 1.0, 1.0), viewport=(0.0, 0.0, 1.0, 1.0), clip=False)
+    df.create_segment(seg, priority=priority)
+    x0, y0, x1, y1 = (float(c) for c in view["viewport"])
+    df.polyline([(x0, y0), (x1, y0), (x1, y1), (x0, y1)], color=viewport["border"], closed=True)
+    df.close_segment()

@@ -78,21 +78,22 @@ def check_knots(knots, count, order):
     return u
 
 
-def knot_span(knots, order, u):
-    """Index ℓ of the knot span [u_ℓ, u_ℓ₊₁) holding each u, over the whole knot vector.
+def knot_span(knots, u, last=None):
+    """Index ℓ ≤ ``last`` of the knot span [u_ℓ, u_ℓ₊₁) holding each u.
 
-    A u equal to the last knot belongs to the last non-empty span (the curve is closed
-    at its right end).
+    ``last`` (default: the last span of the knot vector; a curve passes n, so that
+    its domain ends at u_{n+1}) is stepped down to a non-empty span, which is closed on
+    the right: a u at its end belongs to it.
     """
     knots = np.asarray(knots, dtype=np.float64)
     u = np.asarray(u, dtype=np.float64)
-    last = len(knots) - 2
+    last = len(knots) - 2 if last is None else last
     while knots[last] >= knots[last + 1]:
         last -= 1
     return np.minimum(np.searchsorted(knots, u, side="right") - 1, last)
 
 
-def basis(knots, order, u):
+def basis(knots, order, u, last=None):
     """All blending functions B_{k,d}(u), k = 0 … n, by the Cox–de Boor recursion.
 
     Parameters
@@ -103,6 +104,8 @@ def basis(knots, order, u):
         d ≥ 1 (degree d − 1).
     u : float or array_like
         Parameters in [u₀, u_{n+d}].
+    last : int, optional
+        The last knot span to use (see :func:`knot_span`); curves pass n.
 
     Returns
     -------
@@ -128,7 +131,7 @@ def basis(knots, order, u):
     flat = u.ravel()
     count = len(knots) - 1  # number of order-1 functions
     b = np.zeros((flat.size, count))
-    b[np.arange(flat.size), knot_span(knots, 1, flat)] = 1.0
+    b[np.arange(flat.size), knot_span(knots, flat, last)] = 1.0
     with np.errstate(divide="ignore", invalid="ignore"):
         for r in range(2, d + 1):
             k = np.arange(count - r + 1)
@@ -235,12 +238,15 @@ class BSpline(Curve):
             out = np.empty((len(u), pts.shape[1]))
             _k.de_boor(pts, self.knots, self.order, np.ascontiguousarray(u), out)
         else:
-            out = basis(self.knots, self.order, u) @ pts
+            out = self._basis(u) @ pts
         return project(out) if self.rational else out
 
     def basis(self, u):
         """The blending functions B_{k,d}(u) of this curve, shape np.shape(u) + (n + 1,)."""
-        return basis(self.knots, self.order, parameters("u", u, self.domain))
+        return self._basis(parameters("u", u, self.domain))
+
+    def _basis(self, u):
+        return basis(self.knots, self.order, u, last=len(self.points) - 1)
 
     def _derivative(self):
         if self.rational:
@@ -279,7 +285,7 @@ class BSpline(Curve):
         pts = self.homogeneous() if self.rational else self.points
         knots = self.knots
         for _ in range(times):
-            span = int(knot_span(knots, d, u))
+            span = int(knot_span(knots, u))
             i = np.arange(span - d + 2, span + 1)
             a = ((u - knots[i]) / (knots[i + d - 1] - knots[i]))[:, None]
             new = (1.0 - a) * pts[i - 1] + a * pts[i]

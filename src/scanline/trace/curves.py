@@ -84,7 +84,7 @@ def cox_de_boor(knots, order, u):
     u = v.number("u", u)
     if not t[0] <= u <= t[-1]:
         raise ArgumentValueError(f"u must lie in [{t[0]:g}, {t[-1]:g}], got {u!r}")
-    span = int(knot_span(t, order, u))
+    span = int(knot_span(t, u))
     rows = []
     for r in range(1, order + 1):
         values = basis(t, r, u)

@@ -565,3 +565,6 @@ def _plain(value):
 
 _BUILDERS = {"solid": _no_arguments, "hollow": _no_arguments,
              "pattern": _pattern_arguments, "hatch": _hatch_arguments}
+
+
+from .linestyle import LineStyle  # noqa: E402  (the line attributes, beside FillStyle)

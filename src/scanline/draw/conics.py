@@ -5,7 +5,9 @@ import numpy as np
 from .. import _validate as v
 from .._kernels import conics as k
 from ..errors import ArgumentValueError
+from . import strokes
 from ._common import colors, target
+
 
 #: Ellipse limits: the decision parameters stay exact in 64-bit integers while
 #: r_x * r_y <= 2**29, and one ellipse takes at most r_x + r_y steps.
@@ -13,7 +15,8 @@ ELLIPSE_AXIS_LIMIT = 2**24
 ELLIPSE_PRODUCT_LIMIT = 2**29
 
 
-def circle(fb, xc, yc, r, color="white"):
+def circle(fb, xc, yc, r, color="white", *, style=None, antialias=False, width=None, cap=None,
+           join=None, miter_limit=None, dash=None, dash_phase=None, pen=None):
     """Draw the circle of radius ``r`` about ``(xc, yc)`` by the midpoint algorithm.
 
     Parameters
@@ -24,6 +27,11 @@ def circle(fb, xc, yc, r, color="white"):
     r : number
         Radius >= 0, rounded to an integer; r = 0 draws the center pixel.
     color : color
+    style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen
+        Line attributes (see :func:`scanline.draw.polyline`).  Width 1: the
+        midpoint pixels, numbered counterclockwise from (xc + r, yc) for a line type,
+        each stamping the pen.  Thicker: the stroke of a closed polygon within 0.1
+        pixel of the circle, filled by the scan-line fill.
 
     Notes
     -----
@@ -51,18 +59,28 @@ def circle(fb, xc, yc, r, color="white"):
     -#---#-
     --###--
     """
+    attrs = strokes.resolve(style, width, cap, join, miter_limit, dash, dash_phase, pen)
+    xc, yc, r = v.coordinate("xc", xc), v.coordinate("yc", yc), v.radius("r", r)
+    if not strokes.plain(attrs, antialias):
+        strokes.conics(fb, np.array([[xc, yc, r, r]], np.int64), color, attrs, antialias)
+        return
     buf, packed, width, height = target(fb)
-    k.draw_circle(buf, packed, width, height, v.coordinate("xc", xc), v.coordinate("yc", yc),
-                  v.radius("r", r), fb.pixel(color))
+    k.draw_circle(buf, packed, width, height, xc, yc, r, fb.pixel(color))
 
 
-def circles(fb, circles, color="white"):
+def circles(fb, circles, color="white", *, style=None, antialias=False, width=None, cap=None,
+            join=None, miter_limit=None, dash=None, dash_phase=None, pen=None):
     """Draw N circles in one compiled call; ``circles`` has rows ``(xc, yc, r)``.
 
-    ``color`` is one color or one per circle (see :func:`line` and :func:`lines`).
+    ``color`` is one color or one per circle (see :func:`line` and :func:`lines`);
+    the line attributes are those of :func:`circle`, for every circle.
     """
-    buf, packed, width, height = target(fb)
+    attrs = strokes.resolve(style, width, cap, join, miter_limit, dash, dash_phase, pen)
     arr = v.coordinate_array("circles", circles, 3, radius_columns=(2,))
+    if not strokes.plain(attrs, antialias):
+        strokes.conics(fb, arr[:, [0, 1, 2, 2]], color, attrs, antialias)
+        return
+    buf, packed, width, height = target(fb)
     k.draw_circles(buf, packed, width, height, arr, colors(fb, color, len(arr)))
 
 
@@ -75,7 +93,8 @@ def _check_ellipse(rx, ry, name="rx * ry"):
         )
 
 
-def ellipse(fb, xc, yc, rx, ry, color="white"):
+def ellipse(fb, xc, yc, rx, ry, color="white", *, style=None, antialias=False, width=None, cap=None,
+            join=None, miter_limit=None, dash=None, dash_phase=None, pen=None):
     """Draw the axis-aligned ellipse with semi-axes ``rx``, ``ry`` about ``(xc, yc)``
     by the midpoint algorithm.
 
@@ -88,6 +107,8 @@ def ellipse(fb, xc, yc, rx, ry, color="white"):
         Semi-axes >= 0, rounded to integers (rx * ry <= 2**29).  ``ry = 0`` or
         ``rx = 0`` draws the degenerate ellipse, a segment; both 0 the center pixel.
     color : color
+    style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen
+        Line attributes, as for :func:`circle`.
 
     Notes
     -----
@@ -117,20 +138,26 @@ def ellipse(fb, xc, yc, rx, ry, color="white"):
     -#-----#-
     --#####--
     """
-    buf, packed, width, height = target(fb)
+    attrs = strokes.resolve(style, width, cap, join, miter_limit, dash, dash_phase, pen)
     rx = v.radius("rx", rx)
     ry = v.radius("ry", ry)
     _check_ellipse(rx, ry)
-    k.draw_ellipse(buf, packed, width, height, v.coordinate("xc", xc), v.coordinate("yc", yc),
-                   rx, ry, fb.pixel(color))
+    xc, yc = v.coordinate("xc", xc), v.coordinate("yc", yc)
+    if not strokes.plain(attrs, antialias):
+        strokes.conics(fb, np.array([[xc, yc, rx, ry]], np.int64), color, attrs, antialias)
+        return
+    buf, packed, width, height = target(fb)
+    k.draw_ellipse(buf, packed, width, height, xc, yc, rx, ry, fb.pixel(color))
 
 
-def ellipses(fb, ellipses, color="white"):
+def ellipses(fb, ellipses, color="white", *, style=None, antialias=False, width=None, cap=None,
+             join=None, miter_limit=None, dash=None, dash_phase=None, pen=None):
     """Draw N ellipses in one compiled call; ``ellipses`` has rows ``(xc, yc, rx, ry)``.
 
-    ``color`` is one color or one per ellipse.
+    ``color`` is one color or one per ellipse; the line attributes are those of
+    :func:`circle`, for every ellipse.
     """
-    buf, packed, width, height = target(fb)
+    attrs = strokes.resolve(style, width, cap, join, miter_limit, dash, dash_phase, pen)
     arr = v.coordinate_array("ellipses", ellipses, 4, radius_columns=(2, 3))
     if len(arr):
         big = (np.maximum(arr[:, 2], arr[:, 3]) > ELLIPSE_AXIS_LIMIT) | (
@@ -138,4 +165,8 @@ def ellipses(fb, ellipses, color="white"):
         if big.any():
             row = int(np.flatnonzero(big)[0])
             _check_ellipse(int(arr[row, 2]), int(arr[row, 3]))
+    if not strokes.plain(attrs, antialias):
+        strokes.conics(fb, arr, color, attrs, antialias)
+        return
+    buf, packed, width, height = target(fb)
     k.draw_ellipses(buf, packed, width, height, arr, colors(fb, color, len(arr)))

@@ -1,7 +1,11 @@
 """Straight lines: ``line`` and ``lines`` (notes, chapter 2, Q.1-Q.3, Q.7)."""
 
+import numpy as np
+
 from .. import _validate as v
 from .._kernels import lines as k
+from ..errors import ArgumentValueError
+from . import strokes
 from ._common import colors, target
 
 METHODS = {"bresenham": k.BRESENHAM, "dda": k.DDA}
@@ -14,7 +18,17 @@ def _method(method):
     return code
 
 
-def line(fb, x0, y0, x1, y1, color="white", method="bresenham"):
+def _attributes_need_bresenham(code):
+    if code != k.BRESENHAM:
+        raise ArgumentValueError(
+            "method='dda' draws plain width-1 solid lines; lines with attributes (width, "
+            "dash, pen, antialias) follow Bresenham's pixels or exact outlines, so leave "
+            "method='bresenham'")
+
+
+def line(fb, x0, y0, x1, y1, color="white", method="bresenham", *, style=None,
+         antialias=False, width=None, cap=None, join=None, miter_limit=None, dash=None,
+         dash_phase=None, pen=None):
     """Draw the line segment from (x0, y0) to (x1, y1), both endpoints included.
 
     Parameters
@@ -28,7 +42,11 @@ def line(fb, x0, y0, x1, y1, color="white", method="bresenham"):
     method : {"bresenham", "dda"}
         ``"bresenham"``: integer decision parameter, exact.  ``"dda"``: the digital
         differential analyzer, real increments dx/steps and dy/steps rounded to the
-        nearest pixel at each step.
+        nearest pixel at each step.  Line attributes other than the plain width-1
+        solid line use Bresenham's pixels.
+    style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen
+        Line attributes, as :func:`scanline.draw.polyline` takes them (a thick,
+        dashed, pen-drawn or antialiased line is the polyline of its two endpoints).
 
     Notes
     -----
@@ -58,15 +76,23 @@ def line(fb, x0, y0, x1, y1, color="white", method="bresenham"):
     --##--
     ##----
     """
-    buf, packed, width, height = target(fb)
     code = _method(method)
+    attrs = strokes.resolve(style, width, cap, join, miter_limit, dash, dash_phase, pen)
+    if not strokes.plain(attrs, antialias):
+        _attributes_need_bresenham(code)
+        points = [(v.number("x0", x0), v.number("y0", y0)), (v.number("x1", x1), v.number("y1", y1))]
+        strokes.polyline(fb, points, color, style=attrs, antialias=antialias)
+        return
+    buf, packed, width, height = target(fb)
     k.draw_line(buf, packed, width, height,
                 v.coordinate("x0", x0), v.coordinate("y0", y0),
                 v.coordinate("x1", x1), v.coordinate("y1", y1),
                 fb.pixel(color), code)
 
 
-def lines(fb, segments, color="white", method="bresenham"):
+def lines(fb, segments, color="white", method="bresenham", *, style=None, antialias=False,
+          width=None, cap=None, join=None, miter_limit=None, dash=None, dash_phase=None,
+          pen=None):
     """Draw N line segments in one compiled call.
 
     Parameters
@@ -77,6 +103,8 @@ def lines(fb, segments, color="white", method="bresenham"):
     color : color or list/array of N colors
         One color for all, or one per segment (see :func:`scanline.draw._common.colors`).
     method : {"bresenham", "dda"}
+    style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen
+        Line attributes for every segment (see :func:`line`).
 
     Examples
     --------
@@ -90,7 +118,14 @@ def lines(fb, segments, color="white", method="bresenham"):
     -#-#-
     #---#
     """
-    buf, packed, width, height = target(fb)
     code = _method(method)
+    attrs = strokes.resolve(style, width, cap, join, miter_limit, dash, dash_phase, pen)
+    if not strokes.plain(attrs, antialias):
+        _attributes_need_bresenham(code)
+        segs = strokes.segment_array("segments", segments)
+        strokes.polylines(fb, segs.reshape(-1, 2), color, counts=np.full(len(segs), 2),
+                          style=attrs, antialias=antialias)
+        return
+    buf, packed, width, height = target(fb)
     segs = v.coordinate_array("segments", segments, 4)
     k.draw_lines(buf, packed, width, height, segs, colors(fb, color, len(segs)), code)

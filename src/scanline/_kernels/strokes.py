@@ -1,0 +1,490 @@
+"""Thick lines as filled outlines: segment quadrilaterals, joins and caps (notes,
+syllabus: "Line attributes - Line type. Line width"; Hearn & Baker, section 4-1).
+
+A stroke of half-width ``r`` along a polyline is the union of simple pieces, each a
+counterclockwise contour:
+
+* one rectangle per segment (its sides offset by ``r`` along the segment's normal);
+* one join per interior vertex (every vertex of a closed polyline), on the *outer*
+  side of the turn: a *miter* (pivot, the two outer corners and the tip where the
+  offset sides meet, or a *bevel* triangle when the tip is farther than
+  ``miter_limit * r`` from the pivot), a *bevel* triangle, or a *round* wedge;
+* one cap at each end of an open polyline: *butt* (none), *square* (the end
+  segments extended by ``r``) or *round* (a half disc).
+
+All pieces of one polyline form ONE polygon filled by the scan-line fill
+(``_kernels/polygon.py``) with the nonzero rule: every piece winds +1 around its
+inside, so the winding number is positive exactly on the union, and each pixel of
+the stroke is written once (translucent colors blend once, as they must).
+
+Arcs (round joins and caps) are regular polygons whose vertices lie at radius
+``r * sqrt(d / sin d)`` for an angular step ``d``: the polygon then has the area of
+the circular sector it replaces, and its vertices stay within ``TOLERANCE`` pixel of
+the true circle.
+
+Dashes are made first: :func:`dash_pieces` cuts each polyline into the open
+polylines ("pieces") where the dash pattern is on, carrying the pattern's phase
+across the vertices, and each piece is stroked with caps and joins of its own.
+"""
+
+import math
+
+import numpy as np
+
+from ._jit import helper, kernel
+from .polygon import NONZERO, polygons_loop
+
+CAP_BUTT = 0
+CAP_ROUND = 1
+CAP_SQUARE = 2
+
+JOIN_MITER = 0
+JOIN_ROUND = 1
+JOIN_BEVEL = 2
+
+#: Largest distance (pixels) between an arc and the polygon that replaces it.
+TOLERANCE = 0.1
+
+#: Most polygon steps per half turn of an arc (huge widths).
+MAX_ARC_STEPS = 256
+
+#: A zero-length dash is stored as a piece this long, so that its caps know the
+#: direction of the path.
+EPSILON_DASH = 1e-6
+
+
+@helper
+def arc_step(r):
+    """The angular step of arcs of radius ``r``: chords within TOLERANCE."""
+    if r <= TOLERANCE:
+        return math.pi / 2
+    step = 2.0 * math.acos(1.0 - TOLERANCE / r)
+    return max(step, math.pi / MAX_ARC_STEPS)
+
+
+@helper
+def finish(out, start, nv):
+    """Close the contour ``out[start:nv]``: reverse it if it is clockwise; drop it
+    (return ``start``) if it has no area.  Returns the new vertex count."""
+    area = 0.0
+    for i in range(start, nv):
+        j = i + 1 if i + 1 < nv else start
+        area += out[i, 0] * out[j, 1] - out[j, 0] * out[i, 1]
+    if not abs(area) > 1e-9:
+        return start
+    if area < 0:
+        a = start
+        b = nv - 1
+        while a < b:
+            x = out[a, 0]
+            y = out[a, 1]
+            out[a, 0] = out[b, 0]
+            out[a, 1] = out[b, 1]
+            out[b, 0] = x
+            out[b, 1] = y
+            a += 1
+            b -= 1
+    return nv
+
+
+@helper
+def wedge(out, nv, px, py, ux, uy, vx, vy, sweep, r, pivot):
+    """Append an arc of radius ~``r`` about (px, py) from unit direction (ux, uy)
+    turning by ``sweep`` radians (counterclockwise if positive) to (vx, vy); with
+    ``pivot`` the contour starts at the center (a sector), else it is the arc alone
+    (a disc for a full turn).  Returns the new vertex count."""
+    if pivot:
+        out[nv, 0] = px
+        out[nv, 1] = py
+        nv += 1
+    steps = max(1, int(math.ceil(abs(sweep) / arc_step(r) - 1e-9)))
+    d = sweep / steps
+    rr = r * math.sqrt(abs(d) / math.sin(abs(d)))
+    if not pivot:
+        for i in range(steps):
+            c = math.cos(i * d)
+            s = math.sin(i * d)
+            out[nv, 0] = px + rr * (c * ux - s * uy)
+            out[nv, 1] = py + rr * (s * ux + c * uy)
+            nv += 1
+        return nv
+    # the ends exactly where the neighboring pieces put their corners, so that
+    # shared edges leave no gap: (px + r * ux, ...) and (px + r * vx, ...)
+    out[nv, 0] = px + r * ux
+    out[nv, 1] = py + r * uy
+    nv += 1
+    for i in range(1, steps):
+        c = math.cos(i * d)
+        s = math.sin(i * d)
+        out[nv, 0] = px + rr * (c * ux - s * uy)
+        out[nv, 1] = py + rr * (s * ux + c * uy)
+        nv += 1
+    out[nv, 0] = px + r * vx
+    out[nv, 1] = py + r * vy
+    return nv + 1
+
+
+@helper
+def arc_capacity(r):
+    """Most vertices one wedge or disc of radius ``r`` can take."""
+    return int(math.ceil(2.0 * math.pi / arc_step(r))) + 3
+
+
+@helper
+def distinct(src, a, b, closed, pts):
+    """Copy the vertices ``src[a:b]`` into ``pts`` without consecutive repeats (and,
+    when ``closed``, without a last vertex repeating the first); return the count."""
+    m = 0
+    for i in range(a, b):
+        x = src[i, 0]
+        y = src[i, 1]
+        if m > 0:
+            if pts[m - 1, 0] == x:
+                if pts[m - 1, 1] == y:
+                    continue
+        pts[m, 0] = x
+        pts[m, 1] = y
+        m += 1
+    if closed:
+        while m > 1:
+            if pts[m - 1, 0] != pts[0, 0] or pts[m - 1, 1] != pts[0, 1]:
+                break
+            m -= 1
+    return m
+
+
+@helper
+def direction(pts, m, i):
+    """Unit direction of segment i -> i+1 (indices mod m)."""
+    j = i + 1 if i + 1 < m else 0
+    dx = pts[j, 0] - pts[i, 0]
+    dy = pts[j, 1] - pts[i, 1]
+    n = math.hypot(dx, dy)
+    return dx / n, dy / n
+
+
+@helper
+def join(out, nv, contours, nc, px, py, ax, ay, bx, by, r, kind, miter_limit):
+    """Append the join at (px, py) between unit directions a (in) and b (out)."""
+    cross = ax * by - ay * bx
+    dot = ax * bx + ay * by
+    phi = math.atan2(cross, dot)        # the turn, left positive
+    if phi == 0.0:
+        return nv, nc
+    if phi > 0:                          # left turn: the outer side is the right
+        nax, nay, nbx, nby = ay, -ax, by, -bx
+    else:
+        nax, nay, nbx, nby = -ay, ax, -by, bx
+    start = nv
+    if kind == JOIN_ROUND:
+        nv = wedge(out, nv, px, py, nax, nay, nbx, nby, phi, r, True)
+    else:
+        out[nv, 0] = px
+        out[nv, 1] = py
+        out[nv + 1, 0] = px + r * nax
+        out[nv + 1, 1] = py + r * nay
+        nv += 2
+        half = math.cos(0.5 * phi)
+        if kind == JOIN_MITER and half > 0 and 1.0 / half <= miter_limit:
+            mx = nax + nbx
+            my = nay + nby
+            k = r / (half * math.hypot(mx, my))
+            out[nv, 0] = px + k * mx
+            out[nv, 1] = py + k * my
+            nv += 1
+        out[nv, 0] = px + r * nbx
+        out[nv, 1] = py + r * nby
+        nv += 1
+    nv = finish(out, start, nv)
+    if nv > start:
+        contours[nc] = start
+        nc += 1
+    return nv, nc
+
+
+@helper
+def quad(out, nv, contours, nc, x0, y0, x1, y1, dx, dy, r, before, after):
+    """Append the rectangle of half-width r about segment (x0, y0)-(x1, y1) of unit
+    direction (dx, dy), extended by ``before`` and ``after`` along it."""
+    nx = -dy * r
+    ny = dx * r
+    sx = x0 - before * dx
+    sy = y0 - before * dy
+    ex = x1 + after * dx
+    ey = y1 + after * dy
+    start = nv
+    out[nv, 0] = sx - nx
+    out[nv, 1] = sy - ny
+    out[nv + 1, 0] = ex - nx
+    out[nv + 1, 1] = ey - ny
+    out[nv + 2, 0] = ex + nx
+    out[nv + 2, 1] = ey + ny
+    out[nv + 3, 0] = sx + nx
+    out[nv + 3, 1] = sy + ny
+    nv = finish(out, start, nv + 4)
+    if nv > start:
+        contours[nc] = start
+        nc += 1
+    return nv, nc
+
+
+@helper
+def stroke_piece(pts, m, closed, r, cap, join_kind, miter_limit, out, nv, contours, nc):
+    """Append the contours of the stroke of one polyline ``pts[:m]`` (distinct
+    consecutive vertices).  Returns ``(nv, nc)``."""
+    if m == 0:
+        return nv, nc
+    if m == 1:  # a point: a disc for round caps, an axis-aligned square for square ones
+        start = nv
+        if cap == CAP_ROUND:
+            nv = wedge(out, nv, pts[0, 0], pts[0, 1], 1.0, 0.0, 1.0, 0.0, 2.0 * math.pi, r,
+                       False)
+        elif cap == CAP_SQUARE:
+            nv, nc = quad(out, nv, contours, nc, pts[0, 0], pts[0, 1], pts[0, 0], pts[0, 1],
+                          1.0, 0.0, r, r, r)
+            return nv, nc
+        nv = finish(out, start, nv)
+        if nv > start:
+            contours[nc] = start
+            nc += 1
+        return nv, nc
+    nseg = m if closed else m - 1
+    for i in range(nseg):
+        j = i + 1 if i + 1 < m else 0
+        dx, dy = direction(pts, m, i)
+        before = r if (cap == CAP_SQUARE and not closed and i == 0) else 0.0
+        after = r if (cap == CAP_SQUARE and not closed and i == nseg - 1) else 0.0
+        nv, nc = quad(out, nv, contours, nc, pts[i, 0], pts[i, 1], pts[j, 0], pts[j, 1],
+                      dx, dy, r, before, after)
+    first = 0 if closed else 1
+    last = m - 1 if closed else m - 2
+    for i in range(first, last + 1):
+        h = i - 1 if i > 0 else m - 1
+        ax, ay = direction(pts, m, h)
+        bx, by = direction(pts, m, i)
+        nv, nc = join(out, nv, contours, nc, pts[i, 0], pts[i, 1], ax, ay, bx, by, r,
+                      join_kind, miter_limit)
+    if cap == CAP_ROUND and not closed:
+        dx, dy = direction(pts, m, 0)
+        start = nv
+        nv = wedge(out, nv, pts[0, 0], pts[0, 1], -dy, dx, dy, -dx, math.pi, r, True)
+        nv = finish(out, start, nv)
+        if nv > start:
+            contours[nc] = start
+            nc += 1
+        dx, dy = direction(pts, m, m - 2)
+        start = nv
+        nv = wedge(out, nv, pts[m - 1, 0], pts[m - 1, 1], dy, -dx, -dy, dx, math.pi, r,
+                       True)
+        nv = finish(out, start, nv)
+        if nv > start:
+            contours[nc] = start
+            nc += 1
+    return nv, nc
+
+
+@helper
+def pattern_period(dashes):
+    total = 0.0
+    for i in range(dashes.shape[0]):
+        total += dashes[i]
+    return total
+
+
+@helper
+def dash_pieces(verts, offsets, closed, dashes, phase):
+    """Cut polylines into dashes.
+
+    ``dashes`` holds on/off lengths (even count, positive sum); the pattern starts at
+    arc length ``phase`` on every polyline and runs on across its vertices (and around
+    a closed polyline, whose last dash joins its first when the pattern is on at the
+    start).  Returns ``(pverts, poffsets, pclosed, powner)``: open polylines (a closed
+    one if the pattern never turns off), each with the index of its polyline.
+    """
+    n = offsets.shape[0] - 1
+    period = pattern_period(dashes)
+    nd = dashes.shape[0]
+    # capacity: every dash boundary adds at most two vertices
+    total = 0.0
+    cap_v = 4
+    for p in range(n):
+        a = offsets[p]
+        b = offsets[p + 1]
+        length = 0.0
+        for i in range(a, b - 1):
+            length += math.hypot(verts[i + 1, 0] - verts[i, 0], verts[i + 1, 1] - verts[i, 1])
+        if closed[p] and b - a > 1:
+            length += math.hypot(verts[a, 0] - verts[b - 1, 0], verts[a, 1] - verts[b - 1, 1])
+        total += length
+        cap_v += 2 * (b - a) + 6
+    cycles = total / period + 2.0 * n + 1.0
+    if cycles * nd > 1e9:  # the caller keeps patterns reasonable; never overrun memory
+        cycles = 1e9 / nd
+    cap_v += int(2 * nd * cycles) + 4
+    pv = np.empty((cap_v, 2), np.float64)
+    po = np.empty(cap_v + 1, np.int64)
+    pc = np.zeros(cap_v, np.bool_)
+    pw = np.empty(cap_v, np.int64)
+    nv = 0
+    npc = 0
+    for p in range(n):
+        a = offsets[p]
+        b = offsets[p + 1]
+        if b - a == 0:
+            continue
+        # pattern state at the start: entry k, distance left in it
+        t = phase % period
+        k = 0
+        while t >= dashes[k]:
+            t -= dashes[k]
+            k = (k + 1) % nd
+        left = dashes[k] - t
+        on = k % 2 == 0
+        first_piece = -1
+        starts_on = on
+        if on:
+            po[npc] = nv
+            pw[npc] = p
+            first_piece = npc
+            npc += 1
+            pv[nv, 0] = verts[a, 0]
+            pv[nv, 1] = verts[a, 1]
+            nv += 1
+        count = b - a
+        nseg = count if (closed[p] and count > 1) else count - 1
+        for s in range(nseg):
+            i = a + s
+            j = i + 1 if i + 1 < b else a
+            x0 = verts[i, 0]
+            y0 = verts[i, 1]
+            dx = verts[j, 0] - x0
+            dy = verts[j, 1] - y0
+            seg = math.hypot(dx, dy)
+            pos = 0.0
+            while seg - pos > left and nv < cap_v - 4 and npc < cap_v - 2:
+                pos += left
+                f = pos / seg
+                x = x0 + f * dx
+                y = y0 + f * dy
+                if on:  # the dash ends here
+                    pv[nv, 0] = x
+                    pv[nv, 1] = y
+                    nv += 1
+                    if dashes[k] == 0.0:  # a zero-length dash: give it a direction
+                        pv[nv - 1, 0] = x + EPSILON_DASH * dx / seg
+                        pv[nv - 1, 1] = y + EPSILON_DASH * dy / seg
+                else:   # a dash starts here
+                    po[npc] = nv
+                    pw[npc] = p
+                    npc += 1
+                    pv[nv, 0] = x
+                    pv[nv, 1] = y
+                    nv += 1
+                on = not on
+                k = (k + 1) % nd
+                left = dashes[k]
+            left -= seg - pos
+            if on and nv < cap_v - 2:
+                pv[nv, 0] = verts[j, 0]
+                pv[nv, 1] = verts[j, 1]
+                nv += 1
+        if closed[p] and count > 1 and on and starts_on:
+            if first_piece == npc - 1:      # never off: the whole ring, closed
+                pc[first_piece] = True
+                nv -= 1                      # the ring's start vertex, repeated
+            else:                            # the last dash runs on into the first
+                fa = po[first_piece]
+                fb = po[first_piece + 1]
+                for q in range(fa + 1, min(fb, fa + 1 + cap_v - 1 - nv)):
+                    pv[nv, 0] = pv[q, 0]
+                    pv[nv, 1] = pv[q, 1]
+                    nv += 1
+                pw[first_piece] = -1         # emptied: skipped by the stroker
+    po[npc] = nv
+    return pv, po[:npc + 1], pc[:npc], pw[:npc]
+
+
+@helper
+def build_strokes(verts, offsets, closed, owner, npoly, r, cap, join_kind, miter_limit):
+    """The stroke outlines of polylines ``offsets`` (``owner[i]`` = the polygon
+    polyline ``i`` belongs to, ascending; -1 to skip) as polygon arrays
+    ``(out, contours, polys, max_edges)`` for ``fill_polygons``: polygon ``q`` is
+    made of contours ``polys[q] .. polys[q + 1] - 1``."""
+    n = offsets.shape[0] - 1
+    arc = arc_capacity(r)
+    longest = 1
+    nverts = 0
+    for i in range(n):
+        longest = max(longest, offsets[i + 1] - offsets[i])
+        nverts += offsets[i + 1] - offsets[i]
+    cap_v = nverts * (4 + arc + 1) + n * (2 * arc + 8) + 8
+    cap_c = nverts * 2 + n * 3 + 2
+    out = np.empty((cap_v, 2), np.float64)
+    contours = np.empty(cap_c + 1, np.int64)
+    polys = np.zeros(npoly + 1, np.int64)
+    pts = np.empty((longest, 2), np.float64)
+    nv = 0
+    nc = 0
+    q = 0
+    for i in range(n):
+        o = owner[i]
+        if o < 0:
+            continue
+        while q < o:
+            q += 1
+            polys[q] = nc
+        m = distinct(verts, offsets[i], offsets[i + 1], closed[i], pts)
+        nv, nc = stroke_piece(pts, m, closed[i], r, cap, join_kind, miter_limit, out, nv,
+                              contours, nc)
+    while q < npoly:
+        q += 1
+        polys[q] = nc
+    contours[nc] = nv
+    max_edges = 0
+    for p in range(npoly):
+        max_edges = max(max_edges, contours[polys[p + 1]] - contours[polys[p]])
+    return out[:nv], contours[:nc + 1], polys, max_edges
+
+
+@helper
+def outlines(verts, offsets, closed, r, cap, join_kind, miter_limit, dashes, phase):
+    """Stroke outlines of every polyline (dashed when ``dashes`` is not empty)."""
+    npoly = offsets.shape[0] - 1
+    if dashes.shape[0] == 0:
+        owner = np.arange(npoly)
+        return build_strokes(verts, offsets, closed, owner, npoly, r, cap, join_kind,
+                             miter_limit)
+    pv, po, pc, pw = dash_pieces(verts, offsets, closed, dashes, phase)
+    return build_strokes(pv, po, pc, pw, npoly, r, cap, join_kind, miter_limit)
+
+
+@kernel
+def stroke_outlines(verts, offsets, closed, r, cap, join_kind, miter_limit, dashes, phase):
+    """The outlines of the strokes of half-width ``r`` of the polylines
+    ``verts[offsets[i]:offsets[i + 1]]`` (``closed[i]``), as ``(outline vertices,
+    contour offsets, polygon offsets, max_edges)``: stroke ``i`` is the union of
+    contours ``polys[i] .. polys[i + 1] - 1`` (all counterclockwise)."""
+    return outlines(verts, offsets, closed, r, cap, join_kind, miter_limit, dashes, phase)
+
+
+@kernel
+def draw_strokes(buf, packed, width, height, ox, oy, verts, offsets, closed, colors, r,
+                 cap, join_kind, miter_limit, dashes, phase):
+    """Stroke polylines into the raster whose pixel (0, 0) is device pixel (ox, oy):
+    the outlines of :func:`stroke_outlines` filled with the nonzero rule, polyline
+    ``i`` in ``colors[i]`` (or ``colors[0]`` for all)."""
+    out, contours, polys, max_edges = outlines(verts, offsets, closed, r, cap, join_kind,
+                                               miter_limit, dashes, phase)
+    if packed:
+        polygons_loop(buf, True, width, height, ox, oy, out, contours, polys, colors, NONZERO,
+                      max_edges)
+    else:
+        polygons_loop(buf, False, width, height, ox, oy, out, contours, polys, colors, NONZERO,
+                      max_edges)
+
+
+@kernel
+def dashed_polylines(verts, offsets, closed, dashes, phase):
+    """The dashes of polylines as polylines: ``(vertices, offsets, closed, owner)``
+    (see :func:`dash_pieces`; an owner of -1 marks an emptied piece)."""
+    return dash_pieces(verts, offsets, closed, dashes, phase)

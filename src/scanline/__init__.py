@@ -38,6 +38,8 @@ _LAZY = {
     "attributes": ("scanline.attributes", None),
     "FillStyle": ("scanline.attributes", "FillStyle"),
     "LineStyle": ("scanline.attributes", "LineStyle"),
+    "text": ("scanline.text", None),
+    "TextStyle": ("scanline.text.style", "TextStyle"),
 }
 
 __all__ = sorted(_LAZY) + ["__version__"]

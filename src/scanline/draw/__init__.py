@@ -14,7 +14,8 @@ from .polygon import polygon, polygons
 from .seedfill import boundary_fill, flood_fill
 from .softfill import soft_fill
 from .strokes import polyline, polylines
+from .text import text
 
 __all__ = ["line", "lines", "circle", "circles", "ellipse", "ellipses", "polygon", "polygons",
            "fill_circle", "fill_circles", "fill_ellipse", "fill_ellipses", "arc", "chord", "pie",
-           "flood_fill", "boundary_fill", "soft_fill", "polyline", "polylines"]
+           "flood_fill", "boundary_fill", "soft_fill", "polyline", "polylines", "text"]

@@ -1,0 +1,88 @@
+"""Copying cached glyph images into the frame buffer (the text engine's glyph
+cache: each character rasterized once per size and orientation, then stamped).
+
+A glyph image is a uint8 coverage mask, rows bottom-up: 255 is a pixel inside the
+glyph (0 outside); antialiased masks hold the covered fraction of the pixel times
+255.  Every glyph mask lives in one flat ``atlas`` array: mask ``m`` has ``mw[m]`` x
+``mh[m]`` pixels starting at ``off[m]``, its bottom-left pixel at ``(mx[m], my[m])``
+from the glyph's origin.
+
+Writing a pixel of coverage ``c`` with a color of alpha ``a`` (both 0..255) uses the
+weight ``w = c * a / 255**2``: ``w = 1`` stores the color; otherwise gray and RGB
+channels are mixed ``dst + (src - dst) * w`` and RGBA composites "over"
+(Porter & Duff 1984); bitmaps (mode "1") and color-table images (mode "P") cannot
+mix, so they store the color where ``w >= 1/2``.
+"""
+
+from ._jit import helper, kernel
+from .raster import put_bit
+
+
+@helper
+def _mix(buf, y, x, value, w):
+    n = value.shape[0]
+    if n == 4:
+        da = buf[y, x, 3] / 255.0
+        oa = w + da * (1.0 - w)
+        if oa <= 0.0:
+            return
+        for ch in range(3):
+            out = (value[ch] * w + buf[y, x, ch] * da * (1.0 - w)) / oa
+            buf[y, x, ch] = int(out + 0.5)
+        buf[y, x, 3] = int(oa * 255.0 + 0.5)
+        return
+    for ch in range(n):
+        d = float(buf[y, x, ch])
+        buf[y, x, ch] = int(d + (value[ch] - d) * w + 0.5)
+
+
+@helper
+def _stamp(buf, packed, width, height, atlas, off, mw, mh, mx, my, mids, gx, gy,
+           value, alpha, threshold):
+    for g in range(mids.shape[0]):
+        m = mids[g]
+        if m < 0:
+            continue
+        w = mw[m]
+        x0 = gx[g] + mx[m]
+        y0 = gy[g] + my[m]
+        i0 = max(0, -x0)
+        i1 = min(w, width - x0)
+        j0 = max(0, -y0)
+        j1 = min(mh[m], height - y0)
+        for j in range(j0, j1):
+            y = y0 + j
+            row = off[m] + j * w
+            for i in range(i0, i1):
+                c = atlas[row + i]
+                if c == 0:
+                    continue
+                x = x0 + i
+                weight = c * alpha
+                if packed:
+                    if weight >= 32513:  # 255 * 255 / 2
+                        put_bit(buf, x, y, value[0])
+                elif weight == 65025:
+                    for ch in range(value.shape[0]):
+                        buf[y, x, ch] = value[ch]
+                elif threshold:
+                    if weight >= 32513:
+                        buf[y, x, 0] = value[0]
+                else:
+                    _mix(buf, y, x, value, weight / 65025.0)
+
+
+@kernel
+def stamp_glyphs(buf, packed, width, height, atlas, off, mw, mh, mx, my, mids, gx, gy,
+                 value, alpha, threshold):
+    """Stamp glyph masks ``mids[g]`` with origins ``(gx[g], gy[g])`` (mask ids < 0
+    are skipped).  ``value``: the color's channel values; ``alpha``: its alpha
+    (0..255); ``threshold``: store instead of mixing (mode "P").  Pixels outside
+    the ``width`` x ``height`` raster are never written: each mask is clipped to it
+    first (origins must lie within +-2**30)."""
+    if packed:
+        _stamp(buf, True, width, height, atlas, off, mw, mh, mx, my, mids, gx, gy,
+               value, alpha, threshold)
+    else:
+        _stamp(buf, False, width, height, atlas, off, mw, mh, mx, my, mids, gx, gy,
+               value, alpha, threshold)

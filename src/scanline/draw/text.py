@@ -1,0 +1,132 @@
+"""Drawing text: ``text`` (notes, syllabus: "Character generation"; Hearn & Baker,
+sections 3-14 and 4-5)."""
+
+import numpy as np
+
+from ..color.spec import rgba
+from ..text import glyphcache
+from ..text.layout import place
+from ..text.style import resolve
+from ._common import target
+
+
+def _alpha(color):
+    """The color's alpha (0..255); integers (gray levels, bits, indices) are opaque."""
+    return 255 if isinstance(color, (int, np.integer)) else rgba(color)[3]
+
+
+def _strokes(fb, p, color, antialias):
+    """Stroke font: every stroke segment of every character in one batch of lines."""
+    font = p.font
+    counts = font.first[p.gids + 1] - font.first[p.gids]
+    if counts.sum() == 0:
+        return
+    rows = (np.repeat(font.first[p.gids] - (np.cumsum(counts) - counts), counts)
+            + np.arange(int(counts.sum())))
+    segs = font.segments[rows]
+    origin = np.repeat(np.column_stack([p.ox, p.oy]).astype(float), counts, axis=0)
+    m = p.matrix
+    a = segs[:, :2] @ m.T + origin
+    b = segs[:, 2:] @ m.T + origin
+    if antialias:
+        from . import antialias as aa
+        aa.lines(fb, np.hstack([a, b]), color)
+    else:
+        from .lines import lines
+        lines(fb, np.hstack([a, b]), color=color)
+
+
+def _filled(fb, p, color, antialias):
+    """Outline and bitmap fonts: stamp cached glyph images, or fill the contours of
+    glyphs too large to cache."""
+    cache = glyphcache.images(p.font, p.matrix, antialias, p.tolerance)
+    if cache is None:
+        shapes = []
+        for k, gid in enumerate(p.gids.tolist()):
+            contours = glyphcache.device_contours(p.font, gid, p.matrix, p.tolerance)
+            if contours:
+                shapes.append([c + (p.ox[k], p.oy[k]) for c in contours])
+        if not shapes:
+            return
+        if antialias:
+            from . import antialias as aa
+            aa.fills(fb, shapes, color, "nonzero")
+        else:
+            from .polygon import polygons
+            polygons(fb, shapes, color=color, rule="nonzero")
+        return
+    mids = cache.ensure(p.gids)
+    buf, packed, width, height = target(fb)
+    from .._kernels.text import stamp_glyphs
+    stamp_glyphs(buf, packed, width, height, cache.atlas, cache.off, cache.mw, cache.mh,
+                 cache.mx, cache.my, mids, p.ox, p.oy, fb.pixel(color), _alpha(color),
+                 fb.mode == "P")
+
+
+def text(fb, x, y, text, color=None, font=None, height=None, expansion=None, spacing=None,
+         angle=None, up=None, path=None, align=None, antialias=None, style=None):
+    """Draw a string.
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+    x, y : float
+        The reference point (device coordinates) that ``align`` places the text on;
+        with the default alignment, the left end of the baseline.
+    text : str
+        Newlines start new lines (new columns for paths up and down).  Characters
+        the font lacks are drawn as a box.
+    color : color, optional
+        Default: the style's color, else ``"white"``.  A translucent color is
+        composited over the frame buffer.
+    font : {"sans", "bitmap", "stroke"}, path or Font, optional
+        Default ``"sans"`` (DejaVu Sans).
+    height, expansion, spacing, angle, up, path, align, antialias
+        The text attributes, see :class:`scanline.TextStyle`.  ``height`` is the cap
+        height in pixels; ``spacing`` a fraction of it; ``angle`` radians.
+    style : TextStyle, optional
+        Attributes not given as keywords come from it.
+
+    Notes
+    -----
+    Character generation as in the notes' syllabus and Hearn & Baker, section 3-14:
+    a bitmap font's dots are replicated (or stamped as squares); a stroke font's
+    polylines are drawn with :func:`scanline.draw.lines` (Wu lines when
+    antialiased); an outline font's contours are flattened
+    (:mod:`scanline.geometry.flatten`) and filled by the scan-line fill with the
+    nonzero rule (antialiased: :func:`scanline.draw.antialias.fill`).  Each
+    character's image is made once per font, size and orientation and then
+    stamped (:mod:`scanline.text.glyphcache`).  In mode "1" and "P" an antialiased
+    pixel is set where the coverage is at least one half.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> fb = sl.FrameBuffer(12, 8, mode="1")
+    >>> sl.draw.text(fb, 0, 0, "Hi", font="bitmap")
+    >>> print(sl.text_image(fb))
+    #---#---#---
+    #---#-------
+    #---#--##---
+    #####---#---
+    #---#---#---
+    #---#---#---
+    #---#--###--
+    ------------
+
+    The baseline runs through the centers of row ``y``: pixel centers exactly on a
+    glyph's bottom edge are outside (the fill's top-left rule), so the letters
+    start on row ``y + 1`` and the first row of descenders is row ``y`` itself.
+    """
+    st = resolve(style, font=font, height=height, expansion=expansion, spacing=spacing,
+                 angle=angle, up=up, path=path, align=align, antialias=antialias)
+    color = color if color is not None else st.color if st.color is not None else "white"
+    target(fb)
+    fb.pixel(color)
+    p = place(text, x, y, st)
+    if len(p.gids) == 0:
+        return
+    if p.font.kind == "stroke":
+        _strokes(fb, p, color, st.antialias)
+    else:
+        _filled(fb, p, color, st.antialias)

@@ -1,0 +1,115 @@
+"""The glyph image cache: each glyph scan-converted once per font, size, orientation
+and antialiasing, then stamped wherever the character occurs.
+
+Every text engine works this way (FreeType's and Cairo's glyph caches): a page of
+text holds a few dozen distinct characters repeated thousands of times.  A glyph
+image is made by filling the glyph's contours (flattened outline, or the dot
+squares of the bitmap font) with scanline's own scan-line fill
+(:func:`scanline.draw.polygon`, nonzero rule) -- or, antialiased, with
+:func:`scanline.draw.antialias.fill` -- into a small gray frame buffer.  Because
+layout rounds each character origin to a pixel center, the stamped pixels are
+exactly the pixels a direct fill of the placed contours would set.
+
+Glyphs taller than :data:`MAX_CACHED` pixels are not cached: their contours are
+filled directly in the frame buffer (clipped to it), so huge text costs memory in
+proportion to what is visible.
+"""
+
+from collections import OrderedDict
+
+import numpy as np
+
+#: Tallest glyph image (pixels, the scaled em size) kept in the cache.
+MAX_CACHED = 256
+
+#: How many (font, size, orientation, antialias) caches are kept (least recently
+#: used dropped first).
+MAX_SIZES = 64
+
+_CACHES = OrderedDict()
+
+
+def device_contours(font, gid, matrix, tolerance):
+    """Glyph ``gid``'s contours in device units relative to its origin."""
+    return [c @ matrix.T for c in font._ink(gid, tolerance)]
+
+
+def _render(contours, antialias):
+    """``(x0, y0, w, h, mask)``: the glyph's pixels as a bottom-up uint8 mask whose
+    bottom-left pixel is ``(x0, y0)`` relative to the origin."""
+    from ..framebuffer import FrameBuffer
+    pts = [c for c in contours if len(c)]
+    if not pts:
+        return 0, 0, 0, 0, np.zeros(0, np.uint8)
+    allp = np.vstack(pts)
+    lo, hi = allp.min(0), allp.max(0)
+    pad = 1 if antialias else 0
+    x0 = int(np.ceil(lo[0])) - pad
+    y0 = int(np.floor(lo[1])) + 1 - pad
+    w = int(np.ceil(hi[0])) - 1 + pad - x0 + 1
+    h = int(np.floor(hi[1])) + pad - y0 + 1
+    if w <= 0 or h <= 0:
+        return 0, 0, 0, 0, np.zeros(0, np.uint8)
+    fb = FrameBuffer(w, h, mode="L", background=0)
+    shifted = [c - (x0, y0) for c in pts]
+    if antialias:
+        from ..draw import antialias as aa
+        aa.fill(fb, shifted, 255, rule="nonzero")
+    else:
+        from ..draw.polygon import polygon
+        polygon(fb, shifted, 255, rule="nonzero")
+    return x0, y0, w, h, fb._raster()[0][:, :, 0].ravel().copy()
+
+
+class GlyphImages:
+    """The glyph images of one font at one matrix (size, expansion, angle)."""
+
+    def __init__(self, font, matrix, antialias, tolerance):
+        self.font, self.matrix, self.antialias = font, matrix, antialias
+        self.tolerance = tolerance
+        self.mask_of = np.full(len(font.advances), -1, np.int64)
+        self._parts, self._meta = [], []
+        self.atlas = np.zeros(0, np.uint8)
+        self.off = self.mw = self.mh = self.mx = self.my = np.zeros(0, np.int64)
+
+    def ensure(self, gids):
+        """Render the glyphs among ``gids`` not yet cached; return their mask ids."""
+        ids = self.mask_of[gids]
+        if (ids >= 0).all():
+            return ids
+        for g in np.unique(gids[ids < 0]):
+            x0, y0, w, h, mask = _render(
+                device_contours(self.font, int(g), self.matrix, self.tolerance), self.antialias)
+            self.mask_of[g] = len(self._meta)
+            self._meta.append((x0, y0, w, h))
+            self._parts.append(mask)
+        meta = np.array(self._meta, np.int64).reshape(-1, 4)
+        self.mx, self.my, self.mw, self.mh = (np.ascontiguousarray(meta[:, i]) for i in range(4))
+        sizes = self.mw * self.mh
+        self.off = np.concatenate([[0], np.cumsum(sizes)[:-1]]).astype(np.int64)
+        self.atlas = np.concatenate(self._parts) if self._parts else np.zeros(0, np.uint8)
+        return self.mask_of[gids]
+
+    def bitmap(self, gid):
+        """``(x0, y0, mask)`` of one glyph: ``mask`` a bool array in image order (top
+        row first), its bottom-left pixel at ``(x0, y0)`` from the origin."""
+        m = int(self.ensure(np.array([gid]))[0])
+        x0, y0, w, h = self._meta[m]
+        mask = self.atlas[self.off[m]:self.off[m] + w * h].reshape(h, w)
+        return x0, y0, mask[::-1] > (127 if self.antialias else 0)
+
+
+def images(font, matrix, antialias, tolerance):
+    """The cache for ``font`` at ``matrix`` (2 x 2 font units -> pixels), or None
+    when its glyphs are too large to cache."""
+    if abs(np.linalg.det(matrix)) * font.units_per_em ** 2 > MAX_CACHED ** 2:
+        return None
+    key = (id(font), tuple(np.round(matrix, 9).ravel().tolist()), antialias)
+    hit = _CACHES.get(key)
+    if hit is not None and hit.font is font:
+        _CACHES.move_to_end(key)
+        return hit
+    hit = _CACHES[key] = GlyphImages(font, matrix, antialias, tolerance)
+    if len(_CACHES) > MAX_SIZES:
+        _CACHES.popitem(last=False)
+    return hit

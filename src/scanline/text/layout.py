@@ -1,0 +1,379 @@
+"""Placing characters: text path, spacing, expansion, orientation and alignment
+(notes, syllabus: "Text attributes"; Hearn & Baker, section 4-5).
+
+The layout works in *text space*: u along the baseline, v along the up vector, in
+device units, with the reference point at the origin.  A glyph point ``g`` (font
+units) of the character whose origin is ``(u, v)`` lands at the device point
+
+    p = (x, y) + R(angle) @ ((u, v) + diag(sx, sy) @ g),
+
+with ``sy = height / cap_height`` (font units to pixels), ``sx = expansion * sy``
+and R the rotation by the baseline angle.  Each character origin is then rounded to
+the nearest pixel center, as raster text engines do, so a character looks the same
+wherever it is drawn (and its rasterized image can be cached).
+
+Text path (GKS): ``"right"`` places characters left to right along the baseline,
+``"left"`` right to left, ``"up"`` and ``"down"`` stack them along the up vector,
+each centered on the path.  A newline starts a new line below (paths right and left)
+or a new column to the right (paths up and down).
+
+Alignment (GKS): the *text extent rectangle* of each line runs along the path over
+the characters' advances, across it from the bottom line to the top line.
+Horizontal ``left/center/right`` and vertical ``top/cap/half/base/bottom`` pick the
+point of that rectangle placed on the reference point: for paths right and left the
+horizontal choice applies to each line, the vertical one to the block of lines
+(``top``/``cap`` of the first line, ``base``/``bottom`` of the last); for paths up
+and down the vertical choice applies to each column, the horizontal one to the
+block.
+"""
+
+import math
+
+import numpy as np
+
+from .. import _validate as v
+from ..errors import ArgumentTypeError
+from .fonts import font as resolve_font
+from .fonts import NEWLINE
+from .style import resolve
+
+#: Flattening tolerance of outline glyphs, device pixels.
+TOLERANCE = 0.2
+
+
+class Placement:
+    """The placed characters of a string, as arrays (internal: the drawing path uses
+    it directly; :func:`layout` wraps it in :class:`PlacedGlyph` objects).
+
+    Attributes: ``font``, ``style``, ``sx``, ``sy`` (font units -> pixels),
+    ``rotation`` (2 x 2), ``matrix`` (``rotation @ diag(sx, sy)``), ``gids``,
+    ``index`` (position of each glyph's character in the string), ``ox``, ``oy``
+    (int64 pixel origins), ``corners`` ((4, 2) device corners of the block's extent),
+    ``end`` (the concatenation point: where the next text would start).
+    """
+
+    __slots__ = ("font", "style", "sx", "sy", "rotation", "matrix", "gids", "index",
+                 "ox", "oy", "corners", "end", "tolerance")
+
+
+def codes_of(text):
+    """Code points of a string as an int64 array."""
+    if not isinstance(text, str):
+        raise ArgumentTypeError(f"text must be a str, got {v._show(text)}")
+    return np.frombuffer(text.encode("utf-32-le", "surrogatepass"), np.uint32).astype(np.int64)
+
+
+def _shift(key, options):
+    """Alignment offset: minus the coordinate named by ``key``."""
+    return -options[key]
+
+
+def _segments(line):
+    """Start and end (exclusive) of each run of equal ``line`` ids."""
+    if len(line) == 0:
+        return np.zeros(0, np.int64), np.zeros(0, np.int64)
+    cut = np.flatnonzero(np.diff(line)) + 1
+    return np.concatenate([[0], cut]), np.concatenate([cut, [len(line)]])
+
+
+def _per_line_sum(values, starts, ends):
+    """Inclusive running sum restarting at each line, and each line's total."""
+    run = np.cumsum(values)
+    before = np.where(starts > 0, run[starts - 1], 0.0) if len(run) else np.zeros(0)
+    total = run[ends - 1] - before if len(run) else np.zeros(0)
+    return run - np.repeat(before, ends - starts), total
+
+
+def _horizontal(font, gids, line, nlines, style, sx, sy, gap):
+    """Text-space origins for paths right and left; the block's extent."""
+    adv = font.advances[gids] * sx + gap
+    starts, ends = _segments(line)
+    run, total = _per_line_sum(adv, starts, ends)
+    width = np.zeros(nlines)
+    width[line[starts]] = total - gap
+    if style.path == "right":
+        u = run - adv
+        lo, hi = np.zeros(nlines), width
+    else:
+        u = -(run - gap)
+        lo, hi = -width, np.zeros(nlines)
+    h_align = style.align[0]
+    shift = -{"left": lo, "center": (lo + hi) / 2, "right": hi}[h_align]
+    u = u + shift[line]
+    step = font.line_height * sy
+    base_last = -(nlines - 1) * step
+    cap = font.cap_height * sy
+    levels = {"top": font.ascent * sy, "cap": cap, "half": (cap + base_last) / 2,
+              "base": base_last, "bottom": base_last + font.descent * sy}
+    dv = _shift(style.align[1], levels)
+    v_ = -line * step + dv
+    umin = float((lo + shift).min()) if nlines else 0.0
+    umax = float((hi + shift).max()) if nlines else 0.0
+    extent = (umin, base_last + font.descent * sy + dv, umax, font.ascent * sy + dv)
+    last = nlines - 1
+    end_u = (hi + shift)[last] + gap if style.path == "right" else (lo + shift)[last] - gap
+    return u, v_, extent, (end_u, base_last + dv)
+
+
+def _vertical(font, gids, line, nlines, style, sx, sy, gap):
+    """Text-space origins for paths up and down; the block's extent."""
+    adv = font.advances[gids] * sx
+    step = font.line_height * sy + gap
+    starts, ends = _segments(line)
+    k = np.arange(len(gids)) - np.repeat(starts, ends - starts)
+    count = np.zeros(nlines)
+    count[line[starts]] = ends - starts
+    sign = 1.0 if style.path == "up" else -1.0
+    v_ = sign * k * step
+    top_char = np.where(sign > 0, (count - 1) * step, 0.0)
+    bottom_char = np.where(sign > 0, 0.0, -(count - 1) * step)
+    cap = font.cap_height * sy
+    levels = {"top": top_char + font.ascent * sy, "cap": top_char + cap,
+              "half": (top_char + cap + bottom_char) / 2, "base": bottom_char,
+              "bottom": bottom_char + font.descent * sy}
+    shift_v = _shift(style.align[1], levels)
+    v_ = v_ + shift_v[line]
+    column = font.line_height * sx
+    half = float(adv.max()) / 2 if len(adv) else 0.0
+    lo, hi = -half, (nlines - 1) * column + half
+    du = -{"left": lo, "center": (lo + hi) / 2, "right": hi}[style.align[0]]
+    u = line * column - adv / 2 + du
+    vmin = float((bottom_char + shift_v).min()) + font.descent * sy
+    vmax = float((top_char + shift_v).max()) + font.ascent * sy
+    last = nlines - 1
+    end_v = (top_char + shift_v)[last] + step if sign > 0 else (bottom_char + shift_v)[last] - step
+    return u, v_, (lo + du, vmin, hi + du, vmax), (last * column + du, end_v)
+
+
+def place(text, x, y, style):
+    """Place ``text`` at reference point ``(x, y)`` with a resolved ``style``."""
+    x = v.number("x", x)
+    y = v.number("y", y)
+    if abs(x) > v.COORD_LIMIT or abs(y) > v.COORD_LIMIT:
+        v.coordinate("x", x), v.coordinate("y", y)
+    font = resolve_font(style.font)
+    codes = codes_of(text)
+    newline = codes == NEWLINE
+    line_all = np.cumsum(newline) - newline
+    keep = ~newline
+    index = np.flatnonzero(keep)
+    line = line_all[keep]
+    nlines = int(newline.sum()) + 1
+    gids = font.glyph_ids(codes[keep])
+    height = font.native_height if style.height is None else style.height
+    sy = height / font.cap_height
+    sx = sy * style.expansion
+    gap = style.spacing * height
+    if style.path in ("right", "left"):
+        u, v_, extent, end = _horizontal(font, gids, line, nlines, style, sx, sy, gap)
+    else:
+        u, v_, extent, end = _vertical(font, gids, line, nlines, style, sx, sy, gap)
+    c, s = math.cos(style.angle), math.sin(style.angle)
+    rot = np.array([[c, -s], [s, c]])
+    p = Placement()
+    p.font, p.style, p.sx, p.sy, p.rotation = font, style, sx, sy, rot
+    p.matrix = rot @ np.diag([sx, sy])
+    p.gids, p.index = gids, index
+    fx = x + c * u - s * v_
+    fy = y + s * u + c * v_
+    lim = float(v.COORD_LIMIT)
+    p.ox = np.floor(np.clip(fx, -lim, lim) + 0.5).astype(np.int64)
+    p.oy = np.floor(np.clip(fy, -lim, lim) + 0.5).astype(np.int64)
+    u0, v0, u1, v1 = extent
+    local = np.array([(u0, v0), (u1, v0), (u1, v1), (u0, v1)])
+    p.corners = local @ rot.T + (x, y)
+    p.end = tuple((rot @ np.array(end) + (x, y)).tolist())
+    p.tolerance = TOLERANCE / max(sx, sy)
+    return p
+
+
+def _box(points):
+    return tuple(np.concatenate([points.min(0), points.max(0)]).tolist())
+
+
+class PlacedGlyph:
+    """One character placed by :func:`layout`.
+
+    Attributes
+    ----------
+    char : str
+        The character (the replacement box is drawn for characters the font lacks:
+        ``glyph == font.replacement``).
+    index : int
+        Its position in the string.
+    glyph : int
+        Glyph id in ``font``.
+    font : Font
+    origin : (int, int)
+        Device pixel of the character's origin (left end of its baseline in its
+        cell), rounded to a pixel center.
+    matrix : ndarray, shape (2, 2)
+        Font units -> device units (rotation @ diag(sx, sy)).
+    box : (float, float, float, float) or None
+        ``(xmin, ymin, xmax, ymax)``, device coordinates: the bounding box of the
+        glyph's geometry below (None for a blank glyph such as the space).  Pixel
+        centers inside it are the only ones the glyph can set.
+    cell : (float, float, float, float)
+        Device bounding box of the character body: advance x (bottom line .. top
+        line), rotated.  Use it for all-or-none character clipping.
+    contours : list of (K, 2) float arrays, or None
+        Outline and bitmap fonts: closed contours in device coordinates, to be
+        filled with the nonzero rule (a bitmap glyph's dots are squares).
+    strokes : list of (K, 2) float arrays, or None
+        Stroke font: the polylines, device coordinates.
+    bitmap : bool ndarray (lazy)
+        The pixels :func:`scanline.draw.text` sets for this glyph (without
+        antialiasing), image order (top row first); ``bitmap_origin`` is the
+        device (x, y) of its bottom-left pixel.
+    """
+
+    __slots__ = ("char", "index", "glyph", "font", "origin", "matrix", "box", "cell",
+                 "contours", "strokes", "_tolerance", "_bitmap")
+
+    def __repr__(self):
+        return f"PlacedGlyph({self.char!r}, origin={self.origin}, box={self.box})"
+
+    def _raster(self):
+        if self._bitmap is None:
+            from .glyphcache import GlyphImages, images
+            cache = images(self.font, self.matrix, False, self._tolerance) or GlyphImages(
+                self.font, self.matrix, False, self._tolerance)
+            x0, y0, mask = cache.bitmap(self.glyph)
+            self._bitmap = (mask, (self.origin[0] + x0, self.origin[1] + y0))
+        return self._bitmap
+
+    @property
+    def bitmap(self):
+        return self._raster()[0]
+
+    @property
+    def bitmap_origin(self):
+        return self._raster()[1]
+
+
+def _cell_corners(font, gid, matrix, origin):
+    a = font.advances[gid]
+    local = np.array([(0, font.descent), (a, font.descent), (a, font.ascent),
+                      (0, font.ascent)])
+    return local @ matrix.T + origin
+
+
+def layout(text, x=0.0, y=0.0, *, font=None, height=None, expansion=None, spacing=None,
+           angle=None, up=None, path=None, align=None, style=None):
+    """Place the characters of ``text`` as :func:`scanline.draw.text` would draw
+    them, without drawing.
+
+    Parameters
+    ----------
+    text : str
+        Newlines start new lines (paths right/left) or columns (paths up/down).
+    x, y : float
+        Reference point, device coordinates.
+    font, height, expansion, spacing, angle, up, path, align
+        Text attributes, see :class:`scanline.TextStyle`; they override ``style``.
+    style : TextStyle, optional
+
+    Returns
+    -------
+    list of PlacedGlyph
+        One per character (newlines left out), in string order, each with its
+        ``char``, device ``box`` and geometry (``contours``, ``strokes`` or the
+        lazily rasterized ``bitmap`` + ``bitmap_origin``): what text clipping needs.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> glyphs = sl.text.layout("Hi", 10, 20, font="bitmap")
+    >>> [(g.char, g.origin, g.box) for g in glyphs]
+    [('H', (10, 20), (10.0, 20.0, 15.0, 27.0)), ('i', (16, 20), (17.0, 20.0, 20.0, 27.0))]
+    """
+    p = place(text, x, y, resolve(style, font=font, height=height, expansion=expansion,
+                                  spacing=spacing, angle=angle, up=up, path=path,
+                                  align=align))
+    out = []
+    outline = p.font.kind != "stroke"
+    for k in range(len(p.gids)):
+        g = PlacedGlyph()
+        gid = int(p.gids[k])
+        g.char = text[p.index[k]]
+        g.index = int(p.index[k])
+        g.glyph, g.font, g.matrix = gid, p.font, p.matrix
+        g.origin = (int(p.ox[k]), int(p.oy[k]))
+        ink = [c @ p.matrix.T + g.origin for c in p.font._ink(gid, p.tolerance)]
+        g.contours = ink if outline else None
+        g.strokes = None if outline else ink
+        g.box = _box(np.vstack(ink)) if ink else None
+        g.cell = _box(_cell_corners(p.font, gid, p.matrix, g.origin))
+        g._tolerance = p.tolerance
+        g._bitmap = None
+        out.append(g)
+    return out
+
+
+class Extents:
+    """The result of :func:`extents`.
+
+    Attributes
+    ----------
+    box : (xmin, ymin, xmax, ymax)
+        Device bounding box of the text extent rectangle (see ``corners``).
+    corners : ndarray, shape (4, 2)
+        The text extent rectangle (all lines or columns: along the path over the
+        characters' advances, across it from bottom line to top line), rotated,
+        counterclockwise from its lower-left corner in text space.
+    width, height : float
+        The rectangle's sides along the baseline and the up vector.
+    ink : (xmin, ymin, xmax, ymax) or None
+        Bounding box of the glyphs' geometry (None when every character is blank).
+    advance : (float, float)
+        The concatenation point: where text drawn next along the path would start.
+    """
+
+    __slots__ = ("box", "corners", "width", "height", "ink", "advance")
+
+    def __repr__(self):
+        return (f"Extents(box={self.box}, width={self.width:g}, height={self.height:g}, "
+                f"advance={self.advance})")
+
+
+def extents(text, x=0.0, y=0.0, *, font=None, height=None, expansion=None, spacing=None,
+            angle=None, up=None, path=None, align=None, style=None):
+    """The text-extent query: where :func:`scanline.draw.text` would put ``text``.
+
+    Parameters are those of :func:`layout`.
+
+    Returns
+    -------
+    Extents
+
+    Examples
+    --------
+    The bitmap font advances 6 dots a character (5 dots and a gap); "Hi" at height
+    14 (scale 2), from the bottom line (2 dots below the baseline) to the top line:
+
+    >>> import scanline as sl
+    >>> e = sl.text.extents("Hi", font="bitmap", height=14)
+    >>> e.width, e.height, e.box, e.advance
+    (24.0, 18.0, (0.0, -4.0, 24.0, 14.0), (24.0, 0.0))
+    """
+    p = place(text, x, y, resolve(style, font=font, height=height, expansion=expansion,
+                                  spacing=spacing, angle=angle, up=up, path=path,
+                                  align=align))
+    e = Extents()
+    e.corners = p.corners
+    e.box = _box(p.corners)
+    e.width = float(np.hypot(*(p.corners[1] - p.corners[0])))
+    e.height = float(np.hypot(*(p.corners[3] - p.corners[0])))
+    e.advance = p.end
+    boxes = []
+    for gid in np.unique(p.gids):
+        b = p.font.bounds(int(gid))
+        if b is None:
+            continue
+        sel = p.gids == gid
+        corners = np.array([(b[0], b[1]), (b[2], b[1]), (b[2], b[3]), (b[0], b[3])]) @ p.matrix.T
+        origins = np.column_stack([p.ox[sel], p.oy[sel]]).astype(float)
+        boxes.append(_box((corners[None] + origins[:, None]).reshape(-1, 2)))
+    b = np.array(boxes)
+    e.ink = (b[:, 0].min(), b[:, 1].min(), b[:, 2].max(), b[:, 3].max()) if boxes else None
+    return e

@@ -1,0 +1,201 @@
+"""Outline fonts read from TrueType / OpenType files with fontTools.
+
+fontTools parses the file; scanline does the graphics: each glyph's contours of
+lines and quadratic (``glyf``) or cubic (``CFF``) Bezier segments are flattened by
+:mod:`scanline.geometry.flatten` within a tolerance and filled by the scan-line
+polygon fill with the nonzero winding rule (TrueType and CFF outlines are defined
+by it).  No FreeType, no hinting.
+
+The flattened contours are cached per glyph and per tolerance (rounded down to a
+power of two of font units), so a page of text flattens each distinct glyph once.
+"""
+
+import math
+import os
+import struct
+
+import numpy as np
+from fontTools.pens.basePen import BasePen
+from fontTools.ttLib import TTFont
+
+from ..errors import ArgumentValueError
+from ..geometry import flatten
+from .fonts import Font
+
+
+class _SegmentPen(BasePen):
+    """Collect a glyph's contours as segments: ('L', p), ('Q', p1, p2) and
+    ('C', p1, p2, p3), each continuing from the previous point.  fontTools'
+    BasePen resolves TrueType's implied on-curve points and components."""
+
+    def __init__(self, glyph_set):
+        super().__init__(glyph_set)
+        self.contours = []
+
+    def _moveTo(self, p):
+        self.contours.append((p, []))
+
+    def _lineTo(self, p):
+        self.contours[-1][1].append(("L", p))
+
+    def _qCurveToOne(self, p1, p2):
+        self.contours[-1][1].append(("Q", p1, p2))
+
+    def _curveToOne(self, p1, p2, p3):
+        self.contours[-1][1].append(("C", p1, p2, p3))
+
+
+def flatten_contours(contours, tolerance):
+    """Flatten pen contours ``[(start, segments), ...]`` into (K, 2) float arrays
+    (closed implicitly), all quadratic and all cubic segments in one vectorized
+    call each."""
+    quads, cubics = [], []
+    for start, segs in contours:
+        cur = start
+        for s in segs:
+            if s[0] == "Q":
+                quads.append((cur, s[1], s[2]))
+            elif s[0] == "C":
+                cubics.append((cur, s[1], s[2], s[3]))
+            cur = s[-1]
+    flat = {}
+    for kind, items, degree in (("Q", quads, 3), ("C", cubics, 4)):
+        if items:
+            pts, counts = flatten._flatten("controls", np.array(items, float), degree, tolerance)
+            ends = np.cumsum(counts)
+            flat[kind] = (pts, ends - counts, ends)
+    out = []
+    used = {"Q": 0, "C": 0}
+    for start, segs in contours:
+        pieces = [np.array([start], float)]
+        for s in segs:
+            if s[0] == "L":
+                pieces.append(np.array([s[1]], float))
+            else:
+                pts, first, ends = flat[s[0]]
+                i = used[s[0]]
+                used[s[0]] += 1
+                pieces.append(pts[first[i]:ends[i]])
+        ring = np.vstack(pieces)
+        if len(ring) > 1 and (ring[0] == ring[-1]).all():
+            ring = ring[:-1]
+        if len(ring) >= 3:
+            out.append(ring)
+    return out
+
+
+def _check_tables(path, font):
+    """Every table must lie inside the file (a truncated file fails here, not when
+    a glyph is first drawn) and the tables scanline needs must be present."""
+    size = os.path.getsize(path)
+    for tag, entry in font.reader.tables.items():
+        if entry.offset + entry.length > size:
+            raise ValueError(f"table {tag!r} runs past the end of the file "
+                             f"({entry.offset + entry.length} > {size} bytes): truncated")
+    missing = [t for t in ("head", "hhea", "hmtx", "cmap", "maxp") if t not in font]
+    if "glyf" not in font and "CFF " not in font:
+        missing.append("glyf or CFF")
+    if missing:
+        raise ValueError(f"missing table(s) {', '.join(missing)}")
+
+
+class OutlineFont(Font):
+    """A TrueType (``glyf``) or OpenType (``CFF``) font.
+
+    Parameters
+    ----------
+    path : str
+        The font file.
+    name : str, optional
+        The font's name in scanline (default: the file name).
+    license : str, optional
+
+    Raises
+    ------
+    ArgumentValueError
+        If the file is missing or is not a readable font.
+    """
+
+    kind = "outline"
+
+    def __init__(self, path, name=None, license="see the font file"):
+        super().__init__(name or os.path.basename(path), path, license)
+        if not os.path.isfile(path):
+            raise ArgumentValueError(f"font file {path!r} does not exist")
+        self._flat = {}
+        try:
+            font = TTFont(path, fontNumber=0, lazy=False)
+            _check_tables(path, font)
+            self._read(font)
+        except (ArgumentValueError, MemoryError):
+            raise
+        except Exception as exc:  # fontTools raises many types on corrupt data
+            raise ArgumentValueError(
+                f"font file {path!r} is not a readable TrueType/OpenType font "
+                f"({type(exc).__name__}: {exc})") from None
+
+    def _read(self, font):
+        self._font = font
+        self._glyphs = font.getGlyphSet()
+        order = font.getGlyphOrder()
+        self._names = order
+        head, hhea = font["head"], font["hhea"]
+        self.units_per_em = float(head.unitsPerEm)
+        if not 16 <= self.units_per_em <= 16384:
+            raise ValueError(f"unitsPerEm {head.unitsPerEm} is outside 16..16384")
+        self.ascent = float(hhea.ascent)
+        self.descent = float(min(hhea.descent, 0))
+        self.line_gap = float(max(hhea.lineGap, 0))
+        hmtx = font["hmtx"]
+        self.advances = np.array([hmtx[n][0] for n in order] + [0.0], float)
+        cmap = font.getBestCmap()
+        if not cmap:
+            raise ValueError("no Unicode character map")
+        gid = {n: i for i, n in enumerate(order)}
+        self._table = np.full(0x10000, len(order), np.int64)
+        for code, glyph in cmap.items():
+            if code < 0x10000:
+                self._table[code] = gid[glyph]
+            else:
+                self._extra[code] = gid[glyph]
+        os2 = font["OS/2"] if "OS/2" in font else None
+        self.cap_height = self._metric(os2, "sCapHeight", "H", 0.7)
+        self.x_height = self._metric(os2, "sxHeight", "x", 0.5)
+        t = self.cap_height * 0.08
+        self._box = self._replacement_box(0.1 * self.cap_height, 0.6 * self.cap_height, t)
+        self.advances[-1] = 0.8 * self.cap_height
+
+    def _metric(self, os2, field, char, fraction):
+        value = getattr(os2, field, 0) if os2 is not None else 0
+        if value > 0:
+            return float(value)
+        code = ord(char)
+        if self._table[code] < len(self._names):
+            b = self.bounds(int(self._table[code]))
+            if b is not None and b[3] > 0:
+                return float(b[3])
+        return fraction * self.units_per_em
+
+    def _contours(self, gid):
+        """The pen contours of glyph ``gid``; a glyph fontTools cannot decode is
+        drawn as the replacement box rather than raising mid-string."""
+        pen = _SegmentPen(self._glyphs)
+        try:
+            self._glyphs[self._names[gid]].draw(pen)
+        except (KeyError, IndexError, ValueError, TypeError, AssertionError,
+                struct.error, AttributeError):
+            return None
+        return pen.contours
+
+    def _ink(self, gid, tolerance):
+        """Flattened contours of glyph ``gid`` in font units, within ``tolerance``
+        font units (cached per power-of-two tolerance)."""
+        if gid == self.replacement:
+            return self._box
+        level = math.floor(math.log2(max(tolerance, 1e-6)))
+        key = (gid, level)
+        if key not in self._flat:
+            contours = self._contours(gid)
+            self._flat[key] = (self._box if contours is None
+                               else flatten_contours(contours, 2.0 ** level))
+        return self._flat[key]

@@ -14,8 +14,8 @@ from .polygon import polygon, polygons
 from .seedfill import boundary_fill, flood_fill
 from .softfill import soft_fill
 from .strokes import polyline, polylines
-from .text import text
+from .curve import curve, curves
 
 __all__ = ["line", "lines", "circle", "circles", "ellipse", "ellipses", "polygon", "polygons",
            "fill_circle", "fill_circles", "fill_ellipse", "fill_ellipses", "arc", "chord", "pie",
-           "flood_fill", "boundary_fill", "soft_fill", "polyline", "polylines", "text"]
+           "flood_fill", "boundary_fill", "soft_fill", "polyline", "polylines", "curve", "curves"]

@@ -227,17 +227,28 @@ def _viewports(data, default_window, df):
 
 
 def _segment(data, path, df, viewports, default):
+    """Build one scene segment: one display-file segment per viewport it is shown in
+    (``name`` alone, or ``name@viewport`` when ``viewport`` lists several)."""
     s = _table(data, path, _SEGMENT, ("name",))
     name = s["name"]
     if not isinstance(name, str) or not name:
         _fail(f"{path}.name", f"must be a non-empty string, got {name!r}")
+    shown = s.get("viewport", default)
+    several = isinstance(shown, list)
+    if several and not shown:
+        _fail(f"{path}.viewport", "must name at least one viewport")
+    for k, vp in enumerate(shown if several else [shown]):
+        here = f"{path}.viewport[{k}]" if several else f"{path}.viewport"
+        if not isinstance(vp, str) or vp not in viewports:
+            _fail(here, f"names no viewport: {vp!r}; viewports: "
+                  + ", ".join(repr(k) for k in viewports))
+        _fill_segment(s, f"{name}@{vp}" if several else name, path, df, viewports[vp])
+
+
+def _fill_segment(s, name, path, df, viewport):
     if name in df:
         _fail(f"{path}.name", f"repeats the segment name {name!r}")
-    vp = s.get("viewport", default)
-    if vp not in viewports:
-        _fail(f"{path}.viewport", f"names no viewport: {vp!r}; viewports: "
-              + ", ".join(repr(k) for k in viewports))
-    df.set_viewing(**viewports[vp]["viewing"])
+    df.set_viewing(**viewport["viewing"])
     m = transformation(s.get("transform", []), f"{path}.transform")
     df.create_segment(name)
     _call(path, df.set_priority, name, s.get("priority", 0.0))

@@ -102,6 +102,8 @@ def control_points(name, value, minimum=1):
             f"{name} must be an array of points of shape (n + 1, 2) or (n + 1, 3), got "
             f"{_show(value)}"
         ) from None
+    if a.size == 0 and a.shape[0] < minimum:
+        raise ArgumentValueError(f"{name} must hold at least {minimum} points, got none")
     if a.ndim != 2 or a.shape[1] < 1:
         raise ArgumentValueError(
             f"{name} must be an array of points of shape (n + 1, 2) or (n + 1, 3), got "
@@ -151,7 +153,7 @@ def parameters(name, value, domain):
         ) from None
     lo, hi = domain
     if u.size and not (u.min() >= lo and u.max() <= hi):  # also catches NaN
-        bad = u[~((u >= lo) & (u <= hi))].ravel()[0]
+        bad = float(u[~((u >= lo) & (u <= hi))].ravel()[0])
         raise ArgumentValueError(
             f"{name} must lie in the curve's domain [{lo:g}, {hi:g}]; got {bad!r}"
         )

@@ -1,0 +1,132 @@
+"""Bad input: clear errors naming the argument, never a crash (hypothesis fuzz)."""
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+import scanline as sl
+from scanline.errors import ArgumentTypeError, ArgumentValueError, ScanlineError
+
+
+@pytest.mark.parametrize("points, match", [
+    ([], "points must hold at least 1"),
+    ([1, 2, 3], r"points must be an array of points of shape"),
+    ("abc", "points must be an array"),
+    ([(0, 0), (np.nan, 1)], r"points must be finite; point 1"),
+    ([(0, 0), (np.inf, 1)], r"points must be finite; point 1"),
+])
+def test_bezier_points(points, match):
+    with pytest.raises((ArgumentValueError, ArgumentTypeError), match=match):
+        sl.curves.Bezier(points)
+
+
+def test_bezier_other_arguments():
+    c = sl.curves.Bezier([(0, 0), (1, 1), (2, 0)])
+    for u in (1.5, -0.1, np.nan, [0.2, np.nan]):
+        with pytest.raises(ArgumentValueError, match=r"u must lie in the curve's domain \[0, 1\]"):
+            c.evaluate(u)
+    with pytest.raises(ArgumentTypeError, match="u must be a number"):
+        c.evaluate("half")
+    with pytest.raises(ArgumentValueError, match="method must be one of"):
+        c.evaluate(0.5, method="horner")
+    with pytest.raises(ArgumentValueError, match="weights must be finite and > 0"):
+        sl.curves.Bezier([(0, 0), (1, 1)], weights=[1, -1])
+    with pytest.raises(ArgumentValueError, match="one weight per control point"):
+        sl.curves.Bezier([(0, 0), (1, 1)], weights=[1, 1, 1])
+    with pytest.raises(ArgumentValueError, match="k must be an integer >= 0"):
+        c.derivative(-1)
+    with pytest.raises(ArgumentValueError, match="u must lie"):
+        c.subdivide(2.0)
+
+
+def test_bspline_arguments():
+    P = np.zeros((4, 2))
+    with pytest.raises(ArgumentValueError, match=r"order must satisfy 1 <= order <= number "
+                       r"of control points \(4\).*order=5"):
+        sl.curves.BSpline(P, 5)
+    with pytest.raises(ArgumentTypeError, match="order must be an integer"):
+        sl.curves.BSpline(P, 2.5)
+    with pytest.raises(ArgumentValueError, match=r"knots must hold n \+ d \+ 1 = 8 values"):
+        sl.curves.BSpline(P, 4, knots=[0, 1, 2])
+    with pytest.raises(ArgumentValueError, match=r"knots must be non-decreasing; knots\[2\] = 5"):
+        sl.curves.BSpline(P, 4, knots=[0, 1, 5, 3, 4, 5, 6, 7])
+    with pytest.raises(ArgumentValueError, match="knots must be finite"):
+        sl.curves.BSpline(P, 4, knots=[0, 1, 2, 3, np.nan, 5, 6, 7])
+    with pytest.raises(ArgumentValueError, match="empty parameter range"):
+        sl.curves.BSpline(P, 4, knots=[0] * 8)
+    with pytest.raises(ArgumentValueError, match="knots must be one of"):
+        sl.curves.BSpline(P, 4, knots="clamped")
+    with pytest.raises(ArgumentValueError, match=r"points must be finite; point 2"):
+        sl.curves.BSpline([(0, 0), (1, 1), (np.nan, 0)], 2)
+    c = sl.curves.BSpline(np.random.default_rng(0).normal(size=(6, 2)), 3, knots="uniform")
+    assert c.domain == (2.0, 6.0)
+    with pytest.raises(ArgumentValueError, match=r"u must lie in the curve's domain \[2, 6\]; got 1.0"):
+        c.evaluate([2.5, 1.0])
+    with pytest.raises(ArgumentValueError, match=r"u must lie in \[2, 6\) to insert"):
+        c.insert_knot(6.0)
+
+
+def test_hermite_family_arguments():
+    with pytest.raises(ArgumentValueError, match="tangents must have the shape of points"):
+        sl.curves.Hermite([(0, 0), (1, 1)], [(0, 0, 0), (1, 1, 1)])
+    with pytest.raises(ArgumentValueError, match="points must hold at least 4"):
+        sl.curves.CatmullRom([(0, 0), (1, 1), (2, 0)])
+    with pytest.raises(ArgumentValueError, match="tension must be a finite number or one per point"):
+        sl.curves.KochanekBartels(np.zeros((5, 2)), tension=[0, 1])
+    with pytest.raises(ArgumentValueError, match="continuity must be one of"):
+        sl.curves.piecewise_bezier([(0, 0), (1, 1)], continuity="C3")
+
+
+def test_trace_arguments():
+    with pytest.raises(ArgumentValueError, match=r"u must lie in \[0, 3\]"):
+        sl.trace.cox_de_boor([0, 0, 1, 2, 3, 3], 2, 3.5)
+    with pytest.raises(ArgumentValueError, match="knots must be non-decreasing"):
+        sl.trace.cox_de_boor([0, 2, 1, 3], 2, 1.0)
+    with pytest.raises(ArgumentValueError, match="knots must be at least"):
+        sl.trace.cox_de_boor([0, 1], 2, 0.5)
+    with pytest.raises(ArgumentValueError, match="u must lie"):
+        sl.trace.de_casteljau([(0, 0), (1, 1)], u=2)
+
+
+floats = st.floats(allow_nan=True, allow_infinity=True, width=64)
+
+
+@settings(max_examples=200, deadline=None)
+@given(points=st.lists(st.lists(floats, min_size=2, max_size=2), min_size=1, max_size=7),
+       order=st.integers(-1, 8),
+       knots=st.one_of(st.sampled_from(["open", "uniform", "periodic"]),
+                       st.lists(floats, min_size=0, max_size=14)),
+       u=st.lists(floats, min_size=1, max_size=5),
+       weights=st.one_of(st.none(), st.lists(floats, min_size=1, max_size=7)))
+def test_fuzz_bspline(points, order, knots, u, weights):
+    try:
+        c = sl.curves.BSpline(points, order, knots=knots, weights=weights)
+    except ScanlineError as e:
+        assert isinstance(e, (ArgumentValueError, ArgumentTypeError))
+        assert any(name in str(e) for name in ("points", "order", "knots", "weights"))
+        return
+    try:
+        p = c.evaluate(u)
+    except ArgumentValueError as e:
+        assert str(e).startswith("u must lie")
+        return
+    assert p.shape == (len(u), 2)
+    q = c.evaluate(u, method="cox-de-boor")
+    # same algorithmic answer up to round-off where values are finite
+    ok = np.isfinite(p) & np.isfinite(q)
+    np.testing.assert_allclose(p[ok], q[ok], rtol=1e-6, atol=1e-6 * (1 + np.abs(p[ok]).max(initial=0)))
+
+
+@settings(max_examples=200, deadline=None)
+@given(points=st.lists(st.lists(floats, min_size=3, max_size=3), min_size=0, max_size=8),
+       u=st.one_of(floats, st.lists(floats, max_size=5)),
+       method=st.sampled_from(["de-casteljau", "bernstein", "recursive", "matrix", "x"]))
+def test_fuzz_bezier(points, u, method):
+    try:
+        c = sl.curves.Bezier(points)
+        p = c.evaluate(u, method=method)
+    except ScanlineError as e:
+        assert str(e).split()[0] in ("points", "u", "method")
+        return
+    assert p.shape == np.shape(u) + (3,)

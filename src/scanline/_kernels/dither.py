@@ -1,10 +1,12 @@
 """Dithering kernels: ordered (threshold-matrix) dithering and Floyd-Steinberg error
-diffusion, to evenly spaced levels per channel or to the nearest color of a palette.
+diffusion, to evenly spaced levels or to the nearest color of a palette.
 
-Images are float32 arrays ``src[row, col, channel]`` in image order (row 0 at the
-top) with values in [0, 1]; the kernels write level indices (0 .. levels - 1 per
-channel) or palette indices into a uint8 array ``out`` of the same rows and columns.
-Threshold matrices have power-of-two sides, so that ``row & (n - 1)`` tiles them.
+Images are float32 arrays in image order (row 0 at the top) with values in [0, 1]:
+``src[row, col]`` for one channel (levels: the API calls the kernel once per
+channel, channels are independent) or ``src[row, col, channel]`` for palettes.  The
+kernels write level indices (0 .. levels - 1) or palette indices into a uint8 array
+``out[row, col]``.  Threshold matrices have power-of-two sides, so that
+``row & (n - 1)`` tiles them.
 """
 
 import numpy as np
@@ -14,28 +16,25 @@ from ._jit import helper, kernel
 
 @kernel
 def ordered_levels(src, thresholds, levels, out):
-    """Ordered dithering to ``levels`` evenly spaced levels per channel.
+    """Ordered dithering of one channel to ``levels`` evenly spaced levels.
 
     A value ``v`` lies between levels ``q = floor(v * (levels - 1))`` and ``q + 1``;
     the pixel takes ``q + 1`` when the fraction beyond ``q`` exceeds the threshold
-    ``thresholds[row mod n, col mod m]`` (values in (0, 1)).
+    ``thresholds[row mod n, col mod m]`` (values in (0, 1)).  ``v = 1`` gives the
+    top level (its fraction is 0).
     """
-    height, width, channels = src.shape
+    height, width = src.shape
     row_mask = thresholds.shape[0] - 1
     col_mask = thresholds.shape[1] - 1
-    top = levels - 1
+    top = np.float32(levels - 1)
     for row in range(height):
         trow = thresholds[row & row_mask]
+        srow = src[row]
+        orow = out[row]
         for col in range(width):
-            t = trow[col & col_mask]
-            for k in range(channels):
-                v = src[row, col, k] * top
-                q = int(v)
-                if q >= top:
-                    q = top
-                elif v - q > t:
-                    q += 1
-                out[row, col, k] = q
+            v = srow[col] * top
+            q = np.int32(v)
+            orow[col] = q + (v - np.float32(q) > trow[col & col_mask])
 
 
 @helper
@@ -71,7 +70,7 @@ def ordered_palette(src, thresholds, spread, palette, out):
             offset = np.float32(0.5) - trow[col & col_mask]
             for k in range(channels):
                 want[k] = src[row, col, k] + offset * spread[k]
-            out[row, col, 0] = nearest_color(palette, want)
+            out[row, col] = nearest_color(palette, want)
 
 
 @helper
@@ -85,40 +84,55 @@ def _diffuse(cur, nxt, col, step, k, e):
 
 
 @helper
-def _levels_row(src, out, cur, nxt, row, start, stop, step, top):
-    channels = src.shape[2]
+def _levels_row(src, out, errors, row, start, stop, step, top):
+    """One row of :func:`diffuse_levels`.  ``errors[p]`` (p = col + 1, padded by one
+    column each side) holds the error this row receives from the row above; as the
+    scan passes, the slot it has just read is refilled with the next row's error.
+    The error a pixel passes ahead and the two partial sums below travel in locals,
+    and the rounding is done in floats (the chain from one pixel's value to the
+    next one's is the loop's critical path)."""
+    scale = np.float32(1.0) / top
+    half = np.float32(0.5)
+    zero = np.float32(0.0)
+    ahead = zero       # 7/16 of the previous pixel's error
+    behind = zero      # next row, one pixel back: waits for 3/16 of e
+    below = zero       # next row, under this pixel: waits for 5/16 of e
     for col in range(start, stop, step):
-        for k in range(channels):
-            v = src[row, col, k] + cur[col + 1, k]
-            q = int(np.floor(v * top + np.float32(0.5)))
-            if q < 0:
-                q = 0
-            elif q > top:
-                q = top
-            out[row, col, k] = q
-            _diffuse(cur, nxt, col + 1, step, k, v - np.float32(q) / np.float32(top))
+        p = col + 1
+        v = src[row, col] + ahead + errors[p]
+        if top == np.float32(1.0):           # two levels: a comparison suffices
+            level = np.float32(1.0) if v >= half else zero
+        else:
+            level = min(max(np.floor(v * top + half), zero), top)
+        out[row, col] = np.uint8(level)
+        e = v - level * scale
+        errors[p - step] = behind + e * np.float32(3.0 / 16.0)
+        behind = below + e * np.float32(5.0 / 16.0)
+        below = e * np.float32(1.0 / 16.0)
+        ahead = e * np.float32(7.0 / 16.0)
+    # the last pixel's slot below; its 1/16 beyond the edge is dropped
+    errors[stop - step + 1] = behind
 
 
 @kernel
 def diffuse_levels(src, levels, serpentine, out):
-    """Floyd-Steinberg error diffusion to ``levels`` evenly spaced levels per channel.
+    """Floyd-Steinberg error diffusion of one channel to ``levels`` evenly spaced
+    levels.
 
     Rows are scanned top to bottom, left to right (right to left on odd rows when
     ``serpentine``); each pixel plus the error it received is rounded to the nearest
-    level and its error spread to the unvisited neighbors.  Error that would leave
-    the image is dropped.
+    level (halves up) and its error spread to the unvisited neighbors: 7/16 ahead,
+    3/16 below behind, 5/16 below, 1/16 below ahead.  Error that would leave the
+    image is dropped.
     """
-    height, width, channels = src.shape
-    errors = np.zeros((2, width + 2, channels), np.float32)
-    top = levels - 1
+    height, width = src.shape
+    errors = np.zeros(width + 2, np.float32)
+    top = np.float32(levels - 1)
     for row in range(height):
-        cur = errors[row & 1]
-        nxt = errors[(row + 1) & 1]
-        nxt[:, :] = 0.0
         if serpentine and row & 1:
-            _levels_row(src, out, cur, nxt, row, width - 1, -1, -1, top)
+            _levels_row(src, out, errors, row, width - 1, -1, -1, top)
         else:
-            _levels_row(src, out, cur, nxt, row, 0, width, 1, top)
+            _levels_row(src, out, errors, row, 0, width, 1, top)
 
 
 @helper
@@ -128,7 +142,7 @@ def _palette_row(src, palette, out, cur, nxt, want, row, start, stop, step):
         for k in range(channels):
             want[k] = src[row, col, k] + cur[col + 1, k]
         best = nearest_color(palette, want)
-        out[row, col, 0] = best
+        out[row, col] = best
         for k in range(channels):
             _diffuse(cur, nxt, col + 1, step, k, want[k] - palette[best, k])
 

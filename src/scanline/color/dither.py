@@ -169,24 +169,26 @@ def dither(source, method="floyd-steinberg", levels=None, palette=None, *, mode=
     if table is not None:
         pixels = rgb_image(source)
         floats = table.astype(np.float32) / np.float32(255)
-        out = np.empty(pixels.shape[:2] + (1,), np.uint8)
+        out = np.empty(pixels.shape[:2], np.uint8)
         if method == "floyd-steinberg":
             kernels.diffuse_palette(pixels, floats, bool(serpentine), out)
         else:
             spread = _spread(floats) * (method != "none")
             kernels.ordered_palette(pixels, _thresholds(method), spread, floats, out)
-        return FrameBuffer.from_array(out[:, :, 0], mode="P", color_table=table)
+        return FrameBuffer.from_array(out, mode="P", color_table=table)
 
     pixels = rgb_image(source) if out_mode == "RGB" else gray_image(source)
-    out = np.empty(pixels.shape, np.uint8)
-    if method == "floyd-steinberg":
-        kernels.diffuse_levels(pixels, levels, bool(serpentine), out)
-    else:
-        kernels.ordered_levels(pixels, _thresholds(method), levels, out)
+    out = np.empty((pixels.shape[2],) + pixels.shape[:2], np.uint8)
+    for k in range(pixels.shape[2]):   # channels are independent
+        channel = np.ascontiguousarray(pixels[:, :, k])
+        if method == "floyd-steinberg":
+            kernels.diffuse_levels(channel, levels, bool(serpentine), out[k])
+        else:
+            kernels.ordered_levels(channel, _thresholds(method), levels, out[k])
     if out_mode == "1":
-        return FrameBuffer.from_array(out[:, :, 0].view(bool))
+        return FrameBuffer.from_array(out[0].view(bool))
     values = gray_table(levels)[:, 0][out]
-    return FrameBuffer.from_array(values[:, :, 0] if out_mode == "L" else values)
+    return FrameBuffer.from_array(values[0] if out_mode == "L" else values.transpose(1, 2, 0))
 
 
 def gray_levels(source, n=None, *, bits=None):

@@ -148,7 +148,7 @@ def nearest(colors, table):
         raise ArgumentValueError(f"colors must have 3 components (RGB) on its last axis, got shape {a.shape}")
     palette = color_table(table, "table").astype(np.float32) / np.float32(255)
     flat = np.ascontiguousarray(a.reshape(1, -1, 3))
-    out = np.empty(flat.shape[:2] + (1,), np.uint8)
+    out = np.empty(flat.shape[:2], np.uint8)
     if flat.size:
         kernels.ordered_palette(flat, np.full((1, 1), 0.5, np.float32), np.zeros(3, np.float32),
                                 palette, out)

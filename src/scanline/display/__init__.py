@@ -12,16 +12,16 @@ of a random-scan display) or :class:`SVGDevice`.
 >>> df.create_segment("square")
 >>> df.polyline([(2, 2), (8, 2), (8, 8), (2, 8)], closed=True)
 >>> df.close_segment()
->>> vector = sl.display.VectorDevice(100, 100)
+>>> vector = sl.display.VectorDevice(101, 101)
 >>> sl.display.interpret(df, vector)
 >>> print(vector.listing(), end="")
-; random-scan display file, 100 x 100 device units
+; random-scan display file, 101 x 101 device units
 COLOR 255 255 255 255
-MOVE 19.5 19.5
-LINE 79.5 19.5
-LINE 79.5 79.5
-LINE 19.5 79.5
-LINE 19.5 19.5
+MOVE 20 20
+LINE 80 20
+LINE 80 80
+LINE 20 80
+LINE 20 20
 """
 
 from .devices import RasterDevice, SVGDevice, VectorDevice

@@ -19,7 +19,7 @@ from .. import _validate as v
 from .. import transform as tf
 from ..errors import ArgumentTypeError, ArgumentValueError
 from . import primitives as p
-from .viewing import normalization, ndc_rectangle
+from .viewing import ndc_rectangle, normalization
 
 _UNIT = (0.0, 0.0, 1.0, 1.0)
 
@@ -75,14 +75,21 @@ class DisplayFile:
     Output functions (:meth:`polyline`, :meth:`polygon`, :meth:`circle`,
     :meth:`ellipse`, :meth:`text`, :meth:`markers`) take world coordinates, map them
     to NDC through the current window and viewport, and append the primitive to the
-    open segment.  :func:`scanline.display.interpret` (or :meth:`draw`,
-    :meth:`save`) draws the file on a device.
+    open segment.  :func:`scanline.display.interpret` (or :meth:`draw`) draws the
+    file on a device, mapping the NDC unit square onto the whole device
+    (:func:`scanline.viewing.ndc_to_device`).
+
+    Parameters
+    ----------
+    aspect : float
+        The height / width ratio of the NDC unit square on the intended device,
+        ``(height - 1) / (width - 1)`` pixels; only ``keep_aspect`` viewing uses it.
 
     Examples
     --------
     >>> import scanline as sl
     >>> df = sl.DisplayFile()
-    >>> df.set_viewing(window=(-0.5, -0.5, 7.5, 3.5))  # world units = pixels
+    >>> df.set_viewing(window=(0, 0, 7, 3))   # world units = pixels of an 8 x 4 frame
     >>> df.create_segment("base")
     >>> df.polyline([(0, 0), (7, 3)])
     >>> df.close_segment()
@@ -108,7 +115,10 @@ class DisplayFile:
     the Graphical Kernel System (GKS)*, Academic Press, 1983.
     """
 
-    def __init__(self):
+    def __init__(self, aspect=1.0):
+        self.aspect = v.number("aspect", aspect)
+        if self.aspect <= 0:
+            raise ArgumentValueError(f"aspect must be > 0, got {aspect!r}")
         self._segments = {}
         self._open = None
         self._created = 0
@@ -129,11 +139,13 @@ class DisplayFile:
             The viewport in NDC, inside the unit square.
         view_up : (float, float)
         keep_aspect : bool
-            Keep the window's aspect ratio (the picture is centered in the viewport).
+            Keep the window's aspect ratio (the picture is centered in the viewport)
+            on a device whose NDC square is :attr:`aspect` times as high as wide.
         clip : bool
             Clip later primitives to the viewport (GKS's clipping indicator).
         """
-        self._normalization = normalization(window, viewport, view_up, keep_aspect)
+        self._normalization = normalization(window, viewport, view_up, keep_aspect,
+                                            self.aspect)
         self._clip = ndc_rectangle("viewport", viewport) if clip else None
         if not isinstance(clip, bool):
             raise ArgumentTypeError(f"clip must be True or False, got {v._show(clip)}")

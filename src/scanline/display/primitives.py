@@ -36,8 +36,9 @@ DASHES = ("solid", "dashed", "dotted", "dash-dot")
 RULES = ("even-odd", "nonzero")
 #: GKS polymarker types 1-5.
 MARKERS = ("dot", "plus", "asterisk", "circle", "cross")
-#: Fonts a display file can hold: geometry a vector device can draw too.
-FONTS = ("stroke", "sans")
+#: Fonts a display file can hold (each glyph is strokes or contours, which a vector
+#: device can draw too).
+FONTS = ("stroke", "sans", "bitmap")
 HORIZONTAL = ("left", "center", "right")
 VERTICAL = ("top", "cap", "half", "base", "bottom")
 TEXT_PATHS = ("right", "left", "up", "down")

@@ -4,7 +4,8 @@ The text is laid out by :func:`scanline.text.layout` in device coordinates; each
 glyph's strokes (stroke font) or outline contours (outline font) go to the device, so
 raster and vector output show the same characters.  Clipping follows the text
 primitive's ``clip`` attribute (GKS text precision): ``"string"`` keeps the whole
-string or nothing, ``"character"`` keeps the characters whose boxes lie inside, and
+string or nothing, ``"character"`` keeps the characters whose cells (character
+bodies) lie inside, and
 ``"stroke"`` clips every stroke and outline to the rectangle.
 """
 
@@ -16,7 +17,7 @@ from . import pipeline
 
 
 def _inside(box, window):
-    """Whether a glyph box (xmin, ymin, xmax, ymax) lies inside the window."""
+    """Whether a box (xmin, ymin, xmax, ymax) lies inside the window."""
     corners = np.array([(box[0], box[1]), (box[2], box[1]), (box[2], box[3]), (box[0], box[3])],
                        np.float64)
     return bool(pipeline.inside(corners, window).all())
@@ -40,10 +41,10 @@ def draw(prim, window, device):
     """Draw a text primitive clipped to ``window``; return the point arrays drawn."""
     placed = glyphs(prim)
     mode = prim.attributes["clip"]
-    if mode == "string" and not all(_inside(gl.box, window) for gl in placed):
+    if mode == "string" and not all(_inside(gl.cell, window) for gl in placed):
         return []
-    if mode != "stroke":
-        placed = [gl for gl in placed if _inside(gl.box, window)]
+    if mode == "character":
+        placed = [gl for gl in placed if _inside(gl.cell, window)]
     color = prim.attributes["color"]
     strokes, contours = [], []
     for gl in placed:

@@ -1,32 +1,19 @@
-"""The two mappings of the display file: world -> NDC (normalization) and NDC ->
-device (workstation transformation)."""
-
-import math
+"""The two mappings of the display file, from :mod:`scanline.viewing`: world -> NDC
+(the normalization transformation) and NDC -> device (the workstation
+transformation, :func:`scanline.viewing.ndc_to_device`)."""
 
 import numpy as np
 
 from .. import _validate as v
 from .. import transform as tf
+from .. import viewing
+from ..clip.window import rectangle
 from ..errors import ArgumentTypeError, ArgumentValueError
 
 
-def rectangle(name, value):
-    """(xmin, ymin, xmax, ymax) as floats, with xmin < xmax and ymin < ymax."""
-    if isinstance(value, (str, bytes)) or not hasattr(value, "__len__") or len(value) != 4:
-        raise ArgumentTypeError(
-            f"{name} must be a rectangle (xmin, ymin, xmax, ymax), got {v._show(value)}"
-        )
-    r = tuple(v.number(f"{name}[{i}]", x) for i, x in enumerate(value))
-    if not (r[0] < r[2] and r[1] < r[3]):
-        raise ArgumentValueError(
-            f"{name}={v._show(value)} is degenerate: it needs xmin < xmax and ymin < ymax"
-        )
-    return r
-
-
 def ndc_rectangle(name, value):
-    """A rectangle inside the NDC unit square."""
-    r = rectangle(name, value)
+    """A rectangle (xmin, ymin, xmax, ymax) inside the NDC unit square."""
+    r = rectangle(value, name)
     if min(r) < 0.0 or max(r) > 1.0:
         raise ArgumentValueError(
             f"{name}={v._show(value)} must lie inside the unit square of normalized "
@@ -35,60 +22,37 @@ def ndc_rectangle(name, value):
     return r
 
 
-def window_to_viewport(window, viewport):
-    """The matrix T(viewport corner) · S(sx, sy) · T(-window corner)."""
-    wx0, wy0, wx1, wy1 = window
-    vx0, vy0, vx1, vy1 = viewport
-    return tf.compose(tf.translation(vx0, vy0),
-                      tf.scaling((vx1 - vx0) / (wx1 - wx0), (vy1 - vy0) / (wy1 - wy0)),
-                      tf.translation(-wx0, -wy0))
-
-
-def normalization(window, viewport, view_up=(0.0, 1.0), keep_aspect=False):
+def normalization(window, viewport, view_up=(0.0, 1.0), keep_aspect=False, aspect=1.0):
     """The world -> NDC matrix of a window, an NDC viewport and a view-up vector.
 
     The viewing frame has its origin at the window's center and its y axis along
-    ``view_up``; the window is measured in that frame (so a tilted ``view_up`` turns
-    the window about its center).  With ``keep_aspect`` the viewport shrinks to the
-    window's aspect ratio, centered.
+    ``view_up`` (:func:`scanline.viewing.viewing_matrix`), so a tilted ``view_up``
+    turns the window about its center.  With ``keep_aspect`` the window keeps its
+    proportions on a device whose NDC unit square is ``aspect`` times as high as it
+    is wide (the picture is centered in the viewport).
     """
-    w = rectangle("window", window)
+    w = rectangle(window, "window")
     vp = ndc_rectangle("viewport", viewport)
-    ux, uy = (v.number(f"view_up[{i}]", c) for i, c in enumerate(_pair("view_up", view_up)))
-    if ux == 0.0 and uy == 0.0:
-        raise ArgumentValueError("view_up must not be (0, 0): it gives the up direction")
     if not isinstance(keep_aspect, bool):
         raise ArgumentTypeError(f"keep_aspect must be True or False, got {v._show(keep_aspect)}")
     cx, cy = (w[0] + w[2]) / 2, (w[1] + w[3]) / 2
-    # world -> viewing frame: move the window center to the origin, then turn view_up
-    # onto +y (a rotation by -(angle of view_up - 90 degrees)).
-    turn = tf.rotation(math.pi / 2 - math.atan2(uy, ux))
-    viewing = tf.compose(tf.translation(cx, cy), turn, tf.translation(-cx, -cy))
-    if keep_aspect:
-        vp = _fitted(w, vp)
-    return tf.compose(window_to_viewport(w, vp), viewing)
-
-
-def _pair(name, value):
-    if isinstance(value, (str, bytes)) or not hasattr(value, "__len__") or len(value) != 2:
-        raise ArgumentTypeError(f"{name} must be a vector (x, y), got {v._show(value)}")
-    return value
-
-
-def _fitted(window, viewport):
-    """The largest rectangle of the window's aspect ratio centered in ``viewport``."""
-    ww, wh = window[2] - window[0], window[3] - window[1]
-    vw, vh = viewport[2] - viewport[0], viewport[3] - viewport[1]
-    scale = min(vw / ww, vh / wh)
-    cx, cy = (viewport[0] + viewport[2]) / 2, (viewport[1] + viewport[3]) / 2
-    return (cx - ww * scale / 2, cy - wh * scale / 2, cx + ww * scale / 2, cy + wh * scale / 2)
+    hw, hh = (w[2] - w[0]) / 2, (w[3] - w[1]) / 2
+    to_viewing = viewing.viewing_matrix((cx, cy), view_up)
+    # Fit in device proportions: stretch NDC y by ``aspect``, fit, stretch back.
+    stretched = (vp[0], vp[1] * aspect, vp[2], vp[3] * aspect)
+    fit = viewing.window_to_viewport((-hw, -hh, hw, hh), stretched, keep_aspect=keep_aspect)
+    return tf.compose(tf.scaling(1.0, 1.0 / aspect), fit, to_viewing)
 
 
 def workstation(width, height):
-    """NDC -> device: the unit square onto the frame's pixel area, from the outer edge
-    of pixel (0, 0) at (-0.5, -0.5) to (width - 0.5, height - 0.5)."""
-    return window_to_viewport((0.0, 0.0, 1.0, 1.0),
-                              (-0.5, -0.5, width - 0.5, height - 0.5))
+    """NDC -> device: (0, 0) to the center of pixel (0, 0), (1, 1) to the center of
+    pixel (width - 1, height - 1)."""
+    return viewing.ndc_to_device(width, height)
+
+
+def aspect(width, height):
+    """How much higher than wide the NDC unit square is on a width x height device."""
+    return (v.positive_int("height", height, 2) - 1) / (v.positive_int("width", width, 2) - 1)
 
 
 def device_rectangle(m, rect):

@@ -10,6 +10,7 @@ import numbers
 
 from .. import transform as tf
 from ..display import DisplayFile
+from ..display.viewing import aspect
 from ..errors import ScanlineError
 from .files import SceneError
 
@@ -172,9 +173,9 @@ class Canvas:
 
 
 def _size(value, path):
-    if isinstance(value, int) and not isinstance(value, bool) and 1 <= value <= MAX_SIZE:
+    if isinstance(value, int) and not isinstance(value, bool) and 2 <= value <= MAX_SIZE:
         return value
-    _fail(path, f"must be an integer from 1 to {MAX_SIZE}, got {value!r}")
+    _fail(path, f"must be an integer from 2 to {MAX_SIZE}, got {value!r}")
 
 
 def build(data):
@@ -184,8 +185,8 @@ def build(data):
     if d["version"] not in VERSIONS or isinstance(d["version"], bool):
         _fail("version", f"must be 1 (the schema this scanline reads), got {d['version']!r}")
     canvas = Canvas(d.get("canvas", {}))
-    default_window = d.get("window", (-0.5, -0.5, canvas.width - 0.5, canvas.height - 0.5))
-    df = DisplayFile()
+    default_window = d.get("window", (0, 0, canvas.width - 1, canvas.height - 1))
+    df = DisplayFile(aspect(canvas.width, canvas.height))
     viewports = _viewports(d.get("viewports"), default_window, df)
     names = list(viewports)
     for i, seg in enumerate(_list(d.get("segments", []), "segments")):

@@ -16,7 +16,9 @@ both ends included.
 
 ``method="wang"`` (plain, non-rational Bezier form only) cuts each piece into equal
 parameter steps, as many as Wang's bound asks for (see
-:func:`scanline.geometry.flatten.steps`); more points, same guarantee.
+:func:`scanline.geometry.flatten.steps`): the same guarantee, fewer points on evenly
+bent pieces (the convex-hull test is conservative there), more on pieces with one
+tight turn.
 
 *Any other curve* (anything with ``evaluate`` and ``domain``): the domain starts as 16
 equal intervals and an interval is halved while one of 7 samples inside it lies
@@ -197,14 +199,17 @@ def bezier_pieces(curve):
     if isinstance(curve, PiecewisePolynomial):
         return np.stack([section.homogeneous() for section in curve.sections])
     if isinstance(curve, BSpline):
-        return spline_pieces(curve.homogeneous(), curve.knots, curve.order, curve.domain)
+        if curve.rational:
+            return spline_pieces(curve.homogeneous(), curve.knots, curve.order, curve.domain)
+        pieces = spline_pieces(curve.points, curve.knots, curve.order, curve.domain)
+        return np.concatenate([pieces, np.ones(pieces.shape[:2] + (1,))], axis=2)
     return None
 
 
 def spline_pieces(homogeneous, knots, order, domain):
     """Bezier control points of each polynomial piece of the B-spline with control
-    points ``homogeneous`` (n + 1, c), knot vector ``knots`` and ``order`` d, on the
-    non-empty knot spans inside ``domain``: (S, d, c)."""
+    points ``homogeneous`` (n + 1, c) (Cartesian or [w P, w]), knot vector ``knots``
+    and ``order`` d, on the non-empty knot spans inside ``domain``: (S, d, c)."""
     from .bezier import bernstein
     from .bspline import basis
 

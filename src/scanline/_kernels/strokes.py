@@ -1,21 +1,26 @@
 """Thick lines as filled outlines: segment quadrilaterals, joins and caps (notes,
 syllabus: "Line attributes - Line type. Line width"; Hearn & Baker, section 4-1).
 
-A stroke of half-width ``r`` along a polyline is the union of simple pieces, each a
-counterclockwise contour:
+A stroke of half-width ``r`` along a polyline is the union of simple pieces, each
+winding once counterclockwise:
 
 * one rectangle per segment (its sides offset by ``r`` along the segment's normal);
 * one join per interior vertex (every vertex of a closed polyline), on the *outer*
   side of the turn: a *miter* (pivot, the two outer corners and the tip where the
-  offset sides meet, or a *bevel* triangle when the tip is farther than
-  ``miter_limit * r`` from the pivot), a *bevel* triangle, or a *round* wedge;
+  offset sides meet; a *bevel* when the tip is farther than ``miter_limit * r``
+  from the pivot), a *bevel* triangle, or a *round* sector;
 * one cap at each end of an open polyline: *butt* (none), *square* (the end
   segments extended by ``r``) or *round* (a half disc).
 
-All pieces of one polyline form ONE polygon filled by the scan-line fill
-(``_kernels/polygon.py``) with the nonzero rule: every piece winds +1 around its
-inside, so the winding number is positive exactly on the union, and each pixel of
-the stroke is written once (translucent colors blend once, as they must).
+Adding the boundaries of all the pieces, the edges through the vertices cancel and
+what is left is ONE contour (two for a closed polyline): the right side of the
+polyline forward, with the outer join at each left turn and a detour through the
+vertex at each right turn, the end cap, then the right side of the reversed polyline
+and the start cap (:func:`right_side`).  Its winding number at any point is the sum
+of the pieces' -- positive exactly on their union, zero outside -- so the scan-line
+fill (``_kernels/polygon.py``) with the nonzero rule paints the union, each pixel
+once (translucent colors blend once, as they must), from about half the edges the
+separate pieces would have.
 
 Arcs (round joins and caps) are regular polygons whose vertices lie at radius
 ``r * sqrt(d / sin d)`` for an angular step ``d``: the polygon then has the area of
@@ -63,71 +68,28 @@ def arc_step(r):
 
 
 @helper
-def finish(out, start, nv):
-    """Close the contour ``out[start:nv]``: reverse it if it is clockwise; drop it
-    (return ``start``) if it has no area.  Returns the new vertex count."""
-    area = 0.0
-    for i in range(start, nv):
-        j = i + 1 if i + 1 < nv else start
-        area += out[i, 0] * out[j, 1] - out[j, 0] * out[i, 1]
-    if not abs(area) > 1e-9:
-        return start
-    if area < 0:
-        a = start
-        b = nv - 1
-        while a < b:
-            x = out[a, 0]
-            y = out[a, 1]
-            out[a, 0] = out[b, 0]
-            out[a, 1] = out[b, 1]
-            out[b, 0] = x
-            out[b, 1] = y
-            a += 1
-            b -= 1
-    return nv
+def arc_capacity(r):
+    """Most vertices one arc of radius ``r`` can take."""
+    return int(math.ceil(2.0 * math.pi / arc_step(r))) + 3
 
 
 @helper
-def wedge(out, nv, px, py, ux, uy, vx, vy, sweep, r, pivot):
-    """Append an arc of radius ~``r`` about (px, py) from unit direction (ux, uy)
-    turning by ``sweep`` radians (counterclockwise if positive) to (vx, vy); with
-    ``pivot`` the contour starts at the center (a sector), else it is the arc alone
-    (a disc for a full turn).  Returns the new vertex count."""
-    if pivot:
-        out[nv, 0] = px
-        out[nv, 1] = py
-        nv += 1
+def arc(out, nv, px, py, ux, uy, sweep, r, ends):
+    """Append the arc of radius ~``r`` about (px, py) from unit direction (ux, uy)
+    turning by ``sweep`` radians (counterclockwise if positive): its inner vertices
+    (at the area-preserving radius), and both ends too when ``ends``."""
     steps = max(1, int(math.ceil(abs(sweep) / arc_step(r) - 1e-9)))
     d = sweep / steps
     rr = r * math.sqrt(abs(d) / math.sin(abs(d)))
-    if not pivot:
-        for i in range(steps):
-            c = math.cos(i * d)
-            s = math.sin(i * d)
-            out[nv, 0] = px + rr * (c * ux - s * uy)
-            out[nv, 1] = py + rr * (s * ux + c * uy)
-            nv += 1
-        return nv
-    # the ends exactly where the neighboring pieces put their corners, so that
-    # shared edges leave no gap: (px + r * ux, ...) and (px + r * vx, ...)
-    out[nv, 0] = px + r * ux
-    out[nv, 1] = py + r * uy
-    nv += 1
-    for i in range(1, steps):
+    first = 0 if ends else 1
+    last = steps if ends else steps - 1
+    for i in range(first, last + 1):
         c = math.cos(i * d)
         s = math.sin(i * d)
         out[nv, 0] = px + rr * (c * ux - s * uy)
         out[nv, 1] = py + rr * (s * ux + c * uy)
         nv += 1
-    out[nv, 0] = px + r * vx
-    out[nv, 1] = py + r * vy
-    return nv + 1
-
-
-@helper
-def arc_capacity(r):
-    """Most vertices one wedge or disc of radius ``r`` can take."""
-    return int(math.ceil(2.0 * math.pi / arc_step(r))) + 3
+    return nv
 
 
 @helper
@@ -154,132 +116,113 @@ def distinct(src, a, b, closed, pts):
 
 
 @helper
-def direction(pts, m, i):
-    """Unit direction of segment i -> i+1 (indices mod m)."""
-    j = i + 1 if i + 1 < m else 0
-    dx = pts[j, 0] - pts[i, 0]
-    dy = pts[j, 1] - pts[i, 1]
+def vertex(pts, m, i, reverse):
+    """Vertex i of the polyline, or of the polyline reversed."""
+    j = m - 1 - i if reverse else i
+    return pts[j, 0], pts[j, 1]
+
+
+@helper
+def direction(pts, m, i, reverse):
+    """Unit direction of segment i -> i+1 (indices mod m) of the (reversed) polyline."""
+    x0, y0 = vertex(pts, m, i, reverse)
+    x1, y1 = vertex(pts, m, i + 1 if i + 1 < m else 0, reverse)
+    dx = x1 - x0
+    dy = y1 - y0
     n = math.hypot(dx, dy)
     return dx / n, dy / n
 
 
 @helper
-def join(out, nv, contours, nc, px, py, ax, ay, bx, by, r, kind, miter_limit):
-    """Append the join at (px, py) between unit directions a (in) and b (out)."""
-    cross = ax * by - ay * bx
-    dot = ax * bx + ay * by
-    phi = math.atan2(cross, dot)        # the turn, left positive
-    if phi == 0.0:
-        return nv, nc
-    if phi > 0:                          # left turn: the outer side is the right
-        nax, nay, nbx, nby = ay, -ax, by, -bx
-    else:
-        nax, nay, nbx, nby = -ay, ax, -by, bx
-    start = nv
+def outer_join(out, nv, px, py, ax, ay, bx, by, r, kind, miter_limit, phi):
+    """Append the vertices of the join at (px, py) strictly between the right-side
+    corners (px + r*ay, py - r*ax) and (px + r*by, py - r*bx) of a left turn ``phi``
+    from unit direction a to b: the miter tip, or the inner vertices of the arc (a
+    bevel adds none)."""
     if kind == JOIN_ROUND:
-        nv = wedge(out, nv, px, py, nax, nay, nbx, nby, phi, r, True)
-    else:
-        out[nv, 0] = px
-        out[nv, 1] = py
-        out[nv + 1, 0] = px + r * nax
-        out[nv + 1, 1] = py + r * nay
-        nv += 2
-        half = math.cos(0.5 * phi)
-        if kind == JOIN_MITER and half > 0 and 1.0 / half <= miter_limit:
-            mx = nax + nbx
-            my = nay + nby
-            k = r / (half * math.hypot(mx, my))
-            out[nv, 0] = px + k * mx
-            out[nv, 1] = py + k * my
-            nv += 1
-        out[nv, 0] = px + r * nbx
-        out[nv, 1] = py + r * nby
+        return arc(out, nv, px, py, ay, -ax, phi, r, False)
+    half = math.cos(0.5 * phi)
+    if kind == JOIN_MITER and half > 0 and 1.0 / half <= miter_limit:
+        mx = ay + by
+        my = -ax - bx
+        k = r / (half * math.hypot(mx, my))
+        out[nv, 0] = px + k * mx
+        out[nv, 1] = py + k * my
         nv += 1
-    nv = finish(out, start, nv)
-    if nv > start:
-        contours[nc] = start
-        nc += 1
-    return nv, nc
+    return nv
 
 
 @helper
-def quad(out, nv, contours, nc, x0, y0, x1, y1, dx, dy, r, before, after):
-    """Append the rectangle of half-width r about segment (x0, y0)-(x1, y1) of unit
-    direction (dx, dy), extended by ``before`` and ``after`` along it."""
-    nx = -dy * r
-    ny = dx * r
-    sx = x0 - before * dx
-    sy = y0 - before * dy
-    ex = x1 + after * dx
-    ey = y1 + after * dy
-    start = nv
-    out[nv, 0] = sx - nx
-    out[nv, 1] = sy - ny
-    out[nv + 1, 0] = ex - nx
-    out[nv + 1, 1] = ey - ny
-    out[nv + 2, 0] = ex + nx
-    out[nv + 2, 1] = ey + ny
-    out[nv + 3, 0] = sx + nx
-    out[nv + 3, 1] = sy + ny
-    nv = finish(out, start, nv + 4)
-    if nv > start:
-        contours[nc] = start
-        nc += 1
-    return nv, nc
+def right_side(pts, m, closed, reverse, r, cap, join_kind, miter_limit, out, nv):
+    """Append the right side of the stroke of the (reversed) polyline: each segment
+    offset by ``r`` to its right; at a left turn the outer join, at a right turn a
+    detour through the vertex itself.  Open polylines end with the cap at their
+    last vertex (the square cap extends the end segments)."""
+    nseg = m if closed else m - 1
+    extend = r if (cap == CAP_SQUARE and not closed) else 0.0
+    for i in range(nseg):
+        x0, y0 = vertex(pts, m, i, reverse)
+        x1, y1 = vertex(pts, m, i + 1 if i + 1 < m else 0, reverse)
+        dx, dy = direction(pts, m, i, reverse)
+        before = extend if i == 0 else 0.0
+        after = extend if i == nseg - 1 else 0.0
+        out[nv, 0] = x0 - before * dx + r * dy
+        out[nv, 1] = y0 - before * dy - r * dx
+        out[nv + 1, 0] = x1 + after * dx + r * dy
+        out[nv + 1, 1] = y1 + after * dy - r * dx
+        nv += 2
+        if i == nseg - 1 and not closed:
+            if cap == CAP_ROUND:
+                nv = arc(out, nv, x1, y1, dy, -dx, math.pi, r, False)
+            break
+        bx, by = direction(pts, m, i + 1 if i + 1 < m else 0, reverse)
+        cross = dx * by - dy * bx
+        dot = dx * bx + dy * by
+        phi = math.atan2(cross, dot)
+        if phi > 0:
+            nv = outer_join(out, nv, x1, y1, dx, dy, bx, by, r, join_kind, miter_limit, phi)
+        elif phi < 0:
+            out[nv, 0] = x1
+            out[nv, 1] = y1
+            nv += 1
+    return nv
 
 
 @helper
 def stroke_piece(pts, m, closed, r, cap, join_kind, miter_limit, out, nv, contours, nc):
-    """Append the contours of the stroke of one polyline ``pts[:m]`` (distinct
-    consecutive vertices).  Returns ``(nv, nc)``."""
+    """Append the outline of the stroke of one polyline ``pts[:m]`` (distinct
+    consecutive vertices): one contour (two for a closed polyline, its right and
+    its left side) whose winding number is the sum of those of the segment
+    rectangles, joins and caps -- positive exactly on their union.  Returns
+    ``(nv, nc)``."""
     if m == 0:
         return nv, nc
     if m == 1:  # a point: a disc for round caps, an axis-aligned square for square ones
-        start = nv
-        if cap == CAP_ROUND:
-            nv = wedge(out, nv, pts[0, 0], pts[0, 1], 1.0, 0.0, 1.0, 0.0, 2.0 * math.pi, r,
-                       False)
-        elif cap == CAP_SQUARE:
-            nv, nc = quad(out, nv, contours, nc, pts[0, 0], pts[0, 1], pts[0, 0], pts[0, 1],
-                          1.0, 0.0, r, r, r)
+        if cap == CAP_BUTT:
             return nv, nc
-        nv = finish(out, start, nv)
-        if nv > start:
-            contours[nc] = start
-            nc += 1
-        return nv, nc
-    nseg = m if closed else m - 1
-    for i in range(nseg):
-        j = i + 1 if i + 1 < m else 0
-        dx, dy = direction(pts, m, i)
-        before = r if (cap == CAP_SQUARE and not closed and i == 0) else 0.0
-        after = r if (cap == CAP_SQUARE and not closed and i == nseg - 1) else 0.0
-        nv, nc = quad(out, nv, contours, nc, pts[i, 0], pts[i, 1], pts[j, 0], pts[j, 1],
-                      dx, dy, r, before, after)
-    first = 0 if closed else 1
-    last = m - 1 if closed else m - 2
-    for i in range(first, last + 1):
-        h = i - 1 if i > 0 else m - 1
-        ax, ay = direction(pts, m, h)
-        bx, by = direction(pts, m, i)
-        nv, nc = join(out, nv, contours, nc, pts[i, 0], pts[i, 1], ax, ay, bx, by, r,
-                      join_kind, miter_limit)
-    if cap == CAP_ROUND and not closed:
-        dx, dy = direction(pts, m, 0)
-        start = nv
-        nv = wedge(out, nv, pts[0, 0], pts[0, 1], -dy, dx, dy, -dx, math.pi, r, True)
-        nv = finish(out, start, nv)
-        if nv > start:
-            contours[nc] = start
-            nc += 1
-        dx, dy = direction(pts, m, m - 2)
-        start = nv
-        nv = wedge(out, nv, pts[m - 1, 0], pts[m - 1, 1], dy, -dx, -dy, dx, math.pi, r,
-                       True)
-        nv = finish(out, start, nv)
-        if nv > start:
-            contours[nc] = start
-            nc += 1
+        contours[nc] = nv
+        x = pts[0, 0]
+        y = pts[0, 1]
+        if cap == CAP_ROUND:
+            nv = arc(out, nv, x, y, 1.0, 0.0, 2.0 * math.pi, r, False)
+        else:
+            out[nv, 0] = x - r
+            out[nv, 1] = y - r
+            out[nv + 1, 0] = x + r
+            out[nv + 1, 1] = y - r
+            out[nv + 2, 0] = x + r
+            out[nv + 2, 1] = y + r
+            out[nv + 3, 0] = x - r
+            out[nv + 3, 1] = y + r
+            nv += 4
+        return nv, nc + 1
+    contours[nc] = nv
+    nv = right_side(pts, m, closed, False, r, cap, join_kind, miter_limit, out, nv)
+    nc += 1
+    if closed:
+        contours[nc] = nv
+        nc += 1
+    nv = right_side(pts, m, closed, True, r, cap, join_kind, miter_limit, out, nv)
     return nv, nc
 
 
@@ -411,14 +354,14 @@ def build_strokes(verts, offsets, closed, owner, npoly, r, cap, join_kind, miter
     ``(out, contours, polys, max_edges)`` for ``fill_polygons``: polygon ``q`` is
     made of contours ``polys[q] .. polys[q + 1] - 1``."""
     n = offsets.shape[0] - 1
-    arc = arc_capacity(r)
+    arcs = arc_capacity(r)
     longest = 1
     nverts = 0
     for i in range(n):
         longest = max(longest, offsets[i + 1] - offsets[i])
         nverts += offsets[i + 1] - offsets[i]
-    cap_v = nverts * (4 + arc + 1) + n * (2 * arc + 8) + 8
-    cap_c = nverts * 2 + n * 3 + 2
+    cap_v = nverts * (2 * arcs + 8) + n * (2 * arcs + 8) + 8
+    cap_c = 2 * n + 2
     out = np.empty((cap_v, 2), np.float64)
     contours = np.empty(cap_c + 1, np.int64)
     polys = np.zeros(npoly + 1, np.int64)

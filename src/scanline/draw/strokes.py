@@ -213,9 +213,9 @@ def _antialiased(fb, verts, offsets, closed, color, style):
     out, contours, polys, _ = ks.stroke_outlines(
         verts, offsets, closed, 0.5 * style.width, CAPS[style.cap], JOINS[style.join],
         style.miter_limit, dashes, float(phase))
-    shapes = [[out[contours[c]:contours[c + 1]] for c in range(polys[p], polys[p + 1])]
-              for p in range(len(polys) - 1)]
-    aa.fills(fb, shapes, color, rule="nonzero")
+    # the outlines are already flat arrays (vertices, contour offsets, shape offsets):
+    # hand them over as they are rather than as lists of contours
+    aa._fill_parsed(fb, out, contours, polys, color, "nonzero")
 
 
 def polyline(fb, points, color="white", closed=False, *, style=None, antialias=False,

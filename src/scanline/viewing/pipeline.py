@@ -216,6 +216,13 @@ def window_to_viewport(window, viewport, keep_aspect=False, align="center"):
     >>> sl.transform.apply(m, [(0, 0), (10, 5)]).tolist()     # centered letterbox
     [[0.0, 25.0], [100.0, 75.0]]
     """
+    (sx, sy), (ox, oy), w = _scales(window, viewport, keep_aspect, align)
+    return tf.compose(tf.translation(ox, oy), tf.scaling(sx, sy),
+                      tf.translation(-w.xmin, -w.ymin))
+
+
+def _scales(window, viewport, keep_aspect, align):
+    """``(sx, sy)``, where the window's lower-left corner lands, and the window."""
     w = _as(Rectangle, "window", window)
     vp = _as(Rectangle, "viewport", viewport)
     v.choice("align", align, ALIGNS)
@@ -227,8 +234,7 @@ def window_to_viewport(window, viewport, keep_aspect=False, align="center"):
         if align == "center":
             ox = (vp.width - sx * w.width) / 2
             oy = (vp.height - sy * w.height) / 2
-    return tf.compose(tf.translation(vp.xmin + ox, vp.ymin + oy), tf.scaling(sx, sy),
-                      tf.translation(-w.xmin, -w.ymin))
+    return (sx, sy), (vp.xmin + ox, vp.ymin + oy), w
 
 
 def ndc_to_device(width, height):
@@ -326,7 +332,15 @@ class View:
         self.window_to_viewport = window_to_viewport(self.window, self.viewport,
                                                      keep_aspect, align)
         self.matrix = tf.compose(self.window_to_viewport, self.window.matrix)
-        self.inverse = tf.inverse(self.matrix)
+        # The inverse, factor by factor (exact for any scales): T(P0) R^T for the
+        # viewing frame, T(xwmin, ywmin) S(1/sx, 1/sy) T(-xv, -yv) for the mapping.
+        (sx, sy), (ox, oy), w = _scales(self.window, self.viewport, keep_aspect, align)
+        r = self.window.matrix[:2, :2]
+        frame = np.eye(3)
+        frame[:2, :2] = r.T
+        frame[:2, 2] = self.window.origin
+        self.inverse = tf.compose(frame, tf.translation(w.xmin, w.ymin),
+                                  tf.scaling(1 / sx, 1 / sy), tf.translation(-ox, -oy))
 
     def to_viewport(self, points):
         """World points -> viewport coordinates."""

@@ -3,9 +3,9 @@ cache: each character rasterized once per size and orientation, then stamped).
 
 A glyph image is a uint8 coverage mask, rows bottom-up: 255 is a pixel inside the
 glyph (0 outside); antialiased masks hold the covered fraction of the pixel times
-255.  Every glyph mask lives in one flat ``atlas`` array: mask ``m`` has ``mw[m]`` x
-``mh[m]`` pixels starting at ``off[m]``, its bottom-left pixel at ``(mx[m], my[m])``
-from the glyph's origin.
+255.  Every glyph mask lives in one flat ``atlas`` array, described by a row of
+``masks``: its offset, width, height and the position of its bottom-left pixel
+relative to the glyph's origin.
 
 Writing a pixel of coverage ``c`` with a color of alpha ``a`` (both 0..255) uses the
 weight ``w = c * a / 255**2``: ``w = 1`` stores the color; otherwise gray and RGB
@@ -14,75 +14,76 @@ channels are mixed ``dst + (src - dst) * w`` and RGBA composites "over"
 mix, so they store the color where ``w >= 1/2``.
 """
 
+import numpy as np
+
 from ._jit import helper, kernel
 from .raster import put_bit
 
 
 @helper
-def _mix(buf, y, x, value, w):
-    n = value.shape[0]
-    if n == 4:
-        da = buf[y, x, 3] / 255.0
-        oa = w + da * (1.0 - w)
-        if oa <= 0.0:
-            return
-        for ch in range(3):
-            out = (value[ch] * w + buf[y, x, ch] * da * (1.0 - w)) / oa
-            buf[y, x, ch] = int(out + 0.5)
-        buf[y, x, 3] = int(oa * 255.0 + 0.5)
-        return
-    for ch in range(n):
-        d = float(buf[y, x, ch])
-        buf[y, x, ch] = int(d + (value[ch] - d) * w + 0.5)
+def _over(buf, y, x, value, w):
+    """RGBA "over": the color at opacity ``w`` (0..1) over the stored pixel."""
+    da = buf[y, x, 3] / 255.0
+    oa = w + da * (1.0 - w)
+    for ch in range(3):
+        out = (value[ch] * w + buf[y, x, ch] * da * (1.0 - w)) / oa
+        buf[y, x, ch] = int(out + 0.5)
+    buf[y, x, 3] = int(oa * 255.0 + 0.5)
 
 
 @helper
-def _stamp(buf, packed, width, height, atlas, off, mw, mh, mx, my, mids, gx, gy,
-           value, alpha, threshold):
+def _stamp(buf, packed, width, height, atlas, masks, mids, gx, gy, value, alpha,
+           threshold):
+    n = value.shape[0]
     for g in range(mids.shape[0]):
         m = mids[g]
         if m < 0:
             continue
-        w = mw[m]
-        x0 = gx[g] + mx[m]
-        y0 = gy[g] + my[m]
+        w = masks[m, 1]
+        x0 = gx[g] + masks[m, 3]
+        y0 = gy[g] + masks[m, 4]
         i0 = max(0, -x0)
         i1 = min(w, width - x0)
         j0 = max(0, -y0)
-        j1 = min(mh[m], height - y0)
+        j1 = min(masks[m, 2], height - y0)
         for j in range(j0, j1):
             y = y0 + j
-            row = off[m] + j * w
+            row = masks[m, 0] + j * w
             for i in range(i0, i1):
                 c = atlas[row + i]
                 if c == 0:
                     continue
                 x = x0 + i
-                weight = c * alpha
+                weight = c * alpha  # 0 .. 255 * 255
                 if packed:
-                    if weight >= 32513:  # 255 * 255 / 2
+                    if weight >= 32513:  # coverage x alpha >= 1/2
                         put_bit(buf, x, y, value[0])
                 elif weight == 65025:
-                    for ch in range(value.shape[0]):
+                    for ch in range(n):
                         buf[y, x, ch] = value[ch]
                 elif threshold:
                     if weight >= 32513:
                         buf[y, x, 0] = value[0]
-                else:
-                    _mix(buf, y, x, value, weight / 65025.0)
+                elif n == 4:
+                    _over(buf, y, x, value, weight / 65025.0)
+                else:  # dst + (src - dst) * weight / 255**2, rounded
+                    for ch in range(n):
+                        d = np.int64(buf[y, x, ch])
+                        buf[y, x, ch] = d + ((value[ch] - d) * weight + 32512) // 65025
 
 
 @kernel
-def stamp_glyphs(buf, packed, width, height, atlas, off, mw, mh, mx, my, mids, gx, gy,
-                 value, alpha, threshold):
+def stamp_glyphs(buf, packed, width, height, atlas, masks, mids, gx, gy, value, alpha,
+                 threshold):
     """Stamp glyph masks ``mids[g]`` with origins ``(gx[g], gy[g])`` (mask ids < 0
-    are skipped).  ``value``: the color's channel values; ``alpha``: its alpha
-    (0..255); ``threshold``: store instead of mixing (mode "P").  Pixels outside
-    the ``width`` x ``height`` raster are never written: each mask is clipped to it
-    first (origins must lie within +-2**30)."""
+    are skipped).  ``masks[m]`` = (offset in ``atlas``, width, height, x, y of the
+    bottom-left pixel from the origin).  ``value``: the color's channel values;
+    ``alpha``: its alpha (0..255); ``threshold``: store instead of mixing (mode
+    "P").  Pixels outside the ``width`` x ``height`` raster are never written: each
+    mask is clipped to it first (origins must lie within +-2**30)."""
     if packed:
-        _stamp(buf, True, width, height, atlas, off, mw, mh, mx, my, mids, gx, gy,
-               value, alpha, threshold)
+        _stamp(buf, True, width, height, atlas, masks, mids, gx, gy, value, alpha,
+               threshold)
     else:
-        _stamp(buf, False, width, height, atlas, off, mw, mh, mx, my, mids, gx, gy,
-               value, alpha, threshold)
+        _stamp(buf, False, width, height, atlas, masks, mids, gx, gy, value, alpha,
+               threshold)

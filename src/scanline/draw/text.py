@@ -58,9 +58,8 @@ def _filled(fb, p, color, antialias):
     mids = cache.ensure(p.gids)
     buf, packed, width, height = target(fb)
     from .._kernels.text import stamp_glyphs
-    stamp_glyphs(buf, packed, width, height, cache.atlas, cache.off, cache.mw, cache.mh,
-                 cache.mx, cache.my, mids, p.ox, p.oy, fb.pixel(color), _alpha(color),
-                 fb.mode == "P")
+    stamp_glyphs(buf, packed, width, height, cache.atlas, cache.masks, mids, p.ox, p.oy,
+                 fb.pixel(color), _alpha(color), fb.mode == "P")
 
 
 def text(fb, x, y, text, color=None, font=None, height=None, expansion=None, spacing=None,

@@ -76,6 +76,8 @@ class Font:
 
     def glyph_ids(self, codes):
         """Glyph ids of an int array of code points (missing -> ``replacement``)."""
+        if len(codes) == 0 or codes.max() < len(self._table):
+            return self._table[codes]
         ids = self._table[np.minimum(codes, len(self._table) - 1)]
         big = codes >= len(self._table)
         if big.any():

@@ -70,7 +70,8 @@ class GlyphImages:
         self.mask_of = np.full(len(font.advances), -1, np.int64)
         self._parts, self._meta = [], []
         self.atlas = np.zeros(0, np.uint8)
-        self.off = self.mw = self.mh = self.mx = self.my = np.zeros(0, np.int64)
+        #: one row per mask: offset in ``atlas``, width, height, x0, y0
+        self.masks = np.zeros((0, 5), np.int64)
 
     def ensure(self, gids):
         """Render the glyphs among ``gids`` not yet cached; return their mask ids."""
@@ -84,27 +85,28 @@ class GlyphImages:
             self._meta.append((x0, y0, w, h))
             self._parts.append(mask)
         meta = np.array(self._meta, np.int64).reshape(-1, 4)
-        self.mx, self.my, self.mw, self.mh = (np.ascontiguousarray(meta[:, i]) for i in range(4))
-        sizes = self.mw * self.mh
-        self.off = np.concatenate([[0], np.cumsum(sizes)[:-1]]).astype(np.int64)
-        self.atlas = np.concatenate(self._parts) if self._parts else np.zeros(0, np.uint8)
+        sizes = meta[:, 2] * meta[:, 3]
+        self.masks = np.column_stack([np.cumsum(sizes) - sizes, meta[:, 2], meta[:, 3],
+                                      meta[:, 0], meta[:, 1]]).astype(np.int64)
+        self.atlas = np.concatenate(self._parts)
         return self.mask_of[gids]
 
     def bitmap(self, gid):
         """``(x0, y0, mask)`` of one glyph: ``mask`` a bool array in image order (top
         row first), its bottom-left pixel at ``(x0, y0)`` from the origin."""
         m = int(self.ensure(np.array([gid]))[0])
-        x0, y0, w, h = self._meta[m]
-        mask = self.atlas[self.off[m]:self.off[m] + w * h].reshape(h, w)
+        off, w, h, x0, y0 = self.masks[m].tolist()
+        mask = self.atlas[off:off + w * h].reshape(h, w)
         return x0, y0, mask[::-1] > (127 if self.antialias else 0)
 
 
 def images(font, matrix, antialias, tolerance):
     """The cache for ``font`` at ``matrix`` (2 x 2 font units -> pixels), or None
     when its glyphs are too large to cache."""
-    if abs(np.linalg.det(matrix)) * font.units_per_em ** 2 > MAX_CACHED ** 2:
+    a, b, c, d = matrix.ravel().tolist()
+    if abs(a * d - b * c) * font.units_per_em ** 2 > MAX_CACHED ** 2:
         return None
-    key = (id(font), tuple(np.round(matrix, 9).ravel().tolist()), antialias)
+    key = (id(font), round(a, 9), round(b, 9), round(c, 9), round(d, 9), antialias)
     hit = _CACHES.get(key)
     if hit is not None and hit.font is font:
         _CACHES.move_to_end(key)

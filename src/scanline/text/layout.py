@@ -22,9 +22,10 @@ the characters' advances, across it from the bottom line to the top line.
 Horizontal ``left/center/right`` and vertical ``top/cap/half/base/bottom`` pick the
 point of that rectangle placed on the reference point: for paths right and left the
 horizontal choice applies to each line, the vertical one to the block of lines
-(``top``/``cap`` of the first line, ``base``/``bottom`` of the last); for paths up
-and down the vertical choice applies to each column, the horizontal one to the
-block.
+(``top``, ``cap`` and ``base`` of the first line, ``bottom`` of the last, ``half``
+halfway between the first cap line and the last baseline, which centers the
+block); for paths up and down the vertical choice applies to each column, the
+horizontal one to the block.
 """
 
 import math
@@ -48,12 +49,23 @@ class Placement:
     Attributes: ``font``, ``style``, ``sx``, ``sy`` (font units -> pixels),
     ``rotation`` (2 x 2), ``matrix`` (``rotation @ diag(sx, sy)``), ``gids``,
     ``index`` (position of each glyph's character in the string), ``ox``, ``oy``
-    (int64 pixel origins), ``corners`` ((4, 2) device corners of the block's extent),
-    ``end`` (the concatenation point: where the next text would start).
+    (int64 pixel origins), ``reference`` (x, y), ``extent`` (u0, v0, u1, v1: the
+    block's text extent in text space) and ``end`` (the concatenation point, text
+    space).
     """
 
     __slots__ = ("font", "style", "sx", "sy", "rotation", "matrix", "gids", "index",
-                 "ox", "oy", "corners", "end", "tolerance")
+                 "ox", "oy", "reference", "extent", "end", "tolerance")
+
+    def corners(self):
+        """The block's text extent rectangle, (4, 2) device corners."""
+        u0, v0, u1, v1 = self.extent
+        local = np.array([(u0, v0), (u1, v0), (u1, v1), (u0, v1)])
+        return local @ self.rotation.T + self.reference
+
+    def concatenation_point(self):
+        """Where the next text along the path would start, device coordinates."""
+        return tuple((self.rotation @ np.array(self.end) + self.reference).tolist())
 
 
 def codes_of(text):
@@ -61,11 +73,6 @@ def codes_of(text):
     if not isinstance(text, str):
         raise ArgumentTypeError(f"text must be a str, got {v._show(text)}")
     return np.frombuffer(text.encode("utf-32-le", "surrogatepass"), np.uint32).astype(np.int64)
-
-
-def _shift(key, options):
-    """Alignment offset: minus the coordinate named by ``key``."""
-    return -options[key]
 
 
 def _segments(line):
@@ -84,34 +91,40 @@ def _per_line_sum(values, starts, ends):
     return run - np.repeat(before, ends - starts), total
 
 
+def _align_span(lo, hi, key):
+    """Offset that puts the ``key`` end (left/center/right) of [lo, hi] at 0."""
+    return -lo if key == "left" else -hi if key == "right" else -(lo + hi) / 2
+
+
 def _horizontal(font, gids, line, nlines, style, sx, sy, gap):
     """Text-space origins for paths right and left; the block's extent."""
     adv = font.advances[gids] * sx + gap
-    starts, ends = _segments(line)
-    run, total = _per_line_sum(adv, starts, ends)
-    width = np.zeros(nlines)
-    width[line[starts]] = total - gap
-    if style.path == "right":
-        u = run - adv
-        lo, hi = np.zeros(nlines), width
+    if nlines == 1:  # the common case: scalars instead of per-line arrays
+        run = np.cumsum(adv)
+        width = float(run[-1]) - gap if len(run) else 0.0
     else:
-        u = -(run - gap)
-        lo, hi = -width, np.zeros(nlines)
-    h_align = style.align[0]
-    shift = -{"left": lo, "center": (lo + hi) / 2, "right": hi}[h_align]
-    u = u + shift[line]
+        starts, ends = _segments(line)
+        run, total = _per_line_sum(adv, starts, ends)
+        width = np.zeros(nlines)
+        width[line[starts]] = total - gap
+    right = style.path == "right"
+    lo, hi = (0.0 * width, width) if right else (-width, 0.0 * width)
+    shift = _align_span(lo, hi, style.align[0])
+    u = (run - adv if right else gap - run) + (shift if nlines == 1 else shift[line])
     step = font.line_height * sy
     base_last = -(nlines - 1) * step
     cap = font.cap_height * sy
     levels = {"top": font.ascent * sy, "cap": cap, "half": (cap + base_last) / 2,
-              "base": base_last, "bottom": base_last + font.descent * sy}
-    dv = _shift(style.align[1], levels)
-    v_ = -line * step + dv
-    umin = float((lo + shift).min()) if nlines else 0.0
-    umax = float((hi + shift).max()) if nlines else 0.0
-    extent = (umin, base_last + font.descent * sy + dv, umax, font.ascent * sy + dv)
-    last = nlines - 1
-    end_u = (hi + shift)[last] + gap if style.path == "right" else (lo + shift)[last] - gap
+              "base": 0.0, "bottom": base_last + font.descent * sy}
+    dv = -levels[style.align[1]]
+    v_ = dv - step * line if nlines > 1 else np.full(len(gids), dv)
+    lo, hi = lo + shift, hi + shift
+    if nlines > 1:
+        lo, hi, last_lo, last_hi = float(lo.min()), float(hi.max()), lo[-1], hi[-1]
+    else:
+        last_lo, last_hi = lo, hi
+    extent = (lo, base_last + font.descent * sy + dv, hi, font.ascent * sy + dv)
+    end_u = float(last_hi) + gap if right else float(last_lo) - gap
     return u, v_, extent, (end_u, base_last + dv)
 
 
@@ -131,12 +144,12 @@ def _vertical(font, gids, line, nlines, style, sx, sy, gap):
     levels = {"top": top_char + font.ascent * sy, "cap": top_char + cap,
               "half": (top_char + cap + bottom_char) / 2, "base": bottom_char,
               "bottom": bottom_char + font.descent * sy}
-    shift_v = _shift(style.align[1], levels)
+    shift_v = -levels[style.align[1]]
     v_ = v_ + shift_v[line]
     column = font.line_height * sx
     half = float(adv.max()) / 2 if len(adv) else 0.0
     lo, hi = -half, (nlines - 1) * column + half
-    du = -{"left": lo, "center": (lo + hi) / 2, "right": hi}[style.align[0]]
+    du = _align_span(lo, hi, style.align[0])
     u = line * column - adv / 2 + du
     vmin = float((bottom_char + shift_v).min()) + font.descent * sy
     vmax = float((top_char + shift_v).max()) + font.ascent * sy
@@ -153,13 +166,18 @@ def place(text, x, y, style):
         v.coordinate("x", x), v.coordinate("y", y)
     font = resolve_font(style.font)
     codes = codes_of(text)
-    newline = codes == NEWLINE
-    line_all = np.cumsum(newline) - newline
-    keep = ~newline
-    index = np.flatnonzero(keep)
-    line = line_all[keep]
-    nlines = int(newline.sum()) + 1
-    gids = font.glyph_ids(codes[keep])
+    if "\n" in text:
+        newline = codes == NEWLINE
+        keep = ~newline
+        index = np.flatnonzero(keep)
+        line = (np.cumsum(newline) - newline)[keep]
+        nlines = int(newline.sum()) + 1
+        codes = codes[keep]
+    else:
+        index = np.arange(len(codes))
+        line = np.zeros(len(codes), np.int64)
+        nlines = 1
+    gids = font.glyph_ids(codes)
     height = font.native_height if style.height is None else style.height
     sy = height / font.cap_height
     sx = sy * style.expansion
@@ -169,20 +187,22 @@ def place(text, x, y, style):
     else:
         u, v_, extent, end = _vertical(font, gids, line, nlines, style, sx, sy, gap)
     c, s = math.cos(style.angle), math.sin(style.angle)
-    rot = np.array([[c, -s], [s, c]])
     p = Placement()
-    p.font, p.style, p.sx, p.sy, p.rotation = font, style, sx, sy, rot
-    p.matrix = rot @ np.diag([sx, sy])
+    p.font, p.style, p.sx, p.sy = font, style, sx, sy
+    p.rotation = np.array([[c, -s], [s, c]])
+    p.matrix = np.array([[c * sx, -s * sy], [s * sx, c * sy]])
     p.gids, p.index = gids, index
-    fx = x + c * u - s * v_
-    fy = y + s * u + c * v_
-    lim = float(v.COORD_LIMIT)
-    p.ox = np.floor(np.clip(fx, -lim, lim) + 0.5).astype(np.int64)
-    p.oy = np.floor(np.clip(fy, -lim, lim) + 0.5).astype(np.int64)
-    u0, v0, u1, v1 = extent
-    local = np.array([(u0, v0), (u1, v0), (u1, v1), (u0, v1)])
-    p.corners = local @ rot.T + (x, y)
-    p.end = tuple((rot @ np.array(end) + (x, y)).tolist())
+    if s == 0.0 and c == 1.0:
+        fx, fy = u + x, v_ + y
+    else:
+        fx, fy = x + c * u - s * v_, y + s * u + c * v_
+    reach = max(abs(x), abs(y)) + max(abs(e) for e in extent)
+    if reach > v.COORD_LIMIT:  # far away: keep the origins in the exact range
+        lim = float(v.COORD_LIMIT)
+        fx, fy = np.clip(fx, -lim, lim), np.clip(fy, -lim, lim)
+    p.ox = np.floor(fx + 0.5).astype(np.int64)
+    p.oy = np.floor(fy + 0.5).astype(np.int64)
+    p.reference, p.extent, p.end = (x, y), extent, end
     p.tolerance = TOLERANCE / max(sx, sy)
     return p
 
@@ -360,11 +380,11 @@ def extents(text, x=0.0, y=0.0, *, font=None, height=None, expansion=None, spaci
                                   spacing=spacing, angle=angle, up=up, path=path,
                                   align=align))
     e = Extents()
-    e.corners = p.corners
-    e.box = _box(p.corners)
-    e.width = float(np.hypot(*(p.corners[1] - p.corners[0])))
-    e.height = float(np.hypot(*(p.corners[3] - p.corners[0])))
-    e.advance = p.end
+    e.corners = p.corners()
+    e.box = _box(e.corners)
+    e.width = p.extent[2] - p.extent[0]
+    e.height = p.extent[3] - p.extent[1]
+    e.advance = p.concatenation_point()
     boxes = []
     for gid in np.unique(p.gids):
         b = p.font.bounds(int(gid))

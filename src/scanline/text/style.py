@@ -106,31 +106,22 @@ class TextStyle:
     def __init__(self, font="sans", height=None, expansion=1.0, spacing=0.0, angle=0.0,
                  up=None, path="right", align=("left", "base"), color=None,
                  antialias=False):
-        from .fonts import Font
-        if not isinstance(font, (str, Font)) and not hasattr(font, "__fspath__"):
-            raise ArgumentTypeError(
-                f"font must be a font name, a path or a scanline.text.Font; got {v._show(font)}")
-        self.font = font
-        self.height = _height(height)
-        self.expansion = v.number("expansion", expansion)
-        if not 0 < self.expansion <= 1000:
-            raise ArgumentValueError(f"expansion must be in (0, 1000], got {v._show(expansion)}")
-        self.spacing = v.number("spacing", spacing)
-        if abs(self.spacing) > 1000:
-            raise ArgumentValueError(f"spacing must be within +-1000 (a fraction of the "
-                                     f"height), got {v._show(spacing)}")
-        angle = v.number("angle", angle)
-        if up is not None:
-            if angle != 0:
-                raise ArgumentValueError("give angle or up, not both")
-            angle = _angle_from_up(up)
-        self.angle = angle
-        self.path = v.choice("path", path, PATHS)
-        self.align = _align(align)
-        self.color = color
-        if not isinstance(antialias, bool):
-            raise ArgumentTypeError(f"antialias must be True or False, got {v._show(antialias)}")
-        self.antialias = antialias
+        self._set(font=font, height=height, expansion=expansion, spacing=spacing,
+                  angle=angle, up=up, path=path, align=align, color=color,
+                  antialias=antialias)
+
+    def _set(self, **values):
+        """Validate and store the given attributes (only those)."""
+        for key, value in values.items():
+            if key == "up":
+                if value is not None:
+                    if values.get("angle"):
+                        raise ArgumentValueError("give angle or up, not both")
+                    self.angle = _angle_from_up(value)
+                continue
+            if key == "angle" and values.get("up") is not None:
+                continue
+            setattr(self, key, _CHECKS[key](value))
 
     @property
     def up(self):
@@ -138,12 +129,13 @@ class TextStyle:
         return (-math.sin(self.angle), math.cos(self.angle))
 
     def replace(self, **changes):
-        """A copy with some attributes changed (``None`` values are ignored)."""
-        values = {k: getattr(self, k) for k in self.__slots__}
-        if changes.get("up") is not None:
-            values["angle"] = 0.0
-        values.update({k: val for k, val in changes.items() if val is not None})
-        return TextStyle(**values)
+        """A copy with some attributes changed (``None`` values are ignored); only
+        the changed values are validated again."""
+        out = object.__new__(TextStyle)
+        for k in self.__slots__:
+            setattr(out, k, getattr(self, k))
+        out._set(**{k: val for k, val in changes.items() if val is not None})
+        return out
 
     def __repr__(self):
         fields = ", ".join(f"{k}={getattr(self, k)!r}" for k in self.__slots__)
@@ -154,6 +146,41 @@ class TextStyle:
             getattr(self, k) == getattr(other, k) for k in self.__slots__)
 
     __hash__ = None
+
+
+def _font(value):
+    from .fonts import Font
+    if not isinstance(value, (str, Font)) and not hasattr(value, "__fspath__"):
+        raise ArgumentTypeError(
+            f"font must be a font name, a path or a scanline.text.Font; got {v._show(value)}")
+    return value
+
+
+def _expansion(value):
+    e = v.number("expansion", value)
+    if not 0 < e <= 1000:
+        raise ArgumentValueError(f"expansion must be in (0, 1000], got {v._show(value)}")
+    return e
+
+
+def _spacing(value):
+    s = v.number("spacing", value)
+    if abs(s) > 1000:
+        raise ArgumentValueError(
+            f"spacing must be within +-1000 (a fraction of the height), got {v._show(value)}")
+    return s
+
+
+def _antialias(value):
+    if not isinstance(value, bool):
+        raise ArgumentTypeError(f"antialias must be True or False, got {v._show(value)}")
+    return value
+
+
+_CHECKS = {"font": _font, "height": _height, "expansion": _expansion,
+           "spacing": _spacing, "angle": lambda a: v.number("angle", a),
+           "path": lambda p: v.choice("path", p, PATHS), "align": _align,
+           "color": lambda c: c, "antialias": _antialias}
 
 
 DEFAULT = TextStyle()

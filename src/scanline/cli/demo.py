@@ -69,7 +69,7 @@ def page(figures):
 
 #: The modules of figures, in gallery order; each has a ``FIGURES`` tuple of
 #: functions that return a :class:`scanline.cli.figures.Figure`.
-FIGURE_MODULES = ("figures", "figures_scene", "figures_color")
+FIGURE_MODULES = ("figures", "figures_scene", "figures_color", "figures_surfaces")
 
 
 def all_figures():

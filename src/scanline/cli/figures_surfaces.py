@@ -1,0 +1,107 @@
+"""Demo figures for surfaces and curve rasterization: the Utah teapot as a wireframe,
+a bicubic patch over its control net, and adaptive flattening."""
+
+import numpy as np
+
+import scanline as sl
+
+from ..curves.flatten import flatten
+from ._plot import enlarge, side_by_side
+from .figures import PAPER, PIXEL, HIGHLIGHT, Figure
+
+LIGHT = "#c8cdd8"
+
+
+def _view(points, azimuth=-0.6, elevation=0.45):
+    """Orthographic view from above: rotate about z by ``azimuth``, look down at
+    ``elevation``; returns right-handed (x, y, depth), depth growing toward the viewer."""
+    ca, sa, ce, se = np.cos(azimuth), np.sin(azimuth), np.cos(elevation), np.sin(elevation)
+    x = ca * points[..., 0] - sa * points[..., 1]
+    y0 = sa * points[..., 0] + ca * points[..., 1]
+    z = points[..., 2]
+    return np.stack([x, ce * z + se * y0, se * z - ce * y0], axis=-1)
+
+
+def _to_device(xy, lo, hi, size, margin=8):
+    scale = (size - 2 * margin) / (hi - lo).max()
+    return (xy - lo) * scale + margin
+
+
+def figure_teapot():
+    """The Utah teapot tessellated and drawn as a wireframe."""
+    verts, tris, normals = sl.curves.teapot_mesh(6)
+    view = _view(verts)
+    xy = view[:, :2]
+    lo, hi = xy.min(0), xy.max(0)
+    size = 360
+    p = _to_device(xy, lo, hi, size)
+    fb = sl.FrameBuffer(size, int((hi - lo)[1] / (hi - lo).max() * (size - 16)) + 16, background=PAPER)
+    a, b, c = p[tris[:, 0]], p[tris[:, 1]], p[tris[:, 2]]
+    facing = np.cross(b - a, c - a) > 0          # counterclockwise on screen: front face
+    for front, color in ((False, LIGHT), (True, PIXEL)):
+        t = tris[facing == front]
+        edges = np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]])
+        edges = np.unique(np.sort(edges, axis=1), axis=0)
+        sl.draw.lines(fb, np.hstack([p[edges[:, 0]], p[edges[:, 1]]]), color=color)
+    return Figure(
+        "teapot", "The Utah teapot, 32 bicubic Bezier patches",
+        f"Newell's teapot (1975): 32 patches, 306 control points, tessellated 6 x 6 per "
+        f"patch and welded into {len(verts)} vertices and {len(tris)} triangles, seen in "
+        "an orthographic view computed with numpy. Triangles facing the viewer "
+        "(counterclockwise on screen: the mesh's normals point outward) are blue, "
+        "the others light gray.",
+        "Notes, chapter 5, Q.1 (Bezier surfaces); Crow 1987", fb.to_pil(), None)
+
+
+def figure_bicubic_patch():
+    """A bicubic Bezier patch: its isoparametric curves over its control net."""
+    g = np.arange(4.0)
+    x, y = np.meshgrid(g, g, indexing="ij")
+    z = np.array([[0, 1, 1, 0], [1, 3, 2.5, 0.5], [0.5, 2, 3, 1], [0, 0.5, 1, 0]]) * 0.6
+    net = np.stack([x, y, z], axis=-1)
+    view = _view(net, azimuth=-0.5, elevation=0.9)[..., :2]   # linear: curves stay Bezier
+    lo, hi = view.reshape(-1, 2).min(0), view.reshape(-1, 2).max(0)
+    size = 300
+    p = _to_device(view, lo, hi, size, margin=12)
+    fb = sl.FrameBuffer(size, int((hi - lo)[1] / (hi - lo).max() * (size - 24)) + 24,
+                        background=PAPER)
+    rows = [p[i] for i in range(4)] + [p[:, j] for j in range(4)]
+    sl.draw.polylines(fb, rows, color=HIGHLIGHT, dash="dashed")
+    iso = []
+    for t in np.linspace(0, 1, 9):   # P(t, v): the Bezier curve of sum_i B_i(t) P_ij
+        b = sl.curves.bernstein(3, t)
+        iso.append(sl.curves.Bezier(np.einsum("i,ijc->jc", b, p)))
+        iso.append(sl.curves.Bezier(np.einsum("j,ijc->ic", b, p)))
+    sl.draw.curves(fb, iso, color=PIXEL)
+    sl.draw.circles(fb, np.hstack([p.reshape(-1, 2), np.full((16, 1), 2)]), color=HIGHLIGHT)
+    return Figure(
+        "bicubic-patch", "A bicubic Bezier patch and its control net",
+        "The patch P(u, v) = sum P_ij BEZ_i,3(u) BEZ_j,3(v) (blue: the curves u = const "
+        "and v = const, each a cubic Bezier curve flattened within a quarter pixel by "
+        "sl.draw.curves) over its 4 x 4 control net (orange, dashed). The patch "
+        "interpolates the four corner points and stays in the net's convex hull.",
+        "Notes, chapter 5, Q.1, eq. 10", fb.to_pil(), None)
+
+
+def figure_flattening():
+    """Adaptive flattening of a cubic at two tolerances."""
+    curve = sl.curves.Bezier([(2, 2), (40, 46), (-6, 40), (44, 4)])
+    panels, titles = [], []
+    for tol in (2.0, 0.25):
+        fb = sl.FrameBuffer(48, 48, background=PAPER)
+        sl.draw.curve(fb, curve, color=PIXEL, tolerance=tol)
+        points = flatten(curve, tol)
+        for x, y in np.floor(points + 0.5).astype(int):
+            fb.set_pixel(int(x), int(y), HIGHLIGHT)
+        panels.append(enlarge(fb.to_pil(), 6))
+        titles.append(f"tolerance {tol:g}: {len(points)} points")
+    return Figure(
+        "flattening", "Adaptive flattening of a Bezier curve",
+        "de Casteljau subdivision at u = 1/2 until every control point is within the "
+        "tolerance of its piece's chord; the convex hull property then keeps the whole "
+        "curve within the tolerance of the polyline. Orange: the polyline's vertices "
+        "(points of the curve); blue: its Bresenham pixels.",
+        "Notes, chapter 5, Q.1 (convex hull property)", side_by_side(panels, titles), None)
+
+
+FIGURES = (figure_teapot, figure_bicubic_patch, figure_flattening)

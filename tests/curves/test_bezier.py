@@ -9,7 +9,7 @@ from shapely.geometry import MultiPoint, Point
 
 import scanline as sl
 
-METHODS = ["de-casteljau", "bernstein", "recursive", "matrix"]
+METHODS = ["de-casteljau", "bernstein", "recursive", "matrix", None]
 
 
 def close(a, b, scale):

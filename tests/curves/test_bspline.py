@@ -36,7 +36,7 @@ def random_knots(rng, count, order, repeats=True):
 
 
 @pytest.mark.parametrize("order", [1, 2, 3, 4, 5, 7])
-@pytest.mark.parametrize("method", ["de-boor", "cox-de-boor"])
+@pytest.mark.parametrize("method", ["de-boor", "cox-de-boor", "matrix", None])
 def test_against_scipy_bspline_random(order, method):
     rng = np.random.default_rng(order)
     for trial in range(8):
@@ -217,8 +217,8 @@ def test_nurbs_against_the_rational_formula_and_insertion():
     u = rng.uniform(*c.domain, 100)
     B = sl.curves.basis(t, 4, u)
     ref = (B * w) @ P / (B @ w)[:, None]
-    close(c.evaluate(u), ref, 10)
-    close(c.evaluate(u, method="cox-de-boor"), ref, 10)
+    for method in ("de-boor", "cox-de-boor", "matrix"):
+        close(c.evaluate(u, method=method), ref, 10)
     np.testing.assert_allclose(c.insert_knot(float(np.mean(c.domain))).evaluate(u), ref, atol=1e-12)
     h = 1e-6
     fd = (c.evaluate(u.clip(c.domain[0] + h, c.domain[1] - h) + h)

@@ -86,3 +86,50 @@ def de_boor(points, knots, order, u, out):
                     work[j, c] = (1.0 - a) * work[j - 1, c] + a * work[j, c]
         for c in range(dim):
             out[i, c] = work[d - 1, c]
+
+
+@helper
+def find_section(breaks, t, guess, scale):
+    """The section s in [0, S-1] with breaks[s] <= t < breaks[s + 1] (the last
+    section also takes t == breaks[S]).  Tries the estimate
+    (t - breaks[0]) * scale, exact for equally spaced breaks, then ``guess`` (the
+    previous section: sorted parameters hit it), then a binary search."""
+    last = breaks.shape[0] - 2
+    est = min(max(int((t - breaks[0]) * scale), 0), last)
+    if breaks[est] <= t < breaks[est + 1]:
+        return est
+    if breaks[guess] <= t < breaks[guess + 1]:
+        return guess
+    if t >= breaks[last]:
+        return last
+    a = 0
+    b = last
+    while a < b:  # the last s with breaks[s] <= t
+        mid = (a + b + 1) // 2
+        if breaks[mid] <= t:
+            a = mid
+        else:
+            b = mid - 1
+    return a
+
+
+@kernel
+def piecewise_horner(breaks, coefficients, u, out):
+    """out[i] = the piecewise polynomial at ``u[i]``, by Horner's rule.
+
+    Section s covers [breaks[s], breaks[s+1]] (increasing breaks); its polynomial in
+    the local parameter t = (u - breaks[s]) / (breaks[s+1] - breaks[s]) in [0, 1] has
+    the coefficient rows ``coefficients[s]`` (m, dim), highest power first.
+    """
+    sections, m, dim = coefficients.shape
+    scale = sections / (breaks[sections] - breaks[0])
+    s = 0
+    for i in range(u.shape[0]):
+        x = u[i]
+        s = find_section(breaks, x, s, scale)
+        t = (x - breaks[s]) / (breaks[s + 1] - breaks[s])
+        for c in range(dim):
+            acc = coefficients[s, 0, c]
+            for j in range(1, m):
+                acc = acc * t + coefficients[s, j, c]
+            out[i, c] = acc

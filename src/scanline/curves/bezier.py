@@ -15,10 +15,15 @@ import numpy as np
 from .. import _validate as v
 from .._kernels import curves as _k
 from .base import Curve, control_points, parameters, weights_array
-from .matrices import bezier_matrix, power_basis
+from .matrices import bezier_matrix
 from .rational import RationalDerivative, project
 
 METHODS = ("de-casteljau", "bernstein", "recursive", "matrix")
+
+#: Highest degree evaluated by default in the matrix (power) form: up to it Horner's
+#: rule on M_bez·P is both the fastest and accurate to ~1e-15 of the coordinates'
+#: scale; above it de Casteljau's algorithm is better conditioned.
+MATRIX_DEGREE = 6
 
 
 def bernstein(degree, u):
@@ -64,11 +69,14 @@ class Bezier(Curve):
     Notes
     -----
     Notes, chapter 5, Q.1.  ``evaluate(u, method=...)`` offers the notes' three
-    formulations and de Casteljau's: ``"de-casteljau"`` (default, compiled, the
-    numerically stable one), ``"bernstein"`` (binomial coefficients, eqs. 2–3),
-    ``"recursive"`` (eq. 4) and ``"matrix"`` ([uⁿ … u 1] · M_bez · P, see
-    :func:`~scanline.curves.matrices.bezier_matrix`).  Rational curves are evaluated
-    in homogeneous coordinates [wP, w] and projected.
+    formulations and de Casteljau's: ``"de-casteljau"`` (compiled, the numerically
+    most stable), ``"bernstein"`` (binomial coefficients, eqs. 2–3), ``"recursive"``
+    (eq. 4) and ``"matrix"`` ([uⁿ … u 1] · M_bez · P, see
+    :func:`~scanline.curves.matrices.bezier_matrix`, with M_bez · P computed once and
+    evaluated by Horner's rule, compiled).  The default, ``method=None``, is
+    ``"matrix"`` up to degree 6 (:data:`MATRIX_DEGREE`), the fastest, and
+    ``"de-casteljau"`` above.  Rational curves are evaluated in homogeneous
+    coordinates [wP, w] and projected.
 
     References
     ----------
@@ -83,6 +91,8 @@ class Bezier(Curve):
         self.domain = (0.0, 1.0)
         self.weights = None if weights is None else weights_array(
             "weights", weights, len(self.points))
+        self.points.flags.writeable = False
+        self._coefficients = None
 
     @property
     def rational(self):
@@ -93,16 +103,19 @@ class Bezier(Curve):
         w = np.ones(len(self.points)) if self.weights is None else self.weights
         return np.hstack([self.points * w[:, None], w[:, None]])
 
-    def evaluate(self, u, method="de-casteljau"):
-        """Points on the curve; see :meth:`Curve.evaluate`.  ``method`` is one of
-        "de-casteljau", "bernstein", "recursive", "matrix"."""
-        v.choice("method", method, METHODS)
+    def evaluate(self, u, method=None):
+        """Points on the curve; see :meth:`Curve.evaluate`.  ``method`` is None
+        (automatic) or one of "de-casteljau", "bernstein", "recursive", "matrix"."""
+        if method is not None:
+            v.choice("method", method, METHODS)
         u = parameters("u", u, self.domain)
         return self._evaluate(u.ravel(), method).reshape(u.shape + (self.dimension,))
 
     __call__ = evaluate
 
-    def _evaluate(self, u, method="de-casteljau"):
+    def _evaluate(self, u, method=None):
+        if method is None:
+            method = "matrix" if self.degree <= MATRIX_DEGREE else "de-casteljau"
         pts = self.homogeneous() if self.rational else self.points
         if method == "de-casteljau":
             out = np.empty((len(u), pts.shape[1]))
@@ -112,10 +125,13 @@ class Bezier(Curve):
         elif method == "recursive":
             out = bernstein_recursive(self.degree, u) @ pts
         else:
-            if self.degree == 0:
-                out = np.repeat(pts, len(u), axis=0)
-            else:
-                out = power_basis(u, self.degree) @ bezier_matrix(self.degree) @ pts
+            if self._coefficients is None:
+                m = bezier_matrix(self.degree) if self.degree else np.ones((1, 1))
+                with np.errstate(over="ignore", invalid="ignore"):  # huge points: inf
+                    self._coefficients = (m @ pts)[None]
+            out = np.empty((len(u), pts.shape[1]))
+            _k.piecewise_horner(np.array([0.0, 1.0]), self._coefficients,
+                                np.ascontiguousarray(u), out)
         return project(out) if self.rational else out
 
     def _derivative(self):

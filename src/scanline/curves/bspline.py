@@ -9,6 +9,7 @@
 """
 
 import numbers
+from math import factorial
 
 import numpy as np
 
@@ -20,7 +21,11 @@ from .base import Curve, control_points, parameters, weights_array
 from .rational import RationalDerivative, project
 
 KNOT_KINDS = ("open", "uniform", "periodic")
-METHODS = ("de-boor", "cox-de-boor")
+METHODS = ("de-boor", "cox-de-boor", "matrix")
+
+#: Highest order evaluated by default in the per-span matrix (power) form; above it
+#: de Boor's algorithm, which is better conditioned.
+MATRIX_ORDER = 6
 
 
 def open_uniform_knots(count, order):
@@ -166,9 +171,14 @@ class BSpline(Curve):
     -----
     Notes, chapter 5, Q.2.  The curve is defined on [u_{d−1}, u_{n+1}] (property 5):
     :attr:`domain`; a parameter outside it raises ``ArgumentValueError`` (no
-    clamping).  ``evaluate(u, method="de-boor")`` (default) runs de Boor's algorithm
-    compiled; ``method="cox-de-boor"`` sums the control points times the blending
-    functions of :func:`basis`.
+    clamping).  ``evaluate(u, method=...)``: ``"de-boor"`` runs de Boor's algorithm,
+    compiled; ``"cox-de-boor"`` sums the control points times the blending functions
+    of :func:`basis`; ``"matrix"`` writes each knot span once in the notes' matrix
+    form [t^(d−1) … t 1]·C, t local in [0, 1] (the periodic cubic's C is M_B·P), the
+    coefficients C being Taylor's D^j P(u_ℓ) h^j / j! from the derivative splines,
+    and evaluates it by Horner's rule, compiled.  The default, ``method=None``, is
+    ``"matrix"`` up to order 6 (:data:`MATRIX_ORDER`), the fastest, and
+    ``"de-boor"`` above.
 
     References
     ----------
@@ -206,6 +216,10 @@ class BSpline(Curve):
         self.weights = weights
         self.dimension = points.shape[1]
         self.domain = (float(knots[order - 1]), float(knots[len(points)]))
+        for a in (points, knots, weights):
+            if a is not None:
+                a.flags.writeable = False
+        self._power = None
 
     @classmethod
     def _raw(cls, points, order, knots, weights=None):
@@ -223,23 +237,47 @@ class BSpline(Curve):
         w = np.ones(len(self.points)) if self.weights is None else self.weights
         return np.hstack([self.points * w[:, None], w[:, None]])
 
-    def evaluate(self, u, method="de-boor"):
-        """Points on the curve; see :meth:`Curve.evaluate`.  ``method`` is "de-boor"
-        or "cox-de-boor"."""
-        v.choice("method", method, METHODS)
+    def evaluate(self, u, method=None):
+        """Points on the curve; see :meth:`Curve.evaluate`.  ``method`` is None
+        (automatic), "de-boor", "cox-de-boor" or "matrix"."""
+        if method is not None:
+            v.choice("method", method, METHODS)
         u = parameters("u", u, self.domain)
         return self._evaluate(u.ravel(), method).reshape(u.shape + (self.dimension,))
 
     __call__ = evaluate
 
-    def _evaluate(self, u, method="de-boor"):
+    def _evaluate(self, u, method=None):
+        if method is None:
+            method = "matrix" if self.order <= MATRIX_ORDER else "de-boor"
         pts = self.homogeneous() if self.rational else self.points
-        if method == "de-boor":
-            out = np.empty((len(u), pts.shape[1]))
-            _k.de_boor(pts, self.knots, self.order, np.ascontiguousarray(u), out)
-        else:
+        if method == "cox-de-boor":
             out = self._basis(u) @ pts
+        else:
+            out = np.empty((len(u), pts.shape[1]))
+            u = np.ascontiguousarray(u)
+            if method == "de-boor":
+                _k.de_boor(pts, self.knots, self.order, u, out)
+            else:
+                _k.piecewise_horner(*self._power_form(), u, out)
         return project(out) if self.rational else out
+
+    def _power_form(self):
+        """(breaks, coefficients) of the non-empty knot spans in the power form."""
+        if self._power is None:
+            lo, hi = self.domain
+            breaks = np.unique(self.knots[(self.knots >= lo) & (self.knots <= hi)])
+            start, h = breaks[:-1], np.diff(breaks)
+            spline = BSpline._raw(self.homogeneous() if self.rational else self.points,
+                                  self.order, self.knots)
+            rows = []
+            for j in range(self.order - 1, -1, -1):  # highest power first
+                d = spline.derivative(j)
+                value = np.empty((len(start), d.dimension))
+                _k.de_boor(d.points, d.knots, d.order, start, value)
+                rows.append(value * (h**j / factorial(j))[:, None])
+            self._power = (breaks, np.ascontiguousarray(np.stack(rows, axis=1)))
+        return self._power
 
     def basis(self, u):
         """The blending functions B_{k,d}(u) of this curve, shape np.shape(u) + (n + 1,)."""

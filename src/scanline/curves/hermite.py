@@ -13,6 +13,7 @@ All are piecewise polynomials with one section per unit of u: section k covers
 import numpy as np
 
 from .. import _validate as v
+from .._kernels import curves as _k
 from ..errors import ArgumentValueError
 from .base import Curve, control_points
 from .bezier import Bezier
@@ -46,17 +47,14 @@ class PiecewisePolynomial(Curve):
                 f"coefficients must have shape (sections, degree + 1, dim), got {c.shape}"
             )
         self.coefficients = c
+        c.flags.writeable = False
         self.dimension = c.shape[2]
         self.domain = (0.0, float(c.shape[0]))
 
     def _evaluate(self, u):
         c = self.coefficients
-        k = np.minimum(np.floor(u).astype(np.int64), len(c) - 1)
-        t = (u - k)[:, None]
-        out = c[k, 0].copy()
-        for i in range(1, c.shape[1]):  # Horner
-            out *= t
-            out += c[k, i]
+        out = np.empty((len(u), self.dimension))
+        _k.piecewise_horner(np.arange(len(c) + 1.0), c, np.ascontiguousarray(u), out)
         return out
 
     def _derivative(self):

@@ -139,8 +139,3 @@ def cardinal_matrix(tension=0.0):
     geometry = np.array([[0, 1, 0, 0], [0, 0, 1, 0], [-s, 0, s, 0], [0, -s, 0, s]])
     return hermite_matrix() @ geometry
 
-
-def power_basis(u, degree):
-    """The row vectors [uⁿ … u 1] for each u: shape np.shape(u) + (n + 1,)."""
-    u = np.asarray(u, dtype=np.float64)
-    return u[..., None] ** np.arange(degree, -1, -1)

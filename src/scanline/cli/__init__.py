@@ -18,10 +18,10 @@ import traceback
 
 from .. import __version__
 from ..errors import ScanlineError
-from . import demo, dither, draw, render, trace
+from . import demo, dither, draw, fonts, render, trace
 
 #: The sub-command modules; each has ``register(subparsers)``.
-COMMANDS = (trace, draw, demo, render, dither)
+COMMANDS = (trace, draw, demo, render, dither, fonts)
 
 #: Errors reported as bad input (exit status 2).
 INPUT_ERRORS = (ScanlineError, ValueError, TypeError, OSError)

@@ -8,13 +8,17 @@ name with ``method=``:
 - lines: ``"cohen-sutherland"`` (region codes), ``"liang-barsky"`` (the default) and
   ``"cyrus-beck"`` (any convex polygon window);
 - polygons: ``"sutherland-hodgman"`` (convex windows; one contour per subject
-  contour) and ``"weiler-atherton"`` (concave windows and subjects; separate pieces).
+  contour) and ``"weiler-atherton"`` (concave windows and subjects; separate pieces);
+- curves: ``circle`` and ``ellipse`` give the visible arcs as angle intervals,
+  ``arcs`` flattens them, ``curve`` clips any curve through its polyline.
 
 The step tables of the line clippers are in :mod:`scanline.trace`
 (``scanline trace cohen-sutherland ...``).
 """
 
+from .curves import arcs, circle, curve, ellipse
 from .lines import line, lines, point, points, polyline
 from .polygons import polygon, polygons
 
-__all__ = ["point", "points", "line", "lines", "polyline", "polygon", "polygons"]
+__all__ = ["point", "points", "line", "lines", "polyline", "polygon", "polygons",
+           "circle", "ellipse", "arcs", "curve"]

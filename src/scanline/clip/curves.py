@@ -1,0 +1,143 @@
+"""Curve clipping (notes, chapter 4, Q.1 "curve clipping"): circles and ellipses
+against a window, as the visible arcs; any curve through its flattened polyline."""
+
+import math
+
+import numpy as np
+
+from .. import _validate as v
+from ..errors import ArgumentValueError
+from . import window as w
+from .lines import _points, polyline
+
+TWO_PI = 2 * math.pi
+
+
+def _intersect(intervals, start, length):
+    """The parts of ``intervals`` (sorted, within [0, 2 pi)) inside the circular
+    interval [start, start + length)."""
+    out = []
+    for s0 in (start - TWO_PI, start, start + TWO_PI):
+        for a, b in intervals:
+            lo, hi = max(a, s0), min(b, s0 + length)
+            if lo < hi:
+                out.append((lo, hi))
+    return sorted(out)
+
+
+def ellipse(xc, yc, rx, ry, window):
+    """The visible arcs of the ellipse (x - xc)**2 / rx**2 + (y - yc)**2 / ry**2 = 1.
+
+    Parameters
+    ----------
+    xc, yc : float
+        Center.
+    rx, ry : float
+        Semi-axes along x and y, > 0.
+    window : (xmin, ymin, xmax, ymax) or convex polygon
+        Closed; arcs that only touch the boundary at a point are dropped.
+
+    Returns
+    -------
+    list of (float, float)
+        Intervals ``(start, end)`` of the parameter angle t, counterclockwise from
+        +x (the point is (xc + rx cos t, yc + ry sin t)); ``0 <= start < 2 pi``
+        and ``start < end <= start + 2 pi``: an arc through t = 0 ends beyond
+        2 pi.  The whole ellipse is ``[(0.0, 2 pi)]``.
+
+    Notes
+    -----
+    Each window edge, with outward unit normal n through the point a, keeps the
+    points with n.(p - a) <= 0.  Mapped to the unit circle by
+    (x, y) -> ((x - xc) / rx, (y - yc) / ry) (which keeps t and convexity), the
+    edge keeps cos(t - phi) <= -d / |m| (m the mapped normal, phi its angle, d the
+    mapped center's signed distance), one arc; the visible arcs are the
+    intersection of these arcs over the edges.
+
+    Examples
+    --------
+    >>> import math, scanline as sl
+    >>> [(round(a / math.pi, 6), round(b / math.pi, 6))
+    ...  for a, b in sl.clip.ellipse(0, 0, 2, 1, (-3, 0, 3, 3))]   # upper half
+    [(0.0, 1.0)]
+    """
+    cx, cy = v.number("xc", xc), v.number("yc", yc)
+    ax, ay = v.number("rx", rx), v.number("ry", ry)
+    if ax <= 0 or ay <= 0:
+        raise ArgumentValueError(f"rx and ry must be > 0, got rx={rx!r}, ry={ry!r}")
+    ring = w.polygon(window, convex=True, algorithm="curve clipping")
+    unit = (ring - (cx, cy)) / (ax, ay)
+    normals = w.outward_normals(unit)
+    intervals = [(0.0, TWO_PI)]
+    for a, n in zip(unit, normals):
+        d = float(np.dot(n, -a))                 # n.(center - a), center = (0, 0)
+        c = -d                                   # inside where cos(t - phi) <= c
+        if c >= 1.0:
+            continue
+        if c <= -1.0:
+            return []
+        alpha = math.acos(c)
+        phi = math.atan2(n[1], n[0])
+        intervals = _intersect(intervals, (phi + alpha) % TWO_PI, TWO_PI - 2 * alpha)
+        if not intervals:
+            return []
+    # join the arc that runs through t = 0
+    if len(intervals) > 1 and intervals[0][0] == 0.0 and intervals[-1][1] == TWO_PI:
+        first = intervals.pop(0)
+        last = intervals.pop()
+        intervals.append((last[0], TWO_PI + first[1]))
+        intervals.sort()
+    return intervals
+
+
+def circle(xc, yc, r, window):
+    """The visible arcs of the circle of center (xc, yc) and radius r > 0, as angle
+    intervals; see :func:`ellipse`.
+
+    Examples
+    --------
+    >>> import math, scanline as sl
+    >>> arcs = sl.clip.circle(0, 0, 10, (-8, -8, 8, 8))   # four arcs at the corners
+    >>> len(arcs), round(sum(b - a for a, b in arcs) / math.pi, 6)
+    (4, 0.361338)
+    """
+    return ellipse(xc, yc, r, r, window)
+
+
+def arcs(xc, yc, rx, ry, intervals, tolerance=0.25):
+    """Flatten elliptical arcs into polylines within ``tolerance`` of the curve.
+
+    Returns a list of (K, 2) arrays, one per interval (as :func:`ellipse` returns
+    them), from start to end.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> [p.round(6).tolist() for p in sl.clip.arcs(0, 0, 1, 1, [(0, 1.5707963267948966)], 0.5)]
+    [[[1.0, 0.0], [0.0, 1.0]]]
+    """
+    cx, cy = v.number("xc", xc), v.number("yc", yc)
+    ax, ay = v.number("rx", rx), v.number("ry", ry)
+    tol = v.number("tolerance", tolerance)
+    if tol <= 0:
+        raise ArgumentValueError(f"tolerance must be > 0, got {tolerance!r}")
+    r = max(abs(ax), abs(ay))
+    step = 2 * math.acos(max(-1.0, 1 - tol / r)) if r > 0 else math.pi
+    out = []
+    for start, end in intervals:
+        n = max(1, math.ceil((end - start) / step))
+        t = np.linspace(start, end, n + 1)
+        out.append(np.stack([cx + ax * np.cos(t), cy + ay * np.sin(t)], axis=1))
+    return out
+
+
+def curve(c, window, tolerance=0.25, method="liang-barsky"):
+    """Clip any curve by its flattened polyline: the visible pieces, (K, 2) arrays.
+
+    ``c`` is an object with ``flatten(tolerance)`` (the curves of
+    :mod:`scanline.curves`) or an (N, 2) array of points along a curve; the pieces
+    come from :func:`scanline.clip.polyline`.
+    """
+    pts = c.flatten(tolerance) if hasattr(c, "flatten") else c
+    pts = _points(pts, "curve")
+    return polyline(pts, window, method)

@@ -8,8 +8,6 @@ retained picture).  ``save()`` / ``restore()`` (or ``with ctx:``) keep and bring
 the whole state.
 """
 
-import copy
-
 import numpy as np
 
 from . import _validate as v
@@ -24,7 +22,17 @@ from .framebuffer import FrameBuffer
 
 
 class _State:
+    """The current state; attribute values (LineStyle, FillStyle, colors, the clip
+    region) are never changed in place, so a copy of the dicts is a full copy."""
+
     __slots__ = ("ctm", "line", "fill", "text", "clip")
+
+    def copy(self):
+        new = _State()
+        new.ctm = self.ctm.copy()
+        new.line, new.fill, new.text = dict(self.line), dict(self.fill), dict(self.text)
+        new.clip = self.clip
+        return new
 
 
 class Context:
@@ -94,7 +102,7 @@ class Context:
     # -- state stack ------------------------------------------------------------------------
     def save(self):
         """Push a copy of the whole state (CTM, attributes, clip window)."""
-        self._stack.append(copy.deepcopy(self._state))
+        self._stack.append(self._state.copy())
 
     def restore(self):
         """Pop the state pushed by the matching :meth:`save`."""
@@ -159,10 +167,15 @@ class Context:
     # -- attributes ---------------------------------------------------------------------------
     def set_line(self, **attributes):
         """Change line attributes: ``color``, ``width``, ``cap``, ``join``,
-        ``miter_limit``, ``dash``, ``dash_phase`` (those of ``sl.draw.polyline``)."""
-        current = {**self._state.line, **attributes}
-        current["color_"] = current.pop("color")
-        self._state.line = p.line_attributes(**current)
+        ``miter_limit``, ``dash`` (``"solid"`` for none), ``dash_phase`` (those of
+        ``sl.draw.polyline``)."""
+        line = dict(self._state.line)
+        if "color" in attributes:
+            line["color"] = p.color("color", attributes.pop("color"))
+        if "pen" in attributes:
+            p.line_attributes(pen=attributes["pen"])  # refused, saying why
+        line["style"] = line["style"].replace(**attributes)
+        self._state.line = line
 
     def set_fill(self, color=None, style=None, rule=None, edge=None):
         """Change fill attributes: ``color``, ``style`` (FillStyle or its word),

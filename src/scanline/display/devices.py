@@ -5,8 +5,8 @@ y up) and two drawing operations, called with geometry already clipped to the de
 
 ``stroke(pieces, closed, attributes)``
     Polylines, each a (K, 2) array; ``closed`` when one unclipped ring is given;
-    ``attributes`` the line attributes (color, width, cap, join, miter_limit, dash,
-    dash_phase).
+    ``attributes`` the line attributes: ``color`` and ``style``, a
+    :class:`scanline.LineStyle`.
 ``fill(contours, attributes)``
     One area: contours combined by ``attributes["rule"]``, painted in
     ``attributes["style"]`` (None: solid) and ``attributes["color"]``.
@@ -24,11 +24,13 @@ import numpy as np
 from .. import draw
 from ..color.spec import rgba
 from ..framebuffer import FrameBuffer, write_atomically
+from ..linestyle import LineStyle
 from . import spans
+from .primitives import THIN
 
-def _simple(attributes):
+def _simple(style):
     """True when a stroke is a plain one-pixel line (Bresenham segments suffice)."""
-    return attributes["width"] <= 1.0 and attributes["dash"] is None
+    return style.width <= 1 and style.solid
 
 
 def _segments(pieces, closed):
@@ -60,14 +62,11 @@ class RasterDevice:
         self.width, self.height = fb.width, fb.height
 
     def stroke(self, pieces, closed, attributes):
-        a = attributes
-        if _simple(a) or not hasattr(draw, "polylines"):
-            draw.lines(self.fb, _segments(pieces, closed), color=a["color"])
-            return
-        draw.polylines(self.fb, list(pieces), color=a["color"], closed=closed,
-                       width=a["width"], cap=a["cap"], join=a["join"],
-                       miter_limit=a["miter_limit"], dash=a["dash"],
-                       dash_phase=a["dash_phase"])
+        color, style = attributes["color"], attributes["style"]
+        if _simple(style):
+            draw.lines(self.fb, _segments(pieces, closed), color=color)
+        else:
+            draw.polylines(self.fb, list(pieces), color=color, closed=closed, style=style)
 
     def fill(self, contours, attributes):
         draw.polygon(self.fb, list(contours), color=attributes["color"],
@@ -168,27 +167,6 @@ def _num(x):
     return "0" if text in ("-0", "") else text
 
 
-#: Named dash patterns in device units (dash, gap, ...), for SVG's stroke-dasharray.
-DASH_ARRAYS = {"dashed": (6, 4), "dotted": (1, 3), "dash-dot": (6, 3, 1, 3)}
-
-
-def _dash_array(dash, phase):
-    """SVG (stroke-dasharray, stroke-dashoffset) for a dash attribute; None when solid."""
-    if dash is None:
-        return None
-    if isinstance(dash, str):
-        return DASH_ARRAYS[dash], phase
-    if isinstance(dash, int):  # a 16-bit raster mask, most significant bit first
-        bits = f"{dash:016b}"
-        if "0" not in bits:
-            return None
-        start = bits.index("1")
-        bits = bits[start:] + bits[:start]  # SVG patterns begin with a dash
-        runs = [len(r) for r in bits.replace("10", "1 0").replace("01", "0 1").split()]
-        return tuple(runs), phase + (16 - start) % 16
-    return tuple(dash), phase
-
-
 class SVGDevice:
     """An SVG document, the display file as resolution-independent vector output.
 
@@ -224,27 +202,26 @@ class SVGDevice:
     def stroke(self, pieces, closed, attributes):
         if not pieces:
             return
-        a = attributes
+        style = attributes["style"]
         extra = ""
-        dashes = _dash_array(a["dash"], a["dash_phase"])
-        if dashes:
-            extra = (f' stroke-dasharray="{" ".join(_num(d) for d in dashes[0])}"'
-                     f' stroke-dashoffset="{_num(dashes[1])}"')
+        lengths, phase = style.lengths()
+        if lengths:
+            extra = (f' stroke-dasharray="{" ".join(_num(d) for d in lengths)}"'
+                     f' stroke-dashoffset="{_num(phase)}"')
         self.elements.append(
-            f'<path d={self._path(pieces, closed)} fill="none"{_paint("stroke", a["color"])}'
-            f' stroke-width="{_num(a["width"])}" stroke-linecap="{a["cap"]}"'
-            f' stroke-linejoin="{a["join"]}" stroke-miterlimit="{_num(a["miter_limit"])}"'
-            f'{extra}/>')
+            f'<path d={self._path(pieces, closed)} fill="none"'
+            f'{_paint("stroke", attributes["color"])} stroke-width="{_num(style.width)}"'
+            f' stroke-linecap="{style.cap}" stroke-linejoin="{style.join}"'
+            f' stroke-miterlimit="{_num(style.miter_limit)}"{extra}/>')
 
     def fill(self, contours, attributes):
         style = attributes["style"]
-        line = {"color": attributes["color"], "width": 1.0, "cap": "butt", "join": "miter",
-                "miter_limit": 10.0, "dash": None, "dash_phase": 0.0}
+        line = {"color": attributes["color"], "style": THIN}
         if style is not None and style.kind in ("hollow", "hatch"):
             if style.kind == "hatch":
                 hatch = _fill_strokes(contours, attributes)
                 self.stroke([h.reshape(2, 2) for h in hatch], False,
-                            {**line, "width": float(style.line_width)})
+                            {**line, "style": LineStyle(width=style.line_width)})
             self.stroke(contours, True, line)
             return
         rule = "evenodd" if attributes["rule"] == "even-odd" else "nonzero"

@@ -290,12 +290,15 @@ class DisplayFile:
         attributes ``line``.
         """
         cs = p.contours("points", points)
+        outline = p.line_attributes("white" if edge is None else edge, "edge", **line)
         attrs = {
             "color": p.color("color", color),
             "rule": v.choice("rule", rule, p.RULES),
             "style": p.fill_style("style", style),
-            "edge": None if edge is None else p.line_attributes(edge, color_name="edge", **line),
+            "edge": None,
         }
+        if edge is not None:
+            attrs["edge"] = outline
         self._add("polygon", {"contours": [self._ndc(c) for c in cs]}, attrs)
 
     def ellipse(self, center, rx, ry, angle=0.0, color="white", fill=False, rule="even-odd",
@@ -308,11 +311,12 @@ class DisplayFile:
         axes = np.array([[math.cos(a), -math.sin(a)], [math.sin(a), math.cos(a)]]) @ np.diag([rx, ry])
         lin = self._normalization[:2, :2]
         attrs = {"fill": _flag("fill", fill)}
+        outline = p.line_attributes(color, **line)
         if attrs["fill"]:
             attrs.update(color=p.color("color", color), rule=v.choice("rule", rule, p.RULES),
                          style=p.fill_style("style", style), edge=None)
         else:
-            attrs.update(p.line_attributes(color, **line), closed=True)
+            attrs.update(outline, closed=True)
         self._add("ellipse", {"center": self._ndc(c)[0], "axes": lin @ axes}, attrs)
 
     def circle(self, center, radius, color="white", fill=False, **attributes):

@@ -17,7 +17,7 @@ import numpy as np
 from .. import _validate as v
 from ..errors import ArgumentValueError
 from . import pipeline, text
-from .primitives import Primitive
+from .primitives import THIN, Primitive
 from .viewing import device_rectangle, workstation
 
 _UNIT = (0.0, 0.0, 1.0, 1.0)
@@ -36,8 +36,7 @@ def _check_range(points, where):
 
 
 def _line(color):
-    return {"color": color, "width": 1.0, "cap": "butt", "join": "miter",
-            "miter_limit": 10.0, "dash": None, "dash_phase": 0.0}
+    return {"color": color, "style": THIN}
 
 
 def _area(prim, rect, device, where):

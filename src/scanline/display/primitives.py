@@ -18,21 +18,18 @@ where it was given (the scene loader adds the key path), not when the file is dr
 """
 
 import math
-import numbers
 
 import numpy as np
 
 from .. import _validate as v
 from ..attributes import FillStyle
+from ..linestyle import LineStyle
 from ..color.spec import rgba
 from ..errors import ArgumentTypeError, ArgumentValueError
 
 #: The primitive kinds, as scene files name them.
 KINDS = ("polyline", "polygon", "ellipse", "text", "markers")
 
-CAPS = ("butt", "round", "square")
-JOINS = ("miter", "round", "bevel")
-DASHES = ("solid", "dashed", "dotted", "dash-dot")
 RULES = ("even-odd", "nonzero")
 #: GKS polymarker types 1-5.
 MARKERS = ("dot", "plus", "asterisk", "circle", "cross")
@@ -42,8 +39,8 @@ FONTS = ("stroke", "sans", "bitmap")
 HORIZONTAL = ("left", "center", "right")
 VERTICAL = ("top", "cap", "half", "base", "bottom")
 TEXT_PATHS = ("right", "left", "up", "down")
-#: Widest line and largest marker, in device units.
-MAX_WIDTH = 4096.0
+#: Largest marker, in device units.
+MAX_MARKER = 4096.0
 
 #: How text is clipped: the whole string, whole characters, or strokes and pixels.
 TEXT_CLIPS = ("string", "character", "stroke")
@@ -71,48 +68,25 @@ def _positive(name, value):
     return x
 
 
-def _dash(name, value):
-    """None, a dash name, a 16-bit raster mask or a sequence of dash/gap lengths."""
-    if value is None or (isinstance(value, str) and value in DASHES):
-        return None if value in (None, "solid") else value
-    if isinstance(value, numbers.Integral) and not isinstance(value, bool):
-        if 0 < value < 2**16:
-            return int(value)
-        raise ArgumentValueError(f"{name}={value!r}: a bit mask must be in 1..65535")
-    if isinstance(value, (list, tuple)) and value:
-        lengths = tuple(_nonnegative(f"{name}[{i}]", x) for i, x in enumerate(value))
-        if sum(lengths) > 0:
-            return lengths
-        raise ArgumentValueError(f"{name}={value!r}: the dash lengths must not all be 0")
-    raise ArgumentValueError(
-        f"{name}={v._show(value)} is not a dash pattern; use 'solid', 'dashed', "
-        "'dotted', 'dash-dot', a 16-bit mask such as 0xF0F0, or lengths such as [6, 3]"
-    )
-
-
-def line_attributes(color_="white", width=1.0, cap="butt", join="miter", miter_limit=10.0,
-                    dash=None, dash_phase=0.0, color_name="color"):
-    """The validated line attributes (A1's ``LineStyle`` fields) as a dict;
+def line_attributes(color_="white", color_name="color", **style):
+    """Line attributes as a dict: ``color`` and ``style``, a :class:`scanline.LineStyle`
+    made from ``style`` (width, cap, join, miter_limit, dash, dash_phase);
     ``color_name`` is the color's name in messages."""
-    width = _positive("width", width)
-    if width > MAX_WIDTH:
-        raise ArgumentValueError(f"width={width} is too wide; the limit is {MAX_WIDTH}")
-    return {
-        "color": color(color_name, color_),
-        "width": width,
-        "cap": v.choice("cap", cap, CAPS),
-        "join": v.choice("join", join, JOINS),
-        "miter_limit": _positive("miter_limit", miter_limit),
-        "dash": _dash("dash", dash),
-        "dash_phase": v.number("dash_phase", dash_phase),
-    }
+    if "pen" in style:
+        raise ArgumentValueError("pen is not a display-file attribute: a vector device "
+                                 "cannot stamp a footprint; use width and cap")
+    return {"color": color(color_name, color_), "style": LineStyle(**style)}
+
+
+#: The line attributes of a plain one-pixel line.
+THIN = LineStyle()
 
 
 def marker_attributes(kind="plus", size=7.0, color_="white"):
     """The validated polymarker attributes as a dict."""
     size = _positive("size", size)
-    if size > MAX_WIDTH:
-        raise ArgumentValueError(f"size={size} is too large; the limit is {MAX_WIDTH}")
+    if size > MAX_MARKER:
+        raise ArgumentValueError(f"size={size} is too large; the limit is {MAX_MARKER}")
     return {"color": color("color", color_), "kind": v.choice("kind", kind, MARKERS),
             "size": size}
 

@@ -14,6 +14,7 @@ import math
 import numpy as np
 
 from . import pipeline
+from .primitives import THIN
 
 
 def _inside(box, window):
@@ -54,9 +55,7 @@ def draw(prim, window, device):
         if cs:
             contours.extend(pipeline.contours(cs, window))
     if strokes:
-        device.stroke(strokes, False, {"color": color, "width": 1.0, "cap": "round",
-                                       "join": "round", "miter_limit": 10.0,
-                                       "dash": None, "dash_phase": 0.0})
+        device.stroke(strokes, False, {"color": color, "style": THIN})
     if contours:
         device.fill(contours, {"color": color, "rule": "nonzero", "style": None})
     return strokes + contours

@@ -172,3 +172,20 @@ def test_fuzz_finite_polyline_or_clear_error(points, tolerance):
     assert np.isfinite(poly).all() and len(poly) >= 2
     np.testing.assert_array_equal(poly[0], curve.points[0])
     np.testing.assert_array_equal(poly[-1], curve.points[-1])
+
+
+@pytest.mark.parametrize("method", ["subdivision", "wang"])
+def test_flatten_all_equals_one_by_one(method):
+    from scanline.curves.flatten import flatten_all
+
+    plain = [c for name, c in CURVES.items() if name not in ("rational", "nurbs circle")]
+    batch = plain + list(CURVES.values()) if method == "subdivision" else plain
+    got = flatten_all(batch, 0.3, method)
+    assert len(got) == len(batch)
+    for curve, poly in zip(batch, got):
+        np.testing.assert_array_equal(poly, flatten(curve, 0.3, method))
+    assert flatten_all([], 0.3) == []
+    with pytest.raises(sl.ArgumentTypeError, match=r"curves\[1\]"):
+        flatten_all([CURVES["line"], "not a curve"], 0.3)
+    with pytest.raises(sl.ArgumentTypeError, match="list"):
+        flatten_all(CURVES["line"], 0.3)

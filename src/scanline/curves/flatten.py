@@ -103,45 +103,86 @@ def flatten(curve, tolerance=0.25, method="subdivision"):
     >>> len(flatten(c, tolerance=0.05)) > len(p)
     True
     """
-    if not isinstance(curve, Curve):
+    return _flatten([curve], tolerance, method, lambda i: "curve")[0]
+
+
+def flatten_all(curves, tolerance=0.25, method="subdivision"):
+    """Flatten many curves at once: a list of polylines, as :func:`flatten` gives them.
+
+    The Bezier pieces of all curves of one degree and dimension go through one
+    compiled call, so thousands of curves cost little more than their points.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> arcs = [sl.curves.Bezier([(0, 0), (5, 10), (10, 0)]),
+    ...         sl.curves.BSpline([(0, 0), (5, 10), (10, 0), (15, 10)], 3)]
+    >>> [len(p) for p in flatten_all(arcs, 0.25)]
+    [9, 16]
+    """
+    if isinstance(curves, Curve) or not hasattr(curves, "__iter__"):
         raise ArgumentTypeError(
-            f"curve must be a scanline.curves.Curve (Bezier, BSpline, ...), got "
-            f"{type(curve).__name__}"
+            f"curves must be a list of scanline.curves.Curve, got {type(curves).__name__}"
         )
+    return _flatten(list(curves), tolerance, method, lambda i: f"curves[{i}]")
+
+
+def _flatten(curves, tolerance, method, name):
     tol = tolerance_value(tolerance)
     v.choice("method", method, METHODS)
-    pieces = bezier_pieces(curve)
-    if pieces is None:
-        if method == "wang":
+    out = [None] * len(curves)
+    groups = {}
+    for i, curve in enumerate(curves):
+        if not isinstance(curve, Curve):
+            raise ArgumentTypeError(
+                f"{name(i)} must be a scanline.curves.Curve (Bezier, BSpline, ...), got "
+                f"{type(curve).__name__}"
+            )
+        pieces = bezier_pieces(curve)
+        if pieces is not None:
+            groups.setdefault(pieces.shape[1:], []).append((i, pieces))
+        elif method == "wang":
             raise ArgumentValueError(
                 f"method='wang' needs a curve in Bezier form (Bezier, BSpline); "
-                f"{type(curve).__name__} is flattened by method='subdivision'"
+                f"{name(i)} ({type(curve).__name__}) is flattened by method='subdivision'"
             )
-        return _distinct(_sampled(curve, tol))
-    if method == "wang":
-        return _distinct(_wang(pieces, tol))
-    return _distinct(subdivide(pieces, tol))
+        else:
+            out[i] = _distinct(_sampled(curve, tol))
+    for members in groups.values():
+        segments = np.concatenate([pieces for _, pieces in members])
+        points, firsts = (_wang if method == "wang" else subdivide)(segments, tol)
+        ends = np.append(firsts, len(points))
+        s = 0
+        for i, pieces in members:
+            out[i] = _distinct(points[ends[s]:ends[s + len(pieces)]])
+            s += len(pieces)
+    return out
 
 
 def subdivide(segments, tolerance):
     """Flatten Bezier segments given in homogeneous form, (S, n + 1, dim + 1) arrays of
-    [w x, w] with w > 0, by recursive subdivision; returns the (K, dim) points (each
-    segment's start, then the end of each piece)."""
+    [w x, w] with w > 0, by recursive subdivision.
+
+    Returns the (K, dim) points (each segment's start, then the end of each of its
+    pieces) and the (S,) index of each segment's start point.
+    """
     from .._kernels import flatten as k
 
     segments = np.ascontiguousarray(segments, dtype=np.float64)
     if segments.shape[1] < 2:  # degree 0: a point
-        return segments[:, 0, :-1] / segments[:, 0, -1:]
-    points, _, truncated = k.subdivide(segments, tolerance * tolerance, MAX_DEPTH, MAX_POINTS)
+        return segments[:, 0, :-1] / segments[:, 0, -1:], np.arange(len(segments))
+    points, firsts, truncated = k.subdivide(segments, tolerance * tolerance, MAX_DEPTH,
+                                            MAX_POINTS)
     if truncated:
         raise ArgumentValueError(
             f"tolerance={tolerance!r} is too small for a curve this large: flattening "
             f"would take more than {MAX_POINTS} points; use a larger tolerance"
         )
-    return points
+    return points, firsts
 
 
 def _wang(segments, tolerance):
+    """Wang's equal steps for each plain segment: (points, firsts) as :func:`subdivide`."""
     from ..geometry.flatten import MAX_STEPS, steps
     from .bezier import bernstein
 
@@ -153,17 +194,17 @@ def _wang(segments, tolerance):
     ctrl = segments[:, :, :-1]
     n = ctrl.shape[1] - 1
     if n < 1:
-        return ctrl[:, 0]
+        return ctrl[:, 0], np.arange(len(ctrl))
     m = steps(ctrl, tolerance) if n >= 2 else np.ones(len(ctrl), np.int64)
     if (m >= MAX_STEPS).any():
         raise ArgumentValueError(
             f"tolerance={tolerance!r} is too small for a curve this large "
             f"(more than {MAX_STEPS} steps per piece); use a larger tolerance"
         )
+    firsts = np.cumsum(m + 1) - (m + 1)
     seg = np.repeat(np.arange(len(ctrl)), m + 1)
-    i = np.arange(int((m + 1).sum())) - np.repeat(np.cumsum(m + 1) - (m + 1), m + 1)
-    u = i / m[seg]
-    return np.einsum("ak,akc->ac", bernstein(n, u), ctrl[seg])
+    u = (np.arange(int((m + 1).sum())) - firsts[seg]) / m[seg]
+    return np.einsum("ak,akc->ac", bernstein(n, u), ctrl[seg]), firsts
 
 
 def _distinct(points):

@@ -11,22 +11,24 @@ and then drawn as a polyline with every line attribute
 import numpy as np
 
 from ..curves.base import Curve
-from ..curves.flatten import flatten
+from ..curves.flatten import flatten_all
 from ..errors import ArgumentTypeError, ArgumentValueError
 
 
-def _outline(name, curve, tolerance, method):
-    if not isinstance(curve, Curve):
-        raise ArgumentTypeError(
-            f"{name} must be a scanline.curves.Curve (Bezier, BSpline, NURBS, Hermite ...), "
-            f"got {type(curve).__name__}"
-        )
-    if curve.dimension != 2:
-        raise ArgumentValueError(
-            f"{name} must be a 2-D curve in device coordinates, got a {curve.dimension}-D "
-            "curve; project its control points to (x, y) first"
-        )
-    return flatten(curve, tolerance, method)
+def _outlines(curves, tolerance, method, name):
+    """The flattened polylines of 2-D curves (``name(i)`` names curve i in errors)."""
+    for i, c in enumerate(curves):
+        if not isinstance(c, Curve):
+            raise ArgumentTypeError(
+                f"{name(i)} must be a scanline.curves.Curve (Bezier, BSpline, NURBS, "
+                f"Hermite ...), got {type(c).__name__}"
+            )
+        if c.dimension != 2:
+            raise ArgumentValueError(
+                f"{name(i)} must be a 2-D curve in device coordinates, got a "
+                f"{c.dimension}-D curve; project its control points to (x, y) first"
+            )
+    return flatten_all(curves, tolerance, method)
 
 
 def _is_closed(curve, points, closed):
@@ -111,7 +113,7 @@ def curve(fb, curve, color="white", tolerance=0.25, fill=False, closed=None, *,
     from .polygon import polygon
     from .strokes import polyline
 
-    points = _outline("curve", curve, tolerance, method)
+    points = _outlines([curve], tolerance, method, lambda i: "curve")[0]
     is_closed = _is_closed(curve, points, closed)
     if fill:
         if rule not in ("nonzero", "even-odd"):
@@ -150,7 +152,9 @@ def curves(fb, curves, color="white", tolerance=0.25, closed=None, *, antialias=
     """Stroke many curves in one call of :func:`scanline.draw.polylines`.
 
     Parameters as :func:`curve`; ``color`` may be one color or one per curve;
-    ``closed`` one value for all (None: decided per curve).
+    ``closed`` one value for all (None: decided per curve).  The curves are
+    flattened together (:func:`scanline.curves.flatten.flatten_all`: one compiled
+    call per degree).
 
     Examples
     --------
@@ -171,9 +175,9 @@ def curves(fb, curves, color="white", tolerance=0.25, closed=None, *, antialias=
             f"curves must be a list of scanline.curves.Curve, got {type(curves).__name__}; "
             "use sl.draw.curve for one curve"
         )
+    curves = list(curves)
     pieces, flags = [], []
-    for i, c in enumerate(curves):
-        points = _outline(f"curves[{i}]", c, tolerance, method)
+    for c, points in zip(curves, _outlines(curves, tolerance, method, lambda i: f"curves[{i}]")):
         is_closed = _is_closed(c, points, closed)
         pieces.append(_ring(points) if is_closed else points)
         flags.append(is_closed)

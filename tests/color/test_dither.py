@@ -373,3 +373,25 @@ def test_fuzz_any_image_any_setting(image, method, levels, palette_size, serpent
         fb = sl.color.dither(source, method, levels=levels, mode="L", serpentine=serpentine)
         assert set(np.unique(fb.to_array())) <= set(sl.color.gray_table(levels)[:, 0].tolist())
     assert fb.size == (image.shape[1], image.shape[0])
+
+
+# -- halftone patterns -----------------------------------------------------------------
+
+@pytest.mark.parametrize("size", [2, 4, 8])
+def test_halftone_cells_hold_round_intensity_times_size2_dots(size):
+    values = np.linspace(0, 1, 23)[None]                 # one row of 23 pixels
+    fb = sl.color.halftone(values, size)
+    assert fb.mode == "1" and fb.size == (23 * size, size)
+    cells = fb.to_array().reshape(size, 23, size).sum(axis=(0, 2))
+    assert cells.tolist() == np.floor(values[0] * size * size + 0.5).astype(int).tolist()
+    # dots are set in the order of the Bayer matrix: a cell with k dots has exactly
+    # the entries M < k set
+    m = sl.color.bayer_matrix(size)
+    k = int(cells[11])
+    assert (fb.to_array()[:, 11 * size:12 * size] == (m < k)).all()
+
+
+def test_halftone_bad_size():
+    for size in (3, 1, 16, True):
+        with pytest.raises(sl.ArgumentValueError, match="size"):
+            sl.color.halftone(np.zeros((2, 2)), size)

@@ -229,8 +229,8 @@ def indexed(source, table):
 
 def halftone(source, size=4):
     """A halftone bitmap: each pixel becomes a ``size`` x ``size`` cell of dots
-    (``size`` 2, 4 or 8) in which ``round(intensity * size**2)`` dots are set, in the
-    order of the Bayer matrix, so a cell shows ``size**2 + 1`` intensity levels.  The
+    (``size`` 2, 4 or 8) in which ``intensity * size**2`` dots, rounded to the nearest
+    whole number (halves down), are set in the order of the Bayer matrix, so a cell shows ``size**2 + 1`` intensity levels.  The
     result is ``size`` times wider and taller: resolution traded for gray levels.
 
     >>> import scanline as sl

@@ -33,6 +33,21 @@ def de_casteljau(points, u, out):
 
 
 @helper
+def last_at_most(values, lo, hi, t):
+    """Binary search: the last index l in [lo, hi] with values[l] <= t (values
+    non-decreasing, values[lo] <= t)."""
+    a = lo
+    b = hi
+    while a < b:
+        mid = (a + b + 1) // 2
+        if values[mid] <= t:
+            a = mid
+        else:
+            b = mid - 1
+    return a
+
+
+@helper
 def find_span(knots, lo, hi, t, guess):
     """The index l in [lo, hi] with knots[l] <= t < knots[l + 1].
 
@@ -46,15 +61,7 @@ def find_span(knots, lo, hi, t, guess):
         while l > lo and knots[l] >= knots[l + 1]:
             l -= 1
         return l
-    a = lo
-    b = hi
-    while a < b:  # the last l in [lo, hi] with knots[l] <= t
-        mid = (a + b + 1) // 2
-        if knots[mid] <= t:
-            a = mid
-        else:
-            b = mid - 1
-    return a
+    return last_at_most(knots, lo, hi, t)
 
 
 @kernel
@@ -102,15 +109,7 @@ def find_section(breaks, t, guess, scale):
         return guess
     if t >= breaks[last]:
         return last
-    a = 0
-    b = last
-    while a < b:  # the last s with breaks[s] <= t
-        mid = (a + b + 1) // 2
-        if breaks[mid] <= t:
-            a = mid
-        else:
-            b = mid - 1
-    return a
+    return last_at_most(breaks, 0, last, t)
 
 
 @kernel

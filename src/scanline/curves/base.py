@@ -12,7 +12,7 @@ import numbers
 import numpy as np
 
 from ..errors import ArgumentTypeError, ArgumentValueError
-from .._validate import _show
+from .._validate import _show, choice
 
 
 class Curve:
@@ -31,14 +31,18 @@ class Curve:
     #: set by subclasses
     domain = (0.0, 1.0)
     dimension = 2
+    #: names of the evaluation algorithms a subclass offers (``method=``)
+    METHODS = ()
 
-    def evaluate(self, u):
+    def evaluate(self, u, method=None):
         """Points on the curve.
 
         Parameters
         ----------
         u : float or array_like of float
             Parameter values inside ``domain`` (the ends included).
+        method : str, optional
+            One of the class's ``METHODS``; None picks the default.
 
         Returns
         -------
@@ -50,8 +54,11 @@ class Curve:
         ArgumentValueError
             If a parameter is NaN or outside ``domain``.
         """
+        if method is not None:
+            choice("method", method, self.METHODS)
         u = parameters("u", u, self.domain)
-        out = self._evaluate(u.ravel())
+        flat = u.ravel()
+        out = self._evaluate(flat) if method is None else self._evaluate(flat, method)
         return out.reshape(u.shape + (self.dimension,))
 
     __call__ = evaluate

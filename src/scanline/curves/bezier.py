@@ -16,7 +16,7 @@ from .. import _validate as v
 from .._kernels import curves as _k
 from .base import Curve, control_points, parameters, weights_array
 from .matrices import bezier_matrix
-from .rational import RationalDerivative, project
+from .rational import RationalDerivative, Weighted, project
 
 METHODS = ("de-casteljau", "bernstein", "recursive", "matrix")
 
@@ -55,7 +55,7 @@ def bernstein_recursive(degree, u):
     return row
 
 
-class Bezier(Curve):
+class Bezier(Weighted, Curve):
     """A Bezier curve P(u) = Σ Pₖ BEZ_{k,n}(u), 0 ≤ u ≤ 1, of degree n = len(points) − 1.
 
     Parameters
@@ -84,6 +84,8 @@ class Bezier(Curve):
     P. de Casteljau, *Outillages méthodes calcul*, Citroën, 1959.
     """
 
+    METHODS = METHODS
+
     def __init__(self, points, weights=None):
         self.points = control_points("points", points)
         self.degree = len(self.points) - 1
@@ -93,25 +95,6 @@ class Bezier(Curve):
             "weights", weights, len(self.points))
         self.points.flags.writeable = False
         self._coefficients = None
-
-    @property
-    def rational(self):
-        return self.weights is not None
-
-    def homogeneous(self):
-        """The control points [wₖPₖ, wₖ] (plain curves: [Pₖ, 1]) as an (n+1, dim+1) array."""
-        w = np.ones(len(self.points)) if self.weights is None else self.weights
-        return np.hstack([self.points * w[:, None], w[:, None]])
-
-    def evaluate(self, u, method=None):
-        """Points on the curve; see :meth:`Curve.evaluate`.  ``method`` is None
-        (automatic) or one of "de-casteljau", "bernstein", "recursive", "matrix"."""
-        if method is not None:
-            v.choice("method", method, METHODS)
-        u = parameters("u", u, self.domain)
-        return self._evaluate(u.ravel(), method).reshape(u.shape + (self.dimension,))
-
-    __call__ = evaluate
 
     def _evaluate(self, u, method=None):
         if method is None:

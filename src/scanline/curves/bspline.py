@@ -18,7 +18,7 @@ from .._kernels import curves as _k
 from ..errors import ArgumentTypeError, ArgumentValueError
 from .._validate import _show
 from .base import Curve, control_points, parameters, weights_array
-from .rational import RationalDerivative, project
+from .rational import RationalDerivative, Weighted, project
 
 KNOT_KINDS = ("open", "uniform", "periodic")
 METHODS = ("de-boor", "cox-de-boor", "matrix")
@@ -148,7 +148,7 @@ def basis(knots, order, u, last=None):
     return b.reshape(u.shape + (b.shape[1],))
 
 
-class BSpline(Curve):
+class BSpline(Weighted, Curve):
     """A B-spline curve P(u) = Σₖ Pₖ B_{k,d}(u) of order d (degree d − 1).
 
     Parameters
@@ -186,6 +186,8 @@ class BSpline(Curve):
     W. Boehm, "Inserting new knots into B-spline curves", *CAD* 12(4), 1980.
     L. Piegl and W. Tiller, *The NURBS Book*, 2nd ed., Springer, 1997.
     """
+
+    METHODS = METHODS
 
     def __init__(self, points, order=4, knots="open", weights=None):
         pts = control_points("points", points)
@@ -227,25 +229,6 @@ class BSpline(Curve):
         curve.closed = False
         curve._set(points, order, knots, weights)
         return curve
-
-    @property
-    def rational(self):
-        return self.weights is not None
-
-    def homogeneous(self):
-        """Control points [wₖPₖ, wₖ] (plain curves: [Pₖ, 1]), shape (n + 1, dim + 1)."""
-        w = np.ones(len(self.points)) if self.weights is None else self.weights
-        return np.hstack([self.points * w[:, None], w[:, None]])
-
-    def evaluate(self, u, method=None):
-        """Points on the curve; see :meth:`Curve.evaluate`.  ``method`` is None
-        (automatic), "de-boor", "cox-de-boor" or "matrix"."""
-        if method is not None:
-            v.choice("method", method, METHODS)
-        u = parameters("u", u, self.domain)
-        return self._evaluate(u.ravel(), method).reshape(u.shape + (self.dimension,))
-
-    __call__ = evaluate
 
     def _evaluate(self, u, method=None):
         if method is None:

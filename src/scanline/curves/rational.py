@@ -12,6 +12,20 @@ import numpy as np
 from .base import Curve
 
 
+class Weighted:
+    """Mixin of curves with control ``points`` and optional ``weights``."""
+
+    @property
+    def rational(self):
+        """True if the curve has weights (a rational curve)."""
+        return self.weights is not None
+
+    def homogeneous(self):
+        """Control points [wₖPₖ, wₖ] (plain curves: [Pₖ, 1]), shape (n + 1, dim + 1)."""
+        w = np.ones(len(self.points)) if self.weights is None else self.weights
+        return np.hstack([self.points * w[:, None], w[:, None]])
+
+
 def project(homogeneous):
     """Points (..., dim + 1) in homogeneous coordinates -> (..., dim) Cartesian points."""
     return homogeneous[..., :-1] / homogeneous[..., -1:]

@@ -78,6 +78,17 @@ def test_basis_against_the_literal_recursion():
         np.testing.assert_allclose(sl.curves.basis(t, order, u), ref, atol=1e-13)
 
 
+def test_order_one_is_half_open_so_interior_knots_count_once():
+    # the notes' closed interval u_k <= u <= u_k+1 would make B_1,1(1) = B_2,1(1) = 1 and
+    # the sum 2 at every interior knot (erratum E43)
+    knots = [0, 0, 1, 2, 3, 3]
+    b = sl.curves.basis(knots, 1, [0.0, 1.0, 2.0, 2.5, 3.0])
+    assert b.tolist() == [[0, 1, 0, 0, 0], [0, 0, 1, 0, 0], [0, 0, 0, 1, 0],
+                          [0, 0, 0, 1, 0], [0, 0, 0, 1, 0]]
+    closed = [[float(knots[k] <= u <= knots[k + 1]) for k in range(5)] for u in (1.0, 2.0)]
+    assert [sum(row) for row in closed] == [2, 2]
+
+
 def test_the_notes_open_uniform_knot_vectors():
     assert sl.curves.open_uniform_knots(4, 2).tolist() == [0, 0, 1, 2, 3, 3]
     assert sl.curves.open_uniform_knots(5, 4).tolist() == [0, 0, 0, 0, 1, 2, 2, 2, 2]

@@ -48,12 +48,17 @@ def last_at_most(values, lo, hi, t):
 
 
 @helper
-def find_span(knots, lo, hi, t, guess):
+def find_span(knots, lo, hi, t, guess, scale):
     """The index l in [lo, hi] with knots[l] <= t < knots[l + 1].
 
     ``t`` at or beyond ``knots[hi + 1]`` gives the last non-empty span (so the curve is
-    closed at its right end); ``guess`` is tried first (sorted parameters hit it).
+    closed at its right end).  Tries the estimate lo + (t - knots[lo]) * scale first,
+    exact for (open) uniform knots, then ``guess`` (sorted parameters hit it), then a
+    binary search.
     """
+    est = min(max(lo + int((t - knots[lo]) * scale), lo), hi)
+    if knots[est] <= t < knots[est + 1]:
+        return est
     if knots[guess] <= t < knots[guess + 1]:
         return guess
     if t >= knots[hi + 1]:
@@ -77,10 +82,11 @@ def de_boor(points, knots, order, u, out):
     work = np.empty((d, dim))
     lo = d - 1
     hi = m - 1
+    scale = (hi + 1 - lo) / (knots[hi + 1] - knots[lo])
     span = lo
     for i in range(u.shape[0]):
         t = u[i]
-        span = find_span(knots, lo, hi, t, span)
+        span = find_span(knots, lo, hi, t, span, scale)
         base = span - d + 1
         for j in range(d):
             for c in range(dim):
@@ -112,6 +118,17 @@ def find_section(breaks, t, guess, scale):
     return last_at_most(breaks, 0, last, t)
 
 
+@helper
+def horner(coefficients, s, t, out, i):
+    """out[i] = section s of the piecewise polynomial at local t, by Horner's rule."""
+    m = coefficients.shape[1]
+    for c in range(coefficients.shape[2]):
+        acc = coefficients[s, 0, c]
+        for j in range(1, m):
+            acc = acc * t + coefficients[s, j, c]
+        out[i, c] = acc
+
+
 @kernel
 def piecewise_horner(breaks, coefficients, u, out):
     """out[i] = the piecewise polynomial at ``u[i]``, by Horner's rule.
@@ -120,15 +137,14 @@ def piecewise_horner(breaks, coefficients, u, out):
     the local parameter t = (u - breaks[s]) / (breaks[s+1] - breaks[s]) in [0, 1] has
     the coefficient rows ``coefficients[s]`` (m, dim), highest power first.
     """
-    sections, m, dim = coefficients.shape
+    sections = coefficients.shape[0]
     scale = sections / (breaks[sections] - breaks[0])
+    if sections == 1:  # a single polynomial (a Bezier curve): no search
+        for i in range(u.shape[0]):
+            horner(coefficients, 0, (u[i] - breaks[0]) * scale, out, i)
+        return
     s = 0
     for i in range(u.shape[0]):
         x = u[i]
         s = find_section(breaks, x, s, scale)
-        t = (x - breaks[s]) / (breaks[s + 1] - breaks[s])
-        for c in range(dim):
-            acc = coefficients[s, 0, c]
-            for j in range(1, m):
-                acc = acc * t + coefficients[s, j, c]
-            out[i, c] = acc
+        horner(coefficients, s, (x - breaks[s]) / (breaks[s + 1] - breaks[s]), out, i)

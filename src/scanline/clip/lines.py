@@ -11,7 +11,8 @@ METHODS = ("cohen-sutherland", "liang-barsky", "cyrus-beck")
 
 
 def _segments(segments, name="segments"):
-    """(N, 4) float64 array of finite segments within +-2**30."""
+    """(N, 4) float64 array; the values are checked by the kernels (see
+    :func:`_check`)."""
     try:
         a = np.asarray(segments, dtype=np.float64)
     except (TypeError, ValueError):
@@ -23,13 +24,15 @@ def _segments(segments, name="segments"):
     if a.ndim != 2 or a.shape[1] != 4:
         raise ArgumentValueError(
             f"{name} must have shape (N, 4) (rows x0, y0, x1, y1), got shape {a.shape}")
-    bad = ~(np.abs(a) <= v.COORD_LIMIT).all(axis=1)   # NaN compares False
-    if bad.any():
-        row = int(np.argmax(bad))
-        raise ArgumentValueError(
-            f"{name} row {row} = {a[row].tolist()} must be finite and within the "
-            f"supported coordinate range [-{v.COORD_LIMIT}, {v.COORD_LIMIT}]")
     return np.ascontiguousarray(a)
+
+
+def _check(bad, a, name):
+    """Raise for row ``bad`` of ``a`` (a kernel found a NaN or a huge value there)."""
+    if bad >= 0:
+        raise ArgumentValueError(
+            f"{name} row {bad} = {a[bad].tolist()} must be finite and within the "
+            f"supported coordinate range [-{v.COORD_LIMIT}, {v.COORD_LIMIT}]")
 
 
 def _points(pts, name):
@@ -43,7 +46,13 @@ def _points(pts, name):
         return np.empty((0, 2))
     if a.ndim != 2 or a.shape[1] != 2:
         raise ArgumentValueError(f"{name} must have shape (N, 2), got shape {a.shape}")
-    return _segments(np.hstack([a, a]), name)[:, :2]
+    bad = ~(np.abs(a) <= v.COORD_LIMIT).all(axis=1)
+    if bad.any():
+        row = int(np.argmax(bad))
+        raise ArgumentValueError(
+            f"{name} row {row} = {a[row].tolist()} must be finite and within the "
+            f"supported coordinate range [-{v.COORD_LIMIT}, {v.COORD_LIMIT}]")
+    return np.ascontiguousarray(a)
 
 
 def _method(method):
@@ -153,19 +162,23 @@ def lines(segments, window, method="liang-barsky"):
     """
     method = _method(method)
     seg = _segments(segments)
-    out = seg.copy()
-    accepted = np.zeros(len(seg), np.bool_)
+    out = np.empty_like(seg)
+    accepted = np.empty(len(seg), np.bool_)
     if method == "cyrus-beck":
         ring = w.polygon(window, convex=True, algorithm="Cyrus-Beck")
-        k.cyrus_beck_lines(seg, ring, w.outward_normals(ring), out, accepted)
-        return out, accepted
-    if not w._is_rectangle_spec(window):
-        raise ArgumentValueError(
-            f"window must be a rectangle (xmin, ymin, xmax, ymax) for {method}; "
-            f"use method='cyrus-beck' for a convex polygon window, got {v._show(window)}")
-    xmin, ymin, xmax, ymax = w.rectangle(window)
-    kern = k.cohen_sutherland_lines if method == "cohen-sutherland" else k.liang_barsky_lines
-    kern(seg, xmin, ymin, xmax, ymax, out, accepted)
+        bad = k.cyrus_beck_lines(seg, ring, w.outward_normals(ring), float(v.COORD_LIMIT),
+                                 out, accepted)
+    else:
+        if not w._is_rectangle_spec(window):
+            raise ArgumentValueError(
+                f"window must be a rectangle (xmin, ymin, xmax, ymax) for {method}; "
+                f"use method='cyrus-beck' for a convex polygon window, got "
+                f"{v._show(window)}")
+        xmin, ymin, xmax, ymax = w.rectangle(window)
+        kern = (k.cohen_sutherland_lines if method == "cohen-sutherland"
+                else k.liang_barsky_lines)
+        bad = kern(seg, xmin, ymin, xmax, ymax, float(v.COORD_LIMIT), out, accepted)
+    _check(bad, seg, "segments")
     return out, accepted
 
 

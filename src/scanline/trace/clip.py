@@ -37,13 +37,13 @@ def _run(method, x0, y0, x1, y1, win, rows, columns, normals=None):
         raise v.ArgumentValueError(
             f"{('x0', 'y0', 'x1', 'y1')[int(np.argmax(bad))]} must be within "
             f"+-{v.COORD_LIMIT}")
-    out = np.empty(4)
+    out = np.empty((1, 4))
     log = np.full((rows, columns), np.nan)
     if normals is None:
         normals = np.zeros((0, 2))
     ok = k.trace_line(method, seg, win, normals, out, log)
     used = int(np.sum(~np.isnan(log[:, 0])))
-    return seg, bool(ok), out, log[:used]
+    return seg, bool(ok), out[0], log[:used]
 
 
 def _result(ok, out):

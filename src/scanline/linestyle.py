@@ -81,10 +81,12 @@ def _dash(dash):
         raise ArgumentValueError(f"dash lengths must be >= 0, got {list(dash)!r}")
     if len(lengths) % 2:
         lengths = lengths * 2  # an odd list repeats (SVG's stroke-dasharray rule)
+    if sum(lengths) < 1:
+        raise ArgumentValueError(
+            f"dash lengths {list(dash)!r} add up to less than 1 pixel per period; give "
+            "lengths in device units (pixels), such as (6, 3)")
     if sum(lengths[1::2]) == 0:
         return None             # no gap: solid
-    if sum(lengths) < 1e-3 or sum(lengths) < 1e-9 * max(lengths):
-        raise ArgumentValueError(f"dash lengths {list(dash)!r} add up to (almost) zero")
     return lengths
 
 

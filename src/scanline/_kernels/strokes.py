@@ -235,35 +235,89 @@ def pattern_period(dashes):
 
 
 @helper
-def dash_pieces(verts, offsets, closed, dashes, phase):
+def visible_part(x0, y0, dx, dy, box):
+    """The parameters ``(t0, t1)`` of the part of the segment (x0, y0) + t (dx, dy),
+    0 <= t <= 1, inside ``box`` = (xmin, ymin, xmax, ymax) (Liang-Barsky); t0 > t1
+    when it misses the box."""
+    t0 = 0.0
+    t1 = 1.0
+    for q in range(4):
+        if q == 0:
+            pq, qq = -dx, x0 - box[0]
+        elif q == 1:
+            pq, qq = dx, box[2] - x0
+        elif q == 2:
+            pq, qq = -dy, y0 - box[1]
+        else:
+            pq, qq = dy, box[3] - y0
+        if pq == 0.0:
+            if qq < 0:
+                return 1.0, 0.0
+        else:
+            t = qq / pq
+            if pq < 0:
+                t0 = max(t0, t)
+            else:
+                t1 = min(t1, t)
+    return t0, t1
+
+
+@helper
+def advance(dashes, period, k, left, distance):
+    """The pattern state (entry k, length left in it) ``distance`` further on.  A
+    boundary reached exactly stays in the entry that ends there (left = 0), so a
+    zero-length dash at the very start is still drawn."""
+    if distance <= left:
+        return k, left - distance
+    nd = dashes.shape[0]
+    distance -= left
+    k = (k + 1) % nd
+    distance = distance % period   # whole periods change nothing
+    left = dashes[k]
+    while distance > left:
+        distance -= left
+        k = (k + 1) % nd
+        left = dashes[k]
+    return k, left - distance
+
+
+@helper
+def dash_pieces(verts, offsets, closed, dashes, phase, box):
     """Cut polylines into dashes.
 
-    ``dashes`` holds on/off lengths (even count, positive sum); the pattern starts at
-    arc length ``phase`` on every polyline and runs on across its vertices (and around
-    a closed polyline, whose last dash joins its first when the pattern is on at the
-    start).  Returns ``(pverts, poffsets, pclosed, powner)``: open polylines (a closed
-    one if the pattern never turns off), each with the index of its polyline.
+    ``dashes`` holds on/off lengths (even count, sum >= 1); the pattern starts at arc
+    length ``phase`` on every polyline and runs on across its vertices (and around a
+    closed polyline, whose last dash joins its first when the pattern is on at the
+    start).  Only dashes that can reach ``box`` (xmin, ymin, xmax, ymax) are made: a
+    dash is cut where the path leaves the box, and the pattern skips the invisible
+    stretches arithmetically, so a path of 2**31 pixels costs only its visible dashes.
+    Returns ``(pverts, poffsets, pclosed, powner)``: open polylines (a closed one if
+    the pattern never turns off), each with the index of its polyline.
     """
     n = offsets.shape[0] - 1
     period = pattern_period(dashes)
     nd = dashes.shape[0]
-    # capacity: every dash boundary adds at most two vertices
-    total = 0.0
-    cap_v = 4
+    shortest = period
+    for i in range(0, nd, 2):
+        shortest = min(shortest, dashes[i] + dashes[i + 1])
+    # capacity: each dash period in view adds at most 2 * nd vertices
+    visible = 0.0
+    cap_v = 8
     for p in range(n):
         a = offsets[p]
         b = offsets[p + 1]
-        length = 0.0
-        for i in range(a, b - 1):
-            length += math.hypot(verts[i + 1, 0] - verts[i, 0], verts[i + 1, 1] - verts[i, 1])
-        if closed[p] and b - a > 1:
-            length += math.hypot(verts[a, 0] - verts[b - 1, 0], verts[a, 1] - verts[b - 1, 1])
-        total += length
-        cap_v += 2 * (b - a) + 6
-    cycles = total / period + 2.0 * n + 1.0
-    if cycles * nd > 1e9:  # the caller keeps patterns reasonable; never overrun memory
-        cycles = 1e9 / nd
-    cap_v += int(2 * nd * cycles) + 4
+        count = b - a
+        nseg = count if (closed[p] and count > 1) else count - 1
+        for s in range(nseg):
+            i = a + s
+            j = i + 1 if i + 1 < b else a
+            dx = verts[j, 0] - verts[i, 0]
+            dy = verts[j, 1] - verts[i, 1]
+            t0, t1 = visible_part(verts[i, 0], verts[i, 1], dx, dy, box)
+            if t0 <= t1:
+                visible += (t1 - t0) * math.hypot(dx, dy)
+        cap_v += 3 * count + 8
+    cap_v += int(2 * nd * (visible / period + 2.0 * n + 1.0))
     pv = np.empty((cap_v, 2), np.float64)
     po = np.empty(cap_v + 1, np.int64)
     pc = np.zeros(cap_v, np.bool_)
@@ -275,26 +329,19 @@ def dash_pieces(verts, offsets, closed, dashes, phase):
         b = offsets[p + 1]
         if b - a == 0:
             continue
-        # pattern state at the start: entry k, distance left in it
-        t = phase % period
-        k = 0
-        while t >= dashes[k]:
-            t -= dashes[k]
-            k = (k + 1) % nd
-        left = dashes[k] - t
-        on = k % 2 == 0
+        k, left = advance(dashes, period, 0, dashes[0], phase % period)
         first_piece = -1
-        starts_on = on
-        if on:
+        starts_on = k % 2 == 0
+        is_open = False                     # a piece is being laid down
+        count = b - a
+        nseg = count if (closed[p] and count > 1) else count - 1
+        if count == 1 and starts_on:        # a single point: a dot if it is on
             po[npc] = nv
             pw[npc] = p
-            first_piece = npc
             npc += 1
             pv[nv, 0] = verts[a, 0]
             pv[nv, 1] = verts[a, 1]
             nv += 1
-        count = b - a
-        nseg = count if (closed[p] and count > 1) else count - 1
         for s in range(nseg):
             i = a + s
             j = i + 1 if i + 1 < b else a
@@ -303,35 +350,58 @@ def dash_pieces(verts, offsets, closed, dashes, phase):
             dx = verts[j, 0] - x0
             dy = verts[j, 1] - y0
             seg = math.hypot(dx, dy)
-            pos = 0.0
-            while seg - pos > left and nv < cap_v - 4 and npc < cap_v - 2:
+            t0, t1 = visible_part(x0, y0, dx, dy, box)
+            if t0 > t1 or seg == 0.0:
+                is_open = False
+                k, left = advance(dashes, period, k, left, seg)
+                continue
+            pos = t0 * seg
+            end = t1 * seg
+            if pos > 0.0:                   # an invisible stretch first
+                is_open = False
+                k, left = advance(dashes, period, k, left, pos)
+            if k % 2 == 0 and not is_open:  # on: a piece starts here
+                if s == 0 and pos == 0.0:
+                    first_piece = npc
+                po[npc] = nv
+                pw[npc] = p
+                npc += 1
+                pv[nv, 0] = x0 + pos / seg * dx
+                pv[nv, 1] = y0 + pos / seg * dy
+                nv += 1
+                is_open = True
+            while end - pos > left and nv < cap_v - 4:
                 pos += left
                 f = pos / seg
                 x = x0 + f * dx
                 y = y0 + f * dy
-                if on:  # the dash ends here
+                if k % 2 == 0:  # the dash ends here
+                    if dashes[k] == 0.0:  # a zero-length dash: give it a direction
+                        x += EPSILON_DASH * dx / seg
+                        y += EPSILON_DASH * dy / seg
                     pv[nv, 0] = x
                     pv[nv, 1] = y
                     nv += 1
-                    if dashes[k] == 0.0:  # a zero-length dash: give it a direction
-                        pv[nv - 1, 0] = x + EPSILON_DASH * dx / seg
-                        pv[nv - 1, 1] = y + EPSILON_DASH * dy / seg
-                else:   # a dash starts here
+                    is_open = False
+                else:           # a dash starts here
                     po[npc] = nv
                     pw[npc] = p
                     npc += 1
                     pv[nv, 0] = x
                     pv[nv, 1] = y
                     nv += 1
-                on = not on
+                    is_open = True
                 k = (k + 1) % nd
                 left = dashes[k]
-            left -= seg - pos
-            if on and nv < cap_v - 2:
-                pv[nv, 0] = verts[j, 0]
-                pv[nv, 1] = verts[j, 1]
+            left -= end - pos
+            if is_open and nv < cap_v - 2:
+                pv[nv, 0] = x0 + t1 * dx if t1 < 1.0 else verts[j, 0]
+                pv[nv, 1] = y0 + t1 * dy if t1 < 1.0 else verts[j, 1]
                 nv += 1
-        if closed[p] and count > 1 and on and starts_on:
+            if t1 < 1.0:                    # an invisible stretch last
+                is_open = False
+                k, left = advance(dashes, period, k, left, seg - end)
+        if closed[p] and count > 1 and is_open and starts_on and first_piece >= 0:
             if first_piece == npc - 1:      # never off: the whole ring, closed
                 pc[first_piece] = True
                 nv -= 1                      # the ring's start vertex, repeated
@@ -390,24 +460,29 @@ def build_strokes(verts, offsets, closed, owner, npoly, r, cap, join_kind, miter
 
 
 @helper
-def outlines(verts, offsets, closed, r, cap, join_kind, miter_limit, dashes, phase):
-    """Stroke outlines of every polyline (dashed when ``dashes`` is not empty)."""
+def outlines(verts, offsets, closed, r, cap, join_kind, miter_limit, dashes, phase, box):
+    """Stroke outlines of every polyline (dashed when ``dashes`` is not empty; only
+    the dashes that reach ``box`` are made)."""
     npoly = offsets.shape[0] - 1
     if dashes.shape[0] == 0:
         owner = np.arange(npoly)
         return build_strokes(verts, offsets, closed, owner, npoly, r, cap, join_kind,
                              miter_limit)
-    pv, po, pc, pw = dash_pieces(verts, offsets, closed, dashes, phase)
+    pv, po, pc, pw = dash_pieces(verts, offsets, closed, dashes, phase, box)
     return build_strokes(pv, po, pc, pw, npoly, r, cap, join_kind, miter_limit)
 
 
 @kernel
-def stroke_outlines(verts, offsets, closed, r, cap, join_kind, miter_limit, dashes, phase):
+def stroke_outlines(verts, offsets, closed, r, cap, join_kind, miter_limit, dashes, phase,
+                    box):
     """The outlines of the strokes of half-width ``r`` of the polylines
     ``verts[offsets[i]:offsets[i + 1]]`` (``closed[i]``), as ``(outline vertices,
-    contour offsets, polygon offsets, max_edges)``: stroke ``i`` is the union of
-    contours ``polys[i] .. polys[i + 1] - 1`` (all counterclockwise)."""
-    return outlines(verts, offsets, closed, r, cap, join_kind, miter_limit, dashes, phase)
+    contour offsets, polygon offsets, max_edges)``: stroke ``i`` is filled by the
+    nonzero rule over contours ``polys[i] .. polys[i + 1] - 1``.  Dashes are made
+    only where they can reach ``box`` (xmin, ymin, xmax, ymax), which must contain
+    the visible area widened by the reach of joins and caps."""
+    return outlines(verts, offsets, closed, r, cap, join_kind, miter_limit, dashes, phase,
+                    box)
 
 
 @kernel
@@ -416,8 +491,10 @@ def draw_strokes(buf, packed, width, height, ox, oy, verts, offsets, closed, col
     """Stroke polylines into the raster whose pixel (0, 0) is device pixel (ox, oy):
     the outlines of :func:`stroke_outlines` filled with the nonzero rule, polyline
     ``i`` in ``colors[i]`` (or ``colors[0]`` for all)."""
+    reach = r * max(miter_limit, 2.0) + 2.0
+    box = np.array([ox - reach, oy - reach, ox + width - 1 + reach, oy + height - 1 + reach])
     out, contours, polys, max_edges = outlines(verts, offsets, closed, r, cap, join_kind,
-                                               miter_limit, dashes, phase)
+                                               miter_limit, dashes, phase, box)
     if packed:
         polygons_loop(buf, True, width, height, ox, oy, out, contours, polys, colors, NONZERO,
                       max_edges)
@@ -427,7 +504,7 @@ def draw_strokes(buf, packed, width, height, ox, oy, verts, offsets, closed, col
 
 
 @kernel
-def dashed_polylines(verts, offsets, closed, dashes, phase):
+def dashed_polylines(verts, offsets, closed, dashes, phase, box):
     """The dashes of polylines as polylines: ``(vertices, offsets, closed, owner)``
     (see :func:`dash_pieces`; an owner of -1 marks an emptied piece)."""
-    return dash_pieces(verts, offsets, closed, dashes, phase)
+    return dash_pieces(verts, offsets, closed, dashes, phase, box)

@@ -180,6 +180,12 @@ def _per_piece(color, owner):
     return color
 
 
+def _view(fb, margin):
+    """The frame buffer's area widened by ``margin`` pixels, as a float box."""
+    return np.array([-margin, -margin, fb.width - 1 + margin, fb.height - 1 + margin],
+                    np.float64)
+
+
 def _antialiased(fb, verts, offsets, closed, color, style):
     from . import antialias as aa
 
@@ -191,7 +197,8 @@ def _antialiased(fb, verts, offsets, closed, color, style):
     if style.width == 1:
         if lengths is not None:
             verts, offsets, closed, owner = ks.dashed_polylines(
-                verts, offsets, closed, np.array(lengths, np.float64), float(phase))
+                verts, offsets, closed, np.array(lengths, np.float64), float(phase),
+                _view(fb, 3.0))
         else:
             owner = np.arange(len(offsets) - 1)
         segs, seg_owner = [], []
@@ -212,7 +219,7 @@ def _antialiased(fb, verts, offsets, closed, color, style):
     dashes = _NO_DASHES if lengths is None else np.array(lengths, np.float64)
     out, contours, polys, _ = ks.stroke_outlines(
         verts, offsets, closed, 0.5 * style.width, CAPS[style.cap], JOINS[style.join],
-        style.miter_limit, dashes, float(phase))
+        style.miter_limit, dashes, float(phase), _view(fb, _margin(style)))
     # the outlines are already flat arrays (vertices, contour offsets, shape offsets):
     # hand them over as they are rather than as lists of contours
     aa._fill_parsed(fb, out, contours, polys, color, "nonzero")

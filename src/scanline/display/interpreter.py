@@ -22,6 +22,10 @@ from .viewing import device_rectangle, workstation
 
 _UNIT = (0.0, 0.0, 1.0, 1.0)
 
+#: How far (device units) outside its clipping rectangle a point may lie and still
+#: count as inside: a few hundred times the rounding error of the mappings.
+CLIP_TOLERANCE = 1e-9
+
 #: Gap (device units) between a highlighted segment and its frame.
 HIGHLIGHT_MARGIN = 2.0
 
@@ -110,7 +114,7 @@ def interpret(display_file, device, highlight="magenta"):
 
     color("highlight", highlight)
     ws = workstation(device.width, device.height)
-    frame = device_rectangle(ws, _UNIT)
+    frame = _padded(device_rectangle(ws, _UNIT))
     order = sorted((s for s in display_file.segments if s.visible),
                    key=lambda s: (s.priority, s._order))
     for seg in order:
@@ -118,12 +122,19 @@ def interpret(display_file, device, highlight="magenta"):
         drawn = []
         for i, prim in enumerate(seg.primitives):
             rect = frame if prim.clip is None else pipeline.intersect(
-                device_rectangle(ws, prim.clip), frame)
+                _padded(device_rectangle(ws, prim.clip)), frame)
             if rect is not None:
                 where = f"segment {seg.name!r}, primitive {i} ({prim.kind})"
                 drawn += draw_primitive(prim.transformed(m), rect, device, where)
         if seg.highlighted and drawn:
             _frame(np.vstack(drawn), frame, device, highlight)
+
+
+def _padded(rect):
+    """``rect`` grown by :data:`CLIP_TOLERANCE`: a point on a viewport's edge stays
+    inside although mapping it and the edge may round differently."""
+    return (rect[0] - CLIP_TOLERANCE, rect[1] - CLIP_TOLERANCE,
+            rect[2] + CLIP_TOLERANCE, rect[3] + CLIP_TOLERANCE)
 
 
 def _frame(points, frame, device, color):

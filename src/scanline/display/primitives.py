@@ -149,11 +149,11 @@ def points(name, value, minimum=1):
 def contours(name, value):
     """A fill area: one list of points or a list of such lists -> list of (K, 2) arrays."""
     try:
-        a = np.asarray(value, dtype=np.float64)
-        if a.ndim == 2:
-            return [points(name, a, 3)]
+        flat = np.asarray(value, dtype=np.float64).ndim == 2
     except (TypeError, ValueError, OverflowError):
-        pass  # ragged: several contours of different lengths
+        flat = False  # ragged: several contours of different lengths (or not numbers)
+    if flat:
+        return [points(name, value, 3)]
     if not isinstance(value, (list, tuple)) or not value:
         raise ArgumentValueError(
             f"{name} must be a list of points [x, y] or a list of such contours, "

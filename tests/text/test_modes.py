@@ -1,0 +1,67 @@
+"""Text in every frame-buffer mode, opaque and translucent, with and without
+antialiasing; the glyph cache changes nothing."""
+
+import numpy as np
+import pytest
+
+import scanline as sl
+from scanline.text import glyphcache
+
+
+def test_every_mode_sets_the_same_pixels():
+    masks = []
+    for mode, color in (("1", 1), ("L", 200), ("RGB", "red"), ("RGBA", "red"), ("P", "red")):
+        fb = sl.FrameBuffer(60, 20, mode=mode)
+        sl.draw.text(fb, 2, 5, "Mode&", color=color, height=11)
+        a = fb.to_array()
+        masks.append(a.any(axis=2) if a.ndim == 3 and mode != "RGBA" else
+                     a[..., 0] > 0 if a.ndim == 3 else a > 0)
+    for m in masks[1:]:
+        assert (m == masks[0]).all()
+    assert masks[0].sum() > 50
+
+
+def test_translucent_color_composites_over():
+    fb = sl.FrameBuffer(30, 20, mode="RGB", background=(0, 0, 200))
+    sl.draw.text(fb, 2, 2, "I", color=(255, 0, 0, 64), font="bitmap", height=14)
+    inside = fb.to_array()[20 - 1 - 8, 2 + 4]        # a pixel of the I's stem
+    w = 64 / 255
+    expected = (round(255 * w), 0, round(200 * (1 - w)))
+    assert tuple(int(c) for c in inside) == pytest.approx(expected, abs=1)
+    fb = sl.FrameBuffer(30, 20, mode="RGBA", background=(0, 0, 0, 0))
+    sl.draw.text(fb, 2, 2, "I", color=(255, 0, 0, 64), font="bitmap", height=14)
+    assert tuple(int(c) for c in fb.to_array()[20 - 1 - 8, 6]) == (255, 0, 0, 64)
+
+
+def test_antialiased_text_in_gray_bitmap_and_palette():
+    gray = sl.FrameBuffer(60, 24, mode="L")
+    sl.draw.text(gray, 2.3, 6.6, "aA", color=255, height=13, antialias=True)
+    g = gray.to_array()
+    assert ((g > 0) & (g < 255)).sum() > 20
+    bits = sl.FrameBuffer(60, 24, mode="1")
+    sl.draw.text(bits, 2.3, 6.6, "aA", color=1, height=13, antialias=True)
+    assert (bits.to_array() == (g >= 128)).mean() > 0.99
+    pal = sl.FrameBuffer(60, 24, mode="P", color_table=["black", "white"])
+    sl.draw.text(pal, 2.3, 6.6, "aA", color="red", height=13, antialias=True)
+    p = pal.to_array()
+    assert len(pal.color_table) == 3 and set(np.unique(p)) == {0, 2}
+
+
+def test_cached_and_direct_fills_agree(monkeypatch):
+    """Huge glyphs are filled directly instead of cached: same pixels either way."""
+    cached = sl.FrameBuffer(200, 120, mode="1")
+    sl.draw.text(cached, 3, 20, "Sg", height=70, angle=0.1)
+    monkeypatch.setattr(glyphcache, "MAX_CACHED", 1)
+    direct = sl.FrameBuffer(200, 120, mode="1")
+    sl.draw.text(direct, 3, 20, "Sg", height=70, angle=0.1)
+    assert (cached.to_array() == direct.to_array()).all()
+    assert cached.to_array().sum() > 1000
+
+
+def test_text_far_outside_is_clipped():
+    fb = sl.FrameBuffer(20, 20)
+    sl.draw.text(fb, -5000, 10, "clipped " * 20, height=12)
+    sl.draw.text(fb, 2**30, -2**30, "far", height=12, angle=1)
+    assert fb.to_array().sum() == 0
+    sl.draw.text(fb, -3, 5, "W", height=12)            # partly inside
+    assert fb.to_array().sum() > 0

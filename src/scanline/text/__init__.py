@@ -2,14 +2,14 @@
 generation", "Character attributes. Text attributes"; Hearn & Baker, sections 3-14
 and 4-5).
 
-Three kinds of font (:mod:`scanline.text.fonts`): a dot-matrix ``"bitmap"`` font, a
+Three kinds of font (:mod:`scanline.text.catalog`): a dot-matrix ``"bitmap"`` font, a
 vector ``"stroke"`` font and outline fonts read from TrueType/OpenType files
 (``"sans"``, DejaVu Sans, ships with scanline).  :class:`TextStyle` holds the text
 attributes; :func:`layout` and :func:`extents` place text without drawing it;
 :func:`scanline.draw.text` draws it.
 """
 
-from .fonts import Font, font, fonts, load_font
+from .catalog import Font, font, fonts, load_font
 from .layout import Extents, PlacedGlyph, extents, layout
 from .style import TextStyle
 

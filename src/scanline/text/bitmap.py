@@ -17,7 +17,7 @@ import numpy as np
 
 from .. import _validate as v
 from ..errors import ArgumentValueError
-from .fonts import Font
+from .catalog import Font
 
 _KEYS = ("name", "width", "rows", "above", "advance", "x-height")
 

@@ -34,8 +34,8 @@ import numpy as np
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError
-from .fonts import font as resolve_font
-from .fonts import NEWLINE
+from .catalog import font as resolve_font
+from .catalog import NEWLINE
 from .style import resolve
 
 #: Flattening tolerance of outline glyphs, device pixels.

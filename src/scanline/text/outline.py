@@ -20,7 +20,7 @@ from fontTools.ttLib import TTFont
 
 from ..errors import ArgumentValueError
 from ..geometry import flatten
-from .fonts import Font
+from .catalog import Font
 
 
 class _SegmentPen(BasePen):

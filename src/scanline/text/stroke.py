@@ -19,7 +19,7 @@ import numpy as np
 
 from .. import _validate as v
 from ..errors import ArgumentValueError
-from .fonts import Font
+from .catalog import Font
 
 _GLYPH = re.compile(r'^U\+([0-9A-Fa-f]{4,6}) "(.)"\s*(.*)$')
 _KEYS = {"name": str, "cap-height": float, "x-height": float, "ascent": float,

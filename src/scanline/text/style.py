@@ -149,7 +149,7 @@ class TextStyle:
 
 
 def _font(value):
-    from .fonts import Font
+    from .catalog import Font
     if not isinstance(value, (str, Font)) and not hasattr(value, "__fspath__"):
         raise ArgumentTypeError(
             f"font must be a font name, a path or a scanline.text.Font; got {v._show(value)}")

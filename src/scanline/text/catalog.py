@@ -1,4 +1,4 @@
-"""Fonts: the common interface of the three kinds, and the registry of built-in fonts.
+"""Fonts: the common interface of the three kinds, and the catalog of built-in fonts.
 
 Character generation (notes, syllabus: "Character generation"; Hearn & Baker,
 section 3-14) knows two ways to store the shapes of characters: as a *bitmap*

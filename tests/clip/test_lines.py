@@ -331,3 +331,26 @@ def test_fuzzed_segments_stay_in_the_window(rows, method):
         for s in seg[differ]:
             r = exact_clip(s, WINDOW)
             assert r is None or np.hypot(r[2] - r[0], r[3] - r[1]) <= tol
+
+
+def test_entering_before_the_start():
+    """Erratum E31: t = 0 is a lower bound of t_E."""
+    t = sl.trace.cyrus_beck(5, 2, 15, 12, window=WINDOW)
+    entering = [r for r in t.rows if r["kind"].startswith("PE")]
+    assert min(r["t"] for r in entering) < 0
+    assert t.rows[-1]["t_E"] == 0.0
+    assert t.result == (5.0, 2.0, 10.0, 7.0)
+
+
+def test_notes_example_p1_below_p2_left_and_above():
+    """Erratum E34: P1 below (one intersection P1'), P2 left and, after its first
+    intersection P2', still outside above: a second intersection P2''."""
+    t = sl.trace.cohen_sutherland(6, -2, -2, 15, window=WINDOW)
+    steps = [(r["code0"], r["code1"], r["decision"]) for r in t.rows]
+    assert steps == [("0100", "1001", "clip P0 at below (y = 0)"),
+                     ("0000", "1001", "clip P1 at left (x = 0)"),
+                     ("0000", "1000", "clip P1 at above (y = 10)"),
+                     ("0000", "0000", "accept: both codes 0000")]
+    assert (t.rows[0]["x"], t.rows[0]["y"]) == pytest.approx((6 - 8 * 2 / 17, 0))
+    assert (t.rows[1]["x"], t.rows[1]["y"]) == pytest.approx((0, 10.75))
+    assert (t.rows[2]["x"], t.rows[2]["y"]) == pytest.approx((6 - 8 * 12 / 17, 10))

@@ -16,7 +16,7 @@ from .display import pipeline
 from .display import primitives as p
 from .display.devices import RasterDevice
 from .display.interpreter import draw_primitive
-from .display.viewing import rectangle
+from .clip.window import rectangle
 from .errors import ArgumentValueError
 from .framebuffer import FrameBuffer
 
@@ -221,7 +221,7 @@ class Context:
     def clip(self, window):
         """Intersect the clip region with ``window`` = (xmin, ymin, xmax, ymax) in
         user coordinates (mapped by the CTM: a rotated CTM gives a turned window)."""
-        r = rectangle("window", window)
+        r = rectangle(window, "window")
         corners = tf.apply(self._state.ctm, np.array(
             [(r[0], r[1]), (r[2], r[1]), (r[2], r[3]), (r[0], r[3])]))
         if np.linalg.det(self._state.ctm[:2, :2]) < 0:

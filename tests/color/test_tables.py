@@ -129,3 +129,42 @@ def test_bad_input(call, words):
     with pytest.raises((sl.ArgumentValueError, sl.ArgumentTypeError)) as info:
         call()
     assert words in str(info.value)
+
+
+def test_nearest_with_the_cell_grid_against_brute_force():
+    # enough colors that the search uses the 16^3 grid of candidate lists; values on
+    # cell boundaries (multiples of 1/8 over [-1/2, 3/2]) and duplicate entries too
+    from scanline.color.tables import search_cells
+
+    table = np.vstack([RNG.integers(0, 256, (40, 3)), [[0, 0, 0], [255, 255, 255]] * 2,
+                       [[32, 64, 96]]]).astype(np.uint8)
+    colors = np.vstack([RNG.integers(0, 256, (60000, 3)),
+                        np.floor(RNG.integers(0, 9, (5000, 3)) * 255 / 8 + 0.5)]).astype(np.uint8)
+    assert search_cells(table.astype(np.float32) / 255, len(colors))[2] == 16
+    got = sl.color.nearest(colors, table)
+    d = ((colors[:, None, :].astype(int) - table[None].astype(int)) ** 2).sum(axis=2)
+    chosen = d[np.arange(len(colors)), got]
+    assert (chosen == d.min(axis=1)).all()
+    # exact ties go to the lowest index: compare with the first minimum where the
+    # float32 distances cannot tie differently (integer distances differ by >= 1/255^2)
+    assert (got == d.argmin(axis=1)).mean() > 0.999
+    # rows 42 and 43 repeat rows 40 and 41 exactly: they are never chosen
+    assert not np.isin(got, [42, 43]).any() and np.isin(got, [40, 41]).any()
+
+
+def test_palette_dithering_is_the_same_with_and_without_the_grid():
+    from scanline._kernels import dither as kernels
+    from scanline.color.tables import search_cells
+
+    y, x = np.mgrid[0:160, 0:200]
+    image = np.stack([x / 199, y / 159, (x + y) % 37 / 36], axis=2).astype(np.float32)
+    palette = sl.color.web_safe_table().astype(np.float32) / 255
+    grid = search_cells(palette, image.shape[0] * image.shape[1])
+    exhaustive = search_cells(palette, 1)
+    assert grid[2] == 16 and exhaustive[2] == 1
+    for serpentine in (False, True):
+        a = np.empty(image.shape[:2], np.uint8)
+        b = np.empty(image.shape[:2], np.uint8)
+        kernels.diffuse_palette(image, palette, *grid, serpentine, a)
+        kernels.diffuse_palette(image, palette, *exhaustive, serpentine, b)
+        assert (a == b).all()

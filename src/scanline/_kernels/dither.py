@@ -37,15 +37,73 @@ def ordered_levels(src, thresholds, levels, out):
             orow[col] = q + (v - np.float32(q) > trow[col & col_mask])
 
 
+@kernel
+def palette_cells(palette, grid, low, span, cells, counts):
+    """Candidate lists for nearest-color search (Heckbert 1982, "locally sorted
+    search"): the cube ``[low, low + span]`` of each channel is cut into
+    ``grid ** channels`` cells; the list of a cell holds every palette entry whose
+    distance to the cell can be no more than the smallest *largest* distance from
+    any entry to the cell.  The nearest entry of any color in the cell, and every
+    entry as near, is in the list (in ascending index order).  Row
+    ``grid ** channels`` lists every entry, for colors outside the cube.  ``cells``
+    is (grid ** channels + 1, n) int16, ``counts`` (grid ** channels + 1,) int32.
+    """
+    n, channels = palette.shape
+    last = counts.shape[0] - 1
+    size = span / grid
+    slack = 1e-6        # boxes a little larger: float rounding of the cell index
+    near = np.empty(n, np.float64)
+    for cell in range(last):
+        threshold = np.inf
+        for i in range(n):
+            d_near = 0.0
+            d_far = 0.0
+            rest = cell
+            for k in range(channels):
+                lo = low + (rest % grid) * size - slack
+                hi = lo + size + 2 * slack
+                rest //= grid
+                x = palette[i, k]
+                gap = max(lo - x, x - hi, 0.0)
+                far = max(x - lo, hi - x)
+                d_near += gap * gap
+                d_far += far * far
+            near[i] = d_near
+            threshold = min(threshold, d_far)
+        count = 0
+        for i in range(n):
+            if near[i] <= threshold:
+                cells[cell, count] = i
+                count += 1
+        counts[cell] = count
+    for i in range(n):
+        cells[last, i] = i
+    counts[last] = n
+
+
 @helper
-def nearest_color(palette, want):
+def nearest_color(palette, cells, counts, grid, low, span, want):
     """Index of the palette row closest to ``want`` (squared Euclidean distance; the
-    first of equally close rows)."""
+    first of equally close rows), searching the candidates of ``want``'s cell (see
+    :func:`palette_cells`)."""
+    channels = want.shape[0]
+    cell = 0
+    stride = 1
+    scale = grid / span
+    for k in range(channels):
+        t = (want[k] - low) * scale
+        if t >= 0.0 and t <= grid:
+            cell += min(np.int64(t), grid - 1) * stride
+            stride *= grid
+        else:
+            cell = counts.shape[0] - 1
+            break
     best = 0
     best_d = np.inf
-    for i in range(palette.shape[0]):
+    for j in range(counts[cell]):
+        i = cells[cell, j]
         d = 0.0
-        for k in range(want.shape[0]):
+        for k in range(channels):
             diff = want[k] - palette[i, k]
             d += diff * diff
         if d < best_d:
@@ -55,7 +113,7 @@ def nearest_color(palette, want):
 
 
 @kernel
-def ordered_palette(src, thresholds, spread, palette, out):
+def ordered_palette(src, thresholds, spread, palette, cells, counts, grid, low, span, out):
     """Ordered dithering to a palette: channel ``k`` of each pixel, offset by
     ``(1/2 - threshold) * spread[k]``, then the nearest palette color (for evenly
     spaced levels and ``spread`` one step, the same choice as :func:`ordered_levels`).
@@ -70,7 +128,7 @@ def ordered_palette(src, thresholds, spread, palette, out):
             offset = np.float32(0.5) - trow[col & col_mask]
             for k in range(channels):
                 want[k] = src[row, col, k] + offset * spread[k]
-            out[row, col] = nearest_color(palette, want)
+            out[row, col] = nearest_color(palette, cells, counts, grid, low, span, want)
 
 
 @helper
@@ -144,21 +202,23 @@ def diffuse_levels(src, levels, serpentine, out):
 
 
 @helper
-def _palette_row(src, palette, out, cur, nxt, want, row, start, stop, step):
+def _palette_row(src, palette, cells, counts, grid, low, span, out, cur, nxt, want, row,
+                 start, stop, step):
     channels = src.shape[2]
     for col in range(start, stop, step):
         for k in range(channels):
             want[k] = src[row, col, k] + cur[col + 1, k]
-        best = nearest_color(palette, want)
+        best = nearest_color(palette, cells, counts, grid, low, span, want)
         out[row, col] = best
         for k in range(channels):
             _diffuse(cur, nxt, col + 1, step, k, want[k] - palette[best, k])
 
 
 @kernel
-def diffuse_palette(src, palette, serpentine, out):
+def diffuse_palette(src, palette, cells, counts, grid, low, span, serpentine, out):
     """Floyd-Steinberg error diffusion to the nearest colors of ``palette`` (float32
-    rows in [0, 1], as many channels as ``src``); ``out`` receives palette indices."""
+    rows in [0, 1], as many channels as ``src``; ``cells``, ``counts``, ``grid``,
+    ``low`` and ``span`` from :func:`palette_cells`); ``out`` receives palette indices."""
     height, width, channels = src.shape
     errors = np.zeros((2, width + 2, channels), np.float32)
     want = np.empty(channels, np.float32)
@@ -167,6 +227,8 @@ def diffuse_palette(src, palette, serpentine, out):
         nxt = errors[(row + 1) & 1]
         nxt[:, :] = 0.0
         if serpentine and row & 1:
-            _palette_row(src, palette, out, cur, nxt, want, row, width - 1, -1, -1)
+            _palette_row(src, palette, cells, counts, grid, low, span, out, cur, nxt, want, row,
+                         width - 1, -1, -1)
         else:
-            _palette_row(src, palette, out, cur, nxt, want, row, 0, width, 1)
+            _palette_row(src, palette, cells, counts, grid, low, span, out, cur, nxt, want, row,
+                         0, width, 1)

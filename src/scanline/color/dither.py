@@ -22,7 +22,7 @@ import numpy as np
 from .. import _validate as v
 from ..errors import ArgumentValueError
 from .images import gray_image, rgb_image
-from .tables import color_table, gray_table, levels_argument
+from .tables import color_table, gray_table, levels_argument, search_cells
 
 #: Dithering methods of :func:`dither`: error diffusion, ordered dithering with a
 #: Bayer matrix of side 2, 4 or 8, and "none" (round to the nearest level or color).
@@ -170,11 +170,12 @@ def dither(source, method="floyd-steinberg", levels=None, palette=None, *, mode=
         pixels = rgb_image(source)
         floats = table.astype(np.float32) / np.float32(255)
         out = np.empty(pixels.shape[:2], np.uint8)
+        search = search_cells(floats, out.size)
         if method == "floyd-steinberg":
-            kernels.diffuse_palette(pixels, floats, bool(serpentine), out)
+            kernels.diffuse_palette(pixels, floats, *search, bool(serpentine), out)
         else:
             spread = _spread(floats) * (method != "none")
-            kernels.ordered_palette(pixels, _thresholds(method), spread, floats, out)
+            kernels.ordered_palette(pixels, _thresholds(method), spread, floats, *search, out)
         return FrameBuffer.from_array(out, mode="P", color_table=table)
 
     pixels = rgb_image(source) if out_mode == "RGB" else gray_image(source)

@@ -151,5 +151,22 @@ def nearest(colors, table):
     out = np.empty(flat.shape[:2], np.uint8)
     if flat.size:
         kernels.ordered_palette(flat, np.full((1, 1), 0.5, np.float32), np.zeros(3, np.float32),
-                                palette, out)
+                                palette, *search_cells(palette, flat.shape[1]), out)
     return out.reshape(a.shape[:-1])
+
+
+def search_cells(palette, pixels):
+    """``(cells, counts, grid, low, span)`` for the palette kernels' nearest-color
+    search: the candidate lists of :func:`scanline._kernels.dither.palette_cells` on
+    a 16 x 16 x 16 grid over [-1/2, 3/2] (error diffusion pushes colors past [0, 1])
+    when there are enough pixels to repay building it (a few milliseconds), else one
+    cell that lists every entry (plain exhaustive search)."""
+    from .._kernels import dither as kernels
+
+    grid = 16 if pixels * len(palette) >= 1 << 20 else 1
+    low, span = -0.5, 2.0
+    n_cells = grid ** palette.shape[1] + 1
+    cells = np.empty((n_cells, len(palette)), np.int16)
+    counts = np.empty(n_cells, np.int32)
+    kernels.palette_cells(palette.astype(np.float64), grid, low, span, cells, counts)
+    return cells, counts, grid, low, span

@@ -10,7 +10,9 @@ name with ``method=``:
 - polygons: ``"sutherland-hodgman"`` (convex windows; one contour per subject
   contour) and ``"weiler-atherton"`` (concave windows and subjects; separate pieces);
 - curves: ``circle`` and ``ellipse`` give the visible arcs as angle intervals,
-  ``arcs`` flattens them, ``curve`` clips any curve through its polyline.
+  ``arcs`` flattens them, ``curve`` clips any curve through its polyline;
+- text (placed by :func:`scanline.text.layout`): ``mode="string"``, ``"character"``
+  (all or none), ``"stroke"`` or ``"pixel"``.
 
 The step tables of the line clippers are in :mod:`scanline.trace`
 (``scanline trace cohen-sutherland ...``).
@@ -19,6 +21,7 @@ The step tables of the line clippers are in :mod:`scanline.trace`
 from .curves import arcs, circle, curve, ellipse
 from .lines import line, lines, point, points, polyline
 from .polygons import polygon, polygons
+from .text import text
 
 __all__ = ["point", "points", "line", "lines", "polyline", "polygon", "polygons",
-           "circle", "ellipse", "arcs", "curve"]
+           "circle", "ellipse", "arcs", "curve", "text"]

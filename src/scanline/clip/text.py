@@ -1,0 +1,128 @@
+"""Text clipping (notes, chapter 4, Q.1 "text clipping"; Hearn & Baker, section 6-11):
+all-or-none string, all-or-none character, and clipping each character's strokes,
+outline or pixels."""
+
+import copy
+
+import numpy as np
+
+from .. import _validate as v
+from ..errors import ArgumentTypeError
+from . import window as w
+from .lines import polyline
+from .polygons import polygon
+
+MODES = ("string", "character", "stroke", "pixel")
+
+
+def _inside(box, ring):
+    """Whether the rectangle ``box`` lies in the convex counterclockwise ``ring``."""
+    x0, y0, x1, y1 = box
+    corners = np.array([(x0, y0), (x1, y0), (x1, y1), (x0, y1)])
+    d = np.roll(ring, -1, axis=0) - ring
+    cross = (d[None, :, 0] * (corners[:, None, 1] - ring[None, :, 1])
+             - d[None, :, 1] * (corners[:, None, 0] - ring[None, :, 0]))
+    return bool((cross >= 0).all())
+
+
+def _pixel_mask(glyph, ring):
+    """The glyph's bitmap with the pixels whose centers are outside the window off."""
+    mask = np.asarray(glyph.bitmap, bool)
+    x0, y0 = glyph.bitmap_origin
+    h, wd = mask.shape
+    ys, xs = np.mgrid[0:h, 0:wd]
+    centers = np.stack([x0 + xs.ravel(), y0 + (h - 1 - ys).ravel()], axis=1).astype(float)
+    d = np.roll(ring, -1, axis=0) - ring
+    cross = (d[None, :, 0] * (centers[:, None, 1] - ring[None, :, 1])
+             - d[None, :, 1] * (centers[:, None, 0] - ring[None, :, 0]))
+    return mask & (cross >= 0).all(axis=1).reshape(h, wd)
+
+
+def text(glyphs, window, mode="character"):
+    """Clip placed text by a window.
+
+    Parameters
+    ----------
+    glyphs : list of PlacedGlyph
+        The characters placed by :func:`scanline.text.layout`.
+    window : (xmin, ymin, xmax, ymax) or convex polygon
+    mode : {"string", "character", "stroke", "pixel"}
+        - ``"string"``: all-or-none string clipping: every glyph if the whole
+          string (the union of the character bodies, ``glyph.cell``) is inside the
+          window, none otherwise.
+        - ``"character"``: all-or-none character clipping: the glyphs whose body
+          is inside the window.
+        - ``"stroke"``: each character's geometry clipped: the strokes of a stroke
+          font (polyline clipping, Liang-Barsky), the contours of an outline or
+          bitmap font (Sutherland-Hodgman, contour by contour: fill the result with
+          the nonzero rule, as the glyph).
+        - ``"pixel"``: each character's pixels (``glyph.bitmap``) kept where the
+          pixel center is inside the window.
+
+    Returns
+    -------
+    list of PlacedGlyph
+        The kept glyphs, in order; glyphs with nothing left are dropped.  In modes
+        ``"stroke"`` and ``"pixel"`` they are copies whose ``strokes`` /
+        ``contours`` (mode ``"stroke"``), ``bitmap`` (both modes: the pixels whose
+        centers are inside) and ``box`` hold the clipped geometry.
+
+    Notes
+    -----
+    Notes, chapter 4, Q.1 lists text clipping; the three strategies are Hearn &
+    Baker's: all-or-none string (fast: one bounding-box test), all-or-none
+    character, and clipping individual characters' components.  Blank glyphs
+    (spaces) have no geometry: they are kept by "string" and "character" when
+    their body is inside, and dropped by "stroke" and "pixel".
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> glyphs = sl.text.layout("CLIP", 0, 0, font="bitmap")
+    >>> [g.char for g in sl.clip.text(glyphs, (0, -5, 15, 20))]
+    ['C', 'L']
+    >>> sl.clip.text(glyphs, (0, -5, 15, 20), mode="string")
+    []
+    >>> [g.char for g in sl.clip.text(glyphs, (0, -5, 15, 20), mode="stroke")]
+    ['C', 'L', 'I']
+    """
+    mode = v.choice("mode", mode, MODES)
+    if not isinstance(glyphs, (list, tuple)) or not all(
+            hasattr(g, "cell") and hasattr(g, "char") for g in glyphs):
+        raise ArgumentTypeError(
+            f"glyphs must be the list that sl.text.layout(...) returns, got {v._show(glyphs)}")
+    ring = w.polygon(window, convex=True, algorithm="text clipping")
+    if mode == "string":
+        return list(glyphs) if all(_inside(g.cell, ring) for g in glyphs) else []
+    if mode == "character":
+        return [g for g in glyphs if _inside(g.cell, ring)]
+    out = []
+    for g in glyphs:
+        if g.box is None:
+            continue
+        c = copy.copy(g)
+        if mode == "pixel":
+            mask = _pixel_mask(g, ring)
+            if not mask.any():
+                continue
+            c._bitmap = (mask, g.bitmap_origin)
+            rows, cols = np.nonzero(mask)
+            x0, y0 = g.bitmap_origin
+            top = y0 + mask.shape[0] - 1
+            c.box = (float(x0 + cols.min()), float(top - rows.max()),
+                     float(x0 + cols.max()), float(top - rows.min()))
+            out.append(c)
+            continue
+        if g.strokes is not None:
+            parts = [p for s in g.strokes for p in polyline(s, ring, method="cyrus-beck")]
+            c.strokes = parts
+        else:
+            parts = [p for contour in g.contours for p in polygon(contour, ring)]
+            c.contours = parts
+        if not parts:
+            continue
+        allpts = np.vstack(parts)
+        c.box = tuple(np.concatenate([allpts.min(0), allpts.max(0)]).tolist())
+        c._bitmap = (_pixel_mask(g, ring), g.bitmap_origin)
+        out.append(c)
+    return out

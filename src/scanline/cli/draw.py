@@ -34,7 +34,15 @@ SHAPES = {
     "boundary": ("X Y", "boundary fill from (X, Y), stopping at the boundary color"),
     "soft": ("X Y FOREGROUND BACKGROUND", "soft (tint) fill from (X, Y): pixels that blend "
              "FOREGROUND over BACKGROUND are re-blended with the current color"),
+    "polyline": ("X1 Y1 X2 Y2 ...", "the open polyline through the vertices, with the current "
+                 "line attributes (as many vertices as numbers follow)"),
+    "closed-polyline": ("X1 Y1 X2 Y2 ...", "the closed polyline (a polygon outline) through "
+                        "the vertices, with the current line attributes"),
 }
+
+#: Shapes drawn with the line attributes (width, cap, join, miter-limit, dash, pen,
+#: antialias).
+OUTLINES = ("line", "circle", "ellipse", "polyline", "closed-polyline")
 
 #: Shape parameters that are colors, not numbers.
 COLOR_PARAMS = ("FOREGROUND", "BACKGROUND")
@@ -59,7 +67,25 @@ SETTINGS = {
                        "(default white)"),
     "tolerance": ("N", "the largest channel difference from the seed's color that the "
                   "following flood fills still recolor (default 0)"),
+    "width": ("W", "the line width of the following lines, circles, ellipses and polylines "
+              "in pixels, >= 1, fractions allowed (default 1)"),
+    "cap": ("butt|round|square", "the ends of the following thick lines (default butt)"),
+    "join": ("miter|round|bevel", "the corners of the following thick polylines (default "
+             "miter)"),
+    "miter-limit": ("N", "miters longer than N times the width become bevels (default 10)"),
+    "dash": ("TYPE", "the line type: solid, dashed, dotted, dash-dot, a 16-bit pixel mask "
+             "such as 0b1111000011110000, or dash,gap lengths in pixels such as 6,3"),
+    "dash-phase": ("N", "where the line type starts: pixels into a mask, pixels of length "
+                   "into dash lengths (default 0)"),
+    "pen": ("none|square|round", "a pen footprint, a width x width square or a disc of "
+            "diameter width, stamped at every pixel of the following lines (default none)"),
+    "antialias": ("on|off", "antialiased lines, circles, ellipses and polylines (default "
+                  "off)"),
 }
+
+#: Settings that are line attributes: SETTINGS word -> LineStyle field.
+LINE_SETTINGS = {"width": "width", "cap": "cap", "join": "join", "miter-limit": "miter_limit",
+                 "dash": "dash", "dash-phase": "dash_phase", "pen": "pen"}
 
 #: scanline.framebuffer.MODES, spelled out so that --help does not import numpy.
 MODES = ("1", "L", "RGB", "RGBA", "P")
@@ -89,6 +115,8 @@ def _epilog():
         "  scanline draw --size 64x64 style crosshatch:45:6 color red fill-circle 32 32 25 \\",
         "      style solid color blue pie 32 32 20 20 0 90 -o pie.png",
         "  scanline draw circle 64 64 30 color green flood 64 64 -o disk.png",
+        "  scanline draw --size 64x48 width 5 cap round join round dash 12,6 \\",
+        "      polyline 5 5 30 40 58 10 -o strokes.png",
         "  scanline draw --scale 4 color red method dda line -5 3 40 20 \\",
         "      color '#00a0ff' ellipse 20 12 15 8 -o out.gif",
     ])
@@ -218,13 +246,14 @@ def render(items, width, height, mode="RGB", background="black", rule="even-odd"
     4-connected.  An error from the drawing functions is raised again naming the item.
     """
     from .. import _validate, draw
-    from ..attributes import FillStyle
+    from ..attributes import FillStyle, LineStyle
     from ..draw.lines import METHODS
     from ..framebuffer import FrameBuffer
 
     fb = FrameBuffer(width, height, mode=mode, background=background)
     state = {"color": "white", "method": "bresenham", "rule": rule, "style": None,
-             "connectivity": 4, "boundary-color": "white", "tolerance": 0}
+             "connectivity": 4, "boundary-color": "white", "tolerance": 0,
+             "line": LineStyle(), "antialias": False}
     for item in items:
         try:
             if item.word in SETTINGS:
@@ -237,6 +266,11 @@ def render(items, width, height, mode="RGB", background="black", rule="even-odd"
                     _validate.choice("rule", value, ("even-odd", "nonzero"))
                 elif item.word == "style":
                     value = FillStyle.parse(value)
+                elif item.word in LINE_SETTINGS:
+                    state["line"] = _line_style(state["line"], item.word, value)
+                    continue
+                elif item.word == "antialias":
+                    value = _validate.choice("antialias", value, ("on", "off")) == "on"
                 elif item.word == "tolerance":
                     value = _validate.positive_int("tolerance", _number(value), minimum=0)
                 else:  # connectivity
@@ -250,15 +284,44 @@ def render(items, width, height, mode="RGB", background="black", rule="even-odd"
     return fb
 
 
+def _line_style(style, word, text):
+    """``style`` with the line attribute of setting ``word`` changed to ``text``."""
+    from ..attributes import LineStyle
+
+    field = LINE_SETTINGS[word]
+    if field in ("width", "miter_limit", "dash_phase"):
+        value = _number(text)
+        if value is None:
+            raise ArgumentValueError(f"{word} must be a number, got {text!r}")
+    elif field == "dash":
+        value = LineStyle.parse_dash(text)
+    elif field == "pen":
+        value = {"none": None, "round": "circle"}.get(text, text)
+    else:
+        value = text
+    return LineStyle(**{**_fields(style), field: value})
+
+
+def _fields(style):
+    return {name: getattr(style, name) for name in
+            ("width", "cap", "join", "miter_limit", "dash", "dash_phase", "pen")}
+
+
 def _draw(fb, item, state, draw):
     """Draw one shape item with the current settings."""
     word, args, color = item.word, item.args, state["color"]
+    lines = {"style": state["line"], "antialias": state["antialias"]}
     if word == "line":
-        draw.line(fb, *args, color=color, method=state["method"])
+        draw.line(fb, *args, color=color, method=state["method"], **lines)
     elif word == "point":
         fb.set_pixel(*args, color)
     elif word in ("circle", "ellipse"):
-        getattr(draw, word)(fb, *args, color=color)
+        getattr(draw, word)(fb, *args, color=color, **lines)
+    elif word in ("polyline", "closed-polyline"):
+        if len(args) % 2:
+            raise ArgumentValueError(f"{word} needs x y pairs, got {len(args)} numbers")
+        points = [args[k:k + 2] for k in range(0, len(args), 2)]
+        draw.polyline(fb, points, color=color, closed=word == "closed-polyline", **lines)
     elif word == "polygon":
         if len(args) % 2:
             raise ArgumentValueError(f"polygon needs x y pairs, got {len(args)} numbers")

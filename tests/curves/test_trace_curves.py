@@ -1,9 +1,6 @@
 """trace de-casteljau / cox-de-boor: tables agree with the evaluators (one truth)."""
 
 import json
-import subprocess
-import sys
-
 import numpy as np
 import pytest
 
@@ -54,20 +51,22 @@ def test_cox_de_boor_notes_open_knots_by_hand():
     assert [r["B"] for r in t.rows if r["r"] == 4] == [1 / 32, 1 / 4, 19 / 32, 1 / 8]
 
 
-def run(*args):
-    return subprocess.run([sys.executable, "-m", "scanline", "trace", *args],
-                          capture_output=True, text=True)
+def test_cli(capsys):
+    from scanline.cli import main
 
+    def run(*args):
+        code = main(["trace", *args])
+        out, err = capsys.readouterr()
+        return code, out, err
 
-def test_cli():
-    out = run("de-casteljau", "0,0", "0,4", "4,4", "4,0", "--u", "0.5", "--format", "json")
-    assert out.returncode == 0, out.stderr
-    rows = json.loads(out.stdout)
-    assert rows[-1] == {"r": 3, "i": 0, "x": 2.0, "y": 3.0}
-    out = run("cox-de-boor", "--knots", "0,0,1,2,3,3", "--order", "2", "--u", "2.5",
-              "--format", "csv")
-    assert out.returncode == 0, out.stderr
-    assert out.stdout.splitlines()[0] == "r,k,interval,B"
-    bad = run("cox-de-boor", "--knots", "0,0,1,2,3,3", "--order", "2", "--u", "9")
-    assert bad.returncode == 2 and "u must lie in [0, 3]" in bad.stderr
-    assert "Traceback" not in bad.stderr
+    code, out, err = run("de-casteljau", "0,0", "0,4", "4,4", "4,0", "--u", "0.5",
+                         "--format", "json")
+    assert code == 0, err
+    assert json.loads(out)[-1] == {"r": 3, "i": 0, "x": 2.0, "y": 3.0}
+    code, out, err = run("cox-de-boor", "--knots", "0,0,1,2,3,3", "--order", "2", "--u",
+                         "2.5", "--format", "csv")
+    assert code == 0, err
+    assert out.splitlines()[0] == "r,k,interval,B"
+    code, out, err = run("cox-de-boor", "--knots", "0,0,1,2,3,3", "--order", "2", "--u", "9")
+    assert code == 2 and out == ""
+    assert err.startswith("scanline: error: u must lie in [0, 3]") and "Traceback" not in err

@@ -13,6 +13,7 @@ from math import comb
 import numpy as np
 
 from .. import _validate as v
+from ..errors import ArgumentValueError
 from .._kernels import curves as _k
 from .base import Curve, control_points, parameters, weights_array
 from .matrices import bezier_matrix
@@ -98,7 +99,8 @@ class Bezier(Weighted, Curve):
 
     def _evaluate(self, u, method=None):
         if method is None:
-            method = "matrix" if self.degree <= MATRIX_DEGREE else "de-casteljau"
+            fits = self.degree <= MATRIX_DEGREE and self._power_form() is not None
+            method = "matrix" if fits else "de-casteljau"
         pts = self.homogeneous() if self.rational else self.points
         if method == "de-casteljau":
             out = np.empty((len(u), pts.shape[1]))
@@ -108,14 +110,25 @@ class Bezier(Weighted, Curve):
         elif method == "recursive":
             out = bernstein_recursive(self.degree, u) @ pts
         else:
-            if self._coefficients is None:
-                m = bezier_matrix(self.degree) if self.degree else np.ones((1, 1))
-                with np.errstate(over="ignore", invalid="ignore"):  # huge points: inf
-                    self._coefficients = (m @ pts)[None]
+            if self._power_form() is None:
+                raise ArgumentValueError(
+                    "method='matrix' cannot represent this curve: M_bez·P overflows for "
+                    "control points this large; use method='de-casteljau'"
+                )
             out = np.empty((len(u), pts.shape[1]))
-            _k.piecewise_horner(np.array([0.0, 1.0]), self._coefficients,
+            _k.piecewise_horner(np.array([0.0, 1.0]), self._power_form(),
                                 np.ascontiguousarray(u), out)
         return project(out) if self.rational else out
+
+    def _power_form(self):
+        """M_bez · P as a one-section coefficient array, or None if it overflows."""
+        if self._coefficients is None:
+            pts = self.homogeneous() if self.rational else self.points
+            m = bezier_matrix(self.degree) if self.degree else np.ones((1, 1))
+            with np.errstate(all="ignore"):
+                c = (m @ pts)[None]
+            self._coefficients = c if np.isfinite(c).all() else ()
+        return self._coefficients if len(self._coefficients) else None
 
     def _derivative(self):
         if self.rational:

@@ -137,13 +137,15 @@ def basis(knots, order, u, last=None):
     count = len(knots) - 1  # number of order-1 functions
     b = np.zeros((flat.size, count))
     b[np.arange(flat.size), knot_span(knots, flat, last)] = 1.0
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(all="ignore"):
         for r in range(2, d + 1):
             k = np.arange(count - r + 1)
             left = knots[k + r - 1] - knots[k]
             right = knots[k + r] - knots[k + 1]
-            a = np.where(left > 0, (flat[:, None] - knots[k]) / left, 0.0)
-            c = np.where(right > 0, (knots[k + r] - flat[:, None]) / right, 0.0)
+            # where B_k,r-1 (resp. B_k+1,r-1) is non-zero these ratios lie in [0, 1];
+            # clipping them changes no product and keeps inf * 0 out (tiny knot gaps)
+            a = np.clip(np.where(left > 0, (flat[:, None] - knots[k]) / left, 0.0), 0, 1)
+            c = np.clip(np.where(right > 0, (knots[k + r] - flat[:, None]) / right, 0.0), 0, 1)
             b = a * b[:, :-1] + c * b[:, 1:]
     return b.reshape(u.shape + (b.shape[1],))
 
@@ -232,7 +234,13 @@ class BSpline(Weighted, Curve):
 
     def _evaluate(self, u, method=None):
         if method is None:
-            method = "matrix" if self.order <= MATRIX_ORDER else "de-boor"
+            fits = self.order <= MATRIX_ORDER and self._power_form() is not None
+            method = "matrix" if fits else "de-boor"
+        elif method == "matrix" and self._power_form() is None:
+            raise ArgumentValueError(
+                "method='matrix' cannot represent this curve: a knot span is too narrow "
+                "for the power form (its coefficients overflow); use method='de-boor'"
+            )
         pts = self.homogeneous() if self.rational else self.points
         if method == "cox-de-boor":
             out = self._basis(u) @ pts
@@ -246,7 +254,8 @@ class BSpline(Weighted, Curve):
         return project(out) if self.rational else out
 
     def _power_form(self):
-        """(breaks, coefficients) of the non-empty knot spans in the power form."""
+        """(breaks, coefficients) of the non-empty knot spans in the power form, or
+        None if a coefficient is not finite (spans too narrow: D^j P ~ 1/h^j)."""
         if self._power is None:
             lo, hi = self.domain
             breaks = np.unique(self.knots[(self.knots >= lo) & (self.knots <= hi)])
@@ -254,13 +263,15 @@ class BSpline(Weighted, Curve):
             spline = BSpline._raw(self.homogeneous() if self.rational else self.points,
                                   self.order, self.knots)
             rows = []
-            for j in range(self.order - 1, -1, -1):  # highest power first
-                d = spline.derivative(j)
-                value = np.empty((len(start), d.dimension))
-                _k.de_boor(d.points, d.knots, d.order, start, value)
-                rows.append(value * (h**j / factorial(j))[:, None])
-            self._power = (breaks, np.ascontiguousarray(np.stack(rows, axis=1)))
-        return self._power
+            with np.errstate(all="ignore"):
+                for j in range(self.order - 1, -1, -1):  # highest power first
+                    d = spline.derivative(j)
+                    value = np.empty((len(start), d.dimension))
+                    _k.de_boor(d.points, d.knots, d.order, start, value)
+                    rows.append(value * (h**j / factorial(j))[:, None])
+            coefficients = np.ascontiguousarray(np.stack(rows, axis=1))
+            self._power = (breaks, coefficients) if np.isfinite(coefficients).all() else ()
+        return self._power or None
 
     def basis(self, u):
         """The blending functions B_{k,d}(u) of this curve, shape np.shape(u) + (n + 1,)."""

@@ -10,45 +10,33 @@ from ._jit import helper, kernel
 
 
 @helper
-def _project(h, i, dim, out, k):
-    """out[k] = the Cartesian point of homogeneous control point h[i] = [w x, w]."""
-    w = h[i, dim]
-    for c in range(dim):
-        out[k, c] = h[i, c] / w
-
-
-@helper
-def _flat(h, dim, tol2):
-    """True iff every control point lies within sqrt(tol2) of the chord *segment*
-    from the first to the last (projected) control point.
+def _flat(stack, top, dim, tol2, proj, weighted):
+    """True iff every control point of ``stack[top]`` ([w x, w] if ``weighted``) lies
+    within sqrt(tol2) of the chord *segment* from its first to its last point.
 
     Distance to a segment is a convex function, so its maximum over the convex hull
     of the control points -- which holds the curve -- is attained at a control point:
-    the test bounds the distance from every curve point to the chord.
+    the test bounds the distance from every curve point to the chord.  ``proj`` is
+    work space for the projected points.
     """
-    m = h.shape[0]
-    w0 = h[0, dim]
-    w1 = h[m - 1, dim]
+    m = stack.shape[1]
+    for i in range(m):
+        r = 1.0 / stack[top, i, dim] if weighted else 1.0
+        for c in range(dim):
+            proj[i, c] = stack[top, i, c] * r
     len2 = 0.0
     for c in range(dim):
-        d = h[m - 1, c] / w1 - h[0, c] / w0
+        d = proj[m - 1, c] - proj[0, c]
         len2 += d * d
+    inv = 1.0 / len2 if len2 > 0.0 else 0.0
     for i in range(1, m - 1):
-        wi = h[i, dim]
         t = 0.0
-        if len2 > 0.0:
-            for c in range(dim):
-                t += (h[i, c] / wi - h[0, c] / w0) * (h[m - 1, c] / w1 - h[0, c] / w0)
-            t /= len2
-            if t < 0.0:
-                t = 0.0
-            elif t > 1.0:
-                t = 1.0
+        for c in range(dim):
+            t += (proj[i, c] - proj[0, c]) * (proj[m - 1, c] - proj[0, c])
+        t = min(max(t * inv, 0.0), 1.0)
         dist2 = 0.0
         for c in range(dim):
-            a = h[0, c] / w0
-            q = a + t * (h[m - 1, c] / w1 - a)
-            e = h[i, c] / wi - q
+            e = proj[i, c] - (proj[0, c] + t * (proj[m - 1, c] - proj[0, c]))
             dist2 += e * e
         if not dist2 <= tol2:  # NaN counts as not flat (the depth limit stops it)
             return False
@@ -56,16 +44,17 @@ def _flat(h, dim, tol2):
 
 
 @helper
-def _split(h, left, right, work):
-    """de Casteljau at u = 1/2: ``left`` and ``right`` get the two halves of ``h``."""
-    m, cols = h.shape
+def _split(stack, top, work):
+    """de Casteljau at u = 1/2 on ``stack[top]``: the right half stays in
+    ``stack[top]``, the left half goes to ``stack[top + 1]`` (processed first)."""
+    m, cols = stack.shape[1], stack.shape[2]
     for i in range(m):
         for c in range(cols):
-            work[i, c] = h[i, c]
+            work[i, c] = stack[top, i, c]
     for r in range(m):
         for c in range(cols):
-            left[r, c] = work[0, c]
-            right[m - 1 - r, c] = work[m - 1 - r, c]
+            stack[top + 1, r, c] = work[0, c]
+            stack[top, m - 1 - r, c] = work[m - 1 - r, c]
         for i in range(m - 1 - r):
             for c in range(cols):
                 work[i, c] = 0.5 * (work[i, c] + work[i + 1, c])
@@ -73,21 +62,21 @@ def _split(h, left, right, work):
 
 @helper
 def _grow(out, count):
-    if count < out.shape[0]:
-        return out
-    bigger = np.empty((2 * out.shape[0], out.shape[1]))
+    bigger = np.empty((2 * out.shape[0] + count, out.shape[1]))
     bigger[:count] = out[:count]
     return bigger
 
 
 @kernel
-def subdivide(segments, tol2, max_depth, max_points):
-    """Flatten Bezier segments given in homogeneous coordinates.
+def subdivide(segments, weighted, tol2, max_depth, max_points):
+    """Flatten Bezier segments.
 
     Parameters
     ----------
-    segments : float64 (S, n + 1, dim + 1)
-        Control points [w x, w] of S segments of degree n >= 1, weights > 0.
+    segments : float64 (S, n + 1, dim + 1) or (S, n + 1, dim)
+        Control points of S segments of degree n >= 1: homogeneous [w x, w] (weights
+        > 0) if ``weighted``, else Cartesian.
+    weighted : bool
     tol2 : float
         The squared tolerance.
     max_depth : int
@@ -104,49 +93,58 @@ def subdivide(segments, tol2, max_depth, max_points):
         Index in ``points`` of each segment's start point.
     truncated : bool
         True if ``max_points`` cut the subdivision short.
+
+    Notes
+    -----
+    The pieces waiting to be flattened are a stack in one array: the piece on top
+    is tested; a flat piece is emitted and popped, any other is split in place (its
+    right half stays, its left half is pushed), so pieces come out left to right.
     """
+    if weighted:  # two specializations: the plain one skips the weights
+        return _subdivide(segments, True, tol2, max_depth, max_points)
+    return _subdivide(segments, False, tol2, max_depth, max_points)
+
+
+@helper
+def _subdivide(segments, weighted, tol2, max_depth, max_points):
     S, m, cols = segments.shape
-    dim = cols - 1
-    out = np.empty((64, dim))
+    dim = cols - 1 if weighted else cols
+    out = np.empty((max(64, 8 * S), dim))
     firsts = np.empty(S, np.int64)
     count = 0
     truncated = False
     stack = np.empty((max_depth + 1, m, cols))
     depths = np.empty(max_depth + 1, np.int64)
-    cur = np.empty((m, cols))
-    left = np.empty((m, cols))
     work = np.empty((m, cols))
+    proj = np.empty((m, dim))
     for s in range(S):
-        out = _grow(out, count)
+        if count + 1 > out.shape[0]:
+            out = _grow(out, count)
         firsts[s] = count
-        _project(segments[s], 0, dim, out, count)
+        r = 1.0 / segments[s, 0, dim] if weighted else 1.0
+        for c in range(dim):
+            out[count, c] = segments[s, 0, c] * r
         count += 1
         for i in range(m):
             for c in range(cols):
-                cur[i, c] = segments[s, i, c]
-        depth = 0
+                stack[0, i, c] = segments[s, i, c]
+        depths[0] = 0
         top = 0
-        while True:
-            full = count + top >= max_points
-            if full or depth >= max_depth or _flat(cur, dim, tol2):
-                if full and not _flat(cur, dim, tol2):
+        while top >= 0:
+            flat = _flat(stack, top, dim, tol2, proj, weighted)
+            if flat or depths[top] >= max_depth or count + top >= max_points:
+                if not flat and depths[top] < max_depth:
                     truncated = True
-                out = _grow(out, count)
-                _project(cur, m - 1, dim, out, count)
+                if count + 1 > out.shape[0]:
+                    out = _grow(out, count)
+                r = 1.0 / stack[top, m - 1, dim] if weighted else 1.0
+                for c in range(dim):
+                    out[count, c] = stack[top, m - 1, c] * r
                 count += 1
-                if top == 0:
-                    break
                 top -= 1
-                for i in range(m):
-                    for c in range(cols):
-                        cur[i, c] = stack[top, i, c]
-                depth = depths[top]
             else:
-                _split(cur, left, stack[top], work)
-                depth += 1
-                depths[top] = depth
+                _split(stack, top, work)
+                depths[top] += 1
+                depths[top + 1] = depths[top]
                 top += 1
-                for i in range(m):
-                    for c in range(cols):
-                        cur[i, c] = left[i, c]
     return out[:count].copy(), firsts, truncated

@@ -41,6 +41,9 @@ import numpy as np
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
 from .base import Curve
+from .bezier import Bezier as _BEZIER
+from .bspline import BSpline as _BSPLINE
+from .hermite import PiecewisePolynomial as _PIECEWISE
 
 METHODS = ("subdivision", "wang")
 
@@ -138,9 +141,9 @@ def _flatten(curves, tolerance, method, name):
                 f"{name(i)} must be a scanline.curves.Curve (Bezier, BSpline, ...), got "
                 f"{type(curve).__name__}"
             )
-        pieces = bezier_pieces(curve)
+        pieces, homogeneous = _pieces(curve)
         if pieces is not None:
-            groups.setdefault(pieces.shape[1:], []).append((i, pieces))
+            groups.setdefault(pieces.shape[1:] + (homogeneous,), []).append((i, pieces))
         elif method == "wang":
             raise ArgumentValueError(
                 f"method='wang' needs a curve in Bezier form (Bezier, BSpline); "
@@ -148,20 +151,38 @@ def _flatten(curves, tolerance, method, name):
             )
         else:
             out[i] = _distinct(_sampled(curve, tol))
-    for members in groups.values():
+    for key, members in groups.items():
         segments = np.concatenate([pieces for _, pieces in members])
-        points, firsts = (_wang if method == "wang" else subdivide)(segments, tol)
-        ends = np.append(firsts, len(points))
-        s = 0
-        for i, pieces in members:
-            out[i] = _distinct(points[ends[s]:ends[s + len(pieces)]])
-            s += len(pieces)
+        if method == "wang":
+            points, firsts = _wang(segments, key[-1], tol)
+        else:
+            points, firsts = subdivide(segments, tol, weighted=key[-1])
+        sizes = np.array([len(pieces) for _, pieces in members])
+        polylines = _per_curve(points, firsts[np.cumsum(sizes) - sizes])
+        for (i, _), poly in zip(members, polylines):
+            out[i] = poly
     return out
 
 
-def subdivide(segments, tolerance):
-    """Flatten Bezier segments given in homogeneous form, (S, n + 1, dim + 1) arrays of
-    [w x, w] with w > 0, by recursive subdivision.
+def _per_curve(points, starts):
+    """Cut the points of several curves (curve k starts at ``starts[k]``) into one
+    polyline each, without repeated consecutive points (the joins of a curve's
+    pieces), each at least two points."""
+    keep = np.ones(len(points), bool)
+    keep[1:] = (points[1:] != points[:-1]).any(axis=1)
+    keep[starts] = True
+    new_starts = (np.cumsum(keep) - 1)[starts]
+    polylines = np.split(points[keep], new_starts[1:])
+    ends = np.append(starts[1:], len(points))
+    for k in np.nonzero(np.diff(np.append(new_starts, keep.sum())) < 2)[0]:
+        polylines[k] = _distinct(points[starts[k]:ends[k]])
+    return polylines
+
+
+def subdivide(segments, tolerance, weighted=True):
+    """Flatten Bezier segments by recursive subdivision: (S, n + 1, dim + 1) arrays of
+    homogeneous control points [w x, w] with w > 0, or (S, n + 1, dim) Cartesian
+    control points if not ``weighted``.
 
     Returns the (K, dim) points (each segment's start, then the end of each of its
     pieces) and the (S,) index of each segment's start point.
@@ -170,9 +191,10 @@ def subdivide(segments, tolerance):
 
     segments = np.ascontiguousarray(segments, dtype=np.float64)
     if segments.shape[1] < 2:  # degree 0: a point
-        return segments[:, 0, :-1] / segments[:, 0, -1:], np.arange(len(segments))
-    points, firsts, truncated = k.subdivide(segments, tolerance * tolerance, MAX_DEPTH,
-                                            MAX_POINTS)
+        start = segments[:, 0, :-1] / segments[:, 0, -1:] if weighted else segments[:, 0]
+        return start, np.arange(len(segments))
+    points, firsts, truncated = k.subdivide(segments, bool(weighted), tolerance * tolerance,
+                                            MAX_DEPTH, MAX_POINTS)
     if truncated:
         raise ArgumentValueError(
             f"tolerance={tolerance!r} is too small for a curve this large: flattening "
@@ -181,17 +203,17 @@ def subdivide(segments, tolerance):
     return points, firsts
 
 
-def _wang(segments, tolerance):
+def _wang(segments, weighted, tolerance):
     """Wang's equal steps for each plain segment: (points, firsts) as :func:`subdivide`."""
     from ..geometry.flatten import MAX_STEPS, steps
     from .bezier import bernstein
 
-    if not np.all(segments[:, :, -1] == 1.0):
+    if weighted:
         raise ArgumentValueError(
             "method='wang' flattens plain (non-rational) curves; this one has weights; "
             "use method='subdivision'"
         )
-    ctrl = segments[:, :, :-1]
+    ctrl = segments
     n = ctrl.shape[1] - 1
     if n < 1:
         return ctrl[:, 0], np.arange(len(ctrl))
@@ -231,20 +253,28 @@ def bezier_pieces(curve):
     multiplicity d - 1; computed here by interpolating d points of each piece, which
     gives the same points up to rounding).
     """
-    from .bezier import Bezier
-    from .bspline import BSpline
-    from .hermite import PiecewisePolynomial
+    pieces, homogeneous = _pieces(curve)
+    if pieces is None or homogeneous:
+        return pieces
+    return np.concatenate([pieces, np.ones(pieces.shape[:2] + (1,))], axis=2)
 
-    if isinstance(curve, Bezier):
-        return curve.homogeneous()[None]
-    if isinstance(curve, PiecewisePolynomial):
-        return np.stack([section.homogeneous() for section in curve.sections])
-    if isinstance(curve, BSpline):
+
+def _pieces(curve):
+    """(pieces, homogeneous): the Bezier segments of ``curve``, as Cartesian control
+    points (S, n + 1, dim) when it is not rational, else homogeneous; (None, False)
+    for a curve without a Bezier form here."""
+    if isinstance(curve, _BEZIER):
+        if curve.weights is None:
+            return curve.points[None], False
+        return curve.homogeneous()[None], True
+    if isinstance(curve, _PIECEWISE):
+        return np.stack([section.points for section in curve.sections]), False
+    if isinstance(curve, _BSPLINE):
         if curve.rational:
-            return spline_pieces(curve.homogeneous(), curve.knots, curve.order, curve.domain)
-        pieces = spline_pieces(curve.points, curve.knots, curve.order, curve.domain)
-        return np.concatenate([pieces, np.ones(pieces.shape[:2] + (1,))], axis=2)
-    return None
+            return spline_pieces(curve.homogeneous(), curve.knots, curve.order,
+                                 curve.domain), True
+        return spline_pieces(curve.points, curve.knots, curve.order, curve.domain), False
+    return None, False
 
 
 def spline_pieces(homogeneous, knots, order, domain):

@@ -232,3 +232,22 @@ def test_fuzzed_sutherland_hodgman_never_leaves_the_window(pts, win):
     if poly.is_valid:
         got = area(sl.clip.polygon(pts, window))
         assert abs(abs(got) - poly.intersection(shapely.box(*window)).area) <= 1e-9 * max(1, poly.area)
+
+
+grid = st.integers(-6, 6).map(float)
+
+
+@HYPOTHESIS
+@given(st.lists(st.tuples(grid, grid), min_size=3, max_size=9),
+       st.lists(st.tuples(grid, grid), min_size=3, max_size=9))
+def test_fuzzed_weiler_atherton(subject, window):
+    """Any vertex lists (self-intersecting ones too) never crash or hang; valid
+    simple polygons give shapely's area."""
+    try:
+        pieces = sl.clip.polygon(subject, window, method="weiler-atherton")
+    except sl.ArgumentValueError as e:
+        assert "window" in str(e)
+        return
+    s, c = shapely.Polygon(subject), shapely.Polygon(window)
+    if s.is_valid and c.is_valid and s.area > 0 and c.area > 0:
+        assert close(area(pieces), s.intersection(c).area)

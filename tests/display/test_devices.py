@@ -341,3 +341,23 @@ def test_text_clipping_modes(mode, expected):
     # 'character' keeps 'C', 'l', 'i' whole; 'stroke' also keeps the left part of 'p'
     beyond_i = drawn[:, [0, 2]].max() > placed[-1].cell[0] + 1e-9
     assert beyond_i == (mode == "stroke")
+
+
+def test_vector_device_keeps_what_the_raster_rounds():
+    """Erratum E37: the random-scan display follows the line path (its commands keep
+    the exact end points), the raster display plots the nearest pixel centers."""
+    df = DisplayFile()
+    df.set_viewing(window=(0, 0, 10, 10))
+    df.create_segment("s")
+    df.polyline([(1, 1), (8, 3)])
+    df.close_segment()
+    v = VectorDevice(W, H)
+    interpret(df, v)
+    (x0, y0, x1, y1), = v.lines().tolist()
+    assert (x0, y0) == pytest.approx((6.3, 4.7)) and (x1, y1) == pytest.approx((50.4, 14.1))
+    fb = sl.FrameBuffer(W, H, mode="1")
+    df.draw(fb)
+    lit = np.argwhere(fb.to_array())
+    xs, ys = lit[:, 1], H - 1 - lit[:, 0]
+    assert (xs.min(), xs.max()) == (6, 50)       # rounded end points
+    assert {(6, 5), (50, 14)} <= set(zip(xs.tolist(), ys.tolist()))

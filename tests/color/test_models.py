@@ -195,3 +195,39 @@ def test_bad_input(call, error, words):
 
 def test_module_constants_are_inverse():
     np.testing.assert_allclose(models.RGB_FROM_YIQ @ models.YIQ_FROM_RGB, np.eye(3), atol=1e-12)
+
+
+# -- properties on arbitrary colors ------------------------------------------------------
+
+from hypothesis import given  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+from tests.reference import HYPOTHESIS  # noqa: E402
+
+UNIT = st.floats(0.0, 1.0, allow_nan=False)
+TRIPLE = st.tuples(UNIT, UNIT, UNIT)
+
+
+@HYPOTHESIS
+@given(rgb=TRIPLE, ucr=UNIT)
+def test_round_trips_hold_for_any_color(rgb, ucr):
+    a = np.array(rgb)
+    for forward, inverse in ((sl.color.rgb_to_hsv, sl.color.hsv_to_rgb),
+                             (sl.color.rgb_to_hls, sl.color.hls_to_rgb),
+                             (sl.color.rgb_to_yiq, sl.color.yiq_to_rgb)):
+        np.testing.assert_allclose(inverse(forward(a)), a, atol=1e-9)
+    cmyk = sl.color.rgb_to_cmyk(a, ucr=ucr)
+    assert ((cmyk >= 0) & (cmyk <= 1 + 1e-12)).all()
+    np.testing.assert_allclose(sl.color.cmyk_to_rgb(np.clip(cmyk, 0, 1)), a, atol=1e-9)
+    # HSV and HLS components stay in [0, 1], hue in [0, 1)
+    for model in (sl.color.rgb_to_hsv(a), sl.color.rgb_to_hls(a)):
+        assert 0 <= model[0] < 1 and 0 <= model[1] <= 1 and 0 <= model[2] <= 1
+
+
+@HYPOTHESIS
+@given(hsv=TRIPLE)
+def test_hsv_to_rgb_agrees_with_colorsys_everywhere(hsv):
+    np.testing.assert_allclose(sl.color.hsv_to_rgb(np.array(hsv)), colorsys.hsv_to_rgb(*hsv),
+                               atol=1e-12)
+    np.testing.assert_allclose(sl.color.hls_to_rgb(np.array(hsv)), colorsys.hls_to_rgb(*hsv),
+                               atol=1e-12)

@@ -95,7 +95,8 @@ def _hue(r, g, b, maxc, delta):
     safe = np.where(delta > 0, delta, 1.0)
     h = np.where(maxc == r, (g - b) / safe,
                  np.where(maxc == g, 2.0 + (b - r) / safe, 4.0 + (r - g) / safe))
-    return np.where(delta > 0, (h / 6.0) % 1.0, 0.0)
+    h = (h / 6.0) % 1.0    # a tiny negative h gives 1.0 here: that hue is 0
+    return np.where((delta > 0) & (h < 1.0), h, 0.0)
 
 
 def rgb_to_hsv(rgb):

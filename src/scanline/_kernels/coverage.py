@@ -1,0 +1,252 @@
+"""Antialiased areas: the fraction of each pixel covered by a shape, composited
+with that fraction as alpha.
+
+Coverage is measured on ``SUB`` = 16 sub-scan-lines per pixel row, at heights
+``y - 1/2 + (s + 1/2) / 16``, and *exactly* along each of them: a sub-scan-line
+crosses the shape's edges at real x positions, the fill rule (even-odd or nonzero
+winding, counted per sub-scan-line over every contour of the shape) turns the
+sorted crossings into spans, and each span adds ``1/16`` times the exact length of
+its overlap with every pixel it meets.  This is the method of Cairo's image
+rasterizer (15 sub-scan-lines, 256 x positions) and Skia's supersampler: unlike
+signed-area accumulation ("exact area" for one non-overlapping contour) it applies
+either fill rule exactly wherever contours overlap or cross themselves, because the
+rule is evaluated on each sub-scan-line rather than on accumulated areas; the price
+is a vertical resolution of 1/16 pixel (a coverage error below 1/32 per pixel where
+an edge ends inside a row, zero on average).
+
+Spans are accumulated as differences (four additions per span, whatever its
+length) in a row buffer whose running sum, taken once per pixel row, is the
+coverage.  Rows and spans are clipped to the raster before anything is added, so
+no store leaves ``buf``.
+
+References
+----------
+T. Duff, "Polygon scan conversion by exact convolution", Raster Imaging and Digital
+Typography, 1989 (coverage as the box-filtered area).
+K. Packard, C. Worth, Cairo's "tor" scan converter (sub-scan-line coverage), 2008.
+J. D. Foley, A. van Dam, S. K. Feiner, J. F. Hughes, "Computer Graphics: Principles
+and Practice", 2nd ed., 1990, section 3.17 (unweighted area sampling).
+"""
+
+import math
+
+import numpy as np
+
+from ._jit import helper, inline, kernel
+from .blend import composite_row
+from .polygon import EVEN_ODD, NONZERO  # noqa: F401  (the rule codes of the aliased fill)
+
+#: Sub-scan-lines per pixel row.
+SUB = 16
+
+
+@inline
+def add_span(acc, xlo, xhi, xa, xb, weight):
+    """Add ``weight`` x the overlap of [xa, xb) with each pixel, clipped to pixels
+    xlo..xhi, to the difference buffer ``acc`` (index 0 is pixel xlo)."""
+    xa = max(xa, xlo - 0.5)
+    xb = min(xb, xhi + 0.5)
+    if xb > xa:
+        ia = math.floor(xa + 0.5)
+        fa = ia + 0.5 - xa
+        ib = min(math.floor(xb + 0.5), xhi + 1)
+        fb = xb - (ib - 0.5)
+        ia -= xlo
+        ib -= xlo
+        acc[ia] += weight * fa
+        acc[ia + 1] += weight * (1.0 - fa)
+        acc[ib] -= weight * (1.0 - fb)
+        acc[ib + 1] -= weight * fb
+
+
+@helper
+def flush_row(buf, mode, table, y, acc, xlo, xhi, src):
+    """Composite the coverage of row y (the running sum of ``acc``, turned into
+    alphas in place) and clear ``acc``."""
+    alpha = src[3]
+    run = 0.0
+    n = xhi - xlo + 1
+    for i in range(n):
+        run += acc[i]
+        acc[i] = min(run, 1.0) * alpha if run > 1e-9 else 0.0
+    composite_row(buf, mode, table, y, xlo, acc, n, src)
+    acc[:n + 2] = 0.0
+
+
+@helper
+def shape_edges(verts, contours, c0, c1, edges):
+    """Store the non-horizontal edges of contours c0..c1-1 in ``edges`` as rows
+    (ylo, yhi, x at ylo, dx/dy, direction), sorted by ylo; return their count and
+    the shape's bounds (xmin, ymin, xmax, ymax)."""
+    n = 0
+    xmin = ymin = math.inf
+    xmax = ymax = -math.inf
+    for c in range(c0, c1):
+        start, stop = contours[c], contours[c + 1]
+        for i in range(start, stop):
+            x0, y0 = verts[i, 0], verts[i, 1]
+            j = i + 1 if i + 1 < stop else start
+            x1, y1 = verts[j, 0], verts[j, 1]
+            xmin = min(xmin, x0)
+            xmax = max(xmax, x0)
+            ymin = min(ymin, y0)
+            ymax = max(ymax, y0)
+            if y0 == y1:
+                continue
+            d = 1.0
+            if y0 > y1:
+                x0, y0, x1, y1 = x1, y1, x0, y0
+                d = -1.0
+            edges[n, 0] = y0
+            edges[n, 1] = y1
+            edges[n, 2] = x0
+            edges[n, 3] = (x1 - x0) / (y1 - y0)
+            edges[n, 4] = d
+            n += 1
+    # insertion sort by ylo (edges arrive nearly sorted within a contour)
+    for i in range(1, n):
+        j = i
+        while j > 0 and edges[j - 1, 0] > edges[j, 0]:
+            for c in range(5):
+                edges[j - 1, c], edges[j, c] = edges[j, c], edges[j - 1, c]
+            j -= 1
+    return n, xmin, ymin, xmax, ymax
+
+
+@helper
+def row_crossings(edges, active, na, bottom, xs, ws, counts, cap):
+    """Record where the active edges cross the row's sub-scan-lines: sub-line s
+    (at height ``bottom + (s + 1/2) / SUB``) gets ``counts[s]`` crossings in
+    ``xs[s * cap:]`` (x) and ``ws[s * cap:]`` (+1 for an upward edge, -1 for a
+    downward one).  An edge crosses the heights ylo <= y < yhi, so edges meeting
+    at a vertex count it once."""
+    for s in range(SUB):
+        counts[s] = 0
+    for t in range(na):
+        e = active[t]
+        ylo = edges[e, 0]
+        s0 = max(math.ceil((ylo - bottom) * SUB - 0.5), 0)
+        s1 = min(math.ceil((edges[e, 1] - bottom) * SUB - 0.5), SUB)
+        for s in range(s0, s1):
+            x = edges[e, 2] + (bottom + (s + 0.5) / SUB - ylo) * edges[e, 3]
+            k = s * cap + counts[s]
+            xs[k] = x
+            ws[k] = edges[e, 4]
+            counts[s] += 1
+
+
+@helper
+def sub_line_spans(xs, ws, start, k, acc, xlo, xhi, rule):
+    """Sort the ``k`` crossings at ``xs[start:]`` and add the spans the fill rule
+    makes of them to ``acc``."""
+    for i in range(start + 1, start + k):  # insertion sort: a few crossings
+        x = xs[i]
+        w = ws[i]
+        j = i
+        while j > start and xs[j - 1] > x:
+            xs[j] = xs[j - 1]
+            ws[j] = ws[j - 1]
+            j -= 1
+        xs[j] = x
+        ws[j] = w
+    winding = 0
+    enter = 0.0
+    for j in range(start, start + k):
+        before = winding != 0 if rule == NONZERO else (winding & 1) == 1
+        winding += int(ws[j])
+        after = winding != 0 if rule == NONZERO else (winding & 1) == 1
+        if after and not before:
+            enter = xs[j]
+        elif before and not after:
+            add_span(acc, xlo, xhi, enter, xs[j], 1.0 / SUB)
+
+
+@helper
+def fill_shape(buf, mode, width, height, table, verts, contours, c0, c1, src, rule,
+               edges, active, xs, ws, counts, acc):
+    """Composite one shape (contours c0..c1-1, combined by ``rule``)."""
+    n, xmin, ymin, xmax, ymax = shape_edges(verts, contours, c0, c1, edges)
+    if n == 0 or not src[3] > 0.0:
+        return
+    xlo = max(math.floor(xmin + 0.5), 0)
+    xhi = min(math.ceil(xmax + 0.5) - 1, width - 1)
+    ylo = max(math.floor(ymin + 0.5), 0)
+    yhi = min(math.ceil(ymax + 0.5) - 1, height - 1)
+    if xlo > xhi or ylo > yhi:
+        return
+    cap = active.shape[0]
+    nxt = 0
+    na = 0
+    for y in range(ylo, yhi + 1):
+        bottom = y - 0.5
+        top = y + 0.5
+        while nxt < n and edges[nxt, 0] < top:   # edges starting below the row's top
+            active[na] = nxt
+            na += 1
+            nxt += 1
+        keep = 0
+        for t in range(na):                      # drop edges ending below the row
+            if edges[active[t], 1] > bottom:
+                active[keep] = active[t]
+                keep += 1
+        na = keep
+        if na == 0:
+            continue
+        row_crossings(edges, active, na, bottom, xs, ws, counts, cap)
+        for s in range(SUB):
+            k = counts[s]
+            if k == 2:   # the usual case: one span whatever the rule
+                a = xs[s * cap]
+                b = xs[s * cap + 1]
+                add_span(acc, xlo, xhi, min(a, b), max(a, b), 1.0 / SUB)
+            elif k > 2:
+                sub_line_spans(xs, ws, s * cap, k, acc, xlo, xhi, rule)
+        flush_row(buf, mode, table, y, acc, xlo, xhi, src)
+
+
+@kernel
+def fill_shapes(buf, mode, width, height, table, verts, contours, shapes, srcs, rule,
+                max_edges):
+    """Composite the antialiased shapes ``shapes[p] .. shapes[p+1]-1`` (contour
+    indices; contour c is ``verts[contours[c]:contours[c+1]]``), in order, each
+    with its source row (``srcs`` has one row, or one per shape).  ``max_edges`` is
+    the most vertices of any shape."""
+    cap = max(max_edges, 1)
+    edges = np.empty((cap, 5), np.float64)
+    active = np.empty(cap, np.int64)
+    xs = np.empty(SUB * cap, np.float64)
+    ws = np.empty(SUB * cap, np.float64)
+    counts = np.zeros(SUB, np.int64)
+    acc = np.zeros(width + 3, np.float64)
+    one = srcs.shape[0] == 1
+    for p in range(shapes.shape[0] - 1):
+        fill_shape(buf, mode, width, height, table, verts, contours, shapes[p],
+                   shapes[p + 1], srcs[0] if one else srcs[p], rule, edges, active, xs, ws,
+                   counts, acc)
+
+
+@kernel
+def fill_ellipses(buf, mode, width, height, table, ellipses, srcs):
+    """Composite antialiased filled ellipses, rows (xc, yc, rx, ry) of ``ellipses``
+    (a circle when rx = ry): on each sub-scan-line the span ``xc +- rx sqrt(1 -
+    ((y - yc) / ry)**2)``."""
+    acc = np.zeros(width + 3, np.float64)
+    one = srcs.shape[0] == 1
+    for n in range(ellipses.shape[0]):
+        xc, yc, rx, ry = ellipses[n, 0], ellipses[n, 1], ellipses[n, 2], ellipses[n, 3]
+        src = srcs[0] if one else srcs[n]
+        if not (rx > 0.0 and ry > 0.0 and src[3] > 0.0):
+            continue
+        xlo = max(math.floor(xc - rx + 0.5), 0)
+        xhi = min(math.ceil(xc + rx + 0.5) - 1, width - 1)
+        ylo = max(math.floor(yc - ry + 0.5), 0)
+        yhi = min(math.ceil(yc + ry + 0.5) - 1, height - 1)
+        if xlo > xhi:
+            continue
+        for y in range(ylo, yhi + 1):
+            for s in range(SUB):
+                t = (y - 0.5 + (s + 0.5) / SUB - yc) / ry
+                if t * t < 1.0:
+                    half = rx * math.sqrt(1.0 - t * t)
+                    add_span(acc, xlo, xhi, xc - half, xc + half, 1.0 / SUB)
+            flush_row(buf, mode, table, y, acc, xlo, xhi, src)

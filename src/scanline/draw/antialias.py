@@ -1,0 +1,220 @@
+"""Antialiased primitives: thin lines and conic outlines after Wu (1991), areas by
+their coverage of each pixel (notes, syllabus "Antialiasing"; glossary:
+"Anti-aliasing is sub pixel interpolation ... usually done by filtering").
+
+Every function takes *real* coordinates (not rounded to pixel centers; pixel
+centers are at integers, y up), a ``color`` that is one color spec or one per
+primitive, and composites each pixel "over" the frame buffer with alpha =
+coverage x the color's alpha (:mod:`scanline.draw._blend`), in every mode:
+``"RGB"``, ``"RGBA"``, ``"L"``, ``"P"`` (blend, then the nearest table entry; the
+drawing color itself is added to the table) and ``"1"`` (a pixel is set where
+coverage x alpha >= 1/2).  Primitives are composited in order, each pixel once per
+primitive.  Anything outside the frame buffer is clipped.
+
+=============================== ==========================================
+``lines(fb, segments, color)``  (N, 4) rows (x0, y0, x1, y1), width 1
+``circles(fb, circles, color)`` (N, 3) rows (xc, yc, r), outlines
+``ellipses(fb, ellipses, c)``   (N, 4) rows (xc, yc, rx, ry), outlines
+``filled_ellipses(fb, e, c)``   (N, 4) rows (xc, yc, rx, ry), areas
+``fill(fb, contours, c, rule)`` ONE shape from several contours
+``fills(fb, shapes, c, rule)``  a batch of shapes in one compiled call
+=============================== ==========================================
+"""
+
+import numpy as np
+
+from .. import _validate as v
+from .._kernels import antialias as wu
+from .._kernels import coverage as cov
+from ..geometry import contours as parse
+from . import _blend
+from ._common import target
+from .polygon import _rule
+
+
+def _reals(name, value, columns, radius_columns=()):
+    """An (N, columns) float64 array, validated as
+    :func:`scanline._validate.coordinate_array` validates (finite, within +-2**30,
+    radii >= 0) but not rounded."""
+    v.coordinate_array(name, value, columns, radius_columns)
+    return np.ascontiguousarray(np.asarray(value, np.float64).reshape(-1, columns))
+
+
+def _setup(fb, color, n):
+    buf, _, width, height = target(fb)
+    return buf, _blend.mode_code(fb), width, height, _blend.table(fb), _blend.sources(fb, color, n)
+
+
+def lines(fb, segments, color="white"):
+    """Draw N antialiased lines of width 1 with Wu's algorithm.
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+    segments : array_like, shape (N, 4)
+        Rows (x0, y0, x1, y1), real device coordinates within +-2**30.
+    color : color or list/array of N colors
+        Alpha multiplies the coverage.
+
+    Notes
+    -----
+    Syllabus "Antialiasing" (chapter 3, attributes).  Each column along the major
+    axis splits the cross-section of the 1-pixel-wide line, ``sqrt(1 + m**2)`` long
+    at slope m, between the pixels it straddles (Wu's two intensities for
+    axis-aligned lines); real endpoints weight their end columns by the part of
+    the column the segment spans.  The total intensity is the segment's length at
+    every slope.  See :mod:`scanline._kernels.antialias`.
+
+    References
+    ----------
+    X. Wu, "An efficient antialiasing technique", Computer Graphics 25(4)
+    (SIGGRAPH '91), 143-152, 1991.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> fb = sl.FrameBuffer(6, 3, mode="L")
+    >>> sl.draw.antialias.lines(fb, [(0, 0.75, 5, 0.75)], "white")
+    >>> fb.to_array()
+    array([[  0,   0,   0,   0,   0,   0],
+           [ 96, 191, 191, 191, 191,  96],
+           [ 32,  64,  64,  64,  64,  32]], dtype=uint8)
+    """
+    segs = _reals("segments", segments, 4)
+    buf, mode, width, height, table, srcs = _setup(fb, color, len(segs))
+    wu.draw_lines(buf, mode, width, height, table, segs, srcs)
+
+
+def ellipses(fb, ellipses, color="white"):
+    """Draw N antialiased ellipse outlines (Wu-style conics).
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+    ellipses : array_like, shape (N, 4)
+        Rows (xc, yc, rx, ry), real; semi-axes >= 0 (one of them 0: the segment
+        along the other, traced twice).
+    color : color or list/array of N colors
+
+    Notes
+    -----
+    The arcs where |slope| <= 1 are stepped by columns, the others by rows; each
+    column (row) splits the curve's cross-section between the pixels straddling
+    the ideal ellipse, as :func:`lines` does.  The total intensity is the
+    perimeter.
+
+    References
+    ----------
+    X. Wu, "An efficient antialiasing technique", 1991 (the circle generator).
+    """
+    arr = _reals("ellipses", ellipses, 4, radius_columns=(2, 3))
+    buf, mode, width, height, table, srcs = _setup(fb, color, len(arr))
+    wu.draw_ellipses(buf, mode, width, height, table, arr, srcs)
+
+
+def circles(fb, circles, color="white"):
+    """Draw N antialiased circles, rows (xc, yc, r) of ``circles`` (real); see
+    :func:`ellipses`.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> fb = sl.FrameBuffer(7, 7, mode="L")
+    >>> sl.draw.antialias.circles(fb, [(3, 3, 2.5)])
+    >>> print(sl.text_image(fb))
+    -#####-
+    #######
+    ##---##
+    ##---##
+    ##---##
+    #######
+    -#####-
+    """
+    arr = _reals("circles", circles, 3, radius_columns=(2,))
+    ellipses(fb, arr[:, [0, 1, 2, 2]], color)
+
+
+def filled_ellipses(fb, ellipses, color="white"):
+    """Fill N ellipses (rows (xc, yc, rx, ry), real; rx = ry: disks) with
+    antialiased edges: each pixel's coverage, measured on 16 sub-scan-lines (see
+    :mod:`scanline._kernels.coverage`)."""
+    arr = _reals("ellipses", ellipses, 4, radius_columns=(2, 3))
+    buf, mode, width, height, table, srcs = _setup(fb, color, len(arr))
+    cov.fill_ellipses(buf, mode, width, height, table, arr, srcs)
+
+
+def _fill_parsed(fb, verts, offsets, shapes, color, rule):
+    code = _rule(rule)
+    buf, mode, width, height, table, srcs = _setup(fb, color, len(shapes) - 1)
+    counts = offsets[shapes[1:]] - offsets[shapes[:-1]]
+    most = int(counts.max()) if len(counts) else 0
+    cov.fill_shapes(buf, mode, width, height, table, verts, offsets, shapes, srcs, code, most)
+
+
+def fill(fb, contours, color="white", rule="nonzero"):
+    """Fill ONE shape made of several contours with antialiased edges.
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+    contours : list of (K, 2) arrays, or one (K, 2) array
+        The shape's contours (outer boundaries, holes, overlapping pieces), real
+        device coordinates, each closed implicitly.
+    color : color
+    rule : {"nonzero", "even-odd"}
+        How the contours combine: nonzero winding number or odd parity, counted
+        over all contours together.
+
+    Notes
+    -----
+    Each pixel is composited once with alpha = the fraction of it inside the
+    shape, measured exactly along 16 sub-scan-lines per row (the fill rule is
+    applied on each), so a hole, an overlap and a self-intersection are
+    antialiased as exactly as a simple polygon.  See
+    :mod:`scanline._kernels.coverage`.
+
+    References
+    ----------
+    J. D. Foley, A. van Dam, S. K. Feiner, J. F. Hughes, "Computer Graphics:
+    Principles and Practice", 2nd ed., 1990, section 3.17.
+
+    Examples
+    --------
+    A rectangle from x = 1 to 3 (pixel edges are at half-integers): the pixels
+    whose centers are on its sides are half covered.
+
+    >>> import scanline as sl
+    >>> fb = sl.FrameBuffer(5, 3, mode="L")
+    >>> sl.draw.antialias.fill(fb, [[(1, -0.5), (3, -0.5), (3, 2.5), (1, 2.5)]])
+    >>> fb.to_array()
+    array([[  0, 128, 255, 128,   0],
+           [  0, 128, 255, 128,   0],
+           [  0, 128, 255, 128,   0]], dtype=uint8)
+    """
+    verts, offsets = parse.contours("contours", contours)
+    _fill_parsed(fb, verts, offsets, np.array([0, len(offsets) - 1], np.int64), color, rule)
+
+
+def fills(fb, shapes, color="white", rule="nonzero", counts=None):
+    """Fill a batch of shapes with antialiased edges in one compiled call.
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+    shapes : list
+        Shapes as :func:`fill` takes them (each a (K, 2) array or a list of
+        contours), or an (M, K, 2) array of one-contour shapes; with ``counts``,
+        one flat (V, 2) array of vertices (as :func:`scanline.draw.polygons`).
+    color : color or list/array of M colors
+    rule : {"nonzero", "even-odd"}
+        Applied to each shape on its own.
+    counts : array_like of int, optional
+        Vertices per shape for the flat form.
+
+    Later shapes are composited over earlier ones.
+    """
+    if counts is None:
+        verts, offsets, polys = parse.batch("shapes", shapes)
+    else:
+        verts, offsets, polys = parse.flat("shapes", shapes, counts)
+    _fill_parsed(fb, verts, offsets, polys, color, rule)

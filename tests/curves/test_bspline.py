@@ -94,6 +94,7 @@ def test_the_notes_open_uniform_knot_vectors():
     assert sl.curves.open_uniform_knots(5, 4).tolist() == [0, 0, 0, 0, 1, 2, 2, 2, 2]
     c = sl.curves.BSpline(np.zeros((5, 2)), 4)
     assert c.knots.tolist() == [0, 0, 0, 0, 1, 2, 2, 2, 2] and c.domain == (0.0, 2.0)
+    assert sl.curves.BSpline(np.zeros((4, 2)), 2, knots=None).knots.tolist() == [0, 0, 1, 2, 3, 3]
 
 
 @pytest.mark.parametrize("knots", ["open", "uniform", "periodic", "random"])

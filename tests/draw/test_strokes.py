@@ -23,27 +23,17 @@ def pixels(rows):
 # A thick line is the set of pixel centers inside its outline; centers on a left or
 # top edge are in, on a right or bottom edge out (docs/conventions.md).
 
-def test_butt_cap_width_3_horizontal():
-    # outline x in [3, 6], y in [0.5, 3.5]: centers x = 3, 4, 5 (6 is on the right
-    # edge), y = 1, 2, 3 (0.5 is not a center, 3.5 neither)
-    fb = sl.FrameBuffer(10, 5, mode="1")
-    sl.draw.line(fb, 3, 2, 6, 2, color=1, width=3)
-    assert image(fb) == ["----------",
-                         "---###----",
-                         "---###----",
-                         "---###----",
-                         "----------"]
-
-
-def test_square_cap_width_3_horizontal():
+@pytest.mark.parametrize("cap,expected", [
+    # the outline x in [3, 6], y in [0.5, 3.5]: centers x = 3, 4, 5 (6 is on the
+    # right edge), y = 1, 2, 3 (0.5 is not a center, 3.5 neither)
+    ("butt", "---###----"),
     # the square cap extends each end by half the width: x in [1.5, 7.5]
+    ("square", "--######--"),
+])
+def test_caps_width_3_horizontal(cap, expected):
     fb = sl.FrameBuffer(10, 5, mode="1")
-    sl.draw.line(fb, 3, 2, 6, 2, color=1, width=3, cap="square")
-    assert image(fb) == ["----------",
-                         "--######--",
-                         "--######--",
-                         "--######--",
-                         "----------"]
+    sl.draw.line(fb, 3, 2, 6, 2, color=1, width=3, cap=cap)
+    assert image(fb) == ["----------"] + [expected] * 3 + ["----------"]
 
 
 def test_round_cap_width_5_horizontal():

@@ -111,19 +111,23 @@ def _margin(style):
     return reach + 1
 
 
+def _line_type(style):
+    """``(kind, mask, dashes, phase)`` of the pixel-sequence kernels for a width-1 or
+    pen line."""
+    mask = style.mask()
+    if style.dash is None:
+        return kl.SOLID, 0, _NO_DASHES, 0.0
+    if mask is not None:
+        return kl.MASK, mask, _NO_DASHES, float(np.floor(style.dash_phase) % 16)
+    return kl.LENGTHS, 0, np.array(style.dash, np.float64), float(style.dash_phase)
+
+
 def _painter(style, verts, offsets, closed):
     """``draw(buf, packed, width, height, ox, oy, values, a, b)``: draws polylines
     a .. b-1 with the (1 or b-a rows of) channel values."""
     if style.width == 1 or style.pen is not None:
         iverts = np.floor(verts + 0.5).astype(np.int64)
-        mask = style.mask()
-        if style.dash is None:
-            kind, mask, dashes, phase = kl.SOLID, 0, _NO_DASHES, 0.0
-        elif mask is not None:
-            kind, dashes, phase = kl.MASK, _NO_DASHES, float(np.floor(style.dash_phase))
-            phase %= 16
-        else:
-            kind, mask, dashes, phase = kl.LENGTHS, 0, np.array(style.dash), style.dash_phase
+        kind, mask, dashes, phase = _line_type(style)
         pen = style.footprint()
         margin = int(np.abs(pen).max())
 
@@ -428,13 +432,7 @@ def conics(fb, rows, color, style, antialias):
         offsets[1:] = np.cumsum([len(p) for p in polys])
         stroke(fb, verts, offsets, np.ones(n, bool), color, style, antialias)
         return
-    mask = style.mask()
-    if style.dash is None:
-        kind, mask, dashes, phase = kl.SOLID, 0, _NO_DASHES, 0.0
-    elif mask is not None:
-        kind, dashes, phase = kl.MASK, _NO_DASHES, float(np.floor(style.dash_phase) % 16)
-    else:
-        kind, mask, dashes, phase = kl.LENGTHS, 0, np.array(style.dash), style.dash_phase
+    kind, mask, dashes, phase = _line_type(style)
     pen = style.footprint()
     values = colors(fb, color, n) if not _blend.translucent(color) else None
     margin = int(np.abs(pen).max())

@@ -55,6 +55,20 @@ def write_segment(out, row, x0, y0, x1, y1):
 
 
 @inline
+def cs_log(log, n, end, c0, c1, both, action, bit, x, y):
+    """Row n of a Cohen-Sutherland log (nothing when the log has no row n)."""
+    if n < log.shape[0]:
+        log[n, 0] = end
+        log[n, 1] = c0
+        log[n, 2] = c1
+        log[n, 3] = both
+        log[n, 4] = action
+        log[n, 5] = bit
+        log[n, 6] = x
+        log[n, 7] = y
+
+
+@inline
 def cohen_sutherland(x0, y0, x1, y1, xmin, ymin, xmax, ymax, out, row, log):
     """Clip one segment; write it into ``out[row]``; return True if any part is
     visible.  Logs one row per step when ``log`` has rows.
@@ -74,15 +88,7 @@ def cohen_sutherland(x0, y0, x1, y1, xmin, ymin, xmax, ymax, out, row, log):
         both = c0 & c1
         if (c0 | c1) == 0 or both != 0:
             action = CS_ACCEPT if (c0 | c1) == 0 else CS_REJECT
-            if n < log.shape[0]:
-                log[n, 0] = -1
-                log[n, 1] = c0
-                log[n, 2] = c1
-                log[n, 3] = both
-                log[n, 4] = action
-                log[n, 5] = 0
-                log[n, 6] = np.nan
-                log[n, 7] = np.nan
+            cs_log(log, n, -1, c0, c1, both, action, 0, np.nan, np.nan)
             write_segment(out, row, ax, ay, bx, by)
             return action == CS_ACCEPT
         end = 0 if c0 != 0 else 1
@@ -103,15 +109,7 @@ def cohen_sutherland(x0, y0, x1, y1, xmin, ymin, xmax, ymax, out, row, log):
             bit = ABOVE
             y = ymax
             x = x0 + dx * ((ymax - y0) / dy)
-        if n < log.shape[0]:
-            log[n, 0] = end
-            log[n, 1] = c0
-            log[n, 2] = c1
-            log[n, 3] = both
-            log[n, 4] = CS_CLIP
-            log[n, 5] = bit
-            log[n, 6] = x
-            log[n, 7] = y
+        cs_log(log, n, end, c0, c1, both, CS_CLIP, bit, x, y)
         n += 1
         if end == 0:
             ax, ay = x, y
@@ -151,13 +149,20 @@ def parametric_edge(p, q, k, u1, u2, log):
 
 
 @inline
-def parametric_result(x0, y0, x1, y1, u1, u2, out, row):
-    """Write the segment from t = u1 to t = u2 into ``out[row]``."""
-    dx = x1 - x0
-    dy = y1 - y0
-    write_segment(out, row,
-                  x0 + u1 * dx if u1 > 0.0 else x0, y0 + u1 * dy if u1 > 0.0 else y0,
-                  x0 + u2 * dx if u2 < 1.0 else x1, y0 + u2 * dy if u2 < 1.0 else y1)
+def parametric_result(x0, y0, x1, y1, outside, u1, u2, out, row):
+    """Decide: visible iff no parallel boundary had the segment outside and
+    u1 <= u2; write the segment from t = u1 to t = u2 (or, if not visible, the
+    segment as given) into ``out[row]``; return the decision."""
+    ok = (not outside) & (u1 <= u2)
+    if ok:
+        dx = x1 - x0
+        dy = y1 - y0
+        write_segment(out, row,
+                      x0 + u1 * dx if u1 > 0.0 else x0, y0 + u1 * dy if u1 > 0.0 else y0,
+                      x0 + u2 * dx if u2 < 1.0 else x1, y0 + u2 * dy if u2 < 1.0 else y1)
+    else:
+        write_segment(out, row, x0, y0, x1, y1)
+    return ok
 
 
 @inline
@@ -172,12 +177,7 @@ def liang_barsky(x0, y0, x1, y1, xmin, ymin, xmax, ymax, out, row, log):
     out2, u1, u2 = parametric_edge(dx, xmax - x0, 1, u1, u2, log)
     out3, u1, u2 = parametric_edge(-dy, y0 - ymin, 2, u1, u2, log)
     out4, u1, u2 = parametric_edge(dy, ymax - y0, 3, u1, u2, log)
-    ok = (not (out1 | out2 | out3 | out4)) & (u1 <= u2)
-    if ok:
-        parametric_result(x0, y0, x1, y1, u1, u2, out, row)
-    else:
-        write_segment(out, row, x0, y0, x1, y1)
-    return ok
+    return parametric_result(x0, y0, x1, y1, out1 | out2 | out3 | out4, u1, u2, out, row)
 
 
 @inline
@@ -203,12 +203,7 @@ def cyrus_beck(x0, y0, x1, y1, win, normals, out, row, log):
                                     -(nx * (x0 - win[i, 0]) + ny * (y0 - win[i, 1])),
                                     i, u1, u2, log)
         outside |= o
-    ok = (not outside) & (u1 <= u2)
-    if ok:
-        parametric_result(x0, y0, x1, y1, u1, u2, out, row)
-    else:
-        write_segment(out, row, x0, y0, x1, y1)
-    return ok
+    return parametric_result(x0, y0, x1, y1, outside, u1, u2, out, row)
 
 
 @inline

@@ -10,9 +10,18 @@ from ..text.style import resolve
 from ._common import target
 
 
+_ALPHAS = {}
+
+
 def _alpha(color):
     """The color's alpha (0..255); integers (gray levels, bits, indices) are opaque."""
-    return 255 if isinstance(color, (int, np.integer)) else rgba(color)[3]
+    if isinstance(color, (int, np.integer)):
+        return 255
+    if type(color) is str:
+        if color not in _ALPHAS:
+            _ALPHAS[color] = rgba(color)[3]
+        return _ALPHAS[color]
+    return rgba(color)[3]
 
 
 def _strokes(fb, p, color, antialias):
@@ -36,7 +45,7 @@ def _strokes(fb, p, color, antialias):
         lines(fb, np.hstack([a, b]), color=color)
 
 
-def _filled(fb, p, color, antialias):
+def _filled(fb, p, color, value, antialias):
     """Outline and bitmap fonts: stamp cached glyph images, or fill the contours of
     glyphs too large to cache."""
     cache = glyphcache.images(p.font, p.matrix, antialias, p.tolerance)
@@ -56,10 +65,10 @@ def _filled(fb, p, color, antialias):
             polygons(fb, shapes, color=color, rule="nonzero")
         return
     mids = cache.ensure(p.gids)
-    buf, packed, width, height = target(fb)
+    buf, packed = fb._raster()
     from .._kernels.text import stamp_glyphs
-    stamp_glyphs(buf, packed, width, height, cache.atlas, cache.masks, mids, p.ox, p.oy,
-                 fb.pixel(color), _alpha(color), fb.mode == "P")
+    stamp_glyphs(buf, packed, fb.width, fb.height, cache.atlas, cache.masks, mids, p.ox,
+                 p.oy, value, _alpha(color), fb.mode == "P")
 
 
 def text(fb, x, y, text, color=None, font=None, height=None, expansion=None, spacing=None,
@@ -121,11 +130,11 @@ def text(fb, x, y, text, color=None, font=None, height=None, expansion=None, spa
                  angle=angle, up=up, path=path, align=align, antialias=antialias)
     color = color if color is not None else st.color if st.color is not None else "white"
     target(fb)
-    fb.pixel(color)
+    value = fb.pixel(color)
     p = place(text, x, y, st)
     if len(p.gids) == 0:
         return
     if p.font.kind == "stroke":
         _strokes(fb, p, color, st.antialias)
     else:
-        _filled(fb, p, color, st.antialias)
+        _filled(fb, p, color, value, st.antialias)

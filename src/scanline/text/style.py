@@ -57,6 +57,8 @@ def _angle_from_up(up):
 class TextStyle:
     """The text attributes.
 
+    A style is immutable: :meth:`replace` makes a changed copy.
+
     Parameters
     ----------
     font : str, path or Font
@@ -117,11 +119,11 @@ class TextStyle:
                 if value is not None:
                     if values.get("angle"):
                         raise ArgumentValueError("give angle or up, not both")
-                    self.angle = _angle_from_up(value)
+                    object.__setattr__(self, "angle", _angle_from_up(value))
                 continue
             if key == "angle" and values.get("up") is not None:
                 continue
-            setattr(self, key, _CHECKS[key](value))
+            object.__setattr__(self, key, _CHECKS[key](value))
 
     @property
     def up(self):
@@ -133,9 +135,12 @@ class TextStyle:
         the changed values are validated again."""
         out = object.__new__(TextStyle)
         for k in self.__slots__:
-            setattr(out, k, getattr(self, k))
+            object.__setattr__(out, k, getattr(self, k))
         out._set(**{k: val for k, val in changes.items() if val is not None})
         return out
+
+    def __setattr__(self, name, value):
+        raise AttributeError(f"TextStyle is immutable; use style.replace({name}=...)")
 
     def __repr__(self):
         fields = ", ".join(f"{k}={getattr(self, k)!r}" for k in self.__slots__)
@@ -186,13 +191,27 @@ _CHECKS = {"font": _font, "height": _height, "expansion": _expansion,
 DEFAULT = TextStyle()
 
 
+_RESOLVED = {}
+
+
 def resolve(style, **attributes):
     """The style to use: ``style`` (or the defaults) with the non-None keyword
-    attributes applied."""
+    attributes applied.  Results are memoized (styles are immutable), so a loop
+    drawing with the same keywords validates them once."""
     if style is None:
         style = DEFAULT
     elif not isinstance(style, TextStyle):
         raise ArgumentTypeError(f"style must be a scanline.TextStyle, got {v._show(style)}")
-    if all(val is None for val in attributes.values()):
+    values = tuple(attributes.values())
+    if all(val is None for val in values):
         return style
-    return style.replace(**attributes)
+    try:
+        key = (id(style), tuple(attributes), values)
+        hit = _RESOLVED.get(key)
+    except TypeError:  # an unhashable value (a list as a color): no memo
+        return style.replace(**attributes)
+    if hit is None:
+        if len(_RESOLVED) > 512:
+            _RESOLVED.clear()
+        hit = _RESOLVED[key] = (style, style.replace(**attributes))
+    return hit[1]

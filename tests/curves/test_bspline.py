@@ -252,3 +252,28 @@ def test_kernel_unsorted_many_points():
     c = sl.curves.BSpline(P, 4, knots="uniform")
     u = rng.uniform(*c.domain, 50_000)
     close(c.evaluate(u), si.BSpline(c.knots, P, 3)(u), 10)
+
+
+def test_uniform_blending_functions_are_shifted_copies():
+    # the notes: B_k,d(u) = B_k+1,d(u + du) = B_k+2,d(u + 2 du)
+    knots = np.arange(10.0) * 0.5
+    u = np.linspace(0, 2.0, 81)
+    b0 = sl.curves.basis(knots, 4, u)[..., 0]
+    np.testing.assert_allclose(sl.curves.basis(knots, 4, u + 0.5)[..., 1], b0, atol=1e-14)
+    np.testing.assert_allclose(sl.curves.basis(knots, 4, u + 1.0)[..., 2], b0, atol=1e-14)
+
+
+@pytest.mark.parametrize("order", [2, 3, 4, 5])
+def test_continuity_c_d_minus_2_at_simple_knots(order):
+    # the notes' property 1: degree d - 1 and C^(d-2) continuity
+    rng = np.random.default_rng(30 + order)
+    c = sl.curves.BSpline(rng.normal(size=(9, 2)), order, knots="uniform")
+    knot = c.domain[0] + 3.0
+    h = 1e-7
+    for k in range(order):
+        d = c.derivative(k)
+        jump = np.abs(d.evaluate(knot + h) - d.evaluate(knot - h)).max()
+        if k <= order - 2:
+            assert jump < 1e-4
+        else:
+            assert jump > 1e-3  # the (d-1)-th derivative is piecewise constant and jumps

@@ -171,10 +171,12 @@ def _per_curve(points, starts):
     keep = np.ones(len(points), bool)
     keep[1:] = (points[1:] != points[:-1]).any(axis=1)
     keep[starts] = True
+    kept = points[keep]
     new_starts = (np.cumsum(keep) - 1)[starts]
-    polylines = np.split(points[keep], new_starts[1:])
+    new_ends = np.append(new_starts[1:], len(kept))
+    polylines = [kept[a:b] for a, b in zip(new_starts.tolist(), new_ends.tolist())]
     ends = np.append(starts[1:], len(points))
-    for k in np.nonzero(np.diff(np.append(new_starts, keep.sum())) < 2)[0]:
+    for k in np.nonzero(new_ends - new_starts < 2)[0]:
         polylines[k] = _distinct(points[starts[k]:ends[k]])
     return polylines
 

@@ -19,8 +19,8 @@ def unit_floats(name, value):
     a = np.asarray(value)
     if a.dtype == bool:
         return a.astype(np.float32)
-    if a.dtype == np.uint8:
-        return a.astype(np.float32) / np.float32(255)
+    if a.dtype == np.uint8:   # one pass, the same values as astype then divide
+        return np.divide(a, np.float32(255), dtype=np.float32)
     if a.dtype.kind != "f":
         raise ArgumentTypeError(
             f"{name} must hold uint8 (0..255), bool or floats in [0, 1], got dtype {a.dtype}")

@@ -151,7 +151,7 @@ BAD = [
     ("[19, 9]]}", "[19, 9]], width = -2}", "segments[0].primitives[0].width", "width"),
     ("[19, 9]]}", '[19, 9]], dash = "wavy"}', "segments[0].primitives[0].dash", "dash"),
     ('name = "a"', 'name = "a"\ntransform = [{rotate = 30}]', "segments[0].transform[0].rotate",
-     "table"),
+     "must say its unit"),
     ('name = "a"', 'name = "a"\ntransform = [{rotate = {angle = 30}}]',
      "segments[0].transform[0].rotate.angle", "not a known key"),
     ('name = "a"', 'name = "a"\ntransform = [{spin = 1}]', "segments[0].transform[0]",

@@ -61,8 +61,8 @@ def _table(value, path, known, required=()):
 
 
 def _kind(value):
-    return {dict: "a table", list: "an array", str: "a string", bool: "a boolean"}.get(
-        type(value), f"a {type(value).__name__}")
+    return {dict: "a table", list: "an array", str: "a string", bool: "a boolean",
+            int: "an integer", float: "a number"}.get(type(value), f"a {type(value).__name__}")
 
 
 def _list(value, path):
@@ -113,6 +113,8 @@ def _step(step, path):
             _fail(here, f"must be [tx, ty], got {arg!r}")
         return tf.translation(_real(pair[0], f"{here}[0]"), _real(pair[1], f"{here}[1]"))
     if name == "rotate":
+        if isinstance(arg, (int, float)) and not isinstance(arg, bool):
+            _fail(here, f"must say its unit: {{degrees = {arg}}} or {{radians = {arg}}}")
         a = _table(arg, here, {"degrees", "radians", "pivot"})
         unit = {k: a[k] for k in a if k != "pivot"}
         return _call(here, tf.rotation, angle(unit, here), pivot=a.get("pivot"))

@@ -70,8 +70,9 @@ def cs_log(log, n, end, c0, c1, both, action, bit, x, y):
 
 @inline
 def cohen_sutherland(x0, y0, x1, y1, xmin, ymin, xmax, ymax, out, row, log):
-    """Clip one segment; write it into ``out[row]``; return True if any part is
-    visible.  Logs one row per step when ``log`` has rows.
+    """Clip one segment; write the visible part (or, if none, the segment as
+    given) into ``out[row]``; return True if any part is visible.  Logs one row per
+    step when ``log`` has rows.
 
     The outside endpoint is moved to its crossing with the first boundary its code
     names, in the order left, right, below, above, using the notes' formulas
@@ -89,7 +90,10 @@ def cohen_sutherland(x0, y0, x1, y1, xmin, ymin, xmax, ymax, out, row, log):
         if (c0 | c1) == 0 or both != 0:
             action = CS_ACCEPT if (c0 | c1) == 0 else CS_REJECT
             cs_log(log, n, -1, c0, c1, both, action, 0, np.nan, np.nan)
-            write_segment(out, row, ax, ay, bx, by)
+            if action == CS_ACCEPT:
+                write_segment(out, row, ax, ay, bx, by)
+            else:
+                write_segment(out, row, x0, y0, x1, y1)
             return action == CS_ACCEPT
         end = 0 if c0 != 0 else 1
         code = c0 if end == 0 else c1
@@ -119,7 +123,10 @@ def cohen_sutherland(x0, y0, x1, y1, xmin, ymin, xmax, ymax, out, row, log):
             c1 = region_code(bx, by, xmin, ymin, xmax, ymax)
     # Round-off near a corner made the endpoints chase each other: the segment
     # only grazes the corner.  Accept what is left if it is inside.
-    write_segment(out, row, ax, ay, bx, by)
+    if (c0 | c1) == 0:
+        write_segment(out, row, ax, ay, bx, by)
+    else:
+        write_segment(out, row, x0, y0, x1, y1)
     return (c0 | c1) == 0
 
 
@@ -230,8 +237,6 @@ def cohen_sutherland_lines(seg, xmin, ymin, xmax, ymax, limit, out, accepted):
             return i
         accepted[i] = cohen_sutherland(seg[i, 0], seg[i, 1], seg[i, 2], seg[i, 3],
                                        xmin, ymin, xmax, ymax, out, i, log)
-        if not accepted[i]:
-            write_segment(out, i, seg[i, 0], seg[i, 1], seg[i, 2], seg[i, 3])
     return -1
 
 

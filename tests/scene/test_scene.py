@@ -191,21 +191,17 @@ def test_json_errors_name_the_key_path_too(old, new, path, words):
         loads(json.dumps(data), "json", file="s.json")
 
 
-def test_toml_syntax_error_names_the_line(tmp_path):
-    f = tmp_path / "bad.toml"
-    f.write_text("version = 1\n\n[canvas]\nwidth = = 3\n")
+@pytest.mark.parametrize("name, text, kind", [
+    ("bad.toml", "version = 1\n\n[canvas]\nwidth = = 3\n", "TOML"),
+    ("bad.json", '{\n  "version": 1,\n  "segments": [\n    {"name": "a",}\n  ]\n}\n', "JSON"),
+])
+def test_syntax_errors_name_the_line(tmp_path, name, text, kind):
+    f = tmp_path / name
+    f.write_text(text)
     with pytest.raises(SceneError) as info:
         load(f)
-    assert str(info.value).startswith(f"{f}:4: invalid TOML")
+    assert str(info.value).startswith(f"{f}:4: invalid {kind}")
     assert info.value.line == 4
-
-
-def test_json_syntax_error_names_the_line(tmp_path):
-    f = tmp_path / "bad.json"
-    f.write_text('{\n  "version": 1,\n  "segments": [\n    {"name": "a",}\n  ]\n}\n')
-    with pytest.raises(SceneError) as info:
-        load(f)
-    assert str(info.value).startswith(f"{f}:4: invalid JSON")
 
 
 def test_json_nan_is_refused():

@@ -38,6 +38,7 @@ import numpy as np
 
 from .._kernels import blend as k
 from ..color.spec import rgba
+from ._area import fill_area
 from ._common import colors, target
 
 #: Mode name -> mode code of :mod:`scanline._kernels.blend`.
@@ -218,3 +219,13 @@ def _opaque_spec(fb, s):
     if fb.mode in ("RGB", "RGBA", "P"):
         return (int(s[0]), int(s[1]), int(s[2]))
     return int(s[0])  # the gray level ("L") or the bit ("1")
+
+
+def fill(fb, color, style, bbox, draw, outline):
+    """:func:`scanline.draw._area.fill_area` with translucent solid fills
+    composited (:func:`paint`).  Styled fills (hollow, patterns, hatches) are
+    painted by the style, which stores ``color`` opaque."""
+    if (style is None or getattr(style, "kind", None) == "solid") and translucent(color):
+        paint(fb, color, bbox, draw)
+    else:
+        fill_area(fb, color, style, bbox, draw, outline)

@@ -144,6 +144,7 @@ def filled_ellipses(fb, ellipses, color="white"):
 
 
 def _fill_parsed(fb, verts, offsets, shapes, color, rule):
+    """Fill shapes already parsed by :mod:`scanline.geometry.contours`."""
     code = _rule(rule)
     buf, mode, width, height, table, srcs = _setup(fb, color, len(shapes) - 1)
     counts = offsets[shapes[1:]] - offsets[shapes[:-1]]

@@ -15,7 +15,7 @@ import numpy as np
 
 from .. import _validate as v
 from .._kernels import curved as k
-from ._area import fill_area
+from . import _blend
 from ._common import colors, target
 from .conics import _check_ellipse, circle, ellipse
 from .lines import lines
@@ -56,14 +56,39 @@ def _paint(fb, color, style, xc, yc, rx, ry, is_circle, hp, combine, outline):
         k.draw_region(buf, packed, width, height, xc - ox, yc - oy, rx, ry, is_circle, False,
                       hp, combine, pixel)
 
-    fill_area(fb, color, style, (xc - rx, yc - ry, xc + rx, yc + ry), draw, outline)
+    _blend.fill(fb, color, style, (xc - rx, yc - ry, xc + rx, yc + ry), draw, outline)
 
 
 def _whole():
     return np.array([EVERYWHERE, EVERYWHERE], np.int64), k.BOTH
 
 
-def fill_circle(fb, xc, yc, r, color="white", style=None):
+def _antialiased(fb, name, rows, columns, color, style):
+    """antialias=True: the ideal disks / ellipses, unrounded, by coverage."""
+    from .antialias import _reals, filled_ellipses
+    from .polygon import _solid_only
+
+    _solid_only(style)
+    arr = _reals(name, rows, columns, radius_columns=tuple(range(2, columns)))
+    filled_ellipses(fb, arr if columns == 4 else arr[:, [0, 1, 2, 2]], color)
+
+
+def _translucent_batch(fb, arr, circle, color):
+    """Composite a batch of filled circles / ellipses (rounded rows of ``arr``)
+    one by one."""
+    def draw(i, buf, packed, width, height, ox, oy, value):
+        row = arr[i:i + 1].copy()
+        row[0, 0] -= ox
+        row[0, 1] -= oy
+        k.fill_regions(buf, packed, width, height, row, circle, value.reshape(1, -1))
+
+    ry = arr[:, 2] if circle else arr[:, 3]
+    boxes = np.stack([arr[:, 0] - arr[:, 2], arr[:, 1] - ry, arr[:, 0] + arr[:, 2],
+                      arr[:, 1] + ry], axis=1)
+    _blend.paint_each(fb, color, len(arr), boxes, draw)
+
+
+def fill_circle(fb, xc, yc, r, color="white", style=None, antialias=False):
     """Fill the disk bounded by the midpoint circle of radius ``r`` about ``(xc, yc)``.
 
     Parameters
@@ -74,8 +99,13 @@ def fill_circle(fb, xc, yc, r, color="white", style=None):
     r : number
         Radius >= 0 (up to 2**30), rounded; r = 0 fills the center pixel.
     color : color
+        A translucent color is composited (:mod:`scanline.draw._blend`).
     style : FillStyle, optional
         None fills solid; see :func:`scanline.draw._area.fill_area`.
+    antialias : bool
+        True: the ideal disk of center (xc, yc) and radius r, none of them
+        rounded, each pixel composited with the fraction of it inside
+        (:func:`scanline.draw.antialias.filled_ellipses`; solid fills only).
 
     Notes
     -----
@@ -107,13 +137,16 @@ def fill_circle(fb, xc, yc, r, color="white", style=None):
     -#####-
     --###--
     """
+    if antialias:
+        _antialiased(fb, "(xc, yc, r)", [(xc, yc, r)], 3, color, style)
+        return
     xc, yc = _center(xc, yc)
     r = v.radius("r", r)
     hp, combine = _whole()
     _paint(fb, color, style, xc, yc, r, r, True, hp, combine, lambda: circle(fb, xc, yc, r, color))
 
 
-def fill_ellipse(fb, xc, yc, rx, ry, color="white", style=None):
+def fill_ellipse(fb, xc, yc, rx, ry, color="white", style=None, antialias=False):
     """Fill the area bounded by the midpoint ellipse with semi-axes ``rx``, ``ry``.
 
     Parameters
@@ -124,7 +157,10 @@ def fill_ellipse(fb, xc, yc, rx, ry, color="white", style=None):
     rx, ry : number
         Semi-axes >= 0, rounded (the limits of :func:`scanline.draw.ellipse`).
     color : color
+        A translucent color is composited.
     style : FillStyle, optional
+    antialias : bool
+        True: the ideal ellipse, unrounded, by coverage (as :func:`fill_circle`).
 
     Notes
     -----
@@ -151,6 +187,9 @@ def fill_ellipse(fb, xc, yc, rx, ry, color="white", style=None):
     -#######-
     --#####--
     """
+    if antialias:
+        _antialiased(fb, "(xc, yc, rx, ry)", [(xc, yc, rx, ry)], 4, color, style)
+        return
     xc, yc = _center(xc, yc)
     rx = v.radius("rx", rx)
     ry = v.radius("ry", ry)
@@ -160,26 +199,41 @@ def fill_ellipse(fb, xc, yc, rx, ry, color="white", style=None):
            lambda: ellipse(fb, xc, yc, rx, ry, color))
 
 
-def fill_circles(fb, circles, color="white"):
+def fill_circles(fb, circles, color="white", antialias=False):
     """Fill N disks in one compiled call; ``circles`` has rows ``(xc, yc, r)``.
 
-    ``color`` is one color or one per disk (see :func:`scanline.draw.lines`).
+    ``color`` is one color or one per disk (see :func:`scanline.draw.lines`);
+    translucent colors are composited disk after disk.  ``antialias=True`` fills
+    the ideal disks (unrounded) by coverage, as :func:`fill_circle` does.
     """
+    if antialias:
+        _antialiased(fb, "circles", circles, 3, color, None)
+        return
     buf, packed, width, height = target(fb)
     arr = v.coordinate_array("circles", circles, 3, radius_columns=(2,))
+    if _blend.translucent(color):
+        _translucent_batch(fb, arr, True, color)
+        return
     k.fill_regions(buf, packed, width, height, arr, True, colors(fb, color, len(arr)))
 
 
-def fill_ellipses(fb, ellipses, color="white"):
+def fill_ellipses(fb, ellipses, color="white", antialias=False):
     """Fill N ellipses in one compiled call; ``ellipses`` has rows ``(xc, yc, rx, ry)``.
 
-    ``color`` is one color or one per ellipse.
+    ``color`` is one color or one per ellipse (translucent ones are composited);
+    ``antialias=True`` fills the ideal ellipses by coverage.
     """
+    if antialias:
+        _antialiased(fb, "ellipses", ellipses, 4, color, None)
+        return
     buf, packed, width, height = target(fb)
     arr = v.coordinate_array("ellipses", ellipses, 4, radius_columns=(2, 3))
     if len(arr):  # the rows with the largest axis and product are the ones to check
         for row in (np.argmax(arr[:, 2:].max(axis=1)), np.argmax(arr[:, 2].astype(np.float64) * arr[:, 3])):
             _check_ellipse(int(arr[row, 2]), int(arr[row, 3]))
+    if _blend.translucent(color):
+        _translucent_batch(fb, arr, False, color)
+        return
     k.fill_regions(buf, packed, width, height, arr, False, colors(fb, color, len(arr)))
 
 
@@ -316,13 +370,18 @@ def arc(fb, xc, yc, rx, ry, start, end, color="white"):
     -------
     -------
     """
-    buf, packed, width, height = target(fb)
+    target(fb)
     xc, yc = _center(xc, yc)
     rx, ry, is_circle = _axes(rx, ry)
     region = _sector(start, end, closed=True)
-    if region is not None:
-        k.draw_region(buf, packed, width, height, xc, yc, rx, ry, is_circle, True, *region,
-                      fb.pixel(color))
+    if region is None:
+        return
+
+    def draw(buf, packed, width, height, ox, oy, value):
+        k.draw_region(buf, packed, width, height, xc - ox, yc - oy, rx, ry, is_circle, True,
+                      *region, value)
+
+    _blend.paint(fb, color, (xc - rx, yc - ry, xc + rx, yc + ry), draw)
 
 
 def pie(fb, xc, yc, rx, ry, start, end, color="white", style=None):

@@ -5,8 +5,9 @@ import numpy as np
 
 from .. import _validate as v
 from .._kernels import polygon as k
+from ..errors import ArgumentValueError
 from ..geometry import contours as parse
-from ._area import fill_area
+from . import _blend
 from ._common import colors, target
 
 RULES = {"even-odd": k.EVEN_ODD, "nonzero": k.NONZERO}
@@ -48,7 +49,16 @@ def _outline(fb, verts, offsets, color):
         lines(fb, np.concatenate(segs), color=color)
 
 
-def polygon(fb, points, color="white", rule="even-odd", style=None):
+def _solid_only(style):
+    """antialias=True fills solid areas only."""
+    if style is not None and getattr(style, "kind", None) != "solid":
+        raise ArgumentValueError(
+            f"antialias=True fills solid areas only, got style={style!r}; use style=None, "
+            "or antialias=False for hollow, pattern and hatch styles"
+        )
+
+
+def polygon(fb, points, color="white", rule="even-odd", style=None, antialias=False):
     """Fill a polygon by the scan-line algorithm.
 
     Parameters
@@ -68,9 +78,16 @@ def polygon(fb, points, color="white", rule="even-odd", style=None):
         crosses itself (the center of a pentagram is outside under even-odd).
     style : FillStyle, optional
         None (solid) or a :class:`scanline.FillStyle` (hollow, pattern, hatch ...).
+    antialias : bool
+        False: a pixel is filled iff its center is inside (below).  True: every
+        pixel is composited with alpha = the fraction of it inside the polygon
+        (:func:`scanline.draw.antialias.fill`; solid fills only).
 
     Notes
     -----
+    A translucent ``color`` (alpha < 255) is composited over the frame buffer,
+    each pixel once (:mod:`scanline.draw._blend`).
+
     Notes, chapter 2, Q.8, approach (1), "determine the overlap intervals for scan
     lines that cross the area", done as in Hearn & Baker, section 3-11: a *sorted
     edge table* (the edges bucket-sorted by their first scan line) feeds an *active
@@ -132,6 +149,11 @@ def polygon(fb, points, color="white", rule="even-odd", style=None):
     ------
     """
     target(fb)
+    if antialias:
+        from .antialias import fill
+        _solid_only(style)
+        fill(fb, points, color, rule)
+        return
     verts, offsets = parse.contours("points", points)
     code = _rule(rule)
     polys = np.array([0, len(offsets) - 1], np.int64)
@@ -144,10 +166,10 @@ def polygon(fb, points, color="white", rule="even-odd", style=None):
     def outline():
         _outline(fb, verts, offsets, color)
 
-    fill_area(fb, color, style, _bbox(verts), draw, outline)
+    _blend.fill(fb, color, style, _bbox(verts), draw, outline)
 
 
-def polygons(fb, polygons, color="white", rule="even-odd", counts=None):
+def polygons(fb, polygons, color="white", rule="even-odd", counts=None, antialias=False):
     """Fill M polygons in one compiled call.
 
     Parameters
@@ -167,9 +189,14 @@ def polygons(fb, polygons, color="white", rule="even-odd", counts=None):
         The flat form for numpy data: ``polygons`` is then one (V, 2) array holding
         the vertices of every polygon in turn, and ``counts[p]`` is the vertex count
         of polygon ``p`` (one contour each).  Nothing is converted per polygon.
+    antialias : bool
+        True composites each pixel with the fraction of it inside each polygon
+        (:func:`scanline.draw.antialias.fills`).
 
     Notes
     -----
+    Translucent colors are composited, polygon after polygon.
+
     Each polygon is filled exactly as :func:`polygon` fills it; the vertices of all
     polygons are passed to the kernel as one array with offsets, so the cost per
     polygon is a few dozen nanoseconds plus its spans.
@@ -194,7 +221,20 @@ def polygons(fb, polygons, color="white", rule="even-odd", counts=None):
         verts, offsets, polys = parse.batch("polygons", polygons)
     else:
         verts, offsets, polys = parse.flat("polygons", polygons, counts)
+    if antialias:
+        from .antialias import _fill_parsed
+        _fill_parsed(fb, verts, offsets, polys, color, rule)
+        return
     code = _rule(rule)
-    cols = colors(fb, color, len(polys) - 1)
-    k.fill_polygons(buf, packed, width, height, 0, 0, verts, offsets, polys, cols, code,
-                    _max_edges(offsets, polys))
+    n = len(polys) - 1
+    most = _max_edges(offsets, polys)
+    if _blend.translucent(color):
+        def draw(i, buf, packed, width, height, ox, oy, value):
+            k.fill_polygons(buf, packed, width, height, ox, oy, verts, offsets,
+                            polys[i:i + 2], value.reshape(1, -1), code, most)
+
+        boxes = [_bbox(verts[offsets[polys[i]]:offsets[polys[i + 1]]]) for i in range(n)]
+        _blend.paint_each(fb, color, n, boxes, draw)
+        return
+    k.fill_polygons(buf, packed, width, height, 0, 0, verts, offsets, polys,
+                    colors(fb, color, n), code, most)

@@ -38,6 +38,8 @@ SHAPES = {
                  "line attributes (as many vertices as numbers follow)"),
     "closed-polyline": ("X1 Y1 X2 Y2 ...", "the closed polyline (a polygon outline) through "
                         "the vertices, with the current line attributes"),
+    "text": ("X Y STRING", "the characters of STRING (one word: quote it) placed on (X, Y) "
+             "by the current align, in the current font, height and angle"),
 }
 
 #: Shapes drawn with the line attributes (width, cap, join, miter-limit, dash, pen,
@@ -46,6 +48,9 @@ OUTLINES = ("line", "circle", "ellipse", "polyline", "closed-polyline")
 
 #: Shape parameters that are colors, not numbers.
 COLOR_PARAMS = ("FOREGROUND", "BACKGROUND")
+
+#: Shape parameters taken as they are written (any word, even an item's name).
+STRING_PARAMS = ("STRING",)
 
 #: Shapes that fill an area, and so take the current style.
 AREAS = ("polygon", "fill-circle", "fill-ellipse", "chord", "pie")
@@ -79,9 +84,20 @@ SETTINGS = {
                    "into dash lengths (default 0)"),
     "pen": ("none|square|round", "a pen footprint, a width x width square or a disc of "
             "diameter width, stamped at every pixel of the following lines (default none)"),
-    "antialias": ("on|off", "antialiased lines, circles, ellipses and polylines (default "
-                  "off)"),
+    "antialias": ("on|off", "antialiased lines, circles, ellipses, polylines and text "
+                  "(default off)"),
+    "font": ("NAME", "the font of the following text: sans (default), bitmap, stroke or a "
+             ".ttf/.otf file"),
+    "height": ("H", "the character (cap) height of the following text in pixels (default: "
+               "the font's own, 10 for sans)"),
+    "angle": ("DEG", "the baseline direction of the following text, degrees counterclockwise "
+              "(default 0)"),
+    "align": ("H,V", "which point of the following text lies on (X, Y): H left, center or "
+              "right, V top, cap, half, base or bottom (default left,base)"),
 }
+
+#: Settings that are text attributes: SETTINGS word -> TextStyle field.
+TEXT_SETTINGS = {"font": "font", "height": "height", "angle": "angle", "align": "align"}
 
 #: Settings that are line attributes: SETTINGS word -> LineStyle field.
 LINE_SETTINGS = {"width": "width", "cap": "cap", "join": "join", "miter-limit": "miter_limit",
@@ -117,6 +133,8 @@ def _epilog():
         "  scanline draw circle 64 64 30 color green flood 64 64 -o disk.png",
         "  scanline draw --size 64x48 width 5 cap round join round dash 12,6 \\",
         "      polyline 5 5 30 40 58 10 -o strokes.png",
+        "  scanline draw --size 160x40 font stroke height 12 align center,half \\",
+        "      text 80 20 'Hello, world' -o text.png",
         "  scanline draw --scale 4 color red method dda line -5 3 40 20 \\",
         "      color '#00a0ff' ellipse 20 12 15 8 -o out.gif",
     ])
@@ -212,7 +230,7 @@ def parse_items(words):
             params = (params * (count // len(params) + 1))[:max(count, len(params))]
         given = []
         for text in words[i + 1:i + 1 + len(params)]:
-            if text in keywords:
+            if text in keywords and params[len(given)] not in STRING_PARAMS:
                 break
             given.append(text)
         if len(given) < len(params):
@@ -221,7 +239,8 @@ def parse_items(words):
         if word in SETTINGS:
             args = (_color(given[0]),) if word in ("color", "boundary-color") else (given[0],)
         else:
-            args = tuple(_color(text) if param in COLOR_PARAMS else _number(text)
+            args = tuple(_color(text) if param in COLOR_PARAMS else
+                         text if param in STRING_PARAMS else _number(text)
                          for param, text in zip(params, given))
             for j, (param, value) in enumerate(zip(params, args)):
                 if value is None:
@@ -249,11 +268,12 @@ def render(items, width, height, mode="RGB", background="black", rule="even-odd"
     from ..attributes import FillStyle, LineStyle
     from ..draw.lines import METHODS
     from ..framebuffer import FrameBuffer
+    from ..text import TextStyle
 
     fb = FrameBuffer(width, height, mode=mode, background=background)
     state = {"color": "white", "method": "bresenham", "rule": rule, "style": None,
              "connectivity": 4, "boundary-color": "white", "tolerance": 0,
-             "line": LineStyle(), "antialias": False}
+             "line": LineStyle(), "antialias": False, "text": TextStyle()}
     for item in items:
         try:
             if item.word in SETTINGS:
@@ -268,6 +288,9 @@ def render(items, width, height, mode="RGB", background="black", rule="even-odd"
                     value = FillStyle.parse(value)
                 elif item.word in LINE_SETTINGS:
                     state["line"] = _line_style(state["line"], item.word, value)
+                    continue
+                elif item.word in TEXT_SETTINGS:
+                    state["text"] = _text_style(state["text"], item.word, value)
                     continue
                 elif item.word == "antialias":
                     value = _validate.choice("antialias", value, ("on", "off")) == "on"
@@ -300,6 +323,22 @@ def _line_style(style, word, text):
     else:
         value = text
     return LineStyle(**{**_fields(style), field: value})
+
+
+def _text_style(style, word, text):
+    """``style`` with the text attribute of setting ``word`` changed to ``text``."""
+    import math
+
+    if word in ("height", "angle"):
+        value = _number(text)
+        if value is None:
+            raise ArgumentValueError(f"{word} must be a number, got {text!r}")
+        return style.replace(**{word: math.radians(value) if word == "angle" else value})
+    if word == "font":
+        from ..text import font
+
+        font(text)  # an unknown font is reported here, where it is named
+    return style.replace(**{TEXT_SETTINGS[word]: text})
 
 
 def _fields(style):
@@ -338,6 +377,8 @@ def _draw(fb, item, state, draw):
                         tolerance=state["tolerance"])
     elif word == "soft":
         draw.soft_fill(fb, *args[:2], color, *args[2:], connectivity=state["connectivity"])
+    elif word == "text":
+        draw.text(fb, *args, color=color, style=state["text"], antialias=state["antialias"])
     else:  # boundary
         draw.boundary_fill(fb, *args, color, boundary=state["boundary-color"],
                            connectivity=state["connectivity"])

@@ -13,6 +13,7 @@ from .curved import arc, chord, fill_circle, fill_circles, fill_ellipse, fill_el
 from .polygon import polygon, polygons
 from .seedfill import boundary_fill, flood_fill
 from .softfill import soft_fill
+from . import antialias
 from .strokes import polyline, polylines
 from .curve import curve, curves
 

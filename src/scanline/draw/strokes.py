@@ -406,7 +406,8 @@ def conic_polyline(xc, yc, rx, ry):
     """A closed polygon following the ellipse (xc, yc, rx, ry), counterclockwise
     from (xc + rx, yc), with chords within ``TOLERANCE`` of it and the area of the
     ellipse (its vertices at sqrt(t / sin t) times the radii, t the angular step)."""
-    n = max(8, int(np.ceil(2 * np.pi / ks.arc_step(max(rx, ry, 0.5)))))
+    r = max(rx, ry, 1)
+    n = min(max(8, int(np.ceil(np.pi / np.arccos(1 - min(ks.TOLERANCE / r, 1.0))))), 1 << 20)
     t = 2 * np.pi / n
     scale = np.sqrt(t / np.sin(t))
     a = np.arange(n) * t

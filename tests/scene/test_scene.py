@@ -357,3 +357,18 @@ def test_dumps_refuses_what_toml_cannot_hold():
         dumps({"x": object()})
     assert parse(dumps({"a b": [1, {"c": "d"}], "t": {"u": True}})) == {
         "a b": [1, {"c": "d"}], "t": {"u": True}}
+
+
+def test_drawing_error_names_the_segment_and_leaves_no_output(tmp_path, capsys):
+    """An error found only while drawing (text 10^9 pixels high) names the segment
+    and the primitive, and the output file is not written."""
+    f = tmp_path / "big.toml"
+    f.write_text(MINIMAL.replace(
+        "[{type = \"polyline\", points = [[0, 0], [19, 9]]}]",
+        "[{type = \"polyline\", points = [[0, 0], [19, 9]]},"
+        " {type = \"text\", position = [1, 1], string = \"x\", height = 1e9}]"))
+    assert main(["check", str(f)]) == 0
+    out = tmp_path / "big.png"
+    assert main(["render", str(f), "-o", str(out)]) == 2
+    assert "segment 'a', primitive 1 (text): height" in capsys.readouterr().err
+    assert not out.exists()

@@ -15,7 +15,7 @@ A highlighted segment gets a frame in the highlight color around what it drew.
 import numpy as np
 
 from .. import _validate as v
-from ..errors import ArgumentValueError
+from ..errors import ArgumentValueError, ScanlineError
 from . import pipeline, text
 from .primitives import THIN, Primitive
 from .viewing import device_rectangle, workstation
@@ -125,7 +125,12 @@ def interpret(display_file, device, highlight="magenta"):
                 _padded(device_rectangle(ws, prim.clip)), frame)
             if rect is not None:
                 where = f"segment {seg.name!r}, primitive {i} ({prim.kind})"
-                drawn += draw_primitive(prim.transformed(m), rect, device, where)
+                try:
+                    drawn += draw_primitive(prim.transformed(m), rect, device, where)
+                except ScanlineError as error:
+                    if str(error).startswith(where):
+                        raise
+                    raise type(error)(f"{where}: {error}") from None
         if seg.highlighted and drawn:
             _frame(np.vstack(drawn), frame, device, highlight)
 

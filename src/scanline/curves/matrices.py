@@ -23,6 +23,7 @@ array([[ 2., -2.,  1.,  1.],
 """
 
 from fractions import Fraction
+from functools import lru_cache
 
 import numpy as np
 
@@ -78,7 +79,17 @@ def span_polynomials(knots, order, span):
 def _matrix(polys):
     """[u^(n) ... u 1] · M = blending functions: row i holds the u^(n-i) coefficients."""
     n = len(polys)
-    return np.array([[float(polys[k][n - 1 - i]) for k in range(n)] for i in range(n)])
+    return tuple(tuple(float(polys[k][n - 1 - i]) for k in range(n)) for i in range(n))
+
+
+@lru_cache(maxsize=64)
+def _bezier(n):
+    return _matrix(span_polynomials([0] * (n + 1) + [1] * (n + 1), n + 1, n))
+
+
+@lru_cache(maxsize=64)
+def _bspline(d):
+    return _matrix(span_polynomials(range(2 * d), d, d - 1))
 
 
 def bezier_matrix(degree=3):
@@ -88,8 +99,7 @@ def bezier_matrix(degree=3):
     knot vector [0ⁿ⁺¹ 1ⁿ⁺¹].  For n = 3 the first row is [-1 3 -3 1]; the notes print
     [1 0 -3 1] (erratum E40).
     """
-    n = v.positive_int("degree", degree, minimum=1)
-    return _matrix(span_polynomials([0] * (n + 1) + [1] * (n + 1), n + 1, n))
+    return np.array(_bezier(v.positive_int("degree", degree, minimum=1)))
 
 
 def bspline_matrix(order=4):
@@ -99,10 +109,10 @@ def bspline_matrix(order=4):
     span [d−1, d].  For d = 4 it is ⅙[[-1 3 -3 1] [3 -6 3 0] [-3 0 3 0] [1 4 1 0]];
     the notes print ⅙ times the Bezier matrix, itself misprinted (erratum E41).
     """
-    d = v.positive_int("order", order, minimum=2)
-    return _matrix(span_polynomials(range(2 * d), d, d - 1))
+    return np.array(_bspline(v.positive_int("order", order, minimum=2)))
 
 
+@lru_cache(maxsize=8)
 def _inverse(rows):
     """Exact inverse of a small invertible matrix (Gauss–Jordan on Fractions)."""
     n = len(rows)

@@ -65,3 +65,15 @@ def test_text_far_outside_is_clipped():
     assert fb.to_array().sum() == 0
     sl.draw.text(fb, -3, 5, "W", height=12)            # partly inside
     assert fb.to_array().sum() > 0
+
+
+@pytest.mark.parametrize("font", ["sans", "stroke", "bitmap"])
+@pytest.mark.parametrize("antialias", [False, True])
+def test_huge_text_at_the_edge_of_the_coordinate_range(font, antialias):
+    fb = sl.FrameBuffer(30, 30, mode="L")
+    sl.draw.text(fb, 2**30, 2**30, "far", font=font, height=2**20, antialias=antialias)
+    sl.draw.text(fb, -2**30, 5, "far " * 5, font=font, height=5000, angle=2.0,
+                 antialias=antialias)
+    assert fb.to_array().sum() == 0
+    sl.draw.text(fb, -100, -300, "H", font=font, height=600, antialias=antialias)
+    assert fb.to_array().sum() > 0           # part of a huge H (its stem or crossbar)

@@ -24,16 +24,26 @@ def _alpha(color):
     return rgba(color)[3]
 
 
+def _visible(fb, p):
+    """Glyph ids and origins of the characters that can touch the frame buffer (the
+    others are dropped, which also keeps far-away geometry in the coordinate range)."""
+    reach = 1.5 * p.font.reach * max(p.sx, p.sy) + 1
+    keep = ((p.ox >= -reach) & (p.ox <= fb.width + reach)
+            & (p.oy >= -reach) & (p.oy <= fb.height + reach))
+    return p.gids[keep], p.ox[keep], p.oy[keep]
+
+
 def _strokes(fb, p, color, antialias):
     """Stroke font: every stroke segment of every character in one batch of lines."""
     font = p.font
-    counts = font.first[p.gids + 1] - font.first[p.gids]
+    gids, ox, oy = _visible(fb, p)
+    counts = font.first[gids + 1] - font.first[gids]
     if counts.sum() == 0:
         return
-    rows = (np.repeat(font.first[p.gids] - (np.cumsum(counts) - counts), counts)
+    rows = (np.repeat(font.first[gids] - (np.cumsum(counts) - counts), counts)
             + np.arange(int(counts.sum())))
     segs = font.segments[rows]
-    origin = np.repeat(np.column_stack([p.ox, p.oy]).astype(float), counts, axis=0)
+    origin = np.repeat(np.column_stack([ox, oy]).astype(float), counts, axis=0)
     m = p.matrix
     a = segs[:, :2] @ m.T + origin
     b = segs[:, 2:] @ m.T + origin
@@ -51,10 +61,11 @@ def _filled(fb, p, color, value, antialias):
     cache = glyphcache.images(p.font, p.matrix, antialias, p.tolerance)
     if cache is None:
         shapes = []
-        for k, gid in enumerate(p.gids.tolist()):
+        gids, ox, oy = _visible(fb, p)
+        for k, gid in enumerate(gids.tolist()):
             contours = glyphcache.device_contours(p.font, gid, p.matrix, p.tolerance)
             if contours:
-                shapes.append([c + (p.ox[k], p.oy[k]) for c in contours])
+                shapes.append([c + (ox[k], oy[k]) for c in contours])
         if not shapes:
             return
         if antialias:

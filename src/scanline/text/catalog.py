@@ -55,6 +55,7 @@ class Font:
         self.license = license
         self._extra = {}
         self._bounds = {}
+        self._ink_reach = 0.0
 
     def __repr__(self):
         return f"<{type(self).__name__} {self.name!r}: {self.glyph_count} glyphs>"
@@ -68,6 +69,14 @@ class Font:
     def replacement(self):
         """Glyph id of the replacement box."""
         return len(self.advances) - 1
+
+    @property
+    def reach(self):
+        """How far (font units) any glyph's ink or advance can lie from its origin, in
+        x or y: glyphs whose origin is farther than that (scaled) from the frame
+        buffer cannot touch it."""
+        return max(abs(self.ascent), abs(self.descent), float(self.advances.max()),
+                   self.units_per_em, self._ink_reach)
 
     @property
     def line_height(self):

@@ -164,6 +164,8 @@ class OutlineFont(Font):
         t = self.cap_height * 0.08
         self._box = self._replacement_box(0.1 * self.cap_height, 0.6 * self.cap_height, t)
         self.advances[-1] = 0.8 * self.cap_height
+        self._ink_reach = float(max(abs(head.xMin), abs(head.yMin), abs(head.xMax),
+                                    abs(head.yMax)))
 
     def _metric(self, os2, field, char, fraction):
         value = getattr(os2, field, 0) if os2 is not None else 0

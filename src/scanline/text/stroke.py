@@ -89,6 +89,7 @@ class StrokeFont(Font):
                                    for g in self._strokes for p in g])
         counts = [sum(len(p) - 1 for p in g) for g in self._strokes]
         self.first = np.concatenate([[0], np.cumsum(counts)]).astype(np.int64)
+        self._ink_reach = float(np.abs(self.segments).max())
 
     @classmethod
     def read(cls, path):

@@ -17,7 +17,10 @@ what is left is ONE contour (two for a closed polyline): the right side of the
 polyline forward, with the outer join at each left turn and a detour through the
 vertex at each right turn, the end cap, then the right side of the reversed polyline
 and the start cap (:func:`right_side`).  Its winding number at any point is the sum
-of the pieces' -- positive exactly on their union, zero outside -- so the scan-line
+of the pieces' -- positive exactly on their union, zero outside.  (Where both
+segments of a right turn are long enough, the detour is replaced by the inner
+corner where the offset sides cross: the overlap of the two rectangles, which the
+detour counts twice, then counts once -- still positive.)  So the scan-line
 fill (``_kernels/polygon.py``) with the nonzero rule paints the union, each pixel
 once (translucent colors blend once, as they must), from about half the edges the
 separate pieces would have.
@@ -155,22 +158,28 @@ def outer_join(out, nv, px, py, ax, ay, bx, by, r, kind, miter_limit, phi):
 @helper
 def right_side(pts, m, closed, reverse, r, cap, join_kind, miter_limit, out, nv):
     """Append the right side of the stroke of the (reversed) polyline: each segment
-    offset by ``r`` to its right; at a left turn the outer join, at a right turn a
-    detour through the vertex itself.  Open polylines end with the cap at their
-    last vertex (the square cap extends the end segments)."""
+    offset by ``r`` to its right; at a left turn the outer join; at a right turn the
+    point where the two offset sides cross (the inner corner), or, when that point
+    lies beyond half of either segment, a detour through the vertex itself.  Open
+    polylines end with the cap at their last vertex (the square cap extends the end
+    segments)."""
     nseg = m if closed else m - 1
     extend = r if (cap == CAP_SQUARE and not closed) else 0.0
+    trimmed = False                     # segment i starts at the inner corner already out
     for i in range(nseg):
         x0, y0 = vertex(pts, m, i, reverse)
         x1, y1 = vertex(pts, m, i + 1 if i + 1 < m else 0, reverse)
         dx, dy = direction(pts, m, i, reverse)
         before = extend if i == 0 else 0.0
         after = extend if i == nseg - 1 else 0.0
-        out[nv, 0] = x0 - before * dx + r * dy
-        out[nv, 1] = y0 - before * dy - r * dx
-        out[nv + 1, 0] = x1 + after * dx + r * dy
-        out[nv + 1, 1] = y1 + after * dy - r * dx
-        nv += 2
+        if not trimmed:
+            out[nv, 0] = x0 - before * dx + r * dy
+            out[nv, 1] = y0 - before * dy - r * dx
+            nv += 1
+        out[nv, 0] = x1 + after * dx + r * dy
+        out[nv, 1] = y1 + after * dy - r * dx
+        nv += 1
+        trimmed = False
         if i == nseg - 1 and not closed:
             if cap == CAP_ROUND:
                 nv = arc(out, nv, x1, y1, dy, -dx, math.pi, r, False)
@@ -182,9 +191,17 @@ def right_side(pts, m, closed, reverse, r, cap, join_kind, miter_limit, out, nv)
         if phi > 0:
             nv = outer_join(out, nv, x1, y1, dx, dy, bx, by, r, join_kind, miter_limit, phi)
         elif phi < 0:
-            out[nv, 0] = x1
-            out[nv, 1] = y1
-            nv += 1
+            # the offset sides cross t = r tan(|phi| / 2) before and after the vertex
+            t = r * math.tan(-0.5 * phi)
+            xn, yn = vertex(pts, m, i + 2 if i + 2 < m else i + 2 - m, reverse)
+            if 2.0 * t <= math.hypot(x1 - x0, y1 - y0) and 2.0 * t <= math.hypot(xn - x1, yn - y1):
+                out[nv - 1, 0] = x1 - t * dx + r * dy
+                out[nv - 1, 1] = y1 - t * dy - r * dx
+                trimmed = i + 1 < nseg      # (a closed ring's first corner stays: a spur)
+            else:
+                out[nv, 0] = x1
+                out[nv, 1] = y1
+                nv += 1
     return nv
 
 

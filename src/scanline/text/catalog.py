@@ -84,7 +84,7 @@ class Font:
         return self.ascent - self.descent + self.line_gap
 
     def glyph_ids(self, codes):
-        """Glyph ids of an int array of code points (missing -> ``replacement``)."""
+        """Glyph ids of an integer array of code points (missing -> ``replacement``)."""
         if len(codes) == 0 or codes.max() < len(self._table):
             return self._table[codes]
         ids = self._table[np.minimum(codes, len(self._table) - 1)]

@@ -69,10 +69,10 @@ class Placement:
 
 
 def codes_of(text):
-    """Code points of a string as an int64 array."""
+    """Code points of a string as a uint32 array."""
     if not isinstance(text, str):
         raise ArgumentTypeError(f"text must be a str, got {v._show(text)}")
-    return np.frombuffer(text.encode("utf-32-le", "surrogatepass"), np.uint32).astype(np.int64)
+    return np.frombuffer(text.encode("utf-32-le", "surrogatepass"), np.uint32)
 
 
 def _segments(line):
@@ -117,7 +117,7 @@ def _horizontal(font, gids, line, nlines, style, sx, sy, gap):
     levels = {"top": font.ascent * sy, "cap": cap, "half": (cap + base_last) / 2,
               "base": 0.0, "bottom": base_last + font.descent * sy}
     dv = -levels[style.align[1]]
-    v_ = dv - step * line if nlines > 1 else np.full(len(gids), dv)
+    v_ = dv - step * line if nlines > 1 else dv  # one line: a scalar
     lo, hi = lo + shift, hi + shift
     if nlines > 1:
         lo, hi, last_lo, last_hi = float(lo.min()), float(hi.max()), lo[-1], hi[-1]
@@ -201,7 +201,10 @@ def place(text, x, y, style):
         lim = float(v.COORD_LIMIT)
         fx, fy = np.clip(fx, -lim, lim), np.clip(fy, -lim, lim)
     p.ox = np.floor(fx + 0.5).astype(np.int64)
-    p.oy = np.floor(fy + 0.5).astype(np.int64)
+    if np.ndim(fy) == 0:  # one unrotated line: one baseline row
+        p.oy = np.full(len(gids), math.floor(fy + 0.5), np.int64)
+    else:
+        p.oy = np.floor(fy + 0.5).astype(np.int64)
     p.reference, p.extent, p.end = (x, y), extent, end
     p.tolerance = TOLERANCE / max(sx, sy)
     return p

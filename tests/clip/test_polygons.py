@@ -251,3 +251,28 @@ def test_fuzzed_weiler_atherton(subject, window):
     s, c = shapely.Polygon(subject), shapely.Polygon(window)
     if s.is_valid and c.is_valid and s.area > 0 and c.area > 0:
         assert close(area(pieces), s.intersection(c).area)
+
+
+wide = st.one_of(st.floats(-2.0**30, 2.0**30), st.integers(-3, 3).map(float))
+
+
+@HYPOTHESIS
+@given(st.lists(st.lists(st.tuples(wide, wide), min_size=0, max_size=8), min_size=1,
+                max_size=6),
+       st.tuples(st.floats(-2.0**29, 2.0**29), st.floats(-2.0**29, 2.0**29),
+                 st.floats(1e-6, 2.0**29), st.floats(1e-6, 2.0**29)))
+def test_fuzzed_batch_with_huge_and_degenerate_polygons(polys, win):
+    """Huge, tiny, empty and self-intersecting polygons: the kernel never writes out of
+    its buffers, and each result stays in the window."""
+    x0, y0, w, h = win
+    window = (x0, y0, x0 + w, y0 + h)
+    flat = np.array([p for poly in polys for p in poly], float).reshape(-1, 2)
+    verts, counts = sl.clip.polygons(flat, window, counts=[len(p) for p in polys])
+    assert counts.sum() == len(verts) and len(counts) == len(polys)
+    assert ((counts == 0) | (counts >= 3)).all()
+    # round-off of a crossing grows with the coordinates; coordinates set by an edge
+    # of the upright window are exact
+    scale = max(1.0, abs(x0) + w, abs(y0) + h, float(np.abs(flat).max(initial=0.0)))
+    tol = 1e-12 * scale
+    assert (verts[:, 0] >= window[0] - tol).all() and (verts[:, 0] <= window[2] + tol).all()
+    assert (verts[:, 1] >= window[1] - tol).all() and (verts[:, 1] <= window[3] + tol).all()

@@ -306,8 +306,9 @@ def clip_stage(src, n, dst, ax, ay, bx, by):
             t = sd / (sd - pd)
             if m >= cap:
                 return -1
-            dst[m, 0] = sx + t * (px - sx)
-            dst[m, 1] = sy + t * (py - sy)
+            # on a horizontal or vertical boundary, the crossing lies exactly on it
+            dst[m, 0] = sx + t * (px - sx) if ex != 0.0 else ax
+            dst[m, 1] = sy + t * (py - sy) if ey != 0.0 else ay
             if m == 0 or dst[m, 0] != dst[m - 1, 0] or dst[m, 1] != dst[m - 1, 1]:
                 m += 1
         if pd >= 0.0:

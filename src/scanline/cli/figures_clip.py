@@ -6,7 +6,7 @@ import numpy as np
 
 import scanline as sl
 
-from ._plot import INK, GraphPaper, side_by_side
+from ._plot import INK, GraphPaper, enlarge, side_by_side
 from .figures import HIGHLIGHT, PAPER, PIXEL, SECOND, Figure
 
 FAINT = "#c8c8c8"
@@ -82,4 +82,51 @@ def figure_polygon_clipping():
         "Notes, syllabus: polygon clipping", image, "\n".join(tables))
 
 
-FIGURES = (figure_cohen_sutherland, figure_polygon_clipping)
+#: A small world: a house (walls, roof, door) and a path of segments.
+HOUSE = [(10, 10), (50, 10), (50, 40), (30, 58), (10, 40)]
+DOOR = [(25, 10), (35, 10), (35, 28), (25, 28)]
+PATH = [(0, 4, 20, 8), (20, 8, 40, 4), (40, 4, 60, 8), (55, 20, 70, 55)]
+
+
+def _draw_world(fb, view):
+    """The world as ``view`` shows it: polygons clipped in viewing coordinates (a
+    concave window is not needed here: Sutherland-Hodgman), lines by Liang-Barsky."""
+    sl.draw.polygon(fb, view.clip_polygon(HOUSE), color="#a9c1e8")
+    sl.draw.polygon(fb, view.clip_polygon(DOOR), color="#8c6d31")
+    seg, ok = view.clip_lines(PATH + [(a[0], a[1], b[0], b[1]) for a, b in
+                                      zip(HOUSE, HOUSE[1:] + HOUSE[:1])])
+    sl.draw.lines(fb, seg[ok], color=PIXEL)
+
+
+def figure_viewing():
+    """Two viewports on one frame buffer: the world, and a turned window on it."""
+    fb = sl.FrameBuffer(200, 100, mode="RGB", background=PAPER)
+    left, right = sl.viewing.tile(1, 2, gap=0.04)
+    world = sl.viewing.Window(-5, -5, 75, 65)
+    window = sl.viewing.Window(-14, -10, 14, 10, origin=(30, 30), view_up=(-0.5, 1))
+    views = [sl.viewing.View(world, sl.viewing.device_viewport(left, 200, 100),
+                             keep_aspect=True),
+             sl.viewing.View(window, sl.viewing.device_viewport(right, 200, 100),
+                             keep_aspect=True)]
+    for view in views:
+        _draw_world(fb, view)
+    corners = views[0].to_viewport(window.corners())
+    sl.draw.lines(fb, np.hstack([corners, np.roll(corners, -1, axis=0)]), color=HIGHLIGHT)
+    vp = sl.viewing.device_viewport(right, 200, 100)
+    box = views[1].to_viewport(window.corners())
+    sl.draw.lines(fb, np.hstack([box, np.roll(box, -1, axis=0)]), color=HIGHLIGHT)
+    image = enlarge(fb.to_pil().convert("RGB"), 4)
+    lines = [f"world -> device, left:  {np.round(views[0].matrix, 4).tolist()}",
+             f"world -> device, right: {np.round(views[1].matrix, 4).tolist()}",
+             f"right viewport (device): {vp.bounds}"]
+    return Figure(
+        "viewing", "Window, view-up vector and two viewports",
+        "One frame buffer, two viewports. Left: the whole world; the orange rectangle is "
+        "a window centered on (30, 30) whose viewing frame has the view-up vector "
+        "(-0.5, 1). Right: that window mapped to its viewport (M = window-to-viewport "
+        "times R.T), the world clipped against it in viewing coordinates; aspect ratio "
+        "kept (letterbox).",
+        "Notes, syllabus: 2-D viewing, window to viewport", image, "\n".join(lines))
+
+
+FIGURES = (figure_cohen_sutherland, figure_polygon_clipping, figure_viewing)

@@ -114,6 +114,15 @@ def test_floyd_steinberg_bitmap_matches_reference(seed, serpentine):
     assert (ours == expected.astype(bool)).all()
 
 
+@pytest.mark.parametrize("levels", [2, 5])
+def test_floyd_steinberg_of_uint8_matches_reference(levels):
+    # uint8 images go to the kernel as they are (read through a table of v / 255)
+    gray = RNG.integers(0, 256, (9, 13), dtype=np.uint8)
+    ours = sl.color.dither(gray, levels=levels, mode="L").to_array()
+    index = floyd_steinberg_reference(gray[:, :, None] / 255, gray_values(levels))
+    assert (ours == sl.color.gray_table(levels)[index, 0]).all()
+
+
 @pytest.mark.parametrize("levels", [3, 4, 7])
 def test_floyd_steinberg_levels_match_reference(levels):
     image = RNG.random((8, 10))
@@ -260,17 +269,18 @@ def test_gray_table_palette_equals_gray_levels():
 
 # -- sources and output modes ------------------------------------------------------
 
-def test_sources_of_every_kind_give_the_same_bitmap():
+@pytest.mark.parametrize("method", ["floyd-steinberg", "bayer4"])
+def test_sources_of_every_kind_give_the_same_bitmap(method):
     gray = RNG.integers(0, 256, (12, 17), dtype=np.uint8)
     rgb = np.repeat(gray[:, :, None], 3, axis=2)
-    expected = bits(sl.color.dither(gray))
+    expected = bits(sl.color.dither(gray, method))
     sources = [gray, gray / 255.0, rgb, np.dstack([rgb, np.zeros_like(gray)]),
                sl.FrameBuffer.from_array(gray), sl.FrameBuffer.from_array(rgb),
                sl.FrameBuffer.from_array(np.dstack([rgb, gray]))]
     p = sl.FrameBuffer.from_array(gray, mode="P", color_table=sl.color.gray_table(256))
     sources.append(p)
     for source in sources:
-        assert (bits(sl.color.dither(source)) == expected).all()
+        assert (bits(sl.color.dither(source, method)) == expected).all()
 
 
 def test_color_source_uses_luminance():

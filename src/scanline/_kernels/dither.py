@@ -1,9 +1,11 @@
 """Dithering kernels: ordered (threshold-matrix) dithering and Floyd-Steinberg error
 diffusion, to evenly spaced levels or to the nearest color of a palette.
 
-Images are float32 arrays in image order (row 0 at the top) with values in [0, 1]:
-``src[row, col]`` for one channel (levels: the API calls the kernel once per
-channel, channels are independent) or ``src[row, col, channel]`` for palettes.  The
+Images are arrays in image order (row 0 at the top): ``src[row, col]`` for one
+channel (levels: the API calls the kernel once per channel, channels are
+independent) or ``src[row, col, channel]`` for palettes, float32 values in [0, 1], or
+for levels uint8 values read through ``lut`` (``lut[v] = v / 255`` in float32, the
+same values; ``lut=None`` for float32 input), which saves converting the image.  The
 kernels write level indices (0 .. levels - 1) or palette indices into a uint8 array
 ``out[row, col]``.  Threshold matrices have power-of-two sides, so that
 ``row & (n - 1)`` tiles them.
@@ -11,11 +13,20 @@ kernels write level indices (0 .. levels - 1) or palette indices into a uint8 ar
 
 import numpy as np
 
-from ._jit import helper, kernel
+from ._jit import helper, inline, kernel
+
+
+@inline
+def unit_value(row, col, lut):
+    """Pixel ``col`` of ``row`` as a float32 in [0, 1]: the value itself, or its
+    ``lut`` entry for uint8 input (numba prunes the branch the types rule out)."""
+    if lut is None:
+        return row[col]
+    return lut[row[col]]
 
 
 @kernel
-def ordered_levels(src, thresholds, levels, out):
+def ordered_levels(src, lut, thresholds, levels, out):
     """Ordered dithering of one channel to ``levels`` evenly spaced levels.
 
     A value ``v`` lies between levels ``q = floor(v * (levels - 1))`` and ``q + 1``;
@@ -32,7 +43,7 @@ def ordered_levels(src, thresholds, levels, out):
         srow = src[row]
         orow = out[row]
         for col in range(width):
-            v = srow[col] * top
+            v = unit_value(srow, col, lut) * top
             q = np.int32(v)
             orow[col] = q + (v - np.float32(q) > trow[col & col_mask])
 
@@ -142,7 +153,7 @@ def _diffuse(cur, nxt, col, step, k, e):
 
 
 @helper
-def _levels_row(src, out, errors, row, start, stop, step, top):
+def _levels_row(src, lut, out, errors, row, start, stop, step, top):
     """One row of :func:`diffuse_levels`.  ``errors[p]`` (p = col + 1, padded by one
     column each side) holds the error this row receives from the row above; as the
     scan passes, the slot it has just read is refilled with the next row's error.
@@ -160,12 +171,13 @@ def _levels_row(src, out, errors, row, start, stop, step, top):
     scale = one / top
     scale7 = scale * seven
     two_levels = top == one
+    srow = src[row]
     ahead = zero       # 7/16 of the previous pixel's error
     behind = zero      # next row, one pixel back: waits for 3/16 of e
     below = zero       # next row, under this pixel: waits for 5/16 of e
     for col in range(start, stop, step):
         p = col + 1
-        v = (src[row, col] + errors[p]) + ahead
+        v = (unit_value(srow, col, lut) + errors[p]) + ahead
         if two_levels:
             level = one if v >= half else zero
         else:
@@ -181,7 +193,7 @@ def _levels_row(src, out, errors, row, start, stop, step, top):
 
 
 @kernel
-def diffuse_levels(src, levels, serpentine, out):
+def diffuse_levels(src, lut, levels, serpentine, out):
     """Floyd-Steinberg error diffusion of one channel to ``levels`` evenly spaced
     levels.
 
@@ -196,9 +208,9 @@ def diffuse_levels(src, levels, serpentine, out):
     top = np.float32(levels - 1)
     for row in range(height):
         if serpentine and row & 1:
-            _levels_row(src, out, errors, row, width - 1, -1, -1, top)
+            _levels_row(src, lut, out, errors, row, width - 1, -1, -1, top)
         else:
-            _levels_row(src, out, errors, row, 0, width, 1, top)
+            _levels_row(src, lut, out, errors, row, 0, width, 1, top)
 
 
 @helper

@@ -21,7 +21,7 @@ import numpy as np
 
 from .. import _validate as v
 from ..errors import ArgumentValueError
-from .images import gray_image, rgb_image
+from .images import UNIT_LUT, gray_image, rgb_image
 from .tables import color_table, gray_table, levels_argument, search_cells
 
 #: Dithering methods of :func:`dither`: error diffusion, ordered dithering with a
@@ -178,14 +178,16 @@ def dither(source, method="floyd-steinberg", levels=None, palette=None, *, mode=
             kernels.ordered_palette(pixels, _thresholds(method), spread, floats, *search, out)
         return FrameBuffer.from_array(out, mode="P", color_table=table)
 
-    pixels = rgb_image(source) if out_mode == "RGB" else gray_image(source)
+    image = rgb_image if out_mode == "RGB" else gray_image
+    pixels = image(source, keep_uint8=True)
+    lut = UNIT_LUT if pixels.dtype == np.uint8 else None
     out = np.empty((pixels.shape[2],) + pixels.shape[:2], np.uint8)
     for k in range(pixels.shape[2]):   # channels are independent
         channel = np.ascontiguousarray(pixels[:, :, k])
         if method == "floyd-steinberg":
-            kernels.diffuse_levels(channel, levels, bool(serpentine), out[k])
+            kernels.diffuse_levels(channel, lut, levels, bool(serpentine), out[k])
         else:
-            kernels.ordered_levels(channel, _thresholds(method), levels, out[k])
+            kernels.ordered_levels(channel, lut, _thresholds(method), levels, out[k])
     if out_mode == "1":
         return FrameBuffer.from_array(out[0].view(bool))
     values = gray_table(levels)[:, 0][out]

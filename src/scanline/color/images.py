@@ -32,8 +32,15 @@ def unit_floats(name, value):
     return a.astype(np.float32)
 
 
-def source_pixels(source, name="source"):
-    """``(pixels, is_gray)``: float32 ``(h, w, 1)`` gray or ``(h, w, 3)`` RGB in [0, 1]."""
+#: ``UNIT_LUT[v]`` is the uint8 value ``v`` as a float32 in [0, 1], exactly as
+#: :func:`unit_floats` converts it; kernels read uint8 images through it.
+UNIT_LUT = unit_floats("UNIT_LUT", np.arange(256, dtype=np.uint8))
+
+
+def source_pixels(source, name="source", keep_uint8=False):
+    """``(pixels, is_gray)``: float32 ``(h, w, 1)`` gray or ``(h, w, 3)`` RGB in [0, 1]
+    (with ``keep_uint8``, uint8 pixels stay uint8: read them through
+    :data:`UNIT_LUT`)."""
     from ..framebuffer import FrameBuffer
 
     if isinstance(source, FrameBuffer):
@@ -50,22 +57,24 @@ def source_pixels(source, name="source"):
     if not (a.ndim == 2 or (a.ndim == 3 and a.shape[2] == 3)) or a.shape[0] < 1 or a.shape[1] < 1:
         raise ArgumentValueError(
             f"{name} must be a non-empty (h, w) gray or (h, w, 3|4) color image, got shape {a.shape}")
-    pixels = unit_floats(name, a)
+    pixels = a if keep_uint8 and a.dtype == np.uint8 else unit_floats(name, a)
     if pixels.ndim == 2:
         return pixels[:, :, None], True
     return pixels, False
 
 
-def gray_image(source, name="source"):
-    """The source's luminance (BT.601), float32 ``(h, w, 1)`` in [0, 1]."""
-    pixels, is_gray = source_pixels(source, name)
+def gray_image(source, name="source", keep_uint8=False):
+    """The source's luminance (BT.601), float32 ``(h, w, 1)`` in [0, 1] (with
+    ``keep_uint8``, a uint8 gray source stays uint8)."""
+    pixels, is_gray = source_pixels(source, name, keep_uint8)
     if is_gray:
         return pixels
-    gray = pixels @ LUMA_WEIGHTS.astype(np.float32)
+    gray = unit_floats(name, pixels) @ LUMA_WEIGHTS.astype(np.float32)
     return np.clip(gray, 0, 1)[:, :, None]
 
 
-def rgb_image(source, name="source"):
-    """The source as float32 RGB ``(h, w, 3)`` in [0, 1] (a gray source repeated)."""
-    pixels, is_gray = source_pixels(source, name)
+def rgb_image(source, name="source", keep_uint8=False):
+    """The source as float32 RGB ``(h, w, 3)`` in [0, 1] (a gray source repeated;
+    with ``keep_uint8``, uint8 stays uint8)."""
+    pixels, is_gray = source_pixels(source, name, keep_uint8)
     return np.repeat(pixels, 3, axis=2) if is_gray else pixels

@@ -47,15 +47,18 @@ def test_antialiased_text_in_gray_bitmap_and_palette():
     assert len(pal.color_table) == 3 and set(np.unique(p)) == {0, 2}
 
 
-def test_cached_and_direct_fills_agree(monkeypatch):
-    """Huge glyphs are filled directly instead of cached: same pixels either way."""
-    cached = sl.FrameBuffer(200, 120, mode="1")
-    sl.draw.text(cached, 3, 20, "Sg", height=70, angle=0.1)
+@pytest.mark.parametrize("mode, antialias", [("1", False), ("L", True), ("RGB", True)])
+def test_cached_and_direct_fills_agree(monkeypatch, mode, antialias):
+    """Huge glyphs are filled directly instead of cached: same pixels either way
+    (antialiased: coverage quantized to 1/255 once either way)."""
+    cached = sl.FrameBuffer(200, 120, mode=mode)
+    sl.draw.text(cached, 3, 20, "Sg", height=70, angle=0.1, antialias=antialias)
     monkeypatch.setattr(glyphcache, "MAX_CACHED", 1)
-    direct = sl.FrameBuffer(200, 120, mode="1")
-    sl.draw.text(direct, 3, 20, "Sg", height=70, angle=0.1)
-    assert (cached.to_array() == direct.to_array()).all()
-    assert cached.to_array().sum() > 1000
+    direct = sl.FrameBuffer(200, 120, mode=mode)
+    sl.draw.text(direct, 3, 20, "Sg", height=70, angle=0.1, antialias=antialias)
+    a, b = cached.to_array().astype(int), direct.to_array().astype(int)
+    assert np.abs(a - b).max() <= (1 if antialias else 0)
+    assert (a > 0).sum() > 1000
 
 
 def test_text_far_outside_is_clipped():

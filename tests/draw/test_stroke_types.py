@@ -345,3 +345,19 @@ def test_fuzz_conics_nothing_outside(xc, yc, r, width, dash, pen):
     sl.draw.circle(fb, xc, yc, r, color="white", width=width, dash=dash, pen=pen)
     sl.draw.ellipse(fb, xc, yc, r, r // 2 + 1, color="white", width=width, dash=dash, pen=pen)
     assert (big[:4] == 77).all() and (big[-4:] == 77).all()
+
+
+@HYPOTHESIS
+@given(pts=polyline_st, width=st.sampled_from([1, 2.5, 9]),
+       cap=st.sampled_from(["butt", "round", "square"]),
+       join=st.sampled_from(["miter", "round", "bevel"]),
+       dash=st.sampled_from([None, "dashed", (5, 2.5)]),
+       color=st.sampled_from(["white", "#ff000080"]), closed=st.booleans(),
+       antialias=st.booleans())
+def test_fuzz_antialiased_and_translucent_nothing_outside(pts, width, cap, join, dash, color,
+                                                          closed, antialias):
+    fb, big = guarded(37, 29, "RGBA")
+    pts = np.array(pts, float).reshape(-1, 2)
+    sl.draw.polyline(fb, pts, color=color, closed=closed, width=width, cap=cap, join=join,
+                     dash=dash, antialias=antialias)
+    assert (big[:4] == 77).all() and (big[-4:] == 77).all()

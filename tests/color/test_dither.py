@@ -238,7 +238,7 @@ def test_ordered_dither_matches_a_numpy_threshold_map(method):
         thresholds = (sl.color.bayer_matrix(n) + 0.5) / n ** 2
         tiled = np.tile(thresholds, (37 // n + 1, 45 // n + 1))[:37, :45]
         scaled = image.astype(np.float32) * (levels - 1)
-        expected = np.floor(scaled) + (scaled - np.floor(scaled) > tiled)
+        expected = np.floor(scaled) + (scaled - np.floor(scaled) >= tiled)
         expected = np.minimum(expected, levels - 1).astype(int)
         got = sl.color.dither(image, method, levels=levels, mode="L").to_array()
         assert (got == sl.color.gray_table(levels)[expected, 0]).all()
@@ -318,10 +318,16 @@ def test_palette_result_recolors_when_the_table_is_edited():
     assert (fb.to_pil().convert("RGB").getpixel((15, 0))) == (255, 0, 0)
 
 
-def test_method_none_rounds_to_the_nearest_level():
-    image = np.array([[0.0, 0.1, 0.2, 0.49, 0.51, 0.8, 1.0]])
+def test_method_none_rounds_to_the_nearest_level_halves_up():
+    image = np.array([[0.0, 0.1, 0.2, 0.49, 0.5, 0.51, 0.8, 1.0]])
     assert sl.color.dither(image, "none").to_array().tolist() == [
-        [False, False, False, False, True, True, True]]
+        [False, False, False, False, True, True, True, True]]
+    # as Floyd-Steinberg rounds its first pixel
+    assert sl.color.dither(np.array([[0.5]])).to_array().tolist() == [[True]]
+    # levels 0, 1/3, 2/3, 1: 1/6 and 1/2 are halfway
+    image = np.array([[1 / 6, 0.5, 0.16, 0.49]])
+    assert sl.color.dither(image, "none", levels=4, mode="L").to_array().tolist() == [
+        [85, 170, 0, 85]]
 
 
 # -- bad input -------------------------------------------------------------------------

@@ -30,9 +30,9 @@ def ordered_levels(src, lut, thresholds, levels, out):
     """Ordered dithering of one channel to ``levels`` evenly spaced levels.
 
     A value ``v`` lies between levels ``q = floor(v * (levels - 1))`` and ``q + 1``;
-    the pixel takes ``q + 1`` when the fraction beyond ``q`` exceeds the threshold
-    ``thresholds[row mod n, col mod m]`` (values in (0, 1)).  ``v = 1`` gives the
-    top level (its fraction is 0).
+    the pixel takes ``q + 1`` when the fraction beyond ``q`` reaches the threshold
+    ``thresholds[row mod n, col mod m]`` (values in (0, 1); a threshold of 1/2
+    rounds to the nearest level, halves up).  ``v = 1`` gives the top level.
     """
     height, width = src.shape
     row_mask = thresholds.shape[0] - 1
@@ -45,7 +45,7 @@ def ordered_levels(src, lut, thresholds, levels, out):
         for col in range(width):
             v = unit_value(srow, col, lut) * top
             q = np.int32(v)
-            orow[col] = q + (v - np.float32(q) > trow[col & col_mask])
+            orow[col] = q + (v - np.float32(q) >= trow[col & col_mask])
 
 
 @kernel

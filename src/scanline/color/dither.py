@@ -37,7 +37,7 @@ def bayer_matrix(n):
         M(2k) = [[4 M(k),     4 M(k) + 2],
                  [4 M(k) + 3, 4 M(k) + 1]]
 
-    Pixel (row, col) of an image is set when its intensity exceeds the threshold
+    Pixel (row, col) of an image is set when its intensity reaches the threshold
     ``(M[row mod n, col mod n] + 1/2) / n**2``.
 
     >>> bayer_matrix(2).tolist()
@@ -102,7 +102,7 @@ def dither(source, method="floyd-steinberg", levels=None, palette=None, *, mode=
     method : str
         ``"floyd-steinberg"`` (error diffusion), ``"bayer2"``, ``"bayer4"``,
         ``"bayer8"`` (ordered dithering) or ``"none"`` (each pixel rounded to the
-        nearest level or color, to compare).
+        nearest level, halves up, or color, to compare).
     levels : int, optional
         Evenly spaced intensity levels, 2 to 256 (default 2: a bitmap).  With mode
         ``"RGB"`` each of red, green and blue gets ``levels`` levels.
@@ -233,8 +233,16 @@ def indexed(source, table):
 def halftone(source, size=4):
     """A halftone bitmap: each pixel becomes a ``size`` x ``size`` cell of dots
     (``size`` 2, 4 or 8) in which ``intensity * size**2`` dots, rounded to the nearest
-    whole number (halves down), are set in the order of the Bayer matrix, so a cell shows ``size**2 + 1`` intensity levels.  The
-    result is ``size`` times wider and taller: resolution traded for gray levels.
+    whole number (halves up), are set in the order of the Bayer matrix, so a cell
+    shows ``size**2 + 1`` intensity levels.  The result is ``size`` times wider and
+    taller: resolution traded for gray levels.
+
+    Notes
+    -----
+    Halftoning (the printer's technique) is not in the notes; this is the classic
+    n x n dot-pattern approximation of the standard texts.  It equals ordered
+    dithering (:func:`dither` with ``"bayer<size>"``) of the image enlarged ``size``
+    times.
 
     >>> import scanline as sl
     >>> print(sl.text_image(halftone(np.array([[0.0, 0.25, 0.5, 1.0]]), 2)))

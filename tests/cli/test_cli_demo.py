@@ -1,6 +1,7 @@
 """``scanline demo``: the gallery, its page and its pictures."""
 
 import contextlib
+import importlib
 import io
 import re
 
@@ -25,8 +26,12 @@ def test_demo_writes_every_figure_gallery_and_page(gallery):
     assert code == 0
     assert str(out) in stdout
     assert len(figures.FIGURES) == 13
+    every = demo.all_figures()
+    assert every[:13] == list(figures.FIGURES)  # the chapter 2 figures come first
+    assert len(every) == sum(len(importlib.import_module(f"scanline.cli.{name}").FIGURES)
+                             for name in demo.FIGURE_MODULES)
     pngs = sorted(p.name for p in out.glob("*.png"))
-    assert "gallery.png" in pngs and len(pngs) == 14
+    assert "gallery.png" in pngs and len(pngs) == len(every) + 1
     for png in pngs:
         with Image.open(out / png) as image:
             image.verify()
@@ -37,10 +42,11 @@ def test_page_shows_each_figure_with_caption_and_tables(gallery):
     out = gallery[0]
     page = (out / "index.html").read_text(encoding="utf-8")
     images = re.findall(r'<img src="([^"]+)"', page)
-    assert len(images) == 13 and all((out / name).is_file() for name in images)
-    assert page.count("<figcaption>") == 13
+    n = len(demo.all_figures())
+    assert len(images) == n == len(set(images)) and all((out / name).is_file() for name in images)
+    assert page.count("<figcaption>") == n
     assert page.count("Notes, chapter") >= 13
-    assert page.count("<pre>") == 5  # Bresenham, DDA vs Bresenham, circle, ellipse, seed fill
+    assert page.count("<pre>") >= 5  # Bresenham, DDA vs Bresenham, circle, ellipse, seed fill, ...
     for value in ("Bresenham line (20, 10) -&gt; (30, 18)", "Midpoint circle r = 10",
                   "Midpoint ellipse r_x = 8, r_y = 6", "-332",
                   "Scan-line seed fill from (1, 2)", "4-connected", "8-connected",

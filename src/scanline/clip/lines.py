@@ -47,11 +47,7 @@ def _points(pts, name):
     if a.ndim != 2 or a.shape[1] != 2:
         raise ArgumentValueError(f"{name} must have shape (N, 2), got shape {a.shape}")
     bad = ~(np.abs(a) <= v.COORD_LIMIT).all(axis=1)
-    if bad.any():
-        row = int(np.argmax(bad))
-        raise ArgumentValueError(
-            f"{name} row {row} = {a[row].tolist()} must be finite and within the "
-            f"supported coordinate range [-{v.COORD_LIMIT}, {v.COORD_LIMIT}]")
+    _check(int(np.argmax(bad)) if bad.any() else -1, a, name)
     return np.ascontiguousarray(a)
 
 
@@ -108,12 +104,7 @@ def points(pts, window):
     if w._is_rectangle_spec(window):
         xmin, ymin, xmax, ymax = w.rectangle(window)
         return ((xmin <= p[:, 0]) & (p[:, 0] <= xmax) & (ymin <= p[:, 1]) & (p[:, 1] <= ymax))
-    ring = w.polygon(window, convex=True, algorithm="point clipping")
-    a = ring
-    d = np.roll(ring, -1, axis=0) - a
-    cross = (d[None, :, 0] * (p[:, None, 1] - a[None, :, 1])
-             - d[None, :, 1] * (p[:, None, 0] - a[None, :, 0]))
-    return (cross >= 0).all(axis=1)
+    return w.contains(w.polygon(window, convex=True, algorithm="point clipping"), p)
 
 
 def lines(segments, window, method="liang-barsky"):

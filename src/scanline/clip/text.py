@@ -18,11 +18,7 @@ MODES = ("string", "character", "stroke", "pixel")
 def _inside(box, ring):
     """Whether the rectangle ``box`` lies in the convex counterclockwise ``ring``."""
     x0, y0, x1, y1 = box
-    corners = np.array([(x0, y0), (x1, y0), (x1, y1), (x0, y1)])
-    d = np.roll(ring, -1, axis=0) - ring
-    cross = (d[None, :, 0] * (corners[:, None, 1] - ring[None, :, 1])
-             - d[None, :, 1] * (corners[:, None, 0] - ring[None, :, 0]))
-    return bool((cross >= 0).all())
+    return bool(w.contains(ring, np.array([(x0, y0), (x1, y0), (x1, y1), (x0, y1)])).all())
 
 
 def _pixel_mask(glyph, ring):
@@ -32,10 +28,7 @@ def _pixel_mask(glyph, ring):
     h, wd = mask.shape
     ys, xs = np.mgrid[0:h, 0:wd]
     centers = np.stack([x0 + xs.ravel(), y0 + (h - 1 - ys).ravel()], axis=1).astype(float)
-    d = np.roll(ring, -1, axis=0) - ring
-    cross = (d[None, :, 0] * (centers[:, None, 1] - ring[None, :, 1])
-             - d[None, :, 1] * (centers[:, None, 0] - ring[None, :, 0]))
-    return mask & (cross >= 0).all(axis=1).reshape(h, wd)
+    return mask & w.contains(ring, centers).reshape(h, wd)
 
 
 def text(glyphs, window, mode="character"):

@@ -132,3 +132,12 @@ def outward_normals(ring):
     d = np.roll(ring, -1, axis=0) - ring
     n = np.stack([d[:, 1], -d[:, 0]], axis=1) / np.hypot(d[:, 0], d[:, 1])[:, None]
     return np.ascontiguousarray(n + 0.0)
+
+
+def contains(ring, pts):
+    """Which of the (N, 2) points lie in the closed convex counterclockwise ``ring``
+    (left of or on every edge)."""
+    d = np.roll(ring, -1, axis=0) - ring
+    cross = (d[None, :, 0] * (pts[:, None, 1] - ring[None, :, 1])
+             - d[None, :, 1] * (pts[:, None, 0] - ring[None, :, 0]))
+    return (cross >= 0).all(axis=1)

@@ -392,3 +392,14 @@ def test_antialiased_dashed_circle_is_lighter_than_solid():
     sb = b.to_array().astype(float).sum() / 255
     assert sa == pytest.approx(2 * np.pi * 30 * 3, rel=0.02)
     assert sb == pytest.approx(sa / 2, rel=0.05)
+
+
+def test_translucent_colors_per_circle():
+    # one translucent and one opaque color, as specs and as an RGBA array
+    for color in (["#ff000080", "blue"], np.array([[255, 0, 0, 128], [0, 0, 255, 255]])):
+        fb = sl.FrameBuffer(40, 40, mode="RGB", background="white")
+        sl.draw.circles(fb, [[20, 20, 10], [20, 20, 15]], color=color, dash="dashed")
+        values = {tuple(v) for v in fb.to_array().reshape(-1, 3).tolist()}
+        assert values == {(255, 255, 255), (255, 127, 127), (0, 0, 255)}
+        assert fb.get_pixel(30, 20) == (255, 127, 127)     # (xc + r, yc): pixel 0, on
+        assert fb.get_pixel(35, 20) == (0, 0, 255)

@@ -447,6 +447,10 @@ def conics(fb, rows, color, style, antialias):
             buf, packed, width, height = target(fb)
             draw(buf, packed, width, height, 0, 0, values[i if len(values) > 1 else 0])
         else:
-            spec = color[i] if isinstance(color, (list, np.ndarray)) else color
+            spec = color
+            if isinstance(color, np.ndarray):
+                spec = tuple(int(c) for c in color[i]) if color.ndim == 2 else int(color[i])
+            elif isinstance(color, list):
+                spec = color[i]
             _blend.paint(fb, spec, (xc - rx - margin - 1, yc - ry - margin - 1,
                                     xc + rx + margin + 1, yc + ry + margin + 1), draw)

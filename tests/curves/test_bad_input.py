@@ -48,6 +48,17 @@ def test_huge_control_points_fall_back_to_de_casteljau():
         c.evaluate(0.5, method="matrix")
 
 
+def test_subnormal_knot_span_falls_back_to_de_boor():
+    knots = [0.0, 0.0, 0.0, 2.2250738585e-313, 1.0, 1.0]  # found by the fuzz test below
+    c = sl.curves.BSpline([(1, 2), (3, 4), (5, 6)], 3, knots=knots)
+    u = [0.0, c.domain[1]]
+    ref = c.evaluate(u, method="cox-de-boor")
+    np.testing.assert_allclose(c.evaluate(u), ref)
+    np.testing.assert_allclose(c.evaluate(u, method="de-boor"), ref)
+    with pytest.raises(ArgumentValueError, match="use method='de-boor'"):
+        c.evaluate(u, method="matrix")
+
+
 def test_bspline_arguments():
     P = np.zeros((4, 2))
     with pytest.raises(ArgumentValueError, match=r"order must satisfy 1 <= order <= number "

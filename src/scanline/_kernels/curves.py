@@ -7,7 +7,7 @@ every index computed here stays inside its array.
 
 import numpy as np
 
-from ._jit import helper, kernel
+from ._jit import helper, inline, kernel
 
 
 #: Parameters processed together by :func:`de_casteljau`: the innermost loop runs
@@ -59,6 +59,16 @@ def last_at_most(values, lo, hi, t):
     return a
 
 
+@inline
+def clamped_index(f, top):
+    """int(f) limited to [0, top]; NaN gives 0 (never an index outside the array)."""
+    if not f >= 0.0:
+        return 0
+    if f >= top:
+        return top
+    return int(f)
+
+
 @helper
 def find_span(knots, lo, hi, t, guess, scale):
     """The index l in [lo, hi] with knots[l] <= t < knots[l + 1].
@@ -68,7 +78,7 @@ def find_span(knots, lo, hi, t, guess, scale):
     exact for (open) uniform knots, then ``guess`` (sorted parameters hit it), then a
     binary search.
     """
-    est = min(max(lo + int((t - knots[lo]) * scale), lo), hi)
+    est = lo + clamped_index((t - knots[lo]) * scale, hi - lo)
     if knots[est] <= t < knots[est + 1]:
         return est
     if knots[guess] <= t < knots[guess + 1]:
@@ -114,15 +124,11 @@ def de_boor(points, knots, order, u, out):
 
 
 @helper
-def find_section(breaks, t, guess, scale):
+def find_section(breaks, t, guess):
     """The section s in [0, S-1] with breaks[s] <= t < breaks[s + 1] (the last
-    section also takes t == breaks[S]).  Tries the estimate
-    (t - breaks[0]) * scale, exact for equally spaced breaks, then ``guess`` (the
-    previous section: sorted parameters hit it), then a binary search."""
+    section also takes t == breaks[S]).  Tries ``guess`` (the previous section: sorted
+    parameters hit it), then a binary search."""
     last = breaks.shape[0] - 2
-    est = min(max(int((t - breaks[0]) * scale), 0), last)
-    if breaks[est] <= t < breaks[est + 1]:
-        return est
     if breaks[guess] <= t < breaks[guess + 1]:
         return guess
     if t >= breaks[last]:
@@ -130,7 +136,7 @@ def find_section(breaks, t, guess, scale):
     return last_at_most(breaks, 0, last, t)
 
 
-@helper
+@inline
 def horner(coefficients, s, t, out, i):
     """out[i] = section s of the piecewise polynomial at local t, by Horner's rule."""
     m = coefficients.shape[1]
@@ -147,7 +153,8 @@ def piecewise_horner(breaks, coefficients, u, out):
 
     Section s covers [breaks[s], breaks[s+1]] (increasing breaks); its polynomial in
     the local parameter t = (u - breaks[s]) / (breaks[s+1] - breaks[s]) in [0, 1] has
-    the coefficient rows ``coefficients[s]`` (m, dim), highest power first.
+    the coefficient rows ``coefficients[s]`` (m, dim), highest power first.  The
+    reciprocal of every section width must be finite.
     """
     sections = coefficients.shape[0]
     scale = sections / (breaks[sections] - breaks[0])
@@ -156,7 +163,13 @@ def piecewise_horner(breaks, coefficients, u, out):
             horner(coefficients, 0, (u[i] - breaks[0]) * scale, out, i)
         return
     s = 0
+    last = sections - 1
     for i in range(u.shape[0]):
         x = u[i]
-        s = find_section(breaks, x, s, scale)
+        # the estimate is exact for equally spaced breaks; otherwise search
+        est = clamped_index((x - breaks[0]) * scale, last)
+        if breaks[est] <= x < breaks[est + 1]:
+            s = est
+        else:
+            s = find_section(breaks, x, s)
         horner(coefficients, s, (x - breaks[s]) / (breaks[s + 1] - breaks[s]), out, i)

@@ -255,7 +255,8 @@ class BSpline(Weighted, Curve):
 
     def _power_form(self):
         """(breaks, coefficients) of the non-empty knot spans in the power form, or
-        None if a coefficient is not finite (spans too narrow: D^j P ~ 1/h^j)."""
+        None if a coefficient or a span's 1/h is not finite (spans too narrow:
+        D^j P ~ 1/h^j)."""
         if self._power is None:
             lo, hi = self.domain
             breaks = np.unique(self.knots[(self.knots >= lo) & (self.knots <= hi)])
@@ -269,8 +270,9 @@ class BSpline(Weighted, Curve):
                     value = np.empty((len(start), d.dimension))
                     _k.de_boor(d.points, d.knots, d.order, start, value)
                     rows.append(value * (h**j / factorial(j))[:, None])
-            coefficients = np.ascontiguousarray(np.stack(rows, axis=1))
-            self._power = (breaks, coefficients) if np.isfinite(coefficients).all() else ()
+                coefficients = np.ascontiguousarray(np.stack(rows, axis=1))
+                finite = np.isfinite(coefficients).all() and np.isfinite(1 / h).all()
+            self._power = (breaks, coefficients) if finite else ()
         return self._power or None
 
     def basis(self, u):

@@ -223,10 +223,31 @@ def bad_row(seg, i, limit):
     return bad
 
 
+#: Line clippers, as the batch kernel's ``method``.
+COHEN_SUTHERLAND = 0
+LIANG_BARSKY = 1
+CYRUS_BECK = 2
+
+
+@inline
+def clip_one(method, x0, y0, x1, y1, rect, win, normals, out, row, log):
+    """Clip one segment with clipper ``method``; ``rect`` is (xmin, ymin, xmax, ymax)
+    for Cohen-Sutherland and Liang-Barsky, ``win`` and ``normals`` the polygon and
+    its outward normals for Cyrus-Beck."""
+    if method == COHEN_SUTHERLAND:
+        return cohen_sutherland(x0, y0, x1, y1, rect[0], rect[1], rect[2], rect[3], out,
+                                row, log)
+    if method == LIANG_BARSKY:
+        return liang_barsky(x0, y0, x1, y1, rect[0], rect[1], rect[2], rect[3], out, row,
+                            log)
+    return cyrus_beck(x0, y0, x1, y1, win, normals, out, row, log)
+
+
 @kernel
-def cohen_sutherland_lines(seg, xmin, ymin, xmax, ymax, limit, out, accepted):
-    """Clip every row (x0, y0, x1, y1) of ``seg`` into ``out``; ``accepted[i]``
-    says whether row i is visible (rejected rows hold the segment as given).
+def clip_lines(method, seg, rect, win, normals, limit, out, accepted):
+    """Clip every row (x0, y0, x1, y1) of ``seg`` with clipper ``method`` (see
+    :func:`clip_one`) into ``out``; ``accepted[i]`` says whether row i is visible
+    (rejected rows hold the segment as given).
 
     Returns -1, or the first row with a NaN or a coordinate beyond +-``limit``
     (then nothing after it was clipped).
@@ -235,49 +256,16 @@ def cohen_sutherland_lines(seg, xmin, ymin, xmax, ymax, limit, out, accepted):
     for i in range(seg.shape[0]):
         if bad_row(seg, i, limit):
             return i
-        accepted[i] = cohen_sutherland(seg[i, 0], seg[i, 1], seg[i, 2], seg[i, 3],
-                                       xmin, ymin, xmax, ymax, out, i, log)
+        accepted[i] = clip_one(method, seg[i, 0], seg[i, 1], seg[i, 2], seg[i, 3], rect,
+                               win, normals, out, i, log)
     return -1
 
 
 @kernel
-def liang_barsky_lines(seg, xmin, ymin, xmax, ymax, limit, out, accepted):
-    """Liang-Barsky on every row of ``seg`` (see :func:`cohen_sutherland_lines`)."""
-    log = np.empty((0, PARAM_COLUMNS))
-    for i in range(seg.shape[0]):
-        if bad_row(seg, i, limit):
-            return i
-        accepted[i] = liang_barsky(seg[i, 0], seg[i, 1], seg[i, 2], seg[i, 3],
-                                   xmin, ymin, xmax, ymax, out, i, log)
-    return -1
-
-
-@kernel
-def cyrus_beck_lines(seg, win, normals, limit, out, accepted):
-    """Cyrus-Beck on every row of ``seg`` against the convex polygon ``win`` with
-    outward edge normals ``normals`` (see :func:`cohen_sutherland_lines`)."""
-    log = np.empty((0, PARAM_COLUMNS))
-    for i in range(seg.shape[0]):
-        if bad_row(seg, i, limit):
-            return i
-        accepted[i] = cyrus_beck(seg[i, 0], seg[i, 1], seg[i, 2], seg[i, 3], win,
-                                 normals, out, i, log)
-    return -1
-
-
-@kernel
-def trace_line(method, seg, win, normals, out, log):
-    """One segment through clipper ``method`` (0 Cohen-Sutherland, 1 Liang-Barsky,
-    2 Cyrus-Beck) with its steps logged into ``log``, the result into ``out[0]``;
-    ``win`` is (xmin, ymin, xmax, ymax) as a (1, 4) array for the first two, the
-    polygon for Cyrus-Beck."""
-    if method == 0:
-        return cohen_sutherland(seg[0], seg[1], seg[2], seg[3], win[0, 0], win[0, 1],
-                                win[0, 2], win[0, 3], out, 0, log)
-    if method == 1:
-        return liang_barsky(seg[0], seg[1], seg[2], seg[3], win[0, 0], win[0, 1],
-                            win[0, 2], win[0, 3], out, 0, log)
-    return cyrus_beck(seg[0], seg[1], seg[2], seg[3], win, normals, out, 0, log)
+def trace_line(method, seg, rect, win, normals, out, log):
+    """One segment through clipper ``method`` with its steps logged into ``log`` and
+    the result in ``out[0]`` (see :func:`clip_one`)."""
+    return clip_one(method, seg[0], seg[1], seg[2], seg[3], rect, win, normals, out, 0, log)
 
 
 @helper

@@ -157,18 +157,17 @@ def lines(segments, window, method="liang-barsky"):
     accepted = np.empty(len(seg), np.bool_)
     if method == "cyrus-beck":
         ring = w.polygon(window, convex=True, algorithm="Cyrus-Beck")
-        bad = k.cyrus_beck_lines(seg, ring, w.outward_normals(ring), float(v.COORD_LIMIT),
-                                 out, accepted)
+        rect, code = np.zeros(4), k.CYRUS_BECK
+    elif not w._is_rectangle_spec(window):
+        raise ArgumentValueError(
+            f"window must be a rectangle (xmin, ymin, xmax, ymax) for {method}; "
+            f"use method='cyrus-beck' for a convex polygon window, got {v._show(window)}")
     else:
-        if not w._is_rectangle_spec(window):
-            raise ArgumentValueError(
-                f"window must be a rectangle (xmin, ymin, xmax, ymax) for {method}; "
-                f"use method='cyrus-beck' for a convex polygon window, got "
-                f"{v._show(window)}")
-        xmin, ymin, xmax, ymax = w.rectangle(window)
-        kern = (k.cohen_sutherland_lines if method == "cohen-sutherland"
-                else k.liang_barsky_lines)
-        bad = kern(seg, xmin, ymin, xmax, ymax, float(v.COORD_LIMIT), out, accepted)
+        rect = np.array(w.rectangle(window))
+        ring = w.rectangle_polygon(*rect)
+        code = k.COHEN_SUTHERLAND if method == "cohen-sutherland" else k.LIANG_BARSKY
+    bad = k.clip_lines(code, seg, rect, ring, w.outward_normals(ring), float(v.COORD_LIMIT),
+                       out, accepted)
     _check(bad, seg, "segments")
     return out, accepted
 

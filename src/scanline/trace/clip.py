@@ -29,7 +29,9 @@ def _vector(x, y):
     return f"({_cell(float(x))}, {_cell(float(y))})"
 
 
-def _run(method, x0, y0, x1, y1, win, rows, columns, normals=None):
+def _run(method, x0, y0, x1, y1, ring, rows, columns):
+    """Run clipper ``method`` on one segment against the window ``ring`` (corners,
+    counterclockwise) with a log of ``rows`` x ``columns``."""
     seg = np.array([v.number(n, c) for n, c in
                     (("x0", x0), ("y0", y0), ("x1", x1), ("y1", y1))])
     bad = ~(np.abs(seg) <= v.COORD_LIMIT)
@@ -39,9 +41,8 @@ def _run(method, x0, y0, x1, y1, win, rows, columns, normals=None):
             f"+-{v.COORD_LIMIT}")
     out = np.empty((1, 4))
     log = np.full((rows, columns), np.nan)
-    if normals is None:
-        normals = np.zeros((0, 2))
-    ok = k.trace_line(method, seg, win, normals, out, log)
+    rect = np.concatenate([ring.min(axis=0), ring.max(axis=0)])
+    ok = k.trace_line(method, seg, rect, ring, w.outward_normals(ring), out, log)
     used = int(np.sum(~np.isnan(log[:, 0])))
     return seg, bool(ok), out[0], log[:used]
 
@@ -72,8 +73,9 @@ def cohen_sutherland(x0, y0, x1, y1, window=DEFAULT_WINDOW):
     (0.0, 7.0, 3.0, 10.0)
     """
     xmin, ymin, xmax, ymax = w.rectangle(window)
-    win = np.array([[xmin, ymin, xmax, ymax]])
-    seg, ok, out, log = _run(0, x0, y0, x1, y1, win, k.CS_MAX_STEPS + 1, k.CS_COLUMNS)
+    seg, ok, out, log = _run(k.COHEN_SUTHERLAND, x0, y0, x1, y1,
+                             w.rectangle_polygon(xmin, ymin, xmax, ymax), k.CS_MAX_STEPS + 1,
+                             k.CS_COLUMNS)
     edge = {k.LEFT: ("x", xmin), k.RIGHT: ("x", xmax), k.BELOW: ("y", ymin),
             k.ABOVE: ("y", ymax)}
     rows = []
@@ -126,8 +128,8 @@ def liang_barsky(x0, y0, x1, y1, window=DEFAULT_WINDOW):
     (0.0, 4.5, 10.0, 9.5)
     """
     xmin, ymin, xmax, ymax = w.rectangle(window)
-    win = np.array([[xmin, ymin, xmax, ymax]])
-    seg, ok, out, log = _run(1, x0, y0, x1, y1, win, 4, k.PARAM_COLUMNS)
+    seg, ok, out, log = _run(k.LIANG_BARSKY, x0, y0, x1, y1,
+                             w.rectangle_polygon(xmin, ymin, xmax, ymax), 4, k.PARAM_COLUMNS)
     rows = _parametric_rows(log, ["left", "right", "bottom", "top"])
     result, line = _result(ok, out)
     dx, dy = seg[2] - seg[0], seg[3] - seg[1]
@@ -168,7 +170,7 @@ def cyrus_beck(x0, y0, x1, y1, window=DEFAULT_WINDOW, window_polygon=None):
         window = [flat[i:i + 2] for i in range(0, len(flat), 2)]
     ring = w.polygon(window, convex=True, algorithm="Cyrus-Beck")
     normals = w.outward_normals(ring)
-    seg, ok, out, log = _run(2, x0, y0, x1, y1, ring, len(ring), k.PARAM_COLUMNS, normals)
+    seg, ok, out, log = _run(k.CYRUS_BECK, x0, y0, x1, y1, ring, len(ring), k.PARAM_COLUMNS)
     dx, dy = seg[2] - seg[0], seg[3] - seg[1]
     rows = []
     for kk, p, q, r, kind, u1, u2 in log.tolist():

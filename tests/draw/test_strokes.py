@@ -249,9 +249,10 @@ def test_one_point_polylines():
     fb.clear()
     sl.draw.polyline(fb, [(4, 4)], color=1)                   # width 1: the pixel
     assert lit(fb) == {(4, 4)}
-    fb.clear()
-    sl.draw.polyline(fb, [], color=1, width=3)                # nothing at all
-    assert lit(fb) == set()
+    for kw in (dict(width=3), dict(), dict(antialias=True), dict(width=3, antialias=True)):
+        fb.clear()
+        sl.draw.polyline(fb, [], color=1, **kw)               # nothing at all
+        assert lit(fb) == set()
 
 
 def test_half_turn():

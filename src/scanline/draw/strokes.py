@@ -207,9 +207,9 @@ def _antialiased(fb, verts, offsets, closed, color, style):
             owner = np.arange(len(offsets) - 1)
         segs, seg_owner = [], []
         for i in range(len(offsets) - 1):
-            if owner[i] < 0:
-                continue
             ring = verts[offsets[i]:offsets[i + 1]]
+            if owner[i] < 0 or len(ring) == 0:
+                continue
             if len(ring) == 1:
                 ring = np.vstack([ring, ring])
             if closed[i] and len(ring) > 2:

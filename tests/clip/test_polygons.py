@@ -199,6 +199,19 @@ def test_holes():
     assert len(pieces) == 2 and close(area(pieces), 12.0)
 
 
+def test_window_with_a_hole():
+    frame = [[(0, 0), (10, 0), (10, 10), (0, 10)], [(3, 3), (7, 3), (7, 7), (3, 7)]]
+    ref = shapely.Polygon(frame[0], [frame[1]])
+    rng = np.random.default_rng(16)
+    for _ in range(40):
+        subject = star_polygon(rng, int(rng.integers(3, 12)), center=rng.uniform(2, 8, 2),
+                               r=(1, 7))
+        pieces = sl.clip.polygon(subject, frame, method="weiler-atherton")
+        assert close(area(pieces), ref.intersection(shapely.Polygon(subject)).area)
+    with pytest.raises(sl.ArgumentValueError, match="one polygon contour"):
+        sl.clip.polygon(U_SHAPE, frame)          # Sutherland-Hodgman: one convex contour
+
+
 # -- bad input ---------------------------------------------------------------------------
 def test_bad_polygon_input():
     with pytest.raises(sl.ArgumentValueError, match="window"):

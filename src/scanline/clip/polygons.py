@@ -39,7 +39,8 @@ def polygon(points, window, method="sutherland-hodgman"):
         holes, combined by the even-odd rule).  Vertices in either orientation.
     window : (xmin, ymin, xmax, ymax) or polygon, shape (M, 2)
         ``"sutherland-hodgman"`` needs a convex window; ``"weiler-atherton"``
-        takes any simple polygon, concave included.
+        takes any simple polygon, concave included, or a list of contours (a
+        window with holes, even-odd).
     method : {"sutherland-hodgman", "weiler-atherton"}
 
     Returns
@@ -92,10 +93,10 @@ def polygon(points, window, method="sutherland-hodgman"):
             return []
         out, counts = _sutherland_hodgman(np.concatenate(rings), [len(r) for r in rings], ring)
         return [c for c in np.split(out, np.cumsum(counts)[:-1]) if len(c)]
-    ring = w.polygon(window)
+    window_rings = w.polygon_rings(window)
     if not rings:
         return []
-    return wa.clip(rings, [ring])
+    return wa.clip(rings, window_rings)
 
 
 def polygons(polys, window, counts=None):

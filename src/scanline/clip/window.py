@@ -80,24 +80,37 @@ def polygon(window, name="window", convex=False, algorithm=None):
     A rectangle spec is turned into its four corners.  With ``convex=True`` a
     non-convex polygon raises ArgumentValueError naming ``algorithm``.
     """
-    if _is_rectangle_spec(window):
-        return rectangle_polygon(*rectangle(window, name))
-    verts, offsets = contours(name, window)
-    if len(offsets) != 2:
+    rings = polygon_rings(window, name)
+    if len(rings) != 1:
         raise ArgumentValueError(
-            f"{name} must be one polygon contour (an (M, 2) array of vertices), got "
-            f"{len(offsets) - 1} contours")
-    ring = _ring(verts)
-    area = signed_area(ring) if len(ring) >= 3 else 0.0
-    if len(ring) < 3 or area == 0.0:
-        raise ArgumentValueError(
-            f"{name} is degenerate: a polygon window needs at least 3 distinct vertices "
-            f"and a nonzero area, got {v._show(window)}")
-    if area < 0:
+            f"{name} must be one polygon contour (an (M, 2) array of vertices) for "
+            f"{algorithm or 'this algorithm'}, got {len(rings)} contours")
+    ring = rings[0]
+    if signed_area(ring) < 0:
         ring = ring[::-1].copy()
     if convex:
         check_convex(ring, name, algorithm)
     return np.ascontiguousarray(ring)
+
+
+def polygon_rings(window, name="window"):
+    """A window as a list of (M, 2) rings (a rectangle's corners counterclockwise;
+    a polygon's contours as given, repeated vertices dropped), each checked to have
+    at least 3 distinct vertices and a nonzero area."""
+    if _is_rectangle_spec(window):
+        return [rectangle_polygon(*rectangle(window, name))]
+    verts, offsets = contours(name, window)
+    rings = []
+    for c in range(len(offsets) - 1):
+        ring = _ring(verts[offsets[c]:offsets[c + 1]])
+        if len(ring) < 3 or signed_area(ring) == 0.0:
+            raise ArgumentValueError(
+                f"{name} is degenerate: a polygon window needs at least 3 distinct "
+                f"vertices and a nonzero area in each contour, got {v._show(window)}")
+        rings.append(np.ascontiguousarray(ring))
+    if not rings:
+        raise ArgumentValueError(f"{name} must have at least one contour, got {v._show(window)}")
+    return rings
 
 
 def check_convex(ring, name, algorithm):

@@ -83,9 +83,10 @@ class Font:
         """Baseline-to-baseline distance of consecutive lines, font units."""
         return self.ascent - self.descent + self.line_gap
 
-    def glyph_ids(self, codes):
-        """Glyph ids of an integer array of code points (missing -> ``replacement``)."""
-        if len(codes) == 0 or codes.max() < len(self._table):
+    def glyph_ids(self, codes, small=False):
+        """Glyph ids of an integer array of code points (missing -> ``replacement``);
+        ``small=True`` promises every code is below 0x10000 (ASCII text)."""
+        if small or len(codes) == 0 or codes.max() < len(self._table):
             return self._table[codes]
         ids = self._table[np.minimum(codes, len(self._table) - 1)]
         big = codes >= len(self._table)

@@ -23,7 +23,8 @@ import numpy as np
 MAX_CACHED = 256
 
 #: How many (font, size, orientation, antialias) caches are kept (least recently
-#: used dropped first).
+#: used dropped first).  An entry holds its font too, so a font's id cannot be
+#: reused by another font while the entry lives.
 MAX_SIZES = 64
 
 _CACHES = OrderedDict()
@@ -103,15 +104,15 @@ class GlyphImages:
 def images(font, matrix, antialias, tolerance):
     """The cache for ``font`` at ``matrix`` (2 x 2 font units -> pixels), or None
     when its glyphs are too large to cache."""
-    a, b, c, d = matrix.ravel().tolist()
-    if abs(a * d - b * c) * font.units_per_em ** 2 > MAX_CACHED ** 2:
-        return None
-    key = (id(font), round(a, 9), round(b, 9), round(c, 9), round(d, 9), antialias)
+    key = (id(font), matrix.tobytes(), antialias)
     hit = _CACHES.get(key)
-    if hit is not None and hit.font is font:
+    if hit is not None and hit[0] is font:
         _CACHES.move_to_end(key)
-        return hit
-    hit = _CACHES[key] = GlyphImages(font, matrix, antialias, tolerance)
+        return hit[1]
+    a, b, c, d = matrix.ravel().tolist()
+    small = abs(a * d - b * c) * font.units_per_em ** 2 <= MAX_CACHED ** 2
+    images = GlyphImages(font, matrix, antialias, tolerance) if small else None
+    _CACHES[key] = (font, images)
     if len(_CACHES) > MAX_SIZES:
         _CACHES.popitem(last=False)
-    return hit
+    return images

@@ -54,8 +54,13 @@ class Placement:
     space).
     """
 
-    __slots__ = ("font", "style", "sx", "sy", "rotation", "matrix", "gids", "index",
-                 "ox", "oy", "reference", "extent", "end", "tolerance")
+    __slots__ = ("font", "style", "sx", "sy", "matrix", "gids", "index", "ox", "oy",
+                 "reference", "extent", "end", "tolerance")
+
+    @property
+    def rotation(self):
+        c, s = math.cos(self.style.angle), math.sin(self.style.angle)
+        return np.array([[c, -s], [s, c]])
 
     def corners(self):
         """The block's text extent rectangle, (4, 2) device corners."""
@@ -98,7 +103,9 @@ def _align_span(lo, hi, key):
 
 def _horizontal(font, gids, line, nlines, style, sx, sy, gap):
     """Text-space origins for paths right and left; the block's extent."""
-    adv = font.advances[gids] * sx + gap
+    adv = font.advances[gids] * sx
+    if gap:
+        adv += gap
     if nlines == 1:  # the common case: scalars instead of per-line arrays
         run = np.cumsum(adv)
         width = float(run[-1]) - gap if len(run) else 0.0
@@ -110,7 +117,8 @@ def _horizontal(font, gids, line, nlines, style, sx, sy, gap):
     right = style.path == "right"
     lo, hi = (0.0 * width, width) if right else (-width, 0.0 * width)
     shift = _align_span(lo, hi, style.align[0])
-    u = (run - adv if right else gap - run) + (shift if nlines == 1 else shift[line])
+    u = run - adv if right else gap - run
+    u += shift if nlines == 1 else shift[line]
     step = font.line_height * sy
     base_last = -(nlines - 1) * step
     cap = font.cap_height * sy
@@ -177,7 +185,7 @@ def place(text, x, y, style):
         index = np.arange(len(codes))
         line = np.zeros(len(codes), np.int64)
         nlines = 1
-    gids = font.glyph_ids(codes)
+    gids = font.glyph_ids(codes, small=text.isascii())
     height = font.native_height if style.height is None else style.height
     sy = height / font.cap_height
     sx = sy * style.expansion
@@ -189,22 +197,23 @@ def place(text, x, y, style):
     c, s = math.cos(style.angle), math.sin(style.angle)
     p = Placement()
     p.font, p.style, p.sx, p.sy = font, style, sx, sy
-    p.rotation = np.array([[c, -s], [s, c]])
     p.matrix = np.array([[c * sx, -s * sy], [s * sx, c * sy]])
     p.gids, p.index = gids, index
+    # origins, rounded to pixel centers (floor(f + 0.5), computed in place)
     if s == 0.0 and c == 1.0:
-        fx, fy = u + x, v_ + y
+        fx, fy = u, v_ + y + 0.5
+        fx += x + 0.5
     else:
-        fx, fy = x + c * u - s * v_, y + s * u + c * v_
+        fx, fy = x + 0.5 + c * u - s * v_, y + 0.5 + s * u + c * v_
     reach = max(abs(x), abs(y)) + max(abs(e) for e in extent)
     if reach > v.COORD_LIMIT:  # far away: keep the origins in the exact range
         lim = float(v.COORD_LIMIT)
         fx, fy = np.clip(fx, -lim, lim), np.clip(fy, -lim, lim)
-    p.ox = np.floor(fx + 0.5).astype(np.int64)
+    p.ox = np.floor(fx, out=fx).astype(np.int64)
     if np.ndim(fy) == 0:  # one unrotated line: one baseline row
-        p.oy = np.full(len(gids), math.floor(fy + 0.5), np.int64)
+        p.oy = np.full(len(gids), math.floor(fy), np.int64)
     else:
-        p.oy = np.floor(fy + 0.5).astype(np.int64)
+        p.oy = np.floor(fy).astype(np.int64)
     p.reference, p.extent, p.end = (x, y), extent, end
     p.tolerance = TOLERANCE / max(sx, sy)
     return p

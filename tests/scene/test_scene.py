@@ -372,3 +372,43 @@ def test_drawing_error_names_the_segment_and_leaves_no_output(tmp_path, capsys):
     assert main(["render", str(f), "-o", str(out)]) == 2
     assert "segment 'a', primitive 1 (text): height" in capsys.readouterr().err
     assert not out.exists()
+
+
+extreme = st.one_of(
+    st.sampled_from([0, -0.0, 1e-300, -1e-300, 1e300, -1e300, 2**31, -2**31, 1e9, 1e15,
+                     2**63, 10**30]),
+    st.floats(-1e6, 1e6), st.integers(-10**6, 10**6))
+
+
+def _numbers(node, prefix=()):
+    """Key paths of the numbers in scene data."""
+    if isinstance(node, dict):
+        for k, x in node.items():
+            yield from _numbers(x, prefix + (k,))
+    elif isinstance(node, list):
+        for i, x in enumerate(node):
+            yield from _numbers(x, prefix + (i,))
+    elif isinstance(node, (int, float)) and not isinstance(node, bool):
+        yield prefix
+
+
+@st.composite
+def perturbed_scenes(draw):
+    """A valid example with one to three of its numbers made extreme (radii of 1e300,
+    scale factors of 0, coordinates of 2**63 ...)."""
+    data = tomllib.loads(open(EXAMPLES[draw(st.integers(0, len(EXAMPLES) - 1))]).read())
+    data["canvas"] = {"width": 24, "height": 16}
+    paths = [p for p in _numbers(data) if p[0] != "canvas"]
+    for _ in range(draw(st.integers(1, 3))):
+        *parents, last = draw(st.sampled_from(paths))
+        node = data
+        for k in parents:
+            node = node[k]
+        node[last] = draw(extreme)
+    return data
+
+
+@HYPOTHESIS
+@given(perturbed_scenes())
+def test_extreme_numbers_never_crash(data):
+    _render(data)

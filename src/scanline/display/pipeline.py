@@ -15,6 +15,9 @@ from .. import clip as clipping
 #: Largest distance (device units) between a flattened ellipse and the true curve.
 FLATNESS = 0.25
 
+#: Most segments of a flattened ellipse (a radius of about 10^6 device units).
+MAX_SEGMENTS = 8192
+
 #: Marker strokes of a unit marker (size 1), as (x0, y0, x1, y1) rows.
 _S = math.sqrt(0.5) / 2
 _MARKER_STROKES = {
@@ -30,10 +33,10 @@ def ellipse_points(center, axes):
     """The ellipse ``center + axes @ (cos t, sin t)`` as a closed polygon (first point
     not repeated) within :data:`FLATNESS` of the curve."""
     r = float(np.sqrt((axes * axes).sum(axis=0)).max())
-    if r <= FLATNESS:
-        n = 4
-    else:
-        n = int(min(8192, max(16, math.ceil(math.pi / math.acos(1.0 - FLATNESS / r)))))
+    # a chord of the angle 2 pi / n stays within r (1 - cos(pi / n)) of the circle
+    step = math.acos(1.0 - FLATNESS / r) if r > FLATNESS else math.pi / 2
+    n = MAX_SEGMENTS if step == 0.0 else int(min(MAX_SEGMENTS, max(
+        4 if r <= FLATNESS else 16, math.ceil(math.pi / step))))
     t = np.linspace(0.0, 2.0 * math.pi, n, endpoint=False)
     return center + np.stack([np.cos(t), np.sin(t)], axis=1) @ axes.T
 

@@ -270,7 +270,7 @@ def _primitive(data, path, df):
     if not isinstance(data, dict):
         _fail(path, f"must be a table (an object), got {_kind(data)}")
     kind = data.get("type")
-    if kind not in PRIMITIVES:
+    if not isinstance(kind, str) or kind not in PRIMITIVES:
         _fail(f"{path}.type", f"must be one of {', '.join(PRIMITIVES)}; got {kind!r}")
     _table(data, path, PRIMITIVES[kind] | {"type"}, REQUIRED[kind])
     args = {k: x for k, x in data.items() if k != "type"}

@@ -127,7 +127,7 @@ def conic_arcs(buf, mode, table, width, height, swap, uc, wc, ru, rw, src):
     """Composite the two arcs of the ellipse with center (uc, wc) and semi-axes ru
     (along u) and rw that are stepped along u: |u - uc| <= ru**2 / sqrt(ru**2 +
     rw**2), where |slope| <= 1."""
-    reach = ru * ru / math.sqrt(ru * ru + rw * rw)
+    reach = ru / math.hypot(1.0, rw / ru)   # ru**2 / sqrt(ru**2 + rw**2), no underflow
     umax = height if swap else width
     wmax = width if swap else height
     ua = max(uc - reach, -0.5)
@@ -143,7 +143,8 @@ def conic_arcs(buf, mode, table, width, height, swap, uc, wc, ru, rw, src):
         if hi > lo:
             t = (0.5 * (lo + hi) - uc) / ru
             off = rw * math.sqrt(max(1.0 - t * t, 0.0))
-            m = rw * rw * (t * ru) / (ru * ru * off) if off > 0.0 else 0.0
+            # |slope| = rw**2 |t| / (ru off), at most 1 here (clamped against round-off)
+            m = min(rw / ru * abs(t) * (rw / off), 1.0) if off > 0.0 else 0.0
             half = 0.5 * math.sqrt(1.0 + m * m)
             weight = (hi - lo) * alpha
             column(buf, mode, table, width, height, swap, i, wc + off, half, weight, src)

@@ -42,7 +42,8 @@ def _reals(name, value, columns, radius_columns=()):
 
 def _setup(fb, color, n):
     buf, _, width, height = target(fb)
-    return buf, _blend.mode_code(fb), width, height, _blend.table(fb), _blend.sources(fb, color, n)
+    srcs = _blend.sources(fb, color, n)     # first: in mode "P" it may extend the table
+    return buf, _blend.mode_code(fb), width, height, _blend.table(fb), srcs
 
 
 def lines(fb, segments, color="white"):

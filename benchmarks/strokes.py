@@ -21,6 +21,7 @@ Run: ``python benchmarks/strokes.py [--quick]``.
 """
 
 import argparse
+import importlib.util
 import os
 import sys
 
@@ -145,16 +146,7 @@ def main(argv=None):
     n = 1_000 if args.quick else 10_000
     data = workload(n)
     report = Report("strokes", quick=args.quick)
-    try:
-        import cairo  # noqa: F401
-        have_cairo = True
-    except ImportError:
-        have_cairo = False
-    try:
-        import skia  # noqa: F401
-        have_skia = True
-    except ImportError:
-        have_skia = False
+    have_cairo, have_skia = (importlib.util.find_spec(m) is not None for m in ("cairo", "skia"))
     peer = "cairo" if have_cairo else "skia" if have_skia else None
     for name, aa in (("strokes", False), ("strokes-aa", True)):
         report.add(name, "scanline", f"sl.draw.polylines(width=w, cap/join round, antialias={aa})",

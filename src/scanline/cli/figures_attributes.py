@@ -10,6 +10,15 @@ from ._plot import enlarge, side_by_side, stacked
 from .figures import HIGHLIGHT, PAPER, PIXEL, SECOND, Figure
 
 
+def _stroked(size, path, color, scale, **attributes):
+    """A frame buffer of ``size`` with the stroke of ``path`` and, over it, the path
+    itself at width 1 in the highlight color, enlarged ``scale`` times."""
+    fb = sl.FrameBuffer(*size, background=PAPER)
+    sl.draw.polyline(fb, path, color=color, **attributes)
+    sl.draw.polyline(fb, path, color=HIGHLIGHT)
+    return enlarge(fb.to_pil(), scale)
+
+
 def figure_line_types():
     """Line types: named masks, a user bit mask and dash lengths, width 1 and thick."""
     zigzag = [(3, 4), (30, 26), (57, 4), (84, 26), (111, 4)]
@@ -48,18 +57,11 @@ def figure_caps_and_joins():
     vee = [(12, 14), (44, 60), (76, 14)]
     panels, titles = [], []
     for cap, join in (("butt", "miter"), ("round", "round"), ("square", "bevel")):
-        fb = sl.FrameBuffer(89, 75, background=PAPER)
-        sl.draw.polyline(fb, vee, color=PIXEL, width=12, cap=cap, join=join)
-        sl.draw.polyline(fb, vee, color=HIGHLIGHT)          # the path, width 1
-        panels.append(enlarge(fb.to_pil(), 3))
+        panels.append(_stroked((89, 75), vee, PIXEL, 3, width=12, cap=cap, join=join))
         titles.append(f"cap {cap}, join {join}")
-    limits = []
     sharp = [(6, 10), (80, 30), (6, 50)]
-    for limit in (10, 2):
-        fb = sl.FrameBuffer(130, 61, background=PAPER)
-        sl.draw.polyline(fb, sharp, color=SECOND, width=9, miter_limit=limit)
-        sl.draw.polyline(fb, sharp, color=HIGHLIGHT)
-        limits.append(enlarge(fb.to_pil(), 2))
+    limits = [_stroked((130, 61), sharp, SECOND, 2, width=9, miter_limit=limit)
+              for limit in (10, 2)]
     return Figure(
         "caps-joins", "Line width: caps and joins",
         "A thick polyline is filled by the package's own scan-line polygon fill: one "
@@ -85,12 +87,7 @@ def figure_pens():
             ("round pen, width 5", dict(pen="circle", width=5)),
             ("calligraphic brush 3x3", dict(pen=brush)),
             ("outline, width 5", dict(width=5, cap="round", join="round"))]
-    panels = []
-    for _, kw in pens:
-        fb = sl.FrameBuffer(77, 61, background=PAPER)
-        sl.draw.polyline(fb, path, color=PIXEL, **kw)
-        sl.draw.polyline(fb, path, color=HIGHLIGHT)
-        panels.append(enlarge(fb.to_pil(), 3))
+    panels = [_stroked((77, 61), path, PIXEL, 3, **kw) for _, kw in pens]
     return Figure(
         "pens", "Pen and brush shapes",
         "A pen is a footprint (a square, a disc or any small bitmap) stamped at every "

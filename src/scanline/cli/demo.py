@@ -38,10 +38,25 @@ def register(subparsers):
     parser.set_defaults(run=run)
 
 
+def label(index):
+    """The figure label of the 0-based ``index``: a ... z, then aa, ab, ...
+
+    >>> [label(i) for i in (0, 25, 26, 27, 52)]
+    ['a', 'z', 'aa', 'ab', 'ba']
+    """
+    letters = ""
+    index += 1
+    while index:
+        index, rest = divmod(index - 1, 26)
+        letters = chr(ord("a") + rest) + letters
+    return letters
+
+
 def page(figures):
     """The HTML of the demo page for ``figures`` (each shown from ``NAME.png``)."""
     sections = []
-    for letter, fig in zip("abcdefghijklmnopqrstuvwxyz", figures):
+    for index, fig in enumerate(figures):
+        letter = label(index)
         table = f"\n<pre>{html.escape(fig.table)}</pre>" if fig.table else ""
         sections.append(
             f'<section id="{fig.name}">\n<figure>\n'

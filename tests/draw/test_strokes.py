@@ -404,3 +404,17 @@ def test_translucent_colors_per_circle():
         assert values == {(255, 255, 255), (255, 127, 127), (0, 0, 255)}
         assert fb.get_pixel(30, 20) == (255, 127, 127)     # (xc + r, yc): pixel 0, on
         assert fb.get_pixel(35, 20) == (0, 0, 255)
+
+
+def test_translucent_batch_composites_each_polyline():
+    # two crossing strokes of one translucent color: where they cross, the second
+    # is composited over the first, as when they are drawn one by one
+    polys = [[(5, 20), (55, 20)], [(30, 2), (30, 38)]]
+    for kw in (dict(width=5), dict(), dict(width=4, dash=(6, 2))):
+        a = sl.FrameBuffer(60, 40, mode="RGB", background="white")
+        b = sl.FrameBuffer(60, 40, mode="RGB", background="white")
+        sl.draw.polylines(a, polys, color="#0000ff80", **kw)
+        for p in polys:
+            sl.draw.polyline(b, p, color="#0000ff80", **kw)
+        assert (a.to_array() == b.to_array()).all()
+        assert a.get_pixel(30, 20) == (63, 63, 255)

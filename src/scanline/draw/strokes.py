@@ -164,11 +164,9 @@ def stroke(fb, verts, offsets, closed, color, style, antialias=False):
     if not _blend.translucent(color):
         draw(buf, packed, width, height, 0, 0, colors(fb, color, n), 0, n)
         return
+    # translucent: each polyline composited on its own (once, however often it
+    # crosses itself), later ones over earlier ones
     margin = _margin(style)
-    if not isinstance(color, (list, np.ndarray)):
-        _blend.paint(fb, color, _bbox(verts, margin),
-                     lambda b, p, w, h, ox, oy, value: draw(b, p, w, h, ox, oy, value[None, :], 0, n))
-        return
     boxes = [_bbox(verts[offsets[i]:offsets[i + 1]], margin) for i in range(n)]
     _blend.paint_each(fb, color, n, boxes,
                       lambda i, b, p, w, h, ox, oy, value: draw(b, p, w, h, ox, oy,

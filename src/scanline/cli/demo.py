@@ -85,7 +85,8 @@ def page(figures):
 #: The modules of figures, in gallery order; each has a ``FIGURES`` tuple of
 #: functions that return a :class:`scanline.cli.figures.Figure`.
 FIGURE_MODULES = ("figures", "figures_scene", "figures_color", "figures_surfaces",
-                  "figures_clip", "figures_curves", "figures_attributes", "figures_text")
+                  "figures_clip", "figures_curves", "figures_attributes", "figures_text",
+                  "figures_antialias")
 
 
 def all_figures():

@@ -175,3 +175,14 @@ def test_bad_colors_are_named():
         sl.draw.polygon(fb, SQUARE, "#12345g80")
     with pytest.raises(sl.ArgumentValueError, match="2 colors"):
         sl.draw.polygons(fb, [SQUARE], ["red", (0, 0, 0, 9)])
+
+
+def test_blending_is_a_weighted_average_not_a_sum():
+    # erratum E20: the glossary's "adding them" would give 200 here
+    fb = sl.FrameBuffer(4, 4, mode="L", background=100)
+    paint_all(fb, (100, 100, 100, 128))
+    assert fb.get_pixel(0, 0) == 100
+    fb = sl.FrameBuffer(4, 4, mode="RGB", background=(100, 0, 0))
+    paint_all(fb, (0, 0, 100, 128))
+    # 0.502 * (0, 0, 100) + 0.498 * (100, 0, 0) = (49.8, 0, 50.2)
+    assert fb.get_pixel(0, 0) == (50, 0, 50)

@@ -170,3 +170,16 @@ def test_layout_reports_cells_and_blank_boxes():
     assert g[1].char == " " and g[1].box is None
     assert g[1].cell == (12.0, -4.0, 24.0, 14.0)
     assert g[0].box == (0.0, 0.0, 10.0, 10.0)       # 'a': x-height 5 dots
+
+
+def test_text_style_is_immutable_and_copies():
+    import copy
+    import pickle
+
+    s = sl.TextStyle(font="bitmap", height=14, align="center half", up=(-1, 0))
+    with pytest.raises(AttributeError, match="immutable"):
+        s.height = 3
+    assert copy.deepcopy(s) is s and pickle.loads(pickle.dumps(s)) == s
+    t = s.replace(height=7, path="down")
+    assert (t.height, t.path, t.font, s.height) == (7.0, "down", "bitmap", 14.0)
+    assert t.up == pytest.approx((-1, 0))

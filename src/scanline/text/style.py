@@ -142,6 +142,15 @@ class TextStyle:
     def __setattr__(self, name, value):
         raise AttributeError(f"TextStyle is immutable; use style.replace({name}=...)")
 
+    def __copy__(self):
+        return self
+
+    def __deepcopy__(self, memo):
+        return self
+
+    def __reduce__(self):
+        return _restore, (tuple(getattr(self, k) for k in self.__slots__),)
+
     def __repr__(self):
         fields = ", ".join(f"{k}={getattr(self, k)!r}" for k in self.__slots__)
         return f"TextStyle({fields})"
@@ -151,6 +160,14 @@ class TextStyle:
             getattr(self, k) == getattr(other, k) for k in self.__slots__)
 
     __hash__ = None
+
+
+def _restore(values):
+    """Unpickle a :class:`TextStyle` (its values were checked when it was made)."""
+    out = object.__new__(TextStyle)
+    for key, value in zip(TextStyle.__slots__, values):
+        object.__setattr__(out, key, value)
+    return out
 
 
 def _font(value):

@@ -26,6 +26,9 @@ import math
 
 import numpy as np
 
+#: Pairs of edges (or points x edges) handled at once by the vectorized tests.
+CHUNK = 1 << 18
+
 #: Relative tolerance, in units of the coordinates' extent, for snapping a crossing
 #: onto a vertex and for calling a point "on" a boundary.
 EPS = 1e-11
@@ -82,10 +85,20 @@ def _distance_to_boundary(pts, a, b):
 
 def _splits(sa, sb, ca, cb, tol):
     """Crossing points of every subject edge with every window edge, as split lists:
-    ``(subject_splits, window_splits)``, for each edge a list of (param, point)."""
-    ns, nc = len(sa), len(ca)
-    s_splits = [[] for _ in range(ns)]
-    c_splits = [[] for _ in range(nc)]
+    ``(subject_splits, window_splits)``, for each edge a list of (param, point).
+
+    Works on blocks of subject edges so that the pairwise arrays stay small."""
+    s_splits = [[] for _ in range(len(sa))]
+    c_splits = [[] for _ in range(len(ca))]
+    step = max(1, CHUNK // max(1, len(ca)))
+    for lo in range(0, len(sa), step):
+        _block_splits(sa[lo:lo + step], sb[lo:lo + step], ca, cb, tol,
+                      s_splits[lo:lo + step], c_splits)
+    return s_splits, c_splits
+
+
+def _block_splits(sa, sb, ca, cb, tol, s_splits, c_splits):
+    """:func:`_splits` for one block of subject edges (appends to the lists)."""
     r = sb - sa
     s = cb - ca
     rlen = np.hypot(r[:, 0], r[:, 1])
@@ -129,7 +142,6 @@ def _splits(sa, sb, ca, cb, tol):
             uu = float(np.dot(p - ca[j], s[j]) / max(slen[j] ** 2, tol * tol))
             if 0.0 <= uu <= 1.0:
                 c_splits[j].append((uu, (float(p[0]), float(p[1]))))
-    return s_splits, c_splits
 
 
 def _pieces(a, b, splits):
@@ -153,9 +165,13 @@ def _classify(pieces, rings, a, b, tol):
         return np.zeros(0, int)
     p = np.array(pieces, np.float64)
     mid = 0.5 * (p[:, 0] + p[:, 1])
-    on = _distance_to_boundary(mid, a, b) <= tol
-    ins = inside_even_odd(mid, rings)
-    return np.where(on, 0, np.where(ins, 1, -1))
+    out = np.empty(len(mid), int)
+    step = max(1, CHUNK // max(1, len(a)))
+    for lo in range(0, len(mid), step):
+        m = mid[lo:lo + step]
+        on = _distance_to_boundary(m, a, b) <= tol
+        out[lo:lo + step] = np.where(on, 0, np.where(inside_even_odd(m, rings), 1, -1))
+    return out
 
 
 def _snap_vertices(rings, targets, tol):

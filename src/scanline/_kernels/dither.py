@@ -26,26 +26,28 @@ def unit_value(row, col, lut):
 
 
 @kernel
-def ordered_levels(src, lut, thresholds, levels, out):
+def ordered_levels(src, lut, thresholds, values, out):
     """Ordered dithering of one channel to ``levels`` evenly spaced levels.
 
     A value ``v`` lies between levels ``q = floor(v * (levels - 1))`` and ``q + 1``;
     the pixel takes ``q + 1`` when the fraction beyond ``q`` reaches the threshold
     ``thresholds[row mod n, col mod m]`` (values in (0, 1); a threshold of 1/2
-    rounds to the nearest level, halves up).  ``v = 1`` gives the top level.
+    rounds to the nearest level, halves up).  The levels are ``len(values)``; ``out`` receives ``values[level]`` (the level itself,
+    a bit or a gray value).
     """
     height, width = src.shape
     row_mask = thresholds.shape[0] - 1
     col_mask = thresholds.shape[1] - 1
-    top = np.float32(levels - 1)
+    below_top = values.shape[0] - 2      # q + 1 is at most the top level
+    top = np.float32(below_top + 1)
     for row in range(height):
         trow = thresholds[row & row_mask]
         srow = src[row]
         orow = out[row]
         for col in range(width):
             v = unit_value(srow, col, lut) * top
-            q = np.int32(v)
-            orow[col] = q + (v - np.float32(q) >= trow[col & col_mask])
+            q = min(max(np.int64(v), 0), below_top)
+            orow[col] = values[q + (v - np.float32(q) >= trow[col & col_mask])]
 
 
 @kernel
@@ -63,22 +65,34 @@ def palette_cells(palette, grid, low, span, cells, counts):
     last = counts.shape[0] - 1
     size = span / grid
     slack = 1e-6        # boxes a little larger: float rounding of the cell index
+    # per channel, per slab of cells along it, per entry: the squared distance to the
+    # slab (0 inside) and to its far side; a cell's distances are sums of three
+    gap2 = np.empty((channels, grid, n), np.float64)
+    far2 = np.empty((channels, grid, n), np.float64)
+    for k in range(channels):
+        for j in range(grid):
+            lo = low + j * size - slack
+            hi = lo + size + 2 * slack
+            for i in range(n):
+                x = palette[i, k]
+                gap = max(lo - x, x - hi, 0.0)
+                far = max(x - lo, hi - x)
+                gap2[k, j, i] = gap * gap
+                far2[k, j, i] = far * far
     near = np.empty(n, np.float64)
+    slab = np.empty(channels, np.int64)
     for cell in range(last):
+        rest = cell
+        for k in range(channels):
+            slab[k] = rest % grid
+            rest //= grid
         threshold = np.inf
         for i in range(n):
             d_near = 0.0
             d_far = 0.0
-            rest = cell
             for k in range(channels):
-                lo = low + (rest % grid) * size - slack
-                hi = lo + size + 2 * slack
-                rest //= grid
-                x = palette[i, k]
-                gap = max(lo - x, x - hi, 0.0)
-                far = max(x - lo, hi - x)
-                d_near += gap * gap
-                d_far += far * far
+                d_near += gap2[k, slab[k], i]
+                d_far += far2[k, slab[k], i]
             near[i] = d_near
             threshold = min(threshold, d_far)
         count = 0
@@ -153,7 +167,7 @@ def _diffuse(cur, nxt, col, step, k, e):
 
 
 @helper
-def _levels_row(src, lut, out, errors, row, start, stop, step, top):
+def _levels_row(src, lut, values, out, errors, row, start, stop, step, top):
     """One row of :func:`diffuse_levels`.  ``errors[p]`` (p = col + 1, padded by one
     column each side) holds the error this row receives from the row above; as the
     scan passes, the slot it has just read is refilled with the next row's error.
@@ -182,7 +196,7 @@ def _levels_row(src, lut, out, errors, row, start, stop, step, top):
             level = one if v >= half else zero
         else:
             level = min(max(np.floor(v * top + half), zero), top)
-        out[row, col] = np.uint8(level)
+        out[row, col] = values[np.int64(level)]
         e = v - level * scale
         errors[p - step] = behind + e * np.float32(3.0 / 16.0)
         behind = below + e * np.float32(5.0 / 16.0)
@@ -193,7 +207,7 @@ def _levels_row(src, lut, out, errors, row, start, stop, step, top):
 
 
 @kernel
-def diffuse_levels(src, lut, levels, serpentine, out):
+def diffuse_levels(src, lut, values, serpentine, out):
     """Floyd-Steinberg error diffusion of one channel to ``levels`` evenly spaced
     levels.
 
@@ -201,16 +215,17 @@ def diffuse_levels(src, lut, levels, serpentine, out):
     ``serpentine``); each pixel plus the error it received is rounded to the nearest
     level (halves up) and its error spread to the unvisited neighbors: 7/16 ahead,
     3/16 below behind, 5/16 below, 1/16 below ahead.  Error that would leave the
-    image is dropped.
+    image is dropped.  The levels are ``len(values)``; ``out`` receives
+    ``values[level]``.
     """
     height, width = src.shape
     errors = np.zeros(width + 2, np.float32)
-    top = np.float32(levels - 1)
+    top = np.float32(values.shape[0] - 1)
     for row in range(height):
         if serpentine and row & 1:
-            _levels_row(src, lut, out, errors, row, width - 1, -1, -1, top)
+            _levels_row(src, lut, values, out, errors, row, width - 1, -1, -1, top)
         else:
-            _levels_row(src, lut, out, errors, row, 0, width, 1, top)
+            _levels_row(src, lut, values, out, errors, row, 0, width, 1, top)
 
 
 @helper

@@ -181,17 +181,18 @@ def dither(source, method="floyd-steinberg", levels=None, palette=None, *, mode=
     image = rgb_image if out_mode == "RGB" else gray_image
     pixels = image(source, keep_uint8=True)
     lut = UNIT_LUT if pixels.dtype == np.uint8 else None
+    # what the kernels store for each level: a bit, or a gray (channel) value
+    values = np.arange(2, dtype=np.uint8) if out_mode == "1" else gray_table(levels)[:, 0]
     out = np.empty((pixels.shape[2],) + pixels.shape[:2], np.uint8)
     for k in range(pixels.shape[2]):   # channels are independent
         channel = np.ascontiguousarray(pixels[:, :, k])
         if method == "floyd-steinberg":
-            kernels.diffuse_levels(channel, lut, levels, bool(serpentine), out[k])
+            kernels.diffuse_levels(channel, lut, values, bool(serpentine), out[k])
         else:
-            kernels.ordered_levels(channel, lut, _thresholds(method), levels, out[k])
+            kernels.ordered_levels(channel, lut, _thresholds(method), values, out[k])
     if out_mode == "1":
         return FrameBuffer.from_array(out[0].view(bool))
-    values = gray_table(levels)[:, 0][out]
-    return FrameBuffer.from_array(values[0] if out_mode == "L" else values.transpose(1, 2, 0))
+    return FrameBuffer.from_array(out[0] if out_mode == "L" else out.transpose(1, 2, 0))
 
 
 def gray_levels(source, n=None, *, bits=None):

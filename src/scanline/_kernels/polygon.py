@@ -66,14 +66,16 @@ def rule_mask(rule):
 
 
 @helper
-def build_edges(verts, contours, c0, c1, ox, oy, height, et):
+def build_edges(verts, contours, c0, c1, ox, oy, height, et, ef):
     """Fill the edge table ``et`` (int64 rows) with the non-horizontal edges of
     contours ``c0 .. c1-1`` that are active on some raster row; return their count.
 
     Row ``i`` of ``et``: first row, last row, direction (+1 up, -1 down), integer
-    flag, vertex index of the lower endpoint, of the upper endpoint, then for an
-    integer edge its key (raster x) and remainder at the first row, the per-row
-    quotient and remainder of dx / dy, and dy.
+    flag, then for an integer edge its key (raster x) and remainder at the first
+    row, the per-row quotient and remainder of dx / dy, and dy.  Row ``i`` of
+    ``ef`` (float64): the lower endpoint (xlo, ylo), xhi - xlo and yhi - ylo, from
+    which the other edges evaluate their crossing on every row (kept beside the
+    table: reading them from ``verts`` through vertex indices was slower).
     """
     n = 0
     for c in range(c0, c1):
@@ -103,20 +105,22 @@ def build_edges(verts, contours, c0, c1, ox, oy, height, et):
             et[n, 1] = r1
             et[n, 2] = d
             et[n, 3] = 1 if exact else 0
-            et[n, 4] = lo
-            et[n, 5] = hi
+            ef[n, 0] = xlo
+            ef[n, 1] = ylo
+            ef[n, 2] = xhi - xlo
+            ef[n, 3] = yhi - ylo
             if exact:
                 x0 = int(xlo)
                 dx = int(xhi) - x0
                 dy = int(yhi) - int(ylo)
                 num = (r0 + oy - int(ylo)) * dx
                 q = -((-num) // dy)           # ceil(num / dy)
-                et[n, 6] = x0 + q - ox
-                et[n, 7] = q * dy - num       # 0 <= remainder < dy
+                et[n, 4] = x0 + q - ox
+                et[n, 5] = q * dy - num       # 0 <= remainder < dy
                 qd = dx // dy
-                et[n, 8] = qd
-                et[n, 9] = dx - qd * dy
-                et[n, 10] = dy
+                et[n, 6] = qd
+                et[n, 7] = dx - qd * dy
+                et[n, 8] = dy
             n += 1
     return n
 
@@ -146,9 +150,9 @@ def sort_by_row(et, n, counts, order):
 
 @helper
 def fill_polygon(buf, packed, width, height, ox, oy, verts, contours, c0, c1, color,
-                 rule, et, counts, order, active, keys, dirs):
+                 rule, et, ef, counts, order, active, keys, dirs):
     """Scan-convert one polygon (contours ``c0 .. c1-1``) into the raster."""
-    n = build_edges(verts, contours, c0, c1, ox, oy, height, et)
+    n = build_edges(verts, contours, c0, c1, ox, oy, height, et, ef)
     if n == 0:
         return
     rmin, rmax = sort_by_row(et, n, counts, order)
@@ -174,17 +178,13 @@ def fill_polygon(buf, packed, width, height, ox, oy, verts, contours, c0, c1, co
                 if et[e, 0] < r:  # exact step by dx/dy: a quotient and a remainder
                     # (without a branch: ``borrow`` is -1 when the remainder went
                     # negative, else 0; the unpredictable ``if`` cost 15% of the fill)
-                    rem = et[e, 7] - et[e, 9]
+                    rem = et[e, 5] - et[e, 7]
                     borrow = rem >> 63
-                    et[e, 6] += et[e, 8] - borrow
-                    et[e, 7] = rem + (et[e, 10] & borrow)
-                key = et[e, 6]
+                    et[e, 4] += et[e, 6] - borrow
+                    et[e, 5] = rem + (et[e, 8] & borrow)
+                key = et[e, 4]
             else:
-                lo = et[e, 4]
-                hi = et[e, 5]
-                xlo = verts[lo, 0]
-                ylo = verts[lo, 1]
-                xc = xlo + ((y - ylo) * (verts[hi, 0] - xlo)) / (verts[hi, 1] - ylo)
+                xc = ef[e, 0] + ((y - ef[e, 1]) * ef[e, 2]) / ef[e, 3]
                 key = int(math.ceil(xc)) - ox
             b = k
             while b > 0:  # (an ``and`` in this test compiled to much slower code)
@@ -254,7 +254,8 @@ def band_reordered(verts, contours, polys, oy, height):
 def polygons_loop(buf, packed, width, height, ox, oy, verts, contours, polys, colors,
                   rule, max_edges):
     size = max(max_edges, 1)
-    et = np.empty((size, 11), np.int64)
+    et = np.empty((size, 9), np.int64)
+    ef = np.empty((size, 4), np.float64)
     counts = np.empty(height + 2, np.int64)
     order = np.empty(size, np.int64)
     active = np.empty(size, np.int64)
@@ -265,7 +266,7 @@ def polygons_loop(buf, packed, width, height, ox, oy, verts, contours, polys, co
         verts, contours, polys = band_reordered(verts, contours, polys, oy, height)
     for p in range(polys.shape[0] - 1):
         fill_polygon(buf, packed, width, height, ox, oy, verts, contours, polys[p],
-                     polys[p + 1], colors[0 if one else p], rule, et, counts, order,
+                     polys[p + 1], colors[0 if one else p], rule, et, ef, counts, order,
                      active, keys, dirs)
 
 

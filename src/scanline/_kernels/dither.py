@@ -3,7 +3,7 @@ diffusion, to evenly spaced levels or to the nearest color of a palette.
 
 Images are arrays in image order (row 0 at the top): ``src[row, col]`` for one
 channel (levels: the API calls the kernel once per channel, channels are
-independent) or ``src[row, col, channel]`` for palettes, float32 values in [0, 1], or
+independent) or ``src[row, col, channel]``, RGB, for palettes, float32 values in [0, 1], or
 for levels uint8 values read through ``lut`` (``lut[v] = v / 255`` in float32, the
 same values; ``lut=None`` for float32 input), which saves converting the image.  The
 kernels write level indices (0 .. levels - 1) or palette indices into a uint8 array
@@ -106,31 +106,26 @@ def palette_cells(palette, grid, low, span, cells, counts):
     counts[last] = n
 
 
-@helper
-def nearest_color(palette, cells, counts, grid, low, span, want):
-    """Index of the palette row closest to ``want`` (squared Euclidean distance; the
-    first of equally close rows), searching the candidates of ``want``'s cell (see
-    :func:`palette_cells`)."""
-    channels = want.shape[0]
-    cell = 0
-    stride = 1
-    scale = grid / span
-    for k in range(channels):
-        t = (want[k] - low) * scale
-        if t >= 0.0 and t <= grid:
-            cell += min(np.int64(t), grid - 1) * stride
-            stride *= grid
-        else:
-            cell = counts.shape[0] - 1
-            break
+@inline
+def nearest_rgb(palette, cells, counts, grid, low, scale, r, g, b):
+    """Index of the palette row closest to the color ``(r, g, b)`` (squared Euclidean
+    distance; the first of equally close rows), searching the candidates of the
+    color's cell (see :func:`palette_cells`; ``scale = grid / span``)."""
+    t0 = (r - low) * scale
+    t1 = (g - low) * scale
+    t2 = (b - low) * scale
+    if (t0 >= 0) & (t0 < grid) & (t1 >= 0) & (t1 < grid) & (t2 >= 0) & (t2 < grid):
+        cell = np.int64(t0) + grid * (np.int64(t1) + grid * np.int64(t2))
+    else:
+        cell = counts.shape[0] - 1
     best = 0
     best_d = np.inf
     for j in range(counts[cell]):
         i = cells[cell, j]
-        d = 0.0
-        for k in range(channels):
-            diff = want[k] - palette[i, k]
-            d += diff * diff
+        d0 = np.float64(r - palette[i, 0])
+        d1 = np.float64(g - palette[i, 1])
+        d2 = np.float64(b - palette[i, 2])
+        d = d0 * d0 + d1 * d1 + d2 * d2
         if d < best_d:
             best_d = d
             best = i
@@ -139,31 +134,23 @@ def nearest_color(palette, cells, counts, grid, low, span, want):
 
 @kernel
 def ordered_palette(src, thresholds, spread, palette, cells, counts, grid, low, span, out):
-    """Ordered dithering to a palette: channel ``k`` of each pixel, offset by
-    ``(1/2 - threshold) * spread[k]``, then the nearest palette color (for evenly
-    spaced levels and ``spread`` one step, the same choice as :func:`ordered_levels`).
-    With a zero ``spread`` this is plain nearest-color quantization."""
-    height, width, channels = src.shape
+    """Ordered dithering to a palette of RGB colors: channel ``k`` of each pixel,
+    offset by ``(1/2 - threshold) * spread[k]``, then the nearest palette color (for
+    evenly spaced levels and ``spread`` one step, the same choice as
+    :func:`ordered_levels`).  With a zero ``spread`` this is plain nearest-color
+    quantization."""
+    height, width = src.shape[:2]
     row_mask = thresholds.shape[0] - 1
     col_mask = thresholds.shape[1] - 1
-    want = np.empty(channels, np.float32)
+    scale = grid / span
     for row in range(height):
         trow = thresholds[row & row_mask]
         for col in range(width):
             offset = np.float32(0.5) - trow[col & col_mask]
-            for k in range(channels):
-                want[k] = src[row, col, k] + offset * spread[k]
-            out[row, col] = nearest_color(palette, cells, counts, grid, low, span, want)
-
-
-@helper
-def _diffuse(cur, nxt, col, step, k, e):
-    """Floyd-Steinberg's weights: 7/16 ahead on this row, 3/16 behind, 5/16 below and
-    1/16 ahead on the next row (``col`` is the padded column, ``step`` +-1)."""
-    cur[col + step, k] += e * np.float32(7.0 / 16.0)
-    nxt[col - step, k] += e * np.float32(3.0 / 16.0)
-    nxt[col, k] += e * np.float32(5.0 / 16.0)
-    nxt[col + step, k] += e * np.float32(1.0 / 16.0)
+            out[row, col] = nearest_rgb(palette, cells, counts, grid, low, scale,
+                                        src[row, col, 0] + offset * spread[0],
+                                        src[row, col, 1] + offset * spread[1],
+                                        src[row, col, 2] + offset * spread[2])
 
 
 @helper
@@ -229,33 +216,60 @@ def diffuse_levels(src, lut, values, serpentine, out):
 
 
 @helper
-def _palette_row(src, palette, cells, counts, grid, low, span, out, cur, nxt, want, row,
+def _palette_row(src, palette, cells, counts, grid, low, scale, out, errors, row,
                  start, stop, step):
-    channels = src.shape[2]
+    """One row of :func:`diffuse_palette`: :func:`_levels_row`'s scheme (one error
+    buffer refilled as the scan passes, the errors ahead and below in locals) for
+    the three channels at once."""
+    seven = np.float32(7.0 / 16.0)
+    five = np.float32(5.0 / 16.0)
+    three = np.float32(3.0 / 16.0)
+    one = np.float32(1.0 / 16.0)
+    zero = np.float32(0.0)
+    ahead_r = ahead_g = ahead_b = zero
+    behind_r = behind_g = behind_b = zero
+    below_r = below_g = below_b = zero
     for col in range(start, stop, step):
-        for k in range(channels):
-            want[k] = src[row, col, k] + cur[col + 1, k]
-        best = nearest_color(palette, cells, counts, grid, low, span, want)
+        p = col + 1
+        r = (src[row, col, 0] + errors[p, 0]) + ahead_r
+        g = (src[row, col, 1] + errors[p, 1]) + ahead_g
+        b = (src[row, col, 2] + errors[p, 2]) + ahead_b
+        best = nearest_rgb(palette, cells, counts, grid, low, scale, r, g, b)
         out[row, col] = best
-        for k in range(channels):
-            _diffuse(cur, nxt, col + 1, step, k, want[k] - palette[best, k])
+        e_r = r - palette[best, 0]
+        e_g = g - palette[best, 1]
+        e_b = b - palette[best, 2]
+        errors[p - step, 0] = behind_r + e_r * three
+        errors[p - step, 1] = behind_g + e_g * three
+        errors[p - step, 2] = behind_b + e_b * three
+        behind_r = below_r + e_r * five
+        behind_g = below_g + e_g * five
+        behind_b = below_b + e_b * five
+        below_r = e_r * one
+        below_g = e_g * one
+        below_b = e_b * one
+        ahead_r = e_r * seven
+        ahead_g = e_g * seven
+        ahead_b = e_b * seven
+    errors[stop - step + 1, 0] = behind_r
+    errors[stop - step + 1, 1] = behind_g
+    errors[stop - step + 1, 2] = behind_b
 
 
 @kernel
 def diffuse_palette(src, palette, cells, counts, grid, low, span, serpentine, out):
-    """Floyd-Steinberg error diffusion to the nearest colors of ``palette`` (float32
-    rows in [0, 1], as many channels as ``src``; ``cells``, ``counts``, ``grid``,
-    ``low`` and ``span`` from :func:`palette_cells`); ``out`` receives palette indices."""
-    height, width, channels = src.shape
-    errors = np.zeros((2, width + 2, channels), np.float32)
-    want = np.empty(channels, np.float32)
+    """Floyd-Steinberg error diffusion of an RGB image ``src`` (h, w, 3) to the
+    nearest colors of ``palette`` (float32 RGB rows in [0, 1]; ``cells``, ``counts``,
+    ``grid``, ``low`` and ``span`` from :func:`palette_cells`); ``out`` receives
+    palette indices.  Each channel's error is diffused with Floyd and Steinberg's
+    weights, in the same order as :func:`diffuse_levels`."""
+    height, width = src.shape[:2]
+    errors = np.zeros((width + 2, 3), np.float32)
+    scale = grid / span
     for row in range(height):
-        cur = errors[row & 1]
-        nxt = errors[(row + 1) & 1]
-        nxt[:, :] = 0.0
         if serpentine and row & 1:
-            _palette_row(src, palette, cells, counts, grid, low, span, out, cur, nxt, want, row,
+            _palette_row(src, palette, cells, counts, grid, low, scale, out, errors, row,
                          width - 1, -1, -1)
         else:
-            _palette_row(src, palette, cells, counts, grid, low, span, out, cur, nxt, want, row,
+            _palette_row(src, palette, cells, counts, grid, low, scale, out, errors, row,
                          0, width, 1)

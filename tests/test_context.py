@@ -5,9 +5,12 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 import scanline as sl
 from scanline import transform as tf
+from tests.reference import HYPOTHESIS
 
 
 def frame(width=40, height=30):
@@ -205,3 +208,49 @@ def test_bad_input(call, message):
 def test_target_must_be_a_frame_buffer_or_device():
     with pytest.raises(sl.ArgumentValueError, match="FrameBuffer or a display device"):
         sl.Context("picture.png")
+
+
+_num = st.one_of(st.sampled_from([0.0, 1e-300, 1e300, -1e300, 2.0**31, float("nan"),
+                                  float("inf")]), st.floats(-1e4, 1e4))
+
+
+@HYPOTHESIS
+@given(st.lists(st.tuples(st.sampled_from(["translate", "rotate", "scale", "shear", "clip"]),
+                          _num, _num), max_size=4),
+       st.lists(st.tuples(st.sampled_from(["line", "polygon", "circle", "ellipse", "text",
+                                           "markers"]), _num, _num, _num), max_size=4))
+def test_fuzzed_states_and_drawings_never_crash(ops, draws):
+    """Any CTM (huge, tiny, degenerate) and any geometry: drawing works or raises a
+    ScanlineError, on a raster and on a vector device."""
+    for target in (sl.FrameBuffer(20, 15, mode="1"), sl.display.VectorDevice(20, 15)):
+        ctx = sl.Context(target)
+        for op, a, b in ops:
+            try:
+                if op == "translate":
+                    ctx.translate(a, b)
+                elif op == "rotate":
+                    ctx.rotate(a, pivot=(b, a))
+                elif op == "scale":
+                    ctx.scale(a, b)
+                elif op == "shear":
+                    ctx.shear(a, b)
+                else:
+                    ctx.clip((a, b, a + abs(b) + 1, b + 5))
+            except sl.ScanlineError:
+                pass
+        for kind, a, b, c in draws:
+            try:
+                if kind == "line":
+                    ctx.line(a, b, c, a)
+                elif kind == "polygon":
+                    ctx.polygon([(a, b), (c, a), (b, c)])
+                elif kind == "circle":
+                    ctx.circle(a, b, abs(c), fill=c > 0)
+                elif kind == "ellipse":
+                    ctx.ellipse(a, b, abs(c), abs(a), angle=b, fill=True)
+                elif kind == "text":
+                    ctx.text(a, b, "Ab")
+                else:
+                    ctx.markers([(a, b)], kind="asterisk")
+            except sl.ScanlineError:
+                pass

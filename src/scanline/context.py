@@ -142,7 +142,13 @@ class Context:
         """Compose ``m`` onto the CTM: CTM := CTM · m (``m`` acts first)."""
         t = tf.compose(m)
         tf.apply(t, (0.0, 0.0))
-        self._state.ctm = self._state.ctm @ t
+        with np.errstate(all="ignore"):
+            ctm = self._state.ctm @ t
+        if not np.isfinite(ctm).all():
+            raise ArgumentValueError(
+                f"the transformation overflows the CTM (CTM {self._state.ctm.tolist()} "
+                f"times {t.tolist()}); use smaller factors or distances")
+        self._state.ctm = ctm
 
     def translate(self, tx, ty):
         """CTM := CTM · T(tx, ty)."""
@@ -222,8 +228,13 @@ class Context:
         """Intersect the clip region with ``window`` = (xmin, ymin, xmax, ymax) in
         user coordinates (mapped by the CTM: a rotated CTM gives a turned window)."""
         r = rectangle(window, "window")
-        corners = tf.apply(self._state.ctm, np.array(
-            [(r[0], r[1]), (r[2], r[1]), (r[2], r[3]), (r[0], r[3])]))
+        with np.errstate(all="ignore"):
+            corners = tf.apply(self._state.ctm, np.array(
+                [(r[0], r[1]), (r[2], r[1]), (r[2], r[3]), (r[0], r[3])]))
+        if not (np.abs(corners) <= v.COORD_LIMIT).all():
+            raise ArgumentValueError(
+                f"window={window!r} maps to device coordinates beyond +-{v.COORD_LIMIT} "
+                "under the current transformation; use a smaller window")
         if np.linalg.det(self._state.ctm[:2, :2]) < 0:
             corners = corners[::-1]  # keep the polygon counterclockwise
         old = self._state.clip

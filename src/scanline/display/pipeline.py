@@ -32,6 +32,11 @@ _MARKER_STROKES = {
 def ellipse_points(center, axes):
     """The ellipse ``center + axes @ (cos t, sin t)`` as a closed polygon (first point
     not repeated) within :data:`FLATNESS` of the curve."""
+    with np.errstate(all="ignore"):  # overflow -> inf, refused when drawn
+        return _ellipse_points(center, axes)
+
+
+def _ellipse_points(center, axes):
     r = float(np.sqrt((axes * axes).sum(axis=0)).max())
     # a chord of the angle 2 pi / n stays within r (1 - cos(pi / n)) of the circle
     step = math.acos(1.0 - FLATNESS / r) if r > FLATNESS else math.pi / 2

@@ -190,7 +190,11 @@ class Primitive:
         """This primitive with its geometry mapped by the affine 3x3 matrix ``m``
         (the clipping rectangle is not moved: GKS clips after the segment
         transformation)."""
-        lin, t = m[:2, :2], m[:2, 2]
+        with np.errstate(all="ignore"):  # overflow -> inf, refused when drawn
+            return Primitive(self.kind, self._moved(m[:2, :2], m[:2, 2]), self.attributes,
+                             self.clip)
+
+    def _moved(self, lin, t):
         g = self.geometry
 
         def move(p):
@@ -204,7 +208,7 @@ class Primitive:
             geometry = {**g, "center": move(g["center"]), "axes": lin @ g["axes"]}
         else:
             geometry = {**g, "anchor": move(g["anchor"]), "frame": lin @ g["frame"]}
-        return Primitive(self.kind, geometry, self.attributes, self.clip)
+        return geometry
 
     def __repr__(self):
         return f"<{self.kind} primitive>"

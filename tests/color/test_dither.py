@@ -231,13 +231,18 @@ def test_ordered_dither_renders_its_n2_plus_1_levels_exactly(method, n):
 
 
 @pytest.mark.parametrize("method", ORDERED)
-def test_ordered_dither_matches_a_numpy_threshold_map(method):
+@pytest.mark.parametrize("dtype", [np.float64, np.uint8])
+def test_ordered_dither_matches_a_numpy_threshold_map(method, dtype):
+    # (uint8 images take another path in the kernel: a table per threshold)
     n = int(method[5:])
     image = RNG.random((37, 45))
-    for levels in (2, 5):
-        thresholds = (sl.color.bayer_matrix(n) + 0.5) / n ** 2
+    if dtype == np.uint8:
+        image = (image * 255).round().astype(np.uint8)
+    unit = image.astype(np.float32) / np.float32(255) if dtype == np.uint8 else image.astype(np.float32)
+    for levels in (2, 5, 256):
+        thresholds = ((sl.color.bayer_matrix(n) + 0.5) / n ** 2).astype(np.float32)
         tiled = np.tile(thresholds, (37 // n + 1, 45 // n + 1))[:37, :45]
-        scaled = image.astype(np.float32) * (levels - 1)
+        scaled = unit * np.float32(levels - 1)
         expected = np.floor(scaled) + (scaled - np.floor(scaled) >= tiled)
         expected = np.minimum(expected, levels - 1).astype(int)
         got = sl.color.dither(image, method, levels=levels, mode="L").to_array()

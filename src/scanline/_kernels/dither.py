@@ -25,29 +25,49 @@ def unit_value(row, col, lut):
     return lut[row[col]]
 
 
+@inline
+def ordered_value(x, t, top, values):
+    """Ordered dithering of one value ``x`` in [0, 1] with threshold ``t``: ``x``
+    lies between levels ``q = floor(x * top)`` and ``q + 1``, and takes ``q + 1``
+    when its fraction beyond ``q`` reaches ``t``; returns ``values[level]``."""
+    v = x * top
+    q = min(max(np.int64(v), 0), values.shape[0] - 2)    # q + 1 <= top
+    return values[q + (v - np.float32(q) >= t)]
+
+
 @kernel
 def ordered_levels(src, lut, thresholds, values, out):
-    """Ordered dithering of one channel to ``levels`` evenly spaced levels.
+    """Ordered dithering of one channel to ``len(values)`` evenly spaced levels:
+    ``out`` receives ``values[level]`` (the level itself, a bit or a gray value)
+    with the threshold ``thresholds[row mod n, col mod m]`` (values in (0, 1); a
+    threshold of 1/2 rounds to the nearest level, halves up).
 
-    A value ``v`` lies between levels ``q = floor(v * (levels - 1))`` and ``q + 1``;
-    the pixel takes ``q + 1`` when the fraction beyond ``q`` reaches the threshold
-    ``thresholds[row mod n, col mod m]`` (values in (0, 1); a threshold of 1/2
-    rounds to the nearest level, halves up).  The levels are ``len(values)``; ``out`` receives ``values[level]`` (the level itself,
-    a bit or a gray value).
+    uint8 input (``lut`` given) is dithered through a table of the result for each
+    threshold and each of the 256 values, computed by the same arithmetic: one
+    lookup per pixel.
     """
     height, width = src.shape
-    row_mask = thresholds.shape[0] - 1
-    col_mask = thresholds.shape[1] - 1
-    below_top = values.shape[0] - 2      # q + 1 is at most the top level
-    top = np.float32(below_top + 1)
-    for row in range(height):
-        trow = thresholds[row & row_mask]
-        srow = src[row]
-        orow = out[row]
-        for col in range(width):
-            v = unit_value(srow, col, lut) * top
-            q = min(max(np.int64(v), 0), below_top)
-            orow[col] = values[q + (v - np.float32(q) >= trow[col & col_mask])]
+    rows, cols = thresholds.shape
+    top = np.float32(values.shape[0] - 1)
+    if lut is None:
+        for row in range(height):
+            trow = thresholds[row & (rows - 1)]
+            srow = src[row]
+            orow = out[row]
+            for col in range(width):
+                orow[col] = ordered_value(srow[col], trow[col & (cols - 1)], top, values)
+    else:
+        table = np.empty((rows, cols, 256), np.uint8)
+        for i in range(rows):
+            for j in range(cols):
+                for x in range(256):
+                    table[i, j, x] = ordered_value(lut[x], thresholds[i, j], top, values)
+        for row in range(height):
+            trow = table[row & (rows - 1)]
+            srow = src[row]
+            orow = out[row]
+            for col in range(width):
+                orow[col] = trow[col & (cols - 1), srow[col]]
 
 
 @kernel

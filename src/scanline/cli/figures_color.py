@@ -2,6 +2,7 @@
 color tables (:mod:`scanline.color`)."""
 
 import numpy as np
+from PIL import ImageOps
 
 import scanline as sl
 
@@ -84,4 +85,28 @@ def figure_color_models():
         None)
 
 
-FIGURES = (figure_dithering, figure_color_models)
+def figure_halftone():
+    """The dot patterns of halftoning: every pattern of a 2x2 and a 4x4 cell."""
+    rows = []
+    for size, scale in ((2, 20), (4, 10)):
+        n = size * size + 1
+        patterns = sl.color.halftone(np.linspace(0.0, 1.0, n)[None], size).to_pil()
+        cells = [ImageOps.expand(enlarge(patterns.crop((i * size, 0, (i + 1) * size, size)),
+                                         scale).convert("RGB"), border=2, fill=(150, 150, 150))
+                 for i in range(n)]
+        rows.append(side_by_side(cells, [str(i) for i in range(n)], gap=10))
+    photo = sl.color.halftone(_photo_like(48, 36), 4)
+    rows.append(side_by_side([enlarge(photo.to_pil(), 2)], ["the gray image, 4x4 cells"]))
+    return Figure(
+        "halftone", "Halftone patterns",
+        "A cell of n x n pixels shows n*n + 1 intensity levels by how many of its dots "
+        "are set (white): the 5 patterns of a 2x2 cell and the 17 of a 4x4 cell, "
+        "labeled with their number of dots. The dots are added in the "
+        "order of Bayer's matrix, so each pattern contains the one before it and the "
+        "dots stay spread out. sl.color.halftone trades resolution for levels: the "
+        "48 x 36 image becomes 192 x 144 pixels.",
+        "Notes, chapter 2 syllabus (Color and gray scale levels); glossary (Dithering)",
+        stacked(rows), None)
+
+
+FIGURES = (figure_dithering, figure_halftone, figure_color_models)

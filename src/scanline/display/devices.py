@@ -105,27 +105,11 @@ class VectorDevice:
 
     def __init__(self, width, height):
         self.width, self.height = width, height
-        self.commands = []
-        self._color = None
-        self._beam = None
-
-    def _set_color(self, color):
-        c = rgba(color)
-        if c != self._color:
-            self.commands.append(("COLOR",) + c)
-            self._color = c
-
-    def _segment(self, x0, y0, x1, y1):
-        if self._beam != (x0, y0):
-            self.commands.append(("MOVE", x0, y0))
-        self.commands.append(("LINE", x1, y1))
-        self._beam = (x1, y1)
+        self._chunks = []  # (rgba, (N, 4) segments) in drawing order
 
     def _draw(self, segments, color):
         if len(segments):
-            self._set_color(color)
-        for x0, y0, x1, y1 in segments.tolist():
-            self._segment(x0, y0, x1, y1)
+            self._chunks.append((rgba(color), np.asarray(segments, np.float64)))
 
     def stroke(self, pieces, closed, attributes):
         self._draw(_segments(pieces, closed), attributes["color"])
@@ -134,16 +118,25 @@ class VectorDevice:
         self._draw(_fill_strokes(contours, attributes), attributes["color"])
         self._draw(_segments(contours, True), attributes["color"])
 
+    @property
+    def commands(self):
+        """The beam commands: ``("COLOR", r, g, b, a)``, ``("MOVE", x, y)``,
+        ``("LINE", x, y)``; a MOVE only where a line does not start at the beam."""
+        out, color, beam = [], None, None
+        for c, segments in self._chunks:
+            if c != color:
+                out.append(("COLOR",) + c)
+                color = c
+            for x0, y0, x1, y1 in segments.tolist():
+                if beam != (x0, y0):
+                    out.append(("MOVE", x0, y0))
+                out.append(("LINE", x1, y1))
+                beam = (x1, y1)
+        return out
+
     def lines(self):
         """The LINE commands as (N, 4) segments (x0, y0, x1, y1) in device units."""
-        out, beam = [], None
-        for cmd in self.commands:
-            if cmd[0] == "MOVE":
-                beam = cmd[1:]
-            elif cmd[0] == "LINE":
-                out.append(beam + cmd[1:])
-                beam = cmd[1:]
-        return np.array(out, np.float64).reshape(-1, 4)
+        return np.vstack([np.zeros((0, 4))] + [seg for _, seg in self._chunks])
 
     def listing(self):
         """The commands as text, one per line (``MOVE x y``, ``LINE x y``,

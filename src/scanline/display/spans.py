@@ -26,62 +26,53 @@ def _edges(contours):
     return np.vstack(rows) if rows else np.zeros((0, 5))
 
 
-def _runs(keys, dirs, rule):
-    """Pairs (start, end) of the inside runs between sorted crossing keys."""
-    order = np.argsort(keys, kind="stable")
-    keys, dirs = keys[order], dirs[order]
+def _chords(edges, spacing, rule, keys):
+    """The inside runs of the lines y = k * spacing: rows (x0, y, x1, y).
+
+    Every edge crosses the lines with ylo < y <= yhi at
+    ``xlo + (y - ylo) (xhi - xlo) / (yhi - ylo)``; ``keys`` maps those crossings to
+    run ends (``np.ceil`` for pixel spans).  The crossings of each line, sorted, bound
+    the runs that are inside by the fill rule: odd parity, or a nonzero sum of the
+    edges' directions.  All lines at once, in numpy.
+    """
+    k0 = np.floor(edges[:, 1] / spacing) + 1
+    k1 = np.floor(edges[:, 3] / spacing)
+    count = np.maximum(k1 - k0 + 1, 0).astype(np.int64)
+    if count.sum() == 0:
+        return np.zeros((0, 4))
+    e = np.repeat(np.arange(len(edges)), count)
+    first = np.repeat(np.cumsum(count) - count, count)
+    y = (np.repeat(k0, count) + (np.arange(len(e)) - first)) * spacing
+    xlo, ylo, xhi, yhi, d = edges[e].T
+    x = keys(xlo + ((y - ylo) * (xhi - xlo)) / (yhi - ylo))
+    order = np.lexsort((x, y))
+    x, y, d = x[order], y[order], d[order]
+    same = y[1:] == y[:-1]  # crossing i and i + 1 lie on one line
+    start = np.flatnonzero(np.concatenate([[True], ~same]))
+    group = np.cumsum(np.concatenate([[True], ~same])) - 1
     if rule == "even-odd":
-        inside = (np.arange(1, len(keys) + 1) % 2) == 1
+        inside = (np.arange(len(x)) - start[group]) % 2 == 0
     else:
-        inside = np.cumsum(dirs) != 0
-    out = []
-    for i in np.flatnonzero(inside[:-1]):
-        if keys[i] < keys[i + 1]:
-            out.append((keys[i], keys[i + 1]))
+        total = np.cumsum(d)
+        inside = total - np.concatenate([[0.0], total])[start[group]] != 0
+    run = same & inside[:-1] & (x[:-1] < x[1:])
+    return np.column_stack([x[:-1][run], y[:-1][run], x[1:][run], y[1:][run]])
+
+
+def spans(contours, rule):
+    """Horizontal strokes (N, 4) rows (x0, y, x1, y), x0 <= x1, covering the pixel
+    centers the scan-line fill covers."""
+    e = _edges(contours)
+    out = _chords(e, 1.0, rule, np.ceil)
+    out[:, 2] -= 1.0  # a span ends before the next crossing's key
     return out
 
 
-def spans(contours, rule, ymin=None, ymax=None):
-    """Horizontal strokes (N, 4) rows (x0, y, x1, y), x0 <= x1, covering the pixel
-    centers the scan-line fill covers; scan lines limited to [ymin, ymax] if given."""
-    e = _edges(contours)
-    if len(e) == 0:
-        return np.zeros((0, 4))
-    y0 = math.floor(e[:, 1].min()) + 1
-    y1 = math.floor(e[:, 3].max())
-    if ymin is not None:
-        y0, y1 = max(y0, math.ceil(ymin)), min(y1, math.floor(ymax))
-    out = []
-    for y in range(y0, y1 + 1):
-        act = e[(e[:, 1] < y) & (y <= e[:, 3])]
-        if len(act) < 2:
-            continue
-        xc = act[:, 0] + ((y - act[:, 1]) * (act[:, 2] - act[:, 0])) / (act[:, 3] - act[:, 1])
-        for a, b in _runs(np.ceil(xc), act[:, 4], rule):
-            out.append((a, y, b - 1, y))
-    return np.array(out, np.float64).reshape(-1, 4)
-
-
 def hatch(contours, rule, angle, spacing):
-    """Strokes (N, 4) at ``angle`` radians, ``spacing`` apart (lines through the
-    origin's family), clipped to the inside of the area: exact chords, not pixels."""
+    """Strokes (N, 4) at ``angle`` radians, ``spacing`` apart (the family of lines
+    through the origin), clipped to the inside of the area: exact chords, not pixels."""
     c, s = math.cos(angle), math.sin(angle)
     to_local = np.array([[c, s], [-s, c]])  # rotate by -angle: hatch lines horizontal
-    local = [p @ to_local.T for p in contours]
-    e = _edges(local)
-    if len(e) == 0:
-        return np.zeros((0, 4))
-    k0 = math.floor(e[:, 1].min() / spacing) + 1
-    k1 = math.floor(e[:, 3].max() / spacing)
-    out = []
-    for k in range(k0, k1 + 1):
-        y = k * spacing
-        act = e[(e[:, 1] < y) & (y <= e[:, 3])]
-        xc = act[:, 0] + ((y - act[:, 1]) * (act[:, 2] - act[:, 0])) / (act[:, 3] - act[:, 1])
-        out.extend((a, y, b, y) for a, b in _runs(xc, act[:, 4], rule))
-    if not out:
-        return np.zeros((0, 4))
-    seg = np.array(out, np.float64)
-    back = to_local.T
-    p0, p1 = seg[:, :2] @ back.T, seg[:, 2:] @ back.T
-    return np.hstack([p0, p1])
+    seg = _chords(_edges([p @ to_local.T for p in contours]), float(spacing), rule,
+                  lambda x: x)
+    return np.hstack([seg[:, :2] @ to_local, seg[:, 2:] @ to_local])

@@ -5,6 +5,8 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 import scanline as sl
 
@@ -183,3 +185,23 @@ def test_text_style_is_immutable_and_copies():
     t = s.replace(height=7, path="down")
     assert (t.height, t.path, t.font, s.height) == (7.0, "down", "bitmap", 14.0)
     assert t.up == pytest.approx((-1, 0))
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.text(st.characters(min_codepoint=32, max_codepoint=0x2FF), min_size=1, max_size=20),
+       st.sampled_from(["sans", "bitmap", "stroke"]), st.floats(4, 60),
+       st.floats(0.25, 3), st.floats(-0.3, 1))
+def test_extent_is_the_sum_of_the_advances(text, font, height, expansion, spacing):
+    f = sl.text.fonts()[font]
+    scale = height / f.cap_height
+    advances = [f.advances[f.glyph_ids(np.array([ord(c)]))[0]] * scale * expansion
+                for c in text]
+    e = sl.text.extents(text, font=font, height=height, expansion=expansion,
+                        spacing=spacing)
+    assert e.width == pytest.approx(sum(advances) + spacing * height * (len(text) - 1),
+                                    rel=1e-9, abs=1e-9)
+    left = origins(text, font=font, height=height, expansion=expansion, spacing=spacing,
+                   path="left")
+    right = origins(text[::-1], font=font, height=height, expansion=expansion,
+                    spacing=spacing)
+    assert np.abs(left - right[::-1]).max() <= 1      # the same places, rounded

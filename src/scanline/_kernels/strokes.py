@@ -447,7 +447,10 @@ def build_strokes(verts, offsets, closed, owner, npoly, r, cap, join_kind, miter
     for i in range(n):
         longest = max(longest, offsets[i + 1] - offsets[i])
         nverts += offsets[i + 1] - offsets[i]
-    cap_v = nverts * (2 * arcs + 8) + n * (2 * arcs + 8) + 8
+    # per vertex: two corners on each side, one join (at most a half turn of arc)
+    # and one detour point; per polyline: two caps, or one disc
+    half = (arcs + 1) // 2 + 1
+    cap_v = nverts * (half + 6) + n * (arcs + 8) + 8
     cap_c = 2 * n + 2
     out = np.empty((cap_v, 2), np.float64)
     contours = np.empty(cap_c + 1, np.int64)

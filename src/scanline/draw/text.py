@@ -118,6 +118,15 @@ def text(fb, x, y, text, color=None, font=None, height=None, expansion=None, spa
     stamped (:mod:`scanline.text.glyphcache`).  In mode "1" and "P" an antialiased
     pixel is set where the coverage is at least one half.
 
+    References
+    ----------
+    D. Hearn, M. P. Baker, "Computer Graphics", 2nd ed., Prentice Hall, 1994,
+    sections 3-14 (character generation) and 4-5 (character attributes).
+    ISO 7942, "Graphical Kernel System (GKS)", 1985: text path, alignment, character
+    height, up vector, expansion factor and spacing.
+    A. V. Hershey, "Calligraphy for computer display", NWL Report 2101, 1967.
+    T. Porter, T. Duff, "Compositing digital images", SIGGRAPH '84, 1984.
+
     Examples
     --------
     >>> import scanline as sl

@@ -368,3 +368,16 @@ def test_bad_arguments_are_named():
         aa.lines(fb, [(0, 0, 1, 1)], ["red", "blue"])
     with pytest.raises(sl.ArgumentTypeError, match="segments"):
         aa.lines(fb, "0 0 1 1")
+
+
+def test_one_color_batch_in_any_order_equals_single_calls_up_to_rounding():
+    # one-color batches are drawn band by band: "over" with one color commutes
+    rng = np.random.default_rng(9)
+    segs = np.c_[rng.uniform(0, 60, (300, 2)), rng.uniform(0, 60, (300, 2))]
+    segs[::2, 1] += 40
+    batch = sl.FrameBuffer(64, 110, mode="RGB", background="white")
+    aa.lines(batch, segs, (200, 30, 90, 150))
+    single = sl.FrameBuffer(64, 110, mode="RGB", background="white")
+    for s in segs:
+        aa.lines(single, [s], (200, 30, 90, 150))
+    assert np.abs(batch.to_array().astype(int) - single.to_array()).max() <= 2

@@ -40,8 +40,11 @@ X. Wu, "An efficient antialiasing technique", SIGGRAPH '91, Computer Graphics
 
 import math
 
-from ._jit import inline, kernel
-from .blend import GRAY, RGB, RGBA, over
+import numpy as np
+
+from ._jit import helper, inline, kernel
+from .blend import GRAY, INDEXED, RGB, RGBA, over
+from .raster import BAND_SHIFT
 
 
 @inline
@@ -91,6 +94,15 @@ def wu_line(buf, mode, table, width, height, x0, y0, x1, y1, src):
         return
     i0 = max(math.floor(ua + 0.5), 0)
     i1 = min(math.ceil(ub + 0.5) - 1, umax - 1)
+    if swap:
+        columns(buf, mode, table, width, height, True, i0, i1, ua, ub, u0, w0, m, half, src)
+    else:
+        columns(buf, mode, table, width, height, False, i0, i1, ua, ub, u0, w0, m, half, src)
+
+
+@inline
+def columns(buf, mode, table, width, height, swap, i0, i1, ua, ub, u0, w0, m, half, src):
+    """The columns i0..i1 of a line (``swap`` a constant: one loop per major axis)."""
     alpha = src[3]
     for i in range(i0, i1 + 1):
         lo = max(ua, i - 0.5)
@@ -100,10 +112,37 @@ def wu_line(buf, mode, table, width, height, x0, y0, x1, y1, src):
             column(buf, mode, table, width, height, swap, i, wc, half, (hi - lo) * alpha, src)
 
 
+@helper
+def band_order(segments, height):
+    """The segments' indices sorted by band of 32 scan lines of their lower end
+    (a stable counting sort, O(N)).
+
+    For a batch of one color the order of compositing changes nothing but the
+    rounding (each "over" of the same color commutes), and drawing band by band
+    keeps the rows being blended in the cache (``raster.BAND_SHIFT``)."""
+    n = segments.shape[0]
+    bands = ((height - 1) >> BAND_SHIFT) + 1
+    start = np.zeros(bands + 1, np.int64)
+    band = np.empty(n, np.int64)
+    for i in range(n):
+        y = min(segments[i, 1], segments[i, 3])
+        b = int(min(max(y, 0.0), height - 1.0)) >> BAND_SHIFT
+        band[i] = b
+        start[b + 1] += 1
+    for b in range(bands):
+        start[b + 1] += start[b]
+    order = np.empty(n, np.int64)
+    for i in range(n):
+        order[start[band[i]]] = i
+        start[band[i]] += 1
+    return order
+
+
 @inline
-def lines_loop(buf, mode, table, width, height, segments, srcs):
+def lines_loop(buf, mode, table, width, height, segments, srcs, order):
     one = srcs.shape[0] == 1
-    for n in range(segments.shape[0]):
+    for t in range(segments.shape[0]):
+        n = order[t]
         wu_line(buf, mode, table, width, height, segments[n, 0], segments[n, 1],
                 segments[n, 2], segments[n, 3], srcs[0] if one else srcs[n])
 
@@ -111,15 +150,21 @@ def lines_loop(buf, mode, table, width, height, segments, srcs):
 @kernel
 def draw_lines(buf, mode, width, height, table, segments, srcs):
     """Composite antialiased lines, rows (x0, y0, x1, y1) of ``segments``, with
-    the source rows ``srcs`` (one, or one per segment), in order."""
-    if mode == RGB:
-        lines_loop(buf, RGB, table, width, height, segments, srcs)
-    elif mode == GRAY:
-        lines_loop(buf, GRAY, table, width, height, segments, srcs)
-    elif mode == RGBA:
-        lines_loop(buf, RGBA, table, width, height, segments, srcs)
+    the source rows ``srcs`` (one per segment, in order; or one for all, in bands
+    of scan lines except in mode "P", where the nearest-entry rounding makes the
+    order visible)."""
+    if srcs.shape[0] == 1 and mode != INDEXED:
+        order = band_order(segments, height)
     else:
-        lines_loop(buf, mode, table, width, height, segments, srcs)
+        order = np.arange(segments.shape[0])
+    if mode == RGB:
+        lines_loop(buf, RGB, table, width, height, segments, srcs, order)
+    elif mode == GRAY:
+        lines_loop(buf, GRAY, table, width, height, segments, srcs, order)
+    elif mode == RGBA:
+        lines_loop(buf, RGBA, table, width, height, segments, srcs, order)
+    else:
+        lines_loop(buf, mode, table, width, height, segments, srcs, order)
 
 
 @inline

@@ -11,7 +11,8 @@ alpha* ``a`` = coverage x alpha, in 0..1:
 ====== ====================================================================
 mode   result
 ====== ====================================================================
-"L"    ``d + (s - d) a``, rounded to the nearest level
+"L"    ``d + (s - d) a``, rounded to the nearest level (a in 16-bit fixed
+       point: the product is off by at most 255/65536 before rounding)
 "RGB"  the same per channel
 "RGBA" Porter-Duff over with destination alpha, straight (non-premultiplied)
        storage: ``ao = a + ad (1 - a)``,
@@ -78,12 +79,14 @@ def over(buf, mode, table, x, y, src, a):
     if a > 1.0:
         a = 1.0
     if mode == RGB:
+        f = int(a * 65536.0 + 0.5)      # 16-bit fixed point: exact to 255 / 65536
         for c in range(3):
-            d = np.float64(buf[y, x, c])
-            buf[y, x, c] = level(d + (src[c] - d) * a)
+            d = np.int64(buf[y, x, c])
+            buf[y, x, c] = np.uint8(d + (((np.int64(src[c]) - d) * f + 32768) >> 16))
     elif mode == GRAY:
-        d = np.float64(buf[y, x, 0])
-        buf[y, x, 0] = level(d + (src[0] - d) * a)
+        f = int(a * 65536.0 + 0.5)
+        d = np.int64(buf[y, x, 0])
+        buf[y, x, 0] = np.uint8(d + (((np.int64(src[0]) - d) * f + 32768) >> 16))
     elif mode == RGBA:
         da = buf[y, x, 3] / 255.0
         keep = da * (1.0 - a)

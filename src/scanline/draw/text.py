@@ -78,8 +78,9 @@ def _filled(fb, p, color, value, antialias):
     mids = cache.ensure(p.gids)
     buf, packed = fb._raster()
     from .._kernels.text import stamp_glyphs
-    stamp_glyphs(buf, packed, fb.width, fb.height, cache.atlas, cache.masks, mids, p.ox,
-                 p.oy, value, _alpha(color), fb.mode == "P")
+    alpha = _alpha(color)
+    stamp_glyphs(buf, packed, fb.width, fb.height, cache.atlas, cache.masks, cache.runs, mids,
+                 p.ox, p.oy, value, alpha, fb.mode == "P", alpha == 255 and not antialias)
 
 
 def text(fb, x, y, text, color=None, font=None, height=None, expansion=None, spacing=None,

@@ -62,6 +62,15 @@ def _render(contours, antialias):
     return x0, y0, w, h, fb._raster()[0][:, :, 0].ravel().copy()
 
 
+def _runs(mask):
+    """The runs of nonzero pixels of a (h, w) mask, one row (row, start, stop) each,
+    so that stamping touches only the glyph's pixels."""
+    on = np.zeros((mask.shape[0], mask.shape[1] + 2), np.int8)
+    on[:, 1:-1] = mask != 0
+    rows, cols = np.nonzero(np.diff(on, axis=1))
+    return np.column_stack([rows[0::2], cols[0::2], cols[1::2]]).reshape(-1, 3)
+
+
 class GlyphImages:
     """The glyph images of one font at one matrix (size, expansion, angle)."""
 
@@ -69,10 +78,13 @@ class GlyphImages:
         self.font, self.matrix, self.antialias = font, matrix, antialias
         self.tolerance = tolerance
         self.mask_of = np.full(len(font.advances), -1, np.int64)
-        self._parts, self._meta = [], []
+        self._parts, self._meta, self._runs = [], [], []
         self.atlas = np.zeros(0, np.uint8)
-        #: one row per mask: offset in ``atlas``, width, height, x0, y0
-        self.masks = np.zeros((0, 5), np.int64)
+        #: one row per mask: offset in ``atlas``, width, height, x0, y0, first run in
+        #: ``runs``, number of runs
+        self.masks = np.zeros((0, 7), np.int64)
+        #: runs of nonzero pixels: (row, first column, last column + 1)
+        self.runs = np.zeros((0, 3), np.int64)
 
     def ensure(self, gids):
         """Render the glyphs among ``gids`` not yet cached; return their mask ids."""
@@ -85,18 +97,22 @@ class GlyphImages:
             self.mask_of[g] = len(self._meta)
             self._meta.append((x0, y0, w, h))
             self._parts.append(mask)
+            self._runs.append(_runs(mask.reshape(h, w)))
         meta = np.array(self._meta, np.int64).reshape(-1, 4)
         sizes = meta[:, 2] * meta[:, 3]
+        counts = np.array([len(r) for r in self._runs], np.int64)
         self.masks = np.column_stack([np.cumsum(sizes) - sizes, meta[:, 2], meta[:, 3],
-                                      meta[:, 0], meta[:, 1]]).astype(np.int64)
+                                      meta[:, 0], meta[:, 1], np.cumsum(counts) - counts,
+                                      counts]).astype(np.int64)
         self.atlas = np.concatenate(self._parts)
+        self.runs = np.concatenate(self._runs).astype(np.int64)
         return self.mask_of[gids]
 
     def bitmap(self, gid):
         """``(x0, y0, mask)`` of one glyph: ``mask`` a bool array in image order (top
         row first), its bottom-left pixel at ``(x0, y0)`` from the origin."""
         m = int(self.ensure(np.array([gid]))[0])
-        off, w, h, x0, y0 = self.masks[m].tolist()
+        off, w, h, x0, y0 = self.masks[m, :5].tolist()
         mask = self.atlas[off:off + w * h].reshape(h, w)
         return x0, y0, mask[::-1] > (127 if self.antialias else 0)
 

@@ -80,3 +80,11 @@ def test_huge_text_at_the_edge_of_the_coordinate_range(font, antialias):
     assert fb.to_array().sum() == 0
     sl.draw.text(fb, -100, -300, "H", font=font, height=600, antialias=antialias)
     assert fb.to_array().sum() > 0           # part of a huge H (its stem or crossbar)
+
+
+def test_glyph_image_runs():
+    mask = np.array([[0, 255, 255, 0, 9],
+                     [0, 0, 0, 0, 0],
+                     [255, 255, 255, 255, 255]], np.uint8)
+    assert glyphcache._runs(mask).tolist() == [[0, 1, 3], [0, 4, 5], [2, 0, 5]]
+    assert glyphcache._runs(np.zeros((0, 0), np.uint8)).shape == (0, 3)

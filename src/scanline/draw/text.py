@@ -3,6 +3,7 @@ sections 3-14 and 4-5)."""
 
 import numpy as np
 
+from .._kernels.text import stamp_glyphs
 from ..color.spec import rgba
 from ..text import glyphcache
 from ..text.layout import place
@@ -77,7 +78,6 @@ def _filled(fb, p, color, value, antialias):
         return
     mids = cache.ensure(p.gids)
     buf, packed = fb._raster()
-    from .._kernels.text import stamp_glyphs
     alpha = _alpha(color)
     stamp_glyphs(buf, packed, fb.width, fb.height, cache.atlas, cache.masks, cache.runs, mids,
                  p.ox, p.oy, value, alpha, fb.mode == "P", alpha == 255 and not antialias)

@@ -89,7 +89,7 @@ class GlyphImages:
     def ensure(self, gids):
         """Render the glyphs among ``gids`` not yet cached; return their mask ids."""
         ids = self.mask_of[gids]
-        if (ids >= 0).all():
+        if len(ids) == 0 or ids.min() >= 0:
             return ids
         for g in np.unique(gids[ids < 0]):
             x0, y0, w, h, mask = _render(

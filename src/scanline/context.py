@@ -44,6 +44,8 @@ class Context:
         A :class:`~scanline.FrameBuffer`, or a :class:`scanline.display.VectorDevice`
         / :class:`~scanline.display.SVGDevice` (anything with ``width``, ``height``,
         ``stroke`` and ``fill``).
+    antialias : bool
+        With a frame buffer: draw strokes and solid areas antialiased.
 
     Attributes
     ----------
@@ -80,8 +82,10 @@ class Context:
     ###-#----
     """
 
-    def __init__(self, target):
-        self._device = RasterDevice(target) if isinstance(target, FrameBuffer) else target
+    def __init__(self, target, antialias=False):
+        if isinstance(target, FrameBuffer):
+            target = RasterDevice(target, antialias)
+        self._device = target
         for attr in ("width", "height", "stroke", "fill"):
             if not hasattr(self._device, attr):
                 raise ArgumentValueError(

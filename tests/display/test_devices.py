@@ -361,3 +361,17 @@ def test_vector_device_keeps_what_the_raster_rounds():
     xs, ys = lit[:, 1], H - 1 - lit[:, 0]
     assert (xs.min(), xs.max()) == (6, 50)       # rounded end points
     assert {(6, 5), (50, 14)} <= set(zip(xs.tolist(), ys.tolist()))
+
+
+def test_antialiased_raster_device():
+    """antialias=True: the same picture with soft edges: intermediate gray levels, and
+    about the same amount of ink as the aliased drawing."""
+    df = scene_file()
+    hard, soft = sl.FrameBuffer(W, H, mode="L"), sl.FrameBuffer(W, H, mode="L")
+    df.draw(hard)
+    df.draw(soft, antialias=True)
+    a, b = hard.to_array().astype(float), soft.to_array().astype(float)
+    assert len(np.unique(b)) > len(np.unique(a)) + 10
+    assert abs(a.sum() - b.sum()) < 0.03 * a.sum()
+    with pytest.raises(sl.ArgumentTypeError, match="antialias"):
+        RasterDevice(hard, antialias="yes")

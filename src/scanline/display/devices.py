@@ -23,6 +23,7 @@ import numpy as np
 
 from .. import draw
 from ..color.spec import rgba
+from ..errors import ArgumentTypeError
 from ..framebuffer import FrameBuffer, write_atomically
 from ..linestyle import LineStyle
 from . import spans
@@ -51,26 +52,34 @@ class RasterDevice:
     ----------
     fb : FrameBuffer
         Drawn into as it is (not cleared).
+    antialias : bool
+        Draw strokes and solid areas antialiased (``antialias=True`` of
+        ``sl.draw.polylines`` and ``sl.draw.polygon``); pattern and hatch fills stay
+        aliased.
     """
 
-    def __init__(self, fb):
+    def __init__(self, fb, antialias=False):
         if not isinstance(fb, FrameBuffer):
-            from ..errors import ArgumentTypeError
-
             raise ArgumentTypeError(f"fb must be a scanline.FrameBuffer, got {type(fb).__name__}")
+        if not isinstance(antialias, bool):
+            raise ArgumentTypeError(f"antialias must be True or False, got {antialias!r}")
         self.fb = fb
+        self.antialias = antialias
         self.width, self.height = fb.width, fb.height
 
     def stroke(self, pieces, closed, attributes):
         color, style = attributes["color"], attributes["style"]
-        if _simple(style):
+        if _simple(style) and not self.antialias:
             draw.lines(self.fb, _segments(pieces, closed), color=color)
         else:
-            draw.polylines(self.fb, list(pieces), color=color, closed=closed, style=style)
+            draw.polylines(self.fb, list(pieces), color=color, closed=closed, style=style,
+                           antialias=self.antialias)
 
     def fill(self, contours, attributes):
+        style = attributes["style"]
         draw.polygon(self.fb, list(contours), color=attributes["color"],
-                     rule=attributes["rule"], style=attributes["style"])
+                     rule=attributes["rule"], style=style,
+                     antialias=self.antialias and style is None)
 
 
 def _fill_strokes(contours, attributes):

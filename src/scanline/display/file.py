@@ -352,12 +352,13 @@ class DisplayFile:
         self._add("markers", {"points": self._ndc(pts)}, attrs)
 
     # -- drawing ----------------------------------------------------------------------------
-    def draw(self, fb, **options):
-        """Draw the file on a frame buffer (see :func:`scanline.display.interpret`)."""
+    def draw(self, fb, antialias=False, highlight="magenta"):
+        """Draw the file on a frame buffer (:func:`scanline.display.interpret` on a
+        :class:`~scanline.display.RasterDevice`)."""
         from .devices import RasterDevice
         from .interpreter import interpret
 
-        interpret(self, RasterDevice(fb), **options)
+        interpret(self, RasterDevice(fb, antialias), highlight=highlight)
 
     def __repr__(self):
         return f"<DisplayFile: {len(self._segments)} segments, open: {self.open_segment!r}>"

@@ -29,7 +29,7 @@ class Scene:
     data : dict
         A copy of the data.
     canvas
-        ``width``, ``height``, ``background``, ``mode``, ``highlight``.
+        ``width``, ``height``, ``background``, ``mode``, ``highlight``, ``antialias``.
     display_file : DisplayFile
     """
 
@@ -45,7 +45,7 @@ class Scene:
         """The scene drawn on a new :class:`~scanline.FrameBuffer`."""
         c = self.canvas
         fb = FrameBuffer(c.width, c.height, mode=c.mode, background=c.background)
-        interpret(self.display_file, RasterDevice(fb), highlight=c.highlight)
+        interpret(self.display_file, RasterDevice(fb, c.antialias), highlight=c.highlight)
         return fb
 
     def svg(self):

@@ -20,7 +20,7 @@ VERSIONS = (1,)
 #: Largest canvas side, in pixels.
 MAX_SIZE = 16384
 
-_CANVAS = {"width", "height", "background", "mode", "highlight"}
+_CANVAS = {"width", "height", "background", "mode", "highlight", "antialias"}
 _VIEWPORT = {"name", "window", "viewport", "view_up", "keep_aspect", "clip", "border"}
 _SEGMENT = {"name", "viewport", "priority", "visible", "highlighted", "transform",
             "primitives"}
@@ -172,6 +172,7 @@ class Canvas:
         if mode not in ("1", "L", "RGB", "RGBA", "P"):
             _fail(f"{path}.mode", f"must be one of '1', 'L', 'RGB', 'RGBA', 'P'; got {mode!r}")
         self.mode = mode
+        self.antialias = _flag(d.get("antialias", False), f"{path}.antialias")
 
 
 def _size(value, path):

@@ -107,7 +107,7 @@ def _horizontal(font, gids, line, nlines, style, sx, sy, gap):
     if gap:
         adv += gap
     if nlines == 1:  # the common case: scalars instead of per-line arrays
-        run = np.cumsum(adv)
+        run = np.add.accumulate(adv)  # (np.cumsum: the same, with 1-2 us more overhead)
         width = float(run[-1]) - gap if len(run) else 0.0
     else:
         starts, ends = _segments(line)

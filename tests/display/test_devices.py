@@ -245,7 +245,7 @@ def test_svg_is_well_formed_and_escaped():
     interpret(df, svg)
     root = ET.fromstring(svg.svg())
     assert root.get("width") == "20" and root.get("viewBox") == "0 0 20 10"
-    path = root.find("{http://www.w3.org/2000/svg}path")
+    path = next(root.iter("{http://www.w3.org/2000/svg}path"))
     assert path.get("stroke") == "rgb(255,0,0)"
     assert float(path.get("stroke-opacity")) == pytest.approx(128 / 255, abs=1e-3)
     assert path.get("stroke-width") == "3" and path.get("stroke-linecap") == "round"
@@ -375,3 +375,21 @@ def test_antialiased_raster_device():
     assert abs(a.sum() - b.sum()) < 0.03 * a.sum()
     with pytest.raises(sl.ArgumentTypeError, match="antialias"):
         RasterDevice(hard, antialias="yes")
+
+
+def test_svg_groups_segments_and_escapes_their_names():
+    name = 'a <b> & "c" \'d\''
+    df = DisplayFile()
+    df.create_segment(name)
+    df.polyline([(0, 0), (1, 1)])
+    df.close_segment()
+    df.create_segment("hidden")
+    df.polyline([(0, 0), (1, 1)])
+    df.close_segment()
+    df.set_visibility("hidden", False)
+    svg = SVGDevice(10, 10)
+    interpret(df, svg)
+    root = ET.fromstring(svg.svg())
+    groups = root.findall("{http://www.w3.org/2000/svg}g")
+    assert [g.get("data-segment") for g in groups] == [name]
+    assert groups[0].find("{http://www.w3.org/2000/svg}title").text == name

@@ -17,7 +17,7 @@ refresh; :class:`SVGDevice` writes an SVG document.
 """
 
 import math
-from xml.sax.saxutils import quoteattr
+from xml.sax.saxutils import escape, quoteattr
 
 import numpy as np
 
@@ -172,6 +172,8 @@ def _num(x):
 class SVGDevice:
     """An SVG document, the display file as resolution-independent vector output.
 
+    Each segment is a group ``<g data-segment="NAME">`` titled with its name.
+
     Device coordinates map to SVG user units by ``(x + 0.5, height - 0.5 - y)``: the
     SVG canvas is the frame of a ``width`` x ``height`` raster, y flipped.  Strokes keep
     their width, caps, joins and dashes; areas are paths filled by their rule; a
@@ -230,6 +232,13 @@ class SVGDevice:
         self.elements.append(
             f'<path d={self._path(contours, True)} fill-rule="{rule}"'
             f'{_paint("fill", attributes["color"])}/>')
+
+    def begin_segment(self, name):
+        """Start a group for the segment ``name`` (its name as the group's title)."""
+        self.elements.append(f"<g data-segment={quoteattr(name)}><title>{escape(name)}</title>")
+
+    def end_segment(self):
+        self.elements.append("</g>")
 
     def svg(self):
         """The SVG document as a string."""

@@ -99,7 +99,8 @@ def interpret(display_file, device, highlight="magenta"):
     display_file : DisplayFile
     device : RasterDevice, VectorDevice or SVGDevice
         Or any object with ``width``, ``height``, ``stroke`` and ``fill`` (see
-        :mod:`scanline.display.devices`).
+        :mod:`scanline.display.devices`), and optionally ``begin_segment(name)`` and
+        ``end_segment()``, called around each segment.
     highlight : color
         The color of the frame drawn around highlighted segments.
 
@@ -117,9 +118,12 @@ def interpret(display_file, device, highlight="magenta"):
     frame = _padded(device_rectangle(ws, _UNIT))
     order = sorted((s for s in display_file.segments if s.visible),
                    key=lambda s: (s.priority, s._order))
+    groups = hasattr(device, "begin_segment")
     for seg in order:
         m = ws @ seg.transformation
         drawn = []
+        if groups:
+            device.begin_segment(seg.name)
         for i, prim in enumerate(seg.primitives):
             rect = frame if prim.clip is None else pipeline.intersect(
                 _padded(device_rectangle(ws, prim.clip)), frame)
@@ -133,6 +137,8 @@ def interpret(display_file, device, highlight="magenta"):
                     raise type(error)(f"{where}: {error}") from None
         if seg.highlighted and drawn:
             _frame(np.vstack(drawn), frame, device, highlight)
+        if groups:
+            device.end_segment()
 
 
 def _padded(rect):

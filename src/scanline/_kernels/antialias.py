@@ -44,7 +44,7 @@ import numpy as np
 
 from ._jit import helper, inline, kernel
 from .blend import GRAY, INDEXED, RGB, RGBA, over
-from .raster import BAND_SHIFT
+from .raster import band_sorted
 
 
 @inline
@@ -114,28 +114,18 @@ def columns(buf, mode, table, width, height, swap, i0, i1, ua, ub, u0, w0, m, ha
 
 @helper
 def band_order(segments, height):
-    """The segments' indices sorted by band of 32 scan lines of their lower end
-    (a stable counting sort, O(N)).
+    """The segments' indices sorted by band of scan lines of their lower end
+    (:func:`scanline._kernels.raster.band_sorted`, a stable counting sort).
 
     For a batch of one color the order of compositing changes nothing but the
     rounding (each "over" of the same color commutes), and drawing band by band
-    keeps the rows being blended in the cache (``raster.BAND_SHIFT``)."""
+    keeps the rows being blended in the cache."""
     n = segments.shape[0]
-    bands = ((height - 1) >> BAND_SHIFT) + 1
-    start = np.zeros(bands + 1, np.int64)
-    band = np.empty(n, np.int64)
+    keyed = np.empty((n, 2), np.int64)
     for i in range(n):
-        y = min(segments[i, 1], segments[i, 3])
-        b = int(min(max(y, 0.0), height - 1.0)) >> BAND_SHIFT
-        band[i] = b
-        start[b + 1] += 1
-    for b in range(bands):
-        start[b + 1] += start[b]
-    order = np.empty(n, np.int64)
-    for i in range(n):
-        order[start[band[i]]] = i
-        start[band[i]] += 1
-    return order
+        keyed[i, 0] = int(min(max(min(segments[i, 1], segments[i, 3]), 0.0), height - 1.0))
+        keyed[i, 1] = i
+    return band_sorted(keyed, 0, height)[:, 1].copy()
 
 
 @inline

@@ -16,7 +16,13 @@ an edge ends inside a row, zero on average).
 
 Spans are accumulated as differences (four additions per span, whatever its
 length) in a row buffer whose running sum, taken once per pixel row, is the
-coverage.  Rows and spans are clipped to the raster before anything is added, so
+coverage.
+
+*Exact rows.*  Most rows of most shapes are simpler: every edge that meets the row
+crosses it from bottom to top, no two cross inside it, and the winding numbers
+between them are 0 and one other value.  There both rules fill the same regions and
+the signed area to the right of each edge, accumulated in the same row buffer (as
+font rasterizers do), is the exact coverage; such rows skip the sub-scan-lines.  Rows and spans are clipped to the raster before anything is added, so
 no store leaves ``buf``.
 
 References

@@ -12,7 +12,6 @@ power of two of font units), so a page of text flattens each distinct glyph once
 
 import math
 import os
-import struct
 
 import numpy as np
 from fontTools.pens.basePen import BasePen
@@ -184,8 +183,9 @@ class OutlineFont(Font):
         pen = _SegmentPen(self._glyphs)
         try:
             self._glyphs[self._names[gid]].draw(pen)
-        except (KeyError, IndexError, ValueError, TypeError, AssertionError,
-                struct.error, AttributeError):
+        except RecursionError:  # a composite glyph that contains itself
+            return None
+        except Exception:  # fontTools raises many types on corrupt glyph data
             return None
         return pen.contours
 

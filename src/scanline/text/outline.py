@@ -183,10 +183,8 @@ class OutlineFont(Font):
         pen = _SegmentPen(self._glyphs)
         try:
             self._glyphs[self._names[gid]].draw(pen)
-        except RecursionError:  # a composite glyph that contains itself
-            return None
-        except Exception:  # fontTools raises many types on corrupt glyph data
-            return None
+        except Exception:  # fontTools raises many types on corrupt glyph data (and a
+            return None    # RecursionError on a composite glyph that contains itself)
         return pen.contours
 
     def _ink(self, gid, tolerance):

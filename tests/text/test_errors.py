@@ -11,6 +11,7 @@ from hypothesis import strategies as st
 import scanline as sl
 from scanline.errors import ArgumentTypeError, ArgumentValueError
 from scanline.text import catalog
+from scanline.text.outline import OutlineFont
 
 TTF = catalog.DATA / "DejaVuSans.ttf"
 
@@ -129,3 +130,74 @@ def test_fuzz_never_crashes(text, x, y, font, height, angle, antialias):
 def test_astral_characters_the_font_has_are_found():
     sans = sl.text.fonts()["sans"]
     assert sans.has_glyph("\U0001f600") and not sans.has_glyph("\U00020000")
+
+
+def tiny_ttf():
+    """A small TrueType font: 'A' a triangle, 'B' a square, quadratic 'O'."""
+    from fontTools.fontBuilder import FontBuilder
+    from fontTools.pens.ttGlyphPen import TTGlyphPen
+
+    fb = FontBuilder(1000, isTTF=True)
+    names = [".notdef", "A", "B", "O"]
+    fb.setupGlyphOrder(names)
+    fb.setupCharacterMap({ord("A"): "A", ord("B"): "B", ord("O"): "O"})
+    glyphs = {}
+    for name in names:
+        pen = TTGlyphPen(None)
+        if name == "A":
+            pen.moveTo((0, 0)); pen.lineTo((500, 700)); pen.lineTo((1000, 0)); pen.closePath()
+        elif name == "B":
+            pen.moveTo((0, 0)); pen.lineTo((0, 700)); pen.lineTo((600, 700))
+            pen.lineTo((600, 0)); pen.closePath()
+        elif name == "O":
+            pen.moveTo((300, 0)); pen.qCurveTo((600, 0), (600, 350))
+            pen.qCurveTo((600, 700), (300, 700)); pen.qCurveTo((0, 700), (0, 350))
+            pen.qCurveTo((0, 0), (300, 0)); pen.closePath()
+        glyphs[name] = pen.glyph()
+    fb.setupGlyf(glyphs)
+    fb.setupHorizontalMetrics({n: (700, 0) for n in names})
+    fb.setupHorizontalHeader(ascent=800, descent=-200)
+    fb.setupNameTable({"familyName": "Tiny", "styleName": "Regular"})
+    fb.setupOS2(sTypoAscender=800, usWinAscent=800, usWinDescent=200)
+    fb.setupPost()
+    import io
+    out = io.BytesIO()
+    fb.save(out)
+    return out.getvalue()
+
+
+TINY = tiny_ttf()
+
+
+def test_tiny_font_loads_and_draws(tmp_path):
+    path = tmp_path / "tiny.ttf"
+    path.write_bytes(TINY)
+    f = sl.text.load_font(path)
+    assert f.cap_height == 700        # no OS/2 cap height and no 'H': 0.7 em
+    fb = sl.FrameBuffer(60, 30, mode="1")
+    sl.draw.text(fb, 0, 0, "BAO?", font=f, height=14)
+    assert fb.to_array()[::-1][1:15, 0:12].all()      # 'B' is a 12 x 14 block
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.tuples(st.integers(0, len(TINY) - 1), st.integers(0, 255)),
+                min_size=1, max_size=8))
+def test_fuzz_corrupted_font_files(tmp_path_factory, edits):
+    data = bytearray(TINY)
+    for pos, value in edits:
+        data[pos] = value
+    path = tmp_path_factory.mktemp("fuzz") / "bad.ttf"
+    path.write_bytes(bytes(data))
+    try:
+        f = OutlineFont(str(path))     # not load_font: it caches by path
+    except ArgumentValueError as exc:
+        assert "bad.ttf" in str(exc)
+        return
+    fb = sl.FrameBuffer(40, 20, mode="L")
+    for text in ("ABO", "x\u4e00"):
+        try:
+            sl.draw.text(fb, 1, 3, text, font=f, height=12)
+            sl.draw.text(fb, 1, 3, text, font=f, height=12, antialias=True)
+            sl.text.extents(text, font=f, height=12)
+        except ArgumentValueError:
+            pass   # e.g. metrics so wild that the layout leaves the coordinate range

@@ -53,8 +53,11 @@ def _area(prim, rect, device, where):
     if not clipped:
         return []
     device.fill(clipped, a)
-    if a.get("edge") is not None:
-        device.stroke(clipped, True, a["edge"])
+    if a.get("edge") is not None:  # the area's own boundary, clipped as lines: no
+        for c in cs:                 # edges along the clip window
+            pieces, closed = pipeline.polylines(c, True, rect)
+            if pieces:
+                device.stroke(pieces, closed, a["edge"])
     return clipped
 
 

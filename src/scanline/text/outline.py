@@ -10,6 +10,8 @@ The flattened contours are cached per glyph and per tolerance (rounded down to a
 power of two of font units), so a page of text flattens each distinct glyph once.
 """
 
+import contextlib
+import logging
 import math
 import os
 
@@ -83,6 +85,19 @@ def flatten_contours(contours, tolerance):
     return out
 
 
+@contextlib.contextmanager
+def _quiet():
+    """Silence fontTools' log warnings about damaged data while it reads: scanline
+    either raises one clear error or draws the replacement box."""
+    log = logging.getLogger("fontTools")
+    level = log.level
+    log.setLevel(logging.CRITICAL)
+    try:
+        yield
+    finally:
+        log.setLevel(level)
+
+
 def _check_tables(path, font):
     """Every table must lie inside the file (a truncated file fails here, not when
     a glyph is first drawn) and the tables scanline needs must be present."""
@@ -123,9 +138,10 @@ class OutlineFont(Font):
             raise ArgumentValueError(f"font file {path!r} does not exist")
         self._flat = {}
         try:
-            font = TTFont(path, fontNumber=0, lazy=False)
-            _check_tables(path, font)
-            self._read(font)
+            with _quiet():
+                font = TTFont(path, fontNumber=0, lazy=False)
+                _check_tables(path, font)
+                self._read(font)
         except (ArgumentValueError, MemoryError):
             raise
         except Exception as exc:  # fontTools raises many types on corrupt data
@@ -182,7 +198,8 @@ class OutlineFont(Font):
         drawn as the replacement box rather than raising mid-string."""
         pen = _SegmentPen(self._glyphs)
         try:
-            self._glyphs[self._names[gid]].draw(pen)
+            with _quiet():
+                self._glyphs[self._names[gid]].draw(pen)
         except Exception:  # fontTools raises many types on corrupt glyph data (and a
             return None    # RecursionError on a composite glyph that contains itself)
         return pen.contours

@@ -35,7 +35,18 @@ from .polygon import _rule
 def _reals(name, value, columns, radius_columns=()):
     """An (N, columns) float64 array, validated as
     :func:`scanline._validate.coordinate_array` validates (finite, within +-2**30,
-    radii >= 0) but not rounded."""
+    radii >= 0) but not rounded.  A well-formed numeric array passes one test of
+    its largest magnitude (NaN fails it); anything else goes through
+    ``coordinate_array``, which raises the message naming the fault."""
+    try:
+        raw = np.asarray(value)
+    except (TypeError, ValueError):
+        raw = None
+    if raw is not None and raw.dtype.kind in "fiu" and raw.ndim == 2 and raw.shape[1] == columns:
+        a = np.ascontiguousarray(raw, np.float64)
+        if a.size == 0 or (np.abs(a).max() <= v.COORD_LIMIT
+                           and all(a[:, c].min() >= 0 for c in radius_columns)):
+            return a
     v.coordinate_array(name, value, columns, radius_columns)
     return np.ascontiguousarray(np.asarray(value, np.float64).reshape(-1, columns))
 

@@ -127,21 +127,25 @@ def test_a_quarter_turn_rotates_the_image(font):
     assert (np.rot90(a) == b).mean() > 0.97
 
 
-@pytest.mark.parametrize("font", ["bitmap", "sans"])
+@pytest.mark.parametrize("font", ["bitmap", "sans", "stroke"])
 @pytest.mark.parametrize("angle", [0.0, 0.4])
 def test_layout_bitmaps_are_the_drawn_pixels(font, angle):
-    fb = sl.FrameBuffer(120, 60, mode="1")
+    fb = sl.FrameBuffer(120, 80, mode="1")      # large enough for every glyph
     sl.draw.text(fb, 5, 20, "Ag&j!", font=font, height=16, angle=angle)
-    union = np.zeros((60, 120), bool)
+    union = np.zeros((80, 120), bool)
     for g in sl.text.layout("Ag&j!", 5, 20, font=font, height=16, angle=angle):
         x0, y0 = g.bitmap_origin
         h, w = g.bitmap.shape
-        rows = slice(60 - (y0 + h), 60 - y0)
+        assert x0 >= 0 and y0 >= 0 and x0 + w <= 120 and y0 + h <= 80
+        rows = slice(80 - (y0 + h), 80 - y0)
         union[rows, x0:x0 + w] |= g.bitmap
         ys, xs = np.nonzero(g.bitmap[::-1])
-        if len(xs):   # every set pixel center lies in the glyph's box
-            assert g.box[0] <= x0 + xs.min() and x0 + xs.max() <= g.box[2]
-            assert g.box[1] <= y0 + ys.min() and y0 + ys.max() <= g.box[3]
+        # every set pixel center lies in the glyph's box (lines round their ends to
+        # the nearest pixel: half a pixel more for strokes)
+        e = 0.5 if font == "stroke" else 0.0
+        if len(xs):
+            assert g.box[0] - e <= x0 + xs.min() and x0 + xs.max() <= g.box[2] + e
+            assert g.box[1] - e <= y0 + ys.min() and y0 + ys.max() <= g.box[3] + e
     assert (union == fb.to_array()).all()
     assert union.sum() > 100
 

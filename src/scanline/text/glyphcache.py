@@ -71,6 +71,23 @@ def _runs(mask):
     return np.column_stack([rows[0::2], cols[0::2], cols[1::2]]).reshape(-1, 3)
 
 
+def stroke_bitmap(strokes):
+    """``(mask, (x0, y0))``: the pixels :func:`scanline.draw.lines` sets for the
+    polylines ``strokes`` (device coordinates), a bool array in image order whose
+    bottom-left pixel is ``(x0, y0)``."""
+    from ..draw.lines import lines
+    from ..framebuffer import FrameBuffer
+    pts = np.vstack(strokes) if strokes else np.zeros((0, 2))
+    if len(pts) == 0:
+        return np.zeros((0, 0), bool), (0, 0)
+    lo = np.floor(pts.min(0) + 0.5).astype(int)
+    hi = np.floor(pts.max(0) + 0.5).astype(int)
+    fb = FrameBuffer(int(hi[0] - lo[0] + 1), int(hi[1] - lo[1] + 1), mode="1")
+    segs = np.vstack([np.hstack([s[:-1], s[1:]]) for s in strokes])
+    lines(fb, segs - np.tile(lo, 2), color=1)
+    return fb.to_array(), (int(lo[0]), int(lo[1]))
+
+
 class GlyphImages:
     """The glyph images of one font at one matrix (size, expansion, angle)."""
 

@@ -244,7 +244,8 @@ class PlacedGlyph:
     box : (float, float, float, float) or None
         ``(xmin, ymin, xmax, ymax)``, device coordinates: the bounding box of the
         glyph's geometry below (None for a blank glyph such as the space).  Pixel
-        centers inside it are the only ones the glyph can set.
+        centers inside it are the only ones the glyph can set (within half a pixel
+        more for the stroke font, whose lines round their ends to pixels).
     cell : (float, float, float, float)
         Device bounding box of the character body: advance x (bottom line .. top
         line), rotated.  Use it for all-or-none character clipping.
@@ -255,8 +256,9 @@ class PlacedGlyph:
         Stroke font: the polylines, device coordinates.
     bitmap : bool ndarray (lazy)
         The pixels :func:`scanline.draw.text` sets for this glyph (without
-        antialiasing), image order (top row first); ``bitmap_origin`` is the
-        device (x, y) of its bottom-left pixel.
+        antialiasing; for the stroke font, the pixels of its lines), image order
+        (top row first); ``bitmap_origin`` is the device (x, y) of its bottom-left
+        pixel.
     """
 
     __slots__ = ("char", "index", "glyph", "font", "origin", "matrix", "box", "cell",
@@ -267,11 +269,14 @@ class PlacedGlyph:
 
     def _raster(self):
         if self._bitmap is None:
-            from .glyphcache import GlyphImages, images
-            cache = images(self.font, self.matrix, False, self._tolerance) or GlyphImages(
-                self.font, self.matrix, False, self._tolerance)
-            x0, y0, mask = cache.bitmap(self.glyph)
-            self._bitmap = (mask, (self.origin[0] + x0, self.origin[1] + y0))
+            from .glyphcache import GlyphImages, images, stroke_bitmap
+            if self.strokes is not None:
+                self._bitmap = stroke_bitmap(self.strokes)
+            else:
+                cache = images(self.font, self.matrix, False, self._tolerance) or GlyphImages(
+                    self.font, self.matrix, False, self._tolerance)
+                x0, y0, mask = cache.bitmap(self.glyph)
+                self._bitmap = (mask, (self.origin[0] + x0, self.origin[1] + y0))
         return self._bitmap
 
     @property

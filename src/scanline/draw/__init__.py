@@ -16,7 +16,8 @@ from .softfill import soft_fill
 from . import antialias
 from .strokes import polyline, polylines
 from .curve import curve, curves
+from .text import text
 
 __all__ = ["line", "lines", "circle", "circles", "ellipse", "ellipses", "polygon", "polygons",
            "fill_circle", "fill_circles", "fill_ellipse", "fill_ellipses", "arc", "chord", "pie",
-           "flood_fill", "boundary_fill", "soft_fill", "polyline", "polylines", "curve", "curves"]
+           "flood_fill", "boundary_fill", "soft_fill", "polyline", "polylines", "curve", "curves", "text"]

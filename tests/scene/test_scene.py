@@ -5,6 +5,7 @@ import glob
 import json
 import math
 import os
+import re
 import sys
 
 import numpy as np
@@ -177,11 +178,59 @@ def test_errors_name_the_key_path(old, new, path, words, tmp_path):
     with pytest.raises(SceneError) as info:
         load(f)
     message = str(info.value)
-    assert message.startswith(f"{f}: ")
+    where = re.match(re.escape(str(f)) + r"(:\d+)?: ", message)
+    assert where, message
     if path is not None:
-        after = message[len(f"{f}: "):]
+        after = message[where.end():]
         assert after.startswith(path) and after[len(path)] in " .=[", message
     assert words in message
+
+
+def test_value_errors_give_the_line_too(tmp_path):
+    """The line of a bad value is found again in the text: TOML and JSON."""
+    text = """version = 1
+[[segments]]
+name = "a"
+
+[[segments.primitives]]
+type = "polyline"
+points = [[0, 0], [19, 9]]
+
+[[segments]]
+name = "b"
+
+[[segments.primitives]]
+type = "polyline"
+points = [[0, 0], [19, 9]]
+
+[[segments.primitives]]
+type = "circle"
+center = [1, 2]
+radius = -3
+"""
+    f = tmp_path / "s.toml"
+    f.write_text(text)
+    with pytest.raises(SceneError) as info:
+        load(f)
+    lines = text.splitlines()
+    assert "radius = -3" in lines[info.value.line - 1]
+    assert info.value.line == 19
+    assert "segments[1].primitives[1].radius must be >= 0" in str(info.value)
+    j = tmp_path / "s.json"
+    j.write_text(dumps(tomllib.loads(text), "json"))
+    with pytest.raises(SceneError) as info:
+        load(j)
+    assert '"radius": -3' in j.read_text().splitlines()[info.value.line - 1]
+
+
+def test_a_bad_point_is_named():
+    text = MINIMAL.replace("[[0, 0], [19, 9]]", "[[0, 0], [19, 9], [4]]")
+    with pytest.raises(SceneError, match=r"points\[2\] must be a point \[x, y\]"):
+        loads(text)
+    text = MINIMAL.replace('type = "polyline", points = [[0, 0], [19, 9]]',
+                           'type = "polygon", points = [[0, 0], [19, 9], [4, "a"]]')
+    with pytest.raises(SceneError, match=r"points\[2\] must be a point"):
+        loads(text)
 
 
 @pytest.mark.parametrize("old, new, path, words", BAD[:6])
@@ -234,7 +283,7 @@ def test_check_command(tmp_path, capsys):
     bad.write_text(MINIMAL.replace("version = 1", "version = 9"))
     assert main(["check", str(good), str(bad)]) == 2
     err = capsys.readouterr().err
-    assert err.startswith("scanline: error: ") and "bad.toml: version must be 1" in err
+    assert err.startswith("scanline: error: ") and "bad.toml:2: version must be 1" in err
     assert len(err.strip().splitlines()) == 1
 
 
@@ -411,3 +460,20 @@ def perturbed_scenes(draw):
 @given(st.one_of(mutated_scenes(), perturbed_scenes()))
 def test_changed_examples_never_crash(data):
     _render(data)
+
+
+@pytest.mark.parametrize("text, fmt", [("a = " + "[" * 50000 + "]" * 50000, "toml"),
+                                       ("[" * 50000 + "]" * 50000, "json")])
+def test_deep_nesting_is_an_error(text, fmt):
+    with pytest.raises(SceneError, match="nested too deeply"):
+        loads(text, fmt)
+
+
+def test_deep_nesting_in_python_data_is_an_error():
+    deep = []
+    for _ in range(50000):
+        deep = [deep]
+    data = {"version": 1, "segments": [{"name": "a", "primitives": [
+        {"type": "polyline", "points": [[0, 0], [1, 1]], "color": deep}]}]}
+    with pytest.raises(SceneError, match="nested too deeply"):
+        Scene(data)

@@ -18,6 +18,7 @@ where it was given (the scene loader adds the key path), not when the file is dr
 """
 
 import math
+import numbers
 
 import numpy as np
 
@@ -129,6 +130,7 @@ def points(name, value, minimum=1):
     try:
         a = np.asarray(value, dtype=np.float64)
     except (TypeError, ValueError, OverflowError):
+        _bad_point(name, value)
         raise ArgumentTypeError(
             f"{name} must be a list of points [x, y], got {v._show(value)}"
         ) from None
@@ -146,12 +148,29 @@ def points(name, value, minimum=1):
     return a
 
 
+def _bad_point(name, value):
+    """Name the first element of a list that is not a point [x, y] of two numbers."""
+    if isinstance(value, (list, tuple)):
+        for i, pt in enumerate(value):
+            ok = isinstance(pt, (list, tuple)) and len(pt) == 2 and all(
+                isinstance(c, numbers.Real) and not isinstance(c, bool) for c in pt)
+            if not ok:
+                raise ArgumentValueError(
+                    f"{name}[{i}] must be a point [x, y] of two numbers, got {v._show(pt)}")
+
+
+def _is_point(value):
+    return (isinstance(value, (list, tuple, np.ndarray)) and len(value) > 0
+            and isinstance(value[0], numbers.Real))
+
+
 def contours(name, value):
     """A fill area: one list of points or a list of such lists -> list of (K, 2) arrays."""
     try:
         flat = np.asarray(value, dtype=np.float64).ndim == 2
     except (TypeError, ValueError, OverflowError):
-        flat = False  # ragged: several contours of different lengths (or not numbers)
+        # ragged: several contours of different lengths, or a bad point in one contour
+        flat = isinstance(value, (list, tuple)) and len(value) > 0 and _is_point(value[0])
     if flat:
         return [points(name, value, 3)]
     if not isinstance(value, (list, tuple)) or not value:

@@ -40,6 +40,8 @@ class SceneError(ArgumentValueError):
     def __init__(self, message, file=None, line=None, path=None):
         self.file, self.line, self.path, self.message = file, line, path, message
         where = ":".join(str(x) for x in (file, line) if x is not None)
+        if file is None and line is not None:
+            where = f"line {line}"
         super().__init__(f"{where}: {message}" if where else message)
 
 
@@ -58,6 +60,17 @@ def format_of(path, format=None):
 
 def loads(text, format="toml", file=None):
     """Parse scene text into a dict; errors name ``file`` and the line."""
+    try:
+        data = _parse(text, format, file)
+    except RecursionError:
+        raise SceneError("the data is nested too deeply to be a scene", file=file) from None
+    if not isinstance(data, dict):
+        raise SceneError("a scene must be a table (a JSON object) at the top level",
+                         file=file, line=1)
+    return data
+
+
+def _parse(text, format, file):
     if format == "json":
         try:
             data = json.loads(text, parse_constant=_no_constant)
@@ -77,9 +90,6 @@ def loads(text, format="toml", file=None):
             if found:
                 message += f" (column {found.group(2)})"
             raise SceneError(f"invalid TOML: {message}", file=file, line=line) from None
-    if not isinstance(data, dict):
-        raise SceneError("a scene must be a table (a JSON object) at the top level",
-                         file=file, line=1)
     return data
 
 
@@ -87,21 +97,26 @@ def _no_constant(name):
     raise ValueError(f"{name} is not a number a scene can use")
 
 
-def read(path, format=None):
-    """Read and parse a scene file into a dict."""
+def read_text(path):
+    """The text of a scene file (UTF-8), errors naming the file."""
     name = os.fspath(path)
-    fmt = format_of(name, format)
     try:
         with open(name, "rb") as f:
             raw = f.read()
     except OSError as error:
         raise SceneError(f"cannot read the file: {error.strerror}", file=name) from None
     try:
-        text = raw.decode("utf-8")
+        return raw.decode("utf-8")
     except UnicodeDecodeError as error:
         line = raw[:error.start].count(b"\n") + 1
         raise SceneError("the file is not UTF-8 text", file=name, line=line) from None
-    return loads(text, fmt, name)
+
+
+def read(path, format=None):
+    """Read and parse a scene file into a dict."""
+    name = os.fspath(path)
+    fmt = format_of(name, format)
+    return loads(read_text(name), fmt, name)
 
 
 # -- writing ---------------------------------------------------------------------------------

@@ -7,6 +7,7 @@ from ..display import RasterDevice, SVGDevice, VectorDevice, interpret
 from ..framebuffer import FrameBuffer
 from . import files
 from .files import SceneError
+from .locate import line_of
 from .schema import build
 
 #: Output types by extension: raster images, SVG, and the vector listing.
@@ -23,6 +24,9 @@ class Scene:
         The scene's data as parsed from TOML or JSON.
     file : str, optional
         The file it came from, named in error messages.
+    text, format : str, optional
+        The text it was parsed from and its format (``"toml"`` or ``"json"``): error
+        messages then give the line of the bad value.
 
     Attributes
     ----------
@@ -33,11 +37,16 @@ class Scene:
     display_file : DisplayFile
     """
 
-    def __init__(self, data, file=None):
+    def __init__(self, data, file=None, text=None, format="toml"):
         try:
             self.canvas, self.display_file = build(data)
         except SceneError as error:
-            raise SceneError(error.message, file=file, path=error.path) from None
+            line = None
+            if text is not None and error.path is not None:
+                line = line_of(text, format, error.path)
+            raise SceneError(error.message, file=file, line=line, path=error.path) from None
+        except RecursionError:
+            raise SceneError("the data is nested too deeply to be a scene", file=file) from None
         self.data = copy.deepcopy(data)
         self.file = file
 
@@ -84,10 +93,11 @@ class Scene:
 
 def loads(text, format="toml", file=None):
     """A :class:`Scene` from TOML or JSON text."""
-    return Scene(files.loads(text, format, file), file)
+    return Scene(files.loads(text, format, file), file, text, format)
 
 
 def load(path, format=None):
     """A :class:`Scene` from a ``.toml`` or ``.json`` file (or ``format``)."""
     name = os.fspath(path)
-    return Scene(files.read(name, format), name)
+    fmt = files.format_of(name, format)
+    return loads(files.read_text(name), fmt, name)

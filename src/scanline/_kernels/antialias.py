@@ -65,9 +65,10 @@ def column(buf, mode, table, swap, u, wc, half, weight, src, wlo, whi):
 
 
 @inline
-def wu_line(buf, mode, table, width, x0, y0, x1, y1, src, ylo, yhi):
+def wu_line(buf, mode, table, width, x0, y0, x1, y1, src, alpha, ylo, yhi):
     """Composite the pixels of rows ylo..yhi of the antialiased line (x0, y0)-(x1,
-    y1) (real coordinates) in a raster ``width`` pixels wide."""
+    y1) (real coordinates) in a raster ``width`` pixels wide, with the channels
+    ``src`` (integers) at opacity ``alpha``."""
     swap = abs(y1 - y0) > abs(x1 - x0)
     if swap:   # u: the major axis, w: the minor one; [ulo, uhi] x [wlo, whi] pixels
         u0, w0, u1, w1 = y0, x0, y1, x1
@@ -99,15 +100,14 @@ def wu_line(buf, mode, table, width, x0, y0, x1, y1, src, ylo, yhi):
     i0 = max(math.floor(ua + 0.5), ulo)
     i1 = min(math.ceil(ub + 0.5) - 1, uhi)
     if swap:
-        columns(buf, mode, table, True, i0, i1, ua, ub, u0, w0, m, half, src, wlo, whi)
+        columns(buf, mode, table, True, i0, i1, ua, ub, u0, w0, m, half, src, alpha, wlo, whi)
     else:
-        columns(buf, mode, table, False, i0, i1, ua, ub, u0, w0, m, half, src, wlo, whi)
+        columns(buf, mode, table, False, i0, i1, ua, ub, u0, w0, m, half, src, alpha, wlo, whi)
 
 
 @inline
-def columns(buf, mode, table, swap, i0, i1, ua, ub, u0, w0, m, half, src, wlo, whi):
+def columns(buf, mode, table, swap, i0, i1, ua, ub, u0, w0, m, half, src, alpha, wlo, whi):
     """The columns i0..i1 of a line (``swap`` a constant: one loop per major axis)."""
-    alpha = src[3]
     for i in range(i0, i1 + 1):
         lo = max(ua, i - 0.5)
         hi = min(ub, i + 0.5)
@@ -148,13 +148,18 @@ def band_lists(segments, height):
 @inline
 def lines_loop(buf, mode, table, width, height, segments, srcs, starts, items):
     one = srcs.shape[0] == 1
+    channels = np.empty((srcs.shape[0], 3), np.int64)   # hoisted float -> int
+    for k in range(srcs.shape[0]):
+        for c in range(3):
+            channels[k, c] = int(srcs[k, c])
     for b in range(starts.shape[0] - 1):
         ylo = b << BAND_SHIFT
         yhi = min(ylo + (1 << BAND_SHIFT) - 1, height - 1)
         for t in range(starts[b], starts[b + 1]):
             n = items[t]
+            k = 0 if one else n
             wu_line(buf, mode, table, width, segments[n, 0], segments[n, 1], segments[n, 2],
-                    segments[n, 3], srcs[0] if one else srcs[n], ylo, yhi)
+                    segments[n, 3], channels[k], srcs[k, 3], ylo, yhi)
 
 
 @kernel

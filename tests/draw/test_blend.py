@@ -6,6 +6,8 @@ from Pillow's ``Image.alpha_composite`` (an independent implementation).
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from PIL import Image
 
 import scanline as sl
@@ -186,3 +188,21 @@ def test_blending_is_a_weighted_average_not_a_sum():
     paint_all(fb, (0, 0, 100, 128))
     # 0.502 * (0, 0, 100) + 0.498 * (100, 0, 0) = (49.8, 0, 50.2)
     assert fb.get_pixel(0, 0) == (50, 0, 50)
+
+
+coords = st.one_of(st.integers(-2**30, 2**30), st.integers(-20, 30))
+
+
+@settings(max_examples=40, deadline=None)
+@given(pts=st.lists(st.tuples(coords, coords), min_size=3, max_size=6),
+       r=st.integers(0, 2**20), mode=st.sampled_from(["1", "L", "RGB", "RGBA", "P"]))
+def test_fuzz_translucent_areas_stay_inside(pts, r, mode):
+    fb = sl.FrameBuffer(9, 7, mode=mode)
+    buf = fb._buf
+    big = np.full((buf.shape[0] + 4,) + buf.shape[1:], 77, np.uint8)
+    big[2:-2] = buf
+    fb._buf = big[2:-2]
+    sl.draw.polygon(fb, pts, (10, 200, 30, 100))
+    sl.draw.polygons(fb, [pts, pts[::-1]], [(10, 200, 30, 100), (0, 0, 0, 1)])
+    sl.draw.fill_circle(fb, pts[0][0] % 50 - 20, pts[0][1] % 50 - 20, r, "#ff000080")
+    assert (big[:2] == 77).all() and (big[-2:] == 77).all()

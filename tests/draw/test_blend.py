@@ -206,3 +206,34 @@ def test_fuzz_translucent_areas_stay_inside(pts, r, mode):
     sl.draw.polygons(fb, [pts, pts[::-1]], [(10, 200, 30, 100), (0, 0, 0, 1)])
     sl.draw.fill_circle(fb, pts[0][0] % 50 - 20, pts[0][1] % 50 - 20, r, "#ff000080")
     assert (big[:2] == 77).all() and (big[-2:] == 77).all()
+
+
+@pytest.mark.parametrize("mode", ["1", "L", "RGB", "RGBA", "P"])
+def test_translucent_seed_fills_composite_over_the_region(mode):
+    def scene():
+        fb = sl.FrameBuffer(12, 8, mode=mode, background="white")
+        sl.draw.circle(fb, 5, 4, 3, "black")
+        sl.draw.line(fb, 9, 0, 9, 7, (128, 128, 128))
+        return fb
+
+    def changed(fb):
+        a = fb.to_array() != scene().to_array()
+        return a if a.ndim == 2 else a.any(axis=2)
+
+    for fill, kwargs in ((sl.draw.flood_fill, {}), (sl.draw.boundary_fill, {"boundary": "black"})):
+        opaque, clear = scene(), scene()
+        n = fill(opaque, 5, 4, "red", **kwargs)
+        assert fill(clear, 5, 4, (255, 0, 0, 200), **kwargs) == n > 0
+        # the disk inside the circle, and nothing else, was composited (red at
+        # a = 0.78 changes every white pixel in every mode, as opaque red does)
+        assert np.array_equal(changed(clear), changed(opaque))
+        assert changed(clear).sum() == n
+
+
+def test_translucent_flood_fill_by_hand_with_full_tolerance():
+    fb = sl.FrameBuffer(3, 1, mode="L", background=0)
+    fb.set_pixel(1, 0, 100)
+    fb.set_pixel(2, 0, 200)
+    assert sl.draw.flood_fill(fb, 0, 0, (255, 255, 255, 51), tolerance=255) == 3
+    # a = 0.2: 0 -> 51, 100 -> 131, 200 -> 211
+    assert fb.to_array().tolist() == [[51, 131, 211]]

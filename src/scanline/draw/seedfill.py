@@ -40,13 +40,15 @@ def eight_connected(connectivity):
     )
 
 
-def fill(fb, x, y, kind, connectivity, ref, color):
+def fill(fb, x, y, kind, connectivity, ref, color, buf=None):
     """Run the seed fill ``kind`` ("flood", "boundary" or "soft") from (x, y); return
     the number of pixels filled.  ``ref`` is the kernel's reference colors (see
-    :mod:`scanline._kernels.seedfill`) or a function of (buf, packed, x, y) giving them."""
+    :mod:`scanline._kernels.seedfill`) or a function of (buf, packed, x, y) giving them.
+    ``buf``: fill this copy of the frame buffer's storage instead."""
     from .._kernels import seedfill as k
 
-    buf, packed, width, height = target(fb)
+    own, packed, width, height = target(fb)
+    buf = own if buf is None else buf
     x, y = seed(fb, x, y)
     eight = eight_connected(connectivity)
     ref = ref(buf, packed, x, y) if callable(ref) else ref
@@ -54,6 +56,39 @@ def fill(fb, x, y, kind, connectivity, ref, color):
     if kind == "soft":
         return int(k.soft(buf, width, height, x, y, eight, ref, color))
     return int(getattr(k, kind)(buf, packed, width, height, x, y, eight, ref, color))
+
+
+def _region(buf, packed, width):
+    """The storage as one comparable value per pixel: bits, or channel rows."""
+    return np.unpackbits(buf[:, :, 0], axis=1, count=width)[..., None] if packed else buf
+
+
+def over_region(fb, x, y, kind, connectivity, ref, color):
+    """A seed fill in a translucent ``color``: the region is found on two copies of
+    the storage, filled with two different values (a pixel of the region changes in
+    at least one of them, any other pixel in neither), then ``color`` is composited
+    over it once (:mod:`scanline.draw._blend`).  Returns the region's size."""
+    from . import _blend
+
+    source = _blend.sources(fb, color, 1)[0]
+    buf, packed, width, height = target(fb)
+    region = np.zeros((height, width), bool)
+    for marker in (0, 255):
+        copy = buf.copy()
+        value = np.full(buf.shape[2], marker & 1 if packed else marker, np.uint8)
+        count = fill(fb, x, y, kind, connectivity, ref, value, buf=copy)
+        region |= (_region(copy, packed, width) != _region(buf, packed, width)).any(axis=2)
+    _blend.composite(fb, (region * np.uint8(255))[..., None], 0, 0, source)
+    return count
+
+
+def _fill_color(fb, x, y, kind, connectivity, ref, color):
+    """Fill opaque, or composite a translucent color over the region."""
+    from ._blend import translucent
+
+    if translucent(color):
+        return over_region(fb, x, y, kind, connectivity, ref, color)
+    return fill(fb, x, y, kind, connectivity, ref, fb.pixel(color))
 
 
 def seed_value(buf, packed, x, y):
@@ -87,7 +122,8 @@ def flood_fill(fb, x, y, color="white", connectivity=4, tolerance=0):
         The seed, a pixel of ``fb`` (rounded to the nearest pixel center); a seed
         outside the frame buffer is an error.
     color : color
-        The fill color.
+        The fill color; a translucent one is composited over the region, each
+        pixel once.
     connectivity : {4, 8}
         4: a pixel's neighbors share an edge with it; 8: or a corner.
     tolerance : number, >= 0
@@ -145,7 +181,7 @@ def flood_fill(fb, x, y, color="white", connectivity=4, tolerance=0):
         value = seed_value(buf, packed, sx, sy)
         return np.stack([value - tol, value + tol])
 
-    return fill(fb, x, y, "flood", connectivity, ref, fb.pixel(color))
+    return _fill_color(fb, x, y, "flood", connectivity, ref, color)
 
 
 def boundary_fill(fb, x, y, color="white", boundary="white", connectivity=4):
@@ -158,7 +194,7 @@ def boundary_fill(fb, x, y, color="white", boundary="white", connectivity=4):
         The seed, a pixel of ``fb``; a seed outside the frame buffer is an error.  A
         seed on the boundary fills nothing.
     color : color
-        The fill color.
+        The fill color; a translucent one is composited over the region.
     boundary : color or list of colors
         The color of the area's border; a list gives several (a tuple is one RGB(A)
         color).
@@ -206,4 +242,4 @@ def boundary_fill(fb, x, y, color="white", boundary="white", connectivity=4):
         ref = colors(fb, boundary, len(boundary), "boundary")
     else:
         ref = fb.pixel(boundary, "boundary")[None, :]
-    return fill(fb, x, y, "boundary", connectivity, ref, fb.pixel(color))
+    return _fill_color(fb, x, y, "boundary", connectivity, ref, color)

@@ -237,3 +237,9 @@ def test_translucent_flood_fill_by_hand_with_full_tolerance():
     assert sl.draw.flood_fill(fb, 0, 0, (255, 255, 255, 51), tolerance=255) == 3
     # a = 0.2: 0 -> 51, 100 -> 131, 200 -> 211
     assert fb.to_array().tolist() == [[51, 131, 211]]
+
+
+def test_a_list_is_one_color_for_one_primitive():
+    fb = sl.FrameBuffer(4, 4, mode="RGB", background="white")
+    paint_all(fb, [0, 0, 255, 128])
+    assert fb.get_pixel(0, 0) == (127, 127, 255)

@@ -62,18 +62,26 @@ def _alpha(spec):
     """The alpha (0..255) of one color spec without converting it fully."""
     if isinstance(spec, str):
         return rgba(spec)[3] if len(spec) in (5, 9) or not spec.startswith("#") else 255
-    if isinstance(spec, (tuple, list)) and len(spec) == 4 and isinstance(spec[3], numbers.Integral):
+    if isinstance(spec, (tuple, list, np.ndarray)) and np.ndim(spec) == 1 and len(spec) == 4 \
+            and isinstance(spec[3], numbers.Integral):
         return int(spec[3])
     return 255
 
 
-def translucent(color):
-    """Does ``color`` (one spec, a list of specs or an (N, 4) array) have an alpha
-    below 255 anywhere?  Integers (gray levels, bits, table indices) are opaque.
+def translucent(color, one=False):
+    """Does ``color`` have an alpha below 255 anywhere?  Integers (gray levels,
+    bits, table indices) are opaque.
+
+    ``color`` is one spec, or (for batches) a list of specs or an (N, 4) array;
+    ``one=True`` says it is one spec, so that a list ``[r, g, b, a]`` is a color.
 
     >>> translucent("red"), translucent("#ff000080"), translucent([(0, 0, 0), (9, 9, 9, 9)])
     (False, True, True)
+    >>> translucent([255, 0, 0, 128]), translucent([255, 0, 0, 128], one=True)
+    (False, True)
     """
+    if one:
+        return _alpha(color) < 255
     if isinstance(color, np.ndarray):
         return color.ndim == 2 and color.shape[1] == 4 and bool((color[:, 3] < 255).any())
     if isinstance(color, list):
@@ -186,11 +194,11 @@ def paint(fb, color, bbox, draw):
     >>> fb.get_pixel(0, 0)
     (127, 127, 255)
     """
-    if not translucent(color):
+    if not translucent(color, one=True):
         buf, packed, width, height = target(fb)
         draw(buf, packed, width, height, 0, 0, fb.pixel(color))
         return
-    _masked(fb, sources(fb, color, 1)[0], bbox, draw)
+    _masked(fb, sources(fb, [color], 1)[0], bbox, draw)
 
 
 def paint_each(fb, color, n, bboxes, draw):
@@ -225,7 +233,7 @@ def fill(fb, color, style, bbox, draw, outline):
     """:func:`scanline.draw._area.fill_area` with translucent solid fills
     composited (:func:`paint`).  Styled fills (hollow, patterns, hatches) are
     painted by the style, which stores ``color`` opaque."""
-    if (style is None or getattr(style, "kind", None) == "solid") and translucent(color):
+    if (style is None or getattr(style, "kind", None) == "solid") and translucent(color, one=True):
         paint(fb, color, bbox, draw)
     else:
         fill_area(fb, color, style, bbox, draw, outline)

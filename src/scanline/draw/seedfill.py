@@ -70,7 +70,7 @@ def over_region(fb, x, y, kind, connectivity, ref, color):
     over it once (:mod:`scanline.draw._blend`).  Returns the region's size."""
     from . import _blend
 
-    source = _blend.sources(fb, color, 1)[0]
+    source = _blend.sources(fb, [color], 1)[0]
     buf, packed, width, height = target(fb)
     region = np.zeros((height, width), bool)
     for marker in (0, 255):
@@ -86,7 +86,7 @@ def _fill_color(fb, x, y, kind, connectivity, ref, color):
     """Fill opaque, or composite a translucent color over the region."""
     from ._blend import translucent
 
-    if translucent(color):
+    if translucent(color, one=True):
         return over_region(fb, x, y, kind, connectivity, ref, color)
     return fill(fb, x, y, kind, connectivity, ref, fb.pixel(color))
 

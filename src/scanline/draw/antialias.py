@@ -205,7 +205,7 @@ def fill(fb, contours, color="white", rule="nonzero"):
            [  0, 128, 255, 128,   0]], dtype=uint8)
     """
     verts, offsets = parse.contours("contours", contours)
-    _fill_parsed(fb, verts, offsets, np.array([0, len(offsets) - 1], np.int64), color, rule)
+    _fill_parsed(fb, verts, offsets, np.array([0, len(offsets) - 1], np.int64), [color], rule)
 
 
 def fills(fb, shapes, color="white", rule="nonzero", counts=None):

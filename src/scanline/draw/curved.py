@@ -138,7 +138,7 @@ def fill_circle(fb, xc, yc, r, color="white", style=None, antialias=False):
     --###--
     """
     if antialias:
-        _antialiased(fb, "(xc, yc, r)", [(xc, yc, r)], 3, color, style)
+        _antialiased(fb, "(xc, yc, r)", [(xc, yc, r)], 3, [color], style)
         return
     xc, yc = _center(xc, yc)
     r = v.radius("r", r)
@@ -188,7 +188,7 @@ def fill_ellipse(fb, xc, yc, rx, ry, color="white", style=None, antialias=False)
     --#####--
     """
     if antialias:
-        _antialiased(fb, "(xc, yc, rx, ry)", [(xc, yc, rx, ry)], 4, color, style)
+        _antialiased(fb, "(xc, yc, rx, ry)", [(xc, yc, rx, ry)], 4, [color], style)
         return
     xc, yc = _center(xc, yc)
     rx = v.radius("rx", rx)

@@ -393,3 +393,46 @@ def test_svg_groups_segments_and_escapes_their_names():
     groups = root.findall("{http://www.w3.org/2000/svg}g")
     assert [g.get("data-segment") for g in groups] == [name]
     assert groups[0].find("{http://www.w3.org/2000/svg}title").text == name
+
+
+class OneByOne:
+    """A device with only stroke and fill: the interpreter draws every primitive on
+    its own through it (no batches)."""
+
+    def __init__(self, device):
+        self.device, self.width, self.height = device, device.width, device.height
+
+    def stroke(self, pieces, closed, attributes):
+        self.device.stroke(pieces, closed, attributes)
+
+    def fill(self, contours, attributes):
+        self.device.fill(contours, attributes)
+
+
+@HYPOTHESIS
+@given(st.lists(st.tuples(st.sampled_from(["line", "closed", "area", "hatched"]),
+                          st.lists(polygon_point, min_size=1, max_size=6),
+                          st.sampled_from(["white", "red"])), min_size=1, max_size=12),
+       st.sampled_from([(0, 0, 1, 1), (0.2, 0.1, 0.7, 0.8)]),
+       st.floats(-1, 1))
+def test_batches_draw_what_one_by_one_draws(items, viewport, turn):
+    """Runs of thin lines and solid areas are drawn in batches; the pixels and the
+    vector commands are those of drawing each primitive alone."""
+    df = DisplayFile()
+    df.set_viewing(window=(0, 0, 100, 100), viewport=viewport)
+    df.create_segment("s")
+    for kind, pts, color in items:
+        if kind in ("line", "closed"):
+            df.polyline(pts, color=color, closed=kind == "closed")
+        elif len(pts) >= 3:
+            df.polygon(pts, color=color, style="hatch:30:3" if kind == "hatched" else None)
+    df.close_segment()
+    df.set_transformation("s", sl.transform.rotation(turn, pivot=(0.5, 0.5)))
+    fb1, fb2 = sl.FrameBuffer(W, H), sl.FrameBuffer(W, H)
+    interpret(df, RasterDevice(fb1))
+    interpret(df, OneByOne(RasterDevice(fb2)))
+    assert (fb1.to_array() == fb2.to_array()).all()
+    v1, v2 = VectorDevice(W, H), VectorDevice(W, H)
+    interpret(df, v1)
+    interpret(df, OneByOne(v2))
+    assert np.array_equal(v1.lines(), v2.lines())

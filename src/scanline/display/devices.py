@@ -11,6 +11,11 @@ y up) and two drawing operations, called with geometry already clipped to the de
     One area: contours combined by ``attributes["rule"]``, painted in
     ``attributes["style"]`` (None: solid) and ``attributes["color"]``.
 
+and optionally two batch operations (the interpreter uses ``stroke`` and ``fill``
+when a device lacks them): ``segments(segments, attributes)``, thin solid line
+segments as an (N, 4) array, and ``areas(polygons, attributes)``, solid one-contour
+areas that each take the rule on their own.
+
 :class:`RasterDevice` scan-converts into a :class:`~scanline.FrameBuffer`;
 :class:`VectorDevice` records the MOVE/LINE commands a random-scan display would
 refresh; :class:`SVGDevice` writes an SVG document.
@@ -81,6 +86,15 @@ class RasterDevice:
                      rule=attributes["rule"], style=style,
                      antialias=self.antialias and style is None)
 
+    def segments(self, segments, attributes):
+        """Thin solid line segments (N, 4), one color, in one call."""
+        draw.lines(self.fb, segments, color=attributes["color"], antialias=self.antialias)
+
+    def areas(self, polygons, attributes):
+        """Solid one-contour areas, one color and rule, in one call."""
+        draw.polygons(self.fb, list(polygons), color=attributes["color"],
+                      rule=attributes["rule"], antialias=self.antialias)
+
 
 def _fill_strokes(contours, attributes):
     """The strokes a vector device draws for an area: hatch lines for a hatch style,
@@ -126,6 +140,13 @@ class VectorDevice:
     def fill(self, contours, attributes):
         self._draw(_fill_strokes(contours, attributes), attributes["color"])
         self._draw(_segments(contours, True), attributes["color"])
+
+    def segments(self, segments, attributes):
+        self._draw(segments, attributes["color"])
+
+    def areas(self, polygons, attributes):
+        for p in polygons:
+            self.fill([p], attributes)
 
     @property
     def commands(self):

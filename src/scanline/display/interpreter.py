@@ -9,6 +9,9 @@ each of its primitives in order, the interpreter
    the device's frame (the workstation window is always clipped, as in GKS);
 3. sends the result to the device as strokes and fills.
 
+Runs of similar primitives (thin solid polylines of one color, solid polygons of one
+color) are mapped, clipped and drawn in batches (:mod:`scanline.display.batch`).
+
 A highlighted segment gets a frame in the highlight color around what it drew.
 """
 
@@ -16,7 +19,7 @@ import numpy as np
 
 from .. import _validate as v
 from ..errors import ArgumentValueError, ScanlineError
-from . import pipeline, text
+from . import batch, pipeline, text
 from .primitives import THIN, Primitive
 from .viewing import device_rectangle, workstation
 
@@ -127,17 +130,25 @@ def interpret(display_file, device, highlight="magenta"):
         drawn = []
         if groups:
             device.begin_segment(seg.name)
-        for i, prim in enumerate(seg.primitives):
-            rect = frame if prim.clip is None else pipeline.intersect(
-                _padded(device_rectangle(ws, prim.clip)), frame)
-            if rect is not None:
-                where = f"segment {seg.name!r}, primitive {i} ({prim.kind})"
-                try:
-                    drawn += draw_primitive(prim.transformed(m), rect, device, where)
-                except ScanlineError as error:
-                    if str(error).startswith(where):
-                        raise
-                    raise type(error)(f"{where}: {error}") from None
+        for start, run, same in batch.runs(seg.primitives):
+            rect = frame if run[0].clip is None else pipeline.intersect(
+                _padded(device_rectangle(ws, run[0].clip)), frame)
+            if rect is None:
+                continue
+            if len(run) > 1:
+                pts, bad = (batch.lines if same[0] == "lines" else batch.areas)(
+                    run, m, rect, device)
+                drawn += pts
+                if bad is None:
+                    continue
+                start, run = start + bad, run[bad:bad + 1]  # raises the range error
+            where = f"segment {seg.name!r}, primitive {start} ({run[0].kind})"
+            try:
+                drawn += draw_primitive(run[0].transformed(m), rect, device, where)
+            except ScanlineError as error:
+                if str(error).startswith(where):
+                    raise
+                raise type(error)(f"{where}: {error}") from None
         if seg.highlighted and drawn:
             _frame(np.vstack(drawn), frame, device, highlight)
         if groups:

@@ -235,3 +235,13 @@ def test_coordinates_beyond_the_device_range_are_refused():
     df.set_transformation("s", sl.transform.scaling(1e12))
     with pytest.raises(sl.ArgumentValueError, match="segment 's', primitive 0"):
         raster(df)
+
+
+def test_colors_as_lists_and_arrays():
+    df = pixel_file()
+    df.create_segment("s")
+    df.polyline([(0, 0), (10, 0)], color=np.array([255, 0, 0]))
+    df.polyline([(0, 2), (10, 2)], color=[0, 255, 0])
+    df.close_segment()
+    fb = raster(df)
+    assert colors_at(fb, [(5, 0), (5, 2)]) == [(255, 0, 0), (0, 255, 0)]

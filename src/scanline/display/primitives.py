@@ -48,7 +48,10 @@ TEXT_CLIPS = ("string", "character", "stroke")
 
 
 def color(name, value):
-    """Check a color spec (anything ``FrameBuffer.pixel`` takes); return it unchanged."""
+    """Check a color spec (anything ``FrameBuffer.pixel`` takes); return it, a list or
+    array as a tuple (so that colors compare and hash)."""
+    if isinstance(value, np.ndarray):
+        value = value.tolist()
     if isinstance(value, list):
         value = tuple(value)
     rgba(value, name)

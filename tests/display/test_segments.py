@@ -150,8 +150,12 @@ def test_primitive_errors_name_the_argument(call, message):
     ({"clip": 2}, "clip"),
 ])
 def test_viewing_errors(kwargs, message):
+    df = DisplayFile()
+    df.set_viewing(window=(0, 0, 10, 10), viewport=(0, 0, 0.5, 0.5))
+    before = df.normalization
     with pytest.raises(sl.ScanlineError, match=message):
-        DisplayFile().set_viewing(**kwargs)
+        df.set_viewing(**kwargs)
+    assert np.array_equal(df.normalization, before)  # unchanged by the bad call
 
 
 # -- priority, visibility, highlighting ------------------------------------------------------

@@ -144,11 +144,11 @@ class DisplayFile:
         clip : bool
             Clip later primitives to the viewport (GKS's clipping indicator).
         """
-        self._normalization = normalization(window, viewport, view_up, keep_aspect,
-                                            self.aspect)
-        self._clip = ndc_rectangle("viewport", viewport) if clip else None
         if not isinstance(clip, bool):
             raise ArgumentTypeError(f"clip must be True or False, got {v._show(clip)}")
+        n = normalization(window, viewport, view_up, keep_aspect, self.aspect)
+        self._normalization = n
+        self._clip = ndc_rectangle("viewport", viewport) if clip else None
 
     @property
     def normalization(self):

@@ -254,3 +254,14 @@ def test_fuzzed_states_and_drawings_never_crash(ops, draws):
                     ctx.markers([(a, b)], kind="asterisk")
             except sl.ScanlineError:
                 pass
+
+
+def test_a_bad_attribute_changes_nothing():
+    ctx = sl.Context(frame())
+    before = (ctx.line_attributes, ctx.fill_attributes, ctx.text_attributes)
+    for call in (lambda: ctx.set_fill(color="red", rule="odd"),
+                 lambda: ctx.set_line(color="red", cap="pointy"),
+                 lambda: ctx.set_text(color="red", font="comic")):
+        with pytest.raises(sl.ArgumentValueError):
+            call()
+    assert (ctx.line_attributes, ctx.fill_attributes, ctx.text_attributes) == before

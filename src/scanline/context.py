@@ -191,7 +191,7 @@ class Context:
         """Change fill attributes: ``color``, ``style`` (FillStyle or its word),
         ``rule`` and ``edge`` (an outline color, drawn with the line attributes, or
         ``False`` for none)."""
-        f = self._state.fill
+        f = dict(self._state.fill)
         if color is not None:
             f["color"] = p.color("color", color)
         if style is not None:
@@ -200,6 +200,7 @@ class Context:
             f["rule"] = v.choice("rule", rule, p.RULES)
         if edge is not None:
             f["edge"] = None if edge is False else p.color("edge", edge)
+        self._state.fill = f
 
     def set_text(self, **attributes):
         """Change text attributes: ``color``, ``font``, ``height``, ``angle``,

@@ -505,3 +505,20 @@ def test_every_key_is_located_on_its_line(path):
             assert line is not None, key_path
             row = rows[line - 1]
             assert key in row, (key_path, row)
+
+
+def test_line_clipping_example_clips_p1_p2_as_the_notes_say():
+    """P1 = (45, 5) below the window (20, 20)-(70, 60), P2 = (10, 90) left of and above
+    it: the visible part runs from P1' = (45 - 35 * 15/85, 20) on the bottom edge to
+    P2'' = (45 - 35 * 55/85, 60) on the top edge (the left-edge intersection, at
+    y = 5 + 85 * 25/35 = 65.7, is still above the window)."""
+    scene = load(os.path.join(ROOT, "examples", "scenes", "line_clipping.toml"))
+    df = scene.display_file
+    for seg in df.segments:  # show only the clipped lines
+        df.set_visibility(seg.name, seg.name == "lines-clipped")
+    first = scene.vector().lines()[0]
+    ws = sl.viewing.ndc_to_device(scene.canvas.width, scene.canvas.height)
+    n = ws @ sl.viewing.window_to_viewport((20, 20, 70, 60), (0.6, 0.2, 0.85, 0.6))
+    expected = sl.transform.apply(n, [(45 - 35 * 15 / 85, 20), (45 - 35 * 55 / 85, 60)])
+    assert 5 + 85 * 25 / 35 > 60
+    assert np.allclose(first.reshape(2, 2), expected, atol=1e-6)

@@ -1,17 +1,17 @@
 """Figures of ``scanline demo`` drawn from the scene files in ``examples/scenes``.
 
 Each figure renders one example scene through the display-file interpreter (raster
-device) and shows the display file's segment table beside it.  The scene files live
-in the source tree; when scanline is installed without them, :data:`FIGURES` is empty.
+device) and shows the display file's segment table beside it.  The scene files are
+package data (``scanline/data/scenes``; ``examples/scenes`` in the source tree links
+to them), so the figures come with every installation.
 """
 
 import os
 
 from .figures import Figure
 
-#: The folder of example scene files (in a source checkout).
-EXAMPLES = os.path.normpath(os.path.join(os.path.dirname(__file__), "..", "..", "..",
-                                         "examples", "scenes"))
+#: The folder of example scene files.
+EXAMPLES = os.path.normpath(os.path.join(os.path.dirname(__file__), "..", "data", "scenes"))
 
 
 def segment_table(scene):
@@ -42,7 +42,8 @@ def _figure(stem, title, caption, source):
     return make
 
 
-_ALL = (
+#: The figures, in gallery order.
+FIGURES = (
     _figure("translation", "A polygon moved by a translation",
             "The blue polygon's segment is drawn again with the segment transformation "
             "T(-5.5, 3.75): every vertex moves by the translation vector (dashed).",
@@ -66,6 +67,3 @@ _ALL = (
             "highlighted.",
             "Notes, syllabus of chapter 4 (window to viewport)"),
 )
-
-#: The figures, in gallery order (none when the example files are not installed).
-FIGURES = _ALL if os.path.isdir(EXAMPLES) else ()

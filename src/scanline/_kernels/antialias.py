@@ -43,7 +43,7 @@ import math
 import numpy as np
 
 from ._jit import helper, inline, kernel
-from .blend import GRAY, RGB, RGBA, over
+from .blend import BIT, GRAY, RGB, RGBA, over
 from .raster import BAND_SHIFT
 
 
@@ -179,6 +179,8 @@ def draw_lines(buf, mode, width, height, table, segments, srcs):
         lines_loop(buf, GRAY, table, width, height, segments, srcs, starts, items)
     elif mode == RGBA:
         lines_loop(buf, RGBA, table, width, height, segments, srcs, starts, items)
+    elif mode == BIT:
+        lines_loop(buf, BIT, table, width, height, segments, srcs, starts, items)
     else:
         lines_loop(buf, mode, table, width, height, segments, srcs, starts, items)
 
@@ -234,5 +236,7 @@ def draw_ellipses(buf, mode, width, height, table, ellipses, srcs):
         ellipses_loop(buf, GRAY, table, width, height, ellipses, srcs)
     elif mode == RGBA:
         ellipses_loop(buf, RGBA, table, width, height, ellipses, srcs)
+    elif mode == BIT:
+        ellipses_loop(buf, BIT, table, width, height, ellipses, srcs)
     else:
         ellipses_loop(buf, mode, table, width, height, ellipses, srcs)

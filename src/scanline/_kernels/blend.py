@@ -73,27 +73,29 @@ def over(buf, mode, table, x, y, src, a):
     ``a <= 0`` (or NaN) changes nothing.  Callers inline this with a *constant*
     ``mode`` so that the mode tests fold away: measured, a run-time mode made the
     antialiased line kernel three to four times slower.  ``mode`` may also be a
-    run-time value (the rarely used modes "P" and "1" share one copy)."""
+    run-time value (mode "P", whose nearest-entry search dominates anyway)."""
     if not a > 0.0:
         return
     if a > 1.0:
         a = 1.0
-    if mode == RGB:
+    # Each mode's stores sit in a loop over the channels (of one pass for "L" and
+    # "1"): measured, straight-line stores made the antialiased line kernel four to
+    # five times slower in those modes (LLVM apparently transforms the caller's
+    # short column loop differently).
+    if mode == RGB or mode == GRAY:
         f = int(a * 65536.0 + 0.5)      # 16-bit fixed point: exact to 255 / 65536
-        for c in range(3):
+        for c in range(3 if mode == RGB else 1):
             d = np.int64(buf[y, x, c])
             buf[y, x, c] = np.uint8(d + (((np.int64(src[c]) - d) * f + 32768) >> 16))
-    elif mode == GRAY:
-        f = int(a * 65536.0 + 0.5)
-        d = np.int64(buf[y, x, 0])
-        buf[y, x, 0] = np.uint8(d + (((np.int64(src[0]) - d) * f + 32768) >> 16))
     elif mode == RGBA:
         da = buf[y, x, 3] / 255.0
         keep = da * (1.0 - a)
         oa = a + keep
-        for c in range(3):
-            buf[y, x, c] = level((src[c] * a + buf[y, x, c] * keep) / oa)
-        buf[y, x, 3] = level(oa * 255.0)
+        for c in range(4):
+            if c < 3:
+                buf[y, x, c] = level((src[c] * a + buf[y, x, c] * keep) / oa)
+            else:
+                buf[y, x, c] = level(oa * 255.0)
     elif mode == INDEXED:
         i = buf[y, x, 0]
         r = table[i, 0] + (src[0] - table[i, 0]) * a
@@ -101,7 +103,7 @@ def over(buf, mode, table, x, y, src, a):
         b = table[i, 2] + (src[2] - table[i, 2]) * a
         buf[y, x, 0] = nearest(table, r, g, b)
     else:
-        if a >= 0.5:
+        for _ in range(1 if a >= 0.5 else 0):
             put_bit(buf, x, y, src[0] != 0.0)
 
 
@@ -115,14 +117,16 @@ def row_loop(buf, mode, table, y, x0, cover, n, src):
 
 @helper
 def composite_row(buf, mode, table, y, x0, cover, n, src):
-    """:func:`row_loop` with the mode made a constant (one copy per common mode;
-    "P" and "1" share the last)."""
+    """:func:`row_loop` with the mode made a constant (one copy per mode but "P",
+    whose nearest-entry search dominates anyway)."""
     if mode == RGB:
         row_loop(buf, RGB, table, y, x0, cover, n, src)
     elif mode == GRAY:
         row_loop(buf, GRAY, table, y, x0, cover, n, src)
     elif mode == RGBA:
         row_loop(buf, RGBA, table, y, x0, cover, n, src)
+    elif mode == BIT:
+        row_loop(buf, BIT, table, y, x0, cover, n, src)
     else:
         row_loop(buf, mode, table, y, x0, cover, n, src)
 

@@ -121,15 +121,16 @@ def band_lists(segments, height):
     """For each band of ``1 << BAND_SHIFT`` scan lines, the segments that can have
     pixels in it, in their given order: segment indices ``items[starts[b]:starts[b
     + 1]]`` for band b (a stable counting sort; a segment is listed in every band
-    its rows [min y - 2, max y + 2] meet)."""
+    its rows [min y - 1.25, max y + 1.25] meet: a column span reaches at most
+    sqrt(2) / 2 + 1/2 < 1.25 beyond the segment's y range)."""
     n = segments.shape[0]
     bands = ((height - 1) >> BAND_SHIFT) + 1
     starts = np.zeros(bands + 1, np.int64)
     first = np.empty(n, np.int64)
     last = np.empty(n, np.int64)
     for i in range(n):
-        lo = min(segments[i, 1], segments[i, 3]) - 2.0
-        hi = max(segments[i, 1], segments[i, 3]) + 2.0
+        lo = min(segments[i, 1], segments[i, 3]) - 1.25
+        hi = max(segments[i, 1], segments[i, 3]) + 1.25
         first[i] = int(max(lo, 0.0)) >> BAND_SHIFT
         last[i] = int(min(hi, height - 1.0)) >> BAND_SHIFT if hi >= 0.0 else -1
         for b in range(first[i], last[i] + 1):

@@ -2,6 +2,7 @@
 
     python benchmarks/report.py                          # Markdown of results/latest.json
     python benchmarks/report.py results/latest.json --text
+    python benchmarks/report.py --topics                 # the topic benchmarks' targets
 """
 
 import json
@@ -172,7 +173,32 @@ def markdown(record):
     return "\n".join(out)
 
 
+#: The topic benchmarks (``benchmarks/<topic>.py``), in README order.
+TOPICS = ("strokes", "antialias", "text", "dither", "clip", "display", "curves", "flatten")
+
+
+def topics_markdown(folder=os.path.join(HERE, "results")):
+    """One markdown table of every target recorded by the topic benchmarks
+    (``results/<topic>.json``, written by ``common.Report``)."""
+    out = ["| benchmark | workload | peer | peer time / scanline time | target | met |",
+           "|---|---|---|---:|---|:---:|"]
+    for topic in TOPICS:
+        path = os.path.join(folder, f"{topic}.json")
+        if not os.path.exists(path):
+            continue
+        with open(path) as f:
+            record = json.load(f)
+        for t in record["targets"]:
+            out.append(f"| {topic} ({record['date'][:10]}) | {t['workload']} | {t['peer']} | "
+                       f"{t['ratio']:.2f}x | {t['text']} (>= {t['minimum']:g}) | "
+                       f"{'yes' if t['met'] else 'no'} |")
+    return "\n".join(out)
+
+
 def main(argv):
+    if "--topics" in argv:
+        print(topics_markdown())
+        return
     args = [a for a in argv if not a.startswith("--")]
     path = args[0] if args else os.path.join(HERE, "results", "latest.json")
     with open(path) as f:

@@ -84,9 +84,9 @@ def page(figures):
 
 #: The modules of figures, in gallery order; each has a ``FIGURES`` tuple of
 #: functions that return a :class:`scanline.cli.figures.Figure`.
-FIGURE_MODULES = ("figures", "figures_scene", "figures_color", "figures_surfaces",
-                  "figures_clip", "figures_curves", "figures_attributes", "figures_text",
-                  "figures_antialias")
+FIGURE_MODULES = ("figures", "figures_attributes", "figures_antialias", "figures_color",
+                  "figures_text", "figures_clip", "figures_scene", "figures_curves",
+                  "figures_surfaces")
 
 
 def all_figures():

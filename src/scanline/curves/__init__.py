@@ -20,8 +20,8 @@ from .hermite import (CardinalSpline, CatmullRom, Hermite, KochanekBartels,
                       PiecewisePolynomial, hermite_blending, piecewise_bezier)
 from .continuity import Join, continuity
 from .matrices import bezier_matrix, bspline_matrix, cardinal_matrix, hermite_matrix
-from .surfaces import BezierSurface, BSplineSurface  # D2
-from .teapot import teapot, teapot_mesh  # D2
+from .surfaces import BezierSurface, BSplineSurface
+from .teapot import teapot, teapot_mesh
 
 __all__ = ["Curve", "Bezier", "BSpline", "NURBS", "Hermite", "CardinalSpline", "CatmullRom",
            "KochanekBartels", "PiecewisePolynomial", "piecewise_bezier", "continuity", "Join",

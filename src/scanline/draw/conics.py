@@ -59,9 +59,9 @@ def circle(fb, xc, yc, r, color="white", *, style=None, antialias=False, width=N
     -#---#-
     --###--
     """
-    attrs = strokes.resolve(style, width, cap, join, miter_limit, dash, dash_phase, pen)
+    attrs = strokes.styled(style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen)
     xc, yc, r = v.coordinate("xc", xc), v.coordinate("yc", yc), v.radius("r", r)
-    if not strokes.plain(attrs, antialias):
+    if attrs is not None:
         strokes.conics(fb, np.array([[xc, yc, r, r]], np.int64), color, attrs, antialias)
         return
     buf, packed, width, height = target(fb)
@@ -75,9 +75,9 @@ def circles(fb, circles, color="white", *, style=None, antialias=False, width=No
     ``color`` is one color or one per circle (see :func:`line` and :func:`lines`);
     the line attributes are those of :func:`circle`, for every circle.
     """
-    attrs = strokes.resolve(style, width, cap, join, miter_limit, dash, dash_phase, pen)
+    attrs = strokes.styled(style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen)
     arr = v.coordinate_array("circles", circles, 3, radius_columns=(2,))
-    if not strokes.plain(attrs, antialias):
+    if attrs is not None:
         strokes.conics(fb, arr[:, [0, 1, 2, 2]], color, attrs, antialias)
         return
     buf, packed, width, height = target(fb)
@@ -138,12 +138,12 @@ def ellipse(fb, xc, yc, rx, ry, color="white", *, style=None, antialias=False, w
     -#-----#-
     --#####--
     """
-    attrs = strokes.resolve(style, width, cap, join, miter_limit, dash, dash_phase, pen)
+    attrs = strokes.styled(style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen)
     rx = v.radius("rx", rx)
     ry = v.radius("ry", ry)
     _check_ellipse(rx, ry)
     xc, yc = v.coordinate("xc", xc), v.coordinate("yc", yc)
-    if not strokes.plain(attrs, antialias):
+    if attrs is not None:
         strokes.conics(fb, np.array([[xc, yc, rx, ry]], np.int64), color, attrs, antialias)
         return
     buf, packed, width, height = target(fb)
@@ -157,7 +157,7 @@ def ellipses(fb, ellipses, color="white", *, style=None, antialias=False, width=
     ``color`` is one color or one per ellipse; the line attributes are those of
     :func:`circle`, for every ellipse.
     """
-    attrs = strokes.resolve(style, width, cap, join, miter_limit, dash, dash_phase, pen)
+    attrs = strokes.styled(style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen)
     arr = v.coordinate_array("ellipses", ellipses, 4, radius_columns=(2, 3))
     if len(arr):
         big = (np.maximum(arr[:, 2], arr[:, 3]) > ELLIPSE_AXIS_LIMIT) | (
@@ -165,7 +165,7 @@ def ellipses(fb, ellipses, color="white", *, style=None, antialias=False, width=
         if big.any():
             row = int(np.flatnonzero(big)[0])
             _check_ellipse(int(arr[row, 2]), int(arr[row, 3]))
-    if not strokes.plain(attrs, antialias):
+    if attrs is not None:
         strokes.conics(fb, arr, color, attrs, antialias)
         return
     buf, packed, width, height = target(fb)

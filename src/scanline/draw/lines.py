@@ -77,8 +77,8 @@ def line(fb, x0, y0, x1, y1, color="white", method="bresenham", *, style=None,
     ##----
     """
     code = _method(method)
-    attrs = strokes.resolve(style, width, cap, join, miter_limit, dash, dash_phase, pen)
-    if not strokes.plain(attrs, antialias):
+    attrs = strokes.styled(style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen)
+    if attrs is not None:
         _attributes_need_bresenham(code)
         points = [(v.number("x0", x0), v.number("y0", y0)), (v.number("x1", x1), v.number("y1", y1))]
         strokes.polyline(fb, points, color, style=attrs, antialias=antialias)
@@ -119,8 +119,8 @@ def lines(fb, segments, color="white", method="bresenham", *, style=None, antial
     #---#
     """
     code = _method(method)
-    attrs = strokes.resolve(style, width, cap, join, miter_limit, dash, dash_phase, pen)
-    if not strokes.plain(attrs, antialias):
+    attrs = strokes.styled(style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen)
+    if attrs is not None:
         _attributes_need_bresenham(code)
         segs = strokes.segment_array("segments", segments)
         strokes.polylines(fb, segs.reshape(-1, 2), color, counts=np.full(len(segs), 2),

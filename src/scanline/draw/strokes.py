@@ -48,9 +48,19 @@ def resolve(style, width=None, cap=None, join=None, miter_limit=None, dash=None,
     return style.replace(**changes) if changes else style
 
 
-def plain(style, antialias):
-    """Is this a plain width-1 solid line (the classic kernels draw it)?"""
-    return not antialias and style.width == 1 and style.dash is None and style.pen is None
+def styled(style, antialias, width=None, cap=None, join=None, miter_limit=None, dash=None,
+           dash_phase=None, pen=None):
+    """The LineStyle of a drawing call, or None when the call draws a plain width-1
+    solid line, which the classic kernels draw.  A call that names no attribute
+    returns at once: it is the common case, and single-primitive loops pay for every
+    microsecond here."""
+    if (style is None and not antialias and width is None and cap is None and join is None
+            and miter_limit is None and dash is None and dash_phase is None and pen is None):
+        return None
+    style = resolve(style, width, cap, join, miter_limit, dash, dash_phase, pen)
+    if not antialias and style.width == 1 and style.dash is None and style.pen is None:
+        return None
+    return style
 
 
 def _closed_flags(closed, n):

@@ -137,8 +137,9 @@ def register(subparsers):
     """Add the ``trace`` command, with one sub-command per algorithm."""
     parser = subparsers.add_parser(
         "trace", help="print an algorithm's step table, as the notes tabulate it",
-        description="Run a scan-conversion algorithm step by step and print its table:\n"
-        "the decision parameter p and the pixel chosen at each step k.",
+        description="Run one of the notes' algorithms step by step and print its table:\n"
+        "decision parameters and pixels, region codes and clipping parameters,\n"
+        "de Casteljau's triangle or the B-spline blending functions.",
         epilog="Examples:\n  scanline trace bresenham 20 10 30 18\n"
         "  scanline trace midpoint-circle 10 --center 5 5 --format csv\n"
         "  scanline trace midpoint-ellipse 8 6 --format json\n"

@@ -126,15 +126,31 @@ primitives = [{type = "markers", points = [[5, 5]]}]
     assert [s.name for s in df.segments] == ["s@l", "s@r"]
 
 
-@pytest.mark.parametrize("step", [
-    "{rotate = {degrees = 30}}", "{rotate = {radians = 0.5, pivot = [1, 2]}}",
-    "{scale = [2, 3]}", "{scale = {factors = [2, 1], fixed = [3, 3]}}",
-    "{reflect = \"y=x\"}", "{reflect = {point = [0, 1], direction = [1, 1]}}",
-    "{shear = {x = 0.5, reference = [0, 2]}}",
-    "{matrix = [[1, 0, 2], [0, 1, 3], [0, 0, 1]]}",
+_C30, _S30 = math.sqrt(3) / 2, 0.5
+_C05, _S05 = math.cos(0.5), math.sin(0.5)
+
+
+@pytest.mark.parametrize("step, expected", [
+    ("{rotate = {degrees = 30}}", [[_C30, -_S30, 0], [_S30, _C30, 0]]),
+    # T(1, 2) R(0.5) T(-1, -2)
+    ("{rotate = {radians = 0.5, pivot = [1, 2]}}",
+     [[_C05, -_S05, 1 - _C05 + 2 * _S05], [_S05, _C05, 2 - _S05 - 2 * _C05]]),
+    ("{scale = [2, 3]}", [[2, 0, 0], [0, 3, 0]]),
+    ("{scale = {factors = [2, 1], fixed = [3, 3]}}", [[2, 0, -3], [0, 1, 0]]),
+    ("{reflect = \"y=x\"}", [[0, 1, 0], [1, 0, 0]]),
+    # about the line y = x + 1: (x, y) -> (y - 1, x + 1)
+    ("{reflect = {point = [0, 1], direction = [1, 1]}}", [[0, 1, -1], [1, 0, 1]]),
+    # x' = x + 0.5 (y - 2)
+    ("{shear = {x = 0.5, reference = [0, 2]}}", [[1, 0.5, -1], [0, 1, 0]]),
+    ("{matrix = [[1, 0, 2], [0, 1, 3], [0, 0, 1]]}", [[1, 0, 2], [0, 1, 3]]),
 ])
-def test_every_transformation_step_is_accepted(step):
-    loads(MINIMAL.replace('name = "a"', f'name = "a"\ntransform = [{step}]'))
+def test_every_transformation_step_gives_its_matrix(step, expected):
+    """Each step becomes the segment transformation derived by hand (in world
+    coordinates: the display file stores N·M·N⁻¹ for the normalization N)."""
+    df = loads(MINIMAL.replace('name = "a"', f'name = "a"\ntransform = [{step}]')).display_file
+    n = df.normalization
+    world = np.linalg.inv(n) @ df.segment("a").transformation @ n
+    np.testing.assert_allclose(world, np.array(expected + [[0, 0, 1]], float), atol=1e-12)
 
 
 BAD = [

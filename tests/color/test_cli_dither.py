@@ -64,6 +64,8 @@ def test_written_image_is_the_dithered_image(tmp_path, picture, options, expecte
     (lambda d, src: [src, d / "o.png", "--method", "atkinson"], "invalid choice"),
     (lambda d, src: [src, d / "o.jpg"], "unknown image type"),
     (lambda d, src: [src, d / "no" / "o.png"], "does not exist"),
+    (lambda d, src: [d, d / "o.png"], "is not a readable image"),   # a folder
+    (lambda d, src: [src, d / "o.png", "--scale", "100000"], "smaller --scale"),
 ])
 def test_bad_input(tmp_path, picture, make_args, words):
     (tmp_path / "bad.png").write_bytes(b"not an image")

@@ -60,6 +60,16 @@ def palette_table(text, image):
     return sl.color.color_table([c.strip() for c in text.split(",")], "--palette")
 
 
+def check_scale(scale, width, height, limit):
+    """Refuse a ``--scale`` whose enlarged image would have more than ``limit``
+    pixels (Pillow's decompression-bomb bound) before memory is spent on it."""
+    if scale >= 1 and width * height * scale * scale > limit:
+        raise ArgumentValueError(
+            f"--scale {scale} would enlarge the {width} x {height} image to "
+            f"{width * scale} x {height * scale} pixels, more than {limit}; use a smaller "
+            "--scale")
+
+
 def run(args):
     """Read, dither and save atomically."""
     from PIL import Image
@@ -73,7 +83,11 @@ def run(args):
             image.load()
             source = sl.FrameBuffer.from_pil(image)
     except Image.DecompressionBombError as exc:
-        raise ArgumentValueError(f"{args.input}: {exc}") from None
+        raise ArgumentValueError(f"IN {args.input!r}: {exc}") from None
+    except OSError as exc:
+        raise ArgumentValueError(
+            f"IN {args.input!r} is not a readable image: {exc.strerror or exc}") from None
+    check_scale(args.scale, source.width, source.height, Image.MAX_IMAGE_PIXELS)
     if args.palette is not None:
         fb = sl.color.dither(source, args.method, palette=palette_table(args.palette, source),
                              serpentine=args.serpentine)

@@ -1,6 +1,8 @@
 """Text in every frame-buffer mode, opaque and translucent, with and without
 antialiasing; the glyph cache changes nothing."""
 
+from collections import OrderedDict
+
 import numpy as np
 import pytest
 
@@ -54,8 +56,10 @@ def test_cached_and_direct_fills_agree(monkeypatch, mode, antialias):
     cached = sl.FrameBuffer(200, 120, mode=mode)
     sl.draw.text(cached, 3, 20, "Sg", height=70, angle=0.1, antialias=antialias)
     monkeypatch.setattr(glyphcache, "MAX_CACHED", 1)
+    monkeypatch.setattr(glyphcache, "_CACHES", OrderedDict())    # forget the cached size
     direct = sl.FrameBuffer(200, 120, mode=mode)
     sl.draw.text(direct, 3, 20, "Sg", height=70, angle=0.1, antialias=antialias)
+    assert [images for _, images in glyphcache._CACHES.values()] == [None]   # filled directly
     a, b = cached.to_array().astype(int), direct.to_array().astype(int)
     assert np.abs(a - b).max() <= (1 if antialias else 0)
     assert (a > 0).sum() > 1000

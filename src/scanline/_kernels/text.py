@@ -98,3 +98,77 @@ def stamp_glyphs(buf, packed, width, height, atlas, masks, runs, mids, gx, gy, v
     else:
         _stamp(buf, False, width, height, atlas, masks, runs, mids, gx, gy, value, alpha,
                threshold, solid)
+
+
+@kernel
+def stamp_line(buf, packed, width, height, atlas, masks, runs, mask_of, table, advances,
+               codes, x, y, line, value, alpha, threshold, solid):
+    """Place and stamp one line of upright text: code points ``codes`` through
+    ``table`` (code point -> glyph id), ``advances`` (font units per glyph id) and
+    ``mask_of`` (glyph id -> mask id, < 0: not cached yet), reference point
+    ``(x, y)``.  ``line`` = (sx, gap, horizontal alignment 0 left / 1 center /
+    2 right, 1 for path right / 0 for left, dv, the larger distance of the bottom
+    and top lines from the reference, coordinate limit); the other arguments are
+    those of :func:`stamp_glyphs`.
+
+    The origins are computed with the operations of the layout's ``_horizontal``
+    and ``place`` in the same order (so the pixels are identical): advances
+    ``a = advances * sx (+ gap)``, running sum ``r``, ``u = r - a`` (path right) or
+    ``gap - r`` (left), plus the alignment shift, plus ``x + 0.5``, floored; the
+    baseline row ``floor(dv + y + 0.5)``; origins clipped to the coordinate limit
+    when the line reaches beyond it.
+
+    Returns 0 when drawn, 1 when nothing was drawn because a code point is beyond
+    ``table`` or a glyph is not in the cache (the caller places such strings the
+    general way)."""
+    n = codes.shape[0]
+    sx, gap, halign, right, dv = line[0], line[1], line[2], line[3] != 0.0, line[4]
+    mids = np.empty(n, np.int64)
+    u = np.empty(n)
+    run = 0.0
+    for k in range(n):
+        c = codes[k]
+        if c >= table.shape[0]:
+            return 1
+        g = table[c]
+        m = mask_of[g]
+        if m < 0:
+            return 1
+        mids[k] = m
+        a = advances[g] * sx
+        if gap != 0.0:
+            a += gap
+        run = a if k == 0 else run + a
+        u[k] = run - a if right else gap - run
+    span = run - gap if n > 0 else 0.0
+    if right:
+        lo, hi = 0.0 * span, span
+    else:
+        lo, hi = -span, 0.0 * span
+    if halign == 0.0:
+        shift = -lo
+    elif halign == 2.0:
+        shift = -hi
+    else:
+        shift = -(lo + hi) / 2
+    lim = line[6]
+    reach = max(abs(x), abs(y)) + max(max(abs(lo + shift), abs(hi + shift)), line[5])
+    clip = reach > lim
+    fy = dv + y + 0.5
+    if clip:
+        fy = min(max(fy, -lim), lim)
+    gy = np.full(n, np.int64(np.floor(fy)))
+    gx = np.empty(n, np.int64)
+    xh = x + 0.5
+    for k in range(n):
+        fx = (u[k] + shift) + xh
+        if clip:
+            fx = min(max(fx, -lim), lim)
+        gx[k] = np.int64(np.floor(fx))
+    if packed:
+        _stamp(buf, True, width, height, atlas, masks, runs, mids, gx, gy, value, alpha,
+               threshold, solid)
+    else:
+        _stamp(buf, False, width, height, atlas, masks, runs, mids, gx, gy, value, alpha,
+               threshold, solid)
+    return 0

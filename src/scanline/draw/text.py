@@ -3,15 +3,22 @@ sections 3-14 and 4-5)."""
 
 import numpy as np
 
-from .._kernels.text import stamp_glyphs
+from .. import _validate as v
+from .._kernels.text import stamp_glyphs, stamp_line
 from ..color.spec import rgba
 from ..text import glyphcache
-from ..text.layout import place
+from ..text.layout import codes_of, line_setup, place
 from ..text.style import resolve
 from ._common import target
 
 
 _ALPHAS = {}
+
+#: ``sl.draw.text``'s memo: attribute keywords -> [style, resolved style, (LineSetup,
+#: glyph images) or False]; cleared when it grows past ``glyphcache.MAX_SIZES``.
+_MEMO = {}
+
+_REAL = (int, float)
 
 
 def _alpha(color):
@@ -83,6 +90,30 @@ def _filled(fb, p, color, value, antialias):
                  p.ox, p.oy, value, alpha, fb.mode == "P", alpha == 255 and not antialias)
 
 
+def _line(fb, x, y, text, fast, color, value, antialias):
+    """Draw one line of upright text (no newline) with one compiled call; False
+    when it must be placed the general way (a glyph not cached yet, a code point
+    beyond the font's table), with nothing drawn."""
+    setup, cache = fast
+    buf, packed = fb._raster()
+    alpha = _alpha(color)
+    font = setup.font
+    return stamp_line(buf, packed, fb.width, fb.height, cache.atlas, cache.masks, cache.runs,
+                      cache.mask_of, font._table, font.advances, codes_of(text), float(x),
+                      float(y), setup.params, value, alpha, fb.mode == "P",
+                      alpha == 255 and not antialias) == 0
+
+
+def _fast(style):
+    """``(LineSetup, glyph images)`` for the one-call path of a resolved style, or
+    False (rotated text, paths up and down, the stroke font, uncached sizes)."""
+    setup = line_setup(style)
+    if setup is None or setup.font.kind == "stroke":
+        return False
+    cache = glyphcache.images(setup.font, setup.matrix, style.antialias, setup.tolerance)
+    return False if cache is None else (setup, cache)
+
+
 def text(fb, x, y, text, color=None, font=None, height=None, expansion=None, spacing=None,
          angle=None, up=None, path=None, align=None, antialias=None, style=None):
     """Draw a string.
@@ -147,11 +178,32 @@ def text(fb, x, y, text, color=None, font=None, height=None, expansion=None, spa
     glyph's bottom edge are outside (the fill's top-left rule), so the letters
     start on row ``y + 1`` and the first row of descenders is row ``y`` itself.
     """
-    st = resolve(style, font=font, height=height, expansion=expansion, spacing=spacing,
-                 angle=angle, up=up, path=path, align=align, antialias=antialias)
+    try:  # (types too: True == 1 and 1.0 == 1, but only one of each pair is valid)
+        key = (id(style), font, height, expansion, spacing, angle, up, path, align,
+               antialias, type(height), type(expansion), type(spacing), type(angle),
+               type(antialias))
+        memo = _MEMO.get(key)
+    except TypeError:  # an unhashable attribute (a list as align): no memo
+        key = memo = None
+    if memo is None or memo[0] is not style:
+        memo = [style, resolve(style, font=font, height=height, expansion=expansion,
+                               spacing=spacing, angle=angle, up=up, path=path, align=align,
+                               antialias=antialias), None]
+        if key is not None:
+            if len(_MEMO) >= glyphcache.MAX_SIZES:
+                _MEMO.clear()
+            _MEMO[key] = memo
+    st = memo[1]
     color = color if color is not None else st.color if st.color is not None else "white"
     target(fb)
     value = fb.pixel(color)
+    if memo[2] is None:
+        memo[2] = _fast(st)
+    if (memo[2] and type(text) is str and "\n" not in text and type(x) in _REAL
+            and type(y) in _REAL and -v.COORD_LIMIT <= x <= v.COORD_LIMIT
+            and -v.COORD_LIMIT <= y <= v.COORD_LIMIT
+            and _line(fb, x, y, text, memo[2], color, value, st.antialias)):
+        return
     p = place(text, x, y, st)
     if len(p.gids) == 0:
         return

@@ -101,8 +101,23 @@ def _align_span(lo, hi, key):
     return -lo if key == "left" else -hi if key == "right" else -(lo + hi) / 2
 
 
+def _levels(font, style, sy, nlines):
+    """Vertical alignment for paths right and left, text space: the first
+    baseline's v (``dv``), the last baseline's v, the bottom and top lines of the
+    block and the baseline-to-baseline step."""
+    step = font.line_height * sy
+    base_last = -(nlines - 1) * step
+    cap = font.cap_height * sy
+    levels = {"top": font.ascent * sy, "cap": cap, "half": (cap + base_last) / 2,
+              "base": 0.0, "bottom": base_last + font.descent * sy}
+    dv = -levels[style.align[1]]
+    return dv, base_last + dv, base_last + font.descent * sy + dv, font.ascent * sy + dv, step
+
+
 def _horizontal(font, gids, line, nlines, style, sx, sy, gap):
-    """Text-space origins for paths right and left; the block's extent."""
+    """Text-space origins for paths right and left; the block's extent.  (One line
+    of upright text is drawn by the compiled ``stamp_line``, which repeats this
+    arithmetic operation for operation, see :func:`line_setup`.)"""
     adv = font.advances[gids] * sx
     if gap:
         adv += gap
@@ -119,21 +134,16 @@ def _horizontal(font, gids, line, nlines, style, sx, sy, gap):
     shift = _align_span(lo, hi, style.align[0])
     u = run - adv if right else gap - run
     u += shift if nlines == 1 else shift[line]
-    step = font.line_height * sy
-    base_last = -(nlines - 1) * step
-    cap = font.cap_height * sy
-    levels = {"top": font.ascent * sy, "cap": cap, "half": (cap + base_last) / 2,
-              "base": 0.0, "bottom": base_last + font.descent * sy}
-    dv = -levels[style.align[1]]
+    dv, base_last, bottom, top, step = _levels(font, style, sy, nlines)
     v_ = dv - step * line if nlines > 1 else dv  # one line: a scalar
     lo, hi = lo + shift, hi + shift
     if nlines > 1:
         lo, hi, last_lo, last_hi = float(lo.min()), float(hi.max()), lo[-1], hi[-1]
     else:
         last_lo, last_hi = lo, hi
-    extent = (lo, base_last + font.descent * sy + dv, hi, font.ascent * sy + dv)
+    extent = (lo, bottom, hi, top)
     end_u = float(last_hi) + gap if right else float(last_lo) - gap
-    return u, v_, extent, (end_u, base_last + dv)
+    return u, v_, extent, (end_u, base_last)
 
 
 def _vertical(font, gids, line, nlines, style, sx, sy, gap):
@@ -186,10 +196,7 @@ def place(text, x, y, style):
         line = np.zeros(len(codes), np.int64)
         nlines = 1
     gids = font.glyph_ids(codes, small=text.isascii())
-    height = font.native_height if style.height is None else style.height
-    sy = height / font.cap_height
-    sx = sy * style.expansion
-    gap = style.spacing * height
+    sx, sy, gap = _scale(font, style)
     if style.path in ("right", "left"):
         u, v_, extent, end = _horizontal(font, gids, line, nlines, style, sx, sy, gap)
     else:
@@ -197,7 +204,7 @@ def place(text, x, y, style):
     c, s = math.cos(style.angle), math.sin(style.angle)
     p = Placement()
     p.font, p.style, p.sx, p.sy = font, style, sx, sy
-    p.matrix = np.array([[c * sx, -s * sy], [s * sx, c * sy]])
+    p.matrix = _matrix(c, s, sx, sy)
     p.gids, p.index = gids, index
     # origins, rounded to pixel centers (floor(f + 0.5), computed in place)
     if s == 0.0 and c == 1.0:
@@ -217,6 +224,50 @@ def place(text, x, y, style):
     p.reference, p.extent, p.end = (x, y), extent, end
     p.tolerance = TOLERANCE / max(sx, sy)
     return p
+
+
+def _scale(font, style):
+    """``(sx, sy, gap)``: font units -> pixels along and across the baseline, and
+    the extra space between characters (pixels)."""
+    height = font.native_height if style.height is None else style.height
+    sy = height / font.cap_height
+    return sy * style.expansion, sy, style.spacing * height
+
+
+def _matrix(c, s, sx, sy):
+    """Font units -> device units: the rotation (cosine ``c``, sine ``s``) @
+    diag(sx, sy)."""
+    return np.array([[c * sx, -s * sy], [s * sx, c * sy]])
+
+
+class LineSetup:
+    """What drawing one line of upright text with a style needs besides the string
+    and the reference point (internal, made by :func:`line_setup`): ``font``,
+    ``matrix``, ``tolerance`` and ``params``, the float64 array that the compiled
+    ``stamp_line`` reads: ``sx``, ``gap``, horizontal alignment (0 left, 1 center,
+    2 right), 1 for path right (0 left), ``dv`` (the baseline's v), how far the
+    bottom and top lines lie from the baseline's reference (``max(|bottom|,
+    |top|)``, for the coordinate-range check) and the coordinate limit."""
+
+    __slots__ = ("font", "matrix", "tolerance", "params")
+
+
+def line_setup(style):
+    """The :class:`LineSetup` of a resolved ``style``, or None when its text is not
+    upright along path right or left (those strings are placed by :func:`place`)."""
+    c, s = math.cos(style.angle), math.sin(style.angle)
+    if not (s == 0.0 and c == 1.0) or style.path not in ("right", "left"):
+        return None
+    font = resolve_font(style.font)
+    sx, sy, gap = _scale(font, style)
+    dv, _, bottom, top, _ = _levels(font, style, sy, 1)
+    setup = LineSetup()
+    setup.font, setup.matrix = font, _matrix(c, s, sx, sy)
+    setup.tolerance = TOLERANCE / max(sx, sy)
+    setup.params = np.array([sx, gap, ("left", "center", "right").index(style.align[0]),
+                             style.path == "right", dv, max(abs(bottom), abs(top)),
+                             v.COORD_LIMIT], float)
+    return setup
 
 
 def _box(points):

@@ -223,7 +223,8 @@ def resolve(style, **attributes):
     if all(val is None for val in values):
         return style
     try:
-        key = (id(style), tuple(attributes), values)
+        # (the types too: True == 1, but only one of them is a valid height)
+        key = (id(style), tuple(attributes), values, tuple(map(type, values)))
         hit = _RESOLVED.get(key)
     except TypeError:  # an unhashable value (a list as a color): no memo
         return style.replace(**attributes)

@@ -1,9 +1,16 @@
 """Line and polygon clipping (notes, chapter 4, Q.3-Q.4).
 
-Each line clipper is one helper that clips one segment and can log its steps into
-an array: the batch kernels pass a log with no rows, the step tables
-(:mod:`scanline.trace.clip`) pass a log with room for every step.  The table and the
-clipped segments therefore come from the same code.
+The line clippers work on blocks of segments: each step of the notes' algorithm is
+one loop over the block, written with arithmetic selects instead of branches on
+the data, so that the compiler runs it on several segments at once (SIMD) and
+random segments cost no mispredicted branches.  Each segment still goes through
+exactly the notes' steps in the notes' order.  The step tables
+(:mod:`scanline.trace.clip`) run the same helpers on a block of one segment with a
+log that has room for every step; the batch kernel passes a log with no rows.  The
+table and the clipped segments therefore come from the same code.
+
+Segments are flat float64 arrays: segment i is ``seg[4 i : 4 i + 4]`` =
+(x0, y0, x1, y1).
 
 Windows are closed: a point on the boundary is inside (the notes' inequalities
 ``xwmin <= x <= xwmax``).  Convex polygon windows are given counterclockwise, so the
@@ -37,6 +44,9 @@ KIND_ENTERING = 2
 KIND_LEAVING = 3
 PARAM_COLUMNS = 7
 
+#: Segments per block: the block's state (six numbers per segment) stays in L1.
+BLOCK = 256
+
 
 @inline
 def region_code(x, y, xmin, ymin, xmax, ymax):
@@ -47,11 +57,18 @@ def region_code(x, y, xmin, ymin, xmax, ymax):
 
 
 @inline
-def write_segment(out, row, x0, y0, x1, y1):
-    out[row, 0] = x0
-    out[row, 1] = y0
-    out[row, 2] = x1
-    out[row, 3] = y1
+def out_of_range(x0, y0, x1, y1, limit):
+    """Whether a coordinate is NaN or beyond +-limit."""
+    return ((not abs(x0) <= limit) | (not abs(y0) <= limit) | (not abs(x1) <= limit)
+            | (not abs(y1) <= limit))
+
+
+@inline
+def write_segment(out, i, x0, y0, x1, y1):
+    out[i] = x0
+    out[i + 1] = y0
+    out[i + 2] = x1
+    out[i + 3] = y1
 
 
 @inline
@@ -69,80 +86,118 @@ def cs_log(log, n, end, c0, c1, both, action, bit, x, y):
 
 
 @inline
-def cohen_sutherland(x0, y0, x1, y1, xmin, ymin, xmax, ymax, out, row, log):
-    """Clip one segment; write the visible part (or, if none, the segment as
-    given) into ``out[row]``; return True if any part is visible.  Logs one row per
-    step when ``log`` has rows.
-
-    The outside endpoint is moved to its crossing with the first boundary its code
-    names, in the order left, right, below, above, using the notes' formulas
-    y = y0 + m (x - x0) for a vertical boundary and x = x0 + (y - y0) / m for a
-    horizontal one (m from the original endpoints).
-    """
-    ax, ay, bx, by = x0, y0, x1, y1
-    dx = x1 - x0
-    dy = y1 - y0
-    c0 = region_code(ax, ay, xmin, ymin, xmax, ymax)
-    c1 = region_code(bx, by, xmin, ymin, xmax, ymax)
-    n = 0
-    for _ in range(CS_MAX_STEPS):
-        both = c0 & c1
-        if (c0 | c1) == 0 or both != 0:
-            action = CS_ACCEPT if (c0 | c1) == 0 else CS_REJECT
-            cs_log(log, n, -1, c0, c1, both, action, 0, np.nan, np.nan)
-            if action == CS_ACCEPT:
-                write_segment(out, row, ax, ay, bx, by)
-            else:
-                write_segment(out, row, x0, y0, x1, y1)
-            return action == CS_ACCEPT
-        end = 0 if c0 != 0 else 1
-        code = c0 if end == 0 else c1
-        if code & LEFT:
-            bit = LEFT
-            x = xmin
-            y = y0 + dy * ((xmin - x0) / dx)
-        elif code & RIGHT:
-            bit = RIGHT
-            x = xmax
-            y = y0 + dy * ((xmax - x0) / dx)
-        elif code & BELOW:
-            bit = BELOW
-            y = ymin
-            x = x0 + dx * ((ymin - y0) / dy)
-        else:
-            bit = ABOVE
-            y = ymax
-            x = x0 + dx * ((ymax - y0) / dy)
-        cs_log(log, n, end, c0, c1, both, CS_CLIP, bit, x, y)
-        n += 1
-        if end == 0:
-            ax, ay = x, y
-            c0 = region_code(ax, ay, xmin, ymin, xmax, ymax)
-        else:
-            bx, by = x, y
-            c1 = region_code(bx, by, xmin, ymin, xmax, ymax)
-    # Round-off near a corner made the endpoints chase each other: the segment
-    # only grazes the corner.  Accept what is left if it is inside.
-    if (c0 | c1) == 0:
-        write_segment(out, row, ax, ay, bx, by)
-    else:
-        write_segment(out, row, x0, y0, x1, y1)
-    return (c0 | c1) == 0
+def cs_crossing(code, x0, y0, dx, dy, xmin, ymin, xmax, ymax):
+    """The crossing of the line through (x0, y0) with direction (dx, dy) and the
+    first boundary that ``code`` names, in the order left, right, below, above:
+    ``(bit, x, y)``.  The notes' formulas y = y0 + m (x - x0) for a vertical
+    boundary and x = x0 + (y - y0) / m for a horizontal one; both are computed and
+    one is selected (a vertical boundary is only chosen when dx != 0, a horizontal
+    one only when dy != 0)."""
+    left = (code & LEFT) != 0
+    right = (code & RIGHT) != 0
+    below = (code & BELOW) != 0
+    vertical = left | right
+    xb = xmin if left else xmax
+    yb = ymin if below else ymax
+    yv = y0 + dy * ((xb - x0) / (dx if dx != 0.0 else 1.0))
+    xh = x0 + dx * ((yb - y0) / (dy if dy != 0.0 else 1.0))
+    bit = LEFT if left else RIGHT if right else BELOW if below else ABOVE
+    return bit, (xb if vertical else xh), (yv if vertical else yb)
 
 
 @inline
-def parametric_edge(p, q, k, u1, u2, log):
+def cohen_sutherland(seg, xmin, ymin, xmax, ymax, limit, ends, codes, out, accepted,
+                     trace, log):
+    """Clip the block of segments ``seg`` (see :func:`clip_block`).  ``ends``
+    (4, block) and ``codes`` (2, block) hold the moving endpoints and their region
+    codes.  Returns whether a coordinate was NaN or beyond +-``limit``.
+
+    At each step a segment is accepted if both codes are 0000, rejected if
+    code0 AND code1 != 0000, and otherwise its outside endpoint (P0 first) is moved
+    to its crossing with the first boundary its code names (:func:`cs_crossing`,
+    with m from the original endpoints).  The block steps until every segment is
+    decided (or, after round-off near a corner made the endpoints chase each other,
+    after ``CS_MAX_STEPS`` clips: then a segment that only grazes the corner is
+    accepted if what is left is inside).
+    """
+    m = accepted.shape[0]
+    for j in range(m):
+        i = 4 * j
+        x0 = seg[i]
+        y0 = seg[i + 1]
+        x1 = seg[i + 2]
+        y1 = seg[i + 3]
+        ends[0, j] = x0
+        ends[1, j] = y0
+        ends[2, j] = x1
+        ends[3, j] = y1
+        codes[0, j] = region_code(x0, y0, xmin, ymin, xmax, ymax)
+        codes[1, j] = region_code(x1, y1, xmin, ymin, xmax, ymax)
+    for n in range(CS_MAX_STEPS):
+        undecided = False
+        for j in range(m):
+            i = 4 * j
+            c0 = codes[0, j]
+            c1 = codes[1, j]
+            both = c0 & c1
+            clip = ((c0 | c1) != 0) & (both == 0)
+            first = c0 != 0
+            bit, x, y = cs_crossing(c0 if first else c1, seg[i], seg[i + 1],
+                                    seg[i + 2] - seg[i], seg[i + 3] - seg[i + 1],
+                                    xmin, ymin, xmax, ymax)
+            code = region_code(x, y, xmin, ymin, xmax, ymax)
+            move0 = clip & first
+            move1 = clip & (not first)
+            ends[0, j] = x if move0 else ends[0, j]
+            ends[1, j] = y if move0 else ends[1, j]
+            ends[2, j] = x if move1 else ends[2, j]
+            ends[3, j] = y if move1 else ends[3, j]
+            codes[0, j] = code if move0 else c0
+            codes[1, j] = code if move1 else c1
+            undecided |= clip
+            if trace:
+                if clip:
+                    cs_log(log, n, 0 if first else 1, c0, c1, both, CS_CLIP, bit, x, y)
+                else:
+                    cs_log(log, n, -1, c0, c1, both,
+                           CS_ACCEPT if (c0 | c1) == 0 else CS_REJECT, 0, np.nan, np.nan)
+        if not undecided:
+            break
+    bad = False
+    for j in range(m):
+        i = 4 * j
+        x0 = seg[i]
+        y0 = seg[i + 1]
+        x1 = seg[i + 2]
+        y1 = seg[i + 3]
+        ok = (codes[0, j] | codes[1, j]) == 0
+        write_segment(out, i, ends[0, j] if ok else x0, ends[1, j] if ok else y0,
+                      ends[2, j] if ok else x1, ends[3, j] if ok else y1)
+        accepted[j] = ok
+        bad |= out_of_range(x0, y0, x1, y1, limit)
+    return bad
+
+
+@inline
+def parametric_edge(p, q, k, u1, u2, trace, log):
     """One boundary of the parametric clippers (Liang-Barsky's p_k, q_k; Cyrus-Beck
     with p = N.D, q = -N.(P0 - PE), so t = q / p): p < 0 enters, u1 = max(u1, t);
     p > 0 leaves, u2 = min(u2, t); p = 0 is parallel, outside when q < 0.
 
-    Returns ``(outside, u1, u2)``.  Written without branches on the data (random
-    segments made the branches mispredict): the batch kernels run 2x faster.
+    Returns ``(outside, u1, u2)``.  With ``trace``, logs row k when ``log`` has one.
     """
     r = q / (p if p != 0.0 else 1.0)
     nu1 = max(u1, r) if p < 0.0 else u1
     nu2 = min(u2, r) if p > 0.0 else u2
     outside = (p == 0.0) & (q < 0.0)
+    if trace:
+        param_log(log, k, p, q, r, outside, nu1, nu2)
+    return outside, nu1, nu2
+
+
+@inline
+def param_log(log, k, p, q, r, outside, u1, u2):
+    """Row k of a Liang-Barsky / Cyrus-Beck log (nothing when the log has no row k)."""
     if k < log.shape[0]:
         log[k, 0] = k + 1
         log[k, 1] = p
@@ -150,76 +205,97 @@ def parametric_edge(p, q, k, u1, u2, log):
         log[k, 3] = r if p != 0.0 else np.nan
         log[k, 4] = (KIND_ENTERING if p < 0.0 else KIND_LEAVING if p > 0.0
                      else KIND_PARALLEL_OUTSIDE if outside else KIND_PARALLEL_INSIDE)
-        log[k, 5] = nu1
-        log[k, 6] = nu2
-    return outside, nu1, nu2
+        log[k, 5] = u1
+        log[k, 6] = u2
 
 
 @inline
-def parametric_result(x0, y0, x1, y1, outside, u1, u2, out, row):
-    """Decide: visible iff no parallel boundary had the segment outside and
-    u1 <= u2; write the segment from t = u1 to t = u2 (or, if not visible, the
-    segment as given) into ``out[row]``; return the decision."""
+def parametric_result(seg, i, outside, u1, u2, limit, out):
+    """Decide segment ``seg[i : i + 4]``: visible iff no parallel boundary had it
+    outside and u1 <= u2; write the segment from t = u1 to t = u2 (or, if not
+    visible, the segment as given) into ``out[i : i + 4]``.  Returns
+    ``(visible, bad)``, bad if a coordinate was NaN or beyond +-``limit``."""
+    x0 = seg[i]
+    y0 = seg[i + 1]
+    x1 = seg[i + 2]
+    y1 = seg[i + 3]
+    dx = x1 - x0
+    dy = y1 - y0
     ok = (not outside) & (u1 <= u2)
-    if ok:
-        dx = x1 - x0
-        dy = y1 - y0
-        write_segment(out, row,
-                      x0 + u1 * dx if u1 > 0.0 else x0, y0 + u1 * dy if u1 > 0.0 else y0,
-                      x0 + u2 * dx if u2 < 1.0 else x1, y0 + u2 * dy if u2 < 1.0 else y1)
-    else:
-        write_segment(out, row, x0, y0, x1, y1)
-    return ok
+    write_segment(out, i,
+                  x0 + u1 * dx if ok & (u1 > 0.0) else x0,
+                  y0 + u1 * dy if ok & (u1 > 0.0) else y0,
+                  x0 + u2 * dx if ok & (u2 < 1.0) else x1,
+                  y0 + u2 * dy if ok & (u2 < 1.0) else y1)
+    return ok, out_of_range(x0, y0, x1, y1, limit)
 
 
 @inline
-def liang_barsky(x0, y0, x1, y1, xmin, ymin, xmax, ymax, out, row, log):
-    """Liang-Barsky: p1 = -dx, q1 = x0 - xmin; p2 = dx, q2 = xmax - x0;
-    p3 = -dy, q3 = y0 - ymin; p4 = dy, q4 = ymax - y0; u1 = max(0, q/p for p < 0),
-    u2 = min(1, q/p for p > 0); visible iff no p_k = 0 has q_k < 0 and u1 <= u2.
-    All four boundaries are evaluated, then the decision is made."""
-    dx = x1 - x0
-    dy = y1 - y0
-    out1, u1, u2 = parametric_edge(-dx, x0 - xmin, 0, 0.0, 1.0, log)
-    out2, u1, u2 = parametric_edge(dx, xmax - x0, 1, u1, u2, log)
-    out3, u1, u2 = parametric_edge(-dy, y0 - ymin, 2, u1, u2, log)
-    out4, u1, u2 = parametric_edge(dy, ymax - y0, 3, u1, u2, log)
-    return parametric_result(x0, y0, x1, y1, out1 | out2 | out3 | out4, u1, u2, out, row)
-
-
-@inline
-def cyrus_beck(x0, y0, x1, y1, win, normals, out, row, log):
-    """Cyrus-Beck against the convex polygon ``win`` (M, 2) with the outward normals
-    ``normals`` (M, 2) of its edges (edge i runs from PE_i = win[i] to win[i+1]).
-
-    N_i.D < 0 marks a potentially entering (PE) crossing, N_i.D > 0 a potentially
-    leaving (PL) one, and t = N_i.(P0 - PE_i) / -N_i.D.  :func:`parametric_edge`
-    gets p = N_i.D and q = -N_i.(P0 - PE_i), so that t = q / p and p < 0 is
-    entering, as in Liang-Barsky.  As in the notes, every edge's t is computed,
-    then t_E = max(0, PE t's) and t_L = min(1, PL t's) decide.
-    """
-    dx = x1 - x0
-    dy = y1 - y0
-    u1 = 0.0
-    u2 = 1.0
-    outside = False
-    for i in range(win.shape[0]):
-        nx = normals[i, 0]
-        ny = normals[i, 1]
-        o, u1, u2 = parametric_edge(nx * dx + ny * dy,
-                                    -(nx * (x0 - win[i, 0]) + ny * (y0 - win[i, 1])),
-                                    i, u1, u2, log)
-        outside |= o
-    return parametric_result(x0, y0, x1, y1, outside, u1, u2, out, row)
-
-
-@inline
-def bad_row(seg, i, limit):
-    """Whether row i holds a NaN or a coordinate beyond +-limit."""
+def liang_barsky(seg, xmin, ymin, xmax, ymax, limit, out, accepted, trace, log):
+    """Liang-Barsky on the block of segments ``seg``: p1 = -dx,
+    q1 = x0 - xmin; p2 = dx, q2 = xmax - x0; p3 = -dy, q3 = y0 - ymin; p4 = dy,
+    q4 = ymax - y0; u1 = max(0, q/p for p < 0), u2 = min(1, q/p for p > 0); visible
+    iff no p_k = 0 has q_k < 0 and u1 <= u2.  All four boundaries are evaluated,
+    then the decision is made (:func:`parametric_result`).  Returns whether a
+    coordinate was NaN or beyond +-``limit``."""
     bad = False
-    for j in range(4):
-        if not abs(seg[i, j]) <= limit:
-            bad = True
+    for j in range(accepted.shape[0]):
+        i = 4 * j
+        x0 = seg[i]
+        y0 = seg[i + 1]
+        dx = seg[i + 2] - x0
+        dy = seg[i + 3] - y0
+        out1, u1, u2 = parametric_edge(-dx, x0 - xmin, 0, 0.0, 1.0, trace, log)
+        out2, u1, u2 = parametric_edge(dx, xmax - x0, 1, u1, u2, trace, log)
+        out3, u1, u2 = parametric_edge(-dy, y0 - ymin, 2, u1, u2, trace, log)
+        out4, u1, u2 = parametric_edge(dy, ymax - y0, 3, u1, u2, trace, log)
+        ok, b = parametric_result(seg, i, out1 | out2 | out3 | out4, u1, u2, limit, out)
+        accepted[j] = ok
+        bad |= b
+    return bad
+
+
+@inline
+def cyrus_beck(seg, win, normals, limit, params, outside, out, accepted, trace, log):
+    """Cyrus-Beck on the block of segments ``seg`` against the convex
+    polygon ``win`` (M, 2) with the outward normals ``normals`` (M, 2) of its edges
+    (edge e runs from PE_e = win[e] to win[e + 1]); ``params`` (2, block) holds each
+    segment's t_E and t_L, ``outside`` (block,) whether a parallel edge had it
+    outside.  Returns whether a coordinate was NaN or beyond +-``limit``.
+
+    N_e.D < 0 marks a potentially entering (PE) crossing, N_e.D > 0 a potentially
+    leaving (PL) one, and t = N_e.(P0 - PE_e) / -N_e.D.  :func:`parametric_edge`
+    gets p = N_e.D and q = -N_e.(P0 - PE_e), so that t = q / p and p < 0 is
+    entering, as in Liang-Barsky.  As in the notes, every edge's t is computed
+    (one edge at a time for the whole block), then t_E = max(0, PE t's) and
+    t_L = min(1, PL t's) decide.
+    """
+    m = accepted.shape[0]
+    for j in range(m):
+        params[0, j] = 0.0
+        params[1, j] = 1.0
+        outside[j] = False
+    for e in range(win.shape[0]):
+        nx = normals[e, 0]
+        ny = normals[e, 1]
+        ex = win[e, 0]
+        ey = win[e, 1]
+        for j in range(m):
+            i = 4 * j
+            x0 = seg[i]
+            y0 = seg[i + 1]
+            o, u1, u2 = parametric_edge(nx * (seg[i + 2] - x0) + ny * (seg[i + 3] - y0),
+                                        -(nx * (x0 - ex) + ny * (y0 - ey)), e, params[0, j],
+                                        params[1, j], trace, log)
+            params[0, j] = u1
+            params[1, j] = u2
+            outside[j] |= o
+    bad = False
+    for j in range(m):
+        ok, b = parametric_result(seg, 4 * j, outside[j], params[0, j],
+                                  params[1, j], limit, out)
+        accepted[j] = ok
+        bad |= b
     return bad
 
 
@@ -230,42 +306,68 @@ CYRUS_BECK = 2
 
 
 @inline
-def clip_one(method, x0, y0, x1, y1, rect, win, normals, out, row, log):
-    """Clip one segment with clipper ``method``; ``rect`` is (xmin, ymin, xmax, ymax)
-    for Cohen-Sutherland and Liang-Barsky, ``win`` and ``normals`` the polygon and
-    its outward normals for Cyrus-Beck."""
+def clip_block(method, seg, rect, win, normals, limit, state, codes, flags, out,
+               accepted, trace, log):
+    """Clip a block of segments ``seg`` (4 m,) with clipper ``method``: write the
+    visible part of segment j (or, if none, the segment as given) into
+    ``out[4 j : 4 j + 4]`` and whether any part is visible into ``accepted[j]``
+    (``accepted`` has m entries, m <= the block size).  The block is indexed from
+    0, so the compiler sees the loops' array accesses as consecutive.
+
+    ``rect`` is (xmin, ymin, xmax, ymax) for Cohen-Sutherland and Liang-Barsky,
+    ``win`` and ``normals`` the polygon and its outward normals for Cyrus-Beck;
+    ``state`` (4, block), ``codes`` (2, block) and ``flags`` (block,) are scratch.
+    With ``trace`` (a block of one segment) the steps are logged into ``log``.
+    Returns whether a coordinate was NaN or beyond +-``limit`` (checked in the
+    same pass)."""
     if method == COHEN_SUTHERLAND:
-        return cohen_sutherland(x0, y0, x1, y1, rect[0], rect[1], rect[2], rect[3], out,
-                                row, log)
+        return cohen_sutherland(seg, rect[0], rect[1], rect[2], rect[3], limit,
+                                state, codes, out, accepted, trace, log)
     if method == LIANG_BARSKY:
-        return liang_barsky(x0, y0, x1, y1, rect[0], rect[1], rect[2], rect[3], out, row,
-                            log)
-    return cyrus_beck(x0, y0, x1, y1, win, normals, out, row, log)
+        return liang_barsky(seg, rect[0], rect[1], rect[2], rect[3], limit, out,
+                            accepted, trace, log)
+    return cyrus_beck(seg, win, normals, limit, state, flags, out, accepted, trace,
+                      log)
 
 
 @kernel
 def clip_lines(method, seg, rect, win, normals, limit, out, accepted):
-    """Clip every row (x0, y0, x1, y1) of ``seg`` with clipper ``method`` (see
-    :func:`clip_one`) into ``out``; ``accepted[i]`` says whether row i is visible
-    (rejected rows hold the segment as given).
+    """Clip every segment of the flat array ``seg`` (4 N,) with clipper ``method``
+    (see :func:`clip_block`) into ``out`` (4 N,); ``accepted[i]`` says whether
+    segment i is visible (rejected segments are written as given).
 
-    Returns -1, or the first row with a NaN or a coordinate beyond +-``limit``
-    (then nothing after it was clipped).
+    Returns -1, or the first segment with a NaN or a coordinate beyond +-``limit``
+    (then ``out`` and ``accepted`` are not meaningful; nothing is written outside
+    them whatever the values).
     """
     log = np.empty((0, CS_COLUMNS))
-    for i in range(seg.shape[0]):
-        if bad_row(seg, i, limit):
-            return i
-        accepted[i] = clip_one(method, seg[i, 0], seg[i, 1], seg[i, 2], seg[i, 3], rect,
-                               win, normals, out, i, log)
+    state = np.empty((4, BLOCK))
+    codes = np.empty((2, BLOCK), np.int64)
+    flags = np.empty(BLOCK, np.bool_)
+    n = accepted.shape[0]
+    bad = False
+    for start in range(0, n, BLOCK):
+        stop = min(start + BLOCK, n)
+        bad |= clip_block(method, seg[4 * start:4 * stop], rect, win, normals, limit, state,
+                          codes, flags, out[4 * start:4 * stop], accepted[start:stop], False,
+                          log)
+    if bad:
+        for i in range(n):
+            if out_of_range(seg[4 * i], seg[4 * i + 1], seg[4 * i + 2], seg[4 * i + 3],
+                            limit):
+                return i
     return -1
 
 
 @kernel
 def trace_line(method, seg, rect, win, normals, out, log):
-    """One segment through clipper ``method`` with its steps logged into ``log`` and
-    the result in ``out[0]`` (see :func:`clip_one`)."""
-    return clip_one(method, seg[0], seg[1], seg[2], seg[3], rect, win, normals, out, 0, log)
+    """One segment ``seg`` (4,) through clipper ``method`` with its steps logged
+    into ``log`` and the result in ``out[0]`` (see :func:`clip_block`)."""
+    accepted = np.empty(1, np.bool_)
+    clip_block(method, seg, rect, win, normals, np.inf, np.empty((4, 1)),
+               np.empty((2, 1), np.int64), np.empty(1, np.bool_), out[0], accepted, True,
+               log)
+    return accepted[0]
 
 
 @helper

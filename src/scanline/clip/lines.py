@@ -153,7 +153,7 @@ def lines(segments, window, method="liang-barsky"):
     """
     method = _method(method)
     seg = _segments(segments)
-    out = np.empty_like(seg)
+    out = np.empty(seg.shape)
     accepted = np.empty(len(seg), np.bool_)
     if method == "cyrus-beck":
         ring = w.polygon(window, convex=True, algorithm="Cyrus-Beck")
@@ -166,8 +166,8 @@ def lines(segments, window, method="liang-barsky"):
         rect = np.array(w.rectangle(window))
         ring = w.rectangle_polygon(*rect)
         code = k.COHEN_SUTHERLAND if method == "cohen-sutherland" else k.LIANG_BARSKY
-    bad = k.clip_lines(code, seg, rect, ring, w.outward_normals(ring), float(v.COORD_LIMIT),
-                       out, accepted)
+    bad = k.clip_lines(code, seg.reshape(-1), rect, ring, w.outward_normals(ring),
+                       float(v.COORD_LIMIT), out.reshape(-1), accepted)
     _check(bad, seg, "segments")
     return out, accepted
 

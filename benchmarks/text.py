@@ -10,7 +10,7 @@ of 80 random printable ASCII characters (about one in eight a space), DejaVu San
   ``ANTIALIAS_NONE``), skia-python (aliased ``drawString`` per line) and Pillow
   (``ImageDraw.text`` per line, ``fontmode = "1"``);
 * ``text-lines``: the same page drawn by scanline with one call per line (the
-  per-call cost of validation, layout and dispatch, ~20 us, shows here);
+  per-call cost of the Python layer and numba dispatch, ~4 us, shows here);
 * ``text-aa``: antialiased: scanline ``antialias=True`` (one call) vs Cairo's
   default antialiasing, skia-python's antialiased font and Pillow's default.
 

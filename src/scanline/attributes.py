@@ -568,3 +568,4 @@ _BUILDERS = {"solid": _no_arguments, "hollow": _no_arguments,
 
 
 from .linestyle import LineStyle  # noqa: E402  (the line attributes, beside FillStyle)
+from .text.style import TextStyle  # noqa: E402  (the text attributes; see scanline.text)

@@ -91,13 +91,25 @@ def test_memo_keeps_bool_and_number_apart():
 
 
 def test_first_use_of_a_glyph_renders_it():
-    """A glyph not yet cached makes the compiled line decline; the general path
-    renders it, and the next call stamps it in one call."""
-    glyphcache._CACHES.clear()
-    draw_text._MEMO.clear()
-    fb = sl.FrameBuffer(40, 20, mode="L")
-    sl.draw.text(fb, 2, 5, "Qz", height=9.5)
-    again = sl.FrameBuffer(40, 20, mode="L")
-    sl.draw.text(again, 2, 5, "Qz", height=9.5)
-    assert (fb.to_array() == again.to_array()).all()
-    assert np.count_nonzero(fb.to_array()) > 10
+    """A glyph not yet cached makes the compiled line decline (nothing drawn); the
+    general path renders it, and the next call stamps it in one call -- also when
+    the size's glyph images were dropped from the cache meanwhile."""
+    results = []
+    stamp_line = draw_text.stamp_line
+
+    def spy(*args):
+        results.append(stamp_line(*args))
+        return results[-1]
+
+    fbs = [sl.FrameBuffer(40, 20, mode="L") for _ in range(4)]
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(draw_text, "stamp_line", spy)
+        sl.draw.text(fbs[0], 2, 5, "Q", height=9.37)
+        glyphcache._CACHES.clear()              # as the cache does with old sizes
+        sl.draw.text(fbs[1], 2, 5, "z", height=9.37)
+        sl.draw.text(fbs[2], 2, 5, "z", height=9.37)
+        mp.setattr(draw_text, "_line", lambda *args: False)
+        sl.draw.text(fbs[3], 2, 5, "z", height=9.37)
+    assert results == [1, 1, 0]
+    a = [fb.to_array() for fb in fbs]
+    assert (a[1] == a[2]).all() and (a[2] == a[3]).all() and np.count_nonzero(a[2]) > 10

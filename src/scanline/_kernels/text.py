@@ -165,10 +165,6 @@ def stamp_line(buf, packed, width, height, atlas, masks, runs, mask_of, table, a
         if clip:
             fx = min(max(fx, -lim), lim)
         gx[k] = np.int64(np.floor(fx))
-    if packed:
-        _stamp(buf, True, width, height, atlas, masks, runs, mids, gx, gy, value, alpha,
-               threshold, solid)
-    else:
-        _stamp(buf, False, width, height, atlas, masks, runs, mids, gx, gy, value, alpha,
-               threshold, solid)
+    stamp_glyphs(buf, packed, width, height, atlas, masks, runs, mids, gx, gy, value,
+                 alpha, threshold, solid)
     return 0

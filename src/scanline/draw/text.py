@@ -90,15 +90,15 @@ def _filled(fb, p, color, value, antialias):
                  p.ox, p.oy, value, alpha, fb.mode == "P", alpha == 255 and not antialias)
 
 
-def _line(fb, x, y, text, fast, color, value, antialias):
+def _line(fb, raster, x, y, text, fast, color, value, antialias):
     """Draw one line of upright text (no newline) with one compiled call; False
     when it must be placed the general way (a glyph not cached yet, a code point
     beyond the font's table), with nothing drawn."""
     setup, cache = fast
-    buf, packed = fb._raster()
+    buf, packed, width, height = raster
     alpha = _alpha(color)
     font = setup.font
-    return stamp_line(buf, packed, fb.width, fb.height, cache.atlas, cache.masks, cache.runs,
+    return stamp_line(buf, packed, width, height, cache.atlas, cache.masks, cache.runs,
                       cache.mask_of, font._table, font.advances, codes_of(text), float(x),
                       float(y), setup.params, value, alpha, fb.mode == "P",
                       alpha == 255 and not antialias) == 0
@@ -195,15 +195,16 @@ def text(fb, x, y, text, color=None, font=None, height=None, expansion=None, spa
             _MEMO[key] = memo
     st = memo[1]
     color = color if color is not None else st.color if st.color is not None else "white"
-    target(fb)
+    raster = target(fb)
     value = fb.pixel(color)
     if memo[2] is None:
         memo[2] = _fast(st)
     if (memo[2] and type(text) is str and "\n" not in text and type(x) in _REAL
             and type(y) in _REAL and -v.COORD_LIMIT <= x <= v.COORD_LIMIT
-            and -v.COORD_LIMIT <= y <= v.COORD_LIMIT
-            and _line(fb, x, y, text, memo[2], color, value, st.antialias)):
-        return
+            and -v.COORD_LIMIT <= y <= v.COORD_LIMIT):
+        if _line(fb, raster, x, y, text, memo[2], color, value, st.antialias):
+            return
+        memo[2] = None  # the general path may render into a newer cache of the size
     p = place(text, x, y, st)
     if len(p.gids) == 0:
         return

@@ -40,6 +40,21 @@ def test_bezier_other_arguments():
         c.subdivide(2.0)
 
 
+def test_high_degrees_are_refused_clearly_not_by_overflow_or_a_long_loop():
+    big = sl.curves.Bezier(np.random.default_rng(5).random((2000, 2)))
+    with pytest.raises(ArgumentValueError, match="degree=1999: the binomial coefficients"):
+        big.evaluate(0.3, method="bernstein")
+    # the other methods still evaluate it, and agree
+    np.testing.assert_allclose(big.evaluate(0.3, method="recursive"),
+                               big.evaluate(0.3, method="de-casteljau"), atol=1e-12)
+    with pytest.raises(ArgumentValueError, match="times=1000000000 would raise degree 1999"):
+        big.elevate(10**9)
+    # the highest degree the binomials allow still works: C(1029, k) is finite
+    edge = sl.curves.Bezier(np.random.default_rng(6).random((1030, 2)))
+    np.testing.assert_allclose(edge.evaluate(0.4, method="bernstein"),
+                               edge.evaluate(0.4, method="de-casteljau"), atol=1e-12)
+
+
 def test_huge_control_points_fall_back_to_de_casteljau():
     c = sl.curves.Bezier([(1e308, 0), (-1e308, 1), (1e308, 2), (0, 0)])
     np.testing.assert_array_equal(c.evaluate([0, 0.5]), c.evaluate([0, 0.5], method="de-casteljau"))

@@ -26,6 +26,14 @@ METHODS = ("de-casteljau", "bernstein", "recursive", "matrix")
 #: scale; above it de Casteljau's algorithm is better conditioned.
 MATRIX_DEGREE = 6
 
+#: Highest degree whose binomial coefficients C(n, k) all fit in a float64
+#: (C(1030, 515) overflows): above it ``method="bernstein"`` is refused.
+BERNSTEIN_DEGREE = 1029
+
+#: Highest degree :meth:`Bezier.elevate` builds (each step costs O(n); the loop
+#: would otherwise run for as long as a huge ``times`` asks).
+ELEVATE_DEGREE = 10_000
+
 
 def bernstein(degree, u):
     """The Bezier blending functions BEZ_{k,n}(u) = C(n, k) uᵏ (1 − u)ⁿ⁻ᵏ, k = 0 … n.
@@ -33,6 +41,10 @@ def bernstein(degree, u):
     Notes, ch. 5, Q.1, eqs. 2–3.  Returns shape ``np.shape(u) + (n + 1,)``.
     """
     n = v.positive_int("degree", degree, minimum=0)
+    if n > BERNSTEIN_DEGREE:
+        raise ArgumentValueError(
+            f"degree={n}: the binomial coefficients of eq. 3 overflow float64 above degree "
+            f"{BERNSTEIN_DEGREE}; use method='de-casteljau' or 'recursive'")
     u = np.asarray(u, dtype=np.float64)[..., None]
     k = np.arange(n + 1)
     binomial = np.array([comb(n, i) for i in k], dtype=np.float64)
@@ -169,6 +181,10 @@ class Bezier(Weighted, Curve):
         (to [wP, w] for a rational curve).
         """
         times = v.positive_int("times", times, minimum=0)
+        if self.degree + times > ELEVATE_DEGREE:
+            raise ArgumentValueError(
+                f"times={times} would raise degree {self.degree} above {ELEVATE_DEGREE}; "
+                "elevate by fewer degrees")
         pts = self.homogeneous() if self.rational else self.points
         for _ in range(times):
             n = len(pts) - 1

@@ -5,9 +5,10 @@ one loop over the block, written with arithmetic selects instead of branches on
 the data, so that the compiler runs it on several segments at once (SIMD) and
 random segments cost no mispredicted branches.  Each segment still goes through
 exactly the notes' steps in the notes' order.  The step tables
-(:mod:`scanline.trace.clip`) run the same helpers on a block of one segment with a
-log that has room for every step; the batch kernel passes a log with no rows.  The
-table and the clipped segments therefore come from the same code.
+(:mod:`scanline.trace.clip`) run the same helpers on a block of one segment with
+``trace`` set and a log that has room for every step (in the batch kernel
+``trace`` is a constant False, so the logging compiles away).  The table and the
+clipped segments therefore come from the same code.
 
 Segments are flat float64 arrays: segment i is ``seg[4 i : 4 i + 4]`` =
 (x0, y0, x1, y1).
@@ -44,7 +45,7 @@ KIND_ENTERING = 2
 KIND_LEAVING = 3
 PARAM_COLUMNS = 7
 
-#: Segments per block: the block's state (six numbers per segment) stays in L1.
+#: Segments per block: the block's state (at most six numbers per segment) stays in L1.
 BLOCK = 256
 
 

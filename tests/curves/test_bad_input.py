@@ -40,6 +40,37 @@ def test_bezier_other_arguments():
         c.subdivide(2.0)
 
 
+@pytest.mark.parametrize("args, error, match", [
+    (([0, 1], 3, 0.5), ArgumentValueError, r"knots must be at least order \+ 1 = 4"),
+    (([3, 2, 1, 0], 2, 0.5), ArgumentValueError, "non-decreasing"),
+    (([1, 1, 1, 1], 2, 1.0), ArgumentValueError, "not all equal"),
+    (([0, np.nan, 2, 3], 2, 0.5), ArgumentValueError, "finite"),
+    (("abc", 2, 0.5), ArgumentTypeError, "knots must be an array of numbers"),
+    (([0, 1, 2, 3], 0, 0.5), ArgumentValueError, "order must be an integer >= 1, got 0"),
+    (([0, 1, 2, 3], "2", 0.5), ArgumentTypeError, "order must be an integer"),
+    (([0, 1, 2, 3], 2, np.nan), ArgumentValueError, r"u must lie in .*\[0, 3\]; got nan"),
+    (([0, 1, 2, 3], 2, 100), ArgumentValueError, "u must lie"),
+])
+def test_basis_checks_its_arguments(args, error, match):
+    """sl.curves.basis is public: bad knots, orders and parameters are named (they
+    gave empty arrays, zeros, NaN or a raw IndexError)."""
+    with pytest.raises(error, match=match):
+        sl.curves.basis(*args)
+    with pytest.raises(ArgumentValueError, match="last must be the index of a knot span"):
+        sl.curves.basis([0, 1, 2, 3], 2, 0.5, last=10)
+
+
+def test_derived_matrices_refuse_degrees_too_high_for_the_power_form():
+    with pytest.raises(ArgumentValueError, match="degree=41 is above 40"):
+        sl.curves.bezier_matrix(41)
+    with pytest.raises(ArgumentValueError, match="order=42 is above 41"):
+        sl.curves.bspline_matrix(42)
+    high = sl.curves.Bezier(np.random.default_rng(7).random((60, 2)))
+    with pytest.raises(ArgumentValueError, match="degrees above 40"):
+        high.evaluate(0.5, method="matrix")
+    assert high.evaluate(0.5).shape == (2,)      # the default picks de Casteljau
+
+
 def test_high_degrees_are_refused_clearly_not_by_overflow_or_a_long_loop():
     big = sl.curves.Bezier(np.random.default_rng(5).random((2000, 2)))
     with pytest.raises(ArgumentValueError, match="degree=1999: the binomial coefficients"):

@@ -16,7 +16,7 @@ from .. import _validate as v
 from ..errors import ArgumentValueError
 from .._kernels import curves as _k
 from .base import Curve, control_points, parameters, weights_array
-from .matrices import bezier_matrix
+from .matrices import MAX_DEGREE, bezier_matrix
 from .rational import RationalDerivative, Weighted, project
 
 METHODS = ("de-casteljau", "bernstein", "recursive", "matrix")
@@ -125,7 +125,8 @@ class Bezier(Weighted, Curve):
             if self._power_form() is None:
                 raise ArgumentValueError(
                     "method='matrix' cannot represent this curve: M_bez·P overflows for "
-                    "control points this large; use method='de-casteljau'"
+                    f"control points this large or degrees above {MAX_DEGREE}; use "
+                    "method='de-casteljau'"
                 )
             out = np.empty((len(u), pts.shape[1]))
             _k.piecewise_horner(np.array([0.0, 1.0]), self._power_form(),
@@ -133,7 +134,10 @@ class Bezier(Weighted, Curve):
         return project(out) if self.rational else out
 
     def _power_form(self):
-        """M_bez · P as a one-section coefficient array, or None if it overflows."""
+        """M_bez · P as a one-section coefficient array, or None if it overflows (or
+        the degree is above the derived matrices' :data:`~.matrices.MAX_DEGREE`)."""
+        if self.degree > MAX_DEGREE:
+            return None
         if self._coefficients is None:
             pts = self.homogeneous() if self.rational else self.points
             m = bezier_matrix(self.degree) if self.degree else np.ones((1, 1))

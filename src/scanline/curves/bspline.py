@@ -98,6 +98,32 @@ def knot_span(knots, u, last=None):
     return np.minimum(np.searchsorted(knots, u, side="right") - 1, last)
 
 
+def _basis_arguments(knots, order, u, last):
+    """Check :func:`basis`'s arguments (it is public): a finite non-decreasing knot
+    vector of at least d + 1 values spanning a non-empty range, an integer order
+    d >= 1, parameters inside [u_0, u_{n+d}], and ``last`` a span ending after u_0."""
+    if isinstance(order, bool) or not isinstance(order, numbers.Integral):
+        raise ArgumentTypeError(f"order must be an integer >= 1, got {_show(order)}")
+    if order < 1:
+        raise ArgumentValueError(f"order must be an integer >= 1, got {order}")
+    try:
+        knots = np.asarray(knots, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise ArgumentTypeError(f"knots must be an array of numbers, got {_show(knots)}") from None
+    if (knots.ndim != 1 or len(knots) < order + 1 or not np.isfinite(knots).all()
+            or (np.diff(knots) < 0).any() or not knots[0] < knots[-1]):
+        raise ArgumentValueError(
+            f"knots must be at least order + 1 = {order + 1} finite non-decreasing numbers, "
+            f"not all equal, got {_show(knots.tolist())}")
+    u = parameters("u", u, (float(knots[0]), float(knots[-1])))
+    if last is not None and not (isinstance(last, numbers.Integral) and 0 <= last <= len(knots) - 2
+                                 and knots[last + 1] > knots[0]):
+        raise ArgumentValueError(
+            f"last must be the index of a knot span, 0 to {len(knots) - 2}, ending after "
+            f"knots[0]; got {_show(last)}")
+    return knots, int(order), u, last
+
+
 def basis(knots, order, u, last=None):
     """All blending functions B_{k,d}(u), k = 0 … n, by the Cox–de Boor recursion.
 
@@ -130,9 +156,7 @@ def basis(knots, order, u, last=None):
     M. G. Cox, "The numerical evaluation of B-splines", *J. Inst. Maths Applics* 10, 1972.
     C. de Boor, "On calculating with B-splines", *J. Approx. Theory* 6, 1972.
     """
-    knots = np.asarray(knots, dtype=np.float64)
-    d = int(order)
-    u = np.asarray(u, dtype=np.float64)
+    knots, d, u, last = _basis_arguments(knots, order, u, last)
     flat = u.ravel()
     count = len(knots) - 1  # number of order-1 functions
     b = np.zeros((flat.size, count))

@@ -28,10 +28,16 @@ from functools import lru_cache
 import numpy as np
 
 from .. import _validate as v
+from ..errors import ArgumentValueError
 
 #: The notes' Hermite boundary-constraint matrix (ch. 5, Q.3, eq. 5): rows give
 #: P(0), P(1), P'(0), P'(1) from the coefficients [a b c d] of au³ + bu² + cu + d.
 HERMITE_CONSTRAINTS = ((0, 0, 0, 1), (1, 1, 1, 1), (0, 0, 1, 0), (3, 2, 1, 0))
+
+#: Highest degree of the derived matrices: the exact derivation costs O(n⁴) Fraction
+#: operations (about a second at 40), and beyond it the power form has lost every
+#: digit to cancellation anyway (its entries reach C(n, n/2)²).
+MAX_DEGREE = 40
 
 
 def span_polynomials(knots, order, span):
@@ -99,7 +105,12 @@ def bezier_matrix(degree=3):
     knot vector [0ⁿ⁺¹ 1ⁿ⁺¹].  For n = 3 the first row is [-1 3 -3 1]; the notes print
     [1 0 -3 1] (erratum E40).
     """
-    return np.array(_bezier(v.positive_int("degree", degree, minimum=1)))
+    degree = v.positive_int("degree", degree, minimum=1)
+    if degree > MAX_DEGREE:
+        raise ArgumentValueError(
+            f"degree={degree} is above {MAX_DEGREE}: the power form of a curve this high is "
+            "useless in floating point; evaluate it by de Casteljau's algorithm")
+    return np.array(_bezier(degree))
 
 
 def bspline_matrix(order=4):
@@ -109,7 +120,12 @@ def bspline_matrix(order=4):
     span [d−1, d].  For d = 4 it is ⅙[[-1 3 -3 1] [3 -6 3 0] [-3 0 3 0] [1 4 1 0]];
     the notes print ⅙ times the Bezier matrix, itself misprinted (erratum E41).
     """
-    return np.array(_bspline(v.positive_int("order", order, minimum=2)))
+    order = v.positive_int("order", order, minimum=2)
+    if order > MAX_DEGREE + 1:
+        raise ArgumentValueError(
+            f"order={order} is above {MAX_DEGREE + 1}: the power form of a curve this high "
+            "is useless in floating point; evaluate it by de Boor's algorithm")
+    return np.array(_bspline(order))
 
 
 @lru_cache(maxsize=8)

@@ -338,6 +338,8 @@ def test_bad_arguments():
         s.derivative(0.5, 0.5, -1, 0)
     with pytest.raises(sl.ArgumentValueError, match="nu"):
         s.tessellate(0, 3)
+    with pytest.raises(sl.ArgumentValueError, match="nu=100000, nv=100000 ask for"):
+        s.tessellate(10**5, 10**5)      # 10^10 vertices: refused, not a MemoryError
     flat = sl.curves.BezierSurface(np.zeros((2, 2, 2)))
     with pytest.raises(sl.ArgumentValueError, match="3-D"):
         flat.normal(0.5, 0.5)

@@ -46,6 +46,11 @@ DEGENERATE = 1e-10
 #: degenerate point.
 NUDGE = 1e-6
 
+#: Most vertices :meth:`Surface.tessellate` builds (each costs about
+#: 100 bytes with its normal and triangles): a bigger grid is refused, not a
+#: MemoryError half-way.
+MAX_VERTICES = 1 << 24
+
 
 def _net(name, value, dims=(2, 3)):
     """A control net as a float64 (m + 1, n + 1, dim) array of finite points."""
@@ -255,6 +260,10 @@ class Surface:
         """
         nu = v.positive_int("nu", nu)
         nv = v.positive_int("nv", nv)
+        if (nu + 1) * (nv + 1) > MAX_VERTICES:
+            raise ArgumentValueError(
+                f"nu={nu}, nv={nv} ask for {(nu + 1) * (nv + 1)} vertices, more than "
+                f"{MAX_VERTICES}; use fewer intervals (or split the surface)")
         if self.dimension != 3:
             raise ArgumentValueError(
                 f"tessellate needs a 3-D surface; this one has {self.dimension}-D control points"

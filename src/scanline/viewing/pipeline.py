@@ -228,6 +228,11 @@ def _scales(window, viewport, keep_aspect, align):
     v.choice("align", align, ALIGNS)
     sx = vp.width / w.width
     sy = vp.height / w.height
+    if not (0 < sx < math.inf and 0 < sy < math.inf):
+        raise ArgumentValueError(
+            f"window={w.bounds} cannot be mapped to viewport={vp.bounds}: the scale "
+            f"factors ({sx:g}, {sy:g}) overflow or vanish in floating point; use window "
+            "and viewport sizes within a factor of about 1e300 of each other")
     ox = oy = 0.0
     if keep_aspect:
         sx = sy = min(sx, sy)

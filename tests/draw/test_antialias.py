@@ -14,7 +14,11 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import scanline as sl
+from scanline._kernels.antialias import BAND_SHIFT
 from scanline.draw import antialias as aa
+
+#: Scan lines per band of the line kernel: tests of band edges straddle this row.
+BAND = 1 << BAND_SHIFT
 
 
 def intensity(fb):
@@ -376,13 +380,14 @@ def test_banded_batch_equals_single_calls(mode):
     # the segments in their order
     rng = np.random.default_rng(9)
     segs = np.c_[rng.uniform(0, 60, (300, 2)), rng.uniform(0, 60, (300, 2))]
+    segs[:, [1, 3]] += BAND - 30                     # around the first band edge
     segs[::2, 1] += 40
     segs[::7] *= 3                                   # some long ones, some outside
     colors = [(200, 30, 90, 150), "navy", (0, 255, 0, 40)] * 100
-    batch = sl.FrameBuffer(64, 110, mode=mode, background="white")
+    batch = sl.FrameBuffer(64, BAND + 80, mode=mode, background="white")
     aa.lines(batch, segs, colors)
     aa.lines(batch, segs, (200, 30, 90, 150))
-    single = sl.FrameBuffer(64, 110, mode=mode, background="white")
+    single = sl.FrameBuffer(64, BAND + 80, mode=mode, background="white")
     for s, c in zip(segs, colors):
         aa.lines(single, [s], c)
     for s in segs:
@@ -417,10 +422,112 @@ def wu_reference(x0, y0, x1, y1, width, height):
 def test_lines_match_a_plain_reference_across_bands():
     rng = np.random.default_rng(21)
     segs = rng.uniform(-10, 110, (60, 4))
-    segs[:10, 3] = segs[:10, 1] + rng.uniform(-0.9, 0.9, 10)     # flat ones on band edges
-    segs[:10, 1] = 31.3 + np.arange(10) * 3.1
+    segs[:, [1, 3]] += BAND - 50                                 # around a band edge
+    segs[:10, 3] = segs[:10, 1] + rng.uniform(-0.9, 0.9, 10)     # flat ones on it
+    segs[:10, 1] = BAND - 0.7 + np.arange(10) * 0.31
+    segs[:10, 3] = segs[:10, 1] + rng.uniform(-0.9, 0.9, 10)
     for s in segs:
-        fb = sl.FrameBuffer(100, 100, mode="L")
+        fb = sl.FrameBuffer(100, BAND + 60, mode="L")
         aa.lines(fb, [s], "white")
-        ref = wu_reference(*s, 100, 100)
+        ref = wu_reference(*s, 100, BAND + 60)
         assert np.abs(fb.to_array() - np.round(ref * 255)).max() <= 1
+
+
+def wu_exact(out, x0, y0, x1, y1, src, alpha):
+    """The column-span line composited over ``out`` (image order, uint8, channels
+    last) one pixel at a time in plain Python, with the fixed-point "over" of modes
+    RGB and L (weight f = round(alpha x coverage x 65536), d + ((s - d) f + 2**15)
+    >> 16), every floating-point operation in the order the notes' algorithm
+    states it: the kernel's vectorized two-pass form must give these bytes."""
+    height, width = out.shape[:2]
+    swap = abs(y1 - y0) > abs(x1 - x0)
+    u0, w0, u1, w1 = (y0, x0, y1, x1) if swap else (x0, y0, x1, y1)
+    if u0 > u1:
+        u0, w0, u1, w1 = u1, w1, u0, w0
+    if not u1 > u0:
+        return
+    m = (w1 - w0) / (u1 - u0)
+    half = 0.5 * math.sqrt(1.0 + m * m)
+    for i in range(math.floor(u0 + 0.5), math.ceil(u1 + 0.5)):
+        lo, hi = max(u0, i - 0.5), min(u1, i + 0.5)
+        if not hi > lo:
+            continue
+        wc = w0 + (0.5 * (lo + hi) - u0) * m
+        a, b = wc - half, wc + half
+        for j in range(math.floor(a + 0.5), math.ceil(b + 0.5)):
+            cover = (min(b, j + 0.5) - max(a, j - 0.5)) * ((hi - lo) * alpha)
+            x, y = (j, i) if swap else (i, j)
+            if cover > 0.0 and 0 <= x < width and 0 <= y < height:
+                f = int(min(cover, 1.0) * 65536.0 + 0.5)
+                px = out[height - 1 - y, x]
+                for c in range(out.shape[2]):
+                    d = int(px[c])
+                    px[c] = d + (((src[c] - d) * f + 32768) >> 16)
+
+
+@pytest.mark.parametrize("mode", ["RGB", "L"])
+def test_lines_equal_a_pixel_by_pixel_reference_exactly(mode):
+    rng = np.random.default_rng(5)
+    segs = rng.uniform(-8, 48, (40, 4))
+    segs[:, [1, 3]] += BAND - 20                    # across a band edge, some outside
+    segs[:6, 2] = segs[:6, 0] + rng.uniform(-0.5, 0.5, 6)          # steep
+    segs[6:12, 3] = segs[6:12, 1]                                   # horizontal
+    segs[12:16] = np.round(segs[12:16] * 2) / 2                     # on half-integers
+    colors = rng.integers(0, 256, (40, 4))
+    fb = sl.FrameBuffer(40, BAND + 20, mode=mode, background=90 if mode == "L" else (90, 40, 7))
+    grays = [(int(c[0]),) * 3 + (int(c[3]),) for c in colors]
+    aa.lines(fb, segs, colors if mode == "RGB" else grays)
+    out = np.full((BAND + 20, 40, 3 if mode == "RGB" else 1), 0, np.int64)
+    out[...] = (90, 40, 7) if mode == "RGB" else 90
+    for s, c in zip(segs, colors):
+        src = [int(v) for v in c[:3]] if mode == "RGB" else [int(c[0])]
+        wu_exact(out, *s, src, c[3] / 255.0)
+    got = fb.to_array().reshape(out.shape)
+    assert np.array_equal(got, out)
+
+
+def test_fills_flat_equals_fill_in_order():
+    rng = np.random.default_rng(4)
+    square = [(2.3, 2.1), (25.6, 2.9), (26.2, 24.4), (1.7, 25.2)]
+    hole = [(8.2, 8.4), (8.9, 18.3), (19.1, 18.6), (18.4, 7.7)]
+    tri = random_polygon(rng, 6, (15, 15), 9)
+    shapes = [[np.array(square), np.array(hole)], [tri], [np.array(hole)]]
+    colors = [(255, 0, 0, 200), "navy", (0, 255, 0, 90)]
+    verts = np.concatenate([c for shape in shapes for c in shape])
+    contour_offsets = np.cumsum([0, 4, 4, len(tri), 4])
+    flat = sl.FrameBuffer(30, 30, mode="RGB")
+    aa.fills_flat(flat, verts, contour_offsets, [0, 2, 3, 4], colors, "even-odd")
+    single = sl.FrameBuffer(30, 30, mode="RGB")
+    for shape, c in zip(shapes, colors):
+        aa.fill(single, shape, c, "even-odd")
+    assert np.array_equal(flat.to_array(), single.to_array())
+    assert flat.to_array().any()
+
+
+def test_fills_flat_rejects_inconsistent_offsets():
+    fb = sl.FrameBuffer(5, 5)
+    tri = [(0, 0), (3, 0), (0, 3)]
+    with pytest.raises(sl.ArgumentValueError, match="contour_offsets must rise from 0 to 3"):
+        aa.fills_flat(fb, tri, [0, 4], [0, 1])
+    with pytest.raises(sl.ArgumentValueError, match="contour_offsets"):
+        aa.fills_flat(fb, tri + tri, [0, 4, 3, 6], [0, 3])
+    with pytest.raises(sl.ArgumentValueError, match="shape_offsets must rise from 0 to 1"):
+        aa.fills_flat(fb, tri, [0, 3], [1, 1])
+    with pytest.raises(sl.ArgumentTypeError, match="shape_offsets"):
+        aa.fills_flat(fb, tri, [0, 3], [0.0, 1.0])
+    with pytest.raises(sl.ArgumentTypeError, match="contour_offsets"):
+        aa.fills_flat(fb, tri, [[0, 3]], [0, 1])
+    with pytest.raises(sl.ArgumentValueError, match=r"vertex 1 is \[nan, 0.0\]"):
+        aa.fills_flat(fb, [(0, 0), (float("nan"), 0), (0, 3)], [0, 3], [0, 1])
+    with pytest.raises(sl.ArgumentValueError, match="vertex 2"):
+        aa.fills_flat(fb, [(0, 0), (2.0**40, 0), (0, -2.0**41)], [0, 3], [0, 1])
+    with pytest.raises(sl.ArgumentTypeError, match="vertices"):
+        aa.fills_flat(fb, [(0, 0, 1)], [0, 1], [0, 1])
+
+
+def test_fills_flat_takes_outlines_beyond_the_drawing_range():
+    # a square reaching 2**35 beyond the frame: its inside covers the frame exactly
+    fb = sl.FrameBuffer(6, 4, mode="L")
+    big = 2.0**35
+    aa.fills_flat(fb, [(-big, -big), (big, -big), (big, 1.5), (-big, 1.5)], [0, 4], [0, 1])
+    assert fb.to_array().tolist() == [[0] * 6, [0] * 6, [255] * 6, [255] * 6]

@@ -28,7 +28,9 @@ to the midpoint rule's error.
 
 Each pixel is composited with :func:`scanline._kernels.blend.over` (effective
 alpha = intensity x the color's alpha), inlined with the frame-buffer mode as a
-constant (the kernels branch on the mode once, outside the loops).  Loops run over
+constant (the kernels branch on the mode once, outside the loops); in modes "RGB"
+and "L" the lines take the same arithmetic in two passes per line
+(:func:`fixed_point_columns`).  Loops run over
 the columns (rows) inside the raster only and clamp the rows of each column span
 to it: nothing is written outside ``buf`` whatever the coordinates.
 
@@ -43,8 +45,13 @@ import math
 import numpy as np
 
 from ._jit import helper, inline, kernel
-from .blend import BIT, GRAY, RGB, RGBA, over
-from .raster import BAND_SHIFT
+from .blend import BIT, GRAY, RGB, RGBA, fixed, mix, over
+
+#: Scan lines per band of :func:`band_lists` (256).  Measured on 100 000 random
+#: lines of up to 64 pixels in 2048 x 2048 RGB: 32-line bands listed each line in
+#: 1.7 bands on average and 256-line bands were about 1.3x faster (the raster's
+#: rows still stay in the cache: 1.5 MiB of RGB per band).
+BAND_SHIFT = 8
 
 
 @inline
@@ -65,10 +72,11 @@ def column(buf, mode, table, swap, u, wc, half, weight, src, wlo, whi):
 
 
 @inline
-def wu_line(buf, mode, table, width, x0, y0, x1, y1, src, alpha, ylo, yhi):
+def wu_line(buf, mode, table, width, x0, y0, x1, y1, src, alpha, ylo, yhi, rows, weights):
     """Composite the pixels of rows ylo..yhi of the antialiased line (x0, y0)-(x1,
     y1) (real coordinates) in a raster ``width`` pixels wide, with the channels
-    ``src`` (integers) at opacity ``alpha``."""
+    ``src`` (integers) at opacity ``alpha``; ``rows`` and ``weights`` are scratch
+    for :func:`fixed_point_columns`."""
     swap = abs(y1 - y0) > abs(x1 - x0)
     if swap:   # u: the major axis, w: the minor one; [ulo, uhi] x [wlo, whi] pixels
         u0, w0, u1, w1 = y0, x0, y1, x1
@@ -99,7 +107,14 @@ def wu_line(buf, mode, table, width, x0, y0, x1, y1, src, alpha, ylo, yhi):
         return
     i0 = max(math.floor(ua + 0.5), ulo)
     i1 = min(math.ceil(ub + 0.5) - 1, uhi)
-    if swap:
+    if mode == RGB or mode == GRAY:
+        if swap:
+            fixed_point_columns(buf, mode, True, i0, i1, ua, ub, u0, w0, m, half, src, alpha,
+                                wlo, whi, rows, weights)
+        else:
+            fixed_point_columns(buf, mode, False, i0, i1, ua, ub, u0, w0, m, half, src, alpha,
+                                wlo, whi, rows, weights)
+    elif swap:
         columns(buf, mode, table, True, i0, i1, ua, ub, u0, w0, m, half, src, alpha, wlo, whi)
     else:
         columns(buf, mode, table, False, i0, i1, ua, ub, u0, w0, m, half, src, alpha, wlo, whi)
@@ -114,6 +129,53 @@ def columns(buf, mode, table, swap, i0, i1, ua, ub, u0, w0, m, half, src, alpha,
         if hi > lo:
             wc = w0 + (0.5 * (lo + hi) - u0) * m
             column(buf, mode, table, swap, i, wc, half, (hi - lo) * alpha, src, wlo, whi)
+
+
+@inline
+def fixed_point_columns(buf, mode, swap, i0, i1, ua, ub, u0, w0, m, half, src, alpha, wlo,
+                        whi, rows, weights):
+    """:func:`columns` for the modes whose composite is a fixed-point weight per
+    channel ("RGB", "L"; ``mode`` a constant), in two passes: the first computes,
+    for every column, its first row and the weights (:func:`scanline._kernels.blend.fixed`)
+    of the three pixels a column span can touch (0 past its last one) with no
+    data-dependent branch, so that LLVM vectorizes it; the second blends the
+    pixels of nonzero weight.  The arithmetic is :func:`column`'s and
+    :func:`scanline._kernels.blend.over`'s, operation for operation (a weight of 0
+    leaves a pixel as it is), so the pixels are the same; measured, about 1.2x
+    faster than :func:`columns` on 100 000 random short lines."""
+    n = i1 - i0 + 1
+    flo = float(wlo)
+    fhi = float(whi)
+    for k in range(n):
+        i = i0 + k
+        lo = max(ua, i - 0.5)
+        hi = min(ub, i + 0.5)
+        wc = w0 + (0.5 * (lo + hi) - u0) * m
+        weight = (hi - lo) * alpha if hi > lo else 0.0
+        a = wc - half
+        b = wc + half
+        f0 = max(np.floor(a + 0.5), flo)            # the first and last rows, as floats
+        f1 = min(np.ceil(b + 0.5) - 1.0, fhi)
+        rows[k] = int(f0)
+        for t in range(3):                          # a span 1..sqrt(2) long: <= 3 pixels
+            jf = f0 + t
+            cover = (min(b, jf + 0.5) - max(a, jf - 0.5)) * weight if jf <= f1 else 0.0
+            weights[t, k] = fixed(min(max(cover, 0.0), 1.0))
+    flat = buf.reshape(-1)
+    channels = buf.shape[2]
+    stride = buf.shape[1] * channels
+    for k in range(n):
+        i = i0 + k
+        for t in range(3):
+            f = weights[t, k]
+            if f == 0:
+                continue
+            j = min(rows[k] + t, whi)
+            # unsigned offsets: no negative-index wraparound code (i, j >= 0)
+            p = np.uint64(i * stride + j * channels if swap else j * stride + i * channels)
+            for c in range(3 if mode == RGB else 1):
+                q = p + np.uint64(c)
+                flat[q] = mix(flat[q], src[c], f)
 
 
 @helper
@@ -153,6 +215,8 @@ def lines_loop(buf, mode, table, width, height, segments, srcs, starts, items):
     for k in range(srcs.shape[0]):
         for c in range(3):
             channels[k, c] = int(srcs[k, c])
+    rows = np.empty(max(width, height), np.int64)       # fixed_point_columns' scratch
+    weights = np.empty((3, max(width, height)), np.int64)
     for b in range(starts.shape[0] - 1):
         ylo = b << BAND_SHIFT
         yhi = min(ylo + (1 << BAND_SHIFT) - 1, height - 1)
@@ -160,7 +224,7 @@ def lines_loop(buf, mode, table, width, height, segments, srcs, starts, items):
             n = items[t]
             k = 0 if one else n
             wu_line(buf, mode, table, width, segments[n, 0], segments[n, 1], segments[n, 2],
-                    segments[n, 3], channels[k], srcs[k, 3], ylo, yhi)
+                    segments[n, 3], channels[k], srcs[k, 3], ylo, yhi, rows, weights)
 
 
 @kernel
@@ -171,8 +235,7 @@ def draw_lines(buf, mode, width, height, table, segments, srcs):
     The raster is drawn band by band of scan lines (:func:`band_lists`), each band
     compositing its part of every segment that meets it, in the segments' order:
     every pixel sees the same composites in the same order as segment after
-    segment would give it, while the rows being blended stay in the cache
-    (measured: about 1.4x faster on 100 000 random lines in 2048 x 2048)."""
+    segment would give it, while the rows being blended stay in the cache."""
     starts, items = band_lists(segments, height)
     if mode == RGB:
         lines_loop(buf, RGB, table, width, height, segments, srcs, starts, items)

@@ -65,6 +65,21 @@ def level(v):
 
 
 @inline
+def fixed(a):
+    """An effective alpha ``a`` in [0, 1] as a 16-bit fixed-point weight 0..65536,
+    exact to 255 / 65536 after :func:`mix`."""
+    return int(a * 65536.0 + 0.5)
+
+
+@inline
+def mix(d, s, f):
+    """Channel value ``d`` blended toward ``s`` (0..255) by the fixed-point weight
+    ``f`` (:func:`fixed`), rounded to the nearest level; ``f = 0`` returns ``d``."""
+    d = np.int64(d)
+    return np.uint8(d + (((np.int64(s) - d) * f + 32768) >> 16))
+
+
+@inline
 def over(buf, mode, table, x, y, src, a):
     """Composite the source row ``src`` with effective alpha ``a`` over pixel
     (x, y) of ``buf``.
@@ -83,10 +98,9 @@ def over(buf, mode, table, x, y, src, a):
     # five times slower in those modes (LLVM apparently transforms the caller's
     # short column loop differently).
     if mode == RGB or mode == GRAY:
-        f = int(a * 65536.0 + 0.5)      # 16-bit fixed point: exact to 255 / 65536
+        f = fixed(a)
         for c in range(3 if mode == RGB else 1):
-            d = np.int64(buf[y, x, c])
-            buf[y, x, c] = np.uint8(d + (((np.int64(src[c]) - d) * f + 32768) >> 16))
+            buf[y, x, c] = mix(buf[y, x, c], src[c], f)
     elif mode == RGBA:
         da = buf[y, x, 3] / 255.0
         keep = da * (1.0 - a)

@@ -18,12 +18,14 @@ primitive.  Anything outside the frame buffer is clipped.
 ``filled_ellipses(fb, e, c)``   (N, 4) rows (xc, yc, rx, ry), areas
 ``fill(fb, contours, c, rule)`` ONE shape from several contours
 ``fills(fb, shapes, c, rule)``  a batch of shapes in one compiled call
+``fills_flat(fb, v, co, so, c)`` the same batch given as flat arrays
 =============================== ==========================================
 """
 
 import numpy as np
 
 from .. import _validate as v
+from ..errors import ArgumentTypeError, ArgumentValueError
 from .._kernels import antialias as wu
 from .._kernels import coverage as cov
 from ..geometry import contours as parse
@@ -155,13 +157,102 @@ def filled_ellipses(fb, ellipses, color="white"):
     cov.fill_ellipses(buf, mode, width, height, table, arr, srcs)
 
 
+#: The largest vertex magnitude :func:`fills_flat` takes: the coverage arithmetic is
+#: exact far beyond the drawing range +-2**30, and generated outlines (a wide stroke's
+#: round caps and miters around an in-range vertex) may reach past it.
+OUTLINE_LIMIT = 2.0**40
+
+
+def _vertices(value):
+    """``value`` as a contiguous float64 (V, 2) array of finite vertices within
+    +-OUTLINE_LIMIT (no copy if it already is one)."""
+    try:
+        a = np.asarray(value)
+    except (TypeError, ValueError):
+        a = None
+    if a is None or a.dtype.kind not in "fiu" or a.ndim != 2 or a.shape[1] != 2:
+        raise ArgumentTypeError(f"vertices must be a (V, 2) array of real numbers, got "
+                                f"{v._show(value)}")
+    a = np.ascontiguousarray(a, np.float64)
+    if a.size and not np.abs(a).max() <= OUTLINE_LIMIT:        # NaN fails too
+        i = int(np.argmax(~(np.abs(a) <= OUTLINE_LIMIT).all(axis=1)))
+        raise ArgumentValueError(f"vertices must be finite and within +-2**40; vertex {i} "
+                                 f"is {a[i].tolist()}")
+    return a
+
+
+def _offsets(name, value, end):
+    """``value`` as a contiguous int64 array that rises from 0 to ``end``."""
+    a = np.asarray(value)
+    if a.ndim != 1 or a.size == 0 or not np.issubdtype(a.dtype, np.integer):
+        raise ArgumentTypeError(f"{name} must be a non-empty 1-D array of integers (where "
+                                f"each part starts, then the end), got {v._show(value)}")
+    if a[0] != 0 or a[-1] != end or (np.diff(a) < 0).any():
+        raise ArgumentValueError(f"{name} must rise from 0 to {end} without decreasing, got "
+                                 f"{v._show(value)}")
+    return np.ascontiguousarray(a, np.int64)
+
+
 def _fill_parsed(fb, verts, offsets, shapes, color, rule):
-    """Fill shapes already parsed by :mod:`scanline.geometry.contours`."""
+    """:func:`fills_flat` for arrays already validated (by
+    :mod:`scanline.geometry.contours`)."""
     code = _rule(rule)
     buf, mode, width, height, table, srcs = _setup(fb, color, len(shapes) - 1)
     counts = offsets[shapes[1:]] - offsets[shapes[:-1]]
     most = int(counts.max()) if len(counts) else 0
     cov.fill_shapes(buf, mode, width, height, table, verts, offsets, shapes, srcs, code, most)
+
+
+def fills_flat(fb, vertices, contour_offsets, shape_offsets, color="white", rule="nonzero"):
+    """Fill a batch of shapes made of several contours each, given as flat arrays,
+    with antialiased edges in one compiled call (as :func:`fills`).
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+    vertices : array_like, shape (V, 2)
+        All the contours' vertices, real device coordinates: finite, within
+        +-2**40 (outlines generated from geometry in the drawing range +-2**30,
+        such as wide strokes, may reach beyond it).
+    contour_offsets : array_like of int, shape (C + 1,)
+        Contour c is ``vertices[contour_offsets[c]:contour_offsets[c + 1]]``
+        (closed implicitly); rises from 0 to V.
+    shape_offsets : array_like of int, shape (M + 1,)
+        Shape p is made of contours ``shape_offsets[p]`` .. ``shape_offsets[p + 1]
+        - 1``; rises from 0 to C.
+    color : color or list/array of M colors
+    rule : {"nonzero", "even-odd"}
+        Applied to each shape on its own.
+
+    Notes
+    -----
+    This is the form :func:`fill` and :func:`fills` reduce their arguments to, and
+    the form stroke outlines come in (:func:`scanline.draw.polyline` with a width),
+    so that generated geometry needs no per-contour Python objects.  Float64
+    C-contiguous vertices are used without a copy.
+
+    Examples
+    --------
+    Two shapes: a square with a square hole (contours 0 and 1) and a triangle
+    (contour 2) whose hypotenuse halves two pixels.
+
+    >>> import scanline as sl
+    >>> square = [(-0.5, -0.5), (4.5, -0.5), (4.5, 4.5), (-0.5, 4.5)]
+    >>> hole = [(0.5, 0.5), (0.5, 3.5), (3.5, 3.5), (3.5, 0.5)]
+    >>> triangle = [(5.5, -0.5), (7.5, -0.5), (5.5, 1.5)]
+    >>> fb = sl.FrameBuffer(8, 5, mode="L")
+    >>> sl.draw.antialias.fills_flat(fb, square + hole + triangle, [0, 4, 8, 11], [0, 2, 3])
+    >>> fb.to_array()
+    array([[255, 255, 255, 255, 255,   0,   0,   0],
+           [255,   0,   0,   0, 255,   0,   0,   0],
+           [255,   0,   0,   0, 255,   0,   0,   0],
+           [255,   0,   0,   0, 255,   0, 128,   0],
+           [255, 255, 255, 255, 255,   0, 255, 128]], dtype=uint8)
+    """
+    verts = _vertices(vertices)
+    offsets = _offsets("contour_offsets", contour_offsets, len(verts))
+    shapes = _offsets("shape_offsets", shape_offsets, len(offsets) - 1)
+    _fill_parsed(fb, verts, offsets, shapes, color, rule)
 
 
 def fill(fb, contours, color="white", rule="nonzero"):

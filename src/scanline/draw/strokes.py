@@ -234,7 +234,7 @@ def _antialiased(fb, verts, offsets, closed, color, style):
         style.miter_limit, dashes, float(phase), _view(fb, _margin(style)))
     # the outlines are already flat arrays (vertices, contour offsets, shape offsets):
     # hand them over as they are rather than as lists of contours
-    aa._fill_parsed(fb, out, contours, polys, color, "nonzero")
+    aa.fills_flat(fb, out, contours, polys, color, "nonzero")
 
 
 def polyline(fb, points, color="white", closed=False, *, style=None, antialias=False,

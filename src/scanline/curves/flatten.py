@@ -244,27 +244,17 @@ def _distinct(points):
 # -- Bezier form of the known curve types ---------------------------------------------
 
 
-def bezier_pieces(curve):
-    """The curve as homogeneous Bezier segments (S, n + 1, dim + 1), or None if its
-    type has no Bezier form here.
+def _pieces(curve):
+    """(pieces, homogeneous): the Bezier segments of ``curve``, as Cartesian control
+    points (S, n + 1, dim) when it is not rational, else homogeneous; (None, False)
+    for a curve without a Bezier form here.
 
     Bezier curves are one segment; Hermite-family curves (piecewise polynomials) are
     their sections' Bezier forms; a B-spline or NURBS of order d is cut into its
     polynomial pieces, one per non-empty knot span of the valid range (Boehm 1980:
     the pieces' control points are those of the spline with every knot raised to
     multiplicity d - 1; computed here by interpolating d points of each piece, which
-    gives the same points up to rounding).
-    """
-    pieces, homogeneous = _pieces(curve)
-    if pieces is None or homogeneous:
-        return pieces
-    return np.concatenate([pieces, np.ones(pieces.shape[:2] + (1,))], axis=2)
-
-
-def _pieces(curve):
-    """(pieces, homogeneous): the Bezier segments of ``curve``, as Cartesian control
-    points (S, n + 1, dim) when it is not rational, else homogeneous; (None, False)
-    for a curve without a Bezier form here."""
+    gives the same points up to rounding)."""
     if isinstance(curve, _BEZIER):
         if curve.weights is None:
             return curve.points[None], False

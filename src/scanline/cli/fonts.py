@@ -18,9 +18,10 @@ def register(subparsers):
 
 def rows(fonts):
     """One line of text per font (cap/em: cap height and em size in font units)."""
-    out = [f"{'name':<10} {'kind':<8} {'glyphs':>6}  {'cap/em':>9}  source; license"]
+    w = max([10] + [len(name) for name in fonts])
+    out = [f"{'name':<{w}} {'kind':<8} {'glyphs':>6}  {'cap/em':>9}  source; license"]
     for name, f in fonts.items():
-        out.append(f"{name:<10} {f.kind:<8} {f.glyph_count:>6}  "
+        out.append(f"{name:<{w}} {f.kind:<8} {f.glyph_count:>6}  "
                    f"{f'{f.cap_height:g}/{f.units_per_em:g}':>9}  {os.path.basename(f.source)}; "
                    f"{f.license}")
     return out
@@ -29,7 +30,7 @@ def rows(fonts):
 def run(args):
     from ..text import fonts, load_font
 
-    chosen = ({os.path.basename(p): load_font(p) for p in args.files} if args.files
-              else fonts())
+    # each FILE as given (two files of one base name are two rows)
+    chosen = {p: load_font(p) for p in args.files} if args.files else fonts()
     print("\n".join(rows(chosen)))
     return 0

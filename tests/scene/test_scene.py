@@ -333,6 +333,17 @@ def test_render_to_unknown_type(tmp_path, capsys):
     assert not (tmp_path / "out.jpg").exists()
 
 
+@pytest.mark.parametrize("ext", [".png", ".svg"])
+def test_render_to_a_folder_names_it(tmp_path, capsys, ext):
+    good = tmp_path / "good.toml"
+    good.write_text(MINIMAL)
+    (tmp_path / ("out" + ext)).mkdir()
+    assert main(["render", str(good), "-o", str(tmp_path / ("out" + ext))]) == 2
+    err = capsys.readouterr().err
+    assert f"out{ext}': it is a folder" in err and ".tmp" not in err
+    assert sorted(os.listdir(tmp_path)) == ["good.toml", "out" + ext]
+
+
 def test_render_listing_is_the_vector_device(tmp_path):
     good = tmp_path / "good.toml"
     good.write_text(MINIMAL)

@@ -80,6 +80,9 @@ class Scene:
         if kind is None:
             raise SceneError(f"cannot write {os.fspath(path)!r}: use one of "
                              + ", ".join(OUTPUTS))
+        if os.path.isdir(path):
+            raise SceneError(f"cannot write {os.fspath(path)!r}: it is a folder; give a "
+                             "file name")
         if kind == "raster":
             self.raster().save(path)
             return

@@ -68,6 +68,21 @@ def test_filled_nurbs_circle_has_the_circles_area(radius):
     assert abs(lit(fb).sum() - area) <= 2 * np.pi * radius * 0.5
 
 
+@pytest.mark.parametrize("radius", [10, 23.5, 60])
+def test_filled_nurbs_circle_lights_the_pixel_centers_inside_the_circle(radius):
+    """Flattened to 0.01 pixel, the fill lights exactly the pixel centers inside the
+    circle (counted here from x² + y² < r²), except centers within 2 × 0.01 of it."""
+    size = int(2 * radius + 8)
+    fb = sl.FrameBuffer(size, size, mode="L")
+    c = size / 2
+    sl.draw.curve(fb, sl.curves.nurbs_circle((c, c), radius), color=255, fill=True,
+                  tolerance=0.01)
+    y, x = np.mgrid[size - 1:-1:-1, 0:size]      # to_array() is top row first (y up)
+    distance = np.hypot(x - c, y - c)
+    inside, unsure = distance < radius, np.abs(distance - radius) < 0.02
+    assert not (lit(fb) ^ inside)[~unsure].any()
+
+
 def test_filled_bezier_circle_matches_polygon_fill_of_its_polyline():
     k = 4 / 3 * (np.sqrt(2) - 1)       # four cubic arcs approximating a circle of radius 20
     r, c = 20, np.array([30.0, 22.0])

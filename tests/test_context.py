@@ -120,7 +120,12 @@ def test_rectangular_clip_keeps_only_the_inside():
     on = np.argwhere(pixels(fb))
     ys, xs = 29 - on[:, 0], on[:, 1]
     assert xs.min() >= 5 and xs.max() <= 20 and ys.min() >= 5 and ys.max() <= 15
-    assert len(on) > 100
+    # the covering rectangle clipped is the window itself (the scan-line fill of the
+    # window's polygon: 15 x 10 centers by its edge rule), the line its part inside
+    window = frame()
+    sl.draw.polygon(window, [(5, 5), (20, 5), (20, 15), (5, 15)])
+    sl.draw.line(window, 5, 10, 20, 10)
+    assert (pixels(fb) == pixels(window)).all() and len(on) == 151
 
 
 def test_clips_intersect():

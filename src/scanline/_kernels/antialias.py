@@ -164,18 +164,20 @@ def fixed_point_columns(buf, mode, swap, i0, i1, ua, ub, u0, w0, m, half, src, a
     flat = buf.reshape(-1)
     channels = buf.shape[2]
     stride = buf.shape[1] * channels
+    step = np.uint64(channels if swap else stride)      # from pixel t to pixel t + 1
     for k in range(n):
         i = i0 + k
+        j = rows[k]
+        # unsigned offsets: no negative-index wraparound code (i, j >= 0); a nonzero
+        # weight is on a row <= whi (the pass above zeroed the others)
+        p = np.uint64(i * stride + j * channels if swap else j * stride + i * channels)
         for t in range(3):
             f = weights[t, k]
-            if f == 0:
-                continue
-            j = min(rows[k] + t, whi)
-            # unsigned offsets: no negative-index wraparound code (i, j >= 0)
-            p = np.uint64(i * stride + j * channels if swap else j * stride + i * channels)
-            for c in range(3 if mode == RGB else 1):
-                q = p + np.uint64(c)
-                flat[q] = mix(flat[q], src[c], f)
+            if f != 0:
+                for c in range(3 if mode == RGB else 1):
+                    q = p + np.uint64(c)
+                    flat[q] = mix(flat[q], src[c], f)
+            p += step
 
 
 @helper

@@ -34,15 +34,44 @@ def test_web_safe_table():
     assert t[36 * 5 + 6 * 2 + 1].tolist() == [255, 102, 51]
 
 
-def test_median_cut_matches_pillow():
-    image = RNG.integers(0, 256, (40, 50, 3), dtype=np.uint8)
-    table = sl.color.median_cut_table(image, 8)
-    pillow = Image.fromarray(image).quantize(8, method=Image.Quantize.MEDIANCUT)
-    assert table.tolist() == np.array(pillow.getpalette()[:24]).reshape(8, 3).tolist()
-    # from a frame buffer, and fewer colors than asked when the image has fewer
+def test_median_cut_by_hand():
+    # one axis: 4 pixels 0, 10, 200, 250 -> the median cut puts two in each box
+    line = np.array([[[0, 0, 0], [10, 0, 0], [200, 0, 0], [250, 0, 0]]], np.uint8)
+    assert sl.color.median_cut_table(line, 2).tolist() == [[5, 0, 0], [225, 0, 0]]
+    assert sl.color.median_cut_table(line, 1).tolist() == [[115, 0, 0]]   # 460 / 4
+    # pixel counts weigh: 6 pixels of 0, one of 100, one of 102 along green -> the
+    # median pixel is a 0, so the cut leaves {0} and {100, 102}
+    weighted = np.zeros((1, 8, 3), np.uint8)
+    weighted[0, 6, 1], weighted[0, 7, 1] = 100, 102
+    assert sl.color.median_cut_table(weighted, 2).tolist() == [[0, 0, 0], [0, 101, 0]]
+    # the longest side is cut: blue spans 0..200, red only 0..20
+    box = np.array([[[0, 0, 0], [20, 0, 0], [0, 0, 200], [20, 0, 200]]], np.uint8)
+    assert sl.color.median_cut_table(box, 2).tolist() == [[10, 0, 0], [10, 0, 200]]
+    # as many entries as colors when the image has fewer; from a frame buffer too
+    assert sorted(map(tuple, sl.color.median_cut_table(line, 16).tolist())) == [
+        (0, 0, 0), (10, 0, 0), (200, 0, 0), (250, 0, 0)]
     two = sl.FrameBuffer(4, 4, background="red")
     two.set_pixel(0, 0, "blue")
     assert sorted(map(tuple, sl.color.median_cut_table(two, 16).tolist())) == [(0, 0, 255), (255, 0, 0)]
+
+
+@pytest.mark.parametrize("colors", [2, 8, 64, 256])
+def test_median_cut_is_as_good_as_pillows(colors):
+    """Pillow's median cut (a peer) on a random image and a smooth gradient: the
+    nearest-entry squared error of our table is no worse than 1.1 times Pillow's."""
+    y, x = np.mgrid[0:60, 0:80]
+    gradient = np.dstack([x * 255 // 79, y * 255 // 59, (x + y) * 255 // 138]).astype(np.uint8)
+    for image in (RNG.integers(0, 256, (40, 50, 3), dtype=np.uint8), gradient):
+        ours = sl.color.median_cut_table(image, colors)
+        pil = Image.fromarray(image).quantize(colors, method=Image.Quantize.MEDIANCUT)
+        theirs = np.array(pil.getpalette()[:3 * colors]).reshape(-1, 3)
+        assert len(ours) == len(theirs) == colors
+
+        def error(table):
+            d = image.reshape(-1, 1, 3).astype(float) - table[None].astype(float)
+            return (d ** 2).sum(-1).min(axis=1).mean()
+
+        assert error(ours) <= 1.1 * error(theirs)
 
 
 def test_nearest_against_brute_force():

@@ -85,8 +85,7 @@ def test_vector_commands_are_the_viewing_formulas(points):
 def test_clipped_line_matches_shapely(segment):
     """A line clipped to its viewport: the vector device's segment is the shapely
     intersection of the device-space line with the viewport's device rectangle."""
-    pytest.importorskip("shapely")
-    from shapely.geometry import LineString, box
+    from shapely.geometry import LineString, box     # a test dependency: no skip
 
     window, viewport = (0, 0, 100, 100), (0.25, 0.25, 0.75, 0.75)
     df = DisplayFile()

@@ -65,6 +65,12 @@ def continuity(a, b, tol=1e-9):
     G2: G1 and the curvature vectors κN agree (the notes: "curvature of the two
     sections will match"); the second derivatives need not be proportional.  A zero
     first derivative at the join counts as G1 only if the other side is zero too.
+
+    References
+    ----------
+    B. A. Barsky and T. D. DeRose, "Geometric continuity of parametric curves: three
+    equivalent characterizations", *IEEE Computer Graphics and Applications* 9(6),
+    60-68, 1989.
     """
     for name, curve in (("a", a), ("b", b)):
         if not isinstance(curve, Curve):

@@ -333,6 +333,21 @@ def test_render_to_unknown_type(tmp_path, capsys):
     assert not (tmp_path / "out.jpg").exists()
 
 
+def test_text_path_key_reaches_the_text():
+    """A text primitive's ``path`` (its direction) is passed to the display file (it
+    collided with the error helper's own ``path`` argument: a raw TypeError)."""
+    scene = MINIMAL.replace(
+        "[{type = \"polyline\", points = [[0, 0], [19, 9]]}]",
+        "[{type = \"text\", position = [2, 1], string = \"AB\", height = 3, "
+        "font = \"bitmap\", path = \"PATH\"}]")
+    up = loads(scene.replace("PATH", "up")).raster().to_array()
+    right = loads(scene.replace("PATH", "right")).raster().to_array()
+    rows_up, cols_up = np.nonzero(up.any(axis=2))
+    rows_right, cols_right = np.nonzero(right.any(axis=2))
+    # "up" stacks the two characters: taller than wide; "right" the other way round
+    assert np.ptp(rows_up) > np.ptp(cols_up) and np.ptp(cols_right) > np.ptp(rows_right)
+
+
 @pytest.mark.parametrize("ext", [".png", ".svg"])
 def test_render_to_a_folder_names_it(tmp_path, capsys, ext):
     good = tmp_path / "good.toml"

@@ -76,15 +76,16 @@ def _join(path, key):
     return f"{path}.{key}" if path else key
 
 
-def _call(path, function, *args, **kwargs):
+def _call(where, function, /, *args, **kwargs):
     """Call a display-file function; its errors name the argument, which is the scene
-    key, so the message gets the key path in front."""
+    key, so the message gets the key path ``where`` in front.  (Positional-only: a
+    text primitive passes its own ``path`` keyword, the text path, through.)"""
     try:
         return function(*args, **kwargs)
     except ScanlineError as error:
-        message = f"{path}.{error}" if path else str(error)
+        message = f"{where}.{error}" if where else str(error)
         named = re.match(r"\w+(\[\d+\])*(\.\w+(\[\d+\])*)*", message)
-        raise SceneError(message, path=named.group() if named else path) from None
+        raise SceneError(message, path=named.group() if named else where) from None
 
 
 def angle(value, path):

@@ -372,7 +372,9 @@ scalars = st.one_of(
     st.none(), st.booleans(), st.integers(-10**20, 10**20),
     st.floats(allow_nan=True, allow_infinity=True), st.text(max_size=8),
     st.sampled_from(["red", "polyline", "polygon", "text", "circle", "x", "main", "hatch:45:4",
-                     "dashed", "round", "nonzero", "y=x", "#ff000080"]),
+                     "dashed", "round", "nonzero", "y=x", "#ff000080", "up", "left", "sans",
+                     "bitmap", "stroke", "center", "half", "hollow", "character", "string",
+                     "RGBA", "P", "1", "markers", "ellipse", "asterisk", "origin"]),
 )
 values = st.recursive(
     scalars,
@@ -383,7 +385,16 @@ values = st.recursive(
                                     "degrees", "pivot", "translate", "rotate", "scale",
                                     "viewport", "window", "fill", "style", "dash", "edge",
                                     "align", "angle", "kind", "size", "primitives",
-                                    "transform", "priority", "clip", "view_up", "x"]),
+                                    "transform", "priority", "clip", "view_up", "x",
+                                    # every other key of the schema (a text's "path"
+                                    # once raised a raw TypeError)
+                                    "path", "font", "expansion", "spacing", "rule",
+                                    "closed", "cap", "join", "miter_limit", "dash_phase",
+                                    "visible", "highlighted", "keep_aspect", "border",
+                                    "background", "mode", "antialias", "highlight",
+                                    "reflect", "shear", "matrix", "factors", "fixed",
+                                    "point", "direction", "reference", "radians", "y",
+                                    "version", "canvas", "segments", "viewports"]),
                                    children, max_size=5)),
     max_leaves=20,
 )

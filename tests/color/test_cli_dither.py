@@ -66,9 +66,11 @@ def test_written_image_is_the_dithered_image(tmp_path, picture, options, expecte
     (lambda d, src: [src, d / "no" / "o.png"], "does not exist"),
     (lambda d, src: [d, d / "o.png"], "is not a readable image"),   # a folder
     (lambda d, src: [src, d / "o.png", "--scale", "100000"], "smaller --scale"),
+    (lambda d, src: [src, d / "folder.png"], "is a folder"),
 ])
 def test_bad_input(tmp_path, picture, make_args, words):
     (tmp_path / "bad.png").write_bytes(b"not an image")
+    (tmp_path / "folder.png").mkdir()
     before = set(tmp_path.rglob("*"))
     code, stdout, stderr = call("dither", *make_args(tmp_path, picture[0]))
     assert code == 2

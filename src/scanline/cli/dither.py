@@ -5,6 +5,8 @@ IN is any image Pillow reads; OUT's extension (.png, .gif, .bmp) picks the forma
 is written atomically.
 """
 
+import os
+
 from ..errors import ArgumentValueError
 
 METHODS = ("floyd-steinberg", "bayer2", "bayer4", "bayer8", "none")
@@ -78,6 +80,8 @@ def run(args):
 
     if args.palette is not None and (args.levels is not None or args.color):
         raise ArgumentValueError("give --levels (and --color) or --palette, not both")
+    if os.path.isdir(args.output):
+        raise ArgumentValueError(f"OUT {args.output!r} is a folder; give a file name")
     try:
         with Image.open(args.input) as image:
             image.load()

@@ -139,6 +139,20 @@ def test_clips_intersect():
     assert (ctx._device.fb.to_array() == fb_before).all()
 
 
+@pytest.mark.parametrize("factor", [0.0, 1e-300])
+def test_clip_under_a_vanishing_ctm_is_empty(factor):
+    """A window the CTM maps to no device area shows nothing; drawing is not an error
+    (a filled circle raised "window must be a convex polygon for Sutherland-Hodgman")."""
+    fb = frame()
+    ctx = sl.Context(fb)
+    ctx.scale(factor)
+    ctx.clip((0, 0, 10, 10))
+    assert ctx.clip_region == (0.0, 0.0, -1.0, -1.0)
+    ctx.circle(0, 0, 3, fill=True)
+    ctx.line(0, 0, 5, 5)
+    assert not pixels(fb).any()
+
+
 def test_rotated_clip_is_the_turned_window():
     """Under a rotated CTM the clip window is a turned square: filling everything
     fills exactly that square (the scan-line fill of the same polygon)."""

@@ -20,6 +20,10 @@ from .clip.window import rectangle
 from .errors import ArgumentValueError
 from .framebuffer import FrameBuffer
 
+#: A clip window that the CTM maps to less device area than this (square pixels) is
+#: an empty clip region: it holds no pixel center.
+MIN_CLIP_AREA = 1e-9
+
 
 class _State:
     """The current state; attribute values (LineStyle, FillStyle, colors, the clip
@@ -240,6 +244,12 @@ class Context:
             raise ArgumentValueError(
                 f"window={window!r} maps to device coordinates beyond +-{v.COORD_LIMIT} "
                 "under the current transformation; use a smaller window")
+        x, y = corners[:, 0], corners[:, 1]
+        if not abs(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))) > 2 * MIN_CLIP_AREA:
+            # a singular or vanishing CTM: the window covers no device area, so nothing
+            # is visible (not a "non-convex window" error from the clippers later)
+            self._state.clip = (0.0, 0.0, -1.0, -1.0)
+            return
         if np.linalg.det(self._state.ctm[:2, :2]) < 0:
             corners = corners[::-1]  # keep the polygon counterclockwise
         old = self._state.clip

@@ -344,6 +344,29 @@ def test_save_into_missing_folder_raises(tmp_path):
     assert os.listdir(tmp_path) == []
 
 
+def test_save_onto_a_folder_names_the_folder(tmp_path):
+    (tmp_path / "out.png").mkdir()
+    with pytest.raises(ValueError) as e:
+        FrameBuffer(3, 2).save(tmp_path / "out.png")
+    assert_package_error(e, "is a folder")
+    assert ".tmp" not in str(e.value)
+    assert os.listdir(tmp_path) == ["out.png"] and os.listdir(tmp_path / "out.png") == []
+
+
+def test_save_refuses_a_scale_past_pillows_limit(tmp_path, monkeypatch):
+    from PIL import Image
+
+    monkeypatch.setattr(Image, "MAX_IMAGE_PIXELS", 800)   # the limit is twice this: 1600 pixels
+    fb = FrameBuffer(5, 4)                                  # scale 8: 40 x 32 = 1280 pixels
+    with pytest.raises(ValueError) as e:                    # scale 9: 45 x 36 = 1620 pixels
+        fb.save(tmp_path / "x.png", scale=9)
+    assert_package_error(e, "scale=9")
+    assert os.listdir(tmp_path) == []
+    fb.save(tmp_path / "ok.png", scale=8)
+    with Image.open(tmp_path / "ok.png") as image:
+        assert image.size == (40, 32)
+
+
 @pytest.mark.parametrize("existing", [False, True])
 def test_save_is_atomic_when_the_encoder_fails(tmp_path, monkeypatch, existing):
     path = tmp_path / "out.png"

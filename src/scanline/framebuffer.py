@@ -60,6 +60,8 @@ def write_atomically(path, write):
     directory = os.path.dirname(os.path.abspath(path))
     if not os.path.isdir(directory):
         raise ArgumentValueError(f"path={path!r}: the folder {directory!r} does not exist")
+    if os.path.isdir(path):
+        raise ArgumentValueError(f"path={path!r} is a folder; give the name of a file to write")
     fd, tmp = tempfile.mkstemp(prefix=".scanline-", suffix=".tmp", dir=directory)
     try:
         with os.fdopen(fd, "wb") as f:
@@ -409,6 +411,12 @@ class FrameBuffer:
 
     def _scaled_image(self, scale):
         scale = v.positive_int("scale", scale)
+        limit = 2 * Image.MAX_IMAGE_PIXELS  # past this Pillow refuses to open the file
+        if self._width * self._height * scale * scale > limit:
+            raise ArgumentValueError(
+                f"scale={scale} would enlarge the {self._width} x {self._height} frame buffer "
+                f"to {self._width * scale} x {self._height * scale} pixels, more than "
+                f"{limit:,}; use a smaller scale")
         image = self.to_pil()
         if scale > 1:
             image = image.resize((self._width * scale, self._height * scale), Image.Resampling.NEAREST)

@@ -2,7 +2,7 @@
 
 import numpy as np
 
-shapely = __import__("pytest").importorskip("shapely")
+import shapely
 
 
 def star_polygon(rng, n, center=(0.0, 0.0), r=(2.0, 10.0), integer=False):

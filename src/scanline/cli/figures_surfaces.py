@@ -37,7 +37,8 @@ def figure_teapot():
     p = _to_device(xy, lo, hi, size)
     fb = sl.FrameBuffer(size, int((hi - lo)[1] / (hi - lo).max() * (size - 16)) + 16, background=PAPER)
     a, b, c = p[tris[:, 0]], p[tris[:, 1]], p[tris[:, 2]]
-    facing = np.cross(b - a, c - a) > 0          # counterclockwise on screen: front face
+    u, w = b - a, c - a
+    facing = u[:, 0] * w[:, 1] - u[:, 1] * w[:, 0] > 0   # counterclockwise on screen: front face
     for front, color in ((False, LIGHT), (True, PIXEL)):
         t = tris[facing == front]
         edges = np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]])

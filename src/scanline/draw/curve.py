@@ -41,7 +41,7 @@ def _is_closed(curve, points, closed):
     if getattr(curve, "closed", False):
         return True
     extent = float(np.abs(points).max()) if len(points) else 0.0
-    return bool(np.linalg.norm(points[-1] - points[0]) <= 1e-9 * (1.0 + extent))
+    return bool(np.abs(points[-1] - points[0]).max() <= 1e-9 * (1.0 + extent))
 
 
 def _ring(points):

@@ -343,7 +343,7 @@ def test_text_clipping_modes(mode, expected):
 
 
 def test_vector_device_keeps_what_the_raster_rounds():
-    """Erratum E1 (E37 repeated it): the random-scan display follows the line path (its commands keep
+    """Erratum E1: the random-scan display follows the line path (its commands keep
     the exact end points), the raster display plots the nearest pixel centers."""
     df = DisplayFile()
     df.set_viewing(window=(0, 0, 10, 10))

@@ -29,7 +29,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import Report  # noqa: E402
+from common import Report, image_coords  # noqa: E402
 
 import scanline as sl  # noqa: E402
 
@@ -55,12 +55,6 @@ def polygon_workload(n, seed=11, k=6, radius=20.0):
     return centers + np.stack([radii * np.cos(angles), radii * np.sin(angles)], axis=2)
 
 
-def image_coords(points):
-    """Device (y up, centers at integers) -> image (y down, centers at +0.5)."""
-    out = np.array(points, np.float64)
-    out[..., 0] += 0.5
-    out[..., 1] = SIZE - 0.5 - out[..., 1]
-    return out
 
 
 def scanline_lines(segs, colors):
@@ -73,7 +67,7 @@ def scanline_lines(segs, colors):
 def cairo_lines(segs, colors):
     import cairo
 
-    pts = image_coords(segs.reshape(-1, 2, 2)).reshape(-1, 4).tolist()
+    pts = image_coords(segs.reshape(-1, 2, 2), SIZE).reshape(-1, 4).tolist()
     rgb = None if colors is None else (np.asarray(colors) / 255.0).tolist()
 
     def run():
@@ -99,7 +93,7 @@ def cairo_lines(segs, colors):
 def skia_lines(segs, colors):
     import skia
 
-    pts = image_coords(segs.reshape(-1, 2, 2)).reshape(-1, 4).tolist()
+    pts = image_coords(segs.reshape(-1, 2, 2), SIZE).reshape(-1, 4).tolist()
     paints = None
     if colors is not None:
         paints = [skia.Paint(AntiAlias=True, StrokeWidth=1.0, Color=skia.Color(*c))
@@ -123,7 +117,7 @@ def skia_lines(segs, colors):
 def pillow_lines(segs, colors):
     from PIL import Image, ImageDraw
 
-    pts = image_coords(segs.reshape(-1, 2, 2)).reshape(-1, 4) - 0.5
+    pts = image_coords(segs.reshape(-1, 2, 2), SIZE).reshape(-1, 4) - 0.5
     pts = [tuple(p) for p in pts.tolist()]
     fills = [(255, 255, 255)] * len(pts) if colors is None else [tuple(c) for c in np.asarray(colors).tolist()]
 
@@ -145,7 +139,7 @@ def scanline_polygons(polys):
 def cairo_polygons(polys):
     import cairo
 
-    rings = [r.tolist() for r in image_coords(polys)]
+    rings = [r.tolist() for r in image_coords(polys, SIZE)]
 
     def run():
         surface = cairo.ImageSurface(cairo.FORMAT_RGB24, SIZE, SIZE)
@@ -165,7 +159,7 @@ def cairo_polygons(polys):
 def pillow_polygons(polys):
     from PIL import Image, ImageDraw
 
-    rings = [[tuple(p) for p in r] for r in (image_coords(polys) - 0.5).tolist()]
+    rings = [[tuple(p) for p in r] for r in (image_coords(polys, SIZE) - 0.5).tolist()]
 
     def run():
         img = Image.new("RGB", (SIZE, SIZE))

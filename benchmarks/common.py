@@ -20,6 +20,17 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
+def image_coords(points, height):
+    """Device coordinates (y up, pixel centers at integers) of ``points`` (..., 2) as
+    Cairo/Pillow image coordinates (y down, pixel centers at +0.5)."""
+    import numpy as np
+
+    out = np.array(points, np.float64)
+    out[..., 0] += 0.5
+    out[..., 1] = height - 0.5 - out[..., 1]
+    return out
+
+
 def timed(fn, repeats=3):
     """``(first_s, best_s)``: the time of a first call and the best of ``repeats``
     further calls of ``fn()``."""

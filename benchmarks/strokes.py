@@ -28,7 +28,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import Report  # noqa: E402
+from common import Report, image_coords  # noqa: E402
 
 import scanline as sl  # noqa: E402
 
@@ -54,11 +54,6 @@ def workload(n, seed=5):
     return out
 
 
-def image_coords(points):
-    out = np.array(points, np.float64)
-    out[..., 0] += 0.5
-    out[..., 1] = SIZE - 0.5 - out[..., 1]
-    return out
 
 
 def split(verts, counts):
@@ -77,7 +72,7 @@ def scanline_run(data, antialias):
 def cairo_run(data, antialias):
     import cairo
 
-    jobs = [(w, [p.tolist() for p in split(image_coords(v), c)]) for w, (v, c) in data.items()]
+    jobs = [(w, [p.tolist() for p in split(image_coords(v, SIZE), c)]) for w, (v, c) in data.items()]
 
     def run():
         surface = cairo.ImageSurface(cairo.FORMAT_RGB24, SIZE, SIZE)
@@ -107,7 +102,7 @@ def skia_run(data, antialias):
                            Style=skia.Paint.kStroke_Style, StrokeCap=skia.Paint.kRound_Cap,
                            StrokeJoin=skia.Paint.kRound_Join)
         paths = []
-        for pts in split(image_coords(v), c):
+        for pts in split(image_coords(v, SIZE), c):
             path = skia.Path()
             path.addPoly([skia.Point(x, y) for x, y in pts.tolist()], False)
             paths.append(path)
@@ -127,7 +122,7 @@ def skia_run(data, antialias):
 def pillow_run(data):
     from PIL import Image, ImageDraw
 
-    jobs = [(w, [[tuple(q) for q in p.tolist()] for p in split(image_coords(v) - 0.5, c)])
+    jobs = [(w, [[tuple(q) for q in p.tolist()] for p in split(image_coords(v, SIZE) - 0.5, c)])
             for w, (v, c) in data.items()]
 
     def run():

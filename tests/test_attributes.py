@@ -552,13 +552,10 @@ def test_parse_bad_text_names_style(text):
         FillStyle.parse(45)
 
 
-# -- with the real area primitives (when they exist) --------------------------------------
+# -- with the real area primitives ----------------------------------------------------------
 
 def _primitive(name):
-    function = getattr(sl.draw, name, None)
-    if function is None:
-        pytest.skip(f"sl.draw.{name} is not there yet")
-    return function
+    return getattr(sl.draw, name)
 
 
 def styled_pixels(draw_shape, style, size=(40, 30), mode="L"):

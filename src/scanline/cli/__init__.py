@@ -49,8 +49,9 @@ def build_parser():
     """The argument parser of the ``scanline`` command and its sub-commands."""
     parser = Parser(
         prog="scanline",
-        description="The classic computer-graphics pipeline: scan conversion with "
-        "step tables, drawing and a gallery of the notes' examples.",
+        description="The classic computer-graphics pipeline: step tables of the notes' "
+        "algorithms, drawing with attributes and text, scene files through the display-file "
+        "interpreter, dithering, and a gallery of the notes' examples.",
         epilog="'scanline COMMAND --help' describes each command.",
     )
     parser.add_argument("--version", action="version", version=f"scanline {__version__}")

@@ -162,7 +162,8 @@ def positive_int(text):
 def register(subparsers):
     """Add the ``draw`` command."""
     parser = subparsers.add_parser(
-        "draw", help="draw lines, circles, ellipses, polygons, fills and points into a PNG, GIF or BMP",
+        "draw", help="draw lines, polylines, circles, ellipses, polygons, fills, points "
+        "and text, with their attributes, into a PNG, GIF or BMP",
         description="Draw ITEMS into a frame buffer and save it; the extension of OUT\n"
         "(.png, .gif, .bmp) picks the format.  Options may come before or after ITEMS.",
         epilog=_epilog(), formatter_class=argparse.RawDescriptionHelpFormatter,

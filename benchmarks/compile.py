@@ -9,7 +9,8 @@ Python process with ``NUMBA_CACHE_DIR`` pointing at a new, empty folder, runs th
 case and saves the result, and records
 
 - ``seconds``: from the start of the process to the result written (interpreter
-  start, ``import scanline``, the call, the PNG);
+  start, ``import scanline``, the call, the PNG), and ``cpu_s``, the process's CPU
+  time to then (less sensitive to other load on the machine);
 - ``specializations``: the compiled specializations the case left in the cache
   (one ``.nbc`` file per specialization of a kernel), and which kernels they are;
 - ``slowest``: the kernels whose own compilation took longest (numba's compile
@@ -119,14 +120,14 @@ PY_CASES = {
                             "(70, 60), (90, 5)], order=4), color='black', width=3)", ("RGB",)),
     "curve filled aa": ("sl.draw.curve(fb, sl.curves.nurbs_circle((48, 32), 20), color='black', "
                         "fill=True, antialias=True)", ("RGB",)),
-    "dither floyd-steinberg": ("sl.color.dither(np.linspace(0, 255, 96 * 64).reshape(64, 96))",
+    "dither floyd-steinberg": ("sl.color.dither(np.linspace(0, 1, 96 * 64).reshape(64, 96))",
                                None),
-    "dither bayer": ("sl.color.dither(np.linspace(0, 255, 96 * 64).reshape(64, 96), 'bayer4', "
+    "dither bayer": ("sl.color.dither(np.linspace(0, 1, 96 * 64).reshape(64, 96), 'bayer4', "
                      "levels=4)", None),
-    "dither palette": ("sl.color.dither(np.random.default_rng(0).integers(0, 256, (64, 96, 3)), "
-                       "palette=sl.color.web_safe_table())", None),
+    "dither palette": ("sl.color.dither(np.random.default_rng(0).integers(0, 256, (64, 96, 3), "
+                       "np.uint8), palette=sl.color.web_safe_table())", None),
     "median_cut_table": ("sl.color.median_cut_table(np.random.default_rng(0).integers(0, 256, "
-                         "(64, 96, 3)), 16)", None),
+                         "(64, 96, 3), np.uint8), 16)", None),
     "clip lines cohen-sutherland": ("sl.clip.lines(np.random.default_rng(1).uniform(-50, 150, "
                                     "(100, 4)), (0, 0, 100, 100), method='cohen-sutherland')", None),
     "clip lines liang-barsky": ("sl.clip.lines(np.random.default_rng(1).uniform(-50, 150, (100, 4)), "
@@ -214,7 +215,7 @@ fb = sl.FrameBuffer(96, 64, mode=mode, background="white")
 exec(code)
 fb.save(os.path.join(out, "out.png"))
 seconds = time.perf_counter() - T0
-print(json.dumps({"seconds": seconds,
+print(json.dumps({"seconds": seconds, "cpu_s": time.process_time(),
                   "slowest": sorted(_rec.done, reverse=True)[:5]}))
 """
 
@@ -305,6 +306,7 @@ def main(argv=None):
             except (ValueError, IndexError):
                 report = {}
             record["seconds"] = report.get("seconds")
+            record["cpu_s"] = report.get("cpu_s")
             record["slowest"] = report.get("slowest", [])
         else:
             record["seconds"] = record["wall_s"]
@@ -313,7 +315,8 @@ def main(argv=None):
         slow = ", ".join(f"{k} {s:.1f}s" for s, k in row.get("slowest", [])[:2])
         label = name if mode is None else f"{name} [{mode}]"
         secs = row["seconds"] if row["seconds"] is not None else row["wall_s"]
-        print(f"{label:<40} {secs:7.2f} s  {row['specializations']:3d} specializations"
+        cpu = f"{row['cpu_s']:6.2f}" if row.get("cpu_s") is not None else "      "
+        print(f"{label:<40} {secs:7.2f} s {cpu} cpu  {row['specializations']:3d} specializations"
               f"{'' if row['ok'] else '  FAILED: ' + row.get('error', '')}  {slow}", flush=True)
     if args.demo:
         rows += demo_rows()

@@ -133,3 +133,12 @@ def coordinate_array(name, value, columns, radius_columns=()):
                 f"{name} column {c} holds radii, which must be >= 0; row {row} is {a[row].tolist()}"
             )
     return np.ascontiguousarray(np.floor(a + 0.5).astype(np.int64))
+
+
+def kernel_array(a, dtype=np.float64):
+    """``a`` as the kernels take arrays: C-contiguous, writable, of ``dtype`` (a copy
+    only where one of those is missing).  numba compiles a separate specialization
+    for a read-only or non-contiguous array, so every array reaches a kernel this way
+    (the compile-time rule of :mod:`scanline._kernels`, rule 2)."""
+    a = np.ascontiguousarray(a, dtype)
+    return a if a.flags.writeable else a.copy()

@@ -480,6 +480,7 @@ class FillStyle:
         if x0 > x1 or y0 > y1:
             return
         from ._kernels.styles import paint_styled
+        from ._kernels.variants import layout
 
         w, h = x1 - x0 + 1, y1 - y0 + 1
         mask = np.zeros((h, w, 1), np.uint8)
@@ -499,7 +500,7 @@ class FillStyle:
                        for spec, (r, c) in zip(self._palette, self._where)]
         lut = np.array([fb.pixel(spec, name) for spec, name in entries])
         buf, packed = fb._raster()
-        paint_styled(buf, packed, hatch, fb.width, fb.height, mask, x0, y0, ax, ay, cells,
+        paint_styled(buf, layout(packed), hatch, fb.width, fb.height, mask, x0, y0, ax, ay, cells,
                      families, spacing, other, lut)
 
 

@@ -139,14 +139,16 @@ def test_translucent_fill_covers_the_same_pixels_as_opaque():
 
 
 def test_paint_helper_composites_a_primitive_through_a_mask():
-    from scanline._kernels.lines import draw_line
+    from scanline._kernels.lines import BRESENHAM, draw_line
+    from scanline._kernels.variants import layout, token
 
     fb = sl.FrameBuffer(6, 3, mode="RGB", background="white")
     seen = []
 
     def draw(buf, packed, width, height, ox, oy, value):
         seen.append((width, height, ox, oy, packed))
-        draw_line(buf, packed, width, height, -10 - ox, 1 - oy, 20 - ox, 1 - oy, value, 0)
+        draw_line(buf, layout(packed), width, height, -10 - ox, 1 - oy, 20 - ox, 1 - oy, value,
+                  token(BRESENHAM))
 
     _blend.paint(fb, (0, 0, 0, 255 // 2), (-10, 0, 20, 2), draw)
     assert seen == [(6, 3, 0, 0, False)]                  # the box clipped to fb

@@ -15,6 +15,7 @@ from skimage.draw import polygon as sk_polygon
 
 import scanline as sl
 from scanline._kernels import polygon as kp
+from scanline._kernels.variants import layout
 from tests.reference import HYPOTHESIS, MODES
 
 
@@ -434,7 +435,7 @@ def test_fuzz_never_writes_outside_and_matches_inside(points, rule, dup):
     # (a negative index would wrap around into it)
     verts = np.array(points, float).reshape(-1, 2)
     buf = np.zeros((h + 3, w + 3, 1), np.uint8)
-    kp.fill_polygons(buf, False, w, h, 0, 0, verts, np.array([0, len(verts)], np.int64),
+    kp.fill_polygons(buf, layout(False), w, h, 0, 0, verts, np.array([0, len(verts)], np.int64),
                      np.array([0, 1], np.int64), np.array([[1]], np.uint8),
                      kp.EVEN_ODD if rule == "even-odd" else kp.NONZERO, len(verts))
     assert not buf[h:].any() and not buf[:, w:].any()

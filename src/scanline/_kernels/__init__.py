@@ -31,8 +31,22 @@ answer in about 3 s on a 2-core machine with an empty numba cache
    itself).
 4. **Small kernels.**  No kernel specialization takes more than about 1 s to
    compile (``benchmarks/compile.py`` lists the slowest); split a larger one into
-   helpers.
+   helpers, and merge a layer that only forwards its arguments (each compiled
+   function costs about 0.1-0.3 s whatever its size).
 5. **Tables run as Python.**  Step tables (:mod:`scanline.trace`) run the very same
    step helpers uncompiled (:func:`scanline._kernels._jit.python`), so a 20-row
    table never waits for LLVM and still comes from the algorithm that draws.
+6. **No accidental literals.**  numba types an integer or boolean constant passed
+   to a helper as a literal and compiles the helper for it, and a loop-carried
+   variable that starts at a constant is typed first as that literal: the helper is
+   then compiled twice.  Start such values typed (``np.int64(0)``,
+   ``np.bool_(False)``) and pass variables; a literal argument is kept only where
+   the two specializations are the point (``swap``, ``reverse``, ``weighted``:
+   the loop of each is its own), and the test checks that no kernel has a literal
+   and a non-literal specialization of the same argument.
+7. **Costly constructs.**  An array-to-array slice or row assignment (``a[:n] =
+   b[:n]``, ``out[i] = rows[j]``) compiles numba's shape-mismatch error message,
+   2.5-4 s on the first call of a process: copy element by element.  numba's sorts
+   (``np.sort``, ``np.argsort``) cost about 1.5 s: use them only where an
+   O(n log n) order is needed.
 """

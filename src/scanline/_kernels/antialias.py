@@ -27,10 +27,10 @@ column span of the local slope.  The total intensity is the ellipse's perimeter 
 to the midpoint rule's error.
 
 Each pixel is composited with :func:`scanline._kernels.blend.over` (effective
-alpha = intensity x the color's alpha), inlined with the frame-buffer mode as a
-constant (the kernels branch on the mode once, outside the loops); in modes "RGB"
-and "L" the lines take the same arithmetic in two passes per line
-(:func:`fixed_point_columns`).  Loops run over
+alpha = intensity x the color's alpha); the frame-buffer mode is a token
+(:mod:`scanline._kernels.variants`), so a kernel is compiled for the modes it is
+called with only.  In modes "RGB" and "L" the lines take the same arithmetic in two
+passes per line (:func:`fixed_point_columns`).  Loops run over
 the columns (rows) inside the raster only and clamp the rows of each column span
 to it: nothing is written outside ``buf`` whatever the coordinates.
 
@@ -45,7 +45,8 @@ import math
 import numpy as np
 
 from ._jit import helper, inline, kernel
-from .blend import BIT, GRAY, RGB, RGBA, fixed, mix, over
+from .blend import fixed, mix, over
+from .variants import GRAY, RGB
 
 #: Scan lines per band of :func:`band_lists` (256).  Measured on 100 000 random
 #: lines of up to 64 pixels in 2048 x 2048 RGB: 32-line bands listed each line in
@@ -72,12 +73,14 @@ def column(buf, mode, table, swap, u, wc, half, weight, src, wlo, whi):
             over(buf, mode, table, u, j, src, cover)
 
 
-@inline
+@helper
 def wu_line(buf, mode, table, width, x0, y0, x1, y1, src, alpha, ylo, yhi, rows, weights):
     """Composite the pixels of rows ylo..yhi of the antialiased line (x0, y0)-(x1,
     y1) (real coordinates) in a raster ``width`` pixels wide, with the channels
-    ``src`` (integers) at opacity ``alpha``; ``rows`` and ``weights`` are scratch
-    for :func:`fixed_point_columns`."""
+    ``src`` (integers in modes "RGB" and "L", else a source row of
+    :mod:`scanline._kernels.blend`) at opacity ``alpha``; ``rows`` and ``weights``
+    are scratch for :func:`fixed_point_columns`.  (A compiled helper: its test of
+    the mode token folds here.)"""
     swap = abs(y1 - y0) > abs(x1 - x0)
     if swap:   # u: the major axis, w: the minor one; [ulo, uhi] x [wlo, whi] pixels
         u0, w0, u1, w1 = y0, x0, y1, x1
@@ -108,7 +111,7 @@ def wu_line(buf, mode, table, width, x0, y0, x1, y1, src, alpha, ylo, yhi, rows,
         return
     i0 = max(math.floor(ua + 0.5), ulo)
     i1 = min(math.ceil(ub + 0.5) - 1, uhi)
-    if mode == RGB or mode == GRAY:
+    if len(mode) == RGB or len(mode) == GRAY:
         if swap:
             fixed_point_columns(buf, mode, True, i0, i1, ua, ub, u0, w0, m, half, src, alpha,
                                 wlo, whi, rows, weights)
@@ -136,7 +139,7 @@ def columns(buf, mode, table, swap, i0, i1, ua, ub, u0, w0, m, half, src, alpha,
 def fixed_point_columns(buf, mode, swap, i0, i1, ua, ub, u0, w0, m, half, src, alpha, wlo,
                         whi, rows, weights):
     """:func:`columns` for the modes whose composite is a fixed-point weight per
-    channel ("RGB", "L"; ``mode`` a constant), in two passes: the first computes,
+    channel ("RGB", "L"), in two passes: the first computes,
     for every column, its first row and the weights (:func:`scanline._kernels.blend.fixed`)
     of the three pixels a column span can touch (0 past its last one) with no
     data-dependent branch, so that LLVM vectorizes it; the second blends the
@@ -175,7 +178,7 @@ def fixed_point_columns(buf, mode, swap, i0, i1, ua, ub, u0, w0, m, half, src, a
         for t in range(3):
             f = weights[t, k]
             if f != 0:
-                for c in range(3 if mode == RGB else 1):
+                for c in range(3 if len(mode) == RGB else 1):
                     q = p + np.uint64(c)
                     flat[q] = mix(flat[q], src[c], f)
             p += step
@@ -203,7 +206,9 @@ def band_lists(segments, height):
     for b in range(bands):
         starts[b + 1] += starts[b]
     items = np.empty(starts[bands], np.int64)
-    fill = starts[:bands].copy()
+    fill = np.empty(bands, np.int64)
+    for b in range(bands):
+        fill[b] = starts[b]
     for i in range(n):
         for b in range(first[i], last[i] + 1):
             items[fill[b]] = i
@@ -211,8 +216,17 @@ def band_lists(segments, height):
     return starts, items
 
 
-@inline
-def lines_loop(buf, mode, table, width, height, segments, srcs, starts, items):
+@kernel
+def draw_lines(buf, mode, width, height, table, segments, srcs):
+    """Composite antialiased lines, rows (x0, y0, x1, y1) of ``segments``, with
+    the source rows ``srcs`` (one, or one per segment), in order (``mode`` a mode
+    token).
+
+    The raster is drawn band by band of scan lines (:func:`band_lists`), each band
+    compositing its part of every segment that meets it, in the segments' order:
+    every pixel sees the same composites in the same order as segment after
+    segment would give it, while the rows being blended stay in the cache."""
+    starts, items = band_lists(segments, height)
     one = srcs.shape[0] == 1
     channels = np.empty((srcs.shape[0], 3), np.int64)   # hoisted float -> int
     for k in range(srcs.shape[0]):
@@ -226,30 +240,11 @@ def lines_loop(buf, mode, table, width, height, segments, srcs, starts, items):
         for t in range(starts[b], starts[b + 1]):
             n = items[t]
             k = 0 if one else n
+            # fixed-point modes take the channels as integers, the others "over"'s
+            # float source row (one type per mode: one specialization of "over")
+            src = channels[k] if len(mode) == RGB or len(mode) == GRAY else srcs[k]
             wu_line(buf, mode, table, width, segments[n, 0], segments[n, 1], segments[n, 2],
-                    segments[n, 3], channels[k], srcs[k, 3], ylo, yhi, rows, weights)
-
-
-@kernel
-def draw_lines(buf, mode, width, height, table, segments, srcs):
-    """Composite antialiased lines, rows (x0, y0, x1, y1) of ``segments``, with
-    the source rows ``srcs`` (one, or one per segment), in order.
-
-    The raster is drawn band by band of scan lines (:func:`band_lists`), each band
-    compositing its part of every segment that meets it, in the segments' order:
-    every pixel sees the same composites in the same order as segment after
-    segment would give it, while the rows being blended stay in the cache."""
-    starts, items = band_lists(segments, height)
-    if mode == RGB:
-        lines_loop(buf, RGB, table, width, height, segments, srcs, starts, items)
-    elif mode == GRAY:
-        lines_loop(buf, GRAY, table, width, height, segments, srcs, starts, items)
-    elif mode == RGBA:
-        lines_loop(buf, RGBA, table, width, height, segments, srcs, starts, items)
-    elif mode == BIT:
-        lines_loop(buf, BIT, table, width, height, segments, srcs, starts, items)
-    else:
-        lines_loop(buf, mode, table, width, height, segments, srcs, starts, items)
+                    segments[n, 3], src, srcs[k, 3], ylo, yhi, rows, weights)
 
 
 @inline
@@ -281,8 +276,11 @@ def conic_arcs(buf, mode, table, width, height, swap, uc, wc, ru, rw, src):
             column(buf, mode, table, swap, i, wc - off, half, weight, src, 0, wmax - 1)
 
 
-@inline
-def ellipses_loop(buf, mode, table, width, height, ellipses, srcs):
+@kernel
+def draw_ellipses(buf, mode, width, height, table, ellipses, srcs):
+    """Composite antialiased ellipse outlines, rows (xc, yc, rx, ry) of
+    ``ellipses`` (rx = ry: a circle), with ``srcs``, in order (``mode`` a mode
+    token)."""
     one = srcs.shape[0] == 1
     for n in range(ellipses.shape[0]):
         xc, yc, rx, ry = ellipses[n, 0], ellipses[n, 1], ellipses[n, 2], ellipses[n, 3]
@@ -291,19 +289,3 @@ def ellipses_loop(buf, mode, table, width, height, ellipses, srcs):
             conic_arcs(buf, mode, table, width, height, False, xc, yc, rx, ry, src)
         if ry > 0.0:
             conic_arcs(buf, mode, table, width, height, True, yc, xc, ry, rx, src)
-
-
-@kernel
-def draw_ellipses(buf, mode, width, height, table, ellipses, srcs):
-    """Composite antialiased ellipse outlines, rows (xc, yc, rx, ry) of
-    ``ellipses`` (rx = ry: a circle), with ``srcs``, in order."""
-    if mode == RGB:
-        ellipses_loop(buf, RGB, table, width, height, ellipses, srcs)
-    elif mode == GRAY:
-        ellipses_loop(buf, GRAY, table, width, height, ellipses, srcs)
-    elif mode == RGBA:
-        ellipses_loop(buf, RGBA, table, width, height, ellipses, srcs)
-    elif mode == BIT:
-        ellipses_loop(buf, BIT, table, width, height, ellipses, srcs)
-    else:
-        ellipses_loop(buf, mode, table, width, height, ellipses, srcs)

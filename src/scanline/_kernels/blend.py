@@ -1,6 +1,10 @@
 """Alpha compositing: the "over" operator of Porter & Duff (1984) in every
 frame-buffer mode.
 
+The frame-buffer mode reaches these functions as a mode token
+(:data:`scanline._kernels.variants.MODE`), so a kernel compiles the arithmetic of
+the modes it is called with only.
+
 A *source* is one color as a float64 row ``(c0, c1, c2, alpha)`` (rows of an
 (N, 4) array ``srcs``, one per primitive or a single one) prepared by
 ``scanline.draw._blend.sources``: the channels in the frame buffer's terms (RGB for
@@ -32,13 +36,7 @@ import numpy as np
 
 from ._jit import helper, inline, kernel
 from .raster import put_bit
-
-#: Mode codes (``scanline.draw._blend.MODES`` maps the mode names to them).
-BIT = 0
-GRAY = 1
-RGB = 2
-RGBA = 3
-INDEXED = 4
+from .variants import BIT, GRAY, INDEXED, RGB, RGBA
 
 
 @helper
@@ -79,16 +77,15 @@ def mix(d, s, f):
     return np.uint8(d + (((np.int64(s) - d) * f + 32768) >> 16))
 
 
-@inline
+@helper
 def over(buf, mode, table, x, y, src, a):
     """Composite the source row ``src`` with effective alpha ``a`` over pixel
-    (x, y) of ``buf``.
+    (x, y) of ``buf`` (``mode`` a mode token).
 
     The caller has proved (x, y) inside; ``a`` is clamped to [0, 1] here, and
-    ``a <= 0`` (or NaN) changes nothing.  Callers inline this with a *constant*
-    ``mode`` so that the mode tests fold away: measured, a run-time mode made the
-    antialiased line kernel three to four times slower.  ``mode`` may also be a
-    run-time value (mode "P", whose nearest-entry search dominates anyway)."""
+    ``a <= 0`` (or NaN) changes nothing.  A compiled helper, not inlined into the
+    caller's IR: the mode tests fold only here (:mod:`scanline._kernels.variants`),
+    and what is left of one mode is small enough for LLVM to inline."""
     if not a > 0.0:
         return
     if a > 1.0:
@@ -97,11 +94,11 @@ def over(buf, mode, table, x, y, src, a):
     # "1"): measured, straight-line stores made the antialiased line kernel four to
     # five times slower in those modes (LLVM apparently transforms the caller's
     # short column loop differently).
-    if mode == RGB or mode == GRAY:
+    if len(mode) == RGB or len(mode) == GRAY:
         f = fixed(a)
-        for c in range(3 if mode == RGB else 1):
+        for c in range(3 if len(mode) == RGB else 1):
             buf[y, x, c] = mix(buf[y, x, c], src[c], f)
-    elif mode == RGBA:
+    elif len(mode) == RGBA:
         da = buf[y, x, 3] / 255.0
         keep = da * (1.0 - a)
         oa = a + keep
@@ -110,7 +107,7 @@ def over(buf, mode, table, x, y, src, a):
                 buf[y, x, c] = level((src[c] * a + buf[y, x, c] * keep) / oa)
             else:
                 buf[y, x, c] = level(oa * 255.0)
-    elif mode == INDEXED:
+    elif len(mode) == INDEXED:
         i = buf[y, x, 0]
         r = table[i, 0] + (src[0] - table[i, 0]) * a
         g = table[i, 1] + (src[1] - table[i, 1]) * a
@@ -121,28 +118,12 @@ def over(buf, mode, table, x, y, src, a):
             put_bit(buf, x, y, src[0] != 0.0)
 
 
-@inline
-def row_loop(buf, mode, table, y, x0, cover, n, src):
+@helper
+def composite_row(buf, mode, table, y, x0, cover, n, src):
     """Composite ``src`` over pixels x0 .. x0 + n - 1 of row y with alphas
     ``cover[0:n]`` (already multiplied by the source's alpha)."""
     for i in range(n):
         over(buf, mode, table, x0 + i, y, src, cover[i])
-
-
-@helper
-def composite_row(buf, mode, table, y, x0, cover, n, src):
-    """:func:`row_loop` with the mode made a constant (one copy per mode but "P",
-    whose nearest-entry search dominates anyway)."""
-    if mode == RGB:
-        row_loop(buf, RGB, table, y, x0, cover, n, src)
-    elif mode == GRAY:
-        row_loop(buf, GRAY, table, y, x0, cover, n, src)
-    elif mode == RGBA:
-        row_loop(buf, RGBA, table, y, x0, cover, n, src)
-    elif mode == BIT:
-        row_loop(buf, BIT, table, y, x0, cover, n, src)
-    else:
-        row_loop(buf, mode, table, y, x0, cover, n, src)
 
 
 @kernel

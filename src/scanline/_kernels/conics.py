@@ -9,8 +9,11 @@ blending writes.
 
 import math
 
+import numpy as np
+
 from ._jit import helper, inline, kernel
 from .raster import band_sorted, put, store
+from .variants import BYTES
 
 #: Ellipse region labels in traces; TIP is the run along y = 0 that completes flat
 #: ellipses (see ``ellipse_tip``).
@@ -116,14 +119,14 @@ def next_run(xc, yc, width, height, x):
 
 
 @helper
-def circle_run(buf, packed, width, height, xc, yc, x, y, p, end, color):
+def circle_run(buf, layout, width, height, xc, yc, x, y, p, end, color):
     """The notes' loop over octant columns x .. end (or to the diagonal), each
     point plotted eight ways.  Returns the state (x, y, p) after it."""
     while x <= end and x <= y:
         for k in range(8):  # one call site of put keeps the loop fast
             a, b, new = mirror8(k, x, y)
             if new:
-                put(buf, packed, width, height, xc + a, yc + b, color)
+                put(buf, layout, width, height, xc + a, yc + b, color)
         x, y, p = circle_step(x, y, p)
     return x, y, p
 
@@ -143,9 +146,9 @@ def circle_inside(buf, width, xc, yc, r, color):
         x, y, p = circle_step(x, y, p)
 
 
-@helper
-def midpoint_circle(buf, packed, width, height, xc, yc, r, color):
-    """Draw the circle of radius r >= 0 about (xc, yc).
+@kernel
+def draw_circle(buf, layout, width, height, xc, yc, r, color):
+    """Draw the midpoint circle of radius r >= 0 about (xc, yc).
 
     Only the columns x of the octant for which one of the eight mirrored pixels can
     lie in the frame buffer are visited (at most 2(width + height) of them); the loop
@@ -154,10 +157,10 @@ def midpoint_circle(buf, packed, width, height, xc, yc, r, color):
     """
     if xc + r < 0 or xc - r > width - 1 or yc + r < 0 or yc - r > height - 1:
         return
-    if not packed and xc - r >= 0 and xc + r < width and yc - r >= 0 and yc + r < height:
+    if len(layout) == BYTES and xc - r >= 0 and xc + r < width and yc - r >= 0 and yc + r < height:
         circle_inside(buf, width, xc, yc, r, color)
         return
-    x = 0
+    x = np.int64(0)   # (not a literal 0: next_run would be compiled for it too)
     y = r
     p = 1 - r
     while x <= y:
@@ -169,39 +172,19 @@ def midpoint_circle(buf, packed, width, height, xc, yc, r, color):
                 return
             x = start
             y, p = circle_state(x, r)
-        x, y, p = circle_run(buf, packed, width, height, xc, yc, x, y, p, end, color)
+        x, y, p = circle_run(buf, layout, width, height, xc, yc, x, y, p, end, color)
 
 
 @kernel
-def draw_circle(buf, packed, width, height, xc, yc, r, color):
-    """Draw one midpoint circle."""
-    if packed:
-        midpoint_circle(buf, True, width, height, xc, yc, r, color)
-    else:
-        midpoint_circle(buf, False, width, height, xc, yc, r, color)
-
-
-@helper
-def circles_loop(buf, packed, width, height, circles, colors):
-    if colors.shape[0] == 1:  # one color: any order gives the same image
-        color = colors[0]
-        circles = band_sorted(circles, 1, height)
-        for i in range(circles.shape[0]):
-            midpoint_circle(buf, packed, width, height, circles[i, 0], circles[i, 1], circles[i, 2], color)
-    else:
-        for i in range(circles.shape[0]):
-            midpoint_circle(buf, packed, width, height, circles[i, 0], circles[i, 1], circles[i, 2],
-                            colors[i])
-
-
-@kernel
-def draw_circles(buf, packed, width, height, circles, colors):
+def draw_circles(buf, layout, width, height, circles, colors):
     """Draw N circles, ``circles[i] = (xc, yc, r)``, with ``colors[i]`` (or
     ``colors[0]`` for all)."""
-    if packed:
-        circles_loop(buf, True, width, height, circles, colors)
-    else:
-        circles_loop(buf, False, width, height, circles, colors)
+    one = colors.shape[0] == 1
+    if one:  # one color: any order gives the same image
+        circles = band_sorted(circles, height)
+    for i in range(circles.shape[0]):
+        draw_circle(buf, layout, width, height, circles[i, 0], circles[i, 1], circles[i, 2],
+                    colors[0 if one else i])
 
 
 @kernel
@@ -231,10 +214,12 @@ def circle_trace(r, out):
 @inline
 def ellipse_region1_start(rx, ry):
     """(x, y, P, px, py) at (0, r_y): P = 4 p1_0 = 4 r_y^2 - 4 r_x^2 r_y + r_x^2,
-    px = 2 r_y^2 x, py = 2 r_x^2 y."""
+    px = 2 r_y^2 x, py = 2 r_x^2 y (int64 values, not literals, so that the helpers
+    they reach are compiled once)."""
     rx2 = rx * rx
     ry2 = ry * ry
-    return 0, ry, 4 * ry2 - 4 * rx2 * ry + rx2, 0, 2 * rx2 * ry
+    zero = np.int64(0)
+    return zero, ry, 4 * ry2 - 4 * rx2 * ry + rx2, zero, 2 * rx2 * ry
 
 
 @inline
@@ -306,12 +291,12 @@ def ellipse_next(region, x, y, p, px, py, rx, rx2, ry2):
 @helper
 def ellipse_inside(buf, width, xc, yc, rx, ry, color):
     """The midpoint ellipse wholly inside unpacked storage: each of the four images
-    is written with no bounds checks.  This loop repeats ``midpoint_ellipse``'s with
+    is written with no bounds checks.  This loop repeats ``draw_ellipse``'s with
     ``store`` for ``put``: one loop with a run-time choice ran twice as slow."""
     rx2 = rx * rx
     ry2 = ry * ry
     x, y, p, px, py = ellipse_region1_start(rx, ry)
-    region = REGION_1
+    region = np.int64(REGION_1)
     while region != 0:
         for k in range(4):
             a, b, new = mirror4(k, x, y)
@@ -320,58 +305,37 @@ def ellipse_inside(buf, width, xc, yc, rx, ry, color):
         region, x, y, _, p, px, py = ellipse_next(region, x, y, p, px, py, rx, rx2, ry2)
 
 
-@helper
-def midpoint_ellipse(buf, packed, width, height, xc, yc, rx, ry, color):
-    """Draw the axis-aligned ellipse with semi-axes rx, ry >= 0 about (xc, yc)
+@kernel
+def draw_ellipse(buf, layout, width, height, xc, yc, rx, ry, color):
+    """Draw the axis-aligned midpoint ellipse with semi-axes rx, ry >= 0 about (xc, yc)
     (for r_y = 0 the segment from xc - rx to xc + rx)."""
     if xc + rx < 0 or xc - rx > width - 1 or yc + ry < 0 or yc - ry > height - 1:
         return
-    if not packed and xc - rx >= 0 and xc + rx < width and yc - ry >= 0 and yc + ry < height:
+    if len(layout) == BYTES and xc - rx >= 0 and xc + rx < width and yc - ry >= 0 and yc + ry < height:
         ellipse_inside(buf, width, xc, yc, rx, ry, color)
         return
     rx2 = rx * rx
     ry2 = ry * ry
     x, y, p, px, py = ellipse_region1_start(rx, ry)
-    region = REGION_1
+    region = np.int64(REGION_1)
     while region != 0:
         for k in range(4):
             a, b, new = mirror4(k, x, y)
             if new:
-                put(buf, packed, width, height, xc + a, yc + b, color)
+                put(buf, layout, width, height, xc + a, yc + b, color)
         region, x, y, _, p, px, py = ellipse_next(region, x, y, p, px, py, rx, rx2, ry2)
 
 
 @kernel
-def draw_ellipse(buf, packed, width, height, xc, yc, rx, ry, color):
-    """Draw one midpoint ellipse."""
-    if packed:
-        midpoint_ellipse(buf, True, width, height, xc, yc, rx, ry, color)
-    else:
-        midpoint_ellipse(buf, False, width, height, xc, yc, rx, ry, color)
-
-
-@helper
-def ellipses_loop(buf, packed, width, height, ellipses, colors):
-    if colors.shape[0] == 1:  # one color: any order gives the same image
-        color = colors[0]
-        ellipses = band_sorted(ellipses, 1, height)
-        for i in range(ellipses.shape[0]):
-            midpoint_ellipse(buf, packed, width, height, ellipses[i, 0], ellipses[i, 1],
-                             ellipses[i, 2], ellipses[i, 3], color)
-    else:
-        for i in range(ellipses.shape[0]):
-            midpoint_ellipse(buf, packed, width, height, ellipses[i, 0], ellipses[i, 1],
-                             ellipses[i, 2], ellipses[i, 3], colors[i])
-
-
-@kernel
-def draw_ellipses(buf, packed, width, height, ellipses, colors):
+def draw_ellipses(buf, layout, width, height, ellipses, colors):
     """Draw N ellipses, ``ellipses[i] = (xc, yc, rx, ry)``, with ``colors[i]`` (or
     ``colors[0]`` for all)."""
-    if packed:
-        ellipses_loop(buf, True, width, height, ellipses, colors)
-    else:
-        ellipses_loop(buf, False, width, height, ellipses, colors)
+    one = colors.shape[0] == 1
+    if one:  # one color: any order gives the same image
+        ellipses = band_sorted(ellipses, height)
+    for i in range(ellipses.shape[0]):
+        draw_ellipse(buf, layout, width, height, ellipses[i, 0], ellipses[i, 1],
+                     ellipses[i, 2], ellipses[i, 3], colors[0 if one else i])
 
 
 @kernel
@@ -382,7 +346,7 @@ def ellipse_trace(rx, ry, out):
     rx2 = rx * rx
     ry2 = ry * ry
     x, y, p, px, py = ellipse_region1_start(rx, ry)
-    region = REGION_1
+    region = np.int64(REGION_1)
     n = 0
     while True:
         region, x, y, p_k, p, px, py = ellipse_next(region, x, y, p, px, py, rx, rx2, ry2)

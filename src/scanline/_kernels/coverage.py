@@ -77,7 +77,8 @@ def flush_row(buf, mode, table, y, acc, xlo, xhi, src):
         cover = abs(run)    # negative for a trapezoid row of a clockwise contour
         acc[i] = min(cover, 1.0) * alpha if cover > 1e-9 else 0.0
     composite_row(buf, mode, table, y, xlo, acc, n, src)
-    acc[:n + 2] = 0.0
+    for i in range(n + 2):
+        acc[i] = 0.0
 
 
 @helper
@@ -254,7 +255,7 @@ def fill_shape(buf, mode, width, height, table, verts, contours, c0, c1, src, ru
         return
     cap = active.shape[0]
     nxt = 0
-    na = 0
+    na = np.int64(0)   # (a literal 0 would compile the row helpers twice)
     for y in range(ylo, yhi + 1):
         bottom = y - 0.5
         top = y + 0.5
@@ -262,7 +263,7 @@ def fill_shape(buf, mode, width, height, table, verts, contours, c0, c1, src, ru
             active[na] = nxt
             na += 1
             nxt += 1
-        keep = 0
+        keep = np.int64(0)
         for t in range(na):                      # drop edges ending below the row
             if edges[active[t], 1] > bottom:
                 active[keep] = active[t]

@@ -87,7 +87,8 @@ def circle_half_width(d, r):
 def circle_rows(r, dlo, dhi, w):
     """w[d - dlo] for dlo <= d <= dhi + 1; the octant is stepped unless it is much
     longer than the band of rows needed."""
-    w[: dhi - dlo + 2] = -1
+    for i in range(dhi - dlo + 2):
+        w[i] = -1
     if r <= 4 * (dhi - dlo + 2) + 64:
         circle_rows_stepped(r, dlo, dhi, w)
     else:
@@ -108,11 +109,12 @@ def ellipse_rows(rx, ry, dlo, dhi, a, w):
     """a[d - dlo], w[d - dlo] for dlo <= d <= dhi + 1 by the notes' midpoint
     ellipse: the first and last quadrant points of each row (y never rises, and
     drops by at most one per step, so every row 0..ry has points)."""
-    w[: dhi - dlo + 2] = -1
+    for i in range(dhi - dlo + 2):
+        w[i] = -1
     rx2 = rx * rx
     ry2 = ry * ry
     x, y, p, px, py = ellipse_region1_start(rx, ry)
-    region = REGION_1
+    region = np.int64(REGION_1)
     last = -1
     while region != 0 and y >= dlo:
         if y <= dhi + 1:
@@ -152,7 +154,7 @@ def pick(k, l0, h0, l1, h1, s0, e0, s1, e1):
 
 
 @helper
-def region_spans(buf, packed, width, height, xc, yc, y0, y1, dlo, a, w, outline, hp, combine, color):
+def region_spans(buf, layout, width, height, xc, yc, y0, y1, dlo, a, w, outline, hp, combine, color):
     """Write scan lines y0..y1: the span [-w, w] or (``outline``) the runs [a, w] and
     [-w, -a], intersected with the half-planes ``hp`` combined by ``combine``."""
     for yy in range(y0, y1 + 1):
@@ -174,11 +176,11 @@ def region_spans(buf, packed, width, height, xc, yc, y0, y1, dlo, a, w, outline,
         for k in range(4):  # one call site of span keeps the loop fast
             lo, hi = pick(k, l0, h0, l1, h1, s0, e0, s1, e1)
             if lo <= hi:
-                span(buf, packed, width, height, yy, xc + lo, xc + hi, color)
+                span(buf, layout, width, height, yy, xc + lo, xc + hi, color)
 
 
 @helper
-def curved_region(buf, packed, width, height, xc, yc, rx, ry, circle, outline, hp, combine, color, a, w):
+def curved_region(buf, layout, width, height, xc, yc, rx, ry, circle, outline, hp, combine, color, a, w):
     """Extents of one circle (``circle``: rx = ry = r) or ellipse, then its spans;
     ``a`` and ``w`` are scratch tables of at least height + 2 entries."""
     y0, y1, dlo, dhi = row_band(yc, ry, height)
@@ -190,44 +192,36 @@ def curved_region(buf, packed, width, height, xc, yc, rx, ry, circle, outline, h
             circle_runs(dlo, dhi, a, w)
     else:
         ellipse_rows(rx, ry, dlo, dhi, a, w)
-    region_spans(buf, packed, width, height, xc, yc, y0, y1, dlo, a, w, outline, hp, combine, color)
+    region_spans(buf, layout, width, height, xc, yc, y0, y1, dlo, a, w, outline, hp, combine, color)
 
 
 @kernel
-def draw_region(buf, packed, width, height, xc, yc, rx, ry, circle, outline, hp, combine, color):
+def draw_region(buf, layout, width, height, xc, yc, rx, ry, circle, outline, hp, combine, color):
     """One filled circle or ellipse (``outline`` False) or its outline, clipped by the
     half-planes ``hp`` (int64, shape (2, 4)) combined by ``combine``."""
     a = np.empty(height + 2, np.int64)
     w = np.empty(height + 2, np.int64)
-    if packed:
-        curved_region(buf, True, width, height, xc, yc, rx, ry, circle, outline, hp, combine, color, a, w)
-    else:
-        curved_region(buf, False, width, height, xc, yc, rx, ry, circle, outline, hp, combine, color, a, w)
+    curved_region(buf, layout, width, height, xc, yc, rx, ry, circle, outline, hp, combine, color, a, w)
 
 
-@helper
-def filled_loop(buf, packed, width, height, shapes, circle, colors):
+@kernel
+def fill_regions(buf, layout, width, height, shapes, circle, colors):
+    """Fill N circles (``circle``: rows (xc, yc, r)) or ellipses (rows
+    (xc, yc, rx, ry)) with ``colors[i]`` (or ``colors[0]`` for all)."""
     a = np.empty(height + 2, np.int64)
     w = np.empty(height + 2, np.int64)
     whole = np.zeros((2, 4), np.int64)
-    whole[:, 3] = 1  # 0 x + 0 y + 0 = 0, tie: every pixel
+    whole[0, 3] = 1  # 0 x + 0 y + 0 = 0, tie: every pixel
+    whole[1, 3] = 1
     last = shapes.shape[1] - 1
+    area = np.bool_(False)    # outline False, BOTH: typed values, not literals, so that
+    both = np.int64(BOTH)     # curved_region compiles once for draw_region and this
     one = colors.shape[0] == 1
     if one:  # one color: any order gives the same image
-        shapes = band_sorted(shapes, 1, height)
+        shapes = band_sorted(shapes, height)
     color = colors[0]
     for i in range(shapes.shape[0]):
         if not one:
             color = colors[i]
-        curved_region(buf, packed, width, height, shapes[i, 0], shapes[i, 1], shapes[i, 2],
-                      shapes[i, last], circle, False, whole, BOTH, color, a, w)
-
-
-@kernel
-def fill_regions(buf, packed, width, height, shapes, circle, colors):
-    """Fill N circles (``circle``: rows (xc, yc, r)) or ellipses (rows
-    (xc, yc, rx, ry)) with ``colors[i]`` (or ``colors[0]`` for all)."""
-    if packed:
-        filled_loop(buf, True, width, height, shapes, circle, colors)
-    else:
-        filled_loop(buf, False, width, height, shapes, circle, colors)
+        curved_region(buf, layout, width, height, shapes[i, 0], shapes[i, 1], shapes[i, 2],
+                      shapes[i, last], circle, area, whole, both, color, a, w)

@@ -133,7 +133,7 @@ def find_section(breaks, t, guess):
         return guess
     if t >= breaks[last]:
         return last
-    return last_at_most(breaks, 0, last, t)
+    return last_at_most(breaks, np.int64(0), last, t)
 
 
 @inline
@@ -162,7 +162,7 @@ def piecewise_horner(breaks, coefficients, u, out):
         for i in range(u.shape[0]):
             horner(coefficients, 0, (u[i] - breaks[0]) * scale, out, i)
         return
-    s = 0
+    s = np.int64(0)
     last = sections - 1
     for i in range(u.shape[0]):
         x = u[i]

@@ -229,10 +229,8 @@ def diffuse_levels(src, lut, values, serpentine, out):
     errors = np.zeros(width + 2, np.float32)
     top = np.float32(values.shape[0] - 1)
     for row in range(height):
-        if serpentine and row & 1:
-            _levels_row(src, lut, values, out, errors, row, width - 1, -1, -1, top)
-        else:
-            _levels_row(src, lut, values, out, errors, row, 0, width, 1, top)
+        start, stop, step = (width - 1, -1, -1) if serpentine and row & 1 else (0, width, 1)
+        _levels_row(src, lut, values, out, errors, row, start, stop, step, top)
 
 
 @helper
@@ -287,9 +285,6 @@ def diffuse_palette(src, palette, cells, counts, grid, low, span, serpentine, ou
     errors = np.zeros((width + 2, 3), np.float32)
     scale = grid / span
     for row in range(height):
-        if serpentine and row & 1:
-            _palette_row(src, palette, cells, counts, grid, low, scale, out, errors, row,
-                         width - 1, -1, -1)
-        else:
-            _palette_row(src, palette, cells, counts, grid, low, scale, out, errors, row,
-                         0, width, 1)
+        start, stop, step = (width - 1, -1, -1) if serpentine and row & 1 else (0, width, 1)
+        _palette_row(src, palette, cells, counts, grid, low, scale, out, errors, row,
+                     start, stop, step)

@@ -63,7 +63,9 @@ def _split(stack, top, work):
 @helper
 def _grow(out, count):
     bigger = np.empty((2 * out.shape[0] + count, out.shape[1]))
-    bigger[:count] = out[:count]
+    for i in range(count):
+        for c in range(out.shape[1]):
+            bigger[i, c] = out[i, c]
     return bigger
 
 
@@ -111,7 +113,7 @@ def _subdivide(segments, weighted, tol2, max_depth, max_points):
     dim = cols - 1 if weighted else cols
     out = np.empty((max(64, 8 * S), dim))
     firsts = np.empty(S, np.int64)
-    count = 0
+    count = np.int64(0)     # (int64, not a literal 0: the helpers compile once)
     truncated = False
     stack = np.empty((max_depth + 1, m, cols))
     depths = np.empty(max_depth + 1, np.int64)
@@ -129,7 +131,7 @@ def _subdivide(segments, weighted, tol2, max_depth, max_points):
             for c in range(cols):
                 stack[0, i, c] = segments[s, i, c]
         depths[0] = 0
-        top = 0
+        top = np.int64(0)
         while top >= 0:
             flat = _flat(stack, top, dim, tol2, proj, weighted)
             if flat or depths[top] >= max_depth or count + top >= max_points:

@@ -11,9 +11,11 @@ import math
 
 from ._jit import helper, inline, kernel
 from .raster import band_sorted, put, store
+from .variants import BYTES, PACKED
 
-BRESENHAM = 0
-DDA = 1
+#: Methods (token lengths, :mod:`scanline._kernels.variants`).
+BRESENHAM = 1
+DDA = 2
 
 #: A DDA line clipped at its start replays up to this many invisible steps, so that
 #: its pixels carry exactly the round-off of the unclipped line (and of its trace);
@@ -128,14 +130,14 @@ def bresenham_clip(u0, w0, du, dw, sw, umax, wmax):
 
 
 @helper
-def bresenham_checked(buf, packed, width, height, swap, u0, w0, sw, lo, hi, j, p,
+def bresenham_checked(buf, layout, width, height, swap, u0, w0, sw, lo, hi, j, p,
                       two_dw, two_dw_minus_two_du, color):
     """The Bresenham loop over steps lo..hi, each pixel written through ``put``."""
     for i in range(lo, hi + 1):
         if swap:
-            put(buf, packed, width, height, w0 + sw * j, u0 + i, color)
+            put(buf, layout, width, height, w0 + sw * j, u0 + i, color)
         else:
-            put(buf, packed, width, height, u0 + i, w0 + sw * j, color)
+            put(buf, layout, width, height, u0 + i, w0 + sw * j, color)
         p, advance = bresenham_decide(p, two_dw, two_dw_minus_two_du)
         j += advance
 
@@ -166,27 +168,28 @@ def bresenham_flat(buf, width, height, swap, u0, w0, sw, lo, hi, j, p, w_last,
 
 
 @helper
-def bresenham_line(buf, packed, width, height, x0, y0, x1, y1, color):
+def bresenham_line(buf, layout, width, height, x0, y0, x1, y1, color):
     """Draw the line (x0, y0)-(x1, y1), both endpoints included, with Bresenham's
     integer decision parameter, clipped exactly to the frame buffer."""
     swap, u0, w0, du, dw, sw = bresenham_setup(x0, y0, x1, y1)
-    if not packed and 0 <= min(x0, x1) and max(x0, x1) < width and 0 <= min(y0, y1) and max(y0, y1) < height:
-        # wholly inside: no clipping, no divisions
-        bresenham_flat(buf, width, height, swap, u0, w0, sw, 0, du, 0, 2 * dw - du,
-                       w0 + sw * dw, 2 * dw, 2 * dw - 2 * du, color)
-        return
-    if swap:
-        lo, hi = bresenham_clip(u0, w0, du, dw, sw, height - 1, width - 1)
+    if len(layout) == BYTES and 0 <= min(x0, x1) and max(x0, x1) < width and 0 <= min(y0, y1) and max(y0, y1) < height:
+        # wholly inside: no clipping, no divisions (the values unify with the other
+        # branch's into int64 variables: constants passed straight to the loop would
+        # compile a second specialization of it, one of Literal[int] arguments)
+        lo, hi, j, p, w_last = 0, du, 0, 2 * dw - du, w0 + sw * dw
     else:
-        lo, hi = bresenham_clip(u0, w0, du, dw, sw, width - 1, height - 1)
-    if lo > hi:
-        return
-    j, p = bresenham_state(lo, du, dw)
-    if packed:
-        bresenham_checked(buf, packed, width, height, swap, u0, w0, sw, lo, hi, j, p,
+        if swap:
+            lo, hi = bresenham_clip(u0, w0, du, dw, sw, height - 1, width - 1)
+        else:
+            lo, hi = bresenham_clip(u0, w0, du, dw, sw, width - 1, height - 1)
+        if lo > hi:
+            return
+        j, p = bresenham_state(lo, du, dw)
+        w_last = w0 + sw * bresenham_state(hi, du, dw)[0]
+    if len(layout) == PACKED:
+        bresenham_checked(buf, layout, width, height, swap, u0, w0, sw, lo, hi, j, p,
                           2 * dw, 2 * dw - 2 * du, color)
     else:
-        w_last = w0 + sw * bresenham_state(hi, du, dw)[0]
         bresenham_flat(buf, width, height, swap, u0, w0, sw, lo, hi, j, p, w_last,
                        2 * dw, 2 * dw - 2 * du, color)
 
@@ -210,7 +213,7 @@ def dda_setup(x0, y0, x1, y1):
 
 
 @helper
-def dda_line(buf, packed, width, height, x0, y0, x1, y1, color):
+def dda_line(buf, layout, width, height, x0, y0, x1, y1, color):
     """Draw the line (x0, y0)-(x1, y1) with the DDA: x and y are real numbers
     incremented by dx/steps and dy/steps from the first endpoint, and each point is
     rounded to the nearest pixel."""
@@ -233,50 +236,31 @@ def dda_line(buf, packed, width, height, x0, y0, x1, y1, color):
         x += lo * xinc
         y += lo * yinc
     for _ in range(lo, hi + 1):
-        put(buf, packed, width, height, nearest(x), nearest(y), color)
+        put(buf, layout, width, height, nearest(x), nearest(y), color)
         x += xinc
         y += yinc
 
 
-@helper
-def any_line(buf, packed, width, height, x0, y0, x1, y1, color, method):
-    if method == DDA:
-        dda_line(buf, packed, width, height, x0, y0, x1, y1, color)
+@kernel
+def draw_line(buf, layout, width, height, x0, y0, x1, y1, color, method):
+    """Draw one line; ``layout`` and ``method`` (BRESENHAM or DDA) are tokens
+    (:mod:`scanline._kernels.variants`): only the method used is compiled."""
+    if len(method) == DDA:
+        dda_line(buf, layout, width, height, x0, y0, x1, y1, color)
     else:
-        bresenham_line(buf, packed, width, height, x0, y0, x1, y1, color)
+        bresenham_line(buf, layout, width, height, x0, y0, x1, y1, color)
 
 
 @kernel
-def draw_line(buf, packed, width, height, x0, y0, x1, y1, color, method):
-    """Draw one line; ``method`` is BRESENHAM or DDA."""
-    if packed:
-        any_line(buf, True, width, height, x0, y0, x1, y1, color, method)
-    else:
-        any_line(buf, False, width, height, x0, y0, x1, y1, color, method)
-
-
-@helper
-def lines_loop(buf, packed, width, height, segments, colors, method):
-    if colors.shape[0] == 1:  # one color: any order gives the same image
-        color = colors[0]
-        segments = band_sorted(segments, 1, height)
-        for i in range(segments.shape[0]):
-            any_line(buf, packed, width, height, segments[i, 0], segments[i, 1],
-                     segments[i, 2], segments[i, 3], color, method)
-    else:
-        for i in range(segments.shape[0]):
-            any_line(buf, packed, width, height, segments[i, 0], segments[i, 1],
-                     segments[i, 2], segments[i, 3], colors[i], method)
-
-
-@kernel
-def draw_lines(buf, packed, width, height, segments, colors, method):
+def draw_lines(buf, layout, width, height, segments, colors, method):
     """Draw N lines, ``segments[i] = (x0, y0, x1, y1)``, with ``colors[i]`` (or
     ``colors[0]`` for all when ``colors`` has one row)."""
-    if packed:
-        lines_loop(buf, True, width, height, segments, colors, method)
-    else:
-        lines_loop(buf, False, width, height, segments, colors, method)
+    one = colors.shape[0] == 1
+    if one:  # one color: any order gives the same image
+        segments = band_sorted(segments, height)
+    for i in range(segments.shape[0]):
+        draw_line(buf, layout, width, height, segments[i, 0], segments[i, 1], segments[i, 2],
+                  segments[i, 3], colors[0 if one else i], method)
 
 
 @kernel

@@ -16,6 +16,8 @@ A drawn pixel stamps the pen's footprint (a list of pixel offsets; one offset (0
 for a plain line): pixel replication, the "moving pen" of the notes' Q.19-Q.20.
 """
 
+import numpy as np
+
 from ._jit import helper, kernel
 from .lines import bresenham_clip, bresenham_decide, bresenham_setup, bresenham_state
 from .raster import put
@@ -39,7 +41,7 @@ def dash_on(dashes, period, s):
 
 
 @helper
-def segment_pixels(buf, packed, width, height, x0, y0, x1, y1, skip_first, skip_last,
+def segment_pixels(buf, layout, width, height, x0, y0, x1, y1, skip_first, skip_last,
                    kind, mask, count0, dashes, period, s0, length, pen, margin, color):
     """Draw the patterned pixels of segment (x0, y0)-(x1, y1) in path order
     (k = 0 at (x0, y0)), numbered from ``count0``; returns the count after it."""
@@ -69,14 +71,14 @@ def segment_pixels(buf, packed, width, height, x0, y0, x1, y1, skip_first, skip_
                 x = w if swap else u
                 y = u if swap else w
                 for q in range(npen):
-                    put(buf, packed, width, height, x + pen[q, 0], y + pen[q, 1], color)
+                    put(buf, layout, width, height, x + pen[q, 0], y + pen[q, 1], color)
             p, advance = bresenham_decide(p, two_dw, two_dw_minus_two_du)
             j += advance
     return count0 + du
 
 
 @helper
-def patterned_loop(buf, packed, width, height, verts, offsets, closed, colors, kind,
+def patterned_loop(buf, layout, width, height, verts, offsets, closed, colors, kind,
                    mask, dashes, phase, pen, margin):
     period = 0.0
     for i in range(dashes.shape[0]):
@@ -89,8 +91,9 @@ def patterned_loop(buf, packed, width, height, verts, offsets, closed, colors, k
         count = int(phase) if kind == MASK else 0
         s = phase
         if b - a == 1:
-            segment_pixels(buf, packed, width, height, verts[a, 0], verts[a, 1], verts[a, 0],
-                           verts[a, 1], False, False, kind, mask, count, dashes, period, s,
+            no = np.bool_(False)    # (not a literal: the helper compiles once)
+            segment_pixels(buf, layout, width, height, verts[a, 0], verts[a, 1], verts[a, 0],
+                           verts[a, 1], no, no, kind, mask, count, dashes, period, s,
                            0.0, pen, margin, color)
             continue
         nseg = b - a if (closed[p] and b - a > 2) else b - a - 1
@@ -102,30 +105,26 @@ def patterned_loop(buf, packed, width, height, verts, offsets, closed, colors, k
             x1 = verts[j, 0]
             y1 = verts[j, 1]
             length = ((x1 - x0) ** 2 + (y1 - y0) ** 2) ** 0.5
-            count = segment_pixels(buf, packed, width, height, x0, y0, x1, y1, q > 0,
+            count = segment_pixels(buf, layout, width, height, x0, y0, x1, y1, q > 0,
                                    q == nseg - 1 and nseg == b - a, kind, mask, count,
                                    dashes, period, s, length, pen, margin, color)
             s += length
 
 
 @kernel
-def draw_patterned(buf, packed, width, height, verts, offsets, closed, colors, kind, mask,
+def draw_patterned(buf, layout, width, height, verts, offsets, closed, colors, kind, mask,
                    dashes, phase, pen, margin):
     """Draw polylines of integer vertices ``verts[offsets[p]:offsets[p + 1]]``
     (closed if ``closed[p]``) as Bresenham pixel sequences in line type ``kind``
     (SOLID, MASK with the 16-bit ``mask`` starting at pixel ``phase``, or LENGTHS
     with ``dashes`` starting at arc length ``phase``), stamping the ``pen`` offsets
     ((K, 2) int64, each within ``margin`` pixels) at every drawn pixel."""
-    if packed:
-        patterned_loop(buf, True, width, height, verts, offsets, closed, colors, kind, mask,
-                       dashes, phase, pen, margin)
-    else:
-        patterned_loop(buf, False, width, height, verts, offsets, closed, colors, kind, mask,
-                       dashes, phase, pen, margin)
+    patterned_loop(buf, layout, width, height, verts, offsets, closed, colors, kind, mask,
+                   dashes, phase, pen, margin)
 
 
 @helper
-def sequence_loop(buf, packed, width, height, pixels, kind, mask, dashes, phase, pen, color):
+def sequence_loop(buf, layout, width, height, pixels, kind, mask, dashes, phase, pen, color):
     period = 0.0
     for i in range(dashes.shape[0]):
         period += dashes[i]
@@ -142,16 +141,13 @@ def sequence_loop(buf, packed, width, height, pixels, kind, mask, dashes, phase,
             draw = dash_on(dashes, period, s)
         if draw:
             for q in range(npen):
-                put(buf, packed, width, height, pixels[k, 0] + pen[q, 0],
+                put(buf, layout, width, height, pixels[k, 0] + pen[q, 0],
                     pixels[k, 1] + pen[q, 1], color)
 
 
 @kernel
-def draw_sequence(buf, packed, width, height, pixels, kind, mask, dashes, phase, pen, color):
+def draw_sequence(buf, layout, width, height, pixels, kind, mask, dashes, phase, pen, color):
     """Draw a pixel sequence (K, 2) in path order (the ordered pixels of a midpoint
     circle or ellipse) in line type ``kind``, stamping ``pen``; pixel ``k`` sits at
     the arc length of the polyline through the pixel centers."""
-    if packed:
-        sequence_loop(buf, True, width, height, pixels, kind, mask, dashes, phase, pen, color)
-    else:
-        sequence_loop(buf, False, width, height, pixels, kind, mask, dashes, phase, pen, color)
+    sequence_loop(buf, layout, width, height, pixels, kind, mask, dashes, phase, pen, color)

@@ -135,7 +135,8 @@ def sort_by_row(et, n, counts, order):
         rmin = min(rmin, et[i, 0])
         rmax = max(rmax, et[i, 1])
     rows = rmax - rmin + 1
-    counts[:rows + 2] = 0
+    for r in range(rows + 2):
+        counts[r] = 0
     for i in range(n):
         counts[et[i, 0] - rmin + 1] += 1
     for r in range(rows + 1):
@@ -149,7 +150,7 @@ def sort_by_row(et, n, counts, order):
 
 
 @helper
-def fill_polygon(buf, packed, width, height, ox, oy, verts, contours, c0, c1, color,
+def fill_polygon(buf, layout, width, height, ox, oy, verts, contours, c0, c1, color,
                  rule, et, ef, counts, order, active, keys, dirs):
     """Scan-convert one polygon (contours ``c0 .. c1-1``) into the raster."""
     n = build_edges(verts, contours, c0, c1, ox, oy, height, et, ef)
@@ -203,7 +204,7 @@ def fill_polygon(buf, packed, width, height, ox, oy, verts, contours, c0, c1, co
         for a in range(nact - 1):
             winding += dirs[a]
             if (winding & mask) != 0 and keys[a] < keys[a + 1]:
-                span(buf, packed, width, height, r, keys[a], keys[a + 1] - 1, color)
+                span(buf, layout, width, height, r, keys[a], keys[a + 1] - 1, color)
 
 
 @helper
@@ -250,9 +251,18 @@ def band_reordered(verts, contours, polys, oy, height):
     return new_verts, new_contours, new_polys
 
 
-@helper
-def polygons_loop(buf, packed, width, height, ox, oy, verts, contours, polys, colors,
+@kernel
+def fill_polygons(buf, layout, width, height, ox, oy, verts, contours, polys, colors,
                   rule, max_edges):
+    """Fill P polygons.
+
+    ``verts`` (V, 2) float64 holds every vertex; contour ``c`` is
+    ``verts[contours[c]:contours[c + 1]]`` (closed implicitly); polygon ``p`` is made
+    of contours ``polys[p] .. polys[p + 1] - 1`` and painted with ``colors[p]`` (or
+    ``colors[0]`` for all when ``colors`` has one row); ``rule`` is EVEN_ODD or
+    NONZERO; ``max_edges`` bounds the vertex count of one polygon.  Raster pixel
+    (0, 0) is device pixel (ox, oy).  Vertices must be finite and within +-2**30.
+    """
     size = max(max_edges, 1)
     et = np.empty((size, 9), np.int64)
     ef = np.empty((size, 4), np.float64)
@@ -265,26 +275,6 @@ def polygons_loop(buf, packed, width, height, ox, oy, verts, contours, polys, co
     if one:
         verts, contours, polys = band_reordered(verts, contours, polys, oy, height)
     for p in range(polys.shape[0] - 1):
-        fill_polygon(buf, packed, width, height, ox, oy, verts, contours, polys[p],
+        fill_polygon(buf, layout, width, height, ox, oy, verts, contours, polys[p],
                      polys[p + 1], colors[0 if one else p], rule, et, ef, counts, order,
                      active, keys, dirs)
-
-
-@kernel
-def fill_polygons(buf, packed, width, height, ox, oy, verts, contours, polys, colors,
-                  rule, max_edges):
-    """Fill P polygons.
-
-    ``verts`` (V, 2) float64 holds every vertex; contour ``c`` is
-    ``verts[contours[c]:contours[c + 1]]`` (closed implicitly); polygon ``p`` is made
-    of contours ``polys[p] .. polys[p + 1] - 1`` and painted with ``colors[p]`` (or
-    ``colors[0]`` for all when ``colors`` has one row); ``rule`` is EVEN_ODD or
-    NONZERO; ``max_edges`` bounds the vertex count of one polygon.  Raster pixel
-    (0, 0) is device pixel (ox, oy).  Vertices must be finite and within +-2**30.
-    """
-    if packed:
-        polygons_loop(buf, True, width, height, ox, oy, verts, contours, polys, colors,
-                      rule, max_edges)
-    else:
-        polygons_loop(buf, False, width, height, ox, oy, verts, contours, polys, colors,
-                      rule, max_edges)

@@ -1,13 +1,14 @@
 """Writing pixels into frame-buffer storage.
 
 Storage is a uint8 array ``buf[y, x, channel]`` with rows bottom-up (row ``y`` is
-scan line ``y``).  In bitmap mode (``packed``) ``buf[y, x >> 3, 0]`` holds 8 pixels,
+scan line ``y``).  In bitmap mode (the ``PACKED`` layout) ``buf[y, x >> 3, 0]`` holds 8 pixels,
 the leftmost in the most significant bit, as Pillow's mode "1" does.
 """
 
 import numpy as np
 
 from ._jit import helper, inline
+from .variants import PACKED
 
 
 @inline
@@ -22,17 +23,17 @@ def put_bit(buf, x, y, on):
 
 
 @inline
-def put(buf, packed, width, height, x, y, color):
+def put(buf, layout, width, height, x, y, color):
     """Set pixel (x, y) to ``color`` (uint8 channel values); outside the
     ``width`` x ``height`` raster nothing is written.
 
-    Kernels call their pixel loops with a literal ``packed`` (``if packed:
-    loop(..., True) else: loop(..., False)``): once inlined, the branch below folds
-    away, and the loop runs about three times faster than with a run-time test.
+    ``layout`` is a layout token (:mod:`scanline._kernels.variants`): its length is
+    a constant of the caller's specialization, so once inlined the branch below
+    folds away (the loop ran about three times slower with a run-time test).
     """
     if x < 0 or y < 0 or x >= width or y >= height:
         return
-    if packed:
+    if len(layout) == PACKED:
         put_bit(buf, x, y, color[0])
         return
     n = color.shape[0]
@@ -64,9 +65,10 @@ BAND_SHIFT = 5
 
 
 @helper
-def band_sorted(items, column, height):
-    """A copy of ``items`` sorted by band of scan lines (``items[:, column] >> 5``,
-    clamped to the raster), stable within a band: a counting sort, O(N).
+def band_sorted(items, height):
+    """A copy of ``items`` sorted by band of scan lines (``items[:, 1] >> 5``, the y
+    of each primitive's first point, clamped to the raster), stable within a band:
+    a counting sort, O(N).
 
     When every primitive of a batch has the same color the drawing order cannot
     change the image, and drawing band by band keeps the rows being written in the
@@ -78,13 +80,15 @@ def band_sorted(items, column, height):
     n = items.shape[0]
     band = np.empty(n, np.int64)
     for i in range(n):
-        b = min(max(items[i, column], 0), height - 1) >> BAND_SHIFT
+        b = min(max(items[i, 1], 0), height - 1) >> BAND_SHIFT
         band[i] = b
         start[b + 1] += 1
     for b in range(bands):
         start[b + 1] += start[b]
     out = np.empty_like(items)
     for i in range(n):
-        out[start[band[i]]] = items[i]
+        k = start[band[i]]
+        for c in range(items.shape[1]):   # (a row assignment compiles an error message:
+            out[k, c] = items[i, c]       # seconds of first-call compilation)
         start[band[i]] += 1
     return out

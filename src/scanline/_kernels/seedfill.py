@@ -3,7 +3,8 @@
 this point until we specify the boundary conditions").
 
 One loop serves the three fills; they differ only in the test that says whether a
-pixel belongs to the region (``kind``) and in how a span is painted:
+pixel belongs to the region (``kind``, a token of :mod:`scanline._kernels.variants`:
+each fill compiles its own test only) and in how a span is painted:
 
 ``FLOOD``
     the pixel's channels lie within ``ref[0]..ref[1]`` (the seed's value minus and
@@ -24,10 +25,12 @@ import numpy as np
 
 from ._jit import helper, inline, kernel
 from .spans import span
+from .variants import PACKED
 
-FLOOD = 0
-BOUNDARY = 1
-SOFT = 2
+#: Fill kinds (token lengths).
+FLOOD = 1
+BOUNDARY = 2
+SOFT = 3
 
 #: Soft fill: largest distance, in levels per channel, between a pixel and the blend
 #: t*F + (1 - t)*B that best explains it (each stored channel is rounded, so exact
@@ -46,13 +49,13 @@ def bit(buf, x, y):
 
 
 @helper
-def classify_row(buf, packed, kind, width, y, ref, todo):
+def classify_row(buf, layout, kind, width, y, ref, todo):
     """Set ``todo[y, x]`` to 1 for the pixels of scan line y that belong to the
     region (see the module doc), 0 for the others."""
-    if packed:
+    if len(layout) == PACKED:
         for x in range(width):
             v = bit(buf, x, y)
-            if kind == BOUNDARY:
+            if len(kind) == BOUNDARY:
                 t = 1
                 for k in range(ref.shape[0]):
                     if v == ref[k, 0]:
@@ -64,7 +67,7 @@ def classify_row(buf, packed, kind, width, y, ref, todo):
     n = buf.shape[2]
     for x in range(width):
         t = 1
-        if kind == BOUNDARY:
+        if len(kind) == BOUNDARY:
             for k in range(ref.shape[0]):
                 same = True
                 for c in range(n):
@@ -72,7 +75,7 @@ def classify_row(buf, packed, kind, width, y, ref, todo):
                         same = False
                 if same:
                     t = 0
-        elif kind == SOFT:
+        elif len(kind) == SOFT:
             t = blend_fraction(buf, x, y, ref) > 0.0
         else:
             for c in range(n):
@@ -115,23 +118,24 @@ def soft_span(buf, y, x0, x1, ref):
 
 
 @helper
-def classify_near(buf, packed, kind, width, height, y, ref, todo, ready):
+def classify_near(buf, layout, kind, width, height, y, ref, todo, ready):
     """Classify scan lines y - 1, y and y + 1 (those on the raster) on first use;
     ``ready[y]`` records that row y is done.  Each row is tested once, before any of
     its pixels is painted, in one tight loop."""
     for r in range(max(y - 1, 0), min(y + 1, height - 1) + 1):
         if ready[r] == 0:
             ready[r] = 1
-            classify_row(buf, packed, kind, width, r, ref, todo)
+            classify_row(buf, layout, kind, width, r, ref, todo)
 
 
-@inline
-def paint(buf, packed, kind, width, height, y, x0, x1, color, ref):
-    """Paint the span x0..x1 of scan line y (the loop's one pixel-writing call)."""
-    if kind == SOFT:
+@helper
+def paint(buf, layout, kind, width, height, y, x0, x1, color, ref):
+    """Paint the span x0..x1 of scan line y (the loop's one pixel-writing call; a
+    compiled helper, so that only the fill's own painting is compiled)."""
+    if len(kind) == SOFT:
         soft_span(buf, y, x0, x1, ref)
     else:
-        span(buf, packed, width, height, y, x0, x1, color)
+        span(buf, layout, width, height, y, x0, x1, color)
 
 
 @helper
@@ -143,12 +147,14 @@ def enlarged(a, used, need):
     if need <= a.shape[0]:
         return a
     b = np.empty((max(2 * a.shape[0], need), a.shape[1]), a.dtype)
-    b[:used] = a[:used]
+    for i in range(used):     # (element by element: slice assignments compile an error
+        for c in range(a.shape[1]):   # message, seconds of first-call compilation)
+            b[i, c] = a[i, c]
     return b
 
 
 @helper
-def seed_loop(buf, packed, kind, width, height, x0, y0, eight, ref, color, tracing):
+def seed_loop(buf, layout, kind, width, height, x0, y0, eight, ref, color, tracing):
     """Fill the region of seed (x0, y0); return the number of pixels filled and, when
     ``tracing``, the step log (rows of STEP_COLUMNS: popped seed x, y; span x_left,
     x_right, or -1, -1 when the seed was filled already; number of seeds pushed) and
@@ -171,12 +177,12 @@ def seed_loop(buf, packed, kind, width, height, x0, y0, eight, ref, color, traci
     stack = np.empty((width + 256, 2), np.int64)
     stack[0, 0] = x0
     stack[0, 1] = y0
-    top = 1
+    top = np.int64(1)     # (int64s, not literals: ``enlarged`` compiles once)
     count = 0
     steps = np.empty((16 if tracing else 0, STEP_COLUMNS), np.int64)
     pushed = np.empty((16 if tracing else 0, 2), np.int64)
-    nsteps = 0
-    npushed = 0
+    nsteps = np.int64(0)
+    npushed = np.int64(0)
     while top > 0:
         stack = enlarged(stack, top, top + width + 2)
         if tracing:
@@ -190,7 +196,7 @@ def seed_loop(buf, packed, kind, width, height, x0, y0, eight, ref, color, traci
             x = stack[top, 0]
             y = stack[top, 1]
             if ready[max(y - 1, 0)] == 0 or ready[y] == 0 or ready[min(y + 1, height - 1)] == 0:
-                classify_near(buf, packed, kind, width, height, y, ref, todo, ready)
+                classify_near(buf, layout, kind, width, height, y, ref, todo, ready)
             xl = -1
             xr = -1
             if todo[y, x] != 0:
@@ -200,8 +206,9 @@ def seed_loop(buf, packed, kind, width, height, x0, y0, eight, ref, color, traci
                 xr = x
                 while xr < width - 1 and todo[y, xr + 1] != 0:
                     xr += 1
-                paint(buf, packed, kind, width, height, y, xl, xr, color, ref)
-                todo[y, xl:xr + 1] = 0
+                paint(buf, layout, kind, width, height, y, xl, xr, color, ref)
+                for i in range(xl, xr + 1):
+                    todo[y, i] = 0
                 count += xr - xl + 1
                 a = max(xl - eight, 0)
                 b = min(xr + eight, width - 1)
@@ -225,38 +232,16 @@ def seed_loop(buf, packed, kind, width, height, x0, y0, eight, ref, color, traci
                 steps[nsteps, 3] = xr
                 steps[nsteps, 4] = top - before
                 nsteps += 1
-                pushed[npushed:npushed + top - before] = stack[before:top]
-                npushed += top - before
+                for i in range(before, top):
+                    pushed[npushed, 0] = stack[i, 0]
+                    pushed[npushed, 1] = stack[i, 1]
+                    npushed += 1
     return count, steps[:nsteps], pushed[:npushed]
 
 
 @kernel
-def flood(buf, packed, width, height, x0, y0, eight, ref, color):
-    """Flood fill from seed (x0, y0), which must be on the raster; return the number
-    of pixels filled.  (One kernel per fill, each calling the loop with literal
-    flags: numba compiles a loop per case, without the tests of the others, and only
-    for the fills in use.)"""
-    if packed:
-        return seed_loop(buf, True, FLOOD, width, height, x0, y0, eight, ref, color, False)[0]
-    return seed_loop(buf, False, FLOOD, width, height, x0, y0, eight, ref, color, False)[0]
-
-
-@kernel
-def boundary(buf, packed, width, height, x0, y0, eight, ref, color):
-    """Boundary fill from seed (x0, y0); see :func:`flood`."""
-    if packed:
-        return seed_loop(buf, True, BOUNDARY, width, height, x0, y0, eight, ref, color, False)[0]
-    return seed_loop(buf, False, BOUNDARY, width, height, x0, y0, eight, ref, color, False)[0]
-
-
-@kernel
-def soft(buf, width, height, x0, y0, eight, ref, color):
-    """Soft fill (unpacked storage) from seed (x0, y0); see :func:`flood`."""
-    return seed_loop(buf, False, SOFT, width, height, x0, y0, eight, ref, color, False)[0]
-
-
-@kernel
-def seed_fill_trace(buf, packed, kind, width, height, x0, y0, eight, ref, color):
-    """A seed fill of ``kind`` step by step: return the number of pixels filled, the step
-    log and the seeds pushed (see :func:`seed_loop`)."""
-    return seed_loop(buf, packed, kind, width, height, x0, y0, eight, ref, color, True)
+def seed_fill(buf, layout, kind, width, height, x0, y0, eight, ref, color):
+    """The seed fill ``kind`` (a fill token) from seed (x0, y0), which must be on the
+    raster; return the number of pixels filled.  (The step tables run
+    :func:`seed_loop` as Python with ``tracing``.)"""
+    return seed_loop(buf, layout, kind, width, height, x0, y0, eight, ref, color, False)[0]

@@ -4,10 +4,11 @@
 
 from ._jit import inline
 from .raster import put_bit
+from .variants import PACKED
 
 
 @inline
-def span(buf, packed, width, height, y, x0, x1, color):
+def span(buf, layout, width, height, y, x0, x1, color):
     """Fill pixels x0..x1 (inclusive) of scan line y with ``color``, clipped to the
     raster; nothing is written when x0 > x1 or the span is off the raster."""
     if y < 0 or y >= height:
@@ -16,7 +17,7 @@ def span(buf, packed, width, height, y, x0, x1, color):
         x0 = 0
     if x1 > width - 1:
         x1 = width - 1
-    if packed:
+    if len(layout) == PACKED:
         for x in range(x0, x1 + 1):
             put_bit(buf, x, y, color[0])
         return

@@ -40,7 +40,7 @@ import math
 import numpy as np
 
 from ._jit import helper, kernel
-from .polygon import NONZERO, polygons_loop
+from .polygon import fill_polygons
 
 CAP_BUTT = 0
 CAP_ROUND = 1
@@ -339,14 +339,14 @@ def dash_pieces(verts, offsets, closed, dashes, phase, box):
     po = np.empty(cap_v + 1, np.int64)
     pc = np.zeros(cap_v, np.bool_)
     pw = np.empty(cap_v, np.int64)
-    nv = 0
+    nv = np.int64(0)      # (int64, not a literal 0: the helpers compile once)
     npc = 0
     for p in range(n):
         a = offsets[p]
         b = offsets[p + 1]
         if b - a == 0:
             continue
-        k, left = advance(dashes, period, 0, dashes[0], phase % period)
+        k, left = advance(dashes, period, np.int64(0), dashes[0], phase % period)
         first_piece = -1
         starts_on = k % 2 == 0
         is_open = False                     # a piece is being laid down
@@ -456,8 +456,8 @@ def build_strokes(verts, offsets, closed, owner, npoly, r, cap, join_kind, miter
     contours = np.empty(cap_c + 1, np.int64)
     polys = np.zeros(npoly + 1, np.int64)
     pts = np.empty((longest, 2), np.float64)
-    nv = 0
-    nc = 0
+    nv = np.int64(0)      # (int64s, not literals: the helpers compile once)
+    nc = np.int64(0)
     q = 0
     for i in range(n):
         o = owner[i]
@@ -506,21 +506,19 @@ def stroke_outlines(verts, offsets, closed, r, cap, join_kind, miter_limit, dash
 
 
 @kernel
-def draw_strokes(buf, packed, width, height, ox, oy, verts, offsets, closed, colors, r,
-                 cap, join_kind, miter_limit, dashes, phase):
+def draw_strokes(buf, layout, width, height, ox, oy, verts, offsets, closed, colors, r,
+                 cap, join_kind, miter_limit, dashes, phase, rule):
     """Stroke polylines into the raster whose pixel (0, 0) is device pixel (ox, oy):
-    the outlines of :func:`stroke_outlines` filled with the nonzero rule, polyline
-    ``i`` in ``colors[i]`` (or ``colors[0]`` for all)."""
+    the outlines of :func:`stroke_outlines` filled with ``rule`` (the nonzero rule's
+    code, passed in rather than written here: a constant argument would compile
+    :func:`scanline._kernels.polygon.fill_polygons` a second time, for a literal
+    rule), polyline ``i`` in ``colors[i]`` (or ``colors[0]`` for all)."""
     reach = r * max(miter_limit, 2.0) + 2.0
     box = np.array([ox - reach, oy - reach, ox + width - 1 + reach, oy + height - 1 + reach])
     out, contours, polys, max_edges = outlines(verts, offsets, closed, r, cap, join_kind,
                                                miter_limit, dashes, phase, box)
-    if packed:
-        polygons_loop(buf, True, width, height, ox, oy, out, contours, polys, colors, NONZERO,
-                      max_edges)
-    else:
-        polygons_loop(buf, False, width, height, ox, oy, out, contours, polys, colors, NONZERO,
-                      max_edges)
+    fill_polygons(buf, layout, width, height, ox, oy, out, contours, polys, colors, rule,
+                  max_edges)
 
 
 @kernel

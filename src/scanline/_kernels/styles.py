@@ -24,10 +24,10 @@ def hatch_entry(x, y, families, spacing, other):
     return other
 
 
-@helper
-def paint_loop(buf, packed, hatch, width, height, mask, x0, y0, ax, ay, cells, families,
-               spacing, other, lut):
-    """Store ``lut[entry]`` at every masked pixel; the entry is the tile cell
+@kernel
+def paint_styled(buf, layout, hatch, width, height, mask, x0, y0, ax, ay, cells, families,
+                 spacing, other, lut):
+    """Store ``lut[entry]`` at every masked pixel (``layout`` a layout token); the entry is the tile cell
     ``cells[(y - ay) mod th, (x - ax) mod tw]`` (bottom-up tile) or, for ``hatch``,
     :func:`hatch_entry` of (x - ax, y - ay)."""
     h, w = mask.shape[0], mask.shape[1]
@@ -46,21 +46,5 @@ def paint_loop(buf, packed, hatch, width, height, mask, x0, y0, ax, ay, cells, f
             else:
                 e = cells[ty, tx]
             if e >= 0:
-                put(buf, packed, width, height, x, y, lut[e])
+                put(buf, layout, width, height, x, y, lut[e])
 
-
-@kernel
-def paint_styled(buf, packed, hatch, width, height, mask, x0, y0, ax, ay, cells, families,
-                 spacing, other, lut):
-    """Entry point: :func:`paint_loop` with literal ``packed`` and ``hatch`` flags, so
-    that both branches fold out of the pixel loop."""
-    args = (width, height, mask, x0, y0, ax, ay, cells, families, spacing, other, lut)
-    if packed:
-        if hatch:
-            paint_loop(buf, True, True, *args)
-        else:
-            paint_loop(buf, True, False, *args)
-    elif hatch:
-        paint_loop(buf, False, True, *args)
-    else:
-        paint_loop(buf, False, False, *args)

@@ -19,6 +19,7 @@ import numpy as np
 
 from ._jit import helper, kernel
 from .raster import put_bit
+from .variants import PACKED
 
 
 @helper
@@ -33,7 +34,7 @@ def _over(buf, y, x, value, w):
 
 
 @helper
-def _stamp(buf, packed, width, height, atlas, masks, runs, mids, gx, gy, value, alpha,
+def _stamp(buf, layout, width, height, atlas, masks, runs, mids, gx, gy, value, alpha,
            threshold, solid):
     n = value.shape[0]
     for g in range(mids.shape[0]):
@@ -52,7 +53,7 @@ def _stamp(buf, packed, width, height, atlas, masks, runs, mids, gx, gy, value, 
             hi = min(x0 + runs[r, 2], width)
             if solid:  # a binary mask in an opaque color: store the run
                 for x in range(lo, hi):
-                    if packed:
+                    if len(layout) == PACKED:
                         put_bit(buf, x, y, value[0])
                     else:
                         for ch in range(n):
@@ -61,7 +62,7 @@ def _stamp(buf, packed, width, height, atlas, masks, runs, mids, gx, gy, value, 
             row = masks[m, 0] + j * w - x0
             for x in range(lo, hi):
                 weight = atlas[row + x] * alpha  # coverage x alpha, 0 .. 255 * 255
-                if packed:
+                if len(layout) == PACKED:
                     if weight >= 32513:  # >= 1/2
                         put_bit(buf, x, y, value[0])
                 elif weight == 65025:
@@ -81,7 +82,7 @@ def _stamp(buf, packed, width, height, atlas, masks, runs, mids, gx, gy, value, 
 
 
 @kernel
-def stamp_glyphs(buf, packed, width, height, atlas, masks, runs, mids, gx, gy, value,
+def stamp_glyphs(buf, layout, width, height, atlas, masks, runs, mids, gx, gy, value,
                  alpha, threshold, solid):
     """Stamp glyph masks ``mids[g]`` with origins ``(gx[g], gy[g])`` (mask ids < 0
     are skipped).  ``masks[m]`` = (offset in ``atlas``, width, height, x and y of the
@@ -92,16 +93,12 @@ def stamp_glyphs(buf, packed, width, height, atlas, masks, runs, mids, gx, gy, v
     255, so runs are stored without reading the mask.  Pixels outside the
     ``width`` x ``height`` raster are never written: each run is clipped to it
     (origins must lie within +-2**30)."""
-    if packed:
-        _stamp(buf, True, width, height, atlas, masks, runs, mids, gx, gy, value, alpha,
-               threshold, solid)
-    else:
-        _stamp(buf, False, width, height, atlas, masks, runs, mids, gx, gy, value, alpha,
-               threshold, solid)
+    _stamp(buf, layout, width, height, atlas, masks, runs, mids, gx, gy, value, alpha,
+           threshold, solid)
 
 
 @kernel
-def stamp_line(buf, packed, width, height, atlas, masks, runs, mask_of, table, advances,
+def stamp_line(buf, layout, width, height, atlas, masks, runs, mask_of, table, advances,
                codes, x, y, line, value, alpha, threshold, solid):
     """Place and stamp one line of upright text: code points ``codes`` through
     ``table`` (code point -> glyph id), ``advances`` (font units per glyph id) and
@@ -165,6 +162,6 @@ def stamp_line(buf, packed, width, height, atlas, masks, runs, mask_of, table, a
         if clip:
             fx = min(max(fx, -lim), lim)
         gx[k] = np.int64(np.floor(fx))
-    stamp_glyphs(buf, packed, width, height, atlas, masks, runs, mids, gx, gy, value,
+    stamp_glyphs(buf, layout, width, height, atlas, masks, runs, mids, gx, gy, value,
                  alpha, threshold, solid)
     return 0

@@ -47,3 +47,13 @@ MODE = {"1": token(BIT), "L": token(GRAY), "RGB": token(RGB), "RGBA": token(RGBA
         "P": token(INDEXED)}
 LAYOUT = {"1": token(PACKED), "L": token(BYTES), "RGB": token(BYTES), "RGBA": token(BYTES),
           "P": token(BYTES)}
+
+LAYOUT_PACKED = token(PACKED)
+LAYOUT_BYTES = token(BYTES)
+
+
+def layout(packed):
+    """The layout token of packed (mode "1") or byte storage: the API layer keeps a
+    ``packed`` flag (``FrameBuffer._raster()``) and turns it into the token where it
+    calls a kernel."""
+    return LAYOUT_PACKED if packed else LAYOUT_BYTES

@@ -116,7 +116,7 @@ class Bezier(Weighted, Curve):
         pts = self.homogeneous() if self.rational else self.points
         if method == "de-casteljau":
             out = np.empty((len(u), pts.shape[1]))
-            _k.de_casteljau(pts, np.ascontiguousarray(u), out)
+            _k.de_casteljau(v.kernel_array(pts), v.kernel_array(u), out)
         elif method == "bernstein":
             out = bernstein(self.degree, u) @ pts
         elif method == "recursive":
@@ -129,8 +129,8 @@ class Bezier(Weighted, Curve):
                     "method='de-casteljau'"
                 )
             out = np.empty((len(u), pts.shape[1]))
-            _k.piecewise_horner(np.array([0.0, 1.0]), self._power_form(),
-                                np.ascontiguousarray(u), out)
+            _k.piecewise_horner(np.array([0.0, 1.0]), self._power_form(), v.kernel_array(u),
+                                out)
         return project(out) if self.rational else out
 
     def _power_form(self):

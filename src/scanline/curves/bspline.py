@@ -270,9 +270,9 @@ class BSpline(Weighted, Curve):
             out = self._basis(u) @ pts
         else:
             out = np.empty((len(u), pts.shape[1]))
-            u = np.ascontiguousarray(u)
+            u = v.kernel_array(u)
             if method == "de-boor":
-                _k.de_boor(pts, self.knots, self.order, u, out)
+                _k.de_boor(v.kernel_array(pts), v.kernel_array(self.knots), self.order, u, out)
             else:
                 _k.piecewise_horner(*self._power_form(), u, out)
         return project(out) if self.rational else out
@@ -292,7 +292,8 @@ class BSpline(Weighted, Curve):
                 for j in range(self.order - 1, -1, -1):  # highest power first
                     d = spline.derivative(j)
                     value = np.empty((len(start), d.dimension))
-                    _k.de_boor(d.points, d.knots, d.order, start, value)
+                    _k.de_boor(v.kernel_array(d.points), v.kernel_array(d.knots), d.order,
+                               v.kernel_array(start), value)
                     rows.append(value * (h**j / factorial(j))[:, None])
                 coefficients = np.ascontiguousarray(np.stack(rows, axis=1))
                 finite = np.isfinite(coefficients).all() and np.isfinite(1 / h).all()

@@ -54,7 +54,7 @@ class PiecewisePolynomial(Curve):
     def _evaluate(self, u):
         c = self.coefficients
         out = np.empty((len(u), self.dimension))
-        _k.piecewise_horner(np.arange(len(c) + 1.0), c, np.ascontiguousarray(u), out)
+        _k.piecewise_horner(np.arange(len(c) + 1.0), v.kernel_array(c), v.kernel_array(u), out)
         return out
 
     def _derivative(self):

@@ -19,7 +19,8 @@ one color per primitive)::
         # paint the primitive's pixels with ``value`` (uint8 channel values) into
         # the raster ``buf`` of ``width`` x ``height`` whose pixel (0, 0) is device
         # pixel (ox, oy) -- e.g. call a kernel with coordinates shifted by (-ox, -oy).
-        my_kernel(buf, packed, width, height, x0 - ox, y0 - oy, x1 - ox, y1 - oy, value)
+        my_kernel(buf, layout(packed), width, height, x0 - ox, y0 - oy, x1 - ox, y1 - oy,
+                  value)
 
     _blend.paint(fb, color, (xmin, ymin, xmax, ymax), draw)
 
@@ -37,20 +38,18 @@ import numbers
 import numpy as np
 
 from .._kernels import blend as k
+from .._kernels.variants import MODE
 from ..color.spec import rgba
 from ._area import fill_area
 from ._common import colors, target
-
-#: Mode name -> mode code of :mod:`scanline._kernels.blend`.
-MODES = {"1": k.BIT, "L": k.GRAY, "RGB": k.RGB, "RGBA": k.RGBA, "P": k.INDEXED}
 
 _NO_TABLE = np.zeros((1, 3), np.uint8)
 _FULL = np.full(1, 255, np.uint8)
 
 
 def mode_code(fb):
-    """The blend kernels' mode code of ``fb``."""
-    return MODES[fb.mode]
+    """The blend kernels' mode token of ``fb`` (:mod:`scanline._kernels.variants`)."""
+    return MODE[fb.mode]
 
 
 def table(fb):
@@ -181,15 +180,18 @@ def paint(fb, color, bbox, draw):
         ``draw(buf, packed, width, height, ox, oy, value)`` paints the primitive's
         pixels with the uint8 channel values ``value`` into the storage ``buf`` of a
         ``width`` x ``height`` raster whose pixel (0, 0) is device pixel (ox, oy)
-        (``packed`` says whether ``buf`` is a packed mode-"1" bitmap).
+        (``packed`` says whether ``buf`` is a packed mode-"1" bitmap; kernels take it
+        as :func:`scanline._kernels.variants.layout` of it).
 
     Examples
     --------
     >>> import scanline as sl
-    >>> from scanline._kernels.lines import draw_line
+    >>> from scanline._kernels.lines import BRESENHAM, draw_line
+    >>> from scanline._kernels.variants import layout, token
     >>> fb = sl.FrameBuffer(4, 1, mode="RGB", background="white")
     >>> def draw(buf, packed, width, height, ox, oy, value):
-    ...     draw_line(buf, packed, width, height, 0 - ox, 0 - oy, 3 - ox, 0 - oy, value, 0)
+    ...     draw_line(buf, layout(packed), width, height, 0 - ox, 0 - oy, 3 - ox, 0 - oy,
+    ...               value, token(BRESENHAM))
     >>> paint(fb, (0, 0, 255, 128), (0, 0, 3, 0), draw)
     >>> fb.get_pixel(0, 0)
     (127, 127, 255)

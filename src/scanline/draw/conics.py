@@ -4,6 +4,7 @@ import numpy as np
 
 from .. import _validate as v
 from .._kernels import conics as k
+from .._kernels.variants import layout
 from ..errors import ArgumentValueError
 from . import strokes
 from ._common import colors, target
@@ -65,7 +66,7 @@ def circle(fb, xc, yc, r, color="white", *, style=None, antialias=False, width=N
         strokes.conics(fb, np.array([[xc, yc, r, r]], np.int64), color, attrs, antialias)
         return
     buf, packed, width, height = target(fb)
-    k.draw_circle(buf, packed, width, height, xc, yc, r, fb.pixel(color))
+    k.draw_circle(buf, layout(packed), width, height, xc, yc, r, fb.pixel(color))
 
 
 def circles(fb, circles, color="white", *, style=None, antialias=False, width=None, cap=None,
@@ -81,7 +82,7 @@ def circles(fb, circles, color="white", *, style=None, antialias=False, width=No
         strokes.conics(fb, arr[:, [0, 1, 2, 2]], color, attrs, antialias)
         return
     buf, packed, width, height = target(fb)
-    k.draw_circles(buf, packed, width, height, arr, colors(fb, color, len(arr)))
+    k.draw_circles(buf, layout(packed), width, height, arr, colors(fb, color, len(arr)))
 
 
 def _check_ellipse(rx, ry, name="rx * ry"):
@@ -147,7 +148,7 @@ def ellipse(fb, xc, yc, rx, ry, color="white", *, style=None, antialias=False, w
         strokes.conics(fb, np.array([[xc, yc, rx, ry]], np.int64), color, attrs, antialias)
         return
     buf, packed, width, height = target(fb)
-    k.draw_ellipse(buf, packed, width, height, xc, yc, rx, ry, fb.pixel(color))
+    k.draw_ellipse(buf, layout(packed), width, height, xc, yc, rx, ry, fb.pixel(color))
 
 
 def ellipses(fb, ellipses, color="white", *, style=None, antialias=False, width=None, cap=None,
@@ -169,4 +170,4 @@ def ellipses(fb, ellipses, color="white", *, style=None, antialias=False, width=
         strokes.conics(fb, arr, color, attrs, antialias)
         return
     buf, packed, width, height = target(fb)
-    k.draw_ellipses(buf, packed, width, height, arr, colors(fb, color, len(arr)))
+    k.draw_ellipses(buf, layout(packed), width, height, arr, colors(fb, color, len(arr)))

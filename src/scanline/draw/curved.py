@@ -15,6 +15,7 @@ import numpy as np
 
 from .. import _validate as v
 from .._kernels import curved as k
+from .._kernels.variants import layout
 from . import _blend
 from ._common import colors, target
 from .conics import _check_ellipse, circle, ellipse
@@ -53,7 +54,7 @@ def _axes(rx, ry):
 
 def _paint(fb, color, style, xc, yc, rx, ry, is_circle, hp, combine, outline):
     def draw(buf, packed, width, height, ox, oy, pixel):
-        k.draw_region(buf, packed, width, height, xc - ox, yc - oy, rx, ry, is_circle, False,
+        k.draw_region(buf, layout(packed), width, height, xc - ox, yc - oy, rx, ry, is_circle, False,
                       hp, combine, pixel)
 
     _blend.fill(fb, color, style, (xc - rx, yc - ry, xc + rx, yc + ry), draw, outline)
@@ -80,7 +81,7 @@ def _translucent_batch(fb, arr, circle, color):
         row = arr[i:i + 1].copy()
         row[0, 0] -= ox
         row[0, 1] -= oy
-        k.fill_regions(buf, packed, width, height, row, circle, value.reshape(1, -1))
+        k.fill_regions(buf, layout(packed), width, height, row, circle, value.reshape(1, -1))
 
     ry = arr[:, 2] if circle else arr[:, 3]
     boxes = np.stack([arr[:, 0] - arr[:, 2], arr[:, 1] - ry, arr[:, 0] + arr[:, 2],
@@ -214,7 +215,7 @@ def fill_circles(fb, circles, color="white", antialias=False):
     if _blend.translucent(color):
         _translucent_batch(fb, arr, True, color)
         return
-    k.fill_regions(buf, packed, width, height, arr, True, colors(fb, color, len(arr)))
+    k.fill_regions(buf, layout(packed), width, height, arr, True, colors(fb, color, len(arr)))
 
 
 def fill_ellipses(fb, ellipses, color="white", antialias=False):
@@ -234,7 +235,7 @@ def fill_ellipses(fb, ellipses, color="white", antialias=False):
     if _blend.translucent(color):
         _translucent_batch(fb, arr, False, color)
         return
-    k.fill_regions(buf, packed, width, height, arr, False, colors(fb, color, len(arr)))
+    k.fill_regions(buf, layout(packed), width, height, arr, False, colors(fb, color, len(arr)))
 
 
 # -- arcs, chords and pies ----------------------------------------------------------------
@@ -378,7 +379,7 @@ def arc(fb, xc, yc, rx, ry, start, end, color="white"):
         return
 
     def draw(buf, packed, width, height, ox, oy, value):
-        k.draw_region(buf, packed, width, height, xc - ox, yc - oy, rx, ry, is_circle, True,
+        k.draw_region(buf, layout(packed), width, height, xc - ox, yc - oy, rx, ry, is_circle, True,
                       *region, value)
 
     _blend.paint(fb, color, (xc - rx, yc - ry, xc + rx, yc + ry), draw)

@@ -4,11 +4,12 @@ import numpy as np
 
 from .. import _validate as v
 from .._kernels import lines as k
+from .._kernels.variants import layout, token
 from ..errors import ArgumentValueError
 from . import strokes
 from ._common import colors, target
 
-METHODS = {"bresenham": k.BRESENHAM, "dda": k.DDA}
+METHODS = {"bresenham": token(k.BRESENHAM), "dda": token(k.DDA)}
 
 
 def _method(method):
@@ -19,7 +20,7 @@ def _method(method):
 
 
 def _attributes_need_bresenham(code):
-    if code != k.BRESENHAM:
+    if len(code) != k.BRESENHAM:
         raise ArgumentValueError(
             "method='dda' draws plain width-1 solid lines; lines with attributes (width, "
             "dash, pen, antialias) follow Bresenham's pixels or exact outlines, so leave "
@@ -84,7 +85,7 @@ def line(fb, x0, y0, x1, y1, color="white", method="bresenham", *, style=None,
         strokes.polyline(fb, points, color, style=attrs, antialias=antialias)
         return
     buf, packed, width, height = target(fb)
-    k.draw_line(buf, packed, width, height,
+    k.draw_line(buf, layout(packed), width, height,
                 v.coordinate("x0", x0), v.coordinate("y0", y0),
                 v.coordinate("x1", x1), v.coordinate("y1", y1),
                 fb.pixel(color), code)
@@ -128,4 +129,4 @@ def lines(fb, segments, color="white", method="bresenham", *, style=None, antial
         return
     buf, packed, width, height = target(fb)
     segs = v.coordinate_array("segments", segments, 4)
-    k.draw_lines(buf, packed, width, height, segs, colors(fb, color, len(segs)), code)
+    k.draw_lines(buf, layout(packed), width, height, segs, colors(fb, color, len(segs)), code)

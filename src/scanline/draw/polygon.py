@@ -5,6 +5,7 @@ import numpy as np
 
 from .. import _validate as v
 from .._kernels import polygon as k
+from .._kernels.variants import layout
 from ..errors import ArgumentValueError
 from ..geometry import contours as parse
 from . import _blend
@@ -160,7 +161,7 @@ def polygon(fb, points, color="white", rule="even-odd", style=None, antialias=Fa
     max_edges = _max_edges(offsets, polys)
 
     def draw(buf, packed, width, height, ox, oy, pixel):
-        k.fill_polygons(buf, packed, width, height, ox, oy, verts, offsets, polys,
+        k.fill_polygons(buf, layout(packed), width, height, ox, oy, verts, offsets, polys,
                         np.asarray(pixel, np.uint8).reshape(1, -1), code, max_edges)
 
     def outline():
@@ -230,11 +231,11 @@ def polygons(fb, polygons, color="white", rule="even-odd", counts=None, antialia
     most = _max_edges(offsets, polys)
     if _blend.translucent(color):
         def draw(i, buf, packed, width, height, ox, oy, value):
-            k.fill_polygons(buf, packed, width, height, ox, oy, verts, offsets,
+            k.fill_polygons(buf, layout(packed), width, height, ox, oy, verts, offsets,
                             polys[i:i + 2], value.reshape(1, -1), code, most)
 
         boxes = [_bbox(verts[offsets[polys[i]]:offsets[polys[i + 1]]]) for i in range(n)]
         _blend.paint_each(fb, color, n, boxes, draw)
         return
-    k.fill_polygons(buf, packed, width, height, 0, 0, verts, offsets, polys,
+    k.fill_polygons(buf, layout(packed), width, height, 0, 0, verts, offsets, polys,
                     colors(fb, color, n), code, most)

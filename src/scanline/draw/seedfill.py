@@ -9,6 +9,7 @@ import numbers
 import numpy as np
 
 from .. import _validate as v
+from .._kernels.variants import layout, token
 from ..errors import ArgumentTypeError, ArgumentValueError
 from ._common import colors, target
 
@@ -53,9 +54,9 @@ def fill(fb, x, y, kind, connectivity, ref, color, buf=None):
     eight = eight_connected(connectivity)
     ref = ref(buf, packed, x, y) if callable(ref) else ref
     ref = np.ascontiguousarray(ref, np.int64)
-    if kind == "soft":
-        return int(k.soft(buf, width, height, x, y, eight, ref, color))
-    return int(getattr(k, kind)(buf, packed, width, height, x, y, eight, ref, color))
+    code = {"flood": k.FLOOD, "boundary": k.BOUNDARY, "soft": k.SOFT}[kind]
+    return int(k.seed_fill(buf, layout(packed), token(code), width, height, x, y, eight, ref,
+                           color))
 
 
 def _region(buf, packed, width):

@@ -20,7 +20,9 @@ import numpy as np
 
 from .. import _validate as v
 from .._kernels import linetype as kl
+from .._kernels.polygon import NONZERO
 from .._kernels import strokes as ks
+from .._kernels.variants import layout
 from ..errors import ArgumentTypeError, ArgumentValueError
 from ..geometry import contours as parse
 from ..linestyle import LineStyle
@@ -143,7 +145,7 @@ def _painter(style, verts, offsets, closed):
 
         def draw(buf, packed, width, height, ox, oy, values, a, b):
             o = offsets[a:b + 1]
-            kl.draw_patterned(buf, packed, width, height,
+            kl.draw_patterned(buf, layout(packed), width, height,
                               iverts[o[0]:o[-1]] - np.array([ox, oy], np.int64), o - o[0],
                               closed[a:b], values, kind, mask, dashes, phase, pen, margin)
         return draw
@@ -154,9 +156,9 @@ def _painter(style, verts, offsets, closed):
 
     def draw(buf, packed, width, height, ox, oy, values, a, b):
         o = offsets[a:b + 1]
-        ks.draw_strokes(buf, packed, width, height, ox, oy, verts[o[0]:o[-1]], o - o[0],
+        ks.draw_strokes(buf, layout(packed), width, height, ox, oy, verts[o[0]:o[-1]], o - o[0],
                         closed[a:b], values, r, cap, join, style.miter_limit, dashes,
-                        float(phase))
+                        float(phase), NONZERO)
     return draw
 
 
@@ -449,7 +451,7 @@ def conics(fb, rows, color, style, antialias):
         pixels = conic_pixels(xc, yc, rx, ry)
 
         def draw(buf, packed, width, height, ox, oy, value, pixels=pixels):
-            kl.draw_sequence(buf, packed, width, height, pixels - np.array([ox, oy], np.int64),
+            kl.draw_sequence(buf, layout(packed), width, height, pixels - np.array([ox, oy], np.int64),
                              kind, mask, dashes, phase, pen, value)
         if values is not None:
             buf, packed, width, height = target(fb)

@@ -5,6 +5,7 @@ import numpy as np
 
 from .. import _validate as v
 from .._kernels.text import stamp_glyphs, stamp_line
+from .._kernels.variants import layout
 from ..color.spec import rgba
 from ..text import glyphcache
 from ..text.layout import codes_of, line_setup, place
@@ -86,7 +87,7 @@ def _filled(fb, p, color, value, antialias):
     mids = cache.ensure(p.gids)
     buf, packed = fb._raster()
     alpha = _alpha(color)
-    stamp_glyphs(buf, packed, fb.width, fb.height, cache.atlas, cache.masks, cache.runs, mids,
+    stamp_glyphs(buf, layout(packed), fb.width, fb.height, cache.atlas, cache.masks, cache.runs, mids,
                  p.ox, p.oy, value, alpha, fb.mode == "P", alpha == 255 and not antialias)
 
 
@@ -98,7 +99,7 @@ def _line(fb, raster, x, y, text, fast, color, value, antialias):
     buf, packed, width, height = raster
     alpha = _alpha(color)
     font = setup.font
-    return stamp_line(buf, packed, width, height, cache.atlas, cache.masks, cache.runs,
+    return stamp_line(buf, layout(packed), width, height, cache.atlas, cache.masks, cache.runs,
                       cache.mask_of, font._table, font.advances, codes_of(text), float(x),
                       float(y), setup.params, value, alpha, fb.mode == "P",
                       alpha == 255 and not antialias) == 0

@@ -9,6 +9,7 @@ import numpy as np
 
 from .. import _validate as v
 from .._kernels import clip as k
+from .._kernels._jit import python
 from ..clip import window as w
 from .table import Table, _cell
 
@@ -42,7 +43,7 @@ def _run(method, x0, y0, x1, y1, ring, rows, columns):
     out = np.empty((1, 4))
     log = np.full((rows, columns), np.nan)
     rect = np.concatenate([ring.min(axis=0), ring.max(axis=0)])
-    ok = k.trace_line(method, seg, rect, ring, w.outward_normals(ring), out, log)
+    ok = python(k.trace_line)(method, seg, rect, ring, w.outward_normals(ring), out, log)
     used = int(np.sum(~np.isnan(log[:, 0])))
     return seg, bool(ok), out[0], log[:used]
 

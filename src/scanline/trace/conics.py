@@ -4,6 +4,7 @@ import numpy as np
 
 from .. import _validate as v
 from .._kernels import conics as k
+from .._kernels._jit import python
 from ..draw.conics import _check_ellipse
 from .table import Table
 
@@ -60,7 +61,7 @@ def midpoint_circle(r, center=None):
     r = _radius("r", r)
     xc, yc = _center(center)
     out = np.zeros((r + 1, 3), np.int64)
-    n = k.circle_trace(r, out)
+    n = python(k.circle_trace)(r, out)
     rows = [{"k": i, "p": p, "x": x, "y": y, "2x": 2 * x, "2y": 2 * y}
             for i, (p, x, y) in enumerate(out[:n].tolist())]
     columns = _add_screen_columns(["k", "p", "x", "y", "2x", "2y"], rows, center, xc, yc)
@@ -94,7 +95,7 @@ def midpoint_ellipse(rx, ry, center=None):
     _check_ellipse(rx, ry)
     xc, yc = _center(center)
     out = np.zeros((rx + ry + 1, 6), np.int64)
-    n = k.ellipse_trace(rx, ry, out)
+    n = python(k.ellipse_trace)(rx, ry, out)
     columns = ["region", "k", "p", "x", "y", "2ry2x", "2rx2y"]
     rows = []
     counter = {}

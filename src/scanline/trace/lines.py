@@ -4,6 +4,7 @@ import numpy as np
 
 from .. import _validate as v
 from .._kernels import lines as k
+from .._kernels._jit import python
 from .table import Table
 
 #: A trace lists every step; longer lines would print pages nobody reads.
@@ -34,7 +35,7 @@ def bresenham(x0, y0, x1, y1):
     """
     (x0, y0, x1, y1), steps = _endpoints(x0, y0, x1, y1)
     out = np.zeros((steps, 4), np.int64)
-    swap, u0, w0, du, dw, sw = k.bresenham_trace(x0, y0, x1, y1, out)
+    swap, u0, w0, du, dw, sw = python(k.bresenham_trace)(x0, y0, x1, y1, out)
     start = (w0, u0) if swap else (u0, w0)
     a, b = ("y", "x") if swap else ("x", "y")
     rows = [
@@ -65,7 +66,7 @@ def dda(x0, y0, x1, y1):
     """
     (x0, y0, x1, y1), steps = _endpoints(x0, y0, x1, y1)
     out = np.zeros((steps + 1, 4), np.float64)
-    steps, xinc, yinc = k.dda_trace(x0, y0, x1, y1, out)
+    steps, xinc, yinc = python(k.dda_trace)(x0, y0, x1, y1, out)
     rows = [
         {"k": i, "x_real": xr, "y_real": yr, "x": int(px), "y": int(py)}
         for i, (xr, yr, px, py) in enumerate(out.tolist())

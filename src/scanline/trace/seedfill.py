@@ -91,6 +91,8 @@ def flood_fill(x, y, grid=EXAMPLE_GRID, connectivity=4):
     """
     from ..draw.seedfill import eight_connected, seed, seed_value
     from .._kernels import seedfill as k
+    from .._kernels._jit import python
+    from .._kernels.variants import layout, token
 
     fb, chars = grid_frame(grid)
     x, y = seed(fb, x, y)
@@ -98,8 +100,10 @@ def flood_fill(x, y, grid=EXAMPLE_GRID, connectivity=4):
     buf, packed = fb._raster()
     value = seed_value(buf, packed, x, y)
     ref = np.stack([value, value])
-    _, steps, pushed = k.seed_fill_trace(buf, packed, k.FLOOD, fb.width, fb.height, x, y,
-                                         eight, ref, np.array([255], np.uint8))
+    # the drawing kernel's own loop, run as Python with its step log on
+    _, steps, pushed = python(k.seed_loop)(buf, layout(packed), token(k.FLOOD), fb.width,
+                                           fb.height, x, y, eight, ref,
+                                           np.array([255], np.uint8), True)
     rows, pixels, stack, j = [], [], [(x, y)], 0
     for i, (sx, sy, xl, xr, n) in enumerate(steps.tolist()):
         stack.pop()

@@ -4,7 +4,8 @@ numba kernel, each in a fresh process with an empty numba cache.
 A new user's first call pays numba's compilation of every kernel it reaches; the
 kernel layer's rule (``docs/conventions.md``, "Compile time") keeps that within about
 3 s per entry point on a 2-core machine.  This script measures it: for every *case*
-(one entry point, in one image mode where the mode matters) it starts a fresh
+(one call of :data:`scanline.warmup.CALLS`: an entry point, in one image mode
+where the mode matters; and the command-line cases below) it starts a fresh
 Python process with ``NUMBA_CACHE_DIR`` pointing at a new, empty folder, runs the
 case and saves the result, and records
 
@@ -40,128 +41,9 @@ import sys
 import tempfile
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-MODES = ("1", "L", "RGB", "RGBA", "P")
+from scanline.warmup import cases
 
-#: Python cases: name -> (code, modes).  The code runs with ``sl``, ``np`` and a
-#: 96 x 64 frame buffer ``fb`` (white background, in each mode listed) defined;
-#: ``None`` as modes: the case draws nothing into ``fb`` (RGB is used).
-TRI = "[(3, 4), (80, 20), (30, 60)]"
-STAR = "[(48, 60), (20, 4), (92, 40), (4, 40), (76, 4)]"
-PY_CASES = {
-    "line": ("sl.draw.line(fb, 3, 4, 90, 50, color='black')", MODES),
-    "line dda": ("sl.draw.line(fb, 3, 4, 90, 50, color='black', method='dda')", ("RGB",)),
-    "lines": ("sl.draw.lines(fb, np.array([[3, 4, 90, 50], [0, 60, 95, 0]]), color='black')", MODES),
-    "line aa": ("sl.draw.line(fb, 3.5, 4, 90, 50.2, color='black', antialias=True)", MODES),
-    "lines aa": ("sl.draw.lines(fb, [[3, 4, 90, 50], [0, 60, 95, 0]], color='black', antialias=True)",
-                 MODES),
-    "line translucent": ("sl.draw.line(fb, 3, 4, 90, 50, color=(255, 0, 0, 128))", ("RGB", "RGBA")),
-    "circle": ("sl.draw.circle(fb, 48, 32, 20, color='black')", MODES),
-    "circles": ("sl.draw.circles(fb, [[48, 32, 20], [20, 20, 9]], color='black')", MODES),
-    "circle aa": ("sl.draw.circle(fb, 48, 32, 20.5, color='black', antialias=True)", MODES),
-    "ellipse": ("sl.draw.ellipse(fb, 48, 32, 30, 12, color='black')", MODES),
-    "ellipses": ("sl.draw.ellipses(fb, [[48, 32, 30, 12], [20, 20, 9, 4]], color='black')", ("RGB",)),
-    "ellipse aa": ("sl.draw.ellipse(fb, 48, 32, 30, 12.5, color='black', antialias=True)", ("RGB",)),
-    "circle thick": ("sl.draw.circle(fb, 48, 32, 20, color='black', width=4)", ("RGB",)),
-    "circle dashed": ("sl.draw.circle(fb, 48, 32, 20, color='black', dash=(4, 2))", ("RGB",)),
-    "polygon": (f"sl.draw.polygon(fb, {STAR}, color='black')", MODES),
-    "polygon nonzero": (f"sl.draw.polygon(fb, {STAR}, color='black', rule='nonzero')", ("RGB",)),
-    "polygons": (f"sl.draw.polygons(fb, [{STAR}, {TRI}], color='black')", ("RGB",)),
-    "polygon aa": (f"sl.draw.polygon(fb, {STAR}, color='black', antialias=True)", MODES),
-    "polygons aa": (f"sl.draw.polygons(fb, [{STAR}, {TRI}], color='black', antialias=True)", ("RGB",)),
-    "polygon hatch": (f"sl.draw.polygon(fb, {STAR}, color='black', "
-                      "style=sl.FillStyle.hatch(angle=0.8, spacing=6, cross=True))", ("RGB",)),
-    "polygon translucent": (f"sl.draw.polygon(fb, {STAR}, color=(255, 0, 0, 128))", ("RGB", "RGBA")),
-    "fill_circle": ("sl.draw.fill_circle(fb, 48, 32, 20, color='black')", MODES),
-    "fill_circles": ("sl.draw.fill_circles(fb, [[48, 32, 20], [20, 20, 9]], color='black')", ("RGB",)),
-    "fill_circle aa": ("sl.draw.fill_circle(fb, 48, 32, 20.5, color='black', antialias=True)", MODES),
-    "fill_ellipse": ("sl.draw.fill_ellipse(fb, 48, 32, 30, 12, color='black')", ("RGB",)),
-    "fill_ellipses aa": ("sl.draw.fill_ellipses(fb, [[48, 32, 30, 12]], color='black', antialias=True)",
-                         ("RGB",)),
-    "arc": ("sl.draw.arc(fb, 48, 32, 30, 20, 0.2, 2.5, color='black')", ("RGB",)),
-    "pie": ("sl.draw.pie(fb, 48, 32, 30, 20, 0.2, 2.5, color='black')", ("RGB",)),
-    "chord": ("sl.draw.chord(fb, 48, 32, 30, 20, 0.2, 2.5, color='black')", ("RGB",)),
-    "polyline": ("sl.draw.polyline(fb, [(3, 4), (50, 60), (90, 5)], color='black')", ("RGB",)),
-    "polyline thick round": ("sl.draw.polyline(fb, [(3, 4), (50, 60), (90, 5)], color='black', "
-                             "width=5, cap='round', join='round')", MODES),
-    "polyline thick miter": ("sl.draw.polyline(fb, [(3, 4), (50, 60), (90, 5)], color='black', "
-                             "width=5, join='miter')", ("RGB",)),
-    "polyline dashed": ("sl.draw.polyline(fb, [(3, 4), (50, 60), (90, 5)], color='black', "
-                        "dash=(6, 3))", ("RGB",)),
-    "polyline dashed thick": ("sl.draw.polyline(fb, [(3, 4), (50, 60), (90, 5)], color='black', "
-                              "dash=(6, 3), width=3)", ("RGB",)),
-    "polyline mask": ("sl.draw.polyline(fb, [(3, 4), (50, 60), (90, 5)], color='black', "
-                      "dash=0b1111000011110000)", ("RGB",)),
-    "polyline pen": ("sl.draw.polyline(fb, [(3, 4), (50, 60), (90, 5)], color='black', "
-                     "pen='circle', width=3)", ("RGB",)),
-    "polyline thick aa": ("sl.draw.polyline(fb, [(3, 4), (50, 60), (90, 5)], color='black', "
-                          "width=5, join='round', antialias=True)", MODES),
-    "polylines": ("sl.draw.polylines(fb, [[(3, 4), (50, 60)], [(90, 5), (10, 50), (60, 10)]], "
-                  "color='black', width=3)", ("RGB",)),
-    "flood_fill": ("sl.draw.circle(fb, 48, 32, 20, color='black'); "
-                   "sl.draw.flood_fill(fb, 48, 32, 'red')", MODES),
-    "flood_fill 8": ("sl.draw.circle(fb, 48, 32, 20, color='black'); "
-                     "sl.draw.flood_fill(fb, 48, 32, 'red', connectivity=8)", ("RGB",)),
-    "boundary_fill": ("sl.draw.circle(fb, 48, 32, 20, color='black'); "
-                      "sl.draw.boundary_fill(fb, 48, 32, 'red', boundary='black')", MODES),
-    "soft_fill": ("sl.draw.fill_circle(fb, 48, 32, 20, color='black', antialias=True); "
-                  "sl.draw.soft_fill(fb, 48, 32, 'red', 'black', 'white')", ("RGB",)),
-    "text outline": ("sl.draw.text(fb, 4, 20, 'Hello', color='black', height=14)", MODES),
-    "text outline aa": ("sl.draw.text(fb, 4, 20, 'Hello', color='black', height=14, antialias=True)",
-                        ("RGB",)),
-    "text outline rotated": ("sl.draw.text(fb, 4, 20, 'Hello', color='black', height=14, angle=0.3)",
-                             ("RGB",)),
-    "text bitmap": ("sl.draw.text(fb, 4, 20, 'Hello', color='black', font='bitmap')", ("RGB",)),
-    "text stroke": ("sl.draw.text(fb, 4, 20, 'Hello', color='black', font='stroke', height=12)",
-                    ("RGB",)),
-    "curve bezier": ("sl.draw.curve(fb, sl.curves.Bezier([(5, 5), (30, 60), (60, 60), (90, 5)]), "
-                     "color='black')", ("RGB",)),
-    "curve bspline thick": ("sl.draw.curve(fb, sl.curves.BSpline([(5, 5), (20, 60), (50, 30), "
-                            "(70, 60), (90, 5)], order=4), color='black', width=3)", ("RGB",)),
-    "curve filled aa": ("sl.draw.curve(fb, sl.curves.nurbs_circle((48, 32), 20), color='black', "
-                        "fill=True, antialias=True)", ("RGB",)),
-    "dither floyd-steinberg": ("sl.color.dither(np.linspace(0, 1, 96 * 64).reshape(64, 96))",
-                               None),
-    "dither bayer": ("sl.color.dither(np.linspace(0, 1, 96 * 64).reshape(64, 96), 'bayer4', "
-                     "levels=4)", None),
-    "dither palette": ("sl.color.dither(np.random.default_rng(0).integers(0, 256, (64, 96, 3), "
-                       "np.uint8), palette=sl.color.web_safe_table())", None),
-    "median_cut_table": ("sl.color.median_cut_table(np.random.default_rng(0).integers(0, 256, "
-                         "(64, 96, 3), np.uint8), 16)", None),
-    "clip lines cohen-sutherland": ("sl.clip.lines(np.random.default_rng(1).uniform(-50, 150, "
-                                    "(100, 4)), (0, 0, 100, 100), method='cohen-sutherland')", None),
-    "clip lines liang-barsky": ("sl.clip.lines(np.random.default_rng(1).uniform(-50, 150, (100, 4)), "
-                                "(0, 0, 100, 100), method='liang-barsky')", None),
-    "clip line cyrus-beck": ("sl.clip.line(-5, 2, 15, 22, [(0, 0), (10, 0), (12, 8), (4, 12)], "
-                             "method='cyrus-beck')", None),
-    "clip polygon sutherland-hodgman": ("sl.clip.polygon([(0, 0), (10, 0), (10, 10), (5, 2), "
-                                        "(0, 10)], (1, 1, 9, 6))", None),
-    "clip polygon weiler-atherton": ("sl.clip.polygon([(0, 0), (10, 0), (10, 10), (5, 2), (0, 10)], "
-                                     "(1, 1, 9, 6), method='weiler-atherton')", None),
-    "clip polygons": ("sl.clip.polygons([[(0, 0), (10, 0), (10, 10)], [(2, 2), (12, 3), (5, 9)]], "
-                      "(1, 1, 9, 6))", None),
-    "clip ellipse": ("sl.clip.ellipse(5, 5, 8, 3, (0, 0, 10, 10))", None),
-    "clip text": ("sl.clip.text(sl.text.layout('Hello', 0, 0, height=10), (0, 0, 20, 20))", None),
-    "bezier evaluate": ("sl.curves.Bezier([(0, 0), (1, 3), (4, 3), (5, 0)]).evaluate("
-                        "np.linspace(0, 1, 1000))", None),
-    "bspline evaluate": ("sl.curves.BSpline([(0, 0), (1, 2), (3, 3), (4, 0), (6, 1)], order=4, "
-                         "knots='open').evaluate(np.linspace(0, 1, 1000))", None),
-    "curve flatten": ("sl.curves.BSpline([(0, 0), (1, 2), (3, 3), (4, 0), (6, 1)], order=4, "
-                      "knots='open').flatten(0.01)", None),
-    "surface tessellate": ("sl.curves.teapot_mesh(4)", None),
-    "inside": (f"sl.geometry.inside([(32, 30), (5, 5)], {STAR}, rule='nonzero')", None),
-    "display file": ("df = sl.DisplayFile(); df.set_viewing(window=(0, 0, 100, 100), "
-                     "viewport=(0, 0, 1, 1)); df.create_segment('house', priority=1); "
-                     "df.polygon([(20, 10), (80, 10), (80, 60), (20, 60)], color='tan', "
-                     "edge='brown', width=2); df.text((25, 30), 'HOME', height=8, color='black', "
-                     "font='stroke'); df.close_segment(); df.draw(fb)", ("RGB",)),
-    "context": ("ctx = sl.Context(fb); ctx.rotate(0.3, pivot=(48, 32)); "
-                "ctx.set_line(color='red', width=3); ctx.rectangle(30, 20, 30, 20)", ("RGB",)),
-    "four calls": ("sl.draw.line(fb, 3, 4, 90, 50, color='black'); "
-                   f"sl.draw.polygon(fb, {STAR}, color='navy', rule='nonzero'); "
-                   "sl.draw.text(fb, 4, 20, 'Hello', color='black', height=14); "
-                   "sl.draw.circle(fb, 48, 32, 20.5, color='red', antialias=True)", ("RGB",)),
-}
+HERE = os.path.dirname(os.path.abspath(__file__))
 
 #: Command-line cases: name -> argument list (after ``scanline``).
 SCENES = os.path.join(os.path.dirname(HERE), "src", "scanline", "data", "scenes")
@@ -186,7 +68,8 @@ CLI_CASES = {
                      "15", "-o", "{out}/d.png"],
 }
 
-#: Run inside the fresh process for a Python case: argv = [mode, code, out folder].
+#: Run inside the fresh process for a Python case (a call of :mod:`scanline.warmup`):
+#: argv = [mode, code, out folder].
 CHILD = r"""
 import json, os, sys, time
 T0 = time.perf_counter()
@@ -208,12 +91,9 @@ class _Compiles(_event.Listener):
 
 _rec = _Compiles()
 _event.register("numba:compile", _rec)
-import numpy as np
-import scanline as sl
+from scanline.warmup import run_case
 mode, code, out = sys.argv[1], sys.argv[2], sys.argv[3]
-fb = sl.FrameBuffer(96, 64, mode=mode, background="white")
-exec(code)
-fb.save(os.path.join(out, "out.png"))
+run_case(mode if mode != "-" else None, code).save(os.path.join(out, "out.png"))
 seconds = time.perf_counter() - T0
 print(json.dumps({"seconds": seconds, "cpu_s": time.process_time(),
                   "slowest": sorted(_rec.done, reverse=True)[:5]}))
@@ -254,11 +134,11 @@ def run_case(argv, env_extra, timeout=900):
     return record, proc.stdout
 
 
-def cases(selected):
-    """Every case as (name, mode, argv), in table order."""
-    for name, (code, modes) in PY_CASES.items():
-        for mode in modes or ("RGB",):
-            yield name, mode if modes else None, [sys.executable, "-c", CHILD, mode, code, "{out}"]
+def all_cases():
+    """Every case as (name, mode, argv), in table order: the calls of
+    :data:`scanline.warmup.CALLS`, then the commands."""
+    for name, mode, code in cases():
+        yield name, mode, [sys.executable, "-c", CHILD, mode or "-", code, "{out}"]
     scanline = [sys.executable, "-m", "scanline"]
     for name, args in CLI_CASES.items():
         yield name, None, scanline + args
@@ -289,7 +169,7 @@ def main(argv=None):
     parser.add_argument("--demo", action="store_true", help="also time scanline demo cold and warm")
     parser.add_argument("--output", help="JSON file to write (default results/compile.json)")
     args = parser.parse_args(argv)
-    todo = [c for c in cases(None) if not args.only or args.only in c[0]]
+    todo = [c for c in all_cases() if not args.only or args.only in c[0]]
     if args.list:
         for name, mode, _ in todo:
             print(name if mode is None else f"{name} [{mode}]")

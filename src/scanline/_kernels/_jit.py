@@ -1,10 +1,14 @@
 """The one place numba is configured (DESIGN.md, "Layers"; the compile-time rule is in
 :mod:`scanline._kernels`).
 
-Kernels are cached on disk (numba's ``cache=True``).  Where no cache folder can be
-written (a read-only installation with no writable ``NUMBA_CACHE_DIR`` or home
-folder), numba refuses ``cache=True`` when the function is defined; the kernels are
-then compiled uncached in every process, which is slower to start but works.
+Kernels are compiled with numpy's error model: a division by zero gives inf or nan
+(integers: 0) instead of raising, as kernels raise nothing, and numba generates no
+exception paths for divisions (measured: 10-12% less compile time for a polygon fill
+and a thick stroke).  They are cached on disk (numba's ``cache=True``); where no
+cache folder can be written (a read-only installation with no writable
+``NUMBA_CACHE_DIR`` or home folder), numba refuses ``cache=True`` when the function
+is defined, and the kernels are then compiled uncached in every process, which is
+slower to start but works.
 """
 
 import types
@@ -21,9 +25,9 @@ def _compiled(**options):
         try:
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore", NumbaWarning)
-                return njit(cache=True, nogil=True, **options)(fn)
+                return njit(cache=True, nogil=True, error_model="numpy", **options)(fn)
         except RuntimeError:          # "cannot cache function ...: no locator available"
-            return njit(nogil=True, **options)(fn)
+            return njit(nogil=True, error_model="numpy", **options)(fn)
     return decorate
 
 

@@ -28,6 +28,11 @@ from .spans import span
 #: Beyond every coordinate: the open end of a half-line.
 FAR = 1 << 62
 
+#: Shapes (token lengths, :mod:`scanline._kernels.variants`): a fill compiles the
+#: extents of its own shape only.
+CIRCLE = 1
+ELLIPSE = 2
+
 #: How two half-planes combine: both (a convex sector, a chord) or either (a sector
 #: wider than a half-turn).
 BOTH = 0
@@ -180,13 +185,14 @@ def region_spans(buf, layout, width, height, xc, yc, y0, y1, dlo, a, w, outline,
 
 
 @helper
-def curved_region(buf, layout, width, height, xc, yc, rx, ry, circle, outline, hp, combine, color, a, w):
-    """Extents of one circle (``circle``: rx = ry = r) or ellipse, then its spans;
-    ``a`` and ``w`` are scratch tables of at least height + 2 entries."""
+def curved_region(buf, layout, width, height, xc, yc, rx, ry, shape, outline, hp, combine, color, a, w):
+    """Extents of one circle (``shape`` the CIRCLE token: rx = ry = r) or ellipse,
+    then its spans; ``a`` and ``w`` are scratch tables of at least height + 2
+    entries."""
     y0, y1, dlo, dhi = row_band(yc, ry, height)
     if y0 > y1 or xc + rx < 0 or xc - rx > width - 1:
         return
-    if circle:
+    if len(shape) == CIRCLE:
         circle_rows(rx, dlo, dhi, w)
         if outline:
             circle_runs(dlo, dhi, a, w)
@@ -196,18 +202,18 @@ def curved_region(buf, layout, width, height, xc, yc, rx, ry, circle, outline, h
 
 
 @kernel
-def draw_region(buf, layout, width, height, xc, yc, rx, ry, circle, outline, hp, combine, color):
+def draw_region(buf, layout, width, height, xc, yc, rx, ry, shape, outline, hp, combine, color):
     """One filled circle or ellipse (``outline`` False) or its outline, clipped by the
     half-planes ``hp`` (int64, shape (2, 4)) combined by ``combine``."""
     a = np.empty(height + 2, np.int64)
     w = np.empty(height + 2, np.int64)
-    curved_region(buf, layout, width, height, xc, yc, rx, ry, circle, outline, hp, combine, color, a, w)
+    curved_region(buf, layout, width, height, xc, yc, rx, ry, shape, outline, hp, combine, color, a, w)
 
 
 @kernel
-def fill_regions(buf, layout, width, height, shapes, circle, colors):
-    """Fill N circles (``circle``: rows (xc, yc, r)) or ellipses (rows
-    (xc, yc, rx, ry)) with ``colors[i]`` (or ``colors[0]`` for all)."""
+def fill_regions(buf, layout, width, height, shapes, shape, colors):
+    """Fill N circles (``shape`` the CIRCLE token: rows (xc, yc, r)) or ellipses
+    (rows (xc, yc, rx, ry)) with ``colors[i]`` (or ``colors[0]`` for all)."""
     a = np.empty(height + 2, np.int64)
     w = np.empty(height + 2, np.int64)
     whole = np.zeros((2, 4), np.int64)
@@ -224,4 +230,4 @@ def fill_regions(buf, layout, width, height, shapes, circle, colors):
         if not one:
             color = colors[i]
         curved_region(buf, layout, width, height, shapes[i, 0], shapes[i, 1], shapes[i, 2],
-                      shapes[i, last], circle, area, whole, both, color, a, w)
+                      shapes[i, last], shape, area, whole, both, color, a, w)

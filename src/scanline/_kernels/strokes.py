@@ -32,7 +32,9 @@ the true circle.
 
 Dashes are made first: :func:`dash_pieces` cuts each polyline into the open
 polylines ("pieces") where the dash pattern is on, carrying the pattern's phase
-across the vertices, and each piece is stroked with caps and joins of its own.
+across the vertices, and each piece is stroked with caps and joins of its own.  It
+is a kernel of its own (:func:`dashed_polylines`), called before the stroke, so
+that solid strokes do not compile it.
 """
 
 import math
@@ -40,7 +42,6 @@ import math
 import numpy as np
 
 from ._jit import helper, kernel
-from .polygon import fill_polygons
 
 CAP_BUTT = 0
 CAP_ROUND = 1
@@ -234,12 +235,13 @@ def stroke_piece(pts, m, closed, r, cap, join_kind, miter_limit, out, nv, contou
             nv += 4
         return nv, nc + 1
     contours[nc] = nv
-    nv = right_side(pts, m, closed, False, r, cap, join_kind, miter_limit, out, nv)
+    # (``reverse`` as typed values, not literals: one specialization of the side)
+    nv = right_side(pts, m, closed, np.bool_(False), r, cap, join_kind, miter_limit, out, nv)
     nc += 1
     if closed:
         contours[nc] = nv
         nc += 1
-    nv = right_side(pts, m, closed, True, r, cap, join_kind, miter_limit, out, nv)
+    nv = right_side(pts, m, closed, np.bool_(True), r, cap, join_kind, miter_limit, out, nv)
     return nv, nc
 
 
@@ -434,12 +436,18 @@ def dash_pieces(verts, offsets, closed, dashes, phase, box):
     return pv, po[:npc + 1], pc[:npc], pw[:npc]
 
 
-@helper
-def build_strokes(verts, offsets, closed, owner, npoly, r, cap, join_kind, miter_limit):
-    """The stroke outlines of polylines ``offsets`` (``owner[i]`` = the polygon
-    polyline ``i`` belongs to, ascending; -1 to skip) as polygon arrays
-    ``(out, contours, polys, max_edges)`` for ``fill_polygons``: polygon ``q`` is
-    made of contours ``polys[q] .. polys[q + 1] - 1``."""
+@kernel
+def stroke_outlines(verts, offsets, closed, owner, npoly, r, cap, join_kind, miter_limit):
+    """The outlines of the strokes of half-width ``r`` of the polylines
+    ``verts[offsets[i]:offsets[i + 1]]`` (``closed[i]``; ``owner[i]``: the stroke
+    ``q < npoly`` polyline ``i`` belongs to, ascending, -1 to skip), as ``(outline
+    vertices, contour offsets, polygon offsets, max_edges)``: stroke ``q`` is filled
+    by the nonzero rule over contours ``polys[q] .. polys[q + 1] - 1``.  Dashed polylines are cut into their
+    dashes first (:func:`dashed_polylines`, whose owners map the dashes to strokes).
+
+    The API layer fills the outlines with
+    :func:`scanline._kernels.polygon.fill_polygons`: composed in Python rather than
+    in one kernel, each kernel is compiled once for every entry point that needs it."""
     n = offsets.shape[0] - 1
     arcs = arc_capacity(r)
     longest = 1
@@ -477,48 +485,6 @@ def build_strokes(verts, offsets, closed, owner, npoly, r, cap, join_kind, miter
     for p in range(npoly):
         max_edges = max(max_edges, contours[polys[p + 1]] - contours[polys[p]])
     return out[:nv], contours[:nc + 1], polys, max_edges
-
-
-@helper
-def outlines(verts, offsets, closed, r, cap, join_kind, miter_limit, dashes, phase, box):
-    """Stroke outlines of every polyline (dashed when ``dashes`` is not empty; only
-    the dashes that reach ``box`` are made)."""
-    npoly = offsets.shape[0] - 1
-    if dashes.shape[0] == 0:
-        owner = np.arange(npoly)
-        return build_strokes(verts, offsets, closed, owner, npoly, r, cap, join_kind,
-                             miter_limit)
-    pv, po, pc, pw = dash_pieces(verts, offsets, closed, dashes, phase, box)
-    return build_strokes(pv, po, pc, pw, npoly, r, cap, join_kind, miter_limit)
-
-
-@kernel
-def stroke_outlines(verts, offsets, closed, r, cap, join_kind, miter_limit, dashes, phase,
-                    box):
-    """The outlines of the strokes of half-width ``r`` of the polylines
-    ``verts[offsets[i]:offsets[i + 1]]`` (``closed[i]``), as ``(outline vertices,
-    contour offsets, polygon offsets, max_edges)``: stroke ``i`` is filled by the
-    nonzero rule over contours ``polys[i] .. polys[i + 1] - 1``.  Dashes are made
-    only where they can reach ``box`` (xmin, ymin, xmax, ymax), which must contain
-    the visible area widened by the reach of joins and caps."""
-    return outlines(verts, offsets, closed, r, cap, join_kind, miter_limit, dashes, phase,
-                    box)
-
-
-@kernel
-def draw_strokes(buf, layout, width, height, ox, oy, verts, offsets, closed, colors, r,
-                 cap, join_kind, miter_limit, dashes, phase, rule):
-    """Stroke polylines into the raster whose pixel (0, 0) is device pixel (ox, oy):
-    the outlines of :func:`stroke_outlines` filled with ``rule`` (the nonzero rule's
-    code, passed in rather than written here: a constant argument would compile
-    :func:`scanline._kernels.polygon.fill_polygons` a second time, for a literal
-    rule), polyline ``i`` in ``colors[i]`` (or ``colors[0]`` for all)."""
-    reach = r * max(miter_limit, 2.0) + 2.0
-    box = np.array([ox - reach, oy - reach, ox + width - 1 + reach, oy + height - 1 + reach])
-    out, contours, polys, max_edges = outlines(verts, offsets, closed, r, cap, join_kind,
-                                               miter_limit, dashes, phase, box)
-    fill_polygons(buf, layout, width, height, ox, oy, out, contours, polys, colors, rule,
-                  max_edges)
 
 
 @kernel

@@ -182,7 +182,8 @@ def dither(source, method="floyd-steinberg", levels=None, palette=None, *, mode=
     pixels = image(source, keep_uint8=True)
     lut = UNIT_LUT if pixels.dtype == np.uint8 else None
     # what the kernels store for each level: a bit, or a gray (channel) value
-    values = np.arange(2, dtype=np.uint8) if out_mode == "1" else gray_table(levels)[:, 0]
+    values = np.arange(2, dtype=np.uint8) if out_mode == "1" else \
+        np.ascontiguousarray(gray_table(levels)[:, 0])
     out = np.empty((pixels.shape[2],) + pixels.shape[:2], np.uint8)
     for k in range(pixels.shape[2]):   # channels are independent
         channel = np.ascontiguousarray(pixels[:, :, k])

@@ -15,7 +15,7 @@ import numpy as np
 
 from .. import _validate as v
 from .._kernels import curved as k
-from .._kernels.variants import layout
+from .._kernels.variants import layout, token
 from . import _blend
 from ._common import colors, target
 from .conics import _check_ellipse, circle, ellipse
@@ -52,10 +52,15 @@ def _axes(rx, ry):
     return rx, ry, rx == ry
 
 
+def _shape(is_circle):
+    """The kernels' shape token of a circle or an ellipse."""
+    return token(k.CIRCLE if is_circle else k.ELLIPSE)
+
+
 def _paint(fb, color, style, xc, yc, rx, ry, is_circle, hp, combine, outline):
     def draw(buf, packed, width, height, ox, oy, pixel):
-        k.draw_region(buf, layout(packed), width, height, xc - ox, yc - oy, rx, ry, is_circle, False,
-                      hp, combine, pixel)
+        k.draw_region(buf, layout(packed), width, height, xc - ox, yc - oy, rx, ry,
+                      _shape(is_circle), False, hp, combine, pixel)
 
     _blend.fill(fb, color, style, (xc - rx, yc - ry, xc + rx, yc + ry), draw, outline)
 
@@ -81,7 +86,8 @@ def _translucent_batch(fb, arr, circle, color):
         row = arr[i:i + 1].copy()
         row[0, 0] -= ox
         row[0, 1] -= oy
-        k.fill_regions(buf, layout(packed), width, height, row, circle, value.reshape(1, -1))
+        k.fill_regions(buf, layout(packed), width, height, row, _shape(circle),
+                       value.reshape(1, -1))
 
     ry = arr[:, 2] if circle else arr[:, 3]
     boxes = np.stack([arr[:, 0] - arr[:, 2], arr[:, 1] - ry, arr[:, 0] + arr[:, 2],
@@ -215,7 +221,8 @@ def fill_circles(fb, circles, color="white", antialias=False):
     if _blend.translucent(color):
         _translucent_batch(fb, arr, True, color)
         return
-    k.fill_regions(buf, layout(packed), width, height, arr, True, colors(fb, color, len(arr)))
+    k.fill_regions(buf, layout(packed), width, height, arr, _shape(True),
+                   colors(fb, color, len(arr)))
 
 
 def fill_ellipses(fb, ellipses, color="white", antialias=False):
@@ -235,7 +242,8 @@ def fill_ellipses(fb, ellipses, color="white", antialias=False):
     if _blend.translucent(color):
         _translucent_batch(fb, arr, False, color)
         return
-    k.fill_regions(buf, layout(packed), width, height, arr, False, colors(fb, color, len(arr)))
+    k.fill_regions(buf, layout(packed), width, height, arr, _shape(False),
+                   colors(fb, color, len(arr)))
 
 
 # -- arcs, chords and pies ----------------------------------------------------------------
@@ -379,8 +387,8 @@ def arc(fb, xc, yc, rx, ry, start, end, color="white"):
         return
 
     def draw(buf, packed, width, height, ox, oy, value):
-        k.draw_region(buf, layout(packed), width, height, xc - ox, yc - oy, rx, ry, is_circle, True,
-                      *region, value)
+        k.draw_region(buf, layout(packed), width, height, xc - ox, yc - oy, rx, ry,
+                      _shape(is_circle), True, *region, value)
 
     _blend.paint(fb, color, (xc - rx, yc - ry, xc + rx, yc + ry), draw)
 

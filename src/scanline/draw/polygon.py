@@ -237,5 +237,8 @@ def polygons(fb, polygons, color="white", rule="even-odd", counts=None, antialia
         boxes = [_bbox(verts[offsets[polys[i]]:offsets[polys[i + 1]]]) for i in range(n)]
         _blend.paint_each(fb, color, n, boxes, draw)
         return
-    k.fill_polygons(buf, layout(packed), width, height, 0, 0, verts, offsets, polys,
-                    colors(fb, color, n), code, most)
+    values = colors(fb, color, n)
+    if len(values) == 1 and n > 1:   # one color: the order cannot change the image
+        verts, offsets, polys = k.band_reordered(verts, offsets, polys, 0, height)
+    k.fill_polygons(buf, layout(packed), width, height, 0, 0, verts, offsets, polys, values,
+                    code, most)

@@ -20,6 +20,7 @@ import numpy as np
 
 from .. import _validate as v
 from .._kernels import linetype as kl
+from .._kernels import polygon as kp
 from .._kernels.polygon import NONZERO
 from .._kernels import strokes as ks
 from .._kernels.variants import layout
@@ -150,15 +151,26 @@ def _painter(style, verts, offsets, closed):
                               closed[a:b], values, kind, mask, dashes, phase, pen, margin)
         return draw
     lengths, phase = style.lengths()
-    dashes = _NO_DASHES if lengths is None else np.array(lengths, np.float64)
     cap, join = CAPS[style.cap], JOINS[style.join]
     r = 0.5 * style.width
 
     def draw(buf, packed, width, height, ox, oy, values, a, b):
         o = offsets[a:b + 1]
-        ks.draw_strokes(buf, layout(packed), width, height, ox, oy, verts[o[0]:o[-1]], o - o[0],
-                        closed[a:b], values, r, cap, join, style.miter_limit, dashes,
-                        float(phase), NONZERO)
+        pieces = verts[o[0]:o[-1]], o - o[0], closed[a:b]
+        if lengths is None:
+            owner = np.arange(b - a)
+        else:   # the dashes that can reach the raster, widened by the reach of joins
+            reach = r * max(style.miter_limit, 2.0) + 2.0
+            box = np.array([ox - reach, oy - reach, ox + width - 1 + reach,
+                            oy + height - 1 + reach])
+            *pieces, owner = ks.dashed_polylines(*pieces, np.array(lengths, np.float64),
+                                                 float(phase), box)
+        out, contours, polys, most = ks.stroke_outlines(*pieces, owner, b - a, r, cap, join,
+                                                        style.miter_limit)
+        if len(values) == 1 and b - a > 1:   # one color: any order gives the same image
+            out, contours, polys = kp.band_reordered(out, contours, polys, oy, height)
+        kp.fill_polygons(buf, layout(packed), width, height, ox, oy, out, contours, polys,
+                         values, NONZERO, most)
     return draw
 
 
@@ -230,10 +242,16 @@ def _antialiased(fb, verts, offsets, closed, color, style):
             owners = np.concatenate(seg_owner)
             aa.lines(fb, np.concatenate(segs), _per_piece(color, owners))
         return
-    dashes = _NO_DASHES if lengths is None else np.array(lengths, np.float64)
+    npoly = len(offsets) - 1
+    if lengths is None:
+        owner = np.arange(npoly)
+    else:
+        verts, offsets, closed, owner = ks.dashed_polylines(
+            verts, offsets, closed, np.array(lengths, np.float64), float(phase),
+            _view(fb, _margin(style)))
     out, contours, polys, _ = ks.stroke_outlines(
-        verts, offsets, closed, 0.5 * style.width, CAPS[style.cap], JOINS[style.join],
-        style.miter_limit, dashes, float(phase), _view(fb, _margin(style)))
+        verts, offsets, closed, owner, npoly, 0.5 * style.width, CAPS[style.cap],
+        JOINS[style.join], style.miter_limit)
     # the outlines are already flat arrays (vertices, contour offsets, shape offsets):
     # hand them over as they are rather than as lists of contours
     aa.fills_flat(fb, out, contours, polys, color, "nonzero")

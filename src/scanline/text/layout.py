@@ -74,10 +74,11 @@ class Placement:
 
 
 def codes_of(text):
-    """Code points of a string as a uint32 array."""
+    """Code points of a string as a uint32 array (writable, as kernels take arrays:
+    a read-only one would compile a second specialization)."""
     if not isinstance(text, str):
         raise ArgumentTypeError(f"text must be a str, got {v._show(text)}")
-    return np.frombuffer(text.encode("utf-32-le", "surrogatepass"), np.uint32)
+    return np.frombuffer(bytearray(text.encode("utf-32-le", "surrogatepass")), np.uint32)
 
 
 def _segments(line):

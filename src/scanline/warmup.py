@@ -1,0 +1,227 @@
+"""Compiling the kernels ahead of time: one representative call of every public entry
+point that reaches a numba kernel, in every frame-buffer mode where the mode matters.
+
+numba compiles a kernel on its first call and caches it on disk; a process that finds
+it in the cache loads it in milliseconds.  :data:`CALLS` is the list of calls that
+reaches every kernel: :func:`run` makes them (``scanline warmup`` does it in parallel
+processes, for images built for containers or CI caches), ``benchmarks/compile.py``
+times each one in a fresh process with an empty cache (the compile-time budget of
+:mod:`scanline._kernels`), and ``tests/test_compile_budget.py`` counts the
+specializations they produce.
+
+>>> sorted({group for group, _, _ in CALLS.values()})[:4]
+['antialias', 'clip', 'conics', 'curved']
+"""
+
+import time
+
+#: The frame-buffer modes.
+MODES = ("1", "L", "RGB", "RGBA", "P")
+
+RGB = ("RGB",)
+STAR = "[(48, 60), (20, 4), (92, 40), (4, 40), (76, 4)]"
+TRIANGLE = "[(3, 4), (80, 20), (30, 60)]"
+PATH = "[(3, 4), (50, 60), (90, 5)]"
+DISK = "sl.draw.circle(fb, 48, 32, 20, color='black'); "
+
+#: name -> (group, code, modes).  The code runs with ``sl`` (scanline), ``np`` (numpy)
+#: and ``fb``, a 96 x 64 frame buffer with a white background in each mode listed;
+#: modes ``None``: the call does not draw into ``fb``.  ``group`` names the kernels
+#: the call mostly reaches (a parallel warm-up gives each group to one process).
+CALLS = {
+    "line": ("lines", "sl.draw.line(fb, 3, 4, 90, 50, color='black')", MODES),
+    "line dda": ("lines", "sl.draw.line(fb, 3, 4, 90, 50, color='black', method='dda')", RGB),
+    "lines": ("lines", "sl.draw.lines(fb, np.array([[3, 4, 90, 50], [0, 60, 95, 0]]), "
+                       "color='black')", MODES),
+    "line translucent": ("lines", "sl.draw.line(fb, 3, 4, 90, 50, color=(255, 0, 0, 128))",
+                         ("RGB", "RGBA")),
+    "circle": ("conics", "sl.draw.circle(fb, 48, 32, 20, color='black')", MODES),
+    "circles": ("conics", "sl.draw.circles(fb, [[48, 32, 20], [20, 20, 9]], color='black')",
+                MODES),
+    "ellipse": ("conics", "sl.draw.ellipse(fb, 48, 32, 30, 12, color='black')", MODES),
+    "ellipses": ("conics", "sl.draw.ellipses(fb, [[48, 32, 30, 12], [20, 20, 9, 4]], "
+                           "color='black')", RGB),
+    "line aa": ("antialias", "sl.draw.line(fb, 3.5, 4, 90, 50.2, color='black', "
+                             "antialias=True)", MODES),
+    "lines aa": ("antialias", "sl.draw.lines(fb, [[3, 4, 90, 50], [0, 60, 95, 0]], "
+                              "color='black', antialias=True)", MODES),
+    "circle aa": ("antialias", "sl.draw.circle(fb, 48, 32, 20.5, color='black', "
+                               "antialias=True)", MODES),
+    "ellipse aa": ("antialias", "sl.draw.ellipse(fb, 48, 32, 30, 12.5, color='black', "
+                                "antialias=True)", RGB),
+    "polygon aa": ("antialias", f"sl.draw.polygon(fb, {STAR}, color='black', antialias=True)",
+                   MODES),
+    "polygons aa": ("antialias", f"sl.draw.polygons(fb, [{STAR}, {TRIANGLE}], color='black', "
+                                 "antialias=True)", RGB),
+    "fill_circle aa": ("antialias", "sl.draw.fill_circle(fb, 48, 32, 20.5, color='black', "
+                                    "antialias=True)", MODES),
+    "fill_ellipses aa": ("antialias", "sl.draw.fill_ellipses(fb, [[48, 32, 30, 12]], "
+                                      "color='black', antialias=True)", RGB),
+    "polyline thick aa": ("antialias", f"sl.draw.polyline(fb, {PATH}, color='black', width=5, "
+                                       "join='round', antialias=True)", MODES),
+    "curve filled aa": ("antialias", "sl.draw.curve(fb, sl.curves.nurbs_circle((48, 32), 20), "
+                                     "color='black', fill=True, antialias=True)", RGB),
+    "text outline aa": ("antialias", "sl.draw.text(fb, 4, 20, 'Hello', color='black', "
+                                     "height=14, antialias=True)", RGB),
+    "polygon": ("polygon", f"sl.draw.polygon(fb, {STAR}, color='black')", MODES),
+    "polygon nonzero": ("polygon", f"sl.draw.polygon(fb, {STAR}, color='black', "
+                                   "rule='nonzero')", RGB),
+    "polygons": ("polygon", f"sl.draw.polygons(fb, [{STAR}, {TRIANGLE}], color='black')", RGB),
+    "polygon hatch": ("polygon", f"sl.draw.polygon(fb, {STAR}, color='black', "
+                                 "style=sl.FillStyle.hatch(angle=0.8, spacing=6, cross=True))",
+                      RGB),
+    "polygon translucent": ("polygon", f"sl.draw.polygon(fb, {STAR}, color=(255, 0, 0, 128))",
+                            ("RGB", "RGBA")),
+    "inside": ("polygon", f"sl.geometry.inside([(32, 30), (5, 5)], {STAR}, rule='nonzero')",
+               None),
+    "fill_circle": ("curved", "sl.draw.fill_circle(fb, 48, 32, 20, color='black')", MODES),
+    "fill_circles": ("curved", "sl.draw.fill_circles(fb, [[48, 32, 20], [20, 20, 9]], "
+                               "color='black')", RGB),
+    "fill_ellipse": ("curved", "sl.draw.fill_ellipse(fb, 48, 32, 30, 12, color='black')", RGB),
+    "arc": ("curved", "sl.draw.arc(fb, 48, 32, 30, 20, 0.2, 2.5, color='black')", RGB),
+    "pie": ("curved", "sl.draw.pie(fb, 48, 32, 30, 20, 0.2, 2.5, color='black')", RGB),
+    "chord": ("curved", "sl.draw.chord(fb, 48, 32, 30, 20, 0.2, 2.5, color='black')", RGB),
+    "polyline": ("strokes", f"sl.draw.polyline(fb, {PATH}, color='black')", RGB),
+    "polyline thick round": ("strokes", f"sl.draw.polyline(fb, {PATH}, color='black', width=5, "
+                                        "cap='round', join='round')", MODES),
+    "polyline thick miter": ("strokes", f"sl.draw.polyline(fb, {PATH}, color='black', width=5, "
+                                        "join='miter')", RGB),
+    "polyline dashed": ("strokes", f"sl.draw.polyline(fb, {PATH}, color='black', dash=(6, 3))",
+                        RGB),
+    "polyline dashed thick": ("strokes", f"sl.draw.polyline(fb, {PATH}, color='black', "
+                                         "dash=(6, 3), width=3)", RGB),
+    "polyline mask": ("strokes", f"sl.draw.polyline(fb, {PATH}, color='black', "
+                                 "dash=0b1111000011110000)", RGB),
+    "polyline pen": ("strokes", f"sl.draw.polyline(fb, {PATH}, color='black', pen='circle', "
+                                "width=3)", RGB),
+    "polylines": ("strokes", "sl.draw.polylines(fb, [[(3, 4), (50, 60)], [(90, 5), (10, 50), "
+                             "(60, 10)]], color='black', width=3)", RGB),
+    "circle thick": ("strokes", "sl.draw.circle(fb, 48, 32, 20, color='black', width=4)", RGB),
+    "circle dashed": ("strokes", "sl.draw.circle(fb, 48, 32, 20, color='black', dash=(4, 2))",
+                      RGB),
+    "curve bspline thick": ("strokes", "sl.draw.curve(fb, sl.curves.BSpline([(5, 5), (20, 60), "
+                                       "(50, 30), (70, 60), (90, 5)], order=4), color='black', "
+                                       "width=3)", RGB),
+    "flood_fill": ("seedfill", DISK + "sl.draw.flood_fill(fb, 48, 32, 'red')", MODES),
+    "flood_fill 8": ("seedfill", DISK + "sl.draw.flood_fill(fb, 48, 32, 'red', connectivity=8)",
+                     RGB),
+    "boundary_fill": ("seedfill", DISK + "sl.draw.boundary_fill(fb, 48, 32, 'red', "
+                                         "boundary='black')", MODES),
+    "soft_fill": ("seedfill", "sl.draw.fill_circle(fb, 48, 32, 20, color='black', "
+                              "antialias=True); sl.draw.soft_fill(fb, 48, 32, 'red', 'black', "
+                              "'white')", RGB),
+    "text outline": ("text", "sl.draw.text(fb, 4, 20, 'Hello', color='black', height=14)", MODES),
+    "text outline rotated": ("text", "sl.draw.text(fb, 4, 20, 'Hello', color='black', height=14, "
+                                     "angle=0.3)", RGB),
+    "text bitmap": ("text", "sl.draw.text(fb, 4, 20, 'Hello', color='black', font='bitmap')",
+                    RGB),
+    "text stroke": ("text", "sl.draw.text(fb, 4, 20, 'Hello', color='black', font='stroke', "
+                            "height=12)", RGB),
+    "clip text": ("text", "sl.clip.text(sl.text.layout('Hello', 0, 0, height=10), "
+                          "(0, 0, 20, 20))", None),
+    "curve bezier": ("curves", "sl.draw.curve(fb, sl.curves.Bezier([(5, 5), (30, 60), (60, 60), "
+                               "(90, 5)]), color='black')", RGB),
+    "bezier evaluate": ("curves", "sl.curves.Bezier([(0, 0), (1, 3), (4, 3), (5, 0)])"
+                                  ".evaluate(np.linspace(0, 1, 1000))", None),
+    "bspline evaluate": ("curves", "sl.curves.BSpline([(0, 0), (1, 2), (3, 3), (4, 0), (6, 1)], "
+                                   "order=4, knots='open').evaluate(np.linspace(0, 1, 1000))",
+                         None),
+    "curve flatten": ("curves", "sl.curves.BSpline([(0, 0), (1, 2), (3, 3), (4, 0), (6, 1)], "
+                                "order=4, knots='open').flatten(0.01)", None),
+    "surface tessellate": ("curves", "sl.curves.teapot_mesh(4)", None),
+    "dither floyd-steinberg": ("dither", "sl.color.dither(np.linspace(0, 1, 96 * 64)"
+                                         ".reshape(64, 96))", None),
+    "dither bayer": ("dither", "sl.color.dither(np.linspace(0, 1, 96 * 64).reshape(64, 96), "
+                               "'bayer4', levels=4)", None),
+    "dither palette": ("dither", "sl.color.dither(np.random.default_rng(0).integers(0, 256, "
+                                 "(64, 96, 3), np.uint8), palette=sl.color.web_safe_table())",
+                       None),
+    "median_cut_table": ("dither", "sl.color.median_cut_table(np.random.default_rng(0)"
+                                   ".integers(0, 256, (64, 96, 3), np.uint8), 16)", None),
+    "clip lines cohen-sutherland": ("clip", "sl.clip.lines(np.random.default_rng(1).uniform("
+                                            "-50, 150, (100, 4)), (0, 0, 100, 100), "
+                                            "method='cohen-sutherland')", None),
+    "clip lines liang-barsky": ("clip", "sl.clip.lines(np.random.default_rng(1).uniform(-50, "
+                                        "150, (100, 4)), (0, 0, 100, 100), "
+                                        "method='liang-barsky')", None),
+    "clip line cyrus-beck": ("clip", "sl.clip.line(-5, 2, 15, 22, [(0, 0), (10, 0), (12, 8), "
+                                     "(4, 12)], method='cyrus-beck')", None),
+    "clip polygon sutherland-hodgman": ("clip", "sl.clip.polygon([(0, 0), (10, 0), (10, 10), "
+                                                "(5, 2), (0, 10)], (1, 1, 9, 6))", None),
+    "clip polygon weiler-atherton": ("clip", "sl.clip.polygon([(0, 0), (10, 0), (10, 10), "
+                                             "(5, 2), (0, 10)], (1, 1, 9, 6), "
+                                             "method='weiler-atherton')", None),
+    "clip polygons": ("clip", "sl.clip.polygons([[(0, 0), (10, 0), (10, 10)], [(2, 2), "
+                              "(12, 3), (5, 9)]], (1, 1, 9, 6))", None),
+    "clip ellipse": ("clip", "sl.clip.ellipse(5, 5, 8, 3, (0, 0, 10, 10))", None),
+    "display file": ("display", "df = sl.DisplayFile(); df.set_viewing(window=(0, 0, 100, 100), "
+                                "viewport=(0, 0, 1, 1)); df.create_segment('house'); "
+                                "df.polygon([(20, 10), (80, 10), (80, 60), (20, 60)], "
+                                "color='tan', edge='brown', width=2); df.text((25, 30), 'HOME', "
+                                "height=8, color='black', font='stroke'); df.close_segment(); "
+                                "df.draw(fb)", RGB),
+    "context": ("display", "ctx = sl.Context(fb); ctx.rotate(0.3, pivot=(48, 32)); "
+                           "ctx.set_line(color='red', width=3); ctx.rectangle(30, 20, 30, 20)",
+                RGB),
+    "four calls": ("mixed", "sl.draw.line(fb, 3, 4, 90, 50, color='black'); "
+                            f"sl.draw.polygon(fb, {STAR}, color='navy', rule='nonzero'); "
+                            "sl.draw.text(fb, 4, 20, 'Hello', color='black', height=14); "
+                            "sl.draw.circle(fb, 48, 32, 20.5, color='red', antialias=True)", RGB),
+}
+
+
+def cases(names=None, modes=MODES):
+    """``(name, mode, code)`` for the calls ``names`` (default: all) in ``modes`` (a
+    call that does not draw runs once, with mode None)."""
+    for name in names or CALLS:
+        _, code, call_modes = CALLS[name]
+        if call_modes is None:
+            yield name, None, code
+        else:
+            for mode in call_modes:
+                if mode in modes:
+                    yield name, mode, code
+
+
+def run_case(mode, code):
+    """Make one call: ``code`` with ``sl``, ``np`` and a fresh 96 x 64 ``fb`` (white,
+    in ``mode``; RGB for calls that do not draw).  Returns the frame buffer."""
+    import numpy as np
+
+    import scanline as sl
+
+    fb = sl.FrameBuffer(96, 64, mode=mode or "RGB", background="white")
+    exec(code, {"sl": sl, "np": np, "fb": fb})
+    return fb
+
+
+def run(names=None, modes=MODES, progress=None):
+    """Make the calls ``names`` (default: every call) in ``modes``, compiling or
+    loading every kernel they reach; returns the seconds each took, by
+    ``(name, mode)``.  ``progress(done, total, name)`` is called after each."""
+    todo = list(cases(names, modes))
+    seconds = {}
+    for i, (name, mode, code) in enumerate(todo):
+        t0 = time.perf_counter()
+        run_case(mode, code)
+        seconds[name, mode] = time.perf_counter() - t0
+        if progress is not None:
+            progress(i + 1, len(todo), name)
+    return seconds
+
+
+def groups(jobs, modes=MODES):
+    """The calls split into ``jobs`` lists of names, whole groups to one list,
+    balanced by the number of calls (so that two processes rarely compile the same
+    kernel)."""
+    sizes = {}
+    for name, mode, _ in cases(None, modes):
+        group = CALLS[name][0]
+        sizes[group] = sizes.get(group, 0) + 1
+    parts = [[] for _ in range(jobs)]
+    load = [0] * jobs
+    for group in sorted(sizes, key=lambda g: -sizes[g]):
+        k = load.index(min(load))
+        parts[k] += [name for name, (g, _, _) in CALLS.items() if g == group]
+        load[k] += sizes[group]
+    return [p for p in parts if p]

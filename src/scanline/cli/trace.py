@@ -38,6 +38,16 @@ ALGORITHMS = {
          "Y": "y of the seed (0 = bottom row of the grid)"},
         False,
     ),
+    "boundary-fill": (
+        "the scan-line boundary fill with its stack (notes, chapter 2, Q.8)",
+        {"X": "x of the seed (0 = left column of the grid)",
+         "Y": "y of the seed (0 = bottom row of the grid)"},
+        False,
+    ),
+    "scan-line-fill": (
+        "the scan-line polygon fill: edge table, active edge list, spans (notes, chapter 2, "
+        "Q.8)", {}, False,
+    ),
     "de-casteljau": (
         "de Casteljau's triangle for a Bezier curve (notes, chapter 5, Q.1)", {}, False,
     ),
@@ -55,22 +65,31 @@ ALGORITHMS = {
         "Cyrus-Beck line clipping against a convex polygon (notes, chapter 4, Q.4, Table 1)",
         {}, False,
     ),
+    "sutherland-hodgman": (
+        "Sutherland-Hodgman polygon clipping, boundary by boundary (notes, chapter 4)",
+        {}, False,
+    ),
 }
 
 
 def fill_options(sub):
-    """``--grid`` and ``--connectivity`` of ``flood-fill``; returns their names."""
+    """``--grid`` and ``--connectivity`` of ``flood-fill`` (and ``--boundary`` of
+    ``boundary-fill``); returns their names."""
     sub.add_argument("--grid", help="rows of characters, top row first, separated by '/' "
                      "(e.g. '#####/#..##/#...#/#####'); each character is a color; "
                      "default: a built-in example with two rooms")
     sub.add_argument("--connectivity", type=integer, choices=(4, 8), default=4,
                      help="4 (default): edge neighbors; 8: edge and corner neighbors")
+    if sub.prog.endswith("boundary-fill"):
+        sub.add_argument("--boundary", default="#", help="the boundary color(s): grid "
+                         "characters (default '#')")
+        return ["grid", "connectivity", "boundary"]
     return ["grid", "connectivity"]
 
 
 #: Algorithms with options of their own: CLI name -> function that adds them to the
 #: sub-command's parser and returns their names (passed on as keywords).
-OPTIONS = {"flood-fill": fill_options}
+OPTIONS = {"flood-fill": fill_options, "boundary-fill": fill_options}
 
 
 def numbers(text):
@@ -121,6 +140,26 @@ def clip_options(sub):
 
 OPTIONS.update({"cohen-sutherland": clip_options, "liang-barsky": clip_options,
                 "cyrus-beck": clip_options})
+
+
+def polygon_options(sub):
+    """The polygon's vertices and ``--rule`` (scan-line-fill) or ``--window`` /
+    ``--window-polygon`` (sutherland-hodgman)."""
+    sub.add_argument("points", metavar="X,Y", nargs="+", type=numbers,
+                     help="the polygon's vertices, each 'x,y' (put '--' before them if the "
+                     "first starts with '-')")
+    if sub.prog.endswith("scan-line-fill"):
+        sub.add_argument("--rule", choices=("even-odd", "nonzero"), default="even-odd",
+                         help="the inside-outside rule (default even-odd)")
+        return ["points", "rule"]
+    sub.add_argument("--window", nargs=4, type=float, metavar=("XMIN", "YMIN", "XMAX", "YMAX"),
+                     help="the clip rectangle (default 0 0 10 10)")
+    sub.add_argument("--window-polygon", type=numbers, metavar="X,Y,X,Y,...",
+                     help="a convex clip polygon instead (either orientation)")
+    return ["points", "window", "window_polygon"]
+
+
+OPTIONS.update({"scan-line-fill": polygon_options, "sutherland-hodgman": polygon_options})
 
 FORMATS = ("table", "csv", "json")
 

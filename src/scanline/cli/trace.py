@@ -186,7 +186,18 @@ def register(subparsers):
         "Negative numbers work as arguments: scanline trace dda -5 3 10 -2",
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
+    for sub in add_algorithms(parser, run).values():
+        sub.add_argument("--format", choices=FORMATS, default="table",
+                         help="table (default): aligned text with the set-up notes; "
+                         "csv: a header and one line per row; json: a list of row objects")
+
+
+def add_algorithms(parser, run):
+    """One sub-command per algorithm under ``parser``, each taking the algorithm's
+    arguments and running ``run(args)`` (``scanline trace`` and ``scanline explain``
+    share them); returns them by name."""
     algorithms = parser.add_subparsers(title="algorithms", metavar="ALGORITHM", required=True)
+    subs = {}
     for name, (description, params, centered) in ALGORITHMS.items():
         sub = algorithms.add_parser(name, help=description, description=f"Trace {description}.")
         for param, text in params.items():
@@ -194,22 +205,26 @@ def register(subparsers):
         if centered:
             sub.add_argument("--center", nargs=2, metavar=("XC", "YC"), type=integer,
                              help="center; adds the plotted pixel (xc + x, yc + y) to each row")
-        sub.add_argument("--format", choices=FORMATS, default="table",
-                         help="table (default): aligned text with the set-up notes; "
-                         "csv: a header and one line per row; json: a list of row objects")
         extra = OPTIONS[name](sub) if name in OPTIONS else []
         sub.set_defaults(run=run, algorithm=name, params=[p.lower() for p in params],
                          options=extra)
+        subs[name] = sub
+    return subs
 
 
-def run(args):
-    """Print the table of ``args.algorithm`` in ``args.format``."""
+def table_of(args):
+    """The step table the parsed arguments of an algorithm sub-command ask for."""
     from ..trace import ALGORITHMS as functions
 
     values = [getattr(args, p) for p in args.params]
     options = {"center": args.center} if "center" in vars(args) else {}
     options.update({o: getattr(args, o) for o in args.options if getattr(args, o) is not None})
-    table = functions[args.algorithm](*values, **options)
+    return functions[args.algorithm](*values, **options)
+
+
+def run(args):
+    """Print the table of ``args.algorithm`` in ``args.format``."""
+    table = table_of(args)
     if args.format == "json":
         print(table.to_json(indent=2))
     elif args.format == "csv":

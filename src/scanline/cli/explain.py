@@ -22,5 +22,5 @@ def run(args):
     """Trace the case and write the page."""
     from ..studio.page import explain
 
-    explain(args.algorithm, args, args.output)
+    explain(args, args.output)
     print(f"scanline explain: wrote {args.output}")

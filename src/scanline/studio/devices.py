@@ -26,7 +26,7 @@ def _display_file(extra=0):
     if extra:
         rng = np.random.default_rng(extra)
         df.create_segment("extra lines")
-        for a in rng.uniform(0, 40, (extra, 2)):
+        for a in rng.uniform((2, -3), (38, 33), (extra, 2)):   # inside the window
             df.polyline([a, a + rng.uniform(-2, 2, 2)], color="cyan")
         df.close_segment()
     return df

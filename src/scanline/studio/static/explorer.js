@@ -177,6 +177,8 @@ function render() {
 }
 
 function show(view, step) {
+  // while a handle is dragged the grid stays put, so the pointer keeps its meaning
+  if (state.drag && state.view) view.bounds = state.view.bounds;
   state.view = view;
   state.step = Math.max(0, Math.min(step, view.steps.length - 1));
   $("title").textContent = view.title;

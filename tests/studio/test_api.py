@@ -35,28 +35,30 @@ def test_every_traced_algorithm_is_offered(client):
 def test_bresenham_view_is_the_trace(client):
     view = post(client, "bresenham", ["20", "10", "30", "18"]).json()
     t = sl.trace.bresenham(20, 10, 30, 18)
-    assert view["rows"] == t.rows and view["columns"] == t.columns
-    assert view["before"] == [[20, 10]]
-    assert [s["pixels"] for s in view["steps"]] == [[[r["x"], r["y"]]] for r in t.rows]
-    plotted = {tuple(p) for s in view["steps"] for p in s["pixels"]} | {(20, 10)}
-    assert plotted == t.pixels()
-    assert view["steps"][2]["rule"].startswith("p_2 = -2 < 0")
+    assert explorer.rows_of(view) == t.rows and view["columns"] == t.columns
+    assert view["before"] == [[20, 10]] and view["pixel_columns"] == ["x", "y"]
+    assert {(r["x"], r["y"]) for r in t.rows} | {(20, 10)} == t.pixels()
+    rules = view["rules"]
+    assert [rules["templates"][i].split(":")[0] for i in rules["pick"][:3]] == [
+        "p_{k} = {p} >= 0", "p_{k} = {p} >= 0", "p_{k} = {p} < 0"]     # p = 6, 2, -2
     assert view["handles"][1]["tokens"] == [view["args"].index("30"), view["args"].index("18")]
 
 
 @pytest.mark.parametrize("algorithm", sorted(explorer.DEFAULTS))
 def test_each_default_view_has_one_step_per_row(client, algorithm):
     view = post(client, algorithm, explorer.DEFAULTS[algorithm]).json()
-    assert len(view["steps"]) == len(view["rows"]) > 0
+    assert view["count"] == len(view["rows"]) > 0
+    assert len(view["steps"] or view["rules"]["pick"]) == view["count"]
     ns = explorer.parse(algorithm, explorer.DEFAULTS[algorithm])
     from scanline.cli.trace import table_of
-    assert view["rows"] == json.loads(table_of(ns).to_json())
+    assert explorer.rows_of(view) == json.loads(table_of(ns).to_json())
     # the canonical arguments parse to the same case
     again = post(client, algorithm, view["args"]).json()
     assert again["rows"] == view["rows"]
     if algorithm in ("flood-fill", "boundary-fill", "scan-line-fill", "midpoint-circle",
-                     "midpoint-ellipse", "dda"):
-        painted = {tuple(p) for s in view["steps"] for p in s["pixels"]} | {
+                     "midpoint-ellipse", "dda", "bresenham"):
+        steps = view["steps"] or [{"pixels": [[r["x"], r["y"]]]} for r in explorer.rows_of(view)]
+        painted = {tuple(p) for s in steps for p in s["pixels"]} | {
             tuple(p) for p in view["before"]}
         assert painted == table_of(ns).pixels()
 
@@ -130,7 +132,8 @@ def test_fuzzed_explore_requests_never_crash(client, algorithm, args):
     r = post(client, algorithm, args)
     assert r.status_code in (200, 422), r.text
     if r.status_code == 200:
-        assert len(r.json()["steps"]) == len(r.json()["rows"])
+        v = r.json()
+        assert len(v["steps"] or v["rules"]["pick"]) == len(v["rows"]) == v["count"]
 
 
 # -- the workstation ------------------------------------------------------------------

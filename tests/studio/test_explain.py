@@ -17,7 +17,8 @@ def test_the_page_embeds_the_trace_and_needs_nothing_else(tmp_path):
     out = tmp_path / "b.html"
     assert main(["explain", "bresenham", "20", "10", "30", "18", "-o", str(out)]) == 0
     text, view = embedded(out)
-    assert view["rows"] == sl.trace.bresenham(20, 10, 30, 18).rows
+    from scanline.studio.explorer import rows_of
+    assert rows_of(view) == sl.trace.bresenham(20, 10, 30, 18).rows
     assert not re.search(r'(src|href)="(?!data:)', text)     # no scripts, styles or links to load
     assert "<style>" in text and "window.explorer" in text
 

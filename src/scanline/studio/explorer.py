@@ -12,6 +12,7 @@ algorithm.
 
 import argparse
 import math
+import operator
 
 from ..cli import Parser, UsageError
 from ..cli import trace as cli_trace
@@ -140,27 +141,28 @@ def _bounds(points, margin=2):
             math.ceil(max(xs)) + margin, math.ceil(max(ys)) + margin]
 
 
-def _rule_bresenham(table, row, i):
-    inc = row["increment"]
-    if row["p"] < 0:
-        return f"p_{i} = {row['p']} < 0: keep the minor coordinate, p_{i + 1} = p_{i} + 2dy = {row['p'] + inc}"
-    return f"p_{i} = {row['p']} >= 0: step the minor coordinate, p_{i + 1} = p_{i} + 2dy - 2dx = {row['p'] + inc}"
+#: Rules of the line algorithms, filled in by the page from each row's columns
+#: (``{p}`` is the row's p): the server picks the rule of each row.
+_BRESENHAM_RULES = [
+    "p_{k} = {p} < 0: keep the minor coordinate; p_k+1 = p_k + 2dy (add {increment})",
+    "p_{k} = {p} >= 0: step the minor coordinate; p_k+1 = p_k + 2dy - 2dx (add {increment})",
+]
+_DDA_RULES = ["x = {x_real} -> {x}, y = {y_real} -> {y} (round: floor(v + 0.5))"]
 
 
 def _lines(table, ns, where):
     rows = table.rows
     if ns.algorithm == "bresenham":
         start = sorted(table.pixels() - {(r["x"], r["y"]) for r in rows}) or [(ns.x0, ns.y0)]
-        steps = [{"pixels": _pixels([(r["x"], r["y"])]), "rule": _rule_bresenham(table, r, i)}
-                 for i, r in enumerate(rows)]
+        rules = {"templates": _BRESENHAM_RULES, "pick": [int(r["p"] >= 0) for r in rows]}
         before = _pixels(start)
     else:
-        steps = [{"pixels": [[r["x"], r["y"]]],
-                  "rule": f"x = {r['x_real']:.6g} -> {r['x']}, y = {r['y_real']:.6g} -> {r['y']} "
-                          "(round: floor(v + 0.5))"} for r in rows]
+        rules = {"templates": _DDA_RULES, "pick": [0] * len(rows)}
         before = []
     ends = [(ns.x0, ns.y0), (ns.x1, ns.y1)]
-    return {"before": before, "steps": steps, "bounds": _bounds(ends),
+    # each row plots the pixel in its columns x, y: no per-step lists for long lines
+    return {"before": before, "steps": None, "pixel_columns": ["x", "y"], "rules": rules,
+            "bounds": _bounds(ends),
             "shapes": [{"kind": "line", "points": [list(ends[0]), list(ends[1])]}],
             "handles": [_handle(where, "P0", ns.x0, ns.y0, ("x0", 0), ("y0", 0)),
                         _handle(where, "P1", ns.x1, ns.y1, ("x1", 0), ("y1", 0))]}
@@ -325,8 +327,11 @@ _VIEWS = {"bresenham": _lines, "dda": _lines, "midpoint-circle": _conics,
 
 def explore(algorithm, args):
     """The explorer's view of ``scanline trace ALGORITHM ARGS...``: a JSON-ready dict
-    with the table (title, notes, columns, rows), one step per row, the static shapes,
-    the grid bounds and the handles."""
+    with the table (title, notes, columns, rows as lists in column order), one step
+    per row (``steps``; or, for the line algorithms, ``pixel_columns`` naming the
+    columns that hold each row's pixel and ``rules``, rule templates filled from
+    each row's columns and the template each row used), the static shapes, the
+    grid bounds and the handles."""
     return view_of(parse(algorithm, args))
 
 
@@ -341,6 +346,24 @@ def view_of(ns):
     tokens, where = canonical(ns)
     view = _VIEWS[ns.algorithm](table, ns, where)
     view.update({"algorithm": ns.algorithm, "args": tokens, "title": table.title,
-                 "notes": table.notes, "columns": table.columns, "rows": table.rows,
+                 "notes": table.notes, "columns": table.columns,
+                 "rows": _cells(table),
+                 "count": len(table.rows),
                  "command": "scanline trace " + ns.algorithm + " " + " ".join(tokens)})
     return view
+
+
+def _cells(table):
+    """The rows as lists in column order (a row lacking a column has None there)."""
+    cols = table.columns
+    get = operator.itemgetter(*cols)
+    try:
+        return [list(get(r)) for r in table.rows] if len(cols) > 1 else [[r[cols[0]]] for r in table.rows]
+    except KeyError:
+        return [[r.get(c) for c in cols] for r in table.rows]
+
+
+def rows_of(view):
+    """The table rows of a view as dicts keyed by the column names (the view sends
+    them as lists, in column order)."""
+    return [dict(zip(view["columns"], r)) for r in view["rows"]]

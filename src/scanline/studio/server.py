@@ -17,13 +17,15 @@ No endpoint reads or writes files, except the package's own static assets.
 """
 
 import collections
+import gc
 import secrets
 import threading
 from importlib import resources
 
 import anyio
+import orjson
 from starlette.applications import Starlette
-from starlette.responses import FileResponse, JSONResponse, Response
+from starlette.responses import FileResponse, Response
 from starlette.routing import Mount, Route
 from starlette.staticfiles import StaticFiles
 
@@ -40,6 +42,16 @@ MAX_BODY = 1 << 20
 
 STATIC = resources.files("scanline.studio") / "static"
 BAD = (ScanlineError, ValueError, TypeError, KeyError, explorer.BadArguments)
+
+
+class JSONResponse(Response):
+    """JSON encoded by orjson: a 10,000-row table encodes in about a millisecond
+    (the standard library takes ten times as long)."""
+
+    media_type = "application/json"
+
+    def render(self, content):
+        return orjson.dumps(content)
 
 
 def _error(status, message):
@@ -237,6 +249,11 @@ def create_app():
         Mount("/static", StaticFiles(directory=str(STATIC)), name="static"),
     ]
 
+    # The app's long-lived objects (numba, numpy, the kernels) go to the permanent
+    # generation, so that the garbage collections a large table's rows trigger do not
+    # walk them all (they made a 10,000-row request take 20 to 110 ms).
+    gc.collect()
+    gc.freeze()
     return Starlette(routes=routes)
 
 

@@ -31,6 +31,7 @@ class Screen {
     this.ctx.beginPath(); this.ctx.arc(Number(x) + 0.5, h - 0.5 - Number(y), 3, 0, 7); this.ctx.stroke();
     this.beam = state;
     this.frames++;
+    this.total = (this.total || 0) + 1;
   }
   async loop() {
     while (true) {

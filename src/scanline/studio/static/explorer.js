@@ -30,7 +30,9 @@ async function load(algorithm, args, keepStep) {
   try {
     const view = await explore(algorithm, args);
     $("error").textContent = "";
+    const t0 = performance.now();
     show(view, keepStep ? state.step : 0);
+    state.timing = {fetch: view.fetchMs, draw: performance.now() - t0};
   } catch (error) {
     $("error").textContent = error.message;
   } finally {
@@ -66,6 +68,25 @@ function path(ctx, g, points, closed) {
   if (closed) ctx.closePath();
 }
 
+// ---- one step's content ----------------------------------------------------------------
+const cell = (v) => v === null || v === undefined ? "" :
+  typeof v === "number" && !Number.isInteger(v) ? String(+v.toFixed(6)) : String(v);
+const stepOf = (k) => state.view.steps ? state.view.steps[k] || {} : {};
+function pixelsOf(k) {        // a line's row holds its pixel; other views list them per step
+  const v = state.view;
+  if (v.pixel_columns) {
+    const r = v.rows[k];
+    return r ? [[r[v.index[v.pixel_columns[0]]], r[v.index[v.pixel_columns[1]]]]] : [];
+  }
+  return stepOf(k).pixels || [];
+}
+function ruleOf(k) {          // a rule template filled with the row's values, or the step's text
+  const v = state.view;
+  if (!v.rules) return stepOf(k).rule || "";
+  const row = v.rows[k];
+  return v.rules.templates[v.rules.pick[k]].replace(/\{(\w+)\}/g, (m, c) => c in v.index ? cell(row[v.index[c]]) : m);
+}
+
 // ---- drawing -------------------------------------------------------------------------
 function drawGrid() {
   const view = state.view, canvas = $("grid"), ctx = canvas.getContext("2d");
@@ -94,11 +115,11 @@ function drawGrid() {
   for (const [x, y, c] of view.cells || [])     // seed-fill grids: walls and colors
     if (c !== ".") fillPixel(ctx, g, x, y, c === "#" ? COLORS.wall : "#adb5bd");
 
-  const steps = view.steps, i = state.step, step = steps[i] || {};
+  const steps = view.steps, i = state.step, step = stepOf(i);
   for (const [x, y] of view.before) fillPixel(ctx, g, x, y, COLORS.plotted);
   for (let k = 0; k < i; k++)
-    for (const [x, y] of steps[k].pixels || []) fillPixel(ctx, g, x, y, COLORS.plotted);
-  for (const [x, y] of step.pixels || []) fillPixel(ctx, g, x, y, COLORS.current);
+    for (const [x, y] of pixelsOf(k)) fillPixel(ctx, g, x, y, COLORS.plotted);
+  for (const [x, y] of pixelsOf(i)) fillPixel(ctx, g, x, y, COLORS.current);
 
   ctx.lineWidth = 1.5; ctx.setLineDash([5, 4]); ctx.strokeStyle = COLORS.shape;
   for (const s of view.shapes) { path(ctx, g, s.points, s.kind === "polygon"); ctx.stroke(); }
@@ -147,7 +168,7 @@ function drawGrid() {
 
 function drawTable() {
   const view = state.view, table = $("table"), i = state.step;
-  const lo = Math.max(0, i - TABLE_WINDOW), hi = Math.min(view.rows.length, i + TABLE_WINDOW + 1);
+  const lo = Math.max(0, i - TABLE_WINDOW), hi = Math.min(view.count, i + TABLE_WINDOW + 1);
   table.replaceChildren();
   const head = table.insertRow();
   for (const c of view.columns) { const th = document.createElement("th"); th.textContent = c; head.appendChild(th); }
@@ -155,22 +176,17 @@ function drawTable() {
     const tr = table.insertRow();
     tr.dataset.step = String(k);
     if (k === i) tr.className = "current";
-    for (const c of view.columns) {
-      const v = view.rows[k][c];
-      tr.insertCell().textContent = v === null || v === undefined ? "" :
-        typeof v === "number" && !Number.isInteger(v) ? String(+v.toFixed(6)) : String(v);
-    }
+    for (const v of view.rows[k]) tr.insertCell().textContent = cell(v);
   }
-  $("window").textContent = view.rows.length > hi - lo ?
-    `rows ${lo}..${hi - 1} of ${view.rows.length} shown` : "";
+  $("window").textContent = view.count > hi - lo ? `rows ${lo}..${hi - 1} of ${view.count} shown` : "";
   const current = table.querySelector("tr.current");
   if (current) current.scrollIntoView({block: "nearest"});
 }
 
 function render() {
-  const view = state.view, n = view.steps.length;
+  const n = state.view.count;
   $("counter").textContent = n ? `step ${state.step + 1} of ${n}` : "no steps";
-  $("rule").textContent = n ? view.steps[state.step].rule : "";
+  $("rule").textContent = n ? ruleOf(state.step) : "";
   drawGrid();
   drawTable();
   document.body.dataset.step = String(state.step);
@@ -179,8 +195,9 @@ function render() {
 function show(view, step) {
   // while a handle is dragged the grid stays put, so the pointer keeps its meaning
   if (state.drag && state.view) view.bounds = state.view.bounds;
+  view.index = Object.fromEntries(view.columns.map((c, j) => [c, j]));   // column -> position
   state.view = view;
-  state.step = Math.max(0, Math.min(step, view.steps.length - 1));
+  state.step = Math.max(0, Math.min(step, view.count - 1));
   $("title").textContent = view.title;
   $("notes").textContent = view.notes.join("\n");
   $("command").textContent = view.command;
@@ -191,7 +208,7 @@ function show(view, step) {
 
 function go(step) {
   if (!state.view) return;
-  state.step = Math.max(0, Math.min(step, state.view.steps.length - 1));
+  state.step = Math.max(0, Math.min(step, state.view.count - 1));
   render();
 }
 
@@ -199,7 +216,7 @@ function play() {
   if (state.timer) { clearInterval(state.timer); state.timer = null; $("play").textContent = "play"; return; }
   $("play").textContent = "pause";
   state.timer = setInterval(() => {
-    if (state.step >= state.view.steps.length - 1) return play();
+    if (state.step >= state.view.count - 1) return play();
     go(state.step + 1);
   }, 1000 / Number($("speed").value));
 }
@@ -251,7 +268,7 @@ function bind() {
   $("first").onclick = () => go(0);
   $("back").onclick = () => go(state.step - 1);
   $("forward").onclick = () => go(state.step + 1);
-  $("last").onclick = () => go(state.view.steps.length - 1);
+  $("last").onclick = () => go(state.view.count - 1);
   $("play").onclick = play;
   $("table").onclick = (e) => { const tr = e.target.closest("tr"); if (tr && tr.dataset.step) go(Number(tr.dataset.step)); };
   document.addEventListener("keydown", (e) => {

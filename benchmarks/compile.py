@@ -154,6 +154,13 @@ PY_CASES = {
                      "df.polygon([(20, 10), (80, 10), (80, 60), (20, 60)], color='tan', "
                      "edge='brown', width=2); df.text((25, 30), 'HOME', height=8, color='black', "
                      "font='stroke'); df.close_segment(); df.draw(fb)", ("RGB",)),
+    "display pick": ("df = sl.DisplayFile(); df.set_viewing(window=(0, 0, 100, 100)); "
+                     "df.create_segment('roof'); df.polyline([(10, 50), (50, 90), (90, 50)]); "
+                     "df.polygon([(20, 10), (80, 10), (80, 50)]); df.close_segment(); "
+                     "df.pick(50, 89, 2, (101, 101)); df.pick(60, 30, 2, (101, 101))", None),
+    "raster-scan simulation": ("from scanline.display.crt import RasterScan; "
+                               "sl.draw.circle(fb, 48, 32, 20, color='black'); "
+                               "RasterScan(fb, interlaced=True).frames(8, 1, scale=2)", ("RGB",)),
     "context": ("ctx = sl.Context(fb); ctx.rotate(0.3, pivot=(48, 32)); "
                 "ctx.set_line(color='red', width=3); ctx.rectangle(30, 20, 30, 20)", ("RGB",)),
     "four calls": ("sl.draw.line(fb, 3, 4, 90, 50, color='black'); "
@@ -178,6 +185,12 @@ CLI_CASES = {
     "trace de-casteljau": ["trace", "de-casteljau", "0,0", "0,4", "4,4", "4,0", "--u", "0.5"],
     "trace cox-de-boor": ["trace", "cox-de-boor", "--knots", "0,0,0,0,1,2,2,2,2", "--order", "4",
                           "--u", "1.5"],
+    "trace boundary-fill": ["trace", "boundary-fill", "1", "2"],
+    "trace scan-line-fill": ["trace", "scan-line-fill", "2,1", "15,4", "10,13", "6,6", "1,9"],
+    "trace sutherland-hodgman": ["trace", "sutherland-hodgman", "--", "-2,2", "6,-1", "13,6", "6,13"],
+    "explain bresenham": ["explain", "bresenham", "20", "10", "30", "18", "-o", "{out}/b.html"],
+    "simulate random": ["simulate", "random", os.path.join(SCENES, "rotation.toml"), "-o",
+                        "{out}/r.gif", "--frames", "8", "--refreshes", "1"],
     "render rotation scene": ["render", os.path.join(SCENES, "rotation.toml"), "-o", "{out}/r.png"],
     "render clipping scene": ["render", os.path.join(SCENES, "polygon_clipping.toml"),
                               "-o", "{out}/c.png"],

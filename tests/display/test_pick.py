@@ -174,3 +174,19 @@ def test_bad_pick_identifier_and_detectability():
         df.set_pick_identifier(1.5)
     with pytest.raises(ArgumentTypeError, match="detectable"):
         df.set_detectability("sun", "yes")
+
+
+def test_large_pictures_pick_with_the_compiled_clipper():
+    from scanline.display import pick as pk
+
+    df = sl.DisplayFile()
+    df.set_viewing(window=(0, 0, 1000, 100))
+    df.create_segment("zigzag")
+    xs = np.arange(0, 1000, 1.0)
+    df.polyline(np.stack([xs, 50 + 20 * (xs % 2)], axis=1))    # 999 segments, > PY_SEGMENTS
+    df.close_segment()
+    assert len(xs) - 1 > pk.PY_SEGMENTS
+    size = (1001, 101)
+    assert df.pick(500, 50, 0.5, size).segment == "zigzag"
+    assert df.pick(500, 90, 5, size) is None
+    assert df.pick(500.5, 60, 0.6, size).segment == "zigzag"

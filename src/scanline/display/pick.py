@@ -89,6 +89,31 @@ def locate(display_file, x, y, device):
     return float(wx), float(wy)
 
 
+#: Up to this many segments a pick runs the Liang-Barsky kernel as Python (its
+#: twin, :func:`scanline._kernels._jit.python`): a pick on a small picture then
+#: never waits for a compilation; more go to the compiled batch (``sl.clip.lines``).
+PY_SEGMENTS = 512
+
+
+def _visible(segments, window):
+    """Whether Liang-Barsky keeps some part of any of the (N, 4) ``segments`` in the
+    rectangle ``window``."""
+    from .. import clip
+    from .._kernels import clip as k
+    from .._kernels._jit import python
+    from ..clip import window as w
+
+    if len(segments) > PY_SEGMENTS:
+        return bool(clip.lines(segments, window, method="liang-barsky")[1].any())
+    rect = np.array(w.rectangle(window))
+    ring = w.rectangle_polygon(*rect)
+    seg = np.ascontiguousarray(segments, np.float64).reshape(-1)
+    out, accepted = np.empty(seg.shape), np.empty(len(segments), np.bool_)
+    python(k.clip_lines)(k.LIANG_BARSKY, seg, rect, ring, w.outward_normals(ring),
+                         float(v.COORD_LIMIT), out, accepted)
+    return bool(accepted.any())
+
+
 class _Probe:
     """A device that draws nothing and records whether anything it is given meets
     the pick window (xmin, ymin, xmax, ymax)."""
@@ -103,8 +128,6 @@ class _Probe:
         return (self.x - a, self.y - a, self.x + a, self.y + a)
 
     def _meets(self, pieces, closed, grow):
-        from .. import clip
-
         segments = []
         for p in pieces:
             q = np.vstack([p, p[:1]]) if closed and len(p) > 2 else p
@@ -112,8 +135,7 @@ class _Probe:
             segments.append(np.hstack([q[:-1], q[1:]]))
         if not segments:
             return False
-        _, visible = clip.lines(np.vstack(segments), self._window(grow), method="liang-barsky")
-        return bool(visible.any())
+        return _visible(np.vstack(segments), self._window(grow))
 
     def stroke(self, pieces, closed, attributes):
         # a wide line is hit within half its width of its path

@@ -262,7 +262,8 @@ def test_workstation_image_and_unknowns(client, ws):
        body=st.dictionaries(st.sampled_from(["device", "value", "mode", "grid", "snap", "segment",
                                              "position", "anchor", "delta", "gravity", "tool"]),
                             st.recursive(st.one_of(st.none(), st.booleans(), st.integers(-10**9, 10**9),
-                                                   st.floats(), st.text(max_size=5),
+                                                   st.floats(allow_nan=False, allow_infinity=False),
+                                                   st.text(max_size=5),
                                                    st.sampled_from(["locator", "pick", "house",
                                                                     "event", "sample"])),
                                          lambda c: st.lists(c, max_size=3) | st.dictionaries(
@@ -302,3 +303,12 @@ def test_bad_device_parameters(client, query):
     r = client.get(f"/api/devices/{kind}/frame?{query}")
     assert r.status_code == 422 and r.json()["error"]
     assert client.get("/api/devices/plasma/info").status_code == 404
+
+
+def test_a_long_request_is_stopped_with_503(client, monkeypatch):
+    from scanline.studio import server
+
+    monkeypatch.setattr(server, "TIME_LIMIT", 0.05)
+    big = ["0,0", "2000,0", "2000,2000", "0,2000"]          # 2000 scan lines, as Python
+    r = post(client, "scan-line-fill", big)
+    assert r.status_code == 503 and "longer than 0.05 s" in r.json()["error"]

@@ -58,9 +58,29 @@ def _error(status, message):
     return JSONResponse({"error": " ".join(str(message).split())}, status_code=status)
 
 
+#: Set once the start-up warm-up has compiled the kernels the pages use.
+_WARM = threading.Event()
+
+
+def warm_up():
+    """Compile (or load from numba's cache) what the pages reach first: the device
+    simulations' frame buffer, the workstation's picture and a few traces.  On an
+    empty cache this takes a while; requests wait for it before their time limit
+    starts, so the limit bounds their own work, not a one-off compilation."""
+    try:
+        devices.frame_buffer()
+        Workstation().png()
+        for name in ("bresenham", "midpoint-circle", "cohen-sutherland"):
+            explorer.explore(name, explorer.DEFAULTS[name])
+    finally:
+        _WARM.set()
+
+
 async def _run(fn, *args):
-    """Run ``fn(*args)`` in a worker thread within the time limit; map bad input to
-    422 and a timeout to 503."""
+    """Run ``fn(*args)`` in a worker thread within the time limit (after the warm-up);
+    map bad input to 422 and a timeout to 503."""
+    if not _WARM.is_set():
+        await anyio.to_thread.run_sync(_WARM.wait)
     try:
         with anyio.fail_after(TIME_LIMIT):
             return await anyio.to_thread.run_sync(fn, *args, abandon_on_cancel=True)
@@ -254,6 +274,7 @@ def create_app():
     # walk them all (they made a 10,000-row request take 20 to 110 ms).
     gc.collect()
     gc.freeze()
+    threading.Thread(target=warm_up, daemon=True, name="scanline-studio-warm-up").start()
     return Starlette(routes=routes)
 
 

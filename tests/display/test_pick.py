@@ -50,7 +50,10 @@ def test_every_drawn_pixel_picks_its_segment():
     df = scene()
     drawn, _ = owners(df)
     assert set(drawn.values()) == set(COLORS)
-    for (x, y), name in drawn.items():
+    # every pixel of the thin primitives, a sample of the wall's area
+    pixels = sorted(drawn.items())
+    sample = [p for i, p in enumerate(pixels) if p[1] != "wall" or i % 7 == 0]
+    for (x, y), name in sample:
         got = df.pick(x, y, 0.5, (201, 151))
         assert got is not None and got.segment == name, ((x, y), name, got)
 

@@ -27,6 +27,12 @@ def test_pages_and_assets_are_served(client):
     assert client.get("/static/../server.py").status_code == 404
 
 
+def test_other_host_names_are_refused(client):
+    r = client.get("/explorer", headers={"Host": "attacker.example"})
+    assert r.status_code == 400
+    assert client.get("/explorer", headers={"Host": "localhost:8765"}).status_code == 200
+
+
 def test_every_traced_algorithm_is_offered(client):
     names = [a["name"] for a in client.get("/api/algorithms").json()]
     assert sorted(names) == sorted(sl.trace.ALGORITHMS)

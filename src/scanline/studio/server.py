@@ -25,6 +25,8 @@ from importlib import resources
 import anyio
 import orjson
 from starlette.applications import Starlette
+from starlette.middleware import Middleware
+from starlette.middleware.trustedhost import TrustedHostMiddleware
 from starlette.responses import FileResponse, Response
 from starlette.routing import Mount, Route
 from starlette.staticfiles import StaticFiles
@@ -153,8 +155,14 @@ class Sessions:
             return ws
 
 
-def create_app():
-    """The studio's Starlette application."""
+#: The Host names a loopback studio answers to: a page elsewhere that rebinds its own
+#: name to 127.0.0.1 (DNS rebinding) is refused.
+LOOPBACK = ("127.0.0.1", "localhost", "::1", "[::1]")
+
+
+def create_app(allowed_hosts=LOOPBACK):
+    """The studio's Starlette application, answering requests whose Host is one of
+    ``allowed_hosts`` (``("*",)``: any)."""
     sessions = Sessions()
     lock = threading.Lock()   # one workstation change at a time
 
@@ -275,17 +283,20 @@ def create_app():
     gc.collect()
     gc.freeze()
     threading.Thread(target=warm_up, daemon=True, name="scanline-studio-warm-up").start()
-    return Starlette(routes=routes)
+    return Starlette(routes=routes, middleware=[
+        Middleware(TrustedHostMiddleware, allowed_hosts=list(allowed_hosts))])
 
 
 def serve(host="127.0.0.1", port=8765):
     """Serve the studio with uvicorn until interrupted, printing its address."""
     import uvicorn
 
-    if host not in ("127.0.0.1", "localhost", "::1"):
+    hosts = LOOPBACK
+    if host not in LOOPBACK:
         print(f"scanline studio: listening on {host}, not only this machine: anyone who can "
               "reach this address can use the studio")
-    config = uvicorn.Config(create_app(), host=host, port=port, log_level="warning")
+        hosts = ("*",)
+    config = uvicorn.Config(create_app(hosts), host=host, port=port, log_level="warning")
     server = uvicorn.Server(config)
 
     original = server.startup

@@ -318,3 +318,11 @@ def test_a_long_request_is_stopped_with_503(client, monkeypatch):
     big = ["0,0", "2000,0", "2000,2000", "0,2000"]          # 2000 scan lines, as Python
     r = post(client, "scan-line-fill", big)
     assert r.status_code == 503 and "longer than 0.05 s" in r.json()["error"]
+
+
+def test_bresenham_views_plot_the_traced_pixels_in_every_direction():
+    rng = np.random.default_rng(4)
+    for a in rng.integers(-25, 26, (300, 4)).tolist() + [[3, 3, 3, 3], [0, 0, 0, 9], [5, 0, -5, 0]]:
+        view = explorer.explore("bresenham", ["--", *map(str, a)])
+        plotted = {tuple(p) for p in view["before"]} | {(r["x"], r["y"]) for r in explorer.rows_of(view)}
+        assert plotted == sl.trace.bresenham(*a).pixels(), a

@@ -153,9 +153,11 @@ _DDA_RULES = ["x = {x_real} -> {x}, y = {y_real} -> {y} (round: floor(v + 0.5))"
 def _lines(table, ns, where):
     rows = table.rows
     if ns.algorithm == "bresenham":
-        start = sorted(table.pixels() - {(r["x"], r["y"]) for r in rows}) or [(ns.x0, ns.y0)]
+        # the start pixel, plotted before step 0, is the endpoint the last row is not
+        end = (rows[-1]["x"], rows[-1]["y"]) if rows else None
+        start = (ns.x1, ns.y1) if end == (ns.x0, ns.y0) else (ns.x0, ns.y0)
         rules = {"templates": _BRESENHAM_RULES, "pick": [int(r["p"] >= 0) for r in rows]}
-        before = _pixels(start)
+        before = _pixels([start])
     else:
         rules = {"templates": _DDA_RULES, "pick": [0] * len(rows)}
         before = []

@@ -55,7 +55,7 @@ _SUBS, _ROOT = _parsers()
 def catalog():
     """The algorithms: name, description, usage line and default arguments."""
     return [{"name": name, "description": desc, "usage": _SUBS[name].format_usage().strip()
-             .replace("usage: ", ""), "defaults": DEFAULTS[name]}
+             .replace("usage: ", ""), "defaults": DEFAULTS.get(name, [])}
             for name, (desc, _, _) in cli_trace.ALGORITHMS.items()]
 
 
@@ -319,6 +319,12 @@ def _cox_de_boor(table, ns, where):
             "shapes": [], "handles": []}
 
 
+def _table_only(table, ns, where):
+    """An algorithm with no grid view yet: its table, stepped row by row."""
+    return {"before": [], "steps": [{"rule": ""} for _ in table.rows], "bounds": [0, 0, 10, 10],
+            "shapes": [], "handles": []}
+
+
 _VIEWS = {"bresenham": _lines, "dda": _lines, "midpoint-circle": _conics,
           "midpoint-ellipse": _conics, "flood-fill": _fills, "boundary-fill": _fills,
           "scan-line-fill": _scan_fill, "cohen-sutherland": _line_clip,
@@ -346,7 +352,7 @@ def view_of(ns):
         raise BadArguments(f"the table has {len(table.rows)} rows; the explorer shows at most "
                            f"{MAX_ROWS} (use scanline trace for longer ones)")
     tokens, where = canonical(ns)
-    view = _VIEWS[ns.algorithm](table, ns, where)
+    view = _VIEWS.get(ns.algorithm, _table_only)(table, ns, where)
     view.update({"algorithm": ns.algorithm, "args": tokens, "title": table.title,
                  "notes": table.notes, "columns": table.columns,
                  "rows": _cells(table),

@@ -97,10 +97,10 @@ def canonical(ns):
         if action.option_strings:
             options.append(action.option_strings[0])
             items = value if isinstance(value, list) else [value]
-            if items and isinstance(items[0], list):  # a flat list of numbers
-                items = [",".join(_number(c) for c in items)]
-            elif action.dest in ("window_polygon", "knots"):
-                items = [",".join(_number(c) for c in value)]
+            if action.type is cli_trace.numbers and action.nargs is None:
+                items = [",".join(_number(c) for c in value)]   # one token: 'x,y,x,y,...'
+            elif items and isinstance(items[0], list):
+                items = [",".join(_number(c) for c in items[0])]
             for i, item in enumerate(items):
                 where[(action.dest, i)] = len(options)
                 options.append(_number(item))

@@ -99,8 +99,6 @@ def canonical(ns):
             items = value if isinstance(value, list) else [value]
             if action.type is cli_trace.numbers and action.nargs is None:
                 items = [",".join(_number(c) for c in value)]   # one token: 'x,y,x,y,...'
-            elif items and isinstance(items[0], list):
-                items = [",".join(_number(c) for c in items[0])]
             for i, item in enumerate(items):
                 where[(action.dest, i)] = len(options)
                 options.append(_number(item))

@@ -64,6 +64,13 @@ CLI_CASES = {
     "render rotation scene": ["render", os.path.join(SCENES, "rotation.toml"), "-o", "{out}/r.png"],
     "render clipping scene": ["render", os.path.join(SCENES, "polygon_clipping.toml"),
                               "-o", "{out}/c.png"],
+    "trace boundary-fill": ["trace", "boundary-fill", "1", "2"],
+    "trace scan-line-fill": ["trace", "scan-line-fill", "2,1", "15,4", "10,13", "6,6", "1,9"],
+    "trace sutherland-hodgman": ["trace", "sutherland-hodgman", "--", "-2,2", "6,-1", "13,6",
+                                 "6,13"],
+    "explain bresenham": ["explain", "bresenham", "20", "10", "30", "18", "-o", "{out}/b.html"],
+    "simulate random": ["simulate", "random", os.path.join(SCENES, "rotation.toml"), "-o",
+                        "{out}/r.gif", "--frames", "8", "--refreshes", "1"],
     "draw command": ["draw", "--size", "64x48", "line", "2", "3", "60", "40", "circle", "32", "24",
                      "15", "-o", "{out}/d.png"],
 }

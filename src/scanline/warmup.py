@@ -163,6 +163,15 @@ CALLS = {
     "context": ("display", "ctx = sl.Context(fb); ctx.rotate(0.3, pivot=(48, 32)); "
                            "ctx.set_line(color='red', width=3); ctx.rectangle(30, 20, 30, 20)",
                 RGB),
+    "display pick": ("display", "df = sl.DisplayFile(); df.set_viewing(window=(0, 0, 100, 100)); "
+                                "df.create_segment('roof'); df.polyline([(10, 50), (50, 90), "
+                                "(90, 50)]); df.polygon([(20, 10), (80, 10), (80, 50)]); "
+                                "df.close_segment(); df.pick(50, 89, 2, (101, 101)); "
+                                "df.pick(60, 30, 2, (101, 101))", None),
+    "raster-scan simulation": ("display", "from scanline.display.crt import RasterScan; "
+                                          "sl.draw.circle(fb, 48, 32, 20, color='black'); "
+                                          "RasterScan(fb, interlaced=True).frames(8, 1, scale=2)",
+                               RGB),
     "four calls": ("mixed", "sl.draw.line(fb, 3, 4, 90, 50, color='black'); "
                             f"sl.draw.polygon(fb, {STAR}, color='navy', rule='nonzero'); "
                             "sl.draw.text(fb, 4, 20, 'Hello', color='black', height=14); "

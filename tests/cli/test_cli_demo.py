@@ -35,7 +35,8 @@ def test_demo_writes_every_figure_gallery_and_page(gallery):
     for png in pngs:
         with Image.open(out / png) as image:
             image.verify()
-    assert sorted(p.name for p in out.iterdir()) == sorted(pngs + ["index.html"])
+    assert sorted(p.name for p in out.iterdir()) == sorted(pngs + ["index.html",
+                                                                   "explain-bresenham.html"])
 
 
 def test_page_shows_each_figure_with_caption_and_tables(gallery):
@@ -53,7 +54,12 @@ def test_page_shows_each_figure_with_caption_and_tables(gallery):
                   "left room (12 pixels)", "right room (22 pixels in all)",  # 4- vs 8-connected
                   "tile the disk exactly"):
         assert value in page
-    assert "http" not in page  # self-contained
+    assert not re.search(r'src="https?:', page)  # self-contained: nothing loaded from a server
+    # the links to the interactive half: the explain page beside it and the local studio
+    assert 'href="explain-bresenham.html"' in page
+    assert set(re.findall(r'href="(https?://[^/"]+)', page)) == {"http://127.0.0.1:8765"}
+    explain = (out / "explain-bresenham.html").read_text(encoding="utf-8")
+    assert r"Bresenham line (20, 10) -\u003e (30, 18)" in explain and 'src="http' not in explain
 
 
 def test_demo_into_the_default_folder(run, tmp_path):

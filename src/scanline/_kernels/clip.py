@@ -300,13 +300,14 @@ def cyrus_beck(seg, win, normals, limit, params, outside, out, accepted, trace, 
     return bad
 
 
-#: Line clippers, as the batch kernel's ``method``.
-COHEN_SUTHERLAND = 0
-LIANG_BARSKY = 1
-CYRUS_BECK = 2
+#: Line clippers: the batch kernel's ``method`` is a token of one of these lengths
+#: (:mod:`scanline._kernels.variants`), so a clipper compiles its own code only.
+COHEN_SUTHERLAND = 1
+LIANG_BARSKY = 2
+CYRUS_BECK = 3
 
 
-@inline
+@helper
 def clip_block(method, seg, rect, win, normals, limit, state, codes, flags, out,
                accepted, trace, log):
     """Clip a block of segments ``seg`` (4 m,) with clipper ``method``: write the
@@ -320,11 +321,12 @@ def clip_block(method, seg, rect, win, normals, limit, state, codes, flags, out,
     ``state`` (4, block), ``codes`` (2, block) and ``flags`` (block,) are scratch.
     With ``trace`` (a block of one segment) the steps are logged into ``log``.
     Returns whether a coordinate was NaN or beyond +-``limit`` (checked in the
-    same pass)."""
-    if method == COHEN_SUTHERLAND:
+    same pass).  A compiled helper (called once per block), so that the test of the
+    method token folds here."""
+    if len(method) == COHEN_SUTHERLAND:
         return cohen_sutherland(seg, rect[0], rect[1], rect[2], rect[3], limit,
                                 state, codes, out, accepted, trace, log)
-    if method == LIANG_BARSKY:
+    if len(method) == LIANG_BARSKY:
         return liang_barsky(seg, rect[0], rect[1], rect[2], rect[3], limit, out,
                             accepted, trace, log)
     return cyrus_beck(seg, win, normals, limit, state, flags, out, accepted, trace,
@@ -371,13 +373,22 @@ def trace_line(method, seg, rect, win, normals, out, log):
     return accepted[0]
 
 
+#: Sutherland-Hodgman log columns, one row per edge S -> P of the stage's input:
+#: index of P, S inside, P inside, intersection output (1 or 0), its x, y, P output.
+SH_COLUMNS = 7
+
+
 @helper
-def clip_stage(src, n, dst, ax, ay, bx, by):
+def clip_stage(src, n, dst, ax, ay, bx, by, log):
     """One Sutherland-Hodgman stage: the ``n`` vertices of ``src`` clipped by the
     half-plane left of (or on) the directed line a -> b, into ``dst``.
 
     Returns the number of vertices written, or -1 if ``dst`` is too small.
     Consecutive duplicate vertices (a vertex on the boundary) are written once.
+    Row i of ``log`` (when it has one; the batch kernel passes an empty log) records
+    the edge from S = vertex i - 1 to P = vertex i: the four cases of Hearn & Baker's
+    section 6-8 (out -> in: the intersection and P; in -> in: P; in -> out: the
+    intersection; out -> out: nothing), as what was output.
     """
     ex = bx - ax
     ey = by - ay
@@ -392,6 +403,7 @@ def clip_stage(src, n, dst, ax, ay, bx, by):
         px = src[i, 0]
         py = src[i, 1]
         pd = ex * (py - ay) - ey * (px - ax)
+        before = m
         if (sd >= 0.0) != (pd >= 0.0):
             # The edge s -> p crosses the boundary: emit the intersection.
             t = sd / (sd - pd)
@@ -402,6 +414,7 @@ def clip_stage(src, n, dst, ax, ay, bx, by):
             dst[m, 1] = sy + t * (py - sy) if ey != 0.0 else ay
             if m == 0 or dst[m, 0] != dst[m - 1, 0] or dst[m, 1] != dst[m - 1, 1]:
                 m += 1
+        crossing = m
         if pd >= 0.0:
             if m >= cap:
                 return -1
@@ -409,6 +422,14 @@ def clip_stage(src, n, dst, ax, ay, bx, by):
             dst[m, 1] = py
             if m == 0 or px != dst[m - 1, 0] or py != dst[m - 1, 1]:
                 m += 1
+        if i < log.shape[0]:
+            log[i, 0] = i
+            log[i, 1] = sd >= 0.0
+            log[i, 2] = pd >= 0.0
+            log[i, 3] = crossing - before
+            log[i, 4] = dst[before, 0] if crossing > before else np.nan
+            log[i, 5] = dst[before, 1] if crossing > before else np.nan
+            log[i, 6] = m - crossing
         sx = px
         sy = py
         sd = pd
@@ -430,6 +451,7 @@ def sutherland_hodgman(verts, counts, win, out, out_counts, scratch):
     start = 0
     used = 0
     cap = scratch.shape[1]
+    log = np.empty((0, SH_COLUMNS))
     for p in range(counts.shape[0]):
         n = counts[p]
         if n > cap:
@@ -442,7 +464,7 @@ def sutherland_hodgman(verts, counts, win, out, out_counts, scratch):
         start += n
         for e in range(m):
             f = e + 1 if e + 1 < m else 0
-            n = clip_stage(a, n, b, win[e, 0], win[e, 1], win[f, 0], win[f, 1])
+            n = clip_stage(a, n, b, win[e, 0], win[e, 1], win[f, 0], win[f, 1], log)
             if n < 0:
                 return -1
             a, b = b, a

@@ -150,6 +150,65 @@ def sort_by_row(et, n, counts, order):
 
 
 @helper
+def step_active(et, ef, r, oy, ox, end, nxt, nact, order, active, keys, dirs):
+    """Move the active edge list to raster row ``r``: one pass over the list, then
+    over the edges entering on this row (``order[nxt:end]``): drop the edges that
+    ended below, step the others up one row, and insert each crossing key in order
+    (the list stays nearly sorted between rows).  Returns ``(nact, nxt)``, the new
+    length of the list and the next edge of ``order`` to enter it.
+
+    This is one step of the scan-line fill, as the step table
+    (:func:`scanline.trace.scan_line_fill`) runs it."""
+    y = r + oy
+    k = 0
+    for a in range(nact + end - nxt):
+        if a < nact:
+            e = active[a]
+            if et[e, 1] < r:
+                continue
+        else:
+            e = order[nxt]
+            nxt += 1
+        if et[e, 3] == 1:
+            if et[e, 0] < r:  # exact step by dx/dy: a quotient and a remainder
+                # (without a branch: ``borrow`` is -1 when the remainder went
+                # negative, else 0; the unpredictable ``if`` cost 15% of the fill)
+                rem = et[e, 5] - et[e, 7]
+                borrow = rem >> 63
+                et[e, 4] += et[e, 6] - borrow
+                et[e, 5] = rem + (et[e, 8] & borrow)
+            key = et[e, 4]
+        else:
+            xc = ef[e, 0] + ((y - ef[e, 1]) * ef[e, 2]) / ef[e, 3]
+            key = int(math.ceil(xc)) - ox
+        b = k
+        while b > 0:  # (an ``and`` in this test compiled to much slower code)
+            if keys[b - 1] <= key:
+                break
+            keys[b] = keys[b - 1]
+            dirs[b] = dirs[b - 1]
+            active[b] = active[b - 1]
+            b -= 1
+        keys[b] = key
+        dirs[b] = et[e, 2]
+        active[b] = e
+        k += 1
+    return k, nxt
+
+
+@helper
+def fill_row(buf, layout, width, height, r, keys, dirs, nact, mask, color):
+    """Fill the spans of raster row ``r`` between the sorted crossing keys of the
+    active edge list: from a key to the next wherever the winding number so far
+    passes the rule (``winding & mask != 0``)."""
+    winding = 0
+    for a in range(nact - 1):
+        winding += dirs[a]
+        if (winding & mask) != 0 and keys[a] < keys[a + 1]:
+            span(buf, layout, width, height, r, keys[a], keys[a + 1] - 1, color)
+
+
+@helper
 def fill_polygon(buf, layout, width, height, ox, oy, verts, contours, c0, c1, color,
                  rule, et, ef, counts, order, active, keys, dirs):
     """Scan-convert one polygon (contours ``c0 .. c1-1``) into the raster."""
@@ -158,53 +217,12 @@ def fill_polygon(buf, layout, width, height, ox, oy, verts, contours, c0, c1, co
         return
     rmin, rmax = sort_by_row(et, n, counts, order)
     mask = rule_mask(rule)
-    nact = 0
-    nxt = 0  # next edge of ``order`` to enter the active list
+    nact = np.int64(0)     # (typed, not literal 0s: step_active compiles once)
+    nxt = np.int64(0)      # next edge of ``order`` to enter the active list
     for r in range(rmin, rmax + 1):
-        # one pass over the active list, then over the edges entering on this row:
-        # drop the edges that ended below, step the others up one row, and insert
-        # each crossing key in order (the list stays nearly sorted between rows)
-        y = r + oy
-        k = 0
-        end = counts[r - rmin]
-        for a in range(nact + end - nxt):
-            if a < nact:
-                e = active[a]
-                if et[e, 1] < r:
-                    continue
-            else:
-                e = order[nxt]
-                nxt += 1
-            if et[e, 3] == 1:
-                if et[e, 0] < r:  # exact step by dx/dy: a quotient and a remainder
-                    # (without a branch: ``borrow`` is -1 when the remainder went
-                    # negative, else 0; the unpredictable ``if`` cost 15% of the fill)
-                    rem = et[e, 5] - et[e, 7]
-                    borrow = rem >> 63
-                    et[e, 4] += et[e, 6] - borrow
-                    et[e, 5] = rem + (et[e, 8] & borrow)
-                key = et[e, 4]
-            else:
-                xc = ef[e, 0] + ((y - ef[e, 1]) * ef[e, 2]) / ef[e, 3]
-                key = int(math.ceil(xc)) - ox
-            b = k
-            while b > 0:  # (an ``and`` in this test compiled to much slower code)
-                if keys[b - 1] <= key:
-                    break
-                keys[b] = keys[b - 1]
-                dirs[b] = dirs[b - 1]
-                active[b] = active[b - 1]
-                b -= 1
-            keys[b] = key
-            dirs[b] = et[e, 2]
-            active[b] = e
-            k += 1
-        nact = k
-        winding = 0
-        for a in range(nact - 1):
-            winding += dirs[a]
-            if (winding & mask) != 0 and keys[a] < keys[a + 1]:
-                span(buf, layout, width, height, r, keys[a], keys[a + 1] - 1, color)
+        nact, nxt = step_active(et, ef, r, oy, ox, counts[r - rmin], nxt, nact, order,
+                                active, keys, dirs)
+        fill_row(buf, layout, width, height, r, keys, dirs, nact, mask, color)
 
 
 @kernel

@@ -18,10 +18,10 @@ import traceback
 
 from .. import __version__
 from ..errors import ScanlineError
-from . import demo, dither, draw, fonts, render, trace
+from . import demo, dither, draw, explain, fonts, render, simulate, studio, trace
 
 #: The sub-command modules; each has ``register(subparsers)``.
-COMMANDS = (trace, draw, demo, render, dither, fonts)
+COMMANDS = (trace, draw, demo, render, dither, fonts, simulate, explain, studio)
 
 #: Errors reported as bad input (exit status 2).
 INPUT_ERRORS = (ScanlineError, ValueError, TypeError, OSError)

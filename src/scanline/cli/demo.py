@@ -77,9 +77,21 @@ def page(figures):
         "starts from is made with numpy, as its caption says); the grids, labels and "
         "red ideal curves are annotations. Each table is <code>scanline trace</code>'s output for the figure "
         "next to it.</p>",
+        _STUDIO,
         *sections,
         "</body>\n</html>\n",
     ])
+
+
+#: The interactive half: the explain page written beside the figures, and the studio.
+EXPLAIN = ("bresenham", "20", "10", "30", "18")
+_STUDIO = (
+    '<p>Step through an algorithm: <a href="explain-bresenham.html">Bresenham (20, 10) to '
+    "(30, 18)</a> (<code>scanline explain bresenham 20 10 30 18 -o page.html</code> writes "
+    "such a page for any case). Run <code>scanline studio</code> for the "
+    '<a href="http://127.0.0.1:8765/explorer">algorithm explorer</a>, the '
+    '<a href="http://127.0.0.1:8765/devices">display devices</a> and the '
+    '<a href="http://127.0.0.1:8765/workstation">workstation with its input devices</a>.</p>')
 
 
 #: The modules of figures, in gallery order; each has a ``FIGURES`` tuple of
@@ -100,6 +112,8 @@ def all_figures():
 def run(args):
     """Render every figure, then write the PNGs, gallery.png and index.html."""
     from ..framebuffer import write_atomically
+    from ..studio.page import explain
+    from . import build_parser
     from ._plot import grid_of
 
     def save_png(image, name):
@@ -110,6 +124,8 @@ def run(args):
     for fig in figures:
         save_png(fig.image, f"{fig.name}.png")
     save_png(grid_of([f.image for f in figures], [f.title for f in figures]), "gallery.png")
+    explain(build_parser().parse_args(["explain", *EXPLAIN, "-o", "-"]),
+            os.path.join(args.out, "explain-bresenham.html"))
     index = os.path.join(args.out, "index.html")
     write_atomically(index, lambda f: f.write(page(figures).encode("utf-8")))
     print(f"scanline demo: wrote {len(figures)} figures, gallery.png and index.html "

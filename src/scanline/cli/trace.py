@@ -38,6 +38,16 @@ ALGORITHMS = {
          "Y": "y of the seed (0 = bottom row of the grid)"},
         False,
     ),
+    "boundary-fill": (
+        "the scan-line boundary fill with its stack (notes, chapter 2, Q.8)",
+        {"X": "x of the seed (0 = left column of the grid)",
+         "Y": "y of the seed (0 = bottom row of the grid)"},
+        False,
+    ),
+    "scan-line-fill": (
+        "the scan-line polygon fill: edge table, active edge list, spans (notes, chapter 2, "
+        "Q.8)", {}, False,
+    ),
     "de-casteljau": (
         "de Casteljau's triangle for a Bezier curve (notes, chapter 5, Q.1)", {}, False,
     ),
@@ -55,22 +65,31 @@ ALGORITHMS = {
         "Cyrus-Beck line clipping against a convex polygon (notes, chapter 4, Q.4, Table 1)",
         {}, False,
     ),
+    "sutherland-hodgman": (
+        "Sutherland-Hodgman polygon clipping, boundary by boundary (notes, chapter 4)",
+        {}, False,
+    ),
 }
 
 
 def fill_options(sub):
-    """``--grid`` and ``--connectivity`` of ``flood-fill``; returns their names."""
+    """``--grid`` and ``--connectivity`` of ``flood-fill`` (and ``--boundary`` of
+    ``boundary-fill``); returns their names."""
     sub.add_argument("--grid", help="rows of characters, top row first, separated by '/' "
                      "(e.g. '#####/#..##/#...#/#####'); each character is a color; "
                      "default: a built-in example with two rooms")
     sub.add_argument("--connectivity", type=integer, choices=(4, 8), default=4,
                      help="4 (default): edge neighbors; 8: edge and corner neighbors")
+    if sub.prog.endswith("boundary-fill"):
+        sub.add_argument("--boundary", default="#", help="the boundary color(s): grid "
+                         "characters (default '#')")
+        return ["grid", "connectivity", "boundary"]
     return ["grid", "connectivity"]
 
 
 #: Algorithms with options of their own: CLI name -> function that adds them to the
 #: sub-command's parser and returns their names (passed on as keywords).
-OPTIONS = {"flood-fill": fill_options}
+OPTIONS = {"flood-fill": fill_options, "boundary-fill": fill_options}
 
 
 def numbers(text):
@@ -122,6 +141,26 @@ def clip_options(sub):
 OPTIONS.update({"cohen-sutherland": clip_options, "liang-barsky": clip_options,
                 "cyrus-beck": clip_options})
 
+
+def polygon_options(sub):
+    """The polygon's vertices and ``--rule`` (scan-line-fill) or ``--window`` /
+    ``--window-polygon`` (sutherland-hodgman)."""
+    sub.add_argument("points", metavar="X,Y", nargs="+", type=numbers,
+                     help="the polygon's vertices, each 'x,y' (put '--' before them if the "
+                     "first starts with '-')")
+    if sub.prog.endswith("scan-line-fill"):
+        sub.add_argument("--rule", choices=("even-odd", "nonzero"), default="even-odd",
+                         help="the inside-outside rule (default even-odd)")
+        return ["points", "rule"]
+    sub.add_argument("--window", nargs=4, type=float, metavar=("XMIN", "YMIN", "XMAX", "YMAX"),
+                     help="the clip rectangle (default 0 0 10 10)")
+    sub.add_argument("--window-polygon", type=numbers, metavar="X,Y,X,Y,...",
+                     help="a convex clip polygon instead (either orientation)")
+    return ["points", "window", "window_polygon"]
+
+
+OPTIONS.update({"scan-line-fill": polygon_options, "sutherland-hodgman": polygon_options})
+
 FORMATS = ("table", "csv", "json")
 
 
@@ -147,7 +186,18 @@ def register(subparsers):
         "Negative numbers work as arguments: scanline trace dda -5 3 10 -2",
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
+    for sub in add_algorithms(parser, run).values():
+        sub.add_argument("--format", choices=FORMATS, default="table",
+                         help="table (default): aligned text with the set-up notes; "
+                         "csv: a header and one line per row; json: a list of row objects")
+
+
+def add_algorithms(parser, run):
+    """One sub-command per algorithm under ``parser``, each taking the algorithm's
+    arguments and running ``run(args)`` (``scanline trace`` and ``scanline explain``
+    share them); returns them by name."""
     algorithms = parser.add_subparsers(title="algorithms", metavar="ALGORITHM", required=True)
+    subs = {}
     for name, (description, params, centered) in ALGORITHMS.items():
         sub = algorithms.add_parser(name, help=description, description=f"Trace {description}.")
         for param, text in params.items():
@@ -155,22 +205,26 @@ def register(subparsers):
         if centered:
             sub.add_argument("--center", nargs=2, metavar=("XC", "YC"), type=integer,
                              help="center; adds the plotted pixel (xc + x, yc + y) to each row")
-        sub.add_argument("--format", choices=FORMATS, default="table",
-                         help="table (default): aligned text with the set-up notes; "
-                         "csv: a header and one line per row; json: a list of row objects")
         extra = OPTIONS[name](sub) if name in OPTIONS else []
         sub.set_defaults(run=run, algorithm=name, params=[p.lower() for p in params],
                          options=extra)
+        subs[name] = sub
+    return subs
 
 
-def run(args):
-    """Print the table of ``args.algorithm`` in ``args.format``."""
+def table_of(args):
+    """The step table the parsed arguments of an algorithm sub-command ask for."""
     from ..trace import ALGORITHMS as functions
 
     values = [getattr(args, p) for p in args.params]
     options = {"center": args.center} if "center" in vars(args) else {}
     options.update({o: getattr(args, o) for o in args.options if getattr(args, o) is not None})
-    table = functions[args.algorithm](*values, **options)
+    return functions[args.algorithm](*values, **options)
+
+
+def run(args):
+    """Print the table of ``args.algorithm`` in ``args.format``."""
+    table = table_of(args)
     if args.format == "json":
         print(table.to_json(indent=2))
     elif args.format == "csv":

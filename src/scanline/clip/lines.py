@@ -4,6 +4,7 @@ import numpy as np
 
 from .. import _validate as v
 from .._kernels import clip as k
+from .._kernels.variants import token
 from ..errors import ArgumentTypeError, ArgumentValueError
 from . import window as w
 
@@ -166,7 +167,7 @@ def lines(segments, window, method="liang-barsky"):
         rect = np.array(w.rectangle(window))
         ring = w.rectangle_polygon(*rect)
         code = k.COHEN_SUTHERLAND if method == "cohen-sutherland" else k.LIANG_BARSKY
-    bad = k.clip_lines(code, seg.reshape(-1), rect, ring, w.outward_normals(ring),
+    bad = k.clip_lines(token(code), seg.reshape(-1), rect, ring, w.outward_normals(ring),
                        float(v.COORD_LIMIT), out.reshape(-1), accepted)
     _check(bad, seg, "segments")
     return out, accepted

@@ -41,10 +41,12 @@ class Segment:
         priorities keep the order of creation.
     transformation : ndarray, shape (3, 3)
         The segment transformation, applied to the NDC geometry when drawing.
+    detectable : bool
+        Only detectable segments can be picked (:meth:`DisplayFile.pick`).
     """
 
     __slots__ = ("name", "primitives", "visible", "highlighted", "priority",
-                 "transformation", "_order")
+                 "transformation", "detectable", "_order")
 
     def __init__(self, name, order):
         self.name = name
@@ -53,6 +55,7 @@ class Segment:
         self.highlighted = False
         self.priority = 0.0
         self.transformation = np.eye(3)
+        self.detectable = True
         self._order = order
 
     def __repr__(self):
@@ -122,6 +125,7 @@ class DisplayFile:
         self._segments = {}
         self._open = None
         self._created = 0
+        self._pick_id = 0
         self.set_viewing()
 
     # -- viewing --------------------------------------------------------------------------
@@ -251,6 +255,33 @@ class DisplayFile:
         """Set a segment's priority (higher is drawn later, on top)."""
         self.segment(name).priority = v.number("priority", priority)
 
+    def set_detectability(self, name, detectable):
+        """Make a segment pickable or not (GKS's segment detectability)."""
+        self.segment(name).detectable = _flag("detectable", detectable)
+
+    def set_pick_identifier(self, pick_id):
+        """Set the pick identifier of later primitives (GKS's SET PICK IDENTIFIER):
+        a pick reports it with the segment name, so parts of one segment can be told
+        apart.  It starts at 0."""
+        if not isinstance(pick_id, numbers.Integral) or isinstance(pick_id, bool):
+            raise ArgumentTypeError(f"pick_id must be an integer, got {v._show(pick_id)}")
+        self._pick_id = int(pick_id)
+
+    # -- input ------------------------------------------------------------------------------
+    def pick(self, x, y, aperture, device):
+        """The segment (and pick identifier) under the device position (x, y): see
+        :func:`scanline.display.pick.pick`."""
+        from .pick import pick
+
+        return pick(self, x, y, aperture, device)
+
+    def locate(self, x, y, device):
+        """The world coordinates of the device position (x, y): see
+        :func:`scanline.display.pick.locate`."""
+        from .pick import locate
+
+        return locate(self, x, y, device)
+
     def set_transformation(self, name, matrix):
         """Set a segment's transformation: an affine 3x3 matrix acting on NDC (use
         :meth:`world_transformation` to give one in world coordinates)."""
@@ -264,7 +295,8 @@ class DisplayFile:
             raise ArgumentValueError(
                 f"no segment is open to hold the {kind}; call create_segment(name) first"
             )
-        self._open.primitives.append(p.Primitive(kind, geometry, attributes, self._clip))
+        self._open.primitives.append(p.Primitive(kind, geometry, attributes, self._clip,
+                                                 self._pick_id))
 
     def _ndc(self, pts):
         return tf.apply(self._normalization, pts)

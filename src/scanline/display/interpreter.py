@@ -121,18 +121,15 @@ def interpret(display_file, device, highlight="magenta"):
 
     color("highlight", highlight)
     ws = workstation(device.width, device.height)
-    frame = _padded(device_rectangle(ws, _UNIT))
-    order = sorted((s for s in display_file.segments if s.visible),
-                   key=lambda s: (s.priority, s._order))
+    frame = device_frame(ws)
     groups = hasattr(device, "begin_segment")
-    for seg in order:
+    for seg in drawing_order(display_file):
         m = ws @ seg.transformation
         drawn = []
         if groups:
             device.begin_segment(seg.name)
         for start, run, same in batch.runs(seg.primitives):
-            rect = frame if run[0].clip is None else pipeline.intersect(
-                _padded(device_rectangle(ws, run[0].clip)), frame)
+            rect = clip_rectangle(run[0], ws, frame)
             if rect is None:
                 continue
             if len(run) > 1:
@@ -153,6 +150,26 @@ def interpret(display_file, device, highlight="magenta"):
             _frame(np.vstack(drawn), frame, device, highlight)
         if groups:
             device.end_segment()
+
+
+def drawing_order(display_file):
+    """The visible segments in the order they are drawn: increasing priority, ties
+    in order of creation (GKS, ISO 7942, 4.7.6)."""
+    return sorted((s for s in display_file.segments if s.visible),
+                  key=lambda s: (s.priority, s._order))
+
+
+def device_frame(ws):
+    """The device's frame under the workstation matrix ``ws``, as a clip rectangle."""
+    return _padded(device_rectangle(ws, _UNIT))
+
+
+def clip_rectangle(prim, ws, frame):
+    """The device rectangle a primitive is clipped to: its viewport mapped by ``ws``
+    and intersected with ``frame``, or None when that is empty."""
+    if prim.clip is None:
+        return frame
+    return pipeline.intersect(_padded(device_rectangle(ws, prim.clip)), frame)
 
 
 def _padded(rect):

@@ -198,15 +198,19 @@ class Primitive:
         The validated attributes.
     clip : tuple of 4 floats or None
         The NDC clipping rectangle (xmin, ymin, xmax, ymax), or None for no clipping.
+    pick_id : int
+        The pick identifier current when the primitive was made (GKS's SET PICK
+        IDENTIFIER): what a pick reports besides the segment's name.
     """
 
-    __slots__ = ("kind", "geometry", "attributes", "clip")
+    __slots__ = ("kind", "geometry", "attributes", "clip", "pick_id")
 
-    def __init__(self, kind, geometry, attributes, clip):
+    def __init__(self, kind, geometry, attributes, clip, pick_id=0):
         self.kind = kind
         self.geometry = geometry
         self.attributes = attributes
         self.clip = clip
+        self.pick_id = pick_id
 
     def transformed(self, m):
         """This primitive with its geometry mapped by the affine 3x3 matrix ``m``
@@ -214,7 +218,7 @@ class Primitive:
         transformation)."""
         with np.errstate(all="ignore"):  # overflow -> inf, refused when drawn
             return Primitive(self.kind, self._moved(m[:2, :2], m[:2, 2]), self.attributes,
-                             self.clip)
+                             self.clip, self.pick_id)
 
     def _moved(self, lin, t):
         g = self.geometry

@@ -11,9 +11,10 @@ The command line gives the same tables: ``scanline trace bresenham 20 10 30 18``
 from .table import Table
 from .lines import bresenham, dda
 from .conics import midpoint_circle, midpoint_ellipse
-from .seedfill import flood_fill
+from .seedfill import boundary_fill, flood_fill
+from .polygon import scan_line_fill
 from .curves import de_casteljau, cox_de_boor
-from .clip import cohen_sutherland, cyrus_beck, liang_barsky
+from .clip import cohen_sutherland, cyrus_beck, liang_barsky, sutherland_hodgman
 
 #: CLI name -> function
 ALGORITHMS = {
@@ -22,14 +23,17 @@ ALGORITHMS = {
     "midpoint-circle": midpoint_circle,
     "midpoint-ellipse": midpoint_ellipse,
     "flood-fill": flood_fill,
+    "boundary-fill": boundary_fill,
+    "scan-line-fill": scan_line_fill,
     "de-casteljau": de_casteljau,
     "cox-de-boor": cox_de_boor,
     "cohen-sutherland": cohen_sutherland,
     "liang-barsky": liang_barsky,
     "cyrus-beck": cyrus_beck,
+    "sutherland-hodgman": sutherland_hodgman,
 }
 
 __all__ = ["Table", "bresenham", "dda", "midpoint_circle", "midpoint_ellipse", "flood_fill",
-           "de_casteljau", "cox_de_boor",
+           "boundary_fill", "scan_line_fill", "sutherland_hodgman", "de_casteljau", "cox_de_boor",
            "cohen_sutherland", "liang_barsky", "cyrus_beck",
            "ALGORITHMS"]

@@ -10,6 +10,7 @@ import numpy as np
 from .. import _validate as v
 from .._kernels import clip as k
 from .._kernels._jit import python
+from .._kernels.variants import token
 from ..clip import window as w
 from .table import Table, _cell
 
@@ -43,9 +44,23 @@ def _run(method, x0, y0, x1, y1, ring, rows, columns):
     out = np.empty((1, 4))
     log = np.full((rows, columns), np.nan)
     rect = np.concatenate([ring.min(axis=0), ring.max(axis=0)])
-    ok = python(k.trace_line)(method, seg, rect, ring, w.outward_normals(ring), out, log)
+    ok = python(k.trace_line)(token(method), seg, rect, ring, w.outward_normals(ring), out,
+                              log)
     used = int(np.sum(~np.isnan(log[:, 0])))
     return seg, bool(ok), out[0], log[:used]
+
+
+def _window(window, window_polygon):
+    """``window``, or the polygon of the flat list x0, y0, x1, y1, ...
+    ``window_polygon`` (the command line's ``--window-polygon``) when it is given."""
+    if window_polygon is None:
+        return window
+    flat = list(window_polygon)
+    if len(flat) % 2:
+        raise v.ArgumentValueError(
+            f"window_polygon must list x, y pairs (an even count of numbers), got "
+            f"{len(flat)} numbers")
+    return [flat[i:i + 2] for i in range(0, len(flat), 2)]
 
 
 def _result(ok, out):
@@ -162,13 +177,7 @@ def cyrus_beck(x0, y0, x1, y1, window=DEFAULT_WINDOW, window_polygon=None):
     >>> t.result
     (0.0, 4.5, 10.0, 9.5)
     """
-    if window_polygon is not None:
-        flat = list(window_polygon)
-        if len(flat) % 2:
-            raise v.ArgumentValueError(
-                f"window_polygon must list x, y pairs (an even count of numbers), got "
-                f"{len(flat)} numbers")
-        window = [flat[i:i + 2] for i in range(0, len(flat), 2)]
+    window = _window(window, window_polygon)
     ring = w.polygon(window, convex=True, algorithm="Cyrus-Beck")
     normals = w.outward_normals(ring)
     seg, ok, out, log = _run(k.CYRUS_BECK, x0, y0, x1, y1, ring, len(ring), k.PARAM_COLUMNS)
@@ -193,5 +202,90 @@ def cyrus_beck(x0, y0, x1, y1, window=DEFAULT_WINDOW, window_polygon=None):
     t = Table(f"Cyrus-Beck clip ({_cell(seg[0])}, {_cell(seg[1])}) -> "
               f"({_cell(seg[2])}, {_cell(seg[3])})",
               ["edge", "N", "PE", "P0 - PE", "N.D", "t", "kind", "t_E", "t_L"], rows, notes)
+    t.result = result
+    return t
+
+
+#: The most vertices a Sutherland-Hodgman trace takes (each stage lists every edge).
+SH_MAX_VERTICES = 10_000
+
+_SH_CASES = {(False, True): "out -> in: output I and P", (True, True): "in -> in: output P",
+             (True, False): "in -> out: output I", (False, False): "out -> out: no output"}
+
+
+def sutherland_hodgman(points, window=DEFAULT_WINDOW, window_polygon=None):
+    """Sutherland-Hodgman polygon clipping step by step: the polygon is clipped by
+    one window boundary after another, and for each boundary every edge S -> P of
+    the polygon so far falls in one of the four cases of Hearn & Baker (section 6-8):
+    out -> in outputs the intersection I and P, in -> in outputs P, in -> out
+    outputs I, out -> out outputs nothing.
+
+    Each row is one edge of one stage: the boundary (``stage``, numbered from 1, and
+    the directed window edge), S, P, the case and what was output.  A vertex on the
+    boundary counts as inside, and a vertex equal to the one output before it is
+    output once (so some rows output less than their case says).  ``table.stages``
+    lists the polygon after each stage; ``table.result`` is the clipped polygon, a
+    list of (x, y), empty when nothing is left.  The rows come from the clipper's own
+    stage (:func:`scanline._kernels.clip.clip_stage`, run as Python), so they are
+    the steps of :func:`scanline.clip.polygon`.
+
+    Parameters
+    ----------
+    points : array_like, shape (N, 2)
+        The subject polygon (one contour, either orientation).
+    window : (xmin, ymin, xmax, ymax) or convex polygon (M, 2)
+    window_polygon : list of numbers, optional
+        The convex window as a flat list x0, y0, x1, y1, ... (as :func:`cyrus_beck`).
+
+    Examples
+    --------
+    >>> t = sutherland_hodgman([(-2, 2), (6, 2), (6, 12)], window=(0, 0, 10, 10))
+    >>> [(r["stage"], r["S"], r["P"], r["case"]) for r in t.rows[6:9]]  # the top, y = 10
+    [(3, '(6, 12)', '(-2, 2)', 'out -> in: output I and P'), (3, '(-2, 2)', '(6, 2)', 'in -> in: output P'), (3, '(6, 2)', '(6, 12)', 'in -> out: output I')]
+    >>> t.result
+    [(4.4, 10.0), (0.0, 4.5), (0.0, 2.0), (6.0, 2.0), (6.0, 10.0)]
+    """
+    from .._kernels._jit import python
+    from ..geometry.contours import contours
+
+    verts, offsets = contours("points", points)
+    if len(offsets) != 2:
+        raise v.ArgumentValueError(
+            f"points must be one contour for a trace, got {len(offsets) - 1} contours")
+    if len(verts) > SH_MAX_VERTICES:
+        raise v.ArgumentValueError(
+            f"points has {len(verts)} vertices; a trace takes at most {SH_MAX_VERTICES}")
+    ring = w.polygon(_window(window, window_polygon), convex=True,
+                     algorithm="Sutherland-Hodgman")
+    stage = python(k.clip_stage)
+    current = w._ring(verts)
+    rows, stages = [], []
+    for e in range(len(ring)):
+        a, b = ring[e], ring[(e + 1) % len(ring)]
+        n = len(current)
+        dst = np.empty((2 * n + 2, 2))
+        log = np.full((n, k.SH_COLUMNS), np.nan)
+        m = stage(current, n, dst, a[0], a[1], b[0], b[1], log)
+        for i, s_in, p_in, got_i, ix, iy, got_p in log[:n].tolist():
+            i = int(i)
+            s, p = current[i - 1], current[i]
+            out = ([_vector(ix, iy)] if got_i else []) + ([_vector(*p)] if got_p else [])
+            rows.append({"stage": e + 1, "boundary": f"{_vector(*a)} -> {_vector(*b)}",
+                         "S": _vector(*s), "P": _vector(*p),
+                         "case": _SH_CASES[(bool(s_in), bool(p_in))],
+                         "output": " ".join(out)})
+        current = dst[:m].copy()
+        stages.append([tuple(q) for q in current.tolist()])
+        if m == 0:
+            break
+    result = stages[-1] if stages and len(stages[-1]) >= 3 else []
+    notes = ["window (counterclockwise): " + ", ".join(_vector(*q) for q in ring),
+             "each stage keeps the half-plane left of (or on) its directed window edge",
+             *(f"after stage {i + 1}: " + (" ".join(_vector(*q) for q in s) or "nothing")
+               for i, s in enumerate(stages)),
+             "result: " + (" ".join(_vector(*q) for q in result) or "nothing is visible")]
+    t = Table(f"Sutherland-Hodgman clip of a {len(verts)}-vertex polygon",
+              ["stage", "boundary", "S", "P", "case", "output"], rows, notes)
+    t.stages = stages
     t.result = result
     return t

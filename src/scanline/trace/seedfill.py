@@ -62,6 +62,51 @@ def grid_frame(grid):
     return FrameBuffer.from_array(image, mode="L"), chars
 
 
+def _seed_table(kind, x, y, grid, connectivity, ref_of):
+    """Run the seed fill ``kind`` (a kernel constant) from (x, y) on ``grid`` with the
+    kernel's own step loop as Python (no compilation); ``ref_of(buf, packed, x, y,
+    chars)`` gives the kernel's reference colors.  Returns the rows, the pixels filled,
+    the seed and the frame buffer."""
+    from ..draw.seedfill import eight_connected, seed
+    from .._kernels import seedfill as k
+    from .._kernels._jit import python
+    from .._kernels.variants import layout, token
+
+    fb, chars = grid_frame(grid)
+    x, y = seed(fb, x, y)
+    eight = eight_connected(connectivity)
+    buf, packed = fb._raster()
+    ref = np.ascontiguousarray(ref_of(buf, packed, x, y, chars), np.int64)
+    # the drawing kernel's own loop, run as Python with its step log on
+    _, steps, pushed = python(k.seed_loop)(buf, layout(packed), token(kind), fb.width,
+                                           fb.height, x, y, eight, ref,
+                                           np.array([255], np.uint8), True)
+    rows, pixels, stack, j = [], [], [(x, y)], 0
+    for i, (sx, sy, xl, xr, n) in enumerate(np.asarray(steps).tolist()):
+        stack.pop()
+        new = [tuple(p) for p in np.asarray(pushed[j:j + n]).tolist()]
+        j += n
+        stack += new
+        if xl >= 0:
+            pixels += [(px, sy) for px in range(xl, xr + 1)]
+        rows.append({
+            "k": i, "x": sx, "y": sy,
+            "span": f"{xl}..{xr}" if xl >= 0 else "already filled",
+            "pushed": " ".join(f"({a}, {b})" for a, b in new),
+            "stack": " ".join(f"({a}, {b})" for a, b in stack),
+        })
+    return rows, pixels, (x, y), fb
+
+
+_COLUMNS = ["k", "x", "y", "span", "pushed", "stack"]
+
+
+def _push_note(connectivity):
+    return ("pop a seed, fill its span x_left..x_right, push the rightmost pixel of each "
+            "unfilled run above and below" + (" (one pixel wider each way)"
+                                              if connectivity == 8 else ""))
+
+
 def flood_fill(x, y, grid=EXAMPLE_GRID, connectivity=4):
     """The scan-line seed fill step by step, flood-filling the region of ``grid``
     that holds the seed's character.
@@ -89,42 +134,80 @@ def flood_fill(x, y, grid=EXAMPLE_GRID, connectivity=4):
     >>> [(r["k"], r["x"], r["y"], r["span"], r["stack"]) for r in t.rows]
     [(0, 1, 1, '1..2', '(2, 2)'), (1, 2, 2, '1..2', '')]
     """
-    from ..draw.seedfill import eight_connected, seed, seed_value
+    from ..draw.seedfill import seed_value
     from .._kernels import seedfill as k
     from .._kernels._jit import python
     from .._kernels.variants import layout, token
 
-    fb, chars = grid_frame(grid)
-    x, y = seed(fb, x, y)
-    eight = eight_connected(connectivity)
-    buf, packed = fb._raster()
-    value = seed_value(buf, packed, x, y)
-    ref = np.stack([value, value])
-    # the drawing kernel's own loop, run as Python with its step log on
-    _, steps, pushed = python(k.seed_loop)(buf, layout(packed), token(k.FLOOD), fb.width,
-                                           fb.height, x, y, eight, ref,
-                                           np.array([255], np.uint8), True)
-    rows, pixels, stack, j = [], [], [(x, y)], 0
-    for i, (sx, sy, xl, xr, n) in enumerate(steps.tolist()):
-        stack.pop()
-        new = [tuple(p) for p in pushed[j:j + n].tolist()]
-        j += n
-        stack += new
-        if xl >= 0:
-            pixels += [(px, sy) for px in range(xl, xr + 1)]
-        rows.append({
-            "k": i, "x": sx, "y": sy,
-            "span": f"{xl}..{xr}" if xl >= 0 else "already filled",
-            "pushed": " ".join(f"({a}, {b})" for a, b in new),
-            "stack": " ".join(f"({a}, {b})" for a, b in stack),
-        })
+    def ref_of(buf, packed, x, y, chars):
+        value = seed_value(buf, packed, x, y)
+        return np.stack([value, value])
+
+    rows, pixels, (x, y), fb = _seed_table(k.FLOOD, x, y, grid, connectivity, ref_of)
+    value = _rows(grid)[fb.height - 1 - y][x]
     notes = [
-        f"flood fill of the {chars[int(value[0])]!r} region from seed ({x}, {y}), "
+        f"flood fill of the {value!r} region from seed ({x}, {y}), "
         f"{connectivity}-connected, on a {fb.width} x {fb.height} grid (y up, "
         "(0, 0) bottom left)",
-        "pop a seed, fill its span x_left..x_right, push the rightmost pixel of each "
-        "unfilled run above and below" + (" (one pixel wider each way)" if eight else ""),
+        _push_note(connectivity),
         f"stack at the start: ({x}, {y}); top of the stack last",
     ]
-    return Table(f"Scan-line seed fill from ({x}, {y})",
-                 ["k", "x", "y", "span", "pushed", "stack"], rows, notes, pixels)
+    return Table(f"Scan-line seed fill from ({x}, {y})", _COLUMNS, rows, notes, pixels)
+
+
+def boundary_fill(x, y, grid=EXAMPLE_GRID, boundary="#", connectivity=4):
+    """The scan-line boundary fill step by step: the region around the seed bounded
+    by the characters of ``boundary`` (each character of the grid is a color).
+
+    The rows are those of :func:`flood_fill` (seed popped, span filled, seeds pushed,
+    the stack); the region is every pixel reachable from the seed that is not a
+    boundary character, whatever its own character.  ``table.pixels()`` is exactly
+    what :func:`scanline.draw.boundary_fill` paints: the table runs the same kernel
+    loop, as Python.
+
+    Parameters
+    ----------
+    x, y : int
+        The seed, in device coordinates (y up, (0, 0) the bottom-left character).
+    grid : str or list of str
+        Rows of characters, top row first (see :func:`flood_fill`).
+    boundary : str
+        The boundary color(s): one or more characters of the grid.
+    connectivity : {4, 8}
+
+    Notes
+    -----
+    Notes, chapter 2, Q.8, "Boundary Fill Algorithm"; Hearn & Baker, section 3-11
+    (boundary-fill algorithm, the scan-line stack of spans).
+
+    Examples
+    --------
+    >>> t = boundary_fill(1, 1, ["#####", "#.o.#", "#####"], boundary="#")
+    >>> [(r["k"], r["span"]) for r in t.rows], sorted(t.pixels())
+    ([(0, '1..3')], [(1, 1), (2, 1), (3, 1)])
+    """
+    from .._kernels import seedfill as k
+
+    if not isinstance(boundary, str) or not boundary:
+        raise ArgumentTypeError(
+            f"boundary must be a string of one or more grid characters, got {v._show(boundary)}")
+    fb, chars = grid_frame(grid)
+    missing = [c for c in boundary if c not in chars]
+    if len(missing) == len(set(boundary)):
+        raise ArgumentValueError(
+            f"boundary={boundary!r}: none of its characters occurs in the grid, which uses "
+            f"{''.join(chars)!r}")
+
+    def ref_of(buf, packed, x, y, chars):
+        return np.array([[chars.index(c)] for c in dict.fromkeys(boundary) if c in chars])
+
+    rows, pixels, (x, y), fb = _seed_table(k.BOUNDARY, x, y, grid, connectivity,
+                                                  ref_of)
+    notes = [
+        f"boundary fill bounded by {boundary!r} from seed ({x}, {y}), "
+        f"{connectivity}-connected, on a {fb.width} x {fb.height} grid (y up, "
+        "(0, 0) bottom left)",
+        _push_note(connectivity),
+        f"stack at the start: ({x}, {y}); top of the stack last",
+    ]
+    return Table(f"Scan-line boundary fill from ({x}, {y})", _COLUMNS, rows, notes, pixels)

@@ -1,0 +1,375 @@
+"""The algorithm explorer's data: a step table from :mod:`scanline.trace`, turned
+into what the page shows at each step.
+
+Arguments are those of ``scanline trace ALGORITHM ARGS...`` and are parsed by the
+very same parser (:func:`scanline.cli.trace.add_algorithms`), so a bad argument gives
+the page the message the command line prints.  The rows come from ``sl.trace``;
+this module only says, for each row, which pixels it plots, which piece of a
+segment or polygon it leaves, and which handles (endpoints, control points, seeds)
+the page may drag, as indices into the argument list.  The page never runs an
+algorithm.
+"""
+
+import argparse
+import math
+import operator
+
+from ..cli import Parser, UsageError
+from ..cli import trace as cli_trace
+from ..trace.conics import _mirror4
+from ..trace.seedfill import EXAMPLE_GRID, _rows
+
+#: The first case the explorer shows for each algorithm (command-line arguments).
+DEFAULTS = {
+    "bresenham": ["20", "10", "30", "18"],
+    "dda": ["2", "3", "14", "9"],
+    "midpoint-circle": ["10", "--center", "12", "12"],
+    "midpoint-ellipse": ["8", "6", "--center", "10", "8"],
+    "flood-fill": ["1", "2", "--connectivity", "8"],
+    "boundary-fill": ["1", "2", "--boundary", "#"],
+    "scan-line-fill": ["2,1", "15,4", "10,13", "6,6", "1,9"],
+    "cohen-sutherland": ["-5", "2", "15", "22"],
+    "liang-barsky": ["-5", "2", "15", "12"],
+    "cyrus-beck": ["-5", "2", "15", "12", "--window-polygon", "0,0,10,0,12,8,4,12"],
+    "sutherland-hodgman": ["--", "-2,2", "6,-1", "13,6", "6,13"],
+    "de-casteljau": ["0,0", "2,8", "10,8", "12,0", "--u", "0.5"],
+    "cox-de-boor": ["--knots", "0,0,0,0,1,2,2,2,2", "--order", "4", "--u", "1.5"],
+}
+
+#: Tables longer than this are refused: the page lists every row.
+MAX_ROWS = 20_000
+
+
+class BadArguments(ValueError):
+    """Arguments the command line would refuse; the message is the command line's."""
+
+
+def _parsers():
+    root = Parser(prog="scanline trace")
+    return cli_trace.add_algorithms(root, None), root
+
+
+_SUBS, _ROOT = _parsers()
+
+
+def catalog():
+    """The algorithms: name, description, usage line and default arguments."""
+    return [{"name": name, "description": desc, "usage": _SUBS[name].format_usage().strip()
+             .replace("usage: ", ""), "defaults": DEFAULTS.get(name, [])}
+            for name, (desc, _, _) in cli_trace.ALGORITHMS.items()]
+
+
+def parse(algorithm, args):
+    """The parsed namespace of ``scanline trace ALGORITHM ARGS...``; BadArguments with
+    the command line's message otherwise."""
+    if algorithm not in _SUBS:
+        raise BadArguments(f"unknown algorithm {algorithm!r}; choose one of "
+                           + ", ".join(_SUBS))
+    if not isinstance(args, list) or not all(isinstance(a, str) for a in args) or len(args) > 10_000:
+        raise BadArguments("args must be a list of at most 10000 strings, as on the command line")
+    try:
+        return _ROOT.parse_args([algorithm, *args])
+    except UsageError as error:
+        raise BadArguments(str(error)) from None
+    except SystemExit:  # --help
+        raise BadArguments(f"use the usage line: {_SUBS[algorithm].format_usage().strip()}") from None
+
+
+def _number(x):
+    if isinstance(x, float) and x.is_integer() and abs(x) < 1e15:
+        return str(int(x))
+    return repr(x) if isinstance(x, float) else str(x)
+
+
+def canonical(ns):
+    """The arguments of ``ns`` spelled out (options first, then the positionals,
+    after ``--`` when one starts with '-' and is not a number) and where each coordinate sits: ``(tokens, where)`` with
+    ``where[(dest, i)]`` the token index of element i of argument ``dest`` (for a
+    list of points, ``(dest, i)`` is the token 'x,y' of point i)."""
+    sub = _SUBS[ns.algorithm]
+    options, positionals, where = [], [], {}
+    for action in sub._actions:
+        if action.dest in ("help",) or isinstance(action, argparse._HelpAction):
+            continue
+        value = getattr(ns, action.dest, None)
+        if value is None:
+            continue
+        if action.option_strings:
+            options.append(action.option_strings[0])
+            items = value if isinstance(value, list) else [value]
+            if action.type is cli_trace.numbers and action.nargs is None:
+                items = [",".join(_number(c) for c in value)]   # one token: 'x,y,x,y,...'
+            for i, item in enumerate(items):
+                where[(action.dest, i)] = len(options)
+                options.append(_number(item))
+        else:
+            items = value if isinstance(value, list) else [value]
+            for i, item in enumerate(items):
+                where[(action.dest, i)] = ("p", len(positionals))
+                positionals.append(",".join(_number(c) for c in item) if isinstance(item, list)
+                                   else _number(item))
+    dash = any(t.startswith("-") and not _ROOT._negative_number_matcher.match(t)
+               for t in positionals)
+    tokens = options + (["--"] if dash else []) + positionals
+    base = len(options) + (1 if dash else 0)
+    where = {k: (base + i[1] if isinstance(i, tuple) else i) for k, i in where.items()}
+    return tokens, where
+
+
+def _handle(where, label, x, y, xkey, ykey=None, kind="point"):
+    """A draggable handle at (x, y) bound to tokens: two tokens (x, y) or one token
+    'x,y' (``ykey`` None); ``kind`` "radius-x" / "radius-y" binds one token to the
+    distance from the center."""
+    h = {"label": label, "x": x, "y": y, "kind": kind}
+    if ykey is None:
+        h["token"] = where[xkey]
+    else:
+        h["tokens"] = [where[xkey], where[ykey]] if kind == "point" else [where[xkey]]
+    return h
+
+
+def _pixels(points):
+    return [[int(x), int(y)] for x, y in points]
+
+
+def _bounds(points, margin=2):
+    xs = [p[0] for p in points] or [0]
+    ys = [p[1] for p in points] or [0]
+    return [math.floor(min(xs)) - margin, math.floor(min(ys)) - margin,
+            math.ceil(max(xs)) + margin, math.ceil(max(ys)) + margin]
+
+
+#: Rules of the line algorithms, filled in by the page from each row's columns
+#: (``{p}`` is the row's p): the server picks the rule of each row.
+_BRESENHAM_RULES = [
+    "p_{k} = {p} < 0: keep the minor coordinate; p_k+1 = p_k + 2dy (add {increment})",
+    "p_{k} = {p} >= 0: step the minor coordinate; p_k+1 = p_k + 2dy - 2dx (add {increment})",
+]
+_DDA_RULES = ["x = {x_real} -> {x}, y = {y_real} -> {y} (round: floor(v + 0.5))"]
+
+
+def _lines(table, ns, where):
+    rows = table.rows
+    if ns.algorithm == "bresenham":
+        # the start pixel, plotted before step 0, is the endpoint the last row is not
+        end = (rows[-1]["x"], rows[-1]["y"]) if rows else None
+        start = (ns.x1, ns.y1) if end == (ns.x0, ns.y0) else (ns.x0, ns.y0)
+        rules = {"templates": _BRESENHAM_RULES, "pick": [int(r["p"] >= 0) for r in rows]}
+        before = _pixels([start])
+    else:
+        rules = {"templates": _DDA_RULES, "pick": [0] * len(rows)}
+        before = []
+    ends = [(ns.x0, ns.y0), (ns.x1, ns.y1)]
+    # each row plots the pixel in its columns x, y: no per-step lists for long lines
+    return {"before": before, "steps": None, "pixel_columns": ["x", "y"], "rules": rules,
+            "bounds": _bounds(ends),
+            "shapes": [{"kind": "line", "points": [list(ends[0]), list(ends[1])]}],
+            "handles": [_handle(where, "P0", ns.x0, ns.y0, ("x0", 0), ("y0", 0)),
+                        _handle(where, "P1", ns.x1, ns.y1, ("x1", 0), ("y1", 0))]}
+
+
+def _conics(table, ns, where):
+    xc, yc = ns.center
+    circle = ns.algorithm == "midpoint-circle"
+    rx, ry = (ns.r, ns.r) if circle else (ns.rx, ns.ry)
+    steps = []
+    for i, r in enumerate(table.rows):
+        pts = _mirror4(xc, yc, r["x"], r["y"])
+        if circle:
+            pts |= _mirror4(xc, yc, r["y"], r["x"])
+        p = r.get("p")
+        if p is None:
+            rule = "tip: complete the flat ellipse along y = 0"
+        elif circle:
+            rule = (f"p_{r['k']} = {p} < 0: (x + 1, y)" if p < 0 else
+                    f"p_{r['k']} = {p} >= 0: (x + 1, y - 1)")
+        elif r["region"] == "1":
+            rule = (f"region 1, p1_{r['k']} = {p} < 0: (x + 1, y)" if p < 0 else
+                    f"region 1, p1_{r['k']} = {p} >= 0: (x + 1, y - 1)")
+        else:
+            rule = (f"region 2, p2_{r['k']} = {p} > 0: (x, y - 1)" if p > 0 else
+                    f"region 2, p2_{r['k']} = {p} <= 0: (x + 1, y - 1)")
+        steps.append({"pixels": _pixels(sorted(pts)), "rule": rule})
+    start = _mirror4(xc, yc, 0, ry) | (_mirror4(xc, yc, ry, 0) if circle else set())
+    handles = [_handle(where, "center", xc, yc, ("center", 0), ("center", 1))]
+    if circle:
+        handles.append(_handle(where, "r", xc + rx, yc, ("r", 0), ("r", 0), "radius-x"))
+    else:
+        handles += [_handle(where, "rx", xc + rx, yc, ("rx", 0), ("rx", 0), "radius-x"),
+                    _handle(where, "ry", xc, yc + ry, ("ry", 0), ("ry", 0), "radius-y")]
+    return {"before": _pixels(sorted(start)), "steps": steps,
+            "bounds": [xc - rx - 2, yc - ry - 2, xc + rx + 2, yc + ry + 2],
+            "shapes": [], "handles": handles, "center": [xc, yc]}
+
+
+def _fills(table, ns, where):
+    rows = _rows(ns.grid if ns.grid is not None else EXAMPLE_GRID)
+    h = len(rows)
+    cells = [[x, h - 1 - j, c] for j, line in enumerate(rows) for x, c in enumerate(line)]
+    steps = []
+    for r in table.rows:
+        if r["span"] == "already filled":
+            steps.append({"pixels": [], "mark": [[r["x"], r["y"]]],
+                          "rule": f"pop ({r['x']}, {r['y']}): already filled"})
+            continue
+        a, b = (int(t) for t in r["span"].split(".."))
+        steps.append({"pixels": [[x, r["y"]] for x in range(a, b + 1)], "mark": [[r["x"], r["y"]]],
+                      "rule": f"pop ({r['x']}, {r['y']}), fill {a}..{b} on y = {r['y']}"
+                              + (f", push {r['pushed']}" if r["pushed"] else "")})
+    return {"before": [], "steps": steps, "bounds": [0, 0, len(rows[0]) - 1, h - 1],
+            "cells": cells, "shapes": [],
+            "handles": [_handle(where, "seed", ns.x, ns.y, ("x", 0), ("y", 0))]}
+
+
+def _point_handles(where, dest, points):
+    return [_handle(where, f"P{i}", p[0], p[1], (dest, i)) for i, p in enumerate(points)]
+
+
+def _scan_fill(table, ns, where):
+    steps = []
+    for r in table.rows:
+        spans = [tuple(int(t) for t in s.split("..")) for s in r["spans"].split()]
+        keys = [[int(e.split(":")[1]), r["y"]] for e in r["active"].split()]
+        steps.append({"pixels": [[x, r["y"]] for a, b in spans for x in range(a, b + 1)],
+                      "mark": keys,
+                      "rule": f"y = {r['y']}: active {r['active'] or 'none'}; spans "
+                              f"{r['spans'] or 'none'}"})
+    pts = ns.points
+    return {"before": [], "steps": steps, "bounds": _bounds(pts),
+            "shapes": [{"kind": "polygon", "points": pts}],
+            "handles": _point_handles(where, "points", pts), "edges": table.edges}
+
+
+def _clip_window(ns):
+    if getattr(ns, "window_polygon", None):
+        f = ns.window_polygon
+        return [[f[i], f[i + 1]] for i in range(0, len(f) - 1, 2)]
+    x0, y0, x1, y1 = ns.window or (0, 0, 10, 10)
+    return [[x0, y0], [x1, y0], [x1, y1], [x0, y1]]
+
+
+def _line_clip(table, ns, where):
+    p0, p1 = [ns.x0, ns.y0], [ns.x1, ns.y1]
+    steps = []
+    if ns.algorithm == "cohen-sutherland":
+        cur = [list(p0), list(p1)]
+        for r in table.rows:
+            if r["x"] is not None:
+                end = 0 if r["decision"].startswith("clip P0") else 1
+                cur[end] = [r["x"], r["y"]]
+            steps.append({"segment": [cur[0][:], cur[1][:]],
+                          "rule": f"codes {r['code0']} {r['code1']}, AND {r['and']}: {r['decision']}"})
+    else:
+        lo, hi = ("u1", "u2") if ns.algorithm == "liang-barsky" else ("t_E", "t_L")
+        d = [p1[0] - p0[0], p1[1] - p0[1]]
+        for r in table.rows:
+            a, b = r[lo], r[hi]
+            seg = ([[p0[0] + a * d[0], p0[1] + a * d[1]], [p0[0] + b * d[0], p0[1] + b * d[1]]]
+                   if a <= b else None)
+            steps.append({"segment": seg, "rule": f"{r['kind']}: t = {r['t']}, {lo} = {a:.6g}, "
+                                                  f"{hi} = {b:.6g}"})
+    win = _clip_window(ns)
+    return {"before": [], "steps": steps, "bounds": _bounds(win + [p0, p1]),
+            "shapes": [{"kind": "polygon", "points": win, "role": "window"},
+                       {"kind": "line", "points": [p0, p1], "role": "subject"}],
+            "handles": [_handle(where, "P0", p0[0], p0[1], ("x0", 0), ("y0", 0)),
+                        _handle(where, "P1", p1[0], p1[1], ("x1", 0), ("y1", 0))],
+            "result": getattr(table, "result", None)}
+
+
+def _vertex(text):
+    return [float(c) for c in text.strip("()").split(", ")]
+
+
+def _polygon_clip(table, ns, where):
+    steps, stage, out = [], None, []
+    inputs = [ns.points] + table.stages
+    for r in table.rows:
+        if r["stage"] != stage:
+            stage, out = r["stage"], []
+        out = out + [_vertex("(" + v) for v in r["output"].strip("(").split(" (") if r["output"]]
+        a, b = r["boundary"].split(" -> ")
+        steps.append({"polygon": inputs[stage - 1], "output": out,
+                      "boundary": [_vertex(a), _vertex(b)], "edge": [_vertex(r["S"]), _vertex(r["P"])],
+                      "rule": f"stage {stage}, edge S {r['S']} -> P {r['P']}: {r['case']}"})
+    win = _clip_window(ns)
+    return {"before": [], "steps": steps, "bounds": _bounds(win + ns.points),
+            "shapes": [{"kind": "polygon", "points": win, "role": "window"},
+                       {"kind": "polygon", "points": ns.points, "role": "subject"}],
+            "handles": _point_handles(where, "points", ns.points), "result": table.result}
+
+
+def _casteljau(table, ns, where):
+    steps = [{"points": [[r["x"], r["y"]]], "level": r["r"],
+              "rule": f"P_{r['i']}^{r['r']} = (1 - u) P_{r['i']}^{r['r'] - 1} + u P_{r['i'] + 1}^{r['r'] - 1}"
+              if r["r"] else f"P_{r['i']}^0 = control point {r['i']}"} for r in table.rows]
+    pts = [p[:2] for p in ns.points]
+    return {"before": [], "steps": steps, "bounds": _bounds(pts),
+            "shapes": [{"kind": "polyline", "points": pts, "role": "control"}],
+            "handles": _point_handles(where, "points", pts)}
+
+
+def _cox_de_boor(table, ns, where):
+    steps = [{"bar": [r["k"], r["r"], r["B"]],
+              "rule": f"B_{r['k']},{r['r']}({ns.u:g}) = {r['B']:.6g} on {r['interval']}"}
+             for r in table.rows]
+    return {"before": [], "steps": steps, "bounds": [0, 0, len(ns.knots), ns.order + 1],
+            "shapes": [], "handles": []}
+
+
+def _table_only(table, ns, where):
+    """An algorithm with no grid view yet: its table, stepped row by row."""
+    return {"before": [], "steps": [{"rule": ""} for _ in table.rows], "bounds": [0, 0, 10, 10],
+            "shapes": [], "handles": []}
+
+
+_VIEWS = {"bresenham": _lines, "dda": _lines, "midpoint-circle": _conics,
+          "midpoint-ellipse": _conics, "flood-fill": _fills, "boundary-fill": _fills,
+          "scan-line-fill": _scan_fill, "cohen-sutherland": _line_clip,
+          "liang-barsky": _line_clip, "cyrus-beck": _line_clip,
+          "sutherland-hodgman": _polygon_clip, "de-casteljau": _casteljau,
+          "cox-de-boor": _cox_de_boor}
+
+
+def explore(algorithm, args):
+    """The explorer's view of ``scanline trace ALGORITHM ARGS...``: a JSON-ready dict
+    with the table (title, notes, columns, rows as lists in column order), one step
+    per row (``steps``; or, for the line algorithms, ``pixel_columns`` naming the
+    columns that hold each row's pixel and ``rules``, rule templates filled from
+    each row's columns and the template each row used), the static shapes, the
+    grid bounds and the handles."""
+    return view_of(parse(algorithm, args))
+
+
+def view_of(ns):
+    """The explorer's view of parsed arguments (see :func:`explore`)."""
+    if ns.algorithm in ("midpoint-circle", "midpoint-ellipse") and ns.center is None:
+        ns.center = [0, 0]
+    table = cli_trace.table_of(ns)
+    if len(table.rows) > MAX_ROWS:
+        raise BadArguments(f"the table has {len(table.rows)} rows; the explorer shows at most "
+                           f"{MAX_ROWS} (use scanline trace for longer ones)")
+    tokens, where = canonical(ns)
+    view = _VIEWS.get(ns.algorithm, _table_only)(table, ns, where)
+    view.update({"algorithm": ns.algorithm, "args": tokens, "title": table.title,
+                 "notes": table.notes, "columns": table.columns,
+                 "rows": _cells(table),
+                 "count": len(table.rows),
+                 "command": "scanline trace " + ns.algorithm + " " + " ".join(tokens)})
+    return view
+
+
+def _cells(table):
+    """The rows as lists in column order (a row lacking a column has None there)."""
+    cols = table.columns
+    get = operator.itemgetter(*cols)
+    try:
+        return [list(get(r)) for r in table.rows] if len(cols) > 1 else [[r[cols[0]]] for r in table.rows]
+    except KeyError:
+        return [[r.get(c) for c in cols] for r in table.rows]
+
+
+def rows_of(view):
+    """The table rows of a view as dicts keyed by the column names (the view sends
+    them as lists, in column order)."""
+    return [dict(zip(view["columns"], r)) for r in view["rows"]]

@@ -1,0 +1,48 @@
+"""``scanline explain``: the explorer page for one case as a single HTML file.
+
+The explorer's own page, style and script (the studio's static assets) are inlined,
+and the view of the case (:func:`scanline.studio.explorer.view_of`, built from the
+step table) is embedded as JSON: the file needs no server, no network and no other
+file.  Text from the table reaches the page only as JSON data, which the script
+shows with ``textContent``.
+"""
+
+import json
+import re
+from importlib import resources
+
+from ..framebuffer import write_atomically
+from .explorer import view_of
+
+STATIC = resources.files("scanline.studio") / "static"
+
+
+def _json_for_script(data):
+    """JSON that cannot end the <script> element it sits in."""
+    return (json.dumps(data, separators=(",", ":"))
+            .replace("<", "\\u003c").replace(">", "\\u003e").replace("&", "\\u0026"))
+
+
+def explain_html(ns):
+    """The self-contained explorer page of the parsed ``scanline trace`` arguments."""
+    html = (STATIC / "explorer.html").read_text(encoding="utf-8")
+    css = (STATIC / "studio.css").read_text(encoding="utf-8")
+    js = (STATIC / "explorer.js").read_text(encoding="utf-8")
+    view = view_of(ns)
+    html = html.replace('<link rel="stylesheet" href="/static/studio.css">',
+                        f"<style>\n{css}</style>")
+    html = re.sub(r"<header>.*?</header>",
+                  '<header><h1>scanline explain</h1><span>step through the algorithm: '
+                  'the buttons, the arrow keys, or a click on a row</span></header>',
+                  html, flags=re.S)
+    html = html.replace('<script src="/static/explorer.js"></script>',
+                        f'<script id="trace" type="application/json">{_json_for_script(view)}'
+                        f"</script>\n<script>\n{js}</script>")
+    return html
+
+
+def explain(ns, path):
+    """Write the page of ``ns`` (arguments parsed by ``scanline explain``) to ``path``,
+    atomically."""
+    page = explain_html(ns)
+    write_atomically(path, lambda f: f.write(page.encode("utf-8")))

@@ -219,18 +219,26 @@ def run(names=None, modes=MODES, progress=None):
     return seconds
 
 
+def by_group(modes=MODES):
+    """The names of the calls, one list per group, the groups with the most calls in
+    ``modes`` first (the order in which parallel workers should take them)."""
+    members = {}
+    for name, mode, _ in cases(None, modes):
+        members.setdefault(CALLS[name][0], [])
+        if name not in members[CALLS[name][0]]:
+            members[CALLS[name][0]].append(name)
+    sizes = {g: sum(1 for n, _, _ in cases(names, modes)) for g, names in members.items()}
+    return [members[g] for g in sorted(members, key=lambda g: -sizes[g])]
+
+
 def groups(jobs, modes=MODES):
     """The calls split into ``jobs`` lists of names, whole groups to one list,
     balanced by the number of calls (so that two processes rarely compile the same
     kernel)."""
-    sizes = {}
-    for name, mode, _ in cases(None, modes):
-        group = CALLS[name][0]
-        sizes[group] = sizes.get(group, 0) + 1
     parts = [[] for _ in range(jobs)]
     load = [0] * jobs
-    for group in sorted(sizes, key=lambda g: -sizes[g]):
+    for names in by_group(modes):
         k = load.index(min(load))
-        parts[k] += [name for name, (g, _, _) in CALLS.items() if g == group]
-        load[k] += sizes[group]
+        parts[k] += names
+        load[k] += sum(1 for _ in cases(names, modes))
     return [p for p in parts if p]

@@ -64,8 +64,43 @@ def test_page_shows_each_figure_with_caption_and_tables(gallery):
 
 def test_demo_into_the_default_folder(run, tmp_path):
     result = run("demo", cwd=tmp_path)
-    assert result.code == 0 and result.err == ""
+    assert result.code == 0
     assert (tmp_path / demo.DEFAULT_DIR / "index.html").is_file()
+    # stderr, not a terminal here: what it is doing, then one plain line per figure
+    # (figure k of n, its name, the time so far) -- nothing else
+    names = [make.__name__ for make in demo.all_figures()]
+    lines = result.err.splitlines()
+    assert lines[0].startswith(f"scanline demo: drawing {len(names)} figures with ")
+    progress = [re.fullmatch(r"scanline demo: (\d+)/(\d+) (\S+) \((\d+\.\d) s\)", line)
+                for line in lines[1:]]
+    assert all(progress) and len(progress) == len(names)
+    assert [int(m[1]) for m in progress] == list(range(1, len(names) + 1))
+    assert {int(m[2]) for m in progress} == {len(names)}
+    files = {p.stem for p in (tmp_path / demo.DEFAULT_DIR).glob("*.png")}
+    assert {m[3] for m in progress} == files - {"gallery"}
+    times = [float(m[4]) for m in progress]
+    assert times == sorted(times)
+
+
+def test_demo_in_two_processes_writes_the_same_gallery(gallery, call, tmp_path):
+    out = tmp_path / "two"
+    result = call("demo", "--out", out, "--jobs", "2")
+    assert result.code == 0
+    serial = sorted(p.name for p in gallery[0].iterdir())
+    assert sorted(p.name for p in out.iterdir()) == serial
+    for name in serial:
+        if name.endswith(".png") and name != "gallery.png":
+            with Image.open(out / name) as a, Image.open(gallery[0] / name) as b:
+                assert a.size == b.size, name
+    # the page lists the figures in gallery order whichever process drew them
+    assert re.findall(r'<img src="([^"]+)"', (out / "index.html").read_text()) == \
+        re.findall(r'<img src="([^"]+)"', (gallery[0] / "index.html").read_text())
+
+
+@pytest.mark.parametrize("jobs", ["0", "-1", "two", "1.5"])
+def test_demo_jobs_must_be_a_whole_number(call, one_line_error, tmp_path, jobs):
+    one_line_error(call("demo", "--out", tmp_path / "x", "--jobs", jobs), "--jobs")
+    assert not (tmp_path / "x").exists()
 
 
 def test_demo_into_a_file_fails_cleanly(call, one_line_error, tmp_path):

@@ -1,14 +1,21 @@
-"""``scanline demo [--out DIR]``: render the gallery of figures into DIR.
+"""``scanline demo [--out DIR] [--jobs N]``: render the gallery of figures into DIR.
 
-DIR receives one PNG per figure of :mod:`scanline.cli.figures`, ``gallery.png`` (all
-of them on one sheet) and ``index.html``, a self-contained page that shows each figure
-with its caption and step table.
+DIR receives one PNG per figure of :mod:`scanline.cli.figures`, each written as soon
+as it is drawn, then ``gallery.png`` (all of them on one sheet) and ``index.html``, a
+self-contained page that shows each figure with its caption and step table.  The
+figure modules are drawn by N processes (default: one per core), each taking whole
+modules, largest first: on a first run most of the time is numba compiling kernels,
+and one process compiles one kernel at a time.
 """
 
 import html
 import os
+import sys
+import time
 
 from .. import __version__
+from .progress import Progress, cpu_jobs, run_groups
+from .warmup import jobs_argument
 
 DEFAULT_DIR = "scanline-demo"
 
@@ -35,6 +42,8 @@ def register(subparsers):
     )
     parser.add_argument("--out", metavar="DIR", default=DEFAULT_DIR,
                         help=f"folder to write into, created if needed (default ./{DEFAULT_DIR})")
+    parser.add_argument("--jobs", type=jobs_argument, default=None, metavar="N",
+                        help="processes drawing figures (default: the number of cores)")
     parser.set_defaults(run=run)
 
 
@@ -109,25 +118,73 @@ def all_figures():
             for make in importlib.import_module(f"{__package__}.{name}").FIGURES]
 
 
+def _warm():
+    """Whether the kernels of the gallery seem to be in numba's cache already."""
+    from .._kernels import antialias, conics, lines, polygon, strokes, text
+    from .progress import kernels_cached
+
+    return kernels_cached([lines.draw_line, conics.draw_circle, polygon.fill_polygons,
+                           strokes.stroke_outlines, antialias.draw_lines, text.stamp_line])
+
+
+def draw_module(group, report):
+    """Draw the figures of one module, ``group = (module, out)``, writing each PNG as
+    soon as it is drawn and reporting ``(module, index, figure without its image)``."""
+    import importlib
+
+    from ..framebuffer import write_atomically
+
+    module, out = group
+    for index, make in enumerate(importlib.import_module(f"{__package__}.{module}").FIGURES):
+        fig = make()
+        write_atomically(os.path.join(out, f"{fig.name}.png"),
+                         lambda f, image=fig.image: image.save(f, format="PNG"))
+        report((module, index, fig._replace(image=None)))
+
+
 def run(args):
-    """Render every figure, then write the PNGs, gallery.png and index.html."""
+    """Draw every figure (in parallel processes), then gallery.png and index.html."""
+    import importlib
+
+    from PIL import Image
+
     from ..framebuffer import write_atomically
     from ..studio.page import explain
     from . import build_parser
     from ._plot import grid_of
 
-    def save_png(image, name):
-        write_atomically(os.path.join(args.out, name), lambda f: image.save(f, format="PNG"))
-
     os.makedirs(args.out, exist_ok=True)
-    figures = [make() for make in all_figures()]
+    sizes = {m: len(importlib.import_module(f"{__package__}.{m}").FIGURES)
+             for m in FIGURE_MODULES}
+    groups = [(m, args.out) for m in sorted(FIGURE_MODULES, key=lambda m: -sizes[m])]
+    jobs = args.jobs or (1 if _warm() else cpu_jobs())
+    print(f"scanline demo: drawing {sum(sizes.values())} figures with {jobs} "
+          f"process{'es' if jobs > 1 else ''} (a first run compiles the kernels they use)",
+          file=sys.stderr, flush=True)
+    progress = Progress(sum(sizes.values()), "scanline demo")
+    done = {}
+    t0 = time.perf_counter()
+
+    def finished(message):
+        module, index, fig = message
+        done[module, index] = fig
+        progress.update(fig.name)
+
+    try:
+        run_groups(draw_module, groups, jobs, finished)
+    finally:
+        progress.close()
+    figures = [done[m, i] for m in FIGURE_MODULES for i in range(sizes[m])]
+    images = []
     for fig in figures:
-        save_png(fig.image, f"{fig.name}.png")
-    save_png(grid_of([f.image for f in figures], [f.title for f in figures]), "gallery.png")
+        with Image.open(os.path.join(args.out, f"{fig.name}.png")) as im:
+            images.append(im.convert("RGB"))
+    write_atomically(os.path.join(args.out, "gallery.png"),
+                     lambda f: grid_of(images, [f.title for f in figures]).save(f, format="PNG"))
     explain(build_parser().parse_args(["explain", *EXPLAIN, "-o", "-"]),
             os.path.join(args.out, "explain-bresenham.html"))
     index = os.path.join(args.out, "index.html")
     write_atomically(index, lambda f: f.write(page(figures).encode("utf-8")))
     print(f"scanline demo: wrote {len(figures)} figures, gallery.png and index.html "
-          f"to {os.path.abspath(args.out)}")
+          f"to {os.path.abspath(args.out)} in {time.perf_counter() - t0:.1f} s")
     print(f"open {os.path.abspath(index)}")

@@ -190,13 +190,15 @@ def subdivide(segments, tolerance, weighted=True):
     pieces) and the (S,) index of each segment's start point.
     """
     from .._kernels import flatten as k
+    from .._kernels.variants import token
 
     segments = np.ascontiguousarray(segments, dtype=np.float64)
     if segments.shape[1] < 2:  # degree 0: a point
         start = segments[:, 0, :-1] / segments[:, 0, -1:] if weighted else segments[:, 0]
         return start, np.arange(len(segments))
-    points, firsts, truncated = k.subdivide(segments, bool(weighted), tolerance * tolerance,
-                                            MAX_DEPTH, MAX_POINTS)
+    kind = token(k.WEIGHTED if weighted else k.PLAIN)
+    points, firsts, truncated = k.subdivide(segments, kind, tolerance * tolerance, MAX_DEPTH,
+                                            MAX_POINTS)
     if truncated:
         raise ArgumentValueError(
             f"tolerance={tolerance!r} is too small for a curve this large: flattening "

@@ -190,6 +190,7 @@ def subdivide(segments, tolerance, weighted=True):
     pieces) and the (S,) index of each segment's start point.
     """
     from .._kernels import flatten as k
+    from .._kernels._jit import call
     from .._kernels.variants import token
 
     segments = np.ascontiguousarray(segments, dtype=np.float64)
@@ -197,8 +198,9 @@ def subdivide(segments, tolerance, weighted=True):
         start = segments[:, 0, :-1] / segments[:, 0, -1:] if weighted else segments[:, 0]
         return start, np.arange(len(segments))
     kind = token(k.WEIGHTED if weighted else k.PLAIN)
-    points, firsts, truncated = k.subdivide(segments, kind, tolerance * tolerance, MAX_DEPTH,
-                                            MAX_POINTS)
+    # each segment flattens to a few dozen pieces at the usual tolerances
+    points, firsts, truncated = call(k.subdivide, 50 * segments.size, segments, kind,
+                                     tolerance * tolerance, MAX_DEPTH, MAX_POINTS)
     if truncated:
         raise ArgumentValueError(
             f"tolerance={tolerance!r} is too small for a curve this large: flattening "

@@ -204,7 +204,8 @@ class Animation:
 
     def _pillow(self, f, images, count, kind, quality):
         first = next(images)
-        rest = _Checked(images, first.size)
+        # Pillow reads the frames twice (modes and sizes first), so it needs a list
+        rest = list(_Checked(images, first.size))
         options = {"save_all": True, "append_images": rest, "loop": self.loop}
         if kind == "GIF":
             options["duration"] = frame_durations(count, self.fps, 10)
@@ -383,5 +384,9 @@ def _progress(progress, total):
         if progress:
             raise ArgumentValueError("progress=True needs tqdm: pip install tqdm") from None
         return None
-    return tqdm(total=total, unit="frame", desc="scanline", delay=0.5, leave=False,
-                disable=None if progress is None else not progress)
+
+    class Bar(tqdm):
+        monitor_interval = 0       # no monitor thread: worker processes can still fork
+
+    return Bar(total=total, unit="frame", desc="scanline", delay=0.5, leave=False,
+               disable=None if progress is None else not progress)

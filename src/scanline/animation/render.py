@@ -135,15 +135,20 @@ def _context():
 
 
 def _processes(render, parts, jobs):
+    """Start ``jobs`` worker processes now (before any progress bar or other thread
+    exists, so that fork can be used) and return the generator of their frames."""
     pool = _context().Pool(jobs, initializer=_worker_start, initargs=(_dumps(render),))
-    try:
-        for images in pool.imap(_worker_chunk, parts):
-            yield from images
-        pool.close()
-        pool.join()
-    finally:
-        pool.terminate()
-        pool.join()
+
+    def gather():
+        try:
+            for images in pool.imap(_worker_chunk, parts):
+                yield from images
+            pool.close()
+            pool.join()
+        finally:
+            pool.terminate()
+            pool.join()
+    return gather()
 
 
 # -- Dask ----------------------------------------------------------------------------------------

@@ -234,8 +234,11 @@ class Animation:
             stream = container.add_stream("libx264", rate=rate)
             stream.width, stream.height = width + width % 2, height + height % 2
             stream.pix_fmt = "yuv420p"
-            stream.time_base = 1 / rate
-            stream.codec_context.time_base = 1 / rate
+            # frames count in 1 / fps; the muxer picks the file's own time base when it
+            # writes the header (PyAV rescales the packets)
+            tick = 1 / rate
+            stream.time_base = tick
+            stream.codec_context.time_base = tick
             stream.options = {"crf": str(18 if quality is None else quality), "preset": "medium"}
             for i, image in enumerate(_prepend(first, _Checked(images, first.size))):
                 rgb = np.asarray(image.convert("RGB"))
@@ -243,7 +246,7 @@ class Animation:
                     rgb = np.pad(rgb, ((0, height % 2), (0, width % 2), (0, 0)), mode="edge")
                 frame = av.VideoFrame.from_ndarray(rgb, format="rgb24")
                 frame.pts = i
-                frame.time_base = stream.time_base
+                frame.time_base = tick
                 for packet in stream.encode(frame):
                     container.mux(packet)
             for packet in stream.encode():

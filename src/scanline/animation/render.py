@@ -113,13 +113,25 @@ def _dumps(render):
             "cloudpickle") from None
 
 
+_WORKER_ERROR = None
+
+
 def _worker_start(payload):
-    global _WORKER_RENDER
-    signal.signal(signal.SIGINT, signal.SIG_IGN)   # the parent handles Ctrl-C
-    _WORKER_RENDER = pickle.loads(payload)
+    """Each worker: ignore Ctrl-C (the parent stops the pool) and load the render
+    function.  A failure is kept and raised by the first task, so that it reaches
+    the parent (an initializer that raises makes the pool restart workers forever)."""
+    global _WORKER_RENDER, _WORKER_ERROR
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    try:
+        _WORKER_RENDER = pickle.loads(payload)
+    except Exception as error:  # noqa: BLE001 - reported to the parent by _worker_chunk
+        _WORKER_ERROR = f"{type(error).__name__}: {error}"
 
 
 def _worker_chunk(indices):
+    if _WORKER_ERROR is not None:
+        raise ArgumentValueError(f"the render function could not be loaded in a worker "
+                                 f"process ({_WORKER_ERROR}); render with jobs=1")
     return render_chunk(_WORKER_RENDER, indices)
 
 

@@ -317,13 +317,16 @@ class Chain:
         if d < self.inner_reach:
             return (f"it is {d:g} from the base, inside the radius {self.inner_reach:g} the "
                     f"chain cannot fold into (the end stops {error:g} away)")
-        return (f"the end stops {error:g} away (joint limits, or the method did not converge "
-                "within max_iterations)")
+        return (f"the end stops {error:g} away: the target is outside what this chain's "
+                "joints can reach, or joint limits block it, or the method did not converge "
+                "within max_iterations")
 
     def _start(self, initial):
         if initial is None:
             lo, hi = self.limits[:, 0], self.limits[:, 1]
-            mid = np.where(np.isfinite(lo) & np.isfinite(hi), (lo + hi) / 2, 0.0)
+            finite = np.isfinite(lo) & np.isfinite(hi)
+            mid = np.zeros(self.joints)
+            mid[finite] = (lo[finite] + hi[finite]) / 2
             return np.clip(mid, lo, hi)
         a = self._angles(initial)
         if a.ndim != 1:
@@ -375,29 +378,35 @@ class Chain:
         return angles, max_iterations
 
     def _dls(self, p, angles, tolerance, max_iterations, damping):
+        """Damped least squares with Levenberg–Marquardt control of λ: a step that
+        brings the end closer is taken and λ halved, one that does not is refused
+        and λ quadrupled (so the method neither oscillates nor stalls)."""
         lam = 0.01 * self.reach if damping is None else v.number("damping", damping)
         if lam < 0:
             raise ArgumentValueError(f"damping must be >= 0, got {lam}")
+        lam = max(lam, 1e-12 * self.reach)
         angles = angles.copy()
         lo, hi = self.limits[:, 0], self.limits[:, 1]
         eye = np.eye(self.dimension)
-        best, best_error = angles.copy(), np.inf
+        e = p - self.end(angles)
+        error = float(np.linalg.norm(e))
         for step in range(1, max_iterations + 1):
-            e = p - self.end(angles)
-            error = float(np.linalg.norm(e))
-            if error < best_error:
-                best, best_error = angles.copy(), error
             if error <= tolerance:
                 return angles, step - 1
             j = self.jacobian(angles)
-            # near the target, less damping: converge quadratically, stay stable far away
-            lam_k = lam * min(1.0, error / (0.1 * self.reach))
-            delta = j.T @ np.linalg.solve(j @ j.T + (lam_k * lam_k + 1e-300) * eye, e)
-            limit = 0.5                       # radians per step: no wild swings
-            scale = max(1.0, float(np.abs(delta).max()) / limit)
-            angles = np.clip(angles + delta / scale, lo, hi)
-        e = float(np.linalg.norm(p - self.end(angles)))
-        return (angles, max_iterations) if e <= best_error else (best, max_iterations)
+            delta = j.T @ np.linalg.solve(j @ j.T + lam * lam * eye, e)
+            scale = max(1.0, float(np.abs(delta).max()) / 0.5)   # at most 0.5 rad a step
+            trial = np.clip(angles + delta / scale, lo, hi)
+            e_trial = p - self.end(trial)
+            trial_error = float(np.linalg.norm(e_trial))
+            if trial_error < error:
+                angles, e, error = trial, e_trial, trial_error
+                lam = max(lam * 0.5, 1e-12 * self.reach)
+            else:
+                lam *= 4.0
+                if lam > 1e6 * self.reach:      # no step helps: a minimum (limits, reach)
+                    return angles, step
+        return angles, max_iterations
 
     def follow(self, targets, initial=None, method=None, **options):
         """Solve a target per frame, each from the previous frame's angles: the end

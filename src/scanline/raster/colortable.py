@@ -119,9 +119,9 @@ class ColorTableAnimation:
         """Frame ``step``: a copy of the frame buffer with the table of that step."""
         from ..framebuffer import FrameBuffer
 
-        out = FrameBuffer.from_array(self.fb.to_array(), mode="P",
-                                     color_table=[tuple(int(c) for c in row)
-                                                  for row in self.table(step)])
+        out = FrameBuffer(self.fb.width, self.fb.height, mode="P", background=0,
+                          color_table=[tuple(int(c) for c in row) for row in self.table(step)])
+        out._raster()[0][...] = self.fb._raster()[0]
         return out
 
     def frames(self):

@@ -72,11 +72,11 @@ def test_nearest_in_modes_without_levels(mode):
     src = sl.FrameBuffer(4, 2, mode=mode, **({} if mode == "1" else {"color_table": ["black", "red"]}))
     sl.draw.line(src, 0, 0, 3, 0, color=color)
     dst = sl.FrameBuffer(8, 8, mode=mode, **({} if mode == "1" else {"color_table": ["black", "red"]}))
-    rotate_block(dst, src, (0, 0, 4, 2), math.pi / 2, center=(4, 4))
+    rotate_block(dst, src, (0, 0, 4, 2), math.pi / 2, center=(4.5, 4.5))
     lit = {(int(x), 7 - int(r)) for r, x in zip(*np.nonzero(dst.to_array()))}
-    # destination (x, y) reads source (1.5 + (y - 4), 0.5 - (x - 4)), rounded half up:
-    # the source row j = 0 is x = 5, and i = 0..3 is y = 2..5
-    assert lit == {(5, y) for y in range(2, 6)}
+    # destination (x, y) reads source (1.5 + (y - 4.5), 0.5 - (x - 4.5)) = (y - 3, 5 - x):
+    # the source row j = 0 is x = 5, and i = 0..3 is y = 3..6
+    assert lit == {(5, y) for y in range(3, 7)}
     with pytest.raises(sl.ScanlineError, match="method='nearest'"):
         rotate_block(dst, src, (0, 0, 4, 2), 0.5, method="area")
 

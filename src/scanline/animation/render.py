@@ -43,7 +43,7 @@ def to_image(frame, index=None):
     """
     from ..framebuffer import FrameBuffer
 
-    where = "" if index is None else f" (frame {index})"
+    what = "frame" if index is None else f"frame {index}"
     if isinstance(frame, FrameBuffer):
         image = frame.to_pil()
     elif isinstance(frame, Image.Image):
@@ -53,18 +53,18 @@ def to_image(frame, index=None):
             with Image.open(frame) as opened:
                 image = opened.copy()
         except (OSError, ValueError) as error:
-            raise ArgumentValueError(f"frame{where} {os.fspath(frame)!r} cannot be read as an "
-                                     f"image: {error}") from None
+            raise ArgumentValueError(f"{what}: {os.fspath(frame)!r} cannot be read as an "
+                                     f"image file: {error}") from None
     elif isinstance(frame, np.ndarray):
         a = frame
         if a.dtype == bool:
             a = a.astype(np.uint8) * 255
         if a.dtype != np.uint8 or a.ndim not in (2, 3) or (a.ndim == 3 and a.shape[2] not in (3, 4)):
-            raise ArgumentValueError(f"frame{where} must be a uint8 array (h, w), (h, w, 3) or "
+            raise ArgumentValueError(f"{what} must be a uint8 array (h, w), (h, w, 3) or "
                                      f"(h, w, 4) in image order, got dtype {a.dtype}, shape {a.shape}")
         image = Image.fromarray(np.ascontiguousarray(a))
     else:
-        raise ArgumentTypeError(f"frame{where} must be a FrameBuffer, a PIL image, a numpy array "
+        raise ArgumentTypeError(f"{what} must be a FrameBuffer, a PIL image, a numpy array "
                                 f"or an image file path, got {type(frame).__name__}")
     if image.mode == "1":
         image = image.convert("L")

@@ -35,7 +35,12 @@ def test_demo_writes_every_figure_gallery_and_page(gallery):
     for png in pngs:
         with Image.open(out / png) as image:
             image.verify()
-    assert sorted(p.name for p in out.iterdir()) == sorted(pngs + ["index.html"])
+    gifs = sorted(f"{name}.gif" for name, _ in demo.all_animations())
+    assert len(gifs) >= 2       # the demo also writes short animations
+    for gif in gifs:
+        with Image.open(out / gif) as image:
+            assert image.n_frames > 1
+    assert sorted(p.name for p in out.iterdir()) == sorted(pngs + gifs + ["index.html"])
 
 
 def test_page_shows_each_figure_with_caption_and_tables(gallery):

@@ -52,12 +52,15 @@ def label(index):
     return letters
 
 
-def page(figures):
-    """The HTML of the demo page for ``figures`` (each shown from ``NAME.png``)."""
+def page(figures, animated=()):
+    """The HTML of the demo page for ``figures`` (each shown from ``NAME.png``; those
+    named in ``animated`` also link ``NAME.gif``)."""
     sections = []
     for index, fig in enumerate(figures):
         letter = label(index)
         table = f"\n<pre>{html.escape(fig.table)}</pre>" if fig.table else ""
+        if fig.name in animated:
+            table += f'\n<p><a href="{fig.name}.gif">{fig.name}.gif</a> (animated)</p>'
         sections.append(
             f'<section id="{fig.name}">\n<figure>\n'
             f'<img src="{fig.name}.png" alt="{html.escape(fig.title)}">\n'
@@ -86,7 +89,7 @@ def page(figures):
 #: functions that return a :class:`scanline.cli.figures.Figure`.
 FIGURE_MODULES = ("figures", "figures_attributes", "figures_antialias", "figures_color",
                   "figures_text", "figures_clip", "figures_scene", "figures_curves",
-                  "figures_surfaces")
+                  "figures_surfaces", "figures_animation")
 
 
 def all_figures():
@@ -95,6 +98,15 @@ def all_figures():
 
     return [make for name in FIGURE_MODULES
             for make in importlib.import_module(f"{__package__}.{name}").FIGURES]
+
+
+def all_animations():
+    """The short animations of the gallery: (name, Animation) pairs, written as GIFs
+    (a figure module's optional ``ANIMATIONS`` tuple)."""
+    import importlib
+
+    modules = [importlib.import_module(f"{__package__}.{name}") for name in FIGURE_MODULES]
+    return [make() for m in modules for make in getattr(m, "ANIMATIONS", ())]
 
 
 def run(args):
@@ -110,8 +122,13 @@ def run(args):
     for fig in figures:
         save_png(fig.image, f"{fig.name}.png")
     save_png(grid_of([f.image for f in figures], [f.title for f in figures]), "gallery.png")
+    animations = all_animations()
+    for name, animation in animations:
+        animation.save(os.path.join(args.out, f"{name}.gif"), progress=False)
     index = os.path.join(args.out, "index.html")
-    write_atomically(index, lambda f: f.write(page(figures).encode("utf-8")))
-    print(f"scanline demo: wrote {len(figures)} figures, gallery.png and index.html "
+    html_text = page(figures, {name for name, _ in animations})
+    write_atomically(index, lambda f: f.write(html_text.encode("utf-8")))
+    print(f"scanline demo: wrote {len(figures)} figures, {len(animations)} GIFs, gallery.png "
+          "and index.html "
           f"to {os.path.abspath(args.out)}")
     print(f"open {os.path.abspath(index)}")

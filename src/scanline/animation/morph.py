@@ -312,5 +312,34 @@ def _morph(sa, sb, lines, la, lb, t, a, b, p):
     from .._kernels.morph import field_morph
 
     out = np.empty_like(sa)
-    field_morph(sa, sb, lines, la, lb, t, a, b, p, out)
+    field_morph(sa, sb, line_table(lines, la, lb, p), float(t), float(a), float(b), out)
     return out
+
+
+def line_table(lines, lines_a, lines_b, p):
+    """The per-line constants that :func:`scanline._kernels.morph.field_morph` reads:
+    the destination line, its direction, 1/|d|², 1/|d|, |d|^p and unit normal, and for
+    each image the differences P' - P, d' - d, n' - n."""
+    from .._kernels.morph import (A_OFFSET, COLUMNS, DX, DY, INV_LENGTH, INV_LENGTH2,
+                                  LENGTH_P, NX, NY, PX, PY, QX, QY)
+
+    n = len(lines)
+    t = np.empty((n, COLUMNS))
+    d = lines[:, 2:] - lines[:, :2]
+    length = np.hypot(d[:, 0], d[:, 1])
+    t[:, PX:PY + 1] = lines[:, :2]
+    t[:, QX:QY + 1] = lines[:, 2:]
+    t[:, DX:DY + 1] = d
+    t[:, INV_LENGTH2] = 1.0 / (length * length)
+    t[:, INV_LENGTH] = 1.0 / length
+    t[:, LENGTH_P] = length ** p
+    normal = np.stack([-d[:, 1], d[:, 0]], 1) / length[:, None]
+    t[:, NX:NY + 1] = normal
+    for k, src in enumerate((lines_a, lines_b)):
+        ds = src[:, 2:] - src[:, :2]
+        ls = np.hypot(ds[:, 0], ds[:, 1])
+        base = A_OFFSET + 6 * k
+        t[:, base:base + 2] = src[:, :2] - lines[:, :2]
+        t[:, base + 2:base + 4] = ds - d
+        t[:, base + 4:base + 6] = np.stack([-ds[:, 1], ds[:, 0]], 1) / ls[:, None] - normal
+    return np.ascontiguousarray(t)

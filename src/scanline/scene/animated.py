@@ -177,13 +177,23 @@ class _Writer:
     def __init__(self, target, tokens, decode):
         self.target, self.tokens, self.decode = target, tokens, decode
 
-    def write(self, data, value):
+    def write(self, data, value, copied):
+        """Write ``value`` into ``data`` (a shallow copy of the base scene), copying
+        each container on the way that is not yet in ``copied`` (ids of copies), so
+        that the base scene is never changed and untouched parts are shared."""
         node = data
         for token in self.tokens[:-1]:
             if isinstance(token, tuple):
-                node = next(i for i in node if isinstance(i, dict) and i.get("name") == token[1])
+                index = next(k for k, item in enumerate(node)
+                             if isinstance(item, dict) and item.get("name") == token[1])
             else:
-                node = node[token]
+                index = token
+            child = node[index]
+            if id(child) not in copied:
+                child = list(child) if isinstance(child, list) else dict(child)
+                copied.add(id(child))
+                node[index] = child
+            node = child
         node[self.tokens[-1]] = self.decode(value)
 
 
@@ -402,9 +412,10 @@ class AnimatedScene:
 
     def data_at(self, frame):
         """The scene data of ``frame``: the base scene with the animated values."""
-        data = copy.deepcopy(self.base)
+        data = dict(self.base)
+        copied = {id(data)}
         for name, value in self.timeline.values(frame).items():
-            self.writers[name].write(data, value)
+            self.writers[name].write(data, value, copied)
         return data
 
     def frame(self, index):

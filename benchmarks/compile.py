@@ -156,6 +156,15 @@ PY_CASES = {
                      "font='stroke'); df.close_segment(); df.draw(fb)", ("RGB",)),
     "context": ("ctx = sl.Context(fb); ctx.rotate(0.3, pivot=(48, 32)); "
                 "ctx.set_line(color='red', width=3); ctx.rectangle(30, 20, 30, 20)", ("RGB",)),
+    "beier_neely": ("sl.animation.beier_neely(np.zeros((32, 48, 3), np.uint8), "
+                    "np.full((32, 48, 3), 200, np.uint8), [[5, 5, 40, 20]], [[8, 4, 42, 25]], 0.5)",
+                    None),
+    "rotate_block": ("sl.raster.rotate_block(fb, fb.__class__(20, 10, mode=fb.mode), "
+                     "(0, 0, 20, 10), 0.6, center=(48, 32))", ("RGB",)),
+    "keyframes catmull-rom": ("sl.animation.KeyFrames([0, 1, 3], [(0, 0), (5, 4), (9, 1)], "
+                              "interpolation='catmull-rom')(np.linspace(0, 3, 50))", None),
+    "motion path": ("sl.animation.MotionPath(sl.curves.Bezier([(0, 0), (0, 9), (9, 9), "
+                    "(9, 0)])).point(np.linspace(0, 1, 20))", None),
     "four calls": ("sl.draw.line(fb, 3, 4, 90, 50, color='black'); "
                    f"sl.draw.polygon(fb, {STAR}, color='navy', rule='nonzero'); "
                    "sl.draw.text(fb, 4, 20, 'Hello', color='black', height=14); "
@@ -181,6 +190,12 @@ CLI_CASES = {
     "render rotation scene": ["render", os.path.join(SCENES, "rotation.toml"), "-o", "{out}/r.png"],
     "render clipping scene": ["render", os.path.join(SCENES, "polygon_clipping.toml"),
                               "-o", "{out}/c.png"],
+    "animate scene": ["animate", os.path.join(os.path.dirname(HERE), "examples", "scenes",
+                                               "bouncing_ball.toml"), "-o", "{out}/a.gif",
+                      "--frames", "0:4"],
+    "storyboard scene": ["storyboard", os.path.join(os.path.dirname(HERE), "examples",
+                                                    "scenes", "bouncing_ball.toml"),
+                         "-o", "{out}/b.png"],
     "draw command": ["draw", "--size", "64x48", "line", "2", "3", "60", "40", "circle", "32", "24",
                      "15", "-o", "{out}/d.png"],
 }

@@ -127,22 +127,7 @@ class Animation:
     def images(self, frames=None, jobs=1, client=None, progress=None):
         """Yield the frames as Pillow images in order (rendered here, in ``jobs``
         processes, or on the Dask ``client``)."""
-        indices = self._range(frames)
-        if not indices:
-            raise ArgumentValueError(f"frames={frames!r} selects no frame")
-        stream = _render.frames(self.render, indices, jobs=jobs, client=client)
-        bar = _progress(progress, len(indices))
-        try:
-            for image in stream:
-                yield image
-                if bar is not None:
-                    bar.update(1)
-        finally:
-            close = getattr(stream, "close", None)
-            if close is not None:
-                close()
-            if bar is not None:
-                bar.close()
+        return _stream(self.render, self._range(frames), jobs, client, progress)
 
     def save(self, path, jobs=1, client=None, progress=None, frames=None, quality=None):
         """Write the animation to ``path``, the format chosen by the extension.
@@ -279,23 +264,9 @@ class Animation:
         if ext not in (".png", ".gif", ".bmp", ".webp", ".tif", ".tiff"):
             raise ArgumentValueError(f"pattern={pattern!r}: frame files must be .png, .gif, "
                                      ".bmp, .webp or .tif")
-        job = _FrameWriter(self.render, folder, pattern)
-        indices = self._range(frames)
-        paths = []
-        stream = _render.frames(job, indices, jobs=jobs, client=client)
-        bar = _progress(progress, len(indices))
-        try:
-            for receipt in stream:
-                paths.append(os.path.join(folder, receipt.info["scanline_file"]))
-                if bar is not None:
-                    bar.update(1)
-        finally:
-            close = getattr(stream, "close", None)
-            if close is not None:
-                close()
-            if bar is not None:
-                bar.close()
-        return paths
+        receipts = _stream(_FrameWriter(self.render, folder, pattern), self._range(frames),
+                           jobs, client, progress)
+        return [os.path.join(folder, receipt.info["scanline_file"]) for receipt in receipts]
 
     def _repr_html_(self):
         """Jupyter: the animation as an animated PNG in an <img> tag (the first 250
@@ -366,6 +337,29 @@ class _Checked:
                                          f"frame 0 is {self.size[0]}x{self.size[1]}; every frame "
                                          "of an animation must have one size")
             yield image
+
+
+def _stream(render, indices, jobs, client, progress):
+    """The rendered frames ``indices`` in order, with a progress bar; closing the
+    generator (or an error) stops the workers."""
+    if not indices:
+        raise ArgumentValueError("frames selects no frame")
+    stream = _render.frames(render, indices, jobs=jobs, client=client)
+    bar = _progress(progress, len(indices))
+
+    def run():
+        try:
+            for image in stream:
+                yield image
+                if bar is not None:
+                    bar.update(1)
+        finally:
+            close = getattr(stream, "close", None)
+            if close is not None:
+                close()
+            if bar is not None:
+                bar.close()
+    return run()
 
 
 def _prepend(first, rest):

@@ -41,7 +41,7 @@ def figure_spacing_laws():
         _label(image, (10, y_image), law, anchor="lm")
     return Figure(
         "spacing-laws", "Simulated accelerations: in-between spacing",
-        f"Nine in-betweens (colored ticks) between two key frames (black) at t = 0 and 1, "
+        "Nine in-betweens (colored ticks) between two key frames (black) at t = 0 and 1, "
         "spaced by Hearn & Baker's four laws: constant speed t_j = j/(n+1); speeding up "
         "1 - cos(jπ/2(n+1)) (the gaps grow); slowing down sin(jπ/2(n+1)); speeding up then "
         "slowing down (1 - cos(jπ/(n+1)))/2. The same laws are the sine easings "

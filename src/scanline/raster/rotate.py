@@ -14,7 +14,7 @@ import numpy as np
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
-from .bitblt import _point, _rect
+from .bitblt import _rect
 
 METHODS = ("area", "nearest")
 

@@ -20,7 +20,6 @@ drawn like any scene.
 
 import copy
 import math
-import numbers
 import os
 import re
 
@@ -31,6 +30,7 @@ from . import files
 from .files import SceneError
 from .locate import line_of
 from .scene import Scene
+from .schema import _fail, _real, _table
 
 _ANIMATION = {"fps", "duration", "start", "title", "storyboard", "tracks", "paths", "morphs"}
 _TRACK = {"target", "keys", "interpolation", "ease", "tension", "continuity", "bias"}
@@ -45,32 +45,10 @@ CURVES = ("polyline", "bezier", "bspline", "catmull-rom", "cardinal")
 _TOKEN = re.compile(r"([A-Za-z_][A-Za-z0-9_-]*)|\[([^\]]+)\]|(\.)")
 
 
-def _fail(path, message):
-    raise SceneError(f"{path} {message}", path=path)
-
-
-def _table(value, path, known, required=()):
-    if not isinstance(value, dict):
-        _fail(path, f"must be a table, got {type(value).__name__}")
-    for k in value:
-        if k not in known:
-            _fail(f"{path}.{k}", f"is not a known key here; known keys: {', '.join(sorted(known))}")
-    for k in required:
-        if k not in value:
-            _fail(path, f"needs the key {k!r}")
-    return value
-
-
 def _list(value, path, minimum=0):
     if not isinstance(value, list) or len(value) < minimum:
         _fail(path, f"must be an array of at least {minimum} entries, got {value!r}"[:200])
     return value
-
-
-def _real(value, path):
-    if isinstance(value, numbers.Real) and not isinstance(value, bool) and math.isfinite(value):
-        return float(value)
-    _fail(path, f"must be a finite number, got {value!r}")
 
 
 def _wrap(path, call, *args, **kwargs):

@@ -76,19 +76,37 @@ def to_image(frame, index=None):
 
 
 def render_chunk(render, indices):
-    """Render the frames ``indices`` with ``render``: a list of Pillow images (what
-    one worker does with one chunk)."""
-    return [to_image(render(int(i)), int(i)) for i in indices]
+    """Render the frames ``indices`` with ``render`` (what one worker does with one
+    chunk): a list of packed frames, see :func:`pack`."""
+    return [pack(to_image(render(int(i)), int(i))) for i in indices]
+
+
+def pack(image):
+    """A Pillow image as (pixels, mode, palette, info): a numpy array travels
+    between processes without the copies a pickled image takes (and Dask sends it
+    as one buffer)."""
+    palette = image.getpalette() if image.mode == "P" else None
+    return np.asarray(image), image.mode, palette, dict(image.info)
+
+
+def unpack(packed):
+    """The Pillow image of a :func:`pack`."""
+    pixels, mode, palette, info = packed
+    image = Image.frombytes(mode, (pixels.shape[1], pixels.shape[0]), pixels.tobytes())
+    if palette is not None:
+        image.putpalette(palette)
+    image.info.update(info)
+    return image
 
 
 def chunks(indices, parts):
-    """``indices`` cut into consecutive chunks, about four per worker and at most 16
-    frames each: big enough to keep the overhead per task small, small enough to
-    balance the load and stream the output."""
+    """``indices`` cut into consecutive chunks, about eight per worker and at most 16
+    frames each: big enough to keep the overhead per task small, small enough that
+    the workers finish together and the output streams."""
     indices = list(indices)
     if not indices:
         return []
-    size = max(1, min(16, -(-len(indices) // (4 * parts))))
+    size = max(1, min(16, -(-len(indices) // (8 * parts))))
     return [indices[i:i + size] for i in range(0, len(indices), size)]
 
 
@@ -153,8 +171,8 @@ def _processes(render, parts, jobs):
 
     def gather():
         try:
-            for images in pool.imap(_worker_chunk, parts):
-                yield from images
+            for packed in pool.imap(_worker_chunk, parts):
+                yield from (unpack(p) for p in packed)
             pool.close()
             pool.join()
         finally:
@@ -189,7 +207,9 @@ def _dask(render, indices, client, owned):
     try:
         workers = max(1, len(client.scheduler_info().get("workers", {})))
         parts = chunks(indices, workers)
-        [shared] = client.scatter([render], broadcast=True)
+        # a fresh key each time (hash=False): a repeated render must not reuse the key of
+        # a scatter the client is just releasing
+        [shared] = client.scatter([render], broadcast=True, hash=False)
         window = 4 * workers
         pending = collections.deque()
         queue = iter(parts)
@@ -199,11 +219,11 @@ def _dask(render, indices, client, owned):
                 if len(pending) >= window:
                     break
             while pending:
-                images = pending.popleft().result()
+                packed = pending.popleft().result()
                 for part in queue:
                     pending.append(client.submit(render_chunk, shared, part, pure=False))
                     break
-                yield from images
+                yield from (unpack(p) for p in packed)
         finally:
             if pending:
                 client.cancel(list(pending))

@@ -24,6 +24,10 @@ from ..errors import ArgumentValueError
 from .easing import SPACINGS, apply, resolve
 
 
+#: The most frames a sequence may have.
+MAX_FRAMES = 2**31 - 1
+
+
 class FramePlan(NamedTuple):
     """The frame counts of a sequence.
 
@@ -74,6 +78,10 @@ def frame_count(duration, fps):
     if duration <= 0:
         raise ArgumentValueError(f"duration must be > 0 seconds, got {duration}")
     product = duration * _fps(fps)
+    if not product <= MAX_FRAMES:
+        raise ArgumentValueError(
+            f"duration x fps = {duration:g} x {fps:g} is {product:g} frames; the limit is "
+            f"{MAX_FRAMES:,} (more than two years of film at 24 fps)")
     nearest = round(product)
     return max(1, nearest if abs(product - nearest) <= 1e-9 * max(1.0, product)
                else math.ceil(product))

@@ -74,6 +74,12 @@ CLI_CASES = {
     "explain bresenham": ["explain", "bresenham", "20", "10", "30", "18", "-o", "{out}/b.html"],
     "simulate random": ["simulate", "random", os.path.join(SCENES, "rotation.toml"), "-o",
                         "{out}/r.gif", "--frames", "8", "--refreshes", "1"],
+    "animate scene": ["animate", os.path.join(os.path.dirname(HERE), "examples", "scenes",
+                                               "bouncing_ball.toml"), "-o", "{out}/a.gif",
+                      "--frames", "0:4"],
+    "storyboard scene": ["storyboard", os.path.join(os.path.dirname(HERE), "examples",
+                                                    "scenes", "bouncing_ball.toml"),
+                         "-o", "{out}/b.png"],
     "draw command": ["draw", "--size", "64x48", "line", "2", "3", "60", "40", "circle", "32", "24",
                      "15", "-o", "{out}/d.png"],
 }

@@ -40,6 +40,8 @@ _LAZY = {
     "LineStyle": ("scanline.attributes", "LineStyle"),
     "text": ("scanline.text", None),
     "TextStyle": ("scanline.text.style", "TextStyle"),
+    "animation": ("scanline.animation", None),
+    "raster": ("scanline.raster", None),
 }
 
 __all__ = sorted(_LAZY) + ["__version__"]

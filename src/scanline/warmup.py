@@ -9,8 +9,9 @@ times each one in a fresh process with an empty cache (the compile-time budget o
 :mod:`scanline._kernels`), and ``tests/test_compile_budget.py`` counts the
 specializations they produce.
 
->>> sorted({group for group, _, _ in CALLS.values()})[:4]
-['antialias', 'clip', 'conics', 'curved']
+>>> group, code, modes = CALLS["line"]
+>>> group, code, modes == MODES
+('lines', "sl.draw.line(fb, 3, 4, 90, 50, color='black')", True)
 """
 
 import time
@@ -172,6 +173,16 @@ CALLS = {
                                           "sl.draw.circle(fb, 48, 32, 20, color='black'); "
                                           "RasterScan(fb, interlaced=True).frames(8, 1, scale=2)",
                                RGB),
+    "beier_neely": ("animation", "sl.animation.beier_neely(np.zeros((32, 48, 3), np.uint8), "
+                                 "np.full((32, 48, 3), 200, np.uint8), [[5, 5, 40, 20]], "
+                                 "[[8, 4, 42, 25]], 0.5)", None),
+    "rotate_block": ("animation", "sl.raster.rotate_block(fb, fb.__class__(20, 10, mode=fb.mode), "
+                                  "(0, 0, 20, 10), 0.6, center=(48, 32))", RGB),
+    "keyframes catmull-rom": ("animation", "sl.animation.KeyFrames([0, 1, 3], [(0, 0), (5, 4), "
+                                           "(9, 1)], interpolation='catmull-rom')"
+                                           "(np.linspace(0, 3, 50))", None),
+    "motion path": ("animation", "sl.animation.MotionPath(sl.curves.Bezier([(0, 0), (0, 9), "
+                                 "(9, 9), (9, 0)])).point(np.linspace(0, 1, 20))", None),
     "four calls": ("mixed", "sl.draw.line(fb, 3, 4, 90, 50, color='black'); "
                             f"sl.draw.polygon(fb, {STAR}, color='navy', rule='nonzero'); "
                             "sl.draw.text(fb, 4, 20, 'Hello', color='black', height=14); "

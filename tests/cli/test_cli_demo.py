@@ -35,8 +35,13 @@ def test_demo_writes_every_figure_gallery_and_page(gallery):
     for png in pngs:
         with Image.open(out / png) as image:
             image.verify()
-    assert sorted(p.name for p in out.iterdir()) == sorted(pngs + ["index.html",
-                                                                   "explain-bresenham.html"])
+    gifs = sorted(p.name for p in out.glob("*.gif"))
+    assert len(gifs) == sum(demo.all_animations().values()) >= 2   # short animations too
+    for gif in gifs:
+        with Image.open(out / gif) as image:
+            assert image.n_frames > 1
+    assert sorted(p.name for p in out.iterdir()) == sorted(pngs + gifs + [
+        "index.html", "explain-bresenham.html"])
 
 
 def test_page_shows_each_figure_with_caption_and_tables(gallery):
@@ -67,18 +72,20 @@ def test_demo_into_the_default_folder(run, tmp_path):
     assert result.code == 0
     assert (tmp_path / demo.DEFAULT_DIR / "index.html").is_file()
     # stderr, not a terminal here: what it is doing, then one plain line per figure
-    # (figure k of n, its name, the time so far) -- nothing else
-    names = [make.__name__ for make in demo.all_figures()]
+    # or animation (item k of n, its name, the time so far) -- nothing else
+    n = len(demo.all_figures())
+    m = sum(demo.all_animations().values())
     lines = result.err.splitlines()
-    assert lines[0].startswith(f"scanline demo: drawing {len(names)} figures with ")
+    assert lines[0].startswith(f"scanline demo: drawing {n} figures and {m} animations with ")
     progress = [re.fullmatch(r"scanline demo: (\d+)/(\d+) (\S+) \((\d+\.\d) s\)", line)
                 for line in lines[1:]]
-    assert all(progress) and len(progress) == len(names)
-    assert [int(m[1]) for m in progress] == list(range(1, len(names) + 1))
-    assert {int(m[2]) for m in progress} == {len(names)}
-    files = {p.stem for p in (tmp_path / demo.DEFAULT_DIR).glob("*.png")}
-    assert {m[3] for m in progress} == files - {"gallery"}
-    times = [float(m[4]) for m in progress]
+    assert all(progress) and len(progress) == n + m
+    assert [int(p[1]) for p in progress] == list(range(1, n + m + 1))
+    assert {int(p[2]) for p in progress} == {n + m}
+    folder = tmp_path / demo.DEFAULT_DIR
+    files = {p.stem for p in folder.glob("*.png")} - {"gallery"}
+    assert {p[3] for p in progress} == files | {p.name for p in folder.glob("*.gif")}
+    times = [float(p[4]) for p in progress]
     assert times == sorted(times)
 
 

@@ -61,12 +61,15 @@ def label(index):
     return letters
 
 
-def page(figures):
-    """The HTML of the demo page for ``figures`` (each shown from ``NAME.png``)."""
+def page(figures, animated=()):
+    """The HTML of the demo page for ``figures`` (each shown from ``NAME.png``; those
+    named in ``animated`` also link ``NAME.gif``)."""
     sections = []
     for index, fig in enumerate(figures):
         letter = label(index)
         table = f"\n<pre>{html.escape(fig.table)}</pre>" if fig.table else ""
+        if fig.name in animated:
+            table += f'\n<p><a href="{fig.name}.gif">{fig.name}.gif</a> (animated)</p>'
         sections.append(
             f'<section id="{fig.name}">\n<figure>\n'
             f'<img src="{fig.name}.png" alt="{html.escape(fig.title)}">\n'
@@ -107,7 +110,7 @@ _STUDIO = (
 #: functions that return a :class:`scanline.cli.figures.Figure`.
 FIGURE_MODULES = ("figures", "figures_attributes", "figures_antialias", "figures_color",
                   "figures_text", "figures_clip", "figures_scene", "figures_curves",
-                  "figures_surfaces")
+                  "figures_surfaces", "figures_animation")
 
 
 def all_figures():
@@ -116,6 +119,15 @@ def all_figures():
 
     return [make for name in FIGURE_MODULES
             for make in importlib.import_module(f"{__package__}.{name}").FIGURES]
+
+
+def all_animations():
+    """The names of the short animations of the gallery, by module (a figure module's
+    optional ``ANIMATIONS`` tuple of functions returning ``(name, Animation)``)."""
+    import importlib
+
+    return {m: len(getattr(importlib.import_module(f"{__package__}.{m}"), "ANIMATIONS", ()))
+            for m in FIGURE_MODULES}
 
 
 def _warm():
@@ -129,21 +141,28 @@ def _warm():
 
 def draw_module(group, report):
     """Draw the figures of one module, ``group = (module, out)``, writing each PNG as
-    soon as it is drawn and reporting ``(module, index, figure without its image)``."""
+    soon as it is drawn and reporting ``(module, index, figure without its image)``,
+    then its animations as GIFs, reporting ``(module, None, name)``."""
     import importlib
 
     from ..framebuffer import write_atomically
 
     module, out = group
-    for index, make in enumerate(importlib.import_module(f"{__package__}.{module}").FIGURES):
+    figures = importlib.import_module(f"{__package__}.{module}")
+    for index, make in enumerate(figures.FIGURES):
         fig = make()
         write_atomically(os.path.join(out, f"{fig.name}.png"),
                          lambda f, image=fig.image: image.save(f, format="PNG"))
         report((module, index, fig._replace(image=None)))
+    for make in getattr(figures, "ANIMATIONS", ()):
+        name, animation = make()
+        animation.save(os.path.join(out, f"{name}.gif"), progress=False)
+        report((module, None, name))
 
 
 def run(args):
-    """Draw every figure (in parallel processes), then gallery.png and index.html."""
+    """Draw every figure and animation (in parallel processes), then gallery.png and
+    index.html."""
     import importlib
 
     from PIL import Image
@@ -156,19 +175,26 @@ def run(args):
     os.makedirs(args.out, exist_ok=True)
     sizes = {m: len(importlib.import_module(f"{__package__}.{m}").FIGURES)
              for m in FIGURE_MODULES}
-    groups = [(m, args.out) for m in sorted(FIGURE_MODULES, key=lambda m: -sizes[m])]
+    animated = all_animations()
+    total = sum(sizes.values()) + sum(animated.values())
+    groups = [(m, args.out) for m in sorted(FIGURE_MODULES,
+                                            key=lambda m: -sizes[m] - animated[m])]
     jobs = args.jobs or (1 if _warm() else cpu_jobs())
-    print(f"scanline demo: drawing {sum(sizes.values())} figures with {jobs} "
-          f"process{'es' if jobs > 1 else ''} (a first run compiles the kernels they use)",
-          file=sys.stderr, flush=True)
-    progress = Progress(sum(sizes.values()), "scanline demo")
-    done = {}
+    print(f"scanline demo: drawing {sum(sizes.values())} figures and {sum(animated.values())} "
+          f"animations with {jobs} process{'es' if jobs > 1 else ''} (a first run compiles "
+          "the kernels they use)", file=sys.stderr, flush=True)
+    progress = Progress(total, "scanline demo")
+    done, gifs = {}, set()
     t0 = time.perf_counter()
 
     def finished(message):
-        module, index, fig = message
-        done[module, index] = fig
-        progress.update(fig.name)
+        module, index, item = message
+        if index is None:
+            gifs.add(item)
+            progress.update(f"{item}.gif")
+        else:
+            done[module, index] = item
+            progress.update(item.name)
 
     try:
         run_groups(draw_module, groups, jobs, finished)
@@ -184,7 +210,7 @@ def run(args):
     explain(build_parser().parse_args(["explain", *EXPLAIN, "-o", "-"]),
             os.path.join(args.out, "explain-bresenham.html"))
     index = os.path.join(args.out, "index.html")
-    write_atomically(index, lambda f: f.write(page(figures).encode("utf-8")))
-    print(f"scanline demo: wrote {len(figures)} figures, gallery.png and index.html "
-          f"to {os.path.abspath(args.out)} in {time.perf_counter() - t0:.1f} s")
+    write_atomically(index, lambda f: f.write(page(figures, gifs).encode("utf-8")))
+    print(f"scanline demo: wrote {len(figures)} figures, {len(gifs)} GIFs, gallery.png and "
+          f"index.html to {os.path.abspath(args.out)} in {time.perf_counter() - t0:.1f} s")
     print(f"open {os.path.abspath(index)}")

@@ -1,4 +1,5 @@
-"""The scene schema, version 1: checking a scene's data and building its display file.
+"""The scene schema, versions 1 and 2: checking a scene's data and building its display
+file (version 2 adds top-level keys read by other modules, :data:`V2_KEYS`).
 
 See docs/scene-format.md for the format.  Every error is a :class:`SceneError` whose
 message starts with the key path of the offending value
@@ -16,7 +17,12 @@ from ..errors import ScanlineError
 from .files import SceneError
 
 #: The schema versions this module reads.
-VERSIONS = (1,)
+VERSIONS = (1, 2)
+
+#: Top-level keys of version 2 that other modules read; :func:`build` lets them
+#: through (``animation``: key frames, motion paths and morphs,
+#: :mod:`scanline.scene.animated`).
+V2_KEYS = {"animation"}
 
 #: Largest canvas side, in pixels.
 MAX_SIZE = 16384
@@ -187,10 +193,13 @@ def _size(value, path):
 
 def build(data):
     """Check scene data (a dict) and build it: returns (Canvas, DisplayFile)."""
-    d = _table(data, "", {"version", "canvas", "window", "viewports", "segments"},
-               ("version",))
+    keys = {"version", "canvas", "window", "viewports", "segments"}
+    if isinstance(data, dict) and data.get("version") == 2:
+        keys |= V2_KEYS
+    d = _table(data, "", keys, ("version",))
     if d["version"] not in VERSIONS or isinstance(d["version"], bool):
-        _fail("version", f"must be 1 (the schema this scanline reads), got {d['version']!r}")
+        _fail("version", f"must be 1 or 2 (the schemas this scanline reads), got "
+              f"{d['version']!r}")
     canvas = Canvas(d.get("canvas", {}))
     default_window = d.get("window", (0, 0, canvas.width - 1, canvas.height - 1))
     df = DisplayFile(aspect(canvas.width, canvas.height))

@@ -193,6 +193,9 @@ def main(argv=None):
         for name, mode, _ in todo:
             print(name if mode is None else f"{name} [{mode}]")
         return 0
+    if not todo:
+        print(f"no case matches {args.only!r} (see --list)", file=sys.stderr)
+        return 2
     rows = []
     print(f"scanline compile budget: {len(todo)} cases, each in a fresh process with an empty "
           f"numba cache; {platform.processor() or platform.machine()}, "

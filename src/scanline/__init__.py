@@ -40,6 +40,11 @@ _LAZY = {
     "LineStyle": ("scanline.attributes", "LineStyle"),
     "text": ("scanline.text", None),
     "TextStyle": ("scanline.text.style", "TextStyle"),
+    "transform3d": ("scanline.transform3d", None),
+    "projection": ("scanline.projection", None),
+    "Camera": ("scanline.projection", "Camera"),
+    "mesh": ("scanline.mesh", None),
+    "draw3d": ("scanline.draw3d", None),
 }
 
 __all__ = sorted(_LAZY) + ["__version__"]

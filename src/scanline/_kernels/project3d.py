@@ -1,0 +1,98 @@
+"""Transforming and projecting many 3-D points and segments (Hearn & Baker,
+sections 12-2 to 12-5): world coordinates -> homogeneous clip coordinates (one 4x4
+matrix) -> clipping in homogeneous coordinates -> perspective divide -> the 3-D
+viewport on the device.
+
+``m`` is the camera's 4x4 world -> clip matrix; the view volume is the unit cube
+0 <= x/w, y/w, z/w <= 1 of normalized device coordinates (NDC), and device
+coordinates are ``ndc * scale + offset`` per axis (the 3-D viewport).
+"""
+
+import numpy as np
+
+from ._jit import helper, kernel
+from .clip3d import liang_barsky
+
+
+@helper
+def to_clip_row(m, x, y, z, out, i):
+    """Row i of ``out`` (N, 4): m @ (x, y, z, 1)."""
+    for r in range(4):
+        out[i, r] = m[r, 0] * x + m[r, 1] * y + m[r, 2] * z + m[r, 3]
+
+
+@kernel
+def to_clip(m, pts, out):
+    """Clip coordinates ``out`` (N, 4) of the points ``pts`` (N, 3): m @ (x, y, z, 1)."""
+    for i in range(pts.shape[0]):
+        to_clip_row(m, pts[i, 0], pts[i, 1], pts[i, 2], out, i)
+
+
+@kernel
+def project_points(m, scale, offset, pts, out):
+    """Device coordinates (x, y, depth) of the points ``pts`` (N, 3) into ``out``
+    (N, 3): (x_h, y_h, z_h, w) = m @ (x, y, z, 1), then (x_h / w, y_h / w, z_h / w)
+    * scale + offset.  Points with w <= 0 (at or behind the eye of a perspective
+    view) or a coordinate that is not finite get NaN: dividing by a negative w would
+    mirror them through the eye."""
+    m00, m01, m02, m03 = m[0, 0], m[0, 1], m[0, 2], m[0, 3]
+    m10, m11, m12, m13 = m[1, 0], m[1, 1], m[1, 2], m[1, 3]
+    m20, m21, m22, m23 = m[2, 0], m[2, 1], m[2, 2], m[2, 3]
+    m30, m31, m32, m33 = m[3, 0], m[3, 1], m[3, 2], m[3, 3]
+    sx, sy, sz = scale[0], scale[1], scale[2]
+    ox, oy, oz = offset[0], offset[1], offset[2]
+    for i in range(pts.shape[0]):
+        x = pts[i, 0]
+        y = pts[i, 1]
+        z = pts[i, 2]
+        w = m30 * x + m31 * y + m32 * z + m33
+        if w > 0.0 and w < np.inf:
+            r = 1.0 / w
+            out[i, 0] = (m00 * x + m01 * y + m02 * z + m03) * r * sx + ox
+            out[i, 1] = (m10 * x + m11 * y + m12 * z + m13) * r * sy + oy
+            out[i, 2] = (m20 * x + m21 * y + m22 * z + m23) * r * sz + oz
+        else:
+            out[i, 0] = np.nan
+            out[i, 1] = np.nan
+            out[i, 2] = np.nan
+
+
+@helper
+def device_segment(ends, scale, offset, out, depth, j):
+    """The clipped homogeneous segment ``ends`` (2, 4) divided and mapped to the
+    device: row j of ``out`` (x0, y0, x1, y1) and of ``depth`` (z0, z1)."""
+    for e in range(2):
+        r = 1.0 / ends[e, 3]
+        out[j, 2 * e] = ends[e, 0] * r * scale[0] + offset[0]
+        out[j, 2 * e + 1] = ends[e, 1] * r * scale[1] + offset[1]
+        depth[j, e] = ends[e, 2] * r * scale[2] + offset[2]
+
+
+@kernel
+def project_edges(m, scale, offset, planes, verts, edges, out, depth, accepted):
+    """The edges ``edges`` (E, 2) of the vertices ``verts`` (V, 3) transformed by
+    ``m``, clipped in homogeneous coordinates against ``planes`` (Liang-Barsky),
+    divided and mapped to the device: ``out`` (E, 4) device segments, ``depth``
+    (E, 2) their endpoints' depths, ``accepted`` (E,) whether any part is visible.
+
+    The vertices are transformed once each.  Edge indices must be in range (the
+    API layer checks them); an edge with a non-finite vertex is not accepted."""
+    clip = np.empty((verts.shape[0], 4))
+    good = np.empty(verts.shape[0], np.bool_)
+    for i in range(verts.shape[0]):
+        to_clip_row(m, verts[i, 0], verts[i, 1], verts[i, 2], clip, i)
+        good[i] = (abs(clip[i, 0]) < np.inf and abs(clip[i, 1]) < np.inf
+                   and abs(clip[i, 2]) < np.inf and abs(clip[i, 3]) < np.inf)
+    start = np.empty((2, 4))
+    ends = np.empty((2, 4))
+    log = np.empty((0, 7))
+    for j in range(edges.shape[0]):
+        a = edges[j, 0]
+        b = edges[j, 1]
+        for c in range(4):
+            start[0, c] = clip[a, c]
+            start[1, c] = clip[b, c]
+        ok = good[a] and good[b] and liang_barsky(planes, start, ends, False, log)
+        accepted[j] = ok
+        if ok:
+            device_segment(ends, scale, offset, out, depth, j)

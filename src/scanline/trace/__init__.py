@@ -14,6 +14,7 @@ from .conics import midpoint_circle, midpoint_ellipse
 from .seedfill import flood_fill
 from .curves import de_casteljau, cox_de_boor
 from .clip import cohen_sutherland, cyrus_beck, liang_barsky
+from .clip3d import cohen_sutherland_3d, liang_barsky_3d
 
 #: CLI name -> function
 ALGORITHMS = {
@@ -27,9 +28,12 @@ ALGORITHMS = {
     "cohen-sutherland": cohen_sutherland,
     "liang-barsky": liang_barsky,
     "cyrus-beck": cyrus_beck,
+    "cohen-sutherland-3d": cohen_sutherland_3d,
+    "liang-barsky-3d": liang_barsky_3d,
 }
 
 __all__ = ["Table", "bresenham", "dda", "midpoint_circle", "midpoint_ellipse", "flood_fill",
            "de_casteljau", "cox_de_boor",
            "cohen_sutherland", "liang_barsky", "cyrus_beck",
+           "cohen_sutherland_3d", "liang_barsky_3d",
            "ALGORITHMS"]

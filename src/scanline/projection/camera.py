@@ -293,6 +293,24 @@ class Camera:
                          out)
         return out[0] if single else out
 
+    def linear_depth(self, depth):
+        """Device depths (as :meth:`project` gives them) turned into distances beyond
+        the front plane along the viewing direction, linear in viewing coordinates
+        (the NDC depth of a perspective view is a pseudo-depth, 1 - u_f / u scaled:
+        the same order, not the same spacing)."""
+        d = np.asarray(depth, np.float64)
+        z0, z1 = self.viewport[2], self.viewport[5]
+        zn = (d - z0) / (z1 - z0)
+        p = self.projection
+        if p.kind == "parallel":
+            return zn * (p.front - p.back)
+        uf = p.prp[2] - p.front
+        if p.back is None:
+            with np.errstate(divide="ignore"):
+                return uf / (1.0 - zn) - uf
+        ub = p.prp[2] - p.back
+        return uf * ub / (ub - zn * (ub - uf)) - uf
+
     def visible(self, points, width=None, height=None):
         """Whether each point lies inside the view volume (boundary included)."""
         h = np.atleast_2d(self.to_clip(points, width, height))

@@ -90,13 +90,13 @@ def load(path, name=None):
     import meshio
 
     filename = os.fspath(path)
+    if os.path.isdir(filename):
+        raise MeshFileError("it is a folder, not a mesh file", file=filename)
     fmt = _format(filename, path, "read")
     try:
         size = os.path.getsize(filename)
     except OSError as error:
         raise MeshFileError(f"cannot read the file: {error.strerror}", file=filename) from None
-    if os.path.isdir(filename):
-        raise MeshFileError("it is a folder, not a mesh file", file=filename)
     if size > MAX_FILE_BYTES:
         raise MeshFileError(f"the file is {size} bytes; the limit is {MAX_FILE_BYTES}",
                             file=filename)
@@ -167,9 +167,9 @@ def save(mesh, path):
     if not isinstance(mesh, Mesh):
         raise ArgumentValueError(f"mesh must be a scanline.mesh.Mesh, got {type(mesh).__name__}")
     filename = os.fspath(path)
-    fmt = _format(filename, path, "write")
     if os.path.isdir(filename):
         raise MeshFileError("it is a folder; give a file name", file=filename)
+    fmt = _format(filename, path, "write")
     out = meshio.Mesh(mesh.vertices, _cells(mesh, fmt))
 
     def write(f):

@@ -32,7 +32,8 @@ def _camera(camera):
 
 
 def project_edges(vertices, edges, camera, width, height):
-    """Project and clip line segments given as vertex pairs.
+    """Project and clip line segments given as vertex pairs onto a ``width`` x
+    ``height`` device (see :func:`project_edges_into`).
 
     Parameters
     ----------
@@ -46,6 +47,30 @@ def project_edges(vertices, edges, camera, width, height):
 
     Returns
     -------
+    segments, depth, which
+        As :func:`project_edges_into`.
+    """
+    return project_edges_into(vertices, edges, camera, _camera(camera)._device_box(width, height))
+
+
+def project_edges_into(vertices, edges, camera, box, aspect=None):
+    """Project and clip line segments given as vertex pairs into the rectangle
+    ``box`` (see :meth:`scanline.Camera.mapping`).
+
+    Parameters
+    ----------
+    vertices : array_like, shape (V, 3)
+        World coordinates.
+    edges : array_like of int, shape (E, 2)
+        Vertex index pairs.
+    camera : Camera
+    box : (x0, y0, x1, y1)
+        Where NDC (0, 0) and (1, 1) land.
+    aspect : float, optional
+        The displayed width / height of ``box``.
+
+    Returns
+    -------
     segments : ndarray, shape (K, 4)
         The visible parts (x0, y0, x1, y1) in device coordinates.
     depth : ndarray, shape (K, 2)
@@ -55,6 +80,7 @@ def project_edges(vertices, edges, camera, width, height):
     """
     from .._kernels import project3d as k
 
+    camera = _camera(camera)
     verts = real_array("vertices", vertices, "(V, 3)")
     if verts.ndim != 2 or verts.shape[1] != 3:
         raise ArgumentValueError(f"vertices must have shape (V, 3), got {verts.shape}")
@@ -69,17 +95,17 @@ def project_edges(vertices, edges, camera, width, height):
         row = int(np.argmax((e < 0).any(axis=1) | (e >= len(verts)).any(axis=1)))
         raise ArgumentValueError(f"edges row {row} = {e[row].tolist()} refers to a vertex "
                                  f"out of range (0 to {len(verts) - 1})")
-    scale, offset = camera.device(width, height)
+    clip, scale, offset = camera.mapping(box, aspect)
     out = np.empty((len(e), 4))
     depth = np.empty((len(e), 2))
     accepted = np.empty(len(e), np.bool_)
-    k.project_edges(np.ascontiguousarray(camera.matrix(width, height)), scale, offset,
+    k.project_edges(np.ascontiguousarray(clip), scale, offset,
                     UNIT_CUBE.planes, np.ascontiguousarray(verts), e, out, depth, accepted)
     which = np.flatnonzero(accepted)
     return out[which], depth[which], which
 
 
-def _edge_colors(mesh, edges):
+def edge_colors(mesh, edges):
     """RGBA (E, 4) colors of a mesh's edges from its face or vertex colors: an edge
     takes the color of the first face it borders, or the mean of its two vertices'."""
     if mesh.color_on == "vertex":
@@ -97,7 +123,7 @@ def _channel_values(fb, rgba):
     return values[inverse.reshape(-1)]
 
 
-def _cue_factor(camera, depth, cue):
+def cue_factor(camera, depth, cue):
     """Hearn & Baker's depth-cueing factor per segment: f = (d_max - d) / (d_max -
     d_min) of the midpoints' distances (linear in viewing coordinates), mapped to
     the intensities ``cue`` = (near, far)."""
@@ -108,7 +134,8 @@ def _cue_factor(camera, depth, cue):
     return far + (near - far) * f
 
 
-def _cue(depth_cue):
+def depth_cue_intensities(depth_cue):
+    """(near, far) intensities of a ``depth_cue`` argument, or None."""
     if depth_cue is None or depth_cue is False:
         return None
     if depth_cue is True:
@@ -188,7 +215,7 @@ def wireframe(fb, meshes, camera, color=None, *, depth_cue=None, background=None
         raise ArgumentValueError(
             f"color holds {len(color)} colors for {len(group)} meshes; give one per mesh "
             "or one for all")
-    cue = _cue(depth_cue)
+    cue = depth_cue_intensities(depth_cue)
     if cue is not None and fb.mode not in ("L", "RGB", "RGBA"):
         raise ArgumentValueError(
             f"depth_cue needs intensity levels: use a frame buffer of mode 'L', 'RGB' or "
@@ -203,7 +230,7 @@ def wireframe(fb, meshes, camera, color=None, *, depth_cue=None, background=None
         depths.append(d)
         if not shared:
             if spec is None and mesh.colors is not None:
-                values.append(_channel_values(fb, _edge_colors(mesh, mesh.edges)[which]))
+                values.append(_channel_values(fb, edge_colors(mesh, mesh.edges)[which]))
             else:
                 pixel = fb.pixel("white" if spec is None else spec)
                 values.append(np.repeat(pixel[None], len(s), axis=0))
@@ -217,7 +244,7 @@ def wireframe(fb, meshes, camera, color=None, *, depth_cue=None, background=None
     value = np.concatenate(values)
     if cue is not None:
         bg = fb._background if background is None else fb.pixel(background, "background")
-        f = _cue_factor(camera, np.concatenate(depths), cue)
+        f = cue_factor(camera, np.concatenate(depths), cue)
         value = np.clip(np.rint(bg + f[:, None] * (value.astype(np.float64) - bg)), 0, 255)
     per_edge = (value[:, 0] if value.shape[1] == 1 else value).astype(np.int64)
     draw_lines(fb, segments, color=per_edge, method=method, **line)
@@ -254,9 +281,15 @@ def lines(fb, segments, camera, color="white", **line):
 
 
 def polyline_pieces(points, camera, width, height, closed=False):
-    """The visible pieces of a 3-D polyline on the device: a list of (K, 2) arrays
-    (consecutive visible segments that were not cut at their shared vertex stay one
-    piece, so joins and dash patterns run on)."""
+    """The visible pieces of a 3-D polyline on a ``width`` x ``height`` device: a list
+    of (K, 2) arrays (consecutive visible segments that were not cut at their shared
+    vertex stay one piece, so joins and dash patterns run on)."""
+    return pieces_into(points, camera, _camera(camera)._device_box(width, height), closed)
+
+
+def pieces_into(points, camera, box, closed=False, aspect=None):
+    """:func:`polyline_pieces` into the rectangle ``box`` (see
+    :func:`project_edges_into`)."""
     from ..transform3d.arrays import points as point_array
 
     p, _ = point_array("points", points)
@@ -265,7 +298,7 @@ def polyline_pieces(points, camera, width, height, closed=False):
     if len(p) < 2:
         return []
     edges = np.stack([np.arange(len(p) - 1), np.arange(1, len(p))], axis=1)
-    segs, _, which = project_edges(p, edges, _camera(camera), width, height)
+    segs, _, which = project_edges_into(p, edges, camera, box, aspect)
     pieces = []
     last = None
     for s, i in zip(segs, which.tolist()):

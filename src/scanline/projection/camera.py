@@ -119,8 +119,11 @@ class Camera:
     ----------
     eye, target, up : 3-vectors, optional
         The usual form: the eye (the view reference point) looking at the target,
-        ``up`` (default +y) giving the view-up vector.  With neither this nor the
-        Hearn & Baker form, viewing coordinates are world coordinates.
+        ``up`` (default +y) giving the view-up vector.  ``target`` alone: viewing
+        coordinates are world coordinates with the origin moved to the target (for
+        the projections that carry their own view direction: the standard and
+        axonometric views).  With neither this nor the Hearn & Baker form, viewing
+        coordinates are world coordinates.
     projection : Projection, optional
         Default: ``perspective(fov=45 degrees, near=0.1)`` (no back plane).
     view_reference_point, view_plane_normal, view_up : 3-vectors, optional
@@ -155,11 +158,32 @@ class Camera:
             raise ArgumentValueError(
                 "give the camera either eye/target/up or view_reference_point/"
                 "view_plane_normal/view_up (Hearn & Baker's form), not both")
-        if usual:
+        if projection is None:
+            projection = perspective(fov=math.radians(45), near=0.1)
+        if not isinstance(projection, Projection):
+            raise ArgumentTypeError(
+                "projection must be a scanline.projection.Projection (from "
+                "sl.projection.perspective, orthographic, oblique, isometric, ...), got "
+                f"{v._show(projection)}")
+        oriented = not np.array_equal(projection.orientation, np.eye(4))
+        if usual and eye is None and target is not None and up is None:
+            # target alone: viewing coordinates are world coordinates moved to the
+            # target, for the views that carry their own direction (isometric, top ...)
+            self.view_matrix = t3.translation(*(-np.array(vector("target", target))))
+            usual = False
+            self._eye = self.up = None
+            self.target = vector("target", target)
+        elif usual:
             if eye is None or target is None:
                 raise ArgumentValueError(
                     f"the eye/target form needs both eye and target; got eye={eye!r}, "
-                    f"target={target!r}")
+                    f"target={target!r} (a view with its own direction, such as "
+                    "isometric() or orthographic('top'), takes target alone)")
+            if oriented:
+                raise ArgumentValueError(
+                    f"the {projection.name} projection carries its own view direction; give "
+                    "it target alone (Camera(target=..., projection=...)), or use "
+                    "orthographic() with the eye where you want it")
             up = (0.0, 1.0, 0.0) if up is None else up
             self.view_matrix = look_at(eye, target, up)
             self._eye, self.target, self.up = (vector(n, x) for n, x in
@@ -169,17 +193,10 @@ class Camera:
                 (0.0, 0.0, 0.0) if view_reference_point is None else view_reference_point,
                 (0.0, 0.0, 1.0) if view_plane_normal is None else view_plane_normal,
                 (0.0, 1.0, 0.0) if view_up is None else view_up)
-        else:
+        elif target is None:
             self.view_matrix = np.eye(4)
-        if not usual:
+        if not usual and target is None:
             self._eye = self.target = self.up = None
-        if projection is None:
-            projection = perspective(fov=math.radians(45), near=0.1)
-        if not isinstance(projection, Projection):
-            raise ArgumentTypeError(
-                "projection must be a scanline.projection.Projection (from "
-                "sl.projection.perspective, orthographic, oblique, isometric, ...), got "
-                f"{v._show(projection)}")
         self.projection = projection
         self.viewport = _viewport(viewport)
         if not isinstance(keep_aspect, bool):
@@ -230,34 +247,51 @@ class Camera:
         p = t3.apply(t3.inverse(self.view_matrix), self.projection.prp)
         return tuple(float(c) for c in p)
 
-    def _fit(self, width, height):
-        """The aspect correction (4x4, on clip coordinates) for a device."""
-        if not self.keep_aspect or width is None:
+    def _fit(self, aspect):
+        """The aspect correction (4x4, on clip coordinates) for a device viewport
+        whose width / height is ``aspect`` (None: none)."""
+        if not self.keep_aspect or aspect is None:
             return np.eye(4)
-        w = v.positive_int("width", width, 2)
-        h = v.positive_int("height", height, 2)
         xmin, ymin, xmax, ymax = self.projection.window
-        vp = self.viewport
-        device = (vp[3] - vp[0]) * (w - 1) / ((vp[4] - vp[1]) * (h - 1))
         window = (xmax - xmin) / (ymax - ymin)
-        sx, sy = (window / device, 1.0) if device > window else (1.0, device / window)
+        sx, sy = (window / aspect, 1.0) if aspect > window else (1.0, aspect / window)
         return np.array([[sx, 0, 0, 0.5 * (1 - sx)], [0, sy, 0, 0.5 * (1 - sy)],
                          [0, 0, 1, 0], [0, 0, 0, 1]], np.float64)
+
+    def mapping(self, box, aspect=None):
+        """How the camera projects into the rectangle ``box`` = (x0, y0, x1, y1) of
+        some 2-D coordinates (a frame buffer's pixels, a display file's NDC):
+        ``(matrix, scale, offset)``, the world -> clip matrix (the window widened to
+        the displayed aspect ratio ``aspect`` = width / height of ``box`` as seen,
+        default the box's own), and the per-axis map from NDC to ``box``
+        (x, y) and to the depth range (z): ``ndc * scale + offset``.  The camera's
+        3-D viewport is a part of ``box``."""
+        x0, y0, x1, y1 = (float(c) for c in box)
+        vx0, vy0, vz0, vx1, vy1, vz1 = self.viewport
+        scale = np.array([(vx1 - vx0) * (x1 - x0), (vy1 - vy0) * (y1 - y0), vz1 - vz0])
+        offset = np.array([x0 + vx0 * (x1 - x0), y0 + vy0 * (y1 - y0), vz0])
+        if aspect is None:
+            aspect = (x1 - x0) / (y1 - y0)
+        seen = aspect * (vx1 - vx0) / (vy1 - vy0)
+        clip = self._fit(seen) @ self.projection.normalization @ self.view_matrix
+        return clip, scale, offset
+
+    def _device_box(self, width, height):
+        w = v.positive_int("width", width, 2)
+        h = v.positive_int("height", height, 2)
+        return (0.0, 0.0, float(w - 1), float(h - 1))
 
     def matrix(self, width=None, height=None):
         """The world -> homogeneous clip matrix: N · V, with the window widened to a
         ``width`` x ``height`` device when given (and ``keep_aspect``)."""
-        return self._fit(width, height) @ self.projection.normalization @ self.view_matrix
+        if width is None:
+            return self.projection.normalization @ self.view_matrix
+        return self.mapping(self._device_box(width, height))[0]
 
     def device(self, width, height):
         """``(scale, offset)``: device = NDC * scale + offset per axis (x, y, depth)
         for a ``width`` x ``height`` frame buffer and this camera's 3-D viewport."""
-        w = v.positive_int("width", width, 2)
-        h = v.positive_int("height", height, 2)
-        x0, y0, z0, x1, y1, z1 = self.viewport
-        scale = np.array([(x1 - x0) * (w - 1), (y1 - y0) * (h - 1), z1 - z0])
-        offset = np.array([x0 * (w - 1), y0 * (h - 1), z0])
-        return scale, offset
+        return self.mapping(self._device_box(width, height))[1:]
 
     # -- points ---------------------------------------------------------------------------
     def to_viewing(self, points):

@@ -105,7 +105,9 @@ def load(path, name=None):
     try:
         with warnings.catch_warnings(), np.errstate(all="ignore"):
             warnings.simplefilter("ignore")
-            data = meshio.read(filename, file_format=fmt)
+            # the format's own reader: meshio.read() prints and calls sys.exit on a
+            # ReadError
+            data = getattr(meshio, fmt).read(filename)
     except MemoryError:
         raise MeshFileError("the file announces more data than fits in memory: it is "
                             "truncated or broken", file=filename) from None
@@ -123,8 +125,8 @@ def load(path, name=None):
                          if not isinstance(block.data, list) else block.data)
     points = np.asarray(data.points, np.float64)
     if points.size == 0:
-        raise MeshFileError(f"the file holds no vertices: it is empty, truncated or not a "
-                            f"{fmt.upper()} file", file=filename)
+        raise MeshFileError(f"the file holds no vertices: it is empty, truncated or not "
+                            f"{fmt.upper()}", file=filename)
     if points.ndim != 2 or points.shape[1] not in (2, 3):
         raise MeshFileError(f"the file's vertices have shape {points.shape}, not (V, 3)",
                             file=filename)
@@ -179,8 +181,8 @@ def save(mesh, path):
             tmp = os.path.join(folder, "mesh." + fmt)
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")
-                out.write(tmp, file_format=fmt, **({"binary": True} if fmt in ("stl", "ply")
-                                                  else {}))
+                getattr(meshio, fmt).write(tmp, out, **({"binary": True} if fmt in ("stl", "ply")
+                                                         else {}))
             with open(tmp, "rb") as src:
                 f.write(src.read())
     try:

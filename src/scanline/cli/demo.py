@@ -86,7 +86,7 @@ def page(figures):
 #: functions that return a :class:`scanline.cli.figures.Figure`.
 FIGURE_MODULES = ("figures", "figures_attributes", "figures_antialias", "figures_color",
                   "figures_text", "figures_clip", "figures_scene", "figures_curves",
-                  "figures_surfaces")
+                  "figures_surfaces", "figures_three_d")
 
 
 def all_figures():

@@ -331,11 +331,11 @@ def polylines(fb, polylines_, camera, color="white", closed=False, **line):
     return pieces
 
 
-def view_volume(fb, volume_camera, camera, color="white", width=None, height=None, **line):
-    """Draw the 12 edges of ``volume_camera``'s view volume as ``camera`` sees it
-    (``width`` x ``height``: the device ``volume_camera`` widens its window for,
-    default none)."""
-    corners = _camera(volume_camera).volume_corners(width, height)
+def view_volume(fb, volume_camera, camera, color="white", size=None, **line):
+    """Draw the 12 edges of ``volume_camera``'s view volume as ``camera`` sees it;
+    ``size`` = (width, height) of the device ``volume_camera`` widens its window for
+    (default: the window as it is)."""
+    corners = _camera(volume_camera).volume_corners(*(size or (None, None)))
     ring = [(0, 1), (1, 2), (2, 3), (3, 0)]
     edges = np.array(ring + [(a + 4, b + 4) for a, b in ring] + [(k, k + 4) for k in range(4)])
     segs, _, _ = project_edges(corners, edges, _camera(camera), fb.width, fb.height)

@@ -31,7 +31,7 @@ with ``trace`` set.
 import numpy as np
 
 from ._jit import helper, kernel
-from .clip import PARAM_COLUMNS, parametric_edge
+from .clip import BLOCK, PARAM_COLUMNS, parametric_edge
 
 COHEN_SUTHERLAND = 1
 LIANG_BARSKY = 2
@@ -174,6 +174,27 @@ def liang_barsky(planes, start, ends, trace, log):
 
 
 @helper
+def parametric_interval(planes, x0, y0, z0, w0, x1, y1, z1, w1, log):
+    """Liang-Barsky's (visible, u1, u2) for the segment P0 -> P1 given as scalars:
+    the same plane steps as :func:`liang_barsky` (:func:`parametric_edge` with
+    p_k = d_k(P0) - d_k(P1), q_k = d_k(P0)), without the scratch arrays, for the
+    batch kernels."""
+    u1 = 0.0
+    u2 = 1.0
+    outside = False
+    for k in range(planes.shape[0]):
+        a = planes[k, 0]
+        b = planes[k, 1]
+        c = planes[k, 2]
+        d = planes[k, 3]
+        d0 = a * x0 + b * y0 + c * z0 + d * w0
+        d1 = a * x1 + b * y1 + c * z1 + d * w1
+        out, u1, u2 = parametric_edge(d0 - d1, d0, k, u1, u2, False, log)
+        outside |= out
+    return (not outside) & (u1 <= u2), u1, u2
+
+
+@helper
 def clip_one(method, planes, start, ends, trace, log):
     """One segment through the clipper ``method`` (a token)."""
     if len(method) == COHEN_SUTHERLAND:
@@ -189,6 +210,9 @@ def clip_segments(method, dim, seg, planes, out, accepted):
     visible into ``accepted[i]``.  A segment with a NaN or an infinite coordinate
     is not accepted (its region code has every bit set)."""
     log = np.empty((0, CS_COLUMNS))
+    if len(method) == LIANG_BARSKY:
+        parametric_segments(dim, seg, planes, out, accepted, log)
+        return
     start = np.empty((2, 4))
     ends = np.empty((2, 4))
     for i in range(accepted.shape[0]):
@@ -201,6 +225,116 @@ def clip_segments(method, dim, seg, planes, out, accepted):
         ok = finite and clip_one(method, planes, start, ends, False, log)
         accepted[i] = ok
         store_segment(dim, out, i, ends if ok else start)
+
+
+@helper
+def parametric_block(dim, seg, planes, start, m, u1, u2, outside, log):
+    """Liang-Barsky's u1, u2 and parallel-outside flags for segments start ..
+    start + m - 1, one plane at a time over the whole block: the inner loop runs over
+    the segments with selects instead of branches (as the 2-D clippers'), so the
+    compiler can process several at once."""
+    n = len(dim)
+    seg = seg[2 * n * start:2 * n * (start + m)]
+    for j in range(m):
+        u1[j] = 0.0
+        u2[j] = 1.0
+        outside[j] = False
+    for k in range(planes.shape[0]):
+        a = planes[k, 0]
+        b = planes[k, 1]
+        c = planes[k, 2]
+        d = planes[k, 3]
+        for j in range(m):
+            base = 2 * n * j
+            w0 = seg[base + 3] if n == 4 else 1.0
+            w1 = seg[base + n + 3] if n == 4 else 1.0
+            d0 = a * seg[base] + b * seg[base + 1] + c * seg[base + 2] + d * w0
+            d1 = a * seg[base + n] + b * seg[base + n + 1] + c * seg[base + n + 2] + d * w1
+            out, v1, v2 = parametric_edge(d0 - d1, d0, k, u1[j], u2[j], False, log)
+            u1[j] = v1
+            u2[j] = v2
+            outside[j] |= out
+
+
+@helper
+def parametric_six(dim, seg, planes, start, m, u1, u2, outside, log):
+    """:func:`parametric_block` for the six planes of a box or a frustum, with the
+    plane coefficients held in registers and the six steps written out, so that the
+    loop over the segments runs without branches."""
+    n = len(dim)
+    seg = seg[2 * n * start:2 * n * (start + m)]   # indexed from 0: no wraparound checks
+    a0, b0, c0, e0 = planes[0, 0], planes[0, 1], planes[0, 2], planes[0, 3]
+    a1, b1, c1, e1 = planes[1, 0], planes[1, 1], planes[1, 2], planes[1, 3]
+    a2, b2, c2, e2 = planes[2, 0], planes[2, 1], planes[2, 2], planes[2, 3]
+    a3, b3, c3, e3 = planes[3, 0], planes[3, 1], planes[3, 2], planes[3, 3]
+    a4, b4, c4, e4 = planes[4, 0], planes[4, 1], planes[4, 2], planes[4, 3]
+    a5, b5, c5, e5 = planes[5, 0], planes[5, 1], planes[5, 2], planes[5, 3]
+    for j in range(m):
+        base = 2 * n * j
+        x0 = seg[base]
+        y0 = seg[base + 1]
+        z0 = seg[base + 2]
+        w0 = seg[base + 3] if n == 4 else 1.0
+        x1 = seg[base + n]
+        y1 = seg[base + n + 1]
+        z1 = seg[base + n + 2]
+        w1 = seg[base + n + 3] if n == 4 else 1.0
+        q = a0 * x0 + b0 * y0 + c0 * z0 + e0 * w0
+        o0, v1, v2 = parametric_edge(q - (a0 * x1 + b0 * y1 + c0 * z1 + e0 * w1), q, 0,
+                                     0.0, 1.0, False, log)
+        q = a1 * x0 + b1 * y0 + c1 * z0 + e1 * w0
+        o1, v1, v2 = parametric_edge(q - (a1 * x1 + b1 * y1 + c1 * z1 + e1 * w1), q, 1,
+                                     v1, v2, False, log)
+        q = a2 * x0 + b2 * y0 + c2 * z0 + e2 * w0
+        o2, v1, v2 = parametric_edge(q - (a2 * x1 + b2 * y1 + c2 * z1 + e2 * w1), q, 2,
+                                     v1, v2, False, log)
+        q = a3 * x0 + b3 * y0 + c3 * z0 + e3 * w0
+        o3, v1, v2 = parametric_edge(q - (a3 * x1 + b3 * y1 + c3 * z1 + e3 * w1), q, 3,
+                                     v1, v2, False, log)
+        q = a4 * x0 + b4 * y0 + c4 * z0 + e4 * w0
+        o4, v1, v2 = parametric_edge(q - (a4 * x1 + b4 * y1 + c4 * z1 + e4 * w1), q, 4,
+                                     v1, v2, False, log)
+        q = a5 * x0 + b5 * y0 + c5 * z0 + e5 * w0
+        o5, v1, v2 = parametric_edge(q - (a5 * x1 + b5 * y1 + c5 * z1 + e5 * w1), q, 5,
+                                     v1, v2, False, log)
+        u1[j] = v1
+        u2[j] = v2
+        outside[j] = o0 | o1 | o2 | o3 | o4 | o5
+
+
+@helper
+def parametric_segments(dim, seg, planes, out, accepted, log):
+    """The Liang-Barsky batch of :func:`clip_segments`, in blocks of
+    :data:`scanline._kernels.clip.BLOCK` segments (:func:`parametric_six` for six
+    planes, else :func:`parametric_block`)."""
+    n = len(dim)
+    total = accepted.shape[0]
+    u1 = np.empty(BLOCK)
+    u2 = np.empty(BLOCK)
+    outside = np.empty(BLOCK, np.bool_)
+    for start in range(0, total, BLOCK):
+        m = min(BLOCK, total - start)
+        if planes.shape[0] == 6:
+            parametric_six(dim, seg, planes, start, m, u1, u2, outside, log)
+        else:
+            parametric_block(dim, seg, planes, start, m, u1, u2, outside, log)
+        s = seg[2 * n * start:2 * n * (start + m)]     # indexed from 0, as the block
+        o = out[2 * n * start:2 * n * (start + m)]
+        acc = accepted[start:start + m]
+        for j in range(m):
+            base = 2 * n * j
+            finite = True
+            for c in range(2 * n):
+                finite &= abs(s[base + c]) < np.inf
+            ok = finite and (not outside[j]) and u1[j] <= u2[j]
+            acc[j] = ok
+            t0 = u1[j] if ok else 0.0
+            t1 = u2[j] if ok else 1.0
+            for c in range(n):
+                a = s[base + c]
+                b = s[base + n + c]
+                o[base + c] = a + t0 * (b - a) if t0 > 0.0 else a
+                o[base + n + c] = a + t1 * (b - a) if t1 < 1.0 else b
 
 
 def trace_segment(method, start, planes, log):

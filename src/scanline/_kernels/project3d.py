@@ -11,7 +11,7 @@ coordinates are ``ndc * scale + offset`` per axis (the 3-D viewport).
 import numpy as np
 
 from ._jit import helper, kernel
-from .clip3d import liang_barsky
+from .clip3d import parametric_interval
 
 
 @helper
@@ -58,14 +58,20 @@ def project_points(m, scale, offset, pts, out):
 
 
 @helper
-def device_segment(ends, scale, offset, out, depth, j):
-    """The clipped homogeneous segment ``ends`` (2, 4) divided and mapped to the
-    device: row j of ``out`` (x0, y0, x1, y1) and of ``depth`` (z0, z1)."""
+def device_segment(clip, a, b, u1, u2, scale, offset, out, depth, j):
+    """The part u1 <= t <= u2 of the homogeneous segment from ``clip[a]`` to
+    ``clip[b]``, divided and mapped to the device: row j of ``out`` (x0, y0, x1, y1)
+    and of ``depth`` (z0, z1)."""
     for e in range(2):
-        r = 1.0 / ends[e, 3]
-        out[j, 2 * e] = ends[e, 0] * r * scale[0] + offset[0]
-        out[j, 2 * e + 1] = ends[e, 1] * r * scale[1] + offset[1]
-        depth[j, e] = ends[e, 2] * r * scale[2] + offset[2]
+        t = u1 if e == 0 else u2
+        x = clip[a, 0] + t * (clip[b, 0] - clip[a, 0])
+        y = clip[a, 1] + t * (clip[b, 1] - clip[a, 1])
+        z = clip[a, 2] + t * (clip[b, 2] - clip[a, 2])
+        w = clip[a, 3] + t * (clip[b, 3] - clip[a, 3])
+        r = 1.0 / w
+        out[j, 2 * e] = x * r * scale[0] + offset[0]
+        out[j, 2 * e + 1] = y * r * scale[1] + offset[1]
+        depth[j, e] = z * r * scale[2] + offset[2]
 
 
 @kernel
@@ -83,16 +89,14 @@ def project_edges(m, scale, offset, planes, verts, edges, out, depth, accepted):
         to_clip_row(m, verts[i, 0], verts[i, 1], verts[i, 2], clip, i)
         good[i] = (abs(clip[i, 0]) < np.inf and abs(clip[i, 1]) < np.inf
                    and abs(clip[i, 2]) < np.inf and abs(clip[i, 3]) < np.inf)
-    start = np.empty((2, 4))
-    ends = np.empty((2, 4))
     log = np.empty((0, 7))
     for j in range(edges.shape[0]):
         a = edges[j, 0]
         b = edges[j, 1]
-        for c in range(4):
-            start[0, c] = clip[a, c]
-            start[1, c] = clip[b, c]
-        ok = good[a] and good[b] and liang_barsky(planes, start, ends, False, log)
+        ok, u1, u2 = parametric_interval(planes, clip[a, 0], clip[a, 1], clip[a, 2],
+                                         clip[a, 3], clip[b, 0], clip[b, 1], clip[b, 2],
+                                         clip[b, 3], log)
+        ok &= good[a] and good[b]
         accepted[j] = ok
         if ok:
-            device_segment(ends, scale, offset, out, depth, j)
+            device_segment(clip, a, b, u1, u2, scale, offset, out, depth, j)

@@ -127,7 +127,7 @@ class Mesh:
         if verts.ndim != 2 or verts.shape[1] != 3:
             raise ArgumentValueError(
                 f"vertices must have shape (V, 3), got shape {verts.shape}")
-        self.vertices = finite("vertices", np.ascontiguousarray(verts))
+        self.vertices = finite("vertices", np.array(verts, order="C"))    # a copy
         self.face_indices, self.face_offsets = _flat_faces(faces, len(verts))
         self.normals = None
         if normals is not None:
@@ -136,7 +136,7 @@ class Mesh:
                 raise ArgumentValueError(
                     f"normals must have one row per vertex, shape {self.vertices.shape}, got "
                     f"{nrm.shape}")
-            self.normals = np.ascontiguousarray(nrm)
+            self.normals = np.array(nrm, order="C")
         self.colors, self.color_on = None, None
         if colors is not None:
             self._set_colors(colors, color_on)

@@ -180,6 +180,12 @@ def sweep(profile, kind="rotational", **kw):
     ``axis``, ``angle``, ``steps``) or ``"translational"``
     (:func:`translational_sweep`, keyword ``vector``)."""
     v.choice("kind", kind, ("rotational", "translational"))
+    own = ({"axis", "angle", "steps", "closed", "samples"} if kind == "rotational"
+           else {"vector", "closed", "caps", "samples"}) | {"colors", "color_on", "name"}
+    for key in kw:
+        if key not in own:
+            raise ArgumentTypeError(f"a {kind} sweep takes {', '.join(sorted(own))}; got "
+                                    f"{key!r}")
     return (rotational_sweep if kind == "rotational" else translational_sweep)(profile, **kw)
 
 

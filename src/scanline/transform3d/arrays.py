@@ -15,7 +15,8 @@ from ..errors import ArgumentTypeError, ArgumentValueError
 
 
 def real_array(name, value, expected):
-    """``value`` as a new float64 array, or an error naming ``name`` (``expected``
+    """``value`` as a float64 array (not copied when it is one), or an error naming
+    ``name`` (``expected``
     describes the shape that would work, for the message)."""
     try:
         a = np.asarray(value)
@@ -31,7 +32,7 @@ def real_array(name, value, expected):
     if a.dtype == bool or a.dtype.kind not in "iuf":
         raise ArgumentTypeError(
             f"{name} must hold real numbers ({expected}), got an array of dtype {a.dtype}")
-    return np.array(a, dtype=np.float64)
+    return np.asarray(a, dtype=np.float64)
 
 
 def finite(name, a):
@@ -71,7 +72,7 @@ def direction(name, value):
 
 
 def matrix4(name, value):
-    """A finite 4x4 matrix as a new float64 array."""
+    """A finite 4x4 matrix as a float64 array."""
     a = real_array(name, value, "(4, 4)")
     if a.shape != (4, 4):
         hint = ""

@@ -149,6 +149,24 @@ PY_CASES = {
                       "knots='open').flatten(0.01)", None),
     "surface tessellate": ("sl.curves.teapot_mesh(4)", None),
     "inside": (f"sl.geometry.inside([(32, 30), (5, 5)], {STAR}, rule='nonzero')", None),
+    "camera project": ("sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)).project("
+                       "np.random.default_rng(0).uniform(-1, 1, (100, 3)), 96, 64)", None),
+    "clip lines3d liang-barsky": ("sl.clip.lines3d(np.random.default_rng(1).uniform(-5, 15, "
+                                  "(100, 6)), ((0, 0, 0), (10, 10, 10)))", None),
+    "clip lines3d cohen-sutherland": ("sl.clip.lines3d(np.random.default_rng(1).uniform(-5, 15, "
+                                      "(100, 6)), ((0, 0, 0), (10, 10, 10)), "
+                                      "method='cohen-sutherland')", None),
+    "clip homogeneous": ("sl.clip.homogeneous([[(1, 1, 1, 2), (1, 1, -3, -2)]])", None),
+    "clip polygon3d": ("sl.clip.polygon3d([(-1, 0.5, 0.5), (2, 0.5, 0.5), (0.5, 2, 0.5)], "
+                       "((0, 0, 0), (1, 1, 1)))", None),
+    "wireframe": ("sl.draw3d.wireframe(fb, sl.mesh.torus(1, 0.3), "
+                  "sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)), color='black')", ("RGB",)),
+    "wireframe depth cue": ("sl.draw3d.wireframe(fb, sl.mesh.sphere(), "
+                            "sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)), color='black', "
+                            "depth_cue=True)", ("RGB",)),
+    "draw3d polylines thick": ("sl.draw3d.polylines(fb, [[(0, 0, 0), (1, 1, 0), (1, 0, 1)]], "
+                               "sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)), color='black', "
+                               "width=3)", ("RGB",)),
     "display file": ("df = sl.DisplayFile(); df.set_viewing(window=(0, 0, 100, 100), "
                      "viewport=(0, 0, 1, 1)); df.create_segment('house', priority=1); "
                      "df.polygon([(20, 10), (80, 10), (80, 60), (20, 60)], color='tan', "
@@ -181,6 +199,12 @@ CLI_CASES = {
     "render rotation scene": ["render", os.path.join(SCENES, "rotation.toml"), "-o", "{out}/r.png"],
     "render clipping scene": ["render", os.path.join(SCENES, "polygon_clipping.toml"),
                               "-o", "{out}/c.png"],
+    "trace cohen-sutherland-3d": ["trace", "cohen-sutherland-3d", "-5", "2", "5", "15", "22",
+                                  "5"],
+    "trace liang-barsky-3d": ["trace", "liang-barsky-3d", "0.5", "0.5", "1", "0.5", "0.5",
+                              "-3", "--w", "2", "-2"],
+    "render perspective scene": ["render", os.path.join(SCENES, "perspective.toml"), "-o",
+                                 "{out}/p.png"],
     "draw command": ["draw", "--size", "64x48", "line", "2", "3", "60", "40", "circle", "32", "24",
                      "15", "-o", "{out}/d.png"],
 }

@@ -174,27 +174,6 @@ def liang_barsky(planes, start, ends, trace, log):
 
 
 @helper
-def parametric_interval(planes, x0, y0, z0, w0, x1, y1, z1, w1, log):
-    """Liang-Barsky's (visible, u1, u2) for the segment P0 -> P1 given as scalars:
-    the same plane steps as :func:`liang_barsky` (:func:`parametric_edge` with
-    p_k = d_k(P0) - d_k(P1), q_k = d_k(P0)), without the scratch arrays, for the
-    batch kernels."""
-    u1 = 0.0
-    u2 = 1.0
-    outside = False
-    for k in range(planes.shape[0]):
-        a = planes[k, 0]
-        b = planes[k, 1]
-        c = planes[k, 2]
-        d = planes[k, 3]
-        d0 = a * x0 + b * y0 + c * z0 + d * w0
-        d1 = a * x1 + b * y1 + c * z1 + d * w1
-        out, u1, u2 = parametric_edge(d0 - d1, d0, k, u1, u2, False, log)
-        outside |= out
-    return (not outside) & (u1 <= u2), u1, u2
-
-
-@helper
 def clip_one(method, planes, start, ends, trace, log):
     """One segment through the clipper ``method`` (a token)."""
     if len(method) == COHEN_SUTHERLAND:
@@ -228,6 +207,14 @@ def clip_segments(method, dim, seg, planes, out, accepted):
 
 
 @helper
+def parametric_step(p, q, u1, u2, log):
+    """One plane of Liang-Barsky without the step log: the 2-D clippers'
+    :func:`scanline._kernels.clip.parametric_edge`, inlined once here and called
+    by the block loops (a single inlined copy compiles faster than one per plane)."""
+    return parametric_edge(p, q, 0, u1, u2, False, log)
+
+
+@helper
 def parametric_block(dim, seg, planes, start, m, u1, u2, outside, log):
     """Liang-Barsky's u1, u2 and parallel-outside flags for segments start ..
     start + m - 1, one plane at a time over the whole block: the inner loop runs over
@@ -250,7 +237,7 @@ def parametric_block(dim, seg, planes, start, m, u1, u2, outside, log):
             w1 = seg[base + n + 3] if n == 4 else 1.0
             d0 = a * seg[base] + b * seg[base + 1] + c * seg[base + 2] + d * w0
             d1 = a * seg[base + n] + b * seg[base + n + 1] + c * seg[base + n + 2] + d * w1
-            out, v1, v2 = parametric_edge(d0 - d1, d0, k, u1[j], u2[j], False, log)
+            out, v1, v2 = parametric_step(d0 - d1, d0, u1[j], u2[j], log)
             u1[j] = v1
             u2[j] = v2
             outside[j] |= out
@@ -280,23 +267,23 @@ def parametric_six(dim, seg, planes, start, m, u1, u2, outside, log):
         z1 = seg[base + n + 2]
         w1 = seg[base + n + 3] if n == 4 else 1.0
         q = a0 * x0 + b0 * y0 + c0 * z0 + e0 * w0
-        o0, v1, v2 = parametric_edge(q - (a0 * x1 + b0 * y1 + c0 * z1 + e0 * w1), q, 0,
-                                     0.0, 1.0, False, log)
+        o0, v1, v2 = parametric_step(q - (a0 * x1 + b0 * y1 + c0 * z1 + e0 * w1), q,
+                                            0.0, 1.0, log)
         q = a1 * x0 + b1 * y0 + c1 * z0 + e1 * w0
-        o1, v1, v2 = parametric_edge(q - (a1 * x1 + b1 * y1 + c1 * z1 + e1 * w1), q, 1,
-                                     v1, v2, False, log)
+        o1, v1, v2 = parametric_step(q - (a1 * x1 + b1 * y1 + c1 * z1 + e1 * w1), q,
+                                            v1, v2, log)
         q = a2 * x0 + b2 * y0 + c2 * z0 + e2 * w0
-        o2, v1, v2 = parametric_edge(q - (a2 * x1 + b2 * y1 + c2 * z1 + e2 * w1), q, 2,
-                                     v1, v2, False, log)
+        o2, v1, v2 = parametric_step(q - (a2 * x1 + b2 * y1 + c2 * z1 + e2 * w1), q,
+                                            v1, v2, log)
         q = a3 * x0 + b3 * y0 + c3 * z0 + e3 * w0
-        o3, v1, v2 = parametric_edge(q - (a3 * x1 + b3 * y1 + c3 * z1 + e3 * w1), q, 3,
-                                     v1, v2, False, log)
+        o3, v1, v2 = parametric_step(q - (a3 * x1 + b3 * y1 + c3 * z1 + e3 * w1), q,
+                                            v1, v2, log)
         q = a4 * x0 + b4 * y0 + c4 * z0 + e4 * w0
-        o4, v1, v2 = parametric_edge(q - (a4 * x1 + b4 * y1 + c4 * z1 + e4 * w1), q, 4,
-                                     v1, v2, False, log)
+        o4, v1, v2 = parametric_step(q - (a4 * x1 + b4 * y1 + c4 * z1 + e4 * w1), q,
+                                            v1, v2, log)
         q = a5 * x0 + b5 * y0 + c5 * z0 + e5 * w0
-        o5, v1, v2 = parametric_edge(q - (a5 * x1 + b5 * y1 + c5 * z1 + e5 * w1), q, 5,
-                                     v1, v2, False, log)
+        o5, v1, v2 = parametric_step(q - (a5 * x1 + b5 * y1 + c5 * z1 + e5 * w1), q,
+                                            v1, v2, log)
         u1[j] = v1
         u2[j] = v2
         outside[j] = o0 | o1 | o2 | o3 | o4 | o5
@@ -305,8 +292,9 @@ def parametric_six(dim, seg, planes, start, m, u1, u2, outside, log):
 @helper
 def parametric_segments(dim, seg, planes, out, accepted, log):
     """The Liang-Barsky batch of :func:`clip_segments`, in blocks of
-    :data:`scanline._kernels.clip.BLOCK` segments (:func:`parametric_six` for six
-    planes, else :func:`parametric_block`)."""
+    :data:`scanline._kernels.clip.BLOCK` segments (:func:`parametric_block`; the
+    wireframe kernel uses :func:`parametric_six`, which is faster but takes longer to
+    compile)."""
     n = len(dim)
     total = accepted.shape[0]
     u1 = np.empty(BLOCK)
@@ -314,10 +302,7 @@ def parametric_segments(dim, seg, planes, out, accepted, log):
     outside = np.empty(BLOCK, np.bool_)
     for start in range(0, total, BLOCK):
         m = min(BLOCK, total - start)
-        if planes.shape[0] == 6:
-            parametric_six(dim, seg, planes, start, m, u1, u2, outside, log)
-        else:
-            parametric_block(dim, seg, planes, start, m, u1, u2, outside, log)
+        parametric_block(dim, seg, planes, start, m, u1, u2, outside, log)
         s = seg[2 * n * start:2 * n * (start + m)]     # indexed from 0, as the block
         o = out[2 * n * start:2 * n * (start + m)]
         acc = accepted[start:start + m]

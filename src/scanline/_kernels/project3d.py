@@ -11,7 +11,8 @@ coordinates are ``ndc * scale + offset`` per axis (the 3-D viewport).
 import numpy as np
 
 from ._jit import helper, kernel
-from .clip3d import parametric_interval
+from .clip import BLOCK
+from .clip3d import parametric_six
 
 
 @helper
@@ -58,45 +59,60 @@ def project_points(m, scale, offset, pts, out):
 
 
 @helper
-def device_segment(clip, a, b, u1, u2, scale, offset, out, depth, j):
-    """The part u1 <= t <= u2 of the homogeneous segment from ``clip[a]`` to
-    ``clip[b]``, divided and mapped to the device: row j of ``out`` (x0, y0, x1, y1)
-    and of ``depth`` (z0, z1)."""
+def device_segment(seg, i, u1, u2, scale, offset, out, depth, j):
+    """The part u1 <= t <= u2 of the homogeneous segment ``seg[i : i + 8]``
+    (x0, y0, z0, w0, x1, y1, z1, w1), divided and mapped to the device: row j of
+    ``out`` (x0, y0, x1, y1) and of ``depth`` (z0, z1)."""
     for e in range(2):
         t = u1 if e == 0 else u2
-        x = clip[a, 0] + t * (clip[b, 0] - clip[a, 0])
-        y = clip[a, 1] + t * (clip[b, 1] - clip[a, 1])
-        z = clip[a, 2] + t * (clip[b, 2] - clip[a, 2])
-        w = clip[a, 3] + t * (clip[b, 3] - clip[a, 3])
+        x = seg[i] + t * (seg[i + 4] - seg[i])
+        y = seg[i + 1] + t * (seg[i + 5] - seg[i + 1])
+        z = seg[i + 2] + t * (seg[i + 6] - seg[i + 2])
+        w = seg[i + 3] + t * (seg[i + 7] - seg[i + 3])
         r = 1.0 / w
         out[j, 2 * e] = x * r * scale[0] + offset[0]
         out[j, 2 * e + 1] = y * r * scale[1] + offset[1]
-        depth[j, e] = z * r * scale[2] + offset[2]
+        if depth.shape[0] > 0:
+            depth[j, e] = z * r * scale[2] + offset[2]
 
 
 @kernel
-def project_edges(m, scale, offset, planes, verts, edges, out, depth, accepted):
-    """The edges ``edges`` (E, 2) of the vertices ``verts`` (V, 3) transformed by
-    ``m``, clipped in homogeneous coordinates against ``planes`` (Liang-Barsky),
-    divided and mapped to the device: ``out`` (E, 4) device segments, ``depth``
-    (E, 2) their endpoints' depths, ``accepted`` (E,) whether any part is visible.
+def project_edges(scale, offset, planes, clip, edges, out, depth, which):
+    """The edges ``edges`` (E, 2) of the vertices whose clip coordinates are ``clip``
+    (V, 4) (:func:`to_clip`), clipped in homogeneous coordinates against the six
+    ``planes``
+    (Liang-Barsky, :func:`scanline._kernels.clip3d.parametric_six`, in blocks),
+    divided and mapped to the device.  The visible parts are written one after
+    another: row r of ``out`` (x0, y0, x1, y1) and of ``depth`` (z0, z1) comes from
+    edge ``which[r]``; ``depth`` and ``which`` may be empty when not wanted.
+    Returns the number of rows written.
 
-    The vertices are transformed once each.  Edge indices must be in range (the
-    API layer checks them); an edge with a non-finite vertex is not accepted."""
-    clip = np.empty((verts.shape[0], 4))
-    good = np.empty(verts.shape[0], np.bool_)
-    for i in range(verts.shape[0]):
-        to_clip_row(m, verts[i, 0], verts[i, 1], verts[i, 2], clip, i)
-        good[i] = (abs(clip[i, 0]) < np.inf and abs(clip[i, 1]) < np.inf
-                   and abs(clip[i, 2]) < np.inf and abs(clip[i, 3]) < np.inf)
+    Edge indices must be in range (the API layer checks them); an edge with a
+    non-finite vertex is not visible."""
+    dim = (0, 0, 0, 0)
+    block = np.empty(8 * BLOCK)
+    u1 = np.empty(BLOCK)
+    u2 = np.empty(BLOCK)
+    outside = np.empty(BLOCK, np.bool_)
     log = np.empty((0, 7))
-    for j in range(edges.shape[0]):
-        a = edges[j, 0]
-        b = edges[j, 1]
-        ok, u1, u2 = parametric_interval(planes, clip[a, 0], clip[a, 1], clip[a, 2],
-                                         clip[a, 3], clip[b, 0], clip[b, 1], clip[b, 2],
-                                         clip[b, 3], log)
-        ok &= good[a] and good[b]
-        accepted[j] = ok
-        if ok:
-            device_segment(clip, a, b, u1, u2, scale, offset, out, depth, j)
+    rows = 0
+    total = edges.shape[0]
+    for start in range(0, total, BLOCK):
+        n = min(BLOCK, total - start)
+        for j in range(n):
+            a = edges[start + j, 0]
+            b = edges[start + j, 1]
+            for c in range(4):
+                block[8 * j + c] = clip[a, c]
+                block[8 * j + 4 + c] = clip[b, c]
+        parametric_six(dim, block, planes, 0, n, u1, u2, outside, log)
+        for j in range(n):
+            finite = True
+            for c in range(8):
+                finite &= abs(block[8 * j + c]) < np.inf
+            if finite and (not outside[j]) and u1[j] <= u2[j]:
+                device_segment(block, 8 * j, u1[j], u2[j], scale, offset, out, depth, rows)
+                if which.shape[0] > 0:
+                    which[rows] = start + j
+                rows += 1
+    return rows

@@ -53,7 +53,7 @@ def project_edges(vertices, edges, camera, width, height):
     return project_edges_into(vertices, edges, camera, _camera(camera)._device_box(width, height))
 
 
-def project_edges_into(vertices, edges, camera, box, aspect=None):
+def project_edges_into(vertices, edges, camera, box, aspect=None, details=True):
     """Project and clip line segments given as vertex pairs into the rectangle
     ``box`` (see :meth:`scanline.Camera.mapping`).
 
@@ -68,6 +68,8 @@ def project_edges_into(vertices, edges, camera, box, aspect=None):
         Where NDC (0, 0) and (1, 1) land.
     aspect : float, optional
         The displayed width / height of ``box``.
+    details : bool
+        False: return only the segments (``depth`` and ``which`` are None).
 
     Returns
     -------
@@ -97,12 +99,14 @@ def project_edges_into(vertices, edges, camera, box, aspect=None):
                                  f"out of range (0 to {len(verts) - 1})")
     clip, scale, offset = camera.mapping(box, aspect)
     out = np.empty((len(e), 4))
-    depth = np.empty((len(e), 2))
-    accepted = np.empty(len(e), np.bool_)
-    k.project_edges(np.ascontiguousarray(clip), scale, offset,
-                    UNIT_CUBE.planes, np.ascontiguousarray(verts), e, out, depth, accepted)
-    which = np.flatnonzero(accepted)
-    return out[which], depth[which], which
+    depth = np.empty((len(e) if details else 0, 2))
+    which = np.empty(len(e) if details else 0, np.int64)
+    h = np.empty((len(verts), 4))
+    k.to_clip(np.ascontiguousarray(clip), np.ascontiguousarray(verts), h)   # once per vertex
+    rows = k.project_edges(scale, offset, UNIT_CUBE.planes, h, e, out, depth, which)
+    if not details:
+        return out[:rows], None, None
+    return out[:rows], depth[:rows], which[:rows]
 
 
 def edge_colors(mesh, edges):
@@ -225,7 +229,9 @@ def wireframe(fb, meshes, camera, color=None, *, depth_cue=None, background=None
         specs[0] is not None or all(m.colors is None for m in group))
     segs, depths, values = [], [], []
     for mesh, spec in zip(group, specs):
-        s, d, which = project_edges(mesh.vertices, mesh.edges, camera, fb.width, fb.height)
+        s, d, which = project_edges_into(mesh.vertices, mesh.edges, camera,
+                                         camera._device_box(fb.width, fb.height),
+                                         details=not shared)
         segs.append(s)
         depths.append(d)
         if not shared:
@@ -234,7 +240,7 @@ def wireframe(fb, meshes, camera, color=None, *, depth_cue=None, background=None
             else:
                 pixel = fb.pixel("white" if spec is None else spec)
                 values.append(np.repeat(pixel[None], len(s), axis=0))
-    segments = np.concatenate(segs)
+    segments = segs[0] if len(segs) == 1 else np.concatenate(segs)
     if not len(segments):
         return segments
     if shared:

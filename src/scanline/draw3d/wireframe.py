@@ -32,24 +32,10 @@ def _camera(camera):
 
 
 def project_edges(vertices, edges, camera, width, height):
-    """Project and clip line segments given as vertex pairs onto a ``width`` x
-    ``height`` device (see :func:`project_edges_into`).
-
-    Parameters
-    ----------
-    vertices : array_like, shape (V, 3)
-        World coordinates.
-    edges : array_like of int, shape (E, 2)
-        Vertex index pairs.
-    camera : Camera
-    width, height : int
-        The device.
-
-    Returns
-    -------
-    segments, depth, which
-        As :func:`project_edges_into`.
-    """
+    """Project and clip the line segments ``edges`` (E, 2), index pairs into the
+    world-coordinate ``vertices`` (V, 3), onto a ``width`` x ``height`` device:
+    :func:`project_edges_into` the whole device.  Returns ``(segments, depth,
+    which)``."""
     return project_edges_into(vertices, edges, camera, _camera(camera)._device_box(width, height))
 
 

@@ -148,13 +148,19 @@ def superellipsoid(s1=1.0, s2=1.0, radii=(1.0, 1.0, 1.0), center=(0.0, 0.0, 0.0)
         return np.stack([rx * cp * spow(np.cos(t), s2), ry * cp * spow(np.sin(t), s2),
                          rz * spow(np.sin(p), s1)], axis=1) + c
 
+    return _closed_surface(point, _super_normal(s1, s2, rx, ry, rz), nu, nv, **kw)
+
+
+def _super_normal(s1, s2, rx, ry, rz):
+    """The unit normal n(φ, θ) of a superellipsoid or supertoroid (Barr 1981): the
+    gradient of the implicit surface, (cos^(2-s1) φ cos^(2-s2) θ / rx,
+    cos^(2-s1) φ sin^(2-s2) θ / ry, sin^(2-s1) φ / rz) normalized."""
     def normal(p, t):
         cp = spow(np.cos(p), 2 - s1)
         return _unit(np.stack([cp * spow(np.cos(t), 2 - s2) / rx,
                                cp * spow(np.sin(t), 2 - s2) / ry,
                                spow(np.sin(p), 2 - s1) / rz], axis=1))
-
-    return _closed_surface(point, normal, nu, nv, **kw)
+    return normal
 
 
 def _triple(name, value):
@@ -203,13 +209,7 @@ def supertoroid(s1=1.0, s2=1.0, r=3.0, radii=(1.0, 1.0, 1.0), center=(0.0, 0.0, 
         return np.stack([rx * ring * spow(np.cos(t), s2), ry * ring * spow(np.sin(t), s2),
                          rz * spow(np.sin(p), s1)], axis=1) + c
 
-    def normal(p, t):
-        cp = spow(np.cos(p), 2 - s1)
-        return _unit(np.stack([cp * spow(np.cos(t), 2 - s2) / rx,
-                               cp * spow(np.sin(t), 2 - s2) / ry,
-                               spow(np.sin(p), 2 - s1) / rz], axis=1))
-
-    return _periodic_surface(point, normal, nu, nv, **kw)
+    return _periodic_surface(point, _super_normal(s1, s2, rx, ry, rz), nu, nv, **kw)
 
 
 def torus(major=1.0, minor=0.25, center=(0.0, 0.0, 0.0), resolution=(32, 16), **kw):

@@ -11,28 +11,10 @@ from collections.abc import Sequence
 import numpy as np
 
 from .. import _validate as v
+from .._validate import real_array
 from ..errors import ArgumentTypeError, ArgumentValueError
 
-
-def real_array(name, value, expected):
-    """``value`` as a float64 array (not copied when it is one), or an error naming
-    ``name`` (``expected``
-    describes the shape that would work, for the message)."""
-    try:
-        a = np.asarray(value)
-        if a.dtype == object:
-            a = a.astype(np.float64)
-    except OverflowError:
-        raise ArgumentValueError(
-            f"{name} holds a number too large for float64: {v._show(value)}") from None
-    except (TypeError, ValueError):
-        raise ArgumentTypeError(
-            f"{name} must be a numeric array of shape {expected}, got {v._show(value)}"
-        ) from None
-    if a.dtype == bool or a.dtype.kind not in "iuf":
-        raise ArgumentTypeError(
-            f"{name} must hold real numbers ({expected}), got an array of dtype {a.dtype}")
-    return np.asarray(a, dtype=np.float64)
+__all__ = ["direction", "finite", "matrix4", "points", "real_array", "vector"]
 
 
 def finite(name, a):

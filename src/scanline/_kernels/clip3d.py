@@ -136,7 +136,7 @@ def cohen_sutherland(planes, start, ends, trace, log):
             k += 1
         d0 = boundary(planes, k, start[0, 0], start[0, 1], start[0, 2], start[0, 3])
         d1 = boundary(planes, k, start[1, 0], start[1, 1], start[1, 2], start[1, 3])
-        t = d0 / (d0 - d1)
+        t = d0 / (d0 - d1) if d0 != d1 else 0.0      # (d0 != d1 here but for overflow)
         for c in range(4):
             ends[e, c] = start[0, c] + t * (start[1, c] - start[0, c])
         new = region_code(planes, ends[e, 0], ends[e, 1], ends[e, 2], ends[e, 3])

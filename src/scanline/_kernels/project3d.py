@@ -59,25 +59,32 @@ def project_points(m, scale, offset, pts, out):
 
 
 @helper
-def device_segment(seg, i, u1, u2, scale, offset, out, depth, j):
+def device_segment(seg, i, u1, u2, scale, offset, out, depth, j, limit):
     """The part u1 <= t <= u2 of the homogeneous segment ``seg[i : i + 8]``
     (x0, y0, z0, w0, x1, y1, z1, w1), divided and mapped to the device: row j of
-    ``out`` (x0, y0, x1, y1) and of ``depth`` (z0, z1)."""
+    ``out`` (x0, y0, x1, y1) and of ``depth`` (z0, z1).  Returns False (and the row
+    is not to be used) when round-off with enormous coordinates left an endpoint at
+    w <= 0 or beyond +-``limit`` on the device."""
+    ok = True
     for e in range(2):
         t = u1 if e == 0 else u2
         x = seg[i] + t * (seg[i + 4] - seg[i])
         y = seg[i + 1] + t * (seg[i + 5] - seg[i + 1])
         z = seg[i + 2] + t * (seg[i + 6] - seg[i + 2])
         w = seg[i + 3] + t * (seg[i + 7] - seg[i + 3])
-        r = 1.0 / w
-        out[j, 2 * e] = x * r * scale[0] + offset[0]
-        out[j, 2 * e + 1] = y * r * scale[1] + offset[1]
+        r = 1.0 / w if w > 0.0 else 0.0
+        dx = x * r * scale[0] + offset[0]
+        dy = y * r * scale[1] + offset[1]
+        ok &= (w > 0.0) & (abs(dx) <= limit) & (abs(dy) <= limit)
+        out[j, 2 * e] = dx
+        out[j, 2 * e + 1] = dy
         if depth.shape[0] > 0:
             depth[j, e] = z * r * scale[2] + offset[2]
+    return ok
 
 
 @kernel
-def project_edges(scale, offset, planes, clip, edges, out, depth, which):
+def project_edges(scale, offset, planes, clip, edges, out, depth, which, limit):
     """The edges ``edges`` (E, 2) of the vertices whose clip coordinates are ``clip``
     (V, 4) (:func:`to_clip`), clipped in homogeneous coordinates against the six
     ``planes``
@@ -88,7 +95,8 @@ def project_edges(scale, offset, planes, clip, edges, out, depth, which):
     Returns the number of rows written.
 
     Edge indices must be in range (the API layer checks them); an edge with a
-    non-finite vertex is not visible."""
+    non-finite vertex, or whose divided endpoints round-off put beyond +-``limit``
+    (coordinates near the float64 range), is not visible."""
     dim = (0, 0, 0, 0)
     block = np.empty(8 * BLOCK)
     u1 = np.empty(BLOCK)
@@ -110,8 +118,9 @@ def project_edges(scale, offset, planes, clip, edges, out, depth, which):
             finite = True
             for c in range(8):
                 finite &= abs(block[8 * j + c]) < np.inf
-            if finite and (not outside[j]) and u1[j] <= u2[j]:
-                device_segment(block, 8 * j, u1[j], u2[j], scale, offset, out, depth, rows)
+            if (finite and (not outside[j]) and u1[j] <= u2[j]
+                    and device_segment(block, 8 * j, u1[j], u2[j], scale, offset, out,
+                                       depth, rows, limit)):
                 if which.shape[0] > 0:
                     which[rows] = start + j
                 rows += 1

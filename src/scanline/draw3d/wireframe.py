@@ -89,7 +89,8 @@ def project_edges_into(vertices, edges, camera, box, aspect=None, details=True):
     which = np.empty(len(e) if details else 0, np.int64)
     h = np.empty((len(verts), 4))
     k.to_clip(np.ascontiguousarray(clip), np.ascontiguousarray(verts), h)   # once per vertex
-    rows = k.project_edges(scale, offset, UNIT_CUBE.planes, h, e, out, depth, which)
+    rows = k.project_edges(scale, offset, UNIT_CUBE.planes, h, e, out, depth, which,
+                           float(v.COORD_LIMIT))
     if not details:
         return out[:rows], None, None
     return out[:rows], depth[:rows], which[:rows]

@@ -94,7 +94,7 @@ def projection(data, path):
     s = _schema()
     t = s._table(data, path, set().union(*PROJECTIONS.values()) | {"type"}, ("type",))
     kind = t["type"]
-    if kind not in PROJECTIONS:
+    if not isinstance(kind, str) or kind not in PROJECTIONS:
         s._fail(f"{path}.type", f"must be one of {', '.join(PROJECTIONS)}; got {kind!r}")
     s._table(data, path, PROJECTIONS[kind] | {"type"})
     args = _arguments({k: x for k, x in t.items() if k != "type"}, path)
@@ -206,7 +206,7 @@ def _mesh(data, path, base):
         except ms.MeshFileError as error:
             raise SceneError(f"{path}.file: {error}", path=f"{path}.file") from None
     gen = data["generator"]
-    if gen not in GENERATORS:
+    if not isinstance(gen, str) or gen not in GENERATORS:
         s._fail(f"{path}.generator", f"must be one of {', '.join(GENERATORS)}; got {gen!r}")
     allowed = GENERATORS[gen]
     given = {k: x for k, x in data.items() if k in set().union(*GENERATORS.values())}
@@ -229,8 +229,14 @@ def _mesh(data, path, base):
         return s._call(path, ms.sweep, args.pop("profile"), **args)
     if "resolution" in args and isinstance(args["resolution"], tuple):
         args["resolution"] = tuple(args["resolution"])
-    if gen == "teapot" and "parts" in args and isinstance(args["parts"], tuple):
-        args["parts"] = list(args["parts"])
+    if gen == "teapot" and "parts" in args:
+        parts = args["parts"]
+        if isinstance(parts, str):
+            parts = [parts]
+        if not isinstance(parts, tuple | list) or not all(isinstance(p, str) for p in parts):
+            s._fail(f"{path}.parts", f"must be a part name or a list of them (rim, body, "
+                    f"handle, spout, lid, bottom), got {data['parts']!r}")
+        args["parts"] = list(parts)
     function = {"cube": ms.cube, "box": ms.box, "sphere": ms.sphere, "ellipsoid": ms.ellipsoid,
                 "torus": ms.torus, "superellipsoid": ms.superellipsoid,
                 "supertoroid": ms.supertoroid, "teapot": ms.teapot}[gen]

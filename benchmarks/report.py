@@ -3,6 +3,7 @@
     python benchmarks/report.py                          # Markdown of results/latest.json
     python benchmarks/report.py results/latest.json --text
     python benchmarks/report.py --topics                 # the topic benchmarks' targets
+    python benchmarks/report.py --compile                # results/compile.json by group
 """
 
 import json
@@ -196,7 +197,44 @@ def topics_markdown(folder=os.path.join(HERE, "results")):
     return "\n".join(out)
 
 
+def compile_markdown(path=os.path.join(HERE, "results", "compile.json")):
+    """The first-use budget (``results/compile.json``, written by compile.py) as one
+    row per warm-up group: how many cases, the median and the worst seconds to the
+    first result, and the specializations compiled on the way."""
+    from scanline import warmup
+
+    with open(path) as f:
+        record = json.load(f)
+    groups = {}
+    for row in record["rows"]:
+        call = warmup.CALLS.get(row["case"])
+        group = call[0] if call else ("demo" if row["case"].startswith("scanline demo")
+                                      else "command line")
+        groups.setdefault(group, []).append(row)
+    out = [f"Measured {record['date']} on {record['machine']}, Python {record['python']}, "
+           f"numba {record['numba']}; each case in a fresh process with an empty numba cache "
+           f"(SCANLINE_COMPILE={record['compile']}).", "",
+           "| group | cases | median | worst case | specializations compiled |",
+           "|---|---:|---:|---|---:|"]
+    seconds = lambda r: r.get("seconds") or r["wall_s"]  # noqa: E731
+    for group, rows in groups.items():
+        times = sorted(seconds(r) for r in rows)
+        worst = max(rows, key=seconds)
+        label = worst["case"] + (f" [{worst['mode']}]" if worst.get("mode") else "")
+        out.append(f"| {group} | {len(rows)} | {times[len(times) // 2]:.2f} s | {label}: "
+                   f"{seconds(worst):.2f} s | {sum(r['specializations'] for r in rows)} |")
+    worst = max((r for r in record["rows"] if not r["case"].startswith("scanline demo")),
+                key=seconds)
+    out += ["", f"Worst row: {worst['case']}" + (f" [{worst['mode']}]" if worst.get("mode") else "")
+            + f", {seconds(worst):.2f} s; every row ok: "
+            + ("yes" if all(r["ok"] for r in record["rows"]) else "no")]
+    return "\n".join(out)
+
+
 def main(argv):
+    if "--compile" in argv:
+        print(compile_markdown())
+        return
     if "--topics" in argv:
         print(topics_markdown())
         return

@@ -49,4 +49,9 @@ answer in about 3 s on a 2-core machine with an empty numba cache
    2.5-4 s on the first call of a process: copy element by element.  numba's sorts
    (``np.sort``, ``np.argsort``) cost about 1.5 s: use them only where an
    O(n log n) order is needed.
+8. **Every call goes through** :func:`scanline._kernels._jit.call` with a work
+   estimate, so that a first call too small to pay for its compilation runs the
+   kernel's Python twin (``tests/test_first_use.py`` proves the twins equal the
+   compiled kernels); a new entry point also gets a row in
+   :data:`scanline.warmup.CALLS`.
 """

@@ -358,6 +358,14 @@ class FrameBuffer:
                 raise ArgumentValueError(f"array must hold uint8 values 0..255, got dtype {a.dtype}")
         if mode == "P" and color_table is None:
             raise ArgumentValueError("mode 'P' needs a color_table for the indices in array")
+        if mode == "P":
+            color_table = list(color_table)
+            top = int(a.max())
+            if top >= len(color_table):
+                raise ArgumentValueError(
+                    f"array holds color-table index {top} but color_table has "
+                    f"{len(color_table)} entries (0..{len(color_table) - 1}); give at least "
+                    f"{top + 1} entries")
         fb = cls(a.shape[1], a.shape[0], mode=mode, color_table=color_table)
         if mode == "1":
             fb._buf[:, :, 0] = np.packbits(a[::-1], axis=1)
@@ -389,7 +397,10 @@ class FrameBuffer:
             palette = image.getpalette("RGB") or []
             table = [tuple(palette[i:i + 3]) for i in range(0, len(palette), 3)][:256]
             indices = np.array(image, np.uint8)
-            table = table[: max(int(indices.max()) + 1, 1)] if indices.size else table[:1]
+            used = max(int(indices.max()) + 1, 1) if indices.size else 1
+            # a palette shorter than the indices used: the missing entries are black, as
+            # Pillow shows them
+            table = (table + [(0, 0, 0)] * used)[:used]
             return cls.from_array(indices, mode="P", color_table=table)
         if image.mode not in ("L", "RGB", "RGBA"):
             has_alpha = "A" in image.getbands() or "transparency" in image.info

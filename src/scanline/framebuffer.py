@@ -21,9 +21,12 @@ so that row ``y`` of the storage is scan line ``y``; only this class knows that.
 matplotlib.
 """
 
+import contextlib
 import io
 import os
+import signal
 import tempfile
+import threading
 
 import numpy as np
 from PIL import Image
@@ -51,28 +54,85 @@ def _umask():
     return mask
 
 
+def output_path(path, name="path"):
+    """``path`` (a str or os.PathLike) as a str, checked as the name of a file to
+    write: no NUL character, not a folder, in a folder that exists."""
+    if not isinstance(path, (str, os.PathLike)):
+        raise ArgumentTypeError(f"{name} must be a file name (str or os.PathLike), got "
+                                f"{v._show(path)}")
+    try:
+        path = os.fsdecode(os.fspath(path))
+    except (TypeError, UnicodeDecodeError):
+        raise ArgumentTypeError(f"{name} must be a file name, got {v._show(path)}") from None
+    if "\0" in path:
+        raise ArgumentValueError(f"{name}={path!r} holds a NUL character, which no file name "
+                                 "may hold")
+    if not path:
+        raise ArgumentValueError(f"{name} is empty; give the name of a file to write")
+    directory = os.path.dirname(os.path.abspath(path))
+    if not os.path.isdir(directory):
+        raise ArgumentValueError(f"{name}={path!r}: the folder {directory!r} does not exist")
+    if os.path.isdir(path):
+        raise ArgumentValueError(f"{name}={path!r} is a folder; give the name of a file to write")
+    return path
+
+
+class _Terminated(BaseException):
+    """SIGTERM arrived while a file was being written (see :func:`write_atomically`)."""
+
+
+@contextlib.contextmanager
+def _terminate_cleanly():
+    """While the block runs, SIGTERM raises :class:`_Terminated` instead of killing the
+    process at once, so that the temporary file is removed; the caller then
+    terminates as SIGTERM would.  Only in the main thread, and only where SIGTERM
+    has its default action (a server that handles it is left alone)."""
+    if (threading.current_thread() is not threading.main_thread()
+            or signal.getsignal(signal.SIGTERM) is not signal.SIG_DFL):
+        yield
+        return
+
+    def terminated(signum, frame):
+        raise _Terminated()
+
+    signal.signal(signal.SIGTERM, terminated)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, signal.SIG_DFL)
+
+
 def write_atomically(path, write):
     """Call ``write(file)`` on a temporary file beside ``path``, then rename it.
 
-    A failure (an exception from ``write``, a full disk) leaves no file at ``path``.
+    A failure (an exception from ``write``, a full disk, Ctrl-C, SIGTERM) leaves
+    no file at ``path`` and no temporary file beside it; after SIGTERM the process
+    then terminates as the signal asks.  Errors name ``path`` (not the temporary
+    file).
     """
-    path = os.fspath(path)
+    path = output_path(path)
     directory = os.path.dirname(os.path.abspath(path))
-    if not os.path.isdir(directory):
-        raise ArgumentValueError(f"path={path!r}: the folder {directory!r} does not exist")
-    if os.path.isdir(path):
-        raise ArgumentValueError(f"path={path!r} is a folder; give the name of a file to write")
-    fd, tmp = tempfile.mkstemp(prefix=".scanline-", suffix=".tmp", dir=directory)
     try:
-        with os.fdopen(fd, "wb") as f:
-            write(f)
-        os.chmod(tmp, 0o666 & ~_umask())  # mkstemp makes 0600; give the usual mode
-        os.replace(tmp, path)
-    except BaseException:
+        fd, tmp = tempfile.mkstemp(prefix=".scanline-", suffix=".tmp", dir=directory)
+    except OSError as error:
+        raise ArgumentValueError(f"path={path!r}: cannot create a file in {directory!r} "
+                                 f"({error.strerror or error})") from None
+    try:
+        with _terminate_cleanly():
+            with os.fdopen(fd, "wb") as f:
+                write(f)
+            os.chmod(tmp, 0o666 & ~_umask())  # mkstemp makes 0600; give the usual mode
+            os.replace(tmp, path)
+    except BaseException as exc:
         try:
             os.unlink(tmp)
         except FileNotFoundError:
             pass
+        if isinstance(exc, _Terminated):
+            os.kill(os.getpid(), signal.SIGTERM)   # the default action again: terminate
+        if isinstance(exc, OSError):
+            raise ArgumentValueError(f"path={path!r}: cannot write the file "
+                                     f"({exc.strerror or exc})") from None
         raise
 
 
@@ -412,10 +472,11 @@ class FrameBuffer:
         encodes it.  ``scale`` enlarges each pixel to a scale x scale block (handy to
         look at scan-converted pixels).  The write is atomic: on any failure no file
         is left at ``path``."""
-        ext = os.path.splitext(os.fspath(path))[1].lower()
+        path = output_path(path)
+        ext = os.path.splitext(path)[1].lower()
         if ext not in _FORMATS:
             raise ArgumentValueError(
-                f"path={os.fspath(path)!r}: unknown image type {ext!r}; use .png, .gif or .bmp"
+                f"path={path!r}: unknown image type {ext!r}; use .png, .gif or .bmp"
             )
         image = self._scaled_image(scale)
         write_atomically(path, lambda f: image.save(f, format=_FORMATS[ext]))

@@ -14,8 +14,8 @@ def _error(error, what, name, message):
     SceneError prints ``FILE: MESSAGE``), else in the message."""
     code = getattr(error.__init__, "__code__", None)
     if code is not None and "file" in code.co_varnames:
-        return error(f"cannot read the file: it {message}", file=name)
-    return error(f"{what} {name!r} {message}")
+        return error(f"cannot read the file: {message}", file=name)
+    return error(f"{what} {name!r}: {message}")
 
 
 def input_path(path, what="file", limit=None, error=ArgumentValueError):
@@ -27,21 +27,21 @@ def input_path(path, what="file", limit=None, error=ArgumentValueError):
                                 f"{v._show(path)}")
     name = os.fsdecode(os.fspath(path))
     if "\0" in name:
-        raise _error(error, what, name, "has a NUL character in its name")
+        raise _error(error, what, name, "the name has a NUL character")
     try:
         info = os.stat(name)
     except FileNotFoundError:
-        raise _error(error, what, name, "does not exist") from None
+        raise _error(error, what, name, "it does not exist (No such file or directory)") from None
     except OSError as exc:
-        raise _error(error, what, name, f"cannot be opened ({exc.strerror or exc})") from None
+        raise _error(error, what, name, f"{exc.strerror or exc}") from None
     if stat.S_ISDIR(info.st_mode):
-        raise _error(error, what, name, f"is a folder, not a {what}")
+        raise _error(error, what, name, f"it is a folder, which is not a {what}")
     if not stat.S_ISREG(info.st_mode):
         raise _error(error, what, name,
-                     "is not a regular file (a device, FIFO or socket); give a file on disk")
+                     "it is not a regular file (a device, FIFO or socket); give a file on disk")
     if limit is not None and info.st_size > limit:
         raise _error(error, what, name,
-                     f"is {info.st_size:,} bytes, more than the {limit:,} a {what} may have")
+                     f"it is {info.st_size:,} bytes, more than the {limit:,} a {what} may have")
     return name
 
 
@@ -53,7 +53,7 @@ def read_limited(path, what="file", limit=None, error=ArgumentValueError):
         with open(name, "rb") as f:
             data = f.read() if limit is None else f.read(limit + 1)
     except OSError as exc:
-        raise _error(error, what, name, f"cannot be read ({exc.strerror or exc})") from None
+        raise _error(error, what, name, f"{exc.strerror or exc}") from None
     if limit is not None and len(data) > limit:
-        raise _error(error, what, name, f"is more than the {limit:,} bytes a {what} may have")
+        raise _error(error, what, name, f"it has more than the {limit:,} bytes a {what} may have")
     return data

@@ -136,6 +136,31 @@ def write_atomically(path, write):
         raise
 
 
+def image_limit():
+    """Most pixels an image file written by scanline may hold: twice Pillow's
+    decompression-bomb threshold (``PIL.Image.MAX_IMAGE_PIXELS``, 89,478,485 by
+    default), past which Pillow refuses to open the file again."""
+    bound = Image.MAX_IMAGE_PIXELS
+    return 2 * int(bound) if bound else 1 << 40
+
+
+def check_image_size(width, height, scale=1, given=None, hint=None):
+    """The size rule of every image scanline writes, checked before anything is
+    allocated: ``width x height`` pixels enlarged ``scale`` times must fit
+    :func:`image_limit`.  ``given`` says how the caller gave the size (for
+    instance ``"--size 40000x40000"``, ``"canvas.width x canvas.height"``), so
+    that the message names it; ``hint`` says what to change."""
+    pixels = width * height * scale * scale
+    limit = image_limit()
+    if pixels <= limit:
+        return
+    given = given or f"width x height = {width} x {height}"
+    made = f" enlarged {scale} times, {width * scale} x {height * scale}," if scale > 1 else ""
+    raise ArgumentValueError(
+        f"{given}{made} is {pixels:,} pixels, more than the {limit:,} an image file may hold; "
+        + (hint or "use a smaller size" + (" or scale" if scale > 1 else "")))
+
+
 class FrameBuffer:
     """A width x height raster of pixels in one of the modes ``"1"``, ``"L"``,
     ``"RGB"``, ``"RGBA"`` and ``"P"``.
@@ -483,12 +508,9 @@ class FrameBuffer:
 
     def _scaled_image(self, scale):
         scale = v.positive_int("scale", scale)
-        limit = 2 * Image.MAX_IMAGE_PIXELS  # past this Pillow refuses to open the file
-        if self._width * self._height * scale * scale > limit:
-            raise ArgumentValueError(
-                f"scale={scale} would enlarge the {self._width} x {self._height} frame buffer "
-                f"to {self._width * scale} x {self._height * scale} pixels, more than "
-                f"{limit:,}; use a smaller scale")
+        check_image_size(self._width, self._height, scale,
+                         f"the {self._width} x {self._height} frame buffer"
+                         + (f" at scale={scale}" if scale > 1 else ""))
         image = self.to_pil()
         if scale > 1:
             image = image.resize((self._width * scale, self._height * scale), Image.Resampling.NEAREST)

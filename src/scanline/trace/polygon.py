@@ -108,7 +108,7 @@ def scan_line_fill(points, rule="even-odd"):
         nact = nxt = 0
         for r in range(rmin, rmax + 1):
             nact, nxt = step(et, ef, r, oy, ox, counts[r - rmin], nxt, nact, order, active,
-                             keys, dirs)
+                             keys, dirs, np.zeros(n), np.zeros(n), np.zeros(n, np.int64))
             fill(buf, layout(False), width, height, r, keys, dirs, nact, mask,
                  np.array([1], np.uint8))
             xs = np.flatnonzero(buf[r, :, 0])

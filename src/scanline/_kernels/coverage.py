@@ -86,9 +86,10 @@ def flush_row(buf, mode, table, y, acc, xlo, xhi, src):
 def shape_edges(verts, contours, c0, c1, edges, order, fkeys, tkeys, titems):
     """Store the non-horizontal edges of contours c0..c1-1 in ``edges`` as rows
     (ylo, yhi, x at ylo, dx/dy, direction) and in ``order`` their indices sorted by
-    ylo (:func:`scanline._kernels.sort.sort_keys`, O(n log n); ``fkeys``,
-    ``tkeys``, ``titems`` its scratch); return their count and the shape's bounds
-    (xmin, ymin, xmax, ymax)."""
+    ylo: by insertion, or past :func:`scanline._kernels.sort.insertion_budget` by
+    :func:`scanline._kernels.sort.sort_keys` (O(n log n); ``fkeys``, ``tkeys``,
+    ``titems`` its scratch); return their count and the shape's bounds (xmin, ymin,
+    xmax, ymax)."""
     n = 0
     xmin = ymin = math.inf
     xmax = ymax = -math.inf
@@ -116,7 +117,24 @@ def shape_edges(verts, contours, c0, c1, edges, order, fkeys, tkeys, titems):
             fkeys[n] = y0
             order[n] = n
             n += 1
-    sort_keys(fkeys, order, n, tkeys, titems)
+    # insertion by ylo (the edges of a contour arrive nearly sorted), or past the
+    # budget the merge sort
+    budget = insertion_budget(n)
+    for i in range(1, n):
+        y = fkeys[i]
+        e = order[i]
+        j = i
+        while j > 0 and fkeys[j - 1] > y:
+            fkeys[j] = fkeys[j - 1]
+            order[j] = order[j - 1]
+            j -= 1
+        fkeys[j] = y
+        order[j] = e
+        budget -= i - j
+        if budget < 0:
+            break
+    if budget < 0:
+        sort_keys(fkeys, order, n, tkeys, titems)
     return n, xmin, ymin, xmax, ymax
 
 
@@ -218,6 +236,20 @@ def row_crossings(edges, active, na, bottom, xs, ws, counts, cap):
 
 
 @helper
+def sort_crossings(xs, ws, start, k, fkeys, items, tkeys, titems, wcopy):
+    """Sort the ``k`` crossings at ``xs[start:]`` (with their directions ``ws``) by
+    :func:`scanline._kernels.sort.sort_keys`; the other arguments are scratch."""
+    for i in range(k):
+        fkeys[i] = xs[start + i]
+        items[i] = i
+        wcopy[i] = ws[start + i]
+    sort_keys(fkeys, items, k, tkeys, titems)
+    for i in range(k):
+        xs[start + i] = fkeys[i]
+        ws[start + i] = wcopy[items[i]]
+
+
+@helper
 def sub_line_spans(xs, ws, start, k, acc, xlo, xhi, rule, fkeys, items, tkeys, titems,
                    wcopy):
     """Sort the ``k`` crossings at ``xs[start:]`` and add the spans the fill rule
@@ -239,14 +271,7 @@ def sub_line_spans(xs, ws, start, k, acc, xlo, xhi, rule, fkeys, items, tkeys, t
         if budget < 0:
             break
     if budget < 0:
-        for i in range(k):
-            fkeys[i] = xs[start + i]
-            items[i] = i
-            wcopy[i] = ws[start + i]
-        sort_keys(fkeys, items, k, tkeys, titems)
-        for i in range(k):
-            xs[start + i] = fkeys[i]
-            ws[start + i] = wcopy[items[i]]
+        sort_crossings(xs, ws, start, k, fkeys, items, tkeys, titems, wcopy)
     winding = 0
     enter = 0.0
     for j in range(start, start + k):

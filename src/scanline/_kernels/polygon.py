@@ -151,20 +151,19 @@ def sort_by_row(et, n, counts, order):
 
 
 @helper
-def step_active(et, ef, r, oy, ox, end, nxt, nact, order, active, keys, dirs, fkeys, tkeys,
-                titems):
+def step_active(et, ef, r, oy, ox, end, nxt, nact, order, active, keys, dirs):
     """Move the active edge list to raster row ``r``: one pass over the list, then
     over the edges entering on this row (``order[nxt:end]``): drop the edges that
     ended below, step the others up one row, and insert each crossing key in order
-    (the list stays nearly sorted between rows).  Returns ``(nact, nxt)``, the new
-    length of the list and the next edge of ``order`` to enter it.
+    (the list stays nearly sorted between rows).  Returns ``(nact, nxt, sorted)``:
+    the new length of the list, the next edge of ``order`` to enter it, and whether
+    the list is sorted.
 
-    The insertion is O(n) while the list stays nearly sorted; when it has moved more
-    than :func:`scanline._kernels.sort.insertion_budget` keys (edges that cross
-    between rows: a self-intersecting polygon of many vertices), the rest are
-    appended and the row is sorted by :func:`scanline._kernels.sort.sort_keys`
-    (``fkeys``, ``tkeys``, ``titems``: its scratch), so a row costs O(n log n) at
-    worst instead of O(n**2).
+    The insertion is O(n) while the list stays nearly sorted; once it has moved
+    more than :func:`scanline._kernels.sort.insertion_budget` keys (edges that cross
+    between rows: a self-intersecting polygon of many vertices), the remaining keys
+    are appended unsorted and the caller sorts the row with :func:`sort_active`, so
+    that a row costs O(n log n) at worst instead of O(n**2).
 
     This is one step of the scan-line fill, as the step table
     (:func:`scanline.trace.scan_line_fill`) runs it."""
@@ -205,14 +204,20 @@ def step_active(et, ef, r, oy, ox, end, nxt, nact, order, active, keys, dirs, fk
         dirs[b] = et[e, 2]
         active[b] = e
         k += 1
-    if budget <= 0:
-        for i in range(k):
-            fkeys[i] = keys[i]
-        sort_keys(fkeys, active, k, tkeys, titems)
-        for i in range(k):
-            keys[i] = int(fkeys[i])
-            dirs[i] = et[active[i], 2]
-    return k, nxt
+    return k, nxt, budget > 0
+
+
+@helper
+def sort_active(et, active, keys, dirs, n, fkeys, tkeys, titems):
+    """Sort the active edge list (``n`` keys, their edges and directions) by key,
+    in O(n log n) (:func:`scanline._kernels.sort.sort_keys`; ``fkeys``, ``tkeys``,
+    ``titems`` its scratch)."""
+    for i in range(n):
+        fkeys[i] = keys[i]
+    sort_keys(fkeys, active, n, tkeys, titems)
+    for i in range(n):
+        keys[i] = int(fkeys[i])
+        dirs[i] = et[active[i], 2]
 
 
 @helper
@@ -239,8 +244,10 @@ def fill_polygon(buf, layout, width, height, ox, oy, verts, contours, c0, c1, co
     nact = np.int64(0)     # (typed, not literal 0s: step_active compiles once)
     nxt = np.int64(0)      # next edge of ``order`` to enter the active list
     for r in range(rmin, rmax + 1):
-        nact, nxt = step_active(et, ef, r, oy, ox, counts[r - rmin], nxt, nact, order,
-                                active, keys, dirs, fkeys, tkeys, titems)
+        nact, nxt, ordered = step_active(et, ef, r, oy, ox, counts[r - rmin], nxt, nact,
+                                         order, active, keys, dirs)
+        if not ordered:
+            sort_active(et, active, keys, dirs, nact, fkeys, tkeys, titems)
         fill_row(buf, layout, width, height, r, keys, dirs, nact, mask, color)
 
 

@@ -273,8 +273,9 @@ def spline_pieces(homogeneous, knots, order, domain):
     """Bezier control points of each polynomial piece of the B-spline with control
     points ``homogeneous`` (n + 1, c) (Cartesian or [w P, w]), knot vector ``knots``
     and ``order`` d, on the non-empty knot spans inside ``domain``: (S, d, c)."""
+    from .. import _validate as v
+    from .._kernels import curves as _k
     from .bezier import bernstein
-    from .bspline import basis
 
     lo, hi = domain
     breaks = np.unique(np.clip(knots, lo, hi))
@@ -284,7 +285,11 @@ def spline_pieces(homogeneous, knots, order, domain):
     collocation = bernstein(degree, t)  # (d, d): row s = the basis at t_s
     a, b = breaks[:-1], breaks[1:]
     u = (a[:, None] + (b - a)[:, None] * t[None, :]).ravel()
-    values = basis(knots, order, u) @ homogeneous  # (S * d, c)
+    # de Boor's algorithm: d blending functions per point, not the dense (S d, n + 1)
+    # matrix of all of them (298 GiB for 10**5 control points)
+    values = np.empty((len(u), homogeneous.shape[1]))
+    _k.de_boor(v.kernel_array(homogeneous), v.kernel_array(knots), order, v.kernel_array(u),
+               values)
     values = values.reshape(len(a), order, -1)
     return np.linalg.solve(collocation[None], values)
 

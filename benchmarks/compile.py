@@ -26,8 +26,11 @@ checked by reading the table (and the README shows it).
     python benchmarks/compile.py --list           # the case names
     python benchmarks/compile.py --demo           # also scanline demo, cold and warm
 
-Writes ``benchmarks/results/compile.json`` (a full run) or
-``results/compile-partial.json`` (``--only``).
+By default the cases run as a new user's do: a small first call runs the kernels'
+Python twins (:func:`scanline._kernels._jit.call`) and compiles only what is large;
+``--compile`` makes every first call compile, which measures the kernels' own
+compile budget.  Writes ``benchmarks/results/compile.json`` (or ``compile-always.json``
+with ``--compile``; ``-partial`` with ``--only``).
 """
 
 import argparse
@@ -71,6 +74,18 @@ CLI_CASES = {
     "explain bresenham": ["explain", "bresenham", "20", "10", "30", "18", "-o", "{out}/b.html"],
     "simulate random": ["simulate", "random", os.path.join(SCENES, "rotation.toml"), "-o",
                         "{out}/r.gif", "--frames", "8", "--refreshes", "1"],
+    "animate scene": ["animate", os.path.join(os.path.dirname(HERE), "examples", "scenes",
+                                               "bouncing_ball.toml"), "-o", "{out}/a.gif",
+                      "--frames", "0:4"],
+    "storyboard scene": ["storyboard", os.path.join(os.path.dirname(HERE), "examples",
+                                                    "scenes", "bouncing_ball.toml"),
+                         "-o", "{out}/b.png"],
+    "trace cohen-sutherland-3d": ["trace", "cohen-sutherland-3d", "-5", "2", "5", "15", "22",
+                                  "5"],
+    "trace liang-barsky-3d": ["trace", "liang-barsky-3d", "0.5", "0.5", "1", "0.5", "0.5",
+                              "-3", "--w", "2", "-2"],
+    "render perspective scene": ["render", os.path.join(SCENES, "perspective.toml"), "-o",
+                                 "{out}/p.png"],
     "draw command": ["draw", "--size", "64x48", "line", "2", "3", "60", "40", "circle", "32", "24",
                      "15", "-o", "{out}/d.png"],
 }
@@ -151,11 +166,11 @@ def all_cases():
         yield name, None, scanline + args
 
 
-def demo_rows():
+def demo_rows(env_extra):
     """``scanline demo`` cold (empty cache) and warm (the cache it filled)."""
     cache = tempfile.mkdtemp(prefix="scanline-numba-")
     out = tempfile.mkdtemp(prefix="scanline-demo-")
-    env = dict(os.environ, NUMBA_CACHE_DIR=cache)
+    env = dict(os.environ, NUMBA_CACHE_DIR=cache, **env_extra)
     rows = []
     for label in ("scanline demo (cold)", "scanline demo (warm)"):
         t0 = time.perf_counter()
@@ -174,6 +189,9 @@ def main(argv=None):
     parser.add_argument("--only", help="run the cases whose name contains this text")
     parser.add_argument("--list", action="store_true", help="print the case names and stop")
     parser.add_argument("--demo", action="store_true", help="also time scanline demo cold and warm")
+    parser.add_argument("--compile", action="store_true",
+                        help="compile every kernel on its first call (SCANLINE_COMPILE=always): "
+                        "the kernels' own compile budget, without the Python first calls")
     parser.add_argument("--output", help="JSON file to write (default results/compile.json)")
     args = parser.parse_args(argv)
     todo = [c for c in all_cases() if not args.only or args.only in c[0]]
@@ -181,12 +199,16 @@ def main(argv=None):
         for name, mode, _ in todo:
             print(name if mode is None else f"{name} [{mode}]")
         return 0
+    if not todo:
+        print(f"no case matches {args.only!r} (see --list)", file=sys.stderr)
+        return 2
     rows = []
     print(f"scanline compile budget: {len(todo)} cases, each in a fresh process with an empty "
           f"numba cache; {platform.processor() or platform.machine()}, "
           f"Python {platform.python_version()}", flush=True)
+    env = {"SCANLINE_COMPILE": "always" if args.compile else "auto"}
     for name, mode, child in todo:
-        record, stdout = run_case(child, {})
+        record, stdout = run_case(child, env)
         if child[1] == "-c":
             try:
                 report = json.loads(stdout.strip().splitlines()[-1])
@@ -206,7 +228,7 @@ def main(argv=None):
         print(f"{label:<40} {secs:7.2f} s {cpu} cpu  {row['specializations']:3d} specializations"
               f"{'' if row['ok'] else '  FAILED: ' + row.get('error', '')}  {slow}", flush=True)
     if args.demo:
-        rows += demo_rows()
+        rows += demo_rows(env)
     worst = max(rows, key=lambda r: r.get("seconds") or r["wall_s"])
     print(f"worst: {worst['case']} {'[' + worst['mode'] + ']' if worst['mode'] else ''} "
           f"{worst.get('seconds') or worst['wall_s']:.2f} s", flush=True)
@@ -216,9 +238,10 @@ def main(argv=None):
         "date": _dt.date.today().isoformat(),
         "machine": f"{platform.processor() or platform.machine()}, {os.cpu_count()} cores",
         "python": platform.python_version(), "numba": numba.__version__,
-        "numpy": numpy.__version__, "rows": rows,
+        "numpy": numpy.__version__, "compile": env["SCANLINE_COMPILE"], "rows": rows,
     }
-    default = "compile.json" if not args.only else "compile-partial.json"
+    default = ("compile" + ("-always" if args.compile else "")
+               + (".json" if not args.only else "-partial.json"))
     path = args.output or os.path.join(HERE, "results", default)
     with open(path, "w") as f:
         json.dump(record, f, indent=1)

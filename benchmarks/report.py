@@ -174,7 +174,8 @@ def markdown(record):
 
 
 #: The topic benchmarks (``benchmarks/<topic>.py``), in README order.
-TOPICS = ("strokes", "antialias", "text", "dither", "clip", "display", "curves", "flatten")
+TOPICS = ("strokes", "antialias", "text", "dither", "clip", "display", "curves", "flatten",
+          "animation")
 
 
 def topics_markdown(folder=os.path.join(HERE, "results")):

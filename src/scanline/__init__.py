@@ -40,6 +40,13 @@ _LAZY = {
     "LineStyle": ("scanline.attributes", "LineStyle"),
     "text": ("scanline.text", None),
     "TextStyle": ("scanline.text.style", "TextStyle"),
+    "animation": ("scanline.animation", None),
+    "raster": ("scanline.raster", None),
+    "transform3d": ("scanline.transform3d", None),
+    "projection": ("scanline.projection", None),
+    "Camera": ("scanline.projection", "Camera"),
+    "mesh": ("scanline.mesh", None),
+    "draw3d": ("scanline.draw3d", None),
 }
 
 __all__ = sorted(_LAZY) + ["__version__"]

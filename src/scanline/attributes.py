@@ -480,6 +480,7 @@ class FillStyle:
         if x0 > x1 or y0 > y1:
             return
         from ._kernels.styles import paint_styled
+        from ._kernels._jit import call
         from ._kernels.variants import layout
 
         w, h = x1 - x0 + 1, y1 - y0 + 1
@@ -500,8 +501,8 @@ class FillStyle:
                        for spec, (r, c) in zip(self._palette, self._where)]
         lut = np.array([fb.pixel(spec, name) for spec, name in entries])
         buf, packed = fb._raster()
-        paint_styled(buf, layout(packed), hatch, fb.width, fb.height, mask, x0, y0, ax, ay, cells,
-                     families, spacing, other, lut)
+        call(paint_styled, mask.shape[0] * mask.shape[1] / 2, buf, layout(packed), hatch,
+             fb.width, fb.height, mask, x0, y0, ax, ay, cells, families, spacing, other, lut)
 
 
 def _families(angle, line_width, cross):

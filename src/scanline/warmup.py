@@ -9,8 +9,9 @@ times each one in a fresh process with an empty cache (the compile-time budget o
 :mod:`scanline._kernels`), and ``tests/test_compile_budget.py`` counts the
 specializations they produce.
 
->>> sorted({group for group, _, _ in CALLS.values()})[:4]
-['antialias', 'clip', 'conics', 'curved']
+>>> group, code, modes = CALLS["line"]
+>>> group, code, modes == MODES
+('lines', "sl.draw.line(fb, 3, 4, 90, 50, color='black')", True)
 """
 
 import time
@@ -172,6 +173,38 @@ CALLS = {
                                           "sl.draw.circle(fb, 48, 32, 20, color='black'); "
                                           "RasterScan(fb, interlaced=True).frames(8, 1, scale=2)",
                                RGB),
+    "beier_neely": ("animation", "sl.animation.beier_neely(np.zeros((32, 48, 3), np.uint8), "
+                                 "np.full((32, 48, 3), 200, np.uint8), [[5, 5, 40, 20]], "
+                                 "[[8, 4, 42, 25]], 0.5)", None),
+    "rotate_block": ("animation", "sl.raster.rotate_block(fb, fb.__class__(20, 10, mode=fb.mode), "
+                                  "(0, 0, 20, 10), 0.6, center=(48, 32))", RGB),
+    "keyframes catmull-rom": ("animation", "sl.animation.KeyFrames([0, 1, 3], [(0, 0), (5, 4), "
+                                           "(9, 1)], interpolation='catmull-rom')"
+                                           "(np.linspace(0, 3, 50))", None),
+    "motion path": ("animation", "sl.animation.MotionPath(sl.curves.Bezier([(0, 0), (0, 9), "
+                                 "(9, 9), (9, 0)])).point(np.linspace(0, 1, 20))", None),
+    "camera project": ("three_d", "sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)).project("
+                                  "np.random.default_rng(0).uniform(-1, 1, (100, 3)), 96, 64)",
+                       None),
+    "clip lines3d liang-barsky": ("three_d", "sl.clip.lines3d(np.random.default_rng(1).uniform("
+                                             "-5, 15, (100, 6)), ((0, 0, 0), (10, 10, 10)))",
+                                  None),
+    "clip lines3d cohen-sutherland": ("three_d", "sl.clip.lines3d(np.random.default_rng(1)"
+                                                 ".uniform(-5, 15, (100, 6)), ((0, 0, 0), "
+                                                 "(10, 10, 10)), method='cohen-sutherland')",
+                                      None),
+    "clip homogeneous": ("three_d", "sl.clip.homogeneous([[(1, 1, 1, 2), (1, 1, -3, -2)]])",
+                         None),
+    "clip polygon3d": ("three_d", "sl.clip.polygon3d([(-1, 0.5, 0.5), (2, 0.5, 0.5), "
+                                  "(0.5, 2, 0.5)], ((0, 0, 0), (1, 1, 1)))", None),
+    "wireframe": ("three_d", "sl.draw3d.wireframe(fb, sl.mesh.torus(1, 0.3), "
+                             "sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)), color='black')", RGB),
+    "wireframe depth cue": ("three_d", "sl.draw3d.wireframe(fb, sl.mesh.sphere(), "
+                                       "sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)), "
+                                       "color='black', depth_cue=True)", RGB),
+    "draw3d polylines thick": ("three_d", "sl.draw3d.polylines(fb, [[(0, 0, 0), (1, 1, 0), "
+                                          "(1, 0, 1)]], sl.Camera(eye=(3, 2, 4), "
+                                          "target=(0, 0, 0)), color='black', width=3)", RGB),
     "four calls": ("mixed", "sl.draw.line(fb, 3, 4, 90, 50, color='black'); "
                             f"sl.draw.polygon(fb, {STAR}, color='navy', rule='nonzero'); "
                             "sl.draw.text(fb, 4, 20, 'Hello', color='black', height=14); "
@@ -206,31 +239,47 @@ def run_case(mode, code):
 
 def run(names=None, modes=MODES, progress=None):
     """Make the calls ``names`` (default: every call) in ``modes``, compiling or
-    loading every kernel they reach; returns the seconds each took, by
-    ``(name, mode)``.  ``progress(done, total, name)`` is called after each."""
+    loading every kernel they reach (small as the calls are, never through the
+    kernels' Python twins: :func:`scanline._kernels._jit.call`); returns the seconds
+    each took, by ``(name, mode)``.  ``progress(done, total, name)`` is called after
+    each."""
+    from ._kernels import _jit
+
     todo = list(cases(names, modes))
     seconds = {}
-    for i, (name, mode, code) in enumerate(todo):
-        t0 = time.perf_counter()
-        run_case(mode, code)
-        seconds[name, mode] = time.perf_counter() - t0
-        if progress is not None:
-            progress(i + 1, len(todo), name)
+    before, _jit.COMPILE = _jit.COMPILE, "always"
+    try:
+        for i, (name, mode, code) in enumerate(todo):
+            t0 = time.perf_counter()
+            run_case(mode, code)
+            seconds[name, mode] = time.perf_counter() - t0
+            if progress is not None:
+                progress(i + 1, len(todo), name)
+    finally:
+        _jit.COMPILE = before
     return seconds
+
+
+def by_group(modes=MODES):
+    """The names of the calls, one list per group, the groups with the most calls in
+    ``modes`` first (the order in which parallel workers should take them)."""
+    members = {}
+    for name, mode, _ in cases(None, modes):
+        members.setdefault(CALLS[name][0], [])
+        if name not in members[CALLS[name][0]]:
+            members[CALLS[name][0]].append(name)
+    sizes = {g: sum(1 for n, _, _ in cases(names, modes)) for g, names in members.items()}
+    return [members[g] for g in sorted(members, key=lambda g: -sizes[g])]
 
 
 def groups(jobs, modes=MODES):
     """The calls split into ``jobs`` lists of names, whole groups to one list,
     balanced by the number of calls (so that two processes rarely compile the same
     kernel)."""
-    sizes = {}
-    for name, mode, _ in cases(None, modes):
-        group = CALLS[name][0]
-        sizes[group] = sizes.get(group, 0) + 1
     parts = [[] for _ in range(jobs)]
     load = [0] * jobs
-    for group in sorted(sizes, key=lambda g: -sizes[g]):
+    for names in by_group(modes):
         k = load.index(min(load))
-        parts[k] += [name for name, (g, _, _) in CALLS.items() if g == group]
-        load[k] += sizes[group]
+        parts[k] += names
+        load[k] += sum(1 for _ in cases(names, modes))
     return [p for p in parts if p]

@@ -35,8 +35,13 @@ def test_demo_writes_every_figure_gallery_and_page(gallery):
     for png in pngs:
         with Image.open(out / png) as image:
             image.verify()
-    assert sorted(p.name for p in out.iterdir()) == sorted(pngs + ["index.html",
-                                                                   "explain-bresenham.html"])
+    gifs = sorted(p.name for p in out.glob("*.gif"))
+    assert len(gifs) == sum(demo.all_animations().values()) >= 2   # short animations too
+    for gif in gifs:
+        with Image.open(out / gif) as image:
+            assert image.n_frames > 1
+    assert sorted(p.name for p in out.iterdir()) == sorted(pngs + gifs + [
+        "index.html", "explain-bresenham.html"])
 
 
 def test_page_shows_each_figure_with_caption_and_tables(gallery):
@@ -64,8 +69,45 @@ def test_page_shows_each_figure_with_caption_and_tables(gallery):
 
 def test_demo_into_the_default_folder(run, tmp_path):
     result = run("demo", cwd=tmp_path)
-    assert result.code == 0 and result.err == ""
+    assert result.code == 0
     assert (tmp_path / demo.DEFAULT_DIR / "index.html").is_file()
+    # stderr, not a terminal here: what it is doing, then one plain line per figure
+    # or animation (item k of n, its name, the time so far) -- nothing else
+    n = len(demo.all_figures())
+    m = sum(demo.all_animations().values())
+    lines = result.err.splitlines()
+    assert lines[0].startswith(f"scanline demo: drawing {n} figures and {m} animations with ")
+    progress = [re.fullmatch(r"scanline demo: (\d+)/(\d+) (\S+) \((\d+\.\d) s\)", line)
+                for line in lines[1:]]
+    assert all(progress) and len(progress) == n + m
+    assert [int(p[1]) for p in progress] == list(range(1, n + m + 1))
+    assert {int(p[2]) for p in progress} == {n + m}
+    folder = tmp_path / demo.DEFAULT_DIR
+    files = {p.stem for p in folder.glob("*.png")} - {"gallery"}
+    assert {p[3] for p in progress} == files | {p.name for p in folder.glob("*.gif")}
+    times = [float(p[4]) for p in progress]
+    assert times == sorted(times)
+
+
+def test_demo_in_two_processes_writes_the_same_gallery(gallery, call, tmp_path):
+    out = tmp_path / "two"
+    result = call("demo", "--out", out, "--jobs", "2")
+    assert result.code == 0
+    serial = sorted(p.name for p in gallery[0].iterdir())
+    assert sorted(p.name for p in out.iterdir()) == serial
+    for name in serial:
+        if name.endswith(".png") and name != "gallery.png":
+            with Image.open(out / name) as a, Image.open(gallery[0] / name) as b:
+                assert a.size == b.size, name
+    # the page lists the figures in gallery order whichever process drew them
+    assert re.findall(r'<img src="([^"]+)"', (out / "index.html").read_text()) == \
+        re.findall(r'<img src="([^"]+)"', (gallery[0] / "index.html").read_text())
+
+
+@pytest.mark.parametrize("jobs", ["0", "-1", "two", "1.5"])
+def test_demo_jobs_must_be_a_whole_number(call, one_line_error, tmp_path, jobs):
+    one_line_error(call("demo", "--out", tmp_path / "x", "--jobs", jobs), "--jobs")
+    assert not (tmp_path / "x").exists()
 
 
 def test_demo_into_a_file_fails_cleanly(call, one_line_error, tmp_path):

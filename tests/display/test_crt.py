@@ -3,6 +3,8 @@ refresh rate; the random scan's cycle; phosphor persistence; frames and GIFs."""
 
 import math
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 from PIL import Image
@@ -160,7 +162,7 @@ def test_bad_random_parameters():
 def test_simulate_command_writes_gifs(tmp_path):
     from scanline.cli import main
 
-    scene = "examples/scenes/rotation.toml"
+    scene = str(Path(__file__).parents[2] / "examples" / "scenes" / "rotation.toml")
     for kind in ("raster", "random"):
         out = tmp_path / f"{kind}.gif"
         assert main(["simulate", kind, scene, "-o", str(out), "--frames", "4",

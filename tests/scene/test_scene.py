@@ -155,7 +155,7 @@ def test_every_transformation_step_gives_its_matrix(step, expected):
 
 BAD = [
     # (replace this, with this, expected key path, expected words)
-    ("version = 1", "version = 2", "version", "must be 1"),
+    ("version = 1", "version = 3", "version", "must be 1 or 2"),
     ("version = 1", "", None, "needs the key 'version'"),
     ('name = "a"', 'name = "a"\ncolour = 3', "segments[0].colour", "not a known key"),
     ("[[0, 0], [19, 9]]", "[[0, 0], [19]]", "segments[0].primitives[0].points", "points"),

@@ -139,7 +139,8 @@ def test_fuzzed_explore_requests_never_crash(client, algorithm, args):
     assert r.status_code in (200, 422), r.text
     if r.status_code == 200:
         v = r.json()
-        assert len(v["steps"] or v["rules"]["pick"]) == len(v["rows"]) == v["count"]
+        steps = v["steps"] if v["steps"] is not None else v["rules"]["pick"]
+        assert len(steps) == len(v["rows"]) == v["count"]
 
 
 # -- the workstation ------------------------------------------------------------------

@@ -11,9 +11,12 @@ is defined, and the kernels are then compiled uncached in every process, which i
 slower to start but works.
 """
 
+import os
+import time
 import types
 import warnings
 
+import numpy as np
 from numba import njit
 from numba.core.dispatcher import Dispatcher
 from numba.core.errors import NumbaWarning
@@ -44,7 +47,70 @@ helper = _compiled()
 #: benchmark showed it pays).
 inline = _compiled(inline="always")
 
+#: How :func:`call` runs kernels: ``"auto"`` (the default: small first calls as
+#: Python, the rest compiled), ``"always"`` (compile on the first call: the tests,
+#: ``scanline warmup``) or ``"never"`` (always the Python twins: to debug a kernel
+#: with print or a debugger, slowly).  Set by ``SCANLINE_COMPILE``.
+COMPILE = os.environ.get("SCANLINE_COMPILE", "auto")
+if COMPILE not in ("auto", "always", "never"):
+    raise ValueError(f"SCANLINE_COMPILE must be auto, always or never, got {COMPILE!r}")
+
+#: Most work units for which a kernel that is neither compiled nor cached runs as
+#: Python.  A unit is about one microsecond of the twin's time (the estimates of the
+#: API layer are scaled so, measured per kernel): at most ~0.1 s, against seconds of
+#: compilation.
+TWIN_WORK = 100_000
+
+#: Seconds a process may spend in one kernel's Python twin before the kernel is
+#: compiled after all (many small calls: compiling then pays).
+TWIN_TIME = 0.25
+
 _PYTHON = {}
+_CACHED = {}
+_SPENT = {}
+
+
+def call(kernel, work, *args):
+    """Call ``kernel(*args)``, or on a first use its Python twin.
+
+    A new environment has no compiled kernels: compiling one takes seconds, while the
+    same code run by the interpreter (:func:`python`) finishes a small drawing in
+    milliseconds with the same result.  So a kernel that is neither compiled in this
+    process nor found in numba's on-disk cache runs as Python when ``work`` (an
+    estimate of its work units; a callable is evaluated only here) is at most
+    :data:`TWIN_WORK`, until the twin has used :data:`TWIN_TIME` seconds; a larger or
+    later call compiles it, as does every call once it is compiled or cached.  A
+    tiered JIT, in short: interpret first, compile where it pays.  The twins compute
+    exactly what the kernels compute (``tests/test_first_use.py`` compares them).
+    :data:`COMPILE` overrides the choice.  Anything else than a compiled function
+    (a test's stand-in, say) is just called.
+    """
+    compiled = getattr(kernel, "overloads", None)
+    if compiled and COMPILE != "never" or COMPILE == "always" or compiled is None:
+        return kernel(*args)
+    if COMPILE == "never":
+        return _interpreted(kernel, args)
+    cached = _CACHED.get(kernel)
+    if cached is None:
+        try:
+            cached = _CACHED[kernel] = os.path.exists(kernel._cache._cache_file._index_path)
+        except AttributeError:           # uncached (NullCache), or numba's internals moved
+            cached = _CACHED[kernel] = False
+    spent = _SPENT.get(kernel, 0.0)
+    if cached or spent > TWIN_TIME or (work() if callable(work) else work) > TWIN_WORK:
+        return kernel(*args)
+    t0 = time.perf_counter()
+    try:
+        return _interpreted(kernel, args)
+    finally:
+        _SPENT[kernel] = spent + time.perf_counter() - t0
+
+
+def _interpreted(kernel, args):
+    """The Python twin of ``kernel`` on ``args``, with numpy's floating-point warnings
+    off: the compiled kernels' error model gives inf and nan silently too."""
+    with np.errstate(all="ignore"):
+        return python(kernel)(*args)
 
 
 def python(fn):

@@ -90,7 +90,7 @@ def shape_edges(verts, contours, c0, c1, edges, order, fkeys, tkeys, titems):
     :func:`scanline._kernels.sort.sort_keys` (O(n log n); ``fkeys``, ``tkeys``,
     ``titems`` its scratch); return their count and the shape's bounds (xmin, ymin,
     xmax, ymax)."""
-    n = 0
+    n = np.int64(0)     # (not a literal 0: the sort helpers compile once)
     xmin = ymin = math.inf
     xmax = ymax = -math.inf
     for c in range(c0, c1):

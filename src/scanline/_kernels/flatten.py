@@ -8,10 +8,17 @@ import numpy as np
 
 from ._jit import helper, kernel
 
+#: Control points with weights (homogeneous [w x, w]) or without: the token lengths
+#: of ``weighted`` (:mod:`scanline._kernels.variants`), so a plain curve compiles no
+#: weight code.
+PLAIN = 1
+WEIGHTED = 2
+
 
 @helper
 def _flat(stack, top, dim, tol2, proj, weighted):
-    """True iff every control point of ``stack[top]`` ([w x, w] if ``weighted``) lies
+    """True iff every control point of ``stack[top]`` ([w x, w] if ``weighted`` is the
+    WEIGHTED token) lies
     within sqrt(tol2) of the chord *segment* from its first to its last point.
 
     Distance to a segment is a convex function, so its maximum over the convex hull
@@ -21,7 +28,7 @@ def _flat(stack, top, dim, tol2, proj, weighted):
     """
     m = stack.shape[1]
     for i in range(m):
-        r = 1.0 / stack[top, i, dim] if weighted else 1.0
+        r = 1.0 / stack[top, i, dim] if len(weighted) == WEIGHTED else 1.0
         for c in range(dim):
             proj[i, c] = stack[top, i, c] * r
     len2 = 0.0
@@ -78,7 +85,8 @@ def subdivide(segments, weighted, tol2, max_depth, max_points):
     segments : float64 (S, n + 1, dim + 1) or (S, n + 1, dim)
         Control points of S segments of degree n >= 1: homogeneous [w x, w] (weights
         > 0) if ``weighted``, else Cartesian.
-    weighted : bool
+    weighted : token
+        WEIGHTED or PLAIN (a plain curve compiles no weight code).
     tol2 : float
         The squared tolerance.
     max_depth : int
@@ -102,15 +110,8 @@ def subdivide(segments, weighted, tol2, max_depth, max_points):
     is tested; a flat piece is emitted and popped, any other is split in place (its
     right half stays, its left half is pushed), so pieces come out left to right.
     """
-    if weighted:  # two specializations: the plain one skips the weights
-        return _subdivide(segments, True, tol2, max_depth, max_points)
-    return _subdivide(segments, False, tol2, max_depth, max_points)
-
-
-@helper
-def _subdivide(segments, weighted, tol2, max_depth, max_points):
     S, m, cols = segments.shape
-    dim = cols - 1 if weighted else cols
+    dim = cols - 1 if len(weighted) == WEIGHTED else cols
     out = np.empty((max(64, 8 * S), dim))
     firsts = np.empty(S, np.int64)
     count = np.int64(0)     # (int64, not a literal 0: the helpers compile once)
@@ -123,7 +124,7 @@ def _subdivide(segments, weighted, tol2, max_depth, max_points):
         if count + 1 > out.shape[0]:
             out = _grow(out, count)
         firsts[s] = count
-        r = 1.0 / segments[s, 0, dim] if weighted else 1.0
+        r = 1.0 / segments[s, 0, dim] if len(weighted) == WEIGHTED else 1.0
         for c in range(dim):
             out[count, c] = segments[s, 0, c] * r
         count += 1
@@ -139,7 +140,7 @@ def _subdivide(segments, weighted, tol2, max_depth, max_points):
                     truncated = True
                 if count + 1 > out.shape[0]:
                     out = _grow(out, count)
-                r = 1.0 / stack[top, m - 1, dim] if weighted else 1.0
+                r = 1.0 / stack[top, m - 1, dim] if len(weighted) == WEIGHTED else 1.0
                 for c in range(dim):
                     out[count, c] = stack[top, m - 1, c] * r
                 count += 1

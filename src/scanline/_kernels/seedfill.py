@@ -32,6 +32,11 @@ FLOOD = 1
 BOUNDARY = 2
 SOFT = 3
 
+#: ``tracing`` tokens: the drawing kernel compiles no step log.
+QUIET = 1
+TRACING = 2
+QUIET_TOKEN = (0,)
+
 #: Soft fill: largest distance, in levels per channel, between a pixel and the blend
 #: t*F + (1 - t)*B that best explains it (each stored channel is rounded, so exact
 #: blends are within half a level; a level more absorbs the error of t).
@@ -156,9 +161,9 @@ def enlarged(a, used, need):
 @helper
 def seed_loop(buf, layout, kind, width, height, x0, y0, eight, ref, color, tracing):
     """Fill the region of seed (x0, y0); return the number of pixels filled and, when
-    ``tracing``, the step log (rows of STEP_COLUMNS: popped seed x, y; span x_left,
-    x_right, or -1, -1 when the seed was filled already; number of seeds pushed) and
-    the seeds pushed, in order.
+    ``tracing`` is the TRACING token, the step log (rows of STEP_COLUMNS: popped seed
+    x, y; span x_left, x_right, or -1, -1 when the seed was filled already; number of
+    seeds pushed) and the seeds pushed, in order.
 
     ``todo[y, x]`` is 1 for a region pixel not yet filled.  Pop a seed; if it is
     still to be filled, extend it left and right to the ends of its span, paint the
@@ -179,17 +184,18 @@ def seed_loop(buf, layout, kind, width, height, x0, y0, eight, ref, color, traci
     stack[0, 1] = y0
     top = np.int64(1)     # (int64s, not literals: ``enlarged`` compiles once)
     count = 0
-    steps = np.empty((16 if tracing else 0, STEP_COLUMNS), np.int64)
-    pushed = np.empty((16 if tracing else 0, 2), np.int64)
+    logging = len(tracing) == TRACING
+    steps = np.empty((16 if logging else 0, STEP_COLUMNS), np.int64)
+    pushed = np.empty((16 if logging else 0, 2), np.int64)
     nsteps = np.int64(0)
     npushed = np.int64(0)
     while top > 0:
         stack = enlarged(stack, top, top + width + 2)
-        if tracing:
+        if len(tracing) == TRACING:
             steps = enlarged(steps, nsteps, nsteps + 1)
             pushed = enlarged(pushed, npushed, npushed + width + 2)
         room = stack.shape[0] - width - 2
-        while 0 < top <= room and (not tracing or (
+        while 0 < top <= room and (not logging or (
                 nsteps < steps.shape[0] and npushed + width + 2 <= pushed.shape[0])):
             top -= 1
             before = top
@@ -225,7 +231,7 @@ def seed_loop(buf, layout, kind, width, height, x0, y0, eight, ref, color, traci
                             stack[top, 1] = ny
                             top += 1
                         i += 1
-            if tracing:
+            if len(tracing) == TRACING:
                 steps[nsteps, 0] = x
                 steps[nsteps, 1] = y
                 steps[nsteps, 2] = xl
@@ -243,5 +249,5 @@ def seed_loop(buf, layout, kind, width, height, x0, y0, eight, ref, color, traci
 def seed_fill(buf, layout, kind, width, height, x0, y0, eight, ref, color):
     """The seed fill ``kind`` (a fill token) from seed (x0, y0), which must be on the
     raster; return the number of pixels filled.  (The step tables run
-    :func:`seed_loop` as Python with ``tracing``.)"""
-    return seed_loop(buf, layout, kind, width, height, x0, y0, eight, ref, color, False)[0]
+    :func:`seed_loop` as Python with the TRACING token.)"""
+    return seed_loop(buf, layout, kind, width, height, x0, y0, eight, ref, color, QUIET_TOKEN)[0]

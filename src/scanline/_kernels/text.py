@@ -61,7 +61,7 @@ def _stamp(buf, layout, width, height, atlas, masks, runs, mids, gx, gy, value, 
                 continue
             row = masks[m, 0] + j * w - x0
             for x in range(lo, hi):
-                weight = atlas[row + x] * alpha  # coverage x alpha, 0 .. 255 * 255
+                weight = np.int64(atlas[row + x]) * alpha  # coverage x alpha, 0 .. 255 * 255
                 if len(layout) == PACKED:
                     if weight >= 32513:  # >= 1/2
                         put_bit(buf, x, y, value[0])

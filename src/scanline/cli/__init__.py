@@ -18,10 +18,11 @@ import traceback
 
 from .. import __version__
 from ..errors import ScanlineError
-from . import demo, dither, draw, explain, fonts, render, simulate, studio, trace
+from . import (animate, demo, dither, draw, explain, fonts, render, simulate, studio, trace,
+               warmup)
 
 #: The sub-command modules; each has ``register(subparsers)``.
-COMMANDS = (trace, draw, demo, render, dither, fonts, simulate, explain, studio)
+COMMANDS = (trace, draw, demo, render, dither, fonts, simulate, explain, studio, animate, warmup)
 
 #: Errors reported as bad input (exit status 2).
 INPUT_ERRORS = (ScanlineError, ValueError, TypeError, OSError)
@@ -51,7 +52,8 @@ def build_parser():
         prog="scanline",
         description="The classic computer-graphics pipeline: step tables of the notes' "
         "algorithms, drawing with attributes and text, scene files through the display-file "
-        "interpreter, dithering, and a gallery of the notes' examples.",
+        "interpreter, animated scenes and storyboards, dithering, and a gallery of the notes' "
+        "examples.",
         epilog="'scanline COMMAND --help' describes each command.",
     )
     parser.add_argument("--version", action="version", version=f"scanline {__version__}")
@@ -82,7 +84,10 @@ def main(argv=None):
     except SystemExit as exc:  # --help, --version
         return exc.code
     try:
-        args.run(args)
+        from .progress import announce_compilation
+
+        with announce_compilation():    # "compiling kernels for first use", if it lasts
+            args.run(args)
     except BrokenPipeError:
         # The reader of our output went away (``scanline trace ... | head``): stop
         # quietly, and keep Python from complaining when it flushes stdout at exit.

@@ -1,14 +1,21 @@
-"""``scanline demo [--out DIR]``: render the gallery of figures into DIR.
+"""``scanline demo [--out DIR] [--jobs N]``: render the gallery of figures into DIR.
 
-DIR receives one PNG per figure of :mod:`scanline.cli.figures`, ``gallery.png`` (all
-of them on one sheet) and ``index.html``, a self-contained page that shows each figure
-with its caption and step table.
+DIR receives one PNG per figure of :mod:`scanline.cli.figures`, each written as soon
+as it is drawn, then ``gallery.png`` (all of them on one sheet) and ``index.html``, a
+self-contained page that shows each figure with its caption and step table.  The
+figure modules are drawn by N processes (default: one per core), each taking whole
+modules, largest first: on a first run most of the time is numba compiling kernels,
+and one process compiles one kernel at a time.
 """
 
 import html
 import os
+import sys
+import time
 
 from .. import __version__
+from .progress import Progress, cpu_jobs, run_groups
+from .warmup import jobs_argument
 
 DEFAULT_DIR = "scanline-demo"
 
@@ -35,6 +42,8 @@ def register(subparsers):
     )
     parser.add_argument("--out", metavar="DIR", default=DEFAULT_DIR,
                         help=f"folder to write into, created if needed (default ./{DEFAULT_DIR})")
+    parser.add_argument("--jobs", type=jobs_argument, default=None, metavar="N",
+                        help="processes drawing figures (default: the number of cores)")
     parser.set_defaults(run=run)
 
 
@@ -52,12 +61,15 @@ def label(index):
     return letters
 
 
-def page(figures):
-    """The HTML of the demo page for ``figures`` (each shown from ``NAME.png``)."""
+def page(figures, animated=()):
+    """The HTML of the demo page for ``figures`` (each shown from ``NAME.png``; those
+    named in ``animated`` also link ``NAME.gif``)."""
     sections = []
     for index, fig in enumerate(figures):
         letter = label(index)
         table = f"\n<pre>{html.escape(fig.table)}</pre>" if fig.table else ""
+        if fig.name in animated:
+            table += f'\n<p><a href="{fig.name}.gif">{fig.name}.gif</a> (animated)</p>'
         sections.append(
             f'<section id="{fig.name}">\n<figure>\n'
             f'<img src="{fig.name}.png" alt="{html.escape(fig.title)}">\n'
@@ -98,7 +110,7 @@ _STUDIO = (
 #: functions that return a :class:`scanline.cli.figures.Figure`.
 FIGURE_MODULES = ("figures", "figures_attributes", "figures_antialias", "figures_color",
                   "figures_text", "figures_clip", "figures_scene", "figures_curves",
-                  "figures_surfaces")
+                  "figures_surfaces", "figures_three_d", "figures_animation")
 
 
 def all_figures():
@@ -109,25 +121,96 @@ def all_figures():
             for make in importlib.import_module(f"{__package__}.{name}").FIGURES]
 
 
+def all_animations():
+    """The names of the short animations of the gallery, by module (a figure module's
+    optional ``ANIMATIONS`` tuple of functions returning ``(name, Animation)``)."""
+    import importlib
+
+    return {m: len(getattr(importlib.import_module(f"{__package__}.{m}"), "ANIMATIONS", ()))
+            for m in FIGURE_MODULES}
+
+
+def _warm():
+    """Whether the kernels of the gallery seem to be in numba's cache already."""
+    from .._kernels import antialias, conics, lines, polygon, strokes, text
+    from .progress import kernels_cached
+
+    return kernels_cached([lines.draw_line, conics.draw_circle, polygon.fill_polygons,
+                           strokes.stroke_outlines, antialias.draw_lines, text.stamp_line])
+
+
+def draw_module(group, report):
+    """Draw the figures of one module, ``group = (module, out)``, writing each PNG as
+    soon as it is drawn and reporting ``(module, index, figure without its image)``,
+    then its animations as GIFs, reporting ``(module, None, name)``."""
+    import importlib
+
+    from ..framebuffer import write_atomically
+
+    module, out = group
+    figures = importlib.import_module(f"{__package__}.{module}")
+    for index, make in enumerate(figures.FIGURES):
+        fig = make()
+        write_atomically(os.path.join(out, f"{fig.name}.png"),
+                         lambda f, image=fig.image: image.save(f, format="PNG"))
+        report((module, index, fig._replace(image=None)))
+    for make in getattr(figures, "ANIMATIONS", ()):
+        name, animation = make()
+        animation.save(os.path.join(out, f"{name}.gif"), progress=False)
+        report((module, None, name))
+
+
 def run(args):
-    """Render every figure, then write the PNGs, gallery.png and index.html."""
+    """Draw every figure and animation (in parallel processes), then gallery.png and
+    index.html."""
+    import importlib
+
+    from PIL import Image
+
     from ..framebuffer import write_atomically
     from ..studio.page import explain
     from . import build_parser
     from ._plot import grid_of
 
-    def save_png(image, name):
-        write_atomically(os.path.join(args.out, name), lambda f: image.save(f, format="PNG"))
-
     os.makedirs(args.out, exist_ok=True)
-    figures = [make() for make in all_figures()]
+    sizes = {m: len(importlib.import_module(f"{__package__}.{m}").FIGURES)
+             for m in FIGURE_MODULES}
+    animated = all_animations()
+    total = sum(sizes.values()) + sum(animated.values())
+    groups = [(m, args.out) for m in sorted(FIGURE_MODULES,
+                                            key=lambda m: -sizes[m] - animated[m])]
+    jobs = args.jobs or (1 if _warm() else cpu_jobs())
+    print(f"scanline demo: drawing {sum(sizes.values())} figures and {sum(animated.values())} "
+          f"animations with {jobs} process{'es' if jobs > 1 else ''} (a first run compiles "
+          "the kernels they use)", file=sys.stderr, flush=True)
+    progress = Progress(total, "scanline demo")
+    done, gifs = {}, set()
+    t0 = time.perf_counter()
+
+    def finished(message):
+        module, index, item = message
+        if index is None:
+            gifs.add(item)
+            progress.update(f"{item}.gif")
+        else:
+            done[module, index] = item
+            progress.update(item.name)
+
+    try:
+        run_groups(draw_module, groups, jobs, finished)
+    finally:
+        progress.close()
+    figures = [done[m, i] for m in FIGURE_MODULES for i in range(sizes[m])]
+    images = []
     for fig in figures:
-        save_png(fig.image, f"{fig.name}.png")
-    save_png(grid_of([f.image for f in figures], [f.title for f in figures]), "gallery.png")
+        with Image.open(os.path.join(args.out, f"{fig.name}.png")) as im:
+            images.append(im.convert("RGB"))
+    write_atomically(os.path.join(args.out, "gallery.png"),
+                     lambda f: grid_of(images, [f.title for f in figures]).save(f, format="PNG"))
     explain(build_parser().parse_args(["explain", *EXPLAIN, "-o", "-"]),
             os.path.join(args.out, "explain-bresenham.html"))
     index = os.path.join(args.out, "index.html")
-    write_atomically(index, lambda f: f.write(page(figures).encode("utf-8")))
-    print(f"scanline demo: wrote {len(figures)} figures, gallery.png and index.html "
-          f"to {os.path.abspath(args.out)}")
+    write_atomically(index, lambda f: f.write(page(figures, gifs).encode("utf-8")))
+    print(f"scanline demo: wrote {len(figures)} figures, {len(gifs)} GIFs, gallery.png and "
+          f"index.html to {os.path.abspath(args.out)} in {time.perf_counter() - t0:.1f} s")
     print(f"open {os.path.abspath(index)}")

@@ -4,6 +4,7 @@ import numpy as np
 
 from .. import _validate as v
 from .._kernels import clip as k
+from .._kernels._jit import call
 from .._kernels.variants import token
 from ..errors import ArgumentTypeError, ArgumentValueError
 from . import window as w
@@ -167,8 +168,8 @@ def lines(segments, window, method="liang-barsky"):
         rect = np.array(w.rectangle(window))
         ring = w.rectangle_polygon(*rect)
         code = k.COHEN_SUTHERLAND if method == "cohen-sutherland" else k.LIANG_BARSKY
-    bad = k.clip_lines(token(code), seg.reshape(-1), rect, ring, w.outward_normals(ring),
-                       float(v.COORD_LIMIT), out.reshape(-1), accepted)
+    bad = call(k.clip_lines, 2 * len(seg) * len(ring), token(code), seg.reshape(-1), rect, ring,
+               w.outward_normals(ring), float(v.COORD_LIMIT), out.reshape(-1), accepted)
     _check(bad, seg, "segments")
     return out, accepted
 

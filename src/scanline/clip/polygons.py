@@ -4,6 +4,7 @@ import numpy as np
 
 from .. import _validate as v
 from .._kernels import clip as k
+from .._kernels._jit import call
 from ..errors import ArgumentValueError
 from ..geometry.contours import batch, contours
 from . import weiler_atherton as wa
@@ -22,7 +23,8 @@ def _sutherland_hodgman(verts, counts, ring):
         out = np.empty((size, 2))
         out_counts = np.zeros(len(counts), np.int64)
         scratch = np.empty((2, width, 2))
-        used = k.sutherland_hodgman(verts, counts, ring, out, out_counts, scratch)
+        used = call(k.sutherland_hodgman, 3 * len(verts) * len(ring), verts, counts, ring, out,
+                    out_counts, scratch)
         if used >= 0:
             return out[:used], out_counts
         size *= 2

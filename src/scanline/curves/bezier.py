@@ -15,6 +15,7 @@ import numpy as np
 from .. import _validate as v
 from ..errors import ArgumentValueError
 from .._kernels import curves as _k
+from .._kernels._jit import call
 from .base import Curve, control_points, parameters, weights_array
 from .matrices import MAX_DEGREE, bezier_matrix
 from .rational import RationalDerivative, Weighted, project
@@ -116,7 +117,8 @@ class Bezier(Weighted, Curve):
         pts = self.homogeneous() if self.rational else self.points
         if method == "de-casteljau":
             out = np.empty((len(u), pts.shape[1]))
-            _k.de_casteljau(v.kernel_array(pts), v.kernel_array(u), out)
+            call(_k.de_casteljau, len(u) * len(pts) ** 2, v.kernel_array(pts), v.kernel_array(u),
+                 out)
         elif method == "bernstein":
             out = bernstein(self.degree, u) @ pts
         elif method == "recursive":
@@ -129,8 +131,8 @@ class Bezier(Weighted, Curve):
                     "method='de-casteljau'"
                 )
             out = np.empty((len(u), pts.shape[1]))
-            _k.piecewise_horner(np.array([0.0, 1.0]), self._power_form(), v.kernel_array(u),
-                                out)
+            call(_k.piecewise_horner, len(u) * len(pts), np.array([0.0, 1.0]), self._power_form(),
+                 v.kernel_array(u), out)
         return project(out) if self.rational else out
 
     def _power_form(self):

@@ -15,6 +15,7 @@ import numpy as np
 
 from .. import _validate as v
 from .._kernels import curves as _k
+from .._kernels._jit import call
 from ..errors import ArgumentTypeError, ArgumentValueError
 from .._validate import _show
 from .base import Curve, control_points, parameters, weights_array
@@ -272,9 +273,10 @@ class BSpline(Weighted, Curve):
             out = np.empty((len(u), pts.shape[1]))
             u = v.kernel_array(u)
             if method == "de-boor":
-                _k.de_boor(v.kernel_array(pts), v.kernel_array(self.knots), self.order, u, out)
+                call(_k.de_boor, len(u) * self.order ** 2, v.kernel_array(pts),
+                     v.kernel_array(self.knots), self.order, u, out)
             else:
-                _k.piecewise_horner(*self._power_form(), u, out)
+                call(_k.piecewise_horner, len(u) * self.order, *self._power_form(), u, out)
         return project(out) if self.rational else out
 
     def _power_form(self):
@@ -292,8 +294,8 @@ class BSpline(Weighted, Curve):
                 for j in range(self.order - 1, -1, -1):  # highest power first
                     d = spline.derivative(j)
                     value = np.empty((len(start), d.dimension))
-                    _k.de_boor(v.kernel_array(d.points), v.kernel_array(d.knots), d.order,
-                               v.kernel_array(start), value)
+                    call(_k.de_boor, len(start) * d.order ** 2, v.kernel_array(d.points),
+                         v.kernel_array(d.knots), d.order, v.kernel_array(start), value)
                     rows.append(value * (h**j / factorial(j))[:, None])
                 coefficients = np.ascontiguousarray(np.stack(rows, axis=1))
                 finite = np.isfinite(coefficients).all() and np.isfinite(1 / h).all()

@@ -190,13 +190,17 @@ def subdivide(segments, tolerance, weighted=True):
     pieces) and the (S,) index of each segment's start point.
     """
     from .._kernels import flatten as k
+    from .._kernels._jit import call
+    from .._kernels.variants import token
 
     segments = np.ascontiguousarray(segments, dtype=np.float64)
     if segments.shape[1] < 2:  # degree 0: a point
         start = segments[:, 0, :-1] / segments[:, 0, -1:] if weighted else segments[:, 0]
         return start, np.arange(len(segments))
-    points, firsts, truncated = k.subdivide(segments, bool(weighted), tolerance * tolerance,
-                                            MAX_DEPTH, MAX_POINTS)
+    kind = token(k.WEIGHTED if weighted else k.PLAIN)
+    # each segment flattens to a few dozen pieces at the usual tolerances
+    points, firsts, truncated = call(k.subdivide, 100 * segments.size, segments, kind,
+                                     tolerance * tolerance, MAX_DEPTH, MAX_POINTS)
     if truncated:
         raise ArgumentValueError(
             f"tolerance={tolerance!r} is too small for a curve this large: flattening "
@@ -273,8 +277,8 @@ def spline_pieces(homogeneous, knots, order, domain):
     """Bezier control points of each polynomial piece of the B-spline with control
     points ``homogeneous`` (n + 1, c) (Cartesian or [w P, w]), knot vector ``knots``
     and ``order`` d, on the non-empty knot spans inside ``domain``: (S, d, c)."""
-    from .. import _validate as v
     from .._kernels import curves as _k
+    from .._kernels._jit import call
     from .bezier import bernstein
 
     lo, hi = domain
@@ -288,8 +292,8 @@ def spline_pieces(homogeneous, knots, order, domain):
     # de Boor's algorithm: d blending functions per point, not the dense (S d, n + 1)
     # matrix of all of them (298 GiB for 10**5 control points)
     values = np.empty((len(u), homogeneous.shape[1]))
-    _k.de_boor(v.kernel_array(homogeneous), v.kernel_array(knots), order, v.kernel_array(u),
-               values)
+    call(_k.de_boor, len(u) * order ** 2, v.kernel_array(homogeneous), v.kernel_array(knots),
+         order, v.kernel_array(u), values)
     values = values.reshape(len(a), order, -1)
     return np.linalg.solve(collocation[None], values)
 

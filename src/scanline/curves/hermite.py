@@ -14,6 +14,7 @@ import numpy as np
 
 from .. import _validate as v
 from .._kernels import curves as _k
+from .._kernels._jit import call
 from ..errors import ArgumentValueError
 from .base import Curve, control_points
 from .bezier import Bezier
@@ -54,7 +55,8 @@ class PiecewisePolynomial(Curve):
     def _evaluate(self, u):
         c = self.coefficients
         out = np.empty((len(u), self.dimension))
-        _k.piecewise_horner(np.arange(len(c) + 1.0), v.kernel_array(c), v.kernel_array(u), out)
+        call(_k.piecewise_horner, len(u) * c.shape[1], np.arange(len(c) + 1.0), v.kernel_array(c),
+             v.kernel_array(u), out)
         return out
 
     def _derivative(self):

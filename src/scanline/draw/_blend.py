@@ -38,6 +38,7 @@ import numbers
 import numpy as np
 
 from .._kernels import blend as k
+from .._kernels._jit import call
 from .._kernels.variants import MODE
 from ..color.spec import rgba
 from ._area import fill_area
@@ -149,8 +150,8 @@ def composite(fb, mask, ox, oy, source):
     (h, w, 1), 255 = fully covered) whose pixel (0, 0) is device pixel (ox, oy).
     Mask pixels outside ``fb`` are ignored."""
     buf, _, width, height = target(fb)
-    k.composite(buf, mode_code(fb), width, height, table(fb), mask, int(ox), int(oy),
-                np.ascontiguousarray(source, np.float64))
+    call(k.composite, 3 * mask.shape[0] * mask.shape[1], buf, mode_code(fb), width, height, table(fb),
+         mask, int(ox), int(oy), np.ascontiguousarray(source, np.float64))
 
 
 def _masked(fb, source, bbox, draw):

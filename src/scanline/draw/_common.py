@@ -63,3 +63,18 @@ def colors(fb, color, n, name="color"):
     for i, spec in enumerate(color):
         out[i] = fb.pixel(spec, f"{name}[{i}]")
     return out
+
+
+def area_work(width, height, points, count=1, margin=0):
+    """Work units of drawing ``count`` primitives within the box of ``points`` (an
+    (N, 2+) array of device coordinates, any columns past x and y ignored), grown by
+    ``margin``, clipped to a ``width`` x ``height`` raster: an upper bound of the
+    pixels written, for :func:`scanline._kernels._jit.call`."""
+    points = np.asarray(points, np.float64)
+    if points.size == 0:
+        return 0
+    points = points.reshape(len(points), -1)
+    lo = np.maximum(np.floor(points[:, :2].min(axis=0)) - margin, 0)
+    hi = np.minimum(np.ceil(points[:, :2].max(axis=0)) + margin, (width - 1, height - 1))
+    area = float(np.prod(np.maximum(hi - lo + 1, 0)))
+    return count * area + len(points)

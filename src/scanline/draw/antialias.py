@@ -28,9 +28,13 @@ from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
 from .._kernels import antialias as wu
 from .._kernels import coverage as cov
+from .._kernels._jit import call
 from ..geometry import contours as parse
 from . import _blend
-from ._common import target
+from ._common import area_work, target
+from .conics import conic_work
+from .curved import region_work
+from .lines import line_work
 from .polygon import _rule
 
 
@@ -96,7 +100,8 @@ def lines(fb, segments, color="white"):
     """
     segs = _reals("segments", segments, 4)
     buf, mode, width, height, table, srcs = _setup(fb, color, len(segs))
-    wu.draw_lines(buf, mode, width, height, table, segs, srcs)
+    call(wu.draw_lines, lambda: 20 * line_work(segs, width, height), buf, mode, width, height,
+         table, segs, srcs)
 
 
 def ellipses(fb, ellipses, color="white"):
@@ -123,7 +128,8 @@ def ellipses(fb, ellipses, color="white"):
     """
     arr = _reals("ellipses", ellipses, 4, radius_columns=(2, 3))
     buf, mode, width, height, table, srcs = _setup(fb, color, len(arr))
-    wu.draw_ellipses(buf, mode, width, height, table, arr, srcs)
+    call(wu.draw_ellipses, lambda: 12 * conic_work(arr[:, 2], arr[:, 3], width, height), buf,
+         mode, width, height, table, arr, srcs)
 
 
 def circles(fb, circles, color="white"):
@@ -154,7 +160,9 @@ def filled_ellipses(fb, ellipses, color="white"):
     :mod:`scanline._kernels.coverage`)."""
     arr = _reals("ellipses", ellipses, 4, radius_columns=(2, 3))
     buf, mode, width, height, table, srcs = _setup(fb, color, len(arr))
-    cov.fill_ellipses(buf, mode, width, height, table, arr, srcs)
+    call(cov.fill_ellipses, lambda: 20 * region_work(arr[:, 2], arr[:, 3], width, height)
+         + cov.SUB * float(np.minimum(2 * arr[:, 3] + 2, height).sum()), buf, mode, width,
+         height, table, arr, srcs)
 
 
 #: The largest vertex magnitude :func:`fills_flat` takes: the coverage arithmetic is
@@ -195,7 +203,9 @@ def _fill_parsed(fb, verts, offsets, shapes, color, rule):
     buf, mode, width, height, table, srcs = _setup(fb, color, len(shapes) - 1)
     counts = offsets[shapes[1:]] - offsets[shapes[:-1]]
     most = int(counts.max()) if len(counts) else 0
-    cov.fill_shapes(buf, mode, width, height, table, verts, offsets, shapes, srcs, code, most)
+    call(cov.fill_shapes, lambda: 4 * area_work(width, height, verts, len(shapes) - 1),
+         buf, mode, width, height, table, verts,
+         offsets, shapes, srcs, code, most)
 
 
 def fills_flat(fb, vertices, contour_offsets, shape_offsets, color="white", rule="nonzero"):

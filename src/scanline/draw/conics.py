@@ -4,6 +4,7 @@ import numpy as np
 
 from .. import _validate as v
 from .._kernels import conics as k
+from .._kernels._jit import call
 from .._kernels.variants import layout
 from ..errors import ArgumentValueError
 from . import strokes
@@ -67,7 +68,8 @@ def circle(fb, xc, yc, r, color="white", *, style=None, antialias=False, width=N
                        ("r", "r"))
         return
     buf, packed, width, height = target(fb)
-    k.draw_circle(buf, layout(packed), width, height, xc, yc, r, fb.pixel(color))
+    call(k.draw_circle, min(8 * r, 4 * (width + height)), buf, layout(packed), width, height,
+         xc, yc, r, fb.pixel(color))
 
 
 def circles(fb, circles, color="white", *, style=None, antialias=False, width=None, cap=None,
@@ -84,7 +86,15 @@ def circles(fb, circles, color="white", *, style=None, antialias=False, width=No
                        ("circles radius r", "circles radius r"))
         return
     buf, packed, width, height = target(fb)
-    k.draw_circles(buf, layout(packed), width, height, arr, colors(fb, color, len(arr)))
+    call(k.draw_circles, lambda: conic_work(arr[:, 2], arr[:, 2], width, height), buf,
+         layout(packed), width, height, arr, colors(fb, color, len(arr)))
+
+
+def conic_work(rx, ry, width, height):
+    """Work units of drawing conic outlines of semi-axes ``rx``, ``ry`` (arrays): about
+    4 (rx + ry) pixels each, at most 4 (width + height) on the raster
+    (:func:`scanline._kernels._jit.call`)."""
+    return float(np.minimum(4 * (rx + ry), 4 * (width + height)).sum()) + len(rx)
 
 
 def _check_ellipse(rx, ry, name="rx * ry"):
@@ -150,7 +160,8 @@ def ellipse(fb, xc, yc, rx, ry, color="white", *, style=None, antialias=False, w
         strokes.conics(fb, np.array([[xc, yc, rx, ry]], np.int64), color, attrs, antialias)
         return
     buf, packed, width, height = target(fb)
-    k.draw_ellipse(buf, layout(packed), width, height, xc, yc, rx, ry, fb.pixel(color))
+    call(k.draw_ellipse, min(4 * (rx + ry), 4 * (width + height)), buf, layout(packed), width,
+         height, xc, yc, rx, ry, fb.pixel(color))
 
 
 def ellipses(fb, ellipses, color="white", *, style=None, antialias=False, width=None, cap=None,
@@ -172,4 +183,5 @@ def ellipses(fb, ellipses, color="white", *, style=None, antialias=False, width=
         strokes.conics(fb, arr, color, attrs, antialias)
         return
     buf, packed, width, height = target(fb)
-    k.draw_ellipses(buf, layout(packed), width, height, arr, colors(fb, color, len(arr)))
+    call(k.draw_ellipses, lambda: conic_work(arr[:, 2], arr[:, 3], width, height), buf,
+         layout(packed), width, height, arr, colors(fb, color, len(arr)))

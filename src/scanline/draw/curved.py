@@ -15,6 +15,7 @@ import numpy as np
 
 from .. import _validate as v
 from .._kernels import curved as k
+from .._kernels._jit import call
 from .._kernels.variants import layout, token
 from . import _blend
 from ._common import colors, target
@@ -52,6 +53,15 @@ def _axes(rx, ry):
     return rx, ry, rx == ry
 
 
+def region_work(rx, ry, width, height):
+    """Work units of filling ellipses of semi-axes ``rx``, ``ry`` (numbers or arrays):
+    each its box, at most the raster, plus a row table per shape
+    (:func:`scanline._kernels._jit.call`)."""
+    rx, ry = np.asarray(rx, np.float64), np.asarray(ry, np.float64)
+    area = np.minimum((2 * rx + 1) * (2 * ry + 1), width * height) / 4 + height
+    return float(area.sum())
+
+
 def _shape(is_circle):
     """The kernels' shape token of a circle or an ellipse."""
     return token(k.CIRCLE if is_circle else k.ELLIPSE)
@@ -59,8 +69,8 @@ def _shape(is_circle):
 
 def _paint(fb, color, style, xc, yc, rx, ry, is_circle, hp, combine, outline):
     def draw(buf, packed, width, height, ox, oy, pixel):
-        k.draw_region(buf, layout(packed), width, height, xc - ox, yc - oy, rx, ry,
-                      _shape(is_circle), False, hp, combine, pixel)
+        call(k.draw_region, region_work(rx, ry, width, height), buf, layout(packed), width,
+             height, xc - ox, yc - oy, rx, ry, _shape(is_circle), False, hp, combine, pixel)
 
     _blend.fill(fb, color, style, (xc - rx, yc - ry, xc + rx, yc + ry), draw, outline)
 
@@ -86,8 +96,8 @@ def _translucent_batch(fb, arr, circle, color):
         row = arr[i:i + 1].copy()
         row[0, 0] -= ox
         row[0, 1] -= oy
-        k.fill_regions(buf, layout(packed), width, height, row, _shape(circle),
-                       value.reshape(1, -1))
+        call(k.fill_regions, region_work(row[0, 2], row[0, -1], width, height), buf,
+             layout(packed), width, height, row, _shape(circle), value.reshape(1, -1))
 
     ry = arr[:, 2] if circle else arr[:, 3]
     boxes = np.stack([arr[:, 0] - arr[:, 2], arr[:, 1] - ry, arr[:, 0] + arr[:, 2],
@@ -221,8 +231,8 @@ def fill_circles(fb, circles, color="white", antialias=False):
     if _blend.translucent(color):
         _translucent_batch(fb, arr, True, color)
         return
-    k.fill_regions(buf, layout(packed), width, height, arr, _shape(True),
-                   colors(fb, color, len(arr)))
+    call(k.fill_regions, lambda: region_work(arr[:, 2], arr[:, 2], width, height), buf,
+         layout(packed), width, height, arr, _shape(True), colors(fb, color, len(arr)))
 
 
 def fill_ellipses(fb, ellipses, color="white", antialias=False):
@@ -242,8 +252,8 @@ def fill_ellipses(fb, ellipses, color="white", antialias=False):
     if _blend.translucent(color):
         _translucent_batch(fb, arr, False, color)
         return
-    k.fill_regions(buf, layout(packed), width, height, arr, _shape(False),
-                   colors(fb, color, len(arr)))
+    call(k.fill_regions, lambda: region_work(arr[:, 2], arr[:, 3], width, height), buf,
+         layout(packed), width, height, arr, _shape(False), colors(fb, color, len(arr)))
 
 
 # -- arcs, chords and pies ----------------------------------------------------------------
@@ -387,8 +397,8 @@ def arc(fb, xc, yc, rx, ry, start, end, color="white"):
         return
 
     def draw(buf, packed, width, height, ox, oy, value):
-        k.draw_region(buf, layout(packed), width, height, xc - ox, yc - oy, rx, ry,
-                      _shape(is_circle), True, *region, value)
+        call(k.draw_region, region_work(rx, ry, width, height), buf, layout(packed), width,
+             height, xc - ox, yc - oy, rx, ry, _shape(is_circle), True, *region, value)
 
     _blend.paint(fb, color, (xc - rx, yc - ry, xc + rx, yc + ry), draw)
 

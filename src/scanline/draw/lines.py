@@ -4,12 +4,20 @@ import numpy as np
 
 from .. import _validate as v
 from .._kernels import lines as k
+from .._kernels._jit import call
 from .._kernels.variants import layout, token
 from ..errors import ArgumentValueError
 from . import strokes
 from ._common import colors, target
 
 METHODS = {"bresenham": token(k.BRESENHAM), "dda": token(k.DDA)}
+
+
+def line_work(segments, width, height):
+    """Work units of drawing the (N, 4) ``segments``: their steps, each at most the
+    raster's width + height once clipped (:func:`scanline._kernels._jit.call`)."""
+    d = np.abs(segments[:, 2:4] - segments[:, 0:2]).max(axis=1, initial=0)
+    return float(np.minimum(d, width + height).sum()) + len(segments)
 
 
 def _method(method):
@@ -85,10 +93,10 @@ def line(fb, x0, y0, x1, y1, color="white", method="bresenham", *, style=None,
         strokes.polyline(fb, points, color, style=attrs, antialias=antialias)
         return
     buf, packed, width, height = target(fb)
-    k.draw_line(buf, layout(packed), width, height,
-                v.coordinate("x0", x0), v.coordinate("y0", y0),
-                v.coordinate("x1", x1), v.coordinate("y1", y1),
-                fb.pixel(color), code)
+    x0, y0, x1, y1 = (v.coordinate(n, c) for n, c in (("x0", x0), ("y0", y0), ("x1", x1),
+                                                      ("y1", y1)))
+    call(k.draw_line, 2 * min(max(abs(x1 - x0), abs(y1 - y0)), width + height), buf,
+         layout(packed), width, height, x0, y0, x1, y1, fb.pixel(color), code)
 
 
 def lines(fb, segments, color="white", method="bresenham", *, style=None, antialias=False,
@@ -129,4 +137,5 @@ def lines(fb, segments, color="white", method="bresenham", *, style=None, antial
         return
     buf, packed, width, height = target(fb)
     segs = v.coordinate_array("segments", segments, 4)
-    k.draw_lines(buf, layout(packed), width, height, segs, colors(fb, color, len(segs)), code)
+    call(k.draw_lines, lambda: 2 * line_work(segs, width, height), buf, layout(packed), width,
+         height, segs, colors(fb, color, len(segs)), code)

@@ -5,11 +5,12 @@ import numpy as np
 
 from .. import _validate as v
 from .._kernels import polygon as k
+from .._kernels._jit import call
 from .._kernels.variants import layout
 from ..errors import ArgumentValueError
 from ..geometry import contours as parse
 from . import _blend
-from ._common import colors, target
+from ._common import area_work, colors, target
 
 RULES = {"even-odd": k.EVEN_ODD, "nonzero": k.NONZERO}
 
@@ -161,8 +162,9 @@ def polygon(fb, points, color="white", rule="even-odd", style=None, antialias=Fa
     max_edges = _max_edges(offsets, polys)
 
     def draw(buf, packed, width, height, ox, oy, pixel):
-        k.fill_polygons(buf, layout(packed), width, height, ox, oy, verts, offsets, polys,
-                        np.asarray(pixel, np.uint8).reshape(1, -1), code, max_edges)
+        call(k.fill_polygons, lambda: area_work(width, height, verts - (ox, oy)) / 4, buf,
+             layout(packed), width, height, ox, oy, verts, offsets, polys,
+             np.asarray(pixel, np.uint8).reshape(1, -1), code, max_edges)
 
     def outline():
         _outline(fb, verts, offsets, color)
@@ -231,14 +233,18 @@ def polygons(fb, polygons, color="white", rule="even-odd", counts=None, antialia
     most = _max_edges(offsets, polys)
     if _blend.translucent(color):
         def draw(i, buf, packed, width, height, ox, oy, value):
-            k.fill_polygons(buf, layout(packed), width, height, ox, oy, verts, offsets,
-                            polys[i:i + 2], value.reshape(1, -1), code, most)
+            one = verts[offsets[polys[i]]:offsets[polys[i + 1]]]
+            call(k.fill_polygons, lambda: area_work(width, height, one - (ox, oy)) / 4, buf,
+                 layout(packed), width, height, ox, oy, verts, offsets, polys[i:i + 2],
+                 value.reshape(1, -1), code, most)
 
         boxes = [_bbox(verts[offsets[polys[i]]:offsets[polys[i + 1]]]) for i in range(n)]
         _blend.paint_each(fb, color, n, boxes, draw)
         return
     values = colors(fb, color, n)
+    work = area_work(width, height, verts, n) / 4
     if len(values) == 1 and n > 1:   # one color: the order cannot change the image
-        verts, offsets, polys = k.band_reordered(verts, offsets, polys, 0, height)
-    k.fill_polygons(buf, layout(packed), width, height, 0, 0, verts, offsets, polys, values,
-                    code, most)
+        verts, offsets, polys = call(k.band_reordered, len(verts), verts, offsets, polys, 0,
+                                     height)
+    call(k.fill_polygons, work, buf, layout(packed), width, height, 0, 0, verts, offsets, polys,
+         values, code, most)

@@ -9,6 +9,7 @@ import numbers
 import numpy as np
 
 from .. import _validate as v
+from .._kernels._jit import call
 from .._kernels.variants import layout, token
 from ..errors import ArgumentTypeError, ArgumentValueError
 from ._common import colors, target
@@ -55,8 +56,10 @@ def fill(fb, x, y, kind, connectivity, ref, color, buf=None):
     ref = ref(buf, packed, x, y) if callable(ref) else ref
     ref = np.ascontiguousarray(ref, np.int64)
     code = {"flood": k.FLOOD, "boundary": k.BOUNDARY, "soft": k.SOFT}[kind]
-    return int(k.seed_fill(buf, layout(packed), token(code), width, height, x, y, eight, ref,
-                           color))
+    # the region is unknown before the fill: the raster bounds it (each pixel is
+    # classified once and painted at most once)
+    return int(call(k.seed_fill, 3 * width * height, buf, layout(packed), token(code), width,
+                    height, x, y, eight, ref, color))
 
 
 def _region(buf, packed, width):

@@ -23,12 +23,13 @@ from .._kernels import linetype as kl
 from .._kernels import polygon as kp
 from .._kernels.polygon import NONZERO
 from .._kernels import strokes as ks
+from .._kernels._jit import call
 from .._kernels.variants import layout
 from ..errors import ArgumentTypeError, ArgumentValueError
 from ..geometry import contours as parse
 from ..linestyle import LineStyle
 from . import _blend
-from ._common import colors, target
+from ._common import area_work, colors, target
 
 CAPS = {"butt": ks.CAP_BUTT, "round": ks.CAP_ROUND, "square": ks.CAP_SQUARE}
 JOINS = {"miter": ks.JOIN_MITER, "round": ks.JOIN_ROUND, "bevel": ks.JOIN_BEVEL}
@@ -135,6 +136,31 @@ def _line_type(style):
     return kl.LENGTHS, 0, np.array(style.dash, np.float64), float(style.dash_phase)
 
 
+def path_work(points, width, height):
+    """Work units of drawing the width-1 path through ``points``: its steps, each
+    segment's at most width + height once clipped (:func:`scanline._kernels._jit.call`)."""
+    if len(points) < 2:
+        return len(points)
+    d = np.abs(np.diff(points, axis=0)).max(axis=1)
+    return float(np.minimum(d, width + height).sum()) + len(points)
+
+
+def dash_work(points, lengths):
+    """Work units of cutting the path through ``points`` into dashes of ``lengths``:
+    a few per vertex and per dash."""
+    if len(points) < 2:
+        return len(points)
+    length = float(np.hypot(*np.diff(points, axis=0).T).sum())
+    return 2 * len(points) + length / max(sum(lengths), 1e-9) * len(lengths)
+
+
+def outline_work(points, r):
+    """Work units of the stroke outline of half-width ``r`` along ``points``: a join
+    (at most half a turn of arc) and a few corners per vertex."""
+    arc = np.pi / np.arccos(1 - min(ks.TOLERANCE / max(r, ks.TOLERANCE), 1.0))
+    return len(points) * (2 + float(arc) / 5)
+
+
 def _painter(style, verts, offsets, closed):
     """``draw(buf, packed, width, height, ox, oy, values, a, b)``: draws polylines
     a .. b-1 with the (1 or b-a rows of) channel values."""
@@ -146,9 +172,10 @@ def _painter(style, verts, offsets, closed):
 
         def draw(buf, packed, width, height, ox, oy, values, a, b):
             o = offsets[a:b + 1]
-            kl.draw_patterned(buf, layout(packed), width, height,
-                              iverts[o[0]:o[-1]] - np.array([ox, oy], np.int64), o - o[0],
-                              closed[a:b], values, kind, mask, dashes, phase, pen, margin)
+            pts = iverts[o[0]:o[-1]] - np.array([ox, oy], np.int64)
+            call(kl.draw_patterned, lambda: 2 * path_work(pts, width, height) * len(pen), buf,
+                 layout(packed), width, height, pts, o - o[0], closed[a:b], values, kind, mask,
+                 dashes, phase, pen, margin)
         return draw
     lengths, phase = style.lengths()
     cap, join = CAPS[style.cap], JOINS[style.join]
@@ -163,14 +190,17 @@ def _painter(style, verts, offsets, closed):
             reach = r * max(style.miter_limit, 2.0) + 2.0
             box = np.array([ox - reach, oy - reach, ox + width - 1 + reach,
                             oy + height - 1 + reach])
-            *pieces, owner = ks.dashed_polylines(*pieces, np.array(lengths, np.float64),
-                                                 float(phase), box)
-        out, contours, polys, most = ks.stroke_outlines(*pieces, owner, b - a, r, cap, join,
-                                                        style.miter_limit)
+            *pieces, owner = call(ks.dashed_polylines, lambda: dash_work(pieces[0], lengths),
+                                  *pieces, np.array(lengths, np.float64), float(phase), box)
+        out, contours, polys, most = call(ks.stroke_outlines, lambda: outline_work(pieces[0], r),
+                                          *pieces, owner, b - a, r, cap, join,
+                                          style.miter_limit)
+        work = area_work(width, height, out - (ox, oy), b - a) / 4 if len(out) else 0
         if len(values) == 1 and b - a > 1:   # one color: any order gives the same image
-            out, contours, polys = kp.band_reordered(out, contours, polys, oy, height)
-        kp.fill_polygons(buf, layout(packed), width, height, ox, oy, out, contours, polys,
-                         values, NONZERO, most)
+            out, contours, polys = call(kp.band_reordered, len(out), out, contours, polys, oy,
+                                        height)
+        call(kp.fill_polygons, work, buf, layout(packed), width, height, ox, oy, out, contours,
+             polys, values, NONZERO, most)
     return draw
 
 
@@ -222,9 +252,9 @@ def _antialiased(fb, verts, offsets, closed, color, style):
     lengths, phase = style.lengths()
     if style.width == 1:
         if lengths is not None:
-            verts, offsets, closed, owner = ks.dashed_polylines(
-                verts, offsets, closed, np.array(lengths, np.float64), float(phase),
-                _view(fb, 3.0))
+            verts, offsets, closed, owner = call(
+                ks.dashed_polylines, lambda: dash_work(verts, lengths), verts, offsets, closed,
+                np.array(lengths, np.float64), float(phase), _view(fb, 3.0))
         else:
             owner = np.arange(len(offsets) - 1)
         segs, seg_owner = [], []
@@ -246,12 +276,13 @@ def _antialiased(fb, verts, offsets, closed, color, style):
     if lengths is None:
         owner = np.arange(npoly)
     else:
-        verts, offsets, closed, owner = ks.dashed_polylines(
-            verts, offsets, closed, np.array(lengths, np.float64), float(phase),
-            _view(fb, _margin(style)))
-    out, contours, polys, _ = ks.stroke_outlines(
-        verts, offsets, closed, owner, npoly, 0.5 * style.width, CAPS[style.cap],
-        JOINS[style.join], style.miter_limit)
+        verts, offsets, closed, owner = call(
+            ks.dashed_polylines, lambda: dash_work(verts, lengths), verts, offsets, closed,
+            np.array(lengths, np.float64), float(phase), _view(fb, _margin(style)))
+    out, contours, polys, _ = call(
+        ks.stroke_outlines, lambda: outline_work(verts, 0.5 * style.width), verts, offsets,
+        closed, owner, npoly, 0.5 * style.width, CAPS[style.cap], JOINS[style.join],
+        style.miter_limit)
     # the outlines are already flat arrays (vertices, contour offsets, shape offsets):
     # hand them over as they are rather than as lists of contours
     aa.fills_flat(fb, out, contours, polys, color, "nonzero")
@@ -399,13 +430,13 @@ def _quadrant(rx, ry):
 
     if rx == ry:
         out = np.zeros((rx + 1, 3), np.int64)
-        n = kc.circle_trace(rx, out)
+        n = call(kc.circle_trace, rx, rx, out)
         octant = np.vstack([[[0, rx]], out[:n, 1:3]])
         octant = octant[octant[:, 0] <= octant[:, 1]]
         quadrant = np.vstack([octant, octant[::-1, ::-1]])
     else:
         out = np.zeros((rx + ry + 1, 6), np.int64)
-        n = kc.ellipse_trace(rx, ry, out)
+        n = call(kc.ellipse_trace, rx + ry, rx, ry, out)
         quadrant = np.vstack([[[0, ry]], out[:n, 2:4]])
     return quadrant
 
@@ -470,8 +501,8 @@ def conics(fb, rows, color, style, antialias, names=("rx", "ry")):
         pixels = conic_pixels(xc, yc, rx, ry, names)
 
         def draw(buf, packed, width, height, ox, oy, value, pixels=pixels):
-            kl.draw_sequence(buf, layout(packed), width, height, pixels - np.array([ox, oy], np.int64),
-                             kind, mask, dashes, phase, pen, value)
+            call(kl.draw_sequence, len(pixels) * len(pen), buf, layout(packed), width, height,
+                 pixels - np.array([ox, oy], np.int64), kind, mask, dashes, phase, pen, value)
         if values is not None:
             buf, packed, width, height = target(fb)
             draw(buf, packed, width, height, 0, 0, values[i if len(values) > 1 else 0])

@@ -4,6 +4,7 @@ sections 3-14 and 4-5)."""
 import numpy as np
 
 from .. import _validate as v
+from .._kernels._jit import call
 from .._kernels.text import stamp_glyphs, stamp_line
 from .._kernels.variants import layout
 from ..color.spec import rgba
@@ -87,8 +88,9 @@ def _filled(fb, p, color, value, antialias):
     mids = cache.ensure(p.gids)
     buf, packed = fb._raster()
     alpha = _alpha(color)
-    stamp_glyphs(buf, layout(packed), fb.width, fb.height, cache.atlas, cache.masks, cache.runs, mids,
-                 p.ox, p.oy, value, alpha, fb.mode == "P", alpha == 255 and not antialias)
+    call(stamp_glyphs, lambda: _glyph_work(cache.masks, len(mids)), buf, layout(packed),
+         fb.width, fb.height, cache.atlas, cache.masks, cache.runs, mids, p.ox, p.oy, value,
+         alpha, fb.mode == "P", alpha == 255 and not antialias)
 
 
 def _line(fb, raster, x, y, text, fast, color, value, antialias):
@@ -99,10 +101,15 @@ def _line(fb, raster, x, y, text, fast, color, value, antialias):
     buf, packed, width, height = raster
     alpha = _alpha(color)
     font = setup.font
-    return stamp_line(buf, layout(packed), width, height, cache.atlas, cache.masks, cache.runs,
-                      cache.mask_of, font._table, font.advances, codes_of(text), float(x),
-                      float(y), setup.params, value, alpha, fb.mode == "P",
-                      alpha == 255 and not antialias) == 0
+    return call(stamp_line, lambda: _glyph_work(cache.masks, len(text)), buf, layout(packed),
+                width, height, cache.atlas, cache.masks, cache.runs, cache.mask_of,
+                font._table, font.advances, codes_of(text), float(x), float(y), setup.params,
+                value, alpha, fb.mode == "P", alpha == 255 and not antialias) == 0
+
+
+def _glyph_work(masks, n):
+    """Work units of stamping ``n`` glyphs: each at most the largest cached mask."""
+    return n * (1 + (int((masks[:, 1] * masks[:, 2]).max()) if len(masks) else 0))
 
 
 def _fast(style):

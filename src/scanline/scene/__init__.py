@@ -24,5 +24,9 @@ GIF, SVG or vector listing.  The format is documented in docs/scene-format.md.
 from .files import SceneError, dumps, read
 from .files import loads as parse
 from .scene import Scene, load, loads
+from .animated import AnimatedScene
+from .animated import load as load_animated
+from .animated import loads as loads_animated
 
-__all__ = ["Scene", "SceneError", "load", "loads", "parse", "read", "dumps"]
+__all__ = ["Scene", "SceneError", "load", "loads", "parse", "read", "dumps", "AnimatedScene",
+           "load_animated", "loads_animated"]

@@ -80,7 +80,7 @@ def _seed_table(kind, x, y, grid, connectivity, ref_of):
     # the drawing kernel's own loop, run as Python with its step log on
     _, steps, pushed = python(k.seed_loop)(buf, layout(packed), token(kind), fb.width,
                                            fb.height, x, y, eight, ref,
-                                           np.array([255], np.uint8), True)
+                                           np.array([255], np.uint8), token(k.TRACING))
     rows, pixels, stack, j = [], [], [(x, y)], 0
     for i, (sx, sy, xl, xr, n) in enumerate(np.asarray(steps).tolist()):
         stack.pop()

@@ -1,4 +1,10 @@
-"""Test-session setup shared by every test module."""
+"""Test-session setup shared by every test (and by the doctests of src/)."""
+
+import os
+
+# The suite tests the compiled kernels: first calls compile rather than run the
+# kernels' Python twins (tests/test_first_use.py compares the two explicitly).
+os.environ.setdefault("SCANLINE_COMPILE", "always")
 
 
 def pytest_collection_modifyitems(items):

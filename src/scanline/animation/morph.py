@@ -1,0 +1,347 @@
+"""Morphing: shapes changing from one key frame to the next (notes, chapter 6, Q4:
+"transformation of one object into another"; Hearn & Baker §16-5, "Morphing"), and
+Beier–Neely feature-based image morphing.
+
+Two key frames of a shape may have different numbers of vertices.  Hearn & Baker
+first *equalize* them: the key frame with fewer edges gets its edges divided so that
+both have as many as the other.  With L_max and L_min edges,
+
+    N_e = L_max mod L_min,   N_s = int(L_max / L_min),
+
+N_e edges of the smaller key frame are divided into N_s + 1 sections and the other
+L_min - N_e edges into N_s sections (N_e (N_s + 1) + (L_min - N_e) N_s = L_max).  In
+terms of vertices, with V_max and V_min vertices of open polylines,
+
+    N_ls = (V_max - 1) mod (V_min - 1),   N_p = int((V_max - 1) / (V_min - 1)),
+
+N_p points are added to N_ls line sections and N_p - 1 points to the remaining ones.
+Then corresponding vertices are interpolated.  :func:`equalize` does this (the longest
+edges get the extra sections), :func:`morph` interpolates.
+
+>>> import scanline as sl
+>>> triangle = [(0, 0), (4, 0), (0, 3)]
+>>> square = [(0, 0), (4, 0), (4, 4), (0, 4)]
+>>> a, b = sl.animation.equalize(triangle, square)
+>>> a.tolist()                       # the longest edge, (4, 0) -> (0, 3), is split
+[[0.0, 0.0], [4.0, 0.0], [2.0, 1.5], [0.0, 3.0]]
+>>> sl.animation.morph(triangle, square, 0.5).tolist()
+[[0.0, 0.0], [4.0, 0.0], [3.0, 2.75], [0.0, 3.5]]
+"""
+
+from typing import NamedTuple
+
+import numpy as np
+
+from .. import _validate as v
+from ..errors import ArgumentTypeError, ArgumentValueError
+from .easing import fractions
+
+
+class Equalization(NamedTuple):
+    """Hearn & Baker's counts for equalizing two key frames (§16-5).
+
+    ``edges_max``, ``edges_min``: L_max, L_min; ``n_e``, ``n_s``: N_e = L_max mod
+    L_min edges are divided into N_s + 1 = int(L_max / L_min) + 1 sections, the rest
+    into N_s.  ``vertices_max``, ``vertices_min``: V_max, V_min; ``n_ls``, ``n_p``:
+    N_p points are added to N_ls = (V_max - 1) mod (V_min - 1) line sections and N_p - 1
+    to the rest (the vertex form, which counts an open polyline's vertices).
+    """
+
+    edges_max: int
+    edges_min: int
+    n_e: int
+    n_s: int
+    vertices_max: int
+    vertices_min: int
+    n_ls: int
+    n_p: int
+
+
+def equalization(count_a, count_b, closed=True):
+    """The counts of :class:`Equalization` for shapes of ``count_a`` and ``count_b``
+    vertices (closed polygons: as many edges as vertices; open polylines: one fewer).
+
+    >>> equalization(3, 4, closed=False)          # the triangle -> quadrilateral case
+    Equalization(edges_max=3, edges_min=2, n_e=1, n_s=1, vertices_max=4, vertices_min=3, n_ls=1, n_p=1)
+    """
+    minimum = 3 if closed else 2
+    va = v.positive_int("count_a", count_a, minimum=minimum)
+    vb = v.positive_int("count_b", count_b, minimum=minimum)
+    vmax, vmin = max(va, vb), min(va, vb)
+    lmax, lmin = (vmax, vmin) if closed else (vmax - 1, vmin - 1)
+    return Equalization(lmax, lmin, lmax % lmin, lmax // lmin, vmax, vmin,
+                        (vmax - 1) % (vmin - 1), (vmax - 1) // (vmin - 1))
+
+
+def _shape(name, value, closed):
+    try:
+        a = np.array(value, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise ArgumentTypeError(f"{name} must be an array of vertices, got {v._show(value)}") from None
+    minimum = 3 if closed else 2
+    if a.ndim != 2 or len(a) < minimum or a.shape[1] < 1:
+        raise ArgumentValueError(
+            f"{name} must have shape (V, dim) with V >= {minimum} "
+            f"({'a closed polygon' if closed else 'an open polyline'}), got shape {a.shape}")
+    if not np.isfinite(a).all():
+        raise ArgumentValueError(f"{name} must be finite, got {v._show(a.tolist())}")
+    return a
+
+
+def _subdivide(points, edges, closed):
+    """``points`` with its edges divided: edge i into ``sections[i]`` equal parts.
+    Returns (vertices, added mask)."""
+    lengths = np.linalg.norm(np.roll(points, -1, axis=0) - points, axis=1)
+    if not closed:
+        lengths = lengths[:-1]
+    lmin = len(lengths)
+    n_e, n_s = edges % lmin, edges // lmin
+    sections = np.full(lmin, n_s)
+    longest = np.argsort(-lengths, kind="stable")[:n_e]
+    sections[longest] += 1
+    out, added = [], []
+    for i in range(lmin):
+        p, q = points[i], points[(i + 1) % len(points)]
+        for k in range(sections[i]):
+            out.append(p + (q - p) * (k / sections[i]))
+            added.append(k > 0)
+    if not closed:
+        out.append(points[-1])
+        added.append(False)
+    return np.array(out), np.array(added)
+
+
+def _align(reference, shape, added):
+    """The cyclic shift (and direction) of closed ``shape`` closest to ``reference``."""
+    best = None
+    for candidate, mask in ((shape, added), (shape[::-1], added[::-1])):
+        for shift in range(len(shape)):
+            rolled = np.roll(candidate, -shift, axis=0)
+            cost = float(((rolled - reference) ** 2).sum())
+            if best is None or cost < best[0] - 1e-12:
+                best = (cost, rolled, np.roll(mask, -shift))
+    return best[1], best[2]
+
+
+def equalize(shape_a, shape_b, *more, closed=True, align=False, return_added=False):
+    """Give key-frame shapes equal vertex counts (Hearn & Baker, §16-5).
+
+    Parameters
+    ----------
+    shape_a, shape_b, *more : array_like (V, dim)
+        Two or more key frames of one shape (polygons or polylines in 2-D or 3-D).
+        Each shape with fewer edges than the largest gets its edges divided.
+    closed : bool
+        Closed polygons (V edges; default) or open polylines (V - 1 edges).
+    align : bool
+        Closed shapes: after equalizing, start each shape (and run it in the
+        direction) that brings its vertices closest to the first shape's, so that
+        the morph does not twist.  Default False: vertex 0 goes to vertex 0.
+    return_added : bool
+        Also return, per shape, a boolean mask of the vertices added.
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        The shapes with equal vertex counts (and the masks).
+
+    Notes
+    -----
+    Of the smaller shape's L_min edges, the N_e = L_max mod L_min longest are divided
+    into N_s + 1 sections and the others into N_s (N_s = int(L_max / L_min)); Hearn &
+    Baker leave open which edges take the extra sections.
+    """
+    shapes = [_shape(name, s, closed) for name, s in
+              zip(["shape_a", "shape_b"] + [f"more[{i}]" for i in range(len(more))],
+                  (shape_a, shape_b) + more)]
+    dims = {s.shape[1] for s in shapes}
+    if len(dims) != 1:
+        raise ArgumentValueError(f"the shapes must have one dimension, got {sorted(dims)}")
+    edges = max(len(s) if closed else len(s) - 1 for s in shapes)
+    out, masks = [], []
+    for s in shapes:
+        own = len(s) if closed else len(s) - 1
+        if own == edges:
+            out.append(s.copy())
+            masks.append(np.zeros(len(s), bool))
+        else:
+            new, added = _subdivide(s, edges, closed)
+            out.append(new)
+            masks.append(added)
+    if align and closed:
+        for i in range(1, len(out)):
+            out[i], masks[i] = _align(out[0], out[i], masks[i])
+    return tuple(out) + tuple(masks) if return_added else tuple(out)
+
+
+def morph(shape_a, shape_b, t, closed=True, align=False):
+    """The in-between shape at fraction ``t`` of the way from ``shape_a`` to
+    ``shape_b``: the two are equalized (:func:`equalize`), then each vertex moves
+    linearly, P(t) = A + t (B - A).
+
+    ``t`` may be an array: the result is then (len(t), V, dim).
+    """
+    a, b = equalize(shape_a, shape_b, closed=closed, align=align)
+    ts = fractions(t)
+    if ts.ndim == 0:
+        return a + float(ts) * (b - a)
+    return a[None] + ts.reshape(-1, 1, 1) * (b - a)[None]
+
+
+# -- Beier–Neely ----------------------------------------------------------------------------
+def _image(name, image):
+    """(bottom-up uint8 storage (h, w, c), how to give the result back)."""
+    from ..framebuffer import FrameBuffer
+
+    if isinstance(image, FrameBuffer):
+        if image.mode not in ("L", "RGB", "RGBA"):
+            raise ArgumentValueError(f"{name} is a mode {image.mode!r} frame buffer; morphing "
+                                     "blends levels, so use mode 'L', 'RGB' or 'RGBA'")
+        return image._raster()[0], ("fb", image.mode)
+    a = np.asarray(image)
+    if a.dtype != np.uint8 or a.ndim not in (2, 3) or (a.ndim == 3 and a.shape[2] not in (1, 3, 4)):
+        raise ArgumentValueError(f"{name} must be a FrameBuffer or a uint8 image array (h, w) or "
+                                 f"(h, w, 1|3|4), got dtype {a.dtype}, shape {a.shape}")
+    storage = a[::-1] if a.ndim == 3 else a[::-1, :, None]
+    return np.ascontiguousarray(storage), ("array", a.ndim)
+
+
+def _lines(name, value, count=None):
+    try:
+        a = np.array(value, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise ArgumentTypeError(f"{name} must be an (n, 4) array of lines x0, y0, x1, y1, "
+                                f"got {v._show(value)}") from None
+    if a.ndim == 3 and a.shape[1:] == (2, 2):
+        a = a.reshape(-1, 4)
+    if a.ndim != 2 or a.shape[1] != 4 or len(a) < 1:
+        raise ArgumentValueError(f"{name} must be an (n, 4) array of lines x0, y0, x1, y1 "
+                                 f"with n >= 1, got shape {a.shape}")
+    if count is not None and len(a) != count:
+        raise ArgumentValueError(f"{name} must pair with the other line set: {count} lines, "
+                                 f"got {len(a)}")
+    if not np.isfinite(a).all():
+        raise ArgumentValueError(f"{name} must be finite, got {v._show(a.tolist())}")
+    zero = np.hypot(a[:, 2] - a[:, 0], a[:, 3] - a[:, 1]) == 0
+    if zero.any():
+        raise ArgumentValueError(f"{name}[{int(np.flatnonzero(zero)[0])}] has zero length; a "
+                                 "feature line needs two different end points")
+    return np.ascontiguousarray(a)
+
+
+def _weights(a, b, p):
+    a, b, p = v.number("a", a), v.number("b", b), v.number("p", p)
+    if a <= 0 or b < 0 or p < 0:
+        raise ArgumentValueError(f"need a > 0, b >= 0 and p >= 0 (the weight (length^p / "
+                                 f"(a + dist))^b), got a={a}, b={b}, p={p}")
+    return a, b, p
+
+
+def _result(storage, how):
+    from ..framebuffer import FrameBuffer
+
+    kind, detail = how
+    if kind == "fb":
+        fb = FrameBuffer(storage.shape[1], storage.shape[0], mode=detail)
+        fb._buf[...] = storage
+        return fb
+    image = storage[::-1]
+    return np.ascontiguousarray(image if detail == 3 else image[:, :, 0])
+
+
+def beier_neely(image_a, image_b, lines_a, lines_b, t, a=1.0, b=2.0, p=0.5):
+    """Beier–Neely feature-based morph of two images at fraction ``t``.
+
+    The feature lines are interpolated, L(t) = L_A + t (L_B - L_A) (end points);
+    image A is warped so that its lines L_A move to L(t), image B so that L_B move to
+    L(t), and the two are cross-dissolved, (1 - t) A' + t B'.  With identical line
+    sets the warps are the identity and the morph is a plain cross-dissolve.
+
+    Parameters
+    ----------
+    image_a, image_b : FrameBuffer or numpy.ndarray
+        Images of one size: frame buffers of mode "L", "RGB" or "RGBA", or uint8
+        arrays in image order (top row first).
+    lines_a, lines_b : array_like (n, 4)
+        Corresponding feature lines (x0, y0, x1, y1) in device coordinates (x right,
+        y up, pixel centers at integers, y = 0 the bottom row — also for arrays).
+    t : float
+        0 gives image A, 1 image B.
+    a, b, p : float
+        The weight of each line at a pixel, (length^p / (a + dist))^b: a > 0 (how
+        closely pixels follow the lines), b (how fast influence falls off with
+        distance), p (how much longer lines count).
+
+    Returns
+    -------
+    FrameBuffer or numpy.ndarray
+        Of image_a's kind, size and mode.
+
+    Notes
+    -----
+    Compiled kernel :func:`scanline._kernels.morph.field_morph`; the source images
+    are sampled bilinearly with edges clamped, and the result rounded half up.
+
+    References
+    ----------
+    T. Beier and S. Neely, "Feature-based image metamorphosis", *SIGGRAPH '92*,
+    Computer Graphics 26(2), 1992, pp. 35-42.
+    """
+    sa, how = _image("image_a", image_a)
+    sb, _ = _image("image_b", image_b)
+    if sa.shape != sb.shape:
+        raise ArgumentValueError(f"image_a and image_b must have one size and mode, got "
+                                 f"storage {sa.shape} and {sb.shape}")
+    la = _lines("lines_a", lines_a)
+    lb = _lines("lines_b", lines_b, len(la))
+    t = float(fractions(t))
+    lines = np.ascontiguousarray(la + t * (lb - la))
+    return _result(_morph(sa, sb, lines, la, lb, t, *_weights(a, b, p)), how)
+
+
+def warp(image, lines_from, lines_to, a=1.0, b=2.0, p=0.5):
+    """Beier–Neely's field warp of one image: the features on ``lines_from`` move to
+    ``lines_to`` (same conventions as :func:`beier_neely`)."""
+    storage, how = _image("image", image)
+    src = _lines("lines_from", lines_from)
+    dst = _lines("lines_to", lines_to, len(src))
+    return _result(_morph(storage, storage, dst, src, src, 0.0, *_weights(a, b, p)), how)
+
+
+def _morph(sa, sb, lines, la, lb, t, a, b, p):
+    from .._kernels._jit import call
+    from .._kernels.morph import field_morph
+
+    out = np.empty_like(sa)
+    call(field_morph, 20 * sa.shape[0] * sa.shape[1] * len(lines), sa, sb,
+         line_table(lines, la, lb, p), float(t), float(a), float(b), out)
+    return out
+
+
+def line_table(lines, lines_a, lines_b, p):
+    """The per-line constants that :func:`scanline._kernels.morph.field_morph` reads:
+    the destination line, its direction, 1/|d|², 1/|d|, |d|^p and unit normal, and for
+    each image the differences P' - P, d' - d, n' - n."""
+    from .._kernels.morph import (A_OFFSET, COLUMNS, DX, DY, INV_LENGTH, INV_LENGTH2,
+                                  LENGTH_P, NX, NY, PX, PY, QX, QY)
+
+    n = len(lines)
+    t = np.empty((n, COLUMNS))
+    d = lines[:, 2:] - lines[:, :2]
+    length = np.hypot(d[:, 0], d[:, 1])
+    t[:, PX:PY + 1] = lines[:, :2]
+    t[:, QX:QY + 1] = lines[:, 2:]
+    t[:, DX:DY + 1] = d
+    t[:, INV_LENGTH2] = 1.0 / (length * length)
+    t[:, INV_LENGTH] = 1.0 / length
+    t[:, LENGTH_P] = length ** p
+    normal = np.stack([-d[:, 1], d[:, 0]], 1) / length[:, None]
+    t[:, NX:NY + 1] = normal
+    for k, src in enumerate((lines_a, lines_b)):
+        ds = src[:, 2:] - src[:, :2]
+        ls = np.hypot(ds[:, 0], ds[:, 1])
+        base = A_OFFSET + 6 * k
+        t[:, base:base + 2] = src[:, :2] - lines[:, :2]
+        t[:, base + 2:base + 4] = ds - d
+        t[:, base + 4:base + 6] = np.stack([-ds[:, 1], ds[:, 0]], 1) / ls[:, None] - normal
+    return np.ascontiguousarray(t)

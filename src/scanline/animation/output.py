@@ -1,0 +1,394 @@
+"""Animation output: GIF, APNG and WebP through Pillow, MP4 (H.264) through PyAV;
+numbered frame files for long films; a Jupyter display.
+
+>>> import scanline as sl
+>>> def frame(i):
+...     fb = sl.FrameBuffer(16, 8, mode="L")
+...     sl.draw.line(fb, i, 0, i, 7, color=255)
+...     return fb
+>>> anim = sl.animation.Animation(frame, frames=16, fps=8)
+>>> len(anim), anim.duration
+(16, 2.0)
+"""
+
+import base64
+import hashlib
+import io
+import math
+import os
+from fractions import Fraction
+
+import numpy as np
+
+from .. import _validate as v
+from ..errors import ArgumentTypeError, ArgumentValueError
+from ..framebuffer import write_atomically
+from . import render as _render
+
+#: Output formats by extension.
+FORMATS = {".gif": "GIF", ".png": "APNG", ".apng": "APNG", ".webp": "WebP", ".mp4": "MP4"}
+
+#: GIF stores delays in hundredths of a second and players show delays under 2/100 s
+#: as 1/10 s, so a GIF cannot play faster than this.
+GIF_MAX_FPS = 50.0
+
+
+def frame_durations(count, fps, unit):
+    """Per-frame display times in multiples of ``unit`` milliseconds whose running
+    sums stay within half a unit of the exact times i / fps, so that a GIF (10 ms
+    units) or WebP (1 ms) keeps frame-exact timing over its whole length.
+
+    >>> frame_durations(6, 24, 10)       # 24 fps in hundredths: 40, 40, 50, ...
+    [40, 40, 50, 40, 40, 40]
+    >>> sum(frame_durations(24, 24, 10))
+    1000
+    """
+    edges = [math.floor(1000 * i / fps / unit + 0.5) * unit for i in range(count + 1)]
+    return [b - a for a, b in zip(edges, edges[1:])]
+
+
+class Animation:
+    """A sequence of frames at a frame rate, to save or show.
+
+    Parameters
+    ----------
+    source : sequence or callable
+        The frames (FrameBuffers, Pillow images, uint8 arrays in image order, image
+        file paths), or a *render function*, frame index -> frame, called for each
+        frame as it is saved (here, in worker processes, or on a Dask cluster).
+    fps : float
+        Frames per second, > 0.
+    frames : int, optional
+        The number of frames a render function makes (default ``len(source)``).
+    loop : int
+        GIF, APNG and WebP: how many times to play; 0 (default) = forever.
+
+    Examples
+    --------
+    ``Animation(render, frames=200, fps=25).save("out.gif", jobs=2)``;
+    ``Animation([fb0, fb1, fb2], fps=2).save("out.png")``.
+    """
+
+    def __init__(self, source, fps=24, frames=None, loop=0):
+        from .timing import _fps
+
+        self.fps = _fps(fps)
+        self.loop = v.positive_int("loop", loop, minimum=0)
+        if callable(source) and not isinstance(source, (list, tuple)):
+            self.render = source
+            if frames is None:
+                try:
+                    frames = len(source)
+                except TypeError:
+                    raise ArgumentValueError(
+                        "a render function needs the number of frames: "
+                        "Animation(render, frames=N, fps=...)") from None
+            self.count = v.positive_int("frames", frames)
+        else:
+            if isinstance(source, (str, bytes)) or not hasattr(source, "__len__"):
+                raise ArgumentTypeError(f"source must be a sequence of frames or a render "
+                                        f"function, got {v._show(source)}")
+            items = list(source)
+            if not items:
+                raise ArgumentValueError("source is empty; an animation needs at least one frame")
+            if frames is not None and frames != len(items):
+                raise ArgumentValueError(f"source holds {len(items)} frames but frames={frames}")
+            self.render = _Sequence(items)
+            self.count = len(items)
+
+    def __len__(self):
+        return self.count
+
+    @property
+    def duration(self):
+        """Seconds: frames / fps."""
+        return self.count / self.fps
+
+    def frame(self, index):
+        """Frame ``index`` as a Pillow image."""
+        index = v.positive_int("index", index, minimum=0)
+        if index >= self.count:
+            raise ArgumentValueError(f"index={index}: the animation has {self.count} frames")
+        return _render.to_image(self.render(index), index)
+
+    def _range(self, frames):
+        if frames is None:
+            return range(self.count)
+        if isinstance(frames, slice):
+            return range(self.count)[frames]
+        start, stop = frames
+        start = v.positive_int("frames start", start, minimum=0)
+        stop = v.positive_int("frames stop", stop, minimum=0)
+        if not start < stop <= self.count:
+            raise ArgumentValueError(f"frames=({start}, {stop}) must satisfy 0 <= start < "
+                                     f"stop <= {self.count} (the frame count)")
+        return range(start, stop)
+
+    def images(self, frames=None, jobs=1, client=None, progress=None):
+        """Yield the frames as Pillow images in order (rendered here, in ``jobs``
+        processes, or on the Dask ``client``)."""
+        return _stream(self.render, self._range(frames), jobs, client, progress)
+
+    def save(self, path, jobs=1, client=None, progress=None, frames=None, quality=None):
+        """Write the animation to ``path``, the format chosen by the extension.
+
+        Parameters
+        ----------
+        path : str or os.PathLike
+            ``.gif`` (Pillow; 256 colors per frame), ``.png`` or ``.apng`` (animated
+            PNG, lossless), ``.webp`` (lossless unless ``quality`` is given), ``.mp4``
+            (H.264 through PyAV; odd sizes are padded to even by repeating the last
+            column or row, as yuv420p requires).
+        jobs : int
+            Render in this many processes.
+        client : distributed.Client or str, optional
+            Render on a Dask cluster (a client or a scheduler address).
+        progress : bool, optional
+            Show a progress bar (tqdm) on stderr; default: when stderr is a terminal
+            and the render takes more than a moment.
+        frames : (start, stop) or slice, optional
+            Save only these frames.
+        quality : int, optional
+            WebP: 0-100 lossy quality (default lossless).  MP4: the x264 CRF, 0-51
+            (default 18, visually lossless; 0 is lossless).
+
+        Notes
+        -----
+        The write is atomic: an error or an interruption (Ctrl-C) leaves no file at
+        ``path`` and stops the workers.  Timing is frame-exact: MP4 frames have
+        timestamps i / fps exactly (a rational time base); GIF (10 ms units) and WebP
+        (1 ms) durations are chosen so that frame i starts within half a unit of
+        i / fps; APNG stores each delay as the exact fraction 1 / fps.  GIF, APNG and
+        WebP store identical consecutive frames once, with their durations added.
+        """
+        name = os.fspath(path)
+        ext = os.path.splitext(name)[1].lower()
+        if ext not in FORMATS:
+            raise ArgumentValueError(f"path={name!r}: no writer for {ext or 'a file without an extension'!r}; "
+                                     f"use {', '.join(FORMATS)}")
+        kind = FORMATS[ext]
+        if kind == "GIF" and self.fps > GIF_MAX_FPS:
+            raise ArgumentValueError(
+                f"fps={self.fps:g} is too fast for GIF: its delays are in 1/100 s and players "
+                f"show delays under 2/100 s as 1/10 s; use fps <= {GIF_MAX_FPS:g}, or .png, "
+                ".webp or .mp4")
+        if kind == "MP4":
+            _mp4_available()
+            if quality is not None and not 0 <= v.positive_int("quality", quality, 0) <= 51:
+                raise ArgumentValueError(f"quality for MP4 is the x264 CRF, 0..51; got {quality}")
+        elif quality is not None and not 0 <= v.positive_int("quality", quality, 0) <= 100:
+            raise ArgumentValueError(f"quality must be 0..100, got {quality}")
+        indices = self._range(frames)
+        images = self.images(frames, jobs=jobs, client=client, progress=progress)
+        writer = {"GIF": self._pillow, "APNG": self._pillow, "WebP": self._pillow,
+                  "MP4": self._mp4}[kind]
+        try:
+            write_atomically(name, lambda f: writer(f, images, len(indices), kind, quality))
+        finally:
+            images.close()
+
+    def _pillow(self, f, images, count, kind, quality):
+        first = next(images)
+        # Pillow reads the frames twice (modes and sizes first), so it needs a list
+        rest = list(_Checked(images, first.size))
+        options = {"save_all": True, "append_images": rest, "loop": self.loop}
+        if kind == "GIF":
+            options["duration"] = frame_durations(count, self.fps, 10)
+            options["disposal"] = 1
+            fmt = "GIF"
+        elif kind == "APNG":
+            options["duration"] = 1000.0 / self.fps
+            fmt = "PNG"
+        else:
+            options["duration"] = frame_durations(count, self.fps, 1)
+            options.update(lossless=quality is None, quality=100 if quality is None else quality,
+                           method=4)
+            fmt = "WEBP"
+        if kind == "WebP" and first.mode not in ("RGB", "RGBA"):
+            first = first.convert("RGBA" if first.mode == "P" and "transparency" in first.info
+                                  else "RGB")
+        first.save(f, format=fmt, **options)
+
+    def _mp4(self, f, images, count, kind, quality):
+        import av
+
+        rate = Fraction(self.fps).limit_denominator(1_000_000)
+        first = next(images)
+        width, height = first.size
+        with av.open(f, mode="w", format="mp4") as container:
+            stream = container.add_stream("libx264", rate=rate)
+            stream.width, stream.height = width + width % 2, height + height % 2
+            stream.pix_fmt = "yuv420p"
+            # frames count in 1 / fps; the muxer picks the file's own time base when it
+            # writes the header (PyAV rescales the packets)
+            tick = 1 / rate
+            stream.time_base = tick
+            stream.codec_context.time_base = tick
+            # x264's macroblock-tree rate control gave different bytes from run to run
+            # for the same frames (clips of a few dozen small frames, even on one
+            # thread); without it the output is reproducible, for a few % of bitrate
+            stream.options = {"crf": str(18 if quality is None else quality), "preset": "medium",
+                              "x264-params": "mbtree=0"}
+            for i, image in enumerate(_prepend(first, _Checked(images, first.size))):
+                rgb = np.asarray(image.convert("RGB"))
+                if width % 2 or height % 2:
+                    rgb = np.pad(rgb, ((0, height % 2), (0, width % 2), (0, 0)), mode="edge")
+                frame = av.VideoFrame.from_ndarray(rgb, format="rgb24")
+                frame.pts = i
+                frame.time_base = tick
+                for packet in stream.encode(frame):
+                    container.mux(packet)
+            for packet in stream.encode():
+                container.mux(packet)
+
+    def write_frames(self, folder, pattern="frame-{:05d}.png", jobs=1, client=None,
+                     progress=None, frames=None):
+        """Write each frame to its own image file in ``folder`` (created if needed),
+        rendered and encoded by the workers themselves.
+
+        This is how a long film is rendered on many machines: give a ``client`` whose
+        workers see ``folder`` (shared storage); each worker writes its frames there
+        (atomically) and sends back only the file's name and checksum; then
+        ``Animation(sorted(paths), fps=...).save("film.mp4")`` encodes them.
+
+        Returns the list of paths written, in frame order.
+        """
+        folder = os.fspath(folder)
+        os.makedirs(folder, exist_ok=True)
+        try:
+            pattern.format(0)
+        except (IndexError, KeyError, ValueError, AttributeError):
+            raise ArgumentValueError(f"pattern={pattern!r} must format a frame number, like "
+                                     "'frame-{:05d}.png'") from None
+        ext = os.path.splitext(pattern.format(0))[1].lower()
+        if ext not in (".png", ".gif", ".bmp", ".webp", ".tif", ".tiff"):
+            raise ArgumentValueError(f"pattern={pattern!r}: frame files must be .png, .gif, "
+                                     ".bmp, .webp or .tif")
+        receipts = _stream(_FrameWriter(self.render, folder, pattern), self._range(frames),
+                           jobs, client, progress)
+        return [os.path.join(folder, receipt.info["scanline_file"]) for receipt in receipts]
+
+    def _repr_html_(self):
+        """Jupyter: the animation as an animated PNG in an <img> tag (the first 250
+        frames when longer)."""
+        buffer = io.BytesIO()
+        count = min(self.count, 250)
+        images = self.images((0, count), progress=False)
+        try:
+            self._pillow(buffer, images, count, "APNG", None)
+        finally:
+            images.close()
+        data = base64.b64encode(buffer.getvalue()).decode("ascii")
+        note = "" if count == self.count else f"<br><small>first {count} of {self.count} frames</small>"
+        return f'<img src="data:image/png;base64,{data}" alt="animation">{note}'
+
+    def __repr__(self):
+        return f"Animation({self.count} frames at {self.fps:g} fps, {self.duration:g} s)"
+
+
+class _Sequence:
+    """A list of frames as a render function (picklable for workers)."""
+
+    def __init__(self, items):
+        self.items = items
+
+    def __call__(self, index):
+        return self.items[index]
+
+    def __len__(self):
+        return len(self.items)
+
+
+class _FrameWriter:
+    """Render a frame, write it to ``folder`` atomically, return a 1x1 receipt image
+    carrying the file name (so the worker sends back a few bytes, not the frame)."""
+
+    def __init__(self, render, folder, pattern):
+        self.render, self.folder, self.pattern = render, folder, pattern
+
+    def __call__(self, index):
+        from PIL import Image
+
+        image = _render.to_image(self.render(index), index)
+        name = self.pattern.format(index)
+        out = io.BytesIO()
+        fmt = {".png": "PNG", ".gif": "GIF", ".bmp": "BMP", ".webp": "WEBP", ".tif": "TIFF",
+               ".tiff": "TIFF"}[os.path.splitext(name)[1].lower()]
+        image.save(out, format=fmt, **({"lossless": True} if fmt == "WEBP" else {}))
+        data = out.getvalue()
+        write_atomically(os.path.join(self.folder, name), lambda f: f.write(data))
+        receipt = Image.new("L", (1, 1))
+        receipt.info["scanline_file"] = name
+        receipt.info["sha256"] = hashlib.sha256(data).hexdigest()
+        return receipt
+
+
+class _Checked:
+    """Iterate images, checking that each has the first frame's size."""
+
+    def __init__(self, images, size):
+        self.images, self.size, self.index = images, size, 0
+
+    def __iter__(self):
+        for image in self.images:
+            self.index += 1
+            if image.size != self.size:
+                raise ArgumentValueError(f"frame {self.index} is {image.size[0]}x{image.size[1]}, "
+                                         f"frame 0 is {self.size[0]}x{self.size[1]}; every frame "
+                                         "of an animation must have one size")
+            yield image
+
+
+def _stream(render, indices, jobs, client, progress):
+    """The rendered frames ``indices`` in order, with a progress bar; closing the
+    generator (or an error) stops the workers."""
+    if not indices:
+        raise ArgumentValueError("frames selects no frame")
+    stream = _render.frames(render, indices, jobs=jobs, client=client)
+    bar = _progress(progress, len(indices))
+
+    def run():
+        try:
+            for image in stream:
+                yield image
+                if bar is not None:
+                    bar.update(1)
+        finally:
+            close = getattr(stream, "close", None)
+            if close is not None:
+                close()
+            if bar is not None:
+                bar.close()
+    return run()
+
+
+def _prepend(first, rest):
+    yield first
+    yield from rest
+
+
+def _mp4_available():
+    try:
+        import av  # noqa: F401
+    except ImportError:
+        raise ArgumentValueError("writing .mp4 needs PyAV (which brings FFmpeg): pip install "
+                                 "'scanline[video]', or save as .gif, .png or .webp") from None
+
+
+def _progress(progress, total):
+    """A tqdm bar (shown after half a second, on a terminal unless forced), or None."""
+    if progress is False:
+        return None
+    try:
+        from tqdm.auto import tqdm
+    except ImportError:
+        if progress:
+            raise ArgumentValueError("progress=True needs tqdm: pip install tqdm") from None
+        return None
+
+    class Bar(tqdm):
+        monitor_interval = 0       # no monitor thread: worker processes can still fork
+
+    return Bar(total=total, unit="frame", desc="scanline", delay=0.5 if progress is None else 0,
+               leave=False,
+               disable=None if progress is None else not progress)

@@ -1,0 +1,262 @@
+"""Rendering frames: in this process, in worker processes (``jobs=N``), or on a Dask
+distributed cluster (``client=``), gathered in frame order.
+
+A *render function* takes a frame index and returns the frame: a
+:class:`~scanline.FrameBuffer`, a Pillow image, a uint8 numpy array in image order
+(top row first) or the path of an image file.  Frames are rendered in chunks of
+consecutive indices; each worker renders a chunk and sends back Pillow images, which
+this process yields in order, whoever rendered them and in whatever order they
+finished.  The pixels do not depend on where a frame was rendered, so an animation
+saved from a serial, a multi-process or a cluster render is the same file, byte for
+byte.
+
+Interrupting (Ctrl-C) or any error stops the workers: the process pool is
+terminated, the cluster's pending tasks are cancelled.
+"""
+
+import collections
+import os
+import pickle
+import signal
+import threading
+
+import numpy as np
+from PIL import Image
+
+from .. import _validate as v
+from ..errors import ArgumentTypeError, ArgumentValueError, ScanlineError
+
+#: Seconds to wait for a Dask scheduler given by address.
+CONNECT_TIMEOUT = 10.0
+
+
+class SchedulerUnreachable(ScanlineError):
+    """A Dask scheduler address that does not answer."""
+
+
+def to_image(frame, index=None):
+    """A frame as a Pillow image of mode "L", "RGB", "RGBA" or "P".
+
+    Accepts a :class:`~scanline.FrameBuffer` (mode "1" becomes "L" 0/255), a Pillow
+    image, a numpy array in image order (bool, or uint8 (h, w), (h, w, 3), (h, w, 4))
+    or the path of an image file.
+    """
+    from ..framebuffer import FrameBuffer
+
+    what = "frame" if index is None else f"frame {index}"
+    if isinstance(frame, FrameBuffer):
+        image = frame.to_pil()
+    elif isinstance(frame, Image.Image):
+        image = frame
+    elif isinstance(frame, (str, os.PathLike)):
+        try:
+            with Image.open(frame) as opened:
+                image = opened.copy()
+        except (OSError, ValueError) as error:
+            raise ArgumentValueError(f"{what}: {os.fspath(frame)!r} cannot be read as an "
+                                     f"image file: {error}") from None
+    elif isinstance(frame, np.ndarray):
+        a = frame
+        if a.dtype == bool:
+            a = a.astype(np.uint8) * 255
+        if a.dtype != np.uint8 or a.ndim not in (2, 3) or (a.ndim == 3 and a.shape[2] not in (3, 4)):
+            raise ArgumentValueError(f"{what} must be a uint8 array (h, w), (h, w, 3) or "
+                                     f"(h, w, 4) in image order, got dtype {a.dtype}, shape {a.shape}")
+        image = Image.fromarray(np.ascontiguousarray(a))
+    else:
+        raise ArgumentTypeError(f"{what} must be a FrameBuffer, a PIL image, a numpy array "
+                                f"or an image file path, got {type(frame).__name__}")
+    if image.mode == "1":
+        image = image.convert("L")
+    elif image.mode not in ("L", "RGB", "RGBA", "P"):
+        has_alpha = "A" in image.getbands() or "transparency" in image.info
+        image = image.convert("RGBA" if has_alpha else "RGB")
+    image.load()
+    return image
+
+
+def render_chunk(render, indices):
+    """Render the frames ``indices`` with ``render`` (what one worker does with one
+    chunk): a list of packed frames, see :func:`pack`."""
+    return [pack(to_image(render(int(i)), int(i))) for i in indices]
+
+
+def pack(image):
+    """A Pillow image as (pixels, mode, palette, info): a numpy array travels
+    between processes without the copies a pickled image takes (and Dask sends it
+    as one buffer)."""
+    palette = image.getpalette() if image.mode == "P" else None
+    return np.asarray(image), image.mode, palette, dict(image.info)
+
+
+def unpack(packed):
+    """The Pillow image of a :func:`pack`."""
+    pixels, mode, palette, info = packed
+    image = Image.frombytes(mode, (pixels.shape[1], pixels.shape[0]), pixels.tobytes())
+    if palette is not None:
+        image.putpalette(palette)
+    image.info.update(info)
+    return image
+
+
+def chunks(indices, parts):
+    """``indices`` cut into consecutive chunks, about eight per worker and at most 16
+    frames each: big enough to keep the overhead per task small, small enough that
+    the workers finish together and the output streams."""
+    indices = list(indices)
+    if not indices:
+        return []
+    size = max(1, min(16, -(-len(indices) // (8 * parts))))
+    return [indices[i:i + size] for i in range(0, len(indices), size)]
+
+
+# -- worker processes --------------------------------------------------------------------------
+_WORKER_RENDER = None
+
+
+def _dumps(render):
+    """``render`` serialized for worker processes: cloudpickle when it is installed
+    (it ships with Dask; lambdas and closures then work), else pickle."""
+    try:
+        import cloudpickle
+        return cloudpickle.dumps(render)
+    except ImportError:
+        pass
+    try:
+        return pickle.dumps(render)
+    except (pickle.PicklingError, AttributeError, TypeError) as error:
+        raise ArgumentValueError(
+            f"render={v._show(render)} cannot be sent to worker processes ({error}); with "
+            "jobs > 1 use a module-level function or a picklable object, or install "
+            "cloudpickle") from None
+
+
+_WORKER_ERROR = None
+
+
+def _worker_start(payload):
+    """Each worker: ignore Ctrl-C (the parent stops the pool) and load the render
+    function.  A failure is kept and raised by the first task, so that it reaches
+    the parent (an initializer that raises makes the pool restart workers forever)."""
+    global _WORKER_RENDER, _WORKER_ERROR
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    try:
+        _WORKER_RENDER = pickle.loads(payload)
+    except Exception as error:  # noqa: BLE001 - reported to the parent by _worker_chunk
+        _WORKER_ERROR = f"{type(error).__name__}: {error}"
+
+
+def _worker_chunk(indices):
+    if _WORKER_ERROR is not None:
+        raise ArgumentValueError(f"the render function could not be loaded in a worker "
+                                 f"process ({_WORKER_ERROR}); render with jobs=1")
+    return render_chunk(_WORKER_RENDER, indices)
+
+
+def _context():
+    """fork where it is safe (a POSIX process with one thread: the workers start at
+    once and inherit the compiled kernels); forkserver or spawn elsewhere."""
+    import multiprocessing as mp
+
+    methods = mp.get_all_start_methods()
+    if "fork" in methods and threading.active_count() == 1:
+        return mp.get_context("fork")
+    return mp.get_context("forkserver" if "forkserver" in methods else "spawn")
+
+
+def _processes(render, parts, jobs):
+    """Start ``jobs`` worker processes now (before any progress bar or other thread
+    exists, so that fork can be used) and return the generator of their frames."""
+    pool = _context().Pool(jobs, initializer=_worker_start, initargs=(_dumps(render),))
+
+    def gather():
+        try:
+            for packed in pool.imap(_worker_chunk, parts):
+                yield from (unpack(p) for p in packed)
+            pool.close()
+            pool.join()
+        finally:
+            pool.terminate()
+            pool.join()
+    return gather()
+
+
+# -- Dask ----------------------------------------------------------------------------------------
+def connect(client):
+    """``(client, owned)``: a ``distributed.Client`` as given, or one connected to the
+    scheduler address ``client`` (then ``owned``: the caller closes it)."""
+    if not isinstance(client, str):
+        if not hasattr(client, "submit") or not hasattr(client, "scatter"):
+            raise ArgumentTypeError(f"client must be a dask.distributed Client or a scheduler "
+                                    f"address, got {v._show(client)}")
+        return client, False
+    try:
+        from distributed import Client
+    except ImportError:
+        raise ArgumentValueError("rendering on a Dask cluster needs dask.distributed: pip "
+                                 "install 'scanline[dask]'") from None
+    try:
+        return Client(client, timeout=CONNECT_TIMEOUT, set_as_default=False), True
+    except (OSError, TimeoutError, ValueError) as error:
+        raise SchedulerUnreachable(
+            f"scheduler={client!r} cannot be reached within {CONNECT_TIMEOUT:g} s ({error}); "
+            "check the address (tcp://HOST:PORT) and that the scheduler is running") from None
+
+
+def _dask(render, indices, client, owned):
+    try:
+        workers = max(1, len(client.scheduler_info().get("workers", {})))
+        parts = chunks(indices, workers)
+        # a fresh key each time (hash=False): a repeated render must not reuse the key of
+        # a scatter the client is just releasing
+        [shared] = client.scatter([render], broadcast=True, hash=False)
+        window = 4 * workers
+        pending = collections.deque()
+        queue = iter(parts)
+        try:
+            for part in queue:
+                pending.append(client.submit(render_chunk, shared, part, pure=False))
+                if len(pending) >= window:
+                    break
+            while pending:
+                packed = pending.popleft().result()
+                for part in queue:
+                    pending.append(client.submit(render_chunk, shared, part, pure=False))
+                    break
+                yield from (unpack(p) for p in packed)
+        finally:
+            if pending:
+                client.cancel(list(pending))
+    finally:
+        if owned:
+            client.close()
+
+
+# -- the one entry point -----------------------------------------------------------------------
+def frames(render, indices, jobs=1, client=None):
+    """Yield the rendered frames ``indices`` as Pillow images, in order.
+
+    Parameters
+    ----------
+    render : callable
+        Frame index -> frame (see the module docstring).
+    indices : sequence of int
+    jobs : int
+        Worker processes (1: render here).
+    client : distributed.Client or str, optional
+        Render on this Dask cluster (a client, or a scheduler address such as
+        ``"tcp://10.0.0.5:8786"``) instead.
+    """
+    if not callable(render):
+        raise ArgumentTypeError(f"render must be a function of the frame index, got "
+                                f"{v._show(render)}")
+    jobs = v.positive_int("jobs", jobs)
+    if client is not None and jobs != 1:
+        raise ArgumentValueError(f"give jobs (processes here) or client (a Dask cluster), not "
+                                 f"both; got jobs={jobs} and client={v._show(client)}")
+    indices = list(indices)
+    if client is not None:
+        return _dask(render, indices, *connect(client))
+    if jobs == 1 or len(indices) <= 1:
+        return (to_image(render(i), i) for i in indices)
+    return _processes(render, chunks(indices, jobs), min(jobs, len(indices)))

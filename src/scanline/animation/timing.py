@@ -1,0 +1,190 @@
+"""Counting frames and spacing in-betweens (notes, chapter 6, Q1; Hearn & Baker §16-1
+and §16-5).
+
+A film shows 24 frames per second, a graphics terminal 30 to 60 (notes, Q1).  Between
+two key frames come ``n`` in-betweens; a sequence of K key frames with n in-betweens
+between each pair has K + (K - 1) n frames.  :func:`frames_needed` counts the frames
+and key frames of a sequence of given duration; :func:`duration_of` is its inverse;
+:func:`inbetween_times` spaces the in-betweens of one pair of key frames.
+
+>>> plan = frames_needed(60, 24, inbetweens=5)     # the notes' one-minute film
+>>> plan.frames, plan.key_frames
+(1440, 241)
+>>> duration_of(241, 24, inbetweens=5).frames
+1441
+"""
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+
+from .. import _validate as v
+from ..errors import ArgumentValueError
+from .easing import SPACINGS, apply, resolve
+
+
+#: The most frames a sequence may have.
+MAX_FRAMES = 2**31 - 1
+
+
+class FramePlan(NamedTuple):
+    """The frame counts of a sequence.
+
+    Attributes
+    ----------
+    duration : float
+        Seconds.
+    fps : float
+        Frames per second.
+    frames : int
+        Frames shown: ``ceil(duration * fps)`` (frame i is shown from i / fps on).
+    inbetweens : int
+        In-betweens between each pair of key frames.
+    key_frames : int
+        Key frames needed so that the first and the last frame are key frames and at
+        most ``inbetweens`` frames lie between two key frames:
+        ``ceil((frames - 1) / (inbetweens + 1)) + 1`` (every frame when there are no
+        in-betweens).
+    """
+
+    duration: float
+    fps: float
+    frames: int
+    inbetweens: int
+    key_frames: int
+
+
+def _fps(fps):
+    fps = v.number("fps", fps)
+    if fps <= 0:
+        raise ArgumentValueError(f"fps must be > 0 (frames per second), got {fps}")
+    return fps
+
+
+def _count(name, value, minimum):
+    return v.positive_int(name, value, minimum=minimum)
+
+
+def frame_count(duration, fps):
+    """Frames of a sequence of ``duration`` seconds at ``fps``: ``ceil(duration * fps)``,
+    at least 1 (a product within 1e-9 of an integer counts as that integer, so that
+    ``frame_count(1.0, 29.97)`` is 30 and not 31 for a rounding error).
+
+    >>> frame_count(60, 24), frame_count(2.5, 25), frame_count(0.1, 30)
+    (1440, 63, 3)
+    """
+    duration = v.number("duration", duration)
+    if duration <= 0:
+        raise ArgumentValueError(f"duration must be > 0 seconds, got {duration}")
+    product = duration * _fps(fps)
+    if not product <= MAX_FRAMES:
+        raise ArgumentValueError(
+            f"duration x fps = {duration:g} x {fps:g} is {product:g} frames; the limit is "
+            f"{MAX_FRAMES:,} (more than two years of film at 24 fps)")
+    nearest = round(product)
+    return max(1, nearest if abs(product - nearest) <= 1e-9 * max(1.0, product)
+               else math.ceil(product))
+
+
+def frames_needed(duration, fps, inbetweens=0):
+    """How many frames, and how many key frames, a sequence needs.
+
+    Parameters
+    ----------
+    duration : float
+        Seconds, > 0.
+    fps : float
+        Frames per second, > 0 (film 24, PAL video 25, NTSC 30, terminals 30-60).
+    inbetweens : int
+        In-between frames generated between each pair of key frames, >= 0.
+
+    Returns
+    -------
+    FramePlan
+
+    Notes
+    -----
+    Notes, chapter 6, Q1: "For a one minutes film sequence with no duplication, we
+    would require 288 key frames."  A minute of film is 60 x 24 = 1440 frames.  With
+    five in-betweens (Hearn & Baker's premise, §16-1, which the notes dropped) a key
+    frame and its five in-betweens take 6 frames, so 1440 frames need 240 key frames
+    plus the closing one: 241.  288 = 1440 / 5 counts five frames per key frame, that
+    is four in-betweens.  See docs/errata.md, E60.
+
+    Examples
+    --------
+    >>> frames_needed(60, 24, inbetweens=4).key_frames   # 288 blocks of 5, and the last
+    289
+    >>> frames_needed(60, 24).key_frames       # no in-betweens: every frame is a key
+    1440
+    """
+    frames = frame_count(duration, fps)
+    n = _count("inbetweens", inbetweens, 0)
+    keys = frames if n == 0 else -(-(frames - 1) // (n + 1)) + 1
+    return FramePlan(float(duration), float(fps), frames, n, max(keys, 1))
+
+
+def duration_of(key_frames, fps, inbetweens=0):
+    """The inverse of :func:`frames_needed`: the sequence that ``key_frames`` key
+    frames with ``inbetweens`` in-betweens per pair make at ``fps``.
+
+    Its frames are K + (K - 1) n and its duration frames / fps.
+
+    >>> plan = duration_of(288, 24, inbetweens=5)   # the notes' 288 key frames
+    >>> plan.frames, round(plan.duration, 2)
+    (1723, 71.79)
+    >>> duration_of(288, 24, inbetweens=4).frames   # 288 fits four in-betweens
+    1436
+    """
+    k = _count("key_frames", key_frames, 1)
+    fps = _fps(fps)
+    n = _count("inbetweens", inbetweens, 0)
+    frames = k + (k - 1) * n
+    return FramePlan(frames / fps, fps, frames, n, k)
+
+
+def inbetween_times(t1, t2, n, spacing="constant"):
+    """The times of the ``n`` in-betweens between key frames at ``t1`` and ``t2``.
+
+    Hearn & Baker, §16-5, with Δt = t2 - t1 and j = 1 ... n:
+
+    - ``"constant"`` (zero acceleration): t_j = t1 + j Δt / (n + 1);
+    - ``"accelerate"`` (speeding up): t_j = t1 + Δt (1 - cos(j π / (2(n + 1))));
+    - ``"decelerate"`` (slowing down): t_j = t1 + Δt sin(j π / (2(n + 1)));
+    - ``"accelerate-decelerate"``: t_j = t1 + Δt (1 - cos(j π / (n + 1))) / 2.
+
+    ``spacing`` may also be any easing name of :mod:`scanline.animation.easing` or a
+    function: t_j = t1 + Δt · spacing(j / (n + 1)).
+
+    Parameters
+    ----------
+    t1, t2 : float
+        The key frames' times, t1 < t2.
+    n : int
+        The number of in-betweens, >= 0.
+    spacing : str or callable
+
+    Returns
+    -------
+    numpy.ndarray
+        ``n`` times, strictly between t1 and t2 for the four laws.
+
+    Examples
+    --------
+    >>> inbetween_times(0, 1, 3).tolist()
+    [0.25, 0.5, 0.75]
+    >>> inbetween_times(0, 1, 3, "accelerate").round(4).tolist()
+    [0.0761, 0.2929, 0.6173]
+    """
+    t1, t2 = v.number("t1", t1), v.number("t2", t2)
+    if not t1 < t2:
+        raise ArgumentValueError(f"t1 must come before t2, got t1={t1}, t2={t2}")
+    n = _count("n", n, 0)
+    function = resolve(spacing, "spacing")
+    j = np.arange(1, n + 1, dtype=np.float64)
+    return t1 + (t2 - t1) * apply(function, j / (n + 1))
+
+
+__all__ = ["FramePlan", "frame_count", "frames_needed", "duration_of", "inbetween_times",
+           "SPACINGS"]

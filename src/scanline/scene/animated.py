@@ -1,0 +1,472 @@
+"""Animated scenes: the scene file as the notes' "animation language" (schema version
+2, the ``animation`` table; docs/scene-format.md and docs/animation.md).
+
+A version-2 scene is a static scene plus an ``animation`` table whose tracks change
+any numeric value of the scene over time — a translation, an angle, a radius, a
+color, a polygon's points, a window (and, once 3-D lands, a camera's eye point) —
+named by the key path that error messages use, with segments and viewports also
+addressable by name (``segments[ball].transform[0].translate``):
+
+- ``tracks``: key frames ``{time, value, ease}`` with an interpolation (linear,
+  step, catmull-rom, cardinal, kochanek-bartels);
+- ``paths``: motion along a curve by arc length, eased, optionally turning an angle
+  to face along the path;
+- ``morphs``: a polygon's points through key shapes, equalized as Hearn & Baker do;
+- ``storyboard``: captions at times, for ``scanline storyboard``.
+
+Each frame is the base scene with the values of that time written in, checked and
+drawn like any scene.
+"""
+
+import copy
+import math
+import os
+import re
+
+import numpy as np
+
+from ..errors import ScanlineError
+from . import files
+from .files import SceneError
+from .locate import line_of
+from .scene import Scene
+from .schema import _fail, _real, _table
+
+_ANIMATION = {"fps", "duration", "start", "title", "storyboard", "tracks", "paths", "morphs"}
+_TRACK = {"target", "keys", "interpolation", "ease", "tension", "continuity", "bias"}
+_KEY = {"time", "value", "ease"}
+_PATH = {"target", "curve", "start", "end", "ease", "orient", "arc_length"}
+_CURVE = {"type", "points", "order", "closed", "tension"}
+_MORPH = {"target", "keys", "interpolation", "ease", "closed", "align"}
+_MORPH_KEY = {"time", "points", "ease"}
+_STORY = {"time", "caption"}
+CURVES = ("polyline", "bezier", "bspline", "catmull-rom", "cardinal")
+
+_TOKEN = re.compile(r"([A-Za-z_][A-Za-z0-9_-]*)|\[([^\]]+)\]|(\.)")
+
+
+def _list(value, path, minimum=0):
+    if not isinstance(value, list) or len(value) < minimum:
+        _fail(path, f"must be an array of at least {minimum} entries, got {value!r}"[:200])
+    return value
+
+
+def _wrap(path, call, *args, **kwargs):
+    """Call a package function; its error becomes a SceneError at ``path``."""
+    try:
+        return call(*args, **kwargs)
+    except SceneError:
+        raise
+    except ScanlineError as error:
+        raise SceneError(f"{path}: {error}", path=path) from None
+
+
+# -- targets --------------------------------------------------------------------------------
+def parse_target(text, path):
+    """``segments[ball].transform[0].translate`` -> ["segments", "ball", "transform", 0,
+    "translate"] (a bracketed name picks the array entry whose ``name`` it is)."""
+    if not isinstance(text, str) or not text:
+        _fail(path, f"must be a key path such as 'segments[ball].transform[0].translate', got {text!r}")
+    tokens, pos, expect_name = [], 0, True
+    while pos < len(text):
+        m = _TOKEN.match(text, pos)
+        if m is None:
+            _fail(path, f"cannot read the key path {text!r} at {text[pos:]!r}")
+        name, index, dot = m.groups()
+        if dot:
+            expect_name = True
+        elif name is not None:
+            if not expect_name:
+                _fail(path, f"cannot read the key path {text!r}: a '.' must come before {name!r}")
+            tokens.append(name)
+            expect_name = False
+        else:
+            inner = index.strip().strip("'\"")
+            tokens.append(int(inner) if re.fullmatch(r"-?\d+", inner) else ("name", inner))
+            expect_name = False
+        pos = m.end()
+    return tokens
+
+
+def _step(node, token, text, path):
+    if isinstance(token, tuple):                 # [name]
+        if not isinstance(node, list):
+            _fail(path, f"{text!r}: [{token[1]}] needs an array here")
+        for item in node:
+            if isinstance(item, dict) and item.get("name") == token[1]:
+                return item
+        _fail(path, f"{text!r}: no entry named {token[1]!r}")
+    if isinstance(token, int):
+        if not isinstance(node, list) or not -len(node) <= token < len(node):
+            _fail(path, f"{text!r}: index [{token}] is not in an array of "
+                  f"{len(node) if isinstance(node, list) else 0} entries")
+        return node[token]
+    if not isinstance(node, dict) or token not in node:
+        _fail(path, f"{text!r}: the scene has no key {token!r} there (animate values the "
+              "scene gives)")
+    return node[token]
+
+
+def locate(data, tokens, text, path):
+    """(container, key) of the value at ``tokens`` in ``data``."""
+    node = data
+    for token in tokens[:-1]:
+        node = _step(node, token, text, path)
+    last = tokens[-1]
+    _step(node, last, text, path)
+    if isinstance(last, tuple):
+        _fail(path, f"{text!r} names an entry, not a value to animate")
+    return node, last
+
+
+def _numeric_shape(value, path, text):
+    if isinstance(value, str):
+        return "color"
+    try:
+        a = np.array(value, dtype=np.float64)
+    except (TypeError, ValueError):
+        _fail(path, f"{text!r} holds {value!r}, which is not numbers (nor a color)")
+    return a.shape
+
+
+# -- values ----------------------------------------------------------------------------------
+class _Color:
+    """Colors interpolated as RGBA, written back as [r, g, b, a] integers."""
+
+    @staticmethod
+    def encode(value, path):
+        from ..color.spec import rgba
+
+        return _wrap(path, rgba, value, path)
+
+    @staticmethod
+    def decode(value):
+        return [int(c) for c in np.clip(np.floor(np.asarray(value) + 0.5), 0, 255)]
+
+
+def _plain(value):
+    a = np.asarray(value, dtype=np.float64)
+    return float(a) if a.ndim == 0 else a.tolist()
+
+
+class _Writer:
+    """Writes one track's value into frame data."""
+
+    def __init__(self, target, tokens, decode):
+        self.target, self.tokens, self.decode = target, tokens, decode
+
+    def write(self, data, value, copied):
+        """Write ``value`` into ``data`` (a shallow copy of the base scene), copying
+        each container on the way that is not yet in ``copied`` (ids of copies), so
+        that the base scene is never changed and untouched parts are shared."""
+        node = data
+        for token in self.tokens[:-1]:
+            if isinstance(token, tuple):
+                index = next(k for k, item in enumerate(node)
+                             if isinstance(item, dict) and item.get("name") == token[1])
+            else:
+                index = token
+            child = node[index]
+            if id(child) not in copied:
+                child = list(child) if isinstance(child, list) else dict(child)
+                copied.add(id(child))
+                node[index] = child
+            node = child
+        node[self.tokens[-1]] = self.decode(value)
+
+
+class AnimatedScene:
+    """A version-2 scene with an ``animation`` table: a render function of the frame
+    index (for :class:`scanline.animation.Animation`), a timeline, a storyboard.
+
+    Parameters
+    ----------
+    data : dict
+        Scene data (``version = 2``).
+    file, text, format
+        As for :class:`~scanline.scene.Scene`: named in error messages, which then
+        give the line of the bad value.
+    """
+
+    def __init__(self, data, file=None, text=None, format="toml"):
+        self.scene = Scene(data, file, text, format)       # the static scene, checked
+        self.canvas = self.scene.canvas
+        self.file = file
+        try:
+            self._build(copy.deepcopy(data))
+            self.frame(0)                                 # the first and last frames check
+            self.frame(len(self) - 1)                     # the animated values
+        except SceneError as error:
+            line = None
+            if text is not None and error.path is not None:
+                line = line_of(text, format, error.path)
+            raise SceneError(error.message, file=file, line=line, path=error.path) from None
+
+    # -- reading the animation table ------------------------------------------------------
+    def _build(self, data):
+        from .. import animation as an
+
+        if data.get("version") != 2 or "animation" not in data:
+            _fail("animation", "is missing: an animated scene is version 2 with an "
+                  "[animation] table (fps, tracks, paths, morphs)")
+        a = _table(data["animation"], "animation", _ANIMATION)
+        self.base = data
+        self.base.pop("animation")
+        fps = a.get("fps", 24)
+        duration = a.get("duration")
+        self.title = a.get("title", "")
+        if not isinstance(self.title, str):
+            _fail("animation.title", f"must be a string, got {self.title!r}")
+        timeline = _wrap("animation", an.Timeline, fps=_real(fps, "animation.fps"),
+                         duration=None if duration is None else _real(duration, "animation.duration"),
+                         start=_real(a.get("start", 0.0), "animation.start"))
+        self.writers = {}
+        for i, t in enumerate(_list(a.get("tracks", []), "animation.tracks")):
+            self._track(t, f"animation.tracks[{i}]", timeline, data)
+        for i, p in enumerate(_list(a.get("paths", []), "animation.paths")):
+            self._path(p, f"animation.paths[{i}]", timeline, data)
+        for i, m in enumerate(_list(a.get("morphs", []), "animation.morphs")):
+            self._morph(m, f"animation.morphs[{i}]", timeline, data)
+        if not timeline.tracks:
+            _fail("animation", "animates nothing: give tracks, paths or morphs")
+        self.timeline = timeline
+        self.storyboard = []
+        for i, s in enumerate(_list(a.get("storyboard", []), "animation.storyboard")):
+            here = f"animation.storyboard[{i}]"
+            s = _table(s, here, _STORY, ("time",))
+            caption = s.get("caption", "")
+            if not isinstance(caption, str):
+                _fail(f"{here}.caption", f"must be a string, got {caption!r}")
+            self.storyboard.append((_real(s["time"], f"{here}.time"), caption))
+
+    def _target(self, value, path, data):
+        tokens = parse_target(value, f"{path}.target")
+        node, key = locate(data, tokens, value, f"{path}.target")
+        if value in self.writers:
+            _fail(f"{path}.target", f"{value!r} is animated twice; give each value one track")
+        return tokens, node[key]
+
+    def _add(self, timeline, target, tokens, track, decode, path):
+        self.writers[target] = _Writer(target, tokens, decode)
+        timeline.add(target, track)
+
+    def _keys_times(self, keys, path):
+        times = []
+        for k, key in enumerate(keys):
+            t = _real(key["time"], f"{path}.keys[{k}].time")
+            if times and t <= times[-1]:
+                _fail(f"{path}.keys[{k}].time", f"is {t:g}, not after the previous key's "
+                      f"{times[-1]:g}; key frames must be in order, at different times")
+            times.append(t)
+        return times
+
+    def _eases(self, keys, default, path):
+        eases = []
+        from ..animation.easing import resolve
+
+        for k, key in enumerate(keys[:-1]):
+            name = key.get("ease", default)
+            _wrap(f"{path}.keys[{k}].ease" if "ease" in key else f"{path}.ease", resolve, name)
+            eases.append(name)
+        return eases or default
+
+    def _track(self, t, path, timeline, data):
+        from .. import animation as an
+
+        t = _table(t, path, _TRACK, ("target", "keys"))
+        tokens, current = self._target(t["target"], path, data)
+        keys = [_table(k, f"{path}.keys[{i}]", _KEY, ("time", "value"))
+                for i, k in enumerate(_list(t["keys"], f"{path}.keys", 1))]
+        times = self._keys_times(keys, path)
+        shape = _numeric_shape(current, f"{path}.target", t["target"])
+        if shape == "color" or any(isinstance(k["value"], str) for k in keys):
+            values = [_Color.encode(k["value"], f"{path}.keys[{i}].value") for i, k in enumerate(keys)]
+            decode = _Color.decode
+        else:
+            values = []
+            for i, k in enumerate(keys):
+                here = f"{path}.keys[{i}].value"
+                got = _numeric_shape(k["value"], here, t["target"])
+                if got != shape:
+                    _fail(here, f"has shape {got}, but {t['target']!r} holds a value of shape "
+                          f"{shape} ({current!r})"[:300])
+                values.append(k["value"])
+            decode = _plain
+        track = _wrap(path, an.KeyFrames, times, values,
+                      interpolation=t.get("interpolation", "linear"),
+                      ease=self._eases(keys, t.get("ease", "linear"), path),
+                      tension=t.get("tension", 0.0), continuity=t.get("continuity", 0.0),
+                      bias=t.get("bias", 0.0))
+        self._add(timeline, t["target"], tokens, track, decode, path)
+
+    def _curve(self, c, path):
+        from .. import curves
+
+        c = _table(c, path, _CURVE, ("type", "points"))
+        kind = c["type"]
+        if kind not in CURVES:
+            _fail(f"{path}.type", f"must be one of {', '.join(CURVES)}; got {kind!r}")
+        points = c["points"]
+        if kind == "polyline":
+            return points
+        if kind == "bezier":
+            return _wrap(path, curves.Bezier, points)
+        if kind == "bspline":
+            return _wrap(path, curves.BSpline, points, order=c.get("order", 4),
+                         knots="periodic" if c.get("closed", False) else "open")
+        closed = c.get("closed", False)
+        if kind == "catmull-rom":
+            return _wrap(path, curves.CatmullRom, points, closed=closed)
+        return _wrap(path, curves.CardinalSpline, points, tension=c.get("tension", 0.0),
+                     closed=closed)
+
+    def _path(self, p, path, timeline, data):
+        from .. import animation as an
+
+        p = _table(p, path, _PATH, ("target", "curve"))
+        tokens, current = self._target(p["target"], path, data)
+        curve = self._curve(p["curve"], f"{path}.curve")
+        motion = _wrap(f"{path}.curve", an.MotionPath, curve,
+                       arc_length=p.get("arc_length", True))
+        shape = _numeric_shape(current, f"{path}.target", p["target"])
+        if shape != (motion.dimension,):
+            _fail(f"{path}.target", f"{p['target']!r} holds {current!r}; a path gives "
+                  f"{motion.dimension} coordinates")
+        start = _real(p.get("start", timeline.start), f"{path}.start")
+        end = _real(p.get("end", start + 1.0), f"{path}.end")
+        ease = p.get("ease", "linear")
+        _wrap(f"{path}.ease", an.easing.resolve, ease)
+        if not start < end:
+            _fail(f"{path}.end", f"must come after start ({start:g}), got {end:g}")
+        self._add(timeline, p["target"], tokens, _Along(motion, start, end, ease), _plain, path)
+        if "orient" in p:
+            tokens, current = self._target(p["orient"], f"{path}.orient", data)
+            if _numeric_shape(current, f"{path}.orient", p["orient"]) != ():
+                _fail(f"{path}.orient", f"{p['orient']!r} must hold one number (an angle)")
+            radians = tokens[-1] == "radians"
+            self._add(timeline, p["orient"], tokens,
+                      _Heading(motion, start, end, ease, radians), _plain, f"{path}.orient")
+
+    def _morph(self, m, path, timeline, data):
+        from .. import animation as an
+
+        m = _table(m, path, _MORPH, ("target", "keys"))
+        tokens, current = self._target(m["target"], path, data)
+        keys = [_table(k, f"{path}.keys[{i}]", _MORPH_KEY, ("time", "points"))
+                for i, k in enumerate(_list(m["keys"], f"{path}.keys", 2))]
+        times = self._keys_times(keys, path)
+        closed = m.get("closed", True)
+        if not isinstance(closed, bool):
+            _fail(f"{path}.closed", f"must be true or false, got {closed!r}")
+        shapes = _wrap(path, an.equalize, *[k["points"] for k in keys], closed=closed,
+                       align=bool(m.get("align", False)))
+        track = _wrap(path, an.KeyFrames, times, np.stack(shapes),
+                      interpolation=m.get("interpolation", "linear"),
+                      ease=self._eases(keys, m.get("ease", "linear"), path))
+        self._add(timeline, m["target"], tokens, track, _plain, path)
+
+    # -- frames ---------------------------------------------------------------------------
+    def __getstate__(self):
+        """Pickled for worker processes without the static scene's display file (the
+        frames are rebuilt from the data)."""
+        state = dict(self.__dict__)
+        state["scene"] = None
+        return state
+
+    def __len__(self):
+        return len(self.timeline)
+
+    @property
+    def fps(self):
+        """Frames per second."""
+        return self.timeline.fps
+
+    def set_fps(self, fps):
+        """Sample the animation at ``fps`` frames per second instead (the key times
+        stay: a higher rate makes more in-betweens)."""
+        from ..animation.timing import _fps
+
+        self.timeline.fps = _fps(fps)
+
+    def data_at(self, frame):
+        """The scene data of ``frame``: the base scene with the animated values."""
+        data = dict(self.base)
+        copied = {id(data)}
+        for name, value in self.timeline.values(frame).items():
+            self.writers[name].write(data, value, copied)
+        return data
+
+    def frame(self, index):
+        """Frame ``index`` drawn: a :class:`~scanline.FrameBuffer`."""
+        data = self.data_at(index)
+        try:
+            return Scene(data).raster()
+        except SceneError as error:
+            raise SceneError(f"frame {index} (t = {self.timeline.time(index):g} s): "
+                             f"{error.message}", path=error.path) from None
+
+    __call__ = frame
+
+    def animation(self):
+        """The frames as an :class:`~scanline.animation.Animation`."""
+        from ..animation import Animation
+
+        return Animation(self, fps=self.fps)
+
+    def storyboard_frames(self):
+        """(frame, label, caption) of each storyboard panel: the storyboard's times
+        when the file gives them, else the key frames."""
+        tl = self.timeline
+        if self.storyboard:
+            times = [(t, c) for t, c in self.storyboard]
+        else:
+            times = [(float(t), "") for t in tl.key_times()]
+        out = []
+        for k, (t, caption) in enumerate(times):
+            frame = int(min(max(math.floor((t - tl.start) * tl.fps + 0.5), 0), len(self) - 1))
+            out.append((frame, f"{k + 1}. t = {t:.2f} s, frame {frame}", caption))
+        return out
+
+    def storyboard_sheet(self, columns=4, panel=(240, 180)):
+        """The storyboard as a contact sheet (a Pillow image)."""
+        from ..animation import contact_sheet
+
+        panels = self.storyboard_frames()
+        title = self.title or (os.path.basename(self.file) if self.file else "storyboard")
+        title += f"  ({len(self)} frames at {self.fps:g} fps, {self.timeline.duration:g} s)"
+        return contact_sheet([self.frame(f) for f, _, _ in panels], [p[1] for p in panels],
+                             [p[2] for p in panels], columns=columns, panel=panel, title=title)
+
+
+class _Along:
+    """A motion path's point at time t."""
+
+    def __init__(self, motion, start, end, ease):
+        self.motion, self.start, self.end, self.ease = motion, start, end, ease
+
+    def __call__(self, t):
+        return self.motion.at(t, self.start, self.end, self.ease)
+
+
+class _Heading(_Along):
+    """A motion path's heading at time t, in degrees or radians."""
+
+    def __init__(self, motion, start, end, ease, radians):
+        super().__init__(motion, start, end, ease)
+        self.radians = radians
+
+    def __call__(self, t):
+        angle = self.motion.heading(self.motion.progress(t, self.start, self.end, self.ease))
+        return angle if self.radians else math.degrees(angle)
+
+
+def loads(text, format="toml", file=None):
+    """An :class:`AnimatedScene` from TOML or JSON text."""
+    return AnimatedScene(files.loads(text, format, file), file, text, format)
+
+
+def load(path, format=None):
+    """An :class:`AnimatedScene` from a ``.toml`` or ``.json`` file."""
+    name = os.fspath(path)
+    fmt = files.format_of(name, format)
+    return loads(files.read_text(name), fmt, name)

@@ -1,0 +1,212 @@
+"""Saving animations: formats read back, timing, parallel and Dask rendering, failures."""
+
+import io
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import time
+
+import av
+import numpy as np
+import pytest
+from PIL import Image
+
+import scanline as sl
+from scanline.animation import Animation
+from scanline.animation import render as render_module
+
+
+def frame(i):
+    """A module-level render function (picklable for worker processes)."""
+    fb = sl.FrameBuffer(64, 48, background="white")
+    sl.draw.fill_circle(fb, 6 + 2 * i, 24, 5, color="crimson")
+    sl.draw.line(fb, 0, i, 63, 47 - i, color="navy")
+    return fb
+
+
+def _frames_of(path):
+    with Image.open(path) as im:
+        out = []
+        for k in range(im.n_frames):
+            im.seek(k)
+            im.load()
+            out.append((np.asarray(im.convert("RGB")).copy(), im.info.get("duration")))
+        return out
+
+
+def test_gif_png_webp_read_back(tmp_path):
+    anim = Animation(frame, frames=24, fps=24)
+    truth = [np.asarray(frame(i).to_pil()) for i in range(24)]
+    for ext in ("gif", "png", "webp"):
+        anim.save(tmp_path / f"a.{ext}")
+        got = _frames_of(tmp_path / f"a.{ext}")
+        assert len(got) == 24, ext
+        assert all(g.shape == (48, 64, 3) for g, _ in got)
+        if ext != "gif":                             # lossless formats: exact pixels
+            for (g, _), want in zip(got, truth):
+                np.testing.assert_array_equal(g, want)
+    durations = [d for _, d in _frames_of(tmp_path / "a.gif")]
+    assert durations == [40, 40, 50, 40, 40, 40] * 4 and sum(durations) == 1000   # frame-exact
+    webp = [d for _, d in _frames_of(tmp_path / "a.webp")]
+    assert sum(webp) == 1000 and set(webp) == {41, 42}
+    apng = [d for _, d in _frames_of(tmp_path / "a.png")]
+    assert all(d == pytest.approx(1000 / 24) for d in apng)            # stored as 1/24 s
+
+
+def test_mp4_read_back(tmp_path):
+    Animation(frame, frames=30, fps=29.97).save(tmp_path / "a.mp4")
+    with av.open(str(tmp_path / "a.mp4")) as container:
+        stream = container.streams.video[0]
+        decoded = list(container.decode(stream))
+        assert stream.average_rate == pytest.approx(29.97)
+        times = [float(f.pts * stream.time_base) for f in decoded]
+    assert len(decoded) == 30 and (decoded[0].width, decoded[0].height) == (64, 48)
+    np.testing.assert_allclose(times, np.arange(30) / 29.97, atol=1e-9)
+    first = decoded[0].to_ndarray(format="rgb24").astype(int)
+    assert np.abs(first - np.asarray(frame(0).to_pil())).mean() < 6     # CRF 18: close
+
+
+def test_odd_sizes_are_padded_for_mp4(tmp_path):
+    frames = [sl.FrameBuffer(15, 9, background=(10 * i, 0, 0)) for i in range(3)]
+    Animation(frames, fps=10).save(tmp_path / "odd.mp4")
+    with av.open(str(tmp_path / "odd.mp4")) as c:
+        f = next(c.decode(c.streams.video[0]))
+        assert (f.width, f.height) == (16, 10)
+
+
+def test_frame_kinds_and_selection(tmp_path):
+    arrays = [np.full((8, 8, 3), 40 * i, np.uint8) for i in range(5)]
+    pil = [Image.fromarray(a) for a in arrays]
+    files = []
+    for i, im in enumerate(pil):
+        files.append(tmp_path / f"f{i}.png")
+        im.save(files[-1])
+    for source in (arrays, pil, files, [sl.FrameBuffer.from_array(a) for a in arrays]):
+        anim = Animation(source, fps=5)
+        anim.save(tmp_path / "k.png", frames=(1, 4))
+        got = _frames_of(tmp_path / "k.png")
+        assert [int(g[0, 0, 0]) for g, _ in got] == [40, 80, 120]
+
+
+def test_serial_processes_and_dask_are_byte_identical(tmp_path):
+    distributed = pytest.importorskip("distributed")
+    anim = Animation(frame, frames=20, fps=12)
+    anim.save(tmp_path / "again.mp4")
+    for ext in ("gif", "mp4"):
+        anim.save(tmp_path / f"serial.{ext}")
+        anim.save(tmp_path / f"jobs.{ext}", jobs=2)
+        assert (tmp_path / f"serial.{ext}").read_bytes() == (tmp_path / f"jobs.{ext}").read_bytes()
+    assert (tmp_path / "serial.mp4").read_bytes() == (tmp_path / "again.mp4").read_bytes()
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster, \
+            distributed.Client(cluster) as client:
+        anim.save(tmp_path / "dask.gif", client=client)
+        assert (tmp_path / "serial.gif").read_bytes() == (tmp_path / "dask.gif").read_bytes()
+        # a long film: workers write the frames, this process encodes them at the end
+        paths = anim.write_frames(tmp_path / "frames", client=client)
+    assert [os.path.basename(p) for p in paths] == [f"frame-{i:05d}.png" for i in range(20)]
+    Animation(paths, fps=12).save(tmp_path / "from-files.gif")
+    assert (tmp_path / "serial.gif").read_bytes() == (tmp_path / "from-files.gif").read_bytes()
+
+
+def test_lambdas_reach_worker_processes(tmp_path):
+    anim = Animation(lambda i: np.full((4, 4), 50 * i, np.uint8), frames=4, fps=4)
+    anim.save(tmp_path / "a.png", jobs=2)
+    assert [int(g[0, 0, 0]) for g, _ in _frames_of(tmp_path / "a.png")] == [0, 50, 100, 150]
+
+
+def test_unreachable_scheduler_is_a_clear_error(tmp_path, monkeypatch):
+    pytest.importorskip("distributed")
+    monkeypatch.setattr(render_module, "CONNECT_TIMEOUT", 1.0)
+    start = time.perf_counter()
+    with pytest.raises(sl.animation.SchedulerUnreachable, match="tcp://127.0.0.1:9.*within 1 s"):
+        Animation(frame, frames=3, fps=3).save(tmp_path / "x.gif", client="tcp://127.0.0.1:9")
+    assert time.perf_counter() - start < 15
+    assert os.listdir(tmp_path) == []
+
+
+def _interrupt_at(n):
+    def render(i):
+        if i == n:
+            raise KeyboardInterrupt
+        return frame(i)
+    return render
+
+
+def test_errors_leave_no_file(tmp_path):
+    with pytest.raises(KeyboardInterrupt):
+        Animation(_interrupt_at(5), frames=10, fps=10).save(tmp_path / "x.gif")
+    sizes = [sl.FrameBuffer(8, 8), sl.FrameBuffer(9, 8)]
+    with pytest.raises(sl.ScanlineError, match="frame 1 is 9x8, frame 0 is 8x8"):
+        Animation(sizes, fps=2).save(tmp_path / "y.mp4")
+    with pytest.raises(sl.ScanlineError, match="must be a FrameBuffer"):
+        Animation(lambda i: 3.5, frames=2, fps=2).save(tmp_path / "z.webp")
+    assert os.listdir(tmp_path) == []
+
+
+def test_ctrl_c_stops_the_workers(tmp_path):
+    script = tmp_path / "slow.py"
+    script.write_text(textwrap.dedent(f"""
+        import sys, time
+        sys.path.insert(0, {os.path.dirname(__file__)!r})
+        import scanline as sl
+        def slow(i):
+            time.sleep(0.3)
+            return sl.FrameBuffer(8, 8)
+        if __name__ == "__main__":
+            try:
+                sl.animation.Animation(slow, frames=200, fps=10).save({str(tmp_path / 'out.gif')!r}, jobs=2)
+            except KeyboardInterrupt:
+                sys.exit(130)
+    """))
+    proc = subprocess.Popen([sys.executable, str(script)])
+    children = []
+    deadline = time.monotonic() + 60
+    while len(children) < 2 and time.monotonic() < deadline:
+        time.sleep(0.2)
+        with open(f"/proc/{proc.pid}/task/{proc.pid}/children") as f:
+            children = [int(p) for p in f.read().split()]
+    assert len(children) >= 2, "the workers did not start"
+    time.sleep(1.0)
+    proc.send_signal(signal.SIGINT)
+    assert proc.wait(timeout=30) == 130
+    time.sleep(0.5)
+    for pid in children:
+        assert not os.path.exists(f"/proc/{pid}") or "Z" in open(f"/proc/{pid}/stat").read().split()[2]
+    assert [n for n in os.listdir(tmp_path) if n != "slow.py"] == []
+
+
+def test_jupyter_display_and_progress(capsys):
+    anim = Animation(frame, frames=6, fps=6)
+    html = anim._repr_html_()
+    assert html.startswith('<img src="data:image/png;base64,')
+    import base64
+    data = base64.b64decode(html.split(",", 1)[1].split('"')[0])
+    with Image.open(io.BytesIO(data)) as im:
+        assert im.n_frames == 6
+    list(anim.images(progress=True))
+    assert "scanline: 0%| | 0/6" in " ".join(capsys.readouterr().err.split())   # shown, then cleared
+    list(anim.images(progress=False))
+    assert capsys.readouterr().err == ""
+
+
+@pytest.mark.parametrize("call,words", [
+    (lambda: Animation(frame, fps=10), "needs the number of frames"),
+    (lambda: Animation([], fps=10), "at least one frame"),
+    (lambda: Animation(frame, frames=0, fps=10), "frames must be >= 1"),
+    (lambda: Animation(frame, frames=3, fps=0), "fps must be > 0"),
+    (lambda: Animation(frame, frames=3, fps=10).save("x.avi"), "no writer for '.avi'"),
+    (lambda: Animation(frame, frames=3, fps=60).save("x.gif"), "too fast for GIF"),
+    (lambda: Animation(frame, frames=3, fps=10).save("x.gif", frames=(2, 9)), "stop <= 3"),
+    (lambda: Animation(frame, frames=3, fps=10).save("x.gif", jobs=0), "jobs must be >= 1"),
+    (lambda: Animation(frame, frames=3, fps=10).save("x.gif", jobs=2, client="tcp://h:1"),
+     "not both"),
+    (lambda: Animation(frame, frames=3, fps=10).save("x.mp4", quality=99), "CRF"),
+    (lambda: Animation(frame, frames=3, fps=10).write_frames("/tmp/f", pattern="f.png{"),
+     "must format a frame number"),
+])
+def test_bad_input(call, words):
+    with pytest.raises(sl.ScanlineError, match=words):
+        call()

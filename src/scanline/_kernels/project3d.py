@@ -103,7 +103,7 @@ def project_edges(scale, offset, planes, clip, edges, out, depth, which, limit):
     u2 = np.empty(BLOCK)
     outside = np.empty(BLOCK, np.bool_)
     log = np.empty((0, 7))
-    rows = 0
+    rows = np.int64(0)
     total = edges.shape[0]
     for start in range(0, total, BLOCK):
         n = min(BLOCK, total - start)

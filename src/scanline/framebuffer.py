@@ -33,7 +33,7 @@ from PIL import Image
 
 from . import _validate as v
 from .color.spec import pixel_value, rgba
-from .errors import ArgumentTypeError, ArgumentValueError
+from .errors import ArgumentTypeError, ArgumentValueError, OutputError, ScanlineError
 
 MODES = ("1", "L", "RGB", "RGBA", "P")
 _CHANNELS = {"1": 1, "L": 1, "RGB": 3, "RGBA": 4, "P": 1}
@@ -130,9 +130,9 @@ def write_atomically(path, write):
             pass
         if isinstance(exc, _Terminated):
             os.kill(os.getpid(), signal.SIGTERM)   # the default action again: terminate
-        if isinstance(exc, OSError):
-            raise ArgumentValueError(f"path={path!r}: cannot write the file "
-                                     f"({exc.strerror or exc})") from None
+        if isinstance(exc, OSError) and not isinstance(exc, ScanlineError):
+            raise OutputError(f"path={path!r}: cannot write the file "
+                              f"({exc.strerror or exc})") from None
         raise
 
 

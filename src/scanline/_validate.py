@@ -135,6 +135,146 @@ def coordinate_array(name, value, columns, radius_columns=()):
     return np.ascontiguousarray(np.floor(a + 0.5).astype(np.int64))
 
 
+#: Largest value an int64 holds.
+INT64_MAX = 2**63 - 1
+
+
+def _integers(name, value, what):
+    """``value`` as an integer numpy array (int or uint dtype, or int64 converted
+    from Python ints of any size), refusing everything else; None for an empty
+    array of any dtype."""
+    try:
+        a = np.asarray(value)
+    except (TypeError, ValueError, OverflowError):
+        raise ArgumentTypeError(f"{name} must be {what}, got {_show(value)}") from None
+    if a.size == 0 and a.dtype.kind in "iufb":
+        return None
+    if a.dtype == object:
+        items = a.ravel().tolist()
+        if not all(isinstance(i, numbers.Integral) and not isinstance(i, (bool, np.bool_))
+                   for i in items):
+            raise ArgumentTypeError(f"{name} must be {what}, got {_show(value)}")
+        lo, hi = min(items), max(items)
+        if lo < -INT64_MAX - 1 or hi > INT64_MAX:
+            bad = lo if lo < -INT64_MAX - 1 else hi
+            raise ArgumentValueError(f"{name} holds {bad}, beyond the 64-bit integer range; "
+                                     f"{name} indexes arrays, so its values are small")
+        return np.array(items, np.int64).reshape(a.shape)
+    if a.dtype.kind not in "iu":
+        raise ArgumentTypeError(f"{name} must be {what} (an integer dtype), got "
+                                f"{'an array of dtype ' + str(a.dtype) if a.ndim else _show(value)}")
+    return a
+
+
+def index_array(name, value, *, shape=(None,), low=0, high=INT64_MAX, rising=False,
+                first=None, last=None, what=None, bound_text=""):
+    """An integer array that indexes -- counts, offsets, indices, the faces of a
+    mesh -- checked and converted to int64 before any arithmetic is done with it.
+
+    This is the one validation path for such arrays (a kernel trusts them: numba
+    does not check bounds).  In order:
+
+    1. an integer dtype is required (int or uint; Python ints of any size; not
+       bool, not float, not even integral floats);
+    2. the shape must match ``shape`` (None: any length in that axis); an empty
+       list is an empty array of that shape;
+    3. every value must lie in ``[low, high]``, compared in the array's own dtype
+       (a uint64 above 2**63 - 1 is refused, not wrapped to a negative int64);
+    4. only then is it converted to C-contiguous, writable int64;
+    5. ``rising=True``: the values must not decrease; ``first`` / ``last``: the
+       first / last value must equal them.
+
+    Returns the int64 array.
+
+    >>> index_array("counts", [3, 4])
+    array([3, 4])
+    >>> index_array("offsets", np.array([0, 2**64 - 5, 3], np.uint64), high=3)
+    Traceback (most recent call last):
+    ...
+    scanline.errors.ArgumentValueError: offsets must be <= 3; offsets[1] is 18446744073709551611
+    """
+    what = what or f"an integer array of shape {_shape_text(shape)}"
+    a = _integers(name, value, what)
+    if a is None:
+        out = np.zeros(tuple(0 if s is None else s for s in shape), np.int64)
+        if len(shape) > 1 and shape[0] is None and all(s is not None for s in shape[1:]):
+            return out
+        if len(shape) == 1 and (shape[0] is None or shape[0] == 0):
+            if first is not None or last is not None:
+                raise ArgumentValueError(f"{name} must not be empty, got {_show(value)}")
+            return out
+        raise ArgumentValueError(f"{name} must have shape {_shape_text(shape)}, got an empty array")
+    if a.ndim != len(shape):   # not even the right kind of array
+        raise ArgumentTypeError(f"{name} must be {what}, got shape {a.shape}")
+    if any(s is not None and s != n for s, n in zip(shape, a.shape)):
+        raise ArgumentValueError(f"{name} must have shape {_shape_text(shape)}, got shape {a.shape}")
+    rule = (f"{name} must rise from {first} to {last} without decreasing"
+            if rising and first is not None and last is not None else None)
+    lo, hi = int(a.min()), int(a.max())
+    if lo < low or hi > high:
+        flat = a.ravel()
+        i = int(np.argmax(flat < low)) if lo < low else int(np.argmax(flat > high))
+        index = ", ".join(str(int(k)) for k in np.unravel_index(i, a.shape))
+        bound = f">= {low}" if lo < low else f"<= {high}{bound_text}"
+        raise ArgumentValueError(f"{rule or name + ' must be ' + bound}; {name}[{index}] is "
+                                 f"{int(flat[i])}")
+    out = np.ascontiguousarray(a, np.int64)
+    if not out.flags.writeable:
+        out = out.copy()
+    if rising and out.size > 1:
+        down = out[1:] < out[:-1]
+        if down.any():
+            i = int(np.argmax(down))
+            raise ArgumentValueError(f"{rule or name + ' must not decrease'}; {name}[{i + 1}] = "
+                                     f"{int(out[i + 1])} comes after {int(out[i])}")
+    for which, want, got in (("first", first, 0), ("last", last, -1)):
+        if want is not None and int(out.flat[got]) != want:
+            raise ArgumentValueError(f"{rule or name + ' must ' + which[:-1] + ' with ' + str(want)}"
+                                     f"; its {which} value is {int(out.flat[got])}")
+    return out
+
+
+def _shape_text(shape):
+    return "(" + ", ".join("N" if s is None else str(s) for s in shape) + ("," if len(shape) == 1 else "") + ")"
+
+
+def exact_sum(a):
+    """The sum of an int64 array as a Python int, exact: numpy's sum wraps around
+    on overflow, so large values are added as Python ints."""
+    if a.size == 0:
+        return 0
+    big = max(abs(int(a.min())), abs(int(a.max())))
+    if big * a.size <= INT64_MAX:
+        return int(a.sum())
+    return sum(a.tolist())
+
+
+def counts(name, value, total, total_name):
+    """Per-part counts (``value``, e.g. vertices per polygon) that must add up to
+    ``total`` (the length of ``total_name``), as int64 counts and offsets
+    ``(counts, offsets)``: part ``i`` is ``offsets[i]:offsets[i + 1]``.
+
+    Each count is checked against ``total`` and the sum computed exactly before the
+    offsets are (a sum that wraps around would pass a check done in int64).
+
+    >>> counts("counts", [2, 3], 5, "points")
+    (array([2, 3]), array([0, 2, 5]))
+    >>> counts("counts", np.array([2**63, 2**63, 3], np.uint64), 3, "points")
+    Traceback (most recent call last):
+    ...
+    scanline.errors.ArgumentValueError: counts must be <= 3 (the length of points); counts[0] is 9223372036854775808
+    """
+    c = index_array(name, value, high=total, bound_text=f" (the length of {total_name})",
+                    what="a 1-D array of integers (how many belong to each part)")
+    s = exact_sum(c)
+    if s != total:
+        raise ArgumentValueError(f"{name} add up to {s}, but {total_name} holds {total}; give "
+                                 "one count per part, adding up to that")
+    offsets = np.zeros(len(c) + 1, np.int64)
+    np.cumsum(c, out=offsets[1:])
+    return c, offsets
+
+
 def kernel_array(a, dtype=np.float64):
     """``a`` as the kernels take arrays: C-contiguous, writable, of ``dtype`` (a copy
     only where one of those is missing).  numba compiles a separate specialization

@@ -17,3 +17,8 @@ class ArgumentValueError(ScanlineError, ValueError):
 
 class ArgumentTypeError(ScanlineError, TypeError):
     """An argument has a type scanline cannot use."""
+
+
+class OutputError(ScanlineError, OSError):
+    """A file could not be written (a full disk, an encoder's failure): also a plain
+    ``OSError``; the message names the file asked for, and no file is left."""

@@ -21,16 +21,19 @@ so that row ``y`` of the storage is scan line ``y``; only this class knows that.
 matplotlib.
 """
 
+import contextlib
 import io
 import os
+import signal
 import tempfile
+import threading
 
 import numpy as np
 from PIL import Image
 
 from . import _validate as v
 from .color.spec import pixel_value, rgba
-from .errors import ArgumentTypeError, ArgumentValueError
+from .errors import ArgumentTypeError, ArgumentValueError, OutputError, ScanlineError
 
 MODES = ("1", "L", "RGB", "RGBA", "P")
 _CHANNELS = {"1": 1, "L": 1, "RGB": 3, "RGBA": 4, "P": 1}
@@ -51,29 +54,111 @@ def _umask():
     return mask
 
 
+def output_path(path, name="path"):
+    """``path`` (a str or os.PathLike) as a str, checked as the name of a file to
+    write: no NUL character, not a folder, in a folder that exists."""
+    if not isinstance(path, (str, os.PathLike)):
+        raise ArgumentTypeError(f"{name} must be a file name (str or os.PathLike), got "
+                                f"{v._show(path)}")
+    try:
+        path = os.fsdecode(os.fspath(path))
+    except (TypeError, UnicodeDecodeError):
+        raise ArgumentTypeError(f"{name} must be a file name, got {v._show(path)}") from None
+    if "\0" in path:
+        raise ArgumentValueError(f"{name}={path!r} holds a NUL character, which no file name "
+                                 "may hold")
+    if not path:
+        raise ArgumentValueError(f"{name} is empty; give the name of a file to write")
+    directory = os.path.dirname(os.path.abspath(path))
+    if not os.path.isdir(directory):
+        raise ArgumentValueError(f"{name}={path!r}: the folder {directory!r} does not exist")
+    if os.path.isdir(path):
+        raise ArgumentValueError(f"{name}={path!r} is a folder; give the name of a file to write")
+    return path
+
+
+class _Terminated(BaseException):
+    """SIGTERM arrived while a file was being written (see :func:`write_atomically`)."""
+
+
+@contextlib.contextmanager
+def _terminate_cleanly():
+    """While the block runs, SIGTERM raises :class:`_Terminated` instead of killing the
+    process at once, so that the temporary file is removed; the caller then
+    terminates as SIGTERM would.  Only in the main thread, and only where SIGTERM
+    has its default action (a server that handles it is left alone)."""
+    if (threading.current_thread() is not threading.main_thread()
+            or signal.getsignal(signal.SIGTERM) is not signal.SIG_DFL):
+        yield
+        return
+
+    def terminated(signum, frame):
+        raise _Terminated()
+
+    signal.signal(signal.SIGTERM, terminated)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, signal.SIG_DFL)
+
+
 def write_atomically(path, write):
     """Call ``write(file)`` on a temporary file beside ``path``, then rename it.
 
-    A failure (an exception from ``write``, a full disk) leaves no file at ``path``.
+    A failure (an exception from ``write``, a full disk, Ctrl-C, SIGTERM) leaves
+    no file at ``path`` and no temporary file beside it; after SIGTERM the process
+    then terminates as the signal asks.  Errors name ``path`` (not the temporary
+    file).
     """
-    path = os.fspath(path)
+    path = output_path(path)
     directory = os.path.dirname(os.path.abspath(path))
-    if not os.path.isdir(directory):
-        raise ArgumentValueError(f"path={path!r}: the folder {directory!r} does not exist")
-    if os.path.isdir(path):
-        raise ArgumentValueError(f"path={path!r} is a folder; give the name of a file to write")
-    fd, tmp = tempfile.mkstemp(prefix=".scanline-", suffix=".tmp", dir=directory)
     try:
-        with os.fdopen(fd, "wb") as f:
-            write(f)
-        os.chmod(tmp, 0o666 & ~_umask())  # mkstemp makes 0600; give the usual mode
-        os.replace(tmp, path)
-    except BaseException:
+        fd, tmp = tempfile.mkstemp(prefix=".scanline-", suffix=".tmp", dir=directory)
+    except OSError as error:
+        raise ArgumentValueError(f"path={path!r}: cannot create a file in {directory!r} "
+                                 f"({error.strerror or error})") from None
+    try:
+        with _terminate_cleanly():
+            with os.fdopen(fd, "wb") as f:
+                write(f)
+            os.chmod(tmp, 0o666 & ~_umask())  # mkstemp makes 0600; give the usual mode
+            os.replace(tmp, path)
+    except BaseException as exc:
         try:
             os.unlink(tmp)
         except FileNotFoundError:
             pass
+        if isinstance(exc, _Terminated):
+            os.kill(os.getpid(), signal.SIGTERM)   # the default action again: terminate
+        if isinstance(exc, OSError) and not isinstance(exc, ScanlineError):
+            raise OutputError(f"path={path!r}: cannot write the file "
+                              f"({exc.strerror or exc})") from None
         raise
+
+
+def image_limit():
+    """Most pixels an image file written by scanline may hold: twice Pillow's
+    decompression-bomb threshold (``PIL.Image.MAX_IMAGE_PIXELS``, 89,478,485 by
+    default), past which Pillow refuses to open the file again."""
+    bound = Image.MAX_IMAGE_PIXELS
+    return 2 * int(bound) if bound else 1 << 40
+
+
+def check_image_size(width, height, scale=1, given=None, hint=None):
+    """The size rule of every image scanline writes, checked before anything is
+    allocated: ``width x height`` pixels enlarged ``scale`` times must fit
+    :func:`image_limit`.  ``given`` says how the caller gave the size (for
+    instance ``"--size 40000x40000"``, ``"canvas.width x canvas.height"``), so
+    that the message names it; ``hint`` says what to change."""
+    pixels = width * height * scale * scale
+    limit = image_limit()
+    if pixels <= limit:
+        return
+    given = given or f"width x height = {width} x {height}"
+    made = f" enlarged {scale} times, {width * scale} x {height * scale}," if scale > 1 else ""
+    raise ArgumentValueError(
+        f"{given}{made} is {pixels:,} pixels, more than the {limit:,} an image file may hold; "
+        + (hint or "use a smaller size" + (" or scale" if scale > 1 else "")))
 
 
 class FrameBuffer:
@@ -358,6 +443,14 @@ class FrameBuffer:
                 raise ArgumentValueError(f"array must hold uint8 values 0..255, got dtype {a.dtype}")
         if mode == "P" and color_table is None:
             raise ArgumentValueError("mode 'P' needs a color_table for the indices in array")
+        if mode == "P":
+            color_table = list(color_table)
+            top = int(a.max())
+            if top >= len(color_table):
+                raise ArgumentValueError(
+                    f"array holds color-table index {top} but color_table has "
+                    f"{len(color_table)} entries (0..{len(color_table) - 1}); give at least "
+                    f"{top + 1} entries")
         fb = cls(a.shape[1], a.shape[0], mode=mode, color_table=color_table)
         if mode == "1":
             fb._buf[:, :, 0] = np.packbits(a[::-1], axis=1)
@@ -389,7 +482,10 @@ class FrameBuffer:
             palette = image.getpalette("RGB") or []
             table = [tuple(palette[i:i + 3]) for i in range(0, len(palette), 3)][:256]
             indices = np.array(image, np.uint8)
-            table = table[: max(int(indices.max()) + 1, 1)] if indices.size else table[:1]
+            used = max(int(indices.max()) + 1, 1) if indices.size else 1
+            # a palette shorter than the indices used: the missing entries are black, as
+            # Pillow shows them
+            table = (table + [(0, 0, 0)] * used)[:used]
             return cls.from_array(indices, mode="P", color_table=table)
         if image.mode not in ("L", "RGB", "RGBA"):
             has_alpha = "A" in image.getbands() or "transparency" in image.info
@@ -401,22 +497,20 @@ class FrameBuffer:
         encodes it.  ``scale`` enlarges each pixel to a scale x scale block (handy to
         look at scan-converted pixels).  The write is atomic: on any failure no file
         is left at ``path``."""
-        ext = os.path.splitext(os.fspath(path))[1].lower()
+        path = output_path(path)
+        ext = os.path.splitext(path)[1].lower()
         if ext not in _FORMATS:
             raise ArgumentValueError(
-                f"path={os.fspath(path)!r}: unknown image type {ext!r}; use .png, .gif or .bmp"
+                f"path={path!r}: unknown image type {ext!r}; use .png, .gif or .bmp"
             )
         image = self._scaled_image(scale)
         write_atomically(path, lambda f: image.save(f, format=_FORMATS[ext]))
 
     def _scaled_image(self, scale):
         scale = v.positive_int("scale", scale)
-        limit = 2 * Image.MAX_IMAGE_PIXELS  # past this Pillow refuses to open the file
-        if self._width * self._height * scale * scale > limit:
-            raise ArgumentValueError(
-                f"scale={scale} would enlarge the {self._width} x {self._height} frame buffer "
-                f"to {self._width * scale} x {self._height * scale} pixels, more than "
-                f"{limit:,}; use a smaller scale")
+        check_image_size(self._width, self._height, scale,
+                         f"the {self._width} x {self._height} frame buffer"
+                         + (f" at scale={scale}" if scale > 1 else ""))
         image = self.to_pil()
         if scale > 1:
             image = image.resize((self._width * scale, self._height * scale), Image.Resampling.NEAREST)

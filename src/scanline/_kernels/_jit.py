@@ -85,6 +85,7 @@ def call(kernel, work, *args):
     :data:`COMPILE` overrides the choice.  Anything else than a compiled function
     (a test's stand-in, say) is just called.
     """
+    args = _writable(args)
     compiled = getattr(kernel, "overloads", None)
     if compiled and COMPILE != "never" or COMPILE == "always" or compiled is None:
         return kernel(*args)
@@ -104,6 +105,18 @@ def call(kernel, work, *args):
         return _interpreted(kernel, args)
     finally:
         _SPENT[kernel] = spent + time.perf_counter() - t0
+
+
+def _writable(args):
+    """``args`` with each read-only array replaced by a writable copy: numba would
+    compile a second specialization of the kernel for it (a read-only array is an
+    input, never written, so the copy changes nothing else).  The API layer gives
+    the other flags (C order, dtype by role); a read-only array is the one a caller
+    can slip through unchanged (``np.ascontiguousarray`` keeps it)."""
+    if all(a.flags.writeable for a in args if isinstance(a, np.ndarray)):
+        return args
+    return tuple(a.copy() if isinstance(a, np.ndarray) and not a.flags.writeable else a
+                 for a in args)
 
 
 def _interpreted(kernel, args):

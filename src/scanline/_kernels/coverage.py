@@ -41,6 +41,7 @@ import numpy as np
 from ._jit import helper, inline, kernel
 from .blend import composite_row
 from .polygon import EVEN_ODD, NONZERO  # noqa: F401  (the rule codes of the aliased fill)
+from .sort import insertion_budget, sort_keys
 
 #: Sub-scan-lines per pixel row.
 SUB = 16
@@ -82,11 +83,14 @@ def flush_row(buf, mode, table, y, acc, xlo, xhi, src):
 
 
 @helper
-def shape_edges(verts, contours, c0, c1, edges):
+def shape_edges(verts, contours, c0, c1, edges, order, fkeys, tkeys, titems):
     """Store the non-horizontal edges of contours c0..c1-1 in ``edges`` as rows
-    (ylo, yhi, x at ylo, dx/dy, direction), sorted by ylo; return their count and
-    the shape's bounds (xmin, ymin, xmax, ymax)."""
-    n = 0
+    (ylo, yhi, x at ylo, dx/dy, direction) and in ``order`` their indices sorted by
+    ylo: by insertion, or past :func:`scanline._kernels.sort.insertion_budget` by
+    :func:`scanline._kernels.sort.sort_keys` (O(n log n); ``fkeys``, ``tkeys``,
+    ``titems`` its scratch); return their count and the shape's bounds (xmin, ymin,
+    xmax, ymax)."""
+    n = np.int64(0)     # (not a literal 0: the sort helpers compile once)
     xmin = ymin = math.inf
     xmax = ymax = -math.inf
     for c in range(c0, c1):
@@ -110,14 +114,27 @@ def shape_edges(verts, contours, c0, c1, edges):
             edges[n, 2] = x0
             edges[n, 3] = (x1 - x0) / (y1 - y0)
             edges[n, 4] = d
+            fkeys[n] = y0
+            order[n] = n
             n += 1
-    # insertion sort by ylo (edges arrive nearly sorted within a contour)
+    # insertion by ylo (the edges of a contour arrive nearly sorted), or past the
+    # budget the merge sort
+    budget = insertion_budget(n)
     for i in range(1, n):
+        y = fkeys[i]
+        e = order[i]
         j = i
-        while j > 0 and edges[j - 1, 0] > edges[j, 0]:
-            for c in range(5):
-                edges[j - 1, c], edges[j, c] = edges[j, c], edges[j - 1, c]
+        while j > 0 and fkeys[j - 1] > y:
+            fkeys[j] = fkeys[j - 1]
+            order[j] = order[j - 1]
             j -= 1
+        fkeys[j] = y
+        order[j] = e
+        budget -= i - j
+        if budget < 0:
+            break
+    if budget < 0:
+        sort_keys(fkeys, order, n, tkeys, titems)
     return n, xmin, ymin, xmax, ymax
 
 
@@ -161,6 +178,7 @@ def simple_row(edges, active, na, bottom, acc, xlo, xhi, xs, ws):
         e = active[t]
         if edges[e, 0] > bottom or edges[e, 1] < top:
             return False
+    budget = insertion_budget(na)
     for t in range(na):      # x at the bottom (xs[j]) and top (xs[na + j]), sorted
         e = active[t]
         xb = edges[e, 2] + (bottom - edges[e, 0]) * edges[e, 3]
@@ -170,6 +188,9 @@ def simple_row(edges, active, na, bottom, acc, xlo, xhi, xs, ws):
             xs[na + j] = xs[na + j - 1]
             ws[j] = ws[j - 1]
             j -= 1
+        budget -= t - j
+        if budget < 0:       # many edges out of order: not a simple row (the general
+            return False     # path sorts its crossings in O(n log n))
         xs[j] = xb
         xs[na + j] = xb + edges[e, 3]
         ws[j] = edges[e, 4]
@@ -215,10 +236,28 @@ def row_crossings(edges, active, na, bottom, xs, ws, counts, cap):
 
 
 @helper
-def sub_line_spans(xs, ws, start, k, acc, xlo, xhi, rule):
+def sort_crossings(xs, ws, start, k, fkeys, items, tkeys, titems, wcopy):
+    """Sort the ``k`` crossings at ``xs[start:]`` (with their directions ``ws``) by
+    :func:`scanline._kernels.sort.sort_keys`; the other arguments are scratch."""
+    for i in range(k):
+        fkeys[i] = xs[start + i]
+        items[i] = i
+        wcopy[i] = ws[start + i]
+    sort_keys(fkeys, items, k, tkeys, titems)
+    for i in range(k):
+        xs[start + i] = fkeys[i]
+        ws[start + i] = wcopy[items[i]]
+
+
+@helper
+def sub_line_spans(xs, ws, start, k, acc, xlo, xhi, rule, fkeys, items, tkeys, titems,
+                   wcopy):
     """Sort the ``k`` crossings at ``xs[start:]`` and add the spans the fill rule
-    makes of them to ``acc``."""
-    for i in range(start + 1, start + k):  # insertion sort: a few crossings
+    makes of them to ``acc``.  A few crossings are sorted by insertion; past
+    :func:`scanline._kernels.sort.insertion_budget` moves, by
+    :func:`scanline._kernels.sort.sort_keys` (the other arguments: its scratch)."""
+    budget = insertion_budget(k)
+    for i in range(start + 1, start + k):  # insertion sort: usually a few crossings
         x = xs[i]
         w = ws[i]
         j = i
@@ -228,6 +267,11 @@ def sub_line_spans(xs, ws, start, k, acc, xlo, xhi, rule):
             j -= 1
         xs[j] = x
         ws[j] = w
+        budget -= i - j
+        if budget < 0:
+            break
+    if budget < 0:
+        sort_crossings(xs, ws, start, k, fkeys, items, tkeys, titems, wcopy)
     winding = 0
     enter = 0.0
     for j in range(start, start + k):
@@ -242,9 +286,11 @@ def sub_line_spans(xs, ws, start, k, acc, xlo, xhi, rule):
 
 @helper
 def fill_shape(buf, mode, width, height, table, verts, contours, c0, c1, src, rule,
-               edges, active, xs, ws, counts, acc):
-    """Composite one shape (contours c0..c1-1, combined by ``rule``)."""
-    n, xmin, ymin, xmax, ymax = shape_edges(verts, contours, c0, c1, edges)
+               edges, active, xs, ws, counts, acc, order, fkeys, items, tkeys, titems, wcopy):
+    """Composite one shape (contours c0..c1-1, combined by ``rule``); the arrays
+    after ``acc`` are the edge order and the sorts' scratch."""
+    n, xmin, ymin, xmax, ymax = shape_edges(verts, contours, c0, c1, edges, order, fkeys,
+                                            tkeys, titems)
     if n == 0 or not src[3] > 0.0:
         return
     xlo = max(math.floor(xmin + 0.5), 0)
@@ -259,8 +305,8 @@ def fill_shape(buf, mode, width, height, table, verts, contours, c0, c1, src, ru
     for y in range(ylo, yhi + 1):
         bottom = y - 0.5
         top = y + 0.5
-        while nxt < n and edges[nxt, 0] < top:   # edges starting below the row's top
-            active[na] = nxt
+        while nxt < n and edges[order[nxt], 0] < top:   # edges starting below the row's top
+            active[na] = order[nxt]
             na += 1
             nxt += 1
         keep = np.int64(0)
@@ -282,7 +328,8 @@ def fill_shape(buf, mode, width, height, table, verts, contours, c0, c1, src, ru
                 b = xs[s * cap + 1]
                 add_span(acc, xlo, xhi, min(a, b), max(a, b), 1.0 / SUB)
             elif k > 2:
-                sub_line_spans(xs, ws, s * cap, k, acc, xlo, xhi, rule)
+                sub_line_spans(xs, ws, s * cap, k, acc, xlo, xhi, rule, fkeys, items, tkeys,
+                               titems, wcopy)
         flush_row(buf, mode, table, y, acc, xlo, xhi, src)
 
 
@@ -300,11 +347,17 @@ def fill_shapes(buf, mode, width, height, table, verts, contours, shapes, srcs, 
     ws = np.empty(SUB * cap, np.float64)
     counts = np.zeros(SUB, np.int64)
     acc = np.zeros(width + 3, np.float64)
+    order = np.empty(cap, np.int64)        # the edges by ylo, and the sorts' scratch
+    fkeys = np.empty(cap, np.float64)
+    items = np.empty(cap, np.int64)
+    tkeys = np.empty(cap, np.float64)
+    titems = np.empty(cap, np.int64)
+    wcopy = np.empty(cap, np.float64)
     one = srcs.shape[0] == 1
     for p in range(shapes.shape[0] - 1):
         fill_shape(buf, mode, width, height, table, verts, contours, shapes[p],
                    shapes[p + 1], srcs[0] if one else srcs[p], rule, edges, active, xs, ws,
-                   counts, acc)
+                   counts, acc, order, fkeys, items, tkeys, titems, wcopy)
 
 
 @kernel

@@ -52,6 +52,7 @@ import numpy as np
 
 from ._jit import helper, inline, kernel
 from .raster import BAND_SHIFT
+from .sort import insertion_budget, sort_keys
 from .spans import span
 
 EVEN_ODD = 0
@@ -154,13 +155,21 @@ def step_active(et, ef, r, oy, ox, end, nxt, nact, order, active, keys, dirs):
     """Move the active edge list to raster row ``r``: one pass over the list, then
     over the edges entering on this row (``order[nxt:end]``): drop the edges that
     ended below, step the others up one row, and insert each crossing key in order
-    (the list stays nearly sorted between rows).  Returns ``(nact, nxt)``, the new
-    length of the list and the next edge of ``order`` to enter it.
+    (the list stays nearly sorted between rows).  Returns ``(nact, nxt, sorted)``:
+    the new length of the list, the next edge of ``order`` to enter it, and whether
+    the list is sorted.
+
+    The insertion is O(n) while the list stays nearly sorted; once it has moved
+    more than :func:`scanline._kernels.sort.insertion_budget` keys (edges that cross
+    between rows: a self-intersecting polygon of many vertices), the remaining keys
+    are appended unsorted and the caller sorts the row with :func:`sort_active`, so
+    that a row costs O(n log n) at worst instead of O(n**2).
 
     This is one step of the scan-line fill, as the step table
     (:func:`scanline.trace.scan_line_fill`) runs it."""
     y = r + oy
     k = 0
+    budget = insertion_budget(nact + end - nxt)
     for a in range(nact + end - nxt):
         if a < nact:
             e = active[a]
@@ -182,18 +191,33 @@ def step_active(et, ef, r, oy, ox, end, nxt, nact, order, active, keys, dirs):
             xc = ef[e, 0] + ((y - ef[e, 1]) * ef[e, 2]) / ef[e, 3]
             key = int(math.ceil(xc)) - ox
         b = k
-        while b > 0:  # (an ``and`` in this test compiled to much slower code)
-            if keys[b - 1] <= key:
-                break
-            keys[b] = keys[b - 1]
-            dirs[b] = dirs[b - 1]
-            active[b] = active[b - 1]
-            b -= 1
+        if budget > 0:
+            while b > 0:  # (an ``and`` in this test compiled to much slower code)
+                if keys[b - 1] <= key:
+                    break
+                keys[b] = keys[b - 1]
+                dirs[b] = dirs[b - 1]
+                active[b] = active[b - 1]
+                b -= 1
+            budget -= k - b
         keys[b] = key
         dirs[b] = et[e, 2]
         active[b] = e
         k += 1
-    return k, nxt
+    return k, nxt, budget > 0
+
+
+@helper
+def sort_active(et, active, keys, dirs, n, fkeys, tkeys, titems):
+    """Sort the active edge list (``n`` keys, their edges and directions) by key,
+    in O(n log n) (:func:`scanline._kernels.sort.sort_keys`; ``fkeys``, ``tkeys``,
+    ``titems`` its scratch)."""
+    for i in range(n):
+        fkeys[i] = keys[i]
+    sort_keys(fkeys, active, n, tkeys, titems)
+    for i in range(n):
+        keys[i] = int(fkeys[i])
+        dirs[i] = et[active[i], 2]
 
 
 @helper
@@ -210,7 +234,7 @@ def fill_row(buf, layout, width, height, r, keys, dirs, nact, mask, color):
 
 @helper
 def fill_polygon(buf, layout, width, height, ox, oy, verts, contours, c0, c1, color,
-                 rule, et, ef, counts, order, active, keys, dirs):
+                 rule, et, ef, counts, order, active, keys, dirs, fkeys, tkeys, titems):
     """Scan-convert one polygon (contours ``c0 .. c1-1``) into the raster."""
     n = build_edges(verts, contours, c0, c1, ox, oy, height, et, ef)
     if n == 0:
@@ -220,8 +244,10 @@ def fill_polygon(buf, layout, width, height, ox, oy, verts, contours, c0, c1, co
     nact = np.int64(0)     # (typed, not literal 0s: step_active compiles once)
     nxt = np.int64(0)      # next edge of ``order`` to enter the active list
     for r in range(rmin, rmax + 1):
-        nact, nxt = step_active(et, ef, r, oy, ox, counts[r - rmin], nxt, nact, order,
-                                active, keys, dirs)
+        nact, nxt, ordered = step_active(et, ef, r, oy, ox, counts[r - rmin], nxt, nact,
+                                         order, active, keys, dirs)
+        if not ordered:
+            sort_active(et, active, keys, dirs, nact, fkeys, tkeys, titems)
         fill_row(buf, layout, width, height, r, keys, dirs, nact, mask, color)
 
 
@@ -291,8 +317,11 @@ def fill_polygons(buf, layout, width, height, ox, oy, verts, contours, polys, co
     active = np.empty(size, np.int64)
     keys = np.empty(size, np.int64)
     dirs = np.empty(size, np.int64)
+    fkeys = np.empty(size, np.float64)     # sort_keys' scratch
+    tkeys = np.empty(size, np.float64)
+    titems = np.empty(size, np.int64)
     one = colors.shape[0] == 1
     for p in range(polys.shape[0] - 1):
         fill_polygon(buf, layout, width, height, ox, oy, verts, contours, polys[p],
                      polys[p + 1], colors[0 if one else p], rule, et, ef, counts, order,
-                     active, keys, dirs)
+                     active, keys, dirs, fkeys, tkeys, titems)

@@ -98,6 +98,11 @@ def main(argv=None):
             traceback.print_exc()
         _report(exc)
         return 2
+    except MemoryError:
+        if args.debug:
+            traceback.print_exc()
+        _report("not enough memory for this command; give smaller sizes or fewer items")
+        return 2
     except KeyboardInterrupt:
         return 130
     return 0

@@ -62,26 +62,19 @@ def palette_table(text, image):
     return sl.color.color_table([c.strip() for c in text.split(",")], "--palette")
 
 
-def check_scale(scale, width, height, limit):
-    """Refuse a ``--scale`` whose enlarged image would have more than ``limit``
-    pixels (Pillow's decompression-bomb bound) before memory is spent on it."""
-    if scale >= 1 and width * height * scale * scale > limit:
-        raise ArgumentValueError(
-            f"--scale {scale} would enlarge the {width} x {height} image to "
-            f"{width * scale} x {height * scale} pixels, more than {limit}; use a smaller "
-            "--scale")
-
-
 def run(args):
     """Read, dither and save atomically."""
     from PIL import Image
 
     import scanline as sl
+    from .._files import input_path
+    from ..framebuffer import check_image_size
 
     if args.palette is not None and (args.levels is not None or args.color):
         raise ArgumentValueError("give --levels (and --color) or --palette, not both")
     if os.path.isdir(args.output):
         raise ArgumentValueError(f"OUT {args.output!r} is a folder; give a file name")
+    input_path(args.input, "readable image")
     try:
         with Image.open(args.input) as image:
             image.load()
@@ -91,7 +84,9 @@ def run(args):
     except OSError as exc:
         raise ArgumentValueError(
             f"IN {args.input!r} is not a readable image: {exc.strerror or exc}") from None
-    check_scale(args.scale, source.width, source.height, Image.MAX_IMAGE_PIXELS)
+    check_image_size(source.width, source.height, args.scale,
+                     f"IN's {source.width} x {source.height} pixels with --scale {args.scale}",
+                     "use a smaller --scale")
     if args.palette is not None:
         fb = sl.color.dither(source, args.method, palette=palette_table(args.palette, source),
                              serpentine=args.serpentine)

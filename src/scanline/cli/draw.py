@@ -387,7 +387,12 @@ def _draw(fb, item, state, draw):
 
 def run(args):
     """Parse the items, draw them and save the image atomically."""
+    from ..framebuffer import check_image_size
+
     items = parse_items(args.items)
+    w, h = args.size
+    check_image_size(w, h, args.scale, f"--size {w}x{h}"
+                     + (f" with --scale {args.scale}" if args.scale > 1 else ""))
     fb = render(items, *args.size, mode=args.mode, background=args.background, rule=args.rule)
     try:
         fb.save(args.output, scale=args.scale)

@@ -6,7 +6,8 @@ import math
 import numpy as np
 
 from .. import _validate as v
-from ..errors import ArgumentValueError
+from ..curves.flatten import MAX_POINTS
+from ..errors import ArgumentTypeError, ArgumentValueError
 from . import window as w
 from .lines import _points, polyline
 
@@ -123,12 +124,36 @@ def arcs(xc, yc, rx, ry, intervals, tolerance=0.25):
         raise ArgumentValueError(f"tolerance must be > 0, got {tolerance!r}")
     r = max(abs(ax), abs(ay))
     step = 2 * math.acos(max(-1.0, 1 - tol / r)) if r > 0 else math.pi
+    spans = []
+    for i, interval in enumerate(_intervals(intervals)):
+        start = v.number(f"intervals[{i}] start", interval[0])
+        end = v.number(f"intervals[{i}] end", interval[1])
+        if end < start:
+            raise ArgumentValueError(f"intervals[{i}] = ({start}, {end}) runs backwards; give "
+                                     "(start, end) with start <= end, as ellipse() returns them")
+        spans.append((start, end))
+    total = sum(max(1.0, math.ceil((end - start) / step)) + 1 for start, end in spans)
+    if total > MAX_POINTS:
+        raise ArgumentValueError(
+            f"tolerance={tolerance!r} would flatten these arcs into about {total:.3g} points, "
+            f"more than {MAX_POINTS}; use a larger tolerance")
     out = []
-    for start, end in intervals:
+    for start, end in spans:
         n = max(1, math.ceil((end - start) / step))
         t = np.linspace(start, end, n + 1)
         out.append(np.stack([cx + ax * np.cos(t), cy + ay * np.sin(t)], axis=1))
     return out
+
+
+def _intervals(value):
+    """The (start, end) pairs of ``intervals``, or raise naming it."""
+    if isinstance(value, np.ndarray):
+        value = value.tolist()
+    if not isinstance(value, (list, tuple)) or not all(
+            isinstance(i, (list, tuple, np.ndarray)) and len(i) == 2 for i in value):
+        raise ArgumentTypeError(f"intervals must be a list of (start, end) angle pairs, as "
+                                f"ellipse() returns, got {v._show(value)}")
+    return value
 
 
 def curve(c, window, tolerance=0.25, method="liang-barsky"):

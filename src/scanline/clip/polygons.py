@@ -5,7 +5,7 @@ import numpy as np
 from .. import _validate as v
 from .._kernels import clip as k
 from .._kernels._jit import call
-from ..errors import ArgumentTypeError, ArgumentValueError
+from ..errors import ArgumentValueError
 from ..geometry.contours import batch, contours
 from . import weiler_atherton as wa
 from . import window as w
@@ -138,14 +138,5 @@ def polygons(polys, window, counts=None):
         out, out_counts = _sutherland_hodgman(verts, n, ring)
         return np.split(out, np.cumsum(out_counts)[:-1]) if len(n) else []
     verts, _ = contours("polys", polys)
-    try:
-        n = np.asarray(counts)
-    except (TypeError, ValueError):
-        n = None
-    if n is None or n.ndim != 1 or n.dtype.kind not in "iu":
-        raise ArgumentTypeError(f"counts must be a 1-D array of integers, got {v._show(counts)}")
-    if (n < 0).any() or int(n.sum()) != len(verts):
-        raise ArgumentValueError(
-            f"counts must be >= 0 and add up to the number of vertices ({len(verts)}), "
-            f"got a sum of {int(n.sum())}")
+    n, _ = v.counts("counts", counts, len(verts), "polys")
     return _sutherland_hodgman(verts, n, ring)

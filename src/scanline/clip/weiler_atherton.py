@@ -144,8 +144,9 @@ def _block_splits(sa, sb, ca, cb, tol, s_splits, c_splits):
                 c_splits[j].append((uu, (float(p[0]), float(p[1]))))
 
 
-def _pieces(a, b, splits):
-    """The directed pieces of the edges a -> b cut at their split points."""
+def _pieces(a, b, splits, owners=None):
+    """The directed pieces of the edges a -> b cut at their split points (and, in
+    ``owners`` when it is a list, the index of the edge each piece lies on)."""
     out = []
     for i in range(len(a)):
         pts = [(0.0, (float(a[i, 0]), float(a[i, 1])))]
@@ -156,6 +157,8 @@ def _pieces(a, b, splits):
             if p != chain[-1]:
                 chain.append(p)
         out += list(zip(chain[:-1], chain[1:]))
+        if owners is not None:
+            owners += [i] * (len(chain) - 1)
     return out
 
 
@@ -172,6 +175,68 @@ def _classify(pieces, rings, a, b, tol):
         on = _distance_to_boundary(m, a, b) <= tol
         out[lo:lo + step] = np.where(on, 0, np.where(inside_even_odd(m, rings), 1, -1))
     return out
+
+
+#: Rings longer than this drop their straight vertices all at once.
+BATCH_DROP = 256
+
+#: Above this many (piece, edge) pairs, pieces are classified along their own edge's
+#: line (:func:`_classify_along`) instead of against every edge.
+PAIRWISE = 1 << 22
+
+
+def _classify_along(pieces, owners, la, lb, a, b, tol):
+    """:func:`_classify` in O((P + E) log E) per line: piece k lies on the line
+    through ``la[owners[k]]`` -> ``lb[owners[k]]``, so its midpoint's even-odd count is
+    taken along a ray on that line (the parity is the same for any ray): the other
+    polygon's edges a -> b that straddle the line (half-open, as the y-ray test)
+    cross it at sorted parameters, and a binary search counts those beyond the
+    midpoint.  The midpoint is on the boundary (0) when an edge lying along the line
+    within ``tol``, or one of the crossings nearest to it, is within ``tol``."""
+    p = np.array(pieces, np.float64)
+    mid = 0.5 * (p[:, 0] + p[:, 1])
+    owners = np.asarray(owners)
+    out = np.empty(len(mid), int)
+    e = b - a
+    for j in np.unique(owners):
+        sel = np.flatnonzero(owners == j)
+        o, d = la[j], lb[j] - la[j]
+        length2 = float(d @ d) or 1.0
+        sa = (a[:, 0] - o[0]) * d[1] - (a[:, 1] - o[1]) * d[0]      # signed distances (x |d|)
+        sb = (b[:, 0] - o[0]) * d[1] - (b[:, 1] - o[1]) * d[0]
+        cross = (sa > 0) != (sb > 0)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            f = sa[cross] / (sa[cross] - sb[cross])
+        cpts = a[cross] + f[:, None] * e[cross]
+        t = np.sort(((cpts - o) @ d) / length2)
+        tm = ((mid[sel] - o) @ d) / length2
+        inside = (len(t) - np.searchsorted(t, tm, side="right")) % 2 == 1
+        # on the boundary: near an edge along the line, or near a crossing edge
+        scale = math.sqrt(length2)
+        along = np.flatnonzero((np.abs(sa) <= tol * scale) | (np.abs(sb) <= tol * scale))
+        on = np.zeros(len(sel), bool)
+        if len(along):
+            on |= _distance_to_boundary(mid[sel], a[along], b[along]) <= tol
+        order = np.argsort(((cpts - o) @ d) / length2)
+        crossing = np.flatnonzero(cross)[order]
+        k = np.searchsorted(t, tm)
+        for shift in (-2, -1, 0, 1):
+            idx = np.clip(k + shift, 0, max(len(t) - 1, 0))
+            if len(t):
+                edge = crossing[idx]
+                on |= _point_segment_distance(mid[sel], a[edge], b[edge]) <= tol
+        out[sel] = np.where(on, 0, np.where(inside, 1, -1))
+    return out
+
+
+def _point_segment_distance(pts, a, b):
+    """Distance from each point i to the segment a[i] -> b[i]."""
+    d = b - a
+    ll = np.einsum("ij,ij->i", d, d)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = np.clip(np.einsum("ij,ij->i", pts - a, d) / ll, 0.0, 1.0)
+    t = np.where(ll > 0, t, 0.0)
+    return np.hypot(*(pts - (a + t[:, None] * d)).T)
 
 
 def _snap_vertices(rings, targets, tol):
@@ -232,7 +297,10 @@ def _traverse(kept):
 
 def _drop_collinear(r):
     """Remove vertices that lie on the straight line through their neighbors (the
-    split points that turned out not to be corners)."""
+    split points that turned out not to be corners): one at a time in small rings,
+    all of them at once, pass after pass, in rings of more than BATCH_DROP vertices
+    (a run of straight vertices lies along one line, so removing it at once leaves
+    that line; one at a time was quadratic in the run's length)."""
     changed = True
     while changed and len(r) > 3:
         prev, nxt = np.roll(r, 1, axis=0), np.roll(r, -1, axis=0)
@@ -243,8 +311,10 @@ def _drop_collinear(r):
         straight = (np.abs(cross) <= 1e-12 * scale) & (dot > 0)
         changed = bool(straight.any())
         if changed:
-            keep = np.ones(len(r), bool)
-            keep[int(np.argmax(straight))] = False
+            keep = ~straight
+            if keep.sum() < 3 or len(r) <= BATCH_DROP:
+                keep = np.ones(len(r), bool)
+                keep[int(np.argmax(straight))] = False
             r = r[keep]
     return r
 
@@ -260,10 +330,14 @@ def clip(subject, window):
     sa, sb = _edges(subject)
     ca, cb = _edges(window)
     s_splits, c_splits = _splits(sa, sb, ca, cb, tol)
-    s_pieces = _pieces(sa, sb, s_splits)
-    c_pieces = _pieces(ca, cb, c_splits)
-    s_class = _classify(s_pieces, window, ca, cb, tol)
-    c_class = _classify(c_pieces, subject, sa, sb, tol)
+    s_owner, c_owner = [], []
+    s_pieces = _pieces(sa, sb, s_splits, s_owner)
+    c_pieces = _pieces(ca, cb, c_splits, c_owner)
+    # pairwise where that is small; along each edge's line where it would be quadratic
+    s_class = (_classify(s_pieces, window, ca, cb, tol) if len(s_pieces) * len(ca) <= PAIRWISE
+               else _classify_along(s_pieces, s_owner, sa, sb, ca, cb, tol))
+    c_class = (_classify(c_pieces, subject, sa, sb, tol) if len(c_pieces) * len(sa) <= PAIRWISE
+               else _classify_along(c_pieces, c_owner, ca, cb, sa, sb, tol))
     c_on = {piece for piece, c in zip(c_pieces, c_class) if c == 0}
     kept = [piece for piece, c in zip(s_pieces, s_class)
             if c == 1 or (c == 0 and piece in c_on)]

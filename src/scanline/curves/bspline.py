@@ -28,13 +28,24 @@ METHODS = ("de-boor", "cox-de-boor", "matrix")
 #: de Boor's algorithm, which is better conditioned.
 MATRIX_ORDER = 6
 
+#: Most control points of a knot vector made by :func:`open_uniform_knots` (32 MiB).
+MAX_CONTROL_POINTS = 1 << 22
+
 
 def open_uniform_knots(count, order):
     """The open uniform knot vector for ``count`` = n + 1 control points of order d.
 
     uⱼ = 0 for j < d, j − d + 1 for d ≤ j ≤ n, n − d + 2 for j > n (Hearn & Baker,
     §10-9): the notes' [0 0 1 2 3 3] (d = 2, n = 3) and [0 0 0 0 1 2 2 2 2] (d = 4, n = 4).
+
+    ``count`` is at most :data:`MAX_CONTROL_POINTS`.
     """
+    count = v.positive_int("count", count, minimum=1)
+    if count > MAX_CONTROL_POINTS:
+        raise ArgumentValueError(
+            f"count={count:,}: a knot vector is made for at most {MAX_CONTROL_POINTS:,} "
+            "control points")
+    order = _order(order, count)
     n, d = count - 1, order
     j = np.arange(n + d + 1)
     return np.clip(j - d + 1, 0, n - d + 2).astype(np.float64)

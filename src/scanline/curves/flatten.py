@@ -36,6 +36,8 @@ W. Boehm, "Inserting new knots into B-spline curves", Computer-Aided Design 12(4
 199-201, 1980 (B-spline -> Bezier pieces).
 """
 
+import math
+
 import numpy as np
 
 from .. import _validate as v
@@ -53,6 +55,11 @@ MAX_DEPTH = 40
 #: Most points one call returns; more means the tolerance is too small for the
 #: curve's size.
 MAX_POINTS = 1 << 22
+
+#: Most arithmetic steps of one subdivision call: each point of a degree-n segment
+#: costs a de Casteljau split, about (n + 1)**2 steps, so a high degree lowers the
+#: point budget below :data:`MAX_POINTS` (a few seconds at most).
+MAX_WORK = 1 << 33
 
 #: Generic path: initial intervals and samples per interval.
 _START = 16
@@ -198,15 +205,50 @@ def subdivide(segments, tolerance, weighted=True):
         start = segments[:, 0, :-1] / segments[:, 0, -1:] if weighted else segments[:, 0]
         return start, np.arange(len(segments))
     kind = token(k.WEIGHTED if weighted else k.PLAIN)
+    degree = segments.shape[1] - 1
+    budget = point_budget(degree)
+    if budget < 64:
+        raise ArgumentValueError(
+            f"a Bezier segment of degree {degree} costs about {(degree + 1) ** 2:,} steps "
+            f"per point flattened; at most {MAX_WORK:,} steps are spent (degree <= "
+            f"{math.isqrt(MAX_WORK // 64) - 1}); split the curve into pieces of lower degree")
+    # Wang's bound on the Cartesian points (an estimate for rational segments):
+    # refuse at once what is far beyond the budget, rather than after the work
+    cartesian = segments[..., :-1] / segments[..., -1:] if weighted else segments
+    if _wang_estimate(cartesian, tolerance) > 64 * budget:
+        _too_many(tolerance, budget)
     # each segment flattens to a few dozen pieces at the usual tolerances
     points, firsts, truncated = call(k.subdivide, 100 * segments.size, segments, kind,
-                                     tolerance * tolerance, MAX_DEPTH, MAX_POINTS)
+                                     tolerance * tolerance, MAX_DEPTH, budget)
     if truncated:
-        raise ArgumentValueError(
-            f"tolerance={tolerance!r} is too small for a curve this large: flattening "
-            f"would take more than {MAX_POINTS} points; use a larger tolerance"
-        )
+        _too_many(tolerance, budget)
     return points, firsts
+
+
+def point_budget(degree):
+    """Most points :func:`subdivide` makes of segments of ``degree``: MAX_POINTS,
+    or fewer for high degrees (:data:`MAX_WORK`)."""
+    return int(min(MAX_POINTS, MAX_WORK // (degree + 1) ** 2))
+
+
+def _wang_estimate(controls, tolerance):
+    """Wang's number of equal steps for all the (S, n + 1, dim) segments together,
+    unclipped (inf for non-finite values)."""
+    n = controls.shape[1] - 1
+    if n < 2:
+        return float(len(controls))
+    with np.errstate(all="ignore"):
+        second = controls[:, :-2] - 2 * controls[:, 1:-1] + controls[:, 2:]
+        worst = np.sqrt((second ** 2).sum(axis=2)).max(axis=1)
+        m = np.sqrt(n * (n - 1) * worst / (8.0 * tolerance))
+    total = float(np.sum(m))
+    return total if total == total else math.inf
+
+
+def _too_many(tolerance, budget):
+    raise ArgumentValueError(
+        f"tolerance={tolerance!r} is too small for a curve this large: flattening "
+        f"would take more than {budget} points; use a larger tolerance")
 
 
 def _wang(segments, weighted, tolerance):
@@ -277,8 +319,9 @@ def spline_pieces(homogeneous, knots, order, domain):
     """Bezier control points of each polynomial piece of the B-spline with control
     points ``homogeneous`` (n + 1, c) (Cartesian or [w P, w]), knot vector ``knots``
     and ``order`` d, on the non-empty knot spans inside ``domain``: (S, d, c)."""
+    from .._kernels import curves as _k
+    from .._kernels._jit import call
     from .bezier import bernstein
-    from .bspline import basis
 
     lo, hi = domain
     breaks = np.unique(np.clip(knots, lo, hi))
@@ -288,7 +331,11 @@ def spline_pieces(homogeneous, knots, order, domain):
     collocation = bernstein(degree, t)  # (d, d): row s = the basis at t_s
     a, b = breaks[:-1], breaks[1:]
     u = (a[:, None] + (b - a)[:, None] * t[None, :]).ravel()
-    values = basis(knots, order, u) @ homogeneous  # (S * d, c)
+    # de Boor's algorithm: d blending functions per point, not the dense (S d, n + 1)
+    # matrix of all of them (298 GiB for 10**5 control points)
+    values = np.empty((len(u), homogeneous.shape[1]))
+    call(_k.de_boor, len(u) * order ** 2, v.kernel_array(homogeneous), v.kernel_array(knots),
+         order, v.kernel_array(u), values)
     values = values.reshape(len(a), order, -1)
     return np.linalg.solve(collocation[None], values)
 

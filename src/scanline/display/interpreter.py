@@ -18,7 +18,7 @@ A highlighted segment gets a frame in the highlight color around what it drew.
 import numpy as np
 
 from .. import _validate as v
-from ..errors import ArgumentValueError, ScanlineError
+from ..errors import ArgumentTypeError, ArgumentValueError, ScanlineError
 from . import batch, pipeline, text, three_d
 from .primitives import THIN, Primitive
 from .viewing import device_rectangle, workstation
@@ -117,8 +117,17 @@ def interpret(display_file, device, highlight="magenta"):
     stored commands, so changing a segment's attributes and interpreting again
     redraws it.  The order of segments by priority follows GKS (ISO 7942, 4.7.6).
     """
+    from .file import DisplayFile
     from .primitives import color
 
+    if not isinstance(display_file, DisplayFile):
+        raise ArgumentTypeError(f"display_file must be a scanline.DisplayFile, got "
+                                f"{type(display_file).__name__}")
+    missing = [a for a in ("width", "height", "stroke", "fill") if not hasattr(device, a)]
+    if missing:
+        raise ArgumentTypeError(
+            f"device must be a RasterDevice, VectorDevice or SVGDevice (or have width, height, "
+            f"stroke and fill); got {type(device).__name__}, which lacks {', '.join(missing)}")
     color("highlight", highlight)
     ws = workstation(device.width, device.height)
     frame = device_frame(ws)

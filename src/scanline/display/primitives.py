@@ -79,6 +79,12 @@ def line_attributes(color_="white", color_name="color", **style):
     if "pen" in style:
         raise ArgumentValueError("pen is not a display-file attribute: a vector device "
                                  "cannot stamp a footprint; use width and cap")
+    known = ("width", "cap", "join", "miter_limit", "dash", "dash_phase")
+    unknown = [k for k in style if k not in known]
+    if unknown:
+        raise ArgumentTypeError(
+            f"unknown line attribute {unknown[0]!r}; the line attributes are {color_name}, "
+            f"{', '.join(known)}")
     return {"color": color(color_name, color_), "style": LineStyle(**style)}
 
 
@@ -129,7 +135,16 @@ def fill_style(name, value):
 
 
 def points(name, value, minimum=1):
-    """An (N, 2) float64 array of finite points, N >= minimum."""
+    """An (N, 2) float64 array of finite points, N >= minimum (booleans are not
+    numbers here, though numpy would convert them)."""
+    if isinstance(value, np.ndarray) and value.dtype == bool:
+        raise ArgumentTypeError(f"{name} must hold numbers, got an array of booleans")
+    if isinstance(value, (list, tuple)):
+        for i, p in enumerate(value):
+            if isinstance(p, (bool, np.bool_)) or (
+                    isinstance(p, (list, tuple)) and any(isinstance(c, (bool, np.bool_)) for c in p)):
+                raise ArgumentTypeError(f"{name}[{i}] must be a point [x, y] of numbers, got "
+                                        f"{v._show(p)} (true and false are not numbers)")
     try:
         a = np.asarray(value, dtype=np.float64)
     except (TypeError, ValueError, OverflowError):

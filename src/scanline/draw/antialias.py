@@ -191,14 +191,9 @@ def _vertices(value):
 
 def _offsets(name, value, end):
     """``value`` as a contiguous int64 array that rises from 0 to ``end``."""
-    a = np.asarray(value)
-    if a.ndim != 1 or a.size == 0 or not np.issubdtype(a.dtype, np.integer):
-        raise ArgumentTypeError(f"{name} must be a non-empty 1-D array of integers (where "
-                                f"each part starts, then the end), got {v._show(value)}")
-    if a[0] != 0 or a[-1] != end or (np.diff(a) < 0).any():
-        raise ArgumentValueError(f"{name} must rise from 0 to {end} without decreasing, got "
-                                 f"{v._show(value)}")
-    return np.ascontiguousarray(a, np.int64)
+    return v.index_array(name, value, high=end, rising=True, first=0, last=end,
+                         what="a non-empty 1-D array of integers (where each part starts, "
+                              "then the end)")
 
 
 def _fill_parsed(fb, verts, offsets, shapes, color, rule):

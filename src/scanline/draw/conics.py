@@ -64,7 +64,8 @@ def circle(fb, xc, yc, r, color="white", *, style=None, antialias=False, width=N
     attrs = strokes.styled(style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen)
     xc, yc, r = v.coordinate("xc", xc), v.coordinate("yc", yc), v.radius("r", r)
     if attrs is not None:
-        strokes.conics(fb, np.array([[xc, yc, r, r]], np.int64), color, attrs, antialias)
+        strokes.conics(fb, np.array([[xc, yc, r, r]], np.int64), color, attrs, antialias,
+                       ("r", "r"))
         return
     buf, packed, width, height = target(fb)
     call(k.draw_circle, min(8 * r, 4 * (width + height)), buf, layout(packed), width, height,
@@ -81,7 +82,8 @@ def circles(fb, circles, color="white", *, style=None, antialias=False, width=No
     attrs = strokes.styled(style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen)
     arr = v.coordinate_array("circles", circles, 3, radius_columns=(2,))
     if attrs is not None:
-        strokes.conics(fb, arr[:, [0, 1, 2, 2]], color, attrs, antialias)
+        strokes.conics(fb, arr[:, [0, 1, 2, 2]], color, attrs, antialias,
+                       ("circles radius r", "circles radius r"))
         return
     buf, packed, width, height = target(fb)
     call(k.draw_circles, lambda: conic_work(arr[:, 2], arr[:, 2], width, height), buf,

@@ -441,11 +441,11 @@ def _quadrant(rx, ry):
     return quadrant
 
 
-def conic_pixels(xc, yc, rx, ry):
+def conic_pixels(xc, yc, rx, ry, names=("rx", "ry")):
     """The pixels of the midpoint circle (rx == ry) or ellipse in path order:
     counterclockwise from (xc + rx, yc), each once -- the pixel sequence a line type
-    numbers."""
-    for name, r in (("rx", rx), ("ry", ry)):
+    numbers.  ``names`` are the radii's names in messages."""
+    for name, r in zip(names, (rx, ry)):
         if r > SEQUENCE_LIMIT:
             raise ArgumentValueError(
                 f"{name}={r}: a patterned or pen-drawn width-1 circle or ellipse needs radii "
@@ -473,8 +473,9 @@ def conic_polyline(xc, yc, rx, ry):
     return np.stack([xc + scale * rx * np.cos(a), yc + scale * ry * np.sin(a)], axis=1)
 
 
-def conics(fb, rows, color, style, antialias):
-    """Draw conics ``rows`` (N, 4) int: (xc, yc, rx, ry) with line attributes."""
+def conics(fb, rows, color, style, antialias, names=("rx", "ry")):
+    """Draw conics ``rows`` (N, 4) int: (xc, yc, rx, ry) with line attributes
+    (``names``: the radii's names in messages)."""
     n = len(rows)
     if n == 0:
         return
@@ -497,7 +498,7 @@ def conics(fb, rows, color, style, antialias):
     values = colors(fb, color, n) if not _blend.translucent(color) else None
     margin = int(np.abs(pen).max())
     for i, (xc, yc, rx, ry) in enumerate(rows.tolist()):
-        pixels = conic_pixels(xc, yc, rx, ry)
+        pixels = conic_pixels(xc, yc, rx, ry, names)
 
         def draw(buf, packed, width, height, ox, oy, value, pixels=pixels):
             call(kl.draw_sequence, len(pixels) * len(pen), buf, layout(packed), width, height,

@@ -10,6 +10,7 @@ rule decides what is inside).
 import numpy as np
 
 from .._validate import COORD_LIMIT, _show
+from .._validate import counts as index_counts
 from ..errors import ArgumentTypeError, ArgumentValueError
 
 
@@ -177,16 +178,6 @@ def flat(name, vertices, counts):
     if verts.ndim != 2 or verts.shape[1] != 2:
         raise ArgumentValueError(f"{name} must be a (V, 2) array of vertices when counts is "
                                  f"given, got shape {verts.shape}")
-    c = np.asarray(counts)
-    if c.ndim != 1 or (c.size and not np.issubdtype(c.dtype, np.integer)):
-        raise ArgumentTypeError(f"counts must be a 1-D array of integers (vertices per "
-                                f"polygon), got {_show(counts)}")
-    if c.size and c.min() < 0:
-        raise ArgumentValueError(f"counts must be >= 0, got {int(c.min())}")
-    if int(c.sum()) != verts.shape[0]:
-        raise ArgumentValueError(f"counts add up to {int(c.sum())} but {name} holds "
-                                 f"{verts.shape[0]} vertices")
-    offsets = np.zeros(c.size + 1, np.int64)
-    np.cumsum(c, out=offsets[1:])
+    c, offsets = index_counts("counts", counts, verts.shape[0], name)
     check_vertices(name, verts, offsets)
     return verts, offsets, np.arange(c.size + 1, dtype=np.int64)

@@ -39,7 +39,7 @@ def _points(points):
         raise ArgumentTypeError(f"points must hold real numbers, got an array of dtype {a.dtype}")
     if a.size == 0:
         return np.empty((0, 2), np.float64), a.shape[:-1] if a.ndim > 1 else (0,)
-    if a.shape[-1] != 2:
+    if a.ndim == 0 or a.shape[-1] != 2:
         raise ArgumentValueError(f"points must have shape (M, 2) (or (..., 2)), got shape {a.shape}")
     shape = a.shape[:-1]
     a = a.reshape(-1, 2).astype(np.float64)

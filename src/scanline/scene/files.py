@@ -23,6 +23,10 @@ else:  # pragma: no cover - Python 3.10
 #: Formats by file extension.
 FORMATS = {".toml": "toml", ".json": "json"}
 
+#: Largest scene file read (16 MiB): scenes are hand-written or generated listings of
+#: primitives; a bigger file is refused before it is read.
+MAX_FILE_BYTES = 16 << 20
+
 
 class SceneError(ArgumentValueError):
     """A scene file that cannot be used.
@@ -77,7 +81,9 @@ def _parse(text, format, file):
         except json.JSONDecodeError as error:
             raise SceneError(f"invalid JSON: {error.msg} (column {error.colno})",
                              file=file, line=error.lineno) from None
-        except ValueError as error:  # NaN / Infinity
+        except ValueError as error:  # NaN / Infinity, or an integer too long to convert
+            if "digits" in str(error):
+                raise _long_number(text, "JSON", error, file) from None
             raise SceneError(f"invalid JSON: {error}", file=file) from None
     else:
         try:
@@ -90,7 +96,21 @@ def _parse(text, format, file):
             if found:
                 message += f" (column {found.group(2)})"
             raise SceneError(f"invalid TOML: {message}", file=file, line=line) from None
+        except ValueError as error:   # an integer too long for Python's int conversion
+            raise _long_number(text, "TOML", error, file) from None
     return data
+
+
+def _long_number(text, format, error, file):
+    """The error for a number too long to convert (Python refuses integer strings of
+    more than ``sys.get_int_max_str_digits()`` digits), with the line it is on."""
+    limit = sys.get_int_max_str_digits() if hasattr(sys, "get_int_max_str_digits") else 4300
+    found = re.search(r"[0-9_]{%d,}" % (limit + 1), text) if limit else None
+    line = text.count("\n", 0, found.start()) + 1 if found else None
+    digits = re.search(r"value has (\d+) digits", str(error))
+    count = f"{digits.group(1)} digits" if digits else f"more than {limit} digits"
+    return SceneError(f"invalid {format}: a number has {count}, more than the {limit} "
+                      "Python converts", file=file, line=line)
 
 
 def _no_constant(name):
@@ -98,15 +118,15 @@ def _no_constant(name):
 
 
 def read_text(path):
-    """The text of a scene file (UTF-8), errors naming the file."""
+    """The text of a scene file (UTF-8, a byte-order mark allowed), errors naming
+    the file.  Only regular files of at most :data:`MAX_FILE_BYTES` are read (a
+    FIFO or a device such as /dev/zero is refused before reading)."""
+    from .._files import read_limited
+
     name = os.fspath(path)
+    raw = read_limited(path, "scene file", MAX_FILE_BYTES, SceneError)
     try:
-        with open(name, "rb") as f:
-            raw = f.read()
-    except OSError as error:
-        raise SceneError(f"cannot read the file: {error.strerror}", file=name) from None
-    try:
-        return raw.decode("utf-8")
+        return raw.decode("utf-8-sig")
     except UnicodeDecodeError as error:
         line = raw[:error.start].count(b"\n") + 1
         raise SceneError("the file is not UTF-8 text", file=name, line=line) from None

@@ -10,33 +10,41 @@ it cannot follow gives None (the message then has the key path only).
 import json
 import re
 
-_TOKEN = re.compile(r'''
+_TOKEN = re.compile(r"""
     (?P<newline>\n)
   | (?P<space>[ \t\r]+)
   | (?P<comment>\#[^\n]*)
-  | (?P<string>"(?:[^"\\\n]|\\.)*"|'[^'\n]*')
+  | (?P<string>"[^"\\\n]*(?:\\.[^"\\\n]*)*"|'[^'\n]*')
   | (?P<punct>[{}\[\],:=.])
   | (?P<bare>[A-Za-z0-9_+\-]+(?:[.:][0-9][A-Za-z0-9_+\-:.]*)?)
-''', re.VERBOSE)
+""", re.VERBOSE)
+# (The string pattern is "unrolled": runs of plain characters between escapes, so a
+# long string is matched by one character-class loop instead of one alternation per
+# character, which made Python's matcher keep a backtracking frame per character:
+# about 250 bytes of memory per byte of the string.)
+
+
+class _Unknown(Exception):
+    """The text holds something the tokenizer does not follow."""
 
 
 def _tokens(text):
-    """(kind, text, line) tuples; None when the text holds something else (such as a
-    multi-line string)."""
-    out, line, pos = [], 1, 0
+    """(kind, text, line) tuples, one at a time, then ("end", "", line); raises
+    :class:`_Unknown` at anything else (such as a multi-line string)."""
+    line, pos = 1, 0
+    match = _TOKEN.match
     while pos < len(text):
-        m = _TOKEN.match(text, pos)
+        m = match(text, pos)
         if m is None:
-            return None
+            raise _Unknown()
         kind = m.lastgroup
         if kind == "newline":
-            out.append(("newline", "\n", line))
+            yield ("newline", "\n", line)
             line += 1
         elif kind not in ("space", "comment"):
-            out.append((kind, m.group(), line))
+            yield (kind, m.group(), line)
         pos = m.end()
-    out.append(("end", "", line))
-    return out
+    yield ("end", "", line)
 
 
 def _key(token):
@@ -47,26 +55,43 @@ def _key(token):
 
 
 class _Reader:
-    def __init__(self, tokens, lines):
-        self.t, self.i, self.lines = tokens, 0, lines
+    """Reads the token stream once, with one token of lookahead, and records in
+    ``lines`` where the values on the way to ``target`` (a key path tuple) start:
+    memory stays proportional to the depth of the path, not to the size of the
+    text."""
+
+    def __init__(self, tokens, target):
+        self.tokens, self.target, self.lines = tokens, target, {}
+        self.ahead = next(self.tokens)
+
+    def _next(self):
+        token = self.ahead
+        if token[0] != "end":
+            self.ahead = next(self.tokens)
+        return token
+
+    def note(self, path, line):
+        if path == self.target[:len(path)]:
+            self.lines.setdefault(path, line)
 
     def peek(self, skip_newlines=True):
-        while skip_newlines and self.t[self.i][0] == "newline":
-            self.i += 1
-        return self.t[self.i]
+        while skip_newlines and self.ahead[0] == "newline":
+            self._next()
+        return self.ahead
 
     def take(self, skip_newlines=True):
-        token = self.peek(skip_newlines)
-        self.i += 1
-        return token
+        self.peek(skip_newlines)
+        return self._next()
 
     def value(self, path):
         """Read one value, recording the line where it starts under ``path``."""
         kind, text, line = self.take()
-        self.lines.setdefault(path, line)
+        self.note(path, line)
         if text == "[":
             n = 0
             while self.peek()[1] != "]":
+                if self.peek()[0] == "end":
+                    raise _Unknown()
                 self.value(path + (n,))
                 n += 1
                 if self.peek()[1] == ",":
@@ -74,29 +99,32 @@ class _Reader:
             self.take()
         elif text == "{":
             while self.peek()[1] != "}":
+                if self.peek()[0] == "end":
+                    raise _Unknown()
                 self.value(self.keys(path))
                 if self.peek()[1] == ",":
                     self.take()
             self.take()
         elif kind not in ("string", "bare"):
-            raise ValueError(f"unexpected {text!r} on line {line}")
+            raise _Unknown()
 
     def keys(self, path):
         """Read ``key.key = `` (TOML) or ``"key":`` (JSON); return the value's path."""
         while True:
             token = self.take()
+            if token[0] == "end":
+                raise _Unknown()
             path = path + (_key(token),)
-            self.lines.setdefault(path, token[2])
+            self.note(path, token[2])
             sep = self.take()[1]
             if sep != ".":
                 if sep not in ("=", ":"):
-                    raise ValueError(f"expected '=' or ':' on line {token[2]}")
+                    raise _Unknown()
                 return path
 
 
-def _toml(tokens):
-    lines, counts = {}, {}
-    r = _Reader(tokens, lines)
+def _toml(r):
+    counts = {}
     table = ()
     while r.peek()[0] != "end":
         token = r.peek()
@@ -108,6 +136,8 @@ def _toml(tokens):
             names = []
             while r.peek(False)[1] != "]":
                 tok = r.take(False)
+                if tok[0] in ("end", "newline"):
+                    raise _Unknown()
                 if tok[1] != ".":
                     names.append(_key(tok))
             r.take(False)
@@ -115,10 +145,10 @@ def _toml(tokens):
                 r.take(False)
             table = _table_path(names, counts, double)
             for n in range(1, len(table) + 1):
-                lines.setdefault(table[:n], token[2])
+                r.note(table[:n], token[2])
         else:
             r.value(r.keys(table))
-    return lines
+    return r.lines
 
 
 def _table_path(names, counts, array):
@@ -144,22 +174,21 @@ def parse_path(path):
 
 def line_of(text, format, path):
     """The line where the value at ``path`` (a key-path string) starts, or where its
-    nearest enclosing value starts; None if unknown."""
-    tokens = _tokens(text)
-    if tokens is None:
-        return None
-    try:
-        lines = _toml(tokens) if format == "toml" else _json(tokens)
-    except (ValueError, IndexError, RecursionError):
-        return None
+    nearest enclosing value starts; None if unknown.  One pass over the text, in
+    memory proportional to the path's depth."""
     keys = parse_path(path)
+    reader = None
+    try:
+        reader = _Reader(_tokens(text), keys)
+        lines = _toml(reader) if format == "toml" else _json(reader)
+    except (_Unknown, ValueError, IndexError, RecursionError, StopIteration):
+        lines = reader.lines if reader is not None else {}
     for n in range(len(keys), 0, -1):
         if keys[:n] in lines:
             return lines[keys[:n]]
     return None
 
 
-def _json(tokens):
-    lines = {}
-    _Reader(tokens, lines).value(())
-    return lines
+def _json(r):
+    r.value(())
+    return r.lines

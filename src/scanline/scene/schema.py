@@ -15,6 +15,7 @@ from .. import transform as tf
 from ..display import DisplayFile
 from ..display.viewing import aspect
 from ..errors import ScanlineError
+from ..framebuffer import check_image_size
 from .files import SceneError
 
 #: The schema versions this module reads.
@@ -177,6 +178,11 @@ class Canvas:
         d = _table(data, path, _CANVAS)
         self.width = _size(d.get("width", 400), f"{path}.width")
         self.height = _size(d.get("height", 300), f"{path}.height")
+        try:
+            check_image_size(self.width, self.height, 1,
+                             f"{path}.width x {path}.height = {self.width} x {self.height}")
+        except ScanlineError as error:
+            raise SceneError(str(error), path=f"{path}.width") from None
         self.background = _call(path, color, "background", d.get("background", "white"))
         self.highlight = _call(path, color, "highlight", d.get("highlight", "magenta"))
         mode = d.get("mode", "RGB")

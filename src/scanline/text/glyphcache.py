@@ -22,6 +22,14 @@ import numpy as np
 #: Tallest glyph image (pixels, the scaled em size) kept in the cache.
 MAX_CACHED = 256
 
+#: Largest glyph image (pixels) made for the cache: 2048 x 2048, eight ems at the
+#: largest cached size.  A glyph whose outline reaches farther (a hostile font
+#: with points at +-32767 units and 16 units per em) is refused, not allocated.
+MAX_GLYPH_PIXELS = 1 << 22
+
+#: Largest total of the glyph images of one cache (64 MiB of masks).
+MAX_ATLAS_PIXELS = 1 << 26
+
 #: How many (font, size, orientation, antialias) caches are kept (least recently
 #: used dropped first).  An entry holds its font too, so a font's id cannot be
 #: reused by another font while the entry lives.
@@ -35,9 +43,19 @@ def device_contours(font, gid, matrix, tolerance):
     return [c @ matrix.T for c in font._ink(gid, tolerance)]
 
 
-def _render(contours, antialias):
+def _too_large(font, gid, pixels, limit, what):
+    from ..errors import ArgumentValueError
+    name = font._names[gid] if hasattr(font, "_names") and gid < len(font._names) else gid
+    return ArgumentValueError(
+        f"font {font.source!r}: glyph {name!r} would make {what} of {pixels:,} pixels, more "
+        f"than the {limit:,} scanline allocates (its outline lies far outside its em "
+        "square); use another font or a smaller height")
+
+
+def _render(contours, antialias, font=None, gid=None):
     """``(x0, y0, w, h, mask)``: the glyph's pixels as a bottom-up uint8 mask whose
-    bottom-left pixel is ``(x0, y0)`` relative to the origin."""
+    bottom-left pixel is ``(x0, y0)`` relative to the origin; a mask larger than
+    MAX_GLYPH_PIXELS is refused before it is allocated."""
     from ..framebuffer import FrameBuffer
     pts = [c for c in contours if len(c)]
     if not pts:
@@ -51,6 +69,8 @@ def _render(contours, antialias):
     h = int(np.floor(hi[1])) + pad - y0 + 1
     if w <= 0 or h <= 0:
         return 0, 0, 0, 0, np.zeros(0, np.uint8)
+    if w * h > MAX_GLYPH_PIXELS:
+        raise _too_large(font, gid, w * h, MAX_GLYPH_PIXELS, "an image")
     fb = FrameBuffer(w, h, mode="L", background=0)
     shifted = [c - (x0, y0) for c in pts]
     if antialias:
@@ -94,6 +114,7 @@ class GlyphImages:
     def __init__(self, font, matrix, antialias, tolerance):
         self.font, self.matrix, self.antialias = font, matrix, antialias
         self.tolerance = tolerance
+        self.pixels = 0
         self.mask_of = np.full(len(font.advances), -1, np.int64)
         self._parts, self._meta, self._runs = [], [], []
         self.atlas = np.zeros(0, np.uint8)
@@ -110,7 +131,12 @@ class GlyphImages:
             return ids
         for g in np.unique(gids[ids < 0]):
             x0, y0, w, h, mask = _render(
-                device_contours(self.font, int(g), self.matrix, self.tolerance), self.antialias)
+                device_contours(self.font, int(g), self.matrix, self.tolerance), self.antialias,
+                self.font, int(g))
+            if self.pixels + w * h > MAX_ATLAS_PIXELS:
+                raise _too_large(self.font, int(g), self.pixels + w * h, MAX_ATLAS_PIXELS,
+                                 "a glyph cache")
+            self.pixels += w * h
             self.mask_of[g] = len(self._meta)
             self._meta.append((x0, y0, w, h))
             self._parts.append(mask)

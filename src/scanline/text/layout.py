@@ -33,7 +33,7 @@ import math
 import numpy as np
 
 from .. import _validate as v
-from ..errors import ArgumentTypeError
+from ..errors import ArgumentTypeError, ArgumentValueError
 from .catalog import font as resolve_font
 from .catalog import NEWLINE
 from .style import resolve
@@ -73,11 +73,30 @@ class Placement:
         return tuple((self.rotation @ np.array(self.end) + self.reference).tolist())
 
 
+#: Longest string drawn, placed or measured: 2**20 characters (a few hundred pages;
+#: the placement arrays take about 100 bytes per character).
+MAX_CHARACTERS = 1 << 20
+
+#: Longest string :func:`layout` places: it makes one Python object per character.
+MAX_LAYOUT = 100_000
+
+
+def check_length(text, limit=MAX_CHARACTERS, what="drawn or measured"):
+    """Refuse a string longer than ``limit`` characters before anything is allocated."""
+    if not isinstance(text, str):
+        raise ArgumentTypeError(f"text must be a str, got {v._show(text)}")
+    if len(text) > limit:
+        raise ArgumentValueError(
+            f"text has {len(text):,} characters; a string {what} has at most {limit:,}"
+            + ("; draw it with sl.draw.text or measure it with sl.text.extents"
+               if limit == MAX_LAYOUT else "; split it"))
+    return text
+
+
 def codes_of(text):
     """Code points of a string as a uint32 array (writable, as kernels take arrays:
     a read-only one would compile a second specialization)."""
-    if not isinstance(text, str):
-        raise ArgumentTypeError(f"text must be a str, got {v._show(text)}")
+    check_length(text)
     return np.frombuffer(bytearray(text.encode("utf-32-le", "surrogatepass")), np.uint32)
 
 
@@ -340,11 +359,45 @@ class PlacedGlyph:
         return self._raster()[1]
 
 
-def _cell_corners(font, gid, matrix, origin):
-    a = font.advances[gid]
-    local = np.array([(0, font.descent), (a, font.descent), (a, font.ascent),
-                      (0, font.ascent)])
-    return local @ matrix.T + origin
+def cells(p):
+    """The device bounding boxes of the character bodies of a placement, (n, 4):
+    xmin, ymin, xmax, ymax of the cell (advance x bottom line .. top line), turned
+    by the placement's matrix and moved to each origin."""
+    font = p.font
+    a = font.advances[p.gids]
+    m = p.matrix
+    xs, ys = [], []
+    for u, w in ((0.0, font.descent), (1.0, font.descent), (1.0, font.ascent),
+                 (0.0, font.ascent)):
+        xs.append(m[0, 0] * a * u + m[0, 1] * w + p.ox)
+        ys.append(m[1, 0] * a * u + m[1, 1] * w + p.oy)
+    xs, ys = np.stack(xs, axis=1), np.stack(ys, axis=1)
+    return np.stack([xs.min(1), ys.min(1), xs.max(1), ys.max(1)], axis=1)
+
+
+def glyphs(text, p, select=None):
+    """PlacedGlyph objects for the characters ``select`` (indices into the placement
+    ``p``; default all) of ``text``."""
+    out = []
+    outline = p.font.kind != "stroke"
+    boxes = cells(p)
+    for k in (range(len(p.gids)) if select is None else select):
+        k = int(k)
+        g = PlacedGlyph()
+        gid = int(p.gids[k])
+        g.char = text[p.index[k]]
+        g.index = int(p.index[k])
+        g.glyph, g.font, g.matrix = gid, p.font, p.matrix
+        g.origin = (int(p.ox[k]), int(p.oy[k]))
+        ink = [c @ p.matrix.T + g.origin for c in p.font._ink(gid, p.tolerance)]
+        g.contours = ink if outline else None
+        g.strokes = None if outline else ink
+        g.box = _box(np.vstack(ink)) if ink else None
+        g.cell = tuple(boxes[k].tolist())
+        g._tolerance = p.tolerance
+        g._bitmap = None
+        out.append(g)
+    return out
 
 
 def layout(text, x=0.0, y=0.0, *, font=None, height=None, expansion=None, spacing=None,
@@ -355,7 +408,8 @@ def layout(text, x=0.0, y=0.0, *, font=None, height=None, expansion=None, spacin
     Parameters
     ----------
     text : str
-        Newlines start new lines (paths right/left) or columns (paths up/down).
+        Newlines start new lines (paths right/left) or columns (paths up/down); at
+        most :data:`MAX_LAYOUT` characters (one object each).
     x, y : float
         Reference point, device coordinates.
     font, height, expansion, spacing, angle, up, path, align
@@ -376,27 +430,11 @@ def layout(text, x=0.0, y=0.0, *, font=None, height=None, expansion=None, spacin
     >>> [(g.char, g.origin, g.box) for g in glyphs]
     [('H', (10, 20), (10.0, 20.0, 15.0, 27.0)), ('i', (16, 20), (17.0, 20.0, 20.0, 27.0))]
     """
+    check_length(text, MAX_LAYOUT, "laid out")
     p = place(text, x, y, resolve(style, font=font, height=height, expansion=expansion,
                                   spacing=spacing, angle=angle, up=up, path=path,
                                   align=align))
-    out = []
-    outline = p.font.kind != "stroke"
-    for k in range(len(p.gids)):
-        g = PlacedGlyph()
-        gid = int(p.gids[k])
-        g.char = text[p.index[k]]
-        g.index = int(p.index[k])
-        g.glyph, g.font, g.matrix = gid, p.font, p.matrix
-        g.origin = (int(p.ox[k]), int(p.oy[k]))
-        ink = [c @ p.matrix.T + g.origin for c in p.font._ink(gid, p.tolerance)]
-        g.contours = ink if outline else None
-        g.strokes = None if outline else ink
-        g.box = _box(np.vstack(ink)) if ink else None
-        g.cell = _box(_cell_corners(p.font, gid, p.matrix, g.origin))
-        g._tolerance = p.tolerance
-        g._bitmap = None
-        out.append(g)
-    return out
+    return glyphs(text, p)
 
 
 class Extents:

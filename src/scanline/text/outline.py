@@ -19,31 +19,59 @@ import numpy as np
 from fontTools.pens.basePen import BasePen
 from fontTools.ttLib import TTFont
 
+from .._files import input_path
 from ..errors import ArgumentValueError
 from ..geometry import flatten
 from .catalog import Font
 
 
+#: Most segments one glyph may have (composites counted with every copy): real
+#: glyphs have hundreds, CJK ones a few thousand.  A hostile font that nests
+#: composites to multiply its outlines is refused when its pen passes this.
+MAX_GLYPH_SEGMENTS = 100_000
+
+#: Deepest nesting of composite glyphs (TrueType fonts use 1-3 levels; FreeType and
+#: the OpenType specification's maxComponentDepth are of this order).
+MAX_COMPOSITE_DEPTH = 16
+
+#: Largest font file read.
+MAX_FONT_BYTES = 256 << 20
+
+
+class _TooComplex(Exception):
+    """A glyph with more than MAX_GLYPH_SEGMENTS segments."""
+
+
 class _SegmentPen(BasePen):
     """Collect a glyph's contours as segments: ('L', p), ('Q', p1, p2) and
     ('C', p1, p2, p3), each continuing from the previous point.  fontTools'
-    BasePen resolves TrueType's implied on-curve points and components."""
+    BasePen resolves TrueType's implied on-curve points and components.  More than
+    MAX_GLYPH_SEGMENTS segments raise :class:`_TooComplex` at once, so a glyph that
+    multiplies its outlines costs bounded time and memory."""
 
     def __init__(self, glyph_set):
         super().__init__(glyph_set)
         self.contours = []
+        self.count = 0
+
+    def _add(self, item):
+        self.count += 1
+        if self.count > MAX_GLYPH_SEGMENTS:
+            raise _TooComplex()
+        self.contours[-1][1].append(item)
 
     def _moveTo(self, p):
+        self.count += 1
         self.contours.append((p, []))
 
     def _lineTo(self, p):
-        self.contours[-1][1].append(("L", p))
+        self._add(("L", p))
 
     def _qCurveToOne(self, p1, p2):
-        self.contours[-1][1].append(("Q", p1, p2))
+        self._add(("Q", p1, p2))
 
     def _curveToOne(self, p1, p2, p3):
-        self.contours[-1][1].append(("C", p1, p2, p3))
+        self._add(("C", p1, p2, p3))
 
 
 def flatten_contours(contours, tolerance):
@@ -134,9 +162,9 @@ class OutlineFont(Font):
 
     def __init__(self, path, name=None, license="see the font file"):
         super().__init__(name or os.path.basename(path), path, license)
-        if not os.path.isfile(path):
-            raise ArgumentValueError(f"font file {path!r} does not exist")
+        input_path(path, "font file", MAX_FONT_BYTES)
         self._flat = {}
+        self._depth = {}
         try:
             with _quiet():
                 font = TTFont(path, fontNumber=0, lazy=False)
@@ -193,13 +221,41 @@ class OutlineFont(Font):
                 return float(b[3])
         return fraction * self.units_per_em
 
+    def _composite_depth(self, name, active=()):
+        """How deeply the ``glyf`` glyph ``name`` nests composites (0: a simple
+        glyph), or raise once it passes MAX_COMPOSITE_DEPTH or contains itself."""
+        if name in self._depth:
+            return self._depth[name]
+        if name in active:
+            raise ValueError(f"composite glyph {name!r} contains itself")   # corrupt data
+        if len(active) > MAX_COMPOSITE_DEPTH:
+            raise _TooComplex()
+        glyph = self._font["glyf"][name]
+        depth = 0
+        if glyph.isComposite():
+            depth = 1 + max(self._composite_depth(c.glyphName, active + (name,))
+                            for c in glyph.components)
+        self._depth[name] = depth
+        return depth
+
     def _contours(self, gid):
         """The pen contours of glyph ``gid``; a glyph fontTools cannot decode is
-        drawn as the replacement box rather than raising mid-string."""
+        drawn as the replacement box rather than raising mid-string.  A glyph that
+        nests composites more than MAX_COMPOSITE_DEPTH deep or has more than
+        MAX_GLYPH_SEGMENTS segments is refused: an ArgumentValueError naming the
+        font and the glyph."""
         pen = _SegmentPen(self._glyphs)
+        name = self._names[gid]
         try:
             with _quiet():
-                self._glyphs[self._names[gid]].draw(pen)
+                if "glyf" in self._font:
+                    self._composite_depth(name)
+                self._glyphs[name].draw(pen)
+        except _TooComplex:
+            raise ArgumentValueError(
+                f"font file {self.source!r}: glyph {name!r} is too complex to draw (composites "
+                f"nested more than {MAX_COMPOSITE_DEPTH} deep, or more than "
+                f"{MAX_GLYPH_SEGMENTS:,} outline segments); use another font") from None
         except Exception:  # fontTools raises many types on corrupt glyph data (and a
             return None    # RecursionError on a composite glyph that contains itself)
         return pen.contours

@@ -24,9 +24,18 @@ from .. import _validate as v
 from ..curves.bezier import Bezier
 from ..curves.bspline import basis, knot_span
 from ..errors import ArgumentValueError
+from .lines import MAX_STEPS
 from .table import Table
 
 _AXES = ("x", "y", "z")
+
+
+def _largest_triangle():
+    """Most control points whose de Casteljau triangle fits in MAX_STEPS rows."""
+    n = 1
+    while (n + 1) * (n + 2) // 2 <= MAX_STEPS:
+        n += 1
+    return n
 
 
 def de_casteljau(points, u=0.5):
@@ -41,6 +50,12 @@ def de_casteljau(points, u=0.5):
     curve = Bezier(points)
     if curve.dimension > 3:
         raise ArgumentValueError(f"points must be 2-D or 3-D, got {curve.dimension}-D points")
+    rows = (curve.degree + 1) * (curve.degree + 2) // 2
+    if rows > MAX_STEPS:
+        raise ArgumentValueError(
+            f"points: de Casteljau's triangle of {curve.degree + 1} control points has "
+            f"{rows:,} rows; a trace lists at most {MAX_STEPS:,} (at most "
+            f"{_largest_triangle()} control points)")
     triangle = curve.de_casteljau(u)
     u = v.number("u", u)
     axes = _AXES[: curve.dimension]

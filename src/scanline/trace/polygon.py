@@ -107,8 +107,11 @@ def scan_line_fill(points, rule="even-odd"):
         step, fill = python(k.step_active), python(k.fill_row)
         nact = nxt = 0
         for r in range(rmin, rmax + 1):
-            nact, nxt = step(et, ef, r, oy, ox, counts[r - rmin], nxt, nact, order, active,
-                             keys, dirs)
+            nact, nxt, ordered = step(et, ef, r, oy, ox, counts[r - rmin], nxt, nact, order,
+                                      active, keys, dirs)
+            if not ordered:
+                python(k.sort_active)(et, active, keys, dirs, nact, np.zeros(n), np.zeros(n),
+                                      np.zeros(n, np.int64))
             fill(buf, layout(False), width, height, r, keys, dirs, nact, mask,
                  np.array([1], np.uint8))
             xs = np.flatnonzero(buf[r, :, 0])

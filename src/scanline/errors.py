@@ -17,3 +17,8 @@ class ArgumentValueError(ScanlineError, ValueError):
 
 class ArgumentTypeError(ScanlineError, TypeError):
     """An argument has a type scanline cannot use."""
+
+
+class ImageFileError(ArgumentValueError):
+    """An image file cannot be read: missing, not an image, truncated or damaged, or
+    larger than Pillow's decompression-bomb limit."""

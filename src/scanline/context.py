@@ -99,8 +99,8 @@ class Context:
         s = _State()
         s.ctm = np.eye(3)
         s.line = p.line_attributes()
-        s.fill = {"color": "white", "rule": "even-odd", "style": None, "edge": None}
-        s.text = {"color": "white", "font": "stroke", "height": 10.0, "angle": 0.0,
+        s.fill = {"color": None, "rule": "even-odd", "style": None, "edge": None}
+        s.text = {"color": None, "font": "stroke", "height": 10.0, "angle": 0.0,
                   "align": ("left", "base"), "expansion": 1.0, "spacing": 0.0,
                   "path": "right", "clip": "stroke"}
         s.clip = (-0.5, -0.5, self._device.width - 0.5, self._device.height - 0.5)

@@ -139,6 +139,8 @@ class FrameBuffer:
             self.color_table = color_table
         elif color_table is not None:
             raise ArgumentValueError(f"color_table is only for mode 'P', not mode {mode!r}")
+        if background is None:
+            raise ArgumentTypeError("background=None is not a color; use a color such as 'black'")
         self._background = self.pixel(background, "background")
         self._buf = np.empty((height, row_bytes, _CHANNELS[mode]), np.uint8)
         self.clear()
@@ -323,6 +325,8 @@ class FrameBuffer:
         there and :meth:`get_pixel` returns its ``default`` (None).  The color is
         checked either way."""
         x, y, inside = self._check_xy(x, y)
+        if color is None:
+            raise ArgumentTypeError("color=None: set_pixel needs a color, e.g. fb.foreground")
         value = self.pixel(color)
         if not inside:
             return

@@ -23,6 +23,7 @@ _LAZY = {
     "ScanlineError": ("scanline.errors", "ScanlineError"),
     "ArgumentValueError": ("scanline.errors", "ArgumentValueError"),
     "ArgumentTypeError": ("scanline.errors", "ArgumentTypeError"),
+    "ImageFileError": ("scanline.errors", "ImageFileError"),
     "draw": ("scanline.draw", None),
     "trace": ("scanline.trace", None),
     "color": ("scanline.color", None),

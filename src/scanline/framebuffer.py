@@ -435,8 +435,12 @@ class FrameBuffer:
             else "L" if a.ndim == 2
             else {3: "RGB", 4: "RGBA"}.get(a.shape[2])
         )
+        if inferred is None:
+            raise ArgumentValueError(
+                f"array of shape {a.shape} is not an image; use (h, w), (h, w, 1), (h, w, 3) "
+                "or (h, w, 4)")
         mode = inferred if mode is None else v.choice("mode", mode, MODES)
-        if inferred is None or (mode != inferred and not (mode == "P" and inferred == "L")):
+        if (mode != inferred and not (mode == "P" and inferred == "L")):
             raise ArgumentValueError(
                 f"array of shape {a.shape} and dtype {a.dtype} does not hold mode {mode!r} pixels; "
                 "use bool (h, w) for '1', (h, w) for 'L' or 'P', (h, w, 3|4) for 'RGB'/'RGBA'"

@@ -26,10 +26,11 @@ def register(subparsers):
         "bit per pixel (a black-and-white bitmap).",
     )
     parser.add_argument("input", metavar="IN", help="the image to read (any format Pillow reads)")
-    parser.add_argument("output", metavar="OUT", help="the image to write (.png, .gif or .bmp)")
+    parser.add_argument("output", metavar="OUT", help="the image to write (any format Pillow writes: .png, .jpg, .webp, .tif, "
+                        ".gif, .bmp ...)")
     parser.add_argument("--method", choices=METHODS, default="floyd-steinberg",
                         help="floyd-steinberg (error diffusion, default), bayer2, bayer4, "
-                        "bayer8 (ordered dithering) or none (round to the nearest)")
+                        "bayer8 (ordered dithering; ordered is bayer4) or none (round to the nearest)")
     parser.add_argument("--levels", metavar="N", type=int, default=None,
                         help="gray levels, 2 to 256 (default 2: a bitmap; 4 = 2 bits per pixel)")
     parser.add_argument("--color", action="store_true",

@@ -6,10 +6,19 @@ import json
 
 
 def _cell(value):
+    """A value as the table prints it: floats to 6 decimals, except one that would
+    then read as a rounding tie or a whole number it is not (the DDA's
+    3.4999999999999996, which rounds to 3, is not shown as 3.5): all its digits.
+
+    >>> _cell(0.25), _cell(1 / 3), _cell(3.4999999999999996), _cell(2.0000000000000004)
+    ('0.25', '0.333333', '3.4999999999999996', '2.0000000000000004')
+    """
     if value is None:
         return ""
     if isinstance(value, float):
         text = f"{value:.6f}".rstrip("0").rstrip(".")
+        if float(text) != value and float(text) * 2 == round(float(text) * 2):
+            return repr(value)
         return "0" if text == "-0" else text
     return str(value)
 

@@ -80,6 +80,12 @@ CLI_CASES = {
     "storyboard scene": ["storyboard", os.path.join(os.path.dirname(HERE), "examples",
                                                     "scenes", "bouncing_ball.toml"),
                          "-o", "{out}/b.png"],
+    "trace cohen-sutherland-3d": ["trace", "cohen-sutherland-3d", "-5", "2", "5", "15", "22",
+                                  "5"],
+    "trace liang-barsky-3d": ["trace", "liang-barsky-3d", "0.5", "0.5", "1", "0.5", "0.5",
+                              "-3", "--w", "2", "-2"],
+    "render perspective scene": ["render", os.path.join(SCENES, "perspective.toml"), "-o",
+                                 "{out}/p.png"],
     "draw command": ["draw", "--size", "64x48", "line", "2", "3", "60", "40", "circle", "32", "24",
                      "15", "-o", "{out}/d.png"],
 }
@@ -193,6 +199,9 @@ def main(argv=None):
         for name, mode, _ in todo:
             print(name if mode is None else f"{name} [{mode}]")
         return 0
+    if not todo:
+        print(f"no case matches {args.only!r} (see --list)", file=sys.stderr)
+        return 2
     rows = []
     print(f"scanline compile budget: {len(todo)} cases, each in a fresh process with an empty "
           f"numba cache; {platform.processor() or platform.machine()}, "

@@ -43,6 +43,11 @@ _LAZY = {
     "TextStyle": ("scanline.text.style", "TextStyle"),
     "animation": ("scanline.animation", None),
     "raster": ("scanline.raster", None),
+    "transform3d": ("scanline.transform3d", None),
+    "projection": ("scanline.projection", None),
+    "Camera": ("scanline.projection", "Camera"),
+    "mesh": ("scanline.mesh", None),
+    "draw3d": ("scanline.draw3d", None),
 }
 
 __all__ = sorted(_LAZY) + ["__version__"]

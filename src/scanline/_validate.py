@@ -142,3 +142,23 @@ def kernel_array(a, dtype=np.float64):
     (the compile-time rule of :mod:`scanline._kernels`, rule 2)."""
     a = np.ascontiguousarray(a, dtype)
     return a if a.flags.writeable else a.copy()
+
+
+def real_array(name, value, expected):
+    """``value`` as a float64 array (not copied when it is one), or an error naming
+    ``name``; ``expected`` describes the shape that would work, for the message."""
+    try:
+        a = np.asarray(value)
+        if a.dtype == object:
+            a = a.astype(np.float64)
+    except OverflowError:
+        raise ArgumentValueError(
+            f"{name} holds a number too large for float64: {_show(value)}") from None
+    except (TypeError, ValueError):
+        raise ArgumentTypeError(
+            f"{name} must be a numeric array of shape {expected}, got {_show(value)}"
+        ) from None
+    if a.dtype == bool or a.dtype.kind not in "iuf":
+        raise ArgumentTypeError(
+            f"{name} must hold real numbers ({expected}), got an array of dtype {a.dtype}")
+    return np.asarray(a, dtype=np.float64)

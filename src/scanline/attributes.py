@@ -501,7 +501,7 @@ class FillStyle:
                        for spec, (r, c) in zip(self._palette, self._where)]
         lut = np.array([fb.pixel(spec, name) for spec, name in entries])
         buf, packed = fb._raster()
-        call(paint_styled, 2 * mask.shape[0] * mask.shape[1], buf, layout(packed), hatch,
+        call(paint_styled, mask.shape[0] * mask.shape[1] / 2, buf, layout(packed), hatch,
              fb.width, fb.height, mask, x0, y0, ax, ay, cells, families, spacing, other, lut)
 
 

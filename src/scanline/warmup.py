@@ -183,6 +183,28 @@ CALLS = {
                                            "(np.linspace(0, 3, 50))", None),
     "motion path": ("animation", "sl.animation.MotionPath(sl.curves.Bezier([(0, 0), (0, 9), "
                                  "(9, 9), (9, 0)])).point(np.linspace(0, 1, 20))", None),
+    "camera project": ("three_d", "sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)).project("
+                                  "np.random.default_rng(0).uniform(-1, 1, (100, 3)), 96, 64)",
+                       None),
+    "clip lines3d liang-barsky": ("three_d", "sl.clip.lines3d(np.random.default_rng(1).uniform("
+                                             "-5, 15, (100, 6)), ((0, 0, 0), (10, 10, 10)))",
+                                  None),
+    "clip lines3d cohen-sutherland": ("three_d", "sl.clip.lines3d(np.random.default_rng(1)"
+                                                 ".uniform(-5, 15, (100, 6)), ((0, 0, 0), "
+                                                 "(10, 10, 10)), method='cohen-sutherland')",
+                                      None),
+    "clip homogeneous": ("three_d", "sl.clip.homogeneous([[(1, 1, 1, 2), (1, 1, -3, -2)]])",
+                         None),
+    "clip polygon3d": ("three_d", "sl.clip.polygon3d([(-1, 0.5, 0.5), (2, 0.5, 0.5), "
+                                  "(0.5, 2, 0.5)], ((0, 0, 0), (1, 1, 1)))", None),
+    "wireframe": ("three_d", "sl.draw3d.wireframe(fb, sl.mesh.torus(1, 0.3), "
+                             "sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)), color='black')", RGB),
+    "wireframe depth cue": ("three_d", "sl.draw3d.wireframe(fb, sl.mesh.sphere(), "
+                                       "sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)), "
+                                       "color='black', depth_cue=True)", RGB),
+    "draw3d polylines thick": ("three_d", "sl.draw3d.polylines(fb, [[(0, 0, 0), (1, 1, 0), "
+                                          "(1, 0, 1)]], sl.Camera(eye=(3, 2, 4), "
+                                          "target=(0, 0, 0)), color='black', width=3)", RGB),
     "four calls": ("mixed", "sl.draw.line(fb, 3, 4, 90, 50, color='black'); "
                             f"sl.draw.polygon(fb, {STAR}, color='navy', rule='nonzero'); "
                             "sl.draw.text(fb, 4, 20, 'Hello', color='black', height=14); "

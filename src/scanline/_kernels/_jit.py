@@ -55,9 +55,11 @@ COMPILE = os.environ.get("SCANLINE_COMPILE", "auto")
 if COMPILE not in ("auto", "always", "never"):
     raise ValueError(f"SCANLINE_COMPILE must be auto, always or never, got {COMPILE!r}")
 
-#: Most work units (about one Python operation each: a pixel written, a step taken)
-#: for which a kernel that is neither compiled nor cached runs as Python: ~10-50 ms.
-TWIN_WORK = 20_000
+#: Most work units for which a kernel that is neither compiled nor cached runs as
+#: Python.  A unit is about one microsecond of the twin's time (the estimates of the
+#: API layer are scaled so, measured per kernel): at most ~0.1 s, against seconds of
+#: compilation.
+TWIN_WORK = 100_000
 
 #: Seconds a process may spend in one kernel's Python twin before the kernel is
 #: compiled after all (many small calls: compiling then pays).

@@ -12,44 +12,33 @@ from .figures import PAPER, PIXEL, HIGHLIGHT, Figure
 LIGHT = "#c8cdd8"
 
 
-def _view(points, azimuth=-0.6, elevation=0.45):
-    """Orthographic view from above: rotate about z by ``azimuth``, look down at
-    ``elevation``; returns right-handed (x, y, depth), depth growing toward the viewer."""
-    ca, sa, ce, se = np.cos(azimuth), np.sin(azimuth), np.cos(elevation), np.sin(elevation)
-    x = ca * points[..., 0] - sa * points[..., 1]
-    y0 = sa * points[..., 0] + ca * points[..., 1]
-    z = points[..., 2]
-    return np.stack([x, ce * z + se * y0, se * z - ce * y0], axis=-1)
-
-
-def _to_device(xy, lo, hi, size, margin=8):
-    scale = (size - 2 * margin) / (hi - lo).max()
-    return (xy - lo) * scale + margin
+def _camera(target, window):
+    """An orthographic camera from above the +x, -y quadrant, z up (the teapot stands
+    on z = 0)."""
+    return sl.Camera(eye=np.asarray(target) + (6.0, -9.5, 7.0), target=target, up=(0, 0, 1),
+                     projection=sl.projection.orthographic(window=window))
 
 
 def figure_teapot():
     """The Utah teapot tessellated and drawn as a wireframe."""
-    verts, tris, normals = sl.curves.teapot_mesh(6)
-    view = _view(verts)
-    xy = view[:, :2]
-    lo, hi = xy.min(0), xy.max(0)
-    size = 360
-    p = _to_device(xy, lo, hi, size)
-    fb = sl.FrameBuffer(size, int((hi - lo)[1] / (hi - lo).max() * (size - 16)) + 16, background=PAPER)
+    pot = sl.mesh.teapot(6)
+    cam = _camera((0.2, 0.0, 1.5), (-3.6, -2.6, 3.6, 2.6))
+    size = 360, 272
+    fb = sl.FrameBuffer(*size, background=PAPER)
+    p = cam.project(pot.vertices, *size)[:, :2]
+    tris = pot.faces
     a, b, c = p[tris[:, 0]], p[tris[:, 1]], p[tris[:, 2]]
     u, w = b - a, c - a
     facing = u[:, 0] * w[:, 1] - u[:, 1] * w[:, 0] > 0   # counterclockwise on screen: front face
     for front, color in ((False, LIGHT), (True, PIXEL)):
-        t = tris[facing == front]
-        edges = np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]])
-        edges = np.unique(np.sort(edges, axis=1), axis=0)
-        sl.draw.lines(fb, np.hstack([p[edges[:, 0]], p[edges[:, 1]]]), color=color)
+        sl.draw3d.wireframe(fb, sl.mesh.Mesh(pot.vertices, tris[facing == front]), cam,
+                            color=color)
     return Figure(
         "teapot", "The Utah teapot, 32 bicubic Bezier patches",
         f"Newell's teapot (1975): 32 patches, 306 control points, tessellated 6 x 6 per "
-        f"patch and welded into {len(verts)} vertices and {len(tris)} triangles, seen in "
-        "an orthographic view computed with numpy. Triangles facing the viewer "
-        "(counterclockwise on screen: the mesh's normals point outward) are blue, "
+        f"patch and welded into {len(pot.vertices)} vertices and {len(pot)} triangles "
+        "(sl.mesh.teapot), drawn through an orthographic sl.Camera. Triangles facing the "
+        "viewer (counterclockwise on screen: the mesh's normals point outward) are blue, "
         "the others light gray.",
         "Notes, chapter 5, Q.1 (Bezier surfaces); Crow 1987", fb.to_pil(), None)
 
@@ -60,12 +49,13 @@ def figure_bicubic_patch():
     x, y = np.meshgrid(g, g, indexing="ij")
     z = np.array([[0, 1, 1, 0], [1, 3, 2.5, 0.5], [0.5, 2, 3, 1], [0, 0.5, 1, 0]]) * 0.6
     net = np.stack([x, y, z], axis=-1)
-    view = _view(net, azimuth=-0.5, elevation=0.9)[..., :2]   # linear: curves stay Bezier
-    lo, hi = view.reshape(-1, 2).min(0), view.reshape(-1, 2).max(0)
-    size = 300
-    p = _to_device(view, lo, hi, size, margin=12)
-    fb = sl.FrameBuffer(size, int((hi - lo)[1] / (hi - lo).max() * (size - 24)) + 24,
-                        background=PAPER)
+    # a parallel projection is affine: the projected control points are the control
+    # points of the projected curves
+    cam = sl.Camera(eye=(6.5, -5.0, 9.0), target=(1.5, 1.5, 1.0), up=(0, 0, 1),
+                    projection=sl.projection.orthographic(window=(-3.0, -2.4, 3.0, 2.4)))
+    size = (300, 240)
+    p = cam.project(net.reshape(-1, 3), *size)[:, :2].reshape(4, 4, 2)
+    fb = sl.FrameBuffer(*size, background=PAPER)
     rows = [p[i] for i in range(4)] + [p[:, j] for j in range(4)]
     sl.draw.polylines(fb, rows, color=HIGHLIGHT, dash="dashed")
     iso = []

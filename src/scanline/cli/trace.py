@@ -69,6 +69,14 @@ ALGORITHMS = {
         "Sutherland-Hodgman polygon clipping, boundary by boundary (notes, chapter 4)",
         {}, False,
     ),
+    "cohen-sutherland-3d": (
+        "3-D Cohen-Sutherland clipping with six-bit region codes (Hearn & Baker 12-5)", {},
+        False,
+    ),
+    "liang-barsky-3d": (
+        "3-D Liang-Barsky clipping: p_k, q_k, u1, u2 for six planes (Hearn & Baker 12-5)",
+        {}, False,
+    ),
 }
 
 
@@ -161,6 +169,43 @@ def polygon_options(sub):
 
 OPTIONS.update({"scan-line-fill": polygon_options, "sutherland-hodgman": polygon_options})
 
+
+def clip3d_options(sub):
+    """The segment X0 Y0 Z0 X1 Y1 Z1, ``--volume``, ``--frustum`` and ``--w``."""
+    for name in ("x0", "y0", "z0", "x1", "y1", "z1"):
+        sub.add_argument(name, metavar=name.upper(), type=float,
+                         help=f"{name[0]} of P{name[1]}")
+    group = sub.add_mutually_exclusive_group()
+    group.add_argument("--volume", nargs=6, type=float,
+                       metavar=("XMIN", "YMIN", "ZMIN", "XMAX", "YMAX", "ZMAX"),
+                       help="the clip box (default 0 0 0 10 10 10; z is the depth: zmin "
+                       "is the front plane)")
+    group.add_argument("--frustum", type=float, metavar="ZMIN",
+                       help="clip against the canonical perspective volume z <= x, y <= -z, "
+                       "-1 <= z <= ZMIN instead (-1 < ZMIN < 0)")
+    sub.add_argument("--w", nargs=2, type=float, metavar=("W0", "W1"),
+                     help="homogeneous endpoints (x, y, z, w), clipped against the unit "
+                     "cube 0 <= x, y, z <= w before the divide (w may be negative: "
+                     "behind the eye)")
+    sub.set_defaults(adapt=_clip3d_arguments)
+    return ["x0", "y0", "z0", "x1", "y1", "z1", "volume", "frustum", "w"]
+
+
+def _clip3d_arguments(values, options):
+    """The command line's numbers as the tracer's arguments."""
+    from ..clip.volumes import box, frustum
+
+    p = [options.pop(n) for n in ("x0", "y0", "z0", "x1", "y1", "z1")]
+    if "volume" in options:
+        b = options.pop("volume")
+        options["volume"] = box(b[:3], b[3:])
+    if "frustum" in options:
+        options["volume"] = frustum(options.pop("frustum"))
+    return [p[:3], p[3:]], options
+
+
+OPTIONS.update({"cohen-sutherland-3d": clip3d_options, "liang-barsky-3d": clip3d_options})
+
 FORMATS = ("table", "csv", "json")
 
 
@@ -225,6 +270,9 @@ def table_of(args):
 def run(args):
     """Print the table of ``args.algorithm`` in ``args.format``."""
     table = table_of(args)
+    if getattr(args, "adapt", None) is not None:
+        values, options = args.adapt(values, options)
+    table = functions[args.algorithm](*values, **options)
     if args.format == "json":
         print(table.to_json(indent=2))
     elif args.format == "csv":

@@ -168,7 +168,7 @@ def lines(segments, window, method="liang-barsky"):
         rect = np.array(w.rectangle(window))
         ring = w.rectangle_polygon(*rect)
         code = k.COHEN_SUTHERLAND if method == "cohen-sutherland" else k.LIANG_BARSKY
-    bad = call(k.clip_lines, 20 * len(seg) * len(ring), token(code), seg.reshape(-1), rect, ring,
+    bad = call(k.clip_lines, 2 * len(seg) * len(ring), token(code), seg.reshape(-1), rect, ring,
                w.outward_normals(ring), float(v.COORD_LIMIT), out.reshape(-1), accepted)
     _check(bad, seg, "segments")
     return out, accepted

@@ -23,7 +23,7 @@ def _sutherland_hodgman(verts, counts, ring):
         out = np.empty((size, 2))
         out_counts = np.zeros(len(counts), np.int64)
         scratch = np.empty((2, width, 2))
-        used = call(k.sutherland_hodgman, 10 * len(verts) * len(ring), verts, counts, ring, out,
+        used = call(k.sutherland_hodgman, 3 * len(verts) * len(ring), verts, counts, ring, out,
                     out_counts, scratch)
         if used >= 0:
             return out[:used], out_counts

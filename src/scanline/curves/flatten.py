@@ -199,7 +199,7 @@ def subdivide(segments, tolerance, weighted=True):
         return start, np.arange(len(segments))
     kind = token(k.WEIGHTED if weighted else k.PLAIN)
     # each segment flattens to a few dozen pieces at the usual tolerances
-    points, firsts, truncated = call(k.subdivide, 50 * segments.size, segments, kind,
+    points, firsts, truncated = call(k.subdivide, 100 * segments.size, segments, kind,
                                      tolerance * tolerance, MAX_DEPTH, MAX_POINTS)
     if truncated:
         raise ArgumentValueError(

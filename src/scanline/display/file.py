@@ -123,6 +123,8 @@ class DisplayFile:
         if self.aspect <= 0:
             raise ArgumentValueError(f"aspect must be > 0, got {aspect!r}")
         self._segments = {}
+        self._cameras = {}
+        self._current_camera = None
         self._open = None
         self._created = 0
         self._pick_id = 0
@@ -152,7 +154,8 @@ class DisplayFile:
             raise ArgumentTypeError(f"clip must be True or False, got {v._show(clip)}")
         n = normalization(window, viewport, view_up, keep_aspect, self.aspect)
         self._normalization = n
-        self._clip = ndc_rectangle("viewport", viewport) if clip else None
+        self._viewport_rect = ndc_rectangle("viewport", viewport)
+        self._clip = self._viewport_rect if clip else None
 
     @property
     def normalization(self):
@@ -382,6 +385,63 @@ class DisplayFile:
         pts = p.points("points", points, 1)
         attrs = p.marker_attributes(kind, size, color)
         self._add("markers", {"points": self._ndc(pts)}, attrs)
+
+    # -- 3-D primitives -----------------------------------------------------------------------
+    def set_camera(self, camera, name="camera"):
+        """Define the camera ``name`` (or replace it) and make it the current one:
+        the 3-D primitives created from now on are seen through it.  Cameras are
+        looked up when the file is interpreted, so replacing one re-projects every
+        primitive that uses it."""
+        from ..projection import Camera
+
+        if not isinstance(camera, Camera):
+            raise ArgumentTypeError(f"camera must be a scanline.Camera, got {v._show(camera)}")
+        _name(name)
+        self._cameras[name] = camera
+        self._current_camera = name
+
+    def camera(self, name="camera"):
+        """The camera called ``name``."""
+        cams = self._cameras
+        if name not in cams:
+            known = ", ".join(repr(k) for k in cams) or "none yet (set_camera)"
+            raise ArgumentValueError(f"no camera named {v._show(name)}; cameras: {known}")
+        return cams[name]
+
+    def _add3d(self, kind, geometry, attributes):
+        name = self._current_camera
+        if name is None:
+            raise ArgumentValueError(
+                f"a {kind} is seen through a camera: call set_camera(camera) first")
+        geometry.update(camera=name, viewport=self._viewport_rect)
+        self._add(kind, geometry, attributes)
+
+    def polyline3d(self, points, color="white", closed=False, **line):
+        """Append a 3-D polyline (world coordinates (N, 3)), seen through the current
+        camera into the current viewport; ``line`` as :meth:`polyline`."""
+        from ..transform3d.arrays import points as point_array
+
+        pts, _ = point_array("points", points)
+        if len(pts) < 1:
+            raise ArgumentValueError("points needs at least 1 point")
+        attrs = {"line": p.line_attributes(color, **line), "closed": _flag("closed", closed)}
+        self._add3d("polyline3d", {"points": pts}, attrs)
+
+    def mesh(self, mesh, color=None, depth_cue=None, background="black", **line):
+        """Append the wireframe of a :class:`~scanline.mesh.Mesh`, seen through the
+        current camera into the current viewport: ``color`` (None: the mesh's own
+        colors, else white), ``depth_cue`` as :func:`scanline.draw3d.wireframe`
+        (fading toward ``background``), ``line`` as :meth:`polyline`."""
+        from ..draw3d.wireframe import depth_cue_intensities
+        from ..mesh import Mesh
+
+        if not isinstance(mesh, Mesh):
+            raise ArgumentTypeError(f"mesh must be a scanline.mesh.Mesh, got {v._show(mesh)}")
+        depth_cue_intensities(depth_cue)
+        line_attrs = p.line_attributes("white" if color is None else color, **line)
+        attrs = {"color": None if color is None else line_attrs["color"], "line": line_attrs,
+                 "depth_cue": depth_cue, "background": p.color("background", background)}
+        self._add3d("mesh", {"mesh": mesh}, attrs)
 
     # -- drawing ----------------------------------------------------------------------------
     def draw(self, fb, antialias=False, highlight="magenta"):

@@ -19,7 +19,7 @@ import numpy as np
 
 from .. import _validate as v
 from ..errors import ArgumentValueError, ScanlineError
-from . import batch, pipeline, text
+from . import batch, pipeline, text, three_d
 from .primitives import THIN, Primitive
 from .viewing import device_rectangle, workstation
 
@@ -128,7 +128,10 @@ def interpret(display_file, device, highlight="magenta"):
         drawn = []
         if groups:
             device.begin_segment(seg.name)
-        for start, run, same in batch.runs(seg.primitives):
+        prims = seg.primitives
+        if any(q.kind in three_d.KINDS for q in prims):
+            prims = three_d.expand(prims, display_file, device.width, device.height)
+        for start, run, same in batch.runs(prims):
             rect = clip_rectangle(run[0], ws, frame)
             if rect is None:
                 continue

@@ -229,6 +229,8 @@ class Primitive:
         def move(p):
             return p @ lin.T + t
 
+        if self.kind in ("polyline3d", "mesh"):   # projected when interpreted
+            return g
         if self.kind in ("polyline", "markers"):
             geometry = {**g, "points": move(g["points"])}
         elif self.kind == "polygon":

@@ -150,7 +150,7 @@ def composite(fb, mask, ox, oy, source):
     (h, w, 1), 255 = fully covered) whose pixel (0, 0) is device pixel (ox, oy).
     Mask pixels outside ``fb`` are ignored."""
     buf, _, width, height = target(fb)
-    call(k.composite, mask.shape[0] * mask.shape[1], buf, mode_code(fb), width, height, table(fb),
+    call(k.composite, 3 * mask.shape[0] * mask.shape[1], buf, mode_code(fb), width, height, table(fb),
          mask, int(ox), int(oy), np.ascontiguousarray(source, np.float64))
 
 

@@ -100,7 +100,7 @@ def lines(fb, segments, color=None):
     """
     segs = _reals("segments", segments, 4)
     buf, mode, width, height, table, srcs = _setup(fb, color, len(segs))
-    call(wu.draw_lines, lambda: 3 * line_work(segs, width, height), buf, mode, width, height,
+    call(wu.draw_lines, lambda: 20 * line_work(segs, width, height), buf, mode, width, height,
          table, segs, srcs)
 
 
@@ -128,7 +128,7 @@ def ellipses(fb, ellipses, color=None):
     """
     arr = _reals("ellipses", ellipses, 4, radius_columns=(2, 3))
     buf, mode, width, height, table, srcs = _setup(fb, color, len(arr))
-    call(wu.draw_ellipses, lambda: 3 * conic_work(arr[:, 2], arr[:, 3], width, height), buf,
+    call(wu.draw_ellipses, lambda: 12 * conic_work(arr[:, 2], arr[:, 3], width, height), buf,
          mode, width, height, table, arr, srcs)
 
 
@@ -160,7 +160,7 @@ def filled_ellipses(fb, ellipses, color=None):
     :mod:`scanline._kernels.coverage`)."""
     arr = _reals("ellipses", ellipses, 4, radius_columns=(2, 3))
     buf, mode, width, height, table, srcs = _setup(fb, color, len(arr))
-    call(cov.fill_ellipses, lambda: 2 * region_work(arr[:, 2], arr[:, 3], width, height)
+    call(cov.fill_ellipses, lambda: 20 * region_work(arr[:, 2], arr[:, 3], width, height)
          + cov.SUB * float(np.minimum(2 * arr[:, 3] + 2, height).sum()), buf, mode, width,
          height, table, arr, srcs)
 
@@ -208,8 +208,8 @@ def _fill_parsed(fb, verts, offsets, shapes, color, rule):
     buf, mode, width, height, table, srcs = _setup(fb, color, len(shapes) - 1)
     counts = offsets[shapes[1:]] - offsets[shapes[:-1]]
     most = int(counts.max()) if len(counts) else 0
-    call(cov.fill_shapes, lambda: 2 * area_work(width, height, verts, len(shapes) - 1, 1)
-         + cov.SUB * height * (len(shapes) - 1), buf, mode, width, height, table, verts,
+    call(cov.fill_shapes, lambda: 4 * area_work(width, height, verts, len(shapes) - 1),
+         buf, mode, width, height, table, verts,
          offsets, shapes, srcs, code, most)
 
 

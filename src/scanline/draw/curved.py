@@ -58,7 +58,7 @@ def region_work(rx, ry, width, height):
     each its box, at most the raster, plus a row table per shape
     (:func:`scanline._kernels._jit.call`)."""
     rx, ry = np.asarray(rx, np.float64), np.asarray(ry, np.float64)
-    area = np.minimum((2 * rx + 1) * (2 * ry + 1), width * height) + height
+    area = np.minimum((2 * rx + 1) * (2 * ry + 1), width * height) / 4 + height
     return float(area.sum())
 
 

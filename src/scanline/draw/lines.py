@@ -95,7 +95,7 @@ def line(fb, x0, y0, x1, y1, color=None, method="bresenham", *, style=None,
     buf, packed, width, height = target(fb)
     x0, y0, x1, y1 = (v.coordinate(n, c) for n, c in (("x0", x0), ("y0", y0), ("x1", x1),
                                                       ("y1", y1)))
-    call(k.draw_line, min(max(abs(x1 - x0), abs(y1 - y0)), width + height), buf,
+    call(k.draw_line, 2 * min(max(abs(x1 - x0), abs(y1 - y0)), width + height), buf,
          layout(packed), width, height, x0, y0, x1, y1, fb.pixel(color), code)
 
 
@@ -137,5 +137,5 @@ def lines(fb, segments, color=None, method="bresenham", *, style=None, antialias
         return
     buf, packed, width, height = target(fb)
     segs = v.coordinate_array("segments", segments, 4)
-    call(k.draw_lines, lambda: line_work(segs, width, height), buf, layout(packed), width,
+    call(k.draw_lines, lambda: 2 * line_work(segs, width, height), buf, layout(packed), width,
          height, segs, colors(fb, color, len(segs)), code)

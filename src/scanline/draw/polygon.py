@@ -162,7 +162,7 @@ def polygon(fb, points, color=None, rule="even-odd", style=None, antialias=False
     max_edges = _max_edges(offsets, polys)
 
     def draw(buf, packed, width, height, ox, oy, pixel):
-        call(k.fill_polygons, lambda: area_work(width, height, verts - (ox, oy)), buf,
+        call(k.fill_polygons, lambda: area_work(width, height, verts - (ox, oy)) / 4, buf,
              layout(packed), width, height, ox, oy, verts, offsets, polys,
              np.asarray(pixel, np.uint8).reshape(1, -1), code, max_edges)
 
@@ -234,7 +234,7 @@ def polygons(fb, polygons, color=None, rule="even-odd", counts=None, antialias=F
     if _blend.translucent(color):
         def draw(i, buf, packed, width, height, ox, oy, value):
             one = verts[offsets[polys[i]]:offsets[polys[i + 1]]]
-            call(k.fill_polygons, lambda: area_work(width, height, one - (ox, oy)), buf,
+            call(k.fill_polygons, lambda: area_work(width, height, one - (ox, oy)) / 4, buf,
                  layout(packed), width, height, ox, oy, verts, offsets, polys[i:i + 2],
                  value.reshape(1, -1), code, most)
 
@@ -242,8 +242,9 @@ def polygons(fb, polygons, color=None, rule="even-odd", counts=None, antialias=F
         _blend.paint_each(fb, color, n, boxes, draw)
         return
     values = colors(fb, color, n)
-    work = area_work(width, height, verts, n)
+    work = area_work(width, height, verts, n) / 4
     if len(values) == 1 and n > 1:   # one color: the order cannot change the image
-        verts, offsets, polys = call(k.band_reordered, work, verts, offsets, polys, 0, height)
+        verts, offsets, polys = call(k.band_reordered, len(verts), verts, offsets, polys, 0,
+                                     height)
     call(k.fill_polygons, work, buf, layout(packed), width, height, 0, 0, verts, offsets, polys,
          values, code, most)

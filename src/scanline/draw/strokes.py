@@ -151,14 +151,14 @@ def dash_work(points, lengths):
     if len(points) < 2:
         return len(points)
     length = float(np.hypot(*np.diff(points, axis=0).T).sum())
-    return 8 * len(points) + 4 * length / max(sum(lengths), 1e-9) * len(lengths)
+    return 2 * len(points) + length / max(sum(lengths), 1e-9) * len(lengths)
 
 
 def outline_work(points, r):
     """Work units of the stroke outline of half-width ``r`` along ``points``: a join
     (at most half a turn of arc) and a few corners per vertex."""
     arc = np.pi / np.arccos(1 - min(ks.TOLERANCE / max(r, ks.TOLERANCE), 1.0))
-    return len(points) * (20 + 2 * float(arc))
+    return len(points) * (2 + float(arc) / 5)
 
 
 def _painter(style, verts, offsets, closed):
@@ -173,7 +173,7 @@ def _painter(style, verts, offsets, closed):
         def draw(buf, packed, width, height, ox, oy, values, a, b):
             o = offsets[a:b + 1]
             pts = iverts[o[0]:o[-1]] - np.array([ox, oy], np.int64)
-            call(kl.draw_patterned, lambda: path_work(pts, width, height) * len(pen), buf,
+            call(kl.draw_patterned, lambda: 2 * path_work(pts, width, height) * len(pen), buf,
                  layout(packed), width, height, pts, o - o[0], closed[a:b], values, kind, mask,
                  dashes, phase, pen, margin)
         return draw
@@ -195,9 +195,9 @@ def _painter(style, verts, offsets, closed):
         out, contours, polys, most = call(ks.stroke_outlines, lambda: outline_work(pieces[0], r),
                                           *pieces, owner, b - a, r, cap, join,
                                           style.miter_limit)
-        work = area_work(width, height, out - (ox, oy), b - a) if len(out) else 0
+        work = area_work(width, height, out - (ox, oy), b - a) / 4 if len(out) else 0
         if len(values) == 1 and b - a > 1:   # one color: any order gives the same image
-            out, contours, polys = call(kp.band_reordered, work, out, contours, polys, oy,
+            out, contours, polys = call(kp.band_reordered, len(out), out, contours, polys, oy,
                                         height)
         call(kp.fill_polygons, work, buf, layout(packed), width, height, ox, oy, out, contours,
              polys, values, NONZERO, most)

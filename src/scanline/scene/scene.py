@@ -39,7 +39,8 @@ class Scene:
 
     def __init__(self, data, file=None, text=None, format="toml"):
         try:
-            self.canvas, self.display_file = build(data)
+            base = None if file is None else os.path.dirname(os.path.abspath(file))
+            self.canvas, self.display_file = build(data, base)
         except SceneError as error:
             line = None
             if text is not None and error.path is not None:

@@ -1,5 +1,6 @@
 """The scene schema, versions 1 and 2: checking a scene's data and building its display
-file (version 2 adds top-level keys read by other modules, :data:`V2_KEYS`).
+file.  Version 2 adds cameras and 3-D primitives (:mod:`scanline.scene.schema3d`) and
+top-level keys read by other modules (:data:`V2_KEYS`).
 
 See docs/scene-format.md for the format.  Every error is a :class:`SceneError` whose
 message starts with the key path of the offending value
@@ -28,9 +29,9 @@ V2_KEYS = {"animation"}
 MAX_SIZE = 16384
 
 _CANVAS = {"width", "height", "background", "mode", "highlight", "antialias"}
-_VIEWPORT = {"name", "window", "viewport", "view_up", "keep_aspect", "clip", "border"}
+_VIEWPORT = {"name", "window", "viewport", "view_up", "keep_aspect", "clip", "border", "camera"}
 _SEGMENT = {"name", "viewport", "priority", "visible", "highlighted", "transform",
-            "primitives"}
+            "primitives", "camera"}
 _LINE = {"color", "width", "cap", "join", "miter_limit", "dash", "dash_phase"}
 _AREA = {"color", "rule", "style"}
 #: Keys of each primitive type besides ``type``.
@@ -191,22 +192,30 @@ def _size(value, path):
     _fail(path, f"must be an integer from 2 to {MAX_SIZE}, got {value!r}")
 
 
-def build(data):
-    """Check scene data (a dict) and build it: returns (Canvas, DisplayFile)."""
-    keys = {"version", "canvas", "window", "viewports", "segments"}
+def build(data, base=None):
+    """Check scene data (a dict) and build it: returns (Canvas, DisplayFile).  ``base``
+    is the folder that mesh files are named relative to (the scene file's)."""
+    from . import schema3d
+
+    keys = {"version", "canvas", "window", "viewports", "segments", "cameras"}
     if isinstance(data, dict) and data.get("version") == 2:
         keys |= V2_KEYS
     d = _table(data, "", keys, ("version",))
     if d["version"] not in VERSIONS or isinstance(d["version"], bool):
         _fail("version", f"must be 1 or 2 (the schemas this scanline reads), got "
               f"{d['version']!r}")
+    if d["version"] == 1 and "cameras" in d:
+        _fail("cameras", "need version = 2 (the 3-D schema)")
     canvas = Canvas(d.get("canvas", {}))
     default_window = d.get("window", (0, 0, canvas.width - 1, canvas.height - 1))
     df = DisplayFile(aspect(canvas.width, canvas.height))
+    cameras = schema3d.cameras(d["cameras"], df) if "cameras" in d else []
+    context = {"version": d["version"], "cameras": cameras, "base": base,
+               "background": canvas.background}
     viewports = _viewports(d.get("viewports"), default_window, df)
     names = list(viewports)
     for i, seg in enumerate(_list(d.get("segments", []), "segments")):
-        _segment(seg, f"segments[{i}]", df, viewports, names[0])
+        _segment(seg, f"segments[{i}]", df, viewports, names[0], context)
     bottom = min((seg.priority for seg in df.segments), default=0.0) - 1.0
     for name, v in viewports.items():
         if v["border"] is not None:
@@ -237,13 +246,14 @@ def _viewports(data, default_window, df):
             from ..display.primitives import color
 
             _call(path, color, "border", border)
-        out[name] = {"viewing": viewing, "border": border}
+        out[name] = {"viewing": viewing, "border": border, "camera": t.get("camera"),
+                     "path": path}
     if not out:
         _fail("viewports", "must hold at least one viewport")
     return out
 
 
-def _segment(data, path, df, viewports, default):
+def _segment(data, path, df, viewports, default, context):
     """Build one scene segment: one display-file segment per viewport it is shown in
     (``name`` alone, or ``name@viewport`` when ``viewport`` lists several)."""
     s = _table(data, path, _SEGMENT, ("name",))
@@ -259,12 +269,24 @@ def _segment(data, path, df, viewports, default):
         if not isinstance(vp, str) or vp not in viewports:
             _fail(here, f"names no viewport: {vp!r}; viewports: "
                   + ", ".join(repr(k) for k in viewports))
-        _fill_segment(s, f"{name}@{vp}" if several else name, path, df, viewports[vp])
+        _fill_segment(s, f"{name}@{vp}" if several else name, path, df, viewports[vp],
+                      context)
 
 
-def _fill_segment(s, name, path, df, viewport):
+def _fill_segment(s, name, path, df, viewport, context):
     if name in df:
         _fail(f"{path}.name", f"repeats the segment name {name!r}")
+    for where, owner in ((f"{path}.camera", s), (f"{viewport['path']}.camera", viewport)):
+        if owner.get("camera") is None:
+            continue
+        if context["version"] < 2:
+            _fail(where, "needs version = 2 (the 3-D schema)")
+        if owner["camera"] not in context["cameras"]:
+            _fail(where, f"names no camera: {owner['camera']!r}; cameras: "
+                  + (", ".join(repr(c) for c in context["cameras"]) or "none"))
+    if context["cameras"]:
+        camera = s.get("camera") or viewport["camera"] or context["cameras"][0]
+        df.set_camera(df.camera(camera), camera)
     df.set_viewing(**viewport["viewing"])
     m = transformation(s.get("transform", []), f"{path}.transform")
     df.create_segment(name)
@@ -275,17 +297,27 @@ def _fill_segment(s, name, path, df, viewport):
     _call(f"{path}.transform", df.set_transformation, name, df.world_transformation(m))
     try:
         for j, prim in enumerate(_list(s.get("primitives", []), f"{path}.primitives")):
-            _primitive(prim, f"{path}.primitives[{j}]", df)
+            _primitive(prim, f"{path}.primitives[{j}]", df, context)
     finally:
         df.close_segment()
 
 
-def _primitive(data, path, df):
+def _primitive(data, path, df, context):
+    from . import schema3d
+
     if not isinstance(data, dict):
         _fail(path, f"must be a table (an object), got {_kind(data)}")
     kind = data.get("type")
+    if isinstance(kind, str) and kind in schema3d.PRIMITIVES:
+        if context["version"] < 2:
+            _fail(f"{path}.type", f"{kind!r} is a 3-D primitive: it needs version = 2")
+        if not context["cameras"]:
+            _fail(f"{path}.type", f"a {kind} is seen through a camera: add [[cameras]]")
+        schema3d.primitive(kind, data, path, df, context["background"], context["base"])
+        return
     if not isinstance(kind, str) or kind not in PRIMITIVES:
-        _fail(f"{path}.type", f"must be one of {', '.join(PRIMITIVES)}; got {kind!r}")
+        known = list(PRIMITIVES) + (list(schema3d.PRIMITIVES) if context["version"] >= 2 else [])
+        _fail(f"{path}.type", f"must be one of {', '.join(known)}; got {kind!r}")
     _table(data, path, PRIMITIVES[kind] | {"type"}, REQUIRED[kind])
     args = {k: x for k, x in data.items() if k != "type"}
     if "angle" in args:

@@ -15,6 +15,7 @@ from .seedfill import boundary_fill, flood_fill
 from .polygon import scan_line_fill
 from .curves import de_casteljau, cox_de_boor
 from .clip import cohen_sutherland, cyrus_beck, liang_barsky, sutherland_hodgman
+from .clip3d import cohen_sutherland_3d, liang_barsky_3d
 
 #: CLI name -> function
 ALGORITHMS = {
@@ -31,9 +32,12 @@ ALGORITHMS = {
     "liang-barsky": liang_barsky,
     "cyrus-beck": cyrus_beck,
     "sutherland-hodgman": sutherland_hodgman,
+    "cohen-sutherland-3d": cohen_sutherland_3d,
+    "liang-barsky-3d": liang_barsky_3d,
 }
 
 __all__ = ["Table", "bresenham", "dda", "midpoint_circle", "midpoint_ellipse", "flood_fill",
            "boundary_fill", "scan_line_fill", "sutherland_hodgman", "de_casteljau", "cox_de_boor",
            "cohen_sutherland", "liang_barsky", "cyrus_beck",
+           "cohen_sutherland_3d", "liang_barsky_3d",
            "ALGORITHMS"]

@@ -26,6 +26,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from .. import _validate as v
+from .._validate import real_array as _real_array
 from ..errors import ArgumentTypeError, ArgumentValueError
 
 #: The axes accepted by :func:`reflection`.
@@ -52,27 +53,6 @@ def _point(name, value):
             f"{name} must be a point (x, y) of two real numbers, got {v._show(value)}"
         )
     return v.number(f"{name}[0]", value[0]), v.number(f"{name}[1]", value[1])
-
-
-def _real_array(name, value, expected):
-    """``value`` as a float64 array, or ArgumentTypeError naming ``name``."""
-    try:
-        a = np.asarray(value)
-        if a.dtype == object:
-            a = a.astype(np.float64)
-    except OverflowError:
-        raise ArgumentValueError(
-            f"{name} holds a number too large for float64: {v._show(value)}"
-        ) from None
-    except (TypeError, ValueError):
-        raise ArgumentTypeError(
-            f"{name} must be a numeric array of shape {expected}, got {v._show(value)}"
-        ) from None
-    if a.dtype.kind not in "iuf":
-        raise ArgumentTypeError(
-            f"{name} must hold real numbers, got an array of dtype {a.dtype}"
-        )
-    return a.astype(np.float64)
 
 
 def _matrix(name, value):

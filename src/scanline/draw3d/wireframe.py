@@ -1,0 +1,350 @@
+"""Wireframes: 3-D lines and mesh edges drawn on a frame buffer through a camera
+(Hearn & Baker, section 9-1, "wireframe" displays and depth cueing).
+
+Each line goes world -> homogeneous clip coordinates -> clipped against the view
+volume before the divide (:func:`scanline.clip.homogeneous`'s Liang-Barsky, in one
+compiled pass: :func:`scanline._kernels.project3d.project_edges`) -> divided ->
+device coordinates, and is then drawn by the 2-D batch kernels
+(:func:`scanline.draw.lines`, :func:`scanline.draw.polylines`), so every line
+attribute (width, caps, joins, dashes, pens) and antialiasing apply.
+"""
+
+import numpy as np
+
+from .. import _validate as v
+from ..clip.volumes import UNIT_CUBE
+from ..draw import lines as draw_lines
+from ..draw import polylines as draw_polylines
+from ..draw._common import target
+from ..errors import ArgumentTypeError, ArgumentValueError
+from ..mesh import Mesh
+from ..projection import Camera
+from ..transform3d.arrays import real_array
+
+#: Intensities at the nearest and the farthest drawn depth for ``depth_cue=True``.
+DEPTH_CUE = (1.0, 0.25)
+
+
+def _camera(camera):
+    if not isinstance(camera, Camera):
+        raise ArgumentTypeError(f"camera must be a scanline.Camera, got {v._show(camera)}")
+    return camera
+
+
+def project_edges(vertices, edges, camera, width, height):
+    """Project and clip the line segments ``edges`` (E, 2), index pairs into the
+    world-coordinate ``vertices`` (V, 3), onto a ``width`` x ``height`` device:
+    :func:`project_edges_into` the whole device.  Returns ``(segments, depth,
+    which)``."""
+    return project_edges_into(vertices, edges, camera, _camera(camera)._device_box(width, height))
+
+
+def project_edges_into(vertices, edges, camera, box, aspect=None, details=True):
+    """Project and clip line segments given as vertex pairs into the rectangle
+    ``box`` (see :meth:`scanline.Camera.mapping`).
+
+    Parameters
+    ----------
+    vertices : array_like, shape (V, 3)
+        World coordinates.
+    edges : array_like of int, shape (E, 2)
+        Vertex index pairs.
+    camera : Camera
+    box : (x0, y0, x1, y1)
+        Where NDC (0, 0) and (1, 1) land.
+    aspect : float, optional
+        The displayed width / height of ``box``.
+    details : bool
+        False: return only the segments (``depth`` and ``which`` are None).
+
+    Returns
+    -------
+    segments : ndarray, shape (K, 4)
+        The visible parts (x0, y0, x1, y1) in device coordinates.
+    depth : ndarray, shape (K, 2)
+        The device depth of their endpoints.
+    which : ndarray of int64, shape (K,)
+        The edge each row comes from.
+    """
+    from .._kernels import project3d as k
+    from .._kernels._jit import call
+
+    camera = _camera(camera)
+    verts = real_array("vertices", vertices, "(V, 3)")
+    if verts.ndim != 2 or verts.shape[1] != 3:
+        raise ArgumentValueError(f"vertices must have shape (V, 3), got {verts.shape}")
+    e = np.asarray(edges)
+    if e.size == 0:
+        e = e.reshape(0, 2)
+    if e.ndim != 2 or e.shape[1] != 2 or (e.size and e.dtype.kind not in "iu"):
+        raise ArgumentValueError(f"edges must be an integer array of shape (E, 2), got "
+                                 f"{e.dtype} of shape {e.shape}")
+    e = np.ascontiguousarray(e, np.int64)
+    if e.size and (e.min() < 0 or e.max() >= len(verts)):
+        row = int(np.argmax((e < 0).any(axis=1) | (e >= len(verts)).any(axis=1)))
+        raise ArgumentValueError(f"edges row {row} = {e[row].tolist()} refers to a vertex "
+                                 f"out of range (0 to {len(verts) - 1})")
+    clip, scale, offset = camera.mapping(box, aspect)
+    out = np.empty((len(e), 4))
+    depth = np.empty((len(e) if details else 0, 2))
+    which = np.empty(len(e) if details else 0, np.int64)
+    h = np.empty((len(verts), 4))
+    call(k.to_clip, 4 * len(verts), np.ascontiguousarray(clip), np.ascontiguousarray(verts),
+         h)                                                         # once per vertex
+    rows = call(k.project_edges, 20 * len(e), scale, offset, UNIT_CUBE.planes, h, e, out,
+                depth, which, float(v.COORD_LIMIT))
+    if not details:
+        return out[:rows], None, None
+    return out[:rows], depth[:rows], which[:rows]
+
+
+def edge_colors(mesh, edges):
+    """RGBA (E, 4) colors of a mesh's edges from its face or vertex colors: an edge
+    takes the color of the first face it borders, or the mean of its two vertices'."""
+    if mesh.color_on == "vertex":
+        return ((mesh.colors[edges[:, 0]].astype(np.int64)
+                 + mesh.colors[edges[:, 1]]) // 2).astype(np.uint8)
+    faces, _ = mesh.edge_faces()
+    return mesh.colors[faces[:, 0]]
+
+
+def _channel_values(fb, rgba):
+    """Pixel values (N, channels) of RGBA rows for ``fb``: one ``fb.pixel`` per
+    distinct color."""
+    uniq, inverse = np.unique(rgba, axis=0, return_inverse=True)
+    values = np.array([fb.pixel(tuple(int(c) for c in row)) for row in uniq], np.uint8)
+    return values[inverse.reshape(-1)]
+
+
+def cue_factor(camera, depth, cue):
+    """Hearn & Baker's depth-cueing factor per segment: f = (d_max - d) / (d_max -
+    d_min) of the midpoints' distances (linear in viewing coordinates), mapped to
+    the intensities ``cue`` = (near, far)."""
+    near, far = cue
+    d = camera.linear_depth(depth.mean(axis=1))
+    lo, hi = (float(d.min()), float(d.max())) if len(d) else (0.0, 1.0)
+    f = (hi - d) / (hi - lo) if hi > lo else np.ones_like(d)
+    return far + (near - far) * f
+
+
+def depth_cue_intensities(depth_cue):
+    """(near, far) intensities of a ``depth_cue`` argument, or None."""
+    if depth_cue is None or depth_cue is False:
+        return None
+    if depth_cue is True:
+        return DEPTH_CUE
+    if isinstance(depth_cue, (tuple, list)) and len(depth_cue) == 2:
+        pair = (v.number("depth_cue[0]", depth_cue[0]), v.number("depth_cue[1]", depth_cue[1]))
+        if all(0.0 <= x <= 1.0 for x in pair):
+            return pair
+    raise ArgumentValueError(
+        f"depth_cue must be True, False or (near, far) intensities in 0..1, got "
+        f"{v._show(depth_cue)}")
+
+
+def wireframe(fb, meshes, camera, color=None, *, depth_cue=None, background=None,
+              method="bresenham", **line):
+    """Draw the edges of one mesh or several through ``camera``.
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+    meshes : Mesh or list of Mesh
+    camera : Camera
+    color : color, list of colors (one per mesh), or None
+        None: each mesh's own colors (an edge takes the color of its first face, or
+        the mean of its vertices' colors), white for a mesh without colors.
+    depth_cue : bool or (near, far), optional
+        Depth cueing (Hearn & Baker, section 9-1): each edge's intensity falls
+        linearly with its distance from the viewer, from ``near`` (1.0 for True) at
+        the nearest drawn edge to ``far`` (0.25) at the farthest, blending its color
+        toward ``background``.  Modes "L", "RGB", "RGBA".
+    background : color, optional
+        The color depth cueing fades to (default: the frame buffer's background).
+    method : {"bresenham", "dda"}
+    style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen
+        Line attributes, as :func:`scanline.draw.lines` takes them.
+
+    Returns
+    -------
+    ndarray, shape (K, 4)
+        The device segments drawn (after clipping), for inspection.
+
+    Notes
+    -----
+    Every edge is clipped in homogeneous coordinates against the view volume before
+    the perspective divide, so edges that pass behind the eye are cut at the front
+    plane rather than wrapped round; the visible parts are drawn as one batch of
+    :func:`scanline.draw.lines` (their pixels are exactly those of
+    ``sl.draw.lines(fb, segments)``).  No hidden lines are removed: see the
+    visible-surface methods for that.
+
+    Examples
+    --------
+    >>> import math, scanline as sl
+    >>> fb = sl.FrameBuffer(9, 9, mode="1")
+    >>> cam = sl.Camera(projection=sl.projection.orthographic(window=(-1, -1, 1, 1)))
+    >>> _ = sl.draw3d.wireframe(fb, sl.mesh.cube(1.5), cam)
+    >>> print(sl.text_image(fb))
+    ---------
+    -#######-
+    -#-----#-
+    -#-----#-
+    -#-----#-
+    -#-----#-
+    -#-----#-
+    -#######-
+    ---------
+    """
+    target(fb)
+    camera = _camera(camera)
+    group = [meshes] if isinstance(meshes, Mesh) else list(meshes) \
+        if isinstance(meshes, (list, tuple)) else None
+    if not group or not all(isinstance(m, Mesh) for m in group):
+        raise ArgumentTypeError(
+            f"meshes must be a scanline.mesh.Mesh or a non-empty list of them, got "
+            f"{v._show(meshes)}")
+    if isinstance(color, list) and len(color) != len(group):
+        raise ArgumentValueError(
+            f"color holds {len(color)} colors for {len(group)} meshes; give one per mesh "
+            "or one for all")
+    cue = depth_cue_intensities(depth_cue)
+    if cue is not None and fb.mode not in ("L", "RGB", "RGBA"):
+        raise ArgumentValueError(
+            f"depth_cue needs intensity levels: use a frame buffer of mode 'L', 'RGB' or "
+            f"'RGBA', not {fb.mode!r}")
+    specs = [color[i] if isinstance(color, list) else color for i in range(len(group))]
+    shared = cue is None and len(set(map(repr, specs))) == 1 and (
+        specs[0] is not None or all(m.colors is None for m in group))
+    segs, depths, values = [], [], []
+    for mesh, spec in zip(group, specs):
+        s, d, which = project_edges_into(mesh.vertices, mesh.edges, camera,
+                                         camera._device_box(fb.width, fb.height),
+                                         details=not shared)
+        segs.append(s)
+        depths.append(d)
+        if not shared:
+            if spec is None and mesh.colors is not None:
+                values.append(_channel_values(fb, edge_colors(mesh, mesh.edges)[which]))
+            else:
+                pixel = fb.pixel("white" if spec is None else spec)
+                values.append(np.repeat(pixel[None], len(s), axis=0))
+    segments = segs[0] if len(segs) == 1 else np.concatenate(segs)
+    if not len(segments):
+        return segments
+    if shared:
+        draw_lines(fb, segments, color="white" if specs[0] is None else specs[0],
+                   method=method, **line)
+        return segments
+    value = np.concatenate(values)
+    if cue is not None:
+        bg = fb._background if background is None else fb.pixel(background, "background")
+        f = cue_factor(camera, np.concatenate(depths), cue)
+        value = np.clip(np.rint(bg + f[:, None] * (value.astype(np.float64) - bg)), 0, 255)
+    per_edge = (value[:, 0] if value.shape[1] == 1 else value).astype(np.int64)
+    draw_lines(fb, segments, color=per_edge, method=method, **line)
+    return segments
+
+
+def _segments3d(name, segments):
+    a = real_array(name, segments, "(N, 6) or (N, 2, 3)")
+    if a.size == 0:
+        a = a.reshape(0, 6)
+    if a.ndim == 3 and a.shape[1:] == (2, 3):
+        a = a.reshape(-1, 6)
+    if a.ndim == 1 and a.size == 6:
+        a = a.reshape(1, 6)
+    if a.ndim != 2 or a.shape[1] != 6:
+        raise ArgumentValueError(f"{name} must have shape (N, 6) or (N, 2, 3), got {a.shape}")
+    return a
+
+
+def lines(fb, segments, camera, color="white", **line):
+    """Draw 3-D line segments (N, 6) -- rows (x0, y0, z0, x1, y1, z1) -- through
+    ``camera``, clipped in homogeneous coordinates, with any line attributes of
+    :func:`scanline.draw.lines`.  Returns the device segments drawn."""
+    target(fb)
+    a = _segments3d("segments", segments)
+    verts = a.reshape(-1, 3)
+    edges = np.arange(len(verts), dtype=np.int64).reshape(-1, 2)
+    segs, _, which = project_edges(verts, edges, _camera(camera), fb.width, fb.height)
+    if isinstance(color, (list, np.ndarray)) and len(color) == len(a):
+        color = [color[i] for i in which] if isinstance(color, list) else color[which]
+    if len(segs):
+        draw_lines(fb, segs, color=color, **line)
+    return segs
+
+
+def polyline_pieces(points, camera, width, height, closed=False):
+    """The visible pieces of a 3-D polyline on a ``width`` x ``height`` device: a list
+    of (K, 2) arrays (consecutive visible segments that were not cut at their shared
+    vertex stay one piece, so joins and dash patterns run on)."""
+    return pieces_into(points, camera, _camera(camera)._device_box(width, height), closed)
+
+
+def pieces_into(points, camera, box, closed=False, aspect=None):
+    """:func:`polyline_pieces` into the rectangle ``box`` (see
+    :func:`project_edges_into`)."""
+    from ..transform3d.arrays import points as point_array
+
+    p, _ = point_array("points", points)
+    if closed and len(p) > 2:
+        p = np.vstack([p, p[:1]])
+    if len(p) < 2:
+        return []
+    edges = np.stack([np.arange(len(p) - 1), np.arange(1, len(p))], axis=1)
+    segs, _, which = project_edges_into(p, edges, camera, box, aspect)
+    pieces = []
+    last = None
+    for s, i in zip(segs, which.tolist()):
+        a, b = s[:2], s[2:]
+        if last is not None and last[0] == i - 1 and np.array_equal(last[1], a):
+            pieces[-1].append(b)
+        else:
+            pieces.append([a, b])
+        last = (i, b)
+    return [np.array(piece) for piece in pieces]
+
+
+def polylines(fb, polylines_, camera, color="white", closed=False, **line):
+    """Draw 3-D polylines (a list of (N_i, 3) arrays) through ``camera``, clipped in
+    homogeneous coordinates, with the attributes of :func:`scanline.draw.polylines`
+    (joins and dashes run on along each visible piece)."""
+    target(fb)
+    _camera(camera)
+    if not isinstance(polylines_, (list, tuple)):
+        polylines_ = list(real_array("polylines", polylines_, "(M, N, 3)"))
+    pieces, owner = [], []
+    for i, pl in enumerate(polylines_):
+        got = polyline_pieces(pl, camera, fb.width, fb.height, closed)
+        pieces += got
+        owner += [i] * len(got)
+    if isinstance(color, list) and len(color) == len(polylines_):
+        color = [color[i] for i in owner]
+    if pieces:
+        draw_polylines(fb, pieces, color=color, **line)
+    return pieces
+
+
+def view_volume(fb, volume_camera, camera, color="white", size=None, **line):
+    """Draw the 12 edges of ``volume_camera``'s view volume as ``camera`` sees it;
+    ``size`` = (width, height) of the device ``volume_camera`` widens its window for
+    (default: the window as it is)."""
+    corners = _camera(volume_camera).volume_corners(*(size or (None, None)))
+    ring = [(0, 1), (1, 2), (2, 3), (3, 0)]
+    edges = np.array(ring + [(a + 4, b + 4) for a, b in ring] + [(k, k + 4) for k in range(4)])
+    segs, _, _ = project_edges(corners, edges, _camera(camera), fb.width, fb.height)
+    if len(segs):
+        draw_lines(fb, segs, color=color, **line)
+    return segs
+
+
+def axes(fb, camera, length=1.0, origin=(0.0, 0.0, 0.0), colors=("red", "green", "blue"),
+         **line):
+    """Draw the x, y and z axes from ``origin``, ``length`` long, in ``colors``."""
+    from ..transform3d.arrays import vector
+
+    o = np.array(vector("origin", origin))
+    n = v.number("length", length)
+    segs = np.array([np.concatenate([o, o + n * np.eye(3)[k]]) for k in range(3)])
+    return lines(fb, segs, camera, color=list(colors), **line)

@@ -1,0 +1,24 @@
+"""Three-dimensional object representations (Hearn & Baker, chapter 10): polygon
+meshes with their polygon tables and plane equations, quadric surfaces and
+superquadrics, sweep representations, tensor-product surfaces and the Utah teapot,
+and mesh files (OBJ, PLY, STL).
+
+>>> import scanline as sl
+>>> cube = sl.mesh.cube()
+>>> cube.plane_equations()[1].tolist()       # the face x = +1: outward normal +x
+[8.0, 0.0, 0.0, -8.0]
+>>> bool(cube.inside((0.5, 0, 0))), bool(cube.inside((2, 0, 0)))
+(True, False)
+"""
+
+from .files import FORMATS, MeshFileError, load, save
+from .mesh import Mesh, merge
+from .shapes import (box, cube, ellipsoid, sphere, superellipsoid, superquadric, supertoroid,
+                     torus)
+from .sweeps import from_surface, rotational_sweep, sweep, teapot, translational_sweep
+from .tables import PolygonTables
+
+__all__ = ["FORMATS", "Mesh", "MeshFileError", "PolygonTables", "box", "cube", "ellipsoid",
+           "from_surface", "load", "merge", "rotational_sweep", "save", "sphere",
+           "superellipsoid", "superquadric", "supertoroid", "sweep", "teapot", "torus",
+           "translational_sweep"]

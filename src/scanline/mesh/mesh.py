@@ -1,0 +1,452 @@
+"""The polygon mesh: a vertex list and polygon faces (Hearn & Baker, section 10-1,
+"polygon surfaces").
+
+Faces are polygons of any number (>= 3) of vertex indices, counterclockwise seen
+from outside (then the plane equations' normals point outward).  They are stored
+flat -- ``face_indices`` with ``face_offsets`` -- so that meshes of millions of
+faces stay arrays; :attr:`Mesh.faces` gives them back as an (F, n) array when all
+faces have n vertices, else as a list.
+"""
+
+import numpy as np
+
+from .. import _validate as v
+from ..errors import ArgumentTypeError, ArgumentValueError
+from ..transform3d.arrays import finite, real_array
+
+#: Default tolerance of the planarity test, relative to a face's size.
+PLANAR_TOLERANCE = 1e-9
+
+
+def _flat_faces(faces, n_vertices):
+    """``(indices, offsets)`` of faces given as an (F, n) array or a list of index
+    sequences, checked: integers in range, at least three per face, none repeated
+    within a face."""
+    if isinstance(faces, np.ndarray) and faces.ndim == 2:
+        arr = faces
+        if arr.dtype.kind == "f" and (arr != np.floor(arr)).any():
+            raise ArgumentTypeError("faces must hold integer vertex indices")
+        indices = arr.astype(np.int64).reshape(-1)
+        offsets = np.arange(0, arr.size + 1, max(arr.shape[1], 1), dtype=np.int64)[:len(arr) + 1]
+        sizes = np.full(len(arr), arr.shape[1])
+    else:
+        if isinstance(faces, (str, bytes)) or not hasattr(faces, "__len__"):
+            raise ArgumentTypeError(
+                f"faces must be an (F, n) array or a list of vertex-index lists, got "
+                f"{v._show(faces)}")
+        parts = []
+        for i, f in enumerate(faces):
+            a = np.asarray(f)
+            if a.ndim != 1 or (a.size and a.dtype.kind not in "iuf") or a.dtype == bool:
+                raise ArgumentTypeError(
+                    f"faces[{i}] must be a list of vertex indices, got {v._show(f)}")
+            if a.dtype.kind == "f" and (a != np.floor(a)).any():
+                raise ArgumentTypeError(f"faces[{i}] must hold integer vertex indices, got "
+                                        f"{v._show(f)}")
+            parts.append(a.astype(np.int64))
+        sizes = np.array([len(p) for p in parts], np.int64)
+        indices = np.concatenate(parts) if parts else np.zeros(0, np.int64)
+        offsets = np.concatenate([[0], np.cumsum(sizes)]).astype(np.int64)
+    if len(sizes) == 0:
+        raise ArgumentValueError("a mesh needs at least one face; got none (an empty mesh "
+                                 "has nothing to draw or to check)")
+    small = np.flatnonzero(sizes < 3)
+    if len(small):
+        raise ArgumentValueError(
+            f"face {int(small[0])} has {int(sizes[small[0]])} vertices; a polygon face needs "
+            "at least 3")
+    bad = np.flatnonzero((indices < 0) | (indices >= n_vertices))
+    if len(bad):
+        face = int(np.searchsorted(offsets, bad[0], side="right") - 1)
+        raise ArgumentValueError(
+            f"face {face} refers to vertex {int(indices[bad[0]])}, out of range: the mesh "
+            f"has {n_vertices} vertices (indices 0 to {n_vertices - 1})")
+    owner = np.repeat(np.arange(len(sizes)), sizes)
+    pairs = np.stack([owner, indices], axis=1)
+    uniq = np.unique(pairs, axis=0)
+    if len(uniq) != len(pairs):
+        seen = np.zeros(len(pairs), bool)
+        order = np.lexsort((indices, owner))
+        dup = (np.diff(pairs[order], axis=0) == 0).all(axis=1)
+        seen[order[1:][dup]] = True
+        face = int(owner[np.argmax(seen)])
+        raise ArgumentValueError(
+            f"face {face} repeats a vertex ({indices[offsets[face]:offsets[face + 1]].tolist()}): "
+            "a polygon face visits each vertex once")
+    return np.ascontiguousarray(indices), offsets
+
+
+def _colors(name, colors, count):
+    """(count, 4) uint8 RGBA from one color spec per item (or an (count, 3|4) array)."""
+    from ..color.spec import rgba
+
+    if isinstance(colors, np.ndarray) and colors.ndim == 2 and colors.shape[1] in (3, 4) \
+            and colors.dtype.kind in "iu":
+        if (colors < 0).any() or (colors > 255).any():
+            raise ArgumentValueError(f"{name} values must be in 0..255")
+        out = np.full((len(colors), 4), 255, np.uint8)
+        out[:, :colors.shape[1]] = colors
+        return out
+    return np.array([rgba(c if not isinstance(c, np.ndarray) else tuple(c.tolist()),
+                          f"{name}[{i}]") for i, c in enumerate(colors)], np.uint8).reshape(-1, 4)
+
+
+class Mesh:
+    """A polygon mesh.
+
+    Parameters
+    ----------
+    vertices : array_like, shape (V, 3)
+        Finite vertex positions.
+    faces : (F, n) array_like of int, or list of index lists
+        Polygons of at least three distinct vertex indices each, counterclockwise
+        seen from outside.
+    colors : optional
+        One color per face (F of them) or per vertex (V): color specs (``"red"``,
+        ``(r, g, b)``) or an (F|V, 3|4) integer array.  When F == V, ``color_on``
+        says which is meant.
+    normals : array_like, shape (V, 3), optional
+        Vertex normals (the generators give the exact ones of their surfaces).
+    color_on : {"face", "vertex"}, optional
+    name : str, optional
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> square = sl.mesh.Mesh([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)], [[0, 1, 2, 3]])
+    >>> square
+    <Mesh: 4 vertices, 1 faces, 4 edges>
+    >>> square.plane_equations().tolist()
+    [[0.0, 0.0, 2.0, 0.0]]
+    """
+
+    def __init__(self, vertices, faces, colors=None, normals=None, color_on=None, name=None):
+        verts = real_array("vertices", vertices, "(V, 3)")
+        if verts.ndim == 1 and verts.size == 0:
+            verts = verts.reshape(0, 3)
+        if verts.ndim != 2 or verts.shape[1] != 3:
+            raise ArgumentValueError(
+                f"vertices must have shape (V, 3), got shape {verts.shape}")
+        self.vertices = finite("vertices", np.array(verts, order="C"))    # a copy
+        self.face_indices, self.face_offsets = _flat_faces(faces, len(verts))
+        self.normals = None
+        if normals is not None:
+            nrm = finite("normals", real_array("normals", normals, "(V, 3)"))
+            if nrm.shape != self.vertices.shape:
+                raise ArgumentValueError(
+                    f"normals must have one row per vertex, shape {self.vertices.shape}, got "
+                    f"{nrm.shape}")
+            self.normals = np.array(nrm, order="C")
+        self.colors, self.color_on = None, None
+        if colors is not None:
+            self._set_colors(colors, color_on)
+        self.name = name
+        self._edges = None
+
+    def _set_colors(self, colors, color_on):
+        nf, nv = self.face_count, len(self.vertices)
+        if isinstance(colors, (str, tuple)) or (isinstance(colors, int)
+                                                and not isinstance(colors, bool)):
+            colors = [colors] * nf
+            color_on = "face"
+        n = len(colors)
+        if color_on is None:
+            if n == nf:
+                color_on = "face"
+            elif n == nv:
+                color_on = "vertex"
+        else:
+            v.choice("color_on", color_on, ("face", "vertex"))
+        if color_on is None or n != (nf if color_on == "face" else nv):
+            raise ArgumentValueError(
+                f"colors holds {n} colors; give one per face ({nf}) or one per vertex ({nv})")
+        self.colors = _colors("colors", colors, n)
+        self.color_on = color_on
+
+    # -- structure ------------------------------------------------------------------------
+    @property
+    def face_count(self):
+        return len(self.face_offsets) - 1
+
+    @property
+    def face_sizes(self):
+        return np.diff(self.face_offsets)
+
+    def face(self, i):
+        """The vertex indices of face ``i``."""
+        return self.face_indices[self.face_offsets[i]:self.face_offsets[i + 1]]
+
+    @property
+    def faces(self):
+        """The faces: an (F, n) int64 array when every face has n vertices, else a
+        list of index arrays."""
+        sizes = self.face_sizes
+        if (sizes == sizes[0]).all():
+            return self.face_indices.reshape(-1, int(sizes[0]))
+        return [self.face(i) for i in range(self.face_count)]
+
+    def _half_edges(self):
+        """Every face edge (a, b) in face order, (K, 2), and the face of each."""
+        idx, off = self.face_indices, self.face_offsets
+        nxt = np.arange(1, len(idx) + 1)
+        nxt[off[1:] - 1] = off[:-1]
+        owner = np.repeat(np.arange(self.face_count), self.face_sizes)
+        return np.stack([idx, idx[nxt]], axis=1), owner
+
+    @property
+    def edges(self):
+        """The distinct edges, (E, 2) int64, each (i, j) with i < j, sorted.  Computed
+        once (the edge table of :meth:`polygon_tables`)."""
+        if self._edges is None:
+            half, _ = self._half_edges()
+            self._edges = np.unique(np.sort(half, axis=1), axis=0)
+        return self._edges
+
+    def edge_faces(self):
+        """For each edge of :attr:`edges`, the faces it borders: an (E, 2) array, -1
+        where an edge borders one face only, and the count of faces per edge."""
+        half, owner = self._half_edges()
+        key = np.sort(half, axis=1)
+        edges = self.edges
+        which = _rows_in(edges, key)
+        count = np.bincount(which, minlength=len(edges))
+        first = np.full(len(edges), -1, np.int64)
+        second = np.full(len(edges), -1, np.int64)
+        order = np.argsort(which, kind="stable")
+        starts = np.concatenate([[0], np.cumsum(count)[:-1]])
+        first[:] = owner[order[starts]] if len(order) else first
+        has2 = count >= 2
+        second[has2] = owner[order[starts[has2] + 1]]
+        return np.stack([first, second], axis=1), count
+
+    def __len__(self):
+        return self.face_count
+
+    def __repr__(self):
+        name = f" {self.name!r}" if self.name else ""
+        return (f"<Mesh{name}: {len(self.vertices)} vertices, {self.face_count} faces, "
+                f"{len(self.edges)} edges>")
+
+    # -- geometry ---------------------------------------------------------------------------
+    def plane_equations(self, tolerance=PLANAR_TOLERANCE):
+        """The plane coefficients (A, B, C, D) of each face, (F, 4).
+
+        (A, B, C) is Newell's normal, Σ over the face's edges (i, j = i + 1) of
+        ((y_i - y_j)(z_i + z_j), (z_i - z_j)(x_i + x_j), (x_i - x_j)(y_i + y_j)),
+        and D = -(A x̄ + B ȳ + C z̄) at the face's centroid.  For a triangle this is
+        Hearn & Baker's A = y1 (z2 - z3) + y2 (z3 - z1) + y3 (z1 - z2), B = ..., C =
+        ..., D = -x1 (y2 z3 - y3 z2) - x2 (y3 z1 - y1 z3) - x3 (y1 z2 - y2 z1) (twice
+        the triangle's area as the normal's length); for a polygon it is twice the
+        area vector, exact for planar faces and least-squares for slightly bent
+        ones.  Faces counterclockwise seen from outside give outward normals: a point
+        (x, y, z) is inside (behind) the plane when A x + B y + C z + D < 0 and in
+        front when > 0.
+
+        Raises
+        ------
+        ArgumentValueError
+            If a face is degenerate (zero area: its vertices on a line) or not planar
+            (a vertex farther from the plane than ``tolerance`` times the face's
+            size).
+
+        Notes
+        -----
+        Hearn & Baker, section 10-1, "plane equations" (eqs. 10-1 to 10-5).  Newell's
+        method is Sutherland, Sproull and Schumacker's (1974) for polygons with more
+        than three vertices.
+        """
+        planes = _newell(self.vertices, self.face_indices, self.face_offsets)
+        length = np.sqrt((planes[:, :3] ** 2).sum(axis=1))
+        size = _face_sizes(self.vertices, self.face_indices, self.face_offsets)
+        flat = ~(length > 1e-14 * np.maximum(size, 1e-300) ** 2)
+        if flat.any():
+            f = int(np.argmax(flat))
+            raise ArgumentValueError(
+                f"face {f} ({self.face(f).tolist()}) is degenerate: its vertices lie on a "
+                "line (zero area), so it has no plane equation")
+        t = float(tolerance)
+        dist = self.planarity(planes)
+        bent = dist > t * size
+        if bent.any():
+            f = int(np.argmax(bent / np.maximum(size, 1e-300)))
+            raise ArgumentValueError(
+                f"face {f} ({self.face(f).tolist()}) is not planar: a vertex lies "
+                f"{dist[f]:.3g} from its plane (face size {size[f]:.3g}); split it into "
+                "triangles (Mesh.triangulated()) or pass a larger tolerance")
+        return planes + 0.0
+
+    def planarity(self, planes=None):
+        """Each face's largest vertex distance from its (Newell) plane, (F,)."""
+        if planes is None:
+            planes = _newell(self.vertices, self.face_indices, self.face_offsets)
+        length = np.sqrt((planes[:, :3] ** 2).sum(axis=1))
+        owner = np.repeat(np.arange(self.face_count), self.face_sizes)
+        p = self.vertices[self.face_indices]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            d = np.abs((p * planes[owner, :3]).sum(axis=1) + planes[owner, 3]) / length[owner]
+        out = np.zeros(self.face_count)
+        np.maximum.at(out, owner, np.nan_to_num(d, nan=0.0))
+        return out
+
+    def face_normals(self):
+        """Unit outward normals of the faces, (F, 3)."""
+        p = self.plane_equations()[:, :3]
+        return p / np.sqrt((p * p).sum(axis=1))[:, None]
+
+    def inside(self, points):
+        """Whether each point is inside the mesh, by Hearn & Baker's test: behind
+        every face plane (A x + B y + C z + D < 0).  Exact for closed convex meshes."""
+        from ..transform3d.arrays import points as point_array
+
+        p, single = point_array("points", points)
+        planes = self.plane_equations()
+        inside = (p @ planes[:, :3].T + planes[:, 3] < 0).all(axis=1)
+        return bool(inside[0]) if single else inside
+
+    @property
+    def bounds(self):
+        """``(lo, hi)``: the corners of the bounding box, two (3,) arrays."""
+        return self.vertices.min(axis=0), self.vertices.max(axis=0)
+
+    def polygon_tables(self):
+        """Hearn & Baker's polygon tables of this mesh (:class:`PolygonTables`)."""
+        from .tables import PolygonTables
+
+        return PolygonTables.from_mesh(self)
+
+    # -- new meshes -------------------------------------------------------------------------
+    def _like(self, vertices, normals=None):
+        new = object.__new__(Mesh)
+        new.__dict__.update(self.__dict__)
+        new.vertices = np.ascontiguousarray(vertices)
+        new.normals = normals
+        return new
+
+    def transformed(self, matrix):
+        """This mesh moved by a 4x4 transformation (:mod:`scanline.transform3d`);
+        normals follow by the inverse transpose of its linear part.  A reflection
+        turns the faces inside out, so their order is reversed to stay
+        counterclockwise from outside."""
+        from .. import transform3d as t3
+
+        m = t3.compose(matrix)
+        verts = t3.apply(m, self.vertices)
+        normals = None
+        if self.normals is not None:
+            lin = np.linalg.inv(m[:3, :3]).T if abs(np.linalg.det(m[:3, :3])) > 0 else m[:3, :3]
+            n = self.normals @ lin.T
+            normals = n / np.maximum(np.sqrt((n * n).sum(axis=1)), 1e-300)[:, None]
+        new = self._like(verts, normals)
+        if np.linalg.det(m[:3, :3]) < 0:
+            new.face_indices = _reversed_faces(self.face_indices, self.face_offsets)
+        return new
+
+    def translated(self, offset):
+        """This mesh moved by ``offset`` (dx, dy, dz)."""
+        from .. import transform3d as t3
+
+        return self.transformed(t3.translation(*offset))
+
+    def colored(self, colors, color_on=None):
+        """A copy with other colors (see the constructor)."""
+        new = self._like(self.vertices, self.normals)
+        new._set_colors(colors, color_on)
+        return new
+
+    def triangulated(self):
+        """The mesh with every face split into a fan of triangles from its first
+        vertex (exact for convex faces); face colors go to each face's triangles."""
+        idx, off = self.face_indices, self.face_offsets
+        sizes = self.face_sizes
+        tri_per = sizes - 2
+        owner = np.repeat(np.arange(self.face_count), tri_per)
+        k = np.arange(len(owner)) - np.repeat(np.cumsum(tri_per) - tri_per, tri_per)
+        first = off[owner]
+        tris = np.stack([idx[first], idx[first + k + 1], idx[first + k + 2]], axis=1)
+        new = self._like(self.vertices, self.normals)
+        new.face_indices = np.ascontiguousarray(tris.reshape(-1))
+        new.face_offsets = np.arange(0, 3 * len(tris) + 1, 3, dtype=np.int64)
+        new._edges = None
+        if self.colors is not None and self.color_on == "face":
+            new.colors = self.colors[owner]
+        return new
+
+    def save(self, path):
+        """Write the mesh to an OBJ, PLY or STL file (see :func:`scanline.mesh.save`)."""
+        from .files import save
+
+        save(self, path)
+
+
+def _rows_in(table, rows):
+    """For each row of ``rows`` (K, 2), its index in the sorted unique ``table``."""
+    big = max(int(table.max()) + 1, 1) if len(table) else 1
+    keys = table[:, 0] * big + table[:, 1]
+    return np.searchsorted(keys, rows[:, 0] * big + rows[:, 1])
+
+
+def _reversed_faces(indices, offsets):
+    out = indices.copy()
+    for i in range(len(offsets) - 1):
+        out[offsets[i]:offsets[i + 1]] = indices[offsets[i]:offsets[i + 1]][::-1]
+    return out
+
+
+def _newell(vertices, indices, offsets):
+    """Newell's plane (A, B, C, D) of each face, (F, 4)."""
+    n = len(offsets) - 1
+    sizes = np.diff(offsets)
+    nxt = np.arange(1, len(indices) + 1)
+    nxt[offsets[1:] - 1] = offsets[:-1]
+    p = vertices[indices]
+    q = vertices[indices[nxt]]
+    terms = np.stack([(p[:, 1] - q[:, 1]) * (p[:, 2] + q[:, 2]),
+                      (p[:, 2] - q[:, 2]) * (p[:, 0] + q[:, 0]),
+                      (p[:, 0] - q[:, 0]) * (p[:, 1] + q[:, 1])], axis=1)
+    owner = np.repeat(np.arange(n), sizes)
+    normal = np.zeros((n, 3))
+    np.add.at(normal, owner, terms)
+    centroid = np.zeros((n, 3))
+    np.add.at(centroid, owner, p)
+    centroid /= sizes[:, None]
+    d = -(normal * centroid).sum(axis=1)
+    return np.hstack([normal, d[:, None]])
+
+
+def _face_sizes(vertices, indices, offsets):
+    """The largest extent of each face's bounding box, (F,)."""
+    n = len(offsets) - 1
+    owner = np.repeat(np.arange(n), np.diff(offsets))
+    p = vertices[indices]
+    lo = np.full((n, 3), np.inf)
+    hi = np.full((n, 3), -np.inf)
+    np.minimum.at(lo, owner, p)
+    np.maximum.at(hi, owner, p)
+    return (hi - lo).max(axis=1)
+
+
+def merge(meshes, name=None):
+    """One mesh holding all of ``meshes`` (their vertices renumbered); colors are
+    kept when every mesh has them on the same kind of element."""
+    meshes = list(meshes)
+    if not meshes or not all(isinstance(m, Mesh) for m in meshes):
+        raise ArgumentTypeError("merge needs a non-empty list of scanline.mesh.Mesh")
+    base = np.cumsum([0] + [len(m.vertices) for m in meshes[:-1]])
+    verts = np.concatenate([m.vertices for m in meshes])
+    indices = np.concatenate([m.face_indices + b for m, b in zip(meshes, base)])
+    fbase = np.cumsum([0] + [len(m.face_indices) for m in meshes[:-1]])
+    offsets = np.concatenate([[0]] + [m.face_offsets[1:] + b for m, b in zip(meshes, fbase)])
+    out = object.__new__(Mesh)
+    out.vertices = np.ascontiguousarray(verts)
+    out.face_indices = np.ascontiguousarray(indices)
+    out.face_offsets = offsets.astype(np.int64)
+    out.normals = (np.concatenate([m.normals for m in meshes])
+                   if all(m.normals is not None for m in meshes) else None)
+    kinds = {m.color_on for m in meshes}
+    if len(kinds) == 1 and None not in kinds:
+        out.colors, out.color_on = np.concatenate([m.colors for m in meshes]), kinds.pop()
+    else:
+        out.colors, out.color_on = None, None
+    out.name = name
+    out._edges = None
+    return out

@@ -1,0 +1,270 @@
+"""Generated meshes: the cube and box, quadric surfaces and superquadrics (Hearn &
+Baker, sections 10-4 and 10-5), tessellated from their parametric equations with
+the exact normals of the surfaces.
+
+Parametric forms (φ the latitude, -π/2 <= φ <= π/2; θ the longitude, -π <= θ <= π;
+z is the polar axis, as Hearn & Baker write them)::
+
+    sphere      x = r cos φ cos θ,         y = r cos φ sin θ,         z = r sin φ
+    ellipsoid   x = rx cos φ cos θ,        y = ry cos φ sin θ,        z = rz sin φ
+    torus       x = (R + a cos φ) cos θ,   y = (R + a cos φ) sin θ,   z = a sin φ   (-π <= φ <= π)
+    superellipsoid  x = rx cos^s1 φ cos^s2 θ,  y = ry cos^s1 φ sin^s2 θ,  z = rz sin^s1 φ
+    supertoroid     x = rx (r + cos^s1 φ) cos^s2 θ,  y = ry (r + cos^s1 φ) sin^s2 θ,
+                    z = rz sin^s1 φ
+
+where c^s means sign(c) |c|^s.  The normals are those of the implicit surfaces
+(Barr 1981): for the superellipsoid n ∝ (cos^(2-s1) φ cos^(2-s2) θ / rx,
+cos^(2-s1) φ sin^(2-s2) θ / ry, sin^(2-s1) φ / rz), which is the sphere's
+(cos φ cos θ, cos φ sin θ, sin φ) for s1 = s2 = 1.
+
+Faces run counterclockwise seen from outside (θ, then φ increasing), so the plane
+normals point outward; the poles of a sphere-like surface are single vertices
+surrounded by triangles, the other faces are quadrilaterals.
+
+References
+----------
+A. H. Barr, "Superquadrics and angle-preserving transformations", IEEE Computer
+Graphics and Applications 1(1), 11-23, 1981.
+"""
+
+import numpy as np
+
+from .. import _validate as v
+from ..errors import ArgumentValueError
+from .mesh import Mesh
+
+#: Largest tessellation of the generators (vertices).
+MAX_VERTICES = 1 << 24
+
+
+def _positive(name, value):
+    x = v.number(name, value)
+    if not x > 0:
+        raise ArgumentValueError(f"{name} must be > 0, got {value!r}")
+    return x
+
+
+def _resolution(resolution, low_v=2):
+    """(nu, nv): intervals around (θ) and along (φ)."""
+    if isinstance(resolution, int) and not isinstance(resolution, bool):
+        nu, nv = resolution, max(low_v, resolution // 2)
+    elif hasattr(resolution, "__len__") and len(resolution) == 2:
+        nu, nv = resolution
+    else:
+        raise ArgumentValueError(
+            f"resolution must be an integer or a pair (nu, nv), got {v._show(resolution)}")
+    nu = v.positive_int("resolution[0]", nu, 3)
+    nv = v.positive_int("resolution[1]", nv, low_v)
+    if nu * (nv + 1) > MAX_VERTICES:
+        raise ArgumentValueError(f"resolution ({nu}, {nv}) asks for more than {MAX_VERTICES} "
+                                 "vertices")
+    return nu, nv
+
+
+def spow(c, s):
+    """sign(c) |c|^s, the signed power of the superquadrics."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.sign(c) * np.abs(c) ** s
+
+
+def _unit(n):
+    length = np.sqrt((n * n).sum(axis=-1, keepdims=True))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return n / length
+
+
+def _closed_surface(point, normal, nu, nv, **kw):
+    """A sphere-like mesh: rings at φ_j = -π/2 + j π / nv (j = 1 .. nv - 1) of nu
+    vertices at θ_i = -π + 2π i / nu, and one vertex at each pole."""
+    theta = -np.pi + 2 * np.pi * np.arange(nu) / nu
+    phi = -np.pi / 2 + np.pi * np.arange(1, nv) / nv
+    t, p = np.meshgrid(theta, phi)                 # rows: rings
+    south, north = np.array([-np.pi / 2]), np.array([np.pi / 2])
+    verts = np.vstack([point(south, np.zeros(1)), point(p.ravel(), t.ravel()),
+                       point(north, np.zeros(1))])
+    normals = np.vstack([normal(south, np.zeros(1)), normal(p.ravel(), t.ravel()),
+                         normal(north, np.zeros(1))])
+    faces = []
+    ring = lambda j, i: 1 + j * nu + (i % nu)      # noqa: E731
+    for i in range(nu):
+        faces.append([0, ring(0, i + 1), ring(0, i)])
+    for j in range(nv - 2):
+        for i in range(nu):
+            faces.append([ring(j, i), ring(j, i + 1), ring(j + 1, i + 1), ring(j + 1, i)])
+    top = len(verts) - 1
+    for i in range(nu):
+        faces.append([ring(nv - 2, i), ring(nv - 2, i + 1), top])
+    normals = _fallback(normals, verts)
+    return Mesh(verts, faces, normals=normals, **kw)
+
+
+def _fallback(normals, verts):
+    """Normals the formula leaves undefined (0/0 at a cusp) taken from the position
+    direction instead."""
+    bad = ~np.isfinite(normals).all(axis=1) | (np.abs(normals).sum(axis=1) == 0)
+    if bad.any():
+        normals = normals.copy()
+        normals[bad] = _unit(np.where(np.abs(verts[bad]) > 0, verts[bad], [0, 0, 1.0]))
+    return normals
+
+
+def _periodic_surface(point, normal, nu, nv, **kw):
+    """A torus-like mesh: an nv x nu grid of quadrilaterals, periodic both ways."""
+    theta = -np.pi + 2 * np.pi * np.arange(nu) / nu
+    phi = -np.pi + 2 * np.pi * np.arange(nv) / nv
+    t, p = np.meshgrid(theta, phi)
+    verts = point(p.ravel(), t.ravel())
+    normals = _fallback(normal(p.ravel(), t.ravel()), verts)
+    j, i = np.meshgrid(np.arange(nv), np.arange(nu), indexing="ij")
+    a = j * nu + i
+    b = j * nu + (i + 1) % nu
+    c = ((j + 1) % nv) * nu + (i + 1) % nu
+    d = ((j + 1) % nv) * nu + i
+    faces = np.stack([a, b, c, d], axis=-1).reshape(-1, 4)
+    return Mesh(verts, faces, normals=normals, **kw)
+
+
+def superellipsoid(s1=1.0, s2=1.0, radii=(1.0, 1.0, 1.0), center=(0.0, 0.0, 0.0),
+                   resolution=24, **kw):
+    """The superellipsoid of exponents ``s1`` (latitude) and ``s2`` (longitude), with
+    semi-axes ``radii`` = (rx, ry, rz) about ``center`` (see the module docstring).
+    s1 = s2 = 1 is the ellipsoid; exponents toward 0 make it box-like, 2 an
+    octahedron-like shape, larger ones pinched.
+
+    ``resolution``: intervals (nu, nv) around and pole to pole, or one integer n for
+    (n, n // 2).  Other keywords (``colors``, ``name``) go to :class:`Mesh`.
+
+    Notes
+    -----
+    Hearn & Baker, section 10-5, eq. 10-14.
+    """
+    s1, s2 = _positive("s1", s1), _positive("s2", s2)
+    rx, ry, rz = (_positive(f"radii[{i}]", r) for i, r in enumerate(_triple("radii", radii)))
+    c = np.array(_triple("center", center), np.float64)
+    nu, nv = _resolution(resolution)
+
+    def point(p, t):
+        cp = spow(np.cos(p), s1)
+        return np.stack([rx * cp * spow(np.cos(t), s2), ry * cp * spow(np.sin(t), s2),
+                         rz * spow(np.sin(p), s1)], axis=1) + c
+
+    return _closed_surface(point, _super_normal(s1, s2, rx, ry, rz), nu, nv, **kw)
+
+
+def _super_normal(s1, s2, rx, ry, rz):
+    """The unit normal n(φ, θ) of a superellipsoid or supertoroid (Barr 1981): the
+    gradient of the implicit surface, (cos^(2-s1) φ cos^(2-s2) θ / rx,
+    cos^(2-s1) φ sin^(2-s2) θ / ry, sin^(2-s1) φ / rz) normalized."""
+    def normal(p, t):
+        cp = spow(np.cos(p), 2 - s1)
+        return _unit(np.stack([cp * spow(np.cos(t), 2 - s2) / rx,
+                               cp * spow(np.sin(t), 2 - s2) / ry,
+                               spow(np.sin(p), 2 - s1) / rz], axis=1))
+    return normal
+
+
+def _triple(name, value):
+    from ..transform3d.arrays import vector
+
+    return vector(name, value)
+
+
+def ellipsoid(rx=1.0, ry=1.0, rz=1.0, center=(0.0, 0.0, 0.0), resolution=24, **kw):
+    """The ellipsoid x²/rx² + y²/ry² + z²/rz² = 1 (Hearn & Baker, section 10-4,
+    eq. 10-9), normals ∝ (x/rx², y/ry², z/rz²)."""
+    return superellipsoid(1.0, 1.0, (rx, ry, rz), center, resolution, **kw)
+
+
+def sphere(radius=1.0, center=(0.0, 0.0, 0.0), resolution=24, **kw):
+    """The sphere of ``radius`` about ``center`` (Hearn & Baker, section 10-4,
+    eq. 10-7): unit normals (x, y, z) / r.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> s = sl.mesh.sphere(2.0, resolution=(8, 4))
+    >>> len(s.vertices), len(s), s.polygon_tables().consistent
+    (26, 32, True)
+    """
+    r = _positive("radius", radius)
+    return superellipsoid(1.0, 1.0, (r, r, r), center, resolution, **kw)
+
+
+def supertoroid(s1=1.0, s2=1.0, r=3.0, radii=(1.0, 1.0, 1.0), center=(0.0, 0.0, 0.0),
+                resolution=(32, 16), **kw):
+    """The supertoroid of Hearn & Baker, section 10-5: ``r`` is the distance from the
+    center to the middle of the tube in units of the tube radius (r > 1), ``radii``
+    scale x, y, z.  s1 = s2 = 1 is the torus of tube radius rx and ring radius
+    r·rx."""
+    s1, s2 = _positive("s1", s1), _positive("s2", s2)
+    r = v.number("r", r)
+    if not r > 1:
+        raise ArgumentValueError(f"r must be > 1 (the ring wider than the tube), got {r!r}")
+    rx, ry, rz = (_positive(f"radii[{i}]", q) for i, q in enumerate(_triple("radii", radii)))
+    c = np.array(_triple("center", center), np.float64)
+    nu, nv = _resolution(resolution, 3)
+
+    def point(p, t):
+        ring = r + spow(np.cos(p), s1)
+        return np.stack([rx * ring * spow(np.cos(t), s2), ry * ring * spow(np.sin(t), s2),
+                         rz * spow(np.sin(p), s1)], axis=1) + c
+
+    return _periodic_surface(point, _super_normal(s1, s2, rx, ry, rz), nu, nv, **kw)
+
+
+def torus(major=1.0, minor=0.25, center=(0.0, 0.0, 0.0), resolution=(32, 16), **kw):
+    """The torus about the z axis with ring radius ``major`` (center to the middle
+    of the tube) and tube radius ``minor`` < ``major`` (Hearn & Baker, section 10-4,
+    eq. 10-11); normals (cos φ cos θ, cos φ sin θ, sin φ).
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> t = sl.mesh.torus(2.0, 0.5, resolution=(12, 6))
+    >>> len(t.vertices), len(t), len(t.edges)
+    (72, 72, 144)
+    """
+    big, small = _positive("major", major), _positive("minor", minor)
+    if not small < big:
+        raise ArgumentValueError(f"minor ({small:g}) must be smaller than major ({big:g}): "
+                                 "the tube would cross the axis")
+    return supertoroid(1.0, 1.0, big / small, (small, small, small), center, resolution, **kw)
+
+
+def superquadric(kind="ellipsoid", s1=1.0, s2=1.0, **kw):
+    """A superquadric by name: ``"ellipsoid"`` (:func:`superellipsoid`) or
+    ``"toroid"`` (:func:`supertoroid`)."""
+    v.choice("kind", kind, ("ellipsoid", "toroid"))
+    return (superellipsoid if kind == "ellipsoid" else supertoroid)(s1, s2, **kw)
+
+
+#: The cube's faces, counterclockwise seen from outside: -x, +x, -y, +y, -z, +z.
+_CUBE_FACES = [[0, 4, 6, 2], [1, 3, 7, 5], [0, 1, 5, 4], [2, 6, 7, 3], [0, 2, 3, 1],
+               [4, 5, 7, 6]]
+
+
+def box(lo=(-1.0, -1.0, -1.0), hi=(1.0, 1.0, 1.0), **kw):
+    """The box from ``lo`` to ``hi``: 8 vertices (vertex k has x = hi if k & 1, y if
+    k & 2, z if k & 4), 6 quadrilateral faces (-x, +x, -y, +y, -z, +z), 12 edges."""
+    lo, hi = _triple("lo", lo), _triple("hi", hi)
+    if not all(a < b for a, b in zip(lo, hi)):
+        raise ArgumentValueError(f"the box needs lo < hi on every axis, got {lo}, {hi}")
+    verts = [[hi[0] if k & 1 else lo[0], hi[1] if k & 2 else lo[1], hi[2] if k & 4 else lo[2]]
+             for k in range(8)]
+    return Mesh(verts, _CUBE_FACES, **kw)
+
+
+def cube(size=2.0, center=(0.0, 0.0, 0.0), **kw):
+    """The cube of edge ``size`` about ``center`` (see :func:`box`).
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> c = sl.mesh.cube()
+    >>> c, c.polygon_tables().consistent
+    (<Mesh: 8 vertices, 6 faces, 12 edges>, True)
+    """
+    s = _positive("size", size) / 2
+    c = _triple("center", center)
+    return box([x - s for x in c], [x + s for x in c], **kw)
+

@@ -1,0 +1,185 @@
+"""Hearn & Baker's polygon tables (section 10-1): the geometric data of a polygon
+mesh in three tables, with the consistency checks the book lists.
+
+- the **vertex table**: V1: x1, y1, z1; V2: ...
+- the **edge table**: E1: V1, V2 -- each edge's two vertices, with (the expanded
+  table) forward pointers to the polygons it belongs to;
+- the **polygon-surface table** (surface facets): S1: E1, E2, E3 -- each polygon's
+  edges in order around it.
+
+Hearn & Baker's checks: (1) every vertex is an endpoint of at least two edges,
+(2) every edge is part of at least one polygon, (3) every polygon is closed,
+(4) each polygon has at least one shared edge, (5) every edge referenced by a
+polygon has a reciprocal pointer back to the polygon in the edge table.  Tables are
+numbered from 1 when printed, as in the book, and from 0 in the arrays.
+"""
+
+import numpy as np
+
+from ..errors import ArgumentValueError
+from ..transform3d.arrays import finite, real_array
+
+
+def _index_table(name, value, columns=None):
+    a = np.asarray(value)
+    if a.dtype.kind not in "iu" or a.ndim != 2 or (columns and a.shape[1] != columns):
+        raise ArgumentValueError(
+            f"{name} must be an integer array of shape (N, {columns or 'k'}), got "
+            f"{a.dtype} of shape {a.shape}")
+    return a.astype(np.int64)
+
+
+class PolygonTables:
+    """The vertex, edge and polygon-surface tables of a mesh.
+
+    Parameters
+    ----------
+    vertices : array_like, shape (V, 3)
+    edges : array_like of int, shape (E, 2)
+        Vertex indices (0-based) of each edge.
+    surfaces : list of sequences of int
+        Each polygon's edge indices, in order around it.
+    edge_surfaces : list of sequences of int, optional
+        The expanded edge table: for each edge, the polygons it belongs to (the
+        forward pointers).  Built from ``surfaces`` when omitted.
+
+    Build them from a mesh with :meth:`scanline.mesh.Mesh.polygon_tables`, or give
+    the tables directly (also broken ones: :meth:`check` says what is wrong).
+    """
+
+    def __init__(self, vertices, edges, surfaces, edge_surfaces=None):
+        self.vertices = finite("vertices", real_array("vertices", vertices, "(V, 3)"))
+        self.edges = _index_table("edges", edges, 2)
+        self.surfaces = [np.asarray(s, dtype=np.int64) for s in surfaces]
+        if edge_surfaces is None:
+            pointers = [[] for _ in range(len(self.edges))]
+            for s, ring in enumerate(self.surfaces):
+                for e in ring:
+                    if 0 <= e < len(pointers) and s not in pointers[e]:
+                        pointers[e].append(s)
+            edge_surfaces = pointers
+        self.edge_surfaces = [list(p) for p in edge_surfaces]
+
+    @classmethod
+    def from_mesh(cls, mesh):
+        """The tables of a :class:`~scanline.mesh.Mesh`: its distinct edges and, for
+        each face, its edges in order (face i's edge k joins its vertices k and k + 1)."""
+        from .mesh import _rows_in
+
+        half, owner = mesh._half_edges()
+        which = _rows_in(mesh.edges, np.sort(half, axis=1))
+        surfaces = [which[mesh.face_offsets[i]:mesh.face_offsets[i + 1]]
+                    for i in range(mesh.face_count)]
+        tables = cls.__new__(cls)
+        tables.vertices = mesh.vertices
+        tables.edges = mesh.edges
+        tables.surfaces = surfaces
+        pointers = [[] for _ in range(len(mesh.edges))]
+        for e, s in zip(which.tolist(), owner.tolist()):
+            pointers[e].append(s)
+        tables.edge_surfaces = pointers
+        return tables
+
+    def check(self):
+        """Hearn & Baker's consistency checks: a list of problems, empty when the
+        tables are consistent.  Each problem is a sentence naming the table entry
+        (numbered from 1, as printed)."""
+        problems = []
+        nv, ne = len(self.vertices), len(self.edges)
+        for e, (a, b) in enumerate(self.edges.tolist()):
+            for end in (a, b):
+                if not 0 <= end < nv:
+                    problems.append(f"edge E{e + 1} refers to vertex V{end + 1}, which is not "
+                                    f"in the vertex table (V1 to V{nv})")
+            if a == b:
+                problems.append(f"edge E{e + 1} joins vertex V{a + 1} to itself")
+        ends = self.edges[(self.edges >= 0).all(axis=1) & (self.edges < nv).all(axis=1)]
+        degree = np.bincount(ends.reshape(-1), minlength=nv) if nv else np.zeros(0, int)
+        for vtx in np.flatnonzero(degree < 2).tolist():
+            problems.append(f"vertex V{vtx + 1} is an endpoint of {int(degree[vtx])} edge(s); "
+                            "every vertex must be an endpoint of at least two")
+        used = np.zeros(ne, np.int64)
+        for s, ring in enumerate(self.surfaces):
+            bad = [int(e) for e in ring if not 0 <= e < ne]
+            if bad:
+                problems.append(f"surface S{s + 1} refers to edge E{bad[0] + 1}, which is not "
+                                f"in the edge table (E1 to E{ne})")
+                continue
+            used[ring] += 1
+            if len(ring) < 3:
+                problems.append(f"surface S{s + 1} has {len(ring)} edges; a polygon needs at "
+                                "least three")
+            elif not _closed(self.edges, ring):
+                problems.append(f"surface S{s + 1} is not closed: its edges "
+                                f"{', '.join('E' + str(int(e) + 1) for e in ring)} do not "
+                                "form one loop")
+        for e in np.flatnonzero(used == 0).tolist():
+            problems.append(f"edge E{e + 1} is not part of any polygon")
+        for s, ring in enumerate(self.surfaces):
+            inside = [int(e) for e in ring if 0 <= e < ne]
+            if inside and len(self.surfaces) > 1 and not any(used[e] >= 2 for e in inside):
+                problems.append(f"surface S{s + 1} shares no edge with another polygon")
+            for e in inside:
+                if e < len(self.edge_surfaces) and s not in self.edge_surfaces[e]:
+                    problems.append(f"surface S{s + 1} lists edge E{e + 1}, but the edge "
+                                    f"table has no pointer from E{e + 1} back to S{s + 1}")
+        for e, pointers in enumerate(self.edge_surfaces):
+            for s in pointers:
+                if not 0 <= s < len(self.surfaces) or e not in self.surfaces[s].tolist():
+                    problems.append(f"edge E{e + 1} points to surface S{s + 1}, which does not "
+                                    f"list E{e + 1}")
+        return problems
+
+    @property
+    def consistent(self):
+        """Whether :meth:`check` finds nothing."""
+        return not self.check()
+
+    def validate(self):
+        """Raise ArgumentValueError with the first problems if the tables are not
+        consistent."""
+        problems = self.check()
+        if problems:
+            more = f" (and {len(problems) - 3} more)" if len(problems) > 3 else ""
+            raise ArgumentValueError("the polygon tables are not consistent: "
+                                     + "; ".join(problems[:3]) + more)
+
+    def __str__(self):
+        lines = ["vertex table"]
+        lines += [f"  V{i + 1}: {x:g}, {y:g}, {z:g}" for i, (x, y, z) in
+                  enumerate(self.vertices.tolist())]
+        lines.append("edge table")
+        for e, (a, b) in enumerate(self.edges.tolist()):
+            back = ", ".join(f"S{s + 1}" for s in self.edge_surfaces[e]) \
+                if e < len(self.edge_surfaces) else ""
+            lines.append(f"  E{e + 1}: V{a + 1}, V{b + 1}" + (f"   ({back})" if back else ""))
+        lines.append("polygon-surface table")
+        lines += [f"  S{s + 1}: " + ", ".join(f"E{int(e) + 1}" for e in ring)
+                  for s, ring in enumerate(self.surfaces)]
+        return "\n".join(lines)
+
+    def __repr__(self):
+        return (f"<PolygonTables: {len(self.vertices)} vertices, {len(self.edges)} edges, "
+                f"{len(self.surfaces)} surfaces>")
+
+
+def _closed(edges, ring):
+    """Whether the edges ``ring`` (in order) form one closed loop."""
+    pairs = [tuple(edges[e]) for e in ring]
+    shared = set(pairs[0]) & set(pairs[-1])
+    if not shared:
+        return False
+    for start in shared:           # walk from a vertex the last and first edges share
+        at = start
+        ok = True
+        for a, b in pairs:
+            if at == a:
+                at = b
+            elif at == b:
+                at = a
+            else:
+                ok = False
+                break
+        if ok and at == start:
+            return True
+    return False

@@ -1,0 +1,400 @@
+"""The camera: the viewing transformation, a projection and the 3-D viewport
+(Hearn & Baker, sections 12-2 to 12-4).
+
+The pipeline of a :class:`Camera`::
+
+    world --V--> viewing coordinates --N--> homogeneous clip coordinates
+          --clip 0 <= x, y, z <= w--> divide by w --> NDC (the unit cube)
+          --3-D viewport--> device x, y and depth
+
+V is the composite world -> viewing matrix R · T (section 12-2), N the projection's
+:attr:`~scanline.projection.Projection.normalization` (with the window widened to
+the device's aspect ratio when ``keep_aspect``).  Device coordinates follow
+:func:`scanline.viewing.ndc_to_device`: NDC (0, 0) is the center of the bottom-left
+pixel and (1, 1) of the top-right one.  The depth is the NDC z mapped into the
+viewport's z range (default 0 at the front plane, 1 at the back plane).
+"""
+
+import math
+
+import numpy as np
+
+from .. import _validate as v
+from .. import transform3d as t3
+from ..errors import ArgumentTypeError, ArgumentValueError
+from ..transform3d.arrays import points as point_array
+from ..transform3d.arrays import vector
+from .projections import VIEWS, Projection, frame, perspective
+
+#: The 3-D viewport of a camera when none is given: the whole normalized cube.
+FULL_VIEWPORT = (0.0, 0.0, 0.0, 1.0, 1.0, 1.0)
+
+
+def viewing_matrix(view_reference_point, view_plane_normal, view_up):
+    """The world -> viewing-coordinates matrix M_wc,vc = R · T (Hearn & Baker,
+    section 12-2).
+
+    T = T(-P0) moves the view reference point P0 to the origin; R has the rows
+    u, v, n of the viewing frame::
+
+        n = N / |N|,   u = (V x N) / |V x N|,   v = n x u
+
+        R = | u_x  u_y  u_z  0 |
+            | v_x  v_y  v_z  0 |
+            | n_x  n_y  n_z  0 |
+            |  0    0    0   1 |
+
+    so that the view-plane normal N becomes z_v and the projection of the view-up
+    vector V onto the view plane becomes y_v (right-handed; the viewer looks along
+    -z_v).
+
+    Raises
+    ------
+    ArgumentValueError
+        If N or V is the zero vector or V is parallel to N.
+
+    Examples
+    --------
+    >>> from scanline.projection import viewing_matrix
+    >>> m = viewing_matrix((0, 0, 5), (0, 0, 1), (0, 1, 0))
+    >>> m[:3, 3].tolist()
+    [0.0, 0.0, -5.0]
+    """
+    p0 = np.array(vector("view_reference_point", view_reference_point))
+    r = frame(view_plane_normal, view_up, "view_plane_normal", "view_up")
+    return t3.compose(r, t3.translation(*(-p0)))
+
+
+def look_at(eye, target, up=(0.0, 1.0, 0.0)):
+    """The viewing matrix of an eye at ``eye`` looking at ``target``: the view
+    reference point is the eye and N = eye - target (Hearn & Baker's N points from
+    the scene toward the viewer).
+
+    Raises
+    ------
+    ArgumentValueError
+        If eye = target (no view direction) or ``up`` is parallel to the view
+        direction.
+    """
+    e = np.array(vector("eye", eye))
+    t = np.array(vector("target", target))
+    if (e == t).all():
+        raise ArgumentValueError(
+            f"eye and target are the same point {tuple(e.tolist())}: the camera needs a "
+            "direction to look in; move the eye or the target")
+    with np.errstate(over="ignore"):
+        n = e - t
+    r = frame(n, up, "eye - target", "up")
+    return t3.compose(r, t3.translation(*(-e)))
+
+
+def _corners(clip, projection):
+    """The view volume's corners (8, 3) in the space that ``clip`` maps to clip
+    coordinates."""
+    back = 0.9 if projection.kind == "perspective" and projection.back is None else 1.0
+    cube = np.array([[x, y, z, 1.0] for z in (0.0, back)
+                     for x, y in ((0, 0), (1, 0), (1, 1), (0, 1))])
+    h = cube @ t3.inverse(clip).T
+    return h[:, :3] / h[:, 3:]
+
+
+def _viewport(value):
+    if isinstance(value, (str, bytes)) or not hasattr(value, "__len__") or len(value) != 6:
+        raise ArgumentTypeError(
+            "viewport must be (xmin, ymin, zmin, xmax, ymax, zmax) within the unit cube, "
+            f"got {v._show(value)}")
+    b = tuple(v.number(f"viewport[{i}]", c) for i, c in enumerate(value))
+    if not (0.0 <= b[0] < b[3] <= 1.0 and 0.0 <= b[1] < b[4] <= 1.0
+            and 0.0 <= b[2] < b[5] <= 1.0):
+        raise ArgumentValueError(
+            f"viewport={b} must lie within the unit cube with xmin < xmax, ymin < ymax and "
+            "zmin < zmax, e.g. (0, 0, 0, 1, 1, 1)")
+    return b
+
+
+class Camera:
+    """A synthetic camera: where it is, where it looks, how it projects.
+
+    Parameters
+    ----------
+    eye, target, up : 3-vectors, optional
+        The usual form: the eye (the view reference point) looking at the target,
+        ``up`` (default +y) giving the view-up vector.  ``target`` alone: viewing
+        coordinates are world coordinates with the origin moved to the target (for
+        the projections that carry their own view direction: the standard and
+        axonometric views).  With neither this nor the Hearn & Baker form, viewing
+        coordinates are world coordinates.
+    projection : Projection, optional
+        Default: ``perspective(fov=45 degrees, near=0.1)`` (no back plane).
+    view_reference_point, view_plane_normal, view_up : 3-vectors, optional
+        Hearn & Baker's form (section 12-2) instead of eye/target/up: the origin P0
+        of viewing coordinates, the view-plane normal N (z_v) and the view-up
+        vector V.  The projection's center of projection and view plane are then
+        given relative to P0 along N (e.g. ``perspective(z_prp=10, z_vp=0)``).
+    viewport : (xmin, ymin, zmin, xmax, ymax, zmax)
+        The 3-D viewport within the normalized unit cube (Hearn & Baker, section
+        12-3): where the view volume lands on the device, and the depth range.
+    keep_aspect : bool
+        Widen the window about its center to the device viewport's aspect ratio, so
+        shapes keep their proportions (default True).  False stretches the window
+        over the viewport.
+
+    Examples
+    --------
+    >>> import math, scanline as sl
+    >>> cam = sl.Camera(eye=(0, 0, 5), target=(0, 0, 0),
+    ...                 projection=sl.projection.perspective(fov=math.pi / 2, near=1, far=9))
+    >>> cam.project([(0, 0, 0), (1, 1, 0)], 101, 101).round(6).tolist()
+    [[50.0, 50.0, 0.9], [60.0, 60.0, 0.9]]
+    """
+
+    def __init__(self, eye=None, target=None, up=None, projection=None, *,
+                 view_reference_point=None, view_plane_normal=None, view_up=None,
+                 viewport=FULL_VIEWPORT, keep_aspect=True):
+        usual = eye is not None or target is not None or up is not None
+        textbook = (view_reference_point is not None or view_plane_normal is not None
+                    or view_up is not None)
+        if usual and textbook:
+            raise ArgumentValueError(
+                "give the camera either eye/target/up or view_reference_point/"
+                "view_plane_normal/view_up (Hearn & Baker's form), not both")
+        if projection is None:
+            projection = perspective(fov=math.radians(45), near=0.1)
+        if not isinstance(projection, Projection):
+            raise ArgumentTypeError(
+                "projection must be a scanline.projection.Projection (from "
+                "sl.projection.perspective, orthographic, oblique, isometric, ...), got "
+                f"{v._show(projection)}")
+        oriented = not np.array_equal(projection.orientation, np.eye(4))
+        if usual and eye is None and target is not None and up is None:
+            # target alone: viewing coordinates are world coordinates moved to the
+            # target, for the views that carry their own direction (isometric, top ...)
+            self.view_matrix = t3.translation(*(-np.array(vector("target", target))))
+            usual = False
+            self._eye = self.up = None
+            self.target = vector("target", target)
+        elif usual:
+            if eye is None or target is None:
+                raise ArgumentValueError(
+                    f"the eye/target form needs both eye and target; got eye={eye!r}, "
+                    f"target={target!r} (a view with its own direction, such as "
+                    "isometric() or orthographic('top'), takes target alone)")
+            if oriented:
+                raise ArgumentValueError(
+                    f"the {projection.name} projection carries its own view direction; give "
+                    "it target alone (Camera(target=..., projection=...)), or use "
+                    "orthographic() with the eye where you want it")
+            up = (0.0, 1.0, 0.0) if up is None else up
+            self.view_matrix = look_at(eye, target, up)
+            self._eye, self.target, self.up = (vector(n, x) for n, x in
+                                               (("eye", eye), ("target", target), ("up", up)))
+        elif textbook:
+            self.view_matrix = viewing_matrix(
+                (0.0, 0.0, 0.0) if view_reference_point is None else view_reference_point,
+                (0.0, 0.0, 1.0) if view_plane_normal is None else view_plane_normal,
+                (0.0, 1.0, 0.0) if view_up is None else view_up)
+        elif target is None:
+            self.view_matrix = np.eye(4)
+        if not usual and target is None:
+            self._eye = self.target = self.up = None
+        self.projection = projection
+        self.viewport = _viewport(viewport)
+        if not isinstance(keep_aspect, bool):
+            raise ArgumentTypeError(f"keep_aspect must be True or False, got {keep_aspect!r}")
+        self.keep_aspect = keep_aspect
+
+    @classmethod
+    def standard(cls, view, target=(0.0, 0.0, 0.0), distance=10.0, projection=None, **kw):
+        """A camera ``distance`` from ``target`` in one of the standard views of
+        :data:`scanline.projection.VIEWS` (front, rear, right, left, top, bottom;
+        "side" is "right"), looking at the target with that view's up vector.
+        Default projection: orthographic with the window (-1, -1, 1, 1)."""
+        from .projections import VIEW_NAMES, orthographic
+
+        v.choice("view", view, VIEW_NAMES)
+        direction, up = VIEWS["right" if view == "side" else view]
+        d = v.number("distance", distance)
+        if not d > 0:
+            raise ArgumentValueError(f"distance must be > 0, got {distance!r}")
+        t = np.array(vector("target", target))
+        return cls(eye=t + d * np.array(direction), target=t, up=up,
+                   projection=orthographic() if projection is None else projection, **kw)
+
+    def replace(self, **changes):
+        """A copy with ``projection``, ``viewport`` or ``keep_aspect`` changed."""
+        new = object.__new__(Camera)
+        new.__dict__.update(self.__dict__)
+        for key, value in changes.items():
+            if key == "projection":
+                if not isinstance(value, Projection):
+                    raise ArgumentTypeError("projection must be a scanline.projection.Projection")
+                new.projection = value
+            elif key == "viewport":
+                new.viewport = _viewport(value)
+            elif key == "keep_aspect":
+                new.keep_aspect = bool(value)
+            else:
+                raise ArgumentTypeError(
+                    f"replace() takes projection, viewport or keep_aspect; got {key!r}")
+        return new
+
+    # -- matrices -------------------------------------------------------------------------
+    @property
+    def eye(self):
+        """The world position of the center of projection (perspective), or None."""
+        if self.projection.prp is None:
+            return None
+        p = t3.apply(t3.inverse(self.view_matrix), self.projection.prp)
+        return tuple(float(c) for c in p)
+
+    def _fit(self, aspect):
+        """The aspect correction (4x4, on clip coordinates) for a device viewport
+        whose width / height is ``aspect`` (None: none)."""
+        if not self.keep_aspect or aspect is None:
+            return np.eye(4)
+        xmin, ymin, xmax, ymax = self.projection.window
+        window = (xmax - xmin) / (ymax - ymin)
+        sx, sy = (window / aspect, 1.0) if aspect > window else (1.0, aspect / window)
+        return np.array([[sx, 0, 0, 0.5 * (1 - sx)], [0, sy, 0, 0.5 * (1 - sy)],
+                         [0, 0, 1, 0], [0, 0, 0, 1]], np.float64)
+
+    def mapping(self, box, aspect=None):
+        """How the camera projects into the rectangle ``box`` = (x0, y0, x1, y1) of
+        some 2-D coordinates (a frame buffer's pixels, a display file's NDC):
+        ``(matrix, scale, offset)``, the world -> clip matrix (the window widened to
+        the displayed aspect ratio ``aspect`` = width / height of ``box`` as seen,
+        default the box's own), and the per-axis map from NDC to ``box``
+        (x, y) and to the depth range (z): ``ndc * scale + offset``.  The camera's
+        3-D viewport is a part of ``box``."""
+        x0, y0, x1, y1 = (float(c) for c in box)
+        vx0, vy0, vz0, vx1, vy1, vz1 = self.viewport
+        scale = np.array([(vx1 - vx0) * (x1 - x0), (vy1 - vy0) * (y1 - y0), vz1 - vz0])
+        offset = np.array([x0 + vx0 * (x1 - x0), y0 + vy0 * (y1 - y0), vz0])
+        if aspect is None:
+            aspect = (x1 - x0) / (y1 - y0)
+        seen = aspect * (vx1 - vx0) / (vy1 - vy0)
+        clip = self._fit(seen) @ self.projection.normalization @ self.view_matrix
+        return clip, scale, offset
+
+    def _device_box(self, width, height):
+        w = v.positive_int("width", width, 2)
+        h = v.positive_int("height", height, 2)
+        return (0.0, 0.0, float(w - 1), float(h - 1))
+
+    def matrix(self, width=None, height=None):
+        """The world -> homogeneous clip matrix: N · V, with the window widened to a
+        ``width`` x ``height`` device when given (and ``keep_aspect``)."""
+        if width is None:
+            return self.projection.normalization @ self.view_matrix
+        return self.mapping(self._device_box(width, height))[0]
+
+    def device(self, width, height):
+        """``(scale, offset)``: device = NDC * scale + offset per axis (x, y, depth)
+        for a ``width`` x ``height`` frame buffer and this camera's 3-D viewport."""
+        return self.mapping(self._device_box(width, height))[1:]
+
+    # -- points ---------------------------------------------------------------------------
+    def to_viewing(self, points):
+        """Points (N, 3) in viewing coordinates."""
+        return t3.apply(self.view_matrix, points)
+
+    def to_clip(self, points, width=None, height=None):
+        """Points (N, 3) as homogeneous clip coordinates (N, 4)."""
+        from .._kernels import project3d as k
+        from .._kernels._jit import call
+
+        p, single = point_array("points", points)
+        out = np.empty((len(p), 4))
+        call(k.to_clip, 4 * len(p), np.ascontiguousarray(self.matrix(width, height)), p, out)
+        return out[0] if single else out
+
+    def project(self, points, width, height):
+        """Device x, y and depth of world points, (N, 3) (or (3,) for one point).
+
+        x and y are device coordinates of a ``width`` x ``height`` frame buffer, the
+        depth the NDC depth in the viewport's z range (0 on the front plane, 1 on
+        the back plane by default).  Points outside the view volume still get their
+        projection; points at or behind the eye of a perspective view (w <= 0) get
+        NaN rather than a mirrored position.  Use :meth:`visible` to know which
+        points are inside, and the clippers (:func:`scanline.clip.homogeneous`,
+        :func:`scanline.draw3d.wireframe`) for lines and polygons.
+        """
+        from .._kernels import project3d as k
+        from .._kernels._jit import call
+
+        p, single = point_array("points", points)
+        scale, offset = self.device(width, height)
+        out = np.empty((len(p), 3))
+        call(k.project_points, 6 * len(p), np.ascontiguousarray(self.matrix(width, height)),
+             scale, offset, p, out)
+        return out[0] if single else out
+
+    def linear_depth(self, depth):
+        """Device depths (as :meth:`project` gives them) turned into distances beyond
+        the front plane along the viewing direction, linear in viewing coordinates
+        (the NDC depth of a perspective view is a pseudo-depth, 1 - u_f / u scaled:
+        the same order, not the same spacing)."""
+        d = np.asarray(depth, np.float64)
+        z0, z1 = self.viewport[2], self.viewport[5]
+        zn = (d - z0) / (z1 - z0)
+        p = self.projection
+        if p.kind == "parallel":
+            return zn * (p.front - p.back)
+        uf = p.prp[2] - p.front
+        if p.back is None:
+            with np.errstate(divide="ignore"):
+                return uf / (1.0 - zn) - uf
+        ub = p.prp[2] - p.back
+        return uf * ub / (ub - zn * (ub - uf)) - uf
+
+    def visible(self, points, width=None, height=None):
+        """Whether each point lies inside the view volume (boundary included)."""
+        h = np.atleast_2d(self.to_clip(points, width, height))
+        w = h[:, 3:]
+        return ((h[:, :3] >= 0) & (h[:, :3] <= w)).all(axis=1) & (w[:, 0] > 0)
+
+    def vanishing_point(self, direction, width, height):
+        """The device position (x, y) where lines along ``direction`` (world
+        coordinates) converge, or None when they stay parallel (the direction is
+        parallel to the view plane, or the projection is parallel).
+
+        The vanishing point is the image of the point at infinity (d, 0): the clip
+        coordinates M · (dx, dy, dz, 0), divided by their w (Hearn & Baker, section
+        12-3: "principal vanishing points" for lines parallel to the axes)."""
+        from ..transform3d.arrays import direction as unit
+
+        d = unit("direction", direction)
+        h = self.matrix(width, height) @ np.append(d, 0.0)
+        if abs(h[3]) <= 1e-12 * np.abs(h).max():
+            return None
+        scale, offset = self.device(width, height)
+        ndc = h[:3] / h[3]
+        return (float(ndc[0] * scale[0] + offset[0]), float(ndc[1] * scale[1] + offset[1]))
+
+    def volume_corners(self, width=None, height=None):
+        """The corners of the view volume in world coordinates, (8, 3): the front face
+        counterclockwise from the lower left, then the back face (for a volume
+        without a back plane, drawn at ten times the front plane's distance).  With
+        ``width`` and ``height``, the window widened to that device."""
+        return _corners(self.matrix(width, height), self.projection)
+
+    def stereo_pair(self, separation):
+        """Left-eye and right-eye cameras for a stereoscopic view (Hearn & Baker,
+        section 9-1): the eye moved by -``separation`` / 2 and +``separation`` / 2
+        along the camera's x_v axis, both looking at the target (the two views are
+        computed "from viewing directions along the lines from each eye position to
+        the center of the scene").  Needs a camera made with eye and target."""
+        s = v.number("separation", separation)
+        if self.target is None:
+            raise ArgumentValueError(
+                "stereo_pair needs a camera made with eye= and target= (the eyes turn "
+                "toward the target)")
+        eye = np.array(self._eye)
+        u = t3.inverse(self.view_matrix)[:3, 0]
+        return tuple(Camera(eye=eye + sign * s / 2 * u, target=self.target, up=self.up,
+                            projection=self.projection, viewport=self.viewport,
+                            keep_aspect=self.keep_aspect) for sign in (-1.0, 1.0))
+
+    def __repr__(self):
+        return (f"<Camera {self.projection.name} ({self.projection.kind}), viewport="
+                f"{self.viewport}, keep_aspect={self.keep_aspect}>")

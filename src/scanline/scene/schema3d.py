@@ -1,0 +1,275 @@
+"""The scene schema, version 2: cameras, 3-D transformation steps and 3-D primitives
+(meshes by file or by generator, 3-D polylines).  See docs/scene-format.md.
+
+Every error is a :class:`SceneError` whose message starts with the key path of the
+offending value (``cameras[0].projection.fov must ...``).
+"""
+
+import numbers
+import os
+
+from .. import transform3d as t3
+from .files import SceneError
+
+#: Keys of a camera.
+CAMERA = {"name", "eye", "target", "up", "view_reference_point", "view_plane_normal",
+          "view_up", "projection", "viewport", "keep_aspect"}
+_VOLUME = {"window", "front", "back"}
+#: Projection types and their keys (besides ``type``).
+PROJECTIONS = {
+    "perspective": {"fov", "aspect", "near", "far", "z_prp", "z_vp"} | _VOLUME,
+    "frustum": {"prp", "z_vp"} | _VOLUME,
+    "orthographic": {"view", "z_vp"} | _VOLUME,
+    "isometric": set(_VOLUME),
+    "dimetric": {"fz"} | _VOLUME,
+    "trimetric": {"phi", "theta"} | _VOLUME,
+    "oblique": {"kind", "phi", "alpha", "z_vp"} | _VOLUME,
+    "parallel": {"direction", "z_vp"} | _VOLUME,
+}
+#: Keys given as angles ({degrees = x} or {radians = x}).
+ANGLES = {"fov", "phi", "theta", "alpha", "angle"}
+
+_LINE = {"color", "width", "cap", "join", "miter_limit", "dash", "dash_phase"}
+#: Mesh generators and their keys.
+GENERATORS = {
+    "cube": {"size", "center"},
+    "box": {"lo", "hi"},
+    "sphere": {"radius", "center", "resolution"},
+    "ellipsoid": {"radii", "center", "resolution"},
+    "torus": {"major", "minor", "center", "resolution"},
+    "superellipsoid": {"s1", "s2", "radii", "center", "resolution"},
+    "supertoroid": {"s1", "s2", "r", "radii", "center", "resolution"},
+    "sweep": {"kind", "profile", "vector", "axis", "angle", "steps", "closed", "caps"},
+    "teapot": {"n", "parts"},
+}
+#: Keys of each 3-D primitive type besides ``type``.
+PRIMITIVES = {
+    "mesh": {"generator", "file", "transform", "depth_cue"} | _LINE
+            | set().union(*GENERATORS.values()),
+    "polyline3d": {"points", "closed", "transform"} | _LINE,
+}
+_STEPS = ("translate", "rotate", "scale", "reflect", "shear", "matrix")
+#: The largest tessellations a scene may ask for (a scene file is data: it must not
+#: be able to ask for gigabytes).
+LIMITS = {"resolution": 1024, "n": 64, "steps": 4096}
+
+
+def _schema():
+    from . import schema
+
+    return schema
+
+
+def _real(value, path):
+    return _schema()._real(value, path)
+
+
+def _vector(value, path, size=3):
+    if not isinstance(value, list) or len(value) != size:
+        _schema()._fail(path, f"must be [{', '.join('xyzw'[:size])}], {size} numbers, got "
+                        f"{value!r}")
+    return [_real(c, f"{path}[{i}]") for i, c in enumerate(value)]
+
+
+def _arguments(data, path, angles=ANGLES):
+    """``data`` with angles turned into radians and lists into tuples."""
+    out = {}
+    for key, value in data.items():
+        here = f"{path}.{key}"
+        if key in angles:
+            out[key] = _schema().angle(value, here)
+        elif isinstance(value, list) and value and all(isinstance(x, list) for x in value):
+            out[key] = [tuple(x) for x in value]
+        elif isinstance(value, list):
+            out[key] = tuple(value)
+        else:
+            out[key] = value
+    return out
+
+
+def projection(data, path):
+    """A projection table -> a Projection."""
+    from .. import projection as pj
+
+    s = _schema()
+    t = s._table(data, path, set().union(*PROJECTIONS.values()) | {"type"}, ("type",))
+    kind = t["type"]
+    if not isinstance(kind, str) or kind not in PROJECTIONS:
+        s._fail(f"{path}.type", f"must be one of {', '.join(PROJECTIONS)}; got {kind!r}")
+    s._table(data, path, PROJECTIONS[kind] | {"type"})
+    args = _arguments({k: x for k, x in t.items() if k != "type"}, path)
+    function = {"perspective": pj.perspective, "frustum": pj.frustum,
+                "orthographic": pj.orthographic, "isometric": pj.isometric,
+                "dimetric": pj.dimetric, "trimetric": pj.trimetric, "oblique": pj.oblique,
+                "parallel": pj.parallel}[kind]
+    return s._call(path, function, **args)
+
+
+def cameras(data, df):
+    """Build the scene's cameras into the display file; returns their names."""
+    from ..projection import Camera
+
+    s = _schema()
+    names = []
+    for i, c in enumerate(s._list(data, "cameras")):
+        path = f"cameras[{i}]"
+        t = s._table(c, path, CAMERA)
+        name = t.get("name", f"camera{i}")
+        if not isinstance(name, str) or not name:
+            s._fail(f"{path}.name", f"must be a non-empty string, got {name!r}")
+        if name in names:
+            s._fail(f"{path}.name", f"repeats the camera name {name!r}")
+        args = {k: (tuple(_vector(x, f"{path}.{k}", 6 if k == "viewport" else 3))
+                    if k not in ("name", "projection", "keep_aspect") else x)
+                for k, x in t.items() if k not in ("name",)}
+        if "projection" in args:
+            args["projection"] = projection(args["projection"], f"{path}.projection")
+        if "keep_aspect" in args:
+            args["keep_aspect"] = s._flag(args["keep_aspect"], f"{path}.keep_aspect")
+        camera = s._call(path, Camera, **args)
+        df.set_camera(camera, name)
+        names.append(name)
+    if not names:
+        s._fail("cameras", "must hold at least one camera")
+    return names
+
+
+def step(step_, path):
+    """One 3-D transformation step -> its 4x4 matrix."""
+    s = _schema()
+    if not isinstance(step_, dict) or len(step_) != 1:
+        s._fail(path, "must be a table with one key: " + ", ".join(_STEPS)
+                + " (e.g. {translate = [1, 0, 2]})")
+    (name, arg), = step_.items()
+    here = f"{path}.{name}"
+    if name == "translate":
+        return t3.translation(*_vector(arg, here))
+    if name == "rotate":
+        a = s._table(arg, here, {"degrees", "radians", "axis", "pivot"})
+        unit = {k: a[k] for k in a if k in ("degrees", "radians")}
+        axis = a.get("axis", "z")
+        if isinstance(axis, list):
+            if len(axis) != 2:
+                s._fail(f"{here}.axis", f"must be 'x', 'y', 'z' or two points [[x, y, z], "
+                        f"[x, y, z]], got {axis!r}")
+            axis = (_vector(axis[0], f"{here}.axis[0]"), _vector(axis[1], f"{here}.axis[1]"))
+        pivot = a.get("pivot")
+        return s._call(here, t3.rotation, s.angle(unit, here), axis,
+                       None if pivot is None else _vector(pivot, f"{here}.pivot"))
+    if name == "scale":
+        if isinstance(arg, dict):
+            a = s._table(arg, here, {"factors", "fixed"}, ("factors",))
+            factors, fixed = a["factors"], a.get("fixed")
+        else:
+            factors, fixed = arg, None
+        f = [factors] if isinstance(factors, numbers.Real) else factors
+        if not isinstance(f, list) or len(f) not in (1, 3):
+            s._fail(here, f"must be a factor or [sx, sy, sz], got {factors!r}")
+        return s._call(here, t3.scaling, *f, fixed=None if fixed is None
+                       else _vector(fixed, f"{here}.fixed"))
+    if name == "reflect":
+        if isinstance(arg, dict):
+            a = s._table(arg, here, {"point", "normal"}, ("point", "normal"))
+            return s._call(here, t3.reflection, _vector(a["point"], f"{here}.point"),
+                           _vector(a["normal"], f"{here}.normal"))
+        return s._call(here, t3.reflection, arg)
+    if name == "shear":
+        a = s._table(arg, here, {"axis", "a", "b", "reference"})
+        return s._call(here, t3.shear, a.get("axis", "z"), a.get("a", 0.0), a.get("b", 0.0),
+                       a.get("reference", 0.0))
+    if name == "matrix":
+        return s._call(here, t3.compose, arg)
+    s._fail(path, f"has an unknown transformation {name!r}; use one of {', '.join(_STEPS)}")
+
+
+def transformation(steps, path):
+    """A list of 3-D steps, applied in the order listed (the first acts first)."""
+    m = t3.compose()
+    for i, st in enumerate(_schema()._list(steps, path)):
+        m = t3.compose(step(st, f"{path}[{i}]"), m)
+    return m
+
+
+def _mesh(data, path, base):
+    from .. import mesh as ms
+
+    s = _schema()
+    if ("file" in data) == ("generator" in data):
+        s._fail(path, "needs either file (a mesh file) or generator (cube, sphere, ...)")
+    if "file" in data:
+        name = data["file"]
+        if not isinstance(name, str) or not name:
+            s._fail(f"{path}.file", f"must be a file name, got {name!r}")
+        full = name if os.path.isabs(name) or base is None else os.path.join(base, name)
+        try:
+            return ms.load(full)
+        except ms.MeshFileError as error:
+            raise SceneError(f"{path}.file: {error}", path=f"{path}.file") from None
+    gen = data["generator"]
+    if not isinstance(gen, str) or gen not in GENERATORS:
+        s._fail(f"{path}.generator", f"must be one of {', '.join(GENERATORS)}; got {gen!r}")
+    allowed = GENERATORS[gen]
+    given = {k: x for k, x in data.items() if k in set().union(*GENERATORS.values())}
+    for k in given:
+        if k not in allowed:
+            s._fail(f"{path}.{k}", f"is not a key of the {gen} generator; its keys: "
+                    + ", ".join(sorted(allowed)))
+    for key, top in LIMITS.items():
+        value = given.get(key)
+        for i, x in enumerate(value if isinstance(value, list) else [value]):
+            if isinstance(x, numbers.Real) and not isinstance(x, bool) and x > top:
+                where = f"{path}.{key}" + (f"[{i}]" if isinstance(value, list) else "")
+                s._fail(where, f"is {x!r}; a scene's meshes allow at most {top}")
+    if isinstance(given.get("profile"), list) and len(given["profile"]) > 100_000:
+        s._fail(f"{path}.profile", "holds more than 100000 points")
+    args = _arguments(given, path)
+    if gen == "sweep":
+        if "profile" not in args:
+            s._fail(path, "needs the key 'profile' (a list of points [x, y])")
+        return s._call(path, ms.sweep, args.pop("profile"), **args)
+    if "resolution" in args and isinstance(args["resolution"], tuple):
+        args["resolution"] = tuple(args["resolution"])
+    if gen == "teapot" and "parts" in args:
+        parts = args["parts"]
+        if isinstance(parts, str):
+            parts = [parts]
+        if not isinstance(parts, tuple | list) or not all(isinstance(p, str) for p in parts):
+            s._fail(f"{path}.parts", f"must be a part name or a list of them (rim, body, "
+                    f"handle, spout, lid, bottom), got {data['parts']!r}")
+        args["parts"] = list(parts)
+    function = {"cube": ms.cube, "box": ms.box, "sphere": ms.sphere, "ellipsoid": ms.ellipsoid,
+                "torus": ms.torus, "superellipsoid": ms.superellipsoid,
+                "supertoroid": ms.supertoroid, "teapot": ms.teapot}[gen]
+    if gen == "ellipsoid" and "radii" in args:
+        radii = args.pop("radii")
+        if not isinstance(radii, tuple) or len(radii) != 3:
+            s._fail(f"{path}.radii", f"must be [rx, ry, rz], got {radii!r}")
+        args.update(rx=radii[0], ry=radii[1], rz=radii[2])
+    return s._call(path, function, **args)
+
+
+def primitive(kind, data, path, df, background, base):
+    """Build one 3-D primitive into the open segment of ``df``."""
+    s = _schema()
+    s._table(data, path, PRIMITIVES[kind] | {"type"},
+             ("points",) if kind == "polyline3d" else ())
+    line = {k: x for k, x in data.items() if k in _LINE and k != "color"}
+    if isinstance(line.get("dash"), list):
+        line["dash"] = tuple(line["dash"])
+    m = transformation(data.get("transform", []), f"{path}.transform")
+    if kind == "polyline3d":
+        pts = [_vector(p, f"{path}.points[{i}]") for i, p in
+               enumerate(s._list(data["points"], f"{path}.points"))]
+        if not pts:
+            s._fail(f"{path}.points", "needs at least one point")
+        pts = t3.apply(m, pts)
+        closed = s._flag(data.get("closed", False), f"{path}.closed")
+        s._call(path, df.polyline3d, pts, data.get("color", "white"), closed, **line)
+        return
+    mesh = _mesh(data, path, base)
+    if not (m == t3.compose()).all():
+        mesh = s._call(f"{path}.transform", mesh.transformed, m)
+    cue = data.get("depth_cue")
+    if isinstance(cue, list):
+        cue = tuple(cue)
+    s._call(path, df.mesh, mesh, data.get("color"), cue, background, **line)

@@ -1,7 +1,7 @@
 """``scanline dither IN OUT [--method M] [--levels N | --palette P]``: show an image
 with fewer gray levels or colors (:func:`scanline.color.dither`).
 
-IN is any image Pillow reads; OUT's extension (.png, .gif, .bmp) picks the format and
+IN is any image Pillow reads; OUT's extension (.png, .jpg, .webp, .gif, .bmp ...) picks the format and
 is written atomically.
 """
 
@@ -9,7 +9,7 @@ import os
 
 from ..errors import ArgumentValueError
 
-METHODS = ("floyd-steinberg", "bayer2", "bayer4", "bayer8", "none")
+METHODS = ("floyd-steinberg", "bayer2", "bayer4", "bayer8", "none", "ordered")   # as color.dither.METHODS
 
 PALETTE_HELP = (
     "dither to a color table instead of gray levels (the result is mode P): "

@@ -358,7 +358,7 @@ def _draw(fb, item, state, draw):
     if word == "line":
         draw.line(fb, *args, color=color, method=state["method"], **lines)
     elif word == "point":
-        fb.set_pixel(*args, color)
+        fb.set_pixel(*args, fb.foreground if color is None else color)
     elif word in ("circle", "ellipse"):
         getattr(draw, word)(fb, *args, color=color, **lines)
     elif word in ("polyline", "closed-polyline"):

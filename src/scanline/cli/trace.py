@@ -264,15 +264,14 @@ def table_of(args):
     values = [getattr(args, p) for p in args.params]
     options = {"center": args.center} if "center" in vars(args) else {}
     options.update({o: getattr(args, o) for o in args.options if getattr(args, o) is not None})
+    if getattr(args, "adapt", None) is not None:
+        values, options = args.adapt(values, options)
     return functions[args.algorithm](*values, **options)
 
 
 def run(args):
     """Print the table of ``args.algorithm`` in ``args.format``."""
     table = table_of(args)
-    if getattr(args, "adapt", None) is not None:
-        values, options = args.adapt(values, options)
-    table = functions[args.algorithm](*values, **options)
     if args.format == "json":
         print(table.to_json(indent=2))
     elif args.format == "csv":

@@ -24,6 +24,8 @@ _LAZY = {
     "ArgumentValueError": ("scanline.errors", "ArgumentValueError"),
     "ArgumentTypeError": ("scanline.errors", "ArgumentTypeError"),
     "ImageFileError": ("scanline.errors", "ImageFileError"),
+    "ScanlineWarning": ("scanline.errors", "ScanlineWarning"),
+    "AngleWarning": ("scanline.errors", "AngleWarning"),
     "draw": ("scanline.draw", None),
     "trace": ("scanline.trace", None),
     "color": ("scanline.color", None),

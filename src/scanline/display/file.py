@@ -342,7 +342,7 @@ class DisplayFile:
         ``fill=True`` makes it a fill area (with ``style``), else an outline."""
         c = p.points("center", [center], 1)
         rx, ry = p._nonnegative("rx", rx), p._nonnegative("ry", ry)
-        a = v.number("angle", angle)
+        a = v.angle("angle", angle)
         axes = np.array([[math.cos(a), -math.sin(a)], [math.sin(a), math.cos(a)]]) @ np.diag([rx, ry])
         lin = self._normalization[:2, :2]
         attrs = {"fill": _flag("fill", fill)}
@@ -375,7 +375,7 @@ class DisplayFile:
         pos = p.points("position", [position], 1)
         attrs = p.text_attributes(color, font, align, expansion, spacing, path, clip)
         frame = self._normalization[:2, :2] @ p.text_frame(p._positive("height", height),
-                                                           v.number("angle", angle))
+                                                           v.angle("angle", angle))
         self._add("text", {"anchor": self._ndc(pos)[0], "frame": frame, "string": string},
                   attrs)
 

@@ -260,8 +260,8 @@ def fill_ellipses(fb, ellipses, color=None, antialias=False):
 def _sweep(start, end):
     """(a, b, sweep): the angles modulo 2 pi and the counterclockwise sweep from a to
     b, or sweep = None for the whole turn."""
-    start = v.number("start", start)
-    end = v.number("end", end)
+    start = v.angle("start", start)
+    end = v.angle("end", end)
     if end - start >= TAU:
         return start % TAU, end % TAU, None
     return start % TAU, end % TAU, (end - start) % TAU

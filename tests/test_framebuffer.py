@@ -326,7 +326,7 @@ def test_save_scale_enlarges_pixels(tmp_path):
     assert np.array_equal(a, expected)
 
 
-@pytest.mark.parametrize("name", ["out.jpg", "out", "out.png.txt", "out.tiff"])
+@pytest.mark.parametrize("name", ["out.xyz", "out", "out.png.txt", "out.svg"])  # JPEG and TIFF are written since issue 16
 def test_save_unknown_extension_raises_and_writes_nothing(tmp_path, name):
     fb = FrameBuffer(3, 2)
     path = tmp_path / name
@@ -410,11 +410,15 @@ def test_repr_png_decodes(mode):
     data = fb._repr_png_()
     assert data[:8] == b"\x89PNG\r\n\x1a\n"
     with Image.open(io.BytesIO(data)) as im:
-        assert im.size == (9, 4)
+        # issue 16: small frame buffers are enlarged (here 16 x, the largest factor)
+        assert im.size == (9 * 16, 4 * 16)
         if mode == "P":
-            assert np.array_equal(np.array(im.convert("RGB")), np.array(TABLE, np.uint8)[a])
+            got = np.array(im.convert("RGB"))[::16, ::16]
+            assert np.array_equal(got, np.array(TABLE, np.uint8)[a])
         else:
-            assert np.array_equal(np.array(im), a)
+            got = np.array(im)
+            assert np.array_equal(got[::16, ::16], a)
+            assert np.array_equal(got[15::16, 15::16], a)     # each pixel a whole block
 
 
 # -- color table ------------------------------------------------------------------------------
@@ -522,11 +526,14 @@ def test_numpy_integer_sizes_are_accepted():
 
 
 @pytest.mark.parametrize("x, y", [(5, 0), (0, 4), (-1, 0), (0, -1), (10**9, 10**9)])
-def test_get_pixel_outside_raises_naming_x_y(x, y):
+def test_get_pixel_outside_is_clipped_like_set_pixel(x, y):
+    # issue 16: one rule for both (it raised before): outside pixels are clipped,
+    # set_pixel writes nothing and get_pixel gives its default
     fb = FrameBuffer(5, 4)
-    with pytest.raises(ValueError) as e:
-        fb.get_pixel(x, y)
-    assert_package_error(e, "x", "y", str(x))
+    assert fb.get_pixel(x, y) is None
+    assert fb.get_pixel(x, y, default=(1, 2, 3)) == (1, 2, 3)
+    fb.set_pixel(x, y, "white")
+    assert not fb.to_array().any()
 
 
 @pytest.mark.parametrize(

@@ -114,6 +114,26 @@ def test_ellipse_region2_values_by_the_definition():
     assert f(8, 3 - half) == 400
 
 
+def test_region2_positive_p2_keeps_x_erratum_e17():
+    # E17: the notes' derivation says P2_k > 0 selects x_k+1; their step (5) and the
+    # geometry say x_k.  The midpoint f(x_k + 1/2, y_k - 1) is evaluated here exactly,
+    # not taken from the tracer's increments.
+    seen = {True: 0, False: 0}
+    for rx, ry in [(8, 6), (6, 8), (10, 3), (3, 10), (12, 12), (20, 7), (5, 1), (1, 9)]:
+        def f(x, y):
+            return ry * ry * x * x + rx * rx * y * y - rx * rx * ry * ry
+
+        rows = sl.trace.midpoint_ellipse(rx, ry).rows
+        for prev, row in zip(rows, rows[1:]):
+            if row["region"] != "2":
+                continue
+            outside = f(Fraction(2 * prev["x"] + 1, 2), prev["y"] - 1) > 0
+            assert (row["p"] > 0) == outside, (rx, ry, row)
+            assert (row["x"], row["y"]) == (prev["x"] + (0 if outside else 1), prev["y"] - 1)
+            seen[outside] += 1
+    assert seen[True] > 5 and seen[False] > 5        # both cases exercised
+
+
 def test_midpoint_ellipse_example_draws_four_quadrants():
     fb = sl.FrameBuffer(21, 15, mode="1")
     sl.draw.ellipse(fb, 10, 7, 8, 6)

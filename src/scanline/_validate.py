@@ -6,10 +6,14 @@ that was given and says what would work (DESIGN.md, convention 7).
 
 import math
 import numbers
+import os
+import re
+import sys
+import warnings
 
 import numpy as np
 
-from .errors import ArgumentTypeError, ArgumentValueError
+from .errors import AngleWarning, ArgumentTypeError, ArgumentValueError
 
 #: Largest magnitude accepted for a device coordinate.  Within +-2**30 every
 #: scan-conversion kernel does exact int64 arithmetic (products such as
@@ -36,6 +40,57 @@ def number(name, value):
     if not math.isfinite(v):
         raise ArgumentValueError(f"{name} must be a finite number, got {_show(value)}")
     return v
+
+
+#: The units an angle may be written in as a string, in radians per unit.
+ANGLE_UNITS = {"deg": math.pi / 180, "°": math.pi / 180, "rad": 1.0, "turn": 2 * math.pi}
+_ANGLE = re.compile(r"\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(deg|°|rad|turn)\s*")
+#: The largest whole number an angle warning suspects of being degrees (two turns).
+DEGREE_LIKE = 720
+_PACKAGE = os.path.dirname(os.path.abspath(__file__))
+
+
+def _caller_level():
+    """The ``stacklevel`` of the first frame outside scanline: a warning then names
+    the user's line, however deep the call that gives it."""
+    frame, level = sys._getframe(1), 1
+    while frame is not None and os.path.abspath(frame.f_code.co_filename).startswith(_PACKAGE):
+        frame, level = frame.f_back, level + 1
+    return level
+
+
+def angle(name, value):
+    """Return the angle ``value`` in radians, or raise naming ``name``.
+
+    A number is radians (DESIGN.md, convention 3).  A string carries its unit:
+    ``"30deg"`` or ``"30°"`` (degrees), ``"0.5rad"``, ``"0.25turn"``.  A whole number
+    beyond one turn and at most 720 (``30``, ``90``, ``360``: 2 pi < ``|value|`` <= 720)
+    reads as radians but was most likely meant in degrees, so it gives an
+    :class:`~scanline.AngleWarning` (pass a float such as ``30.0``, or a unit, to say
+    what is meant).
+
+    >>> angle("angle", "90deg") == math.pi / 2, angle("angle", "0.5turn") == math.pi
+    (True, True)
+    """
+    if isinstance(value, str):
+        match = _ANGLE.fullmatch(value)
+        if match is None:
+            raise ArgumentValueError(
+                f"{name}={_show(value)} is not an angle: give radians as a number "
+                f"(math.pi / 6) or a number with a unit: '30deg', '30°', '0.5rad', '0.25turn'")
+        return number(name, float(match[1]) * ANGLE_UNITS[match[2]])
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise ArgumentTypeError(
+            f"{name} must be an angle, radians as a number or a string with a unit "
+            f"such as '30deg', got {_show(value)} of type {type(value).__name__}")
+    a = number(name, value)
+    if isinstance(value, numbers.Integral) and 2 * math.pi < abs(a) <= DEGREE_LIKE:
+        warnings.warn(
+            f"{name}={value} is read as radians ({a / (2 * math.pi):.3g} turns); if you "
+            f"meant degrees write {name}='{value}deg' or math.radians({value}) (a float "
+            f"such as {value}.0 says radians and silences this warning)",
+            AngleWarning, stacklevel=_caller_level())
+    return a
 
 
 def coordinate(name, value):

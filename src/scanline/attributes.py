@@ -545,7 +545,7 @@ def _pattern_arguments(tile, anchor="origin", reference=None):
 
 def _hatch_arguments(angle=0.0, spacing=8, cross=False, line_width=1, background=None,
                      anchor="origin", reference=None):
-    angle = v.number("angle", angle)
+    angle = v.angle("angle", angle)
     spacing = _positive("spacing", spacing)
     line_width = _positive("line_width", line_width)
     if not isinstance(cross, (bool, np.bool_)):

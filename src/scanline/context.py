@@ -99,8 +99,8 @@ class Context:
         s = _State()
         s.ctm = np.eye(3)
         s.line = p.line_attributes()
-        s.fill = {"color": "white", "rule": "even-odd", "style": None, "edge": None}
-        s.text = {"color": "white", "font": "stroke", "height": 10.0, "angle": 0.0,
+        s.fill = {"color": None, "rule": "even-odd", "style": None, "edge": None}
+        s.text = {"color": None, "font": "stroke", "height": 10.0, "angle": 0.0,
                   "align": ("left", "base"), "expansion": 1.0, "spacing": 0.0,
                   "path": "right", "clip": "stroke"}
         s.clip = (-0.5, -0.5, self._device.width - 0.5, self._device.height - 0.5)
@@ -215,7 +215,7 @@ class Context:
                 raise ArgumentValueError(
                     f"unknown text attribute {name!r}; use one of {', '.join(t)}")
             t[name] = value
-        height, angle = p._positive("height", t.pop("height")), v.number("angle", t.pop("angle"))
+        height, angle = p._positive("height", t.pop("height")), v.angle("angle", t.pop("angle"))
         t["color_"] = t.pop("color")
         t = {**p.text_attributes(**t), "height": height, "angle": angle}
         self._state.text = t
@@ -299,7 +299,7 @@ class Context:
     def ellipse(self, xc, yc, rx, ry, angle=0.0, fill=False):
         """An ellipse: stroked with the line attributes, or filled (``fill=True``)."""
         c = p.points("center", [(xc, yc)])[0]
-        axes = tf.rotation(v.number("angle", angle))[:2, :2] @ np.diag(
+        axes = tf.rotation(v.angle("angle", angle))[:2, :2] @ np.diag(
             [p._nonnegative("rx", rx), p._nonnegative("ry", ry)])
         attrs = {**self._fill_attributes(), "fill": True} if fill else {
             **self._state.line, "fill": False, "closed": True}

@@ -22,3 +22,18 @@ class ArgumentTypeError(ScanlineError, TypeError):
 class OutputError(ScanlineError, OSError):
     """A file could not be written (a full disk, an encoder's failure): also a plain
     ``OSError``; the message names the file asked for, and no file is left."""
+
+
+class ImageFileError(ArgumentValueError):
+    """An image file cannot be read: missing, not an image, truncated or damaged, or
+    larger than Pillow's decompression-bomb limit."""
+
+
+class ScanlineWarning(UserWarning):
+    """Base class of every warning scanline gives."""
+
+
+class AngleWarning(ScanlineWarning):
+    """An angle given in radians looks as if it was meant in degrees (a whole number
+    beyond one turn, such as ``30`` or ``90``): write ``"30deg"`` or
+    ``math.radians(30)``, or pass a float to mean radians."""

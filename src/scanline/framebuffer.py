@@ -32,13 +32,18 @@ import numpy as np
 from PIL import Image
 
 from . import _validate as v
+from . import imagefile
 from .color.spec import pixel_value, rgba
 from .errors import ArgumentTypeError, ArgumentValueError, OutputError, ScanlineError
 
 MODES = ("1", "L", "RGB", "RGBA", "P")
 _CHANNELS = {"1": 1, "L": 1, "RGB": 3, "RGBA": 4, "P": 1}
 _BITS = {"1": 1, "L": 8, "RGB": 24, "RGBA": 32, "P": 8}
-_FORMATS = {".png": "PNG", ".gif": "GIF", ".bmp": "BMP"}
+
+#: Largest scale factor ``_repr_png_`` uses, and the size (pixels on the longer side)
+#: it enlarges a small frame buffer to, so that a 16 x 16 image is visible in a notebook.
+_REPR_SIZE = 256
+_REPR_SCALE = 16
 
 
 def _physical_memory():
@@ -219,6 +224,8 @@ class FrameBuffer:
             self.color_table = color_table
         elif color_table is not None:
             raise ArgumentValueError(f"color_table is only for mode 'P', not mode {mode!r}")
+        if background is None:
+            raise ArgumentTypeError("background=None is not a color; use a color such as 'black'")
         self._background = self.pixel(background, "background")
         self._buf = np.empty((height, row_bytes, _CHANNELS[mode]), np.uint8)
         self.clear()
@@ -262,13 +269,34 @@ class FrameBuffer:
     def __repr__(self):
         return f"FrameBuffer({self._width}, {self._height}, mode={self._mode!r})"
 
+    @property
+    def foreground(self):
+        """The color drawn where no color is given (``color=None``, the default of
+        every drawing function): white on a dark background, black on a light one
+        (luma below 128 is dark, in mode ``"1"`` the bit 0), so that a default drawing
+        is never invisible.
+
+        >>> FrameBuffer(4, 4).foreground, FrameBuffer(4, 4, background="white").foreground
+        ('white', 'black')
+        """
+        if self._mode == "1":
+            dark = not self._background[0]
+        else:
+            rgb = self._table[self._background[0]] if self._mode == "P" else self._background
+            r, g, b = (int(c) for c in (rgb[:3] if len(rgb) >= 3 else (rgb[0],) * 3))
+            dark = (r * 299 + g * 587 + b * 114) // 1000 < 128
+        return "white" if dark else "black"
+
     # -- colors -----------------------------------------------------------------------
     def pixel(self, color, name="color"):
         """Return the stored channel values of ``color`` as a uint8 array.
 
         In mode ``"P"`` an integer is a color-table index; any other color is looked
-        up in the table and appended to it when absent.
+        up in the table and appended to it when absent.  ``None`` is
+        :attr:`foreground`.
         """
+        if color is None:
+            color = self.foreground
         # cache exact types only: True == 1 and (1.0, 2) == (1, 2) must not share
         # an entry, and a tuple holding a list must not be hashed
         cacheable = type(color) in (str, int) or (
@@ -375,9 +403,15 @@ class FrameBuffer:
         return x, y, 0 <= x < self._width and 0 <= y < self._height
 
     def set_pixel(self, x, y, color):
-        """Set pixel ``(x, y)`` to ``color``; a pixel outside the buffer is ignored
-        (clipped), like every drawing operation."""
+        """Set pixel ``(x, y)`` to ``color``.
+
+        One rule for both pixel methods, the rule of every drawing operation: a
+        pixel outside the frame buffer is clipped.  ``set_pixel`` writes nothing
+        there and :meth:`get_pixel` returns its ``default`` (None).  The color is
+        checked either way."""
         x, y, inside = self._check_xy(x, y)
+        if color is None:
+            raise ArgumentTypeError("color=None: set_pixel needs a color, e.g. fb.foreground")
         value = self.pixel(color)
         if not inside:
             return
@@ -388,21 +422,62 @@ class FrameBuffer:
         else:
             self._buf[y, x] = value
 
-    def get_pixel(self, x, y):
+    def get_pixel(self, x, y, default=None):
         """Return pixel ``(x, y)``: an int in modes ``"1"``, ``"L"`` and ``"P"`` (bit,
-        gray level, color-table index), a tuple in ``"RGB"`` and ``"RGBA"``."""
+        gray level, color-table index), a tuple in ``"RGB"`` and ``"RGBA"``.
+
+        A pixel outside the frame buffer is clipped, as :meth:`set_pixel` clips it:
+        the result is ``default`` (None unless given, like ``dict.get``).
+
+        >>> fb = FrameBuffer(2, 2, mode="L")
+        >>> fb.get_pixel(1, 1), fb.get_pixel(5, 0), fb.get_pixel(-1, 0, default=0)
+        (0, None, 0)
+        """
         x, y, inside = self._check_xy(x, y)
         if not inside:
-            raise ArgumentValueError(
-                f"(x, y) = ({x}, {y}) is outside the frame buffer; "
-                f"use 0 <= x < {self._width} and 0 <= y < {self._height}"
-            )
+            return default
         if self._mode == "1":
             return int(self._buf[y, x >> 3, 0] >> (7 - (x & 7))) & 1
         values = self._buf[y, x]
         return int(values[0]) if values.size == 1 else tuple(int(c) for c in values)
 
     # -- arrays and images --------------------------------------------------------------
+    def __array__(self, dtype=None, copy=None):
+        """The numpy array protocol: ``np.asarray(fb)`` is the image in image order,
+        as :meth:`to_array` gives it.
+
+        Without a copy where the storage allows one (modes ``"L"``, ``"P"``, ``"RGB"``
+        and ``"RGBA"``): a read-only view of the pixels, which follows later drawing;
+        ``np.array(fb)`` (or ``copy=True``) gives a writable copy.  Mode ``"1"``
+        stores packed bits, so its bool array is always a new array
+        (``copy=False`` raises ``ValueError``, as numpy asks).
+
+        >>> import numpy as np
+        >>> fb = FrameBuffer(3, 2, mode="L")
+        >>> fb.set_pixel(0, 0, 7)
+        >>> np.asarray(fb)
+        array([[0, 0, 0],
+               [7, 0, 0]], dtype=uint8)
+        """
+        if self._mode == "1":
+            if copy is False:
+                raise ValueError("a mode '1' frame buffer stores packed bits: its bool "
+                                 "array is always a copy")
+            a = self.to_array()
+        else:
+            a = self._buf[::-1]
+            a = a[:, :, 0] if self._mode in ("L", "P") else a
+            if copy:
+                a = a.copy()
+            else:
+                a = a.view()
+                a.flags.writeable = False
+        if dtype is not None and np.dtype(dtype) != a.dtype:
+            if copy is False:
+                raise ValueError(f"the pixels are {a.dtype}; a {np.dtype(dtype)} array is a copy")
+            a = a.astype(dtype)
+        return a
+
     def to_array(self):
         """A copy of the pixels in image order (top row first).
 
@@ -420,27 +495,56 @@ class FrameBuffer:
     def from_array(cls, array, mode=None, color_table=None):
         """Make a frame buffer from an image-order array (the inverse of :meth:`to_array`).
 
-        The mode follows from the array: bool 2-D -> ``"1"``, uint8 2-D -> ``"L"``
-        (or ``"P"`` when ``mode="P"`` and a ``color_table`` is given), uint8
-        (h, w, 3) -> ``"RGB"``, (h, w, 4) -> ``"RGBA"``.
+        The mode follows from the array's shape: 2-D -> ``"L"`` (bool: ``"1"``; or
+        ``"P"`` when ``mode="P"`` and a ``color_table`` is given), (h, w, 1) -> the
+        same as 2-D, (h, w, 3) -> ``"RGB"``, (h, w, 4) -> ``"RGBA"``.
+
+        Values: integers 0..255 (uint8 or any integer dtype), bools (mode ``"1"``),
+        or floats in [0, 1] as matplotlib and scikit-image store images, scaled to
+        0..255 and rounded (``floor(255 v + 0.5)``).  Anything else (a float above
+        1 or NaN, an integer above 255) is refused, not clipped.
+
+        >>> FrameBuffer.from_array([[0.0, 0.5], [1.0, 0.25]]).to_array()
+        array([[  0, 128],
+               [255,  64]], dtype=uint8)
         """
         a = np.asarray(array)
+        if a.ndim == 3 and a.shape[2] == 1:
+            a = a[:, :, 0]
         if a.ndim not in (2, 3) or a.shape[0] < 1 or a.shape[1] < 1:
-            raise ArgumentValueError(f"array must be 2-D or 3-D and non-empty, got shape {a.shape}")
+            raise ArgumentValueError(
+                f"array must be (h, w), (h, w, 1), (h, w, 3) or (h, w, 4) and non-empty, "
+                f"got shape {a.shape}")
         inferred = (
             "1" if a.dtype == bool and a.ndim == 2
             else "L" if a.ndim == 2
             else {3: "RGB", 4: "RGBA"}.get(a.shape[2])
         )
+        if inferred is None:
+            raise ArgumentValueError(
+                f"array of shape {a.shape} is not an image; use (h, w), (h, w, 1), (h, w, 3) "
+                "or (h, w, 4)")
         mode = inferred if mode is None else v.choice("mode", mode, MODES)
-        if inferred is None or (mode != inferred and not (mode == "P" and inferred == "L")):
+        if (mode != inferred and not (mode == "P" and inferred == "L")):
             raise ArgumentValueError(
                 f"array of shape {a.shape} and dtype {a.dtype} does not hold mode {mode!r} pixels; "
-                "use bool (h, w) for '1', uint8 (h, w) for 'L' or 'P', uint8 (h, w, 3|4) for 'RGB'/'RGBA'"
+                "use bool (h, w) for '1', (h, w) for 'L' or 'P', (h, w, 3|4) for 'RGB'/'RGBA'"
             )
-        if a.dtype != bool and a.dtype != np.uint8:
-            if not np.issubdtype(a.dtype, np.integer) or a.min() < 0 or a.max() > 255:
-                raise ArgumentValueError(f"array must hold uint8 values 0..255, got dtype {a.dtype}")
+        if a.dtype.kind == "f":
+            if mode == "P":
+                raise ArgumentValueError(
+                    f"array of dtype {a.dtype}: mode 'P' needs integer color-table indices")
+            a = _unit_floats(a)
+        elif a.dtype != bool and a.dtype != np.uint8:
+            if a.dtype.kind not in "iu":
+                raise ArgumentValueError(
+                    f"array of dtype {a.dtype} holds no pixels; use uint8 (or any integer "
+                    "dtype) values 0..255, bools, or floats in [0, 1]")
+            low, high = int(a.min()), int(a.max())
+            if low < 0 or high > 255:
+                raise ArgumentValueError(
+                    f"array of dtype {a.dtype} holds values {low}..{high}; integers must be "
+                    "in 0..255 (16-bit images: divide by 257 first)")
         if mode == "P" and color_table is None:
             raise ArgumentValueError("mode 'P' needs a color_table for the indices in array")
         if mode == "P":
@@ -472,10 +576,25 @@ class FrameBuffer:
     @classmethod
     def from_pil(cls, image):
         """Make a frame buffer from a Pillow ``Image``.  Modes ``1``, ``L``, ``P``,
-        ``RGB`` and ``RGBA`` map directly; other modes are converted to ``RGB`` (or
-        ``RGBA`` when they carry transparency)."""
+        ``RGB`` and ``RGBA`` map directly (a ``P`` image with a transparent color
+        becomes ``RGBA``); 16-bit gray (``I;16``, and ``I`` holding 0..65535) keeps
+        its high byte as ``L``; other modes are converted by Pillow to ``L`` (``F``),
+        ``RGB``, or ``RGBA`` when they carry transparency."""
         if not isinstance(image, Image.Image):
             raise ArgumentTypeError(f"image must be a PIL.Image.Image, got {type(image).__name__}")
+        if image.mode.startswith("I;16") or image.mode == "I":
+            a = np.asarray(image).astype(np.int64)
+            low, high = (int(a.min()), int(a.max())) if a.size else (0, 0)
+            if low < 0 or high > 65535:
+                raise ArgumentValueError(
+                    f"image of mode {image.mode!r} holds values {low}..{high}; 32-bit "
+                    "integer images need scaling to 0..255 first (Image.point)")
+            wide = image.mode.startswith("I;16") or high > 255
+            return cls.from_array((a >> 8 if wide else a).astype(np.uint8))
+        if image.mode == "F":
+            image = image.convert("L")
+        if image.mode == "P" and "transparency" in image.info:
+            image = image.convert("RGBA")
         if image.mode == "1":
             return cls.from_array(np.array(image, dtype=bool))
         if image.mode == "P":
@@ -492,19 +611,45 @@ class FrameBuffer:
             image = image.convert("RGBA" if has_alpha else "RGB")
         return cls.from_array(np.array(image))
 
-    def save(self, path, scale=1):
-        """Write the image to ``path``; the extension picks PNG, GIF or BMP and Pillow
-        encodes it.  ``scale`` enlarges each pixel to a scale x scale block (handy to
-        look at scan-converted pixels).  The write is atomic: on any failure no file
-        is left at ``path``."""
-        path = output_path(path)
-        ext = os.path.splitext(path)[1].lower()
-        if ext not in _FORMATS:
-            raise ArgumentValueError(
-                f"path={path!r}: unknown image type {ext!r}; use .png, .gif or .bmp"
-            )
+    @classmethod
+    def open(cls, file):
+        """Read an image file: any format Pillow reads (PNG, JPEG, GIF, BMP, TIFF, WebP,
+        ...), from a path or a binary file object; an animated file gives its first
+        frame.  The mode follows the image, as in :meth:`from_pil`.
+
+        Pillow's safety limits are kept: a file that is not an image, a truncated
+        one, or an image over ``PIL.Image.MAX_IMAGE_PIXELS`` pixels (a decompression
+        bomb) raises :class:`scanline.ImageFileError` before its pixels are decoded.
+        """
+        with imagefile.read(file) as image:
+            return cls.from_pil(image)
+
+    def save(self, file, format=None, *, scale=1, **options):
+        """Write the image to ``file``, a path or a binary file object.
+
+        ``format`` is any format Pillow writes (``"png"``, ``"jpeg"``, ``"webp"``,
+        ``"tiff"``, ``"gif"``, ``"bmp"`` ...); by default the file name's extension
+        chooses it.  ``options`` go to Pillow's encoder unchanged (``quality=90``,
+        ``lossless=True``, ``compression="tiff_lzw"``, ``optimize=True`` ...).  A mode
+        a format cannot hold as it is is widened without loss (mode ``"P"`` is written
+        as RGB in JPEG); one it cannot hold at all (``"RGBA"`` as JPEG: no alpha) is
+        refused.  ``scale`` enlarges each pixel to a scale x scale block (handy to
+        look at scan-converted pixels).
+
+        The image is encoded in memory first and a path is written atomically: on
+        any failure no file is left at ``file`` and a file object is not written to.
+        """
+        if isinstance(file, (str, os.PathLike)):
+            file = output_path(file, "file")
+        fmt = imagefile.format_of(file, format)
+        if not isinstance(file, (str, os.PathLike)):
+            imagefile._check_binary(file, "write")
         image = self._scaled_image(scale)
-        write_atomically(path, lambda f: image.save(f, format=_FORMATS[ext]))
+        data = imagefile.encode(image, fmt, options)
+        if isinstance(file, (str, os.PathLike)):
+            write_atomically(file, lambda f: f.write(data))
+        else:
+            file.write(data)
 
     def _scaled_image(self, scale):
         scale = v.positive_int("scale", scale)
@@ -517,10 +662,30 @@ class FrameBuffer:
         return image
 
     def _repr_png_(self):
-        """PNG bytes, so that Jupyter shows a frame buffer as an image."""
+        """PNG bytes, so that Jupyter shows a frame buffer as an image: a small one
+        is enlarged by a whole factor (each pixel a square block, at most
+        16 x 16) to about 256 pixels on its longer side, so that a 16 x 16 image is
+        visible."""
+        scale = max(1, min(_REPR_SCALE, _REPR_SIZE // max(self._width, self._height)))
         out = io.BytesIO()
-        self.to_pil().save(out, format="PNG")
+        self._scaled_image(scale).save(out, format="PNG")
         return out.getvalue()
+
+
+def _unit_floats(a):
+    """A float image in [0, 1] as uint8 0..255, or an error naming what is wrong."""
+    finite = np.isfinite(a)
+    if not finite.all():
+        raise ArgumentValueError(
+            f"array of dtype {a.dtype} holds {a[~finite].flat[0]}; float images must be "
+            "finite values in [0, 1]")
+    low, high = float(a.min()), float(a.max())
+    if low < 0 or high > 1:
+        hint = " (it looks like 0..255: use an integer dtype, or divide by 255)" if high <= 255 else ""
+        raise ArgumentValueError(
+            f"array of dtype {a.dtype} holds values {low:g}..{high:g}; float images must be "
+            f"in [0, 1], as matplotlib and scikit-image store them{hint}")
+    return np.floor(a * 255 + 0.5).astype(np.uint8)
 
 
 def text_image(fb, on="#", off="-"):

@@ -16,6 +16,8 @@ from .errors import ArgumentTypeError, ArgumentValueError
 CAPS = ("butt", "round", "square")
 JOINS = ("miter", "round", "bevel")
 PENS = ("square", "circle")
+#: Other names of pens, accepted in Python and on the command line alike.
+PEN_ALIASES = {"round": "circle"}
 
 #: Named line types as 16-bit pixel masks (the first pixel takes the leftmost bit).
 #: On a width-1 line they are applied to the Bresenham pixel sequence; on a thick
@@ -94,7 +96,13 @@ def _pen(pen):
     if pen is None:
         return None
     if isinstance(pen, str):
-        return v.choice("pen", pen, PENS)
+        if pen in PEN_ALIASES:
+            return PEN_ALIASES[pen]
+        if pen not in PENS:
+            raise ArgumentValueError(
+                f"pen must be 'square' or 'circle' ('round' is the same pen), or a 2-D "
+                f"bool array (the footprint); got {v._show(pen)}")
+        return pen
     a = np.asarray(pen)
     if a.ndim != 2 or a.size == 0 or a.dtype != bool:
         raise ArgumentValueError(

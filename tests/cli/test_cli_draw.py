@@ -133,7 +133,7 @@ def test_bad_items_exit_2_and_write_nothing(cli, one_line_error, tmp_path, items
 
 
 @pytest.mark.parametrize("args, fragments", [
-    (["-o", "{tmp}/out.jpg"], ["-o/--output", "'.jpg'", ".png, .gif or .bmp"]),
+    (["-o", "{tmp}/out.xyz"], ["-o/--output", "'.xyz'", ".png, .jpg"]),   # .jpg written since issue 16
     (["-o", "{tmp}/missing/out.png"], ["-o/--output", "does not exist"]),
     (["--background", "nosuch", "-o", "{tmp}/out.png"], ["background='nosuch'"]),
     (["--size", "0x5", "-o", "{tmp}/out.png"], ["width must be >= 1"]),

@@ -54,7 +54,6 @@ def test_pen_miter_limit_and_phase():
     ("pen star line 1 1 5 5", "pen"),
     ("antialias maybe line 1 1 5 5", "antialias"),
     ("polyline 1 2 3 4 5", "x y pairs"),
-    ("pen circle line 1 1 5 5", "pen"),
 ])
 def test_bad_settings_name_the_word(words, message):
     with pytest.raises(sl.ArgumentValueError, match=message) as info:

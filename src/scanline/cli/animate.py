@@ -11,6 +11,8 @@ storyboard's panels (or the key frames) as a labeled contact sheet.
 import os
 import re
 
+from .examples import add_scene_argument, scene_path
+
 
 def register(subparsers):
     """Add the ``animate`` and ``storyboard`` commands."""
@@ -21,7 +23,7 @@ def register(subparsers):
         "extension: .gif, .png or .apng (animated PNG), .webp, .mp4 (H.264). An OUT "
         "ending in '/' receives one PNG per frame instead.",
     )
-    animate.add_argument("scene", metavar="SCENE", help="the scene file, .toml or .json")
+    add_scene_argument(animate)
     animate.add_argument("-o", "--output", metavar="OUT", required=True,
                          help="the file to write (.gif, .png, .apng, .webp, .mp4) or a folder/")
     animate.add_argument("--fps", type=float, metavar="N",
@@ -50,7 +52,7 @@ def register(subparsers):
         "times of its [[animation.storyboard]] captions, or at its key times, as a "
         "labeled contact sheet (PNG, GIF or BMP).",
     )
-    board.add_argument("scene", metavar="SCENE", help="the scene file, .toml or .json")
+    add_scene_argument(board)
     board.add_argument("-o", "--output", metavar="BOARD", required=True,
                        help="the image to write (.png, .gif, .bmp)")
     board.add_argument("--columns", type=int, default=4, metavar="N",
@@ -88,7 +90,7 @@ def run_animate(args):
     from ..errors import ArgumentValueError
     from ..scene import load_animated
 
-    scene = load_animated(args.scene, args.format)
+    scene = load_animated(scene_path(args), args.format)
     if args.jobs < 1:
         raise ArgumentValueError(f"--jobs must be >= 1, got {args.jobs}")
     if args.scheduler and args.jobs != 1:
@@ -123,7 +125,7 @@ def run_storyboard(args):
     panel = (int(m.group(1)), int(m.group(2)))
     if args.columns < 1:
         raise ArgumentValueError(f"--columns must be >= 1, got {args.columns}")
-    scene = load_animated(args.scene, args.format)
+    scene = load_animated(scene_path(args), args.format)
     sheet = scene.storyboard_sheet(columns=args.columns, panel=panel)
     FrameBuffer.from_pil(sheet).save(args.output)
     print(f"scanline storyboard: wrote {args.output} ({len(scene.storyboard_frames())} panels)")

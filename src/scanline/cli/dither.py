@@ -1,7 +1,7 @@
 """``scanline dither IN OUT [--method M] [--levels N | --palette P]``: show an image
 with fewer gray levels or colors (:func:`scanline.color.dither`).
 
-IN is any image Pillow reads; OUT's extension (.png, .gif, .bmp) picks the format and
+IN is any image Pillow reads; OUT's extension (.png, .jpg, .webp, .gif, .bmp ...) picks the format and
 is written atomically.
 """
 
@@ -9,7 +9,7 @@ import os
 
 from ..errors import ArgumentValueError
 
-METHODS = ("floyd-steinberg", "bayer2", "bayer4", "bayer8", "none")
+METHODS = ("floyd-steinberg", "bayer2", "bayer4", "bayer8", "none", "ordered")   # as color.dither.METHODS
 
 PALETTE_HELP = (
     "dither to a color table instead of gray levels (the result is mode P): "
@@ -26,10 +26,11 @@ def register(subparsers):
         "bit per pixel (a black-and-white bitmap).",
     )
     parser.add_argument("input", metavar="IN", help="the image to read (any format Pillow reads)")
-    parser.add_argument("output", metavar="OUT", help="the image to write (.png, .gif or .bmp)")
+    parser.add_argument("output", metavar="OUT", help="the image to write (any format Pillow writes: .png, .jpg, .webp, .tif, "
+                        ".gif, .bmp ...)")
     parser.add_argument("--method", choices=METHODS, default="floyd-steinberg",
                         help="floyd-steinberg (error diffusion, default), bayer2, bayer4, "
-                        "bayer8 (ordered dithering) or none (round to the nearest)")
+                        "bayer8 (ordered dithering; ordered is bayer4) or none (round to the nearest)")
     parser.add_argument("--levels", metavar="N", type=int, default=None,
                         help="gray levels, 2 to 256 (default 2: a bitmap; 4 = 2 bits per pixel)")
     parser.add_argument("--color", action="store_true",

@@ -57,7 +57,8 @@ AREAS = ("polygon", "fill-circle", "fill-ellipse", "chord", "pie")
 
 #: Words that set an attribute of the items after them, with their argument.
 SETTINGS = {
-    "color": ("NAME", "the color of the following items (default white): a name such as "
+    "color": ("NAME", "the color of the following items (default: white on a dark "
+              "background, black on a light one): a name such as "
               "red, #rrggbb, or an integer (a gray level in mode L, a bit in mode 1, "
               "a color-table index in mode P)"),
     "method": ("dda|bresenham", "the line algorithm of the following lines (default bresenham)"),
@@ -69,7 +70,7 @@ SETTINGS = {
     "connectivity": ("4|8", "the connectivity of the following flood and boundary fills "
                      "(default 4)"),
     "boundary-color": ("COLOR", "the boundary color of the following boundary fills "
-                       "(default white)"),
+                       "(default: the default color)"),
     "tolerance": ("N", "the largest channel difference from the seed's color that the "
                   "following flood fills still recolor (default 0)"),
     "width": ("W", "the line width of the following lines, circles, ellipses and polylines "
@@ -82,8 +83,9 @@ SETTINGS = {
              "such as 0b1111000011110000, or dash,gap lengths in pixels such as 6,3"),
     "dash-phase": ("N", "where the line type starts: pixels into a mask, pixels of length "
                    "into dash lengths (default 0)"),
-    "pen": ("none|square|round", "a pen footprint, a width x width square or a disc of "
-            "diameter width, stamped at every pixel of the following lines (default none)"),
+    "pen": ("none|square|circle", "a pen footprint, a width x width square or a disc "
+            "(circle, also called round) of diameter width, stamped at every pixel of the "
+            "following lines (default none)"),
     "antialias": ("on|off", "antialiased lines, circles, ellipses, polylines and text "
                   "(default off)"),
     "font": ("NAME", "the font of the following text: sans (default), bitmap, stroke or a "
@@ -165,12 +167,13 @@ def register(subparsers):
         "draw", help="draw lines, polylines, circles, ellipses, polygons, fills, points "
         "and text, with their attributes, into a PNG, GIF or BMP",
         description="Draw ITEMS into a frame buffer and save it; the extension of OUT\n"
-        "(.png, .gif, .bmp) picks the format.  Options may come before or after ITEMS.",
+        "(.png, .jpg, .webp, .tif, .gif, .bmp ...) picks the format.  Options may come before or after ITEMS.",
         epilog=_epilog(), formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     parser.add_argument("items", metavar="ITEMS", nargs="+", help="what to draw (see below)")
     parser.add_argument("-o", "--output", metavar="OUT", required=True,
-                        help="the image file to write (.png, .gif or .bmp)")
+                        help="the image file to write: any format Pillow writes (.png, .jpg, "
+                        ".webp, .tif, .gif, .bmp ...)")
     parser.add_argument("--size", metavar="WxH", type=size, default=(128, 128),
                         help="width x height in pixels (default 128x128)")
     parser.add_argument("--mode", choices=MODES, default="RGB",
@@ -231,7 +234,8 @@ def parse_items(words):
             params = (params * (count // len(params) + 1))[:max(count, len(params))]
         given = []
         for text in words[i + 1:i + 1 + len(params)]:
-            if text in keywords and params[len(given)] not in STRING_PARAMS:
+            if text in keywords and params[len(given)] not in STRING_PARAMS \
+                    and "|" not in params[len(given)]:   # a word of a|b|c may be a shape's name
                 break
             given.append(text)
         if len(given) < len(params):
@@ -272,8 +276,8 @@ def render(items, width, height, mode="RGB", background="black", rule="even-odd"
     from ..text import TextStyle
 
     fb = FrameBuffer(width, height, mode=mode, background=background)
-    state = {"color": "white", "method": "bresenham", "rule": rule, "style": None,
-             "connectivity": 4, "boundary-color": "white", "tolerance": 0,
+    state = {"color": None, "method": "bresenham", "rule": rule, "style": None,
+             "connectivity": 4, "boundary-color": None, "tolerance": 0,
              "line": LineStyle(), "antialias": False, "text": TextStyle()}
     for item in items:
         try:
@@ -320,7 +324,7 @@ def _line_style(style, word, text):
     elif field == "dash":
         value = LineStyle.parse_dash(text)
     elif field == "pen":
-        value = {"none": None, "round": "circle"}.get(text, text)
+        value = None if text == "none" else text      # LineStyle knows the pen names
     else:
         value = text
     return LineStyle(**{**_fields(style), field: value})
@@ -354,7 +358,7 @@ def _draw(fb, item, state, draw):
     if word == "line":
         draw.line(fb, *args, color=color, method=state["method"], **lines)
     elif word == "point":
-        fb.set_pixel(*args, color)
+        fb.set_pixel(*args, fb.foreground if color is None else color)
     elif word in ("circle", "ellipse"):
         getattr(draw, word)(fb, *args, color=color, **lines)
     elif word in ("polyline", "closed-polyline"):

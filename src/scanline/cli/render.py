@@ -9,6 +9,9 @@ atomically, so an error leaves none.
 """
 
 
+from .examples import add_scene_argument, scene_path
+
+
 def register(subparsers):
     """Add the ``render`` and ``check`` commands."""
     render = subparsers.add_parser(
@@ -17,7 +20,7 @@ def register(subparsers):
         "type follows the extension: .png, .gif, .bmp (raster), .svg (vector), .txt or "
         ".vec (the MOVE/LINE commands of a random-scan display).",
     )
-    render.add_argument("scene", metavar="SCENE", help="the scene file, .toml or .json")
+    add_scene_argument(render)
     render.add_argument("-o", "--output", metavar="OUT", required=True,
                         help="the file to write (.png, .gif, .bmp, .svg, .txt, .vec)")
     render.add_argument("--format", choices=("toml", "json"),
@@ -46,7 +49,7 @@ def run_render(args):
     """Load, check and render one scene."""
     from ..scene import load
 
-    scene = load(args.scene, args.format)
+    scene = load(scene_path(args), args.format)
     scene.render(args.output)
     print(f"scanline render: wrote {args.output} ({_summary(scene)})")
 

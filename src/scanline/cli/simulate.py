@@ -7,6 +7,9 @@ scene's display file, MOVE/LINE command by command.
 """
 
 
+from .examples import add_scene_argument, scene_path
+
+
 def register(subparsers):
     """Add the ``simulate`` command."""
     parser = subparsers.add_parser(
@@ -15,11 +18,11 @@ def register(subparsers):
         "over the frame buffer, scan line by scan line with horizontal and vertical "
         "retrace (interlaced or not); 'random' follows the display file's MOVE/LINE "
         "commands. The phosphor fades between refreshes. Writes an animated GIF.",
-        epilog="Example: scanline simulate raster examples/scenes/rotation.toml -o r.gif "
+        epilog="Example: scanline simulate raster --example rotation -o r.gif "
         "--interlaced --frames 24",
     )
     parser.add_argument("kind", choices=("raster", "random"), help="the display type")
-    parser.add_argument("scene", metavar="SCENE", help="the scene file, .toml or .json")
+    add_scene_argument(parser)
     parser.add_argument("-o", "--output", metavar="OUT.gif", required=True,
                         help="the GIF to write")
     parser.add_argument("--frames", type=int, default=24,
@@ -47,7 +50,7 @@ def run(args):
 
     if not args.output.lower().endswith(".gif"):
         raise ArgumentValueError(f"-o {args.output!r}: the simulation is written as a .gif")
-    scene = load(args.scene)
+    scene = load(scene_path(args))
     if args.kind == "raster":
         sim = RasterScan(scene.raster(), refresh_rate=args.refresh_rate,
                          interlaced=args.interlaced, persistence=args.persistence)

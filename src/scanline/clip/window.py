@@ -122,7 +122,7 @@ def check_convex(ring, name, algorithm):
     turning = float(np.sum(np.arctan2(cross, np.einsum("ij,ij->i", d, e))))
     if (cross < 0).any() or abs(turning - 2 * math.pi) > 1e-6:
         bad = int(np.argmax(cross < 0)) if (cross < 0).any() else 0
-        vertex = ring[(bad + 1) % len(ring)].tolist()
+        vertex = np.asarray(ring)[(bad + 1) % len(ring)].tolist()
         raise ArgumentValueError(
             f"{name} must be a convex polygon for {algorithm}, but it turns the other "
             f"way at vertex {vertex} (or winds more than once); use "
@@ -131,12 +131,26 @@ def check_convex(ring, name, algorithm):
 
 
 def is_convex(ring):
-    """Whether the counterclockwise ring is convex."""
+    """Whether the polygon ``ring`` (vertices (N, 2), N >= 3, either orientation,
+    collinear vertices allowed) is convex.
+
+    >>> is_convex([(0, 0), (4, 0), (1, 1), (0, 4)]), is_convex([(0, 0), (0, 4), (4, 0)])
+    (False, True)
+    """
     try:
-        check_convex(ring, "window", "")
-    except ArgumentValueError:
-        return False
-    return True
+        a = np.array(ring, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise ArgumentTypeError(f"ring must be (N, 2) vertices, got {v._show(ring)}") from None
+    if a.ndim != 2 or a.shape[1] != 2 or len(a) < 3 or not np.isfinite(a).all():
+        raise ArgumentValueError(
+            f"ring must be at least 3 finite (x, y) vertices, got {v._show(ring)}")
+    for candidate in (a, a[::-1].copy()):
+        try:
+            check_convex(candidate, "window", "")
+        except ArgumentValueError:
+            continue
+        return True
+    return False
 
 
 def outward_normals(ring):

@@ -26,7 +26,12 @@ from .tables import color_table, gray_table, levels_argument, search_cells
 
 #: Dithering methods of :func:`dither`: error diffusion, ordered dithering with a
 #: Bayer matrix of side 2, 4 or 8, and "none" (round to the nearest level or color).
-METHODS = ("floyd-steinberg", "bayer2", "bayer4", "bayer8", "none")
+METHODS = ("floyd-steinberg", "bayer2", "bayer4", "bayer8", "none", "ordered")
+
+#: Other names of methods: ``"ordered"``, the textbook's name of Bayer's ordered
+#: dithering (Hearn & Baker, "Halftone Patterns and Dithering Techniques": the
+#: ordered-dither methods, here with the 4 x 4 matrix D4).
+ALIASES = {"ordered": "bayer4"}
 OUTPUT_MODES = ("1", "L", "RGB", "P")
 
 
@@ -101,8 +106,9 @@ def dither(source, method="floyd-steinberg", levels=None, palette=None, *, mode=
         [0, 1].  Alpha is ignored.
     method : str
         ``"floyd-steinberg"`` (error diffusion), ``"bayer2"``, ``"bayer4"``,
-        ``"bayer8"`` (ordered dithering) or ``"none"`` (each pixel rounded to the
-        nearest level, halves up, or color, to compare).
+        ``"bayer8"`` (ordered dithering; ``"ordered"``, the notes' name, is
+        ``"bayer4"``) or ``"none"`` (each pixel rounded to the nearest level, halves
+        up, or color, to compare).
     levels : int, optional
         Evenly spaced intensity levels, 2 to 256 (default 2: a bitmap).  With mode
         ``"RGB"`` each of red, green and blue gets ``levels`` levels.
@@ -155,7 +161,7 @@ def dither(source, method="floyd-steinberg", levels=None, palette=None, *, mode=
     from .._kernels import dither as kernels
     from ..framebuffer import FrameBuffer
 
-    v.choice("method", method, METHODS)
+    method = ALIASES.get(v.choice("method", method, METHODS), method)
     if palette is not None and levels is not None:
         raise ArgumentValueError("give levels or palette, not both: a palette sets the colors itself")
     if not isinstance(serpentine, (bool, np.bool_)):

@@ -131,8 +131,9 @@ class VectorDevice:
         self._chunks = []  # (rgba, (N, 4) segments) in drawing order
 
     def _draw(self, segments, color):
-        if len(segments):
-            self._chunks.append((rgba(color), np.asarray(segments, np.float64)))
+        if len(segments):   # no color given: the white beam of a dark vector screen
+            self._chunks.append((rgba("white" if color is None else color),
+                                 np.asarray(segments, np.float64)))
 
     def stroke(self, pieces, closed, attributes):
         self._draw(_segments(pieces, closed), attributes["color"])
@@ -204,11 +205,15 @@ class SVGDevice:
     ----------
     width, height : int
     background : color or None
+        None: transparent.  Primitives without a color are drawn black, or in the
+        color that contrasts with ``background`` (as ``FrameBuffer.foreground``).
     """
 
     def __init__(self, width, height, background=None):
         self.width, self.height = width, height
         self.elements = []
+        self.foreground = "black" if background is None else FrameBuffer(
+            1, 1, background=background).foreground
         if background is not None:
             self.elements.append(
                 f'<rect width="{width}" height="{height}"{_paint("fill", background)}/>')
@@ -235,7 +240,7 @@ class SVGDevice:
                      f' stroke-dashoffset="{_num(phase)}"')
         self.elements.append(
             f'<path d={self._path(pieces, closed)} fill="none"'
-            f'{_paint("stroke", attributes["color"])} stroke-width="{_num(style.width)}"'
+            f'{_paint("stroke", attributes["color"] or self.foreground)} stroke-width="{_num(style.width)}"'
             f' stroke-linecap="{style.cap}" stroke-linejoin="{style.join}"'
             f' stroke-miterlimit="{_num(style.miter_limit)}"{extra}/>')
 
@@ -252,7 +257,7 @@ class SVGDevice:
         rule = "evenodd" if attributes["rule"] == "even-odd" else "nonzero"
         self.elements.append(
             f'<path d={self._path(contours, True)} fill-rule="{rule}"'
-            f'{_paint("fill", attributes["color"])}/>')
+            f'{_paint("fill", attributes["color"] or self.foreground)}/>')
 
     def begin_segment(self, name):
         """Start a group for the segment ``name`` (its name as the group's title)."""

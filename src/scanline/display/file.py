@@ -304,7 +304,7 @@ class DisplayFile:
     def _ndc(self, pts):
         return tf.apply(self._normalization, pts)
 
-    def polyline(self, points, color="white", closed=False, **line):
+    def polyline(self, points, color=None, closed=False, **line):
         """Append a polyline (``closed=True``: a polygon outline).
 
         ``line`` holds the line attributes of :func:`scanline.draw.polyline`:
@@ -316,7 +316,7 @@ class DisplayFile:
         attrs["closed"] = _flag("closed", closed)
         self._add("polyline", {"points": self._ndc(pts)}, attrs)
 
-    def polygon(self, points, color="white", rule="even-odd", style=None, edge=None,
+    def polygon(self, points, color=None, rule="even-odd", style=None, edge=None,
                 **line):
         """Append a fill area: one contour or several (holes combine by ``rule``).
 
@@ -325,7 +325,7 @@ class DisplayFile:
         attributes ``line``.
         """
         cs = p.contours("points", points)
-        outline = p.line_attributes("white" if edge is None else edge, "edge", **line)
+        outline = p.line_attributes(edge, "edge", **line)
         attrs = {
             "color": p.color("color", color),
             "rule": v.choice("rule", rule, p.RULES),
@@ -336,13 +336,13 @@ class DisplayFile:
             attrs["edge"] = outline
         self._add("polygon", {"contours": [self._ndc(c) for c in cs]}, attrs)
 
-    def ellipse(self, center, rx, ry, angle=0.0, color="white", fill=False, rule="even-odd",
+    def ellipse(self, center, rx, ry, angle=0.0, color=None, fill=False, rule="even-odd",
                 style=None, **line):
         """Append an ellipse with semi-axes ``rx``, ``ry`` turned by ``angle`` radians;
         ``fill=True`` makes it a fill area (with ``style``), else an outline."""
         c = p.points("center", [center], 1)
         rx, ry = p._nonnegative("rx", rx), p._nonnegative("ry", ry)
-        a = v.number("angle", angle)
+        a = v.angle("angle", angle)
         axes = np.array([[math.cos(a), -math.sin(a)], [math.sin(a), math.cos(a)]]) @ np.diag([rx, ry])
         lin = self._normalization[:2, :2]
         attrs = {"fill": _flag("fill", fill)}
@@ -354,12 +354,12 @@ class DisplayFile:
             attrs.update(outline, closed=True)
         self._add("ellipse", {"center": self._ndc(c)[0], "axes": lin @ axes}, attrs)
 
-    def circle(self, center, radius, color="white", fill=False, **attributes):
+    def circle(self, center, radius, color=None, fill=False, **attributes):
         """Append a circle (an ellipse with equal semi-axes)."""
         radius = p._nonnegative("radius", radius)
         self.ellipse(center, radius, radius, 0.0, color, fill, **attributes)
 
-    def text(self, position, string, height=1.0, angle=0.0, color="white", font="stroke",
+    def text(self, position, string, height=1.0, angle=0.0, color=None, font="stroke",
              align=("left", "base"), expansion=1.0, spacing=0.0, path="right",
              clip="character"):
         """Append a text string at ``position`` (world coordinates).
@@ -375,11 +375,11 @@ class DisplayFile:
         pos = p.points("position", [position], 1)
         attrs = p.text_attributes(color, font, align, expansion, spacing, path, clip)
         frame = self._normalization[:2, :2] @ p.text_frame(p._positive("height", height),
-                                                           v.number("angle", angle))
+                                                           v.angle("angle", angle))
         self._add("text", {"anchor": self._ndc(pos)[0], "frame": frame, "string": string},
                   attrs)
 
-    def markers(self, points, kind="plus", size=7.0, color="white"):
+    def markers(self, points, kind="plus", size=7.0, color=None):
         """Append polymarkers: ``kind`` one of dot, plus, asterisk, circle, cross
         (GKS types 1-5), ``size`` in device units (markers do not scale)."""
         pts = p.points("points", points, 1)

@@ -49,7 +49,10 @@ TEXT_CLIPS = ("string", "character", "stroke")
 
 def color(name, value):
     """Check a color spec (anything ``FrameBuffer.pixel`` takes); return it, a list or
-    array as a tuple (so that colors compare and hash)."""
+    array as a tuple (so that colors compare and hash).  None stays None: the
+    device's foreground (``FrameBuffer.foreground`` on a raster device)."""
+    if value is None:
+        return None
     if isinstance(value, np.ndarray):
         value = value.tolist()
     if isinstance(value, list):
@@ -72,7 +75,7 @@ def _positive(name, value):
     return x
 
 
-def line_attributes(color_="white", color_name="color", **style):
+def line_attributes(color_=None, color_name="color", **style):
     """Line attributes as a dict: ``color`` and ``style``, a :class:`scanline.LineStyle`
     made from ``style`` (width, cap, join, miter_limit, dash, dash_phase);
     ``color_name`` is the color's name in messages."""
@@ -92,7 +95,7 @@ def line_attributes(color_="white", color_name="color", **style):
 THIN = LineStyle()
 
 
-def marker_attributes(kind="plus", size=7.0, color_="white"):
+def marker_attributes(kind="plus", size=7.0, color_=None):
     """The validated polymarker attributes as a dict."""
     size = _positive("size", size)
     if size > MAX_MARKER:
@@ -101,7 +104,7 @@ def marker_attributes(kind="plus", size=7.0, color_="white"):
             "size": size}
 
 
-def text_attributes(color_="white", font="stroke", align=("left", "base"), expansion=1.0,
+def text_attributes(color_=None, font="stroke", align=("left", "base"), expansion=1.0,
                     spacing=0.0, path="right", clip="character"):
     """The validated text attributes (besides height and angle) as a dict."""
     if not (isinstance(align, (tuple, list)) and len(align) == 2):

@@ -2,7 +2,10 @@
 
 Every function takes the frame buffer first, device coordinates (x right, y up,
 pixel centers at integers) and a ``color``.  Anything outside the frame buffer is
-clipped.  Batch functions (``lines``, ``circles``, ``ellipses``, ``polygons``,
+clipped.  The default ``color=None`` is the frame buffer's
+:attr:`~scanline.FrameBuffer.foreground`: white on a dark background (the default
+black), black on a light one, so that a drawing made without a color is never
+invisible.  Batch functions (``lines``, ``circles``, ``ellipses``, ``polygons``,
 ``fill_circles``, ``fill_ellipses``) take N primitives as one array and draw them in one
 compiled call.  Area functions take a ``style`` (:class:`scanline.FillStyle`).
 """

@@ -92,7 +92,7 @@ def translucent(color, one=False):
 def _source(fb, spec, name):
     """One source row (c0, c1, c2, alpha 0..1) for the blend kernels."""
     value = fb.pixel(spec, name)      # validates; in "P" adds the color to the table
-    integer = isinstance(spec, numbers.Integral)
+    integer = spec is None or isinstance(spec, numbers.Integral)   # None: the opaque foreground
     alpha = 1.0 if integer else rgba(spec, name)[3] / 255.0
     if fb.mode == "P":
         c = fb._table[value[0]]

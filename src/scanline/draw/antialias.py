@@ -63,7 +63,7 @@ def _setup(fb, color, n):
     return buf, _blend.mode_code(fb), width, height, _blend.table(fb), srcs
 
 
-def lines(fb, segments, color="white"):
+def lines(fb, segments, color=None):
     """Draw N antialiased lines of width 1 with Wu's algorithm.
 
     Parameters
@@ -104,7 +104,7 @@ def lines(fb, segments, color="white"):
          table, segs, srcs)
 
 
-def ellipses(fb, ellipses, color="white"):
+def ellipses(fb, ellipses, color=None):
     """Draw N antialiased ellipse outlines (Wu-style conics).
 
     Parameters
@@ -132,7 +132,7 @@ def ellipses(fb, ellipses, color="white"):
          mode, width, height, table, arr, srcs)
 
 
-def circles(fb, circles, color="white"):
+def circles(fb, circles, color=None):
     """Draw N antialiased circles, rows (xc, yc, r) of ``circles`` (real); see
     :func:`ellipses`.
 
@@ -154,7 +154,7 @@ def circles(fb, circles, color="white"):
     ellipses(fb, arr[:, [0, 1, 2, 2]], color)
 
 
-def filled_ellipses(fb, ellipses, color="white"):
+def filled_ellipses(fb, ellipses, color=None):
     """Fill N ellipses (rows (xc, yc, rx, ry), real; rx = ry: disks) with
     antialiased edges: each pixel's coverage, measured on 16 sub-scan-lines (see
     :mod:`scanline._kernels.coverage`)."""
@@ -208,7 +208,7 @@ def _fill_parsed(fb, verts, offsets, shapes, color, rule):
          offsets, shapes, srcs, code, most)
 
 
-def fills_flat(fb, vertices, contour_offsets, shape_offsets, color="white", rule="nonzero"):
+def fills_flat(fb, vertices, contour_offsets, shape_offsets, color=None, rule="nonzero"):
     """Fill a batch of shapes made of several contours each, given as flat arrays,
     with antialiased edges in one compiled call (as :func:`fills`).
 
@@ -260,7 +260,7 @@ def fills_flat(fb, vertices, contour_offsets, shape_offsets, color="white", rule
     _fill_parsed(fb, verts, offsets, shapes, color, rule)
 
 
-def fill(fb, contours, color="white", rule="nonzero"):
+def fill(fb, contours, color=None, rule="nonzero"):
     """Fill ONE shape made of several contours with antialiased edges.
 
     Parameters
@@ -304,7 +304,7 @@ def fill(fb, contours, color="white", rule="nonzero"):
     _fill_parsed(fb, verts, offsets, np.array([0, len(offsets) - 1], np.int64), [color], rule)
 
 
-def fills(fb, shapes, color="white", rule="nonzero", counts=None):
+def fills(fb, shapes, color=None, rule="nonzero", counts=None):
     """Fill a batch of shapes with antialiased edges in one compiled call.
 
     Parameters

@@ -17,7 +17,7 @@ ELLIPSE_AXIS_LIMIT = 2**24
 ELLIPSE_PRODUCT_LIMIT = 2**29
 
 
-def circle(fb, xc, yc, r, color="white", *, style=None, antialias=False, width=None, cap=None,
+def circle(fb, xc, yc, r, color=None, *, style=None, antialias=False, width=None, cap=None,
            join=None, miter_limit=None, dash=None, dash_phase=None, pen=None):
     """Draw the circle of radius ``r`` about ``(xc, yc)`` by the midpoint algorithm.
 
@@ -72,7 +72,7 @@ def circle(fb, xc, yc, r, color="white", *, style=None, antialias=False, width=N
          xc, yc, r, fb.pixel(color))
 
 
-def circles(fb, circles, color="white", *, style=None, antialias=False, width=None, cap=None,
+def circles(fb, circles, color=None, *, style=None, antialias=False, width=None, cap=None,
             join=None, miter_limit=None, dash=None, dash_phase=None, pen=None):
     """Draw N circles in one compiled call; ``circles`` has rows ``(xc, yc, r)``.
 
@@ -106,7 +106,7 @@ def _check_ellipse(rx, ry, name="rx * ry"):
         )
 
 
-def ellipse(fb, xc, yc, rx, ry, color="white", *, style=None, antialias=False, width=None, cap=None,
+def ellipse(fb, xc, yc, rx, ry, color=None, *, style=None, antialias=False, width=None, cap=None,
             join=None, miter_limit=None, dash=None, dash_phase=None, pen=None):
     """Draw the axis-aligned ellipse with semi-axes ``rx``, ``ry`` about ``(xc, yc)``
     by the midpoint algorithm.
@@ -164,7 +164,7 @@ def ellipse(fb, xc, yc, rx, ry, color="white", *, style=None, antialias=False, w
          height, xc, yc, rx, ry, fb.pixel(color))
 
 
-def ellipses(fb, ellipses, color="white", *, style=None, antialias=False, width=None, cap=None,
+def ellipses(fb, ellipses, color=None, *, style=None, antialias=False, width=None, cap=None,
              join=None, miter_limit=None, dash=None, dash_phase=None, pen=None):
     """Draw N ellipses in one compiled call; ``ellipses`` has rows ``(xc, yc, rx, ry)``.
 

@@ -51,7 +51,7 @@ def _ring(points):
     return points
 
 
-def curve(fb, curve, color="white", tolerance=0.25, fill=False, closed=None, *,
+def curve(fb, curve, color=None, tolerance=0.25, fill=False, closed=None, *,
           rule="nonzero", window=None, antialias=False, method="subdivision", style=None,
           width=None, cap=None, join=None, miter_limit=None, dash=None, dash_phase=None,
           pen=None):
@@ -146,7 +146,7 @@ def curve(fb, curve, color="white", tolerance=0.25, fill=False, closed=None, *,
         polylines(fb, pieces, color, closed=False, **attributes)
 
 
-def curves(fb, curves, color="white", tolerance=0.25, closed=None, *, antialias=False,
+def curves(fb, curves, color=None, tolerance=0.25, closed=None, *, antialias=False,
            method="subdivision", style=None, width=None, cap=None, join=None,
            miter_limit=None, dash=None, dash_phase=None, pen=None):
     """Stroke many curves in one call of :func:`scanline.draw.polylines`.

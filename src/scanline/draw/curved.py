@@ -105,7 +105,7 @@ def _translucent_batch(fb, arr, circle, color):
     _blend.paint_each(fb, color, len(arr), boxes, draw)
 
 
-def fill_circle(fb, xc, yc, r, color="white", style=None, antialias=False):
+def fill_circle(fb, xc, yc, r, color=None, style=None, antialias=False):
     """Fill the disk bounded by the midpoint circle of radius ``r`` about ``(xc, yc)``.
 
     Parameters
@@ -163,7 +163,7 @@ def fill_circle(fb, xc, yc, r, color="white", style=None, antialias=False):
     _paint(fb, color, style, xc, yc, r, r, True, hp, combine, lambda: circle(fb, xc, yc, r, color))
 
 
-def fill_ellipse(fb, xc, yc, rx, ry, color="white", style=None, antialias=False):
+def fill_ellipse(fb, xc, yc, rx, ry, color=None, style=None, antialias=False):
     """Fill the area bounded by the midpoint ellipse with semi-axes ``rx``, ``ry``.
 
     Parameters
@@ -216,7 +216,7 @@ def fill_ellipse(fb, xc, yc, rx, ry, color="white", style=None, antialias=False)
            lambda: ellipse(fb, xc, yc, rx, ry, color))
 
 
-def fill_circles(fb, circles, color="white", antialias=False):
+def fill_circles(fb, circles, color=None, antialias=False):
     """Fill N disks in one compiled call; ``circles`` has rows ``(xc, yc, r)``.
 
     ``color`` is one color or one per disk (see :func:`scanline.draw.lines`);
@@ -235,7 +235,7 @@ def fill_circles(fb, circles, color="white", antialias=False):
          layout(packed), width, height, arr, _shape(True), colors(fb, color, len(arr)))
 
 
-def fill_ellipses(fb, ellipses, color="white", antialias=False):
+def fill_ellipses(fb, ellipses, color=None, antialias=False):
     """Fill N ellipses in one compiled call; ``ellipses`` has rows ``(xc, yc, rx, ry)``.
 
     ``color`` is one color or one per ellipse (translucent ones are composited);
@@ -260,8 +260,8 @@ def fill_ellipses(fb, ellipses, color="white", antialias=False):
 def _sweep(start, end):
     """(a, b, sweep): the angles modulo 2 pi and the counterclockwise sweep from a to
     b, or sweep = None for the whole turn."""
-    start = v.number("start", start)
-    end = v.number("end", end)
+    start = v.angle("start", start)
+    end = v.angle("end", end)
     if end - start >= TAU:
         return start % TAU, end % TAU, None
     return start % TAU, end % TAU, (end - start) % TAU
@@ -351,7 +351,7 @@ def _cut(fb, xc, yc, rx, ry, start, end, color, style, shape):
     _paint(fb, color, style, xc, yc, rx, ry, is_circle, *region, outline)
 
 
-def arc(fb, xc, yc, rx, ry, start, end, color="white"):
+def arc(fb, xc, yc, rx, ry, start, end, color=None):
     """Draw the pixels of the midpoint ellipse (circle when rx = ry) whose polar
     angle lies in [start, end], counterclockwise.
 
@@ -403,7 +403,7 @@ def arc(fb, xc, yc, rx, ry, start, end, color="white"):
     _blend.paint(fb, color, (xc - rx, yc - ry, xc + rx, yc + ry), draw)
 
 
-def pie(fb, xc, yc, rx, ry, start, end, color="white", style=None):
+def pie(fb, xc, yc, rx, ry, start, end, color=None, style=None):
     """Fill the pie slice of the ellipse (circle when rx = ry) between the rays at
     ``start`` and ``end``, counterclockwise.
 
@@ -435,7 +435,7 @@ def pie(fb, xc, yc, rx, ry, start, end, color="white", style=None):
     _cut(fb, xc, yc, rx, ry, start, end, color, style, _pie_region)
 
 
-def chord(fb, xc, yc, rx, ry, start, end, color="white", style=None):
+def chord(fb, xc, yc, rx, ry, start, end, color=None, style=None):
     """Fill the region between the arc from ``start`` to ``end`` and the chord
     joining its end points.
 

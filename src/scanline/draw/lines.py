@@ -35,7 +35,7 @@ def _attributes_need_bresenham(code):
             "method='bresenham'")
 
 
-def line(fb, x0, y0, x1, y1, color="white", method="bresenham", *, style=None,
+def line(fb, x0, y0, x1, y1, color=None, method="bresenham", *, style=None,
          antialias=False, width=None, cap=None, join=None, miter_limit=None, dash=None,
          dash_phase=None, pen=None):
     """Draw the line segment from (x0, y0) to (x1, y1), both endpoints included.
@@ -99,7 +99,7 @@ def line(fb, x0, y0, x1, y1, color="white", method="bresenham", *, style=None,
          layout(packed), width, height, x0, y0, x1, y1, fb.pixel(color), code)
 
 
-def lines(fb, segments, color="white", method="bresenham", *, style=None, antialias=False,
+def lines(fb, segments, color=None, method="bresenham", *, style=None, antialias=False,
           width=None, cap=None, join=None, miter_limit=None, dash=None, dash_phase=None,
           pen=None):
     """Draw N line segments in one compiled call.

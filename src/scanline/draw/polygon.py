@@ -60,7 +60,7 @@ def _solid_only(style):
         )
 
 
-def polygon(fb, points, color="white", rule="even-odd", style=None, antialias=False):
+def polygon(fb, points, color=None, rule="even-odd", style=None, antialias=False):
     """Fill a polygon by the scan-line algorithm.
 
     Parameters
@@ -172,7 +172,7 @@ def polygon(fb, points, color="white", rule="even-odd", style=None, antialias=Fa
     _blend.fill(fb, color, style, _bbox(verts), draw, outline)
 
 
-def polygons(fb, polygons, color="white", rule="even-odd", counts=None, antialias=False):
+def polygons(fb, polygons, color=None, rule="even-odd", counts=None, antialias=False):
     """Fill M polygons in one compiled call.
 
     Parameters

@@ -116,7 +116,7 @@ def _tolerance(fb, tolerance):
     return int(min(tolerance, 255))
 
 
-def flood_fill(fb, x, y, color="white", connectivity=4, tolerance=0):
+def flood_fill(fb, x, y, color=None, connectivity=4, tolerance=0):
     """Recolor the connected region of pixels that have the seed's value.
 
     Parameters
@@ -188,7 +188,7 @@ def flood_fill(fb, x, y, color="white", connectivity=4, tolerance=0):
     return _fill_color(fb, x, y, "flood", connectivity, ref, color)
 
 
-def boundary_fill(fb, x, y, color="white", boundary="white", connectivity=4):
+def boundary_fill(fb, x, y, color=None, boundary=None, connectivity=4):
     """Paint outward from the seed until pixels of the boundary color(s).
 
     Parameters
@@ -199,9 +199,10 @@ def boundary_fill(fb, x, y, color="white", boundary="white", connectivity=4):
         seed on the boundary fills nothing.
     color : color
         The fill color; a translucent one is composited over the region.
-    boundary : color or list of colors
+    boundary : color or list of colors, optional
         The color of the area's border; a list gives several (a tuple is one RGB(A)
-        color).
+        color).  Default: the frame buffer's ``foreground``, the color outlines are
+        drawn in when no color is given.
     connectivity : {4, 8}
         4: spread to the edge neighbors; 8: also to the corner neighbors (the
         boundary must then be 4-connected to hold the fill).

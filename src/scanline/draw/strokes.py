@@ -288,7 +288,7 @@ def _antialiased(fb, verts, offsets, closed, color, style):
     aa.fills_flat(fb, out, contours, polys, color, "nonzero")
 
 
-def polyline(fb, points, color="white", closed=False, *, style=None, antialias=False,
+def polyline(fb, points, color=None, closed=False, *, style=None, antialias=False,
              width=None, cap=None, join=None, miter_limit=None, dash=None, dash_phase=None,
              pen=None):
     """Draw a polyline (open, or closed: a polygon outline) with line attributes.
@@ -364,7 +364,7 @@ def polyline(fb, points, color="white", closed=False, *, style=None, antialias=F
     stroke(fb, verts, offsets, _closed_flags(closed, 1), color, style, antialias)
 
 
-def polylines(fb, polylines, color="white", closed=False, *, counts=None, style=None,
+def polylines(fb, polylines, color=None, closed=False, *, counts=None, style=None,
               antialias=False, width=None, cap=None, join=None, miter_limit=None,
               dash=None, dash_phase=None, pen=None):
     """Draw M polylines with line attributes in one compiled call.

@@ -136,7 +136,7 @@ def text(fb, x, y, text, color=None, font=None, height=None, expansion=None, spa
         Newlines start new lines (new columns for paths up and down).  Characters
         the font lacks are drawn as a box.
     color : color, optional
-        Default: the style's color, else ``"white"``.  A translucent color is
+        Default: the style's color, else the frame buffer's ``foreground``.  A translucent color is
         composited over the frame buffer.
     font : {"sans", "bitmap", "stroke"}, path or Font, optional
         Default ``"sans"`` (DejaVu Sans).
@@ -202,8 +202,8 @@ def text(fb, x, y, text, color=None, font=None, height=None, expansion=None, spa
                 _MEMO.clear()
             _MEMO[key] = memo
     st = memo[1]
-    color = color if color is not None else st.color if st.color is not None else "white"
     raster = target(fb)
+    color = color if color is not None else st.color if st.color is not None else fb.foreground
     value = fb.pixel(color)
     if memo[2] is None:
         memo[2] = _fast(st)

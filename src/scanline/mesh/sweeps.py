@@ -130,7 +130,7 @@ def rotational_sweep(profile, axis="y", angle=2 * np.pi, steps=32, closed=False,
     (10, 16, True)
     """
     p, closed = _closed(profile_points(profile, samples), closed)
-    a = v.number("angle", angle)
+    a = v.angle("angle", angle)
     if not 0 < a <= 2 * np.pi + 1e-12:
         raise ArgumentValueError(f"angle must be in (0, 2π], got {angle!r}")
     full = abs(a - 2 * np.pi) <= 1e-12

@@ -284,10 +284,11 @@ class Projection:
 
 
 def _angle(name, value, low, high):
-    a = v.number(name, value)
+    a = v.angle(name, value)
     if not low < a < high:
         raise ArgumentValueError(
-            f"{name} must be between {low:g} and {high:g} radians (exclusive), got {a!r}")
+            f"{name} must be between {low:g} and {high:g} radians (exclusive), got "
+            f"{value!r}; write degrees with their unit, e.g. {name}='30deg'")
     return a
 
 
@@ -362,8 +363,8 @@ def axonometric(phi, theta, window=DEFAULT_WINDOW, front=None, back=None, name="
     >>> [round(f, 4) for f in sl.projection.foreshortening(p)]
     [0.8827, 0.9397, 0.5811]
     """
-    phi = v.number("phi", phi)
-    theta = v.number("theta", theta)
+    phi = v.angle("phi", phi)
+    theta = v.angle("theta", theta)
     rot = t3.compose(t3.rotation(theta, "x"), t3.rotation(phi, "y"))
     return Projection("parallel", name, window, 0.0, front, back, (0.0, 0.0), orientation=rot)
 
@@ -468,7 +469,7 @@ def oblique(kind=None, phi=math.pi / 4, alpha=None, window=DEFAULT_WINDOW, front
     >>> sl.transform3d.apply(p, (0, 0, 1)).round(6).tolist()
     [0.433013, 0.25, 1.0]
     """
-    phi = v.number("phi", phi)
+    phi = v.angle("phi", phi)
     if (kind is None) == (alpha is None):
         raise ArgumentValueError(
             "give either kind ('cavalier' or 'cabinet') or alpha (radians), not both and "

@@ -62,7 +62,7 @@ def rotate_block(dst, src, rect, angle, center=None, method=None):
     if method == "area" and not mixable:
         raise ArgumentValueError(f"method='area' mixes levels, which mode {dst.mode!r} cannot "
                                  "hold; use method='nearest'")
-    angle = v.number("angle", angle)
+    angle = v.angle("angle", angle)
     x, y, w, h = _rect("rect", rect)
     x0, y0 = max(x, 0), max(y, 0)
     x1, y1 = min(x + w, src.width), min(y + h, src.height)

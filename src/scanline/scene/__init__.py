@@ -27,6 +27,7 @@ from .scene import Scene, load, loads
 from .animated import AnimatedScene
 from .animated import load as load_animated
 from .animated import loads as loads_animated
+from .examples import copy_examples, example, examples
 
 __all__ = ["Scene", "SceneError", "load", "loads", "parse", "read", "dumps", "AnimatedScene",
-           "load_animated", "loads_animated"]
+           "load_animated", "loads_animated", "example", "examples", "copy_examples"]

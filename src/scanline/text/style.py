@@ -200,7 +200,7 @@ def _antialias(value):
 
 
 _CHECKS = {"font": _font, "height": _height, "expansion": _expansion,
-           "spacing": _spacing, "angle": lambda a: v.number("angle", a),
+           "spacing": _spacing, "angle": lambda a: v.angle("angle", a),
            "path": lambda p: v.choice("path", p, PATHS), "align": _align,
            "color": lambda c: c, "antialias": _antialias}
 

@@ -100,14 +100,20 @@ def cox_de_boor(knots, order, u):
     if not t[0] <= u <= t[-1]:
         raise ArgumentValueError(f"u must lie in [{t[0]:g}, {t[-1]:g}], got {u!r}")
     span = int(knot_span(t, u))
+
+    def interval(lo, hi):
+        # the last span is closed, [u_m-1, u_m]: u at the end belongs to it
+        return f"[{lo:g}, {hi:g}" + ("]" if hi == t[-1] == u else ")")
+
     rows = []
     for r in range(1, order + 1):
         values = basis(t, r, u)
         for k in range(max(span - r + 1, 0), min(span, len(values) - 1) + 1):
-            rows.append({"r": r, "k": k, "interval": f"[{t[k]:g}, {t[k + r]:g})",
+            rows.append({"r": r, "k": k, "interval": interval(t[k], t[k + r]),
                          "B": float(values[k])})
     notes = [f"knots = [{', '.join(f'{x:g}' for x in t)}], d = {order}, "
-             f"u = {u:g} in span {span}: [{t[span]:g}, {t[span + 1]:g})",
+             f"u = {u:g} in span {span}: {interval(t[span], t[span + 1])}"
+             + (" (the last span is closed at its end)" if u == t[-1] else ""),
              "B_k,1 = 1 on [u_k, u_k+1); B_k,r = (u - u_k)/(u_k+r-1 - u_k) B_k,r-1 "
              "+ (u_k+r - u)/(u_k+r - u_k+1) B_k+1,r-1 (0/0 = 0)"]
     return Table(f"Cox-de Boor recursion, order {order}, u = {u:g}",

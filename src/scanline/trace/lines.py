@@ -43,7 +43,7 @@ def bresenham(x0, y0, x1, y1):
         for i, (p, x, y, inc) in enumerate(out.tolist())
     ]
     notes = [
-        f"major axis {a} (|d{b}| {'>' if swap else '<='} |d{a}|), stepping from "
+        f"major axis {a} (|d{b}| {'<' if swap else '<='} |d{a}|), stepping from "
         f"({start[0]}, {start[1]}); {b} moves by {sw:+d} when it moves",
         f"d{a} = {du}, d{b} = {dw}, 2d{b} = {2 * dw}, 2d{b} - 2d{a} = {2 * dw - 2 * du}, "
         f"p0 = 2d{b} - d{a} = {2 * dw - du}",

@@ -3,13 +3,24 @@
 import csv
 import io
 import json
+import math
 
 
 def _cell(value):
+    """A value as the table prints it: floats to 6 decimals, except one whose
+    6-decimal form would round (half up, as the pixels do) to another integer than
+    the value itself -- the DDA's 3.4999999999999996 reads as 3.5 but rounds to 3 --
+    which is printed with all its digits.
+
+    >>> _cell(0.25), _cell(1 / 3), _cell(3.4999999999999996), _cell(-1.1e-15)
+    ('0.25', '0.333333', '3.4999999999999996', '0')
+    """
     if value is None:
         return ""
     if isinstance(value, float):
         text = f"{value:.6f}".rstrip("0").rstrip(".")
+        if math.isfinite(value) and math.floor(float(text) + 0.5) != math.floor(value + 0.5):
+            return repr(value)
         return "0" if text == "-0" else text
     return str(value)
 

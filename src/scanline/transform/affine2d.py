@@ -209,7 +209,7 @@ def rotation(angle, pivot=None):
     >>> (apply(rotation(math.pi, pivot=(1, 1)), (3, 1)).round(12) + 0.0).tolist()
     [-1.0, 1.0]
     """
-    theta = v.number("angle", angle)
+    theta = v.angle("angle", angle)
     c, s = math.cos(theta), math.sin(theta)
     if pivot is None:
         return _homogeneous(c, -s, 0.0, s, c, 0.0)

@@ -177,7 +177,7 @@ def rotation(angle, axis="z", pivot=None):
     >>> (apply(rotation(math.pi / 2, ((0, 0, 0), (1, 1, 1))), (1, 0, 0)).round(12) + 0).tolist()
     [0.333333333333, 0.910683602523, -0.244016935856]
     """
-    theta = v.number("angle", angle)
+    theta = v.angle("angle", angle)
     if isinstance(axis, str):
         v.choice("axis", axis, AXES)
         m3 = _axis_rotation(axis, math.cos(theta), math.sin(theta))
@@ -236,7 +236,7 @@ def rotation_steps(angle, axis):
     >>> [s.name for s in rotation_steps(0.5, ((0, 0, 0), (0, 0, 1)))]
     ['T', 'Rx(alpha)', 'Ry(beta)', 'Rz(theta)', 'Ry(beta)^-1', 'Rx(alpha)^-1', 'T^-1']
     """
-    theta = v.number("angle", angle)
+    theta = v.angle("angle", angle)
     p1, p2 = _axis_points(axis)
     with np.errstate(over="ignore"):
         a, b, c = direction("axis[1] - axis[0]", p2 - p1)

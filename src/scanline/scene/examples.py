@@ -1,0 +1,72 @@
+"""The example scene files shipped inside the package (``scanline/data/scenes``), so
+that they can be named from any folder: ``sl.scene.example("rotation")``,
+``scanline render --example rotation -o out.png``, ``scanline examples``.
+
+>>> import scanline as sl
+>>> "rotation" in sl.scene.examples(), sl.scene.example("rotation").name
+(True, 'rotation.toml')
+"""
+
+import itertools
+import shutil
+from importlib import resources
+from pathlib import Path
+
+from .. import _validate as v
+from ..errors import ArgumentValueError
+
+
+def _folder():
+    return Path(str(resources.files("scanline") / "data" / "scenes"))
+
+
+def examples():
+    """{name: summary} of the bundled scene files, by name; the summary is the first
+    sentence of the file's opening comment."""
+    out = {}
+    for path in sorted(_folder().glob("*.toml")):
+        lines = path.read_text(encoding="utf-8").splitlines()
+        comment = " ".join(line.lstrip("# ").strip() for line in
+                           itertools.takewhile(lambda line: line.startswith("#"), lines))
+        out[path.stem] = _first_clause(comment)
+    return out
+
+
+def _first_clause(text):
+    """``text`` up to its first ``.`` or ``:`` outside parentheses that ends a clause."""
+    depth = 0
+    for i, c in enumerate(text):
+        depth += (c == "(") - (c == ")")
+        if depth == 0 and c in ".:" and (i + 1 == len(text) or text[i + 1] == " "):
+            return text[:i]
+    return text
+
+
+def example(name):
+    """The path of the bundled scene file ``name`` (``"rotation"`` or
+    ``"rotation.toml"``); a name that is none of them is refused, listing them."""
+    if not isinstance(name, str):
+        raise ArgumentValueError(f"example must be a name such as 'rotation', got {v._show(name)}")
+    stem = name[:-5] if name.endswith(".toml") else name
+    path = _folder() / f"{stem}.toml"
+    if stem not in examples():
+        raise ArgumentValueError(
+            f"example={name!r} is not a bundled scene; the examples are "
+            f"{', '.join(examples())} ('scanline examples' lists them)")
+    return path
+
+
+def copy_examples(folder):
+    """Copy every bundled scene file into ``folder`` (created if needed); files that
+    exist there already are refused, and nothing is copied.  Returns the new paths."""
+    folder = Path(folder)
+    if folder.exists() and not folder.is_dir():
+        raise ArgumentValueError(f"folder={str(folder)!r} exists and is not a folder")
+    sources = [example(name) for name in examples()]
+    clash = [p.name for p in sources if (folder / p.name).exists()]
+    if clash:
+        raise ArgumentValueError(
+            f"folder={str(folder)!r} already has {', '.join(clash)}; copy into a new or "
+            f"empty folder")
+    folder.mkdir(parents=True, exist_ok=True)
+    return [Path(shutil.copyfile(p, folder / p.name)) for p in sources]

@@ -640,7 +640,7 @@ class FrameBuffer:
         any failure no file is left at ``file`` and a file object is not written to.
         """
         if isinstance(file, (str, os.PathLike)):
-            file = output_path(file, "file")
+            file = output_path(file)
         fmt = imagefile.format_of(file, format)
         if not isinstance(file, (str, os.PathLike)):
             imagefile._check_binary(file, "write")

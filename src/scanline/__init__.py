@@ -47,6 +47,10 @@ _LAZY = {
     "Camera": ("scanline.projection", "Camera"),
     "mesh": ("scanline.mesh", None),
     "draw3d": ("scanline.draw3d", None),
+    "DepthBuffer": ("scanline.depthbuffer", "DepthBuffer"),
+    "lighting": ("scanline.lighting", None),
+    "shading": ("scanline.shading", None),
+    "render": ("scanline.render", "render"),
 }
 
 __all__ = sorted(_LAZY) + ["__version__"]

@@ -50,9 +50,12 @@ BAND = 1 << BAND_SHIFT
 COLOR = 1
 ATTRIBUTES = 2
 
-#: Depth tokens: test and write the depth buffer, or draw in the given order.
+#: Depth tokens: test and write the depth buffer; draw in the given order; or peel
+#: (write where the depth lies strictly between ``floor[y, x]`` and the depth
+#: buffer: the next layer behind the one already taken, for the A-buffer).
 TEST = 1
 NO_TEST = 2
+PEEL = 3
 
 
 @kernel
@@ -179,7 +182,8 @@ def span_limits(tri, t, y, low, mid, high, width):
 
 
 @helper
-def raster_triangle(out, depth, tri, q, att, ids, t, r0, r1, g, zbuf, buf, abuf, idbuf):
+def raster_triangle(out, depth, tri, q, att, ids, t, r0, r1, g, zbuf, floor, buf, abuf,
+                    idbuf):
     """Scan-convert triangle ``t`` on rows ``r0 .. r1`` (already clamped)."""
     if not setup(tri, q, att, t, g):
         return
@@ -214,6 +218,11 @@ def raster_triangle(out, depth, tri, q, att, ids, t, r0, r1, g, zbuf, buf, abuf,
                     z += dzdx                              # z' = z - A / C
                     continue
                 zbuf[y, x] = z
+            elif len(depth) == PEEL:
+                if not (z < zbuf[y, x] and z > floor[y, x]):
+                    z += dzdx
+                    continue
+                zbuf[y, x] = z
             i = x - kl
             qx = qs + dqdx * i
             if len(out) == COLOR:
@@ -230,15 +239,15 @@ def raster_triangle(out, depth, tri, q, att, ids, t, r0, r1, g, zbuf, buf, abuf,
 
 
 @parallel_kernel
-def raster_triangles(out, depth, tri, q, att, ids, rows, starts, order, scratch, zbuf, buf,
-                     abuf, idbuf):
+def raster_triangles(out, depth, tri, q, att, ids, rows, starts, order, scratch, zbuf, floor,
+                     buf, abuf, idbuf):
     """Draw the binned triangles band by band, the bands in parallel.
 
     ``tri`` (N, 3, 3) device x, y, depth per vertex; ``q`` (N, 3) 1/w per vertex;
     ``att`` (N, 3, K) attributes per vertex; ``ids`` (N,) the value each triangle
     writes into ``idbuf``; ``rows``, ``starts``, ``order`` from
     :func:`bin_triangles`; ``scratch`` (bands, K + 2, 3).  Writes ``zbuf`` (H, W)
-    (depth token TEST), and ``buf`` (H, W', K) bytes (out COLOR) or ``abuf`` (H, W,
+    (depth token TEST; PEEL: only between ``floor`` (H, W) and ``zbuf``), and ``buf`` (H, W', K) bytes (out COLOR) or ``abuf`` (H, W,
     K) and ``idbuf`` (H, W) (out ATTRIBUTES)."""
     height = zbuf.shape[0]
     bands = starts.shape[0] - 1
@@ -250,5 +259,5 @@ def raster_triangles(out, depth, tri, q, att, ids, rows, starts, order, scratch,
             t = order[e]
             r0 = max(rows[t, 0], lo)
             r1 = min(rows[t, 1], hi)
-            raster_triangle(out, depth, tri, q, att, ids, t, r0, r1, g, zbuf, buf, abuf,
-                            idbuf)
+            raster_triangle(out, depth, tri, q, att, ids, t, r0, r1, g, zbuf, floor, buf,
+                            abuf, idbuf)

@@ -70,12 +70,15 @@ def _vertex_colors(fb, colors, n):
     return v.kernel_array(np.repeat(per_face[:, None, :], 3, axis=1))
 
 
-def rasterize(width, height, tri, q, att, ids, zbuf=None, buf=None, abuf=None, idbuf=None):
+def rasterize(width, height, tri, q, att, ids, zbuf=None, buf=None, abuf=None, idbuf=None,
+              floor=None):
     """Run the triangle kernel on normalized arrays.
 
     ``buf`` given: the attributes (0..255) are rounded into its bytes; else
     ``abuf`` (H, W, K) float64 and ``idbuf`` (H, W) int64 receive the interpolated
-    attributes and ``ids``.  ``zbuf`` None: no depth test (the input order wins)."""
+    attributes and ``ids``.  ``zbuf`` None: no depth test (the input order wins);
+    ``floor`` (H, W): depth peeling, only fragments behind ``floor`` and in front of
+    ``zbuf`` pass."""
     from .._kernels import raster3d as k
     from .._kernels._jit import call
     from .._kernels.variants import token
@@ -96,7 +99,9 @@ def rasterize(width, height, tri, q, att, ids, zbuf=None, buf=None, abuf=None, i
     else:
         out = token(k.ATTRIBUTES)
         buf = np.empty((1, 1, 1), np.uint8)
-    depth = token(k.TEST)
+    depth = token(k.TEST if floor is None else k.PEEL)
+    if floor is None:
+        floor = np.empty((1, 1))
     if zbuf is None:
         depth = token(k.NO_TEST)
         zbuf = np.empty((height, width))
@@ -109,7 +114,7 @@ def rasterize(width, height, tri, q, att, ids, zbuf=None, buf=None, abuf=None, i
     else:
         work = 0
     call(k.raster_triangles, work, out, depth, tri, q, att, ids, rows, starts, order,
-         scratch, zbuf, buf, abuf, idbuf)
+         scratch, zbuf, floor, buf, abuf, idbuf)
 
 
 def triangles(fb, vertices, colors=None, depth=None, *, w=None):

@@ -50,7 +50,7 @@ _LAZY = {
     "DepthBuffer": ("scanline.depthbuffer", "DepthBuffer"),
     "lighting": ("scanline.lighting", None),
     "shading": ("scanline.shading", None),
-    "render": ("scanline.render", "render"),
+    "render": ("scanline.render", None),
 }
 
 __all__ = sorted(_LAZY) + ["__version__"]

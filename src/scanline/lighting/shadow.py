@@ -39,7 +39,7 @@ class ShadowMaps:
                 up = (0, 1, 0) if abs(d[1]) < 0.9 else (1, 0, 0)
                 cam = Camera(eye=center - 2 * radius * d, target=center, up=up,
                              projection=orthographic(window=(-radius, -radius, radius, radius),
-                                                     front=radius, back=-radius))
+                                                     front=-radius, back=-3 * radius))
             else:
                 p = light.position
                 dist = float(np.linalg.norm(center - p))

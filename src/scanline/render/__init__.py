@@ -14,3 +14,15 @@ from .api import render
 
 __all__ = ["render", "prepare", "ScreenScene", "Rendering", "METHODS", "PRECISION",
            "register", "draw_pieces"]
+
+
+class _RenderModule(type(__import__("sys"))):
+    """``scanline.render`` is both this package and the function :func:`render`:
+    importing a sub-module (``scanline.render.prepare``) binds the package as the
+    attribute ``scanline.render``, so the package itself is callable."""
+
+    def __call__(self, *args, **kwargs):
+        return render(*args, **kwargs)
+
+
+__import__("sys").modules[__name__].__class__ = _RenderModule

@@ -77,7 +77,7 @@ def _lit(scene, faces, points, normals, colors, lights, specular, visibility):
     mesh = scene.face_mesh[faces]
     for m in np.unique(mesh):
         sel = mesh == m
-        vis = None if visibility is None else [a[sel] for a in visibility(points[sel])]
+        vis = None if visibility is None else visibility(points[sel])
         out[sel] = intensity(points[sel], normals[sel], scene.eye, lights,
                              scene.materials[m], specular=specular, color=colors[sel],
                              visibility=vis)

@@ -246,3 +246,23 @@ def test_bad_targets():
         sl.render(sl.FrameBuffer(8, 8), sl.mesh.cube(), "camera")
     with pytest.raises(sl.ScanlineError, match="Mesh"):
         sl.render(sl.FrameBuffer(8, 8), ["cube"], camera())
+
+
+def test_z_buffer_trace_agrees_with_the_drawing():
+    from scanline.trace import z_buffer
+    from scanline.trace.zbuffer import HEIGHT, SCENE, WIDTH
+
+    for row in range(HEIGHT):
+        table = z_buffer(row)
+        fb = sl.FrameBuffer(WIDTH, HEIGHT, mode="L")
+        depth = sl.DepthBuffer.like(fb)
+        sl.draw.triangles(fb, SCENE, colors=[50, 100, 150], depth=depth)
+        written = {}
+        for r in table.rows:
+            if r["result"] == "write":
+                written[r["x"]] = r["z"]
+                assert r["depth"] == "inf" or r["z"] < r["depth"]
+            else:
+                assert r["depth"] != "inf" and r["z"] >= r["depth"]
+        expect = {x: round(float(z), 6) for x, z in enumerate(depth.array[row]) if np.isfinite(z)}
+        assert written == expect or all(written[x] == expect[x] for x in expect)

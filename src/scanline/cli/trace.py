@@ -77,6 +77,10 @@ ALGORITHMS = {
         "3-D Liang-Barsky clipping: p_k, q_k, u1, u2 for six planes (Hearn & Baker 12-5)",
         {}, False,
     ),
+    "z-buffer": (
+        "the depth-buffer method along one scan line: depths compared, the winner "
+        "(Hearn & Baker 13-3)", {}, False,
+    ),
 }
 
 
@@ -206,6 +210,15 @@ def _clip3d_arguments(values, options):
 
 OPTIONS.update({"cohen-sutherland-3d": clip3d_options, "liang-barsky-3d": clip3d_options})
 
+
+def z_buffer_options(sub):
+    """``--row`` of ``z-buffer``."""
+    sub.add_argument("--row", type=integer, default=4, help="the scan line (default 4)")
+    return ["row"]
+
+
+OPTIONS["z-buffer"] = z_buffer_options
+
 FORMATS = ("table", "csv", "json")
 
 
@@ -264,15 +277,14 @@ def table_of(args):
     values = [getattr(args, p) for p in args.params]
     options = {"center": args.center} if "center" in vars(args) else {}
     options.update({o: getattr(args, o) for o in args.options if getattr(args, o) is not None})
+    if getattr(args, "adapt", None) is not None:
+        values, options = args.adapt(values, options)
     return functions[args.algorithm](*values, **options)
 
 
 def run(args):
     """Print the table of ``args.algorithm`` in ``args.format``."""
     table = table_of(args)
-    if getattr(args, "adapt", None) is not None:
-        values, options = args.adapt(values, options)
-    table = functions[args.algorithm](*values, **options)
     if args.format == "json":
         print(table.to_json(indent=2))
     elif args.format == "csv":

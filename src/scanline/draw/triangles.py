@@ -54,6 +54,8 @@ def _vertex_colors(fb, colors, n):
     if isinstance(colors, np.ndarray) and colors.dtype.kind in "fiu" and colors.ndim >= 2 \
             and colors.shape[:2] == (n, 3) and (colors.ndim == 3 or channels == 1):
         a = np.asarray(colors, np.float64).reshape(n, 3, -1)
+        if channels == 1 and a.shape[2] in (3, 4):          # RGB(A) in mode L: luminance
+            a = a[:, :, :3] @ np.array([[0.299], [0.587], [0.114]])
         if a.shape[2] != channels and not (channels == 4 and a.shape[2] == 3):
             raise ArgumentValueError(
                 f"per-vertex colors must have {channels} channel(s) for mode {fb.mode!r}, "

@@ -1,8 +1,5 @@
 """The renderer's entry point, :func:`render`."""
 
-import math
-import time
-
 import numpy as np
 
 from .. import _validate as v
@@ -117,7 +114,4 @@ def render(fb, meshes, camera, method="z-buffer", shading="gouraud", lights=None
 
         options["shadows"] = ShadowMaps(meshes, scene, lights)
     options.update(method_options)
-    t0 = time.perf_counter()
-    result = METHODS[method](scene, fb, options)
-    result.seconds = time.perf_counter() - t0
-    return result
+    return METHODS[method](scene, fb, options)

@@ -47,11 +47,17 @@ def z_buffer(row=4, triangles=None, width=WIDTH, height=HEIGHT):
     idbuf = np.full((height, width), -1, np.int64)
     g = np.empty((2, 3))
     draw = python(k.raster_triangle)
+    spans = np.empty((n, 2), np.int64)
+    bands = ((height - 1) >> k.BAND_SHIFT) + 1
+    python(k.bin_triangles)(tri, height, spans, np.empty(bands + 1, np.int64),
+                            np.empty(python(k.band_entries)(tri, height), np.int64))
     out, test = token(k.ATTRIBUTES), token(k.TEST)
     dummy_b, dummy_a, dummy_f = np.empty((1, 1, 1), np.uint8), np.empty((height, width, 0)), \
         np.empty((1, 1))
     rows = []
     for t in range(n):
+        if not spans[t, 0] <= row <= spans[t, 1]:
+            continue                              # the triangle's rows miss this one
         # the triangle's own depths on the row: the same kernel, on a fresh (inf) buffer
         own = np.full((height, width), np.inf)
         mine = np.full((height, width), -1, np.int64)

@@ -40,8 +40,8 @@ class DepthBuffer:
     >>> import scanline as sl
     >>> fb = sl.FrameBuffer(6, 3, mode="L")
     >>> depth = sl.DepthBuffer(6, 3)
-    >>> sl.draw.triangles(fb, [[(0, 0, 0.5), (5, 0, 0.5), (0, 3, 0.5)]], colors=255, depth=depth)
-    >>> depth.to_array().round(2).tolist()[-1]
+    >>> sl.draw.triangles(fb, [[(0, -1, 0.5), (6, -1, 0.5), (0, 3, 0.5)]], colors=255, depth=depth)
+    >>> depth.to_array().tolist()[-1]
     [0.5, 0.5, 0.5, 0.5, 0.5, inf]
     """
 

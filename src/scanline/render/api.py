@@ -78,12 +78,12 @@ def render(fb, meshes, camera, method="z-buffer", shading="gouraud", lights=None
     ...               materials=sl.lighting.Material(ka=1.0, kd=0, ks=0))
     >>> print(sl.text_image(fb))
     ---------
-    -######--
-    -######--
-    -######--
-    -######--
-    -######--
-    -######--
+    ---------
+    --#####--
+    --#####--
+    --#####--
+    --#####--
+    --#####--
     ---------
     ---------
     """

@@ -51,6 +51,10 @@ _LAZY = {
     "Camera": ("scanline.projection", "Camera"),
     "mesh": ("scanline.mesh", None),
     "draw3d": ("scanline.draw3d", None),
+    "DepthBuffer": ("scanline.depthbuffer", "DepthBuffer"),
+    "lighting": ("scanline.lighting", None),
+    "shading": ("scanline.shading", None),
+    "render": ("scanline.render", None),
 }
 
 __all__ = sorted(_LAZY) + ["__version__"]

@@ -205,6 +205,18 @@ CALLS = {
     "draw3d polylines thick": ("three_d", "sl.draw3d.polylines(fb, [[(0, 0, 0), (1, 1, 0), "
                                           "(1, 0, 1)]], sl.Camera(eye=(3, 2, 4), "
                                           "target=(0, 0, 0)), color='black', width=3)", RGB),
+    "triangles": ("render", "sl.draw.triangles(fb, [[(3, 4, 0.5), (90, 20, 0.2), (30, 60, 0.9)]], "
+                            "colors=np.array([[[255, 0, 0], [0, 255, 0], [0, 0, 255]]]), "
+                            "depth=sl.DepthBuffer.like(fb))", ("L", "RGB", "RGBA")),
+    "triangles no depth": ("render", "sl.draw.triangles(fb, [[(3, 4, 0), (90, 20, 0), "
+                                     "(30, 60, 0)]], colors='red')", RGB),
+    "render z-buffer": ("render", "sl.render(fb, sl.mesh.sphere(1, resolution=(8, 4)), "
+                                  "sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)), "
+                                  "shading='phong')", RGB),
+    "render ray-casting": ("render", "sl.render(fb, sl.mesh.cube(), sl.Camera(eye=(3, 2, 4), "
+                                     "target=(0, 0, 0)), method='ray-casting')", RGB),
+    "render a-buffer": ("render", "sl.render(fb, sl.mesh.cube(), sl.Camera(eye=(3, 2, 4), "
+                                  "target=(0, 0, 0)), method='a-buffer', samples=2)", RGB),
     "four calls": ("mixed", "sl.draw.line(fb, 3, 4, 90, 50, color='black'); "
                             f"sl.draw.polygon(fb, {STAR}, color='navy', rule='nonzero'); "
                             "sl.draw.text(fb, 4, 20, 'Hello', color='black', height=14); "

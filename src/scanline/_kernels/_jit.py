@@ -38,6 +38,10 @@ def _compiled(**options):
 #: disk, releasing the GIL.
 kernel = _compiled()
 
+#: Decorator for the few kernels that run bands of their work on every core
+#: (numba's ``prange``; the Python twin runs the bands one after another).
+parallel_kernel = _compiled(parallel=True)
+
 #: Decorator for compiled helpers that kernels call; LLVM decides what to inline.
 helper = _compiled()
 

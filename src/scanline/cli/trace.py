@@ -77,6 +77,10 @@ ALGORITHMS = {
         "3-D Liang-Barsky clipping: p_k, q_k, u1, u2 for six planes (Hearn & Baker 12-5)",
         {}, False,
     ),
+    "z-buffer": (
+        "the depth-buffer method along one scan line: depths compared, the winner "
+        "(Hearn & Baker 13-3)", {}, False,
+    ),
 }
 
 
@@ -205,6 +209,15 @@ def _clip3d_arguments(values, options):
 
 
 OPTIONS.update({"cohen-sutherland-3d": clip3d_options, "liang-barsky-3d": clip3d_options})
+
+
+def z_buffer_options(sub):
+    """``--row`` of ``z-buffer``."""
+    sub.add_argument("--row", type=integer, default=4, help="the scan line (default 4)")
+    return ["row"]
+
+
+OPTIONS["z-buffer"] = z_buffer_options
 
 FORMATS = ("table", "csv", "json")
 

@@ -20,7 +20,9 @@ from . import antialias
 from .strokes import polyline, polylines
 from .curve import curve, curves
 from .text import text
+from .triangles import triangles
 
 __all__ = ["line", "lines", "circle", "circles", "ellipse", "ellipses", "polygon", "polygons",
            "fill_circle", "fill_circles", "fill_ellipse", "fill_ellipses", "arc", "chord", "pie",
-           "flood_fill", "boundary_fill", "soft_fill", "polyline", "polylines", "curve", "curves", "text"]
+           "flood_fill", "boundary_fill", "soft_fill", "polyline", "polylines", "curve", "curves", "text",
+           "triangles"]

@@ -1,0 +1,191 @@
+"""Triangle rasterization and rendering: scanline against Mesa's llvmpipe (OpenGL
+through moderngl, EGL, headless, multithreaded on every core) on the same workloads
+in one run.
+
+Workloads (fixed seed), at 1920 x 1080 RGB with a depth test:
+
+* ``1M small``: 1,000,000 random triangles of about 10 pixels each, Gouraud colors per
+  vertex.  scanline: ``sl.draw.triangles(fb, tris, colors=..., depth=depth)``
+  (depth buffer cleared inside the clock); Mesa: the same triangles as a vertex
+  buffer (uploaded outside the clock) drawn with ``GL_TRIANGLES`` and a depth test,
+  timed from the clear to the pixels read back (``fbo.read``).
+* ``100k medium``: 100,000 triangles of about 50 pixels.
+* ``teapot phong``: the Utah teapot (``sl.mesh.teapot(24)``), Phong-shaded (one
+  directional light, ambient), filling most of the frame.  scanline: ``sl.render(fb,
+  teapot, camera, shading="phong")`` -- preparation, clipping, z-buffer and per-pixel
+  lighting all timed; Mesa: per-pixel Phong in a fragment shader, vertex buffers
+  uploaded outside the clock.
+* ``methods``: every registered visible-surface method on one 100k-triangle scene.
+
+Ratios are peer time / scanline time (above 1: scanline is faster).
+
+Run: ``python benchmarks/render.py [--quick]`` (``--quick``: 10x fewer triangles).
+"""
+
+import argparse
+import math
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from common import Report  # noqa: E402
+
+import scanline as sl  # noqa: E402
+
+W, H = 1920, 1080
+
+GL_GOURAUD = ("""
+#version 330
+uniform vec2 size;
+in vec3 position; in vec3 color; out vec3 v_color;
+void main() {
+    gl_Position = vec4(2.0 * (position.xy + 0.5) / size - 1.0, 2.0 * position.z - 1.0, 1.0);
+    v_color = color;
+}""", """
+#version 330
+in vec3 v_color; out vec4 color;
+void main() { color = vec4(v_color / 255.0, 1.0); }""")
+
+GL_PHONG = ("""
+#version 330
+uniform mat4 clip; uniform vec2 size;
+in vec3 position; in vec3 normal; out vec3 v_n; out vec3 v_p;
+void main() {
+    vec4 h = clip * vec4(position, 1.0);
+    vec2 dev = h.xy * (size - 1.0) + 0.5 * h.w;
+    gl_Position = vec4(2.0 * dev / size - h.w, 2.0 * h.z - h.w, h.w);
+    v_n = normal; v_p = position;
+}""", """
+#version 330
+uniform vec3 eye; uniform vec3 light;
+in vec3 v_n; in vec3 v_p; out vec4 color;
+void main() {
+    vec3 n = normalize(v_n); vec3 l = -light; vec3 v = normalize(eye - v_p);
+    float nl = dot(n, l);
+    if (nl < 0.0) { n = -n; nl = -nl; }
+    vec3 r = 2.0 * nl * n - l;
+    float s = nl > 0.0 ? pow(max(dot(v, r), 0.0), 20.0) : 0.0;
+    float i = 0.2 * 0.2 + 0.9 * (0.7 * nl + 0.3 * s);
+    color = vec4(vec3(pow(clamp(i, 0.0, 1.0), 1.0 / 2.2)), 1.0);
+}""")
+
+
+def random_triangles(rng, n, size):
+    """n triangles of about ``size`` pixels (area), depths 0.05..0.95."""
+    c = rng.uniform(0, [W, H], size=(n, 1, 2))
+    r = math.sqrt(2 * size / 1.3)
+    xy = c + rng.uniform(-r / 2, r / 2, size=(n, 3, 2)) * 1.2
+    z = rng.uniform(0.05, 0.95, size=(n, 3, 1))
+    return np.ascontiguousarray(np.concatenate([xy, z], axis=2))
+
+
+def gl_setup():
+    try:
+        import moderngl
+
+        ctx = moderngl.create_standalone_context(backend="egl")
+    except Exception as error:
+        print(f"  (Mesa unavailable: {error})")
+        return None, None
+    return ctx, ctx.info.get("GL_RENDERER", "?")
+
+
+def gl_draw(ctx, program, buffers, fmt, names):
+    import moderngl
+
+    vbo = ctx.buffer(buffers.astype("f4").tobytes())
+    vao = ctx.vertex_array(program, [(vbo, fmt, *names)])
+    fbo = ctx.framebuffer(color_attachments=[ctx.renderbuffer((W, H), 4)],
+                          depth_attachment=ctx.depth_renderbuffer((W, H)))
+
+    def run():
+        fbo.use()
+        fbo.clear(0.0, 0.0, 0.0, 1.0, depth=1.0)
+        ctx.enable(moderngl.DEPTH_TEST)
+        vao.render(moderngl.TRIANGLES)
+        return fbo.read(components=4)
+    return run
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--quick", action="store_true")
+    args = ap.parse_args()
+    report = Report("render", quick=args.quick)
+    rng = np.random.default_rng(1)
+    ctx, renderer = gl_setup()
+    scale = 10 if args.quick else 1
+    for n, size, name in ((1_000_000 // scale, 10, "small"), (100_000 // scale, 50, "medium")):
+        tris = random_triangles(rng, n, size)
+        colors = rng.uniform(0, 255, size=(n, 3, 3))
+        work = f"{n // 1000}k {name} gouraud"
+        fb = sl.FrameBuffer(W, H)
+        depth = sl.DepthBuffer.like(fb)
+
+        def ours():
+            fb.clear()
+            depth.clear()
+            sl.draw.triangles(fb, tris, colors=colors, depth=depth)
+        report.add(work, "scanline", "sl.draw.triangles(fb, tris, colors, depth=depth)", ours,
+                   n=n)
+        if ctx is not None:
+            prog = ctx.program(vertex_shader=GL_GOURAUD[0], fragment_shader=GL_GOURAUD[1])
+            prog["size"].value = (W, H)
+            run = gl_draw(ctx, prog, np.concatenate([tris, colors], axis=2), "3f 3f",
+                          ("position", "color"))
+            report.add(work, "mesa", f"moderngl GL_TRIANGLES on {renderer}, clear to read-back",
+                       run, n=n)
+            report.target(work, "mesa", 1.0, ">= 1.0: at least as fast as Mesa llvmpipe")
+
+    # -- the teapot, Phong-shaded ---------------------------------------------------------
+    teapot = sl.mesh.teapot(24 if not args.quick else 8).transformed(
+        sl.transform3d.rotation(-math.pi / 2, "x"))
+    cam = sl.Camera(eye=(0, 2.5, 6.5), target=(0, 0.7, 0),
+                    projection=sl.projection.perspective(fov=math.radians(32), near=1, far=30))
+    light = sl.lighting.DirectionalLight((0.45, -0.55, -1.0), 0.9)
+    lights = [sl.lighting.AmbientLight(0.2), light]
+    mat = sl.lighting.Material(ka=0.2, kd=0.7, ks=0.3, shininess=20)
+    fb = sl.FrameBuffer(W, H)
+    work = f"teapot phong {teapot.triangulated().face_count // 1000}k triangles"
+
+    def teapot_ours():
+        fb.clear()
+        sl.render(fb, teapot, cam, shading="phong", lights=lights, materials=mat)
+    report.add(work, "scanline", 'sl.render(fb, teapot, camera, shading="phong")', teapot_ours)
+    fb.save(os.path.join(os.path.dirname(os.path.abspath(__file__)), "results",
+                         "render-teapot.png"))
+    if ctx is not None:
+        tri = teapot.triangulated()
+        f = tri.face_indices.reshape(-1, 3)
+        from scanline.render.prepare import averaged_normals
+
+        normals = teapot.normals if teapot.normals is not None else averaged_normals(teapot)
+        data = np.concatenate([teapot.vertices[f], normals[f]], axis=2)
+        prog = ctx.program(vertex_shader=GL_PHONG[0], fragment_shader=GL_PHONG[1])
+        prog["clip"].write(cam.matrix(W, H).T.astype("f4").tobytes())
+        prog["size"].value = (W, H)
+        prog["eye"].value = cam.eye
+        prog["light"].value = tuple(light.direction)
+        run = gl_draw(ctx, prog, data, "3f 3f", ("position", "normal"))
+        report.add(work, "mesa", f"moderngl per-pixel Phong on {renderer}", run)
+        report.target(work, "mesa", 1.0, ">= 1.0: at least as fast as Mesa llvmpipe")
+
+    # -- every method on one scene --------------------------------------------------------
+    n = 100_000 // scale
+    sphere_count = 40
+    res = int(math.sqrt(n / sphere_count / 2))
+    meshes = [sl.mesh.sphere(0.4, center=tuple(rng.uniform(-3, 3, 3)), resolution=(2 * res, res))
+              for _ in range(sphere_count)]
+    cam = sl.Camera(eye=(0, 0, 10), target=(0, 0, 0))
+    for method in sorted(sl.render.METHODS):
+        fb = sl.FrameBuffer(W, H)
+        report.add(f"methods {n // 1000}k", f"scanline {method}",
+                   f'sl.render(fb, spheres, camera, method="{method}")',
+                   lambda: sl.render(fb, meshes, cam, method=method), repeats=2)
+    report.write()
+
+
+if __name__ == "__main__":
+    main()

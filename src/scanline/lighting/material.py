@@ -1,0 +1,78 @@
+"""Surface properties of the basic illumination model (Hearn & Baker, section 14-2
+and 14-6): reflection coefficients, the specular exponent, color, transparency."""
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .. import _validate as v
+from ..errors import ArgumentValueError
+
+
+def _coefficient(name, value):
+    x = v.number(name, value)
+    if not 0.0 <= x <= 1.0:
+        raise ArgumentValueError(f"{name} must be in 0..1, got {value!r}")
+    return x
+
+
+def linear_color(name, color):
+    """A color spec as linear RGB reals 0..1 (the sRGB-like stored values decoded with
+    the display gamma is the shading's job: here the stored values / 255)."""
+    if isinstance(color, np.ndarray) and color.dtype.kind == "f" and color.shape == (3,):
+        if not (np.isfinite(color).all() and (color >= 0).all() and (color <= 1).all()):
+            raise ArgumentValueError(f"{name} reals must be in 0..1, got {color.tolist()}")
+        return color.astype(np.float64)
+    from ..color import rgba
+
+    return np.array(rgba(color, name)[:3], np.float64) / 255.0
+
+
+@dataclass(frozen=True, init=False)
+class Material:
+    """How a surface reflects light.
+
+    Parameters
+    ----------
+    ka, kd, ks : float in 0..1
+        Ambient, diffuse and specular reflection coefficients.
+    shininess : float >= 0
+        The specular exponent n_s (large: a small, sharp highlight; Hearn & Baker
+        suggest 1 for dull surfaces up to 100 or more for shiny ones).
+    color : color
+        The surface color S_d: the diffuse and ambient reflection of each component
+        are ka * S_d and kd * S_d (Hearn & Baker, section 14-6).
+    specular_color : color
+        The color of the highlights, S_s (default white: a dielectric such as
+        plastic; a metal takes its own color).
+    transparency : float in 0..1
+        k_t: the fraction of the light behind the surface that passes through
+        (Hearn & Baker, section 14-5, I = (1 - k_t) I_refl + k_t I_trans).
+    """
+    ka: float
+    kd: float
+    ks: float
+    shininess: float
+    color: np.ndarray
+    specular_color: np.ndarray
+    transparency: float
+
+    def __init__(self, ka=0.2, kd=0.7, ks=0.3, shininess=20.0, color="white",
+                 specular_color="white", transparency=0.0):
+        for name, value in (("ka", ka), ("kd", kd), ("ks", ks), ("transparency", transparency)):
+            object.__setattr__(self, name, _coefficient(name, value))
+        n = v.number("shininess", shininess)
+        if n < 0:
+            raise ArgumentValueError(f"shininess must be >= 0 (the specular exponent n_s), got "
+                                     f"{shininess!r}")
+        object.__setattr__(self, "shininess", n)
+        object.__setattr__(self, "color", linear_color("color", color))
+        object.__setattr__(self, "specular_color", linear_color("specular_color",
+                                                                specular_color))
+
+    def with_color(self, color):
+        """The same material in another color."""
+        new = object.__new__(Material)
+        new.__dict__.update(self.__dict__)
+        object.__setattr__(new, "color", linear_color("color", color))
+        return new

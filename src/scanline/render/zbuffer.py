@@ -1,0 +1,77 @@
+"""The depth-buffer (z-buffer) method (Hearn & Baker, section 13-3; Catmull 1974):
+an image-space method ("image precision": visibility is decided at each pixel).
+
+Two buffers: the depth buffer, cleared to infinity, and the refresh buffer, cleared
+to the background.  Each surface is scan-converted; at each pixel (x, y) it covers,
+its depth z is computed (incrementally along the scan line, z' = z - A/C) and, if z
+< depth(x, y), depth(x, y) = z and the pixel takes the surface's intensity.  Here the
+"intensity" written is the face index and the barycentric coordinates of the point
+(a visibility buffer), shaded once per pixel afterwards, so a covered-over fragment
+costs no lighting.
+
+Simple transparency (Hearn & Baker, section 14-5): opaque faces first; then the
+nearest transparent face in front of them at each pixel, blended I = (1 - k_t)
+I_refl + k_t I_behind (one transparent layer; method="a-buffer" composites any
+number).
+"""
+
+import numpy as np
+
+from ..depthbuffer import DepthBuffer
+from ..draw.triangles import rasterize
+from .output import Rendering, background_linear, cue, point_colors, store, write_visible
+
+
+def visibility(scene, select=None, zbuf=None):
+    """The z-buffer pass over the scene's triangles (those where ``select``, a
+    boolean mask over them, holds): ``(faces, bary, depth)`` arrays (H, W)."""
+    h, w = scene.height, scene.width
+    faces = np.full((h, w), -1, np.int64)
+    bary = np.zeros((h, w, 2))
+    depth = np.full((h, w), np.inf) if zbuf is None else zbuf
+    tri, q, att, ids = scene.triangles, scene.inv_w, scene.bary, scene.face
+    if select is not None:
+        tri, q, att, ids = tri[select], q[select], att[select], ids[select]
+    if len(tri):
+        rasterize(w, h, np.ascontiguousarray(tri), np.ascontiguousarray(q),
+                  np.ascontiguousarray(att), np.ascontiguousarray(ids), zbuf=depth,
+                  abuf=bary, idbuf=faces)
+    return faces, bary, depth
+
+
+def transparent_triangles(scene):
+    """Per triangle: True when its material lets light through."""
+    kt = np.array([m.transparency for m in scene.materials])
+    return kt[scene.face_mesh[scene.face]] > 0 if len(scene.face) else np.zeros(0, bool)
+
+
+def render(scene, fb, options):
+    """Draw ``scene`` into ``fb`` by the depth-buffer method."""
+    clear = transparent_triangles(scene)
+    if not clear.any():
+        faces, bary, depth = visibility(scene)
+        write_visible(scene, fb, faces, bary, depth, options)
+    else:
+        faces, bary, depth = visibility(scene, ~clear)
+        write_visible(scene, fb, faces, bary, depth, options)
+        front = depth.copy()
+        tf, tb, td = visibility(scene, clear, front)
+        ys, xs = np.nonzero(tf >= 0)
+        f = tf[ys, xs]
+        gamma = options["gamma"]
+        background = background_linear(fb, gamma)
+        from ..shading import decode
+
+        stored = fb._raster()[0][ys, xs].astype(np.float64) / 255.0
+        if stored.shape[1] == 1:
+            stored = np.repeat(stored, 3, axis=1)
+        behind = decode(stored[:, :3], gamma)
+        refl = cue(scene, point_colors(scene, f, tb[ys, xs], options), td[ys, xs], options,
+                   background)
+        kt = np.array([m.transparency for m in scene.materials])[scene.face_mesh[f]]
+        store(fb, ys, xs, (1 - kt)[:, None] * refl + kt[:, None] * behind, gamma)
+        faces = np.where(tf >= 0, tf, faces)
+        depth = np.minimum(depth, td)
+    out = DepthBuffer(scene.width, scene.height)
+    out.array[...] = depth
+    return Rendering("z-buffer", out, faces, scene)

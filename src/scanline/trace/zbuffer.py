@@ -1,0 +1,79 @@
+"""The depth-buffer method's step table (Hearn & Baker, section 13-3): along one scan
+line of a small scene, each triangle's depth at each pixel it covers, the depth
+stored there before, and whether the triangle wins."""
+
+import numpy as np
+
+from .. import _validate as v
+from ..errors import ArgumentValueError
+from .table import Table
+
+#: The built-in scene: three overlapping triangles (device x, y, depth) on 16 x 10,
+#: the third passing through the others (depth varying across it).
+SCENE = np.array([
+    [(1.0, 1.0, 0.6), (13.0, 2.0, 0.6), (5.0, 9.0, 0.6)],
+    [(4.0, 0.5, 0.3), (15.0, 5.0, 0.3), (8.0, 9.5, 0.3)],
+    [(0.5, 3.0, 0.1), (14.0, 4.0, 0.9), (2.0, 8.0, 0.1)],
+])
+WIDTH, HEIGHT = 16, 10
+
+
+def z_buffer(row=4, triangles=None, width=WIDTH, height=HEIGHT):
+    """The z-buffer steps on scan line ``row``: per triangle in drawing order, per
+    pixel it covers on that row, ``z`` (from the drawing kernel, incrementally z' = z
+    - A/C), the stored ``depth`` before, and ``result`` ("write": z < depth, the
+    pixel and depth take the triangle's; "keep": hidden).
+
+    >>> t = z_buffer(4)
+    >>> [r["result"] for r in t.rows][:3]
+    ['write', 'write', 'write']
+    """
+    from .._kernels import raster3d as k
+    from .._kernels._jit import python
+    from .._kernels.variants import token
+
+    tris = SCENE if triangles is None else v.real_array("triangles", triangles, "(N, 3, 3)")
+    if tris.ndim != 3 or tris.shape[1:] != (3, 3) or not np.isfinite(tris).all():
+        raise ArgumentValueError("triangles must be finite, of shape (N, 3, 3)")
+    row = v.positive_int("row", row + 1) - 1 if isinstance(row, int) else row
+    if not isinstance(row, int) or not 0 <= row < height:
+        raise ArgumentValueError(f"row must be a scan line 0..{height - 1}, got {row!r}")
+    tri = v.kernel_array(tris)
+    n = len(tri)
+    q = np.ones((n, 3))
+    att = np.zeros((n, 3, 0))
+    ids = np.arange(n, dtype=np.int64)
+    zbuf = np.full((height, width), np.inf)
+    idbuf = np.full((height, width), -1, np.int64)
+    g = np.empty((2, 3))
+    draw = python(k.raster_triangle)
+    spans = np.empty((n, 2), np.int64)
+    bands = ((height - 1) >> k.BAND_SHIFT) + 1
+    python(k.bin_triangles)(tri, height, spans, np.empty(bands + 1, np.int64),
+                            np.empty(python(k.band_entries)(tri, height), np.int64))
+    out, test = token(k.ATTRIBUTES), token(k.TEST)
+    dummy_b, dummy_a, dummy_f = np.empty((1, 1, 1), np.uint8), np.empty((height, width, 0)), \
+        np.empty((1, 1))
+    rows = []
+    for t in range(n):
+        if not spans[t, 0] <= row <= spans[t, 1]:
+            continue                              # the triangle's rows miss this one
+        # the triangle's own depths on the row: the same kernel, on a fresh (inf) buffer
+        own = np.full((height, width), np.inf)
+        mine = np.full((height, width), -1, np.int64)
+        draw(out, test, tri, q, att, ids, t, row, row, g, own, dummy_f, dummy_b, dummy_a, mine)
+        before = zbuf[row].copy()
+        draw(out, test, tri, q, att, ids, t, row, row, g, zbuf, dummy_f, dummy_b, dummy_a,
+             idbuf)
+        for x in np.flatnonzero(mine[row] >= 0):
+            z = own[row, x]
+            zf = float(z)
+            rows.append({"triangle": t, "x": int(x), "z": round(zf, 6),
+                         "depth": round(float(before[x]), 6) if np.isfinite(before[x]) else "inf",
+                         "result": "write" if idbuf[row, x] == t and zbuf[row, x] == z else "keep"})
+    # the buffer after the row: which triangle each pixel shows
+    final = " ".join("." if f < 0 else str(f) for f in idbuf[row])
+    return Table(f"z-buffer, scan line y = {row}", ["triangle", "x", "z", "depth", "result"],
+                 rows, notes=[f"{n} triangles on {width} x {height}, depth buffer cleared to inf",
+                              "write when z < depth(x, y) (the nearer point has the smaller z)",
+                              f"visible triangle per pixel after the row: {final}"])

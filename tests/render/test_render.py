@@ -1,0 +1,268 @@
+"""sl.render: every image-space method against a plain-Python per-pixel ray-casting
+reference, Gouraud and Phong against their formulas on one triangle, back faces,
+the eye plane, ordered pieces, bad input."""
+
+import math
+
+import numpy as np
+import pytest
+
+import scanline as sl
+from scanline.render.prepare import prepare
+
+W, H = 48, 36
+
+
+def camera(eye=(0.5, 1.0, 6.0)):
+    return sl.Camera(eye=eye, target=(0, 0, 0),
+                     projection=sl.projection.perspective(fov=math.radians(50), near=0.5, far=20))
+
+
+def random_scene(rng, n=14):
+    verts = rng.uniform(-2, 2, size=(3 * n, 3))
+    return sl.mesh.Mesh(verts, np.arange(3 * n).reshape(n, 3))
+
+
+def reference_faces(scene):
+    """Per pixel center, the face of the nearest device triangle whose crossings
+    (edges active for ylo < Y <= yhi) enclose it; depth from its plane; -1 none."""
+    out = np.full((scene.height, scene.width), -1)
+    best = np.full((scene.height, scene.width), np.inf)
+    second = np.full((scene.height, scene.width), np.inf)
+    for tri, face in zip(scene.triangles, scene.face):
+        (x0, y0, z0), (x1, y1, z1), (x2, y2, z2) = tri
+        area = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0)
+        if area == 0:
+            continue
+        for y in range(scene.height):
+            xs = []
+            for a, b in ((0, 1), (1, 2), (2, 0)):
+                lo, hi = (a, b) if tri[a][1] < tri[b][1] else (b, a)
+                if tri[lo][1] < y <= tri[hi][1]:
+                    xl, yl = tri[lo][0], tri[lo][1]
+                    xs.append(xl + ((y - yl) * (tri[hi][0] - xl)) / (tri[hi][1] - yl))
+            if len(xs) != 2:
+                continue
+            for x in range(max(math.ceil(min(xs)), 0), min(math.ceil(max(xs)), scene.width)):
+                l1 = ((x - x0) * (y2 - y0) - (x2 - x0) * (y - y0)) / area
+                l2 = ((x1 - x0) * (y - y0) - (x - x0) * (y1 - y0)) / area
+                z = (1 - l1 - l2) * z0 + l1 * z1 + l2 * z2
+                if z < best[y, x]:
+                    second[y, x] = best[y, x]
+                    best[y, x], out[y, x] = z, face
+                elif z < second[y, x]:
+                    second[y, x] = z
+    with np.errstate(invalid="ignore"):
+        return out, second - best
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3])
+def test_image_space_methods_agree_with_the_reference(seed):
+    rng = np.random.default_rng(seed)
+    mesh = random_scene(rng)                      # random triangles: they intersect
+    cam = camera()
+    scene = prepare(mesh, cam, W, H)
+    ref, gap = reference_faces(scene)
+    clear = gap > 1e-9                            # ties (shared points) excluded
+    for method in ("z-buffer", "ray-casting", "a-buffer"):
+        fb = sl.FrameBuffer(W, H)
+        r = sl.render(fb, mesh, cam, method=method, samples=1) if method == "a-buffer" \
+            else sl.render(fb, mesh, cam, method=method)
+        assert np.array_equal(r.faces[clear], ref[clear]), method
+    assert (ref >= 0).sum() > 200
+
+
+def test_gouraud_and_phong_follow_their_formulas_on_one_triangle():
+    # one triangle in the plane z = 0 with tilted vertex normals, orthographic view
+    verts = np.array([(-1.0, -1.0, 0.0), (1.2, -0.8, 0.0), (-0.6, 1.1, 0.0)])
+    normals = np.array([(0.5, 0.0, 1.0), (0.0, 0.6, 1.0), (-0.4, -0.4, 1.0)])
+    mesh = sl.mesh.Mesh(verts, [[0, 1, 2]], normals=normals)
+    cam = sl.Camera(eye=(0, 0, 5), target=(0, 0, 0),
+                    projection=sl.projection.orthographic(window=(-1.5, -1.5, 1.5, 1.5)))
+    light = sl.lighting.PointLight((1.0, 2.0, 3.0))
+    m = sl.lighting.Material(ka=0.1, kd=0.6, ks=0.3, shininess=5)
+    lights = [sl.lighting.AmbientLight(0.3), light]
+
+    def model(p, n):                      # Hearn & Baker 14-2 written out, eye at infinity +z
+        n = n / np.linalg.norm(n)
+        big_l = (light.position - p) / np.linalg.norm(light.position - p)
+        nl = n @ big_l
+        r = 2 * nl * n - big_l
+        vr = max(r[2], 0.0)
+        return 0.1 * 0.3 + (0.6 * nl + 0.3 * vr ** 5 if nl > 0 else 0.0)
+
+    scale, offset = cam.device(W, H)
+    dev = verts[:, :2] * 1.0                                 # device of world x, y
+    clip, sc, of = cam.mapping((0, 0, W - 1, H - 1))
+    h = verts @ clip[:3, :3].T + clip[:3, 3]
+    dev = h[:, :2] / (verts @ clip[3, :3] + clip[3, 3])[:, None] * sc[:2] + of[:2]
+    for shading in ("gouraud", "phong"):
+        fb = sl.FrameBuffer(W, H, mode="L")
+        r = sl.render(fb, mesh, cam, shading=shading, lights=lights, materials=m, gamma=1)
+        ys, xs = np.nonzero(r.faces >= 0)
+        assert len(xs) > 300
+        buf = fb._raster()[0][..., 0]
+        def cross(a, b):
+            return a[0] * b[1] - a[1] * b[0]
+        area = cross(dev[1] - dev[0], dev[2] - dev[0])
+        for x, y in zip(xs, ys):
+            l1 = cross(np.array([x, y]) - dev[0], dev[2] - dev[0]) / area
+            l2 = cross(dev[1] - dev[0], np.array([x, y]) - dev[0]) / area
+            lam = np.array([1 - l1 - l2, l1, l2])
+            if shading == "gouraud":
+                i = sum(lam[k] * model(verts[k], normals[k]) for k in range(3))
+            else:
+                i = model(lam @ verts, lam @ (normals / np.linalg.norm(normals, axis=1)[:, None]))
+            # luminance of a gray: the same value
+            assert abs(int(buf[y, x]) - round(255 * min(i, 1.0))) <= 1, (shading, x, y)
+
+
+def test_back_face_test_and_culling():
+    cube = sl.mesh.cube(2)
+    cam = camera((3, 2, 4))
+    scene = prepare(cube, cam, W, H)
+    # a convex solid seen from outside: half of its faces are back faces, and the
+    # front faces alone cover what the whole cube covers
+    assert scene.front.sum() == 6                # 3 faces x 2 triangles
+    fb1, fb2 = sl.FrameBuffer(W, H), sl.FrameBuffer(W, H)
+    r1 = sl.render(fb1, cube, cam)
+    r2 = sl.render(fb2, cube, cam, cull_back_faces=True)
+    assert r2.scene.culled.sum() == 6
+    assert np.array_equal(fb1.to_array(), fb2.to_array())
+    assert np.array_equal(r1.faces, r2.faces)
+
+
+def test_triangles_crossing_the_eye_plane_are_clipped_before_the_divide():
+    # a floor passing under and behind the eye: nothing mirrored, no giant triangle
+    floor = sl.mesh.Mesh([(-50, -1, -50), (50, -1, -50), (50, -1, 50), (-50, -1, 50)],
+                         [[0, 3, 2, 1]])
+    cam = sl.Camera(eye=(0, 0, 0), target=(0, 0, -1),
+                    projection=sl.projection.perspective(fov=math.radians(60), near=0.1, far=100))
+    fb = sl.FrameBuffer(W, H)
+    r = sl.render(fb, floor, cam)
+    seen = r.faces >= 0
+    assert seen[: H // 2 - 1].all() and not seen[H // 2:].any()     # floor below the horizon
+    assert np.isfinite(r.scene.triangles).all()
+    assert (np.abs(r.scene.triangles[..., :2]) < 1e5).all()
+    d = r.depth.array[seen]
+    assert (d >= 0).all() and (d <= 1).all()
+
+
+def test_ordered_pieces_draw_in_order_with_the_faces_shading():
+    rng = np.random.default_rng(4)
+    mesh = random_scene(rng, 8)
+    cam = camera()
+    fb = sl.FrameBuffer(W, H)
+    r = sl.render(fb, mesh, cam, shading="phong")
+    scene = r.scene
+    # painter's order by the nearest-first z-buffer answer: draw every face's polygon
+    # farthest first; where the z-buffer saw face f the last-drawn covering piece is f
+    far = [np.nanmax(p[:, 2]) for p in scene.polygons]
+    order = np.argsort(far)[::-1]
+    from scanline.render.api import default_lights
+    from scanline.render import draw_pieces
+
+    options = dict(lights=default_lights(cam), shading="phong", specular="phong", gamma=2.2,
+                   depth_cue=None)
+    fb2 = sl.FrameBuffer(W, H)
+    vis = draw_pieces(scene, fb2, [scene.polygons[i] for i in order],
+                      scene.polygon_face[order], options)
+    same = vis == r.faces
+    assert same.mean() > 0.6                      # the painter's order is often right ...
+    # ... and wherever it picked the same face, the pixel is the same
+    a, b = fb.to_array()[::-1], fb2.to_array()[::-1]
+    assert (np.abs(a[same].astype(int) - b[same].astype(int)) <= 1).all()
+
+
+def test_shading_models_differ_as_expected():
+    sphere = sl.mesh.sphere(1.0, resolution=(10, 6))
+    cam = camera((0, 0, 4))
+    images = {}
+    for s in ("flat", "gouraud", "phong", "fast-phong"):
+        fb = sl.FrameBuffer(W, H, mode="L")
+        sl.render(fb, sphere, cam, shading=s)
+        images[s] = fb.to_array().astype(int)
+    # flat: few distinct levels (one per face); the others smooth
+    assert len(np.unique(images["flat"])) < len(np.unique(images["gouraud"]))
+    # fast Phong approximates Phong more closely than Gouraud does
+    assert (np.abs(images["fast-phong"] - images["phong"]).mean()
+            < np.abs(images["gouraud"] - images["phong"]).mean())
+
+
+def test_transparency_and_depth_cue():
+    near = sl.mesh.cube(1, center=(0, 0, 1))
+    far = sl.mesh.cube(3, center=(0, 0, -2))
+    cam = camera((0, 0, 6))
+    glass = sl.lighting.Material(color="white", transparency=0.5)
+    solid = sl.lighting.Material(color="red")
+    for method in ("z-buffer", "a-buffer"):
+        fb = sl.FrameBuffer(W, H, background="black")
+        sl.render(fb, [near, far], cam, method=method, materials=[glass, solid])
+        r, g, b = fb.get_pixel(W // 2, H // 2)[:3]
+        assert r > g > 0                           # red seen through the white glass
+    fb1, fb2 = sl.FrameBuffer(W, H), sl.FrameBuffer(W, H)
+    cam = camera((4, 3, 6))
+    sl.render(fb1, far, cam, depth_cue=(1.0, 0.2))
+    sl.render(fb2, far, cam)
+    assert fb1.to_array().sum() < fb2.to_array().sum()
+
+
+def test_shadow_map_darkens_the_floor_under_a_cube():
+    floor = sl.mesh.Mesh([(-3, 0, -3), (3, 0, -3), (3, 0, 3), (-3, 0, 3)], [[0, 3, 2, 1]])
+    cube = sl.mesh.cube(1, center=(0, 1, 0))
+    sun = sl.lighting.DirectionalLight((0, -1, 0), shadows=True)
+    cam = sl.Camera(eye=(0, 6, 6), target=(0, 0, 0))
+    out = []
+    for shadows in (False, True):
+        fb = sl.FrameBuffer(64, 64)
+        r = sl.render(fb, [floor, cube], cam, lights=[sun], shadows=shadows, shading="phong")
+        out.append((fb.to_array()[::-1].astype(int).sum(axis=2), r.faces))
+    on_floor = (out[1][1] >= 0) & (out[1][1] < 2)           # the floor's two triangles
+    dark = (out[1][0] < out[0][0]) & on_floor
+    assert dark.sum() > 20                                   # the cube's shadow
+    assert (out[1][0] <= out[0][0]).all()                    # shadows only darken
+    assert not ((out[1][0] < out[0][0]) & ~on_floor).any()   # the sunlit cube top stays
+
+
+@pytest.mark.parametrize("kw, match", [
+    (dict(method="painters"), "method"),
+    (dict(shading="smooth"), "shading"),
+    (dict(cull_back_faces=1), "cull_back_faces"),
+    (dict(depth_cue=(2, 0)), "depth_cue"),
+    (dict(gamma=0), "gamma"),
+    (dict(lights=["sun"]), "lights"),
+    (dict(materials=[1, 2]), "materials"),
+    (dict(method="a-buffer", samples=0), "samples"),
+])
+def test_bad_render_arguments(kw, match):
+    with pytest.raises(sl.ScanlineError, match=match):
+        sl.render(sl.FrameBuffer(8, 8), sl.mesh.cube(), camera(), **kw)
+
+
+def test_bad_targets():
+    with pytest.raises(sl.ScanlineError, match="mode"):
+        sl.render(sl.FrameBuffer(8, 8, mode="1"), sl.mesh.cube(), camera())
+    with pytest.raises(sl.ScanlineError, match="Camera"):
+        sl.render(sl.FrameBuffer(8, 8), sl.mesh.cube(), "camera")
+    with pytest.raises(sl.ScanlineError, match="Mesh"):
+        sl.render(sl.FrameBuffer(8, 8), ["cube"], camera())
+
+
+def test_z_buffer_trace_agrees_with_the_drawing():
+    from scanline.trace import z_buffer
+    from scanline.trace.zbuffer import HEIGHT, SCENE, WIDTH
+
+    for row in range(HEIGHT):
+        table = z_buffer(row)
+        fb = sl.FrameBuffer(WIDTH, HEIGHT, mode="L")
+        depth = sl.DepthBuffer.like(fb)
+        sl.draw.triangles(fb, SCENE, colors=[50, 100, 150], depth=depth)
+        written = {}
+        for r in table.rows:
+            if r["result"] == "write":
+                written[r["x"]] = r["z"]
+                assert r["depth"] == "inf" or r["z"] < r["depth"]
+            else:
+                assert r["depth"] != "inf" and r["z"] >= r["depth"]
+        expect = {x: round(float(z), 6) for x, z in enumerate(depth.array[row]) if np.isfinite(z)}
+        assert written == expect

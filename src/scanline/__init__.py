@@ -47,6 +47,7 @@ _LAZY = {
     "Camera": ("scanline.projection", "Camera"),
     "mesh": ("scanline.mesh", None),
     "draw3d": ("scanline.draw3d", None),
+    "visible": ("scanline.visible", None),
 }
 
 __all__ = sorted(_LAZY) + ["__version__"]

@@ -17,3 +17,13 @@ class ArgumentValueError(ScanlineError, ValueError):
 
 class ArgumentTypeError(ScanlineError, TypeError):
     """An argument has a type scanline cannot use."""
+
+
+class DepthSortLoopError(ArgumentValueError):
+    """Depth sorting cannot order the polygons: a cyclic overlap or an intersection
+    with splitting turned off, or one that splitting cannot resolve (the loop flag
+    of the Newell-Newell-Sancha method)."""
+
+
+class BSPTooLargeError(ArgumentValueError):
+    """A BSP tree would need more polygon pieces than its limit allows."""

@@ -382,3 +382,83 @@ def area_subdivision(verts, offsets, planes, ext, width, height, face, depth, ca
             stack[top, 4] = lv + 1
             top += 1
     return decided
+
+
+# -- visible-line detection ---------------------------------------------------------------
+
+@helper
+def hidden_part(segs, sdepth, e, verts, start, end, planes, p, eps, t):
+    """The parameter interval of segment ``e`` hidden by polygon ``p``: the part
+    whose projection is inside the polygon (Cyrus-Beck against its edges) and that
+    lies behind its plane by more than ``eps``.  Writes ``t[0], t[1]``; returns
+    whether it is not empty."""
+    x0 = segs[e, 0]
+    y0 = segs[e, 1]
+    dx = segs[e, 2] - x0
+    dy = segs[e, 3] - y0
+    area = 0.0
+    for i in range(start, end):
+        j = i + 1 if i + 1 < end else start
+        area += verts[i, 0] * verts[j, 1] - verts[j, 0] * verts[i, 1]
+    lo = 0.0
+    hi = 1.0
+    for i in range(start, end):
+        j = i + 1 if i + 1 < end else start
+        ex = verts[j, 0] - verts[i, 0]
+        ey = verts[j, 1] - verts[i, 1]
+        # inside: (ex * (y - yi) - ey * (x - xi)) * area > 0
+        f0 = (ex * (y0 - verts[i, 1]) - ey * (x0 - verts[i, 0])) * area
+        df = (ex * dy - ey * dx) * area
+        if df == 0.0:
+            if f0 <= 0.0:
+                return False
+        elif df > 0.0:
+            lo = max(lo, -f0 / df)
+        else:
+            hi = min(hi, -f0 / df)
+        if lo >= hi:
+            return False
+    # behind: z(t) - plane depth(t) > eps, linear in t
+    g0 = sdepth[e, 0] - plane_depth(planes, p, x0, y0)
+    g1 = sdepth[e, 1] - plane_depth(planes, p, x0 + dx, y0 + dy)
+    dg = g1 - g0
+    if dg == 0.0:
+        if g0 <= eps:
+            return False
+    elif dg > 0.0:
+        lo = max(lo, (eps - g0) / dg)
+    else:
+        hi = min(hi, (eps - g0) / dg)
+    if lo >= hi:
+        return False
+    t[0] = lo
+    t[1] = hi
+    return True
+
+
+@kernel
+def hidden_intervals(segs, sdepth, verts, offsets, planes, ext, eps, out):
+    """Every (segment, polygon) pair where the polygon hides part of the segment:
+    rows (segment, t0, t1) of ``out`` while there is room.  Returns the number of
+    rows there are (more than ``len(out)``: call again with a larger ``out``)."""
+    n = 0
+    t = np.empty(2)
+    for e in range(len(segs)):
+        sx0 = min(segs[e, 0], segs[e, 2])
+        sx1 = max(segs[e, 0], segs[e, 2])
+        sy0 = min(segs[e, 1], segs[e, 3])
+        sy1 = max(segs[e, 1], segs[e, 3])
+        sz = max(sdepth[e, 0], sdepth[e, 1])
+        for p in range(len(offsets) - 1):
+            if ext[p, 0] > sx1 or ext[p, 1] < sx0 or ext[p, 2] > sy1 or ext[p, 3] < sy0:
+                continue
+            if ext[p, 4] >= sz - eps:        # the polygon lies wholly behind the segment
+                continue
+            if hidden_part(segs, sdepth, e, verts, offsets[p], offsets[p + 1], planes, p,
+                           eps, t):
+                if n < len(out):
+                    out[n, 0] = e
+                    out[n, 1] = t[0]
+                    out[n, 2] = t[1]
+                n += 1
+    return n

@@ -250,7 +250,7 @@ def project(vertices, counts, faces, camera, width, height, cull_back_faces=Fals
     depth.  ``cull_back_faces``: drop the polygons that face away from the viewer
     (Hearn & Baker, section 13-2: clockwise as projected, the faces being
     counterclockwise seen from outside)."""
-    from ..clip import polygons3d
+    from ..clip import UNIT_CUBE, polygons3d
     from ..projection import Camera
 
     if not isinstance(camera, Camera):
@@ -259,7 +259,7 @@ def project(vertices, counts, faces, camera, width, height, cull_back_faces=Fals
     h = v.positive_int("height", height, 2)
     clip, scale, offset = camera.mapping(camera._device_box(w, h))
     hom = np.hstack([vertices, np.ones((len(vertices), 1))]) @ clip.T
-    out, out_counts = polygons3d(np.ascontiguousarray(hom), None, counts=counts,
+    out, out_counts = polygons3d(np.ascontiguousarray(hom), UNIT_CUBE, counts=counts,
                                  homogeneous=True)
     dev = out[:, :3] / out[:, 3:4] * scale + offset
     parts, kept = [], []

@@ -158,7 +158,8 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None):
     -----
     Hearn & Baker, section 13-6 (Newell, Newell and Sancha 1972).  The polygons are
     sorted by decreasing greatest depth.  The first surface S of the list is
-    compared with every other surface S' whose depth extent overlaps its own; for
+    compared with every other surface S' whose depth extent overlaps its own (or,
+    once reordering has moved S forward, lies wholly behind it); for
     each, the tests below are tried in order of increasing cost, and one "yes" is
     enough (S cannot hide S'):
 
@@ -207,7 +208,9 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None):
         if len(rest):
             e = pieces.ext[rest]
             eps = pieces.eps
-            depth = (e[:, 4] < es[5] - eps) & (e[:, 5] > es[4] + eps)
+            # not wholly in front of S: a depth overlap, or (after reordering moved
+            # S ahead) wholly behind it
+            depth = e[:, 5] > es[4] + eps
             xa = (e[:, 1] <= es[0] + eps) | (e[:, 0] >= es[1] - eps)
             ya = (e[:, 3] <= es[2] + eps) | (e[:, 2] >= es[3] - eps)
             if log is not None:

@@ -121,6 +121,13 @@ class ScreenPolygons:
                 raise ArgumentValueError(
                     f"polygons[{i}] has a non-finite coordinate (NaN or inf): "
                     f"{v._show(a.tolist())}; every vertex must be finite")
+            plane = newell_plane(a)
+            norm = float(np.linalg.norm(plane[:3]))
+            if norm > 0 and np.abs(a @ plane[:3] + plane[3]).max() > 1e-9 * norm * (
+                    float(np.ptp(a, axis=0).max()) + 1.0):
+                raise ArgumentValueError(
+                    f"polygons[{i}] is not planar: {v._show(a.tolist())}; give planar "
+                    "polygons (split a bent one into triangles)")
             parts.append(a)
         if faces is None:
             faces = np.arange(len(parts), dtype=np.int64)

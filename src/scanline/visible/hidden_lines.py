@@ -14,6 +14,9 @@ from .polygons import as_screen, meshes_list, screen_polygons
 #: Depth tolerance: an edge lying in a face's plane (its own faces) is not hidden
 #: by it.
 DEPTH_TOLERANCE = 1e-7
+#: Parts shorter than this (pixels) are dropped: the slivers rounding leaves where a
+#: hidden edge meets a visible one.
+MIN_PIECE = 1e-3
 
 
 def hidden_lines(segments, depth, polygons):
@@ -78,17 +81,23 @@ def hidden_lines(segments, depth, polygons):
     for e in range(len(segs)):
         t = 0.0
         pieces = []
-        for a, b in rows[bounds[e]:bounds[e + 1], 1:]:
-            if a > t:
+        for a, b in rows[bounds[e]:bounds[e + 1], 1:]:      # sorted by start
+            if b <= t:
+                continue
+            if a > t + 1e-12:
                 pieces.append((t, a, True))
-            if b > t:
-                pieces.append((max(a, t), b, False))
-                t = b
+                pieces.append((a, b, False))
+            elif pieces and not pieces[-1][2]:
+                pieces[-1] = (pieces[-1][0], b, False)   # runs on: one hidden part
+            else:
+                pieces.append((t, b, False))
+            t = b
         if t < 1.0:
             pieces.append((t, 1.0, True))
         p0, d = segs[e, :2], segs[e, 2:] - segs[e, :2]
+        length = float(np.hypot(*d))
         for a, b, seen in pieces:
-            if b - a <= 1e-12:
+            if (b - a) * length < MIN_PIECE:
                 continue
             row = np.concatenate([p0 + a * d, p0 + b * d])
             (vis if seen else hid).append(row)

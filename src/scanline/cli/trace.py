@@ -77,6 +77,13 @@ ALGORITHMS = {
         "3-D Liang-Barsky clipping: p_k, q_k, u1, u2 for six planes (Hearn & Baker 12-5)",
         {}, False,
     ),
+    "depth-sort": (
+        "depth sorting: the five overlap tests, reordering and splitting (Hearn & Baker 13-6)",
+        {}, False,
+    ),
+    "floating-horizon": (
+        "the floating horizon: upper and lower horizons per curve (Rogers 4-2)", {}, False,
+    ),
 }
 
 
@@ -206,6 +213,27 @@ def _clip3d_arguments(values, options):
 
 OPTIONS.update({"cohen-sutherland-3d": clip3d_options, "liang-barsky-3d": clip3d_options})
 
+
+
+def depth_sort_options(sub):
+    """``--scene`` and ``--no-split`` of ``depth-sort``."""
+    sub.add_argument("--scene", choices=("painter", "cyclic", "intersecting"),
+                     default="cyclic", help="the built-in scene (default cyclic)")
+    sub.add_argument("--no-split", dest="split_cycles", action="store_false",
+                     help="stop with an error on a cycle instead of splitting")
+    return ["scene", "split_cycles"]
+
+
+def horizon_options(sub):
+    """``--nx``, ``--ny``, ``--width`` and ``--height`` of ``floating-horizon``."""
+    for name, default in (("nx", 6), ("ny", 4), ("width", 24), ("height", 16)):
+        sub.add_argument(f"--{name}", type=integer, default=default,
+                         help=f"(default {default})")
+    return ["nx", "ny", "width", "height"]
+
+
+OPTIONS.update({"depth-sort": depth_sort_options, "floating-horizon": horizon_options})
+
 FORMATS = ("table", "csv", "json")
 
 
@@ -264,15 +292,14 @@ def table_of(args):
     values = [getattr(args, p) for p in args.params]
     options = {"center": args.center} if "center" in vars(args) else {}
     options.update({o: getattr(args, o) for o in args.options if getattr(args, o) is not None})
+    if getattr(args, "adapt", None) is not None:
+        values, options = args.adapt(values, options)
     return functions[args.algorithm](*values, **options)
 
 
 def run(args):
     """Print the table of ``args.algorithm`` in ``args.format``."""
     table = table_of(args)
-    if getattr(args, "adapt", None) is not None:
-        values, options = args.adapt(values, options)
-    table = functions[args.algorithm](*values, **options)
     if args.format == "json":
         print(table.to_json(indent=2))
     elif args.format == "csv":

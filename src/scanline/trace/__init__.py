@@ -16,6 +16,7 @@ from .polygon import scan_line_fill
 from .curves import de_casteljau, cox_de_boor
 from .clip import cohen_sutherland, cyrus_beck, liang_barsky, sutherland_hodgman
 from .clip3d import cohen_sutherland_3d, liang_barsky_3d
+from .visible import depth_sort, floating_horizon
 
 #: CLI name -> function
 ALGORITHMS = {
@@ -34,10 +35,12 @@ ALGORITHMS = {
     "sutherland-hodgman": sutherland_hodgman,
     "cohen-sutherland-3d": cohen_sutherland_3d,
     "liang-barsky-3d": liang_barsky_3d,
+    "depth-sort": depth_sort,
+    "floating-horizon": floating_horizon,
 }
 
 __all__ = ["Table", "bresenham", "dda", "midpoint_circle", "midpoint_ellipse", "flood_fill",
            "boundary_fill", "scan_line_fill", "sutherland_hodgman", "de_casteljau", "cox_de_boor",
            "cohen_sutherland", "liang_barsky", "cyrus_beck",
-           "cohen_sutherland_3d", "liang_barsky_3d",
+           "cohen_sutherland_3d", "liang_barsky_3d", "depth_sort", "floating_horizon",
            "ALGORITHMS"]

@@ -62,7 +62,7 @@ def figure_methods():
     meshes = [sl.mesh.cube(1.4), sl.mesh.sphere(0.75, (0.7, 0.55, 0.6), resolution=12),
               sl.mesh.torus(0.9, 0.2, (-0.2, -0.1, 0.2), resolution=(18, 8))]
     cam = sl.Camera(eye=(3.5, 2.5, 4.5), target=(0, 0, 0),
-                    projection=sl.projection.perspective(fov=0.75, near=1))
+                    projection=sl.projection.perspective(fov=0.42, near=1))
     panels, titles, rows = [], [], []
     for method in sl.visible.METHODS:
         fb = sl.FrameBuffer(170, 140, background=PAPER)

@@ -87,12 +87,12 @@ def draw_run(c0, count, ylo, yhi, upper, lower, segs, n, t):
     one-column run is a vertical stroke.  Returns the new segment count."""
     width = len(upper)
     if count == 1:
-        c = c0
-        if 0 <= c < width:
+        c = np.float64(c0)
+        if 0 <= c0 < width:
             top = yhi[0]
             bot = ylo[0]
-            u = upper[c]
-            lo = lower[c]
+            u = upper[c0]
+            lo = lower[c0]
             if top > u:
                 n = emit(segs, n, c, max(bot, u), c, top)
             if bot < lo:
@@ -151,7 +151,7 @@ def floating_horizon(groups, runs, ylo, yhi, upper, lower, newup, newlo, segs, s
     whose visibility per column goes to ``states`` (rows: groups; 2 where the curve
     has no sample).  Returns the number of visible segments (written to ``segs``
     while there is room)."""
-    n = 0
+    n = np.int64(0)
     t = np.empty(2)
     width = len(upper)
     for g in range(len(groups) - 1):

@@ -54,7 +54,8 @@ def covers(verts, start, end, x, y):
 
 @helper
 def plane_depth(planes, p, x, y):
-    """Depth of polygon ``p``'s plane at (x, y)."""
+    """Depth of polygon ``p``'s plane at (x, y) (floats: callers with integer pixel
+    coordinates convert them, so the helper is compiled once)."""
     return -(planes[p, 0] * x + planes[p, 1] * y + planes[p, 3]) / planes[p, 2]
 
 
@@ -148,10 +149,10 @@ def scan_spans(y, width, planes, ei, nact, active, xs, inside, on, onpos, face, 
         x1 = min(int(math.ceil(xs[k + 1])), width)
         for x in range(x0, x1):
             best = on[0]
-            zbest = plane_depth(planes, best, x, y)
+            zbest = plane_depth(planes, best, np.float64(x), np.float64(y))
             for m in range(1, non):
                 q = on[m]
-                z = plane_depth(planes, q, x, y)
+                z = plane_depth(planes, q, np.float64(x), np.float64(y))
                 if z < zbest:
                     best = q
                     zbest = z
@@ -184,8 +185,8 @@ def scan_line_method(verts, offsets, planes, width, height, face, depth, ef, ei,
         order[counts[b]] = e
         counts[b] += 1
     # counts[r] is now the end of scan line r's bucket (the start of r + 1's)
-    nact = 0
-    nxt = 0
+    nact = np.int64(0)
+    nxt = np.int64(0)
     compared = 0
     for y in range(height):
         nact, nxt = scan_row(y, ef, ei, nxt, counts[y], order, nact, active, xs)
@@ -245,27 +246,29 @@ def fill_area(verts, offsets, planes, p, x0, y0, x1, y1, whole, face, depth):
         for x in range(x0, x1 + 1):
             if whole or covers(verts, start, end, x, y):
                 face[y, x] = p
-                depth[y, x] = plane_depth(planes, p, x, y)
+                depth[y, x] = plane_depth(planes, p, np.float64(x), np.float64(y))
 
 
 @helper
 def min_depth_in(planes, ext, p, x0, y0, x1, y1):
     """A lower bound of polygon ``p``'s depth over the area: its plane's least depth
     at the area's corners, or its own least depth if that is larger."""
-    z = plane_depth(planes, p, x0, y0)
-    z = min(z, plane_depth(planes, p, x1, y0))
-    z = min(z, plane_depth(planes, p, x0, y1))
-    z = min(z, plane_depth(planes, p, x1, y1))
+    fx0, fy0, fx1, fy1 = np.float64(x0), np.float64(y0), np.float64(x1), np.float64(y1)
+    z = plane_depth(planes, p, fx0, fy0)
+    z = min(z, plane_depth(planes, p, fx1, fy0))
+    z = min(z, plane_depth(planes, p, fx0, fy1))
+    z = min(z, plane_depth(planes, p, fx1, fy1))
     return max(z, ext[p, 4])
 
 
 @helper
 def max_depth_in(planes, p, x0, y0, x1, y1):
     """Polygon ``p``'s greatest plane depth at the area's corners."""
-    z = plane_depth(planes, p, x0, y0)
-    z = max(z, plane_depth(planes, p, x1, y0))
-    z = max(z, plane_depth(planes, p, x0, y1))
-    return max(z, plane_depth(planes, p, x1, y1))
+    fx0, fy0, fx1, fy1 = np.float64(x0), np.float64(y0), np.float64(x1), np.float64(y1)
+    z = plane_depth(planes, p, fx0, fy0)
+    z = max(z, plane_depth(planes, p, fx1, fy0))
+    z = max(z, plane_depth(planes, p, fx0, fy1))
+    return max(z, plane_depth(planes, p, fx1, fy1))
 
 
 @helper
@@ -297,8 +300,8 @@ def decide_area(verts, offsets, planes, ext, cand, level, n, x0, y0, x1, y1, fac
                 ahead = False
                 break
         if ahead:
-            fill_area(verts, offsets, planes, cand[level, front], x0, y0, x1, y1, True,
-                      face, depth)
+            fill_area(verts, offsets, planes, cand[level, front], x0, y0, x1, y1,
+                      np.bool_(True), face, depth)
             return 2
     if x0 == x1 and y0 == y1:
         best = -1
@@ -307,7 +310,7 @@ def decide_area(verts, offsets, planes, ext, cand, level, n, x0, y0, x1, y1, fac
             p = cand[level, m]
             if cand[level + 1, m] == SURROUNDING or covers(verts, offsets[p],
                                                            offsets[p + 1], x0, y0):
-                z = plane_depth(planes, p, x0, y0)
+                z = plane_depth(planes, p, np.float64(x0), np.float64(y0))
                 if z < zbest:
                     best = p
                     zbest = z
@@ -346,7 +349,7 @@ def area_subdivision(verts, offsets, planes, ext, width, height, face, depth, ca
         lv = stack[top, 4]
         level = 2 * lv
         count = npoly if lv == 0 else ncand[lv - 1]
-        n = 0
+        n = np.int64(0)
         for m in range(count):
             p = m if lv == 0 else cand[level - 2, m]
             c = classify(verts, offsets[p], offsets[p + 1], ext[p], x0, y0, x1, y1)

@@ -68,6 +68,8 @@ CLI_CASES = {
     "render clipping scene": ["render", os.path.join(SCENES, "polygon_clipping.toml"),
                               "-o", "{out}/c.png"],
     "trace boundary-fill": ["trace", "boundary-fill", "1", "2"],
+    "trace depth-sort": ["trace", "depth-sort", "--scene", "cyclic"],
+    "trace floating-horizon": ["trace", "floating-horizon"],
     "trace scan-line-fill": ["trace", "scan-line-fill", "2,1", "15,4", "10,13", "6,6", "1,9"],
     "trace sutherland-hodgman": ["trace", "sutherland-hodgman", "--", "-2,2", "6,-1", "13,6",
                                  "6,13"],

@@ -55,6 +55,7 @@ _LAZY = {
     "lighting": ("scanline.lighting", None),
     "shading": ("scanline.shading", None),
     "render": ("scanline.render", None),
+    "visible": ("scanline.visible", None),
 }
 
 __all__ = sorted(_LAZY) + ["__version__"]

@@ -37,3 +37,13 @@ class AngleWarning(ScanlineWarning):
     """An angle given in radians looks as if it was meant in degrees (a whole number
     beyond one turn, such as ``30`` or ``90``): write ``"30deg"`` or
     ``math.radians(30)``, or pass a float to mean radians."""
+
+
+class DepthSortLoopError(ArgumentValueError):
+    """Depth sorting cannot order the polygons: a cyclic overlap or an intersection
+    with splitting turned off, or one that splitting cannot resolve (the loop flag
+    of the Newell-Newell-Sancha method)."""
+
+
+class BSPTooLargeError(ArgumentValueError):
+    """A BSP tree would need more polygon pieces than its limit allows."""

@@ -217,6 +217,18 @@ CALLS = {
                                      "target=(0, 0, 0)), method='ray-casting')", RGB),
     "render a-buffer": ("render", "sl.render(fb, sl.mesh.cube(), sl.Camera(eye=(3, 2, 4), "
                                   "target=(0, 0, 0)), method='a-buffer', samples=2)", RGB),
+    "visible scan-line": ("visible", "sl.visible.render(fb, [sl.mesh.cube(), sl.mesh.sphere(0.6, "
+                                     "(0.8, 0.5, 0.8))], sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)), "
+                                     "method='scan-line')", RGB),
+    "visible area subdivision": ("visible", "sl.visible.render(fb, [sl.mesh.cube(), "
+                                            "sl.mesh.sphere(0.6, (0.8, 0.5, 0.8))], "
+                                            "sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)), "
+                                            "method='area-subdivision')", RGB),
+    "visible lines": ("visible", "sl.visible.visible_lines(fb, sl.mesh.torus(1, 0.3), "
+                                 "sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)), color='black', "
+                                 "hidden='dash')", RGB),
+    "floating horizon": ("visible", "sl.draw3d.floating_horizon(fb, lambda x, y: np.sin(3 * x) "
+                                    "* np.cos(2 * y), color='black')", RGB),
     "four calls": ("mixed", "sl.draw.line(fb, 3, 4, 90, 50, color='black'); "
                             f"sl.draw.polygon(fb, {STAR}, color='navy', rule='nonzero'); "
                             "sl.draw.text(fb, 4, 20, 'Hello', color='black', height=14); "

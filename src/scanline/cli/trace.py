@@ -81,6 +81,13 @@ ALGORITHMS = {
         "the depth-buffer method along one scan line: depths compared, the winner "
         "(Hearn & Baker 13-3)", {}, False,
     ),
+    "depth-sort": (
+        "depth sorting: the five overlap tests, reordering and splitting (Hearn & Baker 13-6)",
+        {}, False,
+    ),
+    "floating-horizon": (
+        "the floating horizon: upper and lower horizons per curve (Rogers 4-2)", {}, False,
+    ),
 }
 
 
@@ -218,6 +225,26 @@ def z_buffer_options(sub):
 
 
 OPTIONS["z-buffer"] = z_buffer_options
+
+
+def depth_sort_options(sub):
+    """``--scene`` and ``--no-split`` of ``depth-sort``."""
+    sub.add_argument("--scene", choices=("painter", "cyclic", "intersecting"),
+                     default="cyclic", help="the built-in scene (default cyclic)")
+    sub.add_argument("--no-split", dest="split_cycles", action="store_false",
+                     help="stop with an error on a cycle instead of splitting")
+    return ["scene", "split_cycles"]
+
+
+def horizon_options(sub):
+    """``--nx``, ``--ny``, ``--width`` and ``--height`` of ``floating-horizon``."""
+    for name, default in (("nx", 6), ("ny", 4), ("width", 24), ("height", 16)):
+        sub.add_argument(f"--{name}", type=integer, default=default,
+                         help=f"(default {default})")
+    return ["nx", "ny", "width", "height"]
+
+
+OPTIONS.update({"depth-sort": depth_sort_options, "floating-horizon": horizon_options})
 
 FORMATS = ("table", "csv", "json")
 

@@ -12,8 +12,9 @@ kernels with every line attribute (Hearn & Baker, section 9-1).
 12
 """
 
+from .horizon import Horizon, floating_horizon, horizon
 from .wireframe import (axes, lines, polyline_pieces, polylines, project_edges, view_volume,
                         wireframe)
 
-__all__ = ["axes", "lines", "polyline_pieces", "polylines", "project_edges", "view_volume",
+__all__ = ["Horizon", "axes", "floating_horizon", "horizon", "lines", "polyline_pieces", "polylines", "project_edges", "view_volume",
            "wireframe"]

@@ -17,6 +17,7 @@ from .curves import de_casteljau, cox_de_boor
 from .clip import cohen_sutherland, cyrus_beck, liang_barsky, sutherland_hodgman
 from .clip3d import cohen_sutherland_3d, liang_barsky_3d
 from .zbuffer import z_buffer
+from .visible import depth_sort, floating_horizon
 
 #: CLI name -> function
 ALGORITHMS = {
@@ -36,10 +37,13 @@ ALGORITHMS = {
     "cohen-sutherland-3d": cohen_sutherland_3d,
     "liang-barsky-3d": liang_barsky_3d,
     "z-buffer": z_buffer,
+    "depth-sort": depth_sort,
+    "floating-horizon": floating_horizon,
 }
 
 __all__ = ["Table", "bresenham", "dda", "midpoint_circle", "midpoint_ellipse", "flood_fill",
            "boundary_fill", "scan_line_fill", "sutherland_hodgman", "de_casteljau", "cox_de_boor",
            "cohen_sutherland", "liang_barsky", "cyrus_beck",
-           "cohen_sutherland_3d", "liang_barsky_3d", "z_buffer",
+           "cohen_sutherland_3d", "liang_barsky_3d", "z_buffer", "depth_sort",
+           "floating_horizon",
            "ALGORITHMS"]

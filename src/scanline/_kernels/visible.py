@@ -1,0 +1,467 @@
+"""Image-space visible-surface kernels on screen-space convex polygons
+(:class:`scanline.visible.polygons.ScreenPolygons`): the scan-line method (Hearn &
+Baker, section 13-5) and area subdivision (Warnock; section 13-8), and the
+hidden-line test of visible-line detection (section 13-10).
+
+Sampling is the 2-D fill's (:mod:`scanline._kernels.polygon`): scan line ``y``
+crosses the edge from (xlo, ylo) up to (xhi, yhi) when ylo < y <= yhi, at
+``xc = xlo + ((y - ylo) * (xhi - xlo)) / (yhi - ylo)`` (the same expression, so the
+same float), and pixel ``x`` is inside a polygon when an odd number of its crossings
+has ``xc <= x`` (a span ``ceil(xl) <= x < ceil(xr)``).  The image-space methods thus
+see exactly the pixels :func:`scanline.draw.polygons` paints for the object-order
+methods.  Depth at a pixel center is the plane's, z = -(A x + B y + D) / C.
+"""
+
+import math
+
+import numpy as np
+
+from ._jit import helper, kernel
+
+
+@helper
+def crossing(verts, i, j, y):
+    """The crossing x of edge i -> j with scan line ``y``, or nan when the edge is not
+    active there (ylo < y <= yhi)."""
+    ya = verts[i, 1]
+    yb = verts[j, 1]
+    if ya < yb:
+        lo, hi = i, j
+    elif yb < ya:
+        lo, hi = j, i
+    else:
+        return np.nan
+    ylo = verts[lo, 1]
+    yhi = verts[hi, 1]
+    if not (ylo < y <= yhi):
+        return np.nan
+    xlo = verts[lo, 0]
+    return xlo + ((y - ylo) * (verts[hi, 0] - xlo)) / (yhi - ylo)
+
+
+@helper
+def covers(verts, start, end, x, y):
+    """Whether pixel center (x, y) is inside polygon ``verts[start:end]`` by the fill
+    rule (odd count of crossings with xc <= x)."""
+    odd = False
+    for i in range(start, end):
+        j = i + 1 if i + 1 < end else start
+        xc = crossing(verts, i, j, y)
+        if xc <= x:            # False for nan
+            odd = not odd
+    return odd
+
+
+@helper
+def plane_depth(planes, p, x, y):
+    """Depth of polygon ``p``'s plane at (x, y) (floats: callers with integer pixel
+    coordinates convert them, so the helper is compiled once)."""
+    return -(planes[p, 0] * x + planes[p, 1] * y + planes[p, 3]) / planes[p, 2]
+
+
+# -- the scan-line method ---------------------------------------------------------------
+
+@helper
+def scan_edges(verts, offsets, height, ef, ei):
+    """The edge table: every non-horizontal polygon edge active on some scan line
+    0..height-1.  Row ``n`` of ``ef``: xlo, ylo, xhi - xlo, yhi - ylo; of ``ei``:
+    first and last scan line, polygon.  Returns the count."""
+    n = 0
+    for p in range(len(offsets) - 1):
+        start = offsets[p]
+        end = offsets[p + 1]
+        for i in range(start, end):
+            j = i + 1 if i + 1 < end else start
+            ya = verts[i, 1]
+            yb = verts[j, 1]
+            if ya == yb:
+                continue
+            lo, hi = (i, j) if ya < yb else (j, i)
+            r0 = max(int(math.floor(verts[lo, 1])) + 1, 0)
+            r1 = min(int(math.floor(verts[hi, 1])), height - 1)
+            if r0 > r1:
+                continue
+            ef[n, 0] = verts[lo, 0]
+            ef[n, 1] = verts[lo, 1]
+            ef[n, 2] = verts[hi, 0] - verts[lo, 0]
+            ef[n, 3] = verts[hi, 1] - verts[lo, 1]
+            ei[n, 0] = r0
+            ei[n, 1] = r1
+            ei[n, 2] = p
+            n += 1
+    return n
+
+
+@helper
+def scan_row(y, ef, ei, nxt, end, order, nact, active, xs):
+    """Move the active edge list to scan line ``y``: drop the edges that ended, add
+    those that begin (``order[nxt:end]``), and keep the list sorted by crossing x by
+    insertion (coherence: the order changes little from one scan line to the next).
+    Returns ``(nact, nxt)``."""
+    k = 0
+    for a in range(nact + end - nxt):
+        if a < nact:
+            e = active[a]
+            if ei[e, 1] < y:
+                continue
+        else:
+            e = order[nxt]
+            nxt += 1
+        xc = ef[e, 0] + ((y - ef[e, 1]) * ef[e, 2]) / ef[e, 3]
+        b = k
+        while b > 0:
+            if xs[b - 1] <= xc:
+                break
+            xs[b] = xs[b - 1]
+            active[b] = active[b - 1]
+            b -= 1
+        xs[b] = xc
+        active[b] = e
+        k += 1
+    return k, nxt
+
+
+@helper
+def scan_spans(y, width, planes, ei, nact, active, xs, inside, on, onpos, face, depth):
+    """Walk scan line ``y``'s crossings left to right, turning each polygon's in/out
+    flag at its crossings, and fill the span up to the next crossing: nothing when
+    no flag is on, the one polygon whose flag is on, or -- only where spans overlap
+    -- the nearest of the polygons that are on, by their depths at each pixel.
+    Returns the number of pixels where depths were compared."""
+    non = 0
+    compared = 0
+    for k in range(nact):
+        p = ei[active[k], 2]
+        if inside[p]:
+            inside[p] = False
+            last = on[non - 1]
+            on[onpos[p]] = last
+            onpos[last] = onpos[p]
+            non -= 1
+        else:
+            inside[p] = True
+            on[non] = p
+            onpos[p] = non
+            non += 1
+        if non == 0 or k + 1 >= nact:
+            continue
+        x0 = max(int(math.ceil(xs[k])), 0)
+        x1 = min(int(math.ceil(xs[k + 1])), width)
+        for x in range(x0, x1):
+            best = on[0]
+            zbest = plane_depth(planes, best, np.float64(x), np.float64(y))
+            for m in range(1, non):
+                q = on[m]
+                z = plane_depth(planes, q, np.float64(x), np.float64(y))
+                if z < zbest:
+                    best = q
+                    zbest = z
+            if non > 1:
+                compared += 1
+            face[y, x] = best
+            depth[y, x] = zbest
+    for m in range(non):       # a polygon left on (never, for closed polygons)
+        inside[on[m]] = False
+    return compared
+
+
+@kernel
+def scan_line_method(verts, offsets, planes, width, height, face, depth, ef, ei, order,
+                     counts, active, xs, inside, on, onpos):
+    """Hearn & Baker's scan-line method over all polygons at once: the edge table
+    bucket-sorted by first scan line, the polygon table's in/out flags, one active
+    edge list for every polygon, depths compared only where spans overlap.  Fills
+    ``face`` (polygon index, -1 left where nothing is) and ``depth``; returns the
+    number of pixels where depths were compared."""
+    n = scan_edges(verts, offsets, height, ef, ei)
+    for r in range(height + 1):
+        counts[r] = 0
+    for e in range(n):
+        counts[ei[e, 0] + 1] += 1
+    for r in range(height):
+        counts[r + 1] += counts[r]
+    for e in range(n):
+        b = ei[e, 0]
+        order[counts[b]] = e
+        counts[b] += 1
+    # counts[r] is now the end of scan line r's bucket (the start of r + 1's)
+    nact = np.int64(0)
+    nxt = np.int64(0)
+    compared = 0
+    for y in range(height):
+        nact, nxt = scan_row(y, ef, ei, nxt, counts[y], order, nact, active, xs)
+        compared += scan_spans(y, width, planes, ei, nact, active, xs, inside, on, onpos,
+                               face, depth)
+    return compared
+
+
+# -- area subdivision ----------------------------------------------------------------------
+
+OUTSIDE = 0
+SURROUNDING = 1
+INSIDE = 2
+OVERLAPPING = 3
+
+
+@helper
+def classify(verts, start, end, box, x0, y0, x1, y1):
+    """How polygon ``verts[start:end]`` (bounding box ``box`` = xmin, xmax, ymin,
+    ymax) relates to the area of pixel centers [x0, x1] x [y0, y1]: OUTSIDE (no
+    center of the area can be inside it), SURROUNDING (it contains the whole area),
+    INSIDE (it lies within the area) or OVERLAPPING (intersecting: partly in)."""
+    if box[1] < x0 or box[0] > x1 or box[3] < y0 or box[2] > y1:
+        return OUTSIDE
+    if box[0] >= x0 and box[1] <= x1 and box[2] >= y0 and box[3] <= y1:
+        return INSIDE
+    if (covers(verts, start, end, x0, y0) and covers(verts, start, end, x1, y0)
+            and covers(verts, start, end, x0, y1) and covers(verts, start, end, x1, y1)):
+        return SURROUNDING
+    area = 0.0
+    for i in range(start, end):
+        j = i + 1 if i + 1 < end else start
+        area += verts[i, 0] * verts[j, 1] - verts[j, 0] * verts[i, 1]
+    for i in range(start, end):     # an edge with the whole area on its outer side
+        j = i + 1 if i + 1 < end else start
+        ex = verts[j, 0] - verts[i, 0]
+        ey = verts[j, 1] - verts[i, 1]
+        out = 0
+        for c in range(4):
+            cx = x0 if c == 0 or c == 3 else x1
+            cy = y0 if c < 2 else y1
+            side = (ex * (cy - verts[i, 1]) - ey * (cx - verts[i, 0])) * area
+            if side < 0:
+                out += 1
+        if out == 4:
+            return OUTSIDE
+    return OVERLAPPING
+
+
+@helper
+def fill_area(verts, offsets, planes, p, x0, y0, x1, y1, whole, face, depth):
+    """Paint polygon ``p`` over the area: every pixel (``whole``: it surrounds the
+    area) or the pixels whose centers it covers."""
+    start = offsets[p]
+    end = offsets[p + 1]
+    for y in range(y0, y1 + 1):
+        for x in range(x0, x1 + 1):
+            if whole or covers(verts, start, end, x, y):
+                face[y, x] = p
+                depth[y, x] = plane_depth(planes, p, np.float64(x), np.float64(y))
+
+
+@helper
+def min_depth_in(planes, ext, p, x0, y0, x1, y1):
+    """A lower bound of polygon ``p``'s depth over the area: its plane's least depth
+    at the area's corners, or its own least depth if that is larger."""
+    fx0, fy0, fx1, fy1 = np.float64(x0), np.float64(y0), np.float64(x1), np.float64(y1)
+    z = plane_depth(planes, p, fx0, fy0)
+    z = min(z, plane_depth(planes, p, fx1, fy0))
+    z = min(z, plane_depth(planes, p, fx0, fy1))
+    z = min(z, plane_depth(planes, p, fx1, fy1))
+    return max(z, ext[p, 4])
+
+
+@helper
+def max_depth_in(planes, p, x0, y0, x1, y1):
+    """Polygon ``p``'s greatest plane depth at the area's corners."""
+    fx0, fy0, fx1, fy1 = np.float64(x0), np.float64(y0), np.float64(x1), np.float64(y1)
+    z = plane_depth(planes, p, fx0, fy0)
+    z = max(z, plane_depth(planes, p, fx1, fy0))
+    z = max(z, plane_depth(planes, p, fx0, fy1))
+    return max(z, plane_depth(planes, p, fx1, fy1))
+
+
+@helper
+def decide_area(verts, offsets, planes, ext, cand, level, n, x0, y0, x1, y1, face, depth):
+    """Warnock's tests for one area whose relevant polygons are ``cand[level, :n]``,
+    with their classes in ``cand[level + 1, :n]``.  Returns the case: 0 nothing there
+    (background), 1 a single polygon (painted), 2 a surrounding polygon in front of
+    all others (painted), 3 one pixel resolved by depth, or -1: subdivide."""
+    if n == 0:
+        return 0
+    if n == 1:
+        p = cand[level, 0]
+        fill_area(verts, offsets, planes, p, x0, y0, x1, y1,
+                  cand[level + 1, 0] == SURROUNDING, face, depth)
+        return 1
+    front = -1
+    zfront = np.inf
+    for m in range(n):
+        if cand[level + 1, m] == SURROUNDING:
+            z = max_depth_in(planes, cand[level, m], x0, y0, x1, y1)
+            if z < zfront:
+                front = m
+                zfront = z
+    if front >= 0:
+        ahead = True
+        for m in range(n):
+            if m != front and min_depth_in(planes, ext, cand[level, m], x0, y0, x1,
+                                           y1) <= zfront:
+                ahead = False
+                break
+        if ahead:
+            fill_area(verts, offsets, planes, cand[level, front], x0, y0, x1, y1,
+                      np.bool_(True), face, depth)
+            return 2
+    if x0 == x1 and y0 == y1:
+        best = -1
+        zbest = np.inf
+        for m in range(n):
+            p = cand[level, m]
+            if cand[level + 1, m] == SURROUNDING or covers(verts, offsets[p],
+                                                           offsets[p + 1], x0, y0):
+                z = plane_depth(planes, p, np.float64(x0), np.float64(y0))
+                if z < zbest:
+                    best = p
+                    zbest = z
+        if best >= 0:
+            face[y0, x0] = best
+            depth[y0, x0] = zbest
+        return 3
+    return -1
+
+
+@kernel
+def area_subdivision(verts, offsets, planes, ext, width, height, face, depth, cand, ncand,
+                     stack, regions):
+    """Warnock's area subdivision of the whole raster: an area is painted when its
+    relevant polygons make the answer obvious (:func:`decide_area`), else split into
+    four quadrants, down to single pixels.  Depth first: ``cand`` (2 L, P) holds, for
+    the area being examined at each level ``lv`` of subdivision, the polygons not
+    outside it (row 2 lv, ``ncand[lv]`` of them, chosen among its parent's) and their
+    classes (row 2 lv + 1); ``stack`` (S, 5) the areas waiting (x0, y0, x1, y1, lv);
+    ``regions`` (R, 5) records each decided area (x0, y0, x1, y1, case) while it has
+    room.  Returns the number of areas decided (which may exceed R)."""
+    stack[0, 0] = 0
+    stack[0, 1] = 0
+    stack[0, 2] = width - 1
+    stack[0, 3] = height - 1
+    stack[0, 4] = 0
+    top = 1
+    decided = 0
+    npoly = len(offsets) - 1
+    while top > 0:
+        top -= 1
+        x0 = stack[top, 0]
+        y0 = stack[top, 1]
+        x1 = stack[top, 2]
+        y1 = stack[top, 3]
+        lv = stack[top, 4]
+        level = 2 * lv
+        count = npoly if lv == 0 else ncand[lv - 1]
+        n = np.int64(0)
+        for m in range(count):
+            p = m if lv == 0 else cand[level - 2, m]
+            c = classify(verts, offsets[p], offsets[p + 1], ext[p], x0, y0, x1, y1)
+            if c != OUTSIDE:
+                cand[level, n] = p
+                cand[level + 1, n] = c
+                n += 1
+        ncand[lv] = n
+        case = decide_area(verts, offsets, planes, ext, cand, level, n, x0, y0, x1, y1,
+                           face, depth)
+        if case >= 0:
+            if decided < len(regions):
+                regions[decided, 0] = x0
+                regions[decided, 1] = y0
+                regions[decided, 2] = x1
+                regions[decided, 3] = y1
+                regions[decided, 4] = case
+            decided += 1
+            continue
+        xm = (x0 + x1) // 2
+        ym = (y0 + y1) // 2
+        for q in range(4):
+            qx0 = x0 if q % 2 == 0 else xm + 1
+            qx1 = xm if q % 2 == 0 else x1
+            qy0 = y0 if q < 2 else ym + 1
+            qy1 = ym if q < 2 else y1
+            if qx0 > qx1 or qy0 > qy1:
+                continue
+            stack[top, 0] = qx0
+            stack[top, 1] = qy0
+            stack[top, 2] = qx1
+            stack[top, 3] = qy1
+            stack[top, 4] = lv + 1
+            top += 1
+    return decided
+
+
+# -- visible-line detection ---------------------------------------------------------------
+
+@helper
+def hidden_part(segs, sdepth, e, verts, start, end, planes, p, eps, t):
+    """The parameter interval of segment ``e`` hidden by polygon ``p``: the part
+    whose projection is inside the polygon (Cyrus-Beck against its edges) and that
+    lies behind its plane by more than ``eps``.  Writes ``t[0], t[1]``; returns
+    whether it is not empty."""
+    x0 = segs[e, 0]
+    y0 = segs[e, 1]
+    dx = segs[e, 2] - x0
+    dy = segs[e, 3] - y0
+    area = 0.0
+    for i in range(start, end):
+        j = i + 1 if i + 1 < end else start
+        area += verts[i, 0] * verts[j, 1] - verts[j, 0] * verts[i, 1]
+    lo = 0.0
+    hi = 1.0
+    for i in range(start, end):
+        j = i + 1 if i + 1 < end else start
+        ex = verts[j, 0] - verts[i, 0]
+        ey = verts[j, 1] - verts[i, 1]
+        # inside: (ex * (y - yi) - ey * (x - xi)) * area > 0
+        f0 = (ex * (y0 - verts[i, 1]) - ey * (x0 - verts[i, 0])) * area
+        df = (ex * dy - ey * dx) * area
+        if df == 0.0:
+            if f0 <= 0.0:
+                return False
+        elif df > 0.0:
+            lo = max(lo, -f0 / df)
+        else:
+            hi = min(hi, -f0 / df)
+        if lo >= hi:
+            return False
+    # behind: z(t) - plane depth(t) > eps, linear in t
+    g0 = sdepth[e, 0] - plane_depth(planes, p, x0, y0)
+    g1 = sdepth[e, 1] - plane_depth(planes, p, x0 + dx, y0 + dy)
+    dg = g1 - g0
+    if dg == 0.0:
+        if g0 <= eps:
+            return False
+    elif dg > 0.0:
+        lo = max(lo, (eps - g0) / dg)
+    else:
+        hi = min(hi, (eps - g0) / dg)
+    if lo >= hi:
+        return False
+    t[0] = lo
+    t[1] = hi
+    return True
+
+
+@kernel
+def hidden_intervals(segs, sdepth, verts, offsets, planes, ext, eps, out):
+    """Every (segment, polygon) pair where the polygon hides part of the segment:
+    rows (segment, t0, t1) of ``out`` while there is room.  Returns the number of
+    rows there are (more than ``len(out)``: call again with a larger ``out``)."""
+    n = 0
+    t = np.empty(2)
+    for e in range(len(segs)):
+        sx0 = min(segs[e, 0], segs[e, 2])
+        sx1 = max(segs[e, 0], segs[e, 2])
+        sy0 = min(segs[e, 1], segs[e, 3])
+        sy1 = max(segs[e, 1], segs[e, 3])
+        sz = max(sdepth[e, 0], sdepth[e, 1])
+        for p in range(len(offsets) - 1):
+            if ext[p, 0] > sx1 or ext[p, 1] < sx0 or ext[p, 2] > sy1 or ext[p, 3] < sy0:
+                continue
+            if ext[p, 4] >= sz - eps:        # the polygon lies wholly behind the segment
+                continue
+            if hidden_part(segs, sdepth, e, verts, offsets[p], offsets[p + 1], planes, p,
+                           eps, t):
+                if n < len(out):
+                    out[n, 0] = e
+                    out[n, 1] = t[0]
+                    out[n, 2] = t[1]
+                n += 1
+    return n

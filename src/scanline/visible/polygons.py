@@ -1,0 +1,316 @@
+"""The input of every visible-surface method here: screen-space polygons.
+
+A :class:`ScreenPolygons` holds convex polygons in *device space* -- x and y in pixels
+of a ``width`` x ``height`` frame buffer, the depth z growing away from the viewer
+(0 on the front plane, 1 on the back plane, :doc:`three-d`) -- with, for each
+polygon, the source face it comes from and the plane A x + B y + C z + D = 0 of that
+face in device space.  After the perspective divide every projector is parallel to
+the z axis, so all methods reason about an orthographic view along +z: the viewer
+is at z = -infinity (Hearn & Baker, section 13-1: "depth values ... in the normalized
+coordinates"; a perspective projection maps planes to planes, so planarity and the
+plane tests survive the divide).
+
+Planes are oriented with C > 0: a point with A x + B y + C z + D > 0 lies *behind*
+the plane (farther from the viewer), < 0 in front of it, and the depth of the plane
+above pixel (x, y) is z = -(A x + B y + D) / C.
+
+Object-order methods (painter, depth sort, BSP) return a :class:`ScreenPolygons`
+too: the pieces in drawing order, back to front; a piece split off a face lies in
+that face's plane and keeps its face index.  Image-space methods (scan-line, area
+subdivision) return a :class:`VisibleFaces`: the face index at every pixel (-1 is
+the background) and the depth there.
+"""
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .. import _validate as v
+from ..errors import ArgumentTypeError, ArgumentValueError
+
+#: Polygons whose projected area (in square pixels) is at most this cover no pixel
+#: center robustly and are dropped (faces seen edge-on).
+MIN_AREA = 1e-9
+
+
+@dataclass
+class ScreenPolygons:
+    """Convex polygons in device space.
+
+    Attributes
+    ----------
+    vertices : ndarray, shape (V, 3)
+        Device x, y and depth of every vertex, polygon after polygon.
+    offsets : ndarray of int64, shape (P + 1,)
+        Polygon ``p`` is ``vertices[offsets[p]:offsets[p + 1]]`` (counterclockwise or
+        clockwise as projected; at least three vertices).
+    face : ndarray of int64, shape (P,)
+        The source face of each polygon (meshes numbered one after another).
+    planes : ndarray, shape (P, 4)
+        (A, B, C, D) of each polygon's face in device space, C > 0.
+    width, height : int
+        The device the coordinates belong to.
+    """
+
+    vertices: np.ndarray
+    offsets: np.ndarray
+    face: np.ndarray
+    planes: np.ndarray
+    width: int
+    height: int
+
+    def __len__(self):
+        return len(self.offsets) - 1
+
+    def polygon(self, p):
+        """The (K, 3) vertices of polygon ``p``."""
+        return self.vertices[self.offsets[p]:self.offsets[p + 1]]
+
+    @property
+    def counts(self):
+        return np.diff(self.offsets)
+
+    def depth_at(self, p, x, y):
+        """Depth of polygon ``p``'s plane above the device point (x, y)."""
+        a, b, c, d = self.planes[p]
+        return -(a * np.asarray(x) + b * np.asarray(y) + d) / c
+
+    def extents(self):
+        """(P, 6) rows xmin, xmax, ymin, ymax, zmin, zmax of each polygon."""
+        if not len(self):
+            return np.empty((0, 6))
+        starts = self.offsets[:-1]
+        out = np.empty((len(self), 6))
+        for axis in range(3):
+            col = self.vertices[:, axis]
+            out[:, 2 * axis] = np.minimum.reduceat(col, starts)
+            out[:, 2 * axis + 1] = np.maximum.reduceat(col, starts)
+        return out
+
+    def subset(self, order):
+        """The polygons ``order`` (indices), in that order."""
+        order = np.asarray(order, np.int64)
+        counts = self.counts[order]
+        offsets = np.concatenate([[0], np.cumsum(counts)]).astype(np.int64)
+        idx = (np.repeat(self.offsets[order] - offsets[:-1], counts)
+               + np.arange(offsets[-1])) if len(order) else np.empty(0, np.int64)
+        return ScreenPolygons(self.vertices[idx], offsets, self.face[order],
+                              self.planes[order], self.width, self.height)
+
+    def pieces(self):
+        """A list of ``(vertices (K, 3), face)`` pairs, in order."""
+        return [(self.polygon(p), int(self.face[p])) for p in range(len(self))]
+
+    @classmethod
+    def from_device(cls, polygons, width, height, faces=None):
+        """Screen polygons from a list of (K, 3) device-space polygons (x, y, depth
+        per vertex), each convex and planar; ``faces`` their face indices (default
+        0, 1, 2 ...).  Polygons seen edge-on (no area) are dropped."""
+        w = v.positive_int("width", width)
+        h = v.positive_int("height", height)
+        if not isinstance(polygons, (list, tuple)):
+            polygons = list(v.real_array("polygons", polygons, "(P, K, 3)"))
+        parts = []
+        for i, p in enumerate(polygons):
+            a = v.real_array(f"polygons[{i}]", p, "(K, 3)")
+            if a.ndim != 2 or a.shape[1] != 3 or len(a) < 3:
+                raise ArgumentValueError(
+                    f"polygons[{i}] must be a (K, 3) array of K >= 3 vertices (x, y, depth), "
+                    f"got shape {a.shape}")
+            if not np.isfinite(a).all():
+                raise ArgumentValueError(
+                    f"polygons[{i}] has a non-finite coordinate (NaN or inf): "
+                    f"{v._show(a.tolist())}; every vertex must be finite")
+            plane = newell_plane(a)
+            norm = float(np.linalg.norm(plane[:3]))
+            if norm > 0 and np.abs(a @ plane[:3] + plane[3]).max() > 1e-9 * norm * (
+                    float(np.ptp(a, axis=0).max()) + 1.0):
+                raise ArgumentValueError(
+                    f"polygons[{i}] is not planar: {v._show(a.tolist())}; give planar "
+                    "polygons (split a bent one into triangles)")
+            parts.append(a)
+        if faces is None:
+            faces = np.arange(len(parts), dtype=np.int64)
+        faces = np.asarray(faces)
+        if faces.shape != (len(parts),) or (len(parts) and faces.dtype.kind not in "iu"):
+            raise ArgumentValueError(
+                f"faces must hold one integer per polygon ({len(parts)}), got "
+                f"{v._show(faces.tolist())}")
+        return _assemble(parts, faces.astype(np.int64), w, h)
+
+
+@dataclass
+class VisibleFaces:
+    """What an image-space method sees: the face at each pixel and its depth.
+
+    Attributes
+    ----------
+    face : ndarray of int64, shape (height, width)
+        ``face[y, x]`` is the face visible at pixel (x, y) (row y is scan line y,
+        bottom-up like the frame buffer's storage), -1 for the background.
+    depth : ndarray, shape (height, width)
+        Its depth (inf for the background).
+    """
+
+    face: np.ndarray
+    depth: np.ndarray
+
+
+def newell_plane(points):
+    """Newell's plane (A, B, C, D) of the (K, 3) ``points`` (Hearn & Baker, section
+    10-1; exact for planar polygons)."""
+    x, y, z = points[:, 0], points[:, 1], points[:, 2]
+    xn, yn, zn = np.roll(x, -1), np.roll(y, -1), np.roll(z, -1)
+    a = np.sum((y - yn) * (z + zn))
+    b = np.sum((z - zn) * (x + xn))
+    c = np.sum((x - xn) * (y + yn))
+    centroid = points.mean(axis=0)
+    return np.array([a, b, c, -(a * centroid[0] + b * centroid[1] + c * centroid[2])])
+
+
+def signed_area(points):
+    """Signed area of the (K, 2+) polygon's projection on (x, y): > 0 counterclockwise."""
+    x, y = points[:, 0], points[:, 1]
+    return 0.5 * float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y))
+
+
+def is_convex(points):
+    """Whether the (K, 2+) polygon's (x, y) projection is convex (collinear vertices
+    allowed)."""
+    p = points[:, :2]
+    e = np.roll(p, -1, axis=0) - p
+    cross = e[:, 0] * np.roll(e[:, 1], -1) - e[:, 1] * np.roll(e[:, 0], -1)
+    scale = float(np.abs(e).max()) ** 2 if len(e) else 0.0
+    tol = 1e-12 * scale
+    return bool((cross >= -tol).all() or (cross <= tol).all())
+
+
+def _assemble(parts, faces, width, height):
+    keep, planes = [], []
+    for i, a in enumerate(parts):
+        area = signed_area(a)
+        if abs(area) <= MIN_AREA:
+            continue
+        if not is_convex(a):
+            raise ArgumentValueError(
+                f"polygon {i} (face {int(faces[i])}) is not convex as projected: "
+                f"{v._show(a.tolist())}; split it into convex parts (or triangles) first")
+        plane = newell_plane(a)
+        if plane[2] < 0:
+            plane = -plane
+        keep.append(i)
+        planes.append(plane)
+    verts = np.concatenate([parts[i] for i in keep]) if keep else np.empty((0, 3))
+    counts = np.array([len(parts[i]) for i in keep], np.int64)
+    offsets = np.concatenate([[0], np.cumsum(counts)]).astype(np.int64)
+    return ScreenPolygons(np.ascontiguousarray(verts, np.float64), offsets,
+                          np.ascontiguousarray(faces[keep], np.int64),
+                          np.array(planes, np.float64).reshape(-1, 4), width, height)
+
+
+def meshes_list(meshes):
+    """``meshes`` as a non-empty list of :class:`scanline.mesh.Mesh`."""
+    from ..mesh import Mesh
+
+    group = [meshes] if isinstance(meshes, Mesh) else list(meshes) \
+        if isinstance(meshes, (list, tuple)) else None
+    if not group or not all(isinstance(m, Mesh) for m in group):
+        raise ArgumentTypeError(
+            f"meshes must be a scanline.mesh.Mesh or a non-empty list of them, got "
+            f"{v._show(meshes)}")
+    return group
+
+
+def world_polygons(meshes):
+    """The faces of ``meshes`` as world polygons: ``(vertices (V, 3), counts (P,),
+    face (P,))``, faces numbered across the meshes in order.  Convex faces that are
+    not planar (a teapot's bilinear patches) are split into a fan of triangles, each
+    keeping its face index.  Vectorized over the faces (a million faces take about a
+    second)."""
+    verts, counts, faces = [], [], []
+    base = 0
+    for mesh in meshes_list(meshes):
+        idx, off = mesh.face_indices, mesh.face_offsets
+        sizes = np.diff(off)
+        nf = len(sizes)
+        owner = np.repeat(np.arange(nf), sizes)
+        nxt = np.arange(1, len(idx) + 1)
+        nxt[off[1:] - 1] = off[:-1]
+        p, q = mesh.vertices[idx], mesh.vertices[idx[nxt]]
+        normal = np.stack([(p[:, 1] - q[:, 1]) * (p[:, 2] + q[:, 2]),
+                           (p[:, 2] - q[:, 2]) * (p[:, 0] + q[:, 0]),
+                           (p[:, 0] - q[:, 0]) * (p[:, 1] + q[:, 1])], axis=1)
+        n = np.add.reduceat(normal, off[:-1], axis=0)
+        centroid = np.add.reduceat(p, off[:-1], axis=0) / sizes[:, None]
+        norm = np.linalg.norm(n, axis=1)
+        dist = np.abs(np.einsum("ij,ij->i", p - centroid[owner], n[owner]))
+        off_plane = np.maximum.reduceat(dist, off[:-1]) / np.where(norm > 0, norm, 1.0)
+        size = (np.maximum.reduceat(p, off[:-1], axis=0)
+                - np.minimum.reduceat(p, off[:-1], axis=0)).max(axis=1)
+        flat = (norm > 0) & (off_plane <= 1e-9 * np.where(size > 0, size, 1.0))
+        keep = flat[owner]
+        verts.append(p[keep])
+        counts.append(sizes[flat])
+        faces.append(base + np.flatnonzero(flat))
+        bent = np.flatnonzero(~flat)
+        if len(bent):                    # fans (0, k, k + 1) of the bent faces
+            tri = sizes[bent] - 2
+            f = np.repeat(bent, tri)
+            k = np.arange(int(tri.sum())) - np.repeat(np.cumsum(tri) - tri, tri)
+            first = off[f]
+            corners = np.stack([first, first + k + 1, first + k + 2], axis=1)
+            verts.append(mesh.vertices[idx[corners.reshape(-1)]])
+            counts.append(np.full(len(f), 3, np.int64))
+            faces.append(base + f)
+        base += nf
+    return (np.ascontiguousarray(np.concatenate(verts)), np.concatenate(counts).astype(np.int64),
+            np.concatenate(faces).astype(np.int64))
+
+
+def project(vertices, counts, faces, camera, width, height, cull_back_faces=False):
+    """World polygons (flat form) through ``camera`` onto a ``width`` x ``height``
+    device: clipped in homogeneous coordinates against the view volume before the
+    divide (:func:`scanline.clip.polygons3d`), divided, mapped to device x, y and
+    depth.  ``cull_back_faces``: drop the polygons that face away from the viewer
+    (Hearn & Baker, section 13-2: clockwise as projected, the faces being
+    counterclockwise seen from outside)."""
+    from ..clip import UNIT_CUBE, polygons3d
+    from ..projection import Camera
+
+    if not isinstance(camera, Camera):
+        raise ArgumentTypeError(f"camera must be a scanline.Camera, got {v._show(camera)}")
+    w = v.positive_int("width", width, 2)
+    h = v.positive_int("height", height, 2)
+    clip, scale, offset = camera.mapping(camera._device_box(w, h))
+    hom = np.hstack([vertices, np.ones((len(vertices), 1))]) @ clip.T
+    out, out_counts = polygons3d(np.ascontiguousarray(hom), UNIT_CUBE, counts=counts,
+                                 homogeneous=True)
+    dev = out[:, :3] / out[:, 3:4] * scale + offset
+    parts, kept = [], []
+    start = 0
+    for i, n in enumerate(out_counts.tolist()):
+        if n >= 3:
+            piece = dev[start:start + n]
+            if not cull_back_faces or signed_area(piece) > 0:
+                parts.append(piece)
+                kept.append(faces[i])
+        start += n
+    return _assemble(parts, np.array(kept, np.int64), w, h)
+
+
+def screen_polygons(meshes, camera, width, height, cull_back_faces=False):
+    """The faces of ``meshes`` as :class:`ScreenPolygons` seen through ``camera``
+    on a ``width`` x ``height`` device (:func:`world_polygons`, then
+    :func:`project`)."""
+    verts, counts, faces = world_polygons(meshes)
+    return project(verts, counts, faces, camera, width, height, cull_back_faces)
+
+
+def as_screen(polygons):
+    """``polygons`` checked to be :class:`ScreenPolygons`."""
+    if not isinstance(polygons, ScreenPolygons):
+        raise ArgumentTypeError(
+            "polygons must be scanline.visible.ScreenPolygons (from "
+            "sl.visible.screen_polygons(meshes, camera, width, height) or "
+            f"ScreenPolygons.from_device(...)), got {v._show(polygons)}")
+    return polygons

@@ -1,0 +1,120 @@
+"""``sl.visible.render``: one scene by any of the methods of this package, flat
+shaded (each face one color)."""
+
+import numpy as np
+
+from .. import _validate as v
+from ..draw._common import target
+from ..errors import ArgumentValueError
+from .bsp import BSPTree, bsp
+from .depth_sort import depth_sort
+from .painter import painter
+from .polygons import ScreenPolygons, VisibleFaces, meshes_list, screen_polygons
+from .scanline_method import scan_line
+from .warnock import area_subdivision
+
+#: Object-order methods: the pieces back to front, painted in order.
+OBJECT_ORDER = ("painter", "depth-sort", "bsp")
+#: Image-space methods: a visible face per pixel.
+IMAGE_SPACE = ("scan-line", "area-subdivision")
+METHODS = OBJECT_ORDER + IMAGE_SPACE
+
+#: Face colors of meshes without colors, one per mesh in turn.
+PALETTE = ("#4e79a7", "#f28e2b", "#e15759", "#76b7b2", "#59a14f", "#edc948", "#b07aa1")
+
+
+def visible(meshes, camera, width, height, method="depth-sort", cull_back_faces=False):
+    """What ``method`` makes of the scene: a :class:`ScreenPolygons` in drawing
+    order (object-order methods) or a :class:`VisibleFaces` (image space)."""
+    v.choice("method", method, METHODS)
+    if method == "bsp":
+        tree = meshes if isinstance(meshes, BSPTree) else BSPTree(meshes)
+        return bsp(tree, camera, width, height, cull_back_faces)
+    sp = screen_polygons(meshes, camera, width, height, cull_back_faces)
+    return {"painter": painter, "depth-sort": depth_sort, "scan-line": scan_line,
+            "area-subdivision": area_subdivision}[method](sp)
+
+
+def face_colors(fb, meshes, colors=None):
+    """Pixel values (F, channels) of every face of ``meshes``: ``colors`` (one per
+    face of all meshes, or one per mesh), else each mesh's face colors (the mean of
+    its vertex colors for vertex-colored meshes), else :data:`PALETTE`."""
+    group = meshes_list(meshes)
+    sizes = [m.face_count for m in group]
+    total = sum(sizes)
+    if colors is not None:
+        if isinstance(colors, (str, tuple)):
+            colors = [colors] * len(group)
+        if len(colors) == len(group) and len(group) != total:
+            colors = [c for c, n in zip(colors, sizes) for _ in range(n)]
+        if len(colors) != total:
+            raise ArgumentValueError(
+                f"colors holds {len(colors)} colors; give one per mesh ({len(group)}) or "
+                f"one per face ({total})")
+        return np.array([fb.pixel(c, f"colors[{i}]") for i, c in enumerate(colors)],
+                        np.uint8).reshape(total, -1)
+    rows = []
+    for i, m in enumerate(group):
+        if m.colors is None:
+            rows.append(np.repeat(fb.pixel(PALETTE[i % len(PALETTE)])[None], m.face_count, 0))
+        elif m.color_on == "face":
+            rows.append(np.array([fb.pixel(tuple(int(c) for c in row)) for row in m.colors]))
+        else:
+            mean = [m.colors[m.face(f)].mean(axis=0).round().astype(int) for f in
+                    range(m.face_count)]
+            rows.append(np.array([fb.pixel(tuple(int(c) for c in row)) for row in mean]))
+    return np.concatenate(rows).astype(np.uint8).reshape(total, -1)
+
+
+def paint(fb, result, values):
+    """Paint a method's result: object order through :func:`scanline.draw.polygons`
+    (each piece in order, later over earlier); image space by coloring each pixel
+    with its face's value (background left as it is)."""
+    from ..draw import polygons as draw_polygons
+
+    if isinstance(result, ScreenPolygons):
+        if len(result):
+            draw_polygons(fb, np.ascontiguousarray(result.vertices[:, :2]),
+                          color=values[result.face], counts=result.counts)
+        return
+    face = result.face
+    buf, packed = fb._raster()
+    seen = face >= 0
+    if packed:
+        bits = np.unpackbits(buf[:, :, 0], axis=1)[:, :fb.width].astype(bool)
+        bits[seen] = values[face[seen], 0] != 0
+        buf[:, :, 0] = np.packbits(bits, axis=1)
+    else:
+        buf[seen] = values[face[seen]]
+
+
+def render(fb, meshes, camera, method="depth-sort", colors=None, cull_back_faces=False):
+    """Draw ``meshes`` through ``camera`` with a visible-surface method, one flat
+    color per face.
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+    meshes : Mesh, list of Mesh, or a BSPTree (method "bsp")
+    camera : Camera
+    method : {"painter", "depth-sort", "bsp", "scan-line", "area-subdivision"}
+        See each function's docstring: :func:`painter`, :func:`depth_sort`,
+        :class:`BSPTree`, :func:`scan_line`, :func:`area_subdivision` (object order
+        for the first three, image space for the last two).
+    colors : list of colors, optional
+        One per mesh or one per face (default: the meshes' face colors, else a
+        palette color per mesh).
+    cull_back_faces : bool
+        Drop faces turned away from the viewer first (Hearn & Baker, section 13-2).
+
+    Returns
+    -------
+    ScreenPolygons or VisibleFaces
+        What the method produced (pieces in drawing order, or the face per pixel).
+    """
+    target(fb)
+    source = meshes._meshes if isinstance(meshes, BSPTree) else meshes
+    values = face_colors(fb, source, colors)
+    result = visible(meshes, camera, fb.width, fb.height, method, cull_back_faces)
+    paint(fb, result, values)
+    return result

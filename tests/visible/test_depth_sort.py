@@ -1,0 +1,133 @@
+"""Depth sort: each of the five tests decides a constructed pair; cycles; bad input."""
+
+import numpy as np
+import pytest
+
+import scanline as sl
+from scanline.errors import BSPTooLargeError, DepthSortLoopError
+from scanline.visible import TESTS, ScreenPolygons, depth_sort
+
+from .test_methods import H, W, compare
+
+
+def quad(x0, y0, x1, y1, z00, z10=None, z11=None, z01=None):
+    z10 = z00 if z10 is None else z10
+    z11 = z00 if z11 is None else z11
+    z01 = z00 if z01 is None else z01
+    return np.array([[x0, y0, z00], [x1, y0, z10], [x1, y1, z11], [x0, y1, z01]], float)
+
+
+def decided_by(polys):
+    """The test that decided the first pair compared, and the log."""
+    log = []
+    depth_sort(ScreenPolygons.from_device(polys, W, H), log=log)
+    row = log[0]
+    passed = [name for name in TESTS if row.get(name) == "yes"]
+    return passed, log
+
+
+# S is the first in the sorted list (greatest depth); S' the one compared with it.
+CASES = {
+    # 1: x extents apart, depths overlapping
+    TESTS[0]: [quad(0, 0, 10, 10, 0.5, 0.7, 0.7, 0.5), quad(20, 0, 30, 10, 0.6)],
+    # 2: x extents overlap, y extents apart
+    TESTS[1]: [quad(0, 0, 10, 10, 0.5, 0.7, 0.7, 0.5), quad(5, 20, 15, 28, 0.6)],
+    # 3: S (tilted, far) wholly behind the plane of S' (flat, in front of it)
+    TESTS[2]: [quad(0, 0, 20, 20, 0.75, 0.95, 0.95, 0.75), quad(5, 5, 25, 25, 0.5, 0.5, 0.8,
+                                                              0.8)],
+    # 4: S' wholly in front of the plane of S, S not behind S's plane
+    TESTS[3]: [quad(0, 0, 20, 20, 0.5, 0.9, 0.9, 0.5), quad(10, 5, 30, 15, 0.6)],
+    # 5: bounding boxes overlap, planes straddle, projections apart
+    TESTS[4]: [np.array([[0, 0, 0.5], [20, 0, 0.9], [0, 20, 0.5]], float),
+               np.array([[25, 10, 0.5], [25, 25, 0.5], [11, 25, 0.9]], float)],
+}
+
+
+@pytest.mark.parametrize("test", TESTS)
+def test_each_test_decides_its_case(test):
+    polys = CASES[test]
+    passed, log = decided_by(polys)
+    assert passed == [test], log[0]
+    # the tests before it were tried and failed, in order
+    k = TESTS.index(test)
+    assert [log[0][name] for name in TESTS[:k]] == ["no"] * k
+    assert compare(depth_sort(ScreenPolygons.from_device(polys, W, H)), polys) == []
+
+
+def cyclic():
+    """Three sticks overlapping cyclically: each lies over the next."""
+    a = quad(2, 4, 36, 10, 0.2, 0.2, 0.2, 0.2)
+    a[:, 2] = [0.3, 0.7, 0.7, 0.3]        # near at the left, far at the right
+    b = np.array([[30, 0, 0.3], [36, 4, 0.3], [14, 28, 0.7], [8, 24, 0.7]], float)
+    c = np.array([[4, 14, 0.7], [10, 8, 0.7], [30, 28, 0.3], [24, 30, 0.34]], float)
+    return [a, b, c]
+
+
+def test_cyclic_overlap_split():
+    polys = cyclic()
+    sp = ScreenPolygons.from_device(polys, W, H)
+    log = []
+    out = depth_sort(sp, log=log)
+    assert len(out) > 3                      # something was split
+    assert any("split" in row["action"] for row in log)
+    assert compare(out, polys) == []
+    assert sl.visible.painter(sp) is not None
+    assert compare(sl.visible.painter(sp), polys) != []
+
+
+def test_cycle_without_splitting_is_an_error():
+    sp = ScreenPolygons.from_device(cyclic(), W, H)
+    with pytest.raises(DepthSortLoopError, match="split_cycles=True"):
+        depth_sort(sp, split_cycles=False)
+
+
+def test_intersecting_pair_split():
+    a = quad(2, 2, 30, 20, 0.2, 0.8, 0.8, 0.2)
+    b = quad(5, 5, 35, 25, 0.8, 0.2, 0.2, 0.8)
+    out = depth_sort(ScreenPolygons.from_device([a, b], W, H))
+    assert len(out) >= 3 and sorted(set(out.face.tolist())) == [0, 1]
+    assert compare(out, [a, b]) == []
+
+
+def test_too_many_pieces_is_an_error():
+    with pytest.raises(DepthSortLoopError, match="max_pieces"):
+        depth_sort(ScreenPolygons.from_device(cyclic(), W, H), max_pieces=1)
+
+
+def test_bad_input():
+    with pytest.raises(sl.ArgumentValueError, match="non-finite"):
+        ScreenPolygons.from_device([quad(0, 0, 5, 5, np.nan)], W, H)
+    with pytest.raises(sl.ArgumentValueError, match="not convex"):
+        ScreenPolygons.from_device([np.array([[0, 0, 0], [10, 0, 0], [2, 2, 0], [0, 10, 0]],
+                                             float)], W, H)
+    with pytest.raises(sl.ArgumentValueError, match="not planar"):
+        ScreenPolygons.from_device([quad(0, 0, 5, 5, 0.1, 0.2, 0.1, 0.2)], W, H)
+    with pytest.raises(sl.ArgumentTypeError, match="ScreenPolygons"):
+        depth_sort([quad(0, 0, 5, 5, 0.5)])
+    with pytest.raises(sl.ArgumentValueError, match="method"):
+        sl.visible.render(sl.FrameBuffer(8, 8), sl.mesh.cube(), sl.Camera(), method="nope")
+
+
+def test_bsp_million_coplanar_polygons_bounded():
+    n = 1_000_000
+    rng = np.random.default_rng(0)
+    base = rng.uniform(-1, 1, (n, 2))
+    tri = np.zeros((n, 3, 3))
+    tri[:, 0, :2] = base
+    tri[:, 1, :2] = base + [0.01, 0]
+    tri[:, 2, :2] = base + [0, 0.01]
+    mesh = sl.mesh.Mesh(tri.reshape(-1, 3), np.arange(3 * n).reshape(n, 3))
+    tree = sl.visible.BSPTree(mesh)
+    assert len(tree) == 1 and len(tree.pieces[0]) == n and tree.splits == 0
+    assert len(tree.order((0, 0, 5))) == n
+
+
+def test_bsp_piece_limit():
+    sticks = []
+    for k in range(6):                       # boxes crossing each other: many splits
+        a = np.radians(30 * k)
+        c, s = np.cos(a), np.sin(a)
+        sticks.append(sl.mesh.box((-2, -0.1, -0.1), (2, 0.1, 0.1)).transformed(
+            np.array([[c, -s, 0, 0], [s, c, 0, 0], [0, 0, 1, 0.05 * k], [0, 0, 0, 1]])))
+    with pytest.raises(BSPTooLargeError, match="max_pieces"):
+        sl.visible.BSPTree(sticks, max_pieces=40)

@@ -39,7 +39,12 @@ def render(fb, meshes, camera, method="z-buffer", shading="gouraud", lights=None
     method : str
         A name in :data:`scanline.render.methods.METHODS`: "z-buffer" (Hearn &
         Baker 13-3), "a-buffer" (13-4: fragments per pixel, transparency and
-        antialiased edges), "ray-casting" (13-10: one ray per pixel).
+        antialiased edges), "ray-casting" (13-10: one ray per pixel), "scan-line"
+        (13-5), "area-subdivision" (Warnock, 13-8), "depth-sort" (Newell, Newell and
+        Sancha, 13-6), "bsp" (13-7), "painter" (one depth key per face: the
+        counter-example). See :mod:`scanline.render.hidden` and
+        :mod:`scanline.visible`; ``scanline.render.methods.PRECISION`` says which
+        decide at image and which at object precision.
     shading : {"flat", "gouraud", "phong", "fast-phong"}
         Hearn & Baker, section 14-5 (see :mod:`scanline.shading`).
     lights : list of lights, optional

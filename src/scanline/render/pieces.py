@@ -17,7 +17,7 @@ from ..draw.triangles import rasterize
 from .output import write_visible
 
 
-def _face_functions(scene):
+def face_functions(scene):
     """Per face: the screen-space linear functions (value at the origin, d/dx, d/dy)
     of 1/w, lambda_1/w and lambda_2/w, from the first device triangle of the face;
     NaN for faces without one."""
@@ -45,7 +45,7 @@ def draw_pieces(scene, fb, pieces, faces, options):
                                  f"got {len(faces)}")
     if len(faces) and (faces.min() < 0 or faces.max() >= scene.face_count):
         raise ArgumentValueError(f"faces must index the scene's {scene.face_count} faces")
-    fn = _face_functions(scene)
+    fn = face_functions(scene)
     tris, qs, atts, ids = [], [], [], []
     for piece, face in zip(pieces, faces):
         p = v.real_array("pieces", piece, "(k, 2+)")

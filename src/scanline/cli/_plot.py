@@ -6,6 +6,9 @@ block, as ``FrameBuffer.save(scale=...)`` does) and annotates the enlarged image
 Pillow: a light pixel grid, axis labels, the ideal line or curve, labels in pixels.
 """
 
+import math
+from importlib import resources
+
 from PIL import Image, ImageDraw, ImageFont
 
 GRID = (200, 200, 200)
@@ -17,9 +20,14 @@ INK = (40, 40, 40)
 _SUPERSAMPLE = 4
 
 
+#: The annotations' font: the bundled DejaVu Sans, hinted by FreeType through Pillow
+#: (Pillow's built-in Aileron has no en dash, "Cox–de Boor", and reads poorly small).
+_FONT = str(resources.files("scanline") / "data" / "fonts" / "DejaVuSans.ttf")
+
+
 def font(size):
-    """Pillow's built-in font at ``size`` pixels."""
-    return ImageFont.load_default(size=size)
+    """DejaVu Sans at ``size`` pixels."""
+    return ImageFont.truetype(_FONT, size)
 
 
 def enlarge(image, scale):
@@ -112,14 +120,16 @@ def side_by_side(images, titles, gap=24):
     """Put pictures in a row, each with its title above, on white paper."""
     title_font = font(16)
     head = title_font.size + 10
-    width = sum(im.width for im in images) + gap * (len(images) - 1)
+    # each column as wide as its picture or its title, whichever is wider
+    widths = [max(im.width, math.ceil(title_font.getlength(t)) + 4) for im, t in zip(images, titles)]
+    width = sum(widths) + gap * (len(images) - 1)
     out = Image.new("RGB", (width, head + max(im.height for im in images)), PAPER)
     draw = ImageDraw.Draw(out)
     x = 0
-    for im, title in zip(images, titles):
-        draw.text((x + im.width / 2, 2), title, fill=INK, font=title_font, anchor="mt")
-        out.paste(im.convert("RGB"), (x, head))
-        x += im.width + gap
+    for im, title, w in zip(images, titles, widths):
+        draw.text((x + w / 2, 2), title, fill=INK, font=title_font, anchor="mt")
+        out.paste(im.convert("RGB"), (x + (w - im.width) // 2, head))
+        x += w + gap
     return out
 
 
@@ -137,9 +147,10 @@ def stacked(images, gap=24):
 
 
 def grid_of(images, titles, columns=3, cell=(400, 300), gap=16):
-    """A contact sheet: each picture shrunk to fit ``cell`` with its title below; a
-    last row that is not full is centered."""
-    title_font = font(15)
+    """A contact sheet: each picture shrunk to fit ``cell`` with its title below (large
+    enough to read when the sheet is shown 1000 pixels wide, as in the README); a last
+    row that is not full is centered."""
+    title_font = font(20)
     foot = title_font.size + 12
     rows = -(-len(images) // columns)
     cw, ch = cell

@@ -146,18 +146,32 @@ def stacked(images, gap=24):
     return out
 
 
+def _wrap(text, font_, width):
+    """``text`` broken into lines no wider than ``width`` pixels (at word breaks)."""
+    lines = [""]
+    for word in text.split():
+        candidate = f"{lines[-1]} {word}".strip()
+        if lines[-1] and font_.getlength(candidate) > width:
+            lines.append(word)
+        else:
+            lines[-1] = candidate
+    return lines
+
+
 def grid_of(images, titles, columns=3, cell=(400, 300), gap=16):
-    """A contact sheet: each picture shrunk to fit ``cell`` with its title below (large
-    enough to read when the sheet is shown 1000 pixels wide, as in the README); a last
-    row that is not full is centered."""
+    """A contact sheet: each picture shrunk to fit ``cell`` with its title below,
+    wrapped to the cell's width (large enough to read when the sheet is shown 1000
+    pixels wide, as in the README); a last row that is not full is centered."""
     title_font = font(20)
-    foot = title_font.size + 12
-    rows = -(-len(images) // columns)
     cw, ch = cell
+    wrapped = [_wrap(t, title_font, cw - 8) for t in titles]
+    line_height = title_font.size + 4
+    foot = max(map(len, wrapped)) * line_height + 10
+    rows = -(-len(images) // columns)
     out = Image.new("RGB", (columns * (cw + gap) + gap, rows * (ch + foot + gap) + gap), PAPER)
     draw = ImageDraw.Draw(out)
     last_row = (rows - 1) * columns
-    for i, (im, title) in enumerate(zip(images, titles)):
+    for i, (im, lines) in enumerate(zip(images, wrapped)):
         x0 = gap + (i % columns) * (cw + gap)
         if i >= last_row:
             x0 += (rows * columns - len(images)) * (cw + gap) // 2
@@ -165,5 +179,7 @@ def grid_of(images, titles, columns=3, cell=(400, 300), gap=16):
         thumb = im.convert("RGB")
         thumb.thumbnail(cell, Image.Resampling.LANCZOS)
         out.paste(thumb, (x0 + (cw - thumb.width) // 2, y0 + (ch - thumb.height) // 2))
-        draw.text((x0 + cw / 2, y0 + ch + 6), title, fill=INK, font=title_font, anchor="mt")
+        for k, line in enumerate(lines):
+            draw.text((x0 + cw / 2, y0 + ch + 6 + k * line_height), line, fill=INK,
+                      font=title_font, anchor="mt")
     return out

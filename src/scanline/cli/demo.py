@@ -94,7 +94,7 @@ def page(figures, animated=()):
         "from <code>scanline.draw</code> (the soft-edged disk that the soft fill "
         "starts from is made with numpy, as its caption says); the grids, labels and "
         "red ideal curves are annotations. Each table is <code>scanline trace</code>'s output for the figure "
-        "next to it.</p>",
+        "above it (\"step table\" unfolds it).</p>",
         _STUDIO,
         '<main class="gallery">',
         *sections,

@@ -50,20 +50,21 @@ print(math.pi, rows, table, sl.ScanlineError, sl.Camera, sl.AngleWarning)
 '''
 
 
-def mypy(source, tmp_path):
+def mypy(source, tmp_path, cache):
     if subprocess.run([sys.executable, "-c", "import mypy"]).returncode != 0:
         if os.environ.get("CI") == "true":
             pytest.fail("mypy is not installed (it is in the test extra)")
         pytest.skip("mypy is not installed")
     (tmp_path / "usage.py").write_text(source)
     proc = subprocess.run([sys.executable, "-m", "mypy", "--follow-imports=silent",
-                           "--cache-dir", str(tmp_path / "cache"), "--no-error-summary",
+                           "--cache-dir", str(cache), "--no-error-summary",
                            "usage.py"], cwd=tmp_path, capture_output=True, text=True, timeout=600)
     return proc.stdout.splitlines()
 
 
 def test_mypy_flags_wrong_calls_and_accepts_right_ones(tmp_path):
-    got = mypy(WRONG, tmp_path)
+    cache = tmp_path / "cache"           # one cache: the second run reuses the first's
+    got = mypy(WRONG, tmp_path, cache)
     expected = [
         (4, 'Missing positional argument "r" in call to "circle"'),
         (5, 'Argument "method" to "line" has incompatible type "Literal[\'midpoint\']"'),
@@ -74,4 +75,4 @@ def test_mypy_flags_wrong_calls_and_accepts_right_ones(tmp_path):
     for line, message in expected:
         assert any(g.startswith(f"usage.py:{line}: error: {message}") for g in got), (message, got)
     assert len(got) == len(expected), got
-    assert mypy(RIGHT, tmp_path) == []
+    assert mypy(RIGHT, tmp_path, cache) == []

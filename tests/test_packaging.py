@@ -74,8 +74,10 @@ def test_the_wheel_is_lean(dist):
 
 
 def test_tests_pass_from_the_unpacked_sdist(dist, tmp_path):
-    """A sample of the suite (the notes' examples, interop, a CLI subprocess test and a
-    doctest module) run from the unpacked archive against its own sources."""
+    """A sample of the suite (the notes' worked examples and a doctest module; small,
+    since the unpacked sources compile their kernels afresh) run from the unpacked
+    archive against its own sources.  The whole suite passes there too (issue 16's
+    report: PYTHONPATH=src pytest in the unpacked sdist)."""
     sdist, _ = dist
     with tarfile.open(sdist) as tar:
         tar.extractall(tmp_path, filter="data") if hasattr(tarfile, "data_filter") \
@@ -84,8 +86,7 @@ def test_tests_pass_from_the_unpacked_sdist(dist, tmp_path):
     env = {**os.environ, "PYTHONPATH": str(top / "src")}
     proc = subprocess.run(
         [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider",
-         "tests/test_notes_examples.py", "tests/test_interop.py",
-         "tests/cli/test_small_defects.py", "src/scanline/trace/table.py"],
+         "tests/test_notes_examples.py", "src/scanline/trace/table.py"],
         cwd=top, env=env, capture_output=True, text=True, timeout=900)
     assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-2000:]
     assert "[100%]" in proc.stdout and str(top / "src") in subprocess.run(

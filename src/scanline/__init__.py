@@ -14,8 +14,29 @@ import numba; the compiled kernels load on first use.
 """
 
 import importlib
+from typing import TYPE_CHECKING, Any, List
 
 __version__ = "0.1.0"
+
+if TYPE_CHECKING:   # what the lazy attributes are, for type checkers and editors
+    # ("X as X" marks each as exported; a test keeps this list equal to _LAZY)
+    from . import animation as animation, attributes as attributes, clip as clip
+    from . import color as color, curves as curves, display as display, draw as draw
+    from . import draw3d as draw3d, geometry as geometry, mesh as mesh
+    from . import projection as projection, raster as raster, scene as scene, text as text
+    from . import trace as trace, transform as transform, transform3d as transform3d
+    from . import viewing as viewing
+    from .attributes import FillStyle as FillStyle
+    from .context import Context as Context
+    from .display import DisplayFile as DisplayFile
+    from .errors import AngleWarning as AngleWarning, ArgumentTypeError as ArgumentTypeError
+    from .errors import ArgumentValueError as ArgumentValueError
+    from .errors import ImageFileError as ImageFileError, ScanlineError as ScanlineError
+    from .errors import ScanlineWarning as ScanlineWarning
+    from .framebuffer import FrameBuffer as FrameBuffer, text_image as text_image
+    from .linestyle import LineStyle as LineStyle
+    from .projection import Camera as Camera
+    from .text.style import TextStyle as TextStyle
 
 _LAZY = {
     "FrameBuffer": ("scanline.framebuffer", "FrameBuffer"),
@@ -61,7 +82,7 @@ _LAZY = {
 __all__ = sorted(_LAZY) + ["__version__"]
 
 
-def __getattr__(name):
+def __getattr__(name: str) -> Any:
     try:
         module, attr = _LAZY[name]
     except KeyError:
@@ -73,5 +94,5 @@ def __getattr__(name):
     return value
 
 
-def __dir__():
+def __dir__() -> List[str]:
     return __all__

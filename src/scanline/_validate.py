@@ -10,8 +10,10 @@ import os
 import re
 import sys
 import warnings
+from typing import Any, Iterable, Optional, Sequence, TypeVar
 
 import numpy as np
+from numpy.typing import DTypeLike, NDArray
 
 from .errors import AngleWarning, ArgumentTypeError, ArgumentValueError
 
@@ -21,13 +23,15 @@ from .errors import AngleWarning, ArgumentTypeError, ArgumentValueError
 #: clipped.
 COORD_LIMIT = 2**30
 
+T = TypeVar("T")
 
-def _show(value):
+
+def _show(value: object) -> str:
     text = repr(value)
     return text if len(text) <= 60 else text[:57] + "..."
 
 
-def number(name, value):
+def number(name: str, value: object) -> float:
     """Return ``value`` as a finite float, or raise naming ``name``."""
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
         raise ArgumentTypeError(
@@ -50,16 +54,17 @@ DEGREE_LIKE = 720
 _PACKAGE = os.path.dirname(os.path.abspath(__file__))
 
 
-def _caller_level():
+def _caller_level() -> int:
     """The ``stacklevel`` of the first frame outside scanline: a warning then names
     the user's line, however deep the call that gives it."""
-    frame, level = sys._getframe(1), 1
+    frame: Optional[Any] = sys._getframe(1)
+    level = 1
     while frame is not None and os.path.abspath(frame.f_code.co_filename).startswith(_PACKAGE):
         frame, level = frame.f_back, level + 1
     return level
 
 
-def angle(name, value):
+def angle(name: str, value: object) -> float:
     """Return the angle ``value`` in radians, or raise naming ``name``.
 
     A number is radians (DESIGN.md, convention 3).  A string carries its unit:
@@ -93,7 +98,7 @@ def angle(name, value):
     return a
 
 
-def coordinate(name, value):
+def coordinate(name: str, value: object) -> int:
     """Round a device coordinate to the nearest pixel center (halves round up).
 
     Returns a Python int within +-COORD_LIMIT.
@@ -111,7 +116,7 @@ def coordinate(name, value):
     )
 
 
-def radius(name, value, limit=COORD_LIMIT):
+def radius(name: str, value: object, limit: int = COORD_LIMIT) -> int:
     """Round a radius to an int in [0, limit], or raise naming ``name``."""
     v = value if type(value) is int else math.floor(number(name, value) + 0.5)
     if v < 0:
@@ -121,7 +126,7 @@ def radius(name, value, limit=COORD_LIMIT):
     return v
 
 
-def choice(name, value, options):
+def choice(name: str, value: T, options: Sequence[Any]) -> T:
     """Check that ``value`` is one of ``options`` (a tuple of strings)."""
     if isinstance(value, str) and value in options:
         return value
@@ -129,7 +134,7 @@ def choice(name, value, options):
     raise ArgumentValueError(f"{name} must be one of {listed}; got {_show(value)}")
 
 
-def positive_int(name, value, minimum=1):
+def positive_int(name: str, value: object, minimum: int = 1) -> int:
     """Check an integer size argument (``width``, ``height`` ...)."""
     if isinstance(value, bool) or not isinstance(value, numbers.Integral):
         raise ArgumentTypeError(
@@ -140,7 +145,8 @@ def positive_int(name, value, minimum=1):
     return int(value)
 
 
-def coordinate_array(name, value, columns, radius_columns=()):
+def coordinate_array(name: str, value: object, columns: int,
+                     radius_columns: Iterable[int] = ()) -> NDArray[np.int64]:
     """Convert an (N, columns) array of primitives to int64, rounding to pixels.
 
     ``radius_columns`` lists the columns that hold radii, which must be >= 0.
@@ -330,16 +336,16 @@ def counts(name, value, total, total_name):
     return c, offsets
 
 
-def kernel_array(a, dtype=np.float64):
+def kernel_array(a: Any, dtype: DTypeLike = np.float64) -> NDArray[Any]:
     """``a`` as the kernels take arrays: C-contiguous, writable, of ``dtype`` (a copy
     only where one of those is missing).  numba compiles a separate specialization
     for a read-only or non-contiguous array, so every array reaches a kernel this way
     (the compile-time rule of :mod:`scanline._kernels`, rule 2)."""
-    a = np.ascontiguousarray(a, dtype)
-    return a if a.flags.writeable else a.copy()
+    out: NDArray[Any] = np.ascontiguousarray(a, dtype)
+    return out if out.flags.writeable else out.copy()
 
 
-def real_array(name, value, expected):
+def real_array(name: str, value: object, expected: str) -> NDArray[np.float64]:
     """``value`` as a float64 array (not copied when it is one), or an error naming
     ``name``; ``expected`` describes the shape that would work, for the message."""
     try:

@@ -27,9 +27,12 @@ import os
 import signal
 import tempfile
 import threading
+from typing import Any, BinaryIO, Callable, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 from PIL import Image
+
+from ._typing import ArrayLike, Color, Mode, NDArray
 
 from . import _validate as v
 from . import imagefile
@@ -107,7 +110,7 @@ def _terminate_cleanly():
         signal.signal(signal.SIGTERM, signal.SIG_DFL)
 
 
-def write_atomically(path, write):
+def write_atomically(path: Union[str, "os.PathLike[str]"], write: Callable[[BinaryIO], Any]) -> None:
     """Call ``write(file)`` on a temporary file beside ``path``, then rename it.
 
     A failure (an exception from ``write``, a full disk, Ctrl-C, SIGTERM) leaves
@@ -200,7 +203,8 @@ class FrameBuffer:
            [255,   0,   0,   0]], dtype=uint8)
     """
 
-    def __init__(self, width, height, mode="RGB", background="black", color_table=None):
+    def __init__(self, width: int, height: int, mode: Mode = "RGB", background: Color = "black",
+                 color_table: Optional[Sequence[Color]] = None) -> None:
         width = v.positive_int("width", width)
         height = v.positive_int("height", height)
         v.choice("mode", mode, MODES)
@@ -232,32 +236,32 @@ class FrameBuffer:
 
     # -- properties -------------------------------------------------------------------
     @property
-    def width(self):
+    def width(self) -> int:
         """Width in pixels."""
         return self._width
 
     @property
-    def height(self):
+    def height(self) -> int:
         """Height in pixels."""
         return self._height
 
     @property
-    def size(self):
+    def size(self) -> Tuple[int, int]:
         """``(width, height)``."""
         return (self._width, self._height)
 
     @property
-    def mode(self):
+    def mode(self) -> Mode:
         """Pixel format: ``"1"``, ``"L"``, ``"RGB"``, ``"RGBA"`` or ``"P"``."""
         return self._mode
 
     @property
-    def bits_per_pixel(self):
+    def bits_per_pixel(self) -> int:
         """Bits of frame-buffer memory per pixel: 1, 8, 24, 32 or 8 (``"P"``)."""
         return _BITS[self._mode]
 
     @property
-    def nbytes(self):
+    def nbytes(self) -> int:
         """Memory size of the pixel storage in bytes (mode ``"1"`` rows are padded to
         whole bytes; the color table of mode ``"P"`` is not counted).
 
@@ -266,11 +270,11 @@ class FrameBuffer:
         """
         return self._buf.nbytes
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"FrameBuffer({self._width}, {self._height}, mode={self._mode!r})"
 
     @property
-    def foreground(self):
+    def foreground(self) -> Color:
         """The color drawn where no color is given (``color=None``, the default of
         every drawing function): white on a dark background, black on a light one
         (luma below 128 is dark, in mode ``"1"`` the bit 0), so that a default drawing
@@ -288,7 +292,7 @@ class FrameBuffer:
         return "white" if dark else "black"
 
     # -- colors -----------------------------------------------------------------------
-    def pixel(self, color, name="color"):
+    def pixel(self, color: Color, name: str = "color") -> Tuple[int, ...]:
         """Return the stored channel values of ``color`` as a uint8 array.
 
         In mode ``"P"`` an integer is a color-table index; any other color is looked
@@ -336,7 +340,7 @@ class FrameBuffer:
         return len(self._table) - 1
 
     @property
-    def color_table(self):
+    def color_table(self) -> NDArray[np.uint8]:
         """Mode ``"P"``: a copy of the color table, shape (n, 3), uint8 RGB.
 
         Assigning a sequence of colors replaces the table; the stored indices stay,
@@ -346,7 +350,7 @@ class FrameBuffer:
         return self._table.copy()
 
     @color_table.setter
-    def color_table(self, colors):
+    def color_table(self, colors: Sequence[Color]) -> None:
         self._require_p("color_table")
         colors = list(colors)
         if not 1 <= len(colors) <= 256:
@@ -360,7 +364,7 @@ class FrameBuffer:
         self._table = table
         self._cache.clear()
 
-    def set_table_entry(self, index, color):
+    def set_table_entry(self, index: int, color: Color) -> None:
         """Mode ``"P"``: set color-table entry ``index`` to ``color`` (recolors every
         pixel that stores that index).  ``index`` may be the next free entry."""
         self._require_p("set_table_entry")
@@ -385,7 +389,7 @@ class FrameBuffer:
         or in mode ``"1"`` the byte holding it (most significant bit first)."""
         return self._buf, self._mode == "1"
 
-    def clear(self, color=None):
+    def clear(self, color: Optional[Color] = None) -> None:
         """Set every pixel to ``color`` (default: the background)."""
         value = self._background if color is None else self.pixel(color)
         if self._mode == "1":
@@ -402,7 +406,7 @@ class FrameBuffer:
         y = v.coordinate("y", y)
         return x, y, 0 <= x < self._width and 0 <= y < self._height
 
-    def set_pixel(self, x, y, color):
+    def set_pixel(self, x: float, y: float, color: Color) -> None:
         """Set pixel ``(x, y)`` to ``color``.
 
         One rule for both pixel methods, the rule of every drawing operation: a
@@ -422,7 +426,7 @@ class FrameBuffer:
         else:
             self._buf[y, x] = value
 
-    def get_pixel(self, x, y, default=None):
+    def get_pixel(self, x: float, y: float, default: Any = None) -> Any:
         """Return pixel ``(x, y)``: an int in modes ``"1"``, ``"L"`` and ``"P"`` (bit,
         gray level, color-table index), a tuple in ``"RGB"`` and ``"RGBA"``.
 
@@ -442,7 +446,7 @@ class FrameBuffer:
         return int(values[0]) if values.size == 1 else tuple(int(c) for c in values)
 
     # -- arrays and images --------------------------------------------------------------
-    def __array__(self, dtype=None, copy=None):
+    def __array__(self, dtype: Any = None, copy: Optional[bool] = None) -> NDArray[Any]:
         """The numpy array protocol: ``np.asarray(fb)`` is the image in image order,
         as :meth:`to_array` gives it.
 
@@ -478,7 +482,7 @@ class FrameBuffer:
             a = a.astype(dtype)
         return a
 
-    def to_array(self):
+    def to_array(self) -> NDArray[np.uint8]:
         """A copy of the pixels in image order (top row first).
 
         Shape (height, width) for modes ``"1"`` (bool), ``"L"`` and ``"P"`` (uint8
@@ -492,7 +496,8 @@ class FrameBuffer:
         return rows.copy()
 
     @classmethod
-    def from_array(cls, array, mode=None, color_table=None):
+    def from_array(cls, array: ArrayLike, mode: Optional[Mode] = None,
+                   color_table: Optional[Sequence[Color]] = None) -> "FrameBuffer":
         """Make a frame buffer from an image-order array (the inverse of :meth:`to_array`).
 
         The mode follows from the array's shape: 2-D -> ``"L"`` (bool: ``"1"``; or
@@ -562,7 +567,7 @@ class FrameBuffer:
             fb._buf[...] = a[::-1].reshape(fb._buf.shape)
         return fb
 
-    def to_pil(self):
+    def to_pil(self) -> Image.Image:
         """The image as a Pillow ``Image`` (modes map one to one)."""
         h, w = self._height, self._width
         if self._mode == "1":
@@ -574,7 +579,7 @@ class FrameBuffer:
         return Image.fromarray(self.to_array())
 
     @classmethod
-    def from_pil(cls, image):
+    def from_pil(cls, image: Image.Image) -> "FrameBuffer":
         """Make a frame buffer from a Pillow ``Image``.  Modes ``1``, ``L``, ``P``,
         ``RGB`` and ``RGBA`` map directly (a ``P`` image with a transparent color
         becomes ``RGBA``); 16-bit gray (``I;16``, and ``I`` holding 0..65535) keeps
@@ -612,7 +617,7 @@ class FrameBuffer:
         return cls.from_array(np.array(image))
 
     @classmethod
-    def open(cls, file):
+    def open(cls, file: Union[str, "os.PathLike[str]", BinaryIO]) -> "FrameBuffer":
         """Read an image file: any format Pillow reads (PNG, JPEG, GIF, BMP, TIFF, WebP,
         ...), from a path or a binary file object; an animated file gives its first
         frame.  The mode follows the image, as in :meth:`from_pil`.
@@ -624,7 +629,8 @@ class FrameBuffer:
         with imagefile.read(file) as image:
             return cls.from_pil(image)
 
-    def save(self, file, format=None, *, scale=1, **options):
+    def save(self, file: Union[str, "os.PathLike[str]", BinaryIO], format: Optional[str] = None, *,
+             scale: int = 1, **options: Any) -> None:
         """Write the image to ``file``, a path or a binary file object.
 
         ``format`` is any format Pillow writes (``"png"``, ``"jpeg"``, ``"webp"``,
@@ -688,7 +694,7 @@ def _unit_floats(a):
     return np.floor(a * 255 + 0.5).astype(np.uint8)
 
 
-def text_image(fb, on="#", off="-"):
+def text_image(fb: "FrameBuffer", on: str = "#", off: str = "-") -> str:
     """The frame buffer as text, top row first: ``on`` where a pixel differs from
     the background, ``off`` elsewhere.  Handy in doctests and terminals.
 

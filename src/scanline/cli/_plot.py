@@ -6,6 +6,9 @@ block, as ``FrameBuffer.save(scale=...)`` does) and annotates the enlarged image
 Pillow: a light pixel grid, axis labels, the ideal line or curve, labels in pixels.
 """
 
+import math
+from importlib import resources
+
 from PIL import Image, ImageDraw, ImageFont
 
 GRID = (200, 200, 200)
@@ -17,9 +20,14 @@ INK = (40, 40, 40)
 _SUPERSAMPLE = 4
 
 
+#: The annotations' font: the bundled DejaVu Sans, hinted by FreeType through Pillow
+#: (Pillow's built-in Aileron has no en dash, "Cox–de Boor", and reads poorly small).
+_FONT = str(resources.files("scanline") / "data" / "fonts" / "DejaVuSans.ttf")
+
+
 def font(size):
-    """Pillow's built-in font at ``size`` pixels."""
-    return ImageFont.load_default(size=size)
+    """DejaVu Sans at ``size`` pixels."""
+    return ImageFont.truetype(_FONT, size)
 
 
 def enlarge(image, scale):
@@ -112,14 +120,16 @@ def side_by_side(images, titles, gap=24):
     """Put pictures in a row, each with its title above, on white paper."""
     title_font = font(16)
     head = title_font.size + 10
-    width = sum(im.width for im in images) + gap * (len(images) - 1)
+    # each column as wide as its picture or its title, whichever is wider
+    widths = [max(im.width, math.ceil(title_font.getlength(t)) + 4) for im, t in zip(images, titles)]
+    width = sum(widths) + gap * (len(images) - 1)
     out = Image.new("RGB", (width, head + max(im.height for im in images)), PAPER)
     draw = ImageDraw.Draw(out)
     x = 0
-    for im, title in zip(images, titles):
-        draw.text((x + im.width / 2, 2), title, fill=INK, font=title_font, anchor="mt")
-        out.paste(im.convert("RGB"), (x, head))
-        x += im.width + gap
+    for im, title, w in zip(images, titles, widths):
+        draw.text((x + w / 2, 2), title, fill=INK, font=title_font, anchor="mt")
+        out.paste(im.convert("RGB"), (x + (w - im.width) // 2, head))
+        x += w + gap
     return out
 
 
@@ -136,17 +146,32 @@ def stacked(images, gap=24):
     return out
 
 
+def _wrap(text, font_, width):
+    """``text`` broken into lines no wider than ``width`` pixels (at word breaks)."""
+    lines = [""]
+    for word in text.split():
+        candidate = f"{lines[-1]} {word}".strip()
+        if lines[-1] and font_.getlength(candidate) > width:
+            lines.append(word)
+        else:
+            lines[-1] = candidate
+    return lines
+
+
 def grid_of(images, titles, columns=3, cell=(400, 300), gap=16):
-    """A contact sheet: each picture shrunk to fit ``cell`` with its title below; a
-    last row that is not full is centered."""
-    title_font = font(15)
-    foot = title_font.size + 12
-    rows = -(-len(images) // columns)
+    """A contact sheet: each picture shrunk to fit ``cell`` with its title below,
+    wrapped to the cell's width (large enough to read when the sheet is shown 1000
+    pixels wide, as in the README); a last row that is not full is centered."""
+    title_font = font(20)
     cw, ch = cell
+    wrapped = [_wrap(t, title_font, cw - 8) for t in titles]
+    line_height = title_font.size + 4
+    foot = max(map(len, wrapped)) * line_height + 10
+    rows = -(-len(images) // columns)
     out = Image.new("RGB", (columns * (cw + gap) + gap, rows * (ch + foot + gap) + gap), PAPER)
     draw = ImageDraw.Draw(out)
     last_row = (rows - 1) * columns
-    for i, (im, title) in enumerate(zip(images, titles)):
+    for i, (im, lines) in enumerate(zip(images, wrapped)):
         x0 = gap + (i % columns) * (cw + gap)
         if i >= last_row:
             x0 += (rows * columns - len(images)) * (cw + gap) // 2
@@ -154,5 +179,7 @@ def grid_of(images, titles, columns=3, cell=(400, 300), gap=16):
         thumb = im.convert("RGB")
         thumb.thumbnail(cell, Image.Resampling.LANCZOS)
         out.paste(thumb, (x0 + (cw - thumb.width) // 2, y0 + (ch - thumb.height) // 2))
-        draw.text((x0 + cw / 2, y0 + ch + 6), title, fill=INK, font=title_font, anchor="mt")
+        for k, line in enumerate(lines):
+            draw.text((x0 + cw / 2, y0 + ch + 6 + k * line_height), line, fill=INK,
+                      font=title_font, anchor="mt")
     return out

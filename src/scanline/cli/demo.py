@@ -20,16 +20,20 @@ from .warmup import jobs_argument
 DEFAULT_DIR = "scanline-demo"
 
 _STYLE = """
-body { font-family: system-ui, sans-serif; max-width: 75rem; margin: 2rem auto;
+body { font-family: system-ui, sans-serif; max-width: 120rem; margin: 1.5rem auto;
        padding: 0 1rem; color: #222; }
-section { display: flex; flex-wrap: wrap; gap: 1.5rem; align-items: flex-start;
-          border-top: 1px solid #ddd; padding: 1.5rem 0; }
-figure { margin: 0; max-width: 42rem; }
-img { max-width: 100%; }
-figcaption { margin-top: .5rem; line-height: 1.4; }
+.gallery { display: grid; gap: 1.25rem;
+           grid-template-columns: repeat(auto-fill, minmax(min(100%, 24rem), 1fr)); }
+.gallery section { border: 1px solid #ddd; border-radius: .4rem; padding: .75rem;
+                   min-width: 0; background: #fff; }
+figure { margin: 0; }
+img { display: block; max-width: 100%; height: auto; margin: 0 auto; }
+figcaption { margin-top: .5rem; line-height: 1.4; font-size: .92rem; }
 .source { color: #666; font-style: italic; }
-pre { font-size: .8rem; background: #f6f6f6; padding: .75rem; overflow-x: auto;
-      margin: 0; max-width: 100%; }
+details { margin-top: .5rem; }
+summary { cursor: pointer; color: #345; }
+pre { font-size: .75rem; background: #f6f6f6; padding: .5rem; overflow-x: auto;
+      margin: .25rem 0 0; max-height: 24rem; }
 """
 
 
@@ -67,7 +71,8 @@ def page(figures, animated=()):
     sections = []
     for index, fig in enumerate(figures):
         letter = label(index)
-        table = f"\n<pre>{html.escape(fig.table)}</pre>" if fig.table else ""
+        table = (f"\n<details><summary>step table</summary><pre>{html.escape(fig.table)}"
+                 f"</pre></details>") if fig.table else ""
         if fig.name in animated:
             table += f'\n<p><a href="{fig.name}.gif">{fig.name}.gif</a> (animated)</p>'
         sections.append(
@@ -80,6 +85,7 @@ def page(figures, animated=()):
         )
     return "\n".join([
         '<!DOCTYPE html>\n<html lang="en">\n<head>\n<meta charset="utf-8">',
+        '<meta name="viewport" content="width=device-width, initial-scale=1">',
         "<title>scanline demo</title>",
         f"<style>{_STYLE}</style>\n</head>\n<body>",
         "<h1>scanline demo</h1>",
@@ -88,10 +94,11 @@ def page(figures, animated=()):
         "from <code>scanline.draw</code> (the soft-edged disk that the soft fill "
         "starts from is made with numpy, as its caption says); the grids, labels and "
         "red ideal curves are annotations. Each table is <code>scanline trace</code>'s output for the figure "
-        "next to it.</p>",
+        "above it (\"step table\" unfolds it).</p>",
         _STUDIO,
+        '<main class="gallery">',
         *sections,
-        "</body>\n</html>\n",
+        "</main>\n</body>\n</html>\n",
     ])
 
 

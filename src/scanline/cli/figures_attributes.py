@@ -31,10 +31,16 @@ def figure_line_types():
         sl.draw.polyline(fb, zigzag, color=PIXEL, dash=dash)
         panels.append(enlarge(fb.to_pil(), 3))
         titles.append(title)
+    # thick: each mask bit is `width` units of arc length; round caps make the dots
+    # round (a dot of the mask 0b1010... would be a 4 x 4 square turned along the path),
+    # with lengths that leave a gap after the caps
+    thick_rows = [("dashed", "dashed"), ("dots (0.5, 9.5)", (0.5, 9.5)),
+                  ("dash-dot (16, 6, 0.5, 6)", (16, 6, 0.5, 6))]
     thick = []
-    for title, dash in rows[1:4]:
+    for title, dash in thick_rows:
         fb = sl.FrameBuffer(115, 31, background=PAPER)
-        sl.draw.polyline(fb, zigzag, color=SECOND, dash=dash, width=4, join="round")
+        sl.draw.polyline(fb, zigzag, color=SECOND, dash=dash, width=4, join="round",
+                         cap="round")
         thick.append(enlarge(fb.to_pil(), 3))
     return Figure(
         "line-types", "Line types: pixel masks along the Bresenham path, dash lengths",
@@ -45,10 +51,11 @@ def figure_line_types():
         "round the corners. Dash lengths are measured along the path in pixels, so "
         "steep and shallow segments get dashes of the same length. Width 4 (green): "
         "each mask bit stands for one line width of length, and every dash is a thick "
-        "polyline with caps and joins of its own.",
+        "polyline with caps and joins of its own; with round caps a short dash (0.5) is a "
+        "round dot, and each gap must exceed the line width to show.",
         "Notes, syllabus: Line attributes - Line type (Hearn & Baker, section 4-1)",
         stacked([side_by_side(panels[:3], titles[:3]), side_by_side(panels[3:], titles[3:]),
-                 side_by_side(thick, [f"width 4, {t}" for t, _ in rows[1:4]])]),
+                 side_by_side(thick, [f"width 4, round caps, {t}" for t, _ in thick_rows])]),
         None)
 
 

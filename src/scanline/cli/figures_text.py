@@ -31,7 +31,8 @@ def figure_fonts():
     for font, aa, title in (("stroke", False, "stroke: polylines drawn as lines"),
                             ("sans", False, "outline: DejaVu Sans, scan-line fill"),
                             ("sans", True, "outline, antialiased")):
-        fb = sl.FrameBuffer(150, 24, background=PAPER)
+        box = sl.text.extents(text, font=font, height=10).box       # the string's own width
+        fb = sl.FrameBuffer(math.ceil(box[2]) + 6, 24, background=PAPER)
         sl.draw.text(fb, 2, 6, text, font=font, height=10, color=INK, antialias=aa)
         panels.append(enlarge(fb.to_pil(), 3))
         titles.append(title)
@@ -57,7 +58,7 @@ def figure_text_attributes():
     panels, titles = [], []
     fb = sl.FrameBuffer(220, 70, background=PAPER)
     for k, h in enumerate((8, 14, 22)):
-        sl.draw.text(fb, 6, 50 - 22 * k, f"height {h}", height=h, color=INK)
+        sl.draw.text(fb, 6, 50 - 22 * k, f"height {h}", height=h, color=INK, antialias=h < 10)
     panels.append(fb.to_pil())
     titles.append("height (cap height, px)")
     fb = sl.FrameBuffer(220, 70, background=PAPER)
@@ -88,7 +89,8 @@ def figure_text_attributes():
     for i, v in enumerate(("top", "cap", "half", "base", "bottom")):
         for j, h in enumerate(("left", "center", "right")):
             x, y = 60 + 130 * j, 150 - 32 * i
-            sl.draw.text(fb, x, y, f"{h}/{v}", height=9, align=(h, v), color=INK)
+            sl.draw.text(fb, x, y, f"{h}/{v}", height=10, align=(h, v), color=INK,
+                         antialias=True)          # small unhinted outlines read only antialiased
             _mark(fb, x, y)
     panels.append(fb.to_pil())
     titles.append("alignment (red: the reference point)")

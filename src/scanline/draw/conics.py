@@ -1,5 +1,7 @@
 """Circles and ellipses by the midpoint method (notes, chapter 2, Q.4-Q.6)."""
 
+from typing import TYPE_CHECKING, Any, Optional
+
 import numpy as np
 
 from .. import _validate as v
@@ -9,6 +11,11 @@ from .._kernels.variants import layout
 from ..errors import ArgumentValueError
 from . import strokes
 from ._common import colors, target
+from .._typing import Cap, Color, Join
+
+if TYPE_CHECKING:
+    from ..framebuffer import FrameBuffer
+    from ..linestyle import LineStyle
 
 
 #: Ellipse limits: the decision parameters stay exact in 64-bit integers while
@@ -17,8 +24,10 @@ ELLIPSE_AXIS_LIMIT = 2**24
 ELLIPSE_PRODUCT_LIMIT = 2**29
 
 
-def circle(fb, xc, yc, r, color=None, *, style=None, antialias=False, width=None, cap=None,
-           join=None, miter_limit=None, dash=None, dash_phase=None, pen=None):
+def circle(fb: "FrameBuffer", xc: float, yc: float, r: float, color: Optional[Color] = None,
+           *, style: Optional["LineStyle"] = None, antialias: bool = False, width: Optional[float] = None,
+           cap: Optional[Cap] = None, join: Optional[Join] = None, miter_limit: Optional[float] = None,
+           dash: Any = None, dash_phase: Optional[float] = None, pen: Any = None) -> None:
     """Draw the circle of radius ``r`` about ``(xc, yc)`` by the midpoint algorithm.
 
     Parameters
@@ -106,8 +115,11 @@ def _check_ellipse(rx, ry, name="rx * ry"):
         )
 
 
-def ellipse(fb, xc, yc, rx, ry, color=None, *, style=None, antialias=False, width=None, cap=None,
-            join=None, miter_limit=None, dash=None, dash_phase=None, pen=None):
+def ellipse(fb: "FrameBuffer", xc: float, yc: float, rx: float, ry: float,
+            color: Optional[Color] = None,
+            *, style: Optional["LineStyle"] = None, antialias: bool = False, width: Optional[float] = None,
+            cap: Optional[Cap] = None, join: Optional[Join] = None, miter_limit: Optional[float] = None,
+            dash: Any = None, dash_phase: Optional[float] = None, pen: Any = None) -> None:
     """Draw the axis-aligned ellipse with semi-axes ``rx``, ``ry`` about ``(xc, yc)``
     by the midpoint algorithm.
 

@@ -1,5 +1,7 @@
 """Straight lines: ``line`` and ``lines`` (notes, chapter 2, Q.1-Q.3, Q.7)."""
 
+from typing import TYPE_CHECKING, Any, Optional
+
 import numpy as np
 
 from .. import _validate as v
@@ -9,6 +11,11 @@ from .._kernels.variants import layout, token
 from ..errors import ArgumentValueError
 from . import strokes
 from ._common import colors, target
+from .._typing import ArrayLike, Cap, Color, Join, LineMethod
+
+if TYPE_CHECKING:
+    from ..framebuffer import FrameBuffer
+    from ..linestyle import LineStyle
 
 METHODS = {"bresenham": token(k.BRESENHAM), "dda": token(k.DDA)}
 
@@ -35,9 +42,11 @@ def _attributes_need_bresenham(code):
             "method='bresenham'")
 
 
-def line(fb, x0, y0, x1, y1, color=None, method="bresenham", *, style=None,
-         antialias=False, width=None, cap=None, join=None, miter_limit=None, dash=None,
-         dash_phase=None, pen=None):
+def line(fb: "FrameBuffer", x0: float, y0: float, x1: float, y1: float,
+         color: Optional[Color] = None, method: LineMethod = "bresenham",
+         *, style: Optional["LineStyle"] = None, antialias: bool = False, width: Optional[float] = None,
+         cap: Optional[Cap] = None, join: Optional[Join] = None, miter_limit: Optional[float] = None,
+         dash: Any = None, dash_phase: Optional[float] = None, pen: Any = None) -> None:
     """Draw the line segment from (x0, y0) to (x1, y1), both endpoints included.
 
     Parameters
@@ -99,9 +108,11 @@ def line(fb, x0, y0, x1, y1, color=None, method="bresenham", *, style=None,
          layout(packed), width, height, x0, y0, x1, y1, fb.pixel(color), code)
 
 
-def lines(fb, segments, color=None, method="bresenham", *, style=None, antialias=False,
-          width=None, cap=None, join=None, miter_limit=None, dash=None, dash_phase=None,
-          pen=None):
+def lines(fb: "FrameBuffer", segments: ArrayLike, color: Any = None,
+          method: LineMethod = "bresenham",
+          *, style: Optional["LineStyle"] = None, antialias: bool = False, width: Optional[float] = None,
+          cap: Optional[Cap] = None, join: Optional[Join] = None, miter_limit: Optional[float] = None,
+          dash: Any = None, dash_phase: Optional[float] = None, pen: Any = None) -> None:
     """Draw N line segments in one compiled call.
 
     Parameters

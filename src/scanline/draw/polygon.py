@@ -1,6 +1,8 @@
 """Filled polygons by the scan-line algorithm: ``polygon`` and ``polygons`` (notes,
 chapter 2, Q.8; Hearn & Baker, section 3-11)."""
 
+from typing import TYPE_CHECKING, Any, Optional
+
 import numpy as np
 
 from .. import _validate as v
@@ -11,6 +13,11 @@ from ..errors import ArgumentValueError
 from ..geometry import contours as parse
 from . import _blend
 from ._common import area_work, colors, target
+from .._typing import Color, Rule
+
+if TYPE_CHECKING:
+    from ..framebuffer import FrameBuffer
+    from ..attributes import FillStyle
 
 RULES = {"even-odd": k.EVEN_ODD, "nonzero": k.NONZERO}
 
@@ -60,7 +67,9 @@ def _solid_only(style):
         )
 
 
-def polygon(fb, points, color=None, rule="even-odd", style=None, antialias=False):
+def polygon(fb: "FrameBuffer", points: Any, color: Optional[Color] = None,
+            rule: Rule = "even-odd", style: Optional["FillStyle"] = None,
+            antialias: bool = False) -> None:
     """Fill a polygon by the scan-line algorithm.
 
     Parameters

@@ -8,19 +8,21 @@ that they can be named from any folder: ``sl.scene.example("rotation")``,
 """
 
 import itertools
+import os
 import shutil
 from importlib import resources
 from pathlib import Path
+from typing import Dict, List, Union
 
 from .. import _validate as v
 from ..errors import ArgumentValueError
 
 
-def _folder():
+def _folder() -> Path:
     return Path(str(resources.files("scanline") / "data" / "scenes"))
 
 
-def examples():
+def examples() -> Dict[str, str]:
     """{name: summary} of the bundled scene files, by name; the summary is the first
     sentence of the file's opening comment."""
     out = {}
@@ -32,7 +34,7 @@ def examples():
     return out
 
 
-def _first_clause(text):
+def _first_clause(text: str) -> str:
     """``text`` up to its first ``.`` or ``:`` outside parentheses that ends a clause."""
     depth = 0
     for i, c in enumerate(text):
@@ -42,7 +44,7 @@ def _first_clause(text):
     return text
 
 
-def example(name):
+def example(name: str) -> Path:
     """The path of the bundled scene file ``name`` (``"rotation"`` or
     ``"rotation.toml"``); a name that is none of them is refused, listing them."""
     if not isinstance(name, str):
@@ -56,7 +58,7 @@ def example(name):
     return path
 
 
-def copy_examples(folder):
+def copy_examples(folder: Union[str, "os.PathLike[str]"]) -> List[Path]:
     """Copy every bundled scene file into ``folder`` (created if needed); files that
     exist there already are refused, and nothing is copied.  Returns the new paths."""
     folder = Path(folder)

@@ -4,9 +4,10 @@ import csv
 import io
 import json
 import math
+from typing import Any, Dict, Iterable, List, Optional, Set, Tuple
 
 
-def _cell(value):
+def _cell(value: object) -> str:
     """A value as the table prints it: floats to 6 decimals, except one whose
     6-decimal form would round (half up, as the pixels do) to another integer than
     the value itself -- the DDA's 3.4999999999999996 reads as 3.5 but rounds to 3 --
@@ -40,24 +41,25 @@ class Table:
         One dict per step.
     """
 
-    def __init__(self, title, columns, rows, notes=(), pixels=()):
+    def __init__(self, title: str, columns: Iterable[str], rows: Iterable[Dict[str, Any]],
+                 notes: Iterable[str] = (), pixels: Iterable[Tuple[int, int]] = ()) -> None:
         self.title = title
         self.columns = list(columns)
         self.rows = list(rows)
         self.notes = list(notes)
         self._pixels = frozenset(pixels)
 
-    def pixels(self):
+    def pixels(self) -> Set[Tuple[int, int]]:
         """The set of (x, y) pixels that the algorithm plots, symmetry included."""
         return set(self._pixels)
 
-    def __len__(self):
+    def __len__(self) -> int:
         return len(self.rows)
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"<Table {self.title!r}: {len(self.rows)} rows>"
 
-    def __str__(self):
+    def __str__(self) -> str:
         cells = [[_cell(r.get(c)) for c in self.columns] for r in self.rows]
         widths = [max([len(c)] + [len(row[i]) for row in cells]) for i, c in enumerate(self.columns)]
         line = "  ".join(c.rjust(w) for c, w in zip(self.columns, widths))
@@ -65,11 +67,11 @@ class Table:
         out += ["  ".join(v.rjust(w) for v, w in zip(row, widths)) for row in cells]
         return "\n".join(out)
 
-    def to_json(self, indent=None):
+    def to_json(self, indent: Optional[int] = None) -> str:
         """The rows as a JSON list of objects keyed by the column names."""
         return json.dumps(self.rows, indent=indent)
 
-    def to_csv(self):
+    def to_csv(self) -> str:
         """The rows as CSV text with a header line."""
         out = io.StringIO()
         writer = csv.DictWriter(out, fieldnames=self.columns, lineterminator="\n")

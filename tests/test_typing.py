@@ -1,0 +1,78 @@
+"""Types for editors and type checkers (issue 16, item 4): the lazy attributes are
+visible to type checkers through ``import scanline as sl``, and the annotated entry
+points flag wrong calls.  (``mypy`` on the stated --strict subset of pyproject.toml is
+a step of .ci/run.)"""
+
+import ast
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+import scanline
+
+ROOT = Path(scanline.__file__).resolve().parent
+
+
+def test_type_checking_block_names_every_lazy_attribute():
+    tree = ast.parse((ROOT / "__init__.py").read_text())
+    block = next(node for node in tree.body if isinstance(node, ast.If)
+                 and getattr(node.test, "id", None) == "TYPE_CHECKING")
+    names = {alias.asname for node in block.body for alias in node.names}
+    assert all(alias.asname == alias.name for node in block.body for alias in node.names)
+    assert names == set(scanline._LAZY)
+
+
+WRONG = '''
+import scanline as sl
+fb = sl.FrameBuffer(16, 16, mode="RGB")
+sl.draw.circle(fb, 1, 2)
+sl.draw.line(fb, 0, 0, 5, 5, method="midpoint")
+sl.FrameBuffer(4, 4, mode="XYZ")
+sl.draw.polygon(fb, [(0, 0), (4, 0), (0, 4)], rule="odd")
+sl.draw.nosuch(fb)
+'''
+RIGHT = '''
+import math
+import scanline as sl
+fb = sl.FrameBuffer(16, 16, mode="L", background="white")
+sl.draw.circle(fb, 8, 8, 5, color=(0.2, 0.4, 1.0), width=2, cap="round")
+sl.draw.line(fb, 0, 0, 5, 5, method="dda", join="bevel")
+sl.draw.polygon(fb, [(0, 0), (4, 0), (0, 4)], rule="nonzero")
+image = fb.to_array()
+rows: int = image.shape[0]
+fb.save("out.png")
+sl.draw.text(fb, 1, 1, "Hi", angle="30deg")
+table = sl.trace.bresenham(0, 0, 3, 7)
+print(math.pi, rows, table, sl.ScanlineError, sl.Camera, sl.AngleWarning)
+'''
+
+
+def mypy(source, tmp_path, cache):
+    if subprocess.run([sys.executable, "-c", "import mypy"]).returncode != 0:
+        if os.environ.get("CI") == "true":
+            pytest.fail("mypy is not installed (it is in the test extra)")
+        pytest.skip("mypy is not installed")
+    (tmp_path / "usage.py").write_text(source)
+    proc = subprocess.run([sys.executable, "-m", "mypy", "--follow-imports=silent",
+                           "--cache-dir", str(cache), "--no-error-summary",
+                           "usage.py"], cwd=tmp_path, capture_output=True, text=True, timeout=600)
+    return proc.stdout.splitlines()
+
+
+def test_mypy_flags_wrong_calls_and_accepts_right_ones(tmp_path):
+    cache = tmp_path / "cache"           # one cache: the second run reuses the first's
+    got = mypy(WRONG, tmp_path, cache)
+    expected = [
+        (4, 'Missing positional argument "r" in call to "circle"'),
+        (5, 'Argument "method" to "line" has incompatible type "Literal[\'midpoint\']"'),
+        (6, 'Argument "mode" to "FrameBuffer" has incompatible type "Literal[\'XYZ\']"'),
+        (7, 'Argument "rule" to "polygon" has incompatible type "Literal[\'odd\']"'),
+        (8, 'Module has no attribute "nosuch"'),
+    ]
+    for line, message in expected:
+        assert any(g.startswith(f"usage.py:{line}: error: {message}") for g in got), (message, got)
+    assert len(got) == len(expected), got
+    assert mypy(RIGHT, tmp_path, cache) == []

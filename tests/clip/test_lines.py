@@ -354,3 +354,17 @@ def test_notes_example_p1_below_p2_left_and_above():
     assert (t.rows[0]["x"], t.rows[0]["y"]) == pytest.approx((6 - 8 * 2 / 17, 0))
     assert (t.rows[1]["x"], t.rows[1]["y"]) == pytest.approx((0, 10.75))
     assert (t.rows[2]["x"], t.rows[2]["y"]) == pytest.approx((6 - 8 * 12 / 17, 10))
+
+
+def test_cohen_sutherland_round_off_at_a_corner_does_not_reject():
+    # a denormal start just outside the corner (0, 0): each crossing rounds to a point
+    # just outside the other boundary; the boundaries an end was moved onto stay
+    # cleared, so the segment is accepted instead of chasing the corner until the
+    # step limit rejects it (found by test_fuzzed_segments_stay_in_the_window)
+    tiny = -2.225073858507e-311
+    out, ok = sl.clip.lines([(tiny, tiny, 4.0, 4.0)], WINDOW, method="cohen-sutherland")
+    assert ok.tolist() == [True]
+    assert np.allclose(out, [[0, 0, 4, 4]], atol=1e-300)
+    t = sl.trace.cohen_sutherland(tiny, tiny, 4.0, 4.0, window=WINDOW)
+    assert [r["decision"].split(" (")[0] for r in t.rows] == [
+        "clip P0 at left", "clip P0 at below", "accept: both codes 0000"]

@@ -116,7 +116,10 @@ def cohen_sutherland(seg, xmin, ymin, xmax, ymax, limit, ends, codes, out, accep
     At each step a segment is accepted if both codes are 0000, rejected if
     code0 AND code1 != 0000, and otherwise its outside endpoint (P0 first) is moved
     to its crossing with the first boundary its code names (:func:`cs_crossing`,
-    with m from the original endpoints).  The block steps until every segment is
+    with m from the original endpoints); the bits of the boundaries an endpoint was
+    moved onto are kept cleared in its code (the upper bits of ``codes`` record
+    them): the part left lies inside those boundaries, and round-off at a corner
+    would otherwise move a denormal or huge endpoint back and forth.  The block steps until every segment is
     decided (or, after round-off near a corner made the endpoints chase each other,
     after ``CS_MAX_STEPS`` clips: then a segment that only grazes the corner is
     accepted if what is left is inside).
@@ -138,23 +141,29 @@ def cohen_sutherland(seg, xmin, ymin, xmax, ymax, limit, ends, codes, out, accep
         undecided = False
         for j in range(m):
             i = 4 * j
-            c0 = codes[0, j]
-            c1 = codes[1, j]
+            c0 = codes[0, j] & 15
+            c1 = codes[1, j] & 15
+            done0 = codes[0, j] >> 4
+            done1 = codes[1, j] >> 4
             both = c0 & c1
             clip = ((c0 | c1) != 0) & (both == 0)
             first = c0 != 0
             bit, x, y = cs_crossing(c0 if first else c1, seg[i], seg[i + 1],
                                     seg[i + 2] - seg[i], seg[i + 3] - seg[i + 1],
                                     xmin, ymin, xmax, ymax)
-            code = region_code(x, y, xmin, ymin, xmax, ymax)
+            # the new endpoint lies on every boundary its end was clipped at (and
+            # stays inside them as it moves toward the other end): those bits stay
+            # cleared, so round-off at a corner cannot send it back and forth
+            done = (done0 if first else done1) | bit
+            code = (region_code(x, y, xmin, ymin, xmax, ymax) & ~done) | (done << 4)
             move0 = clip & first
             move1 = clip & (not first)
             ends[0, j] = x if move0 else ends[0, j]
             ends[1, j] = y if move0 else ends[1, j]
             ends[2, j] = x if move1 else ends[2, j]
             ends[3, j] = y if move1 else ends[3, j]
-            codes[0, j] = code if move0 else c0
-            codes[1, j] = code if move1 else c1
+            codes[0, j] = code if move0 else codes[0, j]
+            codes[1, j] = code if move1 else codes[1, j]
             undecided |= clip
             if trace:
                 if clip:
@@ -171,7 +180,7 @@ def cohen_sutherland(seg, xmin, ymin, xmax, ymax, limit, ends, codes, out, accep
         y0 = seg[i + 1]
         x1 = seg[i + 2]
         y1 = seg[i + 3]
-        ok = (codes[0, j] | codes[1, j]) == 0
+        ok = ((codes[0, j] | codes[1, j]) & 15) == 0
         write_segment(out, i, ends[0, j] if ok else x0, ends[1, j] if ok else y0,
                       ends[2, j] if ok else x1, ends[3, j] if ok else y1)
         accepted[j] = ok

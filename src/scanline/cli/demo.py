@@ -110,7 +110,8 @@ _STUDIO = (
 #: functions that return a :class:`scanline.cli.figures.Figure`.
 FIGURE_MODULES = ("figures", "figures_attributes", "figures_antialias", "figures_color",
                   "figures_text", "figures_clip", "figures_scene", "figures_curves",
-                  "figures_surfaces", "figures_three_d", "figures_animation")
+                  "figures_surfaces", "figures_three_d", "figures_animation",
+                  "figures_shading")
 
 
 def all_figures():

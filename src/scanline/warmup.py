@@ -213,6 +213,11 @@ CALLS = {
     "render z-buffer": ("render", "sl.render(fb, sl.mesh.sphere(1, resolution=(8, 4)), "
                                   "sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)), "
                                   "shading='phong')", RGB),
+    "render phong blinn": ("render", "sl.render(fb, sl.mesh.torus(1, 0.4, resolution=(8, 4)), "
+                                     "sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)), "
+                                     "shading='phong', specular='blinn')", ("L", "RGB", "RGBA")),
+    "render gouraud": ("render", "sl.render(fb, sl.mesh.torus(1, 0.4, resolution=(8, 4)), "
+                                 "sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)))", RGB),
     "render ray-casting": ("render", "sl.render(fb, sl.mesh.cube(), sl.Camera(eye=(3, 2, 4), "
                                      "target=(0, 0, 0)), method='ray-casting')", RGB),
     "render a-buffer": ("render", "sl.render(fb, sl.mesh.cube(), sl.Camera(eye=(3, 2, 4), "

@@ -252,8 +252,10 @@ def raster_triangles(out, depth, tri, q, att, ids, rows, starts, order, scratch,
     height = zbuf.shape[0]
     bands = starts.shape[0] - 1
     for b in prange(bands):
-        lo = b << BAND_SHIFT
-        hi = min(lo + BAND - 1, height - 1)
+        # int64 throughout: prange's index may come unsigned, and max(int64, uint64)
+        # is a float64 in numba (a second specialization of raster_triangle)
+        lo = np.int64(b) << BAND_SHIFT
+        hi = min(lo + BAND - 1, np.int64(height - 1))
         g = scratch[b]
         for e in range(starts[b], starts[b + 1]):
             t = order[e]

@@ -28,7 +28,10 @@ TILE = 1 << TILE_SHIFT
 @kernel
 def tile_boxes(tri, width, height, boxes):
     """Each triangle's tile box (c0, r0, c1, r1), pixels clamped to the raster then
-    shifted to tiles (c0 > c1: none); returns the number of (triangle, tile) pairs."""
+    shifted to tiles; a triangle that covers no pixel gets the empty box (1, 1, 0, 0),
+    all four written (``boxes`` may come uninitialized: a row range left as garbage
+    made :func:`bin_tiles` loop for hours over rows of an empty column range).
+    Returns the number of (triangle, tile) pairs."""
     total = 0
     for t in range(tri.shape[0]):
         xlo = min(tri[t, 0, 0], tri[t, 1, 0], tri[t, 2, 0])
@@ -36,7 +39,9 @@ def tile_boxes(tri, width, height, boxes):
         ylo = min(tri[t, 0, 1], tri[t, 1, 1], tri[t, 2, 1])
         yhi = max(tri[t, 0, 1], tri[t, 1, 1], tri[t, 2, 1])
         boxes[t, 0] = 1
+        boxes[t, 1] = 1
         boxes[t, 2] = 0
+        boxes[t, 3] = 0
         if not (xlo <= xhi and ylo <= yhi):
             continue
         c0 = max(int(max(min(math.floor(xlo), width + 1.0), -2.0)), 0)
@@ -56,11 +61,14 @@ def tile_boxes(tri, width, height, boxes):
 @kernel
 def bin_tiles(boxes, tiles_x, starts, order):
     """Bucket triangles by tile, in input order: ``order[starts[i]:starts[i + 1]]``
-    for tile ``i = row * tiles_x + column``."""
+    for tile ``i = row * tiles_x + column`` (the boxes of :func:`tile_boxes`; an empty
+    one is skipped)."""
     tiles = starts.shape[0] - 1
     for i in range(tiles + 1):
         starts[i] = 0
     for t in range(boxes.shape[0]):
+        if boxes[t, 0] > boxes[t, 2]:
+            continue
         for r in range(boxes[t, 1], boxes[t, 3] + 1):
             for c in range(boxes[t, 0], boxes[t, 2] + 1):
                 starts[r * tiles_x + c + 1] += 1
@@ -70,6 +78,8 @@ def bin_tiles(boxes, tiles_x, starts, order):
     for i in range(tiles):
         fill[i] = starts[i]
     for t in range(boxes.shape[0]):
+        if boxes[t, 0] > boxes[t, 2]:
+            continue
         for r in range(boxes[t, 1], boxes[t, 3] + 1):
             for c in range(boxes[t, 0], boxes[t, 2] + 1):
                 i = r * tiles_x + c

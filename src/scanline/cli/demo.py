@@ -117,7 +117,8 @@ _STUDIO = (
 #: functions that return a :class:`scanline.cli.figures.Figure`.
 FIGURE_MODULES = ("figures", "figures_attributes", "figures_antialias", "figures_color",
                   "figures_text", "figures_clip", "figures_scene", "figures_curves",
-                  "figures_surfaces", "figures_three_d", "figures_visible", "figures_animation")
+                  "figures_surfaces", "figures_three_d", "figures_visible", "figures_shading",
+                  "figures_animation")
 
 
 def all_figures():

@@ -7,6 +7,7 @@ import numpy as np
 
 from ..lighting.model import depth_cue as cue_blend
 from ..shading import decode, encode, shade
+from ..shading.buffer import drawable, shade_buffer
 
 
 @dataclass
@@ -70,7 +71,11 @@ def store(fb, ys, xs, linear, gamma):
 
 def write_visible(scene, fb, faces, bary, depth, options):
     """Shade the pixels whose visible face ``faces[y, x]`` (-1 none) is known, with
-    barycentrics ``bary[y, x]`` and depth ``depth[y, x]``, into ``fb``."""
+    barycentrics ``bary[y, x]`` and depth ``depth[y, x]``, into ``fb``: compiled
+    (:mod:`scanline.shading.buffer`) where it can be, else with numpy."""
+    if drawable(fb, options):
+        shade_buffer(scene, fb, faces, bary, options)
+        return
     ys, xs = np.nonzero(faces >= 0)
     f = faces[ys, xs]
     linear = point_colors(scene, f, bary[ys, xs], options)

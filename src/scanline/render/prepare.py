@@ -282,8 +282,9 @@ def prepare(meshes, camera, width, height, materials=None, cull_back_faces=False
     all_polys = list(whole_dev) + cut_dev
     all_faces = np.concatenate([whole_faces, np.array(polygon_face, np.int64)])
     planes = np.full((nf, 4), np.nan)
-    if len(all_polys):
-        planes[all_faces] = [_device_plane(p) for p in all_polys]
+    planes[whole_faces] = _device_plane(whole_dev)
+    if cut_dev:
+        planes[polygon_face] = [_device_plane(p) for p in cut_dev]
     from ..lighting.model import ViewerAtInfinity  # noqa: F401  (the eye's type)
 
     return ScreenScene(
@@ -301,12 +302,13 @@ def prepare(meshes, camera, width, height, materials=None, cull_back_faces=False
 
 
 def _device_plane(poly):
-    """A, B, C, D of the plane of a device polygon (k, 3) by Newell's method, the
-    normal toward +depth for a counterclockwise (front) polygon... i.e. C > 0 when
-    the polygon runs counterclockwise in device x, y."""
+    """A, B, C, D of the plane of device polygons (..., k, 3) by Newell's method, the
+    normal toward +depth for a counterclockwise (front) polygon, i.e. C > 0 when the
+    polygon runs counterclockwise in device x, y."""
     a = poly
-    b = np.roll(poly, -1, axis=0)
-    n = np.array([((a[:, 1] - b[:, 1]) * (a[:, 2] + b[:, 2])).sum(),
-                  ((a[:, 2] - b[:, 2]) * (a[:, 0] + b[:, 0])).sum(),
-                  ((a[:, 0] - b[:, 0]) * (a[:, 1] + b[:, 1])).sum()])
-    return np.append(n, -n @ poly.mean(axis=0))
+    b = np.roll(poly, -1, axis=-2)
+    n = np.stack([((a[..., 1] - b[..., 1]) * (a[..., 2] + b[..., 2])).sum(axis=-1),
+                  ((a[..., 2] - b[..., 2]) * (a[..., 0] + b[..., 0])).sum(axis=-1),
+                  ((a[..., 0] - b[..., 0]) * (a[..., 1] + b[..., 1])).sum(axis=-1)], axis=-1)
+    d = -(n * poly.mean(axis=-2)).sum(axis=-1)
+    return np.concatenate([n, d[..., None]], axis=-1)

@@ -55,11 +55,19 @@ class Scene:
         """The scene drawn on a new :class:`~scanline.FrameBuffer`."""
         c = self.canvas
         fb = FrameBuffer(c.width, c.height, mode=c.mode, background=c.background)
+        if c.shading is not None:
+            c.shading.draw(fb)
         interpret(self.display_file, RasterDevice(fb, c.antialias), highlight=c.highlight)
         return fb
 
+    def _no_surfaces(self, what):
+        if self.canvas.shading is not None and self.canvas.shading.surfaces:
+            raise SceneError(f"a scene with shaded surfaces (meshes with a material) draws "
+                             f"to raster files only (.png, .gif, .bmp), not {what}")
+
     def svg(self):
         """The scene as an SVG document (text)."""
+        self._no_surfaces("SVG")
         c = self.canvas
         device = SVGDevice(c.width, c.height, background=c.background)
         interpret(self.display_file, device, highlight=c.highlight)
@@ -67,6 +75,7 @@ class Scene:
 
     def vector(self):
         """The scene on a random-scan display: a :class:`~scanline.display.VectorDevice`."""
+        self._no_surfaces("a vector display")
         device = VectorDevice(self.canvas.width, self.canvas.height)
         interpret(self.display_file, device, highlight=self.canvas.highlight)
         return device

@@ -23,8 +23,9 @@ VERSIONS = (1, 2)
 
 #: Top-level keys of version 2 that other modules read; :func:`build` lets them
 #: through (``animation``: key frames, motion paths and morphs,
-#: :mod:`scanline.scene.animated`).
-V2_KEYS = {"animation"}
+#: :mod:`scanline.scene.animated`; ``lights``, ``materials``, ``method``, ``shading``:
+#: :mod:`scanline.scene.shaded`).
+V2_KEYS = {"animation", "lights", "materials", "method", "shading"}
 
 #: Largest canvas side, in pixels.
 MAX_SIZE = 16384
@@ -216,8 +217,11 @@ def build(data, base=None):
     default_window = d.get("window", (0, 0, canvas.width - 1, canvas.height - 1))
     df = DisplayFile(aspect(canvas.width, canvas.height))
     cameras = schema3d.cameras(d["cameras"], df) if "cameras" in d else []
+    from .shaded import shading
+
+    canvas.shading = shading(d) if d["version"] == 2 else None
     context = {"version": d["version"], "cameras": cameras, "base": base,
-               "background": canvas.background}
+               "background": canvas.background, "shading": canvas.shading}
     viewports = _viewports(d.get("viewports"), default_window, df)
     names = list(viewports)
     for i, seg in enumerate(_list(d.get("segments", []), "segments")):
@@ -295,6 +299,7 @@ def _fill_segment(s, name, path, df, viewport, context):
         df.set_camera(df.camera(camera), camera)
     df.set_viewing(**viewport["viewing"])
     m = transformation(s.get("transform", []), f"{path}.transform")
+    context["segment_transform"] = m
     df.create_segment(name)
     _call(path, df.set_priority, name, s.get("priority", 0.0))
     _call(path, df.set_visibility, name, _flag(s.get("visible", True), f"{path}.visible"))
@@ -319,7 +324,8 @@ def _primitive(data, path, df, context):
             _fail(f"{path}.type", f"{kind!r} is a 3-D primitive: it needs version = 2")
         if not context["cameras"]:
             _fail(f"{path}.type", f"a {kind} is seen through a camera: add [[cameras]]")
-        schema3d.primitive(kind, data, path, df, context["background"], context["base"])
+        schema3d.primitive(kind, data, path, df, context["background"], context["base"],
+                           context["shading"], context["segment_transform"])
         return
     if not isinstance(kind, str) or kind not in PRIMITIVES:
         known = list(PRIMITIVES) + (list(schema3d.PRIMITIVES) if context["version"] >= 2 else [])

@@ -8,6 +8,8 @@ offending value (``cameras[0].projection.fov must ...``).
 import numbers
 import os
 
+import numpy as np
+
 from .. import transform3d as t3
 from .files import SceneError
 
@@ -44,7 +46,7 @@ GENERATORS = {
 }
 #: Keys of each 3-D primitive type besides ``type``.
 PRIMITIVES = {
-    "mesh": {"generator", "file", "transform", "depth_cue"} | _LINE
+    "mesh": {"generator", "file", "transform", "depth_cue", "material"} | _LINE
             | set().union(*GENERATORS.values()),
     "polyline3d": {"points", "closed", "transform"} | _LINE,
 }
@@ -248,8 +250,11 @@ def _mesh(data, path, base):
     return s._call(path, function, **args)
 
 
-def primitive(kind, data, path, df, background, base):
-    """Build one 3-D primitive into the open segment of ``df``."""
+def primitive(kind, data, path, df, background, base, shading=None, segment=None):
+    """Build one 3-D primitive into the open segment of ``df``; a mesh with a
+    ``material`` becomes a surface of ``shading`` (:mod:`scanline.scene.shaded`),
+    transformed by its own 3-D transformation (``segment``, the segment's 2-D one,
+    must be the identity)."""
     s = _schema()
     s._table(data, path, PRIMITIVES[kind] | {"type"},
              ("points",) if kind == "polyline3d" else ())
@@ -267,8 +272,18 @@ def primitive(kind, data, path, df, background, base):
         s._call(path, df.polyline3d, pts, data.get("color", "white"), closed, **line)
         return
     mesh = _mesh(data, path, base)
+    if "material" in data:
+        if shading is None:
+            s._fail(f"{path}.material", "needs the scene's lights, materials or shading keys "
+                    "(add [materials.NAME])")
+        if segment is not None and not (segment == np.eye(3)).all():
+            s._fail(f"{path}.material", "makes a shaded surface, which the segment's 2-D "
+                    "transform cannot move: give the mesh its own (3-D) transform")
     if not (m == t3.compose()).all():
         mesh = s._call(f"{path}.transform", mesh.transformed, m)
+    if "material" in data:
+        shading.surface(mesh, data["material"], path, df.camera(df._current_camera))
+        return
     cue = data.get("depth_cue")
     if isinstance(cue, list):
         cue = tuple(cue)

@@ -88,6 +88,36 @@ def _point_visibility(shadows):
     return None if shadows is None else shadows.visibility
 
 
+def _flat(scene, u, colors, lights, specular, vis):
+    """The intensity (U, 3) of each face of ``u``: the model at its centroid with its
+    face normal."""
+    centroid = scene.world[u].mean(axis=1)
+    n = _facing(scene, u, scene.normals[u], centroid)
+    return _lit(scene, u, centroid, n, colors[u].mean(axis=1), lights, specular, vis)
+
+
+def _gouraud(scene, u, colors, lights, specular, vis):
+    """The intensities (U, 3, 3) at the vertices of each face of ``u``, with the
+    averaged vertex normals."""
+    pts = scene.world[u]                                            # (U, 3, 3)
+    n = _facing(scene, np.repeat(u, 3), scene.vertex_normals[u].reshape(-1, 3),
+                pts.reshape(-1, 3))
+    return _lit(scene, np.repeat(u, 3), pts.reshape(-1, 3), n, colors[u].reshape(-1, 3),
+                lights, specular, vis).reshape(-1, 3, 3)
+
+
+def vertex_intensities(scene, faces, lights, shading="gouraud", specular="phong", gamma=GAMMA):
+    """Linear RGB intensities (U, 3, 3) at the three vertices of each of ``faces``
+    (U,): Gouraud's vertex intensities, or for ``"flat"`` the face's one intensity
+    three times (what :mod:`scanline.shading.buffer` interpolates per pixel)."""
+    faces = np.asarray(faces, np.int64)
+    colors = decode(scene.vertex_colors, gamma)
+    if shading == "flat":
+        per = _flat(scene, faces, colors, lights, specular, None)
+        return np.repeat(per[:, None, :], 3, axis=1)
+    return _gouraud(scene, faces, colors, lights, specular, None)
+
+
 def shade(scene, faces, bary, lights, shading="gouraud", specular="phong", gamma=GAMMA,
           shadows=None):
     """Linear RGB intensities (M, 3) of M points given by their ``faces`` (M,) and
@@ -101,17 +131,10 @@ def shade(scene, faces, bary, lights, shading="gouraud", specular="phong", gamma
     vis = _point_visibility(shadows)
     if shading == "flat":
         u, inverse = np.unique(faces, return_inverse=True)
-        centroid = scene.world[u].mean(axis=1)
-        n = _facing(scene, u, scene.normals[u], centroid)
-        per = _lit(scene, u, centroid, n, colors[u].mean(axis=1), lights, specular, vis)
-        return per[inverse.reshape(-1)]
+        return _flat(scene, u, colors, lights, specular, vis)[inverse.reshape(-1)]
     if shading == "gouraud":
         u, inverse = np.unique(faces, return_inverse=True)
-        pts = scene.world[u]                                        # (U, 3, 3)
-        n = _facing(scene, np.repeat(u, 3), scene.vertex_normals[u].reshape(-1, 3),
-                    pts.reshape(-1, 3))
-        per = _lit(scene, np.repeat(u, 3), pts.reshape(-1, 3), n,
-                   colors[u].reshape(-1, 3), lights, specular, vis).reshape(-1, 3, 3)
+        per = _gouraud(scene, u, colors, lights, specular, vis)
         return np.einsum("mi,mic->mc", lam, per[inverse.reshape(-1)])
     if shading == "phong":
         p = np.einsum("mi,mic->mc", lam, scene.world[faces])
@@ -133,4 +156,5 @@ def shade(scene, faces, bary, lights, shading="gouraud", specular="phong", gamma
             + 4 * l1 * l2 * samples[:, 4] + 4 * l2 * l0 * samples[:, 5])
 
 
-__all__ = ["MODELS", "GAMMA", "shade", "encode", "decode", "ViewerAtInfinity"]
+__all__ = ["MODELS", "GAMMA", "shade", "vertex_intensities", "encode", "decode",
+           "ViewerAtInfinity"]

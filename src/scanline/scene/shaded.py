@@ -1,0 +1,136 @@
+"""Shaded surfaces in a scene (schema version 2): the top-level ``lights``,
+``materials``, ``method`` and ``shading`` keys, and the ``material`` key of a mesh
+primitive, which makes the mesh a surface drawn by :func:`scanline.render` instead
+of a wireframe.  See docs/scene-format.md, "Lights, materials and shading".
+
+Surfaces are drawn first, through the camera of their segment (each camera's
+surfaces share one depth test), on the whole canvas; the display file (wireframes,
+lines, text) is drawn over them.
+"""
+
+from .. import lighting
+
+#: Top-level keys this module reads.
+KEYS = {"lights", "materials", "method", "shading"}
+#: Light types and their keys (besides ``type``).
+LIGHTS = {
+    "ambient": {"intensity"},
+    "directional": {"direction", "intensity", "shadows"},
+    "point": {"position", "intensity", "attenuation", "shadows"},
+    "spot": {"position", "direction", "intensity", "angle", "exponent", "attenuation",
+             "shadows"},
+}
+#: Keys a light of each type must have.
+REQUIRED = {"point": ("position",), "spot": ("position", "direction")}
+MATERIAL = {"ka", "kd", "ks", "shininess", "color", "specular_color", "transparency"}
+SHADING = {"model", "specular", "gamma", "cull_back_faces", "depth_cue"}
+
+
+def _schema():
+    from . import schema
+
+    return schema
+
+
+def _tuples(value):
+    if isinstance(value, list):
+        return tuple(_tuples(x) for x in value)
+    return value
+
+
+def light(data, path):
+    """A light table -> a light of :mod:`scanline.lighting`."""
+    s = _schema()
+    t = s._table(data, path, set().union(*LIGHTS.values()) | {"type"}, ("type",))
+    kind = t["type"]
+    if not isinstance(kind, str) or kind not in LIGHTS:
+        s._fail(f"{path}.type", f"must be one of {', '.join(LIGHTS)}; got {kind!r}")
+    s._table(data, path, LIGHTS[kind] | {"type"}, REQUIRED.get(kind, ()))
+    args = {k: (s.angle(x, f"{path}.{k}") if k == "angle" else _tuples(x))
+            for k, x in t.items() if k != "type"}
+    make = {"ambient": lighting.AmbientLight, "directional": lighting.DirectionalLight,
+            "point": lighting.PointLight, "spot": lighting.SpotLight}[kind]
+    return s._call(path, make, **args)
+
+
+class Shading:
+    """What a scene's top-level shading keys say: ``lights`` (None: the renderer's
+    default), ``materials`` (name -> Material), ``options`` for
+    :func:`scanline.render`, and the ``surfaces`` the mesh primitives add."""
+
+    def __init__(self, data):
+        s = _schema()
+        self.lights = None
+        if "lights" in data:
+            self.lights = [light(x, f"lights[{i}]")
+                           for i, x in enumerate(s._list(data["lights"], "lights"))]
+        self.materials = {}
+        mats = data.get("materials", {})
+        if not isinstance(mats, dict):
+            s._fail("materials", "must be a table of named materials ([materials.NAME])")
+        for name, m in mats.items():
+            t = s._table(m, f"materials.{name}", MATERIAL)
+            self.materials[name] = s._call(f"materials.{name}", lighting.Material,
+                                           **{k: _tuples(x) for k, x in t.items()})
+        from ..render import METHODS
+        from ..shading import MODELS
+
+        method = data.get("method", "z-buffer")
+        if not isinstance(method, str) or method not in METHODS:
+            s._fail("method", f"must be one of {', '.join(sorted(METHODS))}; got {method!r}")
+        shading = data.get("shading", {})
+        if isinstance(shading, str):
+            shading = {"model": shading}
+        t = s._table(shading, "shading", SHADING)
+        model = t.get("model", "gouraud")
+        if not isinstance(model, str) or model not in MODELS:
+            s._fail("shading.model" if isinstance(data.get("shading"), dict) else "shading",
+                    f"must be one of {', '.join(MODELS)}; got {model!r}")
+        self.options = {"method": method, "shading": model}
+        if "specular" in t:
+            if t["specular"] not in ("phong", "blinn"):
+                s._fail("shading.specular", f"must be 'phong' or 'blinn'; got {t['specular']!r}")
+            self.options["specular"] = t["specular"]
+        if "gamma" in t:
+            from ..shading import gamma_value
+
+            self.options["gamma"] = s._call("shading.gamma", gamma_value,
+                                            s._real(t["gamma"], "shading.gamma"))
+        if "cull_back_faces" in t:
+            self.options["cull_back_faces"] = s._flag(t["cull_back_faces"],
+                                                      "shading.cull_back_faces")
+        if "depth_cue" in t:
+            from ..draw3d.wireframe import depth_cue_intensities
+
+            cue = _tuples(t["depth_cue"])
+            s._call("shading.depth_cue", depth_cue_intensities, cue)
+            self.options["depth_cue"] = cue
+        self.surfaces = []
+
+    def surface(self, mesh, material, path, camera):
+        """Add ``mesh`` as a surface of the named ``material`` seen by ``camera``."""
+        if not isinstance(material, str) or material not in self.materials:
+            _schema()._fail(f"{path}.material", f"names no material: {material!r}; materials: "
+                            + (", ".join(repr(k) for k in self.materials) or
+                               "none (add [materials.NAME])"))
+        self.surfaces.append((mesh, self.materials[material], camera))
+
+    def draw(self, fb):
+        """Render the surfaces into ``fb``, camera by camera."""
+        from ..render import render
+
+        by_camera = {}
+        for mesh, material, camera in self.surfaces:
+            by_camera.setdefault(id(camera), (camera, [], []))
+            by_camera[id(camera)][1].append(mesh)
+            by_camera[id(camera)][2].append(material)
+        for camera, meshes, mats in by_camera.values():
+            render(fb, meshes, camera, lights=self.lights, materials=mats, **self.options)
+
+
+def shading(data):
+    """The :class:`Shading` of scene data (a dict), or None when it has no shading
+    key and so no surfaces can be asked for."""
+    if not any(k in data for k in KEYS):
+        return None
+    return Shading(data)

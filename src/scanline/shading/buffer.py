@@ -1,0 +1,113 @@
+"""Shading a whole visibility buffer at once: the compiled form of
+:func:`scanline.shading.shade` followed by the gamma encoding and the store, for the
+image-space methods (the kernel is :mod:`scanline._kernels.shade`).
+
+Flat and Gouraud shading compute the illumination model once per face or per
+vertex (numpy, :func:`scanline.shading.vertex_intensities`), and the kernel
+interpolates those intensities at each pixel; Phong shading evaluates the model at
+every pixel in the kernel.  The numpy path (:func:`scanline.shading.shade`) stays
+the reference (the tests compare the two) and still serves what the kernel does not
+do: fast Phong, shadow maps, depth cueing.
+"""
+
+import numpy as np
+
+from ..lighting import AmbientLight, DirectionalLight, SpotLight
+from ..lighting.model import ViewerAtInfinity
+
+#: Shading models the kernel draws (the rest go through the numpy path).
+MODELS = ("flat", "gouraud", "phong")
+
+
+def source_rows(lights):
+    """The non-ambient lights as rows (S, 16) of the kernel's source table:
+    homogeneous position, attenuation a0 a1 a2, spot cos(angle), exponent, spot flag,
+    spot axis, RGB intensity; and the summed ambient intensity (3,)."""
+    ambient = np.zeros(3)
+    rows = []
+    for light in lights:
+        if isinstance(light, AmbientLight):
+            ambient = ambient + light.intensity
+            continue
+        row = np.zeros(16)
+        if isinstance(light, DirectionalLight):
+            row[:3] = -light.direction
+            row[4] = 1.0
+        else:
+            row[:3] = light.position
+            row[3] = 1.0
+            row[4:7] = light.attenuation
+        if isinstance(light, SpotLight):
+            row[7] = np.cos(light.angle)
+            row[8] = light.exponent
+            row[9] = 1.0
+            row[10:13] = light.direction
+        row[13:16] = light.intensity
+        rows.append(row)
+    return np.array(rows).reshape(-1, 16), np.ascontiguousarray(ambient, np.float64)
+
+
+def material_rows(materials):
+    """ka, kd, ks, n_s and S_s of each material, (M, 7)."""
+    return np.array([[m.ka, m.kd, m.ks, m.shininess, *m.specular_color] for m in materials],
+                    np.float64).reshape(-1, 7)
+
+
+def homogeneous_eye(eye):
+    """The viewer as (x, y, z, w): w = 1 at a point, 0 at infinity."""
+    if isinstance(eye, ViewerAtInfinity):
+        return np.append(np.asarray(eye.toward, np.float64), 0.0)
+    return np.append(np.asarray(eye, np.float64), 1.0)
+
+
+def gamma_tables(gamma):
+    """The gamma encoding as the kernel's tables: the stored value of each of
+    ``GAMMA_STEPS`` evenly spaced intensities, and the intensity ((v - 1/2) /
+    255)^gamma from which value v is stored (index 0: -inf, 256: inf)."""
+    from .._kernels.shade import GAMMA_STEPS
+    from . import encode
+
+    table = encode(np.linspace(0.0, 1.0, GAMMA_STEPS), gamma).astype(np.int64)
+    thresholds = np.empty(257)
+    thresholds[0], thresholds[256] = -np.inf, np.inf
+    thresholds[1:256] = ((np.arange(1, 256) - 0.5) / 255.0) ** gamma
+    return table, thresholds
+
+
+def drawable(fb, options):
+    """True when the kernel can shade for these ``options`` into ``fb``."""
+    return (options["shading"] in MODELS and options.get("shadows") is None
+            and options.get("depth_cue") is None and fb.mode in ("L", "RGB", "RGBA"))
+
+
+def shade_buffer(scene, fb, faces, bary, options):
+    """Shade the pixels of ``faces`` (H, W; -1: none) with barycentrics ``bary`` (H, W,
+    2) into ``fb`` (:func:`drawable` must hold)."""
+    from .._kernels import shade as k
+    from .._kernels._jit import call
+    from .._kernels.variants import MODE
+    from . import decode, vertex_intensities
+
+    lights, gamma = options["lights"], options["gamma"]
+    shading = options["shading"]
+    sources, ambient = source_rows(lights)
+    empty = np.zeros((0, 3, 3))
+    if shading == "phong":
+        world = np.ascontiguousarray(scene.world, np.float64)
+        normals = np.ascontiguousarray(scene.vertex_normals, np.float64)
+        colors = np.ascontiguousarray(decode(scene.vertex_colors, gamma))
+    else:
+        world = normals = empty
+        colors = np.zeros((scene.face_count, 3, 3))
+        seen = np.unique(scene.face)
+        if len(seen):
+            colors[seen] = vertex_intensities(scene, seen, lights, shading,
+                                              options["specular"], gamma)
+    h, w = faces.shape
+    call(k.shade_pixels, h * w * (2 + (8 * len(sources) if shading == "phong" else 0)),
+         np.ascontiguousarray(faces, np.int64), np.ascontiguousarray(bary, np.float64),
+         world, normals, colors, np.ascontiguousarray(scene.front, np.bool_),
+         np.ascontiguousarray(scene.face_mesh, np.int64), material_rows(scene.materials),
+         ambient, np.ascontiguousarray(sources), homogeneous_eye(scene.eye), *gamma_tables(gamma),
+         fb._raster()[0], k.SHADING["phong" if shading == "phong" else "vertex"],
+         k.SPECULAR[options["specular"] if shading == "phong" else "phong"], MODE[fb.mode])

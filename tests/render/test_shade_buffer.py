@@ -1,0 +1,94 @@
+"""The compiled visibility-buffer shading (scanline.shading.buffer) against the numpy
+path (scanline.shading.shade + encode) it replaces: equal within one stored level,
+for every shading model the kernel draws, both specular terms, every mode, several
+kinds of lights, perspective and parallel views, back faces seen."""
+
+import math
+
+import numpy as np
+import pytest
+
+import scanline as sl
+from scanline.render.prepare import prepare
+from scanline.render.zbuffer import visibility
+from scanline.shading import encode, shade
+from scanline.shading.buffer import gamma_tables, shade_buffer
+
+W, H = 64, 48
+
+LIGHTS = [sl.lighting.AmbientLight((0.2, 0.15, 0.1)),
+          sl.lighting.DirectionalLight((0.4, -0.6, -1.0), (0.8, 0.7, 0.9)),
+          sl.lighting.PointLight((2, 3, 4), 0.7, attenuation=(1, 0.05, 0.01)),
+          sl.lighting.SpotLight((0, 0, 5), (0, 0, -1), 0.9, angle=0.4, exponent=3)]
+
+
+def scene(parallel=False):
+    proj = (sl.projection.orthographic(window=(-2, -1.5, 2, 1.5)) if parallel else
+            sl.projection.perspective(fov=math.radians(45), near=0.5, far=20))
+    cam = sl.Camera(eye=(1.5, 1.0, 5.0), target=(0, 0, 0), projection=proj)
+    torus = sl.mesh.torus(1.0, 0.35, resolution=(20, 10))
+    box = sl.mesh.cube(0.8).transformed(sl.transform3d.translation(1.2, -0.6, 0.5))
+    # a square whose outward normal points away from the viewer: a back face, seen
+    back = sl.mesh.Mesh([(-2, -1, 0.3), (-2, 0.2, 0.3), (-1.1, 0.2, 0.3), (-1.1, -1, 0.3)],
+                        [(0, 1, 2, 3)])
+    mats = [sl.lighting.Material(ka=0.3, kd=0.6, ks=0.4, shininess=15, color=(200, 120, 60)),
+            sl.lighting.Material(ka=0.2, kd=0.5, ks=0.6, shininess=80, color="teal",
+                                 specular_color=(255, 220, 200))]
+    sc = prepare([torus, box, back], cam, W, H, mats + [mats[0]])
+    assert not sc.front[sc.face_mesh == 2].any()
+    return sc
+
+
+@pytest.mark.parametrize("parallel", [False, True])
+@pytest.mark.parametrize("shading", ["flat", "gouraud", "phong"])
+@pytest.mark.parametrize("specular", ["phong", "blinn"])
+@pytest.mark.parametrize("mode", ["L", "RGB", "RGBA"])
+def test_kernel_matches_the_numpy_path(parallel, shading, specular, mode):
+    if shading != "phong" and (mode != "RGB" or parallel):
+        pytest.skip("the vertex path is the same code for every mode and view")
+    sc = scene(parallel)
+    faces, bary, _ = visibility(sc)
+    ys, xs = np.nonzero(faces >= 0)
+    assert len(ys) > 500
+    assert (sc.face_mesh[faces[ys, xs]] == 2).sum() > 20        # the back face is seen
+    fb = sl.FrameBuffer(W, H, mode=mode)
+    opts = dict(lights=LIGHTS, shading=shading, specular=specular, gamma=2.2)
+    shade_buffer(sc, fb, faces, bary, opts)
+    got = fb._raster()[0][ys, xs].astype(int)
+    linear = shade(sc, faces[ys, xs], bary[ys, xs], LIGHTS, shading, specular, 2.2)
+    if mode == "L":
+        want = encode((linear * [0.299, 0.587, 0.114]).sum(axis=1), 2.2)[:, None]
+    else:
+        want = encode(linear, 2.2)
+    assert np.abs(got[:, :want.shape[1]] - want).max() <= 1
+    assert (got[:, :want.shape[1]] != want).mean() < 0.01
+    if mode == "RGBA":
+        assert (got[:, 3] == 255).all()
+
+
+def test_pixels_without_a_face_are_left_alone():
+    sc = scene()
+    faces, bary, _ = visibility(sc)
+    fb = sl.FrameBuffer(W, H, background="orange")
+    before = fb._raster()[0].copy()
+    shade_buffer(sc, fb, faces, bary, dict(lights=LIGHTS, shading="phong",
+                                            specular="phong", gamma=2.2))
+    after = fb._raster()[0]
+    assert np.array_equal(after[faces < 0], before[faces < 0])
+    assert (after[faces >= 0] != before[faces >= 0]).any(axis=1).mean() > 0.9
+
+
+@pytest.mark.parametrize("gamma", [1.0, 2.2, 0.45])
+def test_gamma_tables_encode_like_the_power(gamma):
+    from scanline._kernels._jit import python
+    from scanline._kernels.shade import encode as kernel_encode
+
+    table, thresholds = gamma_tables(gamma)
+    rng = np.random.default_rng(3)
+    values = np.concatenate([rng.uniform(-0.1, 1.1, 3000), rng.uniform(0, 1e-3, 1000),
+                             [0.0, 1.0, np.nan, np.inf, -np.inf]])
+    twin = python(kernel_encode)
+    got = np.array([twin(x, table, thresholds) for x in values], int)
+    want = encode(np.nan_to_num(values, nan=0.0), gamma).astype(int)
+    assert np.abs(got - want).max() <= 1
+    assert (got == want).mean() > 0.999

@@ -85,10 +85,13 @@ def positive_int(name, value, minimum=1):
     return int(value)
 
 
-def coordinate_array(name, value, columns, radius_columns=()):
+def coordinate_array(name, value, columns, radius_columns=(), guard=False):
     """Convert an (N, columns) array of primitives to int64, rounding to pixels.
 
     ``radius_columns`` lists the columns that hold radii, which must be >= 0.
+    With ``guard`` (segments: ``columns`` = 4), any finite coordinate is taken: rows
+    beyond the exact range are clipped to the guard square first
+    (:func:`scanline.geometry.guard.segments`).
     """
     try:
         a = np.asarray(value)
@@ -120,6 +123,9 @@ def coordinate_array(name, value, columns, radius_columns=()):
         raise ArgumentValueError(
             f"{name} must be finite; row {row} is {a[row].tolist()}"
         )
+    if guard and a.size:
+        from .geometry.guard import segments
+        a = segments(np.ascontiguousarray(a, np.float64))
     if a.size and np.abs(a).max() > COORD_LIMIT:
         row = int(np.argwhere(np.abs(a) > COORD_LIMIT)[0][0])
         raise ArgumentValueError(

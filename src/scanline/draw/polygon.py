@@ -9,6 +9,7 @@ from .._kernels._jit import call
 from .._kernels.variants import layout
 from ..errors import ArgumentValueError
 from ..geometry import contours as parse
+from ..geometry import guard
 from . import _blend
 from ._common import area_work, colors, target
 
@@ -156,9 +157,10 @@ def polygon(fb, points, color="white", rule="even-odd", style=None, antialias=Fa
         _solid_only(style)
         fill(fb, points, color, rule)
         return
-    verts, offsets = parse.contours("points", points)
+    verts, offsets = parse.contours("points", points, far=True)
     code = _rule(rule)
-    polys = np.array([0, len(offsets) - 1], np.int64)
+    verts, offsets, polys = guard.areas(verts, offsets, np.array([0, len(offsets) - 1],
+                                                                 np.int64))
     max_edges = _max_edges(offsets, polys)
 
     def draw(buf, packed, width, height, ox, oy, pixel):
@@ -221,13 +223,14 @@ def polygons(fb, polygons, color="white", rule="even-odd", counts=None, antialia
     """
     buf, packed, width, height = target(fb)
     if counts is None:
-        verts, offsets, polys = parse.batch("polygons", polygons)
+        verts, offsets, polys = parse.batch("polygons", polygons, far=True)
     else:
-        verts, offsets, polys = parse.flat("polygons", polygons, counts)
+        verts, offsets, polys = parse.flat("polygons", polygons, counts, far=True)
     if antialias:
         from .antialias import _fill_parsed
         _fill_parsed(fb, verts, offsets, polys, color, rule)
         return
+    verts, offsets, polys = guard.areas(verts, offsets, polys)
     code = _rule(rule)
     n = len(polys) - 1
     most = _max_edges(offsets, polys)

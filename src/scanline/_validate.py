@@ -153,7 +153,7 @@ def _integers(name, value, what):
         a = np.asarray(value)
     except (TypeError, ValueError, OverflowError):
         raise ArgumentTypeError(f"{name} must be {what}, got {_show(value)}") from None
-    if a.size == 0 and a.dtype.kind in "iufb":
+    if a.size == 0 and a.dtype.kind in "iufbO":
         return None
     if a.dtype == object:
         items = a.ravel().tolist()

@@ -407,6 +407,8 @@ def polylines(fb, polylines, color="white", closed=False, *, counts=None, style=
 def segment_array(name, segments):
     """(N, 4) float64 segments, finite and within +-2**30 (not rounded)."""
     try:
+        if np.asarray(segments).dtype.kind in "cbSUV":    # complex, bool, text
+            raise TypeError
         a = np.asarray(segments, dtype=np.float64)
     except (TypeError, ValueError):
         raise ArgumentTypeError(f"{name} must be a numeric array of shape (N, 4), got {v._show(segments)}") from None

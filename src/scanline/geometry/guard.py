@@ -208,8 +208,15 @@ def conic_outside(fb, xc, yc, rx, ry, reach=1.0, fill=False):
         xc, yc, rx, ry = (float(c) for c in vals)
     except OverflowError:
         return False
-    if not all(np.isfinite((xc, yc, rx, ry))) or rx < 0 or ry < 0:
+    if not all(np.isfinite((xc, yc, rx, ry))) or rx < -0.5 or ry < -0.5:
         return False
+    rx, ry = max(rx, 0.0), max(ry, 0.0)          # -0.5 < r < 0 rounds to 0
+    with np.errstate(all="ignore"):       # squares of huge ratios are inf: fine
+        return _misses(fb, xc, yc, rx, ry, reach, fill)
+
+
+def _misses(fb, xc, yc, rx, ry, reach, fill):
+    """:func:`conic_outside` for four finite floats."""
     lo_x, lo_y = -1.0 - reach, -1.0 - reach
     hi_x, hi_y = fb.width + reach, fb.height + reach
     dx = np.array([lo_x - xc, hi_x - xc])

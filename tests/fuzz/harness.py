@@ -3,6 +3,7 @@ guard rows (any write outside it shows), a time limit (SIGALRM) and a memory lim
 (tracemalloc's peak: numpy reports its allocations there).  Only ScanlineError may
 escape."""
 
+import os
 import signal
 import tracemalloc
 from contextlib import contextmanager
@@ -12,8 +13,9 @@ from hypothesis import strategies as st
 
 import scanline as sl
 
-#: Seconds one fuzzed call may take.
-TIME_LIMIT = 20
+#: Seconds one fuzzed call may take (SCANLINE_FUZZ_TIME: more where the call may
+#: compile, as under NUMBA_BOUNDSCHECK=1 with an empty cache).
+TIME_LIMIT = int(os.environ.get("SCANLINE_FUZZ_TIME", "20"))
 #: Bytes one fuzzed call may allocate at its peak.
 MEMORY_LIMIT = 512 * 2**20
 GUARD_VALUE = 77

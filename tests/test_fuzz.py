@@ -67,6 +67,49 @@ def names_one_of(message, names):
     return any(re.search(r"(?<![A-Za-z0-9_])" + re.escape(n) + r"(?![A-Za-z0-9_])", message) for n in names)
 
 
+def as_far(v):
+    """``v`` as a Fraction if it is a finite real beyond the exact range +-2**30
+    (drawn since issue 11: clipped to a guard square first), else None."""
+    if isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, float, np.integer, np.floating, Fraction)):
+        return None
+    try:
+        if not math.isfinite(float(v)):
+            return None
+    except OverflowError:      # an int beyond the float range: refused as not finite
+        return None
+    return frac(v) if as_coordinate(v) is None else None
+
+
+def frac(v):
+    """The exact value of a real number (Fraction)."""
+    return Fraction(v) if isinstance(v, (int, np.integer, Fraction)) else Fraction(float(v))
+
+
+def near_ideal_line(pixels, x0, y0, x1, y1):
+    """Whether every pixel lies within 1 pixel of the exact segment (Fractions), and
+    at most one per position along the major axis."""
+    x0, y0, x1, y1 = (frac(c) for c in (x0, y0, x1, y1))
+    dx, dy = x1 - x0, y1 - y0
+    if dx == dy == 0:
+        return all(abs(x - x0) <= 1 and abs(y - y0) <= 1 for x, y in pixels)
+    n2 = dx * dx + dy * dy
+    for x, y in pixels:
+        t = min(max(((x - x0) * dx + (y - y0) * dy) / n2, Fraction(0)), Fraction(1))
+        ex, ey = x0 + t * dx - x, y0 + t * dy - y
+        if ex * ex + ey * ey > 1:
+            return False
+    k = 0 if abs(dx) >= abs(dy) else 1
+    majors = [p[k] for p in pixels]
+    return len(majors) == len(set(majors))
+
+
+def certainly_off_frame(xc, yc, r1, r2):
+    """Whether the box of the conic (semi-axes r1, r2) about (xc, yc) misses the frame
+    by more than 2 pixels (exact Fractions)."""
+    xc, yc, r1, r2 = (frac(c) for c in (xc, yc, r1, r2))
+    return xc + r1 < -2 or xc - r1 > W + 1 or yc + r2 < -2 or yc - r2 > H + 1
+
+
 def expect(call, bad_names):
     """Run ``call``; if ``bad_names`` is empty it must not raise, otherwise it must
     raise a package error naming one of them.  Returns True if it drew."""
@@ -115,8 +158,13 @@ def test_line_fuzz(x0, y0, x1, y1, mode, method):
     guards = Guards(mode)
     fb = fresh(mode)
     args = {"x0": x0, "y0": y0, "x1": x1, "y1": y1}
-    bad = [n for n, v in args.items() if as_coordinate(v) is None]
-    if expect(lambda: sl.draw.line(fb, x0, y0, x1, y1, color="white", method=method), bad):
+    bad = [n for n, v in args.items() if as_coordinate(v) is None and as_far(v) is None]
+    far = [n for n, v in args.items() if as_far(v) is not None]
+    if far and not bad:  # any finite coordinate is drawn, near the exact line
+        sl.draw.line(fb, x0, y0, x1, y1, color="white", method=method)
+        ends = [as_far(v) if as_far(v) is not None else as_coordinate(v) for v in (x0, y0, x1, y1)]
+        assert near_ideal_line(lit(fb), *ends)
+    elif expect(lambda: sl.draw.line(fb, x0, y0, x1, y1, color="white", method=method), bad):
         c = [as_coordinate(v) for v in (x0, y0, x1, y1)]
         got = lit(fb)
         if method == "bresenham":
@@ -139,7 +187,18 @@ def test_circle_fuzz(xc, yc, r, mode):
     bad = [n for n, v in (("xc", xc), ("yc", yc)) if as_coordinate(v) is None]
     if as_radius(r) is None:
         bad.append("r")
-    if expect(lambda: sl.draw.circle(fb, xc, yc, r, color="white"), bad):
+    far = {"xc": as_far(xc), "yc": as_far(yc), "r": as_far(r) if as_far(r) is not None and r > 0 else None}
+    if any(f is not None for f in far.values()) and set(bad) <= {n for n, f in far.items() if f is not None}:
+        # beyond the exact limits: drawn (nothing) when off the frame, else refused by name
+        fx, fy, fr = (frac(c) for c in (xc, yc, r))
+        try:
+            sl.draw.circle(fb, xc, yc, r, color="white")
+        except sl.ScanlineError as e:
+            assert not certainly_off_frame(fx, fy, fr, fr), str(e)
+            assert names_one_of(str(e), [n for n, f in far.items() if f is not None]), str(e)
+        else:
+            assert not lit(fb)
+    elif expect(lambda: sl.draw.circle(fb, xc, yc, r, color="white"), bad):
         assert lit(fb) == circle_visible(as_coordinate(xc), as_coordinate(yc), as_radius(r), W, H)
     assert padding_is_clean(fb)
     guards.check()
@@ -160,7 +219,24 @@ def test_ellipse_fuzz(xc, yc, rx, ry, mode):
     a, b = as_radius(rx), as_radius(ry)
     if a is not None and b is not None and (max(a, b) > ELLIPSE_AXIS_LIMIT or a * b > ELLIPSE_PRODUCT_LIMIT):
         bad += ["rx", "ry"]
-    if expect(lambda: sl.draw.ellipse(fb, xc, yc, rx, ry, color="white"), bad):
+    far = [n for n, v in (("xc", xc), ("yc", yc)) if as_far(v) is not None]
+    far += [n for n, v in (("rx", rx), ("ry", ry)) if as_far(v) is not None and v > 0]
+    if a is None and as_far(rx) is not None and rx > 0:
+        a = as_far(rx)
+    if b is None and as_far(ry) is not None and ry > 0:
+        b = as_far(ry)
+    huge = a is not None and b is not None and (max(a, b) > ELLIPSE_AXIS_LIMIT
+                                                or a * b > ELLIPSE_PRODUCT_LIMIT)
+    if (far or huge) and set(bad) <= set(far) | {"rx", "ry"} and a is not None and b is not None:
+        # beyond the exact limits: drawn (nothing) when off the frame, else refused by name
+        try:
+            sl.draw.ellipse(fb, xc, yc, rx, ry, color="white")
+        except sl.ScanlineError as e:
+            assert not certainly_off_frame(frac(xc), frac(yc), a, b), str(e)
+            assert names_one_of(str(e), bad), str(e)
+        else:
+            assert not lit(fb)
+    elif expect(lambda: sl.draw.ellipse(fb, xc, yc, rx, ry, color="white"), bad):
         got = lit(fb)
         if a + b <= 3000:
             assert got == in_frame(ellipse_pixels(as_coordinate(xc), as_coordinate(yc), a, b), W, H)
@@ -300,6 +376,18 @@ def _check_batch(fn, value, columns, name, reference, radius_columns=()):
 @given(arrays(4))
 @HYPOTHESIS
 def test_lines_batch_fuzz(value):
+    try:
+        a = np.asarray(value, dtype=np.float64)
+    except (TypeError, ValueError):
+        a = None
+    if (a is not None and a.ndim == 2 and a.shape[1] == 4 and np.isfinite(a).all()
+            and (np.abs(a) > LIMIT).any()):
+        # far rows are drawn since issue 11: each pixel near one of the exact segments
+        fb = fresh("RGB")
+        sl.draw.lines(fb, value, color="white")
+        got = lit(fb)
+        assert all(any(near_ideal_line({p}, *row) for row in a.tolist()) for p in got)
+        return
     _check_batch(sl.draw.lines, value, 4, "segments", lambda *s: bresenham_visible(*s, W, H))
 
 

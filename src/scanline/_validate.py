@@ -146,10 +146,13 @@ def positive_int(name: str, value: object, minimum: int = 1) -> int:
 
 
 def coordinate_array(name: str, value: object, columns: int,
-                     radius_columns: Iterable[int] = ()) -> NDArray[np.int64]:
+                     radius_columns: Iterable[int] = (), guard: bool = False) -> NDArray[np.int64]:
     """Convert an (N, columns) array of primitives to int64, rounding to pixels.
 
     ``radius_columns`` lists the columns that hold radii, which must be >= 0.
+    With ``guard`` (segments: ``columns`` = 4), any finite coordinate is taken: rows
+    beyond the exact range are clipped to the guard square first
+    (:func:`scanline.geometry.guard.segments`).
     """
     try:
         a = np.asarray(value)
@@ -181,6 +184,9 @@ def coordinate_array(name: str, value: object, columns: int,
         raise ArgumentValueError(
             f"{name} must be finite; row {row} is {a[row].tolist()}"
         )
+    if guard and a.size:
+        from .geometry.guard import segments
+        a = segments(np.ascontiguousarray(a, np.float64))
     if a.size and np.abs(a).max() > COORD_LIMIT:
         row = int(np.argwhere(np.abs(a) > COORD_LIMIT)[0][0])
         raise ArgumentValueError(
@@ -208,7 +214,7 @@ def _integers(name, value, what):
         a = np.asarray(value)
     except (TypeError, ValueError, OverflowError):
         raise ArgumentTypeError(f"{name} must be {what}, got {_show(value)}") from None
-    if a.size == 0 and a.dtype.kind in "iufb":
+    if a.size == 0 and a.dtype.kind in "iufbO":
         return None
     if a.dtype == object:
         items = a.ravel().tolist()

@@ -400,8 +400,7 @@ def test_bad_input_names_the_argument():
         sl.draw.polygon(fb, [(0, 0), (np.nan, 1), (3, 3)])
     with pytest.raises(sl.ArgumentValueError, match="points"):
         sl.draw.polygon(fb, [(0, 0), (np.inf, 1), (3, 3)])
-    with pytest.raises(sl.ArgumentValueError, match="points"):
-        sl.draw.polygon(fb, [(0, 0), (2**31, 1), (3, 3)])
+    sl.draw.polygon(fb, [(0, 0), (2**31, 1), (3, 3)])   # finite: clipped to the guard square
     with pytest.raises(sl.ArgumentValueError, match="points"):
         sl.draw.polygon(fb, [(0, 0, 1), (1, 1, 1)])
     with pytest.raises(sl.ArgumentTypeError, match="points"):
@@ -452,7 +451,7 @@ def test_fuzz_never_writes_outside_and_matches_inside(points, rule, dup):
 def test_fuzz_non_finite_is_a_clear_error(points):
     fb = sl.FrameBuffer(8, 8)
     a = np.array(points, float)
-    if np.isfinite(a).all() and np.abs(a).max() <= 2**30:
+    if np.isfinite(a).all():   # any finite vertex is drawn (issue 11: the guard square)
         sl.draw.polygon(fb, points)
     else:
         with pytest.raises(sl.ArgumentValueError, match="points"):

@@ -270,7 +270,6 @@ def test_bad_attributes_name_the_argument(kwargs, name):
 
 @pytest.mark.parametrize("points,name", [
     ([(1, 1), (float("nan"), 2)], "points"),
-    ([(1, 1), (2**31, 2)], "points"),
     ([(1, 2, 3)], "points"),
     ("abc", "points"),
 ])
@@ -293,7 +292,7 @@ def test_bad_batches():
     with pytest.raises(sl.ArgumentValueError, match="pen"):
         sl.draw.line(fb, 1, 1, 5, 5, pen="square", antialias=True)
     with pytest.raises(sl.ArgumentValueError, match=r"^r=1048576"):
-        sl.draw.circle(fb, 1, 1, 2**20, dash="dotted")
+        sl.draw.circle(fb, 1, 4 - 2**20, 2**20, dash="dotted")   # its outline crosses the frame
 
 
 # -- fuzzing: nothing is written outside the frame buffer -----------------------------------

@@ -15,6 +15,8 @@ import pytest
 import scanline as sl
 from scanline import _validate as v
 
+pytestmark = pytest.mark.boundscheck   # run again with NUMBA_BOUNDSCHECK=1 (.ci/run)
+
 V = np.array([(1.0, 1.0), (10.0, 2.0), (5.0, 9.0)])
 
 #: name -> code run in a child with ``sl``, ``np``, ``V`` (a triangle) and ``fb``.

@@ -12,6 +12,8 @@ slower to start but works.
 """
 
 import os
+import signal
+import threading
 import time
 import types
 import warnings
@@ -91,8 +93,10 @@ def call(kernel, work, *args):
     """
     args = _writable(args)
     compiled = getattr(kernel, "overloads", None)
-    if compiled and COMPILE != "never" or COMPILE == "always" or compiled is None:
+    if compiled is None:
         return kernel(*args)
+    if compiled and COMPILE != "never" or COMPILE == "always":
+        return _interruptible(kernel, work, args)
     if COMPILE == "never":
         return _interpreted(kernel, args)
     cached = _CACHED.get(kernel)
@@ -103,12 +107,50 @@ def call(kernel, work, *args):
             cached = _CACHED[kernel] = False
     spent = _SPENT.get(kernel, 0.0)
     if cached or spent > TWIN_TIME or (work() if callable(work) else work) > TWIN_WORK:
-        return kernel(*args)
+        return _interruptible(kernel, work, args)
     t0 = time.perf_counter()
     try:
         return _interpreted(kernel, args)
     finally:
         _SPENT[kernel] = spent + time.perf_counter() - t0
+
+
+#: Work units from which a compiled kernel runs in a worker thread while the main
+#: thread waits for it in steps of :data:`WAIT` seconds, so that Ctrl-C is answered
+#: at once (a kernel releases the GIL but cannot see signals: the interrupt would
+#: wait for its return).  About a second of a compiled kernel's work.
+LONG_WORK = 20_000_000
+
+#: The main thread's wait step for a long kernel (seconds).
+WAIT = 0.05
+
+
+def _interruptible(kernel, work, args):
+    """``kernel(*args)``; a long one (``work`` >= :data:`LONG_WORK`, in the main
+    thread with Python's own SIGINT handler) in a daemon thread, waited for in short
+    steps: KeyboardInterrupt then reaches the caller within :data:`WAIT` seconds
+    (the kernel finishes its call in the background; the command exits)."""
+    if ((work() if callable(work) else work) < LONG_WORK
+            or threading.current_thread() is not threading.main_thread()
+            or signal.getsignal(signal.SIGINT) is not signal.default_int_handler):
+        return kernel(*args)
+    outcome = []
+
+    def run():
+        try:
+            outcome.append((True, kernel(*args)))
+        except BaseException as error:      # handed to the caller below
+            outcome.append((False, error))
+
+    worker = threading.Thread(target=run, daemon=True,
+                              name=f"scanline {getattr(kernel, '__name__', 'kernel')}")
+    worker.start()
+    while worker.is_alive():
+        worker.join(WAIT)
+    ok, value = outcome[0]
+    if not ok:
+        raise value
+    return value
 
 
 def _writable(args):

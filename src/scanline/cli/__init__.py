@@ -13,6 +13,7 @@ traceback.
 import argparse
 import os
 import re
+import signal
 import sys
 import traceback
 
@@ -106,4 +107,17 @@ def main(argv=None):
         return 2
     except KeyboardInterrupt:
         return 130
+    finally:
+        if argv is None:
+            _quiet_exit()
     return 0
+
+
+def _quiet_exit():
+    """Ignore Ctrl-C from now on: the command is done (its file written), and an
+    interrupt during the interpreter's shutdown would only print "Exception ignored
+    ... KeyboardInterrupt"."""
+    import threading
+
+    if threading.current_thread() is threading.main_thread():
+        signal.signal(signal.SIGINT, signal.SIG_IGN)

@@ -16,7 +16,10 @@ def _segments(segments, name="segments"):
     """(N, 4) float64 array; the values are checked by the kernels (see
     :func:`_check`)."""
     try:
-        a = np.asarray(segments, dtype=np.float64)
+        raw = np.asarray(segments)
+        if raw.dtype.kind in "cbSUV":     # complex, bool, text: not coordinates
+            raise TypeError
+        a = np.asarray(raw, dtype=np.float64)
     except (TypeError, ValueError):
         raise ArgumentTypeError(
             f"{name} must be a numeric array of shape (N, 4) (rows x0, y0, x1, y1), got "

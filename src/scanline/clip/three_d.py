@@ -199,14 +199,10 @@ def _polygon_batch(name, polygons, counts, columns):
         counts = np.array([len(p) for p in parts], np.int64)
     else:
         verts = real_array(name, polygons, f"(V, {columns}+)")
-        c = real_array("counts", counts, "(P,)")
         if verts.ndim != 2 or verts.shape[1] < columns:
             raise ArgumentValueError(f"{name} must have shape (V, C), C >= {columns}, got "
                                      f"shape {verts.shape}")
-        if c.ndim != 1 or (c < 0).any() or (c != np.floor(c)).any() or c.sum() != len(verts):
-            raise ArgumentValueError(
-                f"counts must be P integers >= 0 adding up to the {len(verts)} vertices")
-        counts = c.astype(np.int64)
+        counts, _ = v.counts("counts", counts, len(verts), name)
     return np.ascontiguousarray(verts), np.ascontiguousarray(counts)
 
 

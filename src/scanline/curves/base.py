@@ -103,6 +103,8 @@ def control_points(name, value, minimum=1):
     rows, or holds NaN or infinite coordinates.
     """
     try:
+        if np.asarray(value).dtype.kind in "cbSUV":    # complex, bool, text
+            raise TypeError
         a = np.array(value, dtype=np.float64)
     except (TypeError, ValueError):
         raise ArgumentTypeError(

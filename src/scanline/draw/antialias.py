@@ -30,6 +30,8 @@ from .._kernels import antialias as wu
 from .._kernels import coverage as cov
 from .._kernels._jit import call
 from ..geometry import contours as parse
+from ..geometry import guard
+from ..geometry.guard import segments as guard_segments
 from . import _blend
 from ._common import area_work, target
 from .conics import conic_work
@@ -38,7 +40,7 @@ from .lines import line_work
 from .polygon import _rule
 
 
-def _reals(name, value, columns, radius_columns=()):
+def _reals(name, value, columns, radius_columns=(), guard=False):
     """An (N, columns) float64 array, validated as
     :func:`scanline._validate.coordinate_array` validates (finite, within +-2**30,
     radii >= 0) but not rounded.  A well-formed numeric array passes one test of
@@ -53,8 +55,9 @@ def _reals(name, value, columns, radius_columns=()):
         if a.size == 0 or (np.abs(a).max() <= v.COORD_LIMIT
                            and all(a[:, c].min() >= 0 for c in radius_columns)):
             return a
-    v.coordinate_array(name, value, columns, radius_columns)
-    return np.ascontiguousarray(np.asarray(value, np.float64).reshape(-1, columns))
+    v.coordinate_array(name, value, columns, radius_columns, guard)
+    a = np.ascontiguousarray(np.asarray(value, np.float64).reshape(-1, columns))
+    return guard_segments(a) if guard else a
 
 
 def _setup(fb, color, n):
@@ -98,7 +101,7 @@ def lines(fb, segments, color=None):
            [ 96, 191, 191, 191, 191,  96],
            [ 32,  64,  64,  64,  64,  32]], dtype=uint8)
     """
-    segs = _reals("segments", segments, 4)
+    segs = _reals("segments", segments, 4, guard=True)
     buf, mode, width, height, table, srcs = _setup(fb, color, len(segs))
     call(wu.draw_lines, lambda: 20 * line_work(segs, width, height), buf, mode, width, height,
          table, segs, srcs)
@@ -172,8 +175,9 @@ OUTLINE_LIMIT = 2.0**40
 
 
 def _vertices(value):
-    """``value`` as a contiguous float64 (V, 2) array of finite vertices within
-    +-OUTLINE_LIMIT (no copy if it already is one)."""
+    """``value`` as a contiguous float64 (V, 2) array of finite vertices (no copy if
+    it already is one; what lies beyond +-OUTLINE_LIMIT is clipped to the guard
+    square, :mod:`scanline.geometry.guard`)."""
     try:
         a = np.asarray(value)
     except (TypeError, ValueError):
@@ -182,10 +186,9 @@ def _vertices(value):
         raise ArgumentTypeError(f"vertices must be a (V, 2) array of real numbers, got "
                                 f"{v._show(value)}")
     a = np.ascontiguousarray(a, np.float64)
-    if a.size and not np.abs(a).max() <= OUTLINE_LIMIT:        # NaN fails too
-        i = int(np.argmax(~(np.abs(a) <= OUTLINE_LIMIT).all(axis=1)))
-        raise ArgumentValueError(f"vertices must be finite and within +-2**40; vertex {i} "
-                                 f"is {a[i].tolist()}")
+    if a.size and not np.abs(a).max() <= OUTLINE_LIMIT and not np.isfinite(a).all():
+        i = int(np.argmax(~np.isfinite(a).all(axis=1)))
+        raise ArgumentValueError(f"vertices must be finite; vertex {i} is {a[i].tolist()}")
     return a
 
 
@@ -201,6 +204,7 @@ def _fill_parsed(fb, verts, offsets, shapes, color, rule):
     :mod:`scanline.geometry.contours`)."""
     code = _rule(rule)
     buf, mode, width, height, table, srcs = _setup(fb, color, len(shapes) - 1)
+    verts, offsets, shapes = guard.areas(verts, offsets, shapes)
     counts = offsets[shapes[1:]] - offsets[shapes[:-1]]
     most = int(counts.max()) if len(counts) else 0
     call(cov.fill_shapes, lambda: 4 * area_work(width, height, verts, len(shapes) - 1),
@@ -300,7 +304,7 @@ def fill(fb, contours, color=None, rule="nonzero"):
            [  0, 128, 255, 128,   0],
            [  0, 128, 255, 128,   0]], dtype=uint8)
     """
-    verts, offsets = parse.contours("contours", contours)
+    verts, offsets = parse.contours("contours", contours, far=True)
     _fill_parsed(fb, verts, offsets, np.array([0, len(offsets) - 1], np.int64), [color], rule)
 
 
@@ -323,7 +327,7 @@ def fills(fb, shapes, color=None, rule="nonzero", counts=None):
     Later shapes are composited over earlier ones.
     """
     if counts is None:
-        verts, offsets, polys = parse.batch("shapes", shapes)
+        verts, offsets, polys = parse.batch("shapes", shapes, far=True)
     else:
-        verts, offsets, polys = parse.flat("shapes", shapes, counts)
+        verts, offsets, polys = parse.flat("shapes", shapes, counts, far=True)
     _fill_parsed(fb, verts, offsets, polys, color, rule)

@@ -9,6 +9,7 @@ from .._kernels import conics as k
 from .._kernels._jit import call
 from .._kernels.variants import layout
 from ..errors import ArgumentValueError
+from ..geometry import guard
 from . import strokes
 from ._common import colors, target
 from .._typing import Cap, Color, Join
@@ -22,6 +23,23 @@ if TYPE_CHECKING:
 #: r_x * r_y <= 2**29, and one ellipse takes at most r_x + r_y steps.
 ELLIPSE_AXIS_LIMIT = 2**24
 ELLIPSE_PRODUCT_LIMIT = 2**29
+
+
+def _big(*values):
+    """Whether a conic's parameters may be beyond the exact limits (not all ints of
+    at most 2**14), so that :func:`scanline.geometry.guard.conic_outside` is asked
+    first."""
+    return not all(type(c) is int and -(1 << 14) <= c <= 1 << 14 for c in values)
+
+
+def _outside(fb, xc, yc, rx, ry, attrs):
+    """Whether a conic beyond the exact limits (far center, huge radii) misses the
+    frame buffer and so draws nothing (:func:`scanline.geometry.guard.conic_outside`,
+    reach: the stroke's margin)."""
+    if not _big(xc, yc, rx, ry):
+        return False
+    reach = 1.0 if attrs is None else float(strokes._margin(attrs))
+    return guard.conic_outside(fb, xc, yc, rx, ry, reach)
 
 
 def circle(fb: "FrameBuffer", xc: float, yc: float, r: float, color: Optional[Color] = None,
@@ -71,6 +89,8 @@ def circle(fb: "FrameBuffer", xc: float, yc: float, r: float, color: Optional[Co
     --###--
     """
     attrs = strokes.styled(style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen)
+    if _outside(fb, xc, yc, r, r, attrs):
+        return
     xc, yc, r = v.coordinate("xc", xc), v.coordinate("yc", yc), v.radius("r", r)
     if attrs is not None:
         strokes.conics(fb, np.array([[xc, yc, r, r]], np.int64), color, attrs, antialias,
@@ -164,6 +184,8 @@ def ellipse(fb: "FrameBuffer", xc: float, yc: float, rx: float, ry: float,
     --#####--
     """
     attrs = strokes.styled(style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen)
+    if _outside(fb, xc, yc, rx, ry, attrs):
+        return
     rx = v.radius("rx", rx)
     ry = v.radius("ry", ry)
     _check_ellipse(rx, ry)

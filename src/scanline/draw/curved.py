@@ -19,7 +19,8 @@ from .._kernels._jit import call
 from .._kernels.variants import layout, token
 from . import _blend
 from ._common import colors, target
-from .conics import _check_ellipse, circle, ellipse
+from ..geometry import guard
+from .conics import _big, _check_ellipse, circle, ellipse
 from .lines import lines
 
 TAU = 2 * math.pi
@@ -157,6 +158,8 @@ def fill_circle(fb, xc, yc, r, color=None, style=None, antialias=False):
     if antialias:
         _antialiased(fb, "(xc, yc, r)", [(xc, yc, r)], 3, [color], style)
         return
+    if _big(xc, yc, r, r) and guard.conic_outside(fb, xc, yc, r, r, fill=True):
+        return
     xc, yc = _center(xc, yc)
     r = v.radius("r", r)
     hp, combine = _whole()
@@ -206,6 +209,8 @@ def fill_ellipse(fb, xc, yc, rx, ry, color=None, style=None, antialias=False):
     """
     if antialias:
         _antialiased(fb, "(xc, yc, rx, ry)", [(xc, yc, rx, ry)], 4, [color], style)
+        return
+    if _big(xc, yc, rx, ry) and guard.conic_outside(fb, xc, yc, rx, ry, fill=True):
         return
     xc, yc = _center(xc, yc)
     rx = v.radius("rx", rx)

@@ -102,6 +102,12 @@ def line(fb: "FrameBuffer", x0: float, y0: float, x1: float, y1: float,
         strokes.polyline(fb, points, color, style=attrs, antialias=antialias)
         return
     buf, packed, width, height = target(fb)
+    if not all(type(c) is int and -v.COORD_LIMIT <= c <= v.COORD_LIMIT
+               for c in (x0, y0, x1, y1)):
+        ends = [v.number(n, c) for n, c in (("x0", x0), ("y0", y0), ("x1", x1), ("y1", y1))]
+        if max(map(abs, ends)) > v.COORD_LIMIT:     # far: clipped to the guard first
+            lines(fb, np.array([ends]), color, method)
+            return
     x0, y0, x1, y1 = (v.coordinate(n, c) for n, c in (("x0", x0), ("y0", y0), ("x1", x1),
                                                       ("y1", y1)))
     call(k.draw_line, 2 * min(max(abs(x1 - x0), abs(y1 - y0)), width + height), buf,
@@ -147,6 +153,6 @@ def lines(fb: "FrameBuffer", segments: ArrayLike, color: Any = None,
                           style=attrs, antialias=antialias)
         return
     buf, packed, width, height = target(fb)
-    segs = v.coordinate_array("segments", segments, 4)
+    segs = v.coordinate_array("segments", segments, 4, guard=True)
     call(k.draw_lines, lambda: 2 * line_work(segs, width, height), buf, layout(packed), width,
          height, segs, colors(fb, color, len(segs)), code)

@@ -11,6 +11,7 @@ from .._kernels._jit import call
 from .._kernels.variants import layout
 from ..errors import ArgumentValueError
 from ..geometry import contours as parse
+from ..geometry import guard
 from . import _blend
 from ._common import area_work, colors, target
 from .._typing import Color, Rule
@@ -165,9 +166,10 @@ def polygon(fb: "FrameBuffer", points: Any, color: Optional[Color] = None,
         _solid_only(style)
         fill(fb, points, color, rule)
         return
-    verts, offsets = parse.contours("points", points)
+    verts, offsets = parse.contours("points", points, far=True)
     code = _rule(rule)
-    polys = np.array([0, len(offsets) - 1], np.int64)
+    verts, offsets, polys = guard.areas(verts, offsets, np.array([0, len(offsets) - 1],
+                                                                 np.int64))
     max_edges = _max_edges(offsets, polys)
 
     def draw(buf, packed, width, height, ox, oy, pixel):
@@ -230,13 +232,14 @@ def polygons(fb, polygons, color=None, rule="even-odd", counts=None, antialias=F
     """
     buf, packed, width, height = target(fb)
     if counts is None:
-        verts, offsets, polys = parse.batch("polygons", polygons)
+        verts, offsets, polys = parse.batch("polygons", polygons, far=True)
     else:
-        verts, offsets, polys = parse.flat("polygons", polygons, counts)
+        verts, offsets, polys = parse.flat("polygons", polygons, counts, far=True)
     if antialias:
         from .antialias import _fill_parsed
         _fill_parsed(fb, verts, offsets, polys, color, rule)
         return
+    verts, offsets, polys = guard.areas(verts, offsets, polys)
     code = _rule(rule)
     n = len(polys) - 1
     most = _max_edges(offsets, polys)

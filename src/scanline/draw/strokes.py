@@ -27,6 +27,7 @@ from .._kernels._jit import call
 from .._kernels.variants import layout
 from ..errors import ArgumentTypeError, ArgumentValueError
 from ..geometry import contours as parse
+from ..geometry import guard
 from ..linestyle import LineStyle
 from . import _blend
 from ._common import area_work, colors, target
@@ -89,19 +90,19 @@ def _points(name, points):
         raise ArgumentValueError(
             f"{name} must be an (N, 2) array of vertices (x, y), got {v._show(points)}")
     a = np.ascontiguousarray(a, np.float64)
-    parse.check_vertices(name, a)
+    parse.check_vertices(name, a, far=True)
     return a
 
 
 def batch(name, polylines, counts):
     """A batch of polylines as ``(verts, offsets)``."""
     if counts is None:
-        verts, offsets, polys = parse.batch(name, polylines)
+        verts, offsets, polys = parse.batch(name, polylines, far=True)
         if len(polys) != len(offsets):
             raise ArgumentValueError(
                 f"{name} must be a list of polylines, each one (N, 2) array of vertices")
         return verts, offsets
-    verts, offsets, _ = parse.flat(name, polylines, counts)
+    verts, offsets, _ = parse.flat(name, polylines, counts, far=True)
     return verts, offsets
 
 
@@ -208,6 +209,10 @@ def stroke(fb, verts, offsets, closed, color, style, antialias=False):
     """Draw polylines ``verts[offsets[i]:offsets[i + 1]]`` (``closed[i]``) in
     ``style`` with ``color`` (one, or one per polyline)."""
     buf, packed, width, height = target(fb)
+    given = len(offsets) - 1
+    verts, offsets, closed, owner = guard.paths(verts, offsets, closed)
+    if isinstance(color, (list, np.ndarray)) and len(color) == given != len(owner):
+        color = _per_piece(color, owner)        # far polylines were cut into pieces
     n = len(offsets) - 1
     if n == 0:
         return
@@ -402,6 +407,8 @@ def polylines(fb, polylines, color=None, closed=False, *, counts=None, style=Non
 def segment_array(name, segments):
     """(N, 4) float64 segments, finite and within +-2**30 (not rounded)."""
     try:
+        if np.asarray(segments).dtype.kind in "cbSUV":    # complex, bool, text
+            raise TypeError
         a = np.asarray(segments, dtype=np.float64)
     except (TypeError, ValueError):
         raise ArgumentTypeError(f"{name} must be a numeric array of shape (N, 4), got {v._show(segments)}") from None
@@ -412,7 +419,7 @@ def segment_array(name, segments):
     if a.ndim != 2 or a.shape[1] != 4:
         raise ArgumentValueError(f"{name} must have shape (N, 4), got shape {a.shape}")
     a = np.ascontiguousarray(a)
-    parse.check_vertices(name, a.reshape(-1, 2))
+    parse.check_vertices(name, a.reshape(-1, 2), far=True)
     return a
 
 

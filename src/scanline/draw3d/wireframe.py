@@ -73,17 +73,9 @@ def project_edges_into(vertices, edges, camera, box, aspect=None, details=True):
     verts = real_array("vertices", vertices, "(V, 3)")
     if verts.ndim != 2 or verts.shape[1] != 3:
         raise ArgumentValueError(f"vertices must have shape (V, 3), got {verts.shape}")
-    e = np.asarray(edges)
-    if e.size == 0:
-        e = e.reshape(0, 2)
-    if e.ndim != 2 or e.shape[1] != 2 or (e.size and e.dtype.kind not in "iu"):
-        raise ArgumentValueError(f"edges must be an integer array of shape (E, 2), got "
-                                 f"{e.dtype} of shape {e.shape}")
-    e = np.ascontiguousarray(e, np.int64)
-    if e.size and (e.min() < 0 or e.max() >= len(verts)):
-        row = int(np.argmax((e < 0).any(axis=1) | (e >= len(verts)).any(axis=1)))
-        raise ArgumentValueError(f"edges row {row} = {e[row].tolist()} refers to a vertex "
-                                 f"out of range (0 to {len(verts) - 1})")
+    e = v.index_array("edges", edges, shape=(None, 2), high=len(verts) - 1,
+                      bound_text=f" (the last of the {len(verts)} vertices)",
+                      what="an integer array of shape (E, 2) (vertex indices)")
     clip, scale, offset = camera.mapping(box, aspect)
     out = np.empty((len(e), 4))
     depth = np.empty((len(e) if details else 0, 2))

@@ -40,18 +40,21 @@ def _ring(name, value):
     return _numeric(name, a)
 
 
-def check_vertices(name, verts, offsets=None):
-    """Raise naming ``name`` unless every vertex is finite and within +-2**30.
+def check_vertices(name, verts, offsets=None, far=False):
+    """Raise naming ``name`` unless every vertex is finite and within +-2**30 (any
+    finite value with ``far``: the drawing functions clip such geometry to a guard
+    rectangle, :mod:`scanline.geometry.guard`).
 
     With ``offsets`` (where each part starts), the message names the part:
     ``name[p]``."""
     if verts.size == 0:
         return
     lo, hi = verts.min(), verts.max()   # NaN propagates: one fast test for the usual case
-    if -COORD_LIMIT <= lo and hi <= COORD_LIMIT:
+    limit = np.inf if far else COORD_LIMIT
+    if -limit <= lo and hi <= limit and not (far and (np.isinf(lo) or np.isinf(hi))):
         return
     for bad, what in ((~np.isfinite(verts).all(axis=1), "must be finite"),
-                      ((np.abs(verts) > COORD_LIMIT).any(axis=1),
+                      ((np.abs(verts) > limit).any(axis=1),
                        f"must be within the supported coordinate range [-{COORD_LIMIT}, "
                        f"{COORD_LIMIT}] (what lies beyond the frame buffer is clipped "
                        "anyway)")):
@@ -64,7 +67,7 @@ def check_vertices(name, verts, offsets=None):
             raise ArgumentValueError(f"{where} {what}; vertex {j} is {verts[i].tolist()}")
 
 
-def contours(name, value):
+def contours(name, value, far=False):
     """Parse a polygon given as one contour or several.
 
     Returns ``(verts, offsets)``: contour ``c`` is ``verts[offsets[c]:offsets[c+1]]``.
@@ -102,7 +105,7 @@ def contours(name, value):
             a = _numeric(name, a)
             verts = np.ascontiguousarray(a.reshape(-1, 2))
             offsets = np.arange(0, verts.shape[0] + 1, a.shape[1], dtype=np.int64)
-            check_vertices(name, verts, offsets)
+            check_vertices(name, verts, offsets, far)
             return verts, offsets
         else:
             raise ArgumentValueError(
@@ -113,11 +116,11 @@ def contours(name, value):
     offsets[1:] = np.cumsum([len(r) for r in rings])
     verts = (np.ascontiguousarray(np.concatenate(rings), dtype=np.float64) if rings
              else np.empty((0, 2), np.float64))
-    check_vertices(name, verts, offsets if multiple else None)
+    check_vertices(name, verts, offsets if multiple else None, far)
     return verts, offsets
 
 
-def batch(name, value):
+def batch(name, value, far=False):
     """Parse a batch of polygons: a list of polygons (each one contour or several,
     as :func:`contours` takes) or an (M, K, 2) array of M one-contour polygons.
 
@@ -129,7 +132,7 @@ def batch(name, value):
         m, k = a.shape[0], a.shape[1]
         verts = np.ascontiguousarray(a.reshape(-1, 2))
         offsets = np.arange(m + 1, dtype=np.int64) * k
-        check_vertices(name, verts, offsets)
+        check_vertices(name, verts, offsets, far)
         return verts, offsets, np.arange(m + 1, dtype=np.int64)
     if isinstance(value, np.ndarray) and value.size == 0:
         value = []
@@ -147,9 +150,9 @@ def batch(name, value):
         offsets = np.zeros(m + 1, np.int64)
         offsets[1:] = np.cumsum(np.fromiter(map(len, value), np.int64, m))
         verts = np.ascontiguousarray(_numeric(name, verts))
-        check_vertices(name, verts, offsets)
+        check_vertices(name, verts, offsets, far)
         return verts, offsets, np.arange(m + 1, dtype=np.int64)
-    parts = [contours(f"{name}[{i}]", p) for i, p in enumerate(value)]
+    parts = [contours(f"{name}[{i}]", p, far) for i, p in enumerate(value)]
     polys = np.zeros(len(parts) + 1, np.int64)
     polys[1:] = np.cumsum([len(off) - 1 for _, off in parts])
     offs = [np.zeros(1, np.int64)]
@@ -162,7 +165,7 @@ def batch(name, value):
     return verts, np.concatenate(offs), polys
 
 
-def flat(name, vertices, counts):
+def flat(name, vertices, counts, far=False):
     """Parse a batch given flat: all vertices in one (V, 2) array and the vertex
     count of each polygon (one contour each) in ``counts``, so that numpy data needs
     no per-polygon conversion.
@@ -179,5 +182,5 @@ def flat(name, vertices, counts):
         raise ArgumentValueError(f"{name} must be a (V, 2) array of vertices when counts is "
                                  f"given, got shape {verts.shape}")
     c, offsets = index_counts("counts", counts, verts.shape[0], name)
-    check_vertices(name, verts, offsets)
+    check_vertices(name, verts, offsets, far)
     return verts, offsets, np.arange(c.size + 1, dtype=np.int64)

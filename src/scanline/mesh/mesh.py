@@ -22,11 +22,12 @@ def _flat_faces(faces, n_vertices):
     """``(indices, offsets)`` of faces given as an (F, n) array or a list of index
     sequences, checked: integers in range, at least three per face, none repeated
     within a face."""
+    top = max(n_vertices - 1, 0)
+    bound = f" (the last of the mesh's {n_vertices} vertices)"
     if isinstance(faces, np.ndarray) and faces.ndim == 2:
-        arr = faces
-        if arr.dtype.kind == "f" and (arr != np.floor(arr)).any():
-            raise ArgumentTypeError("faces must hold integer vertex indices")
-        indices = arr.astype(np.int64).reshape(-1)
+        arr = v.index_array("faces", faces, shape=(None, None), high=top, bound_text=bound,
+                            what="an (F, n) integer array of vertex indices")
+        indices = arr.reshape(-1)
         offsets = np.arange(0, arr.size + 1, max(arr.shape[1], 1), dtype=np.int64)[:len(arr) + 1]
         sizes = np.full(len(arr), arr.shape[1])
     else:
@@ -36,14 +37,8 @@ def _flat_faces(faces, n_vertices):
                 f"{v._show(faces)}")
         parts = []
         for i, f in enumerate(faces):
-            a = np.asarray(f)
-            if a.ndim != 1 or (a.size and a.dtype.kind not in "iuf") or a.dtype == bool:
-                raise ArgumentTypeError(
-                    f"faces[{i}] must be a list of vertex indices, got {v._show(f)}")
-            if a.dtype.kind == "f" and (a != np.floor(a)).any():
-                raise ArgumentTypeError(f"faces[{i}] must hold integer vertex indices, got "
-                                        f"{v._show(f)}")
-            parts.append(a.astype(np.int64))
+            parts.append(v.index_array(f"faces[{i}]", f, high=top, bound_text=bound,
+                                       what="a list of integer vertex indices"))
         sizes = np.array([len(p) for p in parts], np.int64)
         indices = np.concatenate(parts) if parts else np.zeros(0, np.int64)
         offsets = np.concatenate([[0], np.cumsum(sizes)]).astype(np.int64)

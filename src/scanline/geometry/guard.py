@@ -1,0 +1,235 @@
+"""Any finite coordinate drawn: geometry reaching beyond the exact integer range is
+clipped in floating point against a *guard rectangle* before the kernels see it.
+
+The drawing kernels are exact for coordinates within +-2**30
+(:data:`scanline._validate.COORD_LIMIT`).  A primitive with a vertex beyond that
+(a projection near the eye plane, a plot's far-away point) is first clipped to the
+guard square [-GUARD, GUARD]**2: Sutherland-Hodgman (1974) for areas, whose result
+has the same winding number as the original at every point inside the guard (so
+both fill rules keep their meaning there), Liang-Barsky (1984) for strokes and lines,
+which are cut where they leave the guard.  The guard lies at least 2**28 pixels
+beyond any frame buffer scanline writes (the largest image is far smaller), so the
+cuts, caps and joins it introduces are never visible.  Geometry within the exact
+range is passed on unchanged, so everything drawn before is drawn exactly as before.
+
+Crossings are computed in float64 when the edge's coordinates are within
+:data:`EXACT_FROM` (an error below 2**-14 pixel) and as exact rationals beyond (the
+float formula would lose the line's position: with vertices at 1e300 its rounding
+error is 1e284), then rounded once to the nearest float.
+
+References
+----------
+I. E. Sutherland, G. W. Hodgman, "Reentrant polygon clipping", CACM 17(1), 32-42, 1974.
+Y.-D. Liang, B. A. Barsky, "A new concept and method for line clipping", ACM TOG 3(1),
+1-22, 1984.  Hearn & Baker, sections 6-7 (line clipping) and 6-8 (polygon clipping).
+"""
+
+from fractions import Fraction
+
+import numpy as np
+
+from .._validate import COORD_LIMIT
+
+#: Half side of the guard square (device pixels).
+GUARD = float(2**29)
+
+#: Edges with a coordinate beyond this magnitude get exact crossings.
+EXACT_FROM = float(2**36)
+
+#: The four sides of the guard: (axis, sign) keeps sign * p[axis] <= GUARD.
+_SIDES = ((0, 1.0), (0, -1.0), (1, 1.0), (1, -1.0))
+
+
+def far(verts):
+    """Whether any vertex of the (N, 2) array lies beyond the exact range."""
+    return verts.size > 0 and not np.abs(verts).max() <= COORD_LIMIT
+
+
+def _cross(a, b, axis, bound):
+    """The points where the segments a[i]-b[i] (rows (x, y)) meet the line
+    p[axis] = bound (each segment crosses it)."""
+    o = 1 - axis
+    out = np.empty_like(a)
+    out[:, axis] = bound
+    with np.errstate(all="ignore"):
+        t = (bound - a[:, axis]) / (b[:, axis] - a[:, axis])
+        out[:, o] = a[:, o] + t * (b[:, o] - a[:, o])
+    big = np.flatnonzero(np.maximum(np.abs(a).max(axis=1), np.abs(b).max(axis=1)) > EXACT_FROM)
+    for i in big.tolist():
+        ai, bi = a[i].tolist(), b[i].tolist()
+        t = (Fraction(bound) - Fraction(ai[axis])) / (Fraction(bi[axis]) - Fraction(ai[axis]))
+        out[i, o] = float(Fraction(ai[o]) + t * (Fraction(bi[o]) - Fraction(ai[o])))
+    return out
+
+
+def ring(points):
+    """The (N, 2) closed contour ``points`` clipped to the guard square
+    (Sutherland-Hodgman, one side after another); may come back empty."""
+    p = points
+    for axis, sign in _SIDES:
+        if len(p) == 0:
+            break
+        inside = sign * p[:, axis] <= GUARD
+        if inside.all():
+            continue
+        prev = np.roll(p, 1, axis=0)
+        prev_in = np.roll(inside, 1)
+        crossing = inside != prev_in
+        cut = np.zeros_like(p)
+        cut[crossing] = _cross(prev[crossing], p[crossing], axis, sign * GUARD)
+        # each vertex emits [the crossing of the edge reaching it] + [itself if inside]
+        pair = np.stack([cut, p], axis=1).reshape(-1, 2)
+        keep = np.stack([crossing, inside], axis=1).reshape(-1)
+        p = pair[keep]
+    return np.ascontiguousarray(p, np.float64)
+
+
+def areas(verts, offsets, polys):
+    """Clip every contour of a batch of areas (:func:`scanline.geometry.contours.batch`
+    form) that reaches beyond the exact range; contours left empty are dropped.
+    Returns new ``(verts, offsets, polys)`` (the same arrays when nothing is far)."""
+    if not far(verts):
+        return verts, offsets, polys
+    rings, counts = [], np.zeros(len(polys) - 1, np.int64)
+    for p in range(len(polys) - 1):
+        for c in range(polys[p], polys[p + 1]):
+            r = verts[offsets[c]:offsets[c + 1]]
+            if far(r):
+                r = ring(r)
+            if len(r):
+                rings.append(r)
+                counts[p] += 1
+    new_offsets = np.zeros(len(rings) + 1, np.int64)
+    new_offsets[1:] = np.cumsum([len(r) for r in rings])
+    new_polys = np.zeros(len(polys), np.int64)
+    new_polys[1:] = np.cumsum(counts)
+    new_verts = np.concatenate(rings) if rings else np.empty((0, 2), np.float64)
+    return np.ascontiguousarray(new_verts), new_offsets, new_polys
+
+
+def segments(segs):
+    """Liang-Barsky: the (N, 4) segments (x0, y0, x1, y1) clipped to the guard
+    square; a segment outside it becomes the point (-GUARD, -GUARD), outside every
+    frame buffer (so rows keep their colors); rows within the exact range are
+    unchanged (the same array when no row is far)."""
+    if not far(segs.reshape(-1, 2)):
+        return segs
+    out = segs.copy()
+    for i in np.flatnonzero(np.abs(segs).max(axis=1) > COORD_LIMIT).tolist():
+        piece = _clip_segment(segs[i])
+        out[i] = (-GUARD, -GUARD, -GUARD, -GUARD) if piece is None else piece
+    return out
+
+
+def _clip_segment(s):
+    """One segment clipped to the guard (exact parameters, Liang-Barsky), or None."""
+    x0, y0, x1, y1 = (Fraction(c) for c in s.tolist())
+    dx, dy = x1 - x0, y1 - y0
+    g = Fraction(GUARD)
+    t0, t1 = Fraction(0), Fraction(1)
+    for p, q in ((-dx, x0 + g), (dx, g - x0), (-dy, y0 + g), (dy, g - y0)):
+        if p == 0:
+            if q < 0:
+                return None
+            continue
+        r = q / p
+        if p < 0:
+            t0 = max(t0, r)
+        else:
+            t1 = min(t1, r)
+        if t0 > t1:
+            return None
+    return np.array([float(x0 + t0 * dx), float(y0 + t0 * dy), float(x0 + t1 * dx),
+                     float(y0 + t1 * dy)])
+
+
+def paths(verts, offsets, closed):
+    """Polylines (``closed[i]``: joined back to their start) cut where they leave the
+    guard square: each far polyline becomes the open runs of its segments' clipped
+    parts.  Returns ``(verts, offsets, closed, owner)``, ``owner[j]`` the polyline
+    piece j comes from (the same arrays and ``arange`` when nothing is far)."""
+    n = len(offsets) - 1
+    if not far(verts):
+        return verts, offsets, closed, np.arange(n)
+    out, flags, owner = [], [], []
+    for i in range(n):
+        p = verts[offsets[i]:offsets[i + 1]]
+        if not far(p):
+            out.append(p)
+            flags.append(bool(closed[i]))
+            owner.append(i)
+            continue
+        if closed[i] and len(p) > 2:
+            p = np.vstack([p, p[:1]])
+        if len(p) == 1:
+            continue          # a single far point: outside the guard, nothing to draw
+        run = []
+        for s in (_clip_segment(e) for e in np.hstack([p[:-1], p[1:]])):
+            if s is None:
+                continue
+            a, b = s[:2], s[2:]
+            if run and not np.array_equal(run[-1], a):
+                out.append(np.array(run))
+                flags.append(False)
+                owner.append(i)
+                run = []
+            if not run:
+                run.append(a)
+            run.append(b)
+        if run:
+            out.append(np.array(run))
+            flags.append(False)
+            owner.append(i)
+    new_offsets = np.zeros(len(out) + 1, np.int64)
+    new_offsets[1:] = np.cumsum([len(r) for r in out])
+    new_verts = np.concatenate(out) if out else np.empty((0, 2), np.float64)
+    return (np.ascontiguousarray(new_verts, np.float64), new_offsets,
+            np.array(flags, bool), np.array(owner, np.int64))
+
+
+def conic_outside(fb, xc, yc, rx, ry, reach=1.0, fill=False):
+    """Whether the axis-aligned ellipse (or circle, rx = ry) about (xc, yc), its
+    outline widened by ``reach`` pixels (or its interior with ``fill``), certainly
+    misses the frame buffer ``fb``, for a conic beyond the kernels' exact limits
+    (an off-screen ellipse at x = 1e9 with ry = 1e8 is then simply not drawn).
+
+    Exact for the ellipse itself, conservative for the widened outline: the
+    d-offsets of the ellipse lie between the ellipses of semi-axes (rx - d, ry - d)
+    and (rx + d, ry + d).  Scaling x by 1/a and y by 1/b makes an ellipse the unit
+    circle and the frame's rectangle another rectangle: the ellipse misses it when
+    its nearest point is beyond 1 (outside) or, for an outline, its farthest corner
+    within the inner ellipse (the frame inside the ring's hole).  Anything that is
+    not four finite reals gives False (the usual validation then answers)."""
+    vals = (xc, yc, rx, ry)
+    if not all(isinstance(c, (int, float, np.integer, np.floating))
+               and not isinstance(c, (bool, np.bool_)) for c in vals):
+        return False
+    try:
+        xc, yc, rx, ry = (float(c) for c in vals)
+    except OverflowError:
+        return False
+    if not all(np.isfinite((xc, yc, rx, ry))) or rx < -0.5 or ry < -0.5:
+        return False
+    rx, ry = max(rx, 0.0), max(ry, 0.0)          # -0.5 < r < 0 rounds to 0
+    with np.errstate(all="ignore"):       # squares of huge ratios are inf: fine
+        return _misses(fb, xc, yc, rx, ry, reach, fill)
+
+
+def _misses(fb, xc, yc, rx, ry, reach, fill):
+    """:func:`conic_outside` for four finite floats."""
+    lo_x, lo_y = -1.0 - reach, -1.0 - reach
+    hi_x, hi_y = fb.width + reach, fb.height + reach
+    dx = np.array([lo_x - xc, hi_x - xc])
+    dy = np.array([lo_y - yc, hi_y - yc])
+    a, b = rx + reach, ry + reach
+    near_x = 0.0 if dx[0] <= 0 <= dx[1] else np.abs(dx).min()
+    near_y = 0.0 if dy[0] <= 0 <= dy[1] else np.abs(dy).min()
+    if (near_x / a) ** 2 + (near_y / b) ** 2 > 1.0 + 1e-9:
+        return True                                # the frame is outside the ellipse
+    if fill:
+        return False
+    a, b = rx - reach, ry - reach
+    if a <= 0 or b <= 0:
+        return False
+    far_x, far_y = np.abs(dx).max(), np.abs(dy).max()
+    return bool((far_x / a) ** 2 + (far_y / b) ** 2 < 1.0 - 1e-9)   # inside the hole

@@ -1,0 +1,125 @@
+"""Any finite coordinate is drawn, clipped (issue 11, item 2): geometry beyond the
+exact range +-2**30 is clipped in floating point to the guard square before the
+integer kernels (:mod:`scanline.geometry.guard`); the pixels are those of the same
+primitive given with its visible part in range."""
+
+import numpy as np
+import pytest
+
+import scanline as sl
+from scanline.geometry import guard
+
+W, H = 40, 30
+BIG = [1e12, -1e12, 1e300, -1e300, 2.0**31, 9.007199254740993e15]
+
+
+def fb(mode="L"):
+    return sl.FrameBuffer(W, H, mode=mode)
+
+
+def same(draw_far, draw_near):
+    a, b = fb(), fb()
+    draw_far(a)
+    draw_near(b)
+    assert b.to_array().any()
+    np.testing.assert_array_equal(a.to_array(), b.to_array())
+
+
+@pytest.mark.parametrize("big", [1e12, 1e300, 2.0**31])
+def test_lines_and_polylines_beyond_the_range(big):
+    # a horizontal line through the frame from -big to +big is the in-range line
+    same(lambda f: sl.draw.line(f, -big, 15, big, 15), lambda f: sl.draw.line(f, -5, 15, 50, 15))
+    same(lambda f: sl.draw.lines(f, [[-big, 7, big, 7], [3, -big, 3, big]]),
+         lambda f: sl.draw.lines(f, [[-9, 7, 60, 7], [3, -9, 3, 60]]))
+    same(lambda f: sl.draw.antialias.lines(f, [[-big, 7.3, big, 7.3]]),
+         lambda f: sl.draw.antialias.lines(f, [[-2**20, 7.3, 2**20, 7.3]]))
+    same(lambda f: sl.draw.polyline(f, [(-big, 5), (20, 5), (20, big)]),
+         lambda f: sl.draw.polyline(f, [(-50, 5), (20, 5), (20, 80)]))
+    same(lambda f: sl.draw.polyline(f, [(-big, 5), (20, 5), (20, big)], width=3),
+         lambda f: sl.draw.polyline(f, [(-50, 5), (20, 5), (20, 80)], width=3))
+    same(lambda f: sl.draw.polyline(f, [(-big, 5), (20, 5), (20, big)], width=3, antialias=True),
+         lambda f: sl.draw.polyline(f, [(-50, 5), (20, 5), (20, 80)], width=3, antialias=True))
+
+
+def test_a_diagonal_from_far_away_keeps_its_slope_exactly():
+    # (-1e300, -1e300)-(1e300, 1e300): the diagonal y = x; float interpolation from
+    # the far endpoint would be off by 1e284
+    same(lambda f: sl.draw.line(f, -1e300, -1e300, 1e300, 1e300),
+         lambda f: sl.draw.line(f, -100, -100, 100, 100))
+    same(lambda f: sl.draw.polygon(f, [(-1e300, -1e300), (1e300, 1e300), (1e300, -1e300)]),
+         lambda f: sl.draw.polygon(f, [(-100, -100), (100, 100), (100, -100)]))
+
+
+@pytest.mark.parametrize("big", [1e12, 1e300])
+def test_fills_beyond_the_range(big):
+    tri = [(-big, -big), (big, -big), (0, big)]
+    # everything of the frame inside: the full frame
+    a = fb()
+    sl.draw.polygon(a, tri)
+    assert a.to_array().all()
+    # a half plane y < 12.5 with far corners, both fill rules and antialiased
+    far_rect = [(-big, -big), (big, -big), (big, 12.5), (-big, 12.5)]
+    near = [(-9, -9), (60, -9), (60, 12.5), (-9, 12.5)]
+    for rule in ("even-odd", "nonzero"):
+        same(lambda f: sl.draw.polygon(f, far_rect, rule=rule),
+             lambda f: sl.draw.polygon(f, near, rule=rule))
+    same(lambda f: sl.draw.polygon(f, far_rect, antialias=True),
+         lambda f: sl.draw.polygon(f, near, antialias=True))
+    same(lambda f: sl.draw.polygons(f, [far_rect, [(2, 20), (8, 20), (5, 26)]], color=["red", "blue"]),
+         lambda f: sl.draw.polygons(f, [near, [(2, 20), (8, 20), (5, 26)]], color=["red", "blue"]))
+
+
+def test_winding_is_kept_inside_the_guard():
+    # a far square wound twice (nonzero: inside; even-odd: outside) around the frame
+    big = 1e15
+    sq = [(-big, -big), (big, -big), (big, big), (-big, big)]
+    twice = sq + sq
+    a, b = fb(), fb()
+    sl.draw.polygon(a, twice, rule="nonzero")
+    sl.draw.polygon(b, twice, rule="even-odd")
+    assert a.to_array().all() and not b.to_array().any()
+
+
+def test_off_screen_ellipse_at_1e9_with_ry_1e8_draws_nothing():
+    for draw in (lambda f: sl.draw.ellipse(f, 1e9, 15, 3e8, 1e8),
+                 lambda f: sl.draw.ellipse(f, 1e9, 15, 1e8, 1e8, width=3),
+                 lambda f: sl.draw.fill_ellipse(f, 1e9, 15, 3e8, 1e8),
+                 lambda f: sl.draw.circle(f, 1e12, 15, 5),
+                 lambda f: sl.draw.circle(f, 20, 15, 1e12),          # the frame in the hole
+                 lambda f: sl.draw.circle(f, 20, 15, 1e12, dash=(2, 1))):
+        f = fb()
+        draw(f)
+        assert not f.to_array().any()
+
+
+def test_a_far_conic_that_reaches_the_frame_is_still_refused_by_name():
+    with pytest.raises(sl.ArgumentValueError, match="yc="):
+        sl.draw.circle(fb(), 20, 15 - 2**40, 2**40)
+
+
+def test_nan_and_inf_are_still_refused():
+    for bad in (np.nan, np.inf, -np.inf):
+        with pytest.raises(sl.ArgumentValueError, match="finite"):
+            sl.draw.polygon(fb(), [(0, 0), (bad, 3), (5, 5)])
+        with pytest.raises(sl.ArgumentValueError, match="finite"):
+            sl.draw.lines(fb(), [[0, 0, bad, 3]])
+        with pytest.raises(sl.ArgumentValueError, match="finite"):
+            sl.draw.polyline(fb(), [(0, 0), (bad, 3)], width=2)
+
+
+def test_guard_ring_matches_shapely_inside_the_guard():
+    shapely = pytest.importorskip("shapely")
+    from shapely.geometry import Polygon, box
+    rng = np.random.default_rng(5)
+    for _ in range(20):
+        hull = Polygon(rng.normal(0, 2**31, (9, 2))).convex_hull   # a valid convex ring
+        pts = np.array(hull.exterior.coords[:-1])
+        ours = guard.ring(pts)
+        ref = Polygon(pts).intersection(box(-guard.GUARD, -guard.GUARD, guard.GUARD, guard.GUARD))
+        assert abs(Polygon(ours).area - ref.area) <= 1e-9 * max(ref.area, 1.0)
+
+
+def test_far_segments_outside_the_guard_keep_their_colors():
+    f = fb("RGB")
+    sl.draw.lines(f, [[-1e300, -5e299, -1e300, 5e299], [0, 3, 39, 3]], color=["red", "blue"])
+    assert (f.to_array()[H - 1 - 3] == (0, 0, 255)).all()

@@ -1,0 +1,63 @@
+"""Ctrl-C during a long kernel call is answered at once, and an interrupt after a
+command has written its file prints nothing (issue 11, item 5)."""
+
+import signal
+import subprocess
+import sys
+import time
+
+LONG = r"""
+import sys, time, numpy as np, scanline as sl
+fb = sl.FrameBuffer(4000, 4000, mode="L")
+rng = np.random.default_rng(0)
+n = 1_000_000            # about 4e9 pixel steps: several seconds of one kernel call
+segs = np.c_[rng.integers(0, 10, n), rng.integers(0, 4000, n), rng.integers(3990, 4000, n),
+             rng.integers(0, 4000, n)].astype(float)
+sl.draw.lines(fb, segs[:10])
+print("ready", flush=True)
+t = time.time()
+try:
+    sl.draw.lines(fb, segs)
+    print("finished", round(time.time() - t, 2), flush=True)
+except KeyboardInterrupt:
+    print("interrupted", round(time.time() - t, 2), flush=True)
+"""
+
+
+def _start(code):
+    # SIGINT at its default (a background shell would start the child ignoring it)
+    return subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True,
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+
+
+def test_ctrl_c_interrupts_a_long_kernel_call():
+    p = _start(LONG)
+    assert p.stdout.readline().strip() == "ready"
+    time.sleep(0.5)
+    p.send_signal(signal.SIGINT)
+    out, err = p.communicate(timeout=120)
+    # the kernel call takes seconds; the interrupt came 0.5 s into it
+    assert out.split()[0] == "interrupted", (out, err[-2000:])
+    assert float(out.split()[1]) < 0.5 + 1.0
+
+
+QUIET = r"""
+import os, signal, sys, time
+sys.argv = ["scanline", "draw", "-o", sys.argv[1], "--size", "8x8", "line", "0", "0", "7", "7"]
+from scanline.cli import main
+status = main()
+os.kill(os.getpid(), signal.SIGINT)     # Ctrl-C after the file is written
+time.sleep(0.2)
+sys.exit(status)
+"""
+
+
+def test_an_interrupt_after_the_file_is_written_prints_nothing(tmp_path):
+    out = tmp_path / "x.png"
+    p = subprocess.run([sys.executable, "-c", QUIET.replace("sys.argv[1]", repr(str(out)))],
+                       capture_output=True, text=True, timeout=120,
+                       preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    assert out.exists()
+    assert p.returncode == 0, p.stderr
+    assert "KeyboardInterrupt" not in p.stderr and "Exception ignored" not in p.stderr

@@ -186,7 +186,7 @@ def coordinate_array(name: str, value: object, columns: int,
         )
     if guard and a.size:
         from .geometry.guard import segments
-        a = segments(np.ascontiguousarray(a, np.float64))
+        a = segments(np.ascontiguousarray(a, np.float64))  # type: ignore[no-untyped-call]
     if a.size and np.abs(a).max() > COORD_LIMIT:
         row = int(np.argwhere(np.abs(a) > COORD_LIMIT)[0][0])
         raise ArgumentValueError(
@@ -206,7 +206,7 @@ def coordinate_array(name: str, value: object, columns: int,
 INT64_MAX = 2**63 - 1
 
 
-def _integers(name, value, what):
+def _integers(name: str, value: object, what: str) -> Optional[NDArray[Any]]:
     """``value`` as an integer numpy array (int or uint dtype, or int64 converted
     from Python ints of any size), refusing everything else; None for an empty
     array of any dtype."""
@@ -233,8 +233,10 @@ def _integers(name, value, what):
     return a
 
 
-def index_array(name, value, *, shape=(None,), low=0, high=INT64_MAX, rising=False,
-                first=None, last=None, what=None, bound_text=""):
+def index_array(name: str, value: object, *, shape: Sequence[Optional[int]] = (None,),
+                low: int = 0, high: int = INT64_MAX, rising: bool = False,
+                first: Optional[int] = None, last: Optional[int] = None,
+                what: Optional[str] = None, bound_text: str = "") -> NDArray[np.int64]:
     """An integer array that indexes -- counts, offsets, indices, the faces of a
     mesh -- checked and converted to int64 before any arithmetic is done with it.
 
@@ -301,11 +303,11 @@ def index_array(name, value, *, shape=(None,), low=0, high=INT64_MAX, rising=Fal
     return out
 
 
-def _shape_text(shape):
+def _shape_text(shape: Sequence[Optional[int]]) -> str:
     return "(" + ", ".join("N" if s is None else str(s) for s in shape) + ("," if len(shape) == 1 else "") + ")"
 
 
-def exact_sum(a):
+def exact_sum(a: NDArray[np.int64]) -> int:
     """The sum of an int64 array as a Python int, exact: numpy's sum wraps around
     on overflow, so large values are added as Python ints."""
     if a.size == 0:
@@ -316,7 +318,8 @@ def exact_sum(a):
     return sum(a.tolist())
 
 
-def counts(name, value, total, total_name):
+def counts(name: str, value: object, total: int,
+           total_name: str) -> tuple[NDArray[np.int64], NDArray[np.int64]]:
     """Per-part counts (``value``, e.g. vertices per polygon) that must add up to
     ``total`` (the length of ``total_name``), as int64 counts and offsets
     ``(counts, offsets)``: part ``i`` is ``offsets[i]:offsets[i + 1]``.

@@ -74,7 +74,7 @@ def project_edges_into(vertices, edges, camera, box, aspect=None, details=True):
     if verts.ndim != 2 or verts.shape[1] != 3:
         raise ArgumentValueError(f"vertices must have shape (V, 3), got {verts.shape}")
     e = v.index_array("edges", edges, shape=(None, 2), high=len(verts) - 1,
-                      bound_text=f" (the last of the {len(verts)} vertices)",
+                      bound_text=f" (larger is out of range: there are {len(verts)} vertices)",
                       what="an integer array of shape (E, 2) (vertex indices)")
     clip, scale, offset = camera.mapping(box, aspect)
     out = np.empty((len(e), 4))

@@ -211,6 +211,7 @@ def conic_outside(fb, xc, yc, rx, ry, reach=1.0, fill=False):
     if not all(np.isfinite((xc, yc, rx, ry))) or rx < -0.5 or ry < -0.5:
         return False
     rx, ry = max(rx, 0.0), max(ry, 0.0)          # -0.5 < r < 0 rounds to 0
+    reach = max(float(reach), 1.0)                # a pixel at least: no zero axes below
     with np.errstate(all="ignore"):       # squares of huge ratios are inf: fine
         return _misses(fb, xc, yc, rx, ry, reach, fill)
 

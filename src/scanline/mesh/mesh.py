@@ -23,8 +23,8 @@ def _flat_faces(faces, n_vertices):
     sequences, checked: integers in range, at least three per face, none repeated
     within a face."""
     top = max(n_vertices - 1, 0)
-    bound = f" (the last of the mesh's {n_vertices} vertices)"
-    if isinstance(faces, np.ndarray) and faces.ndim == 2:
+    bound = f" (larger is out of range: the mesh has {n_vertices} vertices)"
+    if isinstance(faces, np.ndarray) and faces.ndim == 2 and faces.size:
         arr = v.index_array("faces", faces, shape=(None, None), high=top, bound_text=bound,
                             what="an (F, n) integer array of vertex indices")
         indices = arr.reshape(-1)

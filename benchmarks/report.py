@@ -176,7 +176,7 @@ def markdown(record):
 
 #: The topic benchmarks (``benchmarks/<topic>.py``), in README order.
 TOPICS = ("strokes", "antialias", "text", "dither", "clip", "display", "curves", "flatten",
-          "animation")
+          "animation", "render")
 
 
 def topics_markdown(folder=os.path.join(HERE, "results")):

@@ -5,6 +5,8 @@
 space), painted at image precision.
 """
 
+import heapq
+
 import numpy as np
 
 from .. import _validate as v
@@ -52,6 +54,48 @@ class _Pieces:
         return self.poly[p] @ plane[:3] + plane[3]
 
 
+class _Grid:
+    """A uniform grid over the screen, each cell listing the pieces whose bounding
+    boxes meet it: the surfaces that can fail tests 1 and 2 against a surface are
+    found among those sharing its cells, not by scanning the whole list."""
+
+    def __init__(self, pieces):
+        ext = pieces.ext[:pieces.n]
+        self.pieces = pieces
+        size = np.maximum(ext[:, 1] - ext[:, 0], ext[:, 3] - ext[:, 2]) if pieces.n else [1.0]
+        self.cell = max(float(np.median(size)) * 2.0, 1e-6)
+        span = max(float(ext[:, 1].max() - ext[:, 0].min()) if pieces.n else 1.0,
+                   float(ext[:, 3].max() - ext[:, 2].min()) if pieces.n else 1.0)
+        self.cell = max(self.cell, span / 1000.0)      # at most 1000 x 1000 cells
+        self.x0 = float(ext[:, 0].min()) if pieces.n else 0.0
+        self.y0 = float(ext[:, 2].min()) if pieces.n else 0.0
+        self.cells = {}
+        for p in range(pieces.n):
+            self.add(p)
+
+    def _range(self, p):
+        e = self.pieces.ext[p]
+        c = self.cell
+        return (int((e[0] - self.x0) // c), int((e[1] - self.x0) // c),
+                int((e[2] - self.y0) // c), int((e[3] - self.y0) // c))
+
+    def add(self, p):
+        i0, i1, j0, j1 = self._range(p)
+        for i in range(i0, i1 + 1):
+            for j in range(j0, j1 + 1):
+                self.cells.setdefault((i, j), []).append(p)
+
+    def near(self, p, alive):
+        """The pieces alive sharing a cell with ``p`` (p excluded)."""
+        i0, i1, j0, j1 = self._range(p)
+        found = set()
+        for i in range(i0, i1 + 1):
+            for j in range(j0, j1 + 1):
+                found.update(self.cells.get((i, j), ()))
+        found.discard(p)
+        return np.array([q for q in found if q in alive], np.int64)
+
+
 def behind_plane(pieces, s, t):
     """Test 3: every vertex of ``s`` is behind (or on) the plane of ``t``."""
     return bool((pieces.side(pieces.plane[t], s) >= -pieces.eps).all())
@@ -64,17 +108,23 @@ def in_front_of_plane(pieces, t, s):
 
 def projections_apart(a, b, eps):
     """Test 5: the (x, y) projections of the convex polygons ``a`` and ``b`` do not
-    overlap (they may touch): some edge of either separates them."""
-    for p, q in ((a, b), (b, a)):
-        pts = p[:, :2]
-        orient = 1.0 if signed_area(p) > 0 else -1.0
-        edges = np.roll(pts, -1, axis=0) - pts
-        # outward side of each edge of p: cross(edge, point - start) * orient < 0
-        rel = q[None, :, :2] - pts[:, None, :]
-        cross = (edges[:, None, 0] * rel[:, :, 1] - edges[:, None, 1] * rel[:, :, 0]) * orient
-        scale = np.hypot(edges[:, 0], edges[:, 1])[:, None]
-        if ((cross <= eps * scale).all(axis=1)).any():
-            return True
+    overlap (they may touch): some edge of either separates them.  Plain Python: the
+    polygons have a handful of vertices, where numpy's per-call cost dominates."""
+    pa = a[:, :2].tolist()
+    pb = b[:, :2].tolist()
+    for p, q in ((pa, pb), (pb, pa)):
+        n = len(p)
+        area = sum(p[k][0] * p[(k + 1) % n][1] - p[(k + 1) % n][0] * p[k][1]
+                   for k in range(n))
+        orient = 1.0 if area > 0 else -1.0
+        for k in range(n):
+            x0, y0 = p[k]
+            x1, y1 = p[(k + 1) % n]
+            ex, ey = x1 - x0, y1 - y0
+            tol = eps * (ex * ex + ey * ey) ** 0.5
+            # q wholly on the outer side of edge k (or on it): a separating line
+            if all((ex * (y - y0) - ey * (x - x0)) * orient <= tol for x, y in q):
+                return True
     return False
 
 
@@ -190,35 +240,52 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None):
     limit = 16 * len(sp) + 1000 if max_pieces is None else v.positive_int("max_pieces",
                                                                           max_pieces)
     pieces = _Pieces(sp)
-    order = [int(p) for p in np.argsort(-pieces.ext[:pieces.n, 5], kind="stable")]
+    eps = pieces.eps
+    grid = _Grid(pieces)
+    # the list, kept as keys (rank, sequence) in a heap: the head is the least key
+    # alive; moving a surface to the head gives it a key below every other
+    key = {}
+    heap = []
+    alive = set()
+    for rank, p in enumerate(np.argsort(-pieces.ext[:pieces.n, 5], kind="stable").tolist()):
+        key[p] = (float(rank), p)
+        heap.append((key[p], p))
+        alive.add(p)
+    heapq.heapify(heap)
+    low = -1.0
     flagged = set()
     out = []
     steps = 0
-    while order:
+    while alive:
         steps += 1
         if steps > 4 * limit + 10 * len(sp) ** 2 + 100:
             raise DepthSortLoopError(
                 f"depth sort did not finish after {steps} steps on {len(sp)} polygons; "
                 "the input holds an overlap the tests cannot order (nearly coincident "
                 "polygons?)")
-        s = order[0]
+        while heap[0][1] not in alive or heap[0][0] != key[heap[0][1]]:
+            heapq.heappop(heap)
+        s = heap[0][1]
         es = pieces.ext[s]
-        rest = np.array(order[1:], np.int64)
+        if log is None:
+            near = grid.near(s, alive)
+        else:                 # small scenes: every surface, to log tests 1 and 2 too
+            near = np.array(sorted((q for q in alive if q != s), key=key.__getitem__),
+                            np.int64)
         mover = None
-        if len(rest):
-            e = pieces.ext[rest]
-            eps = pieces.eps
+        if len(near):
+            e = pieces.ext[near]
             # not wholly in front of S: a depth overlap, or (after reordering moved
             # S ahead) wholly behind it
             depth = e[:, 5] > es[4] + eps
             xa = (e[:, 1] <= es[0] + eps) | (e[:, 0] >= es[1] - eps)
             ya = (e[:, 3] <= es[2] + eps) | (e[:, 2] >= es[3] - eps)
             if log is not None:
-                for t in rest[depth & xa].tolist():
+                for t in near[depth & xa].tolist():
                     _row(log, s, t, ("yes",), "none")
-                for t in rest[depth & ~xa & ya].tolist():
+                for t in near[depth & ~xa & ya].tolist():
                     _row(log, s, t, ("no", "yes"), "none")
-            for t in rest[depth & ~xa & ~ya].tolist():
+            for t in sorted(near[depth & ~xa & ~ya].tolist(), key=key.__getitem__):
                 if behind_plane(pieces, s, t):
                     _row(log, s, t, ("no", "no", "yes"), "none")
                 elif in_front_of_plane(pieces, t, s):
@@ -230,15 +297,16 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None):
                     break
         if mover is None:
             out.append(s)
-            order.pop(0)
+            alive.discard(s)
             flagged.discard(s)
             continue
         t = mover
         if t not in flagged:
             _row(log, s, t, ("no",) * 5, f"move {t} to the head (flag it)")
             flagged.add(t)
-            order.remove(t)
-            order.insert(0, t)
+            key[t] = (low, t)
+            low -= 1.0
+            heapq.heappush(heap, (key[t], t))
             continue
         if not split_cycles:
             raise DepthSortLoopError(
@@ -263,8 +331,14 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None):
                  f"{t} is flagged: split {cut} by " + (f"the plane of {by}" if by is not None else
                                                       "a plane across its middle")
                  + f" into {new[0]} and {new[1]}")
-            i = order.index(cut)
-            order[i:i + 1] = sorted(new, key=lambda q: -pieces.ext[q, 5])
+            # the pieces take the place of the polygon split, farther piece first
+            rank = key[cut][0]
+            for q in sorted(new, key=lambda q: -pieces.ext[q, 5]):
+                key[q] = (rank, q)
+                heapq.heappush(heap, (key[q], q))
+                alive.add(q)
+                grid.add(q)
+            alive.discard(cut)
             flagged.discard(cut)
             done = True
             break

@@ -25,14 +25,16 @@ if TYPE_CHECKING:   # what the lazy attributes are, for type checkers and editor
     from . import draw3d as draw3d, geometry as geometry, mesh as mesh
     from . import projection as projection, raster as raster, scene as scene, text as text
     from . import trace as trace, transform as transform, transform3d as transform3d
-    from . import viewing as viewing
+    from . import viewing as viewing, visible as visible, lighting as lighting
+    from . import shading as shading, render as render
+    from .depthbuffer import DepthBuffer as DepthBuffer
     from .attributes import FillStyle as FillStyle
     from .context import Context as Context
     from .display import DisplayFile as DisplayFile
     from .errors import AngleWarning as AngleWarning, ArgumentTypeError as ArgumentTypeError
     from .errors import ArgumentValueError as ArgumentValueError
     from .errors import ImageFileError as ImageFileError, ScanlineError as ScanlineError
-    from .errors import ScanlineWarning as ScanlineWarning
+    from .errors import OutputError as OutputError, ScanlineWarning as ScanlineWarning
     from .framebuffer import FrameBuffer as FrameBuffer, text_image as text_image
     from .linestyle import LineStyle as LineStyle
     from .projection import Camera as Camera

@@ -289,3 +289,14 @@ def test_fuzzed_batch_with_huge_and_degenerate_polygons(polys, win):
     tol = 1e-12 * scale
     assert (verts[:, 0] >= window[0] - tol).all() and (verts[:, 0] <= window[2] + tol).all()
     assert (verts[:, 1] >= window[1] - tol).all() and (verts[:, 1] <= window[3] + tol).all()
+
+
+def test_a_thin_window_far_from_the_origin_keeps_its_orientation():
+    # the shoelace products about the origin cancel for a small window far out
+    # (found by test_fuzzed_batch_with_huge_and_degenerate_polygons)
+    x0, y0 = 129078211.23632824, 531605824.58740246
+    window = (x0, y0, x0 + 0.49392618405547467, y0 + 5.789799812184172)
+    square = [(x0 - 1, y0 - 1), (x0 + 1, y0 - 1), (x0 + 1, y0 + 1), (x0 - 1, y0 + 1)]
+    verts, counts = sl.clip.polygons(np.array(square), window, counts=[4])
+    assert counts.tolist() == [4]
+    assert np.all(verts[:, 0] >= window[0]) and np.all(verts[:, 0] <= window[2])

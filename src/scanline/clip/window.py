@@ -69,8 +69,10 @@ def _ring(points):
 
 
 def signed_area(points):
-    """Shoelace area: positive for a counterclockwise ring."""
-    x, y = points[:, 0], points[:, 1]
+    """Shoelace area: positive for a counterclockwise ring (taken about the first
+    vertex: with coordinates near 2**29 and a side of 1e-6 the products about the
+    origin cancel and could give the wrong sign)."""
+    x, y = points[:, 0] - points[0, 0], points[:, 1] - points[0, 1]
     return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(np.roll(x, -1), y))
 
 

@@ -81,8 +81,11 @@ def as_far(v):
 
 
 def frac(v):
-    """The exact value of a real number (Fraction)."""
-    return Fraction(v) if isinstance(v, (int, np.integer, Fraction)) else Fraction(float(v))
+    """The exact value of a real number (Fraction; numpy integers as Python ints, whose
+    products cannot wrap around)."""
+    if isinstance(v, np.integer):
+        return Fraction(int(v))
+    return Fraction(v) if isinstance(v, (int, Fraction)) else Fraction(float(v))
 
 
 def near_ideal_line(pixels, x0, y0, x1, y1):

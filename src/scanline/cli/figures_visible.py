@@ -57,6 +57,19 @@ def figure_painter_failure():
         "\n".join(notes))
 
 
+def _lit(meshes, bases, light=(0.4, 0.8, 0.6)):
+    """One color per face: the mesh's base color scaled by 0.35 + 0.65 max(N.L, 0)
+    (Lambert, so that the facets can be told apart)."""
+    rgb = [tuple(int(bases[i][k:k + 2], 16) for k in (1, 3, 5)) for i in range(len(meshes))]
+    out = []
+    el = np.array(light) / np.linalg.norm(light)
+    for m, base in zip(meshes, rgb):
+        n = m.face_normals()
+        f = 0.35 + 0.65 * np.clip(n @ el / np.linalg.norm(n, axis=1), 0, 1)
+        out += [tuple(int(round(c * k)) for c in base) for k in f]
+    return out
+
+
 def figure_methods():
     """The same scene by every method, with timings."""
     meshes = [sl.mesh.cube(1.4), sl.mesh.sphere(0.75, (0.7, 0.55, 0.6), resolution=12),
@@ -64,11 +77,11 @@ def figure_methods():
     cam = sl.Camera(eye=(3.5, 2.5, 4.5), target=(0, 0, 0),
                     projection=sl.projection.perspective(fov=0.42, near=1))
     panels, titles, rows = [], [], []
+    colors = _lit(meshes, SHADES[:3])
     for method in sl.visible.METHODS:
         fb = sl.FrameBuffer(170, 140, background=PAPER)
         t = time.perf_counter()
-        sl.visible.render(fb, meshes, cam, method=method,
-                          colors=[SHADES[0], SHADES[1], SHADES[2]])
+        sl.visible.render(fb, meshes, cam, method=method, colors=colors)
         rows.append(f"{method:17s} {1000 * (time.perf_counter() - t):8.1f} ms")
         panels.append(fb.to_pil())
         titles.append(method)

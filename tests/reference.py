@@ -6,18 +6,22 @@ independent side of every cross-check.
 """
 
 import math
+import os
 from fractions import Fraction
 
 import numpy as np
 from hypothesis import HealthCheck, settings
 
 #: Settings for hypothesis tests: no deadline (the first call of a numba kernel may
-#: load it from the cache), no example database in the working tree.
+#: load it from the cache), no example database in the working tree.  Under CI
+#: (``CI`` set) the examples are derandomized -- the same sequence on every run, so a
+#: CI result can be reproduced; runs by hand draw new examples each time.
 HYPOTHESIS = settings(
     max_examples=200,
     deadline=None,
     database=None,
     suppress_health_check=[HealthCheck.too_slow],
+    derandomize=bool(os.environ.get("CI")),
 )
 
 MODES = ("1", "L", "RGB", "RGBA", "P")

@@ -24,6 +24,7 @@ Y.-D. Liang, B. A. Barsky, "A new concept and method for line clipping", ACM TOG
 1-22, 1984.  Hearn & Baker, sections 6-7 (line clipping) and 6-8 (polygon clipping).
 """
 
+import numbers
 from fractions import Fraction
 
 import numpy as np
@@ -201,8 +202,8 @@ def conic_outside(fb, xc, yc, rx, ry, reach=1.0, fill=False):
     within the inner ellipse (the frame inside the ring's hole).  Anything that is
     not four finite reals gives False (the usual validation then answers)."""
     vals = (xc, yc, rx, ry)
-    if not all(isinstance(c, (int, float, np.integer, np.floating))
-               and not isinstance(c, (bool, np.bool_)) for c in vals):
+    if not all(isinstance(c, numbers.Real) and not isinstance(c, (bool, np.bool_))
+               for c in vals):
         return False
     try:
         xc, yc, rx, ry = (float(c) for c in vals)
@@ -218,8 +219,11 @@ def conic_outside(fb, xc, yc, rx, ry, reach=1.0, fill=False):
 
 def _misses(fb, xc, yc, rx, ry, reach, fill):
     """:func:`conic_outside` for four finite floats."""
-    lo_x, lo_y = -1.0 - reach, -1.0 - reach
-    hi_x, hi_y = fb.width + reach, fb.height + reach
+    # drawn pixel centers lie within 1 (the center and radii rounded) plus the
+    # outline's half width of the ellipse: ``reach`` (>= 1) on the ellipse's side
+    # and ``reach`` on the frame's cover both
+    lo_x, lo_y = -reach, -reach
+    hi_x, hi_y = fb.width - 1 + reach, fb.height - 1 + reach
     dx = np.array([lo_x - xc, hi_x - xc])
     dy = np.array([lo_y - yc, hi_y - yc])
     a, b = rx + reach, ry + reach

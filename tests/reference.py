@@ -24,6 +24,23 @@ HYPOTHESIS = settings(
     derandomize=bool(os.environ.get("CI")),
 )
 
+
+def gl_context():
+    """A headless OpenGL context (moderngl on Mesa's EGL, llvmpipe): the peer of the
+    rasterizer tests.  Outside CI a missing driver skips the test; in CI
+    (``CI=true``) it fails, as a reference that cannot start must."""
+    try:
+        import moderngl
+
+        return moderngl.create_standalone_context(backend="egl")
+    except Exception as error:            # no moderngl, no EGL, no Mesa driver
+        import pytest
+
+        if os.environ.get("CI") == "true":
+            pytest.fail(f"moderngl / Mesa EGL cannot start in CI: {error}")
+        pytest.skip(f"moderngl / Mesa EGL unavailable: {error}")
+
+
 MODES = ("1", "L", "RGB", "RGBA", "P")
 
 

@@ -5,24 +5,10 @@ differ only where a center lies on an edge (the tie rules: scanline's top-left r
 llvmpipe's own) and in rounding (GL interpolates in float32 and snaps vertices to
 1/256 pixel: the vertices here are on that grid, so both see the same triangles)."""
 
-import os
-
 import numpy as np
-import pytest
 
 import scanline as sl
-
-
-def gl_context():
-    try:
-        import moderngl
-
-        return moderngl.create_standalone_context(backend="egl")
-    except Exception as error:            # no moderngl, no EGL, no Mesa driver
-        if os.environ.get("CI") == "true":
-            pytest.fail(f"moderngl / Mesa EGL cannot start in CI: {error}")
-        pytest.skip(f"moderngl / Mesa EGL unavailable: {error}")
-
+from tests.reference import gl_context
 
 VERTEX = """
 #version 330

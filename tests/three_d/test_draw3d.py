@@ -4,12 +4,12 @@ OpenGL-convention matrix); line attributes and antialiasing pass through; depth
 cueing; and Mesa's GL_LINES (moderngl, llvmpipe) draws the same wireframe."""
 
 import math
-import os
 
 import numpy as np
 import pytest
 
 import scanline as sl
+from tests.reference import gl_context
 from tests.three_d.test_clip3d import reference_segments, viewing_frustum_planes
 from tests.three_d.test_projection import gl_perspective, glu_look_at
 
@@ -147,17 +147,6 @@ def test_wireframe_bad_input():
 
 
 # -- Mesa's GL_LINES as a peer ------------------------------------------------------------------
-def _gl_context():
-    try:
-        import moderngl
-
-        return moderngl.create_standalone_context(backend="egl")
-    except Exception as error:            # no moderngl, no EGL, no Mesa driver
-        if os.environ.get("CI") == "true":
-            pytest.fail(f"moderngl / Mesa EGL cannot start in CI: {error}")
-        pytest.skip(f"moderngl / Mesa EGL unavailable: {error}")
-
-
 GL_VERTEX = """
 #version 330
 uniform mat4 clip;      // our world -> clip matrix (NDC 0..1)
@@ -175,7 +164,7 @@ GL_FRAGMENT = "#version 330\nout vec4 color;\nvoid main() { color = vec4(1.0); }
 
 
 def test_mesa_gl_lines_draw_the_same_wireframe():
-    ctx = _gl_context()
+    ctx = gl_context()
     mesh = sl.mesh.sphere(1.0, resolution=(24, 12))
     eye = (0.5, 0.4, 1.1)                 # close: many edges cross the front plane
     cam = camera(eye)

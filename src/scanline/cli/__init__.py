@@ -53,9 +53,9 @@ def build_parser():
     parser = Parser(
         prog="scanline",
         description="The classic computer-graphics pipeline: step tables of the notes' "
-        "algorithms, drawing with attributes and text, scene files through the display-file "
-        "interpreter, animated scenes and storyboards, dithering, and a gallery of the notes' "
-        "examples.",
+        "algorithms, drawing with attributes and text, scene files (2-D, 3-D views and shaded "
+        "surfaces) through the display-file interpreter, animated scenes and storyboards, "
+        "dithering, an interactive studio, and a gallery of the notes' examples.",
         epilog="'scanline COMMAND --help' describes each command.",
     )
     parser.add_argument("--version", action="version", version=f"scanline {__version__}")

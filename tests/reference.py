@@ -41,6 +41,22 @@ def gl_context():
         pytest.skip(f"moderngl / Mesa EGL unavailable: {error}")
 
 
+def peer(module):
+    """Import the independent reference ``module`` (a peer library named in the test
+    extras).  Outside CI a missing peer skips the test; in CI (``CI=true``) it fails,
+    as a reference that cannot start must."""
+    import importlib
+
+    import pytest
+
+    try:
+        return importlib.import_module(module)
+    except ImportError as error:
+        if os.environ.get("CI") == "true":
+            pytest.fail(f"the reference {module} cannot be imported in CI: {error}")
+        pytest.skip(f"the reference {module} is not installed: {error}")
+
+
 MODES = ("1", "L", "RGB", "RGBA", "P")
 
 

@@ -16,6 +16,7 @@ from PIL import Image
 
 import scanline as sl
 from scanline import FrameBuffer, ImageFileError, ScanlineError
+from tests.reference import peer
 
 TABLE = [(0, 0, 0), (255, 0, 0), (0, 255, 0), (0, 0, 255)]
 
@@ -101,7 +102,7 @@ def test_from_array_reads_a_single_channel_last_axis(dtype):
 
 
 def test_matplotlib_imshow_arrays_round_trip(tmp_path):
-    mpl_image = pytest.importorskip("matplotlib.image")
+    mpl_image = peer("matplotlib.image")
     fb = sample("RGB")
     fb.save(tmp_path / "x.png")
     a = mpl_image.imread(tmp_path / "x.png")          # float32 in [0, 1]

@@ -10,6 +10,7 @@ import zipfile
 from pathlib import Path
 
 import pytest
+from tests.reference import peer
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -32,7 +33,7 @@ def dist(tmp_path_factory):
     """The sdist and the wheel, built from this checkout as a user would."""
     if not (ROOT / "pyproject.toml").is_file() or not (ROOT / "MANIFEST.in").is_file():
         pytest.skip("not a source checkout")
-    pytest.importorskip("build")
+    peer("build")
     out = tmp_path_factory.mktemp("dist")
     proc = subprocess.run([sys.executable, "-m", "build", "--sdist", "--wheel", "-o", str(out),
                            str(ROOT)], capture_output=True, text=True, timeout=900)

@@ -16,6 +16,7 @@ from PIL import Image
 import scanline as sl
 from scanline.animation import Animation
 from scanline.animation import render as render_module
+from tests.reference import peer
 
 
 def frame(i):
@@ -91,7 +92,7 @@ def test_frame_kinds_and_selection(tmp_path):
 
 
 def test_serial_processes_and_dask_are_byte_identical(tmp_path):
-    distributed = pytest.importorskip("distributed")
+    distributed = peer("distributed")
     anim = Animation(frame, frames=20, fps=12)
     anim.save(tmp_path / "again.mp4")
     for ext in ("gif", "mp4"):
@@ -118,7 +119,7 @@ def test_lambdas_reach_worker_processes(tmp_path):
 
 
 def test_unreachable_scheduler_is_a_clear_error(tmp_path, monkeypatch):
-    pytest.importorskip("distributed")
+    peer("distributed")
     monkeypatch.setattr(render_module, "CONNECT_TIMEOUT", 1.0)
     start = time.perf_counter()
     with pytest.raises(sl.animation.SchedulerUnreachable, match="tcp://127.0.0.1:9.*within 1 s"):

@@ -12,7 +12,7 @@ from hypothesis import strategies as st
 
 import scanline as sl
 from scanline.display import DisplayFile, RasterDevice, SVGDevice, VectorDevice, interpret
-from tests.reference import HYPOTHESIS
+from tests.reference import HYPOTHESIS, peer
 
 W, H = 64, 48
 
@@ -256,7 +256,7 @@ def test_svg_is_well_formed_and_escaped():
 def test_svg_matches_a_skia_rendering():
     """An independent renderer (Skia's SVG module) draws our SVG; its picture agrees
     with the raster device except along antialiased edges."""
-    skia = pytest.importorskip("skia")
+    skia = peer("skia")
     df = scene_file()
     svg = SVGDevice(W, H, background="black")
     interpret(df, svg)

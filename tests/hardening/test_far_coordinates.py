@@ -8,6 +8,7 @@ import pytest
 
 import scanline as sl
 from scanline.geometry import guard
+from tests.reference import peer
 
 W, H = 40, 30
 BIG = [1e12, -1e12, 1e300, -1e300, 2.0**31, 9.007199254740993e15]
@@ -108,7 +109,7 @@ def test_nan_and_inf_are_still_refused():
 
 
 def test_guard_ring_matches_shapely_inside_the_guard():
-    shapely = pytest.importorskip("shapely")
+    shapely = peer("shapely")
     from shapely.geometry import Polygon, box
     rng = np.random.default_rng(5)
     for _ in range(20):

@@ -89,6 +89,40 @@ def test_intersecting_pair_split():
     assert compare(out, [a, b]) == []
 
 
+def weave(n=6):
+    """n horizontal and n vertical sticks woven like a basket: each stick passes over
+    and under the crossing ones in turn, so every crossing pair is tilted through the
+    other -- intersections and cycles everywhere."""
+    polys = []
+    for i in range(n):
+        y = 2 + i * (H - 4) / n
+        tilt = 0.3 if i % 2 else -0.3
+        polys.append(quad(1, y, W - 1, y + 2.5, 0.5 - tilt, 0.5 + tilt, 0.5 + tilt, 0.5 - tilt))
+        x = 2 + i * (W - 4) / n
+        polys.append(quad(x, 1, x + 3, H - 1, 0.5 + tilt, 0.5 + tilt, 0.5 - tilt, 0.5 - tilt))
+    return polys
+
+
+@pytest.mark.parametrize("compile_mode", ["never", "always"])
+def test_a_woven_scene_needs_many_splits_and_still_matches_ray_casting(compile_mode,
+                                                                      monkeypatch):
+    # each split ends one piece and makes two: more pieces than the sort's first arrays
+    # hold (twice the polygons plus 16), so the kernel stops for room, the arrays grow,
+    # and the sort resumes; the Python twin and the compiled kernel agree
+    from scanline._kernels import _jit
+
+    monkeypatch.setattr(_jit, "COMPILE", compile_mode)
+    polys = weave()
+    out = depth_sort(ScreenPolygons.from_device(polys, W, H))
+    splits = len(out) - len(polys)
+    assert len(polys) + 2 * splits > 2 * len(polys) + 16
+    assert compare(out, polys) == []
+    log = []
+    again = depth_sort(ScreenPolygons.from_device(polys, W, H), log=log)
+    assert compare(again, polys) == []
+    assert sum("split" in row["action"] for row in log) == len(again) - len(polys)
+
+
 def test_too_many_pieces_is_an_error():
     with pytest.raises(DepthSortLoopError, match="max_pieces"):
         depth_sort(ScreenPolygons.from_device(cyclic(), W, H), max_pieces=1)

@@ -5,13 +5,13 @@
 space), painted at image precision.
 """
 
-import heapq
-
 import numpy as np
 
 from .. import _validate as v
+from .._kernels import depthsort as k
+from .._kernels._jit import call
 from ..errors import DepthSortLoopError
-from .polygons import MIN_AREA, ScreenPolygons, as_screen, signed_area
+from .polygons import MIN_AREA, ScreenPolygons, as_screen
 
 #: The overlap tests, in the order they are tried (each "yes" means: no reordering
 #: is needed for this pair).
@@ -22,162 +22,46 @@ TESTS = ("x extents apart", "y extents apart", "S behind plane of S'",
 TOLERANCE = 1e-9
 
 
-class _Pieces:
-    """The polygons being sorted: vertices, planes (normalized: |(A, B, C)| = 1) and
-    extents of each piece, growing as pieces are split off."""
-
-    def __init__(self, sp):
-        self.poly = [sp.polygon(p).copy() for p in range(len(sp))]
-        self.face = sp.face.tolist()
-        norm = np.linalg.norm(sp.planes[:, :3], axis=1, keepdims=True)
-        self.plane = list(sp.planes / np.where(norm > 0, norm, 1.0))
-        ext = sp.extents()
-        cap = max(16, 2 * len(sp))
-        self.ext = np.empty((cap, 6))
-        self.ext[:len(sp)] = ext
-        self.n = len(sp)
-        self.eps = TOLERANCE * max(sp.width, sp.height, 1.0)
-
-    def add(self, verts, face, plane):
-        if self.n == len(self.ext):
-            self.ext = np.concatenate([self.ext, np.empty_like(self.ext)])
-        self.poly.append(verts)
-        self.face.append(face)
-        self.plane.append(plane)
-        self.ext[self.n] = (verts[:, 0].min(), verts[:, 0].max(), verts[:, 1].min(),
-                            verts[:, 1].max(), verts[:, 2].min(), verts[:, 2].max())
-        self.n += 1
-        return self.n - 1
-
-    def side(self, plane, p):
-        """Signed distances of piece ``p``'s vertices to ``plane`` (> 0: behind)."""
-        return self.poly[p] @ plane[:3] + plane[3]
+#: At most this many grid cells a side.
+GRID = 1000
 
 
-class _Grid:
-    """A uniform grid over the screen, each cell listing the pieces whose bounding
-    boxes meet it: the surfaces that can fail tests 1 and 2 against a surface are
-    found among those sharing its cells, not by scanning the whole list."""
-
-    def __init__(self, pieces):
-        ext = pieces.ext[:pieces.n]
-        self.pieces = pieces
-        size = np.maximum(ext[:, 1] - ext[:, 0], ext[:, 3] - ext[:, 2]) if pieces.n else [1.0]
-        self.cell = max(float(np.median(size)) * 2.0, 1e-6)
-        span = max(float(ext[:, 1].max() - ext[:, 0].min()) if pieces.n else 1.0,
-                   float(ext[:, 3].max() - ext[:, 2].min()) if pieces.n else 1.0)
-        self.cell = max(self.cell, span / 1000.0)      # at most 1000 x 1000 cells
-        self.x0 = float(ext[:, 0].min()) if pieces.n else 0.0
-        self.y0 = float(ext[:, 2].min()) if pieces.n else 0.0
-        self.cells = {}
-        for p in range(pieces.n):
-            self.add(p)
-
-    def _range(self, p):
-        e = self.pieces.ext[p]
-        c = self.cell
-        return (int((e[0] - self.x0) // c), int((e[1] - self.x0) // c),
-                int((e[2] - self.y0) // c), int((e[3] - self.y0) // c))
-
-    def add(self, p):
-        i0, i1, j0, j1 = self._range(p)
-        for i in range(i0, i1 + 1):
-            for j in range(j0, j1 + 1):
-                self.cells.setdefault((i, j), []).append(p)
-
-    def near(self, p, alive):
-        """The pieces alive sharing a cell with ``p`` (p excluded)."""
-        i0, i1, j0, j1 = self._range(p)
-        found = set()
-        for i in range(i0, i1 + 1):
-            for j in range(j0, j1 + 1):
-                found.update(self.cells.get((i, j), ()))
-        found.discard(p)
-        return np.array([q for q in found if q in alive], np.int64)
+def _grid(ext):
+    """The grid of the candidate search: (x0, y0, cell, nx, ny), cells of twice the
+    median piece size (at most :data:`GRID` a side), and each piece's cell count."""
+    size = np.maximum(ext[:, 1] - ext[:, 0], ext[:, 3] - ext[:, 2])
+    x0, y0 = float(ext[:, 0].min()), float(ext[:, 2].min())
+    span = max(float(ext[:, 1].max()) - x0, float(ext[:, 3].max()) - y0)
+    cell = max(float(np.median(size)) * 2.0, span / GRID, 1e-6)
+    nx = int((float(ext[:, 1].max()) - x0) // cell) + 1
+    ny = int((float(ext[:, 3].max()) - y0) // cell) + 1
+    i = np.clip((ext[:, 0:2] - x0) // cell, 0, nx - 1)
+    j = np.clip((ext[:, 2:4] - y0) // cell, 0, ny - 1)
+    cells = (i[:, 1] - i[:, 0] + 1) * (j[:, 1] - j[:, 0] + 1)
+    return np.array([x0, y0, cell, nx, ny], np.float64), cells.astype(np.int64)
 
 
-def behind_plane(pieces, s, t):
-    """Test 3: every vertex of ``s`` is behind (or on) the plane of ``t``."""
-    return bool((pieces.side(pieces.plane[t], s) >= -pieces.eps).all())
+def _grown(a, rows):
+    """``a`` with room for at least ``rows`` rows (doubling), the rows kept."""
+    out = np.empty((max(rows, 2 * len(a)),) + a.shape[1:], a.dtype)
+    out[:len(a)] = a
+    return out
 
 
-def in_front_of_plane(pieces, t, s):
-    """Test 4: every vertex of ``t`` is in front of (or on) the plane of ``s``."""
-    return bool((pieces.side(pieces.plane[s], t) <= pieces.eps).all())
-
-
-def projections_apart(a, b, eps):
-    """Test 5: the (x, y) projections of the convex polygons ``a`` and ``b`` do not
-    overlap (they may touch): some edge of either separates them.  Plain Python: the
-    polygons have a handful of vertices, where numpy's per-call cost dominates."""
-    pa = a[:, :2].tolist()
-    pb = b[:, :2].tolist()
-    for p, q in ((pa, pb), (pb, pa)):
-        n = len(p)
-        area = sum(p[k][0] * p[(k + 1) % n][1] - p[(k + 1) % n][0] * p[k][1]
-                   for k in range(n))
-        orient = 1.0 if area > 0 else -1.0
-        for k in range(n):
-            x0, y0 = p[k]
-            x1, y1 = p[(k + 1) % n]
-            ex, ey = x1 - x0, y1 - y0
-            tol = eps * (ex * ex + ey * ey) ** 0.5
-            # q wholly on the outer side of edge k (or on it): a separating line
-            if all((ex * (y - y0) - ey * (x - x0)) * orient <= tol for x, y in q):
-                return True
-    return False
-
-
-def split(pieces, p, plane):
-    """Split piece ``p`` by ``plane`` into the part in front and the part behind
-    (Sutherland-Hodgman against the plane and its opposite); each part keeps ``p``'s
-    face and plane.  Returns ``(front, behind)`` vertex arrays, or None when the
-    plane does not cut the piece."""
-    d = pieces.side(plane, p)
-    if not ((d < -pieces.eps).any() and (d > pieces.eps).any()):
-        return None
-    verts = pieces.poly[p]
-    front, back = [], []
-    k = len(verts)
-    for i in range(k):
-        j = (i + 1) % k
-        a, b = verts[i], verts[j]
-        da, db = d[i], d[j]
-        if da <= pieces.eps:
-            front.append(a)
-        if da >= -pieces.eps:
-            back.append(a)
-        if (da < -pieces.eps and db > pieces.eps) or (da > pieces.eps and db < -pieces.eps):
-            cut = a + (b - a) * (da / (da - db))
-            front.append(cut)
-            back.append(cut)
-    parts = [np.array(part) for part in (front, back)]
-    if any(len(part) < 3 or abs(signed_area(part)) <= MIN_AREA * 1e-3 for part in parts):
-        return None
-    return parts
-
-
-def _halving(pieces, s, t):
-    """The wider of pieces ``s`` and ``t`` on screen and the plane x = const or
-    y = const through its middle (perpendicular to the screen, so each part stays in
-    the piece's plane): the last resort when neither polygon's plane cuts the other."""
-    es, et = pieces.ext[s], pieces.ext[t]
-    ws = max(es[1] - es[0], es[3] - es[2])
-    wt = max(et[1] - et[0], et[3] - et[2])
-    cut, e = (s, es) if ws >= wt else (t, et)
-    if e[1] - e[0] >= e[3] - e[2]:
-        return cut, None, np.array([1.0, 0.0, 0.0, -0.5 * (e[0] + e[1])])
-    return cut, None, np.array([0.0, 1.0, 0.0, -0.5 * (e[2] + e[3])])
-
-
-def _row(log, s, t, outcomes, action):
-    if log is None:
-        return
-    row = {"S": s, "S'": t}
-    for name, value in zip(TESTS, outcomes):
-        row[name] = value
-    row["action"] = action
-    log.append(row)
+def _describe(log, rows):
+    """The kernel's log rows as the dicts of :func:`depth_sort`'s ``log``."""
+    for s, t, decided, action, piece, by, new in log[:rows].tolist():
+        row = {"S": s, "S'": t}
+        outcomes = ("no",) * (decided - 1) + ("yes",) if decided else ("no",) * 5
+        row.update(zip(TESTS, outcomes))
+        if action == k.MOVE:
+            row["action"] = f"move {t} to the head (flag it)"
+        elif action in (k.SPLIT, k.HALVE):
+            plane = f"the plane of {by}" if action == k.SPLIT else "a plane across its middle"
+            row["action"] = f"{t} is flagged: split {piece} by {plane} into {new} and {new + 1}"
+        else:
+            row["action"] = "none"
+        yield row
 
 
 def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None):
@@ -239,119 +123,93 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None):
         raise v.ArgumentTypeError(f"split_cycles must be True or False, got {split_cycles!r}")
     limit = 16 * len(sp) + 1000 if max_pieces is None else v.positive_int("max_pieces",
                                                                           max_pieces)
-    pieces = _Pieces(sp)
-    eps = pieces.eps
-    grid = _Grid(pieces)
-    # the list, kept as keys (rank, sequence) in a heap: the head is the least key
-    # alive; moving a surface to the head gives it a key below every other
-    key = {}
-    heap = []
-    alive = set()
-    for rank, p in enumerate(np.argsort(-pieces.ext[:pieces.n, 5], kind="stable").tolist()):
-        key[p] = (float(rank), p)
-        heap.append((key[p], p))
-        alive.add(p)
-    heapq.heapify(heap)
-    low = -1.0
-    flagged = set()
-    out = []
-    steps = 0
-    while alive:
-        steps += 1
-        if steps > 4 * limit + 10 * len(sp) ** 2 + 100:
-            raise DepthSortLoopError(
-                f"depth sort did not finish after {steps} steps on {len(sp)} polygons; "
-                "the input holds an overlap the tests cannot order (nearly coincident "
-                "polygons?)")
-        while heap[0][1] not in alive or heap[0][0] != key[heap[0][1]]:
-            heapq.heappop(heap)
-        s = heap[0][1]
-        es = pieces.ext[s]
-        if log is None:
-            near = grid.near(s, alive)
-        else:                 # small scenes: every surface, to log tests 1 and 2 too
-            near = np.array(sorted((q for q in alive if q != s), key=key.__getitem__),
-                            np.int64)
-        mover = None
-        if len(near):
-            e = pieces.ext[near]
-            # not wholly in front of S: a depth overlap, or (after reordering moved
-            # S ahead) wholly behind it
-            depth = e[:, 5] > es[4] + eps
-            xa = (e[:, 1] <= es[0] + eps) | (e[:, 0] >= es[1] - eps)
-            ya = (e[:, 3] <= es[2] + eps) | (e[:, 2] >= es[3] - eps)
-            if log is not None:
-                for t in near[depth & xa].tolist():
-                    _row(log, s, t, ("yes",), "none")
-                for t in near[depth & ~xa & ya].tolist():
-                    _row(log, s, t, ("no", "yes"), "none")
-            for t in sorted(near[depth & ~xa & ~ya].tolist(), key=key.__getitem__):
-                if behind_plane(pieces, s, t):
-                    _row(log, s, t, ("no", "no", "yes"), "none")
-                elif in_front_of_plane(pieces, t, s):
-                    _row(log, s, t, ("no", "no", "no", "yes"), "none")
-                elif projections_apart(pieces.poly[s], pieces.poly[t], eps):
-                    _row(log, s, t, ("no", "no", "no", "no", "yes"), "none")
-                else:
-                    mover = t
-                    break
-        if mover is None:
-            out.append(s)
-            alive.discard(s)
-            flagged.discard(s)
-            continue
-        t = mover
-        if t not in flagged:
-            _row(log, s, t, ("no",) * 5, f"move {t} to the head (flag it)")
-            flagged.add(t)
-            key[t] = (low, t)
-            low -= 1.0
-            heapq.heappush(heap, (key[t], t))
-            continue
-        if not split_cycles:
-            raise DepthSortLoopError(
-                f"polygons {s} and {t} (faces {pieces.face[s]} and {pieces.face[t]}) "
-                "overlap cyclically or intersect: no drawing order exists without "
-                "splitting; use split_cycles=True")
-        done = False
-        for cut, by in ((t, s), (s, t), (None, None)):
-            if cut is None:      # neither plane cuts: halve the wider piece on screen
-                cut, by, plane = _halving(pieces, s, t)
-            else:
-                plane = pieces.plane[by]
-            parts = split(pieces, cut, plane)
-            if parts is None:
-                continue
-            if pieces.n + 2 > limit + len(sp):
-                raise DepthSortLoopError(
-                    f"depth sort needs more than max_pieces={limit} pieces to resolve the "
-                    f"overlaps of {len(sp)} polygons; raise max_pieces")
-            new = [pieces.add(part, pieces.face[cut], pieces.plane[cut]) for part in parts]
-            _row(log, s, t, ("no",) * 5,
-                 f"{t} is flagged: split {cut} by " + (f"the plane of {by}" if by is not None else
-                                                      "a plane across its middle")
-                 + f" into {new[0]} and {new[1]}")
-            # the pieces take the place of the polygon split, farther piece first
-            rank = key[cut][0]
-            for q in sorted(new, key=lambda q: -pieces.ext[q, 5]):
-                key[q] = (rank, q)
-                heapq.heappush(heap, (key[q], q))
-                alive.add(q)
-                grid.add(q)
-            alive.discard(cut)
-            flagged.discard(cut)
-            done = True
+    n = len(sp)
+    if n == 0:
+        return sp.subset([])
+    ext = sp.extents()
+    grid, cells = _grid(ext)
+    cap = 2 * n + 16
+    norm = np.linalg.norm(sp.planes[:, :3], axis=1, keepdims=True)
+    fl = np.empty((cap, 11))
+    fl[:n, :6] = ext
+    fl[:n, 6:10] = sp.planes / np.where(norm > 0, norm, 1.0)
+    order = np.argsort(-ext[:, 5], kind="stable")
+    fl[order, 10] = np.arange(n, dtype=np.float64)
+    counts = sp.counts
+    it = np.zeros((cap, 6), np.int64)
+    it[:n, 0] = sp.offsets[:-1]
+    it[:n, 1] = counts
+    it[:n, 2] = sp.face
+    it[:n, 3] = 1
+    it[:n, 5] = -1
+    pv = np.empty((2 * len(sp.vertices) + 64, 3))
+    pv[:len(sp.vertices)] = sp.vertices
+    heap = np.empty((2 * cap, 2))          # sorted by rank: already a heap
+    heap[:n, 0] = np.arange(n)
+    heap[:n, 1] = order
+    ent = np.empty((2 * int(cells.sum()) + 64, 2), np.int64)
+    st = np.zeros(k.STATE, np.int64)
+    st[[k.PIECES, k.VERTS, k.HEAP, k.ALIVE]] = n, len(sp.vertices), n, n
+    st[k.LOW] = -1
+    st[k.MAXK] = counts.max()
+    st[k.MAXCELLS] = cells.max()
+    drawn, cand, titems = (np.empty(cap, np.int64) for _ in range(3))
+    keys, tkeys = np.empty(cap), np.empty(cap)
+    rows = np.empty((4 * n + 16 if log is not None else 1, 7), np.int64)
+    heads = np.full(int(grid[3] * grid[4]), -1, np.int64)
+    max_steps = 4 * limit + 10 * n * n + 100
+    while True:
+        status = call(k.depth_sort, 40 * n + 10, pv, fl, it, heap, heads, ent, grid, order,
+                      drawn, cand, keys, tkeys, titems, rows, np.empty(4), st, tolerance(sp),
+                      MIN_AREA * 1e-3, limit + n, max_steps, split_cycles, log is not None)
+        if status != k.NEED_ROOM:
             break
-        if not done:
-            raise DepthSortLoopError(
-                f"polygons {s} and {t} (faces {pieces.face[s]} and {pieces.face[t]}) "
-                "cannot be ordered and neither plane cuts the other polygon (nearly "
-                "coincident polygons?); the loop flag stopped the sort")
-    verts = [pieces.poly[p] for p in out]
-    counts = np.array([len(p) for p in verts], np.int64)
-    return ScreenPolygons(
-        np.ascontiguousarray(np.concatenate(verts) if verts else np.empty((0, 3))),
-        np.concatenate([[0], np.cumsum(counts)]).astype(np.int64),
-        np.array([pieces.face[p] for p in out], np.int64),
-        np.array([pieces.plane[p] for p in out], np.float64).reshape(-1, 4),
-        sp.width, sp.height)
+        short = st[k.T]
+        if short == k.ROOM_PIECES:
+            fl, it = _grown(fl, len(fl) + 2), _grown(it, len(it) + 2)
+            drawn, cand, titems = (_grown(a, len(fl)) for a in (drawn, cand, titems))
+            keys, tkeys = _grown(keys, len(fl)), _grown(tkeys, len(fl))
+        elif short == k.ROOM_VERTS:
+            pv = _grown(pv, st[k.VERTS] + 4 * st[k.MAXK])
+        elif short == k.ROOM_HEAP:
+            heap = _grown(heap, st[k.HEAP] + 2)
+        elif short == k.ROOM_ENTRIES:
+            ent = _grown(ent, st[k.ENTRIES] + 2 * st[k.MAXCELLS])
+        else:
+            rows = _grown(rows, st[k.ROWS] + st[k.ALIVE] + 1)
+    if log is not None:
+        log.extend(_describe(rows, st[k.ROWS]))
+    s, t = int(st[k.S]), int(st[k.T])
+    if status == k.TOO_LONG:
+        raise DepthSortLoopError(
+            f"depth sort did not finish after {st[k.STEPS] - 1} steps on {n} polygons; "
+            "the input holds an overlap the tests cannot order (nearly coincident "
+            "polygons?)")
+    if status == k.TOO_MANY:
+        raise DepthSortLoopError(
+            f"depth sort needs more than max_pieces={limit} pieces to resolve the "
+            f"overlaps of {n} polygons; raise max_pieces")
+    if status in (k.CYCLE, k.UNCUT):
+        faces = f"polygons {s} and {t} (faces {it[s, 2]} and {it[t, 2]})"
+        raise DepthSortLoopError(
+            f"{faces} overlap cyclically or intersect: no drawing order exists without "
+            "splitting; use split_cycles=True" if status == k.CYCLE else
+            f"{faces} cannot be ordered and neither plane cuts the other polygon (nearly "
+            "coincident polygons?); the loop flag stopped the sort")
+    return _pieces(sp, pv, fl, it, drawn[:st[k.DRAWN]])
+
+
+def tolerance(sp):
+    """The absolute tolerance of the plane and separation tests on ``sp``'s device."""
+    return TOLERANCE * max(sp.width, sp.height, 1.0)
+
+
+def _pieces(sp, pv, fl, it, out):
+    """The pieces ``out`` (in that order) as screen polygons."""
+    rows = it[out]
+    counts = rows[:, 1]
+    offsets = np.zeros(len(out) + 1, np.int64)
+    np.cumsum(counts, out=offsets[1:])
+    idx = np.repeat(rows[:, 0] - offsets[:-1], counts) + np.arange(offsets[-1])
+    return ScreenPolygons(pv.take(idx, axis=0), offsets, rows[:, 2],
+                          fl.take(out, axis=0)[:, 6:10].copy(), sp.width, sp.height)

@@ -1,0 +1,545 @@
+"""The depth-sorting method (Newell, Newell and Sancha 1972; Hearn & Baker, section
+13-6) as one resumable kernel: the list sorted by greatest depth, the five overlap
+tests, reordering with the loop flag, and splitting.
+
+The list is a binary heap of keys (rank, piece): the head of the list is the least
+key alive; moving a surface to the head gives it a rank below every other; the two
+pieces of a split surface take its rank (the farther piece gets the lower number, so
+it comes first).  A uniform grid over the screen lists the pieces whose bounding
+boxes meet each cell, so that the surfaces compared with the head are found among
+those sharing its cells (or, for a step table, among every surface alive); a
+surface enters the grid only when the sort reaches its depth (until then it lies
+wholly in front of the head), and painted surfaces leave it as the cells are read.
+
+All state lives in arrays the caller allocates (:mod:`scanline.visible.depth_sort`),
+and the scalars in ``st`` (indices below).  When an array has too little room for
+the next step the kernel returns :data:`NEED_ROOM` *before* changing anything; the
+caller enlarges the arrays and calls again, and the sort resumes where it stopped.
+
+Per piece ``p``: ``fl[p]`` holds the extents xmin, xmax, ymin, ymax, zmin, zmax
+(columns 0-5), the normalized plane A, B, C, D (6-9) and the rank (10); ``it[p]``
+holds the first vertex in ``pv`` and the vertex count (0, 1), the face (2), alive
+(3), flagged (4), and the stamp of the last step that listed it (5).
+"""
+
+import numpy as np
+
+from ._jit import helper, kernel
+from .sort import sort_keys
+
+# -- indices into the state array ``st`` -------------------------------------------------
+PIECES = 0      # pieces so far
+VERTS = 1       # vertices used in pv
+HEAP = 2        # heap entries
+ENTRIES = 3     # grid entries
+DRAWN = 4       # pieces in drawing order
+ROWS = 5        # log rows
+STEPS = 6       # steps taken
+STATUS = 7      # see the codes below
+S = 8           # the pair of an error
+T = 9
+LOW = 10        # the next rank below every other (negative)
+STAMP = 11      # the last stamp handed out
+ALIVE = 12      # pieces alive
+MAXK = 13       # most vertices of a piece
+MAXCELLS = 14   # most grid cells of a piece
+NEXT = 15       # the next piece of ``byz`` to enter the grid
+STATE = 16
+
+# -- status codes ------------------------------------------------------------------------
+DONE = 0
+NEED_ROOM = 1   # st[T] says which array: one of the ROOM codes
+TOO_LONG = 2    # the step bound was reached
+TOO_MANY = 3    # max_pieces would be exceeded
+CYCLE = 4       # a cycle and splitting is off
+UNCUT = 5       # a cycle neither plane cuts, nor a plane across the middle
+
+# which array lacks room
+ROOM_PIECES = 0
+ROOM_VERTS = 1
+ROOM_HEAP = 2
+ROOM_ENTRIES = 3
+ROOM_ROWS = 4
+
+# -- log rows: S, S', decided by (1-5; 0: every test failed), action, cut, by, new ----
+NONE = 0
+MOVE = 1
+SPLIT = 2        # by the plane of ``by``
+HALVE = 3        # by a plane across the middle of ``cut``
+
+
+@helper
+def key_less(fl, a, b):
+    """Whether piece ``a``'s key (rank, number) is below ``b``'s."""
+    return fl[a, 10] < fl[b, 10] or (fl[a, 10] == fl[b, 10] and a < b)
+
+
+@helper
+def heap_push(heap, n, fl, p):
+    """Push piece ``p`` with its rank onto the heap of ``n`` entries (rank, piece);
+    returns the new count."""
+    i = n
+    heap[i, 0] = fl[p, 10]
+    heap[i, 1] = p
+    while i > 0:
+        up = (i - 1) // 2
+        if heap[up, 0] < heap[i, 0] or (heap[up, 0] == heap[i, 0] and heap[up, 1] <= heap[i, 1]):
+            break
+        for c in range(2):
+            tmp = heap[up, c]
+            heap[up, c] = heap[i, c]
+            heap[i, c] = tmp
+        i = up
+    return n + 1
+
+
+@helper
+def heap_pop(heap, n):
+    """Remove the least entry of the heap of ``n``; returns the new count."""
+    n -= 1
+    heap[0, 0] = heap[n, 0]
+    heap[0, 1] = heap[n, 1]
+    i = 0
+    while True:
+        least = i
+        for child in (2 * i + 1, 2 * i + 2):
+            if child < n and (heap[child, 0] < heap[least, 0] or (
+                    heap[child, 0] == heap[least, 0] and heap[child, 1] < heap[least, 1])):
+                least = child
+        if least == i:
+            return n
+        for c in range(2):
+            tmp = heap[least, c]
+            heap[least, c] = heap[i, c]
+            heap[i, c] = tmp
+        i = least
+
+
+@helper
+def cell_range(fl, p, grid):
+    """The grid cells (i0, i1, j0, j1) that piece ``p``'s bounding box meets, clipped
+    to the grid; ``grid`` is (x0, y0, cell, nx, ny)."""
+    nx = int(grid[3])
+    ny = int(grid[4])
+    i0 = int(min(max((fl[p, 0] - grid[0]) // grid[2], 0.0), nx - 1.0))
+    i1 = int(min(max((fl[p, 1] - grid[0]) // grid[2], 0.0), nx - 1.0))
+    j0 = int(min(max((fl[p, 2] - grid[1]) // grid[2], 0.0), ny - 1.0))
+    j1 = int(min(max((fl[p, 3] - grid[1]) // grid[2], 0.0), ny - 1.0))
+    return i0, i1, j0, j1
+
+
+@helper
+def grid_add(cells, ent, ne, fl, p, grid):
+    """List piece ``p`` in the cells it meets; returns the new entry count."""
+    i0, i1, j0, j1 = cell_range(fl, p, grid)
+    nx = int(grid[3])
+    for j in range(j0, j1 + 1):
+        for i in range(i0, i1 + 1):
+            c = j * nx + i
+            ent[ne, 0] = cells[c]
+            ent[ne, 1] = p
+            cells[c] = ne
+            ne += 1
+    return ne
+
+
+@helper
+def listed(cells, ent, it, fl, s, grid, stamp, cand):
+    """The pieces alive sharing a grid cell with ``s`` (s excluded), into ``cand``;
+    returns their count.  Entries of pieces no longer alive are unlinked on the way."""
+    i0, i1, j0, j1 = cell_range(fl, s, grid)
+    nx = int(grid[3])
+    n = 0
+    for j in range(j0, j1 + 1):
+        for i in range(i0, i1 + 1):
+            c = j * nx + i
+            prev = -1
+            e = cells[c]
+            while e >= 0:
+                q = ent[e, 1]
+                nxt = ent[e, 0]
+                if it[q, 3] == 0:
+                    if prev < 0:
+                        cells[c] = nxt
+                    else:
+                        ent[prev, 0] = nxt
+                else:
+                    if q != s and it[q, 5] != stamp:
+                        it[q, 5] = stamp
+                        cand[n] = q
+                        n += 1
+                    prev = e
+                e = nxt
+    return n
+
+
+@helper
+def enter(cells, ent, st, fl, byz, grid, z, capacity):
+    """Enter into the grid the pieces of ``byz`` (sorted by decreasing greatest depth)
+    whose greatest depth exceeds ``z``: the others lie wholly in front of the head and
+    cannot fail the tests against it.  Returns False when ``ent`` ran out of room."""
+    while st[NEXT] < byz.shape[0]:
+        p = byz[st[NEXT]]
+        if fl[p, 5] <= z:
+            return True
+        if st[ENTRIES] + cells_of(fl, p, grid) > capacity:
+            return False
+        st[ENTRIES] = grid_add(cells, ent, st[ENTRIES], fl, p, grid)
+        st[NEXT] += 1
+    return True
+
+
+#: Lists longer than this are sorted by merging (:func:`scanline._kernels.sort.sort_keys`).
+SHORT = 32
+
+
+@helper
+def by_key(cand, n, fl, keys, tkeys, titems):
+    """Sort ``cand[:n]`` by key (rank, number): a short list by insertion, a long one
+    by number and then stably by rank."""
+    if n <= SHORT:
+        for i in range(1, n):
+            q = cand[i]
+            j = i
+            while j > 0 and key_less(fl, q, cand[j - 1]):
+                cand[j] = cand[j - 1]
+                j -= 1
+            cand[j] = q
+        return
+    for i in range(n):
+        keys[i] = cand[i]
+    sort_keys(keys, cand, n, tkeys, titems)
+    for i in range(n):
+        keys[i] = fl[cand[i], 10]
+    sort_keys(keys, cand, n, tkeys, titems)
+
+
+@helper
+def on_side(pv, it, p, fl, q, eps, sign):
+    """Whether every vertex of piece ``p`` is behind (``sign`` 1.0) or in front of
+    (``sign`` -1.0) the plane of piece ``q``, or on it (tests 3 and 4)."""
+    for k in range(it[p, 0], it[p, 0] + it[p, 1]):
+        d = pv[k, 0] * fl[q, 6] + pv[k, 1] * fl[q, 7] + pv[k, 2] * fl[q, 8] + fl[q, 9]
+        if d * sign < -eps:
+            return False
+    return True
+
+
+@helper
+def separated(pv, it, p, q, eps):
+    """Whether some edge of convex piece ``p`` has all of ``q``'s (x, y) projection on
+    its outer side (or on it): a separating line."""
+    a0 = it[p, 0]
+    n = it[p, 1]
+    area = 0.0
+    for k in range(n):
+        m = a0 + (k + 1) % n
+        area += pv[a0 + k, 0] * pv[m, 1] - pv[m, 0] * pv[a0 + k, 1]
+    orient = 1.0 if area > 0 else -1.0
+    for k in range(n):
+        m = a0 + (k + 1) % n
+        x0 = pv[a0 + k, 0]
+        y0 = pv[a0 + k, 1]
+        ex = pv[m, 0] - x0
+        ey = pv[m, 1] - y0
+        tol = eps * (ex * ex + ey * ey) ** 0.5
+        apart = True
+        for j in range(it[q, 0], it[q, 0] + it[q, 1]):
+            if (ex * (pv[j, 1] - y0) - ey * (pv[j, 0] - x0)) * orient > tol:
+                apart = False
+                break
+        if apart:
+            return True
+    return False
+
+
+@helper
+def decide(pv, it, fl, s, t, eps):
+    """Tests 3 to 5 for the pair (S, S') whose depths and boxes overlap: the number of
+    the test that says yes, or 0 when all fail (S may hide S')."""
+    if on_side(pv, it, s, fl, t, eps, 1.0):
+        return 3
+    if on_side(pv, it, t, fl, s, eps, -1.0):
+        return 4
+    if separated(pv, it, s, t, eps) or separated(pv, it, t, s, eps):
+        return 5
+    return 0
+
+
+@helper
+def part_area(pv, start, n):
+    """Twice the signed (x, y) area of the ``n`` vertices of ``pv`` from ``start``."""
+    area = 0.0
+    for k in range(n):
+        m = start + (k + 1) % n
+        area += pv[start + k, 0] * pv[m, 1] - pv[m, 0] * pv[start + k, 1]
+    return area
+
+
+@helper
+def cut(pv, nv, it, p, plane, eps, min_area):
+    """Split piece ``p`` by ``plane`` (Sutherland-Hodgman against the plane and its
+    opposite) into a part in front written at ``pv[nv:]`` and a part behind after it.
+    Returns (front count, behind count), or (0, 0) when the plane does not cut the
+    piece or a part would have no area."""
+    a0 = it[p, 0]
+    k = it[p, 1]
+    ahead = False
+    back = False
+    for i in range(k):
+        d = pv[a0 + i, 0] * plane[0] + pv[a0 + i, 1] * plane[1] + pv[a0 + i, 2] * plane[2] \
+            + plane[3]
+        ahead = ahead or d < -eps
+        back = back or d > eps
+    if not (ahead and back):
+        return 0, 0
+    nf = 0
+    for side in range(2):
+        start = nv + (nf if side == 1 else 0)
+        m = 0
+        for i in range(k):
+            a = a0 + i
+            b = a0 + (i + 1) % k
+            da = pv[a, 0] * plane[0] + pv[a, 1] * plane[1] + pv[a, 2] * plane[2] + plane[3]
+            db = pv[b, 0] * plane[0] + pv[b, 1] * plane[1] + pv[b, 2] * plane[2] + plane[3]
+            if side == 0 and da <= eps or side == 1 and da >= -eps:
+                for c in range(3):
+                    pv[start + m, c] = pv[a, c]
+                m += 1
+            if da < -eps and db > eps or da > eps and db < -eps:
+                u = da / (da - db)
+                for c in range(3):
+                    pv[start + m, c] = pv[a, c] + (pv[b, c] - pv[a, c]) * u
+                m += 1
+        if m < 3 or abs(0.5 * part_area(pv, start, m)) <= min_area:
+            return 0, 0
+        if side == 0:
+            nf = m
+        else:
+            return nf, m
+    return 0, 0
+
+
+@helper
+def new_piece(pv, start, n, fl, it, q, face, source):
+    """Piece ``q``: the ``n`` vertices at ``pv[start:]``, lying in the plane of piece
+    ``source``, of face ``face``; its extents computed."""
+    it[q, 0] = start
+    it[q, 1] = n
+    it[q, 2] = face
+    it[q, 3] = 1
+    it[q, 4] = 0
+    it[q, 5] = -1
+    for c in range(3):
+        lo = pv[start, c]
+        hi = pv[start, c]
+        for k in range(start + 1, start + n):
+            lo = min(lo, pv[k, c])
+            hi = max(hi, pv[k, c])
+        fl[q, 2 * c] = lo
+        fl[q, 2 * c + 1] = hi
+    for c in range(4):
+        fl[q, 6 + c] = fl[source, 6 + c]
+
+
+@helper
+def cells_of(fl, p, grid):
+    """How many grid cells piece ``p`` meets."""
+    i0, i1, j0, j1 = cell_range(fl, p, grid)
+    return (i1 - i0 + 1) * (j1 - j0 + 1)
+
+
+@helper
+def log_row(log, st, s, t, decided, action, piece, by, new):
+    """Append a log row: the pair, the test that decided it (0: none), the action,
+    and for a split the piece cut, the piece whose plane cut it (-1: a plane across
+    the middle) and the first of the two new pieces."""
+    r = st[ROWS]
+    log[r, 0] = s
+    log[r, 1] = t
+    log[r, 2] = decided
+    log[r, 3] = action
+    log[r, 4] = piece
+    log[r, 5] = by
+    log[r, 6] = new
+    st[ROWS] = r + 1
+
+
+@helper
+def room(st, fl, pv, heap, ent, log, logging):
+    """Which array lacks room for one more step (a ROOM code), or -1."""
+    if st[PIECES] + 2 > fl.shape[0]:
+        return ROOM_PIECES
+    if st[VERTS] + 4 * st[MAXK] > pv.shape[0]:     # each part: <= k vertices, k cuts
+        return ROOM_VERTS
+    if st[HEAP] + 2 > heap.shape[0]:
+        return ROOM_HEAP
+    if st[ENTRIES] + 2 * st[MAXCELLS] > ent.shape[0]:
+        return ROOM_ENTRIES
+    if logging and st[ROWS] + st[ALIVE] + 1 > log.shape[0]:
+        return ROOM_ROWS
+    return -1
+
+
+@helper
+def split_pair(pv, fl, it, heap, cells, ent, st, grid, s, t, eps, min_area, limit, plane,
+               log, logging):
+    """Resolve the flagged pair (S, S'): split S' by the plane of S, else S by the plane
+    of S', else the wider on screen across its middle; the pieces take the place of the
+    surface split.  Returns a status code."""
+    for attempt in range(3):
+        if attempt == 0:
+            p = t
+            by = s
+        elif attempt == 1:
+            p = s
+            by = t
+        else:
+            ws = max(fl[s, 1] - fl[s, 0], fl[s, 3] - fl[s, 2])
+            wt = max(fl[t, 1] - fl[t, 0], fl[t, 3] - fl[t, 2])
+            p = s if ws >= wt else t
+            by = -1
+        if by >= 0:
+            for c in range(4):
+                plane[c] = fl[by, 6 + c]
+        else:
+            wide = fl[p, 1] - fl[p, 0] >= fl[p, 3] - fl[p, 2]
+            plane[0] = 1.0 if wide else 0.0
+            plane[1] = 0.0 if wide else 1.0
+            plane[2] = 0.0
+            plane[3] = -0.5 * (fl[p, 0] + fl[p, 1]) if wide else -0.5 * (fl[p, 2] + fl[p, 3])
+        nv = st[VERTS]
+        nf, nb = cut(pv, nv, it, p, plane, eps, min_area)
+        if nf == 0:
+            continue
+        if st[PIECES] + 2 > limit:
+            return TOO_MANY
+        q = st[PIECES]
+        new_piece(pv, nv, nf, fl, it, q, it[p, 2], p)
+        new_piece(pv, nv + nf, nb, fl, it, q + 1, it[p, 2], p)
+        if fl[q + 1, 5] > fl[q, 5]:          # the farther piece first
+            for c in range(6):
+                tmp = fl[q, c]
+                fl[q, c] = fl[q + 1, c]
+                fl[q + 1, c] = tmp
+            for c in range(2):
+                tmp2 = it[q, c]
+                it[q, c] = it[q + 1, c]
+                it[q + 1, c] = tmp2
+        st[PIECES] = q + 2
+        st[VERTS] = nv + nf + nb
+        st[MAXK] = max(st[MAXK], max(nf, nb))
+        if logging:
+            log_row(log, st, s, t, np.int64(0), np.int64(SPLIT if by >= 0 else HALVE), p,
+                    by, q)
+        for r in (q, q + 1):
+            fl[r, 10] = fl[p, 10]
+            st[HEAP] = heap_push(heap, st[HEAP], fl, r)
+            st[ENTRIES] = grid_add(cells, ent, st[ENTRIES], fl, r, grid)
+            st[MAXCELLS] = max(st[MAXCELLS], cells_of(fl, r, grid))
+        it[p, 3] = 0
+        it[p, 4] = 0
+        st[ALIVE] += 1
+        return DONE
+    st[S] = s
+    st[T] = t
+    return UNCUT
+
+
+@kernel
+def depth_sort(pv, fl, it, heap, cells, ent, grid, byz, order, cand, keys, tkeys, titems,
+               log, plane, st, eps, min_area, limit, max_steps, split_cycles, logging):
+    """Run (or resume) the depth sort: pieces go to ``order`` as they are painted.
+    ``byz``: the pieces given, by decreasing greatest depth (they enter the grid in
+    this order as the sort reaches their depths); ``limit``: most pieces in all;
+    ``max_steps``: the loop bound; ``logging``: compare with every surface alive and
+    log each pair.  Returns the status (also in ``st[STATUS]``)."""
+    one = np.int64(1)             # typed, not literal, arguments of log_row
+    none = np.int64(NONE)
+    nil = np.int64(-1)
+    while st[ALIVE] > 0:
+        short = room(st, fl, pv, heap, ent, log, logging)
+        while short < 0:             # the head: the least key alive (stale entries off)
+            h = int(heap[0, 1])
+            if it[h, 3] == 1 and heap[0, 0] == fl[h, 10]:
+                break
+            st[HEAP] = heap_pop(heap, st[HEAP])
+        if short < 0 and not logging and not enter(cells, ent, st, fl, byz, grid,
+                                                   fl[h, 4] + eps,
+                                                   ent.shape[0] - 2 * st[MAXCELLS]):
+            short = ROOM_ENTRIES
+        if short >= 0:
+            st[STATUS] = NEED_ROOM
+            st[T] = short
+            return NEED_ROOM
+        st[STEPS] += 1
+        if st[STEPS] > max_steps:
+            st[STATUS] = TOO_LONG
+            return TOO_LONG
+        s = h
+        st[STAMP] += 1
+        if logging:
+            n = 0
+            for q in range(st[PIECES]):
+                if q != s and it[q, 3] == 1:
+                    cand[n] = q
+                    n += 1
+            by_key(cand, n, fl, keys, tkeys, titems)
+        else:
+            n = listed(cells, ent, it, fl, s, grid, st[STAMP], cand)
+        # the pairs whose depths overlap (S' not wholly in front of S) by the boxes
+        m = 0
+        for i in range(n):
+            q = cand[i]
+            if fl[q, 5] <= fl[s, 4] + eps:
+                continue
+            if fl[q, 1] <= fl[s, 0] + eps or fl[q, 0] >= fl[s, 1] - eps:
+                if logging:
+                    log_row(log, st, s, q, one, none, nil, nil, nil)
+            elif fl[q, 3] <= fl[s, 2] + eps or fl[q, 2] >= fl[s, 3] - eps:
+                if logging:
+                    log_row(log, st, s, q, one + one, none, nil, nil, nil)
+            else:
+                cand[m] = q
+                m += 1
+        if not logging:
+            by_key(cand, m, fl, keys, tkeys, titems)
+        mover = -1
+        for i in range(m):
+            q = cand[i]
+            decided = decide(pv, it, fl, s, q, eps)
+            if decided == 0:
+                mover = q
+                break
+            if logging:
+                log_row(log, st, s, q, decided, none, nil, nil, nil)
+        if mover < 0:                # S hides nothing behind it: paint it
+            order[st[DRAWN]] = s
+            st[DRAWN] += 1
+            it[s, 3] = 0
+            it[s, 4] = 0
+            st[ALIVE] -= 1
+            continue
+        t = mover
+        if it[t, 4] == 0:            # move S' to the head of the list and flag it
+            if logging:
+                log_row(log, st, s, t, none, np.int64(MOVE), nil, nil, nil)
+            it[t, 4] = 1
+            fl[t, 10] = float(st[LOW])
+            st[LOW] -= 1
+            st[HEAP] = heap_push(heap, st[HEAP], fl, t)
+            continue
+        if not split_cycles:
+            st[S] = s
+            st[T] = t
+            st[STATUS] = CYCLE
+            return CYCLE
+        status = split_pair(pv, fl, it, heap, cells, ent, st, grid, s, t, eps, min_area,
+                            limit, plane, log, logging)
+        if status != DONE:
+            st[S] = s
+            st[T] = t
+            st[STATUS] = status
+            return status
+    st[STATUS] = DONE
+    return DONE

@@ -17,7 +17,8 @@ the next step the kernel returns :data:`NEED_ROOM` *before* changing anything; t
 caller enlarges the arrays and calls again, and the sort resumes where it stopped.
 
 Per piece ``p``: ``fl[p]`` holds the extents xmin, xmax, ymin, ymax, zmin, zmax
-(columns 0-5), the normalized plane A, B, C, D (6-9) and the rank (10); ``it[p]``
+(columns 0-5), the normalized plane A, B, C, D (6-9), the rank (10) and the
+orientation of its (x, y) projection (11: 1 counterclockwise, -1 clockwise); ``it[p]``
 holds the first vertex in ``pv`` and the vertex count (0, 1), the face (2), alive
 (3), flagged (4), and the stamp of the last step that listed it (5).
 """
@@ -66,12 +67,6 @@ NONE = 0
 MOVE = 1
 SPLIT = 2        # by the plane of ``by``
 HALVE = 3        # by a plane across the middle of ``cut``
-
-
-@helper
-def key_less(fl, a, b):
-    """Whether piece ``a``'s key (rank, number) is below ``b``'s."""
-    return fl[a, 10] < fl[b, 10] or (fl[a, 10] == fl[b, 10] and a < b)
 
 
 @helper
@@ -143,52 +138,6 @@ def grid_add(cells, ent, ne, fl, p, grid):
     return ne
 
 
-@helper
-def listed(cells, ent, it, fl, s, grid, stamp, cand):
-    """The pieces alive sharing a grid cell with ``s`` (s excluded), into ``cand``;
-    returns their count.  Entries of pieces no longer alive are unlinked on the way."""
-    i0, i1, j0, j1 = cell_range(fl, s, grid)
-    nx = int(grid[3])
-    n = 0
-    for j in range(j0, j1 + 1):
-        for i in range(i0, i1 + 1):
-            c = j * nx + i
-            prev = -1
-            e = cells[c]
-            while e >= 0:
-                q = ent[e, 1]
-                nxt = ent[e, 0]
-                if it[q, 3] == 0:
-                    if prev < 0:
-                        cells[c] = nxt
-                    else:
-                        ent[prev, 0] = nxt
-                else:
-                    if q != s and it[q, 5] != stamp:
-                        it[q, 5] = stamp
-                        cand[n] = q
-                        n += 1
-                    prev = e
-                e = nxt
-    return n
-
-
-@helper
-def enter(cells, ent, st, fl, byz, grid, z, capacity):
-    """Enter into the grid the pieces of ``byz`` (sorted by decreasing greatest depth)
-    whose greatest depth exceeds ``z``: the others lie wholly in front of the head and
-    cannot fail the tests against it.  Returns False when ``ent`` ran out of room."""
-    while st[NEXT] < byz.shape[0]:
-        p = byz[st[NEXT]]
-        if fl[p, 5] <= z:
-            return True
-        if st[ENTRIES] + cells_of(fl, p, grid) > capacity:
-            return False
-        st[ENTRIES] = grid_add(cells, ent, st[ENTRIES], fl, p, grid)
-        st[NEXT] += 1
-    return True
-
-
 #: Lists longer than this are sorted by merging (:func:`scanline._kernels.sort.sort_keys`).
 SHORT = 32
 
@@ -201,7 +150,8 @@ def by_key(cand, n, fl, keys, tkeys, titems):
         for i in range(1, n):
             q = cand[i]
             j = i
-            while j > 0 and key_less(fl, q, cand[j - 1]):
+            while j > 0 and (fl[q, 10] < fl[cand[j - 1], 10] or (
+                    fl[q, 10] == fl[cand[j - 1], 10] and q < cand[j - 1])):
                 cand[j] = cand[j - 1]
                 j -= 1
             cand[j] = q
@@ -215,37 +165,23 @@ def by_key(cand, n, fl, keys, tkeys, titems):
 
 
 @helper
-def on_side(pv, it, p, fl, q, eps, sign):
-    """Whether every vertex of piece ``p`` is behind (``sign`` 1.0) or in front of
-    (``sign`` -1.0) the plane of piece ``q``, or on it (tests 3 and 4)."""
-    for k in range(it[p, 0], it[p, 0] + it[p, 1]):
-        d = pv[k, 0] * fl[q, 6] + pv[k, 1] * fl[q, 7] + pv[k, 2] * fl[q, 8] + fl[q, 9]
-        if d * sign < -eps:
-            return False
-    return True
-
-
-@helper
-def separated(pv, it, p, q, eps):
+def separated(pv, it, fl, p, q, eps):
     """Whether some edge of convex piece ``p`` has all of ``q``'s (x, y) projection on
-    its outer side (or on it): a separating line."""
+    its outer side (or within ``eps`` of it): a separating line."""
     a0 = it[p, 0]
     n = it[p, 1]
-    area = 0.0
+    orient = fl[p, 11]
     for k in range(n):
-        m = a0 + (k + 1) % n
-        area += pv[a0 + k, 0] * pv[m, 1] - pv[m, 0] * pv[a0 + k, 1]
-    orient = 1.0 if area > 0 else -1.0
-    for k in range(n):
-        m = a0 + (k + 1) % n
+        m = a0 + k + 1 if k + 1 < n else a0
         x0 = pv[a0 + k, 0]
         y0 = pv[a0 + k, 1]
         ex = pv[m, 0] - x0
         ey = pv[m, 1] - y0
-        tol = eps * (ex * ex + ey * ey) ** 0.5
+        tol2 = eps * eps * (ex * ex + ey * ey)
         apart = True
         for j in range(it[q, 0], it[q, 0] + it[q, 1]):
-            if (ex * (pv[j, 1] - y0) - ey * (pv[j, 0] - x0)) * orient > tol:
+            inner = (ex * (pv[j, 1] - y0) - ey * (pv[j, 0] - x0)) * orient
+            if inner > 0.0 and inner * inner > tol2:
                 apart = False
                 break
         if apart:
@@ -257,23 +193,21 @@ def separated(pv, it, p, q, eps):
 def decide(pv, it, fl, s, t, eps):
     """Tests 3 to 5 for the pair (S, S') whose depths and boxes overlap: the number of
     the test that says yes, or 0 when all fail (S may hide S')."""
-    if on_side(pv, it, s, fl, t, eps, 1.0):
-        return 3
-    if on_side(pv, it, t, fl, s, eps, -1.0):
-        return 4
-    if separated(pv, it, s, t, eps) or separated(pv, it, t, s, eps):
+    for side in range(2):        # 3: S behind the plane of S'; 4: S' in front of S's
+        p = s if side == 0 else t
+        q = t if side == 0 else s
+        sign = 1.0 if side == 0 else -1.0
+        on = True
+        for k in range(it[p, 0], it[p, 0] + it[p, 1]):
+            d = pv[k, 0] * fl[q, 6] + pv[k, 1] * fl[q, 7] + pv[k, 2] * fl[q, 8] + fl[q, 9]
+            if d * sign < -eps:
+                on = False
+                break
+        if on:
+            return 3 + side
+    if separated(pv, it, fl, s, t, eps) or separated(pv, it, fl, t, s, eps):
         return 5
     return 0
-
-
-@helper
-def part_area(pv, start, n):
-    """Twice the signed (x, y) area of the ``n`` vertices of ``pv`` from ``start``."""
-    area = 0.0
-    for k in range(n):
-        m = start + (k + 1) % n
-        area += pv[start + k, 0] * pv[m, 1] - pv[m, 0] * pv[start + k, 1]
-    return area
 
 
 @helper
@@ -293,13 +227,13 @@ def cut(pv, nv, it, p, plane, eps, min_area):
         back = back or d > eps
     if not (ahead and back):
         return 0, 0
-    nf = 0
+    nf = np.int64(0)
     for side in range(2):
-        start = nv + (nf if side == 1 else 0)
-        m = 0
+        start = nv + nf
+        m = np.int64(0)
         for i in range(k):
             a = a0 + i
-            b = a0 + (i + 1) % k
+            b = a0 + i + 1 if i + 1 < k else a0
             da = pv[a, 0] * plane[0] + pv[a, 1] * plane[1] + pv[a, 2] * plane[2] + plane[3]
             db = pv[b, 0] * plane[0] + pv[b, 1] * plane[1] + pv[b, 2] * plane[2] + plane[3]
             if side == 0 and da <= eps or side == 1 and da >= -eps:
@@ -311,7 +245,11 @@ def cut(pv, nv, it, p, plane, eps, min_area):
                 for c in range(3):
                     pv[start + m, c] = pv[a, c] + (pv[b, c] - pv[a, c]) * u
                 m += 1
-        if m < 3 or abs(0.5 * part_area(pv, start, m)) <= min_area:
+        area = 0.0
+        for i in range(m):
+            j = start + i + 1 if i + 1 < m else start
+            area += pv[start + i, 0] * pv[j, 1] - pv[j, 0] * pv[start + i, 1]
+        if m < 3 or abs(0.5 * area) <= min_area:
             return 0, 0
         if side == 0:
             nf = m
@@ -340,13 +278,7 @@ def new_piece(pv, start, n, fl, it, q, face, source):
         fl[q, 2 * c + 1] = hi
     for c in range(4):
         fl[q, 6 + c] = fl[source, 6 + c]
-
-
-@helper
-def cells_of(fl, p, grid):
-    """How many grid cells piece ``p`` meets."""
-    i0, i1, j0, j1 = cell_range(fl, p, grid)
-    return (i1 - i0 + 1) * (j1 - j0 + 1)
+    fl[q, 11] = fl[source, 11]           # clipping keeps the order of the vertices
 
 
 @helper
@@ -363,22 +295,6 @@ def log_row(log, st, s, t, decided, action, piece, by, new):
     log[r, 5] = by
     log[r, 6] = new
     st[ROWS] = r + 1
-
-
-@helper
-def room(st, fl, pv, heap, ent, log, logging):
-    """Which array lacks room for one more step (a ROOM code), or -1."""
-    if st[PIECES] + 2 > fl.shape[0]:
-        return ROOM_PIECES
-    if st[VERTS] + 4 * st[MAXK] > pv.shape[0]:     # each part: <= k vertices, k cuts
-        return ROOM_VERTS
-    if st[HEAP] + 2 > heap.shape[0]:
-        return ROOM_HEAP
-    if st[ENTRIES] + 2 * st[MAXCELLS] > ent.shape[0]:
-        return ROOM_ENTRIES
-    if logging and st[ROWS] + st[ALIVE] + 1 > log.shape[0]:
-        return ROOM_ROWS
-    return -1
 
 
 @helper
@@ -435,8 +351,9 @@ def split_pair(pv, fl, it, heap, cells, ent, st, grid, s, t, eps, min_area, limi
         for r in (q, q + 1):
             fl[r, 10] = fl[p, 10]
             st[HEAP] = heap_push(heap, st[HEAP], fl, r)
-            st[ENTRIES] = grid_add(cells, ent, st[ENTRIES], fl, r, grid)
-            st[MAXCELLS] = max(st[MAXCELLS], cells_of(fl, r, grid))
+            ne = grid_add(cells, ent, st[ENTRIES], fl, r, grid)
+            st[MAXCELLS] = max(st[MAXCELLS], ne - st[ENTRIES])
+            st[ENTRIES] = ne
         it[p, 3] = 0
         it[p, 4] = 0
         st[ALIVE] += 1
@@ -458,16 +375,34 @@ def depth_sort(pv, fl, it, heap, cells, ent, grid, byz, order, cand, keys, tkeys
     none = np.int64(NONE)
     nil = np.int64(-1)
     while st[ALIVE] > 0:
-        short = room(st, fl, pv, heap, ent, log, logging)
+        short = -1                   # which array lacks room for one more step
+        if st[PIECES] + 2 > fl.shape[0]:
+            short = ROOM_PIECES
+        elif st[VERTS] + 4 * st[MAXK] > pv.shape[0]:   # each part: <= k vertices, k cuts
+            short = ROOM_VERTS
+        elif st[HEAP] + 2 > heap.shape[0]:
+            short = ROOM_HEAP
+        elif st[ENTRIES] + 2 * st[MAXCELLS] > ent.shape[0]:
+            short = ROOM_ENTRIES
+        elif logging and st[ROWS] + st[ALIVE] + 1 > log.shape[0]:
+            short = ROOM_ROWS
         while short < 0:             # the head: the least key alive (stale entries off)
             h = int(heap[0, 1])
             if it[h, 3] == 1 and heap[0, 0] == fl[h, 10]:
                 break
             st[HEAP] = heap_pop(heap, st[HEAP])
-        if short < 0 and not logging and not enter(cells, ent, st, fl, byz, grid,
-                                                   fl[h, 4] + eps,
-                                                   ent.shape[0] - 2 * st[MAXCELLS]):
-            short = ROOM_ENTRIES
+        # the surfaces that reach behind the head's nearest depth enter the grid (the
+        # others lie wholly in front of it and cannot fail the tests against it)
+        while short < 0 and not logging and st[NEXT] < byz.shape[0]:
+            p = byz[st[NEXT]]
+            if fl[p, 5] <= fl[h, 4] + eps:
+                break
+            i0, i1, j0, j1 = cell_range(fl, p, grid)
+            if st[ENTRIES] + (i1 - i0 + 1) * (j1 - j0 + 1) + 2 * st[MAXCELLS] > ent.shape[0]:
+                short = ROOM_ENTRIES
+                break
+            st[ENTRIES] = grid_add(cells, ent, st[ENTRIES], fl, p, grid)
+            st[NEXT] += 1
         if short >= 0:
             st[STATUS] = NEED_ROOM
             st[T] = short
@@ -478,17 +413,38 @@ def depth_sort(pv, fl, it, heap, cells, ent, grid, byz, order, cand, keys, tkeys
             return TOO_LONG
         s = h
         st[STAMP] += 1
+        n = np.int64(0)
         if logging:
-            n = 0
             for q in range(st[PIECES]):
                 if q != s and it[q, 3] == 1:
                     cand[n] = q
                     n += 1
             by_key(cand, n, fl, keys, tkeys, titems)
-        else:
-            n = listed(cells, ent, it, fl, s, grid, st[STAMP], cand)
+        else:                        # the pieces alive sharing a cell with S (dead unlinked)
+            i0, i1, j0, j1 = cell_range(fl, s, grid)
+            nx = int(grid[3])
+            for j in range(j0, j1 + 1):
+                for i in range(i0, i1 + 1):
+                    c = j * nx + i
+                    prev = -1
+                    e = cells[c]
+                    while e >= 0:
+                        q = ent[e, 1]
+                        nxt = ent[e, 0]
+                        if it[q, 3] == 0:
+                            if prev < 0:
+                                cells[c] = nxt
+                            else:
+                                ent[prev, 0] = nxt
+                        else:
+                            if q != s and it[q, 5] != st[STAMP]:
+                                it[q, 5] = st[STAMP]
+                                cand[n] = q
+                                n += 1
+                            prev = e
+                        e = nxt
         # the pairs whose depths overlap (S' not wholly in front of S) by the boxes
-        m = 0
+        m = np.int64(0)
         for i in range(n):
             q = cand[i]
             if fl[q, 5] <= fl[s, 4] + eps:

@@ -17,6 +17,7 @@ import math
 import numpy as np
 
 from ._jit import helper, kernel
+from .spans import span
 
 
 @helper
@@ -50,6 +51,56 @@ def covers(verts, start, end, x, y):
         if xc <= x:            # False for nan
             odd = not odd
     return odd
+
+
+@kernel
+def paint_convex(buf, layout, width, height, verts, offsets, colors):
+    """Paint convex polygons in order, polygon ``p`` (``verts[offsets[p]:offsets[p +
+    1]]``) in ``colors[p]``: the object-order methods' painting.  A convex polygon
+    has two crossings on each scan line it covers, and the span between them is the
+    2-D fill's (``ceil(xl) <= x < ceil(xr)``, each crossing the expression of
+    :func:`crossing`): each edge adds its crossings to the lowest and highest x of
+    its rows, with no edge table to sort."""
+    xl = np.empty(height)
+    xr = np.empty(height)
+    for p in range(offsets.shape[0] - 1):
+        start = offsets[p]
+        end = offsets[p + 1]
+        lo = verts[start, 1]
+        hi = verts[start, 1]
+        for i in range(start + 1, end):
+            lo = min(lo, verts[i, 1])
+            hi = max(hi, verts[i, 1])
+        # rows clipped to the raster in floats first (any finite coordinate converts)
+        r0 = int(min(max(math.floor(lo) + 1.0, 0.0), float(height)))
+        r1 = int(max(min(math.floor(hi), height - 1.0), -1.0))
+        for r in range(r0, r1 + 1):
+            xl[r] = np.inf
+            xr[r] = -np.inf
+        for i in range(start, end):
+            j = i + 1 if i + 1 < end else start
+            a = i if verts[i, 1] < verts[j, 1] else j
+            b = j if a == i else i
+            ylo = verts[a, 1]
+            yhi = verts[b, 1]
+            if ylo == yhi:
+                continue
+            xlo = verts[a, 0]
+            dx = verts[b, 0] - xlo
+            dy = yhi - ylo
+            # the rows ylo < r <= yhi within r0..r1
+            first = int(min(max(math.floor(ylo) + 1.0, float(r0)), float(height)))
+            last = int(max(min(math.floor(yhi), float(r1)), -1.0))
+            for r in range(first, last + 1):
+                xc = xlo + ((r - ylo) * dx) / dy
+                xl[r] = min(xl[r], xc)
+                xr[r] = max(xr[r], xc)
+        color = colors[p]
+        for r in range(r0, r1 + 1):
+            if xl[r] < xr[r]:
+                x0 = min(max(math.ceil(xl[r]), 0.0), float(width))
+                x1 = max(min(math.ceil(xr[r]), float(width)), 0.0) - 1.0
+                span(buf, layout, width, height, r, int(x0), int(x1), color)
 
 
 @helper

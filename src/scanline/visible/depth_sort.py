@@ -130,9 +130,14 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None):
     grid, cells = _grid(ext)
     cap = 2 * n + 16
     norm = np.linalg.norm(sp.planes[:, :3], axis=1, keepdims=True)
-    fl = np.empty((cap, 11))
+    fl = np.empty((cap, 12))
     fl[:n, :6] = ext
     fl[:n, 6:10] = sp.planes / np.where(norm > 0, norm, 1.0)
+    x, y = sp.vertices[:, 0], sp.vertices[:, 1]
+    nxt = np.arange(1, len(x) + 1)
+    nxt[sp.offsets[1:] - 1] = sp.offsets[:-1]
+    fl[:n, 11] = np.where(np.add.reduceat(x * y[nxt] - x[nxt] * y, sp.offsets[:-1]) > 0,
+                          1.0, -1.0)
     order = np.argsort(-ext[:, 5], kind="stable")
     fl[order, 10] = np.arange(n, dtype=np.float64)
     counts = sp.counts

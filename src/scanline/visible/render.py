@@ -4,7 +4,9 @@ shaded (each face one color)."""
 import numpy as np
 
 from .. import _validate as v
-from ..draw._common import target
+from .._kernels._jit import call
+from .._kernels.variants import layout
+from ..draw._common import area_work, target
 from ..errors import ArgumentValueError
 from .bsp import BSPTree, bsp
 from .depth_sort import depth_sort
@@ -67,15 +69,18 @@ def face_colors(fb, meshes, colors=None):
 
 
 def paint(fb, result, values):
-    """Paint a method's result: object order through :func:`scanline.draw.polygons`
-    (each piece in order, later over earlier); image space by coloring each pixel
-    with its face's value (background left as it is)."""
-    from ..draw import polygons as draw_polygons
-
+    """Paint a method's result: object order piece after piece, later over earlier
+    (the convex pieces' spans, sampled as :func:`scanline.draw.polygons` samples);
+    image space by coloring each pixel with its face's value (background left as it
+    is).  ``values``: pixel values (F, channels) per face."""
     if isinstance(result, ScreenPolygons):
         if len(result):
-            draw_polygons(fb, np.ascontiguousarray(result.vertices[:, :2]),
-                          color=values[result.face], counts=result.counts)
+            from .._kernels.visible import paint_convex
+
+            buf, packed = fb._raster()
+            verts = np.ascontiguousarray(result.vertices, np.float64)
+            colors = np.ascontiguousarray(values[result.face], np.uint8)
+            call(paint_convex, area_work(fb.width, fb.height, verts) + 10 * len(verts), buf, layout(packed), fb.width, fb.height, verts, result.offsets, colors)
         return
     face = result.face
     buf, packed = fb._raster()

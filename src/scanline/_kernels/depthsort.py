@@ -27,6 +27,7 @@ import numpy as np
 
 from ._jit import helper, kernel
 from .sort import sort_keys
+from .variants import token
 
 # -- indices into the state array ``st`` -------------------------------------------------
 PIECES = 0      # pieces so far
@@ -45,7 +46,8 @@ ALIVE = 12      # pieces alive
 MAXK = 13       # most vertices of a piece
 MAXCELLS = 14   # most grid cells of a piece
 NEXT = 15       # the next piece of ``byz`` to enter the grid
-STATE = 16
+OUT = 16        # vertices written to ``out``
+STATE = 17
 
 # -- status codes ------------------------------------------------------------------------
 DONE = 0
@@ -61,6 +63,13 @@ ROOM_VERTS = 1
 ROOM_HEAP = 2
 ROOM_ENTRIES = 3
 ROOM_ROWS = 4
+ROOM_OUT = 5
+
+# -- the trace tokens (:mod:`scanline._kernels.variants`): the sort alone, or compared
+# with every surface alive and logged (step tables): only the variant used is compiled
+SILENT = 1
+LOGGED = 2
+TRACE = {False: token(SILENT), True: token(LOGGED)}
 
 # -- log rows: S, S', decided by (1-5; 0: every test failed), action, cut, by, new ----
 NONE = 0
@@ -299,7 +308,7 @@ def log_row(log, st, s, t, decided, action, piece, by, new):
 
 @helper
 def split_pair(pv, fl, it, heap, cells, ent, st, grid, s, t, eps, min_area, limit, plane,
-               log, logging):
+               log, trace):
     """Resolve the flagged pair (S, S'): split S' by the plane of S, else S by the plane
     of S', else the wider on screen across its middle; the pieces take the place of the
     surface split.  Returns a status code."""
@@ -345,7 +354,7 @@ def split_pair(pv, fl, it, heap, cells, ent, st, grid, s, t, eps, min_area, limi
         st[PIECES] = q + 2
         st[VERTS] = nv + nf + nb
         st[MAXK] = max(st[MAXK], max(nf, nb))
-        if logging:
+        if len(trace) == LOGGED:
             log_row(log, st, s, t, np.int64(0), np.int64(SPLIT if by >= 0 else HALVE), p,
                     by, q)
         for r in (q, q + 1):
@@ -364,13 +373,15 @@ def split_pair(pv, fl, it, heap, cells, ent, st, grid, s, t, eps, min_area, limi
 
 
 @kernel
-def depth_sort(pv, fl, it, heap, cells, ent, grid, byz, order, cand, keys, tkeys, titems,
-               log, plane, st, eps, min_area, limit, max_steps, split_cycles, logging):
-    """Run (or resume) the depth sort: pieces go to ``order`` as they are painted.
-    ``byz``: the pieces given, by decreasing greatest depth (they enter the grid in
-    this order as the sort reaches their depths); ``limit``: most pieces in all;
-    ``max_steps``: the loop bound; ``logging``: compare with every surface alive and
-    log each pair.  Returns the status (also in ``st[STATUS]``)."""
+def depth_sort(pv, fl, it, heap, cells, ent, grid, byz, order, out, cand, keys, tkeys,
+               titems, log, plane, st, eps, min_area, limit, max_steps, split_cycles,
+               trace):
+    """Run (or resume) the depth sort: pieces go to ``order`` as they are painted, and
+    their vertices to ``out``.  ``byz``: the pieces given, by decreasing greatest
+    depth (they enter the grid in this order as the sort reaches their depths);
+    ``limit``: most pieces in all; ``max_steps``: the loop bound; ``trace``: a
+    :data:`TRACE` token (LOGGED: compare with every surface alive and log each pair).
+    Returns the status (also in ``st[STATUS]``)."""
     one = np.int64(1)             # typed, not literal, arguments of log_row
     none = np.int64(NONE)
     nil = np.int64(-1)
@@ -384,8 +395,10 @@ def depth_sort(pv, fl, it, heap, cells, ent, grid, byz, order, cand, keys, tkeys
             short = ROOM_HEAP
         elif st[ENTRIES] + 2 * st[MAXCELLS] > ent.shape[0]:
             short = ROOM_ENTRIES
-        elif logging and st[ROWS] + st[ALIVE] + 1 > log.shape[0]:
+        elif len(trace) == LOGGED and st[ROWS] + st[ALIVE] + 1 > log.shape[0]:
             short = ROOM_ROWS
+        elif st[OUT] + st[MAXK] > out.shape[0]:
+            short = ROOM_OUT
         while short < 0:             # the head: the least key alive (stale entries off)
             h = int(heap[0, 1])
             if it[h, 3] == 1 and heap[0, 0] == fl[h, 10]:
@@ -393,7 +406,7 @@ def depth_sort(pv, fl, it, heap, cells, ent, grid, byz, order, cand, keys, tkeys
             st[HEAP] = heap_pop(heap, st[HEAP])
         # the surfaces that reach behind the head's nearest depth enter the grid (the
         # others lie wholly in front of it and cannot fail the tests against it)
-        while short < 0 and not logging and st[NEXT] < byz.shape[0]:
+        while short < 0 and len(trace) == SILENT and st[NEXT] < byz.shape[0]:
             p = byz[st[NEXT]]
             if fl[p, 5] <= fl[h, 4] + eps:
                 break
@@ -414,7 +427,7 @@ def depth_sort(pv, fl, it, heap, cells, ent, grid, byz, order, cand, keys, tkeys
         s = h
         st[STAMP] += 1
         n = np.int64(0)
-        if logging:
+        if len(trace) == LOGGED:
             for q in range(st[PIECES]):
                 if q != s and it[q, 3] == 1:
                     cand[n] = q
@@ -450,15 +463,15 @@ def depth_sort(pv, fl, it, heap, cells, ent, grid, byz, order, cand, keys, tkeys
             if fl[q, 5] <= fl[s, 4] + eps:
                 continue
             if fl[q, 1] <= fl[s, 0] + eps or fl[q, 0] >= fl[s, 1] - eps:
-                if logging:
+                if len(trace) == LOGGED:
                     log_row(log, st, s, q, one, none, nil, nil, nil)
             elif fl[q, 3] <= fl[s, 2] + eps or fl[q, 2] >= fl[s, 3] - eps:
-                if logging:
+                if len(trace) == LOGGED:
                     log_row(log, st, s, q, one + one, none, nil, nil, nil)
             else:
                 cand[m] = q
                 m += 1
-        if not logging:
+        if len(trace) == SILENT:
             by_key(cand, m, fl, keys, tkeys, titems)
         mover = -1
         for i in range(m):
@@ -467,18 +480,22 @@ def depth_sort(pv, fl, it, heap, cells, ent, grid, byz, order, cand, keys, tkeys
             if decided == 0:
                 mover = q
                 break
-            if logging:
+            if len(trace) == LOGGED:
                 log_row(log, st, s, q, decided, none, nil, nil, nil)
         if mover < 0:                # S hides nothing behind it: paint it
             order[st[DRAWN]] = s
             st[DRAWN] += 1
+            for k in range(it[s, 0], it[s, 0] + it[s, 1]):
+                for c in range(3):
+                    out[st[OUT], c] = pv[k, c]
+                st[OUT] += 1
             it[s, 3] = 0
             it[s, 4] = 0
             st[ALIVE] -= 1
             continue
         t = mover
         if it[t, 4] == 0:            # move S' to the head of the list and flag it
-            if logging:
+            if len(trace) == LOGGED:
                 log_row(log, st, s, t, none, np.int64(MOVE), nil, nil, nil)
             it[t, 4] = 1
             fl[t, 10] = float(st[LOW])
@@ -491,7 +508,7 @@ def depth_sort(pv, fl, it, heap, cells, ent, grid, byz, order, cand, keys, tkeys
             st[STATUS] = CYCLE
             return CYCLE
         status = split_pair(pv, fl, it, heap, cells, ent, st, grid, s, t, eps, min_area,
-                            limit, plane, log, logging)
+                            limit, plane, log, trace)
         if status != DONE:
             st[S] = s
             st[T] = t

@@ -153,6 +153,7 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None):
     heap[:n, 0] = np.arange(n)
     heap[:n, 1] = order
     ent = np.empty((2 * int(cells.sum()) + 64, 2), np.int64)
+    out = np.empty_like(pv)
     st = np.zeros(k.STATE, np.int64)
     st[[k.PIECES, k.VERTS, k.HEAP, k.ALIVE]] = n, len(sp.vertices), n, n
     st[k.LOW] = -1
@@ -165,8 +166,9 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None):
     max_steps = 4 * limit + 10 * n * n + 100
     while True:
         status = call(k.depth_sort, 40 * n + 10, pv, fl, it, heap, heads, ent, grid, order,
-                      drawn, cand, keys, tkeys, titems, rows, np.empty(4), st, tolerance(sp),
-                      MIN_AREA * 1e-3, limit + n, max_steps, split_cycles, log is not None)
+                      drawn, out, cand, keys, tkeys, titems, rows, np.empty(4), st, tolerance(sp),
+                      MIN_AREA * 1e-3, limit + n, max_steps, split_cycles,
+                      k.TRACE[log is not None])
         if status != k.NEED_ROOM:
             break
         short = st[k.T]
@@ -180,8 +182,10 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None):
             heap = _grown(heap, st[k.HEAP] + 2)
         elif short == k.ROOM_ENTRIES:
             ent = _grown(ent, st[k.ENTRIES] + 2 * st[k.MAXCELLS])
-        else:
+        elif short == k.ROOM_ROWS:
             rows = _grown(rows, st[k.ROWS] + st[k.ALIVE] + 1)
+        else:
+            out = _grown(out, st[k.OUT] + st[k.MAXK])
     if log is not None:
         log.extend(_describe(rows, st[k.ROWS]))
     s, t = int(st[k.S]), int(st[k.T])
@@ -201,20 +205,13 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None):
             "splitting; use split_cycles=True" if status == k.CYCLE else
             f"{faces} cannot be ordered and neither plane cuts the other polygon (nearly "
             "coincident polygons?); the loop flag stopped the sort")
-    return _pieces(sp, pv, fl, it, drawn[:st[k.DRAWN]])
+    drawn = drawn[:st[k.DRAWN]]
+    offsets = np.zeros(len(drawn) + 1, np.int64)
+    np.cumsum(it[drawn, 1], out=offsets[1:])
+    return ScreenPolygons(out[:st[k.OUT]], offsets, it[drawn, 2],
+                          np.ascontiguousarray(fl[drawn, 6:10]), sp.width, sp.height)
 
 
 def tolerance(sp):
     """The absolute tolerance of the plane and separation tests on ``sp``'s device."""
     return TOLERANCE * max(sp.width, sp.height, 1.0)
-
-
-def _pieces(sp, pv, fl, it, out):
-    """The pieces ``out`` (in that order) as screen polygons."""
-    rows = it[out]
-    counts = rows[:, 1]
-    offsets = np.zeros(len(out) + 1, np.int64)
-    np.cumsum(counts, out=offsets[1:])
-    idx = np.repeat(rows[:, 0] - offsets[:-1], counts) + np.arange(offsets[-1])
-    return ScreenPolygons(pv.take(idx, axis=0), offsets, rows[:, 2],
-                          fl.take(out, axis=0)[:, 6:10].copy(), sp.width, sp.height)

@@ -79,6 +79,14 @@ class ScreenPolygons:
         """(P, 6) rows xmin, xmax, ymin, ymax, zmin, zmax of each polygon."""
         if not len(self):
             return np.empty((0, 6))
+        k = self.offsets[1] - self.offsets[0]
+        if len(self.vertices) == k * len(self) and (np.diff(self.offsets) == k).all():
+            v = self.vertices.reshape(len(self), k, 3)      # all of k vertices
+            lo, hi = v[:, 0].copy(), v[:, 0].copy()         # (elementwise: numpy's
+            for j in range(1, k):                           # reductions over a short
+                np.minimum(lo, v[:, j], out=lo)             # axis are slow)
+                np.maximum(hi, v[:, j], out=hi)
+            return np.stack([lo[:, 0], hi[:, 0], lo[:, 1], hi[:, 1], lo[:, 2], hi[:, 2]], 1)
         starts = self.offsets[:-1]
         out = np.empty((len(self), 6))
         for axis in range(3):

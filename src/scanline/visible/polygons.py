@@ -116,35 +116,49 @@ class ScreenPolygons:
         0, 1, 2 ...).  Polygons seen edge-on (no area) are dropped."""
         w = v.positive_int("width", width)
         h = v.positive_int("height", height)
-        if not isinstance(polygons, (list, tuple)):
-            polygons = list(v.real_array("polygons", polygons, "(P, K, 3)"))
-        parts = []
-        for i, p in enumerate(polygons):
-            a = v.real_array(f"polygons[{i}]", p, "(K, 3)")
+        if isinstance(polygons, (list, tuple)):
+            arrays = [v.real_array(f"polygons[{i}]", p, "(K, 3)") if not (
+                isinstance(p, np.ndarray) and p.dtype == np.float64) else p
+                for i, p in enumerate(polygons)]
+        else:
+            arrays = list(v.real_array("polygons", polygons, "(P, K, 3)"))
+        for i, a in enumerate(arrays):
             if a.ndim != 2 or a.shape[1] != 3 or len(a) < 3:
                 raise ArgumentValueError(
                     f"polygons[{i}] must be a (K, 3) array of K >= 3 vertices (x, y, depth), "
                     f"got shape {a.shape}")
-            if not np.isfinite(a).all():
-                raise ArgumentValueError(
-                    f"polygons[{i}] has a non-finite coordinate (NaN or inf): "
-                    f"{v._show(a.tolist())}; every vertex must be finite")
-            plane = newell_plane(a)
-            norm = float(np.linalg.norm(plane[:3]))
-            if norm > 0 and np.abs(a @ plane[:3] + plane[3]).max() > 1e-9 * norm * (
-                    float(np.ptp(a, axis=0).max()) + 1.0):
-                raise ArgumentValueError(
-                    f"polygons[{i}] is not planar: {v._show(a.tolist())}; give planar "
-                    "polygons (split a bent one into triangles)")
-            parts.append(a)
-        if faces is None:
-            faces = np.arange(len(parts), dtype=np.int64)
-        faces = np.asarray(faces)
-        if faces.shape != (len(parts),) or (len(parts) and faces.dtype.kind not in "iu"):
+        counts = np.array([len(a) for a in arrays], np.int64)
+        verts = np.concatenate(arrays).astype(np.float64) if arrays else np.empty((0, 3))
+        offsets = np.zeros(len(counts) + 1, np.int64)
+        np.cumsum(counts, out=offsets[1:])
+        finite = np.isfinite(verts).all(axis=1)
+        if not finite.all():
+            i = int(np.searchsorted(offsets, np.flatnonzero(~finite)[0], side="right") - 1)
             raise ArgumentValueError(
-                f"faces must hold one integer per polygon ({len(parts)}), got "
+                f"polygons[{i}] has a non-finite coordinate (NaN or inf): "
+                f"{v._show(arrays[i].tolist())}; every vertex must be finite")
+        if len(counts):
+            plane = newell_planes(verts, offsets)
+            norm = np.linalg.norm(plane[:, :3], axis=1)
+            owner = np.repeat(np.arange(len(counts)), counts)
+            dist = np.abs(np.einsum("ij,ij->i", verts, plane[owner, :3]) + plane[owner, 3])
+            size = (np.maximum.reduceat(verts, offsets[:-1], axis=0)
+                    - np.minimum.reduceat(verts, offsets[:-1], axis=0)).max(axis=1)
+            bent = (norm > 0) & (np.maximum.reduceat(dist, offsets[:-1])
+                                 > 1e-9 * norm * (size + 1.0))
+            if bent.any():
+                i = int(np.flatnonzero(bent)[0])
+                raise ArgumentValueError(
+                    f"polygons[{i}] is not planar: {v._show(arrays[i].tolist())}; give "
+                    "planar polygons (split a bent one into triangles)")
+        if faces is None:
+            faces = np.arange(len(counts), dtype=np.int64)
+        faces = np.asarray(faces)
+        if faces.shape != (len(counts),) or (len(counts) and faces.dtype.kind not in "iu"):
+            raise ArgumentValueError(
+                f"faces must hold one integer per polygon ({len(counts)}), got "
                 f"{v._show(faces.tolist())}")
-        return _assemble(parts, faces.astype(np.int64), w, h)
+        return _assemble(verts, counts, faces.astype(np.int64), w, h)
 
 
 @dataclass
@@ -176,44 +190,70 @@ def newell_plane(points):
     return np.array([a, b, c, -(a * centroid[0] + b * centroid[1] + c * centroid[2])])
 
 
-def signed_area(points):
-    """Signed area of the (K, 2+) polygon's projection on (x, y): > 0 counterclockwise."""
-    x, y = points[:, 0], points[:, 1]
-    return 0.5 * float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y))
+def _following(offsets):
+    """For each vertex of the flat polygons ``offsets``, the index of the next vertex
+    of its polygon (the last wraps to the first)."""
+    nxt = np.arange(1, offsets[-1] + 1)
+    nxt[offsets[1:] - 1] = offsets[:-1]
+    return nxt
 
 
-def is_convex(points):
-    """Whether the (K, 2+) polygon's (x, y) projection is convex (collinear vertices
-    allowed)."""
-    p = points[:, :2]
-    e = np.roll(p, -1, axis=0) - p
-    cross = e[:, 0] * np.roll(e[:, 1], -1) - e[:, 1] * np.roll(e[:, 0], -1)
-    scale = float(np.abs(e).max()) ** 2 if len(e) else 0.0
-    tol = 1e-12 * scale
-    return bool((cross >= -tol).all() or (cross <= tol).all())
+def newell_planes(verts, offsets):
+    """Newell's planes (P, 4) of the flat polygons ``verts[offsets[p]:offsets[p + 1]]``
+    (:func:`newell_plane` for all at once)."""
+    p, q = verts, verts[_following(offsets)]
+    starts = offsets[:-1]
+    n = np.add.reduceat(np.stack([(p[:, 1] - q[:, 1]) * (p[:, 2] + q[:, 2]),
+                                  (p[:, 2] - q[:, 2]) * (p[:, 0] + q[:, 0]),
+                                  (p[:, 0] - q[:, 0]) * (p[:, 1] + q[:, 1])], axis=1),
+                        starts, axis=0)
+    centroid = np.add.reduceat(p, starts, axis=0) / np.diff(offsets)[:, None]
+    return np.concatenate([n, -np.einsum("ij,ij->i", n, centroid)[:, None]], axis=1)
 
 
-def _assemble(parts, faces, width, height):
-    keep, planes = [], []
-    for i, a in enumerate(parts):
-        area = signed_area(a)
-        if abs(area) <= MIN_AREA:
-            continue
-        if not is_convex(a):
-            raise ArgumentValueError(
-                f"polygon {i} (face {int(faces[i])}) is not convex as projected: "
-                f"{v._show(a.tolist())}; split it into convex parts (or triangles) first")
-        plane = newell_plane(a)
-        if plane[2] < 0:
-            plane = -plane
-        keep.append(i)
-        planes.append(plane)
-    verts = np.concatenate([parts[i] for i in keep]) if keep else np.empty((0, 3))
-    counts = np.array([len(parts[i]) for i in keep], np.int64)
-    offsets = np.concatenate([[0], np.cumsum(counts)]).astype(np.int64)
-    return ScreenPolygons(np.ascontiguousarray(verts, np.float64), offsets,
-                          np.ascontiguousarray(faces[keep], np.int64),
-                          np.array(planes, np.float64).reshape(-1, 4), width, height)
+def signed_areas(verts, offsets):
+    """Signed (x, y) areas of the flat polygons (> 0 counterclockwise)."""
+    q = verts[_following(offsets)]
+    return 0.5 * np.add.reduceat(verts[:, 0] * q[:, 1] - q[:, 0] * verts[:, 1], offsets[:-1])
+
+
+def convex(verts, offsets):
+    """Whether each flat polygon's (x, y) projection is convex (collinear vertices
+    allowed): the turn of every pair of consecutive edges has
+    one sign, within a tolerance relative to the longest edge."""
+    nxt = _following(offsets)
+    e = verts[nxt, :2] - verts[:, :2]
+    f = e[nxt]
+    cross = e[:, 0] * f[:, 1] - e[:, 1] * f[:, 0]
+    tol = 1e-12 * np.maximum.reduceat(np.abs(e).max(axis=1), offsets[:-1]) ** 2
+    starts = offsets[:-1]
+    return ((np.minimum.reduceat(cross, starts) >= -tol)
+            | (np.maximum.reduceat(cross, starts) <= tol))
+
+
+def _assemble(verts, counts, faces, width, height, front_only=False):
+    """Screen polygons from flat device polygons: those without area (and with
+    ``front_only`` the clockwise ones) dropped, each checked convex, its plane oriented
+    with C > 0."""
+    offsets = np.zeros(len(counts) + 1, np.int64)
+    np.cumsum(counts, out=offsets[1:])
+    if not len(counts):
+        return ScreenPolygons(np.empty((0, 3)), offsets, np.empty(0, np.int64),
+                              np.empty((0, 4)), width, height)
+    area = signed_areas(verts, offsets)
+    keep = (area > MIN_AREA) if front_only else (np.abs(area) > MIN_AREA)
+    bad = keep & ~convex(verts, offsets)
+    if bad.any():
+        i = int(np.flatnonzero(bad)[0])
+        raise ArgumentValueError(
+            f"polygon {i} (face {int(faces[i])}) is not convex as projected: "
+            f"{v._show(verts[offsets[i]:offsets[i + 1]].tolist())}; split it into convex "
+            "parts (or triangles) first")
+    planes = newell_planes(verts, offsets)
+    planes[planes[:, 2] < 0] *= -1.0
+    sp = ScreenPolygons(np.ascontiguousarray(verts, np.float64), offsets,
+                        np.ascontiguousarray(faces, np.int64), planes, width, height)
+    return sp if keep.all() else sp.subset(np.flatnonzero(keep))
 
 
 def meshes_list(meshes):
@@ -294,16 +334,9 @@ def project(vertices, counts, faces, camera, width, height, cull_back_faces=Fals
     out, out_counts = polygons3d(np.ascontiguousarray(hom), UNIT_CUBE, counts=counts,
                                  homogeneous=True)
     dev = out[:, :3] / out[:, 3:4] * scale + offset
-    parts, kept = [], []
-    start = 0
-    for i, n in enumerate(out_counts.tolist()):
-        if n >= 3:
-            piece = dev[start:start + n]
-            if not cull_back_faces or signed_area(piece) > 0:
-                parts.append(piece)
-                kept.append(faces[i])
-        start += n
-    return _assemble(parts, np.array(kept, np.int64), w, h)
+    whole = out_counts >= 3
+    return _assemble(dev[np.repeat(whole, out_counts)], out_counts[whole], faces[whole], w, h,
+                     cull_back_faces)
 
 
 def screen_polygons(meshes, camera, width, height, cull_back_faces=False):

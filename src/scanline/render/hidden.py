@@ -57,8 +57,7 @@ def _bsp_pieces(scene, options):
 def _object_order(name, order):
     def render(scene, fb, options):
         pieces = order(scene, options)
-        parts = [pieces.polygon(p) for p in range(len(pieces))]
-        faces = draw_pieces(scene, fb, parts, pieces.face, options)
+        faces = draw_pieces(scene, fb, pieces, pieces.face, options)
         return Rendering(name, _depth_of(scene, faces), faces, scene)
     render.__doc__ = f"Draw ``scene`` into ``fb`` by the {name} method (object order)."
     return render

@@ -228,6 +228,9 @@ CALLS = {
     "visible depth sort": ("visible", "sl.visible.render(fb, [sl.mesh.cube(), sl.mesh.sphere(0.6, "
                                       "(0.8, 0.5, 0.8))], sl.Camera(eye=(3, 2, 4), "
                                       "target=(0, 0, 0)), method='depth-sort')", RGB),
+    "visible bsp": ("visible", "sl.visible.render(fb, [sl.mesh.cube(), sl.mesh.sphere(0.6, "
+                               "(0.8, 0.5, 0.8))], sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)), "
+                               "method='bsp')", RGB),
     "visible area subdivision": ("visible", "sl.visible.render(fb, [sl.mesh.cube(), "
                                             "sl.mesh.sphere(0.6, (0.8, 0.5, 0.8))], "
                                             "sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)), "

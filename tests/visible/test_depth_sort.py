@@ -156,12 +156,41 @@ def test_bsp_million_coplanar_polygons_bounded():
     assert len(tree.order((0, 0, 5))) == n
 
 
-def test_bsp_piece_limit():
+def crossed_sticks(count=6):
+    """Boxes crossing each other at 30-degree steps: many splits."""
     sticks = []
-    for k in range(6):                       # boxes crossing each other: many splits
+    for k in range(count):
         a = np.radians(30 * k)
         c, s = np.cos(a), np.sin(a)
         sticks.append(sl.mesh.box((-2, -0.1, -0.1), (2, 0.1, 0.1)).transformed(
             np.array([[c, -s, 0, 0], [s, c, 0, 0], [0, 0, 1, 0.05 * k], [0, 0, 0, 1]])))
+    return sticks
+
+
+@pytest.mark.parametrize("compile_mode", ["never", "always"])
+def test_bsp_tree_of_crossed_sticks_grows_its_arrays_and_orders_every_piece(compile_mode,
+                                                                           monkeypatch):
+    # more pieces than the build's first arrays hold: the kernel stops for room and
+    # resumes; every piece is listed once from any eye, the far side of the root first
+    from scanline._kernels import _jit
+
+    monkeypatch.setattr(_jit, "COMPILE", compile_mode)
+    tree = sl.visible.BSPTree(crossed_sticks())
+    faces = 6 * 6
+    assert tree.splits > 0 and len(tree._pieces) > 2 * faces + 16
+    for eye in [(0, 0, 9), (5, -3, 1), (0, 0, 1, 0)]:
+        order = tree.order(eye)
+        live = sum(len(p) for p in tree.pieces)
+        assert sorted(order.tolist()) == sorted(np.concatenate(tree.pieces).tolist())
+        assert len(order) == live
+        root = tree.pieces[0]
+        e = np.append(eye, 1.0) if len(eye) == 3 else np.array(eye, float)
+        far = tree.back[0] if tree.planes[0] @ e >= 0 else tree.front[0]
+        if far >= 0:                           # the far subtree is drawn before the root
+            assert order.tolist().index(int(root[0])) > order.tolist().index(
+                int(tree.pieces[far][0]))
+
+
+def test_bsp_piece_limit():
     with pytest.raises(BSPTooLargeError, match="max_pieces"):
-        sl.visible.BSPTree(sticks, max_pieces=40)
+        sl.visible.BSPTree(crossed_sticks(), max_pieces=40)

@@ -9,68 +9,13 @@ are painted at image precision.
 import numpy as np
 
 from .. import _validate as v
+from .._kernels import bsp as k
+from .._kernels._jit import call
 from ..errors import ArgumentTypeError, BSPTooLargeError
-from .polygons import meshes_list, newell_plane, project, world_polygons
+from .polygons import meshes_list, project, world_polygons
 
 #: Relative tolerance of "on the plane" (times the scene's size).
 TOLERANCE = 1e-9
-
-
-class _Store:
-    """Polygon pieces in flat arrays with room to grow (splits append)."""
-
-    def __init__(self, verts, counts):
-        n = len(counts)
-        self.verts = np.empty((max(2 * len(verts), 16), 3))
-        self.verts[:len(verts)] = verts
-        self.nv = len(verts)
-        self.start = np.empty(max(2 * n, 16), np.int64)
-        self.count = np.empty(max(2 * n, 16), np.int64)
-        self.start[:n] = np.concatenate([[0], np.cumsum(counts)[:-1]]) if n else []
-        self.count[:n] = counts
-        self.n = n
-
-    def piece(self, p):
-        s = self.start[p]
-        return self.verts[s:s + self.count[p]]
-
-    def add(self, pts):
-        while self.nv + len(pts) > len(self.verts):
-            self.verts = np.concatenate([self.verts, np.empty_like(self.verts)])
-        if self.n == len(self.start):
-            self.start = np.concatenate([self.start, np.empty_like(self.start)])
-            self.count = np.concatenate([self.count, np.empty_like(self.count)])
-        self.verts[self.nv:self.nv + len(pts)] = pts
-        self.start[self.n] = self.nv
-        self.count[self.n] = len(pts)
-        self.nv += len(pts)
-        self.n += 1
-        return self.n - 1
-
-    def vertex_index(self, ids):
-        """Flat vertex indices of pieces ``ids`` and the start of each in them."""
-        counts = self.count[ids]
-        first = np.concatenate([[0], np.cumsum(counts)[:-1]])
-        idx = np.repeat(self.start[ids] - first, counts) + np.arange(int(counts.sum()))
-        return idx, first
-
-
-def _split(pts, d, eps):
-    """The parts of convex polygon ``pts`` in front of (d < 0... > 0: see
-    :class:`BSPTree`) and behind a plane, by their vertex distances ``d``."""
-    front, back = [], []
-    k = len(pts)
-    for i in range(k):
-        j = (i + 1) % k
-        if d[i] >= -eps:
-            front.append(pts[i])
-        if d[i] <= eps:
-            back.append(pts[i])
-        if (d[i] > eps and d[j] < -eps) or (d[i] < -eps and d[j] > eps):
-            cut = pts[i] + (pts[j] - pts[i]) * (d[i] / (d[i] - d[j]))
-            front.append(cut)
-            back.append(cut)
-    return np.array(front), np.array(back)
 
 
 class BSPTree:
@@ -103,8 +48,11 @@ class BSPTree:
     the signs of their vertices' distances into *front*, *back* and *coplanar*, and
     those that straddle the plane are split into a front and a back piece.  The two
     sets are partitioned in turn, with an explicit stack (no recursion limit), until
-    every set is empty.  Coplanar polygons stay in their node's list, so a million
-    polygons in one plane make one node, built in one vectorized pass.
+    every set is empty (one compiled kernel, :mod:`scanline._kernels.bsp`).  Coplanar
+    polygons stay in their node's list, so a million polygons in one plane make one
+    node.  Choosing the first polygon, as the book does, makes a chain of the faces
+    of a convex object (each lies behind every other's plane): the build then costs
+    the square of their number.
 
     The tree does not depend on the eye: :meth:`order` traverses it back to front
     from any viewpoint -- at each node, the subtree on the side away from the eye,
@@ -123,61 +71,63 @@ class BSPTree:
         n = len(counts)
         self.limit = 8 * n + 10_000 if max_pieces is None else v.positive_int(
             "max_pieces", max_pieces)
-        self._store = _Store(verts, counts)
-        self._face = list(faces.tolist())
         size = float(np.ptp(verts, axis=0).max()) if len(verts) else 1.0
         self.eps = TOLERANCE * max(size, 1e-300)
-        planes, front, back, members = [], [], [], []
-        self.splits = 0
-        stack = [(np.arange(n, dtype=np.int64), -1, 0)] if n else []
-        while stack:
-            ids, parent, which = stack.pop()
-            node = len(planes)
-            if parent >= 0:
-                (front if which > 0 else back)[parent] = node
-            plane = newell_plane(self._store.piece(ids[0]))
-            plane = plane / np.linalg.norm(plane[:3])
-            idx, first = self._store.vertex_index(ids)
-            d = self._store.verts[idx] @ plane[:3] + plane[3]
-            lo = np.minimum.reduceat(d, first)
-            hi = np.maximum.reduceat(d, first)
-            on = (lo >= -self.eps) & (hi <= self.eps)
-            on[0] = True
-            ahead = ~on & (lo >= -self.eps)
-            behind = ~on & (hi <= self.eps)
-            span = ~(on | ahead | behind)
-            f_ids, b_ids = [ids[ahead]], [ids[behind]]
-            for k in np.flatnonzero(span).tolist():
-                p = int(ids[k])
-                parts = _split(self._store.piece(p), d[first[k]:first[k] + self._store.count[p]],
-                               self.eps)
-                if self._store.n + 2 > self.limit:
-                    raise BSPTooLargeError(
-                        f"the BSP tree of {n} polygons needs more than max_pieces="
-                        f"{self.limit} pieces; raise max_pieces or give fewer polygons")
-                self.splits += 1
-                for part, dest in zip(parts, (f_ids, b_ids)):
-                    if len(part) >= 3:
-                        dest.append(np.array([self._store.add(part)], np.int64))
-                        self._face.append(self._face[p])
-            planes.append(plane)
-            front.append(-1)
-            back.append(-1)
-            members.append(ids[on])
-            for which_, group in ((1, f_ids), (-1, b_ids)):
-                sub = np.concatenate(group)
-                if len(sub):
-                    stack.append((sub, node, which_))
-        self.planes = np.array(planes).reshape(-1, 4)
-        self.front = np.array(front, np.int64)
-        self.back = np.array(back, np.int64)
-        self.pieces = members
+        store = np.empty((2 * len(verts) + 64, 3))
+        store[:len(verts)] = verts
+        pc = np.empty((2 * n + 16, 3), np.int64)
+        pc[:n, 0] = np.cumsum(counts) - counts
+        pc[:n, 1] = counts
+        pc[:n, 2] = faces
+        stack = np.empty((64, 4), np.int64)
+        stack[0] = (0, n, -1, 1)
+        pool = np.empty(2 * n + 16, np.int64)
+        pool[:n] = np.arange(n)
+        scratch = np.empty(3 * n + 16, np.int64)
+        planes = np.empty((n + 16, 4))
+        nodes = np.empty((n + 16, 4), np.int64)
+        members = np.empty(n + 16, np.int64)
+        st = np.zeros(k.STATE, np.int64)
+        st[[k.VERTS, k.PIECES, k.STACK]] = len(verts), n, 1 if n else 0
+        while True:
+            status = call(k.build, lambda: 4 * float(counts.sum()) * max(np.log2(n + 1), 1.0),
+                          store, pc, stack, pool, scratch, planes, nodes, members, st, self.eps,
+                          self.limit)
+            if status != k.NEED_ROOM:
+                break
+            which = int(st[k.WHICH])
+            if which == k.ROOM_VERTS:
+                store = _doubled(store)
+            elif which == k.ROOM_PIECES:
+                pc = _doubled(pc)
+            elif which == k.ROOM_STACK:
+                stack = _doubled(stack)
+            elif which == k.ROOM_POOL:
+                pool, scratch = _doubled(pool), _doubled(scratch)
+            elif which == k.ROOM_NODES:
+                planes, nodes = _doubled(planes), _doubled(nodes)
+            else:
+                members = _doubled(members)
+        if status == k.TOO_MANY:
+            raise BSPTooLargeError(
+                f"the BSP tree of {n} polygons needs more than max_pieces={self.limit} "
+                "pieces; raise max_pieces or give fewer polygons")
+        count = int(st[k.NODES])
+        self._verts = store[:st[k.VERTS]]
+        self._pieces = pc[:st[k.PIECES]]
+        self._members = members[:st[k.MEMBERS]]
+        self.splits = int(st[k.SPLITS])
+        self.planes = planes[:count].copy()
+        self.front = nodes[:count, 0].copy()
+        self.back = nodes[:count, 1].copy()
+        self._nodes = nodes[:count].copy()
+        self.pieces = [self._members[a:a + c] for a, c in self._nodes[:, 2:4].tolist()]
 
     def __len__(self):
         return len(self.planes)
 
     def __repr__(self):
-        return (f"<BSPTree: {len(self)} nodes, {self._store.n} pieces, "
+        return (f"<BSPTree: {len(self)} nodes, {len(self._pieces)} pieces, "
                 f"{self.splits} splits>")
 
     def order(self, eye):
@@ -192,30 +142,25 @@ class BSPTree:
                 f"eye must be a finite point (x, y, z) or (x, y, z, w), got {v._show(eye)}")
         if e[3] < 0:
             e = -e
-        out = []
-        stack = [(0, False)] if len(self) else []
-        while stack:
-            node, expanded = stack.pop()
-            if expanded:
-                out.append(self.pieces[node])
-                continue
-            side = float(self.planes[node] @ e)
-            near, far = (self.front[node], self.back[node]) if side >= 0 else \
-                (self.back[node], self.front[node])
-            # pushed in reverse: far subtree first, then the node, then the near one
-            if near >= 0:
-                stack.append((near, False))
-            stack.append((node, True))
-            if far >= 0:
-                stack.append((far, False))
-        return np.concatenate(out) if out else np.empty(0, np.int64)
+        out = np.empty(len(self._members), np.int64)
+        count = call(k.back_to_front, 4 * len(self) + len(out), self.planes, self._nodes,
+                     self._members, e, out, np.empty((2 * len(self) + 2, 2), np.int64))
+        return out[:count]
 
     def world_pieces(self, eye):
         """``(vertices, counts, faces)`` of the pieces back to front from ``eye``."""
         ids = self.order(eye)
-        idx, _ = self._store.vertex_index(ids)
-        return (self._store.verts[idx], self._store.count[ids].copy(),
-                np.array(self._face, np.int64)[ids])
+        start, counts, faces = self._pieces[ids].T
+        first = np.cumsum(counts) - counts
+        idx = np.repeat(start - first, counts) + np.arange(int(counts.sum()))
+        return self._verts[idx], counts, faces
+
+
+def _doubled(a):
+    """``a`` with twice the rows, the rows kept."""
+    out = np.empty((2 * len(a),) + a.shape[1:], a.dtype)
+    out[:len(a)] = a
+    return out
 
 
 def camera_eye(camera, width, height):

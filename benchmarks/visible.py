@@ -5,8 +5,8 @@ Workloads (fixed seed):
 
 * ``depth sort``: 10,000 random small triangles (a few pixels to tens of pixels, at
   random depths, some overlapping) on an 800 x 600 RGB canvas.  scanline:
-  ``sl.visible.depth_sort`` on the screen-space polygons and the pieces painted by
-  ``sl.draw.polygons`` (both timed); matplotlib: a ``Poly3DCollection`` of the same
+  ``sl.visible.depth_sort`` on the screen-space polygons and the pieces painted in
+  order (``scanline.visible.render.paint``; both timed); matplotlib: a ``Poly3DCollection`` of the same
   triangles in a 3-D axes drawn to an Agg canvas (``fig.canvas.draw()``), which sorts
   by one key per polygon -- it is doing less (no tests, no splitting).
 * ``methods``: a sphere, a torus and a cube (about 5,000 faces) through a perspective
@@ -87,7 +87,7 @@ def main():
 
     report.add(work, "matplotlib", "Poly3DCollection + fig.canvas.draw() (Agg)",
                matplotlib_draw(tris), repeats=2, n=n)
-    report.add(work, "scanline", "depth_sort(sp) + sl.draw.polygons in order",
+    report.add(work, "scanline", "depth_sort(sp) + the pieces painted in order",
                scanline_sort, repeats=2, n=n)
     report.target(work, "matplotlib", 5.0, ">= 5x faster than matplotlib's one-key sort")
 

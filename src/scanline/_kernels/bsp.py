@@ -17,6 +17,7 @@ caller enlarges it and calls again.
 import numpy as np
 
 from ._jit import helper, kernel
+from .planecut import plane_part
 
 # -- the state array ``st`` ---------------------------------------------------------------
 VERTS = 0
@@ -87,28 +88,12 @@ def extent(verts, pc, p, plane):
 
 @helper
 def split_piece(verts, pc, st, p, plane, eps, sign):
-    """The part of piece ``p`` in front of ``plane`` (``sign`` 1.0: distance >= -eps)
-    or behind it (``sign`` -1.0: <= eps), with the cuts where an edge crosses it, appended to
-    ``verts`` as a new piece of ``p``'s face; returns the new piece, or -1 when the
-    part has fewer than three vertices."""
-    s = pc[p, 0]
-    k = pc[p, 1]
+    """The part of piece ``p`` in front of ``plane`` (``sign`` 1.0) or behind it
+    (-1.0), by :func:`~scanline._kernels.planecut.plane_part`, appended to ``verts``
+    as a new piece of ``p``'s face; returns the new piece, or -1 when the part has
+    fewer than three vertices."""
     start = st[VERTS]
-    m = 0
-    for i in range(k):
-        a = s + i
-        b = s + i + 1 if i + 1 < k else s
-        da = verts[a, 0] * plane[0] + verts[a, 1] * plane[1] + verts[a, 2] * plane[2] + plane[3]
-        db = verts[b, 0] * plane[0] + verts[b, 1] * plane[1] + verts[b, 2] * plane[2] + plane[3]
-        if da * sign >= -eps:
-            for c in range(3):
-                verts[start + m, c] = verts[a, c]
-            m += 1
-        if da > eps and db < -eps or da < -eps and db > eps:
-            u = da / (da - db)
-            for c in range(3):
-                verts[start + m, c] = verts[a, c] + (verts[b, c] - verts[a, c]) * u
-            m += 1
+    m = plane_part(verts, pc[p, 0], pc[p, 1], plane, eps, sign, start)
     if m < 3:
         return -1
     q = st[PIECES]

@@ -26,6 +26,7 @@ holds the first vertex in ``pv`` and the vertex count (0, 1), the face (2), aliv
 import numpy as np
 
 from ._jit import helper, kernel
+from .planecut import plane_part
 from .sort import sort_keys
 from .variants import token
 
@@ -237,23 +238,9 @@ def cut(pv, nv, it, p, plane, eps, min_area):
     if not (ahead and back):
         return 0, 0
     nf = np.int64(0)
-    for side in range(2):
+    for side in range(2):            # in front: distance <= eps; behind: >= -eps
         start = nv + nf
-        m = np.int64(0)
-        for i in range(k):
-            a = a0 + i
-            b = a0 + i + 1 if i + 1 < k else a0
-            da = pv[a, 0] * plane[0] + pv[a, 1] * plane[1] + pv[a, 2] * plane[2] + plane[3]
-            db = pv[b, 0] * plane[0] + pv[b, 1] * plane[1] + pv[b, 2] * plane[2] + plane[3]
-            if side == 0 and da <= eps or side == 1 and da >= -eps:
-                for c in range(3):
-                    pv[start + m, c] = pv[a, c]
-                m += 1
-            if da < -eps and db > eps or da > eps and db < -eps:
-                u = da / (da - db)
-                for c in range(3):
-                    pv[start + m, c] = pv[a, c] + (pv[b, c] - pv[a, c]) * u
-                m += 1
+        m = plane_part(pv, a0, k, plane, eps, -1.0 if side == 0 else 1.0, start)
         area = 0.0
         for i in range(m):
             j = start + i + 1 if i + 1 < m else start

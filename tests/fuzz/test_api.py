@@ -11,6 +11,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 import scanline as sl
+from scanline.visible.render import paint
 from tests.fuzz.harness import arrays, bounded, guard_intact, guarded, index_arrays, values
 
 pytestmark = pytest.mark.boundscheck
@@ -180,4 +181,33 @@ def test_three_d(segs, verts, faces, edges, counts, mode):
         sl.draw3d.project_edges(verts, np.asarray(edges).reshape(-1, 2) if np.asarray(edges).size % 2 == 0 else edges, cam, 16, 12)
     with bounded():
         sl.draw3d.wireframe(fb, sl.mesh.Mesh(verts, faces), cam)
+    assert guard_intact(big)
+
+
+@given(verts=arrays(3, max_rows=15), mode=MODES,
+       method=st.sampled_from(["painter", "depth-sort", "scan-line", "area-subdivision"]))
+def test_visible_surface_methods(verts, mode, method):
+    # hostile device triangles (every one planar and convex, so most pass validation
+    # with their extreme values): sorted, split, painted into a guarded frame buffer
+    fb, big = frame(mode, 16, 12)
+    with bounded():
+        tris = [verts[i:i + 3] for i in range(0, len(verts) - 2, 3)] if np.ndim(verts) == 2 \
+            else verts
+        sp = sl.visible.ScreenPolygons.from_device(tris, 16, 12)
+        result = {"painter": sl.visible.painter, "depth-sort": sl.visible.depth_sort,
+                  "scan-line": sl.visible.scan_line,
+                  "area-subdivision": sl.visible.area_subdivision}[method](sp)
+        values = np.full((max(len(tris), 1), len(fb.pixel("white"))), 255, np.uint8)
+        paint(fb, result, values)
+    assert guard_intact(big)
+
+
+@given(verts=arrays(3, max_rows=9, flavour=False), mode=MODES)
+def test_bsp_trees(verts, mode):
+    fb, big = frame(mode, 16, 12)
+    n = len(verts) // 3
+    cam = sl.Camera(eye=(3, 2, 4), target=(0, 0, 0))
+    with bounded():
+        mesh = sl.mesh.Mesh(verts[:3 * n], np.arange(3 * n).reshape(n, 3))
+        sl.visible.render(fb, mesh, cam, method="bsp")
     assert guard_intact(big)

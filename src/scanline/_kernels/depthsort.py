@@ -123,14 +123,16 @@ def heap_pop(heap, n):
 @helper
 def cell_range(fl, p, grid):
     """The grid cells (i0, i1, j0, j1) that piece ``p``'s bounding box meets, clipped
-    to the grid; ``grid`` is (x0, y0, cell, nx, ny)."""
-    nx = int(grid[3])
-    ny = int(grid[4])
-    i0 = int(min(max((fl[p, 0] - grid[0]) // grid[2], 0.0), nx - 1.0))
-    i1 = int(min(max((fl[p, 1] - grid[0]) // grid[2], 0.0), nx - 1.0))
-    j0 = int(min(max((fl[p, 2] - grid[1]) // grid[2], 0.0), ny - 1.0))
-    j1 = int(min(max((fl[p, 3] - grid[1]) // grid[2], 0.0), ny - 1.0))
-    return i0, i1, j0, j1
+    to the grid (a NaN or infinite extent to its first or last cell); ``grid`` is
+    (x0, y0, cell, nx, ny)."""
+    last_i = grid[3] - 1.0
+    last_j = grid[4] - 1.0
+    a = (fl[p, 0] - grid[0]) // grid[2]
+    b = (fl[p, 1] - grid[0]) // grid[2]
+    c = (fl[p, 2] - grid[1]) // grid[2]
+    d = (fl[p, 3] - grid[1]) // grid[2]
+    return (int(min(a, last_i) if a >= 0.0 else 0.0), int(min(b, last_i) if b >= 0.0 else 0.0),
+            int(min(c, last_j) if c >= 0.0 else 0.0), int(min(d, last_j) if d >= 0.0 else 0.0))
 
 
 @helper

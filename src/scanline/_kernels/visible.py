@@ -66,14 +66,19 @@ def paint_convex(buf, layout, width, height, verts, offsets, colors):
     for p in range(offsets.shape[0] - 1):
         start = offsets[p]
         end = offsets[p + 1]
-        lo = verts[start, 1]
-        hi = verts[start, 1]
-        for i in range(start + 1, end):
+        lo = np.inf
+        hi = -np.inf
+        finite = True
+        for i in range(start, end):
+            finite = finite and abs(verts[i, 0]) < np.inf and abs(verts[i, 1]) < np.inf
             lo = min(lo, verts[i, 1])
             hi = max(hi, verts[i, 1])
-        # rows clipped to the raster in floats first (any finite coordinate converts)
-        r0 = int(min(max(math.floor(lo) + 1.0, 0.0), float(height)))
-        r1 = int(max(min(math.floor(hi), height - 1.0), -1.0))
+        if not finite or end - start < 3:
+            continue
+        # rows clipped to the raster in floats first (np.floor: math.floor would
+        # convert a huge coordinate to an integer that does not exist)
+        r0 = int(min(max(np.floor(lo) + 1.0, 0.0), float(height)))
+        r1 = int(max(min(np.floor(hi), height - 1.0), -1.0))
         for r in range(r0, r1 + 1):
             xl[r] = np.inf
             xr[r] = -np.inf
@@ -89,17 +94,18 @@ def paint_convex(buf, layout, width, height, verts, offsets, colors):
             dx = verts[b, 0] - xlo
             dy = yhi - ylo
             # the rows ylo < r <= yhi within r0..r1
-            first = int(min(max(math.floor(ylo) + 1.0, float(r0)), float(height)))
-            last = int(max(min(math.floor(yhi), float(r1)), -1.0))
+            first = int(min(max(np.floor(ylo) + 1.0, float(r0)), float(height)))
+            last = int(max(min(np.floor(yhi), float(r1)), -1.0))
             for r in range(first, last + 1):
                 xc = xlo + ((r - ylo) * dx) / dy
-                xl[r] = min(xl[r], xc)
-                xr[r] = max(xr[r], xc)
+                if xc == xc:             # not NaN (inf - inf over a huge edge)
+                    xl[r] = min(xl[r], xc)
+                    xr[r] = max(xr[r], xc)
         color = colors[p]
         for r in range(r0, r1 + 1):
             if xl[r] < xr[r]:
-                x0 = min(max(math.ceil(xl[r]), 0.0), float(width))
-                x1 = max(min(math.ceil(xr[r]), float(width)), 0.0) - 1.0
+                x0 = min(max(np.ceil(xl[r]), 0.0), float(width))
+                x1 = max(min(np.ceil(xr[r]), float(width)), 0.0) - 1.0
                 span(buf, layout, width, height, r, int(x0), int(x1), color)
 
 

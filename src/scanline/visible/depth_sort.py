@@ -28,15 +28,18 @@ GRID = 1000
 
 def _grid(ext):
     """The grid of the candidate search: (x0, y0, cell, nx, ny), cells of twice the
-    median piece size (at most :data:`GRID` a side), and each piece's cell count."""
-    size = np.maximum(ext[:, 1] - ext[:, 0], ext[:, 3] - ext[:, 2])
-    x0, y0 = float(ext[:, 0].min()), float(ext[:, 2].min())
-    span = max(float(ext[:, 1].max()) - x0, float(ext[:, 3].max()) - y0)
-    cell = max(float(np.median(size)) * 2.0, span / GRID, 1e-6)
-    nx = int((float(ext[:, 1].max()) - x0) // cell) + 1
-    ny = int((float(ext[:, 3].max()) - y0) // cell) + 1
-    i = np.clip((ext[:, 0:2] - x0) // cell, 0, nx - 1)
-    j = np.clip((ext[:, 2:4] - y0) // cell, 0, ny - 1)
+    median piece size (at most :data:`GRID` a side; one cell when the extents are too
+    large to subtract), and each piece's cell count."""
+    with np.errstate(all="ignore"):
+        size = np.maximum(ext[:, 1] - ext[:, 0], ext[:, 3] - ext[:, 2])
+        x0, y0 = float(ext[:, 0].min()), float(ext[:, 2].min())
+        wide, high = float(ext[:, 1].max()) - x0, float(ext[:, 3].max()) - y0
+        cell = max(float(np.median(size)) * 2.0, max(wide, high) / GRID, 1e-6)
+        if not np.isfinite(cell):
+            return np.array([x0, y0, np.inf, 1.0, 1.0]), np.ones(len(ext), np.int64)
+        nx, ny = int(wide // cell) + 1, int(high // cell) + 1
+        i = np.clip((ext[:, 0:2] - x0) // cell, 0, nx - 1)
+        j = np.clip((ext[:, 2:4] - y0) // cell, 0, ny - 1)
     cells = (i[:, 1] - i[:, 0] + 1) * (j[:, 1] - j[:, 0] + 1)
     return np.array([x0, y0, cell, nx, ny], np.float64), cells.astype(np.int64)
 

@@ -138,14 +138,8 @@ class ScreenPolygons:
                 f"polygons[{i}] has a non-finite coordinate (NaN or inf): "
                 f"{v._show(arrays[i].tolist())}; every vertex must be finite")
         if len(counts):
-            plane = newell_planes(verts, offsets)
-            norm = np.linalg.norm(plane[:, :3], axis=1)
-            owner = np.repeat(np.arange(len(counts)), counts)
-            dist = np.abs(np.einsum("ij,ij->i", verts, plane[owner, :3]) + plane[owner, 3])
-            size = (np.maximum.reduceat(verts, offsets[:-1], axis=0)
-                    - np.minimum.reduceat(verts, offsets[:-1], axis=0)).max(axis=1)
-            bent = (norm > 0) & (np.maximum.reduceat(dist, offsets[:-1])
-                                 > 1e-9 * norm * (size + 1.0))
+            with np.errstate(over="ignore", invalid="ignore"):   # huge but finite
+                bent = _bent(verts, offsets, counts)
             if bent.any():
                 i = int(np.flatnonzero(bent)[0])
                 raise ArgumentValueError(
@@ -188,6 +182,17 @@ def newell_plane(points):
     c = np.sum((x - xn) * (y + yn))
     centroid = points.mean(axis=0)
     return np.array([a, b, c, -(a * centroid[0] + b * centroid[1] + c * centroid[2])])
+
+
+def _bent(verts, offsets, counts):
+    """Whether each flat polygon leaves its Newell plane by more than 1e-9 of its size."""
+    plane = newell_planes(verts, offsets)
+    norm = np.linalg.norm(plane[:, :3], axis=1)
+    owner = np.repeat(np.arange(len(counts)), counts)
+    dist = np.abs(np.einsum("ij,ij->i", verts, plane[owner, :3]) + plane[owner, 3])
+    size = (np.maximum.reduceat(verts, offsets[:-1], axis=0)
+            - np.minimum.reduceat(verts, offsets[:-1], axis=0)).max(axis=1)
+    return (norm > 0) & (np.maximum.reduceat(dist, offsets[:-1]) > 1e-9 * norm * (size + 1.0))
 
 
 def _following(offsets):
@@ -240,16 +245,17 @@ def _assemble(verts, counts, faces, width, height, front_only=False):
     if not len(counts):
         return ScreenPolygons(np.empty((0, 3)), offsets, np.empty(0, np.int64),
                               np.empty((0, 4)), width, height)
-    area = signed_areas(verts, offsets)
-    keep = (area > MIN_AREA) if front_only else (np.abs(area) > MIN_AREA)
-    bad = keep & ~convex(verts, offsets)
+    with np.errstate(over="ignore", invalid="ignore"):   # huge but finite coordinates
+        area = signed_areas(verts, offsets)
+        keep = (area > MIN_AREA) if front_only else (np.abs(area) > MIN_AREA)
+        bad = keep & ~convex(verts, offsets)
+        planes = newell_planes(verts, offsets)
     if bad.any():
         i = int(np.flatnonzero(bad)[0])
         raise ArgumentValueError(
             f"polygon {i} (face {int(faces[i])}) is not convex as projected: "
             f"{v._show(verts[offsets[i]:offsets[i + 1]].tolist())}; split it into convex "
             "parts (or triangles) first")
-    planes = newell_planes(verts, offsets)
     planes[planes[:, 2] < 0] *= -1.0
     sp = ScreenPolygons(np.ascontiguousarray(verts, np.float64), offsets,
                         np.ascontiguousarray(faces, np.int64), planes, width, height)
@@ -333,7 +339,8 @@ def project(vertices, counts, faces, camera, width, height, cull_back_faces=Fals
     hom = np.hstack([vertices, np.ones((len(vertices), 1))]) @ clip.T
     out, out_counts = polygons3d(np.ascontiguousarray(hom), UNIT_CUBE, counts=counts,
                                  homogeneous=True)
-    dev = out[:, :3] / out[:, 3:4] * scale + offset
+    with np.errstate(over="ignore", invalid="ignore"):   # huge but finite coordinates
+        dev = out[:, :3] / out[:, 3:4] * scale + offset
     whole = out_counts >= 3
     return _assemble(dev[np.repeat(whole, out_counts)], out_counts[whole], faces[whole], w, h,
                      cull_back_faces)

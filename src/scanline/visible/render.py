@@ -6,7 +6,7 @@ import numpy as np
 from .. import _validate as v
 from .._kernels._jit import call
 from .._kernels.variants import layout
-from ..draw._common import area_work, target
+from ..draw._common import target
 from ..errors import ArgumentValueError
 from .bsp import BSPTree, bsp
 from .depth_sort import depth_sort
@@ -80,7 +80,9 @@ def paint(fb, result, values):
             buf, packed = fb._raster()
             verts = np.ascontiguousarray(result.vertices, np.float64)
             colors = np.ascontiguousarray(values[result.face], np.uint8)
-            call(paint_convex, area_work(fb.width, fb.height, verts) + 10 * len(verts), buf, layout(packed), fb.width, fb.height, verts, result.offsets, colors)
+            # work: a frame's worth of pixels and ten units a vertex (the pieces' own
+            # areas would cost more to add up than small scenes take to paint)
+            call(paint_convex, fb.width * fb.height + 10 * len(verts), buf, layout(packed), fb.width, fb.height, verts, result.offsets, colors)
         return
     face = result.face
     buf, packed = fb._raster()

@@ -177,7 +177,7 @@ def test_bsp_tree_of_crossed_sticks_grows_its_arrays_and_orders_every_piece(comp
     monkeypatch.setattr(_jit, "COMPILE", compile_mode)
     tree = sl.visible.BSPTree(crossed_sticks())
     faces = 6 * 6
-    assert tree.splits > 0 and len(tree._pieces) > 2 * faces + 16
+    assert tree.splits > 0 and len(tree._pieces) > 2 * faces + 64
     for eye in [(0, 0, 9), (5, -3, 1), (0, 0, 1, 0)]:
         order = tree.order(eye)
         live = sum(len(p) for p in tree.pieces)

@@ -116,22 +116,36 @@ def build(verts, pc, stack, pool, scratch, planes, nodes, members, st, eps, limi
         e = st[STACK] - 1
         a = stack[e, 0]
         m = stack[e, 1]
-        k = 0
-        for i in range(a, a + m):
-            k += pc[pool[i], 1]
-        short = -1                   # room for the worst case of this set
-        if st[VERTS] + 4 * k > verts.shape[0]:
-            short = ROOM_VERTS
-        elif st[PIECES] + 2 * m > pc.shape[0]:
-            short = ROOM_PIECES
-        elif e + 2 > stack.shape[0]:
-            short = ROOM_STACK
-        elif a + 2 * m > pool.shape[0] or 3 * m > scratch.shape[0]:
+        short = -1                   # room for this set (known once it is classified)
+        if 4 * m > scratch.shape[0]:
             short = ROOM_POOL
-        elif st[NODES] + 1 > planes.shape[0]:
-            short = ROOM_NODES
-        elif st[MEMBERS] + m > members.shape[0]:
-            short = ROOM_MEMBERS
+        else:
+            # classify the set by the plane of its first piece: 0 in the plane (the
+            # first always), 1 wholly in front, 2 wholly behind, 3 across (split)
+            face_plane(verts, pc, pool[a], plane)
+            across = 0
+            cut_verts = 0
+            for i in range(m):
+                p = pool[a + i]
+                lo, hi = extent(verts, pc, p, plane)
+                code = 0 if i == 0 or lo >= -eps and hi <= eps else (
+                    1 if lo >= -eps else (2 if hi <= eps else 3))
+                scratch[3 * m + i] = code
+                if code == 3:
+                    across += 1
+                    cut_verts += 4 * pc[p, 1]         # each part: <= k vertices, k cuts
+            if st[VERTS] + cut_verts > verts.shape[0]:
+                short = ROOM_VERTS
+            elif st[PIECES] + 2 * across > pc.shape[0]:
+                short = ROOM_PIECES
+            elif e + 2 > stack.shape[0]:
+                short = ROOM_STACK
+            elif a + m + across > pool.shape[0]:
+                short = ROOM_POOL
+            elif st[NODES] + 1 > planes.shape[0]:
+                short = ROOM_NODES
+            elif st[MEMBERS] + m > members.shape[0]:
+                short = ROOM_MEMBERS
         if short >= 0:
             st[STATUS] = NEED_ROOM
             st[WHICH] = short
@@ -147,31 +161,29 @@ def build(verts, pc, stack, pool, scratch, planes, nodes, members, st, eps, limi
             nodes[parent, 1 - side] = node
         nodes[node, 0] = -1
         nodes[node, 1] = -1
-        face_plane(verts, pc, scratch[0], plane)
         for c in range(4):
             planes[node, c] = plane[c]
         nodes[node, 2] = st[MEMBERS]
-        # first pass: in the plane (the first always), wholly in front, wholly behind
+        # first pass: the pieces in the plane, wholly in front, wholly behind
         nf = 0
         nb = 0
         for i in range(m):
             p = scratch[i]
-            lo, hi = extent(verts, pc, p, plane)
-            if i == 0 or lo >= -eps and hi <= eps:
+            code = scratch[3 * m + i]
+            if code == 0:
                 members[st[MEMBERS]] = p
                 st[MEMBERS] += 1
-            elif lo >= -eps:
+            elif code == 1:
                 pool[a + nf] = p
                 nf += 1
-            elif hi <= eps:
+            elif code == 2:
                 scratch[m + nb] = p
                 nb += 1
         # second pass: the pieces across the plane, split, their parts after the others
-        for i in range(1, m):
-            p = scratch[i]
-            lo, hi = extent(verts, pc, p, plane)
-            if lo >= -eps or hi <= eps:
+        for i in range(m):
+            if scratch[3 * m + i] != 3:
                 continue
+            p = scratch[i]
             if st[PIECES] + 2 > limit:
                 st[STATUS] = TOO_MANY
                 return TOO_MANY

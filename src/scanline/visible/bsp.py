@@ -73,20 +73,20 @@ class BSPTree:
             "max_pieces", max_pieces)
         size = float(np.ptp(verts, axis=0).max()) if len(verts) else 1.0
         self.eps = TOLERANCE * max(size, 1e-300)
-        store = np.empty((2 * len(verts) + 64, 3))
+        store = np.empty((2 * len(verts) + 256, 3))
         store[:len(verts)] = verts
-        pc = np.empty((2 * n + 16, 3), np.int64)
+        pc = np.empty((2 * n + 64, 3), np.int64)
         pc[:n, 0] = np.cumsum(counts) - counts
         pc[:n, 1] = counts
         pc[:n, 2] = faces
-        stack = np.empty((64, 4), np.int64)
+        stack = np.empty((n + 64, 4), np.int64)
         stack[0] = (0, n, -1, 1)
-        pool = np.empty(2 * n + 16, np.int64)
+        pool = np.empty(2 * n + 64, np.int64)
         pool[:n] = np.arange(n)
-        scratch = np.empty(3 * n + 16, np.int64)
-        planes = np.empty((n + 16, 4))
-        nodes = np.empty((n + 16, 4), np.int64)
-        members = np.empty(n + 16, np.int64)
+        scratch = np.empty(4 * n + 64, np.int64)
+        planes = np.empty((2 * n + 64, 4))
+        nodes = np.empty((2 * n + 64, 4), np.int64)
+        members = np.empty(2 * n + 64, np.int64)
         st = np.zeros(k.STATE, np.int64)
         st[[k.VERTS, k.PIECES, k.STACK]] = len(verts), n, 1 if n else 0
         while True:

@@ -155,7 +155,7 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None):
     heap = np.empty((2 * cap, 2))          # sorted by rank: already a heap
     heap[:n, 0] = np.arange(n)
     heap[:n, 1] = order
-    ent = np.empty((2 * int(cells.sum()) + 64, 2), np.int64)
+    ent = np.empty((3 * int(cells.sum()) + 4 * int(cells.max()) + 256, 2), np.int64)
     out = np.empty_like(pv)
     st = np.zeros(k.STATE, np.int64)
     st[[k.PIECES, k.VERTS, k.HEAP, k.ALIVE]] = n, len(sp.vertices), n, n
@@ -168,7 +168,7 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None):
     heads = np.full(int(grid[3] * grid[4]), -1, np.int64)
     max_steps = 4 * limit + 10 * n * n + 100
     while True:
-        status = call(k.depth_sort, 40 * n + 10, pv, fl, it, heap, heads, ent, grid, order,
+        status = call(k.depth_sort, 300 * n + 10, pv, fl, it, heap, heads, ent, grid, order,
                       drawn, out, cand, keys, tkeys, titems, rows, np.empty(4), st, tolerance(sp),
                       MIN_AREA * 1e-3, limit + n, max_steps, split_cycles,
                       k.TRACE[log is not None])

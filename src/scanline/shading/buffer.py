@@ -10,6 +10,8 @@ the reference (the tests compare the two) and still serves what the kernel does 
 do: fast Phong, shadow maps, depth cueing.
 """
 
+from concurrent.futures import ThreadPoolExecutor
+
 import numpy as np
 
 from ..lighting import AmbientLight, DirectionalLight, SpotLight
@@ -104,10 +106,34 @@ def shade_buffer(scene, fb, faces, bary, options):
             colors[seen] = vertex_intensities(scene, seen, lights, shading,
                                               options["specular"], gamma)
     h, w = faces.shape
-    call(k.shade_pixels, h * w * (2 + (8 * len(sources) if shading == "phong" else 0)),
-         np.ascontiguousarray(faces, np.int64), np.ascontiguousarray(bary, np.float64),
-         world, normals, colors, np.ascontiguousarray(scene.front, np.bool_),
-         np.ascontiguousarray(scene.face_mesh, np.int64), material_rows(scene.materials),
-         ambient, np.ascontiguousarray(sources), homogeneous_eye(scene.eye), *gamma_tables(gamma),
-         fb._raster()[0], k.SHADING["phong" if shading == "phong" else "vertex"],
-         k.SPECULAR[options["specular"] if shading == "phong" else "phong"], MODE[fb.mode])
+    work = h * w * (2 + (8 * len(sources) if shading == "phong" else 0))
+    args = (np.ascontiguousarray(faces, np.int64), np.ascontiguousarray(bary, np.float64),
+            world, normals, colors, np.ascontiguousarray(scene.front, np.bool_),
+            np.ascontiguousarray(scene.face_mesh, np.int64), material_rows(scene.materials),
+            ambient, np.ascontiguousarray(sources), homogeneous_eye(scene.eye),
+            *gamma_tables(gamma), fb._raster()[0],
+            k.SHADING["phong" if shading == "phong" else "vertex"],
+            k.SPECULAR[options["specular"] if shading == "phong" else "phong"], MODE[fb.mode])
+    in_bands(k.shade_pixels, work, args)
+
+
+def in_bands(kernel, work, args):
+    """``kernel(start, step, *args)`` for start = 0 .. step - 1 on ``step`` threads,
+    one per core numba uses (the kernel releases the GIL; each call takes every
+    step-th band of rows, so the calls share the pixels without overlap); one call
+    when the work is small (:data:`scanline._kernels._jit.TWIN_WORK`: a first use
+    may then run the kernel's Python twin, which gains nothing from threads)."""
+    import numba
+
+    from .._kernels._jit import TWIN_WORK, call
+
+    step = numba.get_num_threads() if work > TWIN_WORK else 1
+    if step <= 1:
+        call(kernel, work, 0, 1, *args)
+        return
+    with ThreadPoolExecutor(step - 1) as pool:
+        others = [pool.submit(call, kernel, work / step, i, step, *args)
+                  for i in range(1, step)]
+        call(kernel, work / step, 0, step, *args)
+        for job in others:
+            job.result()

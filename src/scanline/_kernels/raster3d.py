@@ -28,21 +28,23 @@ equal at the three vertices (a parallel projection) this is plain linear
 interpolation.
 
 Parallelism.  Triangles are binned into bands of :data:`BAND` rows, each band keeps
-the triangles' input order, and the bands are rasterized in parallel
-(``prange``): a pixel is only ever written by the thread of its band, and the result
-is identical to drawing the triangles one after another.
+the triangles' input order, and the bands are shared out between calls on several
+threads (:mod:`scanline._kernels._threads`): a pixel is only ever written by the call
+of its band, and the result is identical to drawing the triangles one after another.
 """
 
 import math
 
 import numpy as np
-from numba import prange
-
-from ._jit import helper, kernel, parallel_kernel
+from ._jit import helper, kernel
 
 #: Rows per band (a power of two) and its shift.
 BAND_SHIFT = 5
 BAND = 1 << BAND_SHIFT
+
+#: The widest box (pixels) the work estimate of :func:`bin_triangles` counts: a
+#: triangle's x extent is not clipped to the raster there.
+WIDEST = 4096.0
 
 #: Output tokens (``len(out)``): write 0..255 attribute values rounded into the frame
 #: buffer's bytes; write the float attributes and the triangle's id into attribute
@@ -63,12 +65,15 @@ def bin_triangles(tri, height, rows, starts, order):
     """Bucket the triangles by band: ``order[starts[b]:starts[b + 1]]`` lists, in
     input order, the triangles whose rows meet band ``b``; ``rows[t]`` = (first
     row, last row) of triangle ``t`` clamped to the raster (first > last: none).
-    Returns the number of entries used in ``order`` (its capacity must be at least
-    the sum over triangles of the bands they meet: :func:`band_entries`)."""
+    ``order``'s capacity must be at least the sum over triangles of the bands they
+    meet (:func:`band_entries`).  Returns the summed areas of the triangles' boxes
+    (rows met times their x extent plus one, at most :data:`WIDEST` pixels): the
+    work estimate of :func:`raster_triangles`."""
     n = tri.shape[0]
     bands = starts.shape[0] - 1
     for b in range(bands + 1):
         starts[b] = 0
+    area = 0.0
     for t in range(n):
         lo = min(tri[t, 0, 1], tri[t, 1, 1], tri[t, 2, 1])
         hi = max(tri[t, 0, 1], tri[t, 1, 1], tri[t, 2, 1])
@@ -84,6 +89,9 @@ def bin_triangles(tri, height, rows, starts, order):
         if r0 <= r1:
             for b in range(r0 >> BAND_SHIFT, (r1 >> BAND_SHIFT) + 1):
                 starts[b + 1] += 1
+            wide = (max(tri[t, 0, 0], tri[t, 1, 0], tri[t, 2, 0])
+                    - min(tri[t, 0, 0], tri[t, 1, 0], tri[t, 2, 0]) + 1.0)
+            area += (r1 - r0 + 1) * min(wide, WIDEST)
     for b in range(bands):
         starts[b + 1] += starts[b]
     fill = np.empty(bands, np.int64)
@@ -94,7 +102,7 @@ def bin_triangles(tri, height, rows, starts, order):
             for b in range(rows[t, 0] >> BAND_SHIFT, (rows[t, 1] >> BAND_SHIFT) + 1):
                 order[fill[b]] = t
                 fill[b] += 1
-    return starts[bands]
+    return area
 
 
 @kernel
@@ -238,25 +246,25 @@ def raster_triangle(out, depth, tri, q, att, ids, t, r0, r1, g, zbuf, floor, buf
             z += dzdx
 
 
-@parallel_kernel
-def raster_triangles(out, depth, tri, q, att, ids, rows, starts, order, scratch, zbuf, floor,
-                     buf, abuf, idbuf):
-    """Draw the binned triangles band by band, the bands in parallel.
+@kernel
+def raster_triangles(start, step, out, depth, tri, q, att, ids, rows, starts, order, zbuf,
+                     floor, buf, abuf, idbuf):
+    """Draw the binned triangles band by band: the bands ``start``, ``start + step``
+    ... (calls with start = 0 .. step - 1 on as many threads share the raster, each
+    pixel written by its band's call only).
 
     ``tri`` (N, 3, 3) device x, y, depth per vertex; ``q`` (N, 3) 1/w per vertex;
     ``att`` (N, 3, K) attributes per vertex; ``ids`` (N,) the value each triangle
     writes into ``idbuf``; ``rows``, ``starts``, ``order`` from
-    :func:`bin_triangles`; ``scratch`` (bands, K + 2, 3).  Writes ``zbuf`` (H, W)
-    (depth token TEST; PEEL: only between ``floor`` (H, W) and ``zbuf``), and ``buf`` (H, W', K) bytes (out COLOR) or ``abuf`` (H, W,
-    K) and ``idbuf`` (H, W) (out ATTRIBUTES)."""
+    :func:`bin_triangles`.  Writes ``zbuf`` (H, W) (depth token TEST; PEEL: only
+    between ``floor`` (H, W) and ``zbuf``), and ``buf`` (H, W', K) bytes (out COLOR)
+    or ``abuf`` (H, W, K) and ``idbuf`` (H, W) (out ATTRIBUTES)."""
     height = zbuf.shape[0]
     bands = starts.shape[0] - 1
-    for b in prange(bands):
-        # int64 throughout: prange's index may come unsigned, and max(int64, uint64)
-        # is a float64 in numba (a second specialization of raster_triangle)
-        lo = np.int64(b) << BAND_SHIFT
-        hi = min(lo + BAND - 1, np.int64(height - 1))
-        g = scratch[b]
+    g = np.empty((att.shape[2] + 2, 3))
+    for b in range(start, bands, max(step, 1)):
+        lo = b << BAND_SHIFT
+        hi = min(lo + BAND - 1, height - 1)
         for e in range(starts[b], starts[b + 1]):
             t = order[e]
             r0 = max(rows[t, 0], lo)

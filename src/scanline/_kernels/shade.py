@@ -51,6 +51,12 @@ SHADING = {"vertex": token(VERTEX), "phong": token(PHONG)}
 SPECULAR = {"phong": token(SPEC_PHONG), "blinn": token(SPEC_BLINN)}
 
 
+#: The smallest highlight factor s^n_s evaluated: for s below SHINE_FLOOR^(1/n_s) the
+#: power (the costliest step of a pixel) is skipped and the term taken as 0, an error
+#: below 1e-12 of full intensity (a millionth of the smallest step between two stored
+#: values near black at gamma 2.2).
+SHINE_FLOOR = 1e-12
+
 #: Entries of the gamma table (:func:`encode`).
 GAMMA_STEPS = 4096
 
@@ -82,10 +88,11 @@ def shade_pixels(start, step, faces, bary, world, normals, colors, front, face_m
 
     ``world``, ``normals``, ``colors``: (F, 3, 3) per face vertex (VERTEX: ``colors``
     holds the vertex intensities and the other two are not read); ``front`` (F,) the
-    back-face test; ``face_mat`` (F,) the material row of each face in ``mats`` (M,
-    7); ``ambient`` (3,) the summed ambient intensity; ``sources`` (S, 16); ``eye``
-    (4,) homogeneous; ``table`` (GAMMA_STEPS,) int64 and ``thresholds`` (257,) the
-    gamma encoding (:func:`encode`).  Each row's linear intensities go to a row
+    back-face test; ``face_mat`` (F,) the material row of each face in ``mats`` (M, 8:
+    :func:`scanline.shading.buffer.material_rows`); ``ambient`` (3,) the summed
+    ambient intensity; ``sources`` (S, 16); ``eye`` (4,) homogeneous; ``table``
+    (GAMMA_STEPS,) int64 and ``thresholds`` (257,) the gamma encoding
+    (:func:`encode`).  Each row's linear intensities go to a row
     buffer first, then are encoded and stored."""
     height, width = faces.shape
     nf = colors.shape[0]
@@ -217,7 +224,7 @@ def phong_row(y, faces, bary, world, normals, colors, front, face_mat, mats, amb
                 hz = lz + vz
                 hl = math.sqrt(hx * hx + hy * hy + hz * hz)
                 sv = (nx * hx + ny * hy + nz * hz) / hl if hl > 0 else 0.0
-            shine = ks * min(sv, 1.0) ** shininess if sv > 0 else 0.0
+            shine = ks * min(sv, 1.0) ** shininess if sv > mats[m, 7] else 0.0
             diffuse = kd * nl
             ir += fl * sources[s, 13] * (diffuse * cr + shine * mats[m, 4])
             ig += fl * sources[s, 14] * (diffuse * cg + shine * mats[m, 5])

@@ -83,6 +83,7 @@ def rasterize(width, height, tri, q, att, ids, zbuf=None, buf=None, abuf=None, i
     ``zbuf`` pass."""
     from .._kernels import raster3d as k
     from .._kernels._jit import call
+    from .._kernels._threads import call_in_bands
     from .._kernels.variants import token
 
     n = len(tri)
@@ -91,9 +92,8 @@ def rasterize(width, height, tri, q, att, ids, zbuf=None, buf=None, abuf=None, i
     starts = np.empty(bands + 1, np.int64)
     entries = call(k.band_entries, 2 * n, tri, height)
     order = np.empty(entries, np.int64)
-    call(k.bin_triangles, 4 * n, tri, height, rows, starts, order)
+    area = call(k.bin_triangles, 4 * n, tri, height, rows, starts, order)
     kk = att.shape[2]
-    scratch = np.empty((bands, kk + 2, 3))
     if buf is not None:
         out = token(k.COLOR)
         abuf = np.empty((1, 1, kk))
@@ -107,16 +107,10 @@ def rasterize(width, height, tri, q, att, ids, zbuf=None, buf=None, abuf=None, i
     if zbuf is None:
         depth = token(k.NO_TEST)
         zbuf = np.empty((height, width))
-    # work: the rows of each triangle's box times its width, bounded by the raster
-    spans = (rows[:, 1] - rows[:, 0] + 1).clip(0)
-    if n:
-        xs = tri[:, :, 0]
-        wide = np.clip(xs.max(axis=1), 0, width) - np.clip(xs.min(axis=1), 0, width) + 1
-        work = 20 * n + float((spans * wide).sum()) * (1 + kk)
-    else:
-        work = 0
-    call(k.raster_triangles, work, out, depth, tri, q, att, ids, rows, starts, order,
-         scratch, zbuf, floor, buf, abuf, idbuf)
+    # work: the rows of each triangle's box times its width
+    work = 20 * n + area * (1 + kk)
+    call_in_bands(k.raster_triangles, work, out, depth, tri, q, att, ids, rows, starts, order,
+                  zbuf, floor, buf, abuf, idbuf)
 
 
 def triangles(fb, vertices, colors=None, depth=None, *, w=None):

@@ -91,8 +91,9 @@ class ScreenScene:
     materials : tuple of Material
         One per mesh.
 
-    ``world``, ``normals`` and ``vertex_normals`` are read-only: they are shared with
-    the meshes' kept arrays (:func:`mesh_arrays`).
+    ``world``, ``normals`` and ``vertex_normals`` are shared with the meshes' kept
+    arrays (:func:`mesh_arrays`): read them, do not write them.  ``vertex_colors``
+    of a mesh without colors is its material's color broadcast (not a copy).
     eye : 3-vector or ViewerAtInfinity
         The viewer for the illumination model.
     camera : Camera
@@ -283,10 +284,6 @@ def mesh_arrays(mesh):
         colors = np.repeat(tri.colors[:, None, :3] / 255.0, 3, axis=1)
     arrays = MeshArrays(world, _unit_rows(vertex[f]), normals, colors,
                         ~(np.abs(normals).sum(axis=1) > 0))
-    for a in (arrays.world, arrays.vertex_normals, arrays.normals, arrays.colors,
-              arrays.degenerate):
-        if a is not None:
-            a.flags.writeable = False
     _MESH_ARRAYS[mesh] = (tuple(a.copy() if isinstance(a, np.ndarray) else a for a in key),
                           arrays)
     return arrays
@@ -393,7 +390,7 @@ def prepare(meshes, camera, width, height, materials=None, cull_back_faces=False
         polygons=DevicePolygons(dev[whole_faces] if len(whole_faces) < nf else dev, polygons),
         polygon_face=np.concatenate([whole_faces, np.array(polygon_face, np.int64)]),
         face_mesh=owners, front=front, culled=culled, world=world, normals=normals,
-        vertex_normals=vertex_normals, vertex_colors=np.ascontiguousarray(vertex_colors),
+        vertex_normals=vertex_normals, vertex_colors=vertex_colors,
         planes=plane, materials=mats, eye=_viewer(camera), camera=camera)
 
 

@@ -24,10 +24,11 @@ from .output import Rendering, background_linear, cue, point_colors, store, writ
 
 def visibility(scene, select=None, zbuf=None):
     """The z-buffer pass over the scene's triangles (those where ``select``, a
-    boolean mask over them, holds): ``(faces, bary, depth)`` arrays (H, W)."""
+    boolean mask over them, holds): ``(faces, bary, depth)`` arrays (H, W); ``bary``
+    is set where ``faces`` >= 0 only (elsewhere undefined)."""
     h, w = scene.height, scene.width
     faces = np.full((h, w), -1, np.int64)
-    bary = np.zeros((h, w, 2))
+    bary = np.empty((h, w, 2))
     depth = np.full((h, w), np.inf) if zbuf is None else zbuf
     tri, q, att, ids = scene.triangles, scene.inv_w, scene.bary, scene.face
     if select is not None:
@@ -47,12 +48,13 @@ def transparent_triangles(scene):
 
 def render(scene, fb, options):
     """Draw ``scene`` into ``fb`` by the depth-buffer method."""
+    out = DepthBuffer(scene.width, scene.height)
     clear = transparent_triangles(scene)
     if not clear.any():
-        faces, bary, depth = visibility(scene)
+        faces, bary, depth = visibility(scene, zbuf=out.array)
         write_visible(scene, fb, faces, bary, depth, options)
     else:
-        faces, bary, depth = visibility(scene, ~clear)
+        faces, bary, depth = visibility(scene, ~clear, out.array)
         write_visible(scene, fb, faces, bary, depth, options)
         front = depth.copy()
         tf, tb, td = visibility(scene, clear, front)
@@ -71,7 +73,5 @@ def render(scene, fb, options):
         kt = np.array([m.transparency for m in scene.materials])[scene.face_mesh[f]]
         store(fb, ys, xs, (1 - kt)[:, None] * refl + kt[:, None] * behind, gamma)
         faces = np.where(tf >= 0, tf, faces)
-        depth = np.minimum(depth, td)
-    out = DepthBuffer(scene.width, scene.height)
-    out.array[...] = depth
+        np.minimum(depth, td, out=depth)
     return Rendering("z-buffer", out, faces, scene)

@@ -10,9 +10,9 @@ the reference (the tests compare the two) and still serves what the kernel does 
 do: fast Phong, shadow maps, depth cueing.
 """
 
-from concurrent.futures import ThreadPoolExecutor
-
 import numpy as np
+
+from .. import _validate as v
 
 from ..lighting import AmbientLight, DirectionalLight, SpotLight
 from ..lighting.model import ViewerAtInfinity
@@ -50,9 +50,16 @@ def source_rows(lights):
 
 
 def material_rows(materials):
-    """ka, kd, ks, n_s and S_s of each material, (M, 7)."""
-    return np.array([[m.ka, m.kd, m.ks, m.shininess, *m.specular_color] for m in materials],
-                    np.float64).reshape(-1, 7)
+    """ka, kd, ks, n_s, S_s of each material and the least s = V . R (or N . H) whose
+    s^n_s reaches :data:`scanline._kernels.shade.SHINE_FLOOR` (0 for n_s = 0), (M, 8)."""
+    from .._kernels.shade import SHINE_FLOOR
+
+    rows = []
+    for m in materials:
+        n = float(m.shininess)
+        cut = SHINE_FLOOR ** (1.0 / n) if n > 0 else 0.0
+        rows.append([m.ka, m.kd, m.ks, n, *m.specular_color, cut])
+    return np.array(rows, np.float64).reshape(-1, 8)
 
 
 def homogeneous_eye(eye):
@@ -86,18 +93,18 @@ def shade_buffer(scene, fb, faces, bary, options):
     """Shade the pixels of ``faces`` (H, W; -1: none) with barycentrics ``bary`` (H, W,
     2) into ``fb`` (:func:`drawable` must hold)."""
     from .._kernels import shade as k
-    from .._kernels._jit import call
+    from .._kernels._threads import call_in_bands
     from .._kernels.variants import MODE
-    from . import decode, vertex_intensities
+    from . import decoded, vertex_intensities
 
     lights, gamma = options["lights"], options["gamma"]
     shading = options["shading"]
     sources, ambient = source_rows(lights)
     empty = np.zeros((0, 3, 3))
     if shading == "phong":
-        world = np.ascontiguousarray(scene.world, np.float64)
-        normals = np.ascontiguousarray(scene.vertex_normals, np.float64)
-        colors = np.ascontiguousarray(decode(scene.vertex_colors, gamma))
+        world = v.kernel_array(scene.world)
+        normals = v.kernel_array(scene.vertex_normals)
+        colors = v.kernel_array(decoded(scene.vertex_colors, gamma))
     else:
         world = normals = empty
         colors = np.zeros((scene.face_count, 3, 3))
@@ -114,26 +121,5 @@ def shade_buffer(scene, fb, faces, bary, options):
             *gamma_tables(gamma), fb._raster()[0],
             k.SHADING["phong" if shading == "phong" else "vertex"],
             k.SPECULAR[options["specular"] if shading == "phong" else "phong"], MODE[fb.mode])
-    in_bands(k.shade_pixels, work, args)
+    call_in_bands(k.shade_pixels, work, *args)
 
-
-def in_bands(kernel, work, args):
-    """``kernel(start, step, *args)`` for start = 0 .. step - 1 on ``step`` threads,
-    one per core numba uses (the kernel releases the GIL; each call takes every
-    step-th band of rows, so the calls share the pixels without overlap); one call
-    when the work is small (:data:`scanline._kernels._jit.TWIN_WORK`: a first use
-    may then run the kernel's Python twin, which gains nothing from threads)."""
-    import numba
-
-    from .._kernels._jit import TWIN_WORK, call
-
-    step = numba.get_num_threads() if work > TWIN_WORK else 1
-    if step <= 1:
-        call(kernel, work, 0, 1, *args)
-        return
-    with ThreadPoolExecutor(step - 1) as pool:
-        others = [pool.submit(call, kernel, work / step, i, step, *args)
-                  for i in range(1, step)]
-        call(kernel, work / step, 0, step, *args)
-        for job in others:
-            job.result()

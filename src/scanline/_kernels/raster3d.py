@@ -36,10 +36,10 @@ of its band, and the result is identical to drawing the triangles one after anot
 import math
 
 import numpy as np
-from ._jit import helper, kernel
+from ._jit import helper, inline, kernel
 
 #: Rows per band (a power of two) and its shift.
-BAND_SHIFT = 5
+BAND_SHIFT = 6
 BAND = 1 << BAND_SHIFT
 
 #: The widest box (pixels) the work estimate of :func:`bin_triangles` counts: a
@@ -120,7 +120,7 @@ def band_entries(tri, height):
     return total
 
 
-@helper
+@inline
 def crossing(tri, t, lo, hi, y):
     """Where the edge from vertex ``lo`` (the lower) to ``hi`` of triangle ``t``
     crosses scan line ``y``: the 2-D polygon fill's expression."""
@@ -129,7 +129,7 @@ def crossing(tri, t, lo, hi, y):
     return xlo + ((y - ylo) * (tri[t, hi, 0] - xlo)) / (tri[t, hi, 1] - ylo)
 
 
-@helper
+@inline
 def setup(tri, q, att, t, g):
     """The linear functions of triangle ``t`` in screen space: row ``j`` of ``g``
     holds (value at vertex 0, d/dx, d/dy) of the depth (j = 0), of 1/w (j = 1) and
@@ -145,6 +145,8 @@ def setup(tri, q, att, t, g):
     if not (area != 0.0 and math.isfinite(area)):
         return False
     k = att.shape[2]
+    r = 1.0 / area
+    finite = 0.0
     for j in range(k + 2):
         if j == 0:
             f0 = tri[t, 0, 2]
@@ -161,15 +163,13 @@ def setup(tri, q, att, t, g):
         d1 = f1 - f0
         d2 = f2 - f0
         g[j, 0] = f0
-        g[j, 1] = (d1 * ey2 - d2 * ey1) / area        # -A / C for the depth
-        g[j, 2] = (d2 * ex1 - d1 * ex2) / area        # -B / C
-        if not (math.isfinite(g[j, 0]) and math.isfinite(g[j, 1])
-                and math.isfinite(g[j, 2])):
-            return False
-    return True
+        g[j, 1] = (d1 * ey2 - d2 * ey1) * r          # -A / C for the depth
+        g[j, 2] = (d2 * ex1 - d1 * ex2) * r          # -B / C
+        finite += 0.0 * (g[j, 0] + g[j, 1] + g[j, 2])  # NaN when any is not finite
+    return finite == 0.0
 
 
-@helper
+@inline
 def span_limits(tri, t, y, low, mid, high, width):
     """The span ``kl <= x < kr`` of triangle ``t`` (vertices ``low``, ``mid``,
     ``high`` by rising y) on scan line ``y``, clamped to ``0 .. width``."""
@@ -189,7 +189,7 @@ def span_limits(tri, t, y, low, mid, high, width):
     return kl, kr
 
 
-@helper
+@inline
 def raster_triangle(out, depth, tri, q, att, ids, t, r0, r1, g, zbuf, floor, buf, abuf,
                     idbuf):
     """Scan-convert triangle ``t`` on rows ``r0 .. r1`` (already clamped)."""
@@ -211,6 +211,9 @@ def raster_triangle(out, depth, tri, q, att, ids, t, r0, r1, g, zbuf, floor, buf
     y0 = tri[t, 0, 1]
     dzdx = g[0, 1]
     dqdx = g[1, 1]
+    # 1/w the same everywhere (a parallel view, or no w given): the attributes are
+    # linear on the screen, and a/w / (1/w) is skipped (exact for 1/w = 1)
+    affine = g[1, 0] == 1.0 and dqdx == 0.0 and g[1, 2] == 0.0
     face = ids[t]
     for y in range(r0, r1 + 1):
         kl, kr = span_limits(tri, t, y, low, mid, high, width)
@@ -232,17 +235,28 @@ def raster_triangle(out, depth, tri, q, att, ids, t, r0, r1, g, zbuf, floor, buf
                     continue
                 zbuf[y, x] = z
             i = x - kl
-            qx = qs + dqdx * i
-            if len(out) == COLOR:
-                for c in range(k):
-                    a = (g[c + 2, 0] + g[c + 2, 1] * (fx + i) + g[c + 2, 2] * fy) / qx
-                    a = min(max(a, 0.0), 255.0)
-                    buf[y, x, c] = np.uint8(int(a + 0.5))
+            if affine:
+                if len(out) == COLOR:
+                    for c in range(k):
+                        a = g[c + 2, 0] + g[c + 2, 1] * (fx + i) + g[c + 2, 2] * fy
+                        a = min(max(a, 0.0), 255.0)
+                        buf[y, x, c] = np.uint8(int(a + 0.5))
+                else:
+                    for c in range(k):
+                        abuf[y, x, c] = g[c + 2, 0] + g[c + 2, 1] * (fx + i) + g[c + 2, 2] * fy
+                    idbuf[y, x] = face
             else:
-                for c in range(k):
-                    abuf[y, x, c] = (g[c + 2, 0] + g[c + 2, 1] * (fx + i)
-                                     + g[c + 2, 2] * fy) / qx
-                idbuf[y, x] = face
+                r = 1.0 / (qs + dqdx * i)
+                if len(out) == COLOR:
+                    for c in range(k):
+                        a = (g[c + 2, 0] + g[c + 2, 1] * (fx + i) + g[c + 2, 2] * fy) * r
+                        a = min(max(a, 0.0), 255.0)
+                        buf[y, x, c] = np.uint8(int(a + 0.5))
+                else:
+                    for c in range(k):
+                        abuf[y, x, c] = (g[c + 2, 0] + g[c + 2, 1] * (fx + i)
+                                         + g[c + 2, 2] * fy) * r
+                    idbuf[y, x] = face
             z += dzdx
 
 

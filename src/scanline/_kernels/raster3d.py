@@ -52,12 +52,15 @@ WIDEST = 4096.0
 COLOR = 1
 ATTRIBUTES = 2
 
-#: Depth tokens: test and write the depth buffer; draw in the given order; or peel
+#: Depth tokens: test and write the depth buffer; draw in the given order; peel
 #: (write where the depth lies strictly between ``floor[y, x]`` and the depth
-#: buffer: the next layer behind the one already taken, for the A-buffer).
+#: buffer: the next layer behind the one already taken, for the A-buffer); or clear
+#: each band of the depth buffer to +inf (and of the id buffer to -1) before testing
+#: in it (a new frame: the clear runs on every core, on rows about to be drawn).
 TEST = 1
 NO_TEST = 2
 PEEL = 3
+CLEAR_TEST = 4
 
 
 @kernel
@@ -224,7 +227,7 @@ def raster_triangle(out, depth, tri, q, att, ids, t, r0, r1, g, zbuf, floor, buf
         z = g[0, 0] + g[0, 1] * fx + g[0, 2] * fy          # the left end, from the plane
         qs = g[1, 0] + g[1, 1] * fx + g[1, 2] * fy
         for x in range(kl, kr):
-            if len(depth) == TEST:
+            if len(depth) == TEST or len(depth) == CLEAR_TEST:
                 if not (z < zbuf[y, x]):
                     z += dzdx                              # z' = z - A / C
                     continue
@@ -279,6 +282,13 @@ def raster_triangles(start, step, out, depth, tri, q, att, ids, rows, starts, or
     for b in range(start, bands, max(step, 1)):
         lo = b << BAND_SHIFT
         hi = min(lo + BAND - 1, height - 1)
+        if len(depth) == CLEAR_TEST:
+            for y in range(lo, hi + 1):
+                for x in range(zbuf.shape[1]):
+                    zbuf[y, x] = math.inf
+                if len(out) == ATTRIBUTES:
+                    for x in range(idbuf.shape[1]):
+                        idbuf[y, x] = -1
         for e in range(starts[b], starts[b + 1]):
             t = order[e]
             r0 = max(rows[t, 0], lo)

@@ -73,14 +73,15 @@ def _vertex_colors(fb, colors, n):
 
 
 def rasterize(width, height, tri, q, att, ids, zbuf=None, buf=None, abuf=None, idbuf=None,
-              floor=None):
+              floor=None, clear=False):
     """Run the triangle kernel on normalized arrays.
 
     ``buf`` given: the attributes (0..255) are rounded into its bytes; else
     ``abuf`` (H, W, K) float64 and ``idbuf`` (H, W) int64 receive the interpolated
     attributes and ``ids``.  ``zbuf`` None: no depth test (the input order wins);
     ``floor`` (H, W): depth peeling, only fragments behind ``floor`` and in front of
-    ``zbuf`` pass."""
+    ``zbuf`` pass; ``clear``: ``zbuf`` (and ``idbuf``) are cleared to +inf (-1) by
+    the kernel first, on every core (their contents before do not matter)."""
     from .._kernels import raster3d as k
     from .._kernels._jit import call
     from .._kernels._threads import call_in_bands
@@ -101,7 +102,7 @@ def rasterize(width, height, tri, q, att, ids, zbuf=None, buf=None, abuf=None, i
     else:
         out = token(k.ATTRIBUTES)
         buf = np.empty((1, 1, 1), np.uint8)
-    depth = token(k.TEST if floor is None else k.PEEL)
+    depth = token(k.PEEL if floor is not None else k.CLEAR_TEST if clear else k.TEST)
     if floor is None:
         floor = np.empty((1, 1))
     if zbuf is None:

@@ -299,7 +299,7 @@ def _joined(parts, shape):
 def prepare(meshes, camera, width, height, materials=None, cull_back_faces=False):
     """The :class:`ScreenScene` of ``meshes`` seen by ``camera`` on a ``width`` x
     ``height`` device."""
-    from .._kernels._jit import call
+    from .._kernels._threads import call_in_bands
     from .._kernels.screen import project_faces
     from ..clip import polygons3d
     from ..projection import Camera
@@ -331,10 +331,11 @@ def prepare(meshes, camera, width, height, materials=None, cull_back_faces=False
     dev = np.empty((nf, 3, 3))
     inv_w = np.empty((nf, 3))
     planes = np.empty((nf, 4))
-    call(project_faces, 40 * nf, np.ascontiguousarray(world), np.ascontiguousarray(view),
-         toward, np.ascontiguousarray(clip), np.ascontiguousarray(CLIP_VOLUME.planes),
-         np.ascontiguousarray(scale, np.float64), np.ascontiguousarray(offset, np.float64),
-         back, inside, good, dev, inv_w, planes)
+    call_in_bands(project_faces, 40 * nf, np.ascontiguousarray(world),
+                  np.ascontiguousarray(view), toward, np.ascontiguousarray(clip),
+                  np.ascontiguousarray(CLIP_VOLUME.planes),
+                  np.ascontiguousarray(scale, np.float64),
+                  np.ascontiguousarray(offset, np.float64), back, inside, good, dev, inv_w, planes)
     front = ~back
     culled = back if cull_back_faces else np.zeros(nf, bool)
     kept = ~culled & ~degenerate

@@ -192,64 +192,73 @@ def span_limits(tri, t, y, low, mid, high, width):
     return kl, kr
 
 
-@inline
+@helper
 def raster_triangle(out, depth, tri, q, att, ids, t, r0, r1, g, zbuf, floor, buf, abuf,
                     idbuf):
-    """Scan-convert triangle ``t`` on rows ``r0 .. r1`` (already clamped)."""
-    if not setup(tri, q, att, t, g):
-        return
+    """Scan-convert triangle ``t`` on rows ``r0 .. r1`` (already clamped): the step
+    tables run it for one triangle and one row (:mod:`scanline.trace.zbuffer`)."""
+    order = np.empty(1, np.int64)
+    order[0] = t
+    rows = np.empty((t + 1, 2), np.int64)
+    rows[t, 0] = r0
+    rows[t, 1] = r1
+    raster_entries(out, depth, tri, q, att, ids, order, 0, 1, rows, r0, r1, g, zbuf, floor,
+                   buf, abuf, idbuf)
+
+
+@helper
+def raster_entries(out, depth, tri, q, att, ids, order, e0, e1, rows, lo, hi, g, zbuf, floor,
+                   buf, abuf, idbuf):
+    """Scan-convert the triangles ``order[e0:e1]``, each on its rows ``rows[t]``
+    within ``lo .. hi`` (one band): one call per band, the variants (the tokens
+    ``out`` and ``depth``) folded here, the per-triangle steps inlined."""
     width = zbuf.shape[1]
-    k = att.shape[2]
-    # vertices by rising y (ties keep index order: the horizontal edge is skipped)
-    low = 0
-    mid = 1
-    high = 2
-    if tri[t, mid, 1] < tri[t, low, 1]:
-        low, mid = mid, low
-    if tri[t, high, 1] < tri[t, mid, 1]:
-        mid, high = high, mid
+    for e in range(e0, e1):
+        t = order[e]
+        r0 = max(rows[t, 0], lo)
+        r1 = min(rows[t, 1], hi)
+        if not setup(tri, q, att, t, g):
+            continue
+        k = att.shape[2]
+        # vertices by rising y (ties keep index order: the horizontal edge is skipped)
+        low = 0
+        mid = 1
+        high = 2
         if tri[t, mid, 1] < tri[t, low, 1]:
             low, mid = mid, low
-    x0 = tri[t, 0, 0]
-    y0 = tri[t, 0, 1]
-    dzdx = g[0, 1]
-    dqdx = g[1, 1]
-    # 1/w the same everywhere (a parallel view, or no w given): the attributes are
-    # linear on the screen, and a/w / (1/w) is skipped (exact for 1/w = 1)
-    affine = g[1, 0] == 1.0 and dqdx == 0.0 and g[1, 2] == 0.0
-    face = ids[t]
-    for y in range(r0, r1 + 1):
-        kl, kr = span_limits(tri, t, y, low, mid, high, width)
-        if kl >= kr:
-            continue
-        fx = kl - x0
-        fy = y - y0
-        z = g[0, 0] + g[0, 1] * fx + g[0, 2] * fy          # the left end, from the plane
-        qs = g[1, 0] + g[1, 1] * fx + g[1, 2] * fy
-        for x in range(kl, kr):
-            if len(depth) == TEST or len(depth) == CLEAR_TEST:
-                if not (z < zbuf[y, x]):
-                    z += dzdx                              # z' = z - A / C
-                    continue
-                zbuf[y, x] = z
-            elif len(depth) == PEEL:
-                if not (z < zbuf[y, x] and z > floor[y, x]):
-                    z += dzdx
-                    continue
-                zbuf[y, x] = z
-            i = x - kl
-            if affine:
-                if len(out) == COLOR:
-                    for c in range(k):
-                        a = g[c + 2, 0] + g[c + 2, 1] * (fx + i) + g[c + 2, 2] * fy
-                        a = min(max(a, 0.0), 255.0)
-                        buf[y, x, c] = np.uint8(int(a + 0.5))
-                else:
-                    for c in range(k):
-                        abuf[y, x, c] = g[c + 2, 0] + g[c + 2, 1] * (fx + i) + g[c + 2, 2] * fy
-                    idbuf[y, x] = face
-            else:
-                r = 1.0 / (qs + dqdx * i)
+        if tri[t, high, 1] < tri[t, mid, 1]:
+            mid, high = high, mid
+            if tri[t, mid, 1] < tri[t, low, 1]:
+                low, mid = mid, low
+        x0 = tri[t, 0, 0]
+        y0 = tri[t, 0, 1]
+        dzdx = g[0, 1]
+        dqdx = g[1, 1]
+        # 1/w = 1 everywhere (no w given): the attributes are linear on the screen, and
+        # the division a/w / (1/w) is skipped
+        affine = g[1, 0] == 1.0 and dqdx == 0.0 and g[1, 2] == 0.0
+        face = ids[t]
+        for y in range(r0, r1 + 1):
+            kl, kr = span_limits(tri, t, y, low, mid, high, width)
+            if kl >= kr:
+                continue
+            fx = kl - x0
+            fy = y - y0
+            z = g[0, 0] + g[0, 1] * fx + g[0, 2] * fy          # the left end, from the plane
+            qs = g[1, 0] + g[1, 1] * fx + g[1, 2] * fy
+            for x in range(kl, kr):
+                if len(depth) == TEST or len(depth) == CLEAR_TEST:
+                    if not (z < zbuf[y, x]):
+                        z += dzdx                              # z' = z - A / C
+                        continue
+                    zbuf[y, x] = z
+                elif len(depth) == PEEL:
+                    if not (z < zbuf[y, x] and z > floor[y, x]):
+                        z += dzdx
+                        continue
+                    zbuf[y, x] = z
+                i = x - kl
+                r = 1.0 if affine else 1.0 / (qs + dqdx * i)      # a * 1.0 is exact
                 if len(out) == COLOR:
                     for c in range(k):
                         a = (g[c + 2, 0] + g[c + 2, 1] * (fx + i) + g[c + 2, 2] * fy) * r
@@ -260,7 +269,7 @@ def raster_triangle(out, depth, tri, q, att, ids, t, r0, r1, g, zbuf, floor, buf
                         abuf[y, x, c] = (g[c + 2, 0] + g[c + 2, 1] * (fx + i)
                                          + g[c + 2, 2] * fy) * r
                     idbuf[y, x] = face
-            z += dzdx
+                z += dzdx
 
 
 @kernel
@@ -274,7 +283,8 @@ def raster_triangles(start, step, out, depth, tri, q, att, ids, rows, starts, or
     ``att`` (N, 3, K) attributes per vertex; ``ids`` (N,) the value each triangle
     writes into ``idbuf``; ``rows``, ``starts``, ``order`` from
     :func:`bin_triangles`.  Writes ``zbuf`` (H, W) (depth token TEST; PEEL: only
-    between ``floor`` (H, W) and ``zbuf``), and ``buf`` (H, W', K) bytes (out COLOR)
+    between ``floor`` (H, W) and ``zbuf``; CLEAR_TEST: each band cleared first, with
+    ``idbuf``), and ``buf`` (H, W', K) bytes (out COLOR)
     or ``abuf`` (H, W, K) and ``idbuf`` (H, W) (out ATTRIBUTES)."""
     height = zbuf.shape[0]
     bands = starts.shape[0] - 1
@@ -289,9 +299,5 @@ def raster_triangles(start, step, out, depth, tri, q, att, ids, rows, starts, or
                 if len(out) == ATTRIBUTES:
                     for x in range(idbuf.shape[1]):
                         idbuf[y, x] = -1
-        for e in range(starts[b], starts[b + 1]):
-            t = order[e]
-            r0 = max(rows[t, 0], lo)
-            r1 = min(rows[t, 1], hi)
-            raster_triangle(out, depth, tri, q, att, ids, t, r0, r1, g, zbuf, floor, buf,
-                            abuf, idbuf)
+        raster_entries(out, depth, tri, q, att, ids, order, starts[b], starts[b + 1], rows, lo,
+                       hi, g, zbuf, floor, buf, abuf, idbuf)

@@ -10,6 +10,8 @@ the reference (the tests compare the two) and still serves what the kernel does 
 do: fast Phong, shadow maps, depth cueing.
 """
 
+import functools
+
 import numpy as np
 
 from .. import _validate as v
@@ -69,10 +71,12 @@ def homogeneous_eye(eye):
     return np.append(np.asarray(eye, np.float64), 1.0)
 
 
+@functools.lru_cache(maxsize=8)
 def gamma_tables(gamma):
     """The gamma encoding as the kernel's tables: the stored value of each of
     ``GAMMA_STEPS`` evenly spaced intensities, and the intensity ((v - 1/2) /
-    255)^gamma from which value v is stored (index 0: -inf, 256: inf)."""
+    255)^gamma from which value v is stored (index 0: -inf, 256: inf).  Kept per
+    gamma, read-only."""
     from .._kernels.shade import GAMMA_STEPS
     from . import encode
 
@@ -80,6 +84,7 @@ def gamma_tables(gamma):
     thresholds = np.empty(257)
     thresholds[0], thresholds[256] = -np.inf, np.inf
     thresholds[1:256] = ((np.arange(1, 256) - 0.5) / 255.0) ** gamma
+    table.flags.writeable = thresholds.flags.writeable = False
     return table, thresholds
 
 

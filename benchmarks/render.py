@@ -19,8 +19,8 @@ Workloads (fixed seed), at 1920 x 1080 RGB with a depth test:
 
 Ratios are peer time / scanline time (above 1: scanline is faster).
 
-Run: ``python benchmarks/render.py [--quick] [--only gouraud|teapot|methods]``
-(``--quick``: 10x fewer triangles; ``--only``: one group of workloads).
+Run: ``python benchmarks/render.py [--quick] [--only gouraud teapot methods]``
+(``--quick``: 10x fewer triangles; ``--only``: these groups of workloads).
 """
 
 import argparse
@@ -113,11 +113,12 @@ def gl_draw(ctx, program, buffers, fmt, names):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--quick", action="store_true")
-    ap.add_argument("--only", choices=("gouraud", "teapot", "methods"),
-                    help="run one group of workloads")
+    ap.add_argument("--only", nargs="+", choices=("gouraud", "teapot", "methods"),
+                    help="run these groups of workloads only")
     args = ap.parse_args()
-    run_group = lambda group: args.only in (None, group)  # noqa: E731
-    report = Report("render" if args.only is None else f"render-{args.only}", quick=args.quick)
+    run_group = lambda group: args.only is None or group in args.only  # noqa: E731
+    report = Report("render" if args.only is None else "render-" + "-".join(args.only),
+                    quick=args.quick)
     rng = np.random.default_rng(1)
     ctx, renderer = gl_setup()
     scale = 10 if args.quick else 1

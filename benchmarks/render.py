@@ -19,7 +19,8 @@ Workloads (fixed seed), at 1920 x 1080 RGB with a depth test:
 
 Ratios are peer time / scanline time (above 1: scanline is faster).
 
-Run: ``python benchmarks/render.py [--quick]`` (``--quick``: 10x fewer triangles).
+Run: ``python benchmarks/render.py [--quick] [--only gouraud teapot methods]``
+(``--quick``: 10x fewer triangles; ``--only``: these groups of workloads).
 """
 
 import argparse
@@ -112,14 +113,20 @@ def gl_draw(ctx, program, buffers, fmt, names):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--only", nargs="+", choices=("gouraud", "teapot", "methods"),
+                    help="run these groups of workloads only")
     args = ap.parse_args()
-    report = Report("render", quick=args.quick)
+    run_group = lambda group: args.only is None or group in args.only  # noqa: E731
+    report = Report("render" if args.only is None else "render-" + "-".join(args.only),
+                    quick=args.quick)
     rng = np.random.default_rng(1)
     ctx, renderer = gl_setup()
     scale = 10 if args.quick else 1
     for n, size, name in ((1_000_000 // scale, 10, "small"), (100_000 // scale, 50, "medium")):
         tris = random_triangles(rng, n, size)
-        colors = rng.uniform(0, 255, size=(n, 3, 3))
+        colors = rng.uniform(0, 255, size=(n, 3, 3))       # drawn anyway: the same scenes
+        if not run_group("gouraud"):
+            continue
         work = f"{n // 1000}k {name} gouraud"
         fb = sl.FrameBuffer(W, H)
         depth = sl.DepthBuffer.like(fb)
@@ -140,50 +147,52 @@ def main():
             report.target(work, "mesa", 1.0, ">= 1.0: at least as fast as Mesa llvmpipe")
 
     # -- the teapot, Phong-shaded ---------------------------------------------------------
-    teapot = sl.mesh.teapot(24 if not args.quick else 8).transformed(
-        sl.transform3d.rotation(-math.pi / 2, "x"))
-    cam = sl.Camera(eye=(0, 2.5, 6.5), target=(0, 0.7, 0),
-                    projection=sl.projection.perspective(fov=math.radians(32), near=1, far=30))
-    light = sl.lighting.DirectionalLight((0.45, -0.55, -1.0), 0.9)
-    lights = [sl.lighting.AmbientLight(0.2), light]
-    mat = sl.lighting.Material(ka=0.2, kd=0.7, ks=0.3, shininess=20)
-    fb = sl.FrameBuffer(W, H)
-    work = f"teapot phong {teapot.triangulated().face_count // 1000}k triangles"
+    if run_group("teapot"):
+        teapot = sl.mesh.teapot(24 if not args.quick else 8).transformed(
+            sl.transform3d.rotation(-math.pi / 2, "x"))
+        cam = sl.Camera(eye=(0, 2.5, 6.5), target=(0, 0.7, 0),
+                        projection=sl.projection.perspective(fov=math.radians(32), near=1, far=30))
+        light = sl.lighting.DirectionalLight((0.45, -0.55, -1.0), 0.9)
+        lights = [sl.lighting.AmbientLight(0.2), light]
+        mat = sl.lighting.Material(ka=0.2, kd=0.7, ks=0.3, shininess=20)
+        fb = sl.FrameBuffer(W, H)
+        work = f"teapot phong {teapot.triangulated().face_count // 1000}k triangles"
 
-    def teapot_ours():
-        fb.clear()
-        sl.render(fb, teapot, cam, shading="phong", lights=lights, materials=mat)
-    report.add(work, "scanline", 'sl.render(fb, teapot, camera, shading="phong")', teapot_ours)
-    fb.save(os.path.join(os.path.dirname(os.path.abspath(__file__)), "results",
-                         "render-teapot.png"))
-    if ctx is not None:
-        tri = teapot.triangulated()
-        f = tri.face_indices.reshape(-1, 3)
-        from scanline.render.prepare import averaged_normals
+        def teapot_ours():
+            fb.clear()
+            sl.render(fb, teapot, cam, shading="phong", lights=lights, materials=mat)
+        report.add(work, "scanline", 'sl.render(fb, teapot, camera, shading="phong")', teapot_ours)
+        fb.save(os.path.join(os.path.dirname(os.path.abspath(__file__)), "results",
+                             "render-teapot.png"))
+        if ctx is not None:
+            tri = teapot.triangulated()
+            f = tri.face_indices.reshape(-1, 3)
+            from scanline.render.prepare import averaged_normals
 
-        normals = teapot.normals if teapot.normals is not None else averaged_normals(teapot)
-        data = np.concatenate([teapot.vertices[f], normals[f]], axis=2)
-        prog = ctx.program(vertex_shader=GL_PHONG[0], fragment_shader=GL_PHONG[1])
-        prog["clip"].write(cam.matrix(W, H).T.astype("f4").tobytes())
-        prog["size"].value = (W, H)
-        prog["eye"].value = cam.eye
-        prog["light"].value = tuple(light.direction)
-        run = gl_draw(ctx, prog, data, "3f 3f", ("position", "normal"))
-        report.add(work, "mesa", f"moderngl per-pixel Phong on {renderer}", run)
-        report.target(work, "mesa", 1.0, ">= 1.0: at least as fast as Mesa llvmpipe")
+            normals = teapot.normals if teapot.normals is not None else averaged_normals(teapot)
+            data = np.concatenate([teapot.vertices[f], normals[f]], axis=2)
+            prog = ctx.program(vertex_shader=GL_PHONG[0], fragment_shader=GL_PHONG[1])
+            prog["clip"].write(cam.matrix(W, H).T.astype("f4").tobytes())
+            prog["size"].value = (W, H)
+            prog["eye"].value = cam.eye
+            prog["light"].value = tuple(light.direction)
+            run = gl_draw(ctx, prog, data, "3f 3f", ("position", "normal"))
+            report.add(work, "mesa", f"moderngl per-pixel Phong on {renderer}", run)
+            report.target(work, "mesa", 1.0, ">= 1.0: at least as fast as Mesa llvmpipe")
 
     # -- every method on one scene --------------------------------------------------------
-    n = 100_000 // scale
-    sphere_count = 40
-    res = int(math.sqrt(n / sphere_count / 2))
-    meshes = [sl.mesh.sphere(0.4, center=tuple(rng.uniform(-3, 3, 3)), resolution=(2 * res, res))
-              for _ in range(sphere_count)]
-    cam = sl.Camera(eye=(0, 0, 10), target=(0, 0, 0))
-    for method in sorted(sl.render.METHODS):
-        fb = sl.FrameBuffer(W, H)
-        report.add(f"methods {n // 1000}k", f"scanline {method}",
-                   f'sl.render(fb, spheres, camera, method="{method}")',
-                   lambda: sl.render(fb, meshes, cam, method=method), repeats=2)
+    if run_group("methods"):
+        n = 100_000 // scale
+        sphere_count = 40
+        res = int(math.sqrt(n / sphere_count / 2))
+        meshes = [sl.mesh.sphere(0.4, center=tuple(rng.uniform(-3, 3, 3)),
+                                 resolution=(2 * res, res)) for _ in range(sphere_count)]
+        cam = sl.Camera(eye=(0, 0, 10), target=(0, 0, 0))
+        for method in sorted(sl.render.METHODS):
+            fb = sl.FrameBuffer(W, H)
+            report.add(f"methods {n // 1000}k", f"scanline {method}",
+                       f'sl.render(fb, spheres, camera, method="{method}")',
+                       lambda: sl.render(fb, meshes, cam, method=method), repeats=2)
     report.write()
 
 

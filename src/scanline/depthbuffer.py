@@ -52,6 +52,17 @@ class DepthBuffer:
         self.array = np.full((self.height, self.width), value, np.float64)
 
     @classmethod
+    def holding(cls, array):
+        """A depth buffer whose pixels are ``array`` (H, W) float64, C-contiguous (not
+        copied: what a renderer hands back)."""
+        height, width = array.shape
+        out = cls.__new__(cls)
+        out.width = v.positive_int("width", width)
+        out.height = v.positive_int("height", height)
+        out.array = depth_array_checked(array)
+        return out
+
+    @classmethod
     def like(cls, fb, clear=np.inf):
         """A depth buffer of the size of frame buffer ``fb``."""
         return cls(fb.width, fb.height, clear)
@@ -105,6 +116,15 @@ class DepthBuffer:
 
     def __repr__(self):
         return f"<DepthBuffer {self.width} x {self.height}>"
+
+
+def depth_array_checked(array):
+    """``array`` if it is a writable C-contiguous float64 (H, W) array, else an error."""
+    if not (isinstance(array, np.ndarray) and array.dtype == np.float64 and array.ndim == 2
+            and array.flags.c_contiguous and array.flags.writeable):
+        raise ArgumentValueError("a depth buffer's array must be a writable C-contiguous "
+                                 f"float64 (H, W) array, got {v._show(array)}")
+    return array
 
 
 def depth_argument(fb, depth, name="depth"):

@@ -28,21 +28,23 @@ equal at the three vertices (a parallel projection) this is plain linear
 interpolation.
 
 Parallelism.  Triangles are binned into bands of :data:`BAND` rows, each band keeps
-the triangles' input order, and the bands are rasterized in parallel
-(``prange``): a pixel is only ever written by the thread of its band, and the result
-is identical to drawing the triangles one after another.
+the triangles' input order, and the bands are shared out between calls on several
+threads (:mod:`scanline._kernels._threads`): a pixel is only ever written by the call
+of its band, and the result is identical to drawing the triangles one after another.
 """
 
 import math
 
 import numpy as np
-from numba import prange
-
-from ._jit import helper, kernel, parallel_kernel
+from ._jit import helper, inline, kernel
 
 #: Rows per band (a power of two) and its shift.
-BAND_SHIFT = 5
+BAND_SHIFT = 6
 BAND = 1 << BAND_SHIFT
+
+#: The widest box (pixels) the work estimate of :func:`bin_triangles` counts: a
+#: triangle's x extent is not clipped to the raster there.
+WIDEST = 4096.0
 
 #: Output tokens (``len(out)``): write 0..255 attribute values rounded into the frame
 #: buffer's bytes; write the float attributes and the triangle's id into attribute
@@ -50,12 +52,15 @@ BAND = 1 << BAND_SHIFT
 COLOR = 1
 ATTRIBUTES = 2
 
-#: Depth tokens: test and write the depth buffer; draw in the given order; or peel
+#: Depth tokens: test and write the depth buffer; draw in the given order; peel
 #: (write where the depth lies strictly between ``floor[y, x]`` and the depth
-#: buffer: the next layer behind the one already taken, for the A-buffer).
+#: buffer: the next layer behind the one already taken, for the A-buffer); or clear
+#: each band of the depth buffer to +inf (and of the id buffer to -1) before testing
+#: in it (a new frame: the clear runs on every core, on rows about to be drawn).
 TEST = 1
 NO_TEST = 2
 PEEL = 3
+CLEAR_TEST = 4
 
 
 @kernel
@@ -63,12 +68,15 @@ def bin_triangles(tri, height, rows, starts, order):
     """Bucket the triangles by band: ``order[starts[b]:starts[b + 1]]`` lists, in
     input order, the triangles whose rows meet band ``b``; ``rows[t]`` = (first
     row, last row) of triangle ``t`` clamped to the raster (first > last: none).
-    Returns the number of entries used in ``order`` (its capacity must be at least
-    the sum over triangles of the bands they meet: :func:`band_entries`)."""
+    ``order``'s capacity must be at least the sum over triangles of the bands they
+    meet (:func:`band_entries`).  Returns the summed areas of the triangles' boxes
+    (rows met times their x extent plus one, at most :data:`WIDEST` pixels): the
+    work estimate of :func:`raster_triangles`."""
     n = tri.shape[0]
     bands = starts.shape[0] - 1
     for b in range(bands + 1):
         starts[b] = 0
+    area = 0.0
     for t in range(n):
         lo = min(tri[t, 0, 1], tri[t, 1, 1], tri[t, 2, 1])
         hi = max(tri[t, 0, 1], tri[t, 1, 1], tri[t, 2, 1])
@@ -84,6 +92,9 @@ def bin_triangles(tri, height, rows, starts, order):
         if r0 <= r1:
             for b in range(r0 >> BAND_SHIFT, (r1 >> BAND_SHIFT) + 1):
                 starts[b + 1] += 1
+            wide = (max(tri[t, 0, 0], tri[t, 1, 0], tri[t, 2, 0])
+                    - min(tri[t, 0, 0], tri[t, 1, 0], tri[t, 2, 0]) + 1.0)
+            area += (r1 - r0 + 1) * min(wide, WIDEST)
     for b in range(bands):
         starts[b + 1] += starts[b]
     fill = np.empty(bands, np.int64)
@@ -94,7 +105,7 @@ def bin_triangles(tri, height, rows, starts, order):
             for b in range(rows[t, 0] >> BAND_SHIFT, (rows[t, 1] >> BAND_SHIFT) + 1):
                 order[fill[b]] = t
                 fill[b] += 1
-    return starts[bands]
+    return area
 
 
 @kernel
@@ -112,7 +123,7 @@ def band_entries(tri, height):
     return total
 
 
-@helper
+@inline
 def crossing(tri, t, lo, hi, y):
     """Where the edge from vertex ``lo`` (the lower) to ``hi`` of triangle ``t``
     crosses scan line ``y``: the 2-D polygon fill's expression."""
@@ -121,7 +132,7 @@ def crossing(tri, t, lo, hi, y):
     return xlo + ((y - ylo) * (tri[t, hi, 0] - xlo)) / (tri[t, hi, 1] - ylo)
 
 
-@helper
+@inline
 def setup(tri, q, att, t, g):
     """The linear functions of triangle ``t`` in screen space: row ``j`` of ``g``
     holds (value at vertex 0, d/dx, d/dy) of the depth (j = 0), of 1/w (j = 1) and
@@ -137,6 +148,8 @@ def setup(tri, q, att, t, g):
     if not (area != 0.0 and math.isfinite(area)):
         return False
     k = att.shape[2]
+    r = 1.0 / area
+    finite = 0.0
     for j in range(k + 2):
         if j == 0:
             f0 = tri[t, 0, 2]
@@ -153,15 +166,13 @@ def setup(tri, q, att, t, g):
         d1 = f1 - f0
         d2 = f2 - f0
         g[j, 0] = f0
-        g[j, 1] = (d1 * ey2 - d2 * ey1) / area        # -A / C for the depth
-        g[j, 2] = (d2 * ex1 - d1 * ex2) / area        # -B / C
-        if not (math.isfinite(g[j, 0]) and math.isfinite(g[j, 1])
-                and math.isfinite(g[j, 2])):
-            return False
-    return True
+        g[j, 1] = (d1 * ey2 - d2 * ey1) * r          # -A / C for the depth
+        g[j, 2] = (d2 * ex1 - d1 * ex2) * r          # -B / C
+        finite += 0.0 * (g[j, 0] + g[j, 1] + g[j, 2])  # NaN when any is not finite
+    return finite == 0.0
 
 
-@helper
+@inline
 def span_limits(tri, t, y, low, mid, high, width):
     """The span ``kl <= x < kr`` of triangle ``t`` (vertices ``low``, ``mid``,
     ``high`` by rising y) on scan line ``y``, clamped to ``0 .. width``."""
@@ -184,82 +195,109 @@ def span_limits(tri, t, y, low, mid, high, width):
 @helper
 def raster_triangle(out, depth, tri, q, att, ids, t, r0, r1, g, zbuf, floor, buf, abuf,
                     idbuf):
-    """Scan-convert triangle ``t`` on rows ``r0 .. r1`` (already clamped)."""
-    if not setup(tri, q, att, t, g):
-        return
+    """Scan-convert triangle ``t`` on rows ``r0 .. r1`` (already clamped): the step
+    tables run it for one triangle and one row (:mod:`scanline.trace.zbuffer`)."""
+    order = np.empty(1, np.int64)
+    order[0] = t
+    rows = np.empty((t + 1, 2), np.int64)
+    rows[t, 0] = r0
+    rows[t, 1] = r1
+    raster_entries(out, depth, tri, q, att, ids, order, 0, 1, rows, r0, r1, g, zbuf, floor,
+                   buf, abuf, idbuf)
+
+
+@helper
+def raster_entries(out, depth, tri, q, att, ids, order, e0, e1, rows, lo, hi, g, zbuf, floor,
+                   buf, abuf, idbuf):
+    """Scan-convert the triangles ``order[e0:e1]``, each on its rows ``rows[t]``
+    within ``lo .. hi`` (one band): one call per band, the variants (the tokens
+    ``out`` and ``depth``) folded here, the per-triangle steps inlined."""
     width = zbuf.shape[1]
-    k = att.shape[2]
-    # vertices by rising y (ties keep index order: the horizontal edge is skipped)
-    low = 0
-    mid = 1
-    high = 2
-    if tri[t, mid, 1] < tri[t, low, 1]:
-        low, mid = mid, low
-    if tri[t, high, 1] < tri[t, mid, 1]:
-        mid, high = high, mid
+    for e in range(e0, e1):
+        t = order[e]
+        r0 = max(rows[t, 0], lo)
+        r1 = min(rows[t, 1], hi)
+        if not setup(tri, q, att, t, g):
+            continue
+        k = att.shape[2]
+        # vertices by rising y (ties keep index order: the horizontal edge is skipped)
+        low = 0
+        mid = 1
+        high = 2
         if tri[t, mid, 1] < tri[t, low, 1]:
             low, mid = mid, low
-    x0 = tri[t, 0, 0]
-    y0 = tri[t, 0, 1]
-    dzdx = g[0, 1]
-    dqdx = g[1, 1]
-    face = ids[t]
-    for y in range(r0, r1 + 1):
-        kl, kr = span_limits(tri, t, y, low, mid, high, width)
-        if kl >= kr:
-            continue
-        fx = kl - x0
-        fy = y - y0
-        z = g[0, 0] + g[0, 1] * fx + g[0, 2] * fy          # the left end, from the plane
-        qs = g[1, 0] + g[1, 1] * fx + g[1, 2] * fy
-        for x in range(kl, kr):
-            if len(depth) == TEST:
-                if not (z < zbuf[y, x]):
-                    z += dzdx                              # z' = z - A / C
-                    continue
-                zbuf[y, x] = z
-            elif len(depth) == PEEL:
-                if not (z < zbuf[y, x] and z > floor[y, x]):
-                    z += dzdx
-                    continue
-                zbuf[y, x] = z
-            i = x - kl
-            qx = qs + dqdx * i
-            if len(out) == COLOR:
-                for c in range(k):
-                    a = (g[c + 2, 0] + g[c + 2, 1] * (fx + i) + g[c + 2, 2] * fy) / qx
-                    a = min(max(a, 0.0), 255.0)
-                    buf[y, x, c] = np.uint8(int(a + 0.5))
-            else:
-                for c in range(k):
-                    abuf[y, x, c] = (g[c + 2, 0] + g[c + 2, 1] * (fx + i)
-                                     + g[c + 2, 2] * fy) / qx
-                idbuf[y, x] = face
-            z += dzdx
+        if tri[t, high, 1] < tri[t, mid, 1]:
+            mid, high = high, mid
+            if tri[t, mid, 1] < tri[t, low, 1]:
+                low, mid = mid, low
+        x0 = tri[t, 0, 0]
+        y0 = tri[t, 0, 1]
+        dzdx = g[0, 1]
+        dqdx = g[1, 1]
+        # 1/w = 1 everywhere (no w given): the attributes are linear on the screen, and
+        # the division a/w / (1/w) is skipped
+        affine = g[1, 0] == 1.0 and dqdx == 0.0 and g[1, 2] == 0.0
+        face = ids[t]
+        for y in range(r0, r1 + 1):
+            kl, kr = span_limits(tri, t, y, low, mid, high, width)
+            if kl >= kr:
+                continue
+            fx = kl - x0
+            fy = y - y0
+            z = g[0, 0] + g[0, 1] * fx + g[0, 2] * fy          # the left end, from the plane
+            qs = g[1, 0] + g[1, 1] * fx + g[1, 2] * fy
+            for x in range(kl, kr):
+                if len(depth) == TEST or len(depth) == CLEAR_TEST:
+                    if not (z < zbuf[y, x]):
+                        z += dzdx                              # z' = z - A / C
+                        continue
+                    zbuf[y, x] = z
+                elif len(depth) == PEEL:
+                    if not (z < zbuf[y, x] and z > floor[y, x]):
+                        z += dzdx
+                        continue
+                    zbuf[y, x] = z
+                i = x - kl
+                r = 1.0 if affine else 1.0 / (qs + dqdx * i)      # a * 1.0 is exact
+                if len(out) == COLOR:
+                    for c in range(k):
+                        a = (g[c + 2, 0] + g[c + 2, 1] * (fx + i) + g[c + 2, 2] * fy) * r
+                        a = min(max(a, 0.0), 255.0)
+                        buf[y, x, c] = np.uint8(int(a + 0.5))
+                else:
+                    for c in range(k):
+                        abuf[y, x, c] = (g[c + 2, 0] + g[c + 2, 1] * (fx + i)
+                                         + g[c + 2, 2] * fy) * r
+                    idbuf[y, x] = face
+                z += dzdx
 
 
-@parallel_kernel
-def raster_triangles(out, depth, tri, q, att, ids, rows, starts, order, scratch, zbuf, floor,
-                     buf, abuf, idbuf):
-    """Draw the binned triangles band by band, the bands in parallel.
+@kernel
+def raster_triangles(start, step, out, depth, tri, q, att, ids, rows, starts, order, zbuf,
+                     floor, buf, abuf, idbuf):
+    """Draw the binned triangles band by band: the bands ``start``, ``start + step``
+    ... (calls with start = 0 .. step - 1 on as many threads share the raster, each
+    pixel written by its band's call only).
 
     ``tri`` (N, 3, 3) device x, y, depth per vertex; ``q`` (N, 3) 1/w per vertex;
     ``att`` (N, 3, K) attributes per vertex; ``ids`` (N,) the value each triangle
     writes into ``idbuf``; ``rows``, ``starts``, ``order`` from
-    :func:`bin_triangles`; ``scratch`` (bands, K + 2, 3).  Writes ``zbuf`` (H, W)
-    (depth token TEST; PEEL: only between ``floor`` (H, W) and ``zbuf``), and ``buf`` (H, W', K) bytes (out COLOR) or ``abuf`` (H, W,
-    K) and ``idbuf`` (H, W) (out ATTRIBUTES)."""
+    :func:`bin_triangles`.  Writes ``zbuf`` (H, W) (depth token TEST; PEEL: only
+    between ``floor`` (H, W) and ``zbuf``; CLEAR_TEST: each band cleared first, with
+    ``idbuf``), and ``buf`` (H, W', K) bytes (out COLOR)
+    or ``abuf`` (H, W, K) and ``idbuf`` (H, W) (out ATTRIBUTES)."""
     height = zbuf.shape[0]
     bands = starts.shape[0] - 1
-    for b in prange(bands):
-        # int64 throughout: prange's index may come unsigned, and max(int64, uint64)
-        # is a float64 in numba (a second specialization of raster_triangle)
-        lo = np.int64(b) << BAND_SHIFT
-        hi = min(lo + BAND - 1, np.int64(height - 1))
-        g = scratch[b]
-        for e in range(starts[b], starts[b + 1]):
-            t = order[e]
-            r0 = max(rows[t, 0], lo)
-            r1 = min(rows[t, 1], hi)
-            raster_triangle(out, depth, tri, q, att, ids, t, r0, r1, g, zbuf, floor, buf,
-                            abuf, idbuf)
+    g = np.empty((att.shape[2] + 2, 3))
+    for b in range(start, bands, max(step, 1)):
+        lo = b << BAND_SHIFT
+        hi = min(lo + BAND - 1, height - 1)
+        if len(depth) == CLEAR_TEST:
+            for y in range(lo, hi + 1):
+                for x in range(zbuf.shape[1]):
+                    zbuf[y, x] = math.inf
+                if len(out) == ATTRIBUTES:
+                    for x in range(idbuf.shape[1]):
+                        idbuf[y, x] = -1
+        raster_entries(out, depth, tri, q, att, ids, order, starts[b], starts[b + 1], rows, lo,
+                       hi, g, zbuf, floor, buf, abuf, idbuf)

@@ -73,16 +73,18 @@ def _vertex_colors(fb, colors, n):
 
 
 def rasterize(width, height, tri, q, att, ids, zbuf=None, buf=None, abuf=None, idbuf=None,
-              floor=None):
+              floor=None, clear=False):
     """Run the triangle kernel on normalized arrays.
 
     ``buf`` given: the attributes (0..255) are rounded into its bytes; else
     ``abuf`` (H, W, K) float64 and ``idbuf`` (H, W) int64 receive the interpolated
     attributes and ``ids``.  ``zbuf`` None: no depth test (the input order wins);
     ``floor`` (H, W): depth peeling, only fragments behind ``floor`` and in front of
-    ``zbuf`` pass."""
+    ``zbuf`` pass; ``clear``: ``zbuf`` (and ``idbuf``) are cleared to +inf (-1) by
+    the kernel first, on every core (their contents before do not matter)."""
     from .._kernels import raster3d as k
     from .._kernels._jit import call
+    from .._kernels._threads import call_in_bands
     from .._kernels.variants import token
 
     n = len(tri)
@@ -91,9 +93,8 @@ def rasterize(width, height, tri, q, att, ids, zbuf=None, buf=None, abuf=None, i
     starts = np.empty(bands + 1, np.int64)
     entries = call(k.band_entries, 2 * n, tri, height)
     order = np.empty(entries, np.int64)
-    call(k.bin_triangles, 4 * n, tri, height, rows, starts, order)
+    area = call(k.bin_triangles, 4 * n, tri, height, rows, starts, order)
     kk = att.shape[2]
-    scratch = np.empty((bands, kk + 2, 3))
     if buf is not None:
         out = token(k.COLOR)
         abuf = np.empty((1, 1, kk))
@@ -101,22 +102,16 @@ def rasterize(width, height, tri, q, att, ids, zbuf=None, buf=None, abuf=None, i
     else:
         out = token(k.ATTRIBUTES)
         buf = np.empty((1, 1, 1), np.uint8)
-    depth = token(k.TEST if floor is None else k.PEEL)
+    depth = token(k.PEEL if floor is not None else k.CLEAR_TEST if clear else k.TEST)
     if floor is None:
         floor = np.empty((1, 1))
     if zbuf is None:
         depth = token(k.NO_TEST)
         zbuf = np.empty((height, width))
-    # work: the rows of each triangle's box times its width, bounded by the raster
-    spans = (rows[:, 1] - rows[:, 0] + 1).clip(0)
-    if n:
-        xs = tri[:, :, 0]
-        wide = np.clip(xs.max(axis=1), 0, width) - np.clip(xs.min(axis=1), 0, width) + 1
-        work = 20 * n + float((spans * wide).sum()) * (1 + kk)
-    else:
-        work = 0
-    call(k.raster_triangles, work, out, depth, tri, q, att, ids, rows, starts, order,
-         scratch, zbuf, floor, buf, abuf, idbuf)
+    # work: the rows of each triangle's box times its width
+    work = 20 * n + area * (1 + kk)
+    call_in_bands(k.raster_triangles, work, out, depth, tri, q, att, ids, rows, starts, order,
+                  zbuf, floor, buf, abuf, idbuf)
 
 
 def triangles(fb, vertices, colors=None, depth=None, *, w=None):

@@ -16,6 +16,8 @@ perspective-correctly: any attribute of the face (normal, world position, color)
 then known at every pixel.
 """
 
+import weakref
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -62,9 +64,10 @@ class ScreenScene:
         (lambda_0 = 1 - lambda_1 - lambda_2), linear in the eye's space.
     face : ndarray of int64 (T,)
         The source face of each triangle.
-    polygons : list of ndarray (k, 3)
+    polygons : sequence of ndarray (k, 3)
         The clipped device polygon (x, y, depth) of each face that is left, one per
-        entry of ``polygon_face`` (convex: a clipped triangle).
+        entry of ``polygon_face`` (convex: a clipped triangle); a
+        :class:`DevicePolygons`, made on demand.
     polygon_face : ndarray of int64 (P,)
     face_mesh : ndarray of int64 (F,)
         The mesh (index into ``meshes``/``materials``) of each face.
@@ -87,6 +90,10 @@ class ScreenScene:
         C > 0 for a front face), NaN for a face nothing is left of.
     materials : tuple of Material
         One per mesh.
+
+    ``world``, ``normals`` and ``vertex_normals`` are shared with the meshes' kept
+    arrays (:func:`mesh_arrays`): read them, do not write them.  ``vertex_colors``
+    of a mesh without colors is its material's color broadcast (not a copy).
     eye : 3-vector or ViewerAtInfinity
         The viewer for the illumination model.
     camera : Camera
@@ -203,9 +210,97 @@ def back_faces(camera, world):
     return (view * n).sum(axis=1) > 0
 
 
+class DevicePolygons(Sequence):
+    """The clipped device polygons (k, 3) of a scene's faces, made on demand: the
+    faces left whole are rows of one (W, 3, 3) array (no list of W arrays is built
+    unless asked for), followed by the polygons of the faces the volume cut."""
+
+    def __init__(self, whole, cut):
+        self._whole = whole
+        self._cut = cut
+
+    def __len__(self):
+        return len(self._whole) + len(self._cut)
+
+    def __getitem__(self, i):
+        if isinstance(i, slice):
+            return [self[j] for j in range(*i.indices(len(self)))]
+        n = len(self)
+        if not -n <= i < n:
+            raise IndexError(f"polygon index {i} out of range for {n} polygons")
+        i %= n
+        return self._whole[i] if i < len(self._whole) else self._cut[i - len(self._whole)]
+
+
+@dataclass
+class MeshArrays:
+    """What the scene preparation takes from one mesh, per triangle of its fan
+    triangulation: world vertices (F, 3, 3), unit vertex normals (F, 3, 3), unit face
+    normals (F, 3), the stored colors / 255 at the vertices (F, 3, 3; None: the
+    material's color), and the degenerate triangles (F,).  It depends on the mesh
+    only, so :func:`mesh_arrays` keeps it with the mesh."""
+    world: np.ndarray
+    vertex_normals: np.ndarray
+    normals: np.ndarray
+    colors: object
+    degenerate: np.ndarray
+
+
+#: mesh -> (copies of the arrays it was made from, MeshArrays)
+_MESH_ARRAYS = weakref.WeakKeyDictionary()
+
+
+def _mesh_key(mesh):
+    return (mesh.vertices, mesh.face_indices, mesh.face_offsets, mesh.normals, mesh.colors,
+            mesh.color_on)
+
+
+def _same(a, b):
+    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        return (isinstance(a, np.ndarray) and isinstance(b, np.ndarray) and a.shape == b.shape
+                and a.dtype == b.dtype and np.array_equal(a, b))
+    return a == b
+
+
+def mesh_arrays(mesh):
+    """The :class:`MeshArrays` of ``mesh``, computed once and kept while the mesh's
+    vertices, faces, normals and colors are equal to what they were (they are public
+    arrays: a change in place is noticed by comparing them with copies).  Its arrays
+    are read-only (several scenes share them)."""
+    key = _mesh_key(mesh)
+    kept = _MESH_ARRAYS.get(mesh)
+    if kept is not None and all(_same(a, b) for a, b in zip(kept[0], key)):
+        return kept[1]
+    tri = mesh.triangulated()
+    f = tri.face_indices.reshape(-1, 3)
+    world = mesh.vertices[f]
+    vertex = mesh.normals if mesh.normals is not None else averaged_normals(mesh)
+    normals = _unit_rows(np.cross(world[:, 1] - world[:, 0], world[:, 2] - world[:, 0]))
+    if mesh.colors is None:
+        colors = None
+    elif mesh.color_on == "vertex":
+        colors = mesh.colors[f][..., :3] / 255.0
+    else:
+        colors = np.repeat(tri.colors[:, None, :3] / 255.0, 3, axis=1)
+    arrays = MeshArrays(world, _unit_rows(vertex[f]), normals, colors,
+                        ~(np.abs(normals).sum(axis=1) > 0))
+    _MESH_ARRAYS[mesh] = (tuple(a.copy() if isinstance(a, np.ndarray) else a for a in key),
+                          arrays)
+    return arrays
+
+
+def _joined(parts, shape):
+    """One array of ``parts`` (the part itself when there is one: no copy)."""
+    if len(parts) == 1:
+        return parts[0]
+    return np.concatenate(parts) if parts else np.zeros(shape)
+
+
 def prepare(meshes, camera, width, height, materials=None, cull_back_faces=False):
     """The :class:`ScreenScene` of ``meshes`` seen by ``camera`` on a ``width`` x
     ``height`` device."""
+    from .._kernels._threads import call_in_bands
+    from .._kernels.screen import project_faces
     from ..clip import polygons3d
     from ..projection import Camera
 
@@ -213,92 +308,91 @@ def prepare(meshes, camera, width, height, materials=None, cull_back_faces=False
         raise ArgumentTypeError(f"camera must be a scanline.Camera, got {type(camera).__name__}")
     meshes = _meshes(meshes)
     mats = _materials(materials, len(meshes))
-    worlds, vnormals, vcolors, owners = [], [], [], []
-    for i, mesh in enumerate(meshes):
-        tri = mesh.triangulated()
-        f = tri.face_indices.reshape(-1, 3)
-        normals = mesh.normals if mesh.normals is not None else averaged_normals(mesh)
-        worlds.append(mesh.vertices[f])
-        vnormals.append(_unit_rows(normals[f]))
-        if mesh.colors is None:
-            vcolors.append(np.broadcast_to(mats[i].color, f.shape + (3,)))
-        elif mesh.color_on == "vertex":
-            vcolors.append(mesh.colors[f][..., :3] / 255.0)
-        else:
-            vcolors.append(np.repeat(tri.colors[:, None, :3] / 255.0, 3, axis=1))
-        owners.append(np.full(len(f), i, np.int64))
-    world = np.concatenate(worlds) if worlds else np.zeros((0, 3, 3))
+    parts = [mesh_arrays(mesh) for mesh in meshes]
+    world = _joined([p.world for p in parts], (0, 3, 3))
     nf = len(world)
-    normals = _unit_rows(np.cross(world[:, 1] - world[:, 0], world[:, 2] - world[:, 0]))
-    back = back_faces(camera, world) if nf else np.zeros(0, bool)
-    front = ~back
-    culled = back if cull_back_faces else np.zeros(nf, bool)
-    degenerate = ~(np.abs(normals).sum(axis=1) > 0)
-    keep = np.flatnonzero(~culled & ~degenerate)
+    normals = _joined([p.normals for p in parts], (0, 3))
+    vertex_normals = _joined([p.vertex_normals for p in parts], (0, 3, 3))
+    vertex_colors = _joined([p.colors if p.colors is not None else
+                             np.broadcast_to(np.asarray(mats[i].color, np.float64), p.world.shape)
+                             for i, p in enumerate(parts)], (0, 3, 3))
+    degenerate = _joined([p.degenerate for p in parts], (0,))
+    owners = _joined([np.full(len(p.world), i, np.int64) for i, p in enumerate(parts)], (0,))
 
     clip, scale, offset = camera.mapping((0.0, 0.0, float(width - 1), float(height - 1)))
-    h = world[keep] @ clip[:3, :3].T + clip[:3, 3]                  # (K, 3, 3) ... + w
-    hw = (world[keep] @ clip[3, :3] + clip[3, 3])[..., None]
-    hom = np.concatenate([h, hw], axis=2)                           # (K, 3, 4)
-    inside = ((hom @ CLIP_VOLUME.planes.T) >= 0).all(axis=2)         # (K, 3)
-    whole = inside.all(axis=1)
+    view = camera.projection.orientation @ camera.view_matrix
+    if camera.projection.kind == "perspective":
+        toward = np.append(np.asarray(camera.projection.prp, np.float64), 1.0)
+    else:
+        toward = np.append(-_view_direction(camera), 0.0)
+    back = np.empty(nf, np.bool_)
+    inside = np.empty(nf, np.bool_)
+    good = np.empty(nf, np.bool_)
+    dev = np.empty((nf, 3, 3))
+    inv_w = np.empty((nf, 3))
+    planes = np.empty((nf, 4))
+    call_in_bands(project_faces, 40 * nf, np.ascontiguousarray(world),
+                  np.ascontiguousarray(view), toward, np.ascontiguousarray(clip),
+                  np.ascontiguousarray(CLIP_VOLUME.planes),
+                  np.ascontiguousarray(scale, np.float64),
+                  np.ascontiguousarray(offset, np.float64), back, inside, good, dev, inv_w, planes)
+    front = ~back
+    culled = back if cull_back_faces else np.zeros(nf, bool)
+    kept = ~culled & ~degenerate
+    whole = kept & inside
+    drawn = whole & good
+    everything = bool(drawn.all())
+    whole_faces = np.flatnonzero(whole)
+    tface = [np.arange(nf, dtype=np.int64) if everything else np.flatnonzero(drawn)]
+    tris = [dev if everything else dev[tface[0]]]
+    tq = [inv_w if everything else inv_w[tface[0]]]
     eye_bary = np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]])
-    tris = [hom[whole]]
-    bary = [np.broadcast_to(eye_bary, (int(whole.sum()), 3, 2))]
-    tface = [keep[whole]]
+    bary = [np.broadcast_to(eye_bary, (len(tface[0]), 3, 2))]
     polygons, polygon_face = [], []
-    cut = np.flatnonzero(~whole)
+    cut = np.flatnonzero(kept & ~inside)
     if len(cut):
-        rows = np.concatenate([hom[cut], np.broadcast_to(eye_bary, (len(cut), 3, 2))], axis=2)
+        w3 = world[cut]
+        h = w3 @ clip[:3, :3].T + clip[:3, 3]                        # (K, 3, 3) ... + w
+        hw = (w3 @ clip[3, :3] + clip[3, 3])[..., None]
+        hom = np.concatenate([h, hw], axis=2)                       # (K, 3, 4)
+        rows = np.concatenate([hom, np.broadcast_to(eye_bary, (len(cut), 3, 2))], axis=2)
         verts, counts = polygons3d(rows.reshape(-1, 6), CLIP_VOLUME,
                                    counts=np.full(len(cut), 3), homogeneous=True)
         starts = np.concatenate([[0], np.cumsum(counts)])
-        fan_t, fan_b, fan_f = [], [], []
         for j in np.flatnonzero(counts >= 3):
             poly = verts[starts[j]:starts[j + 1]]
             k = len(poly)
             idx = np.stack([np.zeros(k - 2, int), np.arange(1, k - 1), np.arange(2, k)], 1)
-            fan_t.append(poly[idx, :4])
-            fan_b.append(poly[idx, 4:])
-            fan_f.append(np.full(k - 2, keep[cut[j]], np.int64))
-            polygons.append(poly[:, :4])
-            polygon_face.append(keep[cut[j]])
-        if fan_t:
-            tris.append(np.concatenate(fan_t))
-            bary.append(np.concatenate(fan_b))
-            tface.append(np.concatenate(fan_f))
-    hom_t = np.concatenate(tris) if tris else np.zeros((0, 3, 4))
-    w = hom_t[..., 3]
-    with np.errstate(divide="ignore", invalid="ignore"):
-        inv_w = 1.0 / w
-        dev = hom_t[..., :3] * inv_w[..., None] * scale + offset
-    good = np.isfinite(dev).all(axis=(1, 2)) & (w > 0).all(axis=1)
-    face = np.concatenate(tface)[good] if tface else np.zeros(0, np.int64)
-    # the clipped polygon of every face: the whole triangle's, or the clipped one's
-    whole_faces = keep[whole]
-    with np.errstate(divide="ignore", invalid="ignore"):
-        whole_dev = hom[whole][..., :3] / hom[whole][..., 3:] * scale + offset
-        cut_dev = [p[:, :3] / p[:, 3:] * scale + offset for p in polygons]
-    all_polys = list(whole_dev) + cut_dev
-    all_faces = np.concatenate([whole_faces, np.array(polygon_face, np.int64)])
-    planes = np.full((nf, 4), np.nan)
-    planes[whole_faces] = _device_plane(whole_dev)
-    if cut_dev:
-        planes[polygon_face] = [_device_plane(p) for p in cut_dev]
-    from ..lighting.model import ViewerAtInfinity  # noqa: F401  (the eye's type)
-
+            t_hom = poly[idx, :4]
+            with np.errstate(divide="ignore", invalid="ignore"):
+                q = 1.0 / t_hom[..., 3]
+                t_dev = t_hom[..., :3] * q[..., None] * scale + offset
+            ok = np.isfinite(t_dev).all(axis=(1, 2)) & (t_hom[..., 3] > 0).all(axis=1)
+            tris.append(t_dev[ok])
+            tq.append(q[ok])
+            bary.append(poly[idx, 4:][ok])
+            tface.append(np.full(int(ok.sum()), cut[j], np.int64))
+            with np.errstate(divide="ignore", invalid="ignore"):
+                polygons.append(poly[:, :3] / poly[:, 3:4] * scale + offset)
+            polygon_face.append(cut[j])
+    plane = np.full((nf, 4), np.nan)
+    if len(whole_faces) == nf:
+        plane = planes
+    else:
+        plane[whole_faces] = planes[whole_faces]
+    if polygons:
+        plane[polygon_face] = [_device_plane(p) for p in polygons]
+    triangles = _joined(tris, (0, 3, 3))
     return ScreenScene(
         width=int(width), height=int(height),
-        triangles=np.ascontiguousarray(dev[good]), inv_w=np.ascontiguousarray(inv_w[good]),
-        bary=np.ascontiguousarray(np.concatenate(bary)[good] if bary else np.zeros((0, 3, 2))),
-        face=np.ascontiguousarray(face, np.int64),
-        polygons=all_polys, polygon_face=all_faces,
-        face_mesh=np.concatenate(owners) if owners else np.zeros(0, np.int64),
-        front=front, culled=culled, world=world, normals=normals,
-        vertex_normals=np.concatenate(vnormals) if vnormals else np.zeros((0, 3, 3)),
-        vertex_colors=np.ascontiguousarray(np.concatenate(vcolors)) if vcolors
-        else np.zeros((0, 3, 3)),
-        planes=planes, materials=mats, eye=_viewer(camera), camera=camera)
+        triangles=np.ascontiguousarray(triangles), inv_w=np.ascontiguousarray(_joined(tq, (0, 3))),
+        bary=np.ascontiguousarray(_joined(bary, (0, 3, 2))),
+        face=np.ascontiguousarray(_joined(tface, (0,)), np.int64),
+        polygons=DevicePolygons(dev[whole_faces] if len(whole_faces) < nf else dev, polygons),
+        polygon_face=np.concatenate([whole_faces, np.array(polygon_face, np.int64)]),
+        face_mesh=owners, front=front, culled=culled, world=world, normals=normals,
+        vertex_normals=vertex_normals, vertex_colors=vertex_colors,
+        planes=plane, materials=mats, eye=_viewer(camera), camera=camera)
 
 
 def _device_plane(poly):

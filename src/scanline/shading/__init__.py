@@ -63,6 +63,15 @@ def decode(stored, gamma=GAMMA):
     return np.asarray(stored, np.float64) ** gamma
 
 
+def decoded(colors, gamma=GAMMA):
+    """:func:`decode` of stored colors ``colors`` (..., 3), once where they are one
+    color broadcast (the scene's colors of a mesh without colors: its material's)."""
+    colors = np.asarray(colors, np.float64)
+    if colors.ndim > 1 and colors.size and not any(colors.strides[:-1]):
+        return np.broadcast_to(decode(colors[(0,) * (colors.ndim - 1)], gamma), colors.shape)
+    return decode(colors, gamma)
+
+
 def _facing(scene, faces, normals, points):
     """``normals`` turned toward the viewer on faces seen from behind."""
     back = ~scene.front[faces]
@@ -111,7 +120,7 @@ def vertex_intensities(scene, faces, lights, shading="gouraud", specular="phong"
     (U,): Gouraud's vertex intensities, or for ``"flat"`` the face's one intensity
     three times (what :mod:`scanline.shading.buffer` interpolates per pixel)."""
     faces = np.asarray(faces, np.int64)
-    colors = decode(scene.vertex_colors, gamma)
+    colors = decoded(scene.vertex_colors, gamma)
     if shading == "flat":
         per = _flat(scene, faces, colors, lights, specular, None)
         return np.repeat(per[:, None, :], 3, axis=1)
@@ -127,7 +136,7 @@ def shade(scene, faces, bary, lights, shading="gouraud", specular="phong", gamma
     lam = np.empty((len(faces), 3))
     lam[:, 1:] = bary
     lam[:, 0] = 1.0 - bary[:, 0] - bary[:, 1]
-    colors = decode(scene.vertex_colors, gamma)                    # (F, 3, 3)
+    colors = decoded(scene.vertex_colors, gamma)                   # (F, 3, 3)
     vis = _point_visibility(shadows)
     if shading == "flat":
         u, inverse = np.unique(faces, return_inverse=True)
@@ -156,5 +165,5 @@ def shade(scene, faces, bary, lights, shading="gouraud", specular="phong", gamma
             + 4 * l1 * l2 * samples[:, 4] + 4 * l2 * l0 * samples[:, 5])
 
 
-__all__ = ["MODELS", "GAMMA", "shade", "vertex_intensities", "encode", "decode",
+__all__ = ["MODELS", "GAMMA", "shade", "vertex_intensities", "encode", "decode", "decoded",
            "ViewerAtInfinity"]

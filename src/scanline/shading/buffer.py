@@ -10,7 +10,11 @@ the reference (the tests compare the two) and still serves what the kernel does 
 do: fast Phong, shadow maps, depth cueing.
 """
 
+import functools
+
 import numpy as np
+
+from .. import _validate as v
 
 from ..lighting import AmbientLight, DirectionalLight, SpotLight
 from ..lighting.model import ViewerAtInfinity
@@ -48,9 +52,16 @@ def source_rows(lights):
 
 
 def material_rows(materials):
-    """ka, kd, ks, n_s and S_s of each material, (M, 7)."""
-    return np.array([[m.ka, m.kd, m.ks, m.shininess, *m.specular_color] for m in materials],
-                    np.float64).reshape(-1, 7)
+    """ka, kd, ks, n_s, S_s of each material and the least s = V . R (or N . H) whose
+    s^n_s reaches :data:`scanline._kernels.shade.SHINE_FLOOR` (0 for n_s = 0), (M, 8)."""
+    from .._kernels.shade import SHINE_FLOOR
+
+    rows = []
+    for m in materials:
+        n = float(m.shininess)
+        cut = SHINE_FLOOR ** (1.0 / n) if n > 0 else 0.0
+        rows.append([m.ka, m.kd, m.ks, n, *m.specular_color, cut])
+    return np.array(rows, np.float64).reshape(-1, 8)
 
 
 def homogeneous_eye(eye):
@@ -60,10 +71,12 @@ def homogeneous_eye(eye):
     return np.append(np.asarray(eye, np.float64), 1.0)
 
 
+@functools.lru_cache(maxsize=8)
 def gamma_tables(gamma):
     """The gamma encoding as the kernel's tables: the stored value of each of
     ``GAMMA_STEPS`` evenly spaced intensities, and the intensity ((v - 1/2) /
-    255)^gamma from which value v is stored (index 0: -inf, 256: inf)."""
+    255)^gamma from which value v is stored (index 0: -inf, 256: inf).  Kept per
+    gamma, read-only."""
     from .._kernels.shade import GAMMA_STEPS
     from . import encode
 
@@ -71,6 +84,7 @@ def gamma_tables(gamma):
     thresholds = np.empty(257)
     thresholds[0], thresholds[256] = -np.inf, np.inf
     thresholds[1:256] = ((np.arange(1, 256) - 0.5) / 255.0) ** gamma
+    table.flags.writeable = thresholds.flags.writeable = False
     return table, thresholds
 
 
@@ -84,18 +98,18 @@ def shade_buffer(scene, fb, faces, bary, options):
     """Shade the pixels of ``faces`` (H, W; -1: none) with barycentrics ``bary`` (H, W,
     2) into ``fb`` (:func:`drawable` must hold)."""
     from .._kernels import shade as k
-    from .._kernels._jit import call
+    from .._kernels._threads import call_in_bands
     from .._kernels.variants import MODE
-    from . import decode, vertex_intensities
+    from . import decoded, vertex_intensities
 
     lights, gamma = options["lights"], options["gamma"]
     shading = options["shading"]
     sources, ambient = source_rows(lights)
     empty = np.zeros((0, 3, 3))
     if shading == "phong":
-        world = np.ascontiguousarray(scene.world, np.float64)
-        normals = np.ascontiguousarray(scene.vertex_normals, np.float64)
-        colors = np.ascontiguousarray(decode(scene.vertex_colors, gamma))
+        world = v.kernel_array(scene.world)
+        normals = v.kernel_array(scene.vertex_normals)
+        colors = v.kernel_array(decoded(scene.vertex_colors, gamma))
     else:
         world = normals = empty
         colors = np.zeros((scene.face_count, 3, 3))
@@ -104,10 +118,13 @@ def shade_buffer(scene, fb, faces, bary, options):
             colors[seen] = vertex_intensities(scene, seen, lights, shading,
                                               options["specular"], gamma)
     h, w = faces.shape
-    call(k.shade_pixels, h * w * (2 + (8 * len(sources) if shading == "phong" else 0)),
-         np.ascontiguousarray(faces, np.int64), np.ascontiguousarray(bary, np.float64),
-         world, normals, colors, np.ascontiguousarray(scene.front, np.bool_),
-         np.ascontiguousarray(scene.face_mesh, np.int64), material_rows(scene.materials),
-         ambient, np.ascontiguousarray(sources), homogeneous_eye(scene.eye), *gamma_tables(gamma),
-         fb._raster()[0], k.SHADING["phong" if shading == "phong" else "vertex"],
-         k.SPECULAR[options["specular"] if shading == "phong" else "phong"], MODE[fb.mode])
+    work = h * w * (2 + (8 * len(sources) if shading == "phong" else 0))
+    args = (np.ascontiguousarray(faces, np.int64), np.ascontiguousarray(bary, np.float64),
+            world, normals, colors, np.ascontiguousarray(scene.front, np.bool_),
+            np.ascontiguousarray(scene.face_mesh, np.int64), material_rows(scene.materials),
+            ambient, np.ascontiguousarray(sources), homogeneous_eye(scene.eye),
+            *gamma_tables(gamma), fb._raster()[0],
+            k.SHADING["phong" if shading == "phong" else "vertex"],
+            k.SPECULAR[options["specular"] if shading == "phong" else "phong"], MODE[fb.mode])
+    call_in_bands(k.shade_pixels, work, *args)
+

@@ -1,0 +1,225 @@
+"""The fast paths of the triangle rasterizer, the scene preparation and the
+visibility-buffer shading: calls sharing the bands on several threads cover every
+pixel once and give the single call's pixels; band edges keep the polygon fill's
+coverage; the affine path equals the perspective one where 1/w is constant; the
+kernel's clear equals a cleared buffer; the mesh arrays kept for the preparation
+follow changes of the mesh; the highlight floor keeps extreme exponents within one
+stored level of the numpy path."""
+
+import math
+
+import numpy as np
+import pytest
+
+import scanline as sl
+from scanline._kernels import _threads
+from scanline._kernels import raster3d as k
+from scanline._kernels import shade as ks
+from scanline._kernels.variants import MODE, token
+from scanline.render.prepare import DevicePolygons, mesh_arrays, prepare
+from scanline.render.zbuffer import visibility
+from scanline.shading import encode, shade
+from scanline.shading.buffer import gamma_tables, shade_buffer
+
+
+def random_triangles(rng, n, width, height, size):
+    c = rng.uniform(0, [width, height], size=(n, 1, 2))
+    xy = c + rng.uniform(-size, size, size=(n, 3, 2))
+    z = rng.uniform(0, 1, size=(n, 3, 1))
+    return np.ascontiguousarray(np.concatenate([xy, z], axis=2))
+
+
+def draw_in_calls(width, height, tri, att, steps):
+    """The COLOR/TEST kernel run as ``steps`` calls (start 0 .. steps - 1), one after
+    another: each call draws its own bands."""
+    n = len(tri)
+    bands = ((height - 1) >> k.BAND_SHIFT) + 1
+    rows = np.empty((n, 2), np.int64)
+    starts = np.empty(bands + 1, np.int64)
+    order = np.empty(k.band_entries(tri, height), np.int64)
+    k.bin_triangles(tri, height, rows, starts, order)
+    buf = np.zeros((height, width, att.shape[2]), np.uint8)
+    zbuf = np.full((height, width), np.inf)
+    for start in range(steps):
+        k.raster_triangles(start, steps, token(k.COLOR), token(k.TEST), tri, np.ones((n, 3)),
+                           att, np.zeros(n, np.int64), rows, starts, order, zbuf,
+                           np.empty((1, 1)), buf, np.empty((1, 1, 1)),
+                           np.empty((1, 1), np.int64))
+    return buf, zbuf
+
+
+@pytest.mark.parametrize("steps", [2, 3])
+def test_calls_sharing_the_bands_draw_what_one_call_draws(steps):
+    # 300 rows: five bands of 64, the last one short; triangles across band edges
+    rng = np.random.default_rng(7)
+    w, h = 90, 300
+    tri = random_triangles(rng, 400, w, h, 30.0)
+    att = np.ascontiguousarray(rng.uniform(0, 255, size=(400, 3, 3)))
+    one, zone = draw_in_calls(w, h, tri, att, 1)
+    many, zmany = draw_in_calls(w, h, tri, att, steps)
+    assert np.array_equal(one, many) and np.array_equal(zone, zmany)
+    assert np.isfinite(zone).mean() > 0.9
+
+
+def test_threads_split_the_work_without_overlap(monkeypatch):
+    # three threads, one call each with its own start, and the single call's pixels
+    calls = []
+    real = _threads.call
+
+    def counted(kernel, work, start, step, *args):
+        calls.append((kernel.__name__, start, step))
+        return real(kernel, work, start, step, *args)
+
+    monkeypatch.setattr(_threads, "call", counted)
+    rng = np.random.default_rng(8)
+    w, h = 200, 700
+    tri = random_triangles(rng, 3000, w, h, 12.0)
+    gray = rng.uniform(0, 255, size=(3000, 3))
+    images = []
+    for n in (3, 1):
+        monkeypatch.setattr(_threads, "threads", lambda n=n: n)
+        fb = sl.FrameBuffer(w, h, mode="L")
+        depth = sl.DepthBuffer.like(fb)
+        sl.draw.triangles(fb, tri, colors=gray, depth=depth)
+        images.append((fb.to_array(), depth.array.copy()))
+    assert sorted(calls) == [("raster_triangles", 0, 1), ("raster_triangles", 0, 3),
+                             ("raster_triangles", 1, 3), ("raster_triangles", 2, 3)]
+    assert np.array_equal(images[0][0], images[1][0])
+    assert np.array_equal(images[0][1], images[1][1])
+    assert np.isfinite(images[0][1]).mean() > 0.3
+
+
+def test_band_edges_keep_the_polygon_fill_coverage():
+    # triangles whose rows cross the band edges at 63/64 and 127/128
+    rng = np.random.default_rng(9)
+    for _ in range(40):
+        tri = np.concatenate([rng.uniform([0, 40], [40, 150], size=(3, 2)),
+                              rng.uniform(0, 1, size=(3, 1))], axis=1)
+        a = sl.FrameBuffer(40, 160, mode="L")
+        b = sl.FrameBuffer(40, 160, mode="L")
+        sl.draw.triangles(a, [tri], colors=255)
+        sl.draw.polygon(b, tri[:, :2], color=255)
+        assert np.array_equal(a.to_array(), b.to_array()), tri
+
+
+def test_the_affine_path_equals_the_perspective_one_where_w_is_constant():
+    # w = 1 everywhere skips the division a/w / (1/w); w = 2 everywhere takes it:
+    # the same colors within one level (the division rounds)
+    rng = np.random.default_rng(10)
+    w, h = 60, 140
+    tri = random_triangles(rng, 200, w, h, 15.0)
+    colors = rng.uniform(0, 255, size=(200, 3, 3))
+    a = sl.FrameBuffer(w, h)
+    b = sl.FrameBuffer(w, h)
+    sl.draw.triangles(a, tri, colors=colors, depth=sl.DepthBuffer.like(a))
+    sl.draw.triangles(b, tri, colors=colors, depth=sl.DepthBuffer.like(b),
+                      w=np.full((200, 3), 2.0))
+    diff = np.abs(a._raster()[0].astype(int) - b._raster()[0].astype(int))
+    assert diff.max() <= 1 and (diff > 0).mean() < 0.01
+    assert (a._raster()[0] > 0).any(axis=2).mean() > 0.5
+
+
+def scene():
+    cam = sl.Camera(eye=(1.5, 1.0, 5.0), target=(0, 0, 0),
+                    projection=sl.projection.perspective(fov=math.radians(45), near=0.5,
+                                                         far=20))
+    torus = sl.mesh.torus(1.0, 0.35, resolution=(24, 12))
+    return torus, cam
+
+
+def test_the_kernel_clear_equals_a_cleared_buffer():
+    torus, cam = scene()
+    sc = prepare(torus, cam, 70, 150)
+    faces, bary, depth = visibility(sc)                      # cleared by the kernel
+    before = np.full((150, 70), np.inf)
+    f2, b2, d2 = visibility(sc, zbuf=before)                 # cleared beforehand
+    assert np.array_equal(faces, f2) and np.array_equal(depth, d2)
+    seen = faces >= 0
+    assert seen.mean() > 0.1 and (faces[~seen] == -1).all() and np.isinf(depth[~seen]).all()
+    assert np.array_equal(bary[seen], b2[seen])
+
+
+def test_mesh_arrays_follow_changes_of_the_mesh():
+    torus, cam = scene()
+    first = mesh_arrays(torus)
+    assert mesh_arrays(torus) is first                       # kept
+    fb1 = sl.FrameBuffer(60, 50)
+    sl.render(fb1, torus, cam, shading="phong")
+    torus.vertices[:, 2] += 0.3                              # changed in place
+    assert mesh_arrays(torus) is not first
+    fb2 = sl.FrameBuffer(60, 50)
+    sl.render(fb2, torus, cam, shading="phong")
+    fresh = sl.mesh.Mesh(torus.vertices, torus.faces, normals=torus.normals)
+    fb3 = sl.FrameBuffer(60, 50)
+    sl.render(fb3, fresh, cam, shading="phong")
+    assert np.array_equal(fb2.to_array(), fb3.to_array())
+    assert not np.array_equal(fb1.to_array(), fb2.to_array())
+
+
+def test_device_polygons_behave_as_a_list():
+    torus, cam = scene()
+    sc = prepare(torus, cam, 60, 50)
+    polys = sc.polygons
+    assert isinstance(polys, DevicePolygons)
+    listed = list(polys)
+    assert len(listed) == len(polys) == len(sc.polygon_face)
+    assert np.array_equal(polys[-1], listed[-1]) and np.array_equal(polys[0], listed[0])
+    assert [p.shape for p in polys[2:5]] == [(3, 3)] * 3
+    with pytest.raises(IndexError):
+        polys[len(polys)]
+
+
+@pytest.mark.parametrize("shininess", [0.0, 1e6, 3.0])
+def test_extreme_exponents_stay_within_a_level_of_the_numpy_path(shininess):
+    # the highlight floor skips s^n below 1e-12: the pixels still match the numpy path
+    torus, cam = scene()
+    mat = sl.lighting.Material(ka=0.2, kd=0.5, ks=0.6, shininess=shininess)
+    sc = prepare(torus, cam, 64, 48, mat)
+    faces, bary, _ = visibility(sc)
+    ys, xs = np.nonzero(faces >= 0)
+    lights = [sl.lighting.AmbientLight(0.1),
+              sl.lighting.DirectionalLight((0.4, -0.6, -1.0), 0.8),
+              sl.lighting.PointLight((2, 3, 4), 0.5)]
+    fb = sl.FrameBuffer(64, 48)
+    shade_buffer(sc, fb, faces, bary, dict(lights=lights, shading="phong", specular="phong",
+                                           gamma=2.2))
+    got = fb._raster()[0][ys, xs].astype(int)
+    want = encode(shade(sc, faces[ys, xs], bary[ys, xs], lights, "phong", "phong", 2.2), 2.2)
+    assert np.abs(got - want).max() <= 1
+    assert (got != want).mean() < 0.01
+
+
+def test_shading_calls_sharing_the_bands_write_every_pixel_once():
+    torus, cam = scene()
+    sc = prepare(torus, cam, 50, 140)
+    faces, bary, _ = visibility(sc)
+    table, thresholds = gamma_tables(2.2)
+    from scanline.shading.buffer import homogeneous_eye, material_rows, source_rows
+
+    sources, ambient = source_rows([sl.lighting.AmbientLight(0.2),
+                                    sl.lighting.DirectionalLight((0.4, -0.6, -1.0), 0.8)])
+    args = (faces, bary, sc.world, sc.vertex_normals,
+            np.ascontiguousarray(np.broadcast_to(sc.vertex_colors, sc.world.shape)),
+            sc.front, sc.face_mesh, material_rows(sc.materials), ambient, sources,
+            homogeneous_eye(sc.eye), table, thresholds)
+    images = []
+    for steps in (1, 3):
+        raster = np.zeros((140, 50, 3), np.uint8)
+        for start in range(steps):
+            ks.shade_pixels(start, steps, *args, raster, ks.SHADING["phong"],
+                            ks.SPECULAR["phong"], MODE["RGB"])
+        images.append(raster)
+    assert np.array_equal(images[0], images[1])
+    assert (images[0].any(axis=2) == (faces >= 0)).mean() > 0.99
+
+
+def test_the_work_estimate_counts_the_boxes():
+    tri = np.array([[(0.0, 0.0, 0), (10.0, 0.0, 0), (0.0, 10.0, 0)],
+                    [(5.0, 5.0, 0), (5.0, 5.0, 0), (5.0, 5.0, 0)]])
+    rows = np.empty((2, 2), np.int64)
+    starts = np.empty(2, np.int64)
+    order = np.empty(k.band_entries(tri, 20), np.int64)
+    area = k.bin_triangles(tri, 20, rows, starts, order)
+    # rows 1..10 (the bottom edge on row 0 is outside), 11 pixels wide; the point
+    # covers no row
+    assert area == 10 * 11.0 and rows.tolist() == [[1, 10], [6, 5]]

@@ -148,7 +148,8 @@ def vertex_row(y, faces, bary, colors, lin):
 def phong_row(y, faces, bary, world, normals, colors, front, face_mat, mats, ambient, sources,
               far, eye, lin, spec):
     """Row ``y`` of Phong shading: the model at each pixel's point with the
-    interpolated, renormalized normal (``far``: :func:`far_sources`)."""
+    interpolated, renormalized normal (``far``: the lights at infinity, see
+    :func:`shade_pixels`)."""
     nf = colors.shape[0]
     last = mats.shape[0] - 1
     for x in range(faces.shape[1]):

@@ -27,7 +27,7 @@ from ..mesh import Mesh
 from ..visible import (BSPTree, ScreenPolygons, area_subdivision, depth_sort, painter,
                        scan_line)
 from ..visible.bsp import camera_eye
-from ..visible.polygons import project
+from ..visible.polygons import flat_polygons, project
 from .output import Rendering, write_visible
 from .pieces import draw_pieces, face_functions
 
@@ -35,8 +35,8 @@ from .pieces import draw_pieces, face_functions
 def screen_polygons(scene):
     """The scene's clipped device polygons as :class:`~scanline.visible.ScreenPolygons`
     (faces numbered as the scene's; culled faces are already gone)."""
-    return ScreenPolygons.from_device(list(scene.polygons), scene.width, scene.height,
-                                      faces=np.asarray(scene.polygon_face, np.int64))
+    verts, counts = scene.polygons.flat()
+    return flat_polygons(verts, counts, scene.polygon_face, scene.width, scene.height)
 
 
 def _bsp_pieces(scene, options):

@@ -231,6 +231,14 @@ class DevicePolygons(Sequence):
         i %= n
         return self._whole[i] if i < len(self._whole) else self._cut[i - len(self._whole)]
 
+    def flat(self):
+        """All the polygons at once: ``(vertices (V, 3), counts (P,))``, in order."""
+        whole = np.asarray(self._whole, np.float64).reshape(-1, 3)
+        cut = [np.asarray(p, np.float64) for p in self._cut]
+        counts = np.concatenate([np.full(len(self._whole), 3, np.int64),
+                                 np.array([len(p) for p in cut], np.int64)])
+        return np.concatenate([whole] + cut) if cut else whole, counts
+
 
 @dataclass
 class MeshArrays:

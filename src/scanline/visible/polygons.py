@@ -155,6 +155,16 @@ class ScreenPolygons:
         return _assemble(verts, counts, faces.astype(np.int64), w, h)
 
 
+def flat_polygons(vertices, counts, faces, width, height):
+    """:class:`ScreenPolygons` from device polygons given flat -- ``vertices`` (V, 3),
+    ``counts`` (P,), ``faces`` (P,) -- that are planar by construction (clipped
+    triangles): checked convex, those without area dropped, their planes found, all at
+    once (:meth:`ScreenPolygons.from_device` checks each polygon's input first)."""
+    return _assemble(np.ascontiguousarray(vertices, np.float64),
+                     np.asarray(counts, np.int64), np.asarray(faces, np.int64),
+                     v.positive_int("width", width), v.positive_int("height", height))
+
+
 @dataclass
 class VisibleFaces:
     """What an image-space method sees: the face at each pixel and its depth.

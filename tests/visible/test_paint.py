@@ -66,3 +66,30 @@ def test_far_pieces_paint_nothing_outside_and_the_rest_right():
     inside = sl.FrameBuffer(W, H, mode="L")
     sl.draw.polygon(inside, big[:, :2], color=200)
     assert np.array_equal(a, inside.to_array()) and (a == 200).sum() > 0
+
+
+def test_threads_share_the_rows_and_keep_the_order(monkeypatch):
+    # a frame large enough that the painting is shared by threads (three here, each
+    # taking every third band of rows); overlapping pieces, so a band painted out of
+    # order would show
+    from scanline._kernels import _threads
+
+    monkeypatch.setattr(_threads, "threads", lambda: 3)
+    rng = np.random.default_rng(11)
+    w, h = 400, 300
+    polys = []
+    for _ in range(150):
+        c = rng.uniform([0, 0], [w, h])
+        ang = np.sort(rng.uniform(0, 2 * np.pi, 5))
+        xy = c + rng.uniform(5, 60) * np.c_[np.cos(ang), np.sin(ang)]
+        polys.append(np.c_[xy, np.full(5, 0.5)])
+    sp = ScreenPolygons.from_device(polys, w, h)
+    ours = sl.FrameBuffer(w, h, mode="RGB")
+    theirs = sl.FrameBuffer(w, h, mode="RGB")
+    values = rng.integers(0, 256, (len(polys), 3)).astype(np.uint8)
+    assert w * h > sl._kernels._jit.TWIN_WORK          # (smaller work: one call)
+    paint(ours, sp, values)
+    for p in range(len(sp)):
+        sl.draw.polygon(theirs, sp.polygon(p)[:, :2],
+                        color=tuple(int(c) for c in values[sp.face[p]]))
+    assert np.array_equal(ours.to_array(), theirs.to_array())

@@ -53,14 +53,21 @@ def covers(verts, start, end, x, y):
     return odd
 
 
+#: Bands of 2**PAINT_BAND_SHIFT rows share the painting between threads.
+PAINT_BAND_SHIFT = 4
+
+
 @kernel
-def paint_convex(buf, layout, width, height, verts, offsets, colors):
+def paint_convex(band, step, buf, layout, width, height, verts, offsets, colors):
     """Paint convex polygons in order, polygon ``p`` (``verts[offsets[p]:offsets[p +
     1]]``) in ``colors[p]``: the object-order methods' painting.  A convex polygon
     has two crossings on each scan line it covers, and the span between them is the
     2-D fill's (``ceil(xl) <= x < ceil(xr)``, each crossing the expression of
     :func:`crossing`): each edge adds its crossings to the lowest and highest x of
-    its rows, with no edge table to sort."""
+    its rows, with no edge table to sort.  The rows of this call are those of the
+    bands of 2**PAINT_BAND_SHIFT rows numbered ``band``, ``band + step``, ...
+    (:mod:`scanline._kernels._threads`: one call per thread; in each band the
+    polygons are painted in order)."""
     xl = np.empty(height)
     xr = np.empty(height)
     for p in range(offsets.shape[0] - 1):
@@ -97,13 +104,15 @@ def paint_convex(buf, layout, width, height, verts, offsets, colors):
             first = int(min(max(np.floor(ylo) + 1.0, float(r0)), float(height)))
             last = int(max(min(np.floor(yhi), float(r1)), -1.0))
             for r in range(first, last + 1):
+                if (r >> PAINT_BAND_SHIFT) % step != band:
+                    continue
                 xc = xlo + ((r - ylo) * dx) / dy
                 if xc == xc:             # not NaN (inf - inf over a huge edge)
                     xl[r] = min(xl[r], xc)
                     xr[r] = max(xr[r], xc)
         color = colors[p]
         for r in range(r0, r1 + 1):
-            if xl[r] < xr[r]:
+            if (r >> PAINT_BAND_SHIFT) % step == band and xl[r] < xr[r]:
                 x0 = min(max(np.ceil(xl[r]), 0.0), float(width))
                 x1 = max(min(np.ceil(xr[r]), float(width)), 0.0) - 1.0
                 span(buf, layout, width, height, r, int(x0), int(x1), color)

@@ -4,7 +4,6 @@ shaded (each face one color)."""
 import numpy as np
 
 from .. import _validate as v
-from .._kernels._jit import call
 from .._kernels.variants import layout
 from ..draw._common import target
 from ..errors import ArgumentValueError
@@ -75,6 +74,7 @@ def paint(fb, result, values):
     is).  ``values``: pixel values (F, channels) per face."""
     if isinstance(result, ScreenPolygons):
         if len(result):
+            from .._kernels._threads import call_in_bands
             from .._kernels.visible import paint_convex
 
             buf, packed = fb._raster()
@@ -82,7 +82,7 @@ def paint(fb, result, values):
             colors = np.ascontiguousarray(values[result.face], np.uint8)
             # work: a frame's worth of pixels and ten units a vertex (the pieces' own
             # areas would cost more to add up than small scenes take to paint)
-            call(paint_convex, fb.width * fb.height + 10 * len(verts), buf, layout(packed), fb.width, fb.height, verts, result.offsets, colors)
+            call_in_bands(paint_convex, fb.width * fb.height + 10 * len(verts), buf, layout(packed), fb.width, fb.height, verts, result.offsets, colors)
         return
     face = result.face
     buf, packed = fb._raster()

@@ -226,7 +226,7 @@ def compile_markdown(path=os.path.join(HERE, "results", "compile.json")):
     worst = max((r for r in record["rows"] if not r["case"].startswith("scanline demo")),
                 key=seconds)
     out += ["", f"Worst row: {worst['case']}" + (f" [{worst['mode']}]" if worst.get("mode") else "")
-            + f", {seconds(worst):.2f} s; every row ok: "
+            + f", {seconds(worst):.2f} s; every case ran without an error: "
             + ("yes" if all(r["ok"] for r in record["rows"]) else "no")]
     return "\n".join(out)
 

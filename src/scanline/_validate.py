@@ -134,6 +134,25 @@ def choice(name: str, value: T, options: Sequence[Any]) -> T:
     raise ArgumentValueError(f"{name} must be one of {listed}; got {_show(value)}")
 
 
+def one_or_many(name: str, value: object, kinds: Any, what: str,
+                empty: bool = True) -> tuple[Any, ...]:
+    """``value`` as a tuple: one object of ``kinds`` (a type or a tuple of types), or
+    any iterable of them; ``what`` names the kind in the error (e.g. "a
+    scanline.mesh.Mesh").  ``empty=False`` refuses an empty collection."""
+    if isinstance(value, kinds):
+        return (value,)
+    items: Optional[tuple[Any, ...]] = None
+    if isinstance(value, Iterable) and not isinstance(value, (str, bytes)):
+        items = tuple(value)
+    if items is None or (not empty and not items):
+        raise ArgumentTypeError(f"{name} must be {what} or a{'' if empty else ' non-empty'} "
+                                f"list of them, got {_show(value)}")
+    for i, item in enumerate(items):
+        if not isinstance(item, kinds):
+            raise ArgumentTypeError(f"{name}[{i}] must be {what}, got {_show(item)}")
+    return items
+
+
 def positive_int(name: str, value: object, minimum: int = 1) -> int:
     """Check an integer size argument (``width``, ``height`` ...)."""
     if isinstance(value, bool) or not isinstance(value, numbers.Integral):

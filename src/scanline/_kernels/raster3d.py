@@ -173,6 +173,22 @@ def setup(tri, q, att, t, g):
 
 
 @inline
+def rising(tri, t):
+    """Triangle ``t``'s vertices by rising y (ties keep index order, so that the
+    horizontal edge is skipped): ``(low, mid, high)``."""
+    low = 0
+    mid = 1
+    high = 2
+    if tri[t, mid, 1] < tri[t, low, 1]:
+        low, mid = mid, low
+    if tri[t, high, 1] < tri[t, mid, 1]:
+        mid, high = high, mid
+        if tri[t, mid, 1] < tri[t, low, 1]:
+            low, mid = mid, low
+    return low, mid, high
+
+
+@inline
 def span_limits(tri, t, y, low, mid, high, width):
     """The span ``kl <= x < kr`` of triangle ``t`` (vertices ``low``, ``mid``,
     ``high`` by rising y) on scan line ``y``, clamped to ``0 .. width``."""
@@ -220,16 +236,7 @@ def raster_entries(out, depth, tri, q, att, ids, order, e0, e1, rows, lo, hi, g,
         if not setup(tri, q, att, t, g):
             continue
         k = att.shape[2]
-        # vertices by rising y (ties keep index order: the horizontal edge is skipped)
-        low = 0
-        mid = 1
-        high = 2
-        if tri[t, mid, 1] < tri[t, low, 1]:
-            low, mid = mid, low
-        if tri[t, high, 1] < tri[t, mid, 1]:
-            mid, high = high, mid
-            if tri[t, mid, 1] < tri[t, low, 1]:
-                low, mid = mid, low
+        low, mid, high = rising(tri, t)
         x0 = tri[t, 0, 0]
         y0 = tri[t, 0, 1]
         dzdx = g[0, 1]

@@ -18,7 +18,7 @@ import numpy as np
 from numba import prange
 
 from ._jit import kernel, parallel_kernel
-from .raster3d import setup, span_limits
+from .raster3d import rising, setup, span_limits
 
 #: Tile size (pixels, a power of two) and its shift.
 TILE_SHIFT = 4
@@ -94,15 +94,7 @@ def setups(tri, q, att, g, ok, rank):
     rising y."""
     for t in range(tri.shape[0]):
         ok[t] = setup(tri, q, att, t, g[t])
-        low = 0
-        mid = 1
-        high = 2
-        if tri[t, mid, 1] < tri[t, low, 1]:
-            low, mid = mid, low
-        if tri[t, high, 1] < tri[t, mid, 1]:
-            mid, high = high, mid
-            if tri[t, mid, 1] < tri[t, low, 1]:
-                low, mid = mid, low
+        low, mid, high = rising(tri, t)
         rank[t, 0] = low
         rank[t, 1] = mid
         rank[t, 2] = high

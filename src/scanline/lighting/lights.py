@@ -134,16 +134,6 @@ def light_list(lights):
     """``lights`` as a tuple of light objects, or an error naming the bad one."""
     if lights is None:
         return ()
-    if isinstance(lights, LIGHTS):
-        return (lights,)
-    try:
-        items = tuple(lights)
-    except TypeError:
-        raise ArgumentTypeError(f"lights must be a light or a list of lights, got "
-                                f"{v._show(lights)}") from None
-    for i, light in enumerate(items):
-        if not isinstance(light, LIGHTS):
-            raise ArgumentTypeError(
-                f"lights[{i}] must be an AmbientLight, DirectionalLight, PointLight or "
-                f"SpotLight from sl.lighting, got {v._show(light)}")
-    return items
+    return v.one_or_many("lights", lights, LIGHTS,
+                         "an AmbientLight, DirectionalLight, PointLight or SpotLight from "
+                         "sl.lighting")

@@ -23,6 +23,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..clip.volumes import Volume
+from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
 from ..lighting.material import Material
 from ..mesh import Mesh
@@ -133,20 +134,12 @@ def _unit_rows(a):
 def averaged_normals(mesh):
     """Vertex normals (V, 3) averaged from the unit normals of the faces sharing each
     vertex (Hearn & Baker, section 14-5, Gouraud shading: N_v = sum N_k / |sum N_k|)."""
+    from ..visible.polygons import newell_planes
+
     idx, off = mesh.face_indices, mesh.face_offsets
     owner = np.repeat(np.arange(mesh.face_count), np.diff(off))
-    v = mesh.vertices
-    # Newell's normal of each face
-    nxt = np.arange(len(idx)) + 1
-    nxt[off[1:] - 1] = off[:-1]
-    a, b = v[idx], v[idx[nxt]]
-    terms = np.stack([(a[:, 1] - b[:, 1]) * (a[:, 2] + b[:, 2]),
-                      (a[:, 2] - b[:, 2]) * (a[:, 0] + b[:, 0]),
-                      (a[:, 0] - b[:, 0]) * (a[:, 1] + b[:, 1])], axis=1)
-    fn = np.zeros((mesh.face_count, 3))
-    np.add.at(fn, owner, terms)
-    fn = _unit_rows(fn)
-    out = np.zeros_like(v)
+    fn = _unit_rows(newell_planes(mesh.vertices[idx], off)[:, :3])   # Newell's normals
+    out = np.zeros_like(mesh.vertices)
     np.add.at(out, idx, fn[owner])
     return _unit_rows(out)
 
@@ -165,18 +158,7 @@ def _materials(materials, n):
 
 
 def _meshes(meshes):
-    if isinstance(meshes, Mesh):
-        return (meshes,)
-    try:
-        items = tuple(meshes)
-    except TypeError:
-        raise ArgumentTypeError(f"meshes must be a Mesh or a list of Mesh, got "
-                                f"{type(meshes).__name__}") from None
-    for i, m in enumerate(items):
-        if not isinstance(m, Mesh):
-            raise ArgumentTypeError(f"meshes[{i}] must be a scanline.mesh.Mesh, got "
-                                    f"{type(m).__name__}")
-    return items
+    return v.one_or_many("meshes", meshes, Mesh, "a scanline.mesh.Mesh")
 
 
 def _viewer(camera):

@@ -276,13 +276,7 @@ def meshes_list(meshes):
     """``meshes`` as a non-empty list of :class:`scanline.mesh.Mesh`."""
     from ..mesh import Mesh
 
-    group = [meshes] if isinstance(meshes, Mesh) else list(meshes) \
-        if isinstance(meshes, (list, tuple)) else None
-    if not group or not all(isinstance(m, Mesh) for m in group):
-        raise ArgumentTypeError(
-            f"meshes must be a scanline.mesh.Mesh or a non-empty list of them, got "
-            f"{v._show(meshes)}")
-    return group
+    return list(v.one_or_many("meshes", meshes, Mesh, "a scanline.mesh.Mesh", empty=False))
 
 
 def world_polygons(meshes):
@@ -298,16 +292,10 @@ def world_polygons(meshes):
         sizes = np.diff(off)
         nf = len(sizes)
         owner = np.repeat(np.arange(nf), sizes)
-        nxt = np.arange(1, len(idx) + 1)
-        nxt[off[1:] - 1] = off[:-1]
-        p, q = mesh.vertices[idx], mesh.vertices[idx[nxt]]
-        normal = np.stack([(p[:, 1] - q[:, 1]) * (p[:, 2] + q[:, 2]),
-                           (p[:, 2] - q[:, 2]) * (p[:, 0] + q[:, 0]),
-                           (p[:, 0] - q[:, 0]) * (p[:, 1] + q[:, 1])], axis=1)
-        n = np.add.reduceat(normal, off[:-1], axis=0)
-        centroid = np.add.reduceat(p, off[:-1], axis=0) / sizes[:, None]
-        norm = np.linalg.norm(n, axis=1)
-        dist = np.abs(np.einsum("ij,ij->i", p - centroid[owner], n[owner]))
+        p = mesh.vertices[idx]
+        plane = newell_planes(p, off)
+        norm = np.linalg.norm(plane[:, :3], axis=1)
+        dist = np.abs(np.einsum("ij,ij->i", p, plane[owner, :3]) + plane[owner, 3])
         off_plane = np.maximum.reduceat(dist, off[:-1]) / np.where(norm > 0, norm, 1.0)
         size = (np.maximum.reduceat(p, off[:-1], axis=0)
                 - np.minimum.reduceat(p, off[:-1], axis=0)).max(axis=1)

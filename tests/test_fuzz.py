@@ -385,11 +385,18 @@ def test_lines_batch_fuzz(value):
         a = None
     if (a is not None and a.ndim == 2 and a.shape[1] == 4 and np.isfinite(a).all()
             and (np.abs(a) > LIMIT).any()):
-        # far rows are drawn since issue 11: each pixel near one of the exact segments
+        # far rows are drawn since issue 11: each of their pixels near the exact
+        # segment; the rows in range are rounded to pixel centers and drawn exactly
         fb = fresh("RGB")
         sl.draw.lines(fb, value, color="white")
         got = lit(fb)
-        assert all(any(near_ideal_line({p}, *row) for row in a.tolist()) for p in got)
+        far = (np.abs(a) > LIMIT).any(axis=1)
+        exact = set()
+        for row in np.floor(a[~far] + 0.5).astype(np.int64).tolist():
+            exact |= bresenham_visible(*row, W, H)
+        assert exact <= got
+        assert all(any(near_ideal_line({p}, *row) for row in a[far].tolist())
+                   for p in got - exact)
         return
     _check_batch(sl.draw.lines, value, 4, "segments", lambda *s: bresenham_visible(*s, W, H))
 

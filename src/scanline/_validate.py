@@ -198,27 +198,30 @@ def coordinate_array(name: str, value: object, columns: int,
         raise ArgumentValueError(
             f"{name} must have shape (N, {columns}), got shape {a.shape}"
         )
-    if not np.isfinite(a).all():
-        row = int(np.argwhere(~np.isfinite(a))[0][0])
-        raise ArgumentValueError(
-            f"{name} must be finite; row {row} is {a[row].tolist()}"
-        )
-    if guard and a.size:
-        from .geometry.guard import segments
-        a = segments(np.ascontiguousarray(a, np.float64))  # type: ignore[no-untyped-call]
-    if a.size and np.abs(a).max() > COORD_LIMIT:
-        row = int(np.argwhere(np.abs(a) > COORD_LIMIT)[0][0])
-        raise ArgumentValueError(
-            f"{name} row {row} = {a[row].tolist()} is outside the supported coordinate "
-            f"range [-{COORD_LIMIT}, {COORD_LIMIT}]"
-        )
+    # in range (the common case) in two passes without temporaries; NaN fails both
+    if a.size and not (-COORD_LIMIT <= a.min() and a.max() <= COORD_LIMIT):
+        if not np.isfinite(a).all():
+            row = int(np.argwhere(~np.isfinite(a))[0][0])
+            raise ArgumentValueError(
+                f"{name} must be finite; row {row} is {a[row].tolist()}"
+            )
+        if guard:
+            from .geometry.guard import segments
+            a = segments(np.ascontiguousarray(a, np.float64))  # type: ignore[no-untyped-call]
+        if np.abs(a).max() > COORD_LIMIT:
+            row = int(np.argwhere(np.abs(a) > COORD_LIMIT)[0][0])
+            raise ArgumentValueError(
+                f"{name} row {row} = {a[row].tolist()} is outside the supported coordinate "
+                f"range [-{COORD_LIMIT}, {COORD_LIMIT}]"
+            )
     for c in radius_columns:
         if a.size and (a[:, c] < 0).any():
             row = int(np.argwhere(a[:, c] < 0)[0][0])
             raise ArgumentValueError(
                 f"{name} column {c} holds radii, which must be >= 0; row {row} is {a[row].tolist()}"
             )
-    return np.ascontiguousarray(np.floor(a + 0.5).astype(np.int64))
+    half = np.add(a, 0.5)
+    return np.floor(half, out=half).astype(np.int64, order="C")
 
 
 #: Largest value an int64 holds.

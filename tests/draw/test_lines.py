@@ -469,6 +469,37 @@ def test_batch_lines_equal_a_loop_of_line(mode, method):
     assert np.array_equal(c.to_array(), a.to_array())
 
 
+@pytest.mark.parametrize("mode", ["1", "L", "RGB"])
+def test_batch_on_threads_equals_the_lines_drawn_in_order(mode, monkeypatch):
+    # a batch large enough to be shared by threads (three here): each thread draws
+    # the bands of 32 rows it owns, a line crossing bands in each of them; per-line
+    # colors, later lines over earlier ones, and packed bits where neighbouring bands
+    # are written by different threads.  The reference: every line's own Bresenham
+    # pixels (tests/reference.py), painted in the batch's order.
+    from scanline._kernels import _threads
+    monkeypatch.setattr(_threads, "threads", lambda: 3)
+    calls = []
+    real = _threads.call
+    monkeypatch.setattr(_threads, "call", lambda *a: calls.append(a[2:4]) or real(*a))
+    rng = np.random.default_rng(5)
+    w, h = 203, 171
+    n = 30_000
+    start = rng.integers(-30, [w + 30, h + 30], (n, 2))
+    length = np.where(rng.random((n, 1)) < 0.9, 3, 120)   # mostly short, some long
+    segs = np.concatenate([start, start + rng.integers(-length, length + 1, (n, 2))], axis=1)
+    levels = {"1": 2, "L": 256, "RGB": 256}[mode]
+    values = rng.integers(0, levels, n)
+    color = values if mode != "RGB" else np.stack([values, 255 - values, values // 2], axis=1)
+    fb = sl.FrameBuffer(w, h, mode=mode)
+    sl.draw.lines(fb, segs, color=color)
+    assert sorted(calls) == [(0, 3), (1, 3), (2, 3)]
+    expected = np.zeros(fb.to_array().shape, np.uint8)
+    for row, value in zip(segs.tolist(), color.tolist()):
+        for x, y in bresenham_visible(*row, w, h):
+            expected[h - 1 - y, x] = value
+    assert np.array_equal(fb.to_array(), expected if mode != "1" else expected.astype(bool))
+
+
 def test_per_primitive_colors():
     segs = [(0, 0, 9, 0), (0, 2, 9, 2), (5, 0, 5, 4)]
     # names, one per segment; later segments overwrite earlier ones

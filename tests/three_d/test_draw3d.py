@@ -60,6 +60,33 @@ def test_wireframe_is_draw_lines_of_the_clipped_projected_edges(eye):
     assert (fb.to_array() == fb_ref.to_array()).all()
 
 
+def test_edges_projected_on_threads_keep_the_order_of_the_edges(monkeypatch):
+    # enough edges for the projection to be split between threads (three chunks here):
+    # the rows come back in the order of the edges, ``which`` naming each row's edge
+    # in the whole list, equal to the independent clipping and projection
+    from scanline._kernels import _threads
+    monkeypatch.setattr(_threads, "threads", lambda: 3)
+    chunks = []
+    real = _threads.call
+    monkeypatch.setattr(_threads, "call", lambda kernel, work, *a: chunks.append(len(a[4]))
+                        or real(kernel, work, *a))
+    mesh = sl.mesh.sphere(1.0, resolution=(96, 48))
+    eye = (0.6, 0.3, 1.2)
+    view = glu_look_at(eye, (0, 0, 0), (0, 1, 0))
+    v = np.hstack([mesh.vertices, np.ones((len(mesh.vertices), 1))]) @ view.T
+    e = mesh.edges
+    assert 20 * len(e) > sl._kernels._jit.TWIN_WORK
+    _, ok = reference_segments(np.hstack([v[e[:, 0], :3], v[e[:, 1], :3]]),
+                               viewing_frustum_planes(FOV, (W - 1) / (H - 1), NEAR, FAR), 3)
+    segs, depth, which = sl.draw3d.project_edges(mesh.vertices, e, camera(eye), W, H)
+    assert len(chunks) == 3 and sum(chunks) == len(e)
+    assert 0 < ok.sum() < len(e)
+    assert np.array_equal(which, np.flatnonzero(ok))
+    np.testing.assert_allclose(segs, reference_device_segments(mesh, eye, (0, 0, 0)),
+                               atol=1e-7)
+    assert depth.shape == (len(segs), 2) and ((0 <= depth) & (depth <= 1)).all()
+
+
 def test_attributes_and_antialiasing_pass_through():
     mesh = sl.mesh.torus(1.0, 0.3, resolution=(12, 6))
     cam = camera()

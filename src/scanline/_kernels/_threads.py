@@ -8,9 +8,9 @@ kernel's arrays, so every call of a helper that takes arrays updates the same
 reference counts from both cores (the triangle kernel ran slower on two threads than
 on one); separate calls own their arrays' counts."""
 
-from concurrent.futures import ThreadPoolExecutor
+import threading
 
-from ._jit import TWIN_WORK, call
+from ._jit import TWIN_WORK, WAIT, call
 
 
 def threads():
@@ -19,6 +19,35 @@ def threads():
     import numba
 
     return numba.get_num_threads()
+
+
+def _together(calls):
+    """The ``(kernel, work, *args)`` calls at once, through
+    :func:`scanline._kernels._jit.call`: the first in this thread, the others in
+    daemon threads waited for in steps of :data:`~scanline._kernels._jit.WAIT`
+    seconds, so that Ctrl-C reaches the caller at once (the other calls finish in
+    the background, as a long kernel does).  Returns their results in order."""
+    results = [None] * len(calls)
+    errors = []
+
+    def run(i):
+        try:
+            results[i] = call(*calls[i])
+        except BaseException as error:      # handed to the caller below
+            errors.append(error)
+
+    others = [threading.Thread(target=run, args=(i,), daemon=True,
+                               name=f"scanline {getattr(calls[i][0], '__name__', 'kernel')}")
+              for i in range(1, len(calls))]
+    for thread in others:
+        thread.start()
+    results[0] = call(*calls[0])
+    for thread in others:
+        while thread.is_alive():
+            thread.join(WAIT)
+    if errors:
+        raise errors[0]
+    return results
 
 
 def call_in_bands(kernel, work, *args):
@@ -30,10 +59,19 @@ def call_in_bands(kernel, work, *args):
     step = threads() if work > TWIN_WORK else 1
     if step <= 1:
         return call(kernel, work, 0, 1, *args)
-    with ThreadPoolExecutor(step - 1) as pool:
-        others = [pool.submit(call, kernel, work / step, i, step, *args)
-                  for i in range(1, step)]
-        call(kernel, work / step, 0, step, *args)
-        for job in others:
-            job.result()
+    _together([(kernel, work / step, i, step) + args for i in range(step)])
     return None
+
+
+def call_in_chunks(kernel, work, n, args_of):
+    """``kernel(*args_of(lo, hi))`` for consecutive chunks [lo, hi) of range(n), one
+    call per thread (one chunk when the ``work`` is at most
+    :data:`~scanline._kernels._jit.TWIN_WORK` units, as in :func:`call_in_bands`).
+    Returns ``[(lo, result), ...]`` in the order of the chunks: a kernel that writes
+    its chunk's results to the front of its output slices leaves them for the caller
+    to join."""
+    step = min(threads() if work > TWIN_WORK else 1, max(n, 1))
+    bounds = [n * i // step for i in range(step + 1)]
+    results = _together([(kernel, work / step) + tuple(args_of(bounds[i], bounds[i + 1]))
+                         for i in range(step)])
+    return list(zip(bounds, results))

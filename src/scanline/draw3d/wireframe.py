@@ -68,6 +68,7 @@ def project_edges_into(vertices, edges, camera, box, aspect=None, details=True):
     """
     from .._kernels import project3d as k
     from .._kernels._jit import call
+    from .._kernels._threads import call_in_chunks
 
     camera = _camera(camera)
     verts = real_array("vertices", vertices, "(V, 3)")
@@ -83,11 +84,21 @@ def project_edges_into(vertices, edges, camera, box, aspect=None, details=True):
     h = np.empty((len(verts), 4))
     call(k.to_clip, 4 * len(verts), np.ascontiguousarray(clip), np.ascontiguousarray(verts),
          h)                                                         # once per vertex
-    rows = call(k.project_edges, 20 * len(e), scale, offset, UNIT_CUBE.planes, h, e, out,
-                depth, which, float(v.COORD_LIMIT))
+    parts = call_in_chunks(
+        k.project_edges, 20 * len(e), len(e),
+        lambda lo, hi: (scale, offset, UNIT_CUBE.planes, h, e[lo:hi], out[lo:hi],
+                        depth[lo:hi], which[lo:hi], float(v.COORD_LIMIT)))
+    # the visible rows of each chunk, joined in the order of the edges (a chunk's
+    # ``which`` counts from its first edge)
+    if details:
+        for lo, rows in parts:
+            which[lo:lo + rows] += lo
+    keep = tuple(a[:parts[0][1]] if len(parts) == 1 else
+                 np.concatenate([a[lo:lo + rows] for lo, rows in parts])
+                 for a in (out, depth, which))
     if not details:
-        return out[:rows], None, None
-    return out[:rows], depth[:rows], which[:rows]
+        return keep[0], None, None
+    return keep
 
 
 def edge_colors(mesh, edges):

@@ -63,13 +63,13 @@ if COMPILE not in ("auto", "always", "never"):
 
 #: Most work units for which a kernel that is neither compiled nor cached runs as
 #: Python.  A unit is about one microsecond of the twin's time (the estimates of the
-#: API layer are scaled so, measured per kernel): at most ~0.1 s, against seconds of
-#: compilation.
-TWIN_WORK = 100_000
+#: API layer are scaled so, measured per kernel): at most ~0.3 s, against one to
+#: three seconds of compilation.
+TWIN_WORK = 300_000
 
 #: Seconds a process may spend in one kernel's Python twin before the kernel is
 #: compiled after all (many small calls: compiling then pays).
-TWIN_TIME = 0.25
+TWIN_TIME = 0.3
 
 _PYTHON = {}
 _CACHED = {}

@@ -90,6 +90,12 @@ def canonical(sig):
 
 @pytest.fixture(scope="module")
 def everything():
+    # the whole suite compiled every kernel before its first test (conftest.py) and
+    # recorded what it counted; otherwise compile them here
+    recorded = os.environ.get("SCANLINE_TEST_KERNELS")
+    if recorded:
+        with open(recorded) as f:
+            return json.load(f)
     return specializations(jobs=2)
 
 

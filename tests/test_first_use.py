@@ -154,8 +154,8 @@ sl.draw.text(fb, 4, 20, "Hello", color="black", height=14)
 sl.draw.circle(fb, 48, 32, 20.5, color="red", antialias=True)
 print("small", bool(polygon.fill_polygons.overloads))
 if sys.argv[1] == "large":
-    big = sl.FrameBuffer(1000, 1000)
-    sl.draw.polygon(big, [(0, 0), (999, 0), (500, 999)], color="white")
+    big = sl.FrameBuffer(2000, 2000)
+    sl.draw.polygon(big, [(0, 0), (1999, 0), (1000, 1999)], color="white")
     print("large", bool(polygon.fill_polygons.overloads))
 """
     env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "cache"), SCANLINE_COMPILE="auto")

@@ -70,7 +70,7 @@ def test_edges_projected_on_threads_keep_the_order_of_the_edges(monkeypatch):
     real = _threads.call
     monkeypatch.setattr(_threads, "call", lambda kernel, work, *a: chunks.append(len(a[4]))
                         or real(kernel, work, *a))
-    mesh = sl.mesh.sphere(1.0, resolution=(96, 48))
+    mesh = sl.mesh.sphere(1.0, resolution=(160, 80))
     eye = (0.6, 0.3, 1.2)
     view = glu_look_at(eye, (0, 0, 0), (0, 1, 0))
     v = np.hstack([mesh.vertices, np.ones((len(mesh.vertices), 1))]) @ view.T

@@ -76,12 +76,12 @@ def test_threads_share_the_rows_and_keep_the_order(monkeypatch):
 
     monkeypatch.setattr(_threads, "threads", lambda: 3)
     rng = np.random.default_rng(11)
-    w, h = 400, 300
+    w, h = 640, 480
     polys = []
     for _ in range(150):
         c = rng.uniform([0, 0], [w, h])
         ang = np.sort(rng.uniform(0, 2 * np.pi, 5))
-        xy = c + rng.uniform(5, 60) * np.c_[np.cos(ang), np.sin(ang)]
+        xy = c + rng.uniform(8, 96) * np.c_[np.cos(ang), np.sin(ang)]
         polys.append(np.c_[xy, np.full(5, 0.5)])
     sp = ScreenPolygons.from_device(polys, w, h)
     ours = sl.FrameBuffer(w, h, mode="RGB")

@@ -63,17 +63,28 @@ if COMPILE not in ("auto", "always", "never"):
 
 #: Most work units for which a kernel that is neither compiled nor cached runs as
 #: Python.  A unit is about one microsecond of the twin's time (the estimates of the
-#: API layer are scaled so, measured per kernel): at most ~0.3 s, against one to
-#: three seconds of compilation.
-TWIN_WORK = 300_000
+#: API layer are scaled so, measured per kernel): at most ~0.1 s, against seconds of
+#: compilation.
+TWIN_WORK = 100_000
 
 #: Seconds a process may spend in one kernel's Python twin before the kernel is
 #: compiled after all (many small calls: compiling then pays).
-TWIN_TIME = 0.3
+TWIN_TIME = 0.25
 
 _PYTHON = {}
 _CACHED = {}
 _SPENT = {}
+_LIMITS = {}
+
+
+def slow_to_compile(kernel, seconds):
+    """Declare that ``kernel`` takes about ``seconds`` to compile (its own compilation,
+    measured by ``benchmarks/compile.py --compile``), well above most kernels' second:
+    its twin may then run calls of up to a quarter of that (work units of a
+    microsecond) and spend as much in a process before compiling pays.  Returns the
+    kernel."""
+    _LIMITS[kernel] = (max(TWIN_WORK, seconds / 4 * 1e6), max(TWIN_TIME, seconds / 4))
+    return kernel
 
 
 def call(kernel, work, *args):
@@ -88,6 +99,7 @@ def call(kernel, work, *args):
     later call compiles it, as does every call once it is compiled or cached.  A
     tiered JIT, in short: interpret first, compile where it pays.  The twins compute
     exactly what the kernels compute (``tests/test_first_use.py`` compares them).
+    A kernel declared :func:`slow_to_compile` has larger limits.
     :data:`COMPILE` overrides the choice.  Anything else than a compiled function
     (a test's stand-in, say) is just called.
     """
@@ -106,7 +118,8 @@ def call(kernel, work, *args):
         except AttributeError:           # uncached (NullCache), or numba's internals moved
             cached = _CACHED[kernel] = False
     spent = _SPENT.get(kernel, 0.0)
-    if cached or spent > TWIN_TIME or (work() if callable(work) else work) > TWIN_WORK:
+    most_work, most_time = _LIMITS.get(kernel, (TWIN_WORK, TWIN_TIME))
+    if cached or spent > most_time or (work() if callable(work) else work) > most_work:
         return _interruptible(kernel, work, args)
     t0 = time.perf_counter()
     try:

@@ -16,7 +16,7 @@ import math
 
 import numpy as np
 
-from ._jit import helper, kernel
+from ._jit import helper, kernel, slow_to_compile
 from .spans import span
 
 
@@ -451,6 +451,11 @@ def area_subdivision(verts, offsets, planes, ext, width, height, face, depth, ca
             stack[top, 4] = lv + 1
             top += 1
     return decided
+
+
+#: Warnock's kernel and its helpers take about 2.5 s to compile (benchmarks/compile.py):
+#: its twin may answer a small scene first.
+slow_to_compile(area_subdivision, 2.5)
 
 
 # -- visible-line detection ---------------------------------------------------------------

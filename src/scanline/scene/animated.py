@@ -42,8 +42,9 @@ _MORPH_KEY = {"time", "points", "ease"}
 _STORY = {"time", "caption"}
 CURVES = ("polyline", "bezier", "bspline", "catmull-rom", "cardinal")
 
-#: The frame plan not made yet.
-_UNPLANNED = "unplanned"
+class _UNPLANNED:
+    """The frame plan not made yet (a class: it keeps its identity through pickling)."""
+
 
 _TOKEN = re.compile(r"([A-Za-z_][A-Za-z0-9_-]*)|\[([^\]]+)\]|(\.)")
 

@@ -18,6 +18,7 @@ segment's priority or visibility, cameras, lights) have no plan: their frames ar
 built in full.
 """
 
+from .. import transform as tf
 from ..display.file import DisplayFile, Segment
 from ..display.interpreter import drawing_order
 from ..display.viewing import aspect
@@ -42,11 +43,13 @@ class FramePlan:
         # one scratch display file per viewport, its viewing set, holding an open
         # segment: transformations and primitives are made there as build makes them
         self._scratch = {}
+        self._normalization = {}
         for name, viewport in viewports.items():
             df = DisplayFile(aspect(width, height))
             df.set_viewing(**viewport["viewing"])
             df.create_segment("frame")
             self._scratch[name] = df
+            self._normalization[name] = (df.normalization, tf.inverse(df.normalization))
         self._context = {"version": data["version"], "cameras": [], "base": base,
                          "background": self.canvas.background, "shading": None,
                          "segment_transform": None}
@@ -86,9 +89,12 @@ class FramePlan:
                 out.primitives = base.primitives
                 if i in self.moved:
                     m = transformation(seg.get("transform", []), f"{path}.transform")
-                    _call(f"{path}.transform", scratch.set_transformation, "frame",
-                          scratch.world_transformation(m))
-                    out.transformation = scratch.segment("frame").transformation
+                    # DisplayFile.world_transformation and set_transformation: N m N^-1
+                    # (N^-1 kept), checked finite as set_transformation checks it (the
+                    # product of affine steps is affine)
+                    n, n_inv = self._normalization[vp]
+                    out.transformation = _call(f"{path}.transform", tf.compose,
+                                               tf.compose(n, m, n_inv))
                 if i in self.changed:
                     out.primitives = list(base.primitives)
                     held = scratch.segment("frame").primitives

@@ -158,18 +158,23 @@ class _Writer:
 
     def __init__(self, target, tokens, decode):
         self.target, self.tokens, self.decode = target, tokens, decode
+        self._indices = None      # the tokens with [name] resolved, found on first write
 
     def write(self, data, value, copied):
         """Write ``value`` into ``data`` (a shallow copy of the base scene), copying
         each container on the way that is not yet in ``copied`` (ids of copies), so
         that the base scene is never changed and untouched parts are shared."""
         node = data
-        for token in self.tokens[:-1]:
-            if isinstance(token, tuple):
-                index = next(k for k, item in enumerate(node)
-                             if isinstance(item, dict) and item.get("name") == token[1])
-            else:
-                index = token
+        if self._indices is None:     # every frame starts from the same base: the
+            indices = []              # entry of a name is found once
+            for token in self.tokens[:-1]:
+                if isinstance(token, tuple):
+                    token = next(k for k, item in enumerate(node)
+                                 if isinstance(item, dict) and item.get("name") == token[1])
+                indices.append(token)
+                node = node[token]
+            self._indices, node = indices, data
+        for index in self._indices:
             child = node[index]
             if id(child) not in copied:
                 child = list(child) if isinstance(child, list) else dict(child)

@@ -91,6 +91,15 @@ def _opaque(color, fb):
     return fb.mode != "P" and not translucent(color, one=True)
 
 
+def _number(style, styles):
+    """A number for ``style``, the same for equal styles (cheap to compare);
+    ``styles`` holds the numbers given, by identity and by value."""
+    number = styles.get(id(style))
+    if number is None:
+        number = styles[id(style)] = styles.setdefault(style, len(styles))
+    return number
+
+
 def _stroke_item(points, closed, attributes, rect, fb, styles):
     """The item of a polyline in device coordinates (None: clipped away)."""
     extent = _extent([points])
@@ -107,9 +116,7 @@ def _stroke_item(points, closed, attributes, rect, fb, styles):
     color, style = attributes["color"], attributes["style"]
     simple = _simple(style)
     kind = "lines" if simple else "stroke"
-    # strokes share a call when their styles are equal (numbered: cheap to compare)
-    key = (kind, 0 if simple else styles.setdefault(style, len(styles))) \
-        if _opaque(color, fb) else None
+    key = (kind, 0 if simple else _number(style, styles)) if _opaque(color, fb) else None
     return _Item(kind, key, _box(lo, hi, 1.0 if simple else _reach(style)), pieces, closed,
                  attributes)
 
@@ -168,6 +175,11 @@ def _call(function, *args, **kwargs):
 
 def items(segments, display_file, fb, device, highlight):
     """The items of ``segments`` (in drawing order), in drawing order."""
+    with np.errstate(all="ignore"):      # overflow -> inf, refused by _extent
+        return _items(segments, display_file, fb, device, highlight)
+
+
+def _items(segments, display_file, fb, device, highlight):
     ws = workstation(device.width, device.height)
     frame = device_frame(ws)
     rects = {}                                   # clip rectangle of each viewport
@@ -188,8 +200,7 @@ def items(segments, display_file, fb, device, highlight):
             rect = rects[clip]
             if rect is None:
                 continue
-            with np.errstate(all="ignore"):      # overflow -> inf, refused by _extent
-                item = _item(run[0], lin, t, rect, fb, styles) if len(run) == 1 else None
+            item = _item(run[0], lin, t, rect, fb, styles) if len(run) == 1 else None
             if item is None:
                 out.append(_call(draw_run, seg, start, run, same, m, rect))
             elif item != ():
@@ -213,10 +224,11 @@ def batches(todo, width, height):
     out, keys = [], []
     cols, rows = -(-width // CELL), -(-height // CELL)
     latest = np.full((rows, cols), -1, np.int64)
+    right, bottom = width - 1.0, height - 1.0
     for item in todo:
-        x0, x1 = (int(min(max(x, 0.0), width - 1.0)) // CELL for x in item.box[::2])
-        y0, y1 = (int(min(max(y, 0.0), height - 1.0)) // CELL for y in item.box[1::2])
-        cells = latest[y0:y1 + 1, x0:x1 + 1]
+        x0, y0, x1, y1 = item.box
+        cells = latest[int(min(max(y0, 0.0), bottom)) // CELL:int(min(max(y1, 0.0), bottom)) // CELL + 1,
+                       int(min(max(x0, 0.0), right)) // CELL:int(min(max(x1, 0.0), right)) // CELL + 1]
         last = int(cells.max())
         join = None
         if item.key is not None:

@@ -81,10 +81,16 @@ def _inside(lo, hi, rect):
     return rect[0] <= lo[0] and rect[1] <= lo[1] and hi[0] <= rect[2] and hi[1] <= rect[3]
 
 
-def _reach(style):
-    """How far (device units) a stroke of ``style`` can paint from its path: the
-    half width times the miter limit (or 2, for square caps), plus rounding."""
-    return 0.5 * style.width * max(style.miter_limit, 2.0) + 2.0
+def _reach(style, pieces, closed):
+    """How far (device units) a stroke of ``style`` along ``pieces`` can paint from
+    its path: the half width, times the miter limit where mitered joins can reach
+    (a miter's tip is at most miter_limit half widths from its vertex), or times
+    sqrt(2) at square caps; plus 2 for rounding."""
+    factor = math.sqrt(2.0) if style.cap == "square" else 1.0
+    joins = closed or any(len(p) > 2 for p in pieces)
+    if joins and style.join == "miter":
+        factor = max(factor, style.miter_limit)
+    return 0.5 * style.width * factor + 2.0
 
 
 def _opaque(color, fb):
@@ -117,8 +123,8 @@ def _stroke_item(points, closed, attributes, rect, fb, styles):
     simple = _simple(style)
     kind = "lines" if simple else "stroke"
     key = (kind, 0 if simple else _number(style, styles)) if _opaque(color, fb) else None
-    return _Item(kind, key, _box(lo, hi, 1.0 if simple else _reach(style)), pieces, closed,
-                 attributes)
+    margin = 1.0 if simple else _reach(style, pieces, closed)
+    return _Item(kind, key, _box(lo, hi, margin), pieces, closed, attributes)
 
 
 def _area_item(contours, attributes, rect, fb):

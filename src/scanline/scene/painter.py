@@ -107,7 +107,8 @@ def _number(style, styles):
 
 
 def _stroke_item(points, closed, attributes, rect, fb, styles):
-    """The item of a polyline in device coordinates (None: clipped away)."""
+    """The item of a polyline in device coordinates (None: out of range, ``()``:
+    clipped away)."""
     extent = _extent([points])
     if extent is None:
         return None

@@ -106,7 +106,8 @@ def unpack(packed, memory=None):
     if isinstance(pixels, tuple):                   # (offset, shape, dtype) in memory
         offset, shape, dtype = pixels
         pixels = np.ndarray(shape, dtype, buffer=memory, offset=offset)
-    image = Image.frombytes(mode, (pixels.shape[1], pixels.shape[0]), pixels.data)
+    image = Image.frombytes(mode, (pixels.shape[1], pixels.shape[0]),
+                            np.ascontiguousarray(pixels).data)
     if palette is not None:
         image.putpalette(palette)
     image.info.update(info)
@@ -259,7 +260,10 @@ def _processes(render, parts, jobs):
             pool.terminate()
             pool.join()
             if slots is not None:
-                slots.memory.close()
+                try:
+                    slots.memory.close()
+                except BufferError:     # a view still held (by a traceback): the
+                    pass                # mapping goes with it
     return gather()
 
 

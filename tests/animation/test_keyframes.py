@@ -2,6 +2,8 @@
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 import scanline as sl
 from scanline.animation import INTERPOLATIONS, KeyFrames, Timeline
@@ -103,3 +105,22 @@ def test_timeline_frames():
 def test_bad_input(call, words):
     with pytest.raises(sl.ScanlineError, match=words):
         call()
+
+
+@settings(max_examples=150, deadline=None)
+@given(k=st.integers(1, 5), interpolation=st.sampled_from(INTERPOLATIONS),
+       shape=st.sampled_from([(), (2,), (3, 2)]), seed=st.integers(0, 2**32 - 1),
+       ease=st.lists(st.sampled_from(sorted(sl.animation.EASINGS)), min_size=4, max_size=4))
+def test_one_time_gives_the_values_of_an_array_of_times(k, interpolation, shape, seed, ease):
+    # an animated scene evaluates each track at one time per frame, by a shorter path
+    rng = np.random.default_rng(seed)
+    times = np.sort(rng.choice(40, k, replace=False)) / rng.choice([1, 3, 7])
+    kf = KeyFrames(times, rng.normal(0, 100, (k,) + shape), interpolation=interpolation,
+                   ease=ease[:max(k - 1, 1)], tension=0.3, continuity=-0.2, bias=0.4)
+    ts = np.concatenate([times, rng.uniform(times[0] - 1, times[-1] + 1, 20),
+                         np.arange(50) / 24])
+    together = kf(ts)
+    for t, value in zip(ts, together):
+        one = kf(float(t))
+        assert type(one) is (float if shape == () else np.ndarray)
+        np.testing.assert_array_equal(one, value)

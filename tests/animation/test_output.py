@@ -211,3 +211,22 @@ def test_jupyter_display_and_progress(capsys):
 def test_bad_input(call, words):
     with pytest.raises(sl.ScanlineError, match=words):
         call()
+
+
+def mixed(i):
+    """Frames of every kind, one size or another (picklable)."""
+    fb = sl.FrameBuffer(40 + 8 * (i % 2), 30, mode=["RGB", "RGBA", "L", "P", "1"][i % 5],
+                        background=1 if i % 5 == 4 else "white")
+    sl.draw.fill_circle(fb, 5 + 3 * i, 15, 6, color=1 if i % 5 == 4 else "crimson")
+    return fb if i % 3 else fb.to_pil()
+
+
+def test_worker_frames_come_back_whole_through_shared_memory_or_the_pipe(monkeypatch):
+    serial = [np.asarray(im) for im in Animation(mixed, frames=12, fps=4).images()]
+    modes = [im.mode for im in Animation(mixed, frames=12, fps=4).images()]
+    for slot in (render_module.SLOT_BYTES, 5000):     # 5000 bytes: most go by the pipe
+        monkeypatch.setattr(render_module, "SLOT_BYTES", slot)
+        images = list(Animation(mixed, frames=12, fps=4).images(jobs=2))
+        assert [im.mode for im in images] == modes
+        for a, im in zip(serial, images):
+            np.testing.assert_array_equal(a, np.asarray(im))

@@ -20,6 +20,7 @@ the values of every track at each frame.
 [25.0, 12.5]
 """
 
+import bisect
 import numbers
 
 import numpy as np
@@ -141,6 +142,7 @@ class KeyFrames:
         self.interpolation = v.choice("interpolation", interpolation, INTERPOLATIONS)
         self.ease = _per_segment("ease", ease, max(k - 1, 1), resolve)
         self._flat = self.values.reshape(k, -1)
+        self._keys = self.times.tolist()
         self._curve = None
         if self.interpolation in ("catmull-rom", "cardinal", "kochanek-bartels") and k >= 2:
             params = {name: _spline_parameter(name, value, k) for name, value in
@@ -201,6 +203,9 @@ class KeyFrames:
             raise ArgumentTypeError(f"t must be a time or an array of times, got {v._show(t)}") from None
         if not np.isfinite(ts).all():
             raise ArgumentValueError(f"t must be finite, got {v._show(t)}")
+        if ts.ndim == 0:
+            out = self._at_one(float(ts))
+            return float(out[0]) if self.values.ndim == 1 else out.reshape(self.shape)
         flat = ts.ravel()
         out = self._evaluate(flat).reshape(flat.shape + self.shape)
         out = out.reshape(ts.shape + self.shape)
@@ -223,6 +228,28 @@ class KeyFrames:
             rows = k == j
             eased[rows] = apply(self.ease[j], s[rows])
         return k, eased
+
+    def _at_one(self, t):
+        """The flat value at one time ``t`` (a float): the arithmetic of
+        :meth:`_evaluate` on one time, bit for bit, without its array bookkeeping
+        (an animated scene evaluates every track once a frame)."""
+        times, flat = self._keys, self._flat
+        hit = bisect.bisect_left(times, t)
+        if hit < len(times) and times[hit] == t:
+            return flat[hit].copy()                 # a key time: the key value
+        if len(times) == 1 or t < times[0]:
+            return flat[0].copy()
+        if t > times[-1]:
+            return flat[-1].copy()
+        k = hit - 1                                 # times[k] < t < times[k + 1]
+        s = min(max((t - times[k]) / (times[k + 1] - times[k]), 0.0), 1.0)
+        eased = apply(self.ease[k], np.array([s]))
+        if self.interpolation == "step":
+            return (flat[k + 1] if eased[0] >= 1 else flat[k]).copy()
+        if self._curve is None:
+            return flat[k] + eased[0] * (flat[k + 1] - flat[k])
+        u = min(max(k + float(eased[0]), 0.0), len(flat) - 1.0)
+        return self._curve.evaluate(np.array([u]))[0]
 
     def _evaluate(self, t):
         flat = self._flat

@@ -131,37 +131,49 @@ def interpret(display_file, device, highlight="magenta"):
     color("highlight", highlight)
     ws = workstation(device.width, device.height)
     frame = device_frame(ws)
-    groups = hasattr(device, "begin_segment")
     for seg in drawing_order(display_file):
-        m = ws @ seg.transformation
-        drawn = []
-        if groups:
-            device.begin_segment(seg.name)
-        prims = seg.primitives
-        if any(q.kind in three_d.KINDS for q in prims):
-            prims = three_d.expand(prims, display_file, device.width, device.height)
-        for start, run, same in batch.runs(prims):
-            rect = clip_rectangle(run[0], ws, frame)
-            if rect is None:
-                continue
-            if len(run) > 1:
-                pts, bad = (batch.lines if same[0] == "lines" else batch.areas)(
-                    run, m, rect, device)
-                drawn += pts
-                if bad is None:
-                    continue
-                start, run = start + bad, run[bad:bad + 1]  # raises the range error
-            where = f"segment {seg.name!r}, primitive {start} ({run[0].kind})"
-            try:
-                drawn += draw_primitive(run[0].transformed(m), rect, device, where)
-            except ScanlineError as error:
-                if str(error).startswith(where):
-                    raise
-                raise type(error)(f"{where}: {error}") from None
-        if seg.highlighted and drawn:
-            _frame(np.vstack(drawn), frame, device, highlight)
-        if groups:
-            device.end_segment()
+        draw_segment(seg, display_file, ws, frame, device, highlight)
+
+
+def draw_segment(seg, display_file, ws, frame, device, highlight):
+    """Draw one segment (with its highlight frame) as :func:`interpret` does: ``ws``
+    is the workstation matrix, ``frame`` the device frame (:func:`device_frame`)."""
+    groups = hasattr(device, "begin_segment")
+    m = ws @ seg.transformation
+    drawn = []
+    if groups:
+        device.begin_segment(seg.name)
+    prims = seg.primitives
+    if any(q.kind in three_d.KINDS for q in prims):
+        prims = three_d.expand(prims, display_file, device.width, device.height)
+    for start, run, same in batch.runs(prims):
+        rect = clip_rectangle(run[0], ws, frame)
+        if rect is not None:
+            drawn += draw_run(seg, start, run, same, m, rect, device)
+    if seg.highlighted and drawn:
+        _frame(np.vstack(drawn), frame, device, highlight)
+    if groups:
+        device.end_segment()
+
+
+def draw_run(seg, start, run, same, m, rect, device):
+    """Draw one run of :func:`batch.runs` (``run`` starts at primitive ``start`` of
+    ``seg``), mapped by ``m`` and clipped to ``rect``; return the point arrays drawn."""
+    drawn = []
+    if len(run) > 1:
+        pts, bad = (batch.lines if same[0] == "lines" else batch.areas)(run, m, rect, device)
+        drawn += pts
+        if bad is None:
+            return drawn
+        start, run = start + bad, run[bad:bad + 1]  # raises the range error
+    where = f"segment {seg.name!r}, primitive {start} ({run[0].kind})"
+    try:
+        drawn += draw_primitive(run[0].transformed(m), rect, device, where)
+    except ScanlineError as error:
+        if str(error).startswith(where):
+            raise
+        raise type(error)(f"{where}: {error}") from None
+    return drawn
 
 
 def drawing_order(display_file):

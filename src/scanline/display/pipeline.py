@@ -6,6 +6,7 @@ comes out is the same for every device -- clipped polylines to stroke and clippe
 contours to fill -- so the raster and the vector output of one display file agree.
 """
 
+import functools
 import math
 
 import numpy as np
@@ -42,8 +43,17 @@ def _ellipse_points(center, axes):
     step = math.acos(1.0 - FLATNESS / r) if r > FLATNESS else math.pi / 2
     n = MAX_SEGMENTS if step == 0.0 else int(min(MAX_SEGMENTS, max(
         4 if r <= FLATNESS else 16, math.ceil(math.pi / step))))
+    return center + _unit_ring(n) @ axes.T
+
+
+@functools.lru_cache(maxsize=64)
+def _unit_ring(n):
+    """(cos t, sin t) at n angles t = 2 pi k / n (read-only; an animation flattens the
+    same ellipses on every frame)."""
     t = np.linspace(0.0, 2.0 * math.pi, n, endpoint=False)
-    return center + np.stack([np.cos(t), np.sin(t)], axis=1) @ axes.T
+    ring = np.stack([np.cos(t), np.sin(t)], axis=1)
+    ring.flags.writeable = False
+    return ring
 
 
 def marker_segments(points, kind, size):

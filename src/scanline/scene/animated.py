@@ -42,6 +42,10 @@ _MORPH_KEY = {"time", "points", "ease"}
 _STORY = {"time", "caption"}
 CURVES = ("polyline", "bezier", "bspline", "catmull-rom", "cardinal")
 
+class _UNPLANNED:
+    """The frame plan not made yet (a class: it keeps its identity through pickling)."""
+
+
 _TOKEN = re.compile(r"([A-Za-z_][A-Za-z0-9_-]*)|\[([^\]]+)\]|(\.)")
 
 
@@ -154,18 +158,23 @@ class _Writer:
 
     def __init__(self, target, tokens, decode):
         self.target, self.tokens, self.decode = target, tokens, decode
+        self._indices = None      # the tokens with [name] resolved, found on first write
 
     def write(self, data, value, copied):
         """Write ``value`` into ``data`` (a shallow copy of the base scene), copying
         each container on the way that is not yet in ``copied`` (ids of copies), so
         that the base scene is never changed and untouched parts are shared."""
         node = data
-        for token in self.tokens[:-1]:
-            if isinstance(token, tuple):
-                index = next(k for k, item in enumerate(node)
-                             if isinstance(item, dict) and item.get("name") == token[1])
-            else:
-                index = token
+        if self._indices is None:     # every frame starts from the same base: the
+            indices = []              # entry of a name is found once
+            for token in self.tokens[:-1]:
+                if isinstance(token, tuple):
+                    token = next(k for k, item in enumerate(node)
+                                 if isinstance(item, dict) and item.get("name") == token[1])
+                indices.append(token)
+                node = node[token]
+            self._indices, node = indices, data
+        for index in self._indices:
             child = node[index]
             if id(child) not in copied:
                 child = list(child) if isinstance(child, list) else dict(child)
@@ -192,6 +201,7 @@ class AnimatedScene:
         self.scene = Scene(data, file, text, format)       # the static scene, checked
         self.canvas = self.scene.canvas
         self.file = file
+        self._plan = _UNPLANNED
         try:
             self._build(copy.deepcopy(data))
             self.frame(0)                                 # the first and last frames check
@@ -371,6 +381,7 @@ class AnimatedScene:
         frames are rebuilt from the data)."""
         state = dict(self.__dict__)
         state["scene"] = None
+        state["_plan"] = _UNPLANNED
         return state
 
     def __len__(self):
@@ -396,14 +407,40 @@ class AnimatedScene:
             self.writers[name].write(data, value, copied)
         return data
 
+    def _frame_plan(self):
+        """The :class:`~scanline.scene.plan.FramePlan` of the frames, or None when each
+        frame is built in full (made on first use, in each process)."""
+        if self._plan is _UNPLANNED:
+            from .plan import plan
+
+            folder = None if self.file is None else os.path.dirname(os.path.abspath(self.file))
+            self._plan = plan(self.base, [w.tokens for w in self.writers.values()], folder)
+        return self._plan
+
     def frame(self, index):
-        """Frame ``index`` drawn: a :class:`~scanline.FrameBuffer`."""
+        """Frame ``index`` drawn: a :class:`~scanline.FrameBuffer`.
+
+        The pixels are those of ``Scene(self.data_at(index)).raster()``; when the
+        tracks only move segments and change 2-D primitives, the frame is the base
+        display file with those parts made again (:mod:`scanline.scene.plan`), drawn
+        in batches (:mod:`scanline.scene.painter`).
+        """
         data = self.data_at(index)
+        plan = self._frame_plan()
         try:
-            return Scene(data).raster()
+            if plan is None:
+                return Scene(data).raster()
+            segments = plan.segments_at(data)
         except SceneError as error:
             raise SceneError(f"frame {index} (t = {self.timeline.time(index):g} s): "
                              f"{error.message}", path=error.path) from None
+        from ..framebuffer import FrameBuffer
+        from .painter import paint
+
+        c = plan.canvas
+        fb = FrameBuffer(c.width, c.height, mode=c.mode, background=c.background)
+        paint(fb, segments, plan.display_file, c.antialias, c.highlight)
+        return fb
 
     __call__ = frame
 

@@ -1,0 +1,149 @@
+"""The frame plan of an animated scene: the display file of each frame without checking
+and building the whole scene again.
+
+The base scene is built once.  A frame changes only what its tracks touch, so when
+every track writes into a segment's ``transform`` or into one of its 2-D primitives,
+a frame is the base display file with
+
+- the segment transformations of the segments whose ``transform`` is animated,
+  computed again from the frame's steps (:func:`scanline.scene.schema.transformation`
+  and the display file's own world-to-NDC conjugation), and
+- the animated primitives built again from the frame's data
+  (:func:`scanline.scene.schema._primitive`),
+
+each checked as the full build checks it, with the same key path in its messages;
+the other segments and primitives are shared with the base display file.  Scenes
+whose tracks reach anything else (the canvas, the window, the viewports, a
+segment's priority or visibility, cameras, lights) have no plan: their frames are
+built in full.
+"""
+
+from .. import transform as tf
+from ..display.file import DisplayFile, Segment
+from ..display.interpreter import drawing_order
+from ..display.viewing import aspect
+from .schema import V2_KEYS, _call, _primitive, _viewports, build, transformation
+
+
+class FramePlan:
+    """The base display file of ``data`` (a version-2 scene without its animation
+    table) and where the tracks ``targets`` (parsed key paths) write into it.
+
+    Use :func:`plan` to make one: it returns None for scenes it cannot patch.
+    """
+
+    def __init__(self, data, targets, base=None):
+        self.canvas, self.display_file = build(data, base)
+        width, height = self.canvas.width, self.canvas.height
+        default_window = data.get("window", (0, 0, width - 1, height - 1))
+        viewports = _viewports(data.get("viewports"), default_window,
+                               DisplayFile(aspect(width, height)))
+        names = list(viewports)
+        self.segments = data.get("segments", [])
+        # one scratch display file per viewport, its viewing set, holding an open
+        # segment: transformations and primitives are made there as build makes them
+        self._scratch = {}
+        self._normalization = {}
+        for name, viewport in viewports.items():
+            df = DisplayFile(aspect(width, height))
+            df.set_viewing(**viewport["viewing"])
+            df.create_segment("frame")
+            self._scratch[name] = df
+            self._normalization[name] = (df.normalization, tf.inverse(df.normalization))
+        self._context = {"version": data["version"], "cameras": [], "base": base,
+                         "background": self.canvas.background, "shading": None,
+                         "segment_transform": None}
+        # data segment index -> [(display-file segment name, viewport name)]
+        self._shown = {}
+        for i, seg in enumerate(self.segments):
+            shown = seg.get("viewport", names[0])
+            several = isinstance(shown, list)
+            self._shown[i] = [(f"{seg['name']}@{vp}" if several else seg["name"], vp)
+                              for vp in (shown if several else [shown])]
+        self.moved = set()       # data segment indices whose transform is animated
+        self.changed = {}        # data segment index -> primitive indices animated
+        for tokens in targets:
+            i, what, j = _where(tokens, self.segments)
+            if what == "transform":
+                self.moved.add(i)
+            else:
+                self.changed.setdefault(i, set()).add(j)
+        self.order = drawing_order(self.display_file)
+
+    def segments_at(self, data):
+        """The segments of the frame whose scene data is ``data`` (the base data with
+        the animated values written in), in drawing order: display-file
+        :class:`~scanline.display.file.Segment` objects, shared with the base where
+        nothing changed."""
+        replaced = {}
+        for i in sorted(self.moved | set(self.changed)):
+            seg = data["segments"][i]
+            path = f"segments[{i}]"
+            for name, vp in self._shown[i]:
+                base = self.display_file.segment(name)
+                scratch = self._scratch[vp]
+                out = Segment(name, base._order)
+                out.priority, out.visible = base.priority, base.visible
+                out.highlighted, out.detectable = base.highlighted, base.detectable
+                out.transformation = base.transformation
+                out.primitives = base.primitives
+                if i in self.moved:
+                    m = transformation(seg.get("transform", []), f"{path}.transform")
+                    # DisplayFile.world_transformation and set_transformation: N m N^-1
+                    # (N^-1 kept), checked finite as set_transformation checks it (the
+                    # product of affine steps is affine)
+                    n, n_inv = self._normalization[vp]
+                    out.transformation = _call(f"{path}.transform", tf.compose,
+                                               tf.compose(n, m, n_inv))
+                if i in self.changed:
+                    out.primitives = list(base.primitives)
+                    held = scratch.segment("frame").primitives
+                    for j in sorted(self.changed[i]):
+                        _primitive(seg["primitives"][j], f"{path}.primitives[{j}]", scratch,
+                                   self._context)
+                        out.primitives[j] = held.pop()
+                replaced[name] = out
+        return [replaced.get(s.name, s) for s in self.order]
+
+
+def _where(tokens, segments):
+    """(data segment index, "transform" or "primitive", primitive index) of a track's
+    key path; raises _NoPlan for a path elsewhere."""
+    if len(tokens) < 3 or tokens[0] != "segments" or tokens[2] not in ("transform",
+                                                                         "primitives"):
+        raise _NoPlan()
+    index = tokens[1]
+    if isinstance(index, tuple):
+        index = next(k for k, s in enumerate(segments) if s.get("name") == index[1])
+    i = index % len(segments)
+    if tokens[2] == "transform":
+        return i, "transform", None
+    if len(tokens) < 5 or not isinstance(tokens[3], int):
+        raise _NoPlan()
+    prims = segments[i]["primitives"]
+    return i, "primitive", tokens[3] % len(prims)
+
+
+class _NoPlan(Exception):
+    """The tracks reach values that the plan does not patch."""
+
+
+#: Primitive types a plan builds again (one display-file primitive each).
+_FLAT = ("polyline", "polygon", "circle", "ellipse", "text", "markers")
+
+
+def plan(data, targets, base=None):
+    """A :class:`FramePlan` of ``data`` (already checked) for the tracks ``targets``
+    (parsed key paths), or None when a frame has to be built in full: a scene with
+    cameras, lights or shading, or tracks that reach other values than segment
+    transformations and 2-D primitives."""
+    if "cameras" in data or any(k in data for k in V2_KEYS - {"animation"}):
+        return None
+    for seg in data.get("segments", []):
+        if any(p.get("type") not in _FLAT for p in seg.get("primitives", [])):
+            return None
+    try:
+        made = FramePlan(data, targets, base)
+    except _NoPlan:
+        return None
+    return made if made.canvas.shading is None else None

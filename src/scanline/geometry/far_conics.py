@@ -1,0 +1,400 @@
+"""The visible part of a midpoint circle or ellipse of any size and position, exactly.
+
+The conic kernels (:mod:`scanline._kernels.conics`, :mod:`scanline._kernels.curved`)
+keep their decision parameters in 64-bit integers, which holds for centers within
++-2**30, circles of radius up to 2**30 and ellipses with r_x r_y <= 2**29.  Beyond
+that (a circle of radius 2**40 whose outline crosses the frame, a center at x = -1e12
+with a radius reaching in) this module computes the same pixels in Python integers,
+with the decision rule of the notes (chapter 2, Q.4-Q.6; Hearn & Baker, sections 3-5
+and 3-6) in closed form per visible column and row, so that a conic costs
+O(width + height) whatever its radius, never O(r).
+
+Circle.  The octant loop (x from 0, y from r, p_0 = 1 - r) keeps the invariant
+(2y - 1)**2 < 4(r**2 - x**2) <= (2y + 1)**2, so the octant point of column x is
+y(x) = (isqrt(4 (r**2 - x**2) - 1) + 1) // 2, for x <= y(x) (the kernel's
+``circle_state``, here without its 2**62 bound).
+
+Ellipse.  With f(x, y) = r_y^2 x^2 + r_x^2 y^2 - r_x^2 r_y^2, region 1 moves to
+column x + 1 and keeps y while f(x + 1, y - 1/2) < 0, region 2 moves to row y - 1 and
+keeps x while f(x + 1/2, y - 1) > 0.  Written as recurrences these are, exactly,
+
+* region 1: y_{k+1} = max(Y1(x_{k+1}), y_k - 1), Y1(x) = the least y with
+  f(x, y + 1/2) >= 0;
+* region 2: x_{k+1} = max(x_k, min(X2(y_{k+1}), x_k + 1)), X2(y) = the greatest x
+  with f(x - 1/2, y) <= 0.
+
+Y1 drops by at most one per column up to x* = r_x^2 / sqrt(r_x^2 + r_y^2), where the
+ellipse's slope is -1, so region 1 is y = Y1(x) there (it ends where
+r_y^2 x >= r_x^2 Y1(x), a monotone test found by bisection); X2 grows by at most one
+per row below y* = r_y^2 / sqrt(r_x^2 + r_y^2), so once region 2 is at a row y_e
+below y*, x(y) = max(x_e, min(X2(y), x_e + y_e - y)) (x behind X2 catches up one
+column a row; x ahead of it waits for it).  Between the two the kernel's own step
+(``ellipse_next``, run as Python on Python integers) is followed, a few steps; a flat
+ellipse's tip (the run along y = 0 to x = r_x) closes the quadrant.
+
+References
+----------
+D. Hearn and M. P. Baker, *Computer Graphics*, C version, 2nd ed., sections 3-5 (the
+midpoint circle algorithm) and 3-6 (the midpoint ellipse algorithm); J. E. Bresenham,
+"A linear algorithm for incremental digital display of circular arcs", CACM 20(2),
+1977; M. L. V. Pitteway, "Algorithm for drawing ellipses or hyperbolae with a digital
+plotter", Computer Journal 10(3), 1967.
+"""
+
+from math import isqrt
+
+import numpy as np
+
+from .._kernels import conics as kc
+from .._kernels._jit import python
+
+_next = python(kc.ellipse_next)
+
+
+def _ceil_div(a, b):
+    return -(-a // b)
+
+
+def circle_y(x, r):
+    """The octant point's row y(x) of the midpoint circle of radius r at column
+    0 <= x < r (r = 0: 0)."""
+    if r == 0:
+        return 0
+    return (isqrt(4 * (r * r - x * x) - 1) + 1) // 2
+
+
+def circle_half_width(d, r):
+    """The right-most outline pixel (offset from the center) of row offset d of the
+    midpoint circle, or -1 beyond it (the kernel's ``circle_half_width``): rows up to
+    the diagonal are the octant's columns; above it, the last column x with
+    y(x) >= d, 4 x**2 < 4 r**2 - (2d - 1)**2."""
+    if d > r:
+        return -1
+    if r == 0:
+        return 0
+    if d < r:
+        y = circle_y(d, r)
+        if d <= y:
+            return y
+    t = 4 * r * r - (2 * d - 1) * (2 * d - 1)
+    return isqrt((t - 1) // 4)
+
+
+class Quadrant:
+    """The first-quadrant points (x, y), x, y >= 0, of the midpoint ellipse with
+    integer semi-axes ``rx``, ``ry``, queried per column (region 1) and per row
+    (region 2) without stepping the whole quadrant."""
+
+    def __init__(self, rx, ry):
+        self.rx, self.ry = rx, ry
+        self.rx2, self.ry2 = rx * rx, ry * ry
+        self.points = []          # the stepped part, (x, y) pairs
+        self.m = -1               # region 1 is (x, Y1(x)) for 0 <= x <= m
+        self.ye, self.xe = 0, 0   # region 2 is (x(y), y) for 0 <= y < ye
+        self.tip = rx             # the tip is (x, 0) for tip < x <= rx
+        if rx == 0:               # the segment x = 0, 0 <= y <= ry (region 2 only)
+            self.ye, self.xe, self.tip = ry + 1, 0, 0
+            return
+        if ry == 0:               # the segment y = 0, 0 <= x <= rx (the tip only)
+            self.tip = -1
+            return
+        self._setup()
+
+    # -- closed forms ----------------------------------------------------------------
+    def y1(self, x):
+        """Y1(x): the least y >= 0 with f(x, y + 1/2) >= 0, 0 <= x <= rx."""
+        n = _ceil_div(4 * self.ry2 * (self.rx2 - x * x), self.rx2)
+        c = isqrt(n - 1) + 1 if n > 0 else 0
+        return c // 2
+
+    def x2(self, y):
+        """X2(y): the greatest x >= 0 with f(x - 1/2, y) <= 0, 0 <= y <= ry."""
+        s = isqrt(4 * self.rx2 * (self.ry2 - y * y) // self.ry2)
+        return (s + 1) // 2
+
+    def _setup(self):
+        rx, ry, rx2, ry2 = self.rx, self.ry, self.rx2, self.ry2
+        lo, hi = 0, rx            # the first x where region 1 would end without lag
+        while lo < hi:
+            mid = (lo + hi) // 2
+            if ry2 * mid >= rx2 * self.y1(mid):
+                hi = mid
+            else:
+                lo = mid + 1
+        xstar = isqrt(rx2 * rx2 // (rx2 + ry2))
+        ystar = isqrt(ry2 * ry2 // (rx2 + ry2))
+        m = max(min(lo, xstar) - 1, 0)
+        self.m = m
+        # step the kernel's loop from (m, Y1(m)) until the closed forms take over
+        x, y = m, self.y1(m)
+        p = 4 * ry2 * (m + 1) * (m + 1) + rx2 * (2 * y - 1) * (2 * y - 1) - 4 * rx2 * ry2
+        px, py = 2 * ry2 * m, 2 * rx2 * y
+        region = kc.REGION_1
+        while True:
+            region, x, y, _, p, px, py = _next(region, x, y, p, px, py, rx, rx2, ry2)
+            if region == 0:               # x reached rx on y = 0
+                self.tip, self.ye = rx, 0
+                return
+            self.points.append((x, y))
+            if region == kc.TIP:
+                self.tip, self.ye = x - 1, 0
+                return
+            if region == kc.REGION_2 and y <= ystar:
+                self.xe, self.ye = x, y
+                self.tip = self.x2_closed(0) if y > 0 else x
+                return
+
+    def x2_closed(self, y):
+        """Region 2's column at row 0 <= y < ye."""
+        if self.rx == 0:
+            return 0
+        return max(self.xe, min(self.x2(y), self.xe + self.ye - y))
+
+    # -- queries ---------------------------------------------------------------------
+    def column_points(self, x):
+        """The region-1 point's row in column x (0 <= x <= m), else None."""
+        if 0 <= x <= self.m:
+            return self.y1(x)
+        return None
+
+    def row_point(self, y):
+        """The region-2 point's column in row y (0 <= y < ye), else None."""
+        if 0 <= y < self.ye:
+            return self.x2_closed(y)
+        return None
+
+    def half_width(self, y):
+        """The right-most quadrant point of row y (the fill's extent), or -1."""
+        if y < 0 or y > self.ry:
+            return -1
+        if y == 0 and self.tip < self.rx:
+            return self.rx
+        best = -1
+        if y < self.ye:
+            best = self.x2_closed(y)
+        for px, py in self.points:
+            if py == y and px > best:
+                best = px
+        if self.m >= 0:
+            ym = self.y1(self.m)
+            if y == ym:
+                best = max(best, self.m)
+            elif y > ym:              # the last column of region 1 with Y1(x) >= y
+                r = self.rx2 * (4 * self.ry2 - (2 * y - 1) * (2 * y - 1))
+                best = max(best, isqrt(_ceil_div(r, 4 * self.ry2) - 1))
+        return best
+
+
+def _in(lo, hi, v):
+    return lo <= v <= hi
+
+
+def circle_pixels(xc, yc, r, width, height):
+    """The pixels of the midpoint circle (integers of any size) inside the
+    ``width`` x ``height`` raster, as an (N, 2) int64 array of (x, y), each once."""
+    out = set()
+    if r == 0:
+        if _in(0, width - 1, xc) and _in(0, height - 1, yc):
+            out.add((xc, yc))
+        return _array(out)
+    for col in range(width):           # the octant images (+-x, +-y): columns
+        x = abs(col - xc)
+        if x < r:
+            y = circle_y(x, r)
+            if x <= y:
+                for row in (yc + y, yc - y):
+                    if _in(0, height - 1, row):
+                        out.add((col, row))
+    for row in range(height):          # the images (+-y, +-x): rows
+        x = abs(row - yc)
+        if x < r:
+            y = circle_y(x, r)
+            if x <= y:
+                for col in (xc + y, xc - y):
+                    if _in(0, width - 1, col):
+                        out.add((col, row))
+    return _array(out)
+
+
+def ellipse_pixels(xc, yc, rx, ry, width, height):
+    """The pixels of the midpoint ellipse (integers of any size) inside the raster,
+    as an (N, 2) int64 array, each once."""
+    q = Quadrant(rx, ry)
+    out = set()
+
+    def put(a, b):
+        for col in (xc + a, xc - a):
+            for row in (yc + b, yc - b):
+                if _in(0, width - 1, col) and _in(0, height - 1, row):
+                    out.add((col, row))
+
+    for col in range(width):
+        x = abs(col - xc)
+        y = q.column_points(x)
+        if y is not None:
+            put(x, y)
+    for row in range(height):
+        y = abs(row - yc)
+        x = q.row_point(y)
+        if x is not None:
+            put(x, y)
+    for a, b in q.points:
+        put(a, b)
+    if _in(0, height - 1, yc) and q.tip < rx:   # the tip's run along y = 0
+        for col in range(width):
+            if q.tip < abs(col - xc) <= rx:
+                out.add((col, yc))
+    return _array(out)
+
+
+def spans(xc, yc, rx, ry, width, height, circle):
+    """The filled conic's span of each visible scan line: an (N, 3) int64 array of
+    rows (y, x0, x1), the span from the left-most to the right-most outline pixel,
+    clipped to columns -3 .. width + 2 so that x1 - x0 keeps the parity of the true
+    span (the kernels draw it as a segment about an integer center)."""
+    q = None if circle else Quadrant(rx, ry)
+    rows = []
+    for row in range(height):
+        d = abs(row - yc)
+        w = circle_half_width(d, rx) if circle else q.half_width(d)
+        if w < 0:
+            continue
+        x0, x1 = xc - w, xc + w
+        if x1 < 0 or x0 > width - 1:
+            continue
+        c0, c1 = max(x0, -2), min(x1, width + 1)
+        if (c1 - c0) % 2:                  # only a clipped end can move
+            if c0 > x0:
+                c0 -= 1
+            else:
+                c1 += 1
+        rows.append((row, c0, c1))
+    return np.array(rows, np.int64).reshape(-1, 3)
+
+
+def _array(pixels):
+    return np.array(sorted(pixels), np.int64).reshape(-1, 2)
+
+
+# -- the ideal conic near the frame (strokes, antialiasing) -------------------------
+
+#: Fixed-point scale of the local samples: coordinates are integers times 2**-40.
+_BITS = 40
+_ONE = 1 << _BITS
+#: Bisection depth of a chord, at most (each halving quarters its deviation).
+_DEPTH = 24
+
+
+def _branch(a, b, t):
+    """b sqrt(1 - t**2 / a**2) in fixed point, for the fixed-point |t| <= a."""
+    n = b * b * (a * a * _ONE * _ONE - t * t)
+    return isqrt(n // (a * a)) if n > 0 else 0
+
+
+_SIGNS = ((1, 1), (-1, 1), (-1, -1), (1, -1))   # quadrants I..IV, counterclockwise
+
+
+def _quadrant(u, v):
+    """The quadrant (0..3) a point (u, v) relative to the center belongs to; an axis
+    point starts the quadrant that leaves it counterclockwise."""
+    if v == 0:
+        return 0 if u > 0 else 2
+    if u == 0:
+        return 1 if v > 0 else 3
+    return (0 if u > 0 else 1) if v > 0 else (2 if u < 0 else 3)
+
+
+def _key(q, u, v):
+    su, sv = _SIGNS[q]
+    return (q, -sv * u, su * v) if q in (0, 2) else (q, -sv * u, su * v)
+
+
+def local_runs(xc, yc, rx, ry, window, tolerance=0.025):
+    """The ideal ellipse (xc, yc, rx, ry) (integers of any size, rx, ry > 0) inside
+    the ``window`` (x0, y0, x1, y1) of integers, as polylines within ``tolerance``
+    pixel of it, counterclockwise: a list of ((K, 2) float64 array, closed).
+
+    The ellipse is sampled exactly (fixed point, 2**-40 pixel) at the window's
+    integer columns where its slope is at most 1 and at its integer rows where it is
+    at least 1, and at its axis points; each quadrant's part inside the window is one
+    piece (the quadrant's arc is monotone in x and y), pieces meet at axis points
+    inside the window, and chords are halved until their deviation is within
+    ``tolerance``.  Cost O(window width + height) samples, whatever the radii.
+    """
+    x0, y0, x1, y1 = window
+    rx2, ry2 = rx * rx, ry * ry
+    pts = {}
+
+    def add(u, v):
+        pts[(u, v)] = _key(_quadrant(u, v), u, v)
+
+    for col in range(x0, x1 + 1):
+        u = (col - xc) * _ONE
+        if abs(u) <= rx * _ONE:
+            v = _branch(rx, ry, abs(u))
+            if ry2 * abs(u) <= rx2 * v:
+                for s in (1, -1):
+                    if y0 * _ONE <= yc * _ONE + s * v <= y1 * _ONE:
+                        add(u, s * v)
+    for row in range(y0, y1 + 1):
+        v = (row - yc) * _ONE
+        if abs(v) <= ry * _ONE:
+            u = _branch(ry, rx, abs(v))
+            if rx2 * abs(v) <= ry2 * u:
+                for s in (1, -1):
+                    if x0 * _ONE <= xc * _ONE + s * u <= x1 * _ONE:
+                        add(s * u, v)
+    for u, v in ((rx, 0), (0, ry), (-rx, 0), (0, -ry)):
+        if x0 <= xc + u <= x1 and y0 <= yc + v <= y1:
+            add(u * _ONE, v * _ONE)
+    order = sorted(pts, key=pts.get)
+    if not order:
+        return []
+
+    def starts_quadrant(p):
+        return p[0] == 0 or p[1] == 0
+
+    def linked(p, q):
+        a, b = pts[p][0], pts[q][0]
+        return a == b or ((a + 1) % 4 == b and starts_quadrant(q))
+
+    # cut the cyclic sequence where it leaves the window
+    cuts = [i for i in range(len(order)) if not linked(order[i - 1], order[i])]
+    if not cuts:
+        runs, closed = [order], True
+    else:
+        runs = [order[a:b] if a < b else order[a:] + order[:b]
+                for a, b in zip(cuts, cuts[1:] + [cuts[0] + len(order)])]
+        runs = [r if len(r) > 0 else r for r in runs]
+        closed = False
+
+    def bisect(p, q, depth, out):
+        du, dv = q[0] - p[0], q[1] - p[1]
+        qd = pts[p][0] if (pts[p][0] == pts[q][0] or starts_quadrant(p)) else pts[p][0]
+        su, sv = _SIGNS[qd]
+        if abs(du) >= abs(dv):
+            mu = (p[0] + q[0]) // 2
+            m = (mu, sv * _branch(rx, ry, abs(mu)))
+        else:
+            mv = (p[1] + q[1]) // 2
+            m = (su * _branch(ry, rx, abs(mv)), mv)
+        length = (du * du + dv * dv) ** 0.5
+        dev = abs(du * (m[1] - p[1]) - dv * (m[0] - p[0])) / length if length else 0.0
+        if depth < _DEPTH and dev > tolerance * _ONE:
+            pts.setdefault(m, pts[p])
+            bisect(p, m, depth + 1, out)
+            out.append(m)
+            bisect(m, q, depth + 1, out)
+
+    out_runs = []
+    for run in runs:
+        seq = run + [run[0]] if closed else run
+        fine = [seq[0]]
+        for p, q in zip(seq, seq[1:]):
+            bisect(p, q, 0, fine)
+            fine.append(q)
+        if closed:
+            fine.pop()
+        xy = np.array([[(xc * _ONE + u) / _ONE, (yc * _ONE + v) / _ONE] for u, v in fine])
+        out_runs.append((xy, closed))
+    return out_runs

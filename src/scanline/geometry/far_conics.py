@@ -41,6 +41,7 @@ midpoint circle algorithm) and 3-6 (the midpoint ellipse algorithm); J. E. Brese
 plotter", Computer Journal 10(3), 1967.
 """
 
+from fractions import Fraction
 from math import isqrt
 
 import numpy as np
@@ -189,59 +190,61 @@ def _in(lo, hi, v):
     return lo <= v <= hi
 
 
-def circle_pixels(xc, yc, r, width, height):
-    """The pixels of the midpoint circle (integers of any size) inside the
-    ``width`` x ``height`` raster, as an (N, 2) int64 array of (x, y), each once."""
+def circle_pixels(xc, yc, r, window):
+    """The pixels of the midpoint circle (integers of any size) inside ``window``
+    (x0, y0, x1, y1), as an (N, 2) int64 array of (x, y), each once."""
+    x0, y0, x1, y1 = window
     out = set()
     if r == 0:
-        if _in(0, width - 1, xc) and _in(0, height - 1, yc):
+        if _in(x0, x1, xc) and _in(y0, y1, yc):
             out.add((xc, yc))
         return _array(out)
-    for col in range(width):           # the octant images (+-x, +-y): columns
+    for col in range(x0, x1 + 1):       # the octant images (+-x, +-y): columns
         x = abs(col - xc)
         if x < r:
             y = circle_y(x, r)
             if x <= y:
                 for row in (yc + y, yc - y):
-                    if _in(0, height - 1, row):
+                    if _in(y0, y1, row):
                         out.add((col, row))
-    for row in range(height):          # the images (+-y, +-x): rows
+    for row in range(y0, y1 + 1):       # the images (+-y, +-x): rows
         x = abs(row - yc)
         if x < r:
             y = circle_y(x, r)
             if x <= y:
                 for col in (xc + y, xc - y):
-                    if _in(0, width - 1, col):
+                    if _in(x0, x1, col):
                         out.add((col, row))
     return _array(out)
 
 
-def ellipse_pixels(xc, yc, rx, ry, width, height):
-    """The pixels of the midpoint ellipse (integers of any size) inside the raster,
-    as an (N, 2) int64 array, each once."""
+def ellipse_pixels(xc, yc, rx, ry, window):
+    """The pixels of the midpoint ellipse (integers of any size) inside ``window``
+    (x0, y0, x1, y1), as an (N, 2) int64 array, each once."""
+    x0, y0, x1, y1 = window
     q = Quadrant(rx, ry)
     out = set()
 
     def put(a, b):
         for col in (xc + a, xc - a):
             for row in (yc + b, yc - b):
-                if _in(0, width - 1, col) and _in(0, height - 1, row):
+                if _in(x0, x1, col) and _in(y0, y1, row):
                     out.add((col, row))
 
-    for col in range(width):
+    for col in range(x0, x1 + 1):       # region 1: one point per column
         x = abs(col - xc)
         y = q.column_points(x)
         if y is not None:
             put(x, y)
-    for row in range(height):
+    for row in range(y0, y1 + 1):       # region 2: one point per row
         y = abs(row - yc)
         x = q.row_point(y)
         if x is not None:
             put(x, y)
     for a, b in q.points:
         put(a, b)
-    if _in(0, height - 1, yc) and q.tip < rx:   # the tip's run along y = 0
-        for col in range(width):
+    if _in(y0, y1, yc) and q.tip < rx:   # the tip's run along y = 0
+        for col in range(x0, x1 + 1):
             if q.tip < abs(col - xc) <= rx:
                 out.add((col, yc))
     return _array(out)
@@ -286,9 +289,14 @@ _DEPTH = 24
 
 
 def _branch(a, b, t):
-    """b sqrt(1 - t**2 / a**2) in fixed point, for the fixed-point |t| <= a."""
-    n = b * b * (a * a * _ONE * _ONE - t * t)
+    """b sqrt(1 - t**2 / a**2) for fixed-point a > 0, b and |t| <= a."""
+    n = b * b * (a * a - t * t)
     return isqrt(n // (a * a)) if n > 0 else 0
+
+
+def _fixed(value):
+    """A real number (int, float, Fraction) in fixed point, to the nearest 2**-40."""
+    return round(Fraction(value) * _ONE)
 
 
 _SIGNS = ((1, 1), (-1, 1), (-1, -1), (1, -1))   # quadrants I..IV, counterclockwise
@@ -305,12 +313,14 @@ def _quadrant(u, v):
 
 
 def _key(q, u, v):
+    """The counterclockwise order of points of quadrant q: x falls in I and II and
+    rises in III and IV, y the other way round in II and IV."""
     su, sv = _SIGNS[q]
-    return (q, -sv * u, su * v) if q in (0, 2) else (q, -sv * u, su * v)
+    return (q, -sv * u, su * v)
 
 
 def local_runs(xc, yc, rx, ry, window, tolerance=0.025):
-    """The ideal ellipse (xc, yc, rx, ry) (integers of any size, rx, ry > 0) inside
+    """The ideal ellipse (xc, yc, rx, ry) (reals of any size, rx, ry > 0) inside
     the ``window`` (x0, y0, x1, y1) of integers, as polylines within ``tolerance``
     pixel of it, counterclockwise: a list of ((K, 2) float64 array, closed).
 
@@ -322,6 +332,9 @@ def local_runs(xc, yc, rx, ry, window, tolerance=0.025):
     ``tolerance``.  Cost O(window width + height) samples, whatever the radii.
     """
     x0, y0, x1, y1 = window
+    xc, yc, rx, ry = (_fixed(c) for c in (xc, yc, rx, ry))
+    if rx <= 0 or ry <= 0:
+        return []
     rx2, ry2 = rx * rx, ry * ry
     pts = {}
 
@@ -329,24 +342,24 @@ def local_runs(xc, yc, rx, ry, window, tolerance=0.025):
         pts[(u, v)] = _key(_quadrant(u, v), u, v)
 
     for col in range(x0, x1 + 1):
-        u = (col - xc) * _ONE
-        if abs(u) <= rx * _ONE:
+        u = col * _ONE - xc
+        if abs(u) <= rx:
             v = _branch(rx, ry, abs(u))
             if ry2 * abs(u) <= rx2 * v:
                 for s in (1, -1):
-                    if y0 * _ONE <= yc * _ONE + s * v <= y1 * _ONE:
+                    if y0 * _ONE <= yc + s * v <= y1 * _ONE:
                         add(u, s * v)
     for row in range(y0, y1 + 1):
-        v = (row - yc) * _ONE
-        if abs(v) <= ry * _ONE:
+        v = row * _ONE - yc
+        if abs(v) <= ry:
             u = _branch(ry, rx, abs(v))
             if rx2 * abs(v) <= ry2 * u:
                 for s in (1, -1):
-                    if x0 * _ONE <= xc * _ONE + s * u <= x1 * _ONE:
+                    if x0 * _ONE <= xc + s * u <= x1 * _ONE:
                         add(s * u, v)
     for u, v in ((rx, 0), (0, ry), (-rx, 0), (0, -ry)):
-        if x0 <= xc + u <= x1 and y0 <= yc + v <= y1:
-            add(u * _ONE, v * _ONE)
+        if x0 * _ONE <= xc + u <= x1 * _ONE and y0 * _ONE <= yc + v <= y1 * _ONE:
+            add(u, v)
     order = sorted(pts, key=pts.get)
     if not order:
         return []
@@ -365,13 +378,12 @@ def local_runs(xc, yc, rx, ry, window, tolerance=0.025):
     else:
         runs = [order[a:b] if a < b else order[a:] + order[:b]
                 for a, b in zip(cuts, cuts[1:] + [cuts[0] + len(order)])]
-        runs = [r if len(r) > 0 else r for r in runs]
+        runs = [r for r in runs if len(r) > 1]    # a point that only grazes it
         closed = False
 
     def bisect(p, q, depth, out):
         du, dv = q[0] - p[0], q[1] - p[1]
-        qd = pts[p][0] if (pts[p][0] == pts[q][0] or starts_quadrant(p)) else pts[p][0]
-        su, sv = _SIGNS[qd]
+        su, sv = _SIGNS[pts[p][0]]      # the arc from p on is in p's quadrant
         if abs(du) >= abs(dv):
             mu = (p[0] + q[0]) // 2
             m = (mu, sv * _branch(rx, ry, abs(mu)))
@@ -395,6 +407,6 @@ def local_runs(xc, yc, rx, ry, window, tolerance=0.025):
             fine.append(q)
         if closed:
             fine.pop()
-        xy = np.array([[(xc * _ONE + u) / _ONE, (yc * _ONE + v) / _ONE] for u, v in fine])
+        xy = np.array([[(xc + u) / _ONE, (yc + v) / _ONE] for u, v in fine], np.float64)
         out_runs.append((xy, closed))
     return out_runs

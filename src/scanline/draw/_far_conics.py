@@ -213,18 +213,23 @@ def _subset(color, idx):
     return color
 
 
-def batch(fb, rows, color, exact, near, far, reach=1.0, fill=False):
+def batch(fb, rows, color, exact, near, far, reach=1.0, fill=False, rounded=True):
     """Draw a batch of conics ``rows`` (N, 4) float64 (xc, yc, rx, ry), finite, in
     order: the rows ``exact`` (a bool array) by ``near(int64 rows, colors)`` (the
     compiled batch, as before), the others one by one by ``far(xc, yc, rx, ry,
     color)`` with Python integers (rounded as the kernels round), after dropping
     those that cannot touch the frame (:func:`scanline.geometry.guard.conics_outside`,
     vectorized, so a million far rows cost a few numpy passes).  Consecutive exact
-    rows go to one compiled call; with one color for all, all of them do."""
+    rows go to one compiled call; with one color for all, all of them do.
+    ``rounded=False`` (antialiasing): the rows are passed on as they are, floats."""
     n = len(rows)
     colors(fb, color, n)                          # checks the count and the specs
+
+    def pixels(a):
+        return np.ascontiguousarray(np.floor(a + 0.5).astype(np.int64)) if rounded else a
+
     if exact.all():
-        near(np.ascontiguousarray(np.floor(rows + 0.5).astype(np.int64)), color)
+        near(pixels(rows), color)
         return
     missing = ~exact & conics_outside(fb, rows[:, 0], rows[:, 1], rows[:, 2], rows[:, 3],
                                       reach, fill)
@@ -239,9 +244,8 @@ def batch(fb, rows, color, exact, near, far, reach=1.0, fill=False):
         if len(idx) == 0:
             continue
         if exact[idx[0]]:
-            near(np.ascontiguousarray(np.floor(rows[idx] + 0.5).astype(np.int64)),
-                 _subset(color, idx))
+            near(pixels(rows[idx]), _subset(color, idx))
             continue
         for i in idx.tolist():
-            xc, yc, rx, ry = (math.floor(c + 0.5) for c in rows[i].tolist())
-            far(xc, yc, rx, ry, _spec(color, i))
+            row = rows[i].tolist()
+            far(*((math.floor(c + 0.5) for c in row) if rounded else row), _spec(color, i))

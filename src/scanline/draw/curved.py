@@ -20,7 +20,8 @@ from .._kernels.variants import layout, token
 from . import _blend
 from ._common import colors, target
 from ..geometry import guard
-from .conics import _big, _check_ellipse, circle, ellipse
+from . import _far_conics as far
+from .conics import _big, _check_ellipse, _exact_rows, circle, ellipse, exact
 from .lines import lines
 
 TAU = 2 * math.pi
@@ -86,8 +87,16 @@ def _antialiased(fb, name, rows, columns, color, style):
     from .polygon import _solid_only
 
     _solid_only(style)
-    arr = _reals(name, rows, columns, radius_columns=tuple(range(2, columns)))
+    arr = _reals(name, rows, columns, radius_columns=tuple(range(2, columns)), far=True)
     filled_ellipses(fb, arr if columns == 4 else arr[:, [0, 1, 2, 2]], color)
+
+
+def _far_fill(fb, xc, yc, rx, ry, color, style, is_circle):
+    """A filled conic beyond the kernels' limits (:func:`scanline.draw._far_conics.fill`)."""
+    draw = circle if is_circle else ellipse
+    outline = (lambda: draw(fb, xc, yc, rx, color)) if is_circle else (
+        lambda: draw(fb, xc, yc, rx, ry, color))
+    far.fill(fb, xc, yc, rx, ry, color, style, is_circle, outline)
 
 
 def _translucent_batch(fb, arr, circle, color):
@@ -113,9 +122,12 @@ def fill_circle(fb, xc, yc, r, color=None, style=None, antialias=False):
     ----------
     fb : FrameBuffer
     xc, yc : number
-        Center, rounded to the nearest pixel center.
+        Center, rounded to the nearest pixel center; any finite value.
     r : number
-        Radius >= 0 (up to 2**30), rounded; r = 0 fills the center pixel.
+        Radius >= 0, rounded; r = 0 fills the center pixel.  Any finite value:
+        beyond the kernel's limits (center within +-2**30, r <= 2**30) the spans
+        of the visible rows come from the same midpoint outline computed exactly
+        in Python integers (:mod:`scanline.geometry.far_conics`).
     color : color
         A translucent color is composited (:mod:`scanline.draw._blend`).
     style : FillStyle, optional
@@ -160,8 +172,11 @@ def fill_circle(fb, xc, yc, r, color=None, style=None, antialias=False):
         return
     if _big(xc, yc, r, r) and guard.conic_outside(fb, xc, yc, r, r, fill=True):
         return
-    xc, yc = _center(xc, yc)
-    r = v.radius("r", r)
+    xc, yc = v.any_coordinate("xc", xc), v.any_coordinate("yc", yc)
+    r = v.any_radius("r", r)
+    if not exact(xc, yc, r, r, True):
+        _far_fill(fb, xc, yc, r, r, color, style, True)
+        return
     hp, combine = _whole()
     _paint(fb, color, style, xc, yc, r, r, True, hp, combine, lambda: circle(fb, xc, yc, r, color))
 
@@ -175,7 +190,9 @@ def fill_ellipse(fb, xc, yc, rx, ry, color=None, style=None, antialias=False):
     xc, yc : number
         Center, rounded to the nearest pixel center.
     rx, ry : number
-        Semi-axes >= 0, rounded (the limits of :func:`scanline.draw.ellipse`).
+        Semi-axes >= 0, rounded; any finite center and semi-axes (beyond the
+        kernel's limits, those of :func:`scanline.draw.ellipse`, computed exactly
+        as it computes them).
     color : color
         A translucent color is composited.
     style : FillStyle, optional
@@ -212,10 +229,12 @@ def fill_ellipse(fb, xc, yc, rx, ry, color=None, style=None, antialias=False):
         return
     if _big(xc, yc, rx, ry) and guard.conic_outside(fb, xc, yc, rx, ry, fill=True):
         return
-    xc, yc = _center(xc, yc)
-    rx = v.radius("rx", rx)
-    ry = v.radius("ry", ry)
-    _check_ellipse(rx, ry)
+    xc, yc = v.any_coordinate("xc", xc), v.any_coordinate("yc", yc)
+    rx = v.any_radius("rx", rx)
+    ry = v.any_radius("ry", ry)
+    if not exact(xc, yc, rx, ry, False):
+        _far_fill(fb, xc, yc, rx, ry, color, style, False)
+        return
     hp, combine = _whole()
     _paint(fb, color, style, xc, yc, rx, ry, False, hp, combine,
            lambda: ellipse(fb, xc, yc, rx, ry, color))
@@ -226,39 +245,46 @@ def fill_circles(fb, circles, color=None, antialias=False):
 
     ``color`` is one color or one per disk (see :func:`scanline.draw.lines`);
     translucent colors are composited disk after disk.  ``antialias=True`` fills
-    the ideal disks (unrounded) by coverage, as :func:`fill_circle` does.
+    the ideal disks (unrounded) by coverage, as :func:`fill_circle` does.  Any
+    finite centers and radii, as for :func:`scanline.draw.circles`.
     """
     if antialias:
         _antialiased(fb, "circles", circles, 3, color, None)
         return
+    target(fb)
+    rows = v.coordinate_array("circles", circles, 3, radius_columns=(2,), far=True)
+    rows = np.ascontiguousarray(rows[:, [0, 1, 2, 2]])
+    far.batch(fb, rows, color, _exact_rows(rows, True),
+              lambda arr, c: _fill_batch(fb, np.ascontiguousarray(arr[:, :3]), True, c),
+              lambda *row: _far_fill(fb, *row, None, True), fill=True)
+
+
+def _fill_batch(fb, arr, is_circle, color):
+    """Fill the rounded rows ``arr`` within the kernels' limits in one compiled
+    call (translucent colors: one by one)."""
     buf, packed, width, height = target(fb)
-    arr = v.coordinate_array("circles", circles, 3, radius_columns=(2,))
     if _blend.translucent(color):
-        _translucent_batch(fb, arr, True, color)
+        _translucent_batch(fb, arr, is_circle, color)
         return
-    call(k.fill_regions, lambda: region_work(arr[:, 2], arr[:, 2], width, height), buf,
-         layout(packed), width, height, arr, _shape(True), colors(fb, color, len(arr)))
+    call(k.fill_regions, lambda: region_work(arr[:, 2], arr[:, -1], width, height), buf,
+         layout(packed), width, height, arr, _shape(is_circle), colors(fb, color, len(arr)))
 
 
 def fill_ellipses(fb, ellipses, color=None, antialias=False):
     """Fill N ellipses in one compiled call; ``ellipses`` has rows ``(xc, yc, rx, ry)``.
 
     ``color`` is one color or one per ellipse (translucent ones are composited);
-    ``antialias=True`` fills the ideal ellipses by coverage.
+    ``antialias=True`` fills the ideal ellipses by coverage.  Any finite centers
+    and radii, as for :func:`scanline.draw.ellipses`.
     """
     if antialias:
         _antialiased(fb, "ellipses", ellipses, 4, color, None)
         return
-    buf, packed, width, height = target(fb)
-    arr = v.coordinate_array("ellipses", ellipses, 4, radius_columns=(2, 3))
-    if len(arr):  # the rows with the largest axis and product are the ones to check
-        for row in (np.argmax(arr[:, 2:].max(axis=1)), np.argmax(arr[:, 2].astype(np.float64) * arr[:, 3])):
-            _check_ellipse(int(arr[row, 2]), int(arr[row, 3]))
-    if _blend.translucent(color):
-        _translucent_batch(fb, arr, False, color)
-        return
-    call(k.fill_regions, lambda: region_work(arr[:, 2], arr[:, 3], width, height), buf,
-         layout(packed), width, height, arr, _shape(False), colors(fb, color, len(arr)))
+    target(fb)
+    rows = v.coordinate_array("ellipses", ellipses, 4, radius_columns=(2, 3), far=True)
+    far.batch(fb, rows, color, _exact_rows(rows, False),
+              lambda arr, c: _fill_batch(fb, arr, False, c),
+              lambda *row: _far_fill(fb, *row, None, False), fill=True)
 
 
 # -- arcs, chords and pies ----------------------------------------------------------------

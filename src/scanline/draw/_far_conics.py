@@ -23,7 +23,7 @@ from fractions import Fraction
 import numpy as np
 
 from .._kernels import curved as kcurved
-from .._kernels import lines as kl
+from .._kernels import linetype as kl
 from .._kernels._jit import call
 from .._kernels.variants import layout, token
 from .._validate import COORD_LIMIT

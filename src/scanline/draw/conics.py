@@ -60,8 +60,9 @@ def _exact_rows(arr, circle):
     ok = np.abs(a[:, :2]).max(axis=1, initial=0) <= v.COORD_LIMIT
     if circle:
         return ok & (a[:, 2] <= v.COORD_LIMIT)
-    return ok & (a[:, 2:].max(axis=1, initial=0) <= ELLIPSE_AXIS_LIMIT) & (
-        a[:, 2] * a[:, 3] <= ELLIPSE_PRODUCT_LIMIT)
+    with np.errstate(over="ignore"):                   # inf is beyond the limit too
+        return ok & (a[:, 2:].max(axis=1, initial=0) <= ELLIPSE_AXIS_LIMIT) & (
+            a[:, 2] * a[:, 3] <= ELLIPSE_PRODUCT_LIMIT)
 
 
 def _far(fb, xc, yc, rx, ry, color, attrs, antialias, circle, names=("rx", "ry")):

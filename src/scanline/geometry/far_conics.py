@@ -376,8 +376,8 @@ def local_runs(xc, yc, rx, ry, window, tolerance=0.025):
     if not cuts:
         runs, closed = [order], True
     else:
-        runs = [order[a:b] if a < b else order[a:] + order[:b]
-                for a, b in zip(cuts, cuts[1:] + [cuts[0] + len(order)])]
+        twice = order + order               # the last run wraps round to the first
+        runs = [twice[a:b] for a, b in zip(cuts, cuts[1:] + [cuts[0] + len(order)])]
         runs = [r for r in runs if len(r) > 1]    # a point that only grazes it
         closed = False
 

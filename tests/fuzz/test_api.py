@@ -100,9 +100,9 @@ def _finite(*vals):
 
 #: Conic kinds that take any finite center and radius (issue 11): for those a
 #: ScanlineError on finite arguments is a failure.  Dashed conics beyond the
-#: kernels' limits, dashed ones of radius > 2**16 and arcs and pies beyond them are
-#: still refused by name.
-DRAWN = {"circle", "ellipse", "fill_circle", "fill_ellipse", "wide", "aa"}
+#: kernels' limits or of radius > 2**16, and chords beyond them, are still refused
+#: by name.
+DRAWN = {"circle", "ellipse", "fill_circle", "fill_ellipse", "wide", "aa", "arc", "pie"}
 
 
 @given(xc=values, yc=values, rx=values, ry=values, mode=MODES, w=size, h=size,

@@ -85,6 +85,42 @@ def test_forced_far_circle_is_the_kernels_circle(r):
         assert lit(fill_got) == lit(fill_want), (xc, yc, r)
 
 
+@pytest.mark.parametrize("rx, ry", [(0, 0), (1, 1), (7, 7), (30, 30), (3, 11), (40, 13),
+                                    (2000, 2000), (2000, 7)])
+def test_forced_far_arcs_and_pies_are_the_kernels(rx, ry):
+    from scanline.draw import curved
+    rng = np.random.default_rng(rx * 31 + ry)
+    for _ in range(16):
+        xc, yc = _near_outline(rng, rx, ry)
+        a0, a1 = rng.uniform(-7, 7, 2)
+        for closed, name in ((True, "arc"), (False, "pie")):
+            region = curved._sector(a0, a1, closed=closed)
+            want, got = fb("1"), fb("1")
+            getattr(sl.draw, name)(want, xc, yc, rx, ry, a0, a1)
+            if region is not None and closed:
+                far.arc(got, xc, yc, rx, ry, region, 1, rx == ry)
+            elif region is not None:
+                far.fill(got, xc, yc, rx, ry, 1, None, rx == ry, None, region)
+            assert lit(got) == lit(want), (name, xc, yc, rx, ry, a0, a1)
+
+
+def test_far_arcs_and_pies():
+    top = (20, 15 - 2**40, 2**40, 2**40)
+    # the visible top of the circle is at polar angle pi/2 +- 2e-11
+    assert lit(_draw(lambda f: sl.draw.arc(f, *top, math.pi / 2, math.pi))) == {
+        (x, 15) for x in range(21)}
+    # slices that share a ray tile the disk exactly once, far away too
+    a, b = image(lambda f: sl.draw.pie(f, *top, 0.0, math.pi / 2)), image(
+        lambda f: sl.draw.pie(f, *top, math.pi / 2, 2 * math.pi))
+    whole = image(lambda f: sl.draw.fill_circle(f, *top[:3]))
+    assert a.any() and b.any() and not (a & b).any()
+    np.testing.assert_array_equal(a | b, whole)
+    # a hollow far pie is its arc and radii; a far chord is still refused by name
+    assert image(lambda f: sl.draw.pie(f, *top, 1.0, 2.0, style=sl.FillStyle.hollow())).any()
+    with pytest.raises(sl.ArgumentValueError, match="yc="):
+        sl.draw.chord(fb(), *top, 0.0, 1.0)
+
+
 # -- beyond the limits: independent references ---------------------------------------
 
 def midpoint_ellipse_quadrant(rx, ry):

@@ -66,13 +66,18 @@ def outline(fb, xc, yc, rx, ry, value, circle):
     _put(buf, packed, width, height, rows, value)
 
 
-def fill(fb, xc, yc, rx, ry, color, style, circle, hollow):
+def fill(fb, xc, yc, rx, ry, color, style, circle, hollow, region=None):
     """Fill the area bounded by the midpoint outline (spans from its left-most to
-    its right-most pixel on each visible row) in ``style``; ``hollow`` draws the
-    outline (the hollow style)."""
-    s = fc.spans(xc, yc, rx, ry, fb.width, fb.height, circle)
-    if len(s) == 0:
+    its right-most pixel on each visible row) in ``style``, within the half-planes
+    ``region`` (a pie: ``(hp, combine)`` as the curved-area kernels take them);
+    ``hollow`` draws the outline (the hollow style)."""
+    s = []
+    for row, y, w in fc.half_widths(yc, rx, ry, fb.height, circle):
+        for lo, hi in _cut([(-w, w)], region, y):
+            s += fc.clipped(row, xc + lo, xc + hi, fb.width)
+    if not s:
         return
+    s = np.array(s, np.int64)
     rows = np.stack([(s[:, 1] + s[:, 2]) // 2, s[:, 0], (s[:, 2] - s[:, 1]) // 2,
                      np.zeros(len(s), np.int64)], axis=1)
     bbox = (int(s[:, 1].min()), int(s[:, 0].min()), int(s[:, 2].max()), int(s[:, 0].max()))
@@ -81,6 +86,55 @@ def fill(fb, xc, yc, rx, ry, color, style, circle, hollow):
         _put(buf, packed, width, height, rows, value, ox, oy)
 
     _blend.fill(fb, color, style, bbox, draw, hollow)
+
+
+def arc(fb, xc, yc, rx, ry, region, color, circle):
+    """The midpoint outline's pixels whose polar angle is in the sector ``region``
+    (``(hp, combine)``: the half-planes of the curved-area kernels)."""
+    p = [(x, y) for x, y in pixels(xc, yc, rx, ry, circle, _frame(fb)).tolist()
+         if _cut([(x - xc, x - xc)], region, y - yc)]
+    if not p:
+        return
+    rows = np.zeros((len(p), 4), np.int64)
+    rows[:, :2] = p
+    lo, hi = rows[:, :2].min(axis=0), rows[:, :2].max(axis=0)
+
+    def draw(buf, packed, width, height, ox, oy, value):
+        _put(buf, packed, width, height, rows, value, ox, oy)
+
+    _blend.paint(fb, color, (int(lo[0]), int(lo[1]), int(hi[0]), int(hi[1])), draw)
+
+
+def _half_plane(nx, ny, c, tie, y):
+    """The x-interval of row y where nx x + ny y + c > 0 (>= 0 with ``tie``), in
+    integers of any size with unbounded ends (the kernels' ``half_plane`` rule,
+    whose open end 2**62 would be too near for a far conic)."""
+    k = ny * y + c
+    if nx > 0:
+        return (-(k // nx) if tie else (-k) // nx + 1), math.inf
+    if nx < 0:
+        return -math.inf, (k // -nx if tie else -((-k) // -nx) - 1)
+    if k > 0 or (k == 0 and tie):
+        return -math.inf, math.inf
+    return math.inf, -math.inf
+
+
+def _cut(runs, region, y):
+    """The parts of the runs (x-intervals of row y, relative to the center) inside
+    ``region`` (None: everything), combined as ``region_spans`` combines them."""
+    if region is None:
+        return runs
+    hp, combine = region
+    (s0, e0), (s1, e1) = (_half_plane(*(int(c) for c in h[:3]), h[3] != 0, y) for h in hp)
+    if combine == kcurved.BOTH:
+        parts = [(max(s0, s1), min(e0, e1))]
+    elif s0 > e0:
+        parts = [(s1, e1)]
+    elif s1 <= e1 and s1 <= e0 + 1 and s0 <= e1 + 1:      # touching: one interval
+        parts = [(min(s0, s1), max(e0, e1))]
+    else:
+        parts = [(s0, e0), (s1, e1)]
+    return [(max(a, s), min(b, e)) for a, b in runs for s, e in parts if max(a, s) <= min(b, e)]
 
 
 def _runs(fb, xc, yc, rx, ry, margin):

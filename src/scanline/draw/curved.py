@@ -367,7 +367,15 @@ def _pie_region(rx, ry, start, end):
 
 def _cut(fb, xc, yc, rx, ry, start, end, color, style, shape):
     """Paint the part of the filled ellipse (circle) that ``shape(rx, ry, start,
-    end)`` keeps; its straight edges and the arc are the hollow outline."""
+    end)`` keeps; its straight edges and the arc are the hollow outline.  A pie
+    beyond the kernels' limits is drawn by :func:`_far_pie` (a chord still is
+    refused there: its line is computed in floating point)."""
+    if shape is _pie_region:
+        fx, fy = v.any_coordinate("xc", xc), v.any_coordinate("yc", yc)
+        frx, fry = v.any_radius("rx", rx), v.any_radius("ry", ry)
+        if not exact(fx, fy, frx, fry, frx == fry):
+            _far_pie(fb, fx, fy, frx, fry, start, end, color, style)
+            return
     xc, yc = _center(xc, yc)
     rx, ry, is_circle = _axes(rx, ry)
     found = shape(rx, ry, start, end)
@@ -382,6 +390,31 @@ def _cut(fb, xc, yc, rx, ry, start, end, color, style, shape):
     _paint(fb, color, style, xc, yc, rx, ry, is_circle, *region, outline)
 
 
+def _far_point(rx, ry, angle):
+    """:func:`_polar_point` for semi-axes of any size (no product rx * ry)."""
+    c, s = math.cos(angle), math.sin(angle)
+    if rx == 0 or ry == 0:
+        return 0.0, 0.0
+    rho = 1.0 / math.hypot(c / float(rx), s / float(ry))
+    return rho * c, rho * s
+
+
+def _far_pie(fb, xc, yc, rx, ry, start, end, color, style):
+    """A pie beyond the kernels' limits: the far filled conic's spans within the
+    sector (:func:`scanline.draw._far_conics.fill`), the same pixels."""
+    region = _sector(start, end, closed=False)
+    if region is None:
+        return
+    a, b, _ = _sweep(start, end)
+    ends = [_far_point(rx, ry, t) for t in (a, b)]
+
+    def outline():
+        arc(fb, xc, yc, rx, ry, start, end, color)
+        lines(fb, [(xc, yc, xc + p[0], yc + p[1]) for p in ends], color)
+
+    far.fill(fb, xc, yc, rx, ry, color, style, rx == ry, outline, region)
+
+
 def arc(fb, xc, yc, rx, ry, start, end, color=None):
     """Draw the pixels of the midpoint ellipse (circle when rx = ry) whose polar
     angle lies in [start, end], counterclockwise.
@@ -392,8 +425,9 @@ def arc(fb, xc, yc, rx, ry, start, end, color=None):
     xc, yc : number
         Center, rounded to the nearest pixel center.
     rx, ry : number
-        Semi-axes; rx = ry draws part of :func:`scanline.draw.circle` (r <= 2**30),
-        otherwise part of :func:`scanline.draw.ellipse` (its limits).
+        Semi-axes; rx = ry draws part of :func:`scanline.draw.circle`, otherwise
+        part of :func:`scanline.draw.ellipse`; any finite center and semi-axes (beyond
+        the kernels' limits the same pixels, computed as those functions compute them).
     start, end : float
         Angles in radians (see the module notes); an arc is closed, both bounding
         rays included, so the arcs [a, b] and [b, c] together are [a, c].  Angles
@@ -421,10 +455,14 @@ def arc(fb, xc, yc, rx, ry, start, end, color=None):
     -------
     """
     target(fb)
-    xc, yc = _center(xc, yc)
-    rx, ry, is_circle = _axes(rx, ry)
+    xc, yc = v.any_coordinate("xc", xc), v.any_coordinate("yc", yc)
+    rx, ry = v.any_radius("rx", rx), v.any_radius("ry", ry)
+    is_circle = rx == ry
     region = _sector(start, end, closed=True)
     if region is None:
+        return
+    if not exact(xc, yc, rx, ry, is_circle):
+        far.arc(fb, xc, yc, rx, ry, region, color, is_circle)
         return
 
     def draw(buf, packed, width, height, ox, oy, value):

@@ -250,29 +250,46 @@ def ellipse_pixels(xc, yc, rx, ry, window):
     return _array(out)
 
 
-def spans(xc, yc, rx, ry, width, height, circle):
-    """The filled conic's span of each visible scan line: an (N, 3) int64 array of
-    rows (y, x0, x1), the span from the left-most to the right-most outline pixel,
-    clipped to columns -3 .. width + 2 so that x1 - x0 keeps the parity of the true
-    span (the kernels draw it as a segment about an integer center)."""
+def half_widths(yc, rx, ry, height, circle):
+    """The right-most outline pixel w (offset from the center) of each visible scan
+    line that the conic reaches: a list of (row, y - yc, w), the filled area's span
+    being xc - w .. xc + w (the kernels' ``w`` table)."""
     q = None if circle else Quadrant(rx, ry)
-    rows = []
+    out = []
     for row in range(height):
         d = abs(row - yc)
         w = circle_half_width(d, rx) if circle else q.half_width(d)
-        if w < 0:
-            continue
-        x0, x1 = xc - w, xc + w
-        if x1 < 0 or x0 > width - 1:
-            continue
-        c0, c1 = max(x0, -2), min(x1, width + 1)
-        if (c1 - c0) % 2:                  # only a clipped end can move
-            if c0 > x0:
-                c0 -= 1
-            else:
-                c1 += 1
-        rows.append((row, c0, c1))
+        if w >= 0:
+            out.append((row, row - yc, w))
+    return out
+
+
+def spans(xc, yc, rx, ry, width, height, circle):
+    """The filled conic's span of each visible scan line: an (N, 3) int64 array of
+    rows (y, x0, x1), from the left-most to the right-most outline pixel, clipped to
+    columns -3 .. width + 2 (see :func:`clipped`)."""
+    rows = []
+    for row, _, w in half_widths(yc, rx, ry, height, circle):
+        rows += clipped(row, xc - w, xc + w, width)
     return np.array(rows, np.int64).reshape(-1, 3)
+
+
+def clipped(row, x0, x1, width):
+    """The span x0 .. x1 of ``row`` (integers of any size) clipped to columns
+    -3 .. width + 2 as spans (row, a, b) with b - a even (the kernels draw a span as
+    a flat ellipse about an integer center): a clipped end moves one column further
+    out, or an odd span inside the frame is split in two.  [] when it misses the
+    frame."""
+    if x1 < 0 or x0 > width - 1 or x0 > x1:
+        return []
+    a, b = max(x0, -2), min(x1, width + 1)
+    if (b - a) % 2 == 0:
+        return [(row, a, b)]
+    if a > x0:
+        return [(row, a - 1, b)]
+    if b < x1:
+        return [(row, a, b + 1)]
+    return [(row, a, a), (row, a + 1, b)]
 
 
 def _array(pixels):

@@ -231,32 +231,25 @@ def test_far_arguments_as_floats_round_as_the_kernels_do():
     np.testing.assert_array_equal(a, b)
 
 
+def nearest_on(a, b, t):
+    """round(b sqrt(1 - t**2 / a**2)) in 700-digit decimals: the nearest pixel to the
+    ellipse along the other axis at offset t."""
+    t = Decimal(t)
+    return int((Decimal(b) * (1 - t * t / Decimal(a) ** 2).sqrt()).to_integral_value(
+        rounding="ROUND_HALF_EVEN"))
+
+
 def test_huge_ellipses_match_the_nearest_pixel_where_it_is_unambiguous():
     # far from the slope -1 point the midpoint ellipse is the pixel nearest the
     # curve in each column (region 1) or row (region 2)
     rx, ry = 10**300, 3 * 10**299
     xc, yc = 20, 15 - ry                              # the top, x = 0 .. 20 in region 1
-    f = fb("1")
-    sl.draw.ellipse(f, xc, yc, rx, ry)
-    want = set()
-    for col in range(W):
-        u = Decimal(col - xc)
-        y = (Decimal(ry) * (1 - u * u / (Decimal(rx) ** 2)).sqrt()).to_integral_value(
-            rounding="ROUND_HALF_EVEN")
-        if 0 <= yc + int(y) < H:
-            want.add((col, yc + int(y)))
-    assert lit(f) == want and len(want) == W
+    top = {(col, yc + nearest_on(rx, ry, col - xc)) for col in range(W)}
+    assert lit(_draw(lambda f: sl.draw.ellipse(f, xc, yc, rx, ry))) == top
     xc, yc = 20 - rx, 15                              # the right tip, region 2
-    f = fb("1")
-    sl.draw.ellipse(f, xc, yc, rx, ry)
-    want = set()
-    for row in range(H):
-        v = Decimal(row - yc)
-        x = (Decimal(rx) * (1 - v * v / (Decimal(ry) ** 2)).sqrt()).to_integral_value(
-            rounding="ROUND_HALF_EVEN")
-        if 0 <= xc + int(x) < W:
-            want.add((xc + int(x), row))
-    assert lit(f) == want and len(want) == H
+    tip = {(xc + nearest_on(ry, rx, row - yc), row) for row in range(H)}
+    assert lit(_draw(lambda f: sl.draw.ellipse(f, xc, yc, rx, ry))) == tip
+    assert {y for _, y in top} == {15} and {x for x, _ in tip} == {20}
 
 
 # -- degenerate and special cases ----------------------------------------------------

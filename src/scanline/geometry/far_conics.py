@@ -199,22 +199,16 @@ def circle_pixels(xc, yc, r, window):
         if _in(x0, x1, xc) and _in(y0, y1, yc):
             out.add((xc, yc))
         return _array(out)
-    for col in range(x0, x1 + 1):       # the octant images (+-x, +-y): columns
-        x = abs(col - xc)
-        if x < r:
-            y = circle_y(x, r)
-            if x <= y:
-                for row in (yc + y, yc - y):
-                    if _in(y0, y1, row):
-                        out.add((col, row))
-    for row in range(y0, y1 + 1):       # the images (+-y, +-x): rows
-        x = abs(row - yc)
-        if x < r:
-            y = circle_y(x, r)
-            if x <= y:
-                for col in (xc + y, xc - y):
-                    if _in(x0, x1, col):
-                        out.add((col, row))
+    for swap in (False, True):          # the images (+-x, +-y) by columns, (+-y, +-x) by rows
+        a0, a1, ca, b0, b1, cb = (y0, y1, yc, x0, x1, xc) if swap else (x0, x1, xc, y0, y1, yc)
+        for a in range(a0, a1 + 1):
+            x = abs(a - ca)
+            if x < r:
+                y = circle_y(x, r)
+                if x <= y:
+                    for b in (cb + y, cb - y):
+                        if _in(b0, b1, b):
+                            out.add((b, a) if swap else (a, b))
     return _array(out)
 
 
@@ -352,28 +346,22 @@ def local_runs(xc, yc, rx, ry, window, tolerance=0.025):
     xc, yc, rx, ry = (_fixed(c) for c in (xc, yc, rx, ry))
     if rx <= 0 or ry <= 0:
         return []
-    rx2, ry2 = rx * rx, ry * ry
     pts = {}
 
     def add(u, v):
         pts[(u, v)] = _key(_quadrant(u, v), u, v)
 
-    for col in range(x0, x1 + 1):
-        u = col * _ONE - xc
-        if abs(u) <= rx:
-            v = _branch(rx, ry, abs(u))
-            if ry2 * abs(u) <= rx2 * v:
-                for s in (1, -1):
-                    if y0 * _ONE <= yc + s * v <= y1 * _ONE:
-                        add(u, s * v)
-    for row in range(y0, y1 + 1):
-        v = row * _ONE - yc
-        if abs(v) <= ry:
-            u = _branch(ry, rx, abs(v))
-            if rx2 * abs(v) <= ry2 * u:
-                for s in (1, -1):
-                    if x0 * _ONE <= xc + s * u <= x1 * _ONE:
-                        add(s * u, v)
+    for swap in (False, True):    # by columns where |slope| <= 1, by rows where >= 1
+        a0, a1, ca, ra, b0, b1, cb, rb = ((y0, y1, yc, ry, x0, x1, xc, rx) if swap
+                                          else (x0, x1, xc, rx, y0, y1, yc, ry))
+        for a in range(a0, a1 + 1):
+            t = a * _ONE - ca
+            if abs(t) <= ra:
+                o = _branch(ra, rb, abs(t))
+                if rb * rb * abs(t) <= ra * ra * o:
+                    for s in (o, -o):
+                        if b0 * _ONE <= cb + s <= b1 * _ONE:
+                            add(*((s, t) if swap else (t, s)))
     for u, v in ((rx, 0), (0, ry), (-rx, 0), (0, -ry)):
         if x0 * _ONE <= xc + u <= x1 * _ONE and y0 * _ONE <= yc + v <= y1 * _ONE:
             add(u, v)

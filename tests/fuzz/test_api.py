@@ -99,10 +99,10 @@ def _finite(*vals):
 
 
 #: Conic kinds that take any finite center and radius (issue 11): for those a
-#: ScanlineError on finite arguments is a failure.  Dashed conics beyond the
-#: kernels' limits or of radius > 2**16, and chords beyond them, are still refused
-#: by name.
-DRAWN = {"circle", "ellipse", "fill_circle", "fill_ellipse", "wide", "aa", "arc", "pie"}
+#: ScanlineError on finite arguments is a failure.  Wide or antialiased dashed
+#: conics and chords beyond the kernels' limits are still refused by name.
+DRAWN = {"circle", "ellipse", "fill_circle", "fill_ellipse", "wide", "aa", "dash", "arc",
+         "pie"}
 
 
 @given(xc=values, yc=values, rx=values, ry=values, mode=MODES, w=size, h=size,

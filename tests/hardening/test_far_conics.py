@@ -299,11 +299,55 @@ def test_nan_and_inf_still_refused_by_name():
         sl.draw.circle(fb(), 1e12, 3, -1e12)
 
 
-def test_dashed_far_conics_are_refused_by_name():
-    with pytest.raises(sl.ArgumentValueError, match="dash="):
-        sl.draw.circle(fb(), 20, 15 - 2**40, 2**40, dash=(2, 1))
+def test_thick_dashed_far_conics_are_refused_by_name():
     with pytest.raises(sl.ArgumentValueError, match="dash="):
         sl.draw.ellipse(fb(), 20, 15 - 2**40, 2**41, 2**40, width=3, dash=(4, 2))
+    with pytest.raises(sl.ArgumentValueError, match="dash="):
+        sl.draw.circle(fb(), 20, 15 - 2**40, 2**40, antialias=True, dash=(4, 2))
+
+
+@pytest.mark.parametrize("rx, ry", [(0, 5), (1, 1), (9, 9), (40, 40), (7, 30), (30, 7),
+                                    (300, 2000), (60_000, 60_000)])   # within SEQUENCE_LIMIT
+def test_forced_far_dashed_conics_are_the_kernels(rx, ry):
+    from scanline.linestyle import LineStyle
+    rng = np.random.default_rng(rx + 3 * ry)
+    kinds = [{"dash": (2, 1)}, {"dash": (3.7, 1.3), "dash_phase": 0.6}, {"dash": "dotted"},
+             {"dash": 0b1111000011001100, "dash_phase": 3}, {"dash": (1, 1, 4, 2)},
+             {"dash": "dashed", "pen": "circle", "width": 3}]
+    for kw in kinds:
+        xc, yc = _near_outline(rng, rx, ry)
+        want, got = fb("1"), fb("1")
+        (sl.draw.circle(want, xc, yc, rx, 1, **kw) if rx == ry
+         else sl.draw.ellipse(want, xc, yc, rx, ry, 1, **kw))
+        far.stroke(got, xc, yc, rx, ry, 1, LineStyle(**kw), False, rx == ry)
+        assert lit(got) == lit(want), (xc, yc, kw)
+
+
+def test_a_huge_dashed_circle_counts_its_dashes_from_xc_plus_r():
+    # independent reference: the sequence runs from (r, 0) through the octant's
+    # mirror image and the octant to the top (0, r); Xd is the octant's last column
+    # (x <= round(sqrt(r^2 - x^2))), its diagonal steps are the drops of y, and the
+    # top pixels near (0, r) are unit steps apart
+    r = 2**40 + 12345
+    xc, yc = 20, 15 - r
+    x0 = int(Decimal(r) / Decimal(2).sqrt())
+    xd = max(x for x in range(x0 - 3, x0 + 4) if x <= nearest_row(r, x))
+    yd = nearest_row(r, xd)
+    dup = int(yd == xd)
+    steps = 2 * xd + 1 - dup                          # from (r, 0) to (0, r)
+    diagonal = 2 * (r - yd) + 1 - dup
+    top_k = steps
+    top_s = Decimal(steps - diagonal) + Decimal(diagonal) * Decimal(2).sqrt()
+    dotted = lit(_draw(lambda f: sl.draw.circle(f, xc, yc, r, dash="dotted")))
+    dashed = lit(_draw(lambda f: sl.draw.circle(f, xc, yc, r, dash=(3, 2), dash_phase=0.5)))
+    want_dotted, want_dashed = set(), set()
+    for col in range(W):
+        u = col - xc                                  # k and s grow to the left of the top
+        if (top_k - u) % 2 == 0:                      # "dotted": bits 1010..., bit 0 on
+            want_dotted.add((col, 15))
+        if (top_s - u + Decimal("0.5")) % 5 < 3:
+            want_dashed.add((col, 15))
+    assert dotted == want_dotted and dashed == want_dashed and 10 < len(dashed) < 30
 
 
 # -- strokes, pens, antialiasing, areas ------------------------------------------------

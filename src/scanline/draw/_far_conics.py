@@ -153,43 +153,76 @@ def _runs(fb, xc, yc, rx, ry, margin):
 
 def stroke(fb, xc, yc, rx, ry, color, style, antialias, circle, names=("rx", "ry")):
     """A far conic with line attributes: thick or antialiased ones stroked along the
-    ideal conic near the frame; width-1 pen lines stamp the pen on the midpoint
-    pixels within its reach of the frame.  Dashes are counted along the whole
-    outline from (xc + rx, yc), which for a far conic lies out of reach: refused."""
+    ideal conic near the frame; width-1 and pen lines are the midpoint pixels within
+    the pen's reach of the frame, in the order of the conic's pixel sequence, each
+    visible run with the line type's phase at its first pixel (exact: its index, or
+    its arc length axial + diagonal sqrt 2 along the sequence).  Dashed thick or
+    antialiased conics are refused: their dashes are measured along the ideal conic
+    from (xc + rx, yc), an elliptic arc length out of float reach."""
     from . import strokes
 
-    if style.dash is not None:
+    pixel_line = not antialias and (style.width == 1 or style.pen is not None)
+    if style.dash is not None and not pixel_line:
         raise ArgumentValueError(
-            f"dash={style.dash}: a dashed circle or ellipse is drawn within the exact "
-            f"range only (center within +-{COORD_LIMIT}, {names[0]}={rx}, {names[1]}={ry} "
-            "within the midpoint limits), as its dashes are counted from (xc + rx, yc); "
-            "draw it solid, or flatten the visible part (scanline.clip.ellipse) and "
-            "dash that polyline")
+            f"dash={style.dash}: a dashed wide or antialiased circle or ellipse is drawn "
+            f"within the exact range only (center within +-{COORD_LIMIT}, {names[0]}={rx}, "
+            f"{names[1]}={ry} within the midpoint limits), as its dashes are measured along "
+            "the whole curve from (xc + rx, yc); draw it solid, dash it at width 1, or "
+            "flatten the visible part (scanline.clip.ellipse) and dash that polyline")
     margin = int(math.ceil(strokes._margin(style))) + 2
     if antialias and style.width == 1 and style.pen is None:
         antialiased_outline(fb, xc, yc, rx, ry, color)
         return
-    if antialias or style.width > 1 and style.pen is None:
+    if not pixel_line:
         verts, offsets, closed = _runs(fb, xc, yc, rx, ry, margin)
         if len(closed):
             strokes.stroke(fb, verts, offsets, closed, color, style, antialias)
         return
     pen = style.footprint()
-    p = pixels(xc, yc, rx, ry, circle, _frame(fb, margin))
-    if len(p) == 0:
-        return
     kind, mask, dashes, phase = strokes._line_type(style)
+    window = _frame(fb, margin)
+    if kind == kl.SOLID:
+        runs = [(pixels(xc, yc, rx, ry, circle, window), 0, 0, 0)]
+    else:
+        runs = fc.sequence_runs(xc, yc, rx, ry, circle, window)
+    runs = [(p, _phase(kind, dashes, phase, k, a, d)) for p, k, a, d in runs if len(p)]
+    if not runs:
+        return
 
     def draw(buf, packed, width, height, ox, oy, value):
-        call(kl.draw_sequence, len(p) * len(pen), buf, layout(packed), width, height,
-             p - np.array([ox, oy], np.int64), kind, mask, dashes, phase, pen, value)
+        for p, start in runs:
+            call(kl.draw_sequence, len(p) * len(pen), buf, layout(packed), width, height,
+                 p - np.array([ox, oy], np.int64), kind, mask, dashes, start, pen, value)
 
     if _blend.translucent(color, one=True):
-        lo, hi = p.min(axis=0) - margin, p.max(axis=0) + margin
+        every = np.concatenate([p for p, _ in runs])
+        lo, hi = every.min(axis=0) - margin, every.max(axis=0) + margin
         _blend.paint(fb, color, (int(lo[0]), int(lo[1]), int(hi[0]), int(hi[1])), draw)
     else:
         buf, packed, width, height = target(fb)
         draw(buf, packed, width, height, 0, 0, fb.pixel(color))
+
+
+#: Fixed-point bits of a far run's dash phase.
+_PHASE_BITS = 96
+
+
+def _phase(kind, dashes, phase, k, axial, diagonal):
+    """The line type's phase at pixel k of the sequence, reached by ``axial`` unit
+    and ``diagonal`` diagonal steps: for a mask, the bit index (k more than the
+    first pixel's), for dash lengths the arc length axial + diagonal sqrt 2 past
+    ``phase`` modulo the pattern (the kernel's float sum of the lengths), exact to
+    2**-96 however long the way."""
+    if kind == kl.MASK:
+        return float((int(phase) + k) % 16)
+    if kind != kl.LENGTHS:
+        return phase
+    period = 0.0
+    for length in dashes.tolist():
+        period += length
+    one = 1 << _PHASE_BITS
+    s = round((Fraction(phase) + axial) * one) + math.isqrt(2 * diagonal * diagonal * one * one)
+    return (s % round(Fraction(period) * one)) / one
 
 
 def _band(xy, closed, half=0.5):
@@ -250,7 +283,7 @@ def antialiased_fill(fb, xc, yc, rx, ry, color):
     aa.fill(fb, [poly], color)
 
 
-def _spec(color, i):
+def spec(color, i):
     """The color spec of primitive i of a batch (one spec, a list, or an array)."""
     if isinstance(color, np.ndarray):
         return tuple(int(c) for c in color[i]) if color.ndim == 2 else int(color[i])
@@ -302,4 +335,4 @@ def batch(fb, rows, color, exact, near, far, reach=1.0, fill=False, rounded=True
             continue
         for i in idx.tolist():
             row = rows[i].tolist()
-            far(*((math.floor(c + 0.5) for c in row) if rounded else row), _spec(color, i))
+            far(*((math.floor(c + 0.5) for c in row) if rounded else row), spec(color, i))

@@ -93,6 +93,10 @@ class Quadrant:
         self.m = -1               # region 1 is (x, Y1(x)) for 0 <= x <= m
         self.ye, self.xe = 0, 0   # region 2 is (x(y), y) for 0 <= y < ye
         self.tip = rx             # the tip is (x, 0) for tip < x <= rx
+        # (index, axial steps, diagonal steps) from (0, ry), in the kernel's order, of
+        # the point before region 2's closed form and of the point before the tip
+        self.steps = []           # of self.points
+        self.end = self.before_tip = (-1, -1, 0)
         if rx == 0:               # the segment x = 0, 0 <= y <= ry (region 2 only)
             self.ye, self.xe, self.tip = ry + 1, 0, 0
             return
@@ -131,19 +135,35 @@ class Quadrant:
         p = 4 * ry2 * (m + 1) * (m + 1) + rx2 * (2 * y - 1) * (2 * y - 1) - 4 * rx2 * ry2
         px, py = 2 * ry2 * m, 2 * rx2 * y
         region = kc.REGION_1
+        last = (m, m - (ry - y), ry - y)
         while True:
+            prev = (x, y)
             region, x, y, _, p, px, py = _next(region, x, y, p, px, py, rx, rx2, ry2)
             if region == 0:               # x reached rx on y = 0
                 self.tip, self.ye = rx, 0
                 return
+            before = last
+            diagonal = x != prev[0] and y != prev[1]
+            last = (last[0] + 1, last[1] + (not diagonal), last[2] + diagonal)
             self.points.append((x, y))
+            self.steps.append(last)
             if region == kc.TIP:
-                self.tip, self.ye = x - 1, 0
+                self.tip, self.ye, self.before_tip = x - 1, 0, before
                 return
             if region == kc.REGION_2 and y <= ystar:
-                self.xe, self.ye = x, y
-                self.tip = self.x2_closed(0) if y > 0 else x
+                self.xe, self.ye, self.end = x, y, last
+                if y == 0:
+                    self.tip, self.before_tip = x, last
+                else:
+                    self.tip = self.x2_closed(0)
+                    self.before_tip = self._region2(self.tip, 0)
                 return
+
+    def _region2(self, x, y):
+        """(index, axial, diagonal) of region 2's closed-form point (x, y), y < ye."""
+        i, a, d = self.end
+        n, dd = self.ye - y, x - self.xe
+        return i + n, a + n - dd, d + dd
 
     def x2_closed(self, y):
         """Region 2's column at row 0 <= y < ye."""
@@ -152,6 +172,22 @@ class Quadrant:
         return max(self.xe, min(self.x2(y), self.xe + self.ye - y))
 
     # -- queries ---------------------------------------------------------------------
+    def locate(self, a, b):
+        """(i, axial, diagonal) of the quadrant point (a, b): its index in the kernel's
+        order from (0, ry) and the axial and diagonal steps that reach it; or None
+        when (a, b) is not a point of the quadrant."""
+        if 0 <= a <= self.m and self.y1(a) == b:
+            return a, a - (self.ry - b), self.ry - b
+        for p, st in zip(self.points, self.steps):
+            if p == (a, b):
+                return st
+        if 0 <= b < self.ye and self.x2_closed(b) == a:
+            return self._region2(a, b)
+        if b == 0 and self.tip < a <= self.rx:
+            i, ax, d = self.before_tip
+            return i + a - self.tip, ax + a - self.tip, d
+        return None
+
     def column_points(self, x):
         """The region-1 point's row in column x (0 <= x <= m), else None."""
         if 0 <= x <= self.m:
@@ -284,6 +320,79 @@ def clipped(row, x0, x1, width):
     if b < x1:
         return [(row, a, b + 1)]
     return [(row, a, a), (row, a + 1, b)]
+
+
+class CircleQuadrant:
+    """The midpoint circle's first quadrant in the order of its pixel sequence (the
+    octant from (0, r), then its mirror image in the diagonal back to (r, 0), the
+    diagonal pixel once), with :meth:`Quadrant.locate`."""
+
+    def __init__(self, r):
+        self.r = r
+        lo, hi = 0, max(r - 1, 0)         # the octant's last column: x <= y(x)
+        while lo < hi:
+            mid = (lo + hi + 1) // 2
+            if mid <= circle_y(mid, r):
+                lo = mid
+            else:
+                hi = mid - 1
+        self.xd = lo
+        self.yd = circle_y(lo, r)
+        self.dup = self.yd == lo
+
+    def locate(self, a, b):
+        r, xd, yd = self.r, self.xd, self.yd
+        if r == 0:
+            return (0, 0, 0) if a == b == 0 else None
+        if a <= b:
+            if a <= xd and circle_y(a, r) == b:
+                return a, a - (r - b), r - b
+            return None
+        if b <= xd and circle_y(b, r) == a:
+            n, d = xd - b, a - yd
+            join = 0 if self.dup else 1           # one diagonal step across x = y
+            return (xd + 1 + n - self.dup, xd - (r - yd) + n - d,
+                    r - yd + join + d)
+        return None
+
+
+#: The four quadrants of a conic's pixel sequence (counterclockwise from (rx, 0)):
+#: signs, and whether the quadrant runs against the kernel's order.
+_PIECES = (((1, 1), True), ((-1, 1), False), ((-1, -1), True), ((1, -1), False))
+
+
+def sequence_runs(xc, yc, rx, ry, circle, window):
+    """The visible part of the conic's pixel sequence (the order in which a line
+    type numbers the midpoint pixels: counterclockwise from (xc + rx, yc), each
+    quadrant's pixels once, :func:`scanline.draw.strokes.conic_pixels`), as runs of
+    consecutive pixels inside ``window``: a list of ((K, 2) int64 array, k, axial,
+    diagonal) with k the index of the run's first pixel in the whole sequence and
+    axial, diagonal the unit and diagonal steps before it (its arc length is
+    axial + diagonal sqrt 2).  Integers of any size; O(window) work."""
+    q = CircleQuadrant(rx) if circle else Quadrant(rx, ry)
+    n, total_a, total_d = q.locate(rx, 0)          # the quadrant's last point
+    found = {}
+    for x, y in (circle_pixels(xc, yc, rx, window) if circle
+                 else ellipse_pixels(xc, yc, rx, ry, window)).tolist():
+        for piece, ((sx, sy), backwards) in enumerate(_PIECES):
+            at = q.locate(sx * (x - xc), sy * (y - yc)) if sx * (x - xc) >= 0 <= sy * (y - yc) \
+                else None
+            if at is None:
+                continue
+            i, a, d = at
+            if backwards:
+                i, a, d = n - i, total_a - a, total_d - d
+            k = piece * n + i
+            if k < 4 * n or n == 0:
+                found[k] = (x, y, piece * total_a + a, piece * total_d + d)
+    runs = []
+    for k in sorted(found):
+        x, y, a, d = found[k]
+        if runs and runs[-1][1] + len(runs[-1][0]) == k:
+            runs[-1][0].append((x, y))
+        else:
+            runs.append(([(x, y)], k, a, d))
+    return [(np.array(p, np.int64).reshape(-1, 2), k, a, d) for p, k, a, d in runs]
 
 
 def _array(pixels):

@@ -104,8 +104,10 @@ def circle(fb: "FrameBuffer", xc: float, yc: float, r: float, color: Optional[Co
     and mirrored into the other seven octants; each pixel is written once.  Only the
     part of a large circle that can be visible is computed: its octant columns
     x are those of the visible columns and rows, and y(x) has a closed form, so any
-    circle costs O(width + height).  Dashed circles beyond the kernel's limits are
-    refused (their dashes are counted from (xc + r, yc)).
+    circle costs O(width + height).  A width-1 dashed or pen-drawn circle beyond
+    them numbers its visible pixels exactly as the whole sequence would; wide or
+    antialiased dashed ones are refused there (their dashes are measured along the
+    ideal circle from (xc + r, yc)).
 
     References
     ----------

@@ -481,7 +481,9 @@ def pie(fb, xc, yc, rx, ry, start, end, color=None, style=None):
     ray follows the top-left rule (it belongs to the slice on its right, or below a
     horizontal ray), and the center pixel belongs to the slice holding the direction
     just below +x; so slices that share rays, e.g. 0..a, a..b, b..2 pi, cover the
-    disk exactly once.  Angles as for :func:`arc`.
+    disk exactly once.  Angles as for :func:`arc`; any finite center and semi-axes
+    (beyond the kernels' limits the far fill's spans within the sector,
+    :mod:`scanline.draw._far_conics`).
 
     Examples
     --------
@@ -512,7 +514,9 @@ def chord(fb, xc, yc, rx, ry, start, end, color=None, style=None):
     and its center is on the arc's side of the straight line through the ideal
     ellipse's points at the two angles; centers exactly on that line follow the
     top-left rule, so the chords (a, b) and (b, a) cover the disk exactly once.
-    Angles as for :func:`arc`.
+    Angles as for :func:`arc`.  Center and semi-axes within the kernels' limits
+    (those of :func:`fill_circle` / :func:`fill_ellipse`): the chord's line is
+    computed in floating point.
 
     Examples
     --------

@@ -120,9 +120,14 @@ def any_coordinate(name: str, value: object) -> int:
     """Round any finite device coordinate to the nearest pixel center (halves round
     up), as a Python int of any size (for the primitives that draw beyond
     +-COORD_LIMIT exactly, such as the conics of :mod:`scanline.geometry.far_conics`)."""
-    if type(value) is int:
-        return value
+    if type(value) is int and -FLOAT_MAX <= value <= FLOAT_MAX:
+        return value          # exact (an int beyond the float range is not finite)
     return math.floor(number(name, value) + 0.5)
+
+
+#: The largest finite float: an int beyond it is refused as not finite, as
+#: :func:`number` refuses it.
+FLOAT_MAX = sys.float_info.max
 
 
 def any_radius(name: str, value: object) -> int:

@@ -34,7 +34,6 @@ from . import _blend
 from ._common import colors, target
 
 
-
 def _frame(fb, margin=0):
     return (-margin, -margin, fb.width - 1 + margin, fb.height - 1 + margin)
 

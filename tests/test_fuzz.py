@@ -192,15 +192,10 @@ def test_circle_fuzz(xc, yc, r, mode):
         bad.append("r")
     far = {"xc": as_far(xc), "yc": as_far(yc), "r": as_far(r) if as_far(r) is not None and r > 0 else None}
     if any(f is not None for f in far.values()) and set(bad) <= {n for n, f in far.items() if f is not None}:
-        # beyond the exact limits: drawn (nothing) when off the frame, else refused by name
-        fx, fy, fr = (frac(c) for c in (xc, yc, r))
-        try:
-            sl.draw.circle(fb, xc, yc, r, color="white")
-        except sl.ScanlineError as e:
-            assert not certainly_off_frame(fx, fy, fr, fr), str(e)
-            assert names_one_of(str(e), [n for n, f in far.items() if f is not None]), str(e)
-        else:
-            assert not lit(fb)
+        # beyond the exact limits: drawn, the same midpoint pixels (issue 11)
+        sl.draw.circle(fb, xc, yc, r, color="white")
+        c = [math.floor(frac(v) + Fraction(1, 2)) for v in (xc, yc, r)]
+        assert lit(fb) == circle_visible(*c, W, H)
     elif expect(lambda: sl.draw.circle(fb, xc, yc, r, color="white"), bad):
         assert lit(fb) == circle_visible(as_coordinate(xc), as_coordinate(yc), as_radius(r), W, H)
     assert padding_is_clean(fb)
@@ -231,14 +226,19 @@ def test_ellipse_fuzz(xc, yc, rx, ry, mode):
     huge = a is not None and b is not None and (max(a, b) > ELLIPSE_AXIS_LIMIT
                                                 or a * b > ELLIPSE_PRODUCT_LIMIT)
     if (far or huge) and set(bad) <= set(far) | {"rx", "ry"} and a is not None and b is not None:
-        # beyond the exact limits: drawn (nothing) when off the frame, else refused by name
-        try:
-            sl.draw.ellipse(fb, xc, yc, rx, ry, color="white")
-        except sl.ScanlineError as e:
-            assert not certainly_off_frame(frac(xc), frac(yc), a, b), str(e)
-            assert names_one_of(str(e), bad), str(e)
-        else:
-            assert not lit(fb)
+        # beyond the exact limits: drawn (issue 11): nothing when off the frame, the
+        # reference's pixels when it is small enough to step, else symmetric pixels
+        sl.draw.ellipse(fb, xc, yc, rx, ry, color="white")
+        got = lit(fb)
+        cx, cy, ra, rb = (math.floor(frac(v) + Fraction(1, 2)) for v in (xc, yc, a, b))
+        if certainly_off_frame(frac(xc), frac(yc), a, b):
+            assert not got
+        elif ra + rb <= 3000:
+            assert got == in_frame(ellipse_pixels(cx, cy, ra, rb), W, H)
+        for x, y in got:
+            for q in ((2 * cx - x, y), (x, 2 * cy - y)):
+                if 0 <= q[0] < W and 0 <= q[1] < H:
+                    assert q in got
     elif expect(lambda: sl.draw.ellipse(fb, xc, yc, rx, ry, color="white"), bad):
         got = lit(fb)
         if a + b <= 3000:
@@ -340,8 +340,9 @@ def arrays(columns):
     )
 
 
-def _rows_or_none(value, columns, radius_columns=()):
-    """The rounded rows if ``value`` is a valid (N, columns) array of coordinates."""
+def _rows_or_none(value, columns, radius_columns=(), far=False):
+    """The rounded rows if ``value`` is a valid (N, columns) array of coordinates
+    (``far``: any finite ones, as the conic batches take since issue 11)."""
     try:
         a = np.asarray(value, dtype=np.float64)
     except (TypeError, ValueError):
@@ -350,14 +351,15 @@ def _rows_or_none(value, columns, radius_columns=()):
         return []
     if a.ndim == 1 and a.size == columns:
         a = a.reshape(1, columns)
-    if a.ndim != 2 or a.shape[1] != columns or not np.isfinite(a).all() or (np.abs(a) > LIMIT).any():
+    if a.ndim != 2 or a.shape[1] != columns or not np.isfinite(a).all() or (
+            not far and (np.abs(a) > LIMIT).any()):
         return None
     if any((a[:, c] < 0).any() for c in radius_columns):
         return None
-    return np.floor(a + 0.5).astype(np.int64).tolist()
+    return [[math.floor(v + 0.5) for v in row] for row in a.tolist()]   # ints of any size
 
 
-def _check_batch(fn, value, columns, name, reference, radius_columns=()):
+def _check_batch(fn, value, columns, name, reference, radius_columns=(), far=False):
     fb = fresh("RGB")
     guards = Guards("RGB")
     try:
@@ -367,7 +369,7 @@ def _check_batch(fn, value, columns, name, reference, radius_columns=()):
         assert names_one_of(str(e), [name]), str(e)
         assert not lit(fb)
     else:
-        rows = _rows_or_none(value, columns, radius_columns)
+        rows = _rows_or_none(value, columns, radius_columns, far)
         assert rows is not None, f"accepted {value!r}"
         expected = set()
         for row in rows:
@@ -404,16 +406,18 @@ def test_lines_batch_fuzz(value):
 @given(arrays(3))
 @HYPOTHESIS
 def test_circles_batch_fuzz(value):
-    _check_batch(sl.draw.circles, value, 3, "circles", lambda *c: circle_visible(*c, W, H), (2,))
+    _check_batch(sl.draw.circles, value, 3, "circles", lambda *c: circle_visible(*c, W, H), (2,),
+                 far=True)
 
 
 @given(arrays(4))
 @HYPOTHESIS
 def test_ellipses_batch_fuzz(value):
-    rows = _rows_or_none(value, 4, (2, 3))
+    rows = _rows_or_none(value, 4, (2, 3), far=True)
     assume(rows is None or all(r[2] + r[3] <= 600 for r in rows))
     _check_batch(sl.draw.ellipses, value, 4, "ellipses",
-                 lambda xc, yc, rx, ry: in_frame(ellipse_pixels(xc, yc, rx, ry), W, H), (2, 3))
+                 lambda xc, yc, rx, ry: in_frame(ellipse_pixels(xc, yc, rx, ry), W, H), (2, 3),
+                 far=True)
 
 
 @given(st.sampled_from([None, 3, "x", object(), np.zeros((4, 4)), sl.FrameBuffer]))

@@ -116,6 +116,29 @@ def coordinate(name: str, value: object) -> int:
     )
 
 
+def any_coordinate(name: str, value: object) -> int:
+    """Round any finite device coordinate to the nearest pixel center (halves round
+    up), as a Python int of any size (for the primitives that draw beyond
+    +-COORD_LIMIT exactly, such as the conics of :mod:`scanline.geometry.far_conics`)."""
+    if type(value) is int and -FLOAT_MAX <= value <= FLOAT_MAX:
+        return value          # exact (an int beyond the float range is not finite)
+    return math.floor(number(name, value) + 0.5)
+
+
+#: The largest finite float: an int beyond it is refused as not finite, as
+#: :func:`number` refuses it.
+FLOAT_MAX = sys.float_info.max
+
+
+def any_radius(name: str, value: object) -> int:
+    """Round any finite radius >= 0 to a Python int of any size, or raise naming
+    ``name``."""
+    v = any_coordinate(name, value)
+    if v < 0:
+        raise ArgumentValueError(f"{name} must be >= 0, got {_show(value)}")
+    return v
+
+
 def radius(name: str, value: object, limit: int = COORD_LIMIT) -> int:
     """Round a radius to an int in [0, limit], or raise naming ``name``."""
     v = value if type(value) is int else math.floor(number(name, value) + 0.5)
@@ -165,13 +188,16 @@ def positive_int(name: str, value: object, minimum: int = 1) -> int:
 
 
 def coordinate_array(name: str, value: object, columns: int,
-                     radius_columns: Iterable[int] = (), guard: bool = False) -> NDArray[np.int64]:
+                     radius_columns: Iterable[int] = (), guard: bool = False,
+                     far: bool = False) -> NDArray[Any]:
     """Convert an (N, columns) array of primitives to int64, rounding to pixels.
 
     ``radius_columns`` lists the columns that hold radii, which must be >= 0.
     With ``guard`` (segments: ``columns`` = 4), any finite coordinate is taken: rows
     beyond the exact range are clipped to the guard square first
-    (:func:`scanline.geometry.guard.segments`).
+    (:func:`scanline.geometry.guard.segments`).  With ``far`` any finite value is
+    taken and the rows come back as float64, not rounded (conic batches, which
+    draw far rows themselves).
     """
     try:
         a = np.asarray(value)
@@ -208,7 +234,7 @@ def coordinate_array(name: str, value: object, columns: int,
         if guard:
             from .geometry.guard import segments
             a = segments(np.ascontiguousarray(a, np.float64))  # type: ignore[no-untyped-call]
-        if np.abs(a).max() > COORD_LIMIT:
+        if not far and np.abs(a).max() > COORD_LIMIT:
             row = int(np.argwhere(np.abs(a) > COORD_LIMIT)[0][0])
             raise ArgumentValueError(
                 f"{name} row {row} = {a[row].tolist()} is outside the supported coordinate "
@@ -220,6 +246,8 @@ def coordinate_array(name: str, value: object, columns: int,
             raise ArgumentValueError(
                 f"{name} column {c} holds radii, which must be >= 0; row {row} is {a[row].tolist()}"
             )
+    if far:
+        return np.ascontiguousarray(a, np.float64)
     half = np.add(a, 0.5)
     return np.floor(half, out=half).astype(np.int64, order="C")
 

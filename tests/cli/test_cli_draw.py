@@ -124,7 +124,7 @@ def test_parse_errors_name_the_item_and_position(items, fragments):
     ("method fast line 0 0 1 1", ["ITEMS word 1 (method fast)", "'bresenham', 'dda'"]),
     ("line 0 0 nan 1", ["ITEMS word 1 (line 0 0 nan 1)", "finite"]),
     ("circle -1e400 0 3", ["ITEMS word 1 (circle -1e400 0 3)", "xc must be a finite number"]),
-    ("ellipse 0 0 100000000 5", ["ITEMS word 1", "too large"]),
+    ("ellipse 0 0 -3 5", ["ITEMS word 1", "rx must be >= 0"]),
 ])
 def test_bad_items_exit_2_and_write_nothing(cli, one_line_error, tmp_path, items, fragments):
     result = cli("draw", "--size", "16x16", *items.split(), "-o", tmp_path / "out.png")

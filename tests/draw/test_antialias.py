@@ -352,14 +352,18 @@ def test_fuzz_never_writes_outside(rows, mode):
 @pytest.mark.parametrize("bad", [float("nan"), float("inf"), 2.0**31])
 def test_bad_coordinates_are_rejected(bad):
     fb = sl.FrameBuffer(5, 5, mode="L")
-    with pytest.raises(sl.ArgumentValueError, match="circles"):
-        aa.circles(fb, [(bad, 0, 1)])
     if bad == 2.0**31:
-        # finite: lines and fills are clipped to the guard square (issue 11, item 2)
+        # finite: lines and fills are clipped to the guard square, conics drawn
+        # where they reach the frame (issue 11, item 2)
         aa.lines(fb, [(0, 0, bad, 1)])
         aa.fill(fb, [[(0, 0), (bad, 1), (2, 2)]])
         assert fb.to_array()[4, 0] > 0
+        ring = sl.FrameBuffer(5, 5, mode="L")
+        aa.circles(ring, [(bad, 2, bad - 2)])         # its left-most point is (2, 2)
+        assert ring.to_array()[2, 2] > 0 and not ring.to_array()[:, :2].any()
         return
+    with pytest.raises(sl.ArgumentValueError, match="circles"):
+        aa.circles(fb, [(bad, 0, 1)])
     with pytest.raises(sl.ArgumentValueError, match="segments"):
         aa.lines(fb, [(0, 0, bad, 1)])
     with pytest.raises(sl.ArgumentValueError, match="contours"):

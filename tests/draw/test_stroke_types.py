@@ -291,8 +291,14 @@ def test_bad_batches():
         sl.draw.line(fb, 1, 1, 5, 5, method="dda", width=3)
     with pytest.raises(sl.ArgumentValueError, match="pen"):
         sl.draw.line(fb, 1, 1, 5, 5, pen="square", antialias=True)
-    with pytest.raises(sl.ArgumentValueError, match=r"^r=1048576"):
-        sl.draw.circle(fb, 1, 4 - 2**20, 2**20, dash="dotted")   # its outline crosses the frame
+    # beyond SEQUENCE_LIMIT a patterned circle numbers only its visible pixels (issue
+    # 11; tests/hardening/test_far_conics.py checks the numbering): this one's top row
+    # is every other pixel of the solid circle's
+    dotted, solid = sl.FrameBuffer(10, 10, mode="1"), sl.FrameBuffer(10, 10, mode="1")
+    sl.draw.circle(dotted, 1, 4 - 2**20, 2**20, dash="dotted")
+    sl.draw.circle(solid, 1, 4 - 2**20, 2**20)
+    d, s = dotted.to_array() > 0, solid.to_array() > 0
+    assert (d <= s).all() and s.sum() == 10 and d.sum() == 5
 
 
 # -- fuzzing: nothing is written outside the frame buffer -----------------------------------

@@ -41,9 +41,10 @@ def guard_intact(big):
 
 
 @contextmanager
-def bounded():
+def bounded(refusals=True):
     """Run the body within TIME_LIMIT seconds and MEMORY_LIMIT bytes; a ScanlineError
-    is an answer (swallowed), any other exception a failure."""
+    is an answer (swallowed), any other exception a failure.  ``refusals=False``:
+    the arguments are valid, so a ScanlineError is a failure too."""
     def alarm(signum, frame):
         raise Overtime(f"the call took more than {TIME_LIMIT} s")
 
@@ -53,7 +54,8 @@ def bounded():
     try:
         yield
     except sl.ScanlineError:
-        pass
+        if not refusals:
+            raise
     finally:
         signal.alarm(0)
         signal.signal(signal.SIGALRM, old)

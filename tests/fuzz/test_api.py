@@ -87,12 +87,32 @@ def test_fills_flat(pts, contours, shapes, mode, w, h):
     assert guard_intact(big)
 
 
+def _finite(*vals):
+    """Whether every value is a finite real number (as scanline reads it)."""
+    for c in vals:
+        try:
+            if isinstance(c, (bool, np.bool_)) or not np.isfinite(float(c)):
+                return False
+        except (TypeError, ValueError, OverflowError):
+            return False
+    return True
+
+
+#: Conic kinds that take any finite center and radius (issue 11): for those a
+#: ScanlineError on finite arguments is a failure.  Wide or antialiased dashed
+#: conics and chords beyond the kernels' limits are still refused by name.
+DRAWN = {"circle", "ellipse", "fill_circle", "fill_ellipse", "wide", "aa", "dash", "arc",
+         "pie"}
+
+
 @given(xc=values, yc=values, rx=values, ry=values, mode=MODES, w=size, h=size,
        kind=st.sampled_from(["circle", "ellipse", "fill_circle", "fill_ellipse", "wide",
                              "aa", "dash", "arc", "pie"]))
 def test_conics(xc, yc, rx, ry, mode, w, h, kind):
     fb, big = frame(mode, w, h)
-    with bounded():
+    radii = (rx,) if kind in ("circle", "fill_circle") else (rx, ry)
+    drawn = kind in DRAWN and _finite(xc, yc, *radii) and min(float(r) for r in radii) >= -0.5
+    with bounded(refusals=not drawn):
         if kind == "circle":
             sl.draw.circle(fb, xc, yc, rx)
         elif kind == "ellipse":
@@ -114,17 +134,38 @@ def test_conics(xc, yc, rx, ry, mode, w, h, kind):
     assert guard_intact(big)
 
 
+def _drawable(rows, columns):
+    """Whether a batch is a valid (N, columns) array: real, finite, radii >= 0 --
+    then it must be drawn, wherever its conics are."""
+    if not isinstance(rows, np.ndarray) or rows.dtype.kind not in "fiuO" or rows.ndim != 2 \
+            or rows.shape[1] != columns:
+        return False
+    try:
+        a = rows.astype(np.float64)
+    except (TypeError, ValueError, OverflowError):
+        return False
+    return bool(np.isfinite(a).all() and (a[:, 2:] >= 0).all())
+
+
 @given(rows=arrays(4), mode=MODES, w=size, h=size,
-       kind=st.sampled_from(["circles", "ellipses", "fill_ellipses", "aa"]))
+       kind=st.sampled_from(["circles", "ellipses", "fill_ellipses", "aa", "wide-circles",
+                             "aa-fill"]))
 def test_conic_batches(rows, mode, w, h, kind):
     fb, big = frame(mode, w, h)
-    with bounded():
+    if kind in ("circles", "wide-circles") and rows.ndim == 2:
+        rows = rows[..., :3]
+    drawn = _drawable(rows, 3 if kind in ("circles", "wide-circles") else 4)
+    with bounded(refusals=not drawn):
         if kind == "circles":
-            sl.draw.circles(fb, rows[..., :3] if rows.ndim == 2 else rows)
+            sl.draw.circles(fb, rows)
+        elif kind == "wide-circles":
+            sl.draw.circles(fb, rows, width=2.5)
         elif kind == "ellipses":
             sl.draw.ellipses(fb, rows)
         elif kind == "fill_ellipses":
             sl.draw.fill_ellipses(fb, rows)
+        elif kind == "aa-fill":
+            sl.draw.antialias.filled_ellipses(fb, rows)
         else:
             sl.draw.antialias.ellipses(fb, rows)
     assert guard_intact(big)

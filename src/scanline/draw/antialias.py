@@ -33,6 +33,7 @@ from ..geometry import contours as parse
 from ..geometry import guard
 from ..geometry.guard import segments as guard_segments
 from . import _blend
+from . import _far_conics as far
 from ._common import area_work, target
 from .conics import conic_work
 from .curved import region_work
@@ -40,12 +41,12 @@ from .lines import line_work
 from .polygon import _rule
 
 
-def _reals(name, value, columns, radius_columns=(), guard=False):
+def _reals(name, value, columns, radius_columns=(), guard=False, far=False):
     """An (N, columns) float64 array, validated as
     :func:`scanline._validate.coordinate_array` validates (finite, within +-2**30,
-    radii >= 0) but not rounded.  A well-formed numeric array passes one test of
-    its largest magnitude (NaN fails it); anything else goes through
-    ``coordinate_array``, which raises the message naming the fault."""
+    radii >= 0; ``far``: any finite value) but not rounded.  A well-formed numeric
+    array passes one test of its largest magnitude (NaN fails it); anything else
+    goes through ``coordinate_array``, which raises the message naming the fault."""
     try:
         raw = np.asarray(value)
     except (TypeError, ValueError):
@@ -55,6 +56,8 @@ def _reals(name, value, columns, radius_columns=(), guard=False):
         if a.size == 0 or (np.abs(a).max() <= v.COORD_LIMIT
                            and all(a[:, c].min() >= 0 for c in radius_columns)):
             return a
+    if far:
+        return v.coordinate_array(name, value, columns, radius_columns, far=True)
     v.coordinate_array(name, value, columns, radius_columns, guard)
     a = np.ascontiguousarray(np.asarray(value, np.float64).reshape(-1, columns))
     return guard_segments(a) if guard else a
@@ -115,7 +118,9 @@ def ellipses(fb, ellipses, color=None):
     fb : FrameBuffer
     ellipses : array_like, shape (N, 4)
         Rows (xc, yc, rx, ry), real; semi-axes >= 0 (one of them 0: the segment
-        along the other, traced twice).
+        along the other, traced twice).  Any finite values: a row beyond +-2**30
+        is drawn as the coverage of the band within half a pixel of the ideal
+        ellipse near the frame (:mod:`scanline.draw._far_conics`).
     color : color or list/array of N colors
 
     Notes
@@ -123,16 +128,21 @@ def ellipses(fb, ellipses, color=None):
     The arcs where |slope| <= 1 are stepped by columns, the others by rows; each
     column (row) splits the curve's cross-section between the pixels straddling
     the ideal ellipse, as :func:`lines` does.  The total intensity is the
-    perimeter.
+    perimeter (also for far rows, whose band has the outline's length as area).
 
     References
     ----------
     X. Wu, "An efficient antialiasing technique", 1991 (the circle generator).
     """
-    arr = _reals("ellipses", ellipses, 4, radius_columns=(2, 3))
-    buf, mode, width, height, table, srcs = _setup(fb, color, len(arr))
-    call(wu.draw_ellipses, lambda: 12 * conic_work(arr[:, 2], arr[:, 3], width, height), buf,
-         mode, width, height, table, arr, srcs)
+    arr = _reals("ellipses", ellipses, 4, radius_columns=(2, 3), far=True)
+
+    def near(rows, c):
+        buf, mode, width, height, table, srcs = _setup(fb, c, len(rows))
+        call(wu.draw_ellipses, lambda: 12 * conic_work(rows[:, 2], rows[:, 3], width, height),
+             buf, mode, width, height, table, rows, srcs)
+
+    far.batch(fb, arr, color, _in_range(arr), near,
+              lambda *row: far.antialiased_outline(fb, *row), rounded=False)
 
 
 def circles(fb, circles, color=None):
@@ -153,19 +163,31 @@ def circles(fb, circles, color=None):
     #######
     -#####-
     """
-    arr = _reals("circles", circles, 3, radius_columns=(2,))
+    arr = _reals("circles", circles, 3, radius_columns=(2,), far=True)
     ellipses(fb, arr[:, [0, 1, 2, 2]], color)
 
 
 def filled_ellipses(fb, ellipses, color=None):
     """Fill N ellipses (rows (xc, yc, rx, ry), real; rx = ry: disks) with
     antialiased edges: each pixel's coverage, measured on 16 sub-scan-lines (see
-    :mod:`scanline._kernels.coverage`)."""
-    arr = _reals("ellipses", ellipses, 4, radius_columns=(2, 3))
-    buf, mode, width, height, table, srcs = _setup(fb, color, len(arr))
-    call(cov.fill_ellipses, lambda: 20 * region_work(arr[:, 2], arr[:, 3], width, height)
-         + cov.SUB * float(np.minimum(2 * arr[:, 3] + 2, height).sum()), buf, mode, width,
-         height, table, arr, srcs)
+    :mod:`scanline._kernels.coverage`).  Any finite values: a row beyond +-2**30
+    is filled as the polygon of its part near the frame
+    (:func:`scanline.draw._far_conics.antialiased_fill`)."""
+    arr = _reals("ellipses", ellipses, 4, radius_columns=(2, 3), far=True)
+
+    def near(rows, c):
+        buf, mode, width, height, table, srcs = _setup(fb, c, len(rows))
+        call(cov.fill_ellipses, lambda: 20 * region_work(rows[:, 2], rows[:, 3], width, height)
+             + cov.SUB * float(np.minimum(2 * rows[:, 3] + 2, height).sum()), buf, mode, width,
+             height, table, rows, srcs)
+
+    far.batch(fb, arr, color, _in_range(arr), near,
+              lambda *row: far.antialiased_fill(fb, *row), fill=True, rounded=False)
+
+
+def _in_range(arr):
+    """The rows the antialiasing kernels take: every value within +-2**30."""
+    return np.abs(arr).max(axis=1, initial=0) <= v.COORD_LIMIT
 
 
 #: The largest vertex magnitude :func:`fills_flat` takes: the coverage arithmetic is

@@ -10,6 +10,7 @@ from .._kernels._jit import call
 from .._kernels.variants import layout
 from ..errors import ArgumentValueError
 from ..geometry import guard
+from . import _far_conics as far
 from . import strokes
 from ._common import colors, target
 from .._typing import Cap, Color, Join
@@ -42,6 +43,37 @@ def _outside(fb, xc, yc, rx, ry, attrs):
     return guard.conic_outside(fb, xc, yc, rx, ry, reach)
 
 
+def exact(xc, yc, rx, ry, circle):
+    """Whether the kernels take this conic (integers): center within +-2**30 and
+    radius <= 2**30 (a circle) or the midpoint ellipse's limits (an ellipse).
+    Anything else is drawn by :mod:`scanline.draw._far_conics`."""
+    if abs(xc) > v.COORD_LIMIT or abs(yc) > v.COORD_LIMIT:
+        return False
+    if circle:
+        return rx <= v.COORD_LIMIT
+    return max(rx, ry) <= ELLIPSE_AXIS_LIMIT and rx * ry <= ELLIPSE_PRODUCT_LIMIT
+
+
+def _exact_rows(arr, circle):
+    """:func:`exact` for the float rows (xc, yc, rx, ry) of a batch, rounded."""
+    a = np.floor(arr + 0.5)
+    ok = np.abs(a[:, :2]).max(axis=1, initial=0) <= v.COORD_LIMIT
+    if circle:
+        return ok & (a[:, 2] <= v.COORD_LIMIT)
+    with np.errstate(over="ignore"):                   # inf is beyond the limit too
+        return ok & (a[:, 2:].max(axis=1, initial=0) <= ELLIPSE_AXIS_LIMIT) & (
+            a[:, 2] * a[:, 3] <= ELLIPSE_PRODUCT_LIMIT)
+
+
+def _far(fb, xc, yc, rx, ry, color, attrs, antialias, circle, names=("rx", "ry")):
+    """A conic beyond the kernels' limits (:mod:`scanline.draw._far_conics`)."""
+    if attrs is None:
+        target(fb)
+        far.outline(fb, xc, yc, rx, ry, fb.pixel(color), circle)
+    else:
+        far.stroke(fb, xc, yc, rx, ry, color, attrs, antialias, circle, names)
+
+
 def circle(fb: "FrameBuffer", xc: float, yc: float, r: float, color: Optional[Color] = None,
            *, style: Optional["LineStyle"] = None, antialias: bool = False, width: Optional[float] = None,
            cap: Optional[Cap] = None, join: Optional[Join] = None, miter_limit: Optional[float] = None,
@@ -52,9 +84,12 @@ def circle(fb: "FrameBuffer", xc: float, yc: float, r: float, color: Optional[Co
     ----------
     fb : FrameBuffer
     xc, yc : number
-        Center, rounded to the nearest pixel center.
+        Center, rounded to the nearest pixel center; any finite value.
     r : number
-        Radius >= 0, rounded to an integer; r = 0 draws the center pixel.
+        Radius >= 0, rounded to an integer; r = 0 draws the center pixel.  Any
+        finite value: beyond a center within +-2**30 and r <= 2**30 (the kernel's
+        64-bit limits) the visible part is computed exactly in Python integers
+        (:mod:`scanline.geometry.far_conics`), the same midpoint pixels.
     color : color
     style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen
         Line attributes (see :func:`scanline.draw.polyline`).  Width 1: the
@@ -67,11 +102,17 @@ def circle(fb: "FrameBuffer", xc: float, yc: float, r: float, color: Optional[Co
     Notes, chapter 2, Q.4-Q.5: the octant from (0, r) to the diagonal is computed
     with p_0 = 1 - r and the increments 2x_k+1 + 1 (p_k < 0) or 2x_k+1 + 1 - 2y_k+1,
     and mirrored into the other seven octants; each pixel is written once.  Only the
-    part of a large circle that can be visible is computed.
+    part of a large circle that can be visible is computed: its octant columns
+    x are those of the visible columns and rows, and y(x) has a closed form, so any
+    circle costs O(width + height).  A width-1 dashed or pen-drawn circle beyond
+    them numbers its visible pixels exactly as the whole sequence would; wide or
+    antialiased dashed ones are refused there (their dashes are measured along the
+    ideal circle from (xc + r, yc)).
 
     References
     ----------
-    J. E. Bresenham, "A linear algorithm for incremental digital display of circular
+    D. Hearn and M. P. Baker, *Computer Graphics*, C version, 2nd ed., section 3-5
+    (the midpoint circle algorithm); J. E. Bresenham, "A linear algorithm for incremental digital display of circular
     arcs", Communications of the ACM 20(2), 100-106, 1977.
 
     Examples
@@ -91,7 +132,10 @@ def circle(fb: "FrameBuffer", xc: float, yc: float, r: float, color: Optional[Co
     attrs = strokes.styled(style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen)
     if _outside(fb, xc, yc, r, r, attrs):
         return
-    xc, yc, r = v.coordinate("xc", xc), v.coordinate("yc", yc), v.radius("r", r)
+    xc, yc, r = v.any_coordinate("xc", xc), v.any_coordinate("yc", yc), v.any_radius("r", r)
+    if not exact(xc, yc, r, r, True):
+        _far(fb, xc, yc, r, r, color, attrs, antialias, True, ("r", "r"))
+        return
     if attrs is not None:
         strokes.conics(fb, np.array([[xc, yc, r, r]], np.int64), color, attrs, antialias,
                        ("r", "r"))
@@ -106,17 +150,29 @@ def circles(fb, circles, color=None, *, style=None, antialias=False, width=None,
     """Draw N circles in one compiled call; ``circles`` has rows ``(xc, yc, r)``.
 
     ``color`` is one color or one per circle (see :func:`line` and :func:`lines`);
-    the line attributes are those of :func:`circle`, for every circle.
+    the line attributes are those of :func:`circle`, for every circle.  Any finite
+    centers and radii: rows within the kernel's limits are drawn in one compiled
+    call, the others as :func:`circle` draws them (colors stay with their rows).
     """
     attrs = strokes.styled(style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen)
-    arr = v.coordinate_array("circles", circles, 3, radius_columns=(2,))
+    rows = v.coordinate_array("circles", circles, 3, radius_columns=(2,), far=True)
+    rows = np.ascontiguousarray(rows[:, [0, 1, 2, 2]])
+    names = ("circles radius r", "circles radius r")
     if attrs is not None:
-        strokes.conics(fb, arr[:, [0, 1, 2, 2]], color, attrs, antialias,
-                       ("circles radius r", "circles radius r"))
+        far.batch(fb, rows, color, _exact_rows(rows, True),
+                  lambda arr, c: strokes.conics(fb, arr, c, attrs, antialias, names),
+                  lambda *row: _far(fb, *row, attrs, antialias, True, names),
+                  float(strokes._margin(attrs)))
         return
     buf, packed, width, height = target(fb)
-    call(k.draw_circles, lambda: conic_work(arr[:, 2], arr[:, 2], width, height), buf,
-         layout(packed), width, height, arr, colors(fb, color, len(arr)))
+
+    def near(arr, c):
+        arr = np.ascontiguousarray(arr[:, :3])
+        call(k.draw_circles, lambda: conic_work(arr[:, 2], arr[:, 2], width, height), buf,
+             layout(packed), width, height, arr, colors(fb, c, len(arr)))
+
+    far.batch(fb, rows, color, _exact_rows(rows, True), near,
+              lambda *row: _far(fb, *row, None, False, True))
 
 
 def conic_work(rx, ry, width, height):
@@ -149,8 +205,12 @@ def ellipse(fb: "FrameBuffer", xc: float, yc: float, rx: float, ry: float,
     xc, yc : number
         Center, rounded to the nearest pixel center.
     rx, ry : number
-        Semi-axes >= 0, rounded to integers (rx * ry <= 2**29).  ``ry = 0`` or
-        ``rx = 0`` draws the degenerate ellipse, a segment; both 0 the center pixel.
+        Semi-axes >= 0, rounded to integers.  ``ry = 0`` or ``rx = 0`` draws the
+        degenerate ellipse, a segment; both 0 the center pixel.  Any finite center
+        and radii: beyond a center within +-2**30, rx, ry <= 2**24 and
+        rx * ry <= 2**29 (the kernel's exact 64-bit decision parameters) the visible
+        part is computed exactly in Python integers
+        (:mod:`scanline.geometry.far_conics`), the same midpoint pixels.
     color : color
     style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen
         Line attributes, as for :func:`circle`.
@@ -167,8 +227,8 @@ def ellipse(fb: "FrameBuffer", xc: float, yc: float, rx: float, ry: float,
 
     References
     ----------
-    D. Hearn and M. P. Baker, *Computer Graphics*, 2nd ed., section 3-7 (the
-    midpoint ellipse algorithm); M. L. V. Pitteway, "Algorithm for drawing ellipses
+    D. Hearn and M. P. Baker, *Computer Graphics*, C version, 2nd ed., section 3-6
+    (the midpoint ellipse algorithm); M. L. V. Pitteway, "Algorithm for drawing ellipses
     or hyperbolae with a digital plotter", Computer Journal 10(3), 282-289, 1967.
 
     Examples
@@ -186,10 +246,12 @@ def ellipse(fb: "FrameBuffer", xc: float, yc: float, rx: float, ry: float,
     attrs = strokes.styled(style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen)
     if _outside(fb, xc, yc, rx, ry, attrs):
         return
-    rx = v.radius("rx", rx)
-    ry = v.radius("ry", ry)
-    _check_ellipse(rx, ry)
-    xc, yc = v.coordinate("xc", xc), v.coordinate("yc", yc)
+    rx = v.any_radius("rx", rx)
+    ry = v.any_radius("ry", ry)
+    xc, yc = v.any_coordinate("xc", xc), v.any_coordinate("yc", yc)
+    if not exact(xc, yc, rx, ry, False):
+        _far(fb, xc, yc, rx, ry, color, attrs, antialias, False)
+        return
     if attrs is not None:
         strokes.conics(fb, np.array([[xc, yc, rx, ry]], np.int64), color, attrs, antialias)
         return
@@ -203,19 +265,22 @@ def ellipses(fb, ellipses, color=None, *, style=None, antialias=False, width=Non
     """Draw N ellipses in one compiled call; ``ellipses`` has rows ``(xc, yc, rx, ry)``.
 
     ``color`` is one color or one per ellipse; the line attributes are those of
-    :func:`circle`, for every ellipse.
+    :func:`circle`, for every ellipse.  Any finite centers and radii, as for
+    :func:`circles`.
     """
     attrs = strokes.styled(style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen)
-    arr = v.coordinate_array("ellipses", ellipses, 4, radius_columns=(2, 3))
-    if len(arr):
-        big = (np.maximum(arr[:, 2], arr[:, 3]) > ELLIPSE_AXIS_LIMIT) | (
-            arr[:, 2].astype(np.float64) * arr[:, 3] > ELLIPSE_PRODUCT_LIMIT)
-        if big.any():
-            row = int(np.flatnonzero(big)[0])
-            _check_ellipse(int(arr[row, 2]), int(arr[row, 3]))
+    rows = v.coordinate_array("ellipses", ellipses, 4, radius_columns=(2, 3), far=True)
+    ok = _exact_rows(rows, False)
     if attrs is not None:
-        strokes.conics(fb, arr, color, attrs, antialias)
+        far.batch(fb, rows, color, ok,
+                  lambda arr, c: strokes.conics(fb, arr, c, attrs, antialias),
+                  lambda *row: _far(fb, *row, attrs, antialias, False),
+                  float(strokes._margin(attrs)))
         return
     buf, packed, width, height = target(fb)
-    call(k.draw_ellipses, lambda: conic_work(arr[:, 2], arr[:, 3], width, height), buf,
-         layout(packed), width, height, arr, colors(fb, color, len(arr)))
+
+    def near(arr, c):
+        call(k.draw_ellipses, lambda: conic_work(arr[:, 2], arr[:, 3], width, height), buf,
+             layout(packed), width, height, arr, colors(fb, c, len(arr)))
+
+    far.batch(fb, rows, color, ok, near, lambda *row: _far(fb, *row, None, False, False))

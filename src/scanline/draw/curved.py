@@ -20,7 +20,8 @@ from .._kernels.variants import layout, token
 from . import _blend
 from ._common import colors, target
 from ..geometry import guard
-from .conics import _big, _check_ellipse, circle, ellipse
+from . import _far_conics as far
+from .conics import _big, _check_ellipse, _exact_rows, circle, ellipse, exact
 from .lines import lines
 
 TAU = 2 * math.pi
@@ -86,8 +87,16 @@ def _antialiased(fb, name, rows, columns, color, style):
     from .polygon import _solid_only
 
     _solid_only(style)
-    arr = _reals(name, rows, columns, radius_columns=tuple(range(2, columns)))
+    arr = _reals(name, rows, columns, radius_columns=tuple(range(2, columns)), far=True)
     filled_ellipses(fb, arr if columns == 4 else arr[:, [0, 1, 2, 2]], color)
+
+
+def _far_fill(fb, xc, yc, rx, ry, color, style, is_circle):
+    """A filled conic beyond the kernels' limits (:func:`scanline.draw._far_conics.fill`)."""
+    draw = circle if is_circle else ellipse
+    outline = (lambda: draw(fb, xc, yc, rx, color)) if is_circle else (
+        lambda: draw(fb, xc, yc, rx, ry, color))
+    far.fill(fb, xc, yc, rx, ry, color, style, is_circle, outline)
 
 
 def _translucent_batch(fb, arr, circle, color):
@@ -113,9 +122,12 @@ def fill_circle(fb, xc, yc, r, color=None, style=None, antialias=False):
     ----------
     fb : FrameBuffer
     xc, yc : number
-        Center, rounded to the nearest pixel center.
+        Center, rounded to the nearest pixel center; any finite value.
     r : number
-        Radius >= 0 (up to 2**30), rounded; r = 0 fills the center pixel.
+        Radius >= 0, rounded; r = 0 fills the center pixel.  Any finite value:
+        beyond the kernel's limits (center within +-2**30, r <= 2**30) the spans
+        of the visible rows come from the same midpoint outline computed exactly
+        in Python integers (:mod:`scanline.geometry.far_conics`).
     color : color
         A translucent color is composited (:mod:`scanline.draw._blend`).
     style : FillStyle, optional
@@ -160,8 +172,11 @@ def fill_circle(fb, xc, yc, r, color=None, style=None, antialias=False):
         return
     if _big(xc, yc, r, r) and guard.conic_outside(fb, xc, yc, r, r, fill=True):
         return
-    xc, yc = _center(xc, yc)
-    r = v.radius("r", r)
+    xc, yc = v.any_coordinate("xc", xc), v.any_coordinate("yc", yc)
+    r = v.any_radius("r", r)
+    if not exact(xc, yc, r, r, True):
+        _far_fill(fb, xc, yc, r, r, color, style, True)
+        return
     hp, combine = _whole()
     _paint(fb, color, style, xc, yc, r, r, True, hp, combine, lambda: circle(fb, xc, yc, r, color))
 
@@ -175,7 +190,9 @@ def fill_ellipse(fb, xc, yc, rx, ry, color=None, style=None, antialias=False):
     xc, yc : number
         Center, rounded to the nearest pixel center.
     rx, ry : number
-        Semi-axes >= 0, rounded (the limits of :func:`scanline.draw.ellipse`).
+        Semi-axes >= 0, rounded; any finite center and semi-axes (beyond the
+        kernel's limits, those of :func:`scanline.draw.ellipse`, computed exactly
+        as it computes them).
     color : color
         A translucent color is composited.
     style : FillStyle, optional
@@ -212,10 +229,12 @@ def fill_ellipse(fb, xc, yc, rx, ry, color=None, style=None, antialias=False):
         return
     if _big(xc, yc, rx, ry) and guard.conic_outside(fb, xc, yc, rx, ry, fill=True):
         return
-    xc, yc = _center(xc, yc)
-    rx = v.radius("rx", rx)
-    ry = v.radius("ry", ry)
-    _check_ellipse(rx, ry)
+    xc, yc = v.any_coordinate("xc", xc), v.any_coordinate("yc", yc)
+    rx = v.any_radius("rx", rx)
+    ry = v.any_radius("ry", ry)
+    if not exact(xc, yc, rx, ry, False):
+        _far_fill(fb, xc, yc, rx, ry, color, style, False)
+        return
     hp, combine = _whole()
     _paint(fb, color, style, xc, yc, rx, ry, False, hp, combine,
            lambda: ellipse(fb, xc, yc, rx, ry, color))
@@ -226,39 +245,46 @@ def fill_circles(fb, circles, color=None, antialias=False):
 
     ``color`` is one color or one per disk (see :func:`scanline.draw.lines`);
     translucent colors are composited disk after disk.  ``antialias=True`` fills
-    the ideal disks (unrounded) by coverage, as :func:`fill_circle` does.
+    the ideal disks (unrounded) by coverage, as :func:`fill_circle` does.  Any
+    finite centers and radii, as for :func:`scanline.draw.circles`.
     """
     if antialias:
         _antialiased(fb, "circles", circles, 3, color, None)
         return
+    target(fb)
+    rows = v.coordinate_array("circles", circles, 3, radius_columns=(2,), far=True)
+    rows = np.ascontiguousarray(rows[:, [0, 1, 2, 2]])
+    far.batch(fb, rows, color, _exact_rows(rows, True),
+              lambda arr, c: _fill_batch(fb, np.ascontiguousarray(arr[:, :3]), True, c),
+              lambda *row: _far_fill(fb, *row, None, True), fill=True)
+
+
+def _fill_batch(fb, arr, is_circle, color):
+    """Fill the rounded rows ``arr`` within the kernels' limits in one compiled
+    call (translucent colors: one by one)."""
     buf, packed, width, height = target(fb)
-    arr = v.coordinate_array("circles", circles, 3, radius_columns=(2,))
     if _blend.translucent(color):
-        _translucent_batch(fb, arr, True, color)
+        _translucent_batch(fb, arr, is_circle, color)
         return
-    call(k.fill_regions, lambda: region_work(arr[:, 2], arr[:, 2], width, height), buf,
-         layout(packed), width, height, arr, _shape(True), colors(fb, color, len(arr)))
+    call(k.fill_regions, lambda: region_work(arr[:, 2], arr[:, -1], width, height), buf,
+         layout(packed), width, height, arr, _shape(is_circle), colors(fb, color, len(arr)))
 
 
 def fill_ellipses(fb, ellipses, color=None, antialias=False):
     """Fill N ellipses in one compiled call; ``ellipses`` has rows ``(xc, yc, rx, ry)``.
 
     ``color`` is one color or one per ellipse (translucent ones are composited);
-    ``antialias=True`` fills the ideal ellipses by coverage.
+    ``antialias=True`` fills the ideal ellipses by coverage.  Any finite centers
+    and radii, as for :func:`scanline.draw.ellipses`.
     """
     if antialias:
         _antialiased(fb, "ellipses", ellipses, 4, color, None)
         return
-    buf, packed, width, height = target(fb)
-    arr = v.coordinate_array("ellipses", ellipses, 4, radius_columns=(2, 3))
-    if len(arr):  # the rows with the largest axis and product are the ones to check
-        for row in (np.argmax(arr[:, 2:].max(axis=1)), np.argmax(arr[:, 2].astype(np.float64) * arr[:, 3])):
-            _check_ellipse(int(arr[row, 2]), int(arr[row, 3]))
-    if _blend.translucent(color):
-        _translucent_batch(fb, arr, False, color)
-        return
-    call(k.fill_regions, lambda: region_work(arr[:, 2], arr[:, 3], width, height), buf,
-         layout(packed), width, height, arr, _shape(False), colors(fb, color, len(arr)))
+    target(fb)
+    rows = v.coordinate_array("ellipses", ellipses, 4, radius_columns=(2, 3), far=True)
+    far.batch(fb, rows, color, _exact_rows(rows, False),
+              lambda arr, c: _fill_batch(fb, arr, False, c),
+              lambda *row: _far_fill(fb, *row, None, False), fill=True)
 
 
 # -- arcs, chords and pies ----------------------------------------------------------------
@@ -341,7 +367,15 @@ def _pie_region(rx, ry, start, end):
 
 def _cut(fb, xc, yc, rx, ry, start, end, color, style, shape):
     """Paint the part of the filled ellipse (circle) that ``shape(rx, ry, start,
-    end)`` keeps; its straight edges and the arc are the hollow outline."""
+    end)`` keeps; its straight edges and the arc are the hollow outline.  A pie
+    beyond the kernels' limits is drawn by :func:`_far_pie` (a chord still is
+    refused there: its line is computed in floating point)."""
+    if shape is _pie_region:
+        fx, fy = v.any_coordinate("xc", xc), v.any_coordinate("yc", yc)
+        frx, fry = v.any_radius("rx", rx), v.any_radius("ry", ry)
+        if not exact(fx, fy, frx, fry, frx == fry):
+            _far_pie(fb, fx, fy, frx, fry, start, end, color, style)
+            return
     xc, yc = _center(xc, yc)
     rx, ry, is_circle = _axes(rx, ry)
     found = shape(rx, ry, start, end)
@@ -356,6 +390,31 @@ def _cut(fb, xc, yc, rx, ry, start, end, color, style, shape):
     _paint(fb, color, style, xc, yc, rx, ry, is_circle, *region, outline)
 
 
+def _far_point(rx, ry, angle):
+    """:func:`_polar_point` for semi-axes of any size (no product rx * ry)."""
+    c, s = math.cos(angle), math.sin(angle)
+    if rx == 0 or ry == 0:
+        return 0.0, 0.0
+    rho = 1.0 / math.hypot(c / float(rx), s / float(ry))
+    return rho * c, rho * s
+
+
+def _far_pie(fb, xc, yc, rx, ry, start, end, color, style):
+    """A pie beyond the kernels' limits: the far filled conic's spans within the
+    sector (:func:`scanline.draw._far_conics.fill`), the same pixels."""
+    region = _sector(start, end, closed=False)
+    if region is None:
+        return
+    a, b, _ = _sweep(start, end)
+    ends = [_far_point(rx, ry, t) for t in (a, b)]
+
+    def outline():
+        arc(fb, xc, yc, rx, ry, start, end, color)
+        lines(fb, [(xc, yc, xc + p[0], yc + p[1]) for p in ends], color)
+
+    far.fill(fb, xc, yc, rx, ry, color, style, rx == ry, outline, region)
+
+
 def arc(fb, xc, yc, rx, ry, start, end, color=None):
     """Draw the pixels of the midpoint ellipse (circle when rx = ry) whose polar
     angle lies in [start, end], counterclockwise.
@@ -366,8 +425,9 @@ def arc(fb, xc, yc, rx, ry, start, end, color=None):
     xc, yc : number
         Center, rounded to the nearest pixel center.
     rx, ry : number
-        Semi-axes; rx = ry draws part of :func:`scanline.draw.circle` (r <= 2**30),
-        otherwise part of :func:`scanline.draw.ellipse` (its limits).
+        Semi-axes; rx = ry draws part of :func:`scanline.draw.circle`, otherwise
+        part of :func:`scanline.draw.ellipse`; any finite center and semi-axes (beyond
+        the kernels' limits the same pixels, computed as those functions compute them).
     start, end : float
         Angles in radians (see the module notes); an arc is closed, both bounding
         rays included, so the arcs [a, b] and [b, c] together are [a, c].  Angles
@@ -395,10 +455,14 @@ def arc(fb, xc, yc, rx, ry, start, end, color=None):
     -------
     """
     target(fb)
-    xc, yc = _center(xc, yc)
-    rx, ry, is_circle = _axes(rx, ry)
+    xc, yc = v.any_coordinate("xc", xc), v.any_coordinate("yc", yc)
+    rx, ry = v.any_radius("rx", rx), v.any_radius("ry", ry)
+    is_circle = rx == ry
     region = _sector(start, end, closed=True)
     if region is None:
+        return
+    if not exact(xc, yc, rx, ry, is_circle):
+        far.arc(fb, xc, yc, rx, ry, region, color, is_circle)
         return
 
     def draw(buf, packed, width, height, ox, oy, value):
@@ -417,7 +481,9 @@ def pie(fb, xc, yc, rx, ry, start, end, color=None, style=None):
     ray follows the top-left rule (it belongs to the slice on its right, or below a
     horizontal ray), and the center pixel belongs to the slice holding the direction
     just below +x; so slices that share rays, e.g. 0..a, a..b, b..2 pi, cover the
-    disk exactly once.  Angles as for :func:`arc`.
+    disk exactly once.  Angles as for :func:`arc`; any finite center and semi-axes
+    (beyond the kernels' limits the far fill's spans within the sector,
+    :mod:`scanline.draw._far_conics`).
 
     Examples
     --------
@@ -448,7 +514,9 @@ def chord(fb, xc, yc, rx, ry, start, end, color=None, style=None):
     and its center is on the arc's side of the straight line through the ideal
     ellipse's points at the two angles; centers exactly on that line follow the
     top-left rule, so the chords (a, b) and (b, a) cover the disk exactly once.
-    Angles as for :func:`arc`.
+    Angles as for :func:`arc`.  Center and semi-axes within the kernels' limits
+    (those of :func:`fill_circle` / :func:`fill_ellipse`): the chord's line is
+    computed in floating point.
 
     Examples
     --------

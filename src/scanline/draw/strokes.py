@@ -30,6 +30,7 @@ from ..geometry import contours as parse
 from ..geometry import guard
 from ..linestyle import LineStyle
 from . import _blend
+from . import _far_conics as far
 from ._common import area_work, colors, target
 
 CAPS = {"butt": ks.CAP_BUTT, "round": ks.CAP_ROUND, "square": ks.CAP_SQUARE}
@@ -425,8 +426,9 @@ def segment_array(name, segments):
 
 # -- conics -------------------------------------------------------------------------
 
-#: Largest radius of a patterned or pen-drawn width-1 conic (its pixel sequence is
-#: built in memory).
+#: Largest radius of a patterned or pen-drawn width-1 conic whose whole pixel
+#: sequence is built in memory; larger ones number only their visible pixels
+#: (:func:`scanline.geometry.far_conics.sequence_runs`).
 SEQUENCE_LIMIT = 1 << 16
 
 
@@ -448,16 +450,10 @@ def _quadrant(rx, ry):
     return quadrant
 
 
-def conic_pixels(xc, yc, rx, ry, names=("rx", "ry")):
+def conic_pixels(xc, yc, rx, ry):
     """The pixels of the midpoint circle (rx == ry) or ellipse in path order:
     counterclockwise from (xc + rx, yc), each once -- the pixel sequence a line type
-    numbers.  ``names`` are the radii's names in messages."""
-    for name, r in zip(names, (rx, ry)):
-        if r > SEQUENCE_LIMIT:
-            raise ArgumentValueError(
-                f"{name}={r}: a patterned or pen-drawn width-1 circle or ellipse needs radii "
-                f"<= {SEQUENCE_LIMIT} (its pixel sequence is built in memory); draw wider "
-                "lines or split the figure")
+    numbers (radii up to SEQUENCE_LIMIT)."""
     q = _quadrant(rx, ry)[::-1]                   # (rx, 0) .. (0, ry): counterclockwise
     loop = np.vstack([q, q[::-1] * [-1, 1], q * [-1, -1], q[::-1] * [1, -1]])
     keep = np.ones(len(loop), bool)
@@ -505,7 +501,10 @@ def conics(fb, rows, color, style, antialias, names=("rx", "ry")):
     values = colors(fb, color, n) if not _blend.translucent(color) else None
     margin = int(np.abs(pen).max())
     for i, (xc, yc, rx, ry) in enumerate(rows.tolist()):
-        pixels = conic_pixels(xc, yc, rx, ry, names)
+        if max(rx, ry) > SEQUENCE_LIMIT:                 # only its visible pixels
+            far.stroke(fb, xc, yc, rx, ry, far.spec(color, i), style, False, rx == ry, names)
+            continue
+        pixels = conic_pixels(xc, yc, rx, ry)
 
         def draw(buf, packed, width, height, ox, oy, value, pixels=pixels):
             call(kl.draw_sequence, len(pixels) * len(pen), buf, layout(packed), width, height,
@@ -514,10 +513,5 @@ def conics(fb, rows, color, style, antialias, names=("rx", "ry")):
             buf, packed, width, height = target(fb)
             draw(buf, packed, width, height, 0, 0, values[i if len(values) > 1 else 0])
         else:
-            spec = color
-            if isinstance(color, np.ndarray):
-                spec = tuple(int(c) for c in color[i]) if color.ndim == 2 else int(color[i])
-            elif isinstance(color, list):
-                spec = color[i]
-            _blend.paint(fb, spec, (xc - rx - margin - 1, yc - ry - margin - 1,
+            _blend.paint(fb, far.spec(color, i), (xc - rx - margin - 1, yc - ry - margin - 1,
                                     xc + rx + margin + 1, yc + ry + margin + 1), draw)

@@ -211,30 +211,29 @@ def conic_outside(fb, xc, yc, rx, ry, reach=1.0, fill=False):
         return False
     if not all(np.isfinite((xc, yc, rx, ry))) or rx < -0.5 or ry < -0.5:
         return False
-    rx, ry = max(rx, 0.0), max(ry, 0.0)          # -0.5 < r < 0 rounds to 0
-    reach = max(float(reach), 1.0)                # a pixel at least: no zero axes below
-    with np.errstate(all="ignore"):       # squares of huge ratios are inf: fine
-        return _misses(fb, xc, yc, rx, ry, reach, fill)
+    rows = (np.array([c], np.float64) for c in (xc, yc, rx, ry))
+    return bool(conics_outside(fb, *rows, reach, fill)[0])    # -0.5 < r < 0 rounds to 0
 
 
-def _misses(fb, xc, yc, rx, ry, reach, fill):
-    """:func:`conic_outside` for four finite floats."""
+def conics_outside(fb, xc, yc, rx, ry, reach=1.0, fill=False):
+    """:func:`conic_outside` for arrays of finite centers and radii >= -0.5 (a batch
+    of conics): a bool array, True where the conic certainly misses ``fb``."""
+    rx, ry = np.maximum(rx, 0.0), np.maximum(ry, 0.0)
+    reach = max(float(reach), 1.0)
     # drawn pixel centers lie within 1 (the center and radii rounded) plus the
     # outline's half width of the ellipse: ``reach`` (>= 1) on the ellipse's side
     # and ``reach`` on the frame's cover both
-    lo_x, lo_y = -reach, -reach
-    hi_x, hi_y = fb.width - 1 + reach, fb.height - 1 + reach
-    dx = np.array([lo_x - xc, hi_x - xc])
-    dy = np.array([lo_y - yc, hi_y - yc])
-    a, b = rx + reach, ry + reach
-    near_x = 0.0 if dx[0] <= 0 <= dx[1] else np.abs(dx).min()
-    near_y = 0.0 if dy[0] <= 0 <= dy[1] else np.abs(dy).min()
-    if (near_x / a) ** 2 + (near_y / b) ** 2 > 1.0 + 1e-9:
-        return True                                # the frame is outside the ellipse
-    if fill:
-        return False
-    a, b = rx - reach, ry - reach
-    if a <= 0 or b <= 0:
-        return False
-    far_x, far_y = np.abs(dx).max(), np.abs(dy).max()
-    return bool((far_x / a) ** 2 + (far_y / b) ** 2 < 1.0 - 1e-9)   # inside the hole
+    with np.errstate(all="ignore"):       # squares of huge ratios are inf: fine
+        lo_x, hi_x = -reach - xc, fb.width - 1 + reach - xc
+        lo_y, hi_y = -reach - yc, fb.height - 1 + reach - yc
+        near_x = np.where((lo_x <= 0) & (0 <= hi_x), 0.0, np.minimum(abs(lo_x), abs(hi_x)))
+        near_y = np.where((lo_y <= 0) & (0 <= hi_y), 0.0, np.minimum(abs(lo_y), abs(hi_y)))
+        a, b = rx + reach, ry + reach
+        out = (near_x / a) ** 2 + (near_y / b) ** 2 > 1.0 + 1e-9   # the frame outside
+        if fill:
+            return out
+        a, b = rx - reach, ry - reach
+        far_x = np.maximum(abs(lo_x), abs(hi_x))
+        far_y = np.maximum(abs(lo_y), abs(hi_y))
+        hole = (a > 0) & (b > 0) & ((far_x / a) ** 2 + (far_y / b) ** 2 < 1.0 - 1e-9)
+    return out | hole

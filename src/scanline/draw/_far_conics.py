@@ -1,0 +1,337 @@
+"""Circles and ellipses beyond the kernels' exact limits: any finite center and radius.
+
+The conic kernels are exact for centers within +-2**30, circles of radius up to
+2**30 and ellipses with r_x r_y <= 2**29 (r_x, r_y <= 2**24).  A conic beyond them
+that can touch the frame buffer is drawn here (one that cannot is dropped first by
+:func:`scanline.geometry.guard.conics_outside`):
+
+* width-1 outlines and filled areas: the notes' midpoint pixels and spans, computed
+  exactly in Python integers for the visible columns and rows only
+  (:mod:`scanline.geometry.far_conics`), so they are the pixels the kernels would
+  draw given unlimited integers, written by the curved-area kernel (each pixel a
+  degenerate ellipse, each span a flat one);
+* thick, pen-drawn and antialiased ones: the ideal conic sampled exactly near the
+  frame (:func:`scanline.geometry.far_conics.local_runs`) and stroked or filled
+  by the same polygon paths as everything else.
+
+Everything here costs O(width + height) per conic, whatever its radius.
+"""
+
+import math
+from fractions import Fraction
+
+import numpy as np
+
+from .._kernels import curved as kcurved
+from .._kernels import linetype as kl
+from .._kernels._jit import call
+from .._kernels.variants import layout, token
+from .._validate import COORD_LIMIT
+from ..errors import ArgumentValueError
+from ..geometry import far_conics as fc
+from ..geometry.guard import conics_outside
+from . import _blend
+from ._common import colors, target
+
+
+def _frame(fb, margin=0):
+    return (-margin, -margin, fb.width - 1 + margin, fb.height - 1 + margin)
+
+
+def _put(buf, packed, width, height, rows, value, ox=0, oy=0):
+    """Write rows (x, y, half, 0): the spans x - half .. x + half of row y (a
+    degenerate ellipse each), shifted by (-ox, -oy)."""
+    if len(rows) == 0:
+        return
+    rows = rows - np.array([ox, oy, 0, 0], np.int64)
+    call(kcurved.fill_regions, float(len(rows) + 2 * rows[:, 2].clip(0, width).sum()), buf,
+         layout(packed), width, height, rows, token(kcurved.ELLIPSE),
+         np.ascontiguousarray(value, np.uint8).reshape(1, -1))
+
+
+def pixels(xc, yc, rx, ry, circle, window):
+    """The midpoint outline's pixels inside ``window`` (an (N, 2) int64 array)."""
+    if circle:
+        return fc.circle_pixels(xc, yc, rx, window)
+    return fc.ellipse_pixels(xc, yc, rx, ry, window)
+
+
+def outline(fb, xc, yc, rx, ry, value, circle):
+    """Draw the width-1 midpoint outline with the pixel value ``value``."""
+    buf, packed, width, height = target(fb)
+    p = pixels(xc, yc, rx, ry, circle, _frame(fb))
+    rows = np.zeros((len(p), 4), np.int64)
+    rows[:, :2] = p
+    _put(buf, packed, width, height, rows, value)
+
+
+def fill(fb, xc, yc, rx, ry, color, style, circle, hollow, region=None):
+    """Fill the area bounded by the midpoint outline (spans from its left-most to
+    its right-most pixel on each visible row) in ``style``, within the half-planes
+    ``region`` (a pie: ``(hp, combine)`` as the curved-area kernels take them);
+    ``hollow`` draws the outline (the hollow style)."""
+    s = []
+    for row, y, w in fc.half_widths(yc, rx, ry, fb.height, circle):
+        for lo, hi in _cut([(-w, w)], region, y):
+            s += fc.clipped(row, xc + lo, xc + hi, fb.width)
+    if not s:
+        return
+    s = np.array(s, np.int64)
+    rows = np.stack([(s[:, 1] + s[:, 2]) // 2, s[:, 0], (s[:, 2] - s[:, 1]) // 2,
+                     np.zeros(len(s), np.int64)], axis=1)
+    bbox = (int(s[:, 1].min()), int(s[:, 0].min()), int(s[:, 2].max()), int(s[:, 0].max()))
+
+    def draw(buf, packed, width, height, ox, oy, value):
+        _put(buf, packed, width, height, rows, value, ox, oy)
+
+    _blend.fill(fb, color, style, bbox, draw, hollow)
+
+
+def arc(fb, xc, yc, rx, ry, region, color, circle):
+    """The midpoint outline's pixels whose polar angle is in the sector ``region``
+    (``(hp, combine)``: the half-planes of the curved-area kernels)."""
+    p = [(x, y) for x, y in pixels(xc, yc, rx, ry, circle, _frame(fb)).tolist()
+         if _cut([(x - xc, x - xc)], region, y - yc)]
+    if not p:
+        return
+    rows = np.zeros((len(p), 4), np.int64)
+    rows[:, :2] = p
+    lo, hi = rows[:, :2].min(axis=0), rows[:, :2].max(axis=0)
+
+    def draw(buf, packed, width, height, ox, oy, value):
+        _put(buf, packed, width, height, rows, value, ox, oy)
+
+    _blend.paint(fb, color, (int(lo[0]), int(lo[1]), int(hi[0]), int(hi[1])), draw)
+
+
+def _half_plane(nx, ny, c, tie, y):
+    """The x-interval of row y where nx x + ny y + c > 0 (>= 0 with ``tie``), in
+    integers of any size with unbounded ends (the kernels' ``half_plane`` rule,
+    whose open end 2**62 would be too near for a far conic)."""
+    k = ny * y + c
+    if nx > 0:
+        return (-(k // nx) if tie else (-k) // nx + 1), math.inf
+    if nx < 0:
+        return -math.inf, (k // -nx if tie else -((-k) // -nx) - 1)
+    if k > 0 or (k == 0 and tie):
+        return -math.inf, math.inf
+    return math.inf, -math.inf
+
+
+def _cut(runs, region, y):
+    """The parts of the runs (x-intervals of row y, relative to the center) inside
+    ``region`` (None: everything), combined as ``region_spans`` combines them."""
+    if region is None:
+        return runs
+    hp, combine = region
+    (s0, e0), (s1, e1) = (_half_plane(*(int(c) for c in h[:3]), h[3] != 0, y) for h in hp)
+    if combine == kcurved.BOTH:
+        parts = [(max(s0, s1), min(e0, e1))]
+    elif s0 > e0:
+        parts = [(s1, e1)]
+    elif s1 <= e1 and s1 <= e0 + 1 and s0 <= e1 + 1:      # touching: one interval
+        parts = [(min(s0, s1), max(e0, e1))]
+    else:
+        parts = [(s0, e0), (s1, e1)]
+    return [(max(a, s), min(b, e)) for a, b in runs for s, e in parts if max(a, s) <= min(b, e)]
+
+
+def _runs(fb, xc, yc, rx, ry, margin):
+    """The ideal conic within ``margin`` pixels of the frame, as polylines
+    ``(verts, offsets, closed)`` for :func:`scanline.draw.strokes.stroke`."""
+    window = _frame(fb, margin)
+    if rx == 0 or ry == 0:              # a segment: the guard clips it
+        runs = [(np.array([[xc - rx, yc - ry], [xc + rx, yc + ry]], np.float64), True)]
+    else:
+        runs = fc.local_runs(xc, yc, rx, ry, window)
+    offsets = np.zeros(len(runs) + 1, np.int64)
+    offsets[1:] = np.cumsum([len(r) for r, _ in runs])
+    verts = np.concatenate([r for r, _ in runs]) if runs else np.empty((0, 2))
+    return np.ascontiguousarray(verts, np.float64), offsets, np.array([c for _, c in runs], bool)
+
+
+def stroke(fb, xc, yc, rx, ry, color, style, antialias, circle, names=("rx", "ry")):
+    """A far conic with line attributes: thick or antialiased ones stroked along the
+    ideal conic near the frame; width-1 and pen lines are the midpoint pixels within
+    the pen's reach of the frame, in the order of the conic's pixel sequence, each
+    visible run with the line type's phase at its first pixel (exact: its index, or
+    its arc length axial + diagonal sqrt 2 along the sequence).  Dashed thick or
+    antialiased conics are refused: their dashes are measured along the ideal conic
+    from (xc + rx, yc), an elliptic arc length out of float reach."""
+    from . import strokes
+
+    pixel_line = not antialias and (style.width == 1 or style.pen is not None)
+    if style.dash is not None and not pixel_line:
+        raise ArgumentValueError(
+            f"dash={style.dash}: a dashed wide or antialiased circle or ellipse is drawn "
+            f"within the exact range only (center within +-{COORD_LIMIT}, {names[0]}={rx}, "
+            f"{names[1]}={ry} within the midpoint limits), as its dashes are measured along "
+            "the whole curve from (xc + rx, yc); draw it solid, dash it at width 1, or "
+            "flatten the visible part (scanline.clip.ellipse) and dash that polyline")
+    margin = int(math.ceil(strokes._margin(style))) + 2
+    if antialias and style.width == 1 and style.pen is None:
+        antialiased_outline(fb, xc, yc, rx, ry, color)
+        return
+    if not pixel_line:
+        verts, offsets, closed = _runs(fb, xc, yc, rx, ry, margin)
+        if len(closed):
+            strokes.stroke(fb, verts, offsets, closed, color, style, antialias)
+        return
+    pen = style.footprint()
+    kind, mask, dashes, phase = strokes._line_type(style)
+    window = _frame(fb, margin)
+    if kind == kl.SOLID:
+        runs = [(pixels(xc, yc, rx, ry, circle, window), 0, 0, 0)]
+    else:
+        runs = fc.sequence_runs(xc, yc, rx, ry, circle, window)
+    runs = [(p, _phase(kind, dashes, phase, k, a, d)) for p, k, a, d in runs if len(p)]
+    if not runs:
+        return
+
+    def draw(buf, packed, width, height, ox, oy, value):
+        for p, start in runs:
+            call(kl.draw_sequence, len(p) * len(pen), buf, layout(packed), width, height,
+                 p - np.array([ox, oy], np.int64), kind, mask, dashes, start, pen, value)
+
+    if _blend.translucent(color, one=True):
+        every = np.concatenate([p for p, _ in runs])
+        lo, hi = every.min(axis=0) - margin, every.max(axis=0) + margin
+        _blend.paint(fb, color, (int(lo[0]), int(lo[1]), int(hi[0]), int(hi[1])), draw)
+    else:
+        buf, packed, width, height = target(fb)
+        draw(buf, packed, width, height, 0, 0, fb.pixel(color))
+
+
+#: Fixed-point bits of a far run's dash phase.
+_PHASE_BITS = 96
+
+
+def _phase(kind, dashes, phase, k, axial, diagonal):
+    """The line type's phase at pixel k of the sequence, reached by ``axial`` unit
+    and ``diagonal`` diagonal steps: for a mask, the bit index (k more than the
+    first pixel's), for dash lengths the arc length axial + diagonal sqrt 2 past
+    ``phase`` modulo the pattern (the kernel's float sum of the lengths), exact to
+    2**-96 however long the way."""
+    if kind == kl.MASK:
+        return float((int(phase) + k) % 16)
+    if kind != kl.LENGTHS:
+        return phase
+    period = 0.0
+    for length in dashes.tolist():
+        period += length
+    one = 1 << _PHASE_BITS
+    s = round((Fraction(phase) + axial) * one) + math.isqrt(2 * diagonal * diagonal * one * one)
+    return (s % round(Fraction(period) * one)) / one
+
+
+def _band(xy, closed, half=0.5):
+    """The band within ``half`` pixel of the polyline ``xy`` (dense along a smooth
+    curve): its contours for a nonzero fill, offset along the vertex normals."""
+    if closed:
+        d = np.roll(xy, -1, axis=0) - np.roll(xy, 1, axis=0)
+    else:
+        d = np.empty_like(xy)
+        d[1:-1] = xy[2:] - xy[:-2]
+        d[0], d[-1] = xy[1] - xy[0], xy[-1] - xy[-2]
+    length = np.hypot(d[:, 0], d[:, 1])
+    n = np.stack([d[:, 1], -d[:, 0]], axis=1) / np.where(length > 0, length, 1.0)[:, None]
+    outer, inner = xy + half * n, (xy - half * n)[::-1]
+    return [outer, inner] if closed else [np.vstack([outer, inner])]
+
+
+def antialiased_outline(fb, xc, yc, rx, ry, color):
+    """The width-1 antialiased outline of a far conic (reals): the coverage of the
+    band within half a pixel of the ideal conic near the frame, so that, as for
+    Wu's conics, a column's intensities add up to the outline's length in it."""
+    from . import antialias as aa
+
+    if rx == 0 or ry == 0:                          # a segment, clipped by the guard
+        aa.lines(fb, [[xc - rx, yc - ry, xc + rx, yc + ry]], [color])
+        return
+    contours = []
+    for xy, closed in fc.local_runs(xc, yc, rx, ry, _frame(fb, 3)):
+        contours += _band(xy, closed)
+    if contours:
+        aa.fill(fb, contours, color)
+
+
+def antialiased_fill(fb, xc, yc, rx, ry, color):
+    """The ideal ellipse's area near the frame, filled by coverage: the conic's
+    pieces inside the window two pixels beyond the frame joined by the window's
+    corners inside the ellipse (the intersection of two convex sets, in angular
+    order about an inner point)."""
+    from . import antialias as aa
+
+    x0, y0, x1, y1 = window = _frame(fb, 2)
+    if rx == 0 or ry == 0:
+        return
+    runs = fc.local_runs(xc, yc, rx, ry, window)
+    pts = [r for r, _ in runs]
+    xc, yc, rx, ry = (Fraction(c) for c in (xc, yc, rx, ry))
+    corners = [(x, y) for x in (x0, x1) for y in (y0, y1)
+               if ((x - xc) * ry) ** 2 + ((y - yc) * rx) ** 2 <= (rx * ry) ** 2]
+    if corners:
+        pts.append(np.array(corners, np.float64))
+    if not pts:
+        return
+    poly = np.concatenate(pts)
+    if len(poly) < 3:
+        return
+    mid = poly.mean(axis=0)
+    poly = poly[np.argsort(np.arctan2(poly[:, 1] - mid[1], poly[:, 0] - mid[0]))]
+    aa.fill(fb, [poly], color)
+
+
+def spec(color, i):
+    """The color spec of primitive i of a batch (one spec, a list, or an array)."""
+    if isinstance(color, np.ndarray):
+        return tuple(int(c) for c in color[i]) if color.ndim == 2 else int(color[i])
+    if isinstance(color, list):
+        return color[i]
+    return color
+
+
+def _subset(color, idx):
+    if isinstance(color, np.ndarray):
+        return color[idx]
+    if isinstance(color, list):
+        return [color[i] for i in idx.tolist()]
+    return color
+
+
+def batch(fb, rows, color, exact, near, far, reach=1.0, fill=False, rounded=True):
+    """Draw a batch of conics ``rows`` (N, 4) float64 (xc, yc, rx, ry), finite, in
+    order: the rows ``exact`` (a bool array) by ``near(int64 rows, colors)`` (the
+    compiled batch, as before), the others one by one by ``far(xc, yc, rx, ry,
+    color)`` with Python integers (rounded as the kernels round), after dropping
+    those that cannot touch the frame (:func:`scanline.geometry.guard.conics_outside`,
+    vectorized, so a million far rows cost a few numpy passes).  Consecutive exact
+    rows go to one compiled call; with one color for all, all of them do.
+    ``rounded=False`` (antialiasing): the rows are passed on as they are, floats."""
+    n = len(rows)
+    colors(fb, color, n)                          # checks the count and the specs
+
+    def pixels(a):
+        return np.ascontiguousarray(np.floor(a + 0.5).astype(np.int64)) if rounded else a
+
+    if exact.all():
+        near(pixels(rows), color)
+        return
+    missing = ~exact & conics_outside(fb, rows[:, 0], rows[:, 1], rows[:, 2], rows[:, 3],
+                                      reach, fill)
+    keep = np.flatnonzero(~missing)
+    one = not isinstance(color, (list, np.ndarray))
+    kinds = exact[keep]
+    if one:                                       # order does not matter
+        groups = [keep[kinds], keep[~kinds]]
+    else:
+        groups = np.split(keep, np.flatnonzero(np.diff(kinds.astype(np.int8))) + 1)
+    for idx in groups:
+        if len(idx) == 0:
+            continue
+        if exact[idx[0]]:
+            near(pixels(rows[idx]), _subset(color, idx))
+            continue
+        for i in idx.tolist():
+            row = rows[i].tolist()
+            far(*((math.floor(c + 0.5) for c in row) if rounded else row), spec(color, i))

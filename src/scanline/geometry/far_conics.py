@@ -1,0 +1,526 @@
+"""The visible part of a midpoint circle or ellipse of any size and position, exactly.
+
+The conic kernels (:mod:`scanline._kernels.conics`, :mod:`scanline._kernels.curved`)
+keep their decision parameters in 64-bit integers, which holds for centers within
++-2**30, circles of radius up to 2**30 and ellipses with r_x r_y <= 2**29.  Beyond
+that (a circle of radius 2**40 whose outline crosses the frame, a center at x = -1e12
+with a radius reaching in) this module computes the same pixels in Python integers,
+with the decision rule of the notes (chapter 2, Q.4-Q.6; Hearn & Baker, sections 3-5
+and 3-6) in closed form per visible column and row, so that a conic costs
+O(width + height) whatever its radius, never O(r).
+
+Circle.  The octant loop (x from 0, y from r, p_0 = 1 - r) keeps the invariant
+(2y - 1)**2 < 4(r**2 - x**2) <= (2y + 1)**2, so the octant point of column x is
+y(x) = (isqrt(4 (r**2 - x**2) - 1) + 1) // 2, for x <= y(x) (the kernel's
+``circle_state``, here without its 2**62 bound).
+
+Ellipse.  With f(x, y) = r_y^2 x^2 + r_x^2 y^2 - r_x^2 r_y^2, region 1 moves to
+column x + 1 and keeps y while f(x + 1, y - 1/2) < 0, region 2 moves to row y - 1 and
+keeps x while f(x + 1/2, y - 1) > 0.  Written as recurrences these are, exactly,
+
+* region 1: y_{k+1} = max(Y1(x_{k+1}), y_k - 1), Y1(x) = the least y with
+  f(x, y + 1/2) >= 0;
+* region 2: x_{k+1} = max(x_k, min(X2(y_{k+1}), x_k + 1)), X2(y) = the greatest x
+  with f(x - 1/2, y) <= 0.
+
+Y1 drops by at most one per column up to x* = r_x^2 / sqrt(r_x^2 + r_y^2), where the
+ellipse's slope is -1, so region 1 is y = Y1(x) there (it ends where
+r_y^2 x >= r_x^2 Y1(x), a monotone test found by bisection); X2 grows by at most one
+per row below y* = r_y^2 / sqrt(r_x^2 + r_y^2), so once region 2 is at a row y_e
+below y*, x(y) = max(x_e, min(X2(y), x_e + y_e - y)) (x behind X2 catches up one
+column a row; x ahead of it waits for it).  Between the two the kernel's own step
+(``ellipse_next``, run as Python on Python integers) is followed, a few steps; a flat
+ellipse's tip (the run along y = 0 to x = r_x) closes the quadrant.
+
+References
+----------
+D. Hearn and M. P. Baker, *Computer Graphics*, C version, 2nd ed., sections 3-5 (the
+midpoint circle algorithm) and 3-6 (the midpoint ellipse algorithm); J. E. Bresenham,
+"A linear algorithm for incremental digital display of circular arcs", CACM 20(2),
+1977; M. L. V. Pitteway, "Algorithm for drawing ellipses or hyperbolae with a digital
+plotter", Computer Journal 10(3), 1967.
+"""
+
+from fractions import Fraction
+from math import isqrt
+
+import numpy as np
+
+from .._kernels import conics as kc
+from .._kernels._jit import python
+
+_next = python(kc.ellipse_next)
+
+
+def _ceil_div(a, b):
+    return -(-a // b)
+
+
+def circle_y(x, r):
+    """The octant point's row y(x) of the midpoint circle of radius r at column
+    0 <= x < r (r = 0: 0)."""
+    if r == 0:
+        return 0
+    return (isqrt(4 * (r * r - x * x) - 1) + 1) // 2
+
+
+def circle_half_width(d, r):
+    """The right-most outline pixel (offset from the center) of row offset d of the
+    midpoint circle, or -1 beyond it (the kernel's ``circle_half_width``): rows up to
+    the diagonal are the octant's columns; above it, the last column x with
+    y(x) >= d, 4 x**2 < 4 r**2 - (2d - 1)**2."""
+    if d > r:
+        return -1
+    if r == 0:
+        return 0
+    if d < r:
+        y = circle_y(d, r)
+        if d <= y:
+            return y
+    t = 4 * r * r - (2 * d - 1) * (2 * d - 1)
+    return isqrt((t - 1) // 4)
+
+
+class Quadrant:
+    """The first-quadrant points (x, y), x, y >= 0, of the midpoint ellipse with
+    integer semi-axes ``rx``, ``ry``, queried per column (region 1) and per row
+    (region 2) without stepping the whole quadrant."""
+
+    def __init__(self, rx, ry):
+        self.rx, self.ry = rx, ry
+        self.rx2, self.ry2 = rx * rx, ry * ry
+        self.points = []          # the stepped part, (x, y) pairs
+        self.m = -1               # region 1 is (x, Y1(x)) for 0 <= x <= m
+        self.ye, self.xe = 0, 0   # region 2 is (x(y), y) for 0 <= y < ye
+        self.tip = rx             # the tip is (x, 0) for tip < x <= rx
+        # (index, axial steps, diagonal steps) from (0, ry), in the kernel's order, of
+        # the point before region 2's closed form and of the point before the tip
+        self.steps = []           # of self.points
+        self.end = self.before_tip = (-1, -1, 0)
+        if rx == 0:               # the segment x = 0, 0 <= y <= ry (region 2 only)
+            self.ye, self.xe, self.tip = ry + 1, 0, 0
+            return
+        if ry == 0:               # the segment y = 0, 0 <= x <= rx (the tip only)
+            self.tip = -1
+            return
+        self._setup()
+
+    # -- closed forms ----------------------------------------------------------------
+    def y1(self, x):
+        """Y1(x): the least y >= 0 with f(x, y + 1/2) >= 0, 0 <= x <= rx."""
+        n = _ceil_div(4 * self.ry2 * (self.rx2 - x * x), self.rx2)
+        c = isqrt(n - 1) + 1 if n > 0 else 0
+        return c // 2
+
+    def x2(self, y):
+        """X2(y): the greatest x >= 0 with f(x - 1/2, y) <= 0, 0 <= y <= ry."""
+        s = isqrt(4 * self.rx2 * (self.ry2 - y * y) // self.ry2)
+        return (s + 1) // 2
+
+    def _setup(self):
+        rx, ry, rx2, ry2 = self.rx, self.ry, self.rx2, self.ry2
+        lo, hi = 0, rx            # the first x where region 1 would end without lag
+        while lo < hi:
+            mid = (lo + hi) // 2
+            if ry2 * mid >= rx2 * self.y1(mid):
+                hi = mid
+            else:
+                lo = mid + 1
+        xstar = isqrt(rx2 * rx2 // (rx2 + ry2))
+        ystar = isqrt(ry2 * ry2 // (rx2 + ry2))
+        m = max(min(lo, xstar) - 1, 0)
+        self.m = m
+        # step the kernel's loop from (m, Y1(m)) until the closed forms take over
+        x, y = m, self.y1(m)
+        p = 4 * ry2 * (m + 1) * (m + 1) + rx2 * (2 * y - 1) * (2 * y - 1) - 4 * rx2 * ry2
+        px, py = 2 * ry2 * m, 2 * rx2 * y
+        region = kc.REGION_1
+        last = (m, m - (ry - y), ry - y)
+        while True:
+            prev = (x, y)
+            region, x, y, _, p, px, py = _next(region, x, y, p, px, py, rx, rx2, ry2)
+            if region == 0:               # x reached rx on y = 0
+                self.tip, self.ye = rx, 0
+                return
+            before = last
+            diagonal = x != prev[0] and y != prev[1]
+            last = (last[0] + 1, last[1] + (not diagonal), last[2] + diagonal)
+            self.points.append((x, y))
+            self.steps.append(last)
+            if region == kc.TIP:
+                self.tip, self.ye, self.before_tip = x - 1, 0, before
+                return
+            if region == kc.REGION_2 and y <= ystar:
+                self.xe, self.ye, self.end = x, y, last
+                if y == 0:
+                    self.tip, self.before_tip = x, last
+                else:
+                    self.tip = self.x2_closed(0)
+                    self.before_tip = self._region2(self.tip, 0)
+                return
+
+    def _region2(self, x, y):
+        """(index, axial, diagonal) of region 2's closed-form point (x, y), y < ye."""
+        i, a, d = self.end
+        n, dd = self.ye - y, x - self.xe
+        return i + n, a + n - dd, d + dd
+
+    def x2_closed(self, y):
+        """Region 2's column at row 0 <= y < ye."""
+        if self.rx == 0:
+            return 0
+        return max(self.xe, min(self.x2(y), self.xe + self.ye - y))
+
+    # -- queries ---------------------------------------------------------------------
+    def locate(self, a, b):
+        """(i, axial, diagonal) of the quadrant point (a, b): its index in the kernel's
+        order from (0, ry) and the axial and diagonal steps that reach it; or None
+        when (a, b) is not a point of the quadrant."""
+        if 0 <= a <= self.m and self.y1(a) == b:
+            return a, a - (self.ry - b), self.ry - b
+        for p, st in zip(self.points, self.steps):
+            if p == (a, b):
+                return st
+        if 0 <= b < self.ye and self.x2_closed(b) == a:
+            return self._region2(a, b)
+        if b == 0 and self.tip < a <= self.rx:
+            i, ax, d = self.before_tip
+            return i + a - self.tip, ax + a - self.tip, d
+        return None
+
+    def column_points(self, x):
+        """The region-1 point's row in column x (0 <= x <= m), else None."""
+        if 0 <= x <= self.m:
+            return self.y1(x)
+        return None
+
+    def row_point(self, y):
+        """The region-2 point's column in row y (0 <= y < ye), else None."""
+        if 0 <= y < self.ye:
+            return self.x2_closed(y)
+        return None
+
+    def half_width(self, y):
+        """The right-most quadrant point of row y (the fill's extent), or -1."""
+        if y < 0 or y > self.ry:
+            return -1
+        if y == 0 and self.tip < self.rx:
+            return self.rx
+        best = -1
+        if y < self.ye:
+            best = self.x2_closed(y)
+        for px, py in self.points:
+            if py == y and px > best:
+                best = px
+        if self.m >= 0:
+            ym = self.y1(self.m)
+            if y == ym:
+                best = max(best, self.m)
+            elif y > ym:              # the last column of region 1 with Y1(x) >= y
+                r = self.rx2 * (4 * self.ry2 - (2 * y - 1) * (2 * y - 1))
+                best = max(best, isqrt(_ceil_div(r, 4 * self.ry2) - 1))
+        return best
+
+
+def _in(lo, hi, v):
+    return lo <= v <= hi
+
+
+def circle_pixels(xc, yc, r, window):
+    """The pixels of the midpoint circle (integers of any size) inside ``window``
+    (x0, y0, x1, y1), as an (N, 2) int64 array of (x, y), each once."""
+    x0, y0, x1, y1 = window
+    out = set()
+    if r == 0:
+        if _in(x0, x1, xc) and _in(y0, y1, yc):
+            out.add((xc, yc))
+        return _array(out)
+    for swap in (False, True):          # the images (+-x, +-y) by columns, (+-y, +-x) by rows
+        a0, a1, ca, b0, b1, cb = (y0, y1, yc, x0, x1, xc) if swap else (x0, x1, xc, y0, y1, yc)
+        for a in range(a0, a1 + 1):
+            x = abs(a - ca)
+            if x < r:
+                y = circle_y(x, r)
+                if x <= y:
+                    for b in (cb + y, cb - y):
+                        if _in(b0, b1, b):
+                            out.add((b, a) if swap else (a, b))
+    return _array(out)
+
+
+def ellipse_pixels(xc, yc, rx, ry, window):
+    """The pixels of the midpoint ellipse (integers of any size) inside ``window``
+    (x0, y0, x1, y1), as an (N, 2) int64 array, each once."""
+    x0, y0, x1, y1 = window
+    q = Quadrant(rx, ry)
+    out = set()
+
+    def put(a, b):
+        for col in (xc + a, xc - a):
+            for row in (yc + b, yc - b):
+                if _in(x0, x1, col) and _in(y0, y1, row):
+                    out.add((col, row))
+
+    for col in range(x0, x1 + 1):       # region 1: one point per column
+        x = abs(col - xc)
+        y = q.column_points(x)
+        if y is not None:
+            put(x, y)
+    for row in range(y0, y1 + 1):       # region 2: one point per row
+        y = abs(row - yc)
+        x = q.row_point(y)
+        if x is not None:
+            put(x, y)
+    for a, b in q.points:
+        put(a, b)
+    if _in(y0, y1, yc) and q.tip < rx:   # the tip's run along y = 0
+        for col in range(x0, x1 + 1):
+            if q.tip < abs(col - xc) <= rx:
+                out.add((col, yc))
+    return _array(out)
+
+
+def half_widths(yc, rx, ry, height, circle):
+    """The right-most outline pixel w (offset from the center) of each visible scan
+    line that the conic reaches: a list of (row, y - yc, w), the filled area's span
+    being xc - w .. xc + w (the kernels' ``w`` table)."""
+    q = None if circle else Quadrant(rx, ry)
+    out = []
+    for row in range(height):
+        d = abs(row - yc)
+        w = circle_half_width(d, rx) if circle else q.half_width(d)
+        if w >= 0:
+            out.append((row, row - yc, w))
+    return out
+
+
+def spans(xc, yc, rx, ry, width, height, circle):
+    """The filled conic's span of each visible scan line: an (N, 3) int64 array of
+    rows (y, x0, x1), from the left-most to the right-most outline pixel, clipped to
+    columns -3 .. width + 2 (see :func:`clipped`)."""
+    rows = []
+    for row, _, w in half_widths(yc, rx, ry, height, circle):
+        rows += clipped(row, xc - w, xc + w, width)
+    return np.array(rows, np.int64).reshape(-1, 3)
+
+
+def clipped(row, x0, x1, width):
+    """The span x0 .. x1 of ``row`` (integers of any size) clipped to columns
+    -3 .. width + 2 as spans (row, a, b) with b - a even (the kernels draw a span as
+    a flat ellipse about an integer center): a clipped end moves one column further
+    out, or an odd span inside the frame is split in two.  [] when it misses the
+    frame."""
+    if x1 < 0 or x0 > width - 1 or x0 > x1:
+        return []
+    a, b = max(x0, -2), min(x1, width + 1)
+    if (b - a) % 2 == 0:
+        return [(row, a, b)]
+    if a > x0:
+        return [(row, a - 1, b)]
+    if b < x1:
+        return [(row, a, b + 1)]
+    return [(row, a, a), (row, a + 1, b)]
+
+
+class CircleQuadrant:
+    """The midpoint circle's first quadrant in the order of its pixel sequence (the
+    octant from (0, r), then its mirror image in the diagonal back to (r, 0), the
+    diagonal pixel once), with :meth:`Quadrant.locate`."""
+
+    def __init__(self, r):
+        self.r = r
+        lo, hi = 0, max(r - 1, 0)         # the octant's last column: x <= y(x)
+        while lo < hi:
+            mid = (lo + hi + 1) // 2
+            if mid <= circle_y(mid, r):
+                lo = mid
+            else:
+                hi = mid - 1
+        self.xd = lo
+        self.yd = circle_y(lo, r)
+        self.dup = self.yd == lo
+
+    def locate(self, a, b):
+        r, xd, yd = self.r, self.xd, self.yd
+        if r == 0:
+            return (0, 0, 0) if a == b == 0 else None
+        if a <= b:
+            if a <= xd and circle_y(a, r) == b:
+                return a, a - (r - b), r - b
+            return None
+        if b <= xd and circle_y(b, r) == a:
+            n, d = xd - b, a - yd
+            join = 0 if self.dup else 1           # one diagonal step across x = y
+            return (xd + 1 + n - self.dup, xd - (r - yd) + n - d,
+                    r - yd + join + d)
+        return None
+
+
+#: The four quadrants of a conic's pixel sequence (counterclockwise from (rx, 0)):
+#: signs, and whether the quadrant runs against the kernel's order.
+_PIECES = (((1, 1), True), ((-1, 1), False), ((-1, -1), True), ((1, -1), False))
+
+
+def sequence_runs(xc, yc, rx, ry, circle, window):
+    """The visible part of the conic's pixel sequence (the order in which a line
+    type numbers the midpoint pixels: counterclockwise from (xc + rx, yc), each
+    quadrant's pixels once, :func:`scanline.draw.strokes.conic_pixels`), as runs of
+    consecutive pixels inside ``window``: a list of ((K, 2) int64 array, k, axial,
+    diagonal) with k the index of the run's first pixel in the whole sequence and
+    axial, diagonal the unit and diagonal steps before it (its arc length is
+    axial + diagonal sqrt 2).  Integers of any size; O(window) work."""
+    q = CircleQuadrant(rx) if circle else Quadrant(rx, ry)
+    n, total_a, total_d = q.locate(rx, 0)          # the quadrant's last point
+    found = {}
+    for x, y in (circle_pixels(xc, yc, rx, window) if circle
+                 else ellipse_pixels(xc, yc, rx, ry, window)).tolist():
+        for piece, ((sx, sy), backwards) in enumerate(_PIECES):
+            at = q.locate(sx * (x - xc), sy * (y - yc)) if sx * (x - xc) >= 0 <= sy * (y - yc) \
+                else None
+            if at is None:
+                continue
+            i, a, d = at
+            if backwards:
+                i, a, d = n - i, total_a - a, total_d - d
+            k = piece * n + i
+            if k < 4 * n or n == 0:
+                found[k] = (x, y, piece * total_a + a, piece * total_d + d)
+    runs = []
+    for k in sorted(found):
+        x, y, a, d = found[k]
+        if runs and runs[-1][1] + len(runs[-1][0]) == k:
+            runs[-1][0].append((x, y))
+        else:
+            runs.append(([(x, y)], k, a, d))
+    return [(np.array(p, np.int64).reshape(-1, 2), k, a, d) for p, k, a, d in runs]
+
+
+def _array(pixels):
+    return np.array(sorted(pixels), np.int64).reshape(-1, 2)
+
+
+# -- the ideal conic near the frame (strokes, antialiasing) -------------------------
+
+#: Fixed-point scale of the local samples: coordinates are integers times 2**-40.
+_BITS = 40
+_ONE = 1 << _BITS
+#: Bisection depth of a chord, at most (each halving quarters its deviation).
+_DEPTH = 24
+
+
+def _branch(a, b, t):
+    """b sqrt(1 - t**2 / a**2) for fixed-point a > 0, b and |t| <= a."""
+    n = b * b * (a * a - t * t)
+    return isqrt(n // (a * a)) if n > 0 else 0
+
+
+def _fixed(value):
+    """A real number (int, float, Fraction) in fixed point, to the nearest 2**-40."""
+    return round(Fraction(value) * _ONE)
+
+
+_SIGNS = ((1, 1), (-1, 1), (-1, -1), (1, -1))   # quadrants I..IV, counterclockwise
+
+
+def _quadrant(u, v):
+    """The quadrant (0..3) a point (u, v) relative to the center belongs to; an axis
+    point starts the quadrant that leaves it counterclockwise."""
+    if v == 0:
+        return 0 if u > 0 else 2
+    if u == 0:
+        return 1 if v > 0 else 3
+    return (0 if u > 0 else 1) if v > 0 else (2 if u < 0 else 3)
+
+
+def _key(q, u, v):
+    """The counterclockwise order of points of quadrant q: x falls in I and II and
+    rises in III and IV, y the other way round in II and IV."""
+    su, sv = _SIGNS[q]
+    return (q, -sv * u, su * v)
+
+
+def local_runs(xc, yc, rx, ry, window, tolerance=0.025):
+    """The ideal ellipse (xc, yc, rx, ry) (reals of any size, rx, ry > 0) inside
+    the ``window`` (x0, y0, x1, y1) of integers, as polylines within ``tolerance``
+    pixel of it, counterclockwise: a list of ((K, 2) float64 array, closed).
+
+    The ellipse is sampled exactly (fixed point, 2**-40 pixel) at the window's
+    integer columns where its slope is at most 1 and at its integer rows where it is
+    at least 1, and at its axis points; each quadrant's part inside the window is one
+    piece (the quadrant's arc is monotone in x and y), pieces meet at axis points
+    inside the window, and chords are halved until their deviation is within
+    ``tolerance``.  Cost O(window width + height) samples, whatever the radii.
+    """
+    x0, y0, x1, y1 = window
+    xc, yc, rx, ry = (_fixed(c) for c in (xc, yc, rx, ry))
+    if rx <= 0 or ry <= 0:
+        return []
+    pts = {}
+
+    def add(u, v):
+        pts[(u, v)] = _key(_quadrant(u, v), u, v)
+
+    for swap in (False, True):    # by columns where |slope| <= 1, by rows where >= 1
+        a0, a1, ca, ra, b0, b1, cb, rb = ((y0, y1, yc, ry, x0, x1, xc, rx) if swap
+                                          else (x0, x1, xc, rx, y0, y1, yc, ry))
+        for a in range(a0, a1 + 1):
+            t = a * _ONE - ca
+            if abs(t) <= ra:
+                o = _branch(ra, rb, abs(t))
+                if rb * rb * abs(t) <= ra * ra * o:
+                    for s in (o, -o):
+                        if b0 * _ONE <= cb + s <= b1 * _ONE:
+                            add(*((s, t) if swap else (t, s)))
+    for u, v in ((rx, 0), (0, ry), (-rx, 0), (0, -ry)):
+        if x0 * _ONE <= xc + u <= x1 * _ONE and y0 * _ONE <= yc + v <= y1 * _ONE:
+            add(u, v)
+    order = sorted(pts, key=pts.get)
+    if not order:
+        return []
+
+    def starts_quadrant(p):
+        return p[0] == 0 or p[1] == 0
+
+    def linked(p, q):
+        a, b = pts[p][0], pts[q][0]
+        return a == b or ((a + 1) % 4 == b and starts_quadrant(q))
+
+    # cut the cyclic sequence where it leaves the window
+    cuts = [i for i in range(len(order)) if not linked(order[i - 1], order[i])]
+    if not cuts:
+        runs, closed = [order], True
+    else:
+        twice = order + order               # the last run wraps round to the first
+        runs = [twice[a:b] for a, b in zip(cuts, cuts[1:] + [cuts[0] + len(order)])]
+        runs = [r for r in runs if len(r) > 1]    # a point that only grazes it
+        closed = False
+
+    def bisect(p, q, depth, out):
+        du, dv = q[0] - p[0], q[1] - p[1]
+        su, sv = _SIGNS[pts[p][0]]      # the arc from p on is in p's quadrant
+        if abs(du) >= abs(dv):
+            mu = (p[0] + q[0]) // 2
+            m = (mu, sv * _branch(rx, ry, abs(mu)))
+        else:
+            mv = (p[1] + q[1]) // 2
+            m = (su * _branch(ry, rx, abs(mv)), mv)
+        length = (du * du + dv * dv) ** 0.5
+        dev = abs(du * (m[1] - p[1]) - dv * (m[0] - p[0])) / length if length else 0.0
+        if depth < _DEPTH and dev > tolerance * _ONE:
+            pts.setdefault(m, pts[p])
+            bisect(p, m, depth + 1, out)
+            out.append(m)
+            bisect(m, q, depth + 1, out)
+
+    out_runs = []
+    for run in runs:
+        seq = run + [run[0]] if closed else run
+        fine = [seq[0]]
+        for p, q in zip(seq, seq[1:]):
+            bisect(p, q, 0, fine)
+            fine.append(q)
+        if closed:
+            fine.pop()
+        xy = np.array([[(xc + u) / _ONE, (yc + v) / _ONE] for u, v in fine], np.float64)
+        out_runs.append((xy, closed))
+    return out_runs

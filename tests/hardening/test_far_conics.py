@@ -1,0 +1,486 @@
+"""Far and huge circles and ellipses are drawn, not refused (issue 11, item 2):
+beyond the kernels' exact limits (centers within +-2**30, r <= 2**30, ellipses with
+rx * ry <= 2**29) the visible part is computed exactly in Python integers
+(scanline.geometry.far_conics, scanline.draw._far_conics).
+
+Oracles: the kernels themselves, for conics within their limits drawn through the
+far path (forced); independent Python references for the rest -- the notes' midpoint
+ellipse loop stepped in full with Python integers, the nearest pixel to the true
+curve evaluated with 700-digit decimals, exact integer point-in-band tests -- and
+shapely for the areas of thick and antialiased strokes."""
+
+import math
+from decimal import Decimal, getcontext
+
+import numpy as np
+import pytest
+
+import scanline as sl
+from scanline.draw import _far_conics as far
+from tests.fuzz.harness import bounded
+from tests.reference import peer
+
+W, H = 40, 30
+FRAME = (0, 0, W - 1, H - 1)
+
+
+def fb(mode="L"):
+    return sl.FrameBuffer(W, H, mode=mode)
+
+
+def lit(f):
+    """The set of lit pixels (x, y), y up."""
+    a = f.to_array()[::-1]
+    if a.ndim == 3:
+        a = a.any(axis=2)
+    ys, xs = np.nonzero(a)
+    return set(zip(xs.tolist(), ys.tolist()))
+
+
+def image(draw, mode="L"):
+    f = fb(mode)
+    draw(f)
+    return f.to_array()
+
+
+# -- the far path forced on conics the kernels take: exactly their pixels -------------
+
+def _near_outline(rng, rx, ry):
+    """A center that puts the frame over a random point of the outline."""
+    t = rng.uniform(0, 2 * math.pi)
+    return (int(round(W / 2 - rx * math.cos(t) + rng.integers(-8, 9))),
+            int(round(H / 2 - ry * math.sin(t) + rng.integers(-8, 9))))
+
+
+SHAPES = [(0, 0), (0, 7), (9, 0), (1, 1), (3, 2), (2, 3), (17, 17), (40, 13), (13, 40),
+          (300, 7), (7, 300), (1, 2000), (2000, 1), (5000, 5001), (20000, 26000),
+          (2**24, 31), (31, 2**24), (2**14, 2**14 + 1), (4097, 2**17)]
+
+
+@pytest.mark.parametrize("rx, ry", SHAPES)
+def test_forced_far_ellipse_is_the_kernels_ellipse(rx, ry):
+    rng = np.random.default_rng(rx * 7919 + ry)
+    for _ in range(12 if rx + ry < 10**6 else 2):     # the kernel steps a whole quadrant
+        xc, yc = _near_outline(rng, rx, ry)
+        want, got, fill_want, fill_got = fb("1"), fb("1"), fb("1"), fb("1")
+        sl.draw.ellipse(want, xc, yc, rx, ry)
+        far.outline(got, xc, yc, rx, ry, got.pixel(1), False)
+        assert lit(got) == lit(want), (xc, yc, rx, ry)
+        sl.draw.fill_ellipse(fill_want, xc, yc, rx, ry)
+        far.fill(fill_got, xc, yc, rx, ry, 1, None, False, None)
+        assert lit(fill_got) == lit(fill_want), (xc, yc, rx, ry)
+
+
+@pytest.mark.parametrize("r", [0, 1, 2, 3, 10, 57, 1000, 2**14, 2**20 + 3, 2**30])
+def test_forced_far_circle_is_the_kernels_circle(r):
+    rng = np.random.default_rng(r)
+    for _ in range(12):
+        xc, yc = _near_outline(rng, r, r)
+        want, got, fill_want, fill_got = fb("1"), fb("1"), fb("1"), fb("1")
+        sl.draw.circle(want, xc, yc, r)
+        far.outline(got, xc, yc, r, r, got.pixel(1), True)
+        assert lit(got) == lit(want), (xc, yc, r)
+        sl.draw.fill_circle(fill_want, xc, yc, r)
+        far.fill(fill_got, xc, yc, r, r, 1, None, True, None)
+        assert lit(fill_got) == lit(fill_want), (xc, yc, r)
+
+
+@pytest.mark.parametrize("rx, ry", [(0, 0), (1, 1), (7, 7), (30, 30), (3, 11), (40, 13),
+                                    (2000, 2000), (2000, 7)])
+def test_forced_far_arcs_and_pies_are_the_kernels(rx, ry):
+    from scanline.draw import curved
+    rng = np.random.default_rng(rx * 31 + ry)
+    for _ in range(16):
+        xc, yc = _near_outline(rng, rx, ry)
+        a0, a1 = rng.uniform(-7, 7, 2)
+        for closed, name in ((True, "arc"), (False, "pie")):
+            region = curved._sector(a0, a1, closed=closed)
+            want, got = fb("1"), fb("1")
+            getattr(sl.draw, name)(want, xc, yc, rx, ry, a0, a1)
+            if region is not None and closed:
+                far.arc(got, xc, yc, rx, ry, region, 1, rx == ry)
+            elif region is not None:
+                far.fill(got, xc, yc, rx, ry, 1, None, rx == ry, None, region)
+            assert lit(got) == lit(want), (name, xc, yc, rx, ry, a0, a1)
+
+
+def test_far_arcs_and_pies():
+    top = (20, 15 - 2**40, 2**40, 2**40)
+    # the visible top of the circle is at polar angle pi/2 +- 2e-11
+    assert lit(_draw(lambda f: sl.draw.arc(f, *top, math.pi / 2, math.pi))) == {
+        (x, 15) for x in range(21)}
+    # slices that share a ray tile the disk exactly once, far away too
+    a, b = image(lambda f: sl.draw.pie(f, *top, 0.0, math.pi / 2)), image(
+        lambda f: sl.draw.pie(f, *top, math.pi / 2, 2 * math.pi))
+    whole = image(lambda f: sl.draw.fill_circle(f, *top[:3]))
+    assert a.any() and b.any() and not (a & b).any()
+    np.testing.assert_array_equal(a | b, whole)
+    # a hollow far pie is its arc and radii; a far chord is still refused by name
+    assert image(lambda f: sl.draw.pie(f, *top, 1.0, 2.0, style=sl.FillStyle.hollow())).any()
+    with pytest.raises(sl.ArgumentValueError, match="yc="):
+        sl.draw.chord(fb(), *top, 0.0, 1.0)
+
+
+# -- beyond the limits: independent references ---------------------------------------
+
+def midpoint_ellipse_quadrant(rx, ry):
+    """The notes' midpoint ellipse (chapter 2, Q.6) stepped in full with Python
+    integers (decision parameters times 4), as an independent reference: region 1
+    while 2 ry^2 x < 2 rx^2 y, region 2 while y > 0, then the run to (rx, 0)."""
+    rx2, ry2 = rx * rx, ry * ry
+    x, y = 0, ry
+    pts = [(x, y)]
+    p = 4 * ry2 - 4 * rx2 * ry + rx2
+    while 2 * ry2 * x < 2 * rx2 * y:
+        x += 1
+        if p < 0:
+            p += 4 * (2 * ry2 * x + ry2)
+        else:
+            y -= 1
+            p += 4 * (2 * ry2 * x - 2 * rx2 * y + ry2)
+        pts.append((x, y))
+    p = ry2 * (2 * x + 1) ** 2 + 4 * rx2 * (y - 1) ** 2 - 4 * rx2 * ry2
+    while y > 0:
+        y -= 1
+        if p > 0:
+            p += 4 * (rx2 - 2 * rx2 * y)
+        else:
+            x += 1
+            p += 4 * (2 * ry2 * x - 2 * rx2 * y + rx2)
+        pts.append((x, y))
+    while x < rx:
+        x += 1
+        pts.append((x, 0))
+    return pts
+
+
+def mirrored_in_frame(pts, xc, yc):
+    return {(xc + sx * a, yc + sy * b) for a, b in pts for sx in (1, -1) for sy in (1, -1)
+            if 0 <= xc + sx * a < W and 0 <= yc + sy * b < H}
+
+
+@pytest.mark.parametrize("rx, ry", [(2_000, 300_000), (30_000, 29_999), (500_001, 1_100),
+                                    (123_457, 98_765)])
+def test_ellipses_beyond_the_limits_match_the_full_midpoint_loop(rx, ry):
+    assert rx * ry > sl.draw.conics.ELLIPSE_PRODUCT_LIMIT or max(rx, ry) > 2**24
+    quadrant = midpoint_ellipse_quadrant(rx, ry)
+    rng = np.random.default_rng(rx + ry)
+    # frames over the axes, over the slope -1 point, and random outline points
+    d = math.hypot(rx * rx, ry * ry)
+    spots = [(rx, 0), (0, ry), (rx * rx / d, ry * ry / d), (rx - 3, 1), (2, ry - 1)]
+    spots += [(rx * abs(math.cos(t)), ry * abs(math.sin(t))) for t in rng.uniform(0, 7, 4)]
+    for a, b in spots:
+        xc, yc = int(W // 2 - a), int(H // 2 - b)
+        f = fb("1")
+        sl.draw.ellipse(f, xc, yc, rx, ry)
+        assert lit(f) == mirrored_in_frame(quadrant, xc, yc), (xc, yc)
+        # the fill: from the left-most to the right-most outline pixel of each row
+        g = fb("1")
+        sl.draw.fill_ellipse(g, xc, yc, rx, ry)
+        ends = {}
+        for x, y in quadrant:
+            ends[y] = max(ends.get(y, -1), x)
+        want = {(x, y) for y in range(H) if abs(y - yc) in ends
+                for x in range(W) if abs(x - xc) <= ends[abs(y - yc)]}
+        assert lit(g) == want
+
+
+getcontext().prec = 700
+
+
+def nearest_row(r, x):
+    """round(sqrt(r**2 - x**2)) in 700-digit decimals: the midpoint circle's octant
+    point (the midpoints are never on the circle, so there is no tie)."""
+    return int((Decimal(r * r - x * x).sqrt()).to_integral_value(rounding="ROUND_HALF_EVEN"))
+
+
+def circle_reference(xc, yc, r):
+    out = set()
+    for col in range(W):
+        x = abs(col - xc)
+        if x < r and x <= nearest_row(r, x):
+            out |= {(col, yc + s * nearest_row(r, x)) for s in (1, -1)}
+    for row in range(H):
+        x = abs(row - yc)
+        if x < r and x <= nearest_row(r, x):
+            out |= {(xc + s * nearest_row(r, x), row) for s in (1, -1)}
+    return {(x, y) for x, y in out if 0 <= x < W and 0 <= y < H}
+
+
+@pytest.mark.parametrize("xc, yc, r", [
+    (20, 15 - 2**40, 2**40),                          # the top crosses the frame
+    (-10**12, 15, 10**12 + 20),                       # a far center, r reaching in
+    (20 - 2**62, 15 - 3 * 2**61, 2**62),              # over a random-ish angle
+    (int(-1e300), 17, int(1e300) + 25),
+    (int(7e299), int(7e299), int(1e300 * 2**0.5) - 7),   # near the 45-degree point
+    (20, 15 - 2**40 - 1, 2**40),                      # tangent to the bottom edge from below
+])
+def test_huge_circles_match_the_nearest_pixel_reference(xc, yc, r):
+    f = fb("1")
+    sl.draw.circle(f, xc, yc, r)
+    want = circle_reference(xc, yc, r)
+    assert lit(f) == want
+    if yc == 15 - 2**40:
+        assert len(want) == W                         # the whole row y = 15
+
+
+def test_far_arguments_as_floats_round_as_the_kernels_do():
+    # 1e12 + 0.5 rounds up (halves up), as every coordinate does
+    a = image(lambda f: sl.draw.circle(f, 20.0, 15 - 1e12 - 0.5, 1e12))
+    b = image(lambda f: sl.draw.circle(f, 20, 15 - 10**12, 10**12))
+    np.testing.assert_array_equal(a, b)
+
+
+def nearest_on(a, b, t):
+    """round(b sqrt(1 - t**2 / a**2)) in 700-digit decimals: the nearest pixel to the
+    ellipse along the other axis at offset t."""
+    t = Decimal(t)
+    return int((Decimal(b) * (1 - t * t / Decimal(a) ** 2).sqrt()).to_integral_value(
+        rounding="ROUND_HALF_EVEN"))
+
+
+def test_huge_ellipses_match_the_nearest_pixel_where_it_is_unambiguous():
+    # far from the slope -1 point the midpoint ellipse is the pixel nearest the
+    # curve in each column (region 1) or row (region 2)
+    rx, ry = 10**300, 3 * 10**299
+    xc, yc = 20, 15 - ry                              # the top, x = 0 .. 20 in region 1
+    top = {(col, yc + nearest_on(rx, ry, col - xc)) for col in range(W)}
+    assert lit(_draw(lambda f: sl.draw.ellipse(f, xc, yc, rx, ry))) == top
+    xc, yc = 20 - rx, 15                              # the right tip, region 2
+    tip = {(xc + nearest_on(ry, rx, row - yc), row) for row in range(H)}
+    assert lit(_draw(lambda f: sl.draw.ellipse(f, xc, yc, rx, ry))) == tip
+    assert {y for _, y in top} == {15} and {x for x, _ in tip} == {20}
+
+
+# -- degenerate and special cases ----------------------------------------------------
+
+def test_degenerate_far_conics():
+    # r = 0 far away: nothing; rx = 0 or ry = 0: segments
+    assert not image(lambda f: sl.draw.circle(f, 1e12, 3, 0)).any()
+    a = image(lambda f: sl.draw.ellipse(f, 20, -10**12, 0, 10**12 + 10))
+    b = image(lambda f: sl.draw.line(f, 20, 0, 20, 10))
+    np.testing.assert_array_equal(a, b)
+    a = image(lambda f: sl.draw.ellipse(f, -10**15, 4, 10**15 + 30, 0))
+    b = image(lambda f: sl.draw.line(f, 0, 4, 30, 4))
+    np.testing.assert_array_equal(a, b)
+    a = image(lambda f: sl.draw.fill_ellipse(f, -10**15, 4, 10**15 + 30, 0))
+    np.testing.assert_array_equal(a, b)
+
+
+def test_huge_conic_about_the_frame():
+    # the outline is far outside: nothing; the fill covers everything
+    for r in (2**31, 10**12, 1e300):
+        assert not image(lambda f: sl.draw.circle(f, 20, 15, r)).any()
+        assert not image(lambda f: sl.draw.ellipse(f, 20, 15, r, r / 3)).any()
+        assert image(lambda f: sl.draw.fill_circle(f, 20, 15, r)).all()
+        assert image(lambda f: sl.draw.fill_ellipse(f, 20, 15, r, r / 3)).all()
+        assert image(lambda f: sl.draw.fill_circle(f, 20, 15, r, antialias=True)).all()
+        assert not image(lambda f: sl.draw.circle(f, 20, 15, r, width=5)).any()
+
+
+def test_tangent_to_the_frame_edge():
+    # the lowest row of a circle above the frame: y = H exactly, just outside
+    assert not image(lambda f: sl.draw.circle(f, 20, H + 2**40, 2**40)).any()
+    a = image(lambda f: sl.draw.circle(f, 20, H - 1 + 2**40, 2**40))
+    assert (a[0] == 255).all() and not a[1:].any()
+
+
+def test_nan_and_inf_still_refused_by_name():
+    for bad in (np.nan, np.inf, -np.inf):
+        for call, name in [(lambda: sl.draw.circle(fb(), bad, 3, 2**40), "xc"),
+                           (lambda: sl.draw.ellipse(fb(), 3, 3, 2**40, bad), "ry"),
+                           (lambda: sl.draw.fill_circle(fb(), 3, bad, 1e12), "yc"),
+                           (lambda: sl.draw.circle(fb(), 3, 3, bad, width=3), "r")]:
+            with pytest.raises(sl.ArgumentValueError, match=f"{name} must be a finite"):
+                call()
+        with pytest.raises(sl.ArgumentValueError, match="finite"):
+            sl.draw.circles(fb(), [[1e12, 0, 1e12], [bad, 1, 1]])
+    with pytest.raises(sl.ArgumentValueError, match="r must be >= 0"):
+        sl.draw.circle(fb(), 1e12, 3, -1e12)
+
+
+def test_thick_dashed_far_conics_are_refused_by_name():
+    with pytest.raises(sl.ArgumentValueError, match="dash="):
+        sl.draw.ellipse(fb(), 20, 15 - 2**40, 2**41, 2**40, width=3, dash=(4, 2))
+    with pytest.raises(sl.ArgumentValueError, match="dash="):
+        sl.draw.circle(fb(), 20, 15 - 2**40, 2**40, antialias=True, dash=(4, 2))
+
+
+@pytest.mark.parametrize("rx, ry", [(0, 5), (1, 1), (9, 9), (40, 40), (7, 30), (30, 7),
+                                    (300, 2000), (60_000, 60_000)])   # within SEQUENCE_LIMIT
+def test_forced_far_dashed_conics_are_the_kernels(rx, ry):
+    from scanline.linestyle import LineStyle
+    rng = np.random.default_rng(rx + 3 * ry)
+    kinds = [{"dash": (2, 1)}, {"dash": (3.7, 1.3), "dash_phase": 0.6}, {"dash": "dotted"},
+             {"dash": 0b1111000011001100, "dash_phase": 3}, {"dash": (1, 1, 4, 2)},
+             {"dash": "dashed", "pen": "circle", "width": 3}]
+    for kw in kinds:
+        xc, yc = _near_outline(rng, rx, ry)
+        want, got = fb("1"), fb("1")
+        (sl.draw.circle(want, xc, yc, rx, 1, **kw) if rx == ry
+         else sl.draw.ellipse(want, xc, yc, rx, ry, 1, **kw))
+        far.stroke(got, xc, yc, rx, ry, 1, LineStyle(**kw), False, rx == ry)
+        assert lit(got) == lit(want), (xc, yc, kw)
+
+
+def test_a_huge_dashed_circle_counts_its_dashes_from_xc_plus_r():
+    # independent reference: the sequence runs from (r, 0) through the octant's
+    # mirror image and the octant to the top (0, r); Xd is the octant's last column
+    # (x <= round(sqrt(r^2 - x^2))), its diagonal steps are the drops of y, and the
+    # top pixels near (0, r) are unit steps apart
+    r = 2**40 + 12345
+    xc, yc = 20, 15 - r
+    x0 = int(Decimal(r) / Decimal(2).sqrt())
+    xd = max(x for x in range(x0 - 3, x0 + 4) if x <= nearest_row(r, x))
+    yd = nearest_row(r, xd)
+    dup = int(yd == xd)
+    steps = 2 * xd + 1 - dup                          # from (r, 0) to (0, r)
+    diagonal = 2 * (r - yd) + 1 - dup
+    top_k = steps
+    top_s = Decimal(steps - diagonal) + Decimal(diagonal) * Decimal(2).sqrt()
+    dotted = lit(_draw(lambda f: sl.draw.circle(f, xc, yc, r, dash="dotted")))
+    dashed = lit(_draw(lambda f: sl.draw.circle(f, xc, yc, r, dash=(3, 2), dash_phase=0.5)))
+    want_dotted, want_dashed = set(), set()
+    for col in range(W):
+        u = col - xc                                  # k and s grow to the left of the top
+        if (top_k - u) % 2 == 0:                      # "dotted": bits 1010..., bit 0 on
+            want_dotted.add((col, 15))
+        if (top_s - u + Decimal("0.5")) % 5 < 3:
+            want_dashed.add((col, 15))
+    assert dotted == want_dotted and dashed == want_dashed and 10 < len(dashed) < 30
+
+
+# -- strokes, pens, antialiasing, areas ------------------------------------------------
+
+def test_thick_and_pen_strokes_of_a_far_circle_are_its_straight_top():
+    # at r = 2**40 the circle's top deviates from y = 15 by 1e-9 over the frame
+    top = (20, 15 - 2**40, 2**40)
+    for kw in ({"width": 3}, {"width": 4.5, "cap": "round"}, {"pen": "square"},
+               {"pen": np.ones((3, 2), bool)}):
+        a = image(lambda f: sl.draw.circle(f, *top, **kw))
+        b = image(lambda f: sl.draw.polyline(f, [(-60, 15), (100, 15)], **kw))
+        assert a.any()
+        np.testing.assert_array_equal(a, b)
+    a = image(lambda f: sl.draw.circle(f, *top, antialias=True))
+    b = image(lambda f: sl.draw.antialias.lines(f, [(-60, 15, 100, 15)]))
+    np.testing.assert_array_equal(a, b)
+
+
+def _tip_geometry():
+    """An ellipse far beyond the limits whose tip, in the frame, has a radius of
+    curvature of 12 pixels: rx = 2e12, ry = sqrt(12 rx); and the ideal tip near
+    the frame as a local polyline (cos t - 1 = -2 sin^2(t/2), no cancellation)."""
+    rx = 2 * 10**12
+    ry = math.isqrt(12 * rx)
+    xc, yc = 30 - rx, 15
+    t = np.linspace(-1e-5, 1e-5, 20001)
+    local = np.stack([30 - 2 * rx * np.sin(t / 2) ** 2, 15 + ry * np.sin(t)], axis=1)
+    return (xc, yc, rx, ry), local
+
+
+def test_far_thick_and_antialiased_strokes_cover_the_ideal_areas():
+    shapely = peer("shapely")
+    from shapely.geometry import LineString, Polygon, box
+    row, local = _tip_geometry()
+    frame = box(-0.5, -0.5, W - 0.5, H - 0.5)
+    curve = LineString(local)
+    for width in (3, 6):
+        band = curve.buffer(width / 2, cap_style="flat").intersection(frame)
+        n = (image(lambda f: sl.draw.ellipse(f, *row, width=width)) > 0).sum()
+        # pixel counts of a band follow its area within about its boundary length / 4
+        assert abs(n - band.area) <= 0.25 * band.boundary.length, (width, n, band.area)
+        cover = image(lambda f: sl.draw.ellipse(f, *row, width=width, antialias=True))
+        assert abs(cover.sum() / 255 - band.area) <= 0.01 * band.area + 1, width
+    # width-1 antialiased: the intensity is the length of the outline in the frame
+    inside = curve.intersection(frame).length
+    cover = image(lambda f: sl.draw.ellipse(f, *row, antialias=True))
+    assert abs(cover.sum() / 255 - inside) <= 0.01 * inside + 1
+    # filled, and filled by coverage
+    area = Polygon(local).intersection(frame).area
+    n = (image(lambda f: sl.draw.fill_ellipse(f, *row)) > 0).sum()
+    assert abs(n - area) <= 0.25 * Polygon(local).intersection(frame).boundary.length
+    cover = image(lambda f: sl.draw.fill_ellipse(f, *row, antialias=True))
+    assert abs(cover.sum() / 255 - area) <= 0.005 * area + 1
+
+
+def test_pixels_of_a_far_thick_stroke_are_those_within_half_its_width():
+    # exact integer reference: a pixel center p is in the width-w stroke of the
+    # circle when (r - w/2)**2 <= |p - c|**2 <= (r + w/2)**2 (w = 3.2: no ties)
+    r = 2**45
+    xc, yc = 20 - (r * 3) // 5, 15 - (r * 4) // 5          # the frame over the 3-4-5 point
+    got = lit(_draw(lambda f: sl.draw.circle(f, xc, yc, r, width=3.2)))
+    want = set()
+    for x in range(W):
+        for y in range(H):
+            d2 = (x - xc) ** 2 + (y - yc) ** 2
+            if (r - 1.6) ** 2 <= d2 <= (r + 1.6) ** 2:
+                want.add((x, y))
+    # the stroke is the polygon within 0.1 pixel of the circle, so only pixel
+    # centers within 0.1 of the band's edges may differ
+    near_edge = {(x, y) for x in range(W) for y in range(H)
+                 if abs(math.sqrt((x - xc) ** 2 + (y - yc) ** 2) - r) - 1.6 > -0.1
+                 and abs(math.sqrt((x - xc) ** 2 + (y - yc) ** 2) - r) - 1.6 < 0.1}
+    assert want and got ^ want <= near_edge
+
+
+def _draw(draw):
+    f = fb()
+    draw(f)
+    return f
+
+
+# -- batches -------------------------------------------------------------------------
+
+def test_batches_draw_far_rows_in_order_with_their_colors():
+    rows = [(20, 15, 6), (20, 15 - 2**40, 2**40), (-1e300, 0, 1e300), (20, 14 - 10**12, 10**12),
+            (25, 18, 4)]
+    colors = ["red", "lime", "blue", (255, 255, 0), "white"]
+    for batch, one, extra in [(sl.draw.circles, sl.draw.circle, {}),
+                              (sl.draw.circles, sl.draw.circle, {"width": 3}),
+                              (sl.draw.fill_circles, sl.draw.fill_circle, {}),
+                              (sl.draw.fill_circles, sl.draw.fill_circle, {"antialias": True})]:
+        a = image(lambda f: batch(f, rows, colors, **extra), "RGB")
+        b = image(lambda f: [one(f, *row, c, **extra) for row, c in zip(rows, colors)], "RGB")
+        np.testing.assert_array_equal(a, b)
+    erows = [(r[0], r[1], r[2], r[2] // 2 if r[2] > 100 else r[2]) for r in rows]
+    for batch, one, extra in [(sl.draw.ellipses, sl.draw.ellipse, {}),
+                              (sl.draw.fill_ellipses, sl.draw.fill_ellipse, {}),
+                              (sl.draw.ellipses, sl.draw.ellipse, {"antialias": True})]:
+        a = image(lambda f: batch(f, erows, colors, **extra), "RGB")
+        b = image(lambda f: [one(f, *row, c, **extra) for row, c in zip(erows, colors)], "RGB")
+        np.testing.assert_array_equal(a, b)
+    # color arrays stay aligned with their rows
+    rgb = np.array([[255, 0, 0], [0, 255, 0], [0, 0, 255], [9, 9, 9], [1, 2, 3]], np.uint8)
+    a = image(lambda f: sl.draw.circles(f, rows, rgb), "RGB")
+    b = image(lambda f: [sl.draw.circle(f, *row, tuple(c)) for row, c in zip(rows, rgb.tolist())],
+              "RGB")
+    np.testing.assert_array_equal(a, b)
+
+
+def test_batches_within_the_limits_are_unchanged():
+    rng = np.random.default_rng(3)
+    rows = np.column_stack([rng.uniform(-20, 60, 50), rng.uniform(-20, 50, 50),
+                            rng.uniform(0, 30, 50)])
+    erows = np.column_stack([rows, rng.uniform(0, 30, 50)])
+    for batch, one, r in [(sl.draw.circles, sl.draw.circle, rows),
+                          (sl.draw.fill_circles, sl.draw.fill_circle, rows),
+                          (sl.draw.ellipses, sl.draw.ellipse, erows),
+                          (sl.draw.fill_ellipses, sl.draw.fill_ellipse, erows)]:
+        a = image(lambda f: batch(f, r))
+        b = image(lambda f: [one(f, *row) for row in r.tolist()])
+        np.testing.assert_array_equal(a, b)
+
+
+def test_a_million_far_rows_and_huge_radii_are_bounded():
+    rng = np.random.default_rng(9)
+    rows = np.column_stack([rng.uniform(-1e300, 1e300, 10**6), rng.uniform(-1e12, 1e12, 10**6),
+                            rng.uniform(0, 1e308, 10**6)])
+    rows[0] = (20, 15 - 2.0**40, 2.0**40)
+    f = fb()
+    with bounded(refusals=False):    # 20 s, 512 MiB; any error fails
+        sl.draw.circles(f, rows)
+        sl.draw.fill_circles(f, rows[:1000])
+        sl.draw.ellipse(f, 1e308, -1e308, 1.7e308, 1.7e308)
+        sl.draw.fill_ellipse(f, -1e308, 1e308, 1.7e308, 1.7e308, antialias=True)
+        sl.draw.circle(f, 20, 15 - 1e307, 1e307, width=7)
+    assert f.to_array().any()

@@ -248,8 +248,9 @@ def coordinate_array(name: str, value: object, columns: int,
             )
     if far:
         return np.ascontiguousarray(a, np.float64)
-    half = np.add(a, 0.5)
-    return np.floor(half, out=half).astype(np.int64, order="C")
+    half: NDArray[np.float64] = np.add(a, 0.5)
+    np.floor(half, out=half)
+    return half.astype(np.int64, order="C")
 
 
 #: Largest value an int64 holds.

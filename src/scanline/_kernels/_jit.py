@@ -147,23 +147,34 @@ def _interruptible(kernel, work, args):
             or threading.current_thread() is not threading.main_thread()
             or signal.getsignal(signal.SIGINT) is not signal.default_int_handler):
         return kernel(*args)
+    return in_background(kernel, lambda: kernel(*args))()
+
+
+def in_background(kernel, fn):
+    """Start ``fn()`` (a call of ``kernel``, which names the thread) in a daemon
+    thread; returns a function that waits for it in steps of :data:`WAIT` seconds
+    (so KeyboardInterrupt reaches the waiting thread at once; ``fn`` then finishes in
+    the background) and returns its result or raises its error."""
     outcome = []
 
     def run():
         try:
-            outcome.append((True, kernel(*args)))
-        except BaseException as error:      # handed to the caller below
+            outcome.append((True, fn()))
+        except BaseException as error:      # handed to the waiter below
             outcome.append((False, error))
 
     worker = threading.Thread(target=run, daemon=True,
                               name=f"scanline {getattr(kernel, '__name__', 'kernel')}")
     worker.start()
-    while worker.is_alive():
-        worker.join(WAIT)
-    ok, value = outcome[0]
-    if not ok:
-        raise value
-    return value
+
+    def wait():
+        while worker.is_alive():
+            worker.join(WAIT)
+        ok, value = outcome[0]
+        if not ok:
+            raise value
+        return value
+    return wait
 
 
 def _writable(args):

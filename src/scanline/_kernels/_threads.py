@@ -8,9 +8,7 @@ kernel's arrays, so every call of a helper that takes arrays updates the same
 reference counts from both cores (the triangle kernel ran slower on two threads than
 on one); separate calls own their arrays' counts."""
 
-import threading
-
-from ._jit import TWIN_WORK, WAIT, call
+from ._jit import TWIN_WORK, call, in_background
 
 
 def threads():
@@ -24,30 +22,12 @@ def threads():
 def _together(calls):
     """The ``(kernel, work, *args)`` calls at once, through
     :func:`scanline._kernels._jit.call`: the first in this thread, the others in
-    daemon threads waited for in steps of :data:`~scanline._kernels._jit.WAIT`
-    seconds, so that Ctrl-C reaches the caller at once (the other calls finish in
-    the background, as a long kernel does).  Returns their results in order."""
-    results = [None] * len(calls)
-    errors = []
-
-    def run(i):
-        try:
-            results[i] = call(*calls[i])
-        except BaseException as error:      # handed to the caller below
-            errors.append(error)
-
-    others = [threading.Thread(target=run, args=(i,), daemon=True,
-                               name=f"scanline {getattr(calls[i][0], '__name__', 'kernel')}")
-              for i in range(1, len(calls))]
-    for thread in others:
-        thread.start()
-    results[0] = call(*calls[0])
-    for thread in others:
-        while thread.is_alive():
-            thread.join(WAIT)
-    if errors:
-        raise errors[0]
-    return results
+    daemon threads (:func:`scanline._kernels._jit.in_background`: Ctrl-C reaches
+    the caller at once, the other calls finish in the background, as a long kernel
+    does).  Returns their results in order."""
+    waits = [in_background(c[0], lambda c=c: call(*c)) for c in calls[1:]]
+    first = call(*calls[0])
+    return [first] + [wait() for wait in waits]
 
 
 def call_in_bands(kernel, work, *args):

@@ -230,3 +230,60 @@ def test_worker_frames_come_back_whole_through_shared_memory_or_the_pipe(monkeyp
         assert [im.mode for im in images] == modes
         for a, im in zip(serial, images):
             np.testing.assert_array_equal(a, np.asarray(im))
+
+
+def test_dask_workers_send_lz4_compressed_pixels(monkeypatch):
+    """What a Dask worker sends: the pixels LZ4-compressed when asked (and lz4 is
+    there), raw otherwise; either way the client gets the frames back exactly."""
+    lz4 = peer("lz4.block")
+    serial = [np.asarray(im) for im in Animation(mixed, frames=10, fps=4).images()]
+    sent = render_module.render_chunk(mixed, range(10), compress=True)
+    assert all(isinstance(p[0], render_module.Compressed) for p in sent)
+    assert sum(len(p[0].data) for p in sent) < sum(a.nbytes for a in serial) / 4
+    assert lz4.decompress(sent[0][0].data) == np.ascontiguousarray(serial[0]).tobytes()
+    raw = render_module.render_chunk(mixed, range(10))
+    monkeypatch.setattr(render_module, "_lz4", lambda: None)        # lz4 not installed
+    assert all(isinstance(p[0], np.ndarray) for p in
+               render_module.render_chunk(mixed, range(10), compress=True))
+    monkeypatch.undo()
+    for a, packed in zip(serial, sent):
+        np.testing.assert_array_equal(a, np.asarray(render_module.unpack(packed)))
+    for a, packed in zip(serial, raw):
+        np.testing.assert_array_equal(a, np.asarray(render_module.unpack(packed)))
+
+
+@pytest.mark.parametrize("n, parts", [(0, 2), (1, 2), (3, 2), (200, 2), (1000, 4), (57, 1)])
+def test_chunks_are_consecutive_largest_first_and_end_in_single_frames(n, parts):
+    chunks = render_module.chunks(range(n), parts)
+    assert [i for c in chunks for i in c] == list(range(n))
+    sizes = [len(c) for c in chunks]
+    assert all(1 <= s <= 16 for s in sizes)
+    assert sizes == sorted(sizes, reverse=True)
+    # the frames left after each chunk: at least four chunks' worth per worker
+    # until the end, so that the workers finish together
+    for k, s in enumerate(sizes):
+        left = n - sum(sizes[:k])
+        assert s == 1 or s <= left // (4 * parts)
+    if n >= 4 * parts:
+        assert sizes[-4 * parts + 1:] == [1] * (4 * parts - 1)
+
+
+def test_workers_draw_on_one_thread_with_the_same_pixels():
+    from scanline._kernels import _threads
+
+    rng = np.random.default_rng(3)
+    v = rng.uniform(0, 400, (3000, 2))
+
+    def draw():
+        fb = sl.FrameBuffer(400, 400)
+        sl.draw.polygons(fb, v, counts=np.full(1000, 3), color=rng.integers(0, 255, (1000, 3)))
+        return fb.to_array()
+
+    state = rng.bit_generator.state
+    many = draw()
+    rng.bit_generator.state = state
+    with _threads.one_thread():
+        assert _threads.threads() == 1
+        one = draw()
+    assert _threads.threads() == __import__("numba").get_num_threads()
+    np.testing.assert_array_equal(many, one)

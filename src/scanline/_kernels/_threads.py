@@ -8,15 +8,35 @@ kernel's arrays, so every call of a helper that takes arrays updates the same
 reference counts from both cores (the triangle kernel ran slower on two threads than
 on one); separate calls own their arrays' counts."""
 
+import contextlib
+import threading
+
 from ._jit import TWIN_WORK, call, in_background
+
+_local = threading.local()
 
 
 def threads():
     """How many threads :func:`call_in_bands` uses: numba's thread count (1 on one
-    core, ``NUMBA_NUM_THREADS`` or ``numba.set_num_threads`` to change it)."""
+    core, ``NUMBA_NUM_THREADS`` or ``numba.set_num_threads`` to change it), or 1
+    inside :func:`one_thread`."""
     import numba
 
-    return numba.get_num_threads()
+    return 1 if getattr(_local, "one", False) else numba.get_num_threads()
+
+
+@contextlib.contextmanager
+def one_thread():
+    """Kernels called by this thread inside the block run on this thread alone: for
+    workers that already run one task per core (the frames of an animation rendered
+    in processes or on a Dask cluster), where more threads per call would only
+    compete for the same cores.  The pixels do not depend on the thread count."""
+    before = getattr(_local, "one", False)
+    _local.one = True
+    try:
+        yield
+    finally:
+        _local.one = before
 
 
 def _together(calls):

@@ -154,8 +154,8 @@ def unpack(packed, memory=None):
 
 def chunks(indices, parts):
     """``indices`` cut into consecutive chunks for ``parts`` workers, largest first
-    (guided self-scheduling, Polychronopoulos & Kuck 1987): each chunk takes about a quarter of the frames left per
-    worker, at most 16, so that the overhead per task stays small while most frames
+    (guided self-scheduling, Polychronopoulos & Kuck 1987): each chunk takes about a
+    quarter of the frames left per worker, at most 16, so that the overhead per task stays small while most frames
     are left, and the last chunks are single frames, so that the workers finish
     within about one frame of each other and the output streams."""
     indices = list(indices)

@@ -100,14 +100,14 @@ def _finite(*vals):
 
 #: Conic kinds that take any finite center and radius (issue 11): for those a
 #: ScanlineError on finite arguments is a failure.  Wide or antialiased dashed
-#: conics and chords beyond the kernels' limits are still refused by name.
+#: conics beyond the kernels' limits are still refused by name.
 DRAWN = {"circle", "ellipse", "fill_circle", "fill_ellipse", "wide", "aa", "dash", "arc",
-         "pie"}
+         "pie", "chord"}
 
 
 @given(xc=values, yc=values, rx=values, ry=values, mode=MODES, w=size, h=size,
        kind=st.sampled_from(["circle", "ellipse", "fill_circle", "fill_ellipse", "wide",
-                             "aa", "dash", "arc", "pie"]))
+                             "aa", "dash", "arc", "pie", "chord"]))
 def test_conics(xc, yc, rx, ry, mode, w, h, kind):
     fb, big = frame(mode, w, h)
     radii = (rx,) if kind in ("circle", "fill_circle") else (rx, ry)
@@ -129,6 +129,8 @@ def test_conics(xc, yc, rx, ry, mode, w, h, kind):
             sl.draw.circle(fb, xc, yc, rx, dash=(2, 1))
         elif kind == "arc":
             sl.draw.arc(fb, xc, yc, rx, ry, 0.5, 4.0)
+        elif kind == "chord":
+            sl.draw.chord(fb, xc, yc, rx, ry, 4.0, 0.5, style=sl.FillStyle.hollow())
         else:
             sl.draw.pie(fb, xc, yc, rx, ry, -1.0, 2.0)
     assert guard_intact(big)

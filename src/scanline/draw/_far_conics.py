@@ -68,7 +68,8 @@ def outline(fb, xc, yc, rx, ry, value, circle):
 def fill(fb, xc, yc, rx, ry, color, style, circle, hollow, region=None):
     """Fill the area bounded by the midpoint outline (spans from its left-most to
     its right-most pixel on each visible row) in ``style``, within the half-planes
-    ``region`` (a pie: ``(hp, combine)`` as the curved-area kernels take them);
+    ``region`` (a pie or a chord: ``(hp, combine)`` as the curved-area kernels take
+    them, their integers of any size);
     ``hollow`` draws the outline (the hollow style)."""
     s = []
     for row, y, w in fc.half_widths(yc, rx, ry, fb.height, circle):

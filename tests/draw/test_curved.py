@@ -476,11 +476,12 @@ def test_styles_get_the_area_and_its_offset_origin():
     (lambda fb: sl.draw.fill_circle(fb, math.nan, 3, 2), "xc"),
     (lambda fb: sl.draw.fill_circle(fb, 3, 3, math.inf), "r"),
     (lambda fb: sl.draw.fill_circle(fb, 3, 3, -1), "r"),
-    (lambda fb: sl.draw.chord(fb, 3, 3, 2**25, 1, 0, 1), "rx"),    # chords: exact range only
+    (lambda fb: sl.draw.chord(fb, 3, 3, math.nan, 1, 0, 1), "rx"),    # any finite rx is drawn
     (lambda fb: sl.draw.fill_ellipse(fb, 3, 3, 2, math.nan), "ry"),
     (lambda fb: sl.draw.arc(fb, 3, 3, 2, 2, math.nan, 1), "start"),
     (lambda fb: sl.draw.pie(fb, 3, 3, 2, 2, 0, math.inf), "end"),
-    (lambda fb: sl.draw.chord(fb, 3, 2**31, 2, 2, 0, 1), "yc"),
+    (lambda fb: sl.draw.chord(fb, 3, -math.inf, 2, 2, 0, 1), "yc"),
+    (lambda fb: sl.draw.chord(fb, 3, 2**31, -2**40, 2, 0, 1), "rx"),
     (lambda fb: sl.draw.fill_circles(fb, [(1, 2, math.nan)]), "circles"),
     (lambda fb: sl.draw.fill_ellipses(fb, [(1, 2, 3, 4), (1, 2, -5, 2)]), "radii"),
     (lambda fb: sl.draw.fill_circles(fb, [(1, 2, 3)], color=[1, 2]), "color"),

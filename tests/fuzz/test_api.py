@@ -99,18 +99,18 @@ def _finite(*vals):
 
 
 #: Conic kinds that take any finite center and radius (issue 11): for those a
-#: ScanlineError on finite arguments is a failure.  Wide or antialiased dashed
-#: conics and chords beyond the kernels' limits are still refused by name.
+#: ScanlineError on finite arguments is a failure (a wide dashed degenerate far
+#: ellipse is refused by name, so "wide-dash" draws circles).
 DRAWN = {"circle", "ellipse", "fill_circle", "fill_ellipse", "wide", "aa", "dash", "arc",
-         "pie"}
+         "pie", "chord", "wide-dash"}
 
 
 @given(xc=values, yc=values, rx=values, ry=values, mode=MODES, w=size, h=size,
        kind=st.sampled_from(["circle", "ellipse", "fill_circle", "fill_ellipse", "wide",
-                             "aa", "dash", "arc", "pie"]))
+                             "aa", "dash", "arc", "pie", "chord", "wide-dash"]))
 def test_conics(xc, yc, rx, ry, mode, w, h, kind):
     fb, big = frame(mode, w, h)
-    radii = (rx,) if kind in ("circle", "fill_circle") else (rx, ry)
+    radii = (rx,) if kind in ("circle", "fill_circle", "wide-dash") else (rx, ry)
     drawn = kind in DRAWN and _finite(xc, yc, *radii) and min(float(r) for r in radii) >= -0.5
     with bounded(refusals=not drawn):
         if kind == "circle":
@@ -129,6 +129,10 @@ def test_conics(xc, yc, rx, ry, mode, w, h, kind):
             sl.draw.circle(fb, xc, yc, rx, dash=(2, 1))
         elif kind == "arc":
             sl.draw.arc(fb, xc, yc, rx, ry, 0.5, 4.0)
+        elif kind == "wide-dash":
+            sl.draw.circle(fb, xc, yc, rx, width=3, dash=(2, 1), antialias=True)
+        elif kind == "chord":
+            sl.draw.chord(fb, xc, yc, rx, ry, 4.0, 0.5, style=sl.FillStyle.hollow())
         else:
             sl.draw.pie(fb, xc, yc, rx, ry, -1.0, 2.0)
     assert guard_intact(big)

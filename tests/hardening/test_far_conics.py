@@ -115,10 +115,166 @@ def test_far_arcs_and_pies():
     whole = image(lambda f: sl.draw.fill_circle(f, *top[:3]))
     assert a.any() and b.any() and not (a & b).any()
     np.testing.assert_array_equal(a | b, whole)
-    # a hollow far pie is its arc and radii; a far chord is still refused by name
+    # a hollow far pie is its arc and radii
     assert image(lambda f: sl.draw.pie(f, *top, 1.0, 2.0, style=sl.FillStyle.hollow())).any()
-    with pytest.raises(sl.ArgumentValueError, match="yc="):
-        sl.draw.chord(fb(), *top, 0.0, 1.0)
+
+
+# -- chords --------------------------------------------------------------------------
+
+CHORD_STYLES = [None, sl.FillStyle.hollow(), sl.FillStyle.hatch(angle=0.5, spacing=3)]
+
+
+@pytest.mark.parametrize("rx, ry", [(0, 0), (0, 6), (1, 1), (7, 7), (30, 30), (3, 11),
+                                    (40, 13), (2000, 2000), (2000, 7)])
+def test_forced_far_chords_are_the_kernels(rx, ry):
+    # the far drawing (spans of the far fill, outline, fill styles) given the
+    # kernels' half-plane: exactly the kernel's chord
+    from scanline.draw import curved
+    rng = np.random.default_rng(rx * 37 + ry)
+    for i in range(18):
+        xc, yc = _near_outline(rng, rx, ry)
+        a0, a1 = rng.uniform(-7, 7, 2)
+        style = CHORD_STYLES[i % 3]
+        want, got = fb("L"), fb("L")
+        sl.draw.chord(want, xc, yc, rx, ry, a0, a1, 200, style=style)
+        found = curved._chord_region(rx, ry, a0, a1)
+        if found is not None:
+            curved._far_cut(got, xc, yc, rx, ry, a0, a1, 200, style, found)
+        np.testing.assert_array_equal(got.to_array(), want.to_array(), str((xc, yc, a0, a1)))
+
+
+@pytest.mark.parametrize("rx, ry", [(1, 1), (7, 7), (30, 30), (3, 11), (40, 13), (2000, 2000),
+                                    (2000, 7), (2**29, 2**29)])
+def test_the_exact_chord_line_agrees_with_the_kernels_but_at_its_resolution(rx, ry):
+    # the far line (exact, through the ray ends) and the kernels' (float ends, a
+    # normal resolved to 2**-30) may differ only for centers within
+    # 1.4e-9 (r + d) of the exact line, d the distance from the chord's ends
+    from scanline.draw import curved
+    rng = np.random.default_rng(rx * 5 + ry)
+    for _ in range(12):
+        xc, yc = _near_outline(rng, rx, ry)
+        a0, a1 = rng.uniform(-7, 7, 2)
+        want, got = fb("1"), fb("1")
+        sl.draw.chord(want, xc, yc, rx, ry, a0, a1)
+        found = curved._chord_region(rx, ry, a0, a1, far=True)
+        if found is not None:
+            curved._far_cut(got, xc, yc, rx, ry, a0, a1, 1, None, found)
+        differ = lit(got) ^ lit(want)
+        if differ:
+            pa, pb = ((xc + u, yc + w) for u, w in (ray_end(rx, ry, a0), ray_end(rx, ry, a1)))
+            length = ((pb[0] - pa[0]) ** 2 + (pb[1] - pa[1]) ** 2).sqrt()
+            for x, y in differ:
+                d = float(min(((Decimal(x) - p[0]) ** 2 + (Decimal(y) - p[1]) ** 2).sqrt()
+                              for p in (pa, pb)))
+                assert abs(float(_cross(pa, pb, x, y) / length)) <= 1.4e-9 * (max(rx, ry) + d)
+
+
+def _cross(p, q, x, y):
+    """(q - p) x ((x, y) - p) in 700-digit decimals: < 0 right of p -> q."""
+    return (q[0] - p[0]) * (Decimal(y) - p[1]) - (q[1] - p[1]) * (Decimal(x) - p[0])
+
+
+def ray_end(rx, ry, t):
+    """The ideal ellipse's point on the ray of direction (round(cos t 2**30),
+    round(sin t 2**30)) (the sectors' resolution of an angle), in 700-digit
+    decimals, relative to the center."""
+    ux, uy = round(math.cos(t) * 2**30), round(math.sin(t) * 2**30)
+    s = (Decimal(ry) * ux) ** 2 + (Decimal(rx) * uy) ** 2
+    k = Decimal(rx) * ry / s.sqrt()
+    return k * ux, k * uy
+
+
+def chord_reference(xc, yc, rx, ry, a, b, disk):
+    """The pixels of ``disk`` (the filled conic) strictly right of the line P_a -> P_b
+    (no pixel center within 1e-6 pixel of it: no tie to decide)."""
+    pa, pb = ((xc + u, yc + w) for u, w in (ray_end(rx, ry, a), ray_end(rx, ry, b)))
+    length = ((pb[0] - pa[0]) ** 2 + (pb[1] - pa[1]) ** 2).sqrt()
+    out = set()
+    for x, y in disk:
+        c = _cross(pa, pb, x, y) / length
+        assert abs(c) > Decimal("1e-6"), (x, y)
+        if c < 0:
+            out.add((x, y))
+    return out
+
+
+def _on_chord(rx, ry, a, b, at=0.5):
+    """A center putting the point at fraction ``at`` of the chord at the frame's
+    middle."""
+    pa, pb = ray_end(rx, ry, a), ray_end(rx, ry, b)
+    m = [pa[i] + (pb[i] - pa[i]) * Decimal(at) for i in (0, 1)]
+    return int(W // 2 - m[0]), int(H // 2 - m[1])
+
+
+def _disk(xc, yc, rx, ry):
+    return lit(_draw(lambda f: (sl.draw.fill_circle(f, xc, yc, rx) if rx == ry
+                                else sl.draw.fill_ellipse(f, xc, yc, rx, ry))))
+
+
+FAR_CHORDS = [   # (rx, ry, a, b, where): the frame over the chord at fraction ``where``
+    (2**40, 2**40, 1.0, 2.5, 0.5), (2**40, 2**40, 2.5, 1.0, 0.3),
+    (2**40 + 1, 2**40 + 1, math.pi / 2 - 4e-6, math.pi / 2 + 3e-6, 0.5),   # near the top
+    (10**12, 3 * 10**11, -0.3, 2.9, 0.8), (10**300, 10**300, 0.0, 1.0, 0.5),
+    (10**300, 10**300, 3.0, 1.0, 0.61), (3 * 10**299, 10**300, 4.0, 5.5, 0.5),
+    (2**62, 2**24, 0.2, 3.3, 0.1), (10**300, 7 * 10**10, 1.0, -1.2, 0.5),   # a needle
+]
+
+
+@pytest.mark.parametrize("rx, ry, a, b, where", FAR_CHORDS)
+def test_far_chords_crossing_the_frame_match_an_exact_reference(rx, ry, a, b, where):
+    xc, yc = _on_chord(rx, ry, a, b, where)
+    disk = _disk(xc, yc, rx, ry)
+    got = lit(_draw(lambda f: sl.draw.chord(f, xc, yc, rx, ry, a, b)))
+    other = lit(_draw(lambda f: sl.draw.chord(f, xc, yc, rx, ry, b, a)))
+    want = chord_reference(xc, yc, rx, ry, a, b, disk)
+    assert got == want and 0 < len(got) < len(disk)      # the line crosses the frame
+    assert other == disk - got                           # (b, a): the rest, exactly
+
+
+def test_far_chords_beside_the_frame_degenerate_and_whole():
+    r = 10**300
+    xc, yc = 20, 15                       # the frame about the center: deep inside
+    every = {(x, y) for x in range(W) for y in range(H)}
+    for a, b, want in [(0.0, 1.0, set()), (1.0, 0.0, every),       # beyond the chord, or not
+                       (0.0, math.pi, {p for p in every if p[1] > 15}),   # the diameter
+                       (math.pi, 2 * math.pi, {p for p in every if p[1] <= 15}),
+                       (1.0, 1.0, set()), (1.0, 1.0 + 2 * math.pi, every),  # nothing, all
+                       (2.0, 2.0 + 1e-12, set()), (2.0, 2.0 - 1e-12, every)]:  # below 1e-9
+        for rx, ry in [(r, r), (r, r // 3)]:
+            assert lit(_draw(lambda f: sl.draw.chord(f, xc, yc, rx, ry, a, b))) == want, (a, b)
+    # a chord whose arc is off the frame, its line far beyond: all or nothing
+    top = (20, 15 - 2**40, 2**40, 2**40)
+    assert not lit(_draw(lambda f: sl.draw.chord(f, *top, -2.0, -1.0)))
+    assert lit(_draw(lambda f: sl.draw.chord(f, *top, -1.0, -2.0))) == _disk(*top)
+    # a sweep just above the resolution: the sliver below the top, 1.4e-5 deep,
+    # holds the top row only (pixel centers at y = 15, the ideal top)
+    t = math.pi / 2
+    sliver = lit(_draw(lambda f: sl.draw.chord(f, *top, t - 5e-9, t + 5e-9)))
+    assert sliver == chord_reference(*top, t - 5e-9, t + 5e-9, _disk(*top)) == {
+        (x, 15) for x in range(W)}
+
+
+def test_a_hollow_far_chord_is_its_arc_and_its_exact_line():
+    rx = ry = 10**300
+    a, b = 0.0, 1.0
+    xc, yc = _on_chord(rx, ry, a, b)
+    got = lit(_draw(lambda f: sl.draw.chord(f, xc, yc, rx, ry, a, b,
+                                             style=sl.FillStyle.hollow())))
+    pa, pb = ((xc + u, yc + w) for u, w in (ray_end(rx, ry, a), ray_end(rx, ry, b)))
+    length = ((pb[0] - pa[0]) ** 2 + (pb[1] - pa[1]) ** 2).sqrt()
+    # the arc is far off the frame: only the line, its pixels within a pixel of it,
+    # one per row (the line is y-major: slope -cot(1/2))
+    assert got and all(abs(_cross(pa, pb, x, y) / length) < 0.75 for x, y in got)
+    assert sorted(y for _, y in got) == list(range(H))
+
+
+def test_far_chords_are_bounded():
+    f = fb()
+    with bounded(refusals=False):    # 20 s, 512 MiB; any error fails
+        sl.draw.chord(f, 1e308, -1e308, 1.7e308, 1.7e308, 0.5, 2.0)
+        sl.draw.chord(f, -1e300, 15, 1e300 + 30, 1e300, -0.1, 0.1, style=sl.FillStyle.hollow())
+        sl.draw.chord(f, 20, 15, 1e308, 1e-3, 1.0, 5.0)
+    assert f.to_array().any()
 
 
 # -- beyond the limits: independent references ---------------------------------------
@@ -299,11 +455,119 @@ def test_nan_and_inf_still_refused_by_name():
         sl.draw.circle(fb(), 1e12, 3, -1e12)
 
 
-def test_thick_dashed_far_conics_are_refused_by_name():
+def test_thick_dashed_degenerate_far_conics_are_refused_by_name():
     with pytest.raises(sl.ArgumentValueError, match="dash="):
-        sl.draw.ellipse(fb(), 20, 15 - 2**40, 2**41, 2**40, width=3, dash=(4, 2))
+        sl.draw.ellipse(fb(), 20, 15 - 2**40, 0, 2**40, width=3, dash=(4, 2))
     with pytest.raises(sl.ArgumentValueError, match="dash="):
-        sl.draw.circle(fb(), 20, 15 - 2**40, 2**40, antialias=True, dash=(4, 2))
+        sl.draw.ellipse(fb(), 20 - 2**40, 15, 2**40, 0, antialias=True, dash=(4, 2))
+
+
+def decimal_pi():
+    """pi to the context's precision (the decimal module's documented recipe)."""
+    getcontext().prec += 2
+    lasts, t, s, n, na, d, da = 0, Decimal(3), 3, 1, 0, 0, 24
+    while s != lasts:
+        lasts = s
+        n, na = n + na, na + 8
+        d, da = d + da, da + 32
+        t = (t * n) / d
+        s += t
+    getcontext().prec -= 2
+    return +s
+
+
+def quarter_perimeter(a, b):
+    """A quarter of the ellipse's perimeter by the arithmetic-geometric mean,
+    C = 2 pi / M(a, b) (a**2 - sum_n 2**(n-1) c_n**2), c_0**2 = a**2 - b**2,
+    c_(n+1) = (a_n - b_n) / 2, in 700-digit decimals."""
+    a, b = Decimal(max(a, b)), Decimal(min(a, b))
+    a0 = a
+    total, c2, n = Decimal(0), a * a - b * b, 0
+    while c2 > Decimal(10) ** -650 * a0 * a0:
+        total += Decimal(2) ** (n - 1) * c2
+        a, b, c2, n = (a + b) / 2, (a * b).sqrt(), ((a - b) / 2) ** 2, n + 1
+    return decimal_pi() / (2 * a) * (a0 * a0 - total)
+
+
+def test_the_references_arc_lengths():
+    special = pytest.importorskip("scipy.special")
+    for a, b in [(5, 5), (3, 1), (1000, 7), (10, 9)]:
+        for p, q in ((a, b), (b, a)):
+            assert math.isclose(float(quarter_perimeter(p, q)),
+                                a * special.ellipe(1 - b * b / (a * a)), rel_tol=1e-13)
+
+
+def _dashes_on(s, lengths, phase):
+    """Whether arc length s (decimal) is on a dash of ``lengths`` (floats, exactly)
+    from ``phase``, and its distance to the nearest dash end."""
+    period = 0.0                  # the period is the float sum of the lengths (kernels)
+    for c in lengths:
+        period += c
+    t = (s + Decimal(phase)) % Decimal(period)
+    edges, at = [Decimal(0)], Decimal(0)
+    state = None
+    for i, c in enumerate(lengths):
+        at += Decimal(c)
+        edges.append(at)
+        if state is None and t < at:
+            state = i % 2 == 0
+    return state, float(min(abs(t - e) for e in edges))
+
+
+@pytest.mark.parametrize("rx, ry", [(2**40 + 12345, 2**40 + 12345), (10**300, 3 * 10**299),
+                                    (3 * 10**299, 10**300), (10**18 + 7, 10**15)])
+@pytest.mark.parametrize("dash, phase", [((3, 2), 0.5), ((4.4, 1.3, 0.9, 2.1), 0.25)])
+def test_wide_dashed_huge_conics_count_their_dashes_from_xc_plus_rx(rx, ry, dash, phase):
+    # the frame over the top (0, ry): the visible conic is the row y = 15 (it drops
+    # by x**2 rx**-2 ry / 2 < 1e-12 there); arc length at column x is the quarter
+    # perimeter minus (x - xc) (the curvature term x**3 / ry**2 is below 1e-20)
+    xc, yc = 20, 15 - ry
+    q = quarter_perimeter(rx, ry) if rx != ry else decimal_pi() * rx / 2
+    got = lit(_draw(lambda f: sl.draw.ellipse(f, xc, yc, rx, ry, width=3, dash=dash,
+                                              dash_phase=phase)))
+    want, near, cols = set(), set(), []
+    for x in range(W):
+        on, margin = _dashes_on(q - (x - xc), dash, phase)
+        column = {(x, 14), (x, 15), (x, 16)}
+        if margin < 0.05:                    # a dash end within the tolerance of a center
+            near |= column
+        if on:
+            cols.append(x)
+            want |= column
+    assert got ^ want <= near and len(near) <= 9 and 5 < len(cols) < W
+    # antialiased: the coverage adds up to the dashes' area in the frame
+    cover = image(lambda f: sl.draw.ellipse(f, xc, yc, rx, ry, width=3, dash=dash,
+                                            dash_phase=phase, antialias=True))
+    area = 0.0
+    for k in range(-2000, 2000):                       # the dashes along the row, exactly
+        x = (-0.5 + k / 50)
+        area += 0.02 * 3 * (-0.5 <= x < W - 0.5 and _dashes_on(q - (Decimal(x) + Decimal("0.01") - xc),
+                                                                dash, phase)[0])
+    assert abs(cover.sum() / 255 - area) <= 0.02 * area + 1
+
+
+def test_wide_dashed_far_circle_at_any_angle_matches_the_radial_reference():
+    # exact reference: a pixel center p is lit when | |p - c| - r | < w / 2 and its
+    # arc length r theta(p) (counterclockwise from (xc + r, yc)) is on a dash; only
+    # centers within 0.1 pixel of the band's edges or of a dash end may differ (the
+    # stroke follows a polygon within 0.025 pixel, dashes its length)
+    r = 2**31 + 99
+    for t in (0.7, 2.4, 4.0, 5.9):
+        xc, yc = 20 - round(r * math.cos(t)), 15 - round(r * math.sin(t))
+        dash, phase = (3.5, 1.5), 0.2
+        got = lit(_draw(lambda f: sl.draw.circle(f, xc, yc, r, width=2.6, dash=dash,
+                                                 dash_phase=phase)))
+        want, near = set(), set()
+        for x in range(W):
+            for y in range(H):
+                d = math.hypot(x - xc, y - yc) - r        # exact enough: ints to floats
+                s = Decimal(r) * Decimal(math.atan2(y - yc, x - xc) % (2 * math.pi))
+                on, margin = _dashes_on(s, dash, phase)
+                if abs(abs(d) - 1.3) < 0.1 or margin < 0.1:
+                    near.add((x, y))
+                if abs(d) < 1.3 and on:
+                    want.add((x, y))
+        assert len(want) > 40 and got ^ want <= near, t
 
 
 @pytest.mark.parametrize("rx, ry", [(0, 5), (1, 1), (9, 9), (40, 40), (7, 30), (30, 7),

@@ -68,7 +68,8 @@ def outline(fb, xc, yc, rx, ry, value, circle):
 def fill(fb, xc, yc, rx, ry, color, style, circle, hollow, region=None):
     """Fill the area bounded by the midpoint outline (spans from its left-most to
     its right-most pixel on each visible row) in ``style``, within the half-planes
-    ``region`` (a pie: ``(hp, combine)`` as the curved-area kernels take them);
+    ``region`` (a pie or a chord: ``(hp, combine)`` as the curved-area kernels take
+    them, their integers of any size);
     ``hollow`` draws the outline (the hollow style)."""
     s = []
     for row, y, w in fc.half_widths(yc, rx, ry, fb.height, circle):
@@ -137,17 +138,59 @@ def _cut(runs, region, y):
 
 
 def _runs(fb, xc, yc, rx, ry, margin):
-    """The ideal conic within ``margin`` pixels of the frame, as polylines
-    ``(verts, offsets, closed)`` for :func:`scanline.draw.strokes.stroke`."""
-    window = _frame(fb, margin)
-    if rx == 0 or ry == 0:              # a segment: the guard clips it
-        runs = [(np.array([[xc - rx, yc - ry], [xc + rx, yc + ry]], np.float64), True)]
-    else:
-        runs = fc.local_runs(xc, yc, rx, ry, window)
+    """The ideal conic within ``margin`` pixels of the frame: a list of
+    (polyline, closed, start) (:func:`scanline.geometry.far_conics.local_runs`;
+    a degenerate conic is its segment, clipped by the guard, start None)."""
+    if rx == 0 or ry == 0:
+        return [(np.array([[xc - rx, yc - ry], [xc + rx, yc + ry]], np.float64), True, None)]
+    return fc.local_runs(xc, yc, rx, ry, _frame(fb, margin))
+
+
+def _packed(runs):
+    """Polylines ``(verts, offsets, closed)`` for :func:`scanline.draw.strokes.stroke`."""
     offsets = np.zeros(len(runs) + 1, np.int64)
-    offsets[1:] = np.cumsum([len(r) for r, _ in runs])
-    verts = np.concatenate([r for r, _ in runs]) if runs else np.empty((0, 2))
-    return np.ascontiguousarray(verts, np.float64), offsets, np.array([c for _, c in runs], bool)
+    offsets[1:] = np.cumsum([len(r[0]) for r in runs])
+    verts = np.concatenate([r[0] for r in runs]) if runs else np.empty((0, 2))
+    return (np.ascontiguousarray(verts, np.float64), offsets,
+            np.array([r[1] for r in runs], bool))
+
+
+def _split_at_start(runs, x, y):
+    """Open runs passing through the conic's start point (x, y) (where the dash
+    pattern starts again, as on the kernels' closed polygon) cut in two there, the
+    second starting at arc length 0 (start None)."""
+    out = []
+    for xy, closed, start in runs:
+        hit = np.flatnonzero((xy[1:] == (float(x), float(y))).all(axis=1)) + 1
+        if closed or len(hit) == 0:
+            out.append((xy, closed, start))
+            continue
+        i = int(hit[0])
+        out += [(xy[:i + 1], False, start), (xy[i:], False, None)]
+    return [r for r in out if len(r[0]) > 1]
+
+
+def _dashed_runs(fb, xc, yc, rx, ry, color, style, antialias, runs):
+    """Stroke each run with the dash pattern's phase at its first vertex: the
+    given phase plus the ideal conic's arc length from (xc + rx, yc), where the
+    pattern starts (a run through that point is cut there: a dash across it is two
+    dashes with their ends meeting, where the kernels' closed polygon joins them)
+    (:func:`scanline.geometry.far_conics.arc_length`, exact to about 10**-30
+    pixel beyond the sample's 2**-40), reduced modulo the pattern's period (the
+    kernels' float sum of the lengths, :func:`_period`) in Fractions and rounded
+    once to a float.  Along a run the dashes follow the polyline's length,
+    shorter than the arc by at most a third of its turning angle times the
+    sampling tolerance (0.025 pixel): under 0.03 pixel."""
+    from . import strokes
+
+    lengths, phase = style.lengths()
+    period = _period(lengths)
+    for xy, closed, start in _split_at_start(runs, xc + rx, yc):
+        s = fc.arc_length(rx, ry, *start) if start is not None else Fraction(0)
+        at = float((Fraction(phase) + s) % period)
+        verts, offsets, flags = _packed([(xy, closed)])
+        strokes.stroke(fb, verts, offsets, flags, color,
+                       style.replace(dash=tuple(lengths), dash_phase=at), antialias)
 
 
 def stroke(fb, xc, yc, rx, ry, color, style, antialias, circle, names=("rx", "ry")):
@@ -156,24 +199,28 @@ def stroke(fb, xc, yc, rx, ry, color, style, antialias, circle, names=("rx", "ry
     the pen's reach of the frame, in the order of the conic's pixel sequence, each
     visible run with the line type's phase at its first pixel (exact: its index, or
     its arc length axial + diagonal sqrt 2 along the sequence).  Dashed thick or
-    antialiased conics are refused: their dashes are measured along the ideal conic
-    from (xc + rx, yc), an elliptic arc length out of float reach."""
+    antialiased conics have their dashes measured along the ideal conic from
+    (xc + rx, yc), the arc length to each visible run computed in decimals
+    (:func:`_dashed_runs`)."""
     from . import strokes
 
     pixel_line = not antialias and (style.width == 1 or style.pen is not None)
-    if style.dash is not None and not pixel_line:
+    dashed = style.lengths()[0] is not None
+    if dashed and not pixel_line and (rx == 0 or ry == 0):
         raise ArgumentValueError(
-            f"dash={style.dash}: a dashed wide or antialiased circle or ellipse is drawn "
-            f"within the exact range only (center within +-{COORD_LIMIT}, {names[0]}={rx}, "
-            f"{names[1]}={ry} within the midpoint limits), as its dashes are measured along "
-            "the whole curve from (xc + rx, yc); draw it solid, dash it at width 1, or "
-            "flatten the visible part (scanline.clip.ellipse) and dash that polyline")
+            f"dash={style.dash}: a dashed wide or antialiased degenerate ellipse "
+            f"({names[0]}={rx}, {names[1]}={ry}) is drawn within the exact range only "
+            f"(center within +-{COORD_LIMIT}); draw it as a dashed line (scanline.draw.polyline)")
     margin = int(math.ceil(strokes._margin(style))) + 2
-    if antialias and style.width == 1 and style.pen is None:
+    if antialias and style.width == 1 and style.pen is None and not dashed:
         antialiased_outline(fb, xc, yc, rx, ry, color)
         return
     if not pixel_line:
-        verts, offsets, closed = _runs(fb, xc, yc, rx, ry, margin)
+        runs = _runs(fb, xc, yc, rx, ry, margin)
+        if dashed:
+            _dashed_runs(fb, xc, yc, rx, ry, color, style, antialias, runs)
+            return
+        verts, offsets, closed = _packed(runs)
         if len(closed):
             strokes.stroke(fb, verts, offsets, closed, color, style, antialias)
         return
@@ -216,12 +263,18 @@ def _phase(kind, dashes, phase, k, axial, diagonal):
         return float((int(phase) + k) % 16)
     if kind != kl.LENGTHS:
         return phase
-    period = 0.0
-    for length in dashes.tolist():
-        period += length
     one = 1 << _PHASE_BITS
     s = round((Fraction(phase) + axial) * one) + math.isqrt(2 * diagonal * diagonal * one * one)
-    return (s % round(Fraction(period) * one)) / one
+    return (s % round(_period(dashes.tolist()) * one)) / one
+
+
+def _period(lengths):
+    """The dash pattern's period as the kernels take it: the float sum of its
+    lengths (exactly, as a Fraction)."""
+    period = 0.0
+    for length in lengths:
+        period += length
+    return Fraction(period)
 
 
 def _band(xy, closed, half=0.5):
@@ -249,7 +302,7 @@ def antialiased_outline(fb, xc, yc, rx, ry, color):
         aa.lines(fb, [[xc - rx, yc - ry, xc + rx, yc + ry]], [color])
         return
     contours = []
-    for xy, closed in fc.local_runs(xc, yc, rx, ry, _frame(fb, 3)):
+    for xy, closed, _ in fc.local_runs(xc, yc, rx, ry, _frame(fb, 3)):
         contours += _band(xy, closed)
     if contours:
         aa.fill(fb, contours, color)
@@ -266,7 +319,7 @@ def antialiased_fill(fb, xc, yc, rx, ry, color):
     if rx == 0 or ry == 0:
         return
     runs = fc.local_runs(xc, yc, rx, ry, window)
-    pts = [r for r, _ in runs]
+    pts = [r[0] for r in runs]
     xc, yc, rx, ry = (Fraction(c) for c in (xc, yc, rx, ry))
     corners = [(x, y) for x in (x0, x1) for y in (y0, y1)
                if ((x - xc) * ry) ** 2 + ((y - yc) * rx) ** 2 <= (rx * ry) ** 2]

@@ -106,8 +106,9 @@ def circle(fb: "FrameBuffer", xc: float, yc: float, r: float, color: Optional[Co
     x are those of the visible columns and rows, and y(x) has a closed form, so any
     circle costs O(width + height).  A width-1 dashed or pen-drawn circle beyond
     them numbers its visible pixels exactly as the whole sequence would; wide or
-    antialiased dashed ones are refused there (their dashes are measured along the
-    ideal circle from (xc + r, yc)).
+    antialiased dashed ones measure their dashes along the ideal circle from
+    (xc + r, yc), the arc length to the visible part in decimals
+    (:func:`scanline.geometry.far_conics.arc_length`).
 
     References
     ----------

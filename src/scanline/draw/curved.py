@@ -10,6 +10,7 @@ pie runs counterclockwise from ``start`` to ``end``: ``end - start`` is taken mo
 """
 
 import math
+from fractions import Fraction
 
 import numpy as np
 
@@ -21,7 +22,7 @@ from . import _blend
 from ._common import colors, target
 from ..geometry import guard
 from . import _far_conics as far
-from .conics import _big, _check_ellipse, _exact_rows, circle, ellipse, exact
+from .conics import _big, _exact_rows, circle, ellipse, exact
 from .lines import lines
 
 TAU = 2 * math.pi
@@ -39,20 +40,6 @@ def _top_left(nx, ny):
     normal is (nx, ny)?  Yes for a left edge (area to the right: nx > 0) and a top
     edge (horizontal, area below), as in the polygon fill."""
     return nx > 0 or (nx == 0 and ny < 0)
-
-
-def _center(xc, yc):
-    return v.coordinate("xc", xc), v.coordinate("yc", yc)
-
-
-def _axes(rx, ry):
-    """Rounded semi-axes and whether they make a circle (drawn by the midpoint
-    circle, radii up to 2**30) or an ellipse (the midpoint ellipse's limits)."""
-    rx = v.radius("rx", rx)
-    ry = v.radius("ry", ry)
-    if rx != ry:
-        _check_ellipse(rx, ry)
-    return rx, ry, rx == ry
 
 
 def region_work(rx, ry, width, height):
@@ -333,86 +320,144 @@ def _polar_point(rx, ry, angle):
     return rho * c, rho * s
 
 
-def _chord_region(rx, ry, start, end):
-    """The half-plane on the arc's side of the chord (right of P_a -> P_b) and the
-    chord as a segment; None when the chord cuts off nothing."""
-    a, b, sweep = _sweep(start, end)
-    pa, pb = _polar_point(rx, ry, a), _polar_point(rx, ry, b)
-    if sweep is None:
-        return _whole(), [(pa, pb)]
-    # The line is computed from the end points in a fixed order, so the chords
-    # (start, end) and (end, start) use exactly opposite half-planes.
+#: Fixed-point bits of a far chord's or pie's ends: integers times 2**-64 pixel.
+END_BITS = 64
+
+
+def _ray_point(rx, ry, angle):
+    """The point of the ideal ellipse (integer semi-axes of any size) on the ray of
+    the sector's direction :func:`_direction` (``angle`` resolved as arcs and pies
+    resolve it), relative to the center, as Fractions: t u with
+    t = rx ry / sqrt(ry**2 ux**2 + rx**2 uy**2), each coordinate rounded toward the
+    center to a multiple of 2**-64 (exact integer square roots,
+    floor(sqrt(n / s)) = isqrt(n // s))."""
+    u = _direction(angle)
+    s = (ry * u[0]) ** 2 + (rx * u[1]) ** 2
+    if s == 0:
+        return Fraction(0), Fraction(0)
+
+    def part(c):
+        m = math.isqrt(((abs(c) * rx * ry) << END_BITS) ** 2 // s)
+        return Fraction(m if c >= 0 else -m, 1 << END_BITS)
+
+    return part(u[0]), part(u[1])
+
+
+def _oriented(pa, pb, plane):
+    """The half-plane ``plane(p, q)`` = (nx, ny, c) right of p -> q for the chord's
+    ends sorted (a fixed order, so that the chords (a, b) and (b, a) get exactly
+    opposite half-planes), turned to the right of P_a -> P_b (the arc's side)."""
     p, q = sorted((pa, pb))
+    nx, ny, c = plane(p, q)
+    if (p, q) != (pa, pb):
+        nx, ny, c = -nx, -ny, -c
+    return [(nx, ny, c, int(_top_left(nx, ny))), EVERYWHERE]
+
+
+def _float_plane(p, q):
+    """The kernels' chord line: its unit normal in integers of length UNIT (an
+    angle resolved to about 1e-9 radians), the offset rounded; (0, 0, 0) when the
+    ends are closer than that resolution."""
     dx, dy = q[0] - p[0], q[1] - p[1]
     length = math.hypot(dx, dy)
     n = (round(dy / length * UNIT), round(-dx / length * UNIT)) if length else (0, 0)
-    if n == (0, 0):
+    return n[0], n[1], -round(n[0] * p[0] + n[1] * p[1])
+
+
+def _exact_plane(p, q):
+    """The exact line through the Fraction points p and q (multiples of 2**-64) as
+    an integer half-plane n . (x, y) + c > 0 of pixel centers (x, y)."""
+    one = 1 << END_BITS
+    px, py, qx, qy = (int(c * one) for c in (*p, *q))
+    nx, ny = qy - py, px - qx
+    return nx * one, ny * one, -(nx * px + ny * py)
+
+
+def _chord_region(rx, ry, start, end, far=False):
+    """The half-plane on the arc's side of the chord (right of P_a -> P_b) and the
+    chord as a segment; None when the chord cuts off nothing.
+
+    Within the kernels' limits P_a, P_b are the float points at the angles and the
+    line is :func:`_float_plane` (int64); ``far`` (any size): they are the exact
+    :func:`_ray_point` ends and the line through them is exact (Python integers)."""
+    a, b, sweep = _sweep(start, end)
+    point, plane = (_ray_point, _exact_plane) if far else (_polar_point, _float_plane)
+    pa, pb = point(rx, ry, a), point(rx, ry, b)
+    if sweep is None:
+        return _whole(), [(pa, pb)]
+    hp = _oriented(pa, pb, plane)
+    if hp[0][:2] == (0, 0):
         return (_whole(), [(pa, pb)]) if sweep > math.pi else None
-    c = -round(n[0] * p[0] + n[1] * p[1])
-    if (p, q) != (pa, pb):
-        n, c = (-n[0], -n[1]), -c
-    hp = np.array([(*n, c, int(_top_left(*n))), EVERYWHERE], np.int64)
-    return (hp, k.BOTH), [(pa, pb)]
+    return (hp if far else np.array(hp, np.int64), k.BOTH), [(pa, pb)]
 
 
-def _pie_region(rx, ry, start, end):
+def _pie_region(rx, ry, start, end, far=False):
     """The sector from ``start`` to ``end`` and its two radii as segments; None when
-    it is empty."""
+    it is empty (``far``: the radii end at the exact :func:`_ray_point`)."""
     region = _sector(start, end, closed=False)
     if region is None:
         return None
     a, b, _ = _sweep(start, end)
-    return region, [((0, 0), _polar_point(rx, ry, a)), ((0, 0), _polar_point(rx, ry, b))]
+    point = _ray_point if far else _polar_point
+    return region, [((0, 0), point(rx, ry, a)), ((0, 0), point(rx, ry, b))]
+
+
+def _segments(xc, yc, segments):
+    """The outline's straight edges ``segments`` (ends relative to the center) as
+    (x0, y0, x1, y1) rows for :func:`scanline.draw.lines`: exact sums rounded once
+    to floats while within ``guard.EXACT_FROM`` (2**36: an error below 2**-16
+    pixel, and :func:`scanline.draw.lines` clips them itself), clipped exactly to
+    the guard square beyond (:func:`scanline.geometry.guard.clip_segment`), so that
+    far ends lose nothing."""
+    rows = []
+    for p, q in segments:
+        ends = [Fraction(xc) + Fraction(p[0]), Fraction(yc) + Fraction(p[1]),
+                Fraction(xc) + Fraction(q[0]), Fraction(yc) + Fraction(q[1])]
+        if max(abs(c) for c in ends) <= guard.EXACT_FROM:
+            rows.append([float(c) for c in ends])
+        else:
+            piece = guard.clip_segment(*ends)
+            if piece is not None:
+                rows.append(piece.tolist())
+    return rows
 
 
 def _cut(fb, xc, yc, rx, ry, start, end, color, style, shape):
     """Paint the part of the filled ellipse (circle) that ``shape(rx, ry, start,
-    end)`` keeps; its straight edges and the arc are the hollow outline.  A pie
-    beyond the kernels' limits is drawn by :func:`_far_pie` (a chord still is
-    refused there: its line is computed in floating point)."""
-    if shape is _pie_region:
-        fx, fy = v.any_coordinate("xc", xc), v.any_coordinate("yc", yc)
-        frx, fry = v.any_radius("rx", rx), v.any_radius("ry", ry)
-        if not exact(fx, fy, frx, fry, frx == fry):
-            _far_pie(fb, fx, fy, frx, fry, start, end, color, style)
-            return
-    xc, yc = _center(xc, yc)
-    rx, ry, is_circle = _axes(rx, ry)
-    found = shape(rx, ry, start, end)
+    end, far)`` keeps; its straight edges and the arc are the hollow outline.
+    Within the kernels' limits the curved-area kernel paints it; beyond them
+    :func:`_far_cut`, with the exact far region."""
+    target(fb)
+    xc, yc = v.any_coordinate("xc", xc), v.any_coordinate("yc", yc)
+    rx, ry = v.any_radius("rx", rx), v.any_radius("ry", ry)
+    is_circle = rx == ry
+    is_far = not exact(xc, yc, rx, ry, is_circle)
+    found = shape(rx, ry, start, end, is_far)
     if found is None:
         return
-    region, segments = found
-
-    def outline():
-        arc(fb, xc, yc, rx, ry, start, end, color)
-        lines(fb, [(xc + p[0], yc + p[1], xc + q[0], yc + q[1]) for p, q in segments], color)
-
-    _paint(fb, color, style, xc, yc, rx, ry, is_circle, *region, outline)
-
-
-def _far_point(rx, ry, angle):
-    """:func:`_polar_point` for semi-axes of any size (no product rx * ry)."""
-    c, s = math.cos(angle), math.sin(angle)
-    if rx == 0 or ry == 0:
-        return 0.0, 0.0
-    rho = 1.0 / math.hypot(c / float(rx), s / float(ry))
-    return rho * c, rho * s
-
-
-def _far_pie(fb, xc, yc, rx, ry, start, end, color, style):
-    """A pie beyond the kernels' limits: the far filled conic's spans within the
-    sector (:func:`scanline.draw._far_conics.fill`), the same pixels."""
-    region = _sector(start, end, closed=False)
-    if region is None:
+    if is_far:
+        _far_cut(fb, xc, yc, rx, ry, start, end, color, style, found)
         return
-    a, b, _ = _sweep(start, end)
-    ends = [_far_point(rx, ry, t) for t in (a, b)]
+    region, segments = found
+    _paint(fb, color, style, xc, yc, rx, ry, is_circle, *region,
+           lambda: _outline(fb, xc, yc, rx, ry, start, end, color, segments))
 
-    def outline():
-        arc(fb, xc, yc, rx, ry, start, end, color)
-        lines(fb, [(xc, yc, xc + p[0], yc + p[1]) for p in ends], color)
 
-    far.fill(fb, xc, yc, rx, ry, color, style, rx == ry, outline, region)
+def _outline(fb, xc, yc, rx, ry, start, end, color, segments):
+    """The hollow outline of a chord or pie: its arc and its straight edges."""
+    arc(fb, xc, yc, rx, ry, start, end, color)
+    rows = _segments(xc, yc, segments)
+    if rows:
+        lines(fb, rows, color)
+
+
+def _far_cut(fb, xc, yc, rx, ry, start, end, color, style, found):
+    """A chord or pie of any size: the far filled conic's spans (the midpoint
+    outline's, in Python integers) within ``found``'s region,
+    :func:`scanline.draw._far_conics.fill`; O(height) rows whatever the radii."""
+    region, segments = found
+    far.fill(fb, xc, yc, rx, ry, color, style, rx == ry,
+             lambda: _outline(fb, xc, yc, rx, ry, start, end, color, segments), region)
 
 
 def arc(fb, xc, yc, rx, ry, start, end, color=None):
@@ -514,9 +559,19 @@ def chord(fb, xc, yc, rx, ry, start, end, color=None, style=None):
     and its center is on the arc's side of the straight line through the ideal
     ellipse's points at the two angles; centers exactly on that line follow the
     top-left rule, so the chords (a, b) and (b, a) cover the disk exactly once.
-    Angles as for :func:`arc`.  Center and semi-axes within the kernels' limits
-    (those of :func:`fill_circle` / :func:`fill_ellipse`): the chord's line is
-    computed in floating point.
+    Angles as for :func:`arc`; any finite center and semi-axes.
+
+    Within the kernels' limits (those of :func:`fill_circle` / :func:`fill_ellipse`)
+    the ends are the float points at the angles and the line an int64 half-plane
+    whose normal is resolved to 2**-30 (the curved-area kernel).  Beyond them the
+    spans are the far filled conic's (:mod:`scanline.draw._far_conics`, Python
+    integers, O(height) rows) and the line is exact: through the ideal ellipse's
+    points on the rays that :func:`arc` and :func:`pie` use for the angles
+    (directions resolved to about 1e-9 radians), computed to 2**-64 pixel; the
+    hollow outline's chord is clipped exactly to the guard square
+    (:func:`scanline.geometry.guard.clip_segment`).  The two agree except for pixel
+    centers within about 1.4e-9 (r + d) pixel of the line, d their distance from
+    the chord's ends.
 
     Examples
     --------

@@ -41,6 +41,7 @@ midpoint circle algorithm) and 3-6 (the midpoint ellipse algorithm); J. E. Brese
 plotter", Computer Journal 10(3), 1967.
 """
 
+from decimal import Decimal, localcontext
 from fractions import Fraction
 from math import isqrt
 
@@ -442,7 +443,8 @@ def _key(q, u, v):
 def local_runs(xc, yc, rx, ry, window, tolerance=0.025):
     """The ideal ellipse (xc, yc, rx, ry) (reals of any size, rx, ry > 0) inside
     the ``window`` (x0, y0, x1, y1) of integers, as polylines within ``tolerance``
-    pixel of it, counterclockwise: a list of ((K, 2) float64 array, closed).
+    pixel of it, counterclockwise: a list of ((K, 2) float64 array, closed, start),
+    ``start`` the first vertex exactly, relative to the center (two Fractions).
 
     The ellipse is sampled exactly (fixed point, 2**-40 pixel) at the window's
     integer columns where its slope is at most 1 and at its integer rows where it is
@@ -485,8 +487,10 @@ def local_runs(xc, yc, rx, ry, window, tolerance=0.025):
         a, b = pts[p][0], pts[q][0]
         return a == b or ((a + 1) % 4 == b and starts_quadrant(q))
 
-    # cut the cyclic sequence where it leaves the window
-    cuts = [i for i in range(len(order)) if not linked(order[i - 1], order[i])]
+    # cut the cyclic sequence where it leaves the window (and between its last and
+    # first point when all of them are in one quadrant: that is no way round)
+    cuts = [i for i in range(len(order)) if not linked(order[i - 1], order[i])
+            or i == 0 and pts[order[-1]][0] == pts[order[0]][0]]
     if not cuts:
         runs, closed = [order], True
     else:
@@ -522,5 +526,83 @@ def local_runs(xc, yc, rx, ry, window, tolerance=0.025):
         if closed:
             fine.pop()
         xy = np.array([[(xc + u) / _ONE, (yc + v) / _ONE] for u, v in fine], np.float64)
-        out_runs.append((xy, closed))
+        out_runs.append((xy, closed, (Fraction(fine[0][0], _ONE), Fraction(fine[0][1], _ONE))))
     return out_runs
+
+
+# -- arc length (the dashes of wide and antialiased far conics) ---------------------
+
+def _carlson(x, y, z, r, rd):
+    """Carlson's symmetric elliptic integral R_F(x, y, z) (``rd`` False) or
+    R_D(x, y, z) (``rd`` True, z > 0) in the current decimal context, relative error
+    about ``r``: the duplication theorem until the arguments agree to r**(1/6), then
+    the fifth-order series (B. C. Carlson, "Numerical computation of real or complex
+    elliptic integrals", Numerical Algorithms 10, 13-26, 1995)."""
+    a0 = (x + y + (3 * z if rd else z)) / (5 if rd else 3)
+    q = max(abs(a0 - x), abs(a0 - y), abs(a0 - z)) / ((r / 4 if rd else 3 * r) ** (Decimal(1) / 6))
+    x0, y0, a, f, total = x, y, a0, Decimal(1), Decimal(0)
+    while f * q >= abs(a):
+        sx, sy, sz = x.sqrt(), y.sqrt(), z.sqrt()
+        lam = sx * sy + sy * sz + sz * sx
+        if rd:
+            total += f / (sz * (z + lam))
+        f /= 4
+        x, y, z, a = (x + lam) / 4, (y + lam) / 4, (z + lam) / 4, (a + lam) / 4
+    X, Y = (a0 - x0) * f / a, (a0 - y0) * f / a
+    if not rd:
+        Z = -X - Y
+        e2, e3 = X * Y - Z * Z, X * Y * Z
+        return (1 - e2 / 10 + e3 / 14 + e2 * e2 / 24 - 3 * e2 * e3 / 44) / a.sqrt()
+    Z = -(X + Y) / 3
+    xy, z2 = X * Y, Z * Z
+    e2, e3, e4, e5 = xy - 6 * z2, (3 * xy - 8 * z2) * Z, 3 * (xy - z2) * z2, xy * z2 * Z
+    series = (1 - 3 * e2 / 14 + e3 / 6 + 9 * e2 * e2 / 88 - 3 * e4 / 22 - 9 * e2 * e3 / 52
+              + 3 * e5 / 26)
+    return f * series / (a * a.sqrt()) + 3 * total
+
+
+def _from_minor(major, minor, t, w, r):
+    """The arc length of the ellipse of semi-axes ``major`` >= ``minor`` > 0 from its
+    minor-axis point to the point at (t, w) >= 0 along the (major, minor) axes:
+    major E(psi | m), m = 1 - minor**2 / major**2, with sin psi : cos psi =
+    t / major : w / minor (no cancellation near either axis), by
+    E = s R_F(c**2, c**2 + k**2 s**2, 1) - m s**3 R_D(...) / 3, k = minor / major."""
+    k2 = (minor / major) ** 2
+    sr, cr = t / major, w / minor
+    n = sr * sr + cr * cr
+    s2, c2 = sr * sr / n, cr * cr / n
+    if s2 == 0:
+        return Decimal(0)
+    y = c2 + k2 * s2
+    s = s2.sqrt()
+    one = Decimal(1)
+    return major * (s * _carlson(c2, y, one, r, False)
+                    - (1 - k2) * s * s2 * _carlson(c2, y, one, r, True) / 3)
+
+
+def arc_length(rx, ry, u, v):
+    """The arc length of the ideal ellipse (integer semi-axes rx, ry > 0 of any
+    size) counterclockwise from (rx, 0) to its point (u, v) (relative to the center,
+    exact Fractions within 2**-40 of the curve, e.g. a sample of
+    :func:`local_runs`), as a Fraction: whole quadrants of the complete integral
+    and the incomplete one in the point's quadrant, by Carlson's R_F and R_D in
+    decimals of as many digits as the length has plus 30 (so the length is exact to
+    about 10**-30 pixel beyond the point's own 2**-40)."""
+    major, minor = max(rx, ry), min(rx, ry)
+    q = _quadrant(u, v)
+    a, b = abs(u), abs(v)                       # its image in quadrant I
+    t, w = (a, b) if rx >= ry else (b, a)       # along the major and the minor axis
+    # quadrants II and IV start on the y-axis point: the minor one when rx >= ry
+    starts_minor = (q % 2 == 1) == (rx >= ry)
+    with localcontext() as ctx:
+        ctx.prec = len(str(major)) + 30
+        r = Decimal(10) ** (-ctx.prec)
+        big, small = Decimal(major), Decimal(minor)
+        part = _from_minor(big, small, _dec(t), _dec(w), r)
+        quarter = _from_minor(big, small, big, Decimal(0), r)
+        return Fraction(q * quarter + (part if starts_minor else quarter - part))
+
+
+def _dec(c):
+    """A Fraction as a decimal of the current precision."""
+    return Decimal(c.numerator) / Decimal(c.denominator)

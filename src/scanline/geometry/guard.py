@@ -123,8 +123,14 @@ def segments(segs):
 
 
 def _clip_segment(s):
-    """One segment clipped to the guard (exact parameters, Liang-Barsky), or None."""
-    x0, y0, x1, y1 = (Fraction(c) for c in s.tolist())
+    """One float segment clipped to the guard (:func:`clip_segment`), or None."""
+    return clip_segment(*(Fraction(c) for c in s.tolist()))
+
+
+def clip_segment(x0, y0, x1, y1):
+    """The segment (x0, y0)-(x1, y1), exact numbers of any size (ints, Fractions),
+    clipped to the guard with exact parameters (Liang-Barsky) and rounded once to
+    floats: an array (x0, y0, x1, y1), or None when it misses the guard."""
     dx, dy = x1 - x0, y1 - y0
     g = Fraction(GUARD)
     t0, t1 = Fraction(0), Fraction(1)

@@ -26,8 +26,6 @@ from .._kernels import curved as kcurved
 from .._kernels import linetype as kl
 from .._kernels._jit import call
 from .._kernels.variants import layout, token
-from .._validate import COORD_LIMIT
-from ..errors import ArgumentValueError
 from ..geometry import far_conics as fc
 from ..geometry.guard import conics_outside
 from . import _blend
@@ -193,7 +191,27 @@ def _dashed_runs(fb, xc, yc, rx, ry, color, style, antialias, runs):
                        style.replace(dash=tuple(lengths), dash_phase=at), antialias)
 
 
-def stroke(fb, xc, yc, rx, ry, color, style, antialias, circle, names=("rx", "ry")):
+def _dashed_segment(fb, xc, yc, rx, ry, color, style, antialias, margin):
+    """A wide or antialiased dashed degenerate ellipse: the dashes of the path the
+    kernels stroke it along (:func:`scanline.geometry.far_conics.degenerate_path`,
+    there and back), cut exactly within ``margin`` pixels of the frame
+    (:func:`scanline.geometry.far_conics.path_dashes`, the period the kernels'
+    float sum, :func:`_period`), and stroked solid as one shape with the style's
+    caps and joins (a dash through a turn joined there, as on the kernels' closed
+    polygon)."""
+    from .._kernels import strokes as ks
+    from . import strokes
+
+    lengths, phase = style.lengths()
+    dashes = fc.path_dashes(fc.degenerate_path(xc, yc, rx, ry), lengths, _period(lengths),
+                            phase, _frame(fb, margin), ks.EPSILON_DASH)
+    if dashes:
+        verts, offsets, closed = _packed(dashes)
+        strokes.stroke(fb, verts, offsets, closed, color, style.replace(dash="solid"),
+                       antialias, one=True)
+
+
+def stroke(fb, xc, yc, rx, ry, color, style, antialias, circle):
     """A far conic with line attributes: thick or antialiased ones stroked along the
     ideal conic near the frame; width-1 and pen lines are the midpoint pixels within
     the pen's reach of the frame, in the order of the conic's pixel sequence, each
@@ -206,14 +224,12 @@ def stroke(fb, xc, yc, rx, ry, color, style, antialias, circle, names=("rx", "ry
 
     pixel_line = not antialias and (style.width == 1 or style.pen is not None)
     dashed = style.lengths()[0] is not None
-    if dashed and not pixel_line and (rx == 0 or ry == 0):
-        raise ArgumentValueError(
-            f"dash={style.dash}: a dashed wide or antialiased degenerate ellipse "
-            f"({names[0]}={rx}, {names[1]}={ry}) is drawn within the exact range only "
-            f"(center within +-{COORD_LIMIT}); draw it as a dashed line (scanline.draw.polyline)")
     margin = int(math.ceil(strokes._margin(style))) + 2
     if antialias and style.width == 1 and style.pen is None and not dashed:
         antialiased_outline(fb, xc, yc, rx, ry, color)
+        return
+    if dashed and not pixel_line and (rx == 0 or ry == 0):
+        _dashed_segment(fb, xc, yc, rx, ry, color, style, antialias, margin)
         return
     if not pixel_line:
         runs = _runs(fb, xc, yc, rx, ry, margin)

@@ -65,13 +65,13 @@ def _exact_rows(arr, circle):
             a[:, 2] * a[:, 3] <= ELLIPSE_PRODUCT_LIMIT)
 
 
-def _far(fb, xc, yc, rx, ry, color, attrs, antialias, circle, names=("rx", "ry")):
+def _far(fb, xc, yc, rx, ry, color, attrs, antialias, circle):
     """A conic beyond the kernels' limits (:mod:`scanline.draw._far_conics`)."""
     if attrs is None:
         target(fb)
         far.outline(fb, xc, yc, rx, ry, fb.pixel(color), circle)
     else:
-        far.stroke(fb, xc, yc, rx, ry, color, attrs, antialias, circle, names)
+        far.stroke(fb, xc, yc, rx, ry, color, attrs, antialias, circle)
 
 
 def circle(fb: "FrameBuffer", xc: float, yc: float, r: float, color: Optional[Color] = None,
@@ -135,11 +135,10 @@ def circle(fb: "FrameBuffer", xc: float, yc: float, r: float, color: Optional[Co
         return
     xc, yc, r = v.any_coordinate("xc", xc), v.any_coordinate("yc", yc), v.any_radius("r", r)
     if not exact(xc, yc, r, r, True):
-        _far(fb, xc, yc, r, r, color, attrs, antialias, True, ("r", "r"))
+        _far(fb, xc, yc, r, r, color, attrs, antialias, True)
         return
     if attrs is not None:
-        strokes.conics(fb, np.array([[xc, yc, r, r]], np.int64), color, attrs, antialias,
-                       ("r", "r"))
+        strokes.conics(fb, np.array([[xc, yc, r, r]], np.int64), color, attrs, antialias)
         return
     buf, packed, width, height = target(fb)
     call(k.draw_circle, min(8 * r, 4 * (width + height)), buf, layout(packed), width, height,
@@ -158,11 +157,10 @@ def circles(fb, circles, color=None, *, style=None, antialias=False, width=None,
     attrs = strokes.styled(style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen)
     rows = v.coordinate_array("circles", circles, 3, radius_columns=(2,), far=True)
     rows = np.ascontiguousarray(rows[:, [0, 1, 2, 2]])
-    names = ("circles radius r", "circles radius r")
     if attrs is not None:
         far.batch(fb, rows, color, _exact_rows(rows, True),
-                  lambda arr, c: strokes.conics(fb, arr, c, attrs, antialias, names),
-                  lambda *row: _far(fb, *row, attrs, antialias, True, names),
+                  lambda arr, c: strokes.conics(fb, arr, c, attrs, antialias),
+                  lambda *row: _far(fb, *row, attrs, antialias, True),
                   float(strokes._margin(attrs)))
         return
     buf, packed, width, height = target(fb)

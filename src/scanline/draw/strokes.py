@@ -163,9 +163,10 @@ def outline_work(points, r):
     return len(points) * (2 + float(arc) / 5)
 
 
-def _painter(style, verts, offsets, closed):
+def _painter(style, verts, offsets, closed, one=False):
     """``draw(buf, packed, width, height, ox, oy, values, a, b)``: draws polylines
-    a .. b-1 with the (1 or b-a rows of) channel values."""
+    a .. b-1 with the (1 or b-a rows of) channel values (``one``: solid thick
+    polylines as one shape, each pixel once)."""
     if style.width == 1 or style.pen is not None:
         iverts = np.floor(verts + 0.5).astype(np.int64)
         kind, mask, dashes, phase = _line_type(style)
@@ -187,7 +188,7 @@ def _painter(style, verts, offsets, closed):
         o = offsets[a:b + 1]
         pieces = verts[o[0]:o[-1]], o - o[0], closed[a:b]
         if lengths is None:
-            owner = np.arange(b - a)
+            owner = np.zeros(b - a, np.int64) if one else np.arange(b - a)
         else:   # the dashes that can reach the raster, widened by the reach of joins
             reach = r * max(style.miter_limit, 2.0) + 2.0
             box = np.array([ox - reach, oy - reach, ox + width - 1 + reach,
@@ -195,7 +196,7 @@ def _painter(style, verts, offsets, closed):
             *pieces, owner = call(ks.dashed_polylines, lambda: dash_work(pieces[0], lengths),
                                   *pieces, np.array(lengths, np.float64), float(phase), box)
         out, contours, polys, most = call(ks.stroke_outlines, lambda: outline_work(pieces[0], r),
-                                          *pieces, owner, b - a, r, cap, join,
+                                          *pieces, owner, 1 if one else b - a, r, cap, join,
                                           style.miter_limit)
         work = area_work(width, height, out - (ox, oy), b - a) / 4 if len(out) else 0
         if len(values) == 1 and b - a > 1:   # one color: any order gives the same image
@@ -206,9 +207,12 @@ def _painter(style, verts, offsets, closed):
     return draw
 
 
-def stroke(fb, verts, offsets, closed, color, style, antialias=False):
+def stroke(fb, verts, offsets, closed, color, style, antialias=False, one=False):
     """Draw polylines ``verts[offsets[i]:offsets[i + 1]]`` (``closed[i]``) in
-    ``style`` with ``color`` (one, or one per polyline)."""
+    ``style`` with ``color`` (one, or one per polyline); ``one``: the polylines
+    are the dashes of one path, cut already (solid ``style``, one color, within
+    the exact range), stroked as one shape, so each pixel is covered once, as the
+    pieces of a dashed polyline are."""
     buf, packed, width, height = target(fb)
     given = len(offsets) - 1
     verts, offsets, closed, owner = guard.paths(verts, offsets, closed)
@@ -218,15 +222,19 @@ def stroke(fb, verts, offsets, closed, color, style, antialias=False):
     if n == 0:
         return
     if antialias:
-        _antialiased(fb, verts, offsets, closed, color, style)
+        _antialiased(fb, verts, offsets, closed, color, style, one)
         return
-    draw = _painter(style, verts, offsets, closed)
+    draw = _painter(style, verts, offsets, closed, one)
     if not _blend.translucent(color):
         draw(buf, packed, width, height, 0, 0, colors(fb, color, n), 0, n)
         return
     # translucent: each polyline composited on its own (once, however often it
     # crosses itself), later ones over earlier ones
     margin = _margin(style)
+    if one:
+        _blend.paint(fb, color, _bbox(verts, margin),
+                     lambda b, p, w, h, ox, oy, value: draw(b, p, w, h, ox, oy, value[None, :], 0, n))
+        return
     boxes = [_bbox(verts[offsets[i]:offsets[i + 1]], margin) for i in range(n)]
     _blend.paint_each(fb, color, n, boxes,
                       lambda i, b, p, w, h, ox, oy, value: draw(b, p, w, h, ox, oy,
@@ -248,7 +256,7 @@ def _view(fb, margin):
                     np.float64)
 
 
-def _antialiased(fb, verts, offsets, closed, color, style):
+def _antialiased(fb, verts, offsets, closed, color, style, one=False):
     from . import antialias as aa
 
     if style.pen is not None:
@@ -278,9 +286,9 @@ def _antialiased(fb, verts, offsets, closed, color, style):
             owners = np.concatenate(seg_owner)
             aa.lines(fb, np.concatenate(segs), _per_piece(color, owners))
         return
-    npoly = len(offsets) - 1
+    npoly = 1 if one else len(offsets) - 1
     if lengths is None:
-        owner = np.arange(npoly)
+        owner = np.zeros(len(offsets) - 1, np.int64) if one else np.arange(npoly)
     else:
         verts, offsets, closed, owner = call(
             ks.dashed_polylines, lambda: dash_work(verts, lengths), verts, offsets, closed,
@@ -476,9 +484,8 @@ def conic_polyline(xc, yc, rx, ry):
     return np.stack([xc + scale * rx * np.cos(a), yc + scale * ry * np.sin(a)], axis=1)
 
 
-def conics(fb, rows, color, style, antialias, names=("rx", "ry")):
-    """Draw conics ``rows`` (N, 4) int: (xc, yc, rx, ry) with line attributes
-    (``names``: the radii's names in messages)."""
+def conics(fb, rows, color, style, antialias):
+    """Draw conics ``rows`` (N, 4) int: (xc, yc, rx, ry) with line attributes."""
     n = len(rows)
     if n == 0:
         return
@@ -502,7 +509,7 @@ def conics(fb, rows, color, style, antialias, names=("rx", "ry")):
     margin = int(np.abs(pen).max())
     for i, (xc, yc, rx, ry) in enumerate(rows.tolist()):
         if max(rx, ry) > SEQUENCE_LIMIT:                 # only its visible pixels
-            far.stroke(fb, xc, yc, rx, ry, far.spec(color, i), style, False, rx == ry, names)
+            far.stroke(fb, xc, yc, rx, ry, far.spec(color, i), style, False, rx == ry)
             continue
         pixels = conic_pixels(xc, yc, rx, ry)
 

@@ -49,6 +49,7 @@ import numpy as np
 
 from .._kernels import conics as kc
 from .._kernels._jit import python
+from .guard import clip_parameters
 
 _next = python(kc.ellipse_next)
 
@@ -606,3 +607,109 @@ def arc_length(rx, ry, u, v):
 def _dec(c):
     """A Fraction as a decimal of the current precision."""
     return Decimal(c.numerator) / Decimal(c.denominator)
+
+
+# -- dashes along a degenerate ellipse ---------------------------------------------------
+
+def degenerate_path(xc, yc, rx, ry):
+    """The turning points, in order, of the closed path a degenerate ellipse (integers,
+    rx = 0 or ry = 0) is stroked along: its curve (xc + rx cos t, yc + ry sin t) from
+    t = 0, as the kernels' polygon (:func:`scanline.draw.strokes.conic_polyline`)
+    runs it -- for ry = 0 from (xc + rx, yc) to (xc - rx, yc) and back, for rx = 0
+    from (xc, yc) up to (xc, yc + ry), down to (xc, yc - ry) and back to (xc, yc)."""
+    if ry == 0:
+        return [(xc + rx, yc), (xc - rx, yc)]
+    return [(xc, yc), (xc, yc + ry), (xc, yc - ry)]
+
+
+def _legs(path):
+    """The legs of the closed axis-parallel path: (start, end, path length at the
+    start, length), exact, and the path's whole length."""
+    legs, at = [], 0
+    for i, p in enumerate(path):
+        q = path[(i + 1) % len(path)]
+        n = abs(q[0] - p[0]) + abs(q[1] - p[1])
+        legs.append((p, q, at, n))
+        at += n
+    return legs, at
+
+
+def _visible(legs, box):
+    """The path-length intervals (u, v) of the path inside ``box``, in path order,
+    those meeting at a vertex inside it merged (exact Liang-Barsky per leg)."""
+    out = []
+    for p, q, at, n in legs:
+        t = clip_parameters(*p, *q, box) if n else None
+        if t is None:
+            continue
+        u, v = at + t[0] * n, at + t[1] * n
+        if out and out[-1][1] == u:
+            out[-1] = (out[-1][0], v)
+        else:
+            out.append((u, v))
+    return out
+
+
+def _on(u, v, lengths, period, phase):
+    """The path-length intervals (a, b) within [u, v] where the dash pattern (on/off
+    ``lengths``, exact Fractions, repeating every ``period`` from path length
+    -``phase``) is on, in order: a < b, or a = b for a zero-length dash."""
+    phase = Fraction(phase) % period
+    starts = [sum(lengths[:k], Fraction(0)) for k in range(len(lengths))]
+    out = []
+    q = (phase + u) // period
+    while q * period - phase <= v:
+        base = q * period - phase
+        for k in range(0, len(lengths), 2):
+            a, b = base + starts[k], base + min(starts[k] + lengths[k], period)
+            lo, hi = max(a, u), min(b, v)
+            if lo < hi or (a == b and u <= a <= v):
+                out.append((lo, hi))
+        q += 1
+    return out
+
+
+def _point(legs, total, s):
+    """The point at path length s (taken modulo the path's length) and the
+    direction (dx, dy) of the leg it is on (the one that starts there at a vertex)."""
+    s %= total
+    for p, q, at, n in legs:
+        if n and at <= s < at + n:
+            d = ((q[0] - p[0]) // n, (q[1] - p[1]) // n)
+            return (p[0] + (s - at) * d[0], p[1] + (s - at) * d[1]), d
+    raise AssertionError("a path length beyond the path")
+
+
+def _piece(legs, total, a, b, epsilon):
+    """The polyline from path length a to b >= a (b may run past the end into the
+    start): its ends and the vertices between, as floats; a zero-length dash is
+    given the length ``epsilon`` along its leg, as the kernels give it."""
+    start, d = _point(legs, total, a)
+    if a == b:
+        pts = [start, (start[0] + epsilon * d[0], start[1] + epsilon * d[1])]
+    else:
+        turns = [p for lap in (0, total) for p, _, at, _ in legs if a < at + lap < b]
+        pts = [start] + turns + [_point(legs, total, b)[0]]
+    return np.array([[float(x), float(y)] for x, y in pts], np.float64)
+
+
+def path_dashes(path, lengths, period, phase, box, epsilon):
+    """The dashes of the closed axis-parallel path ``path`` (exact vertices of any
+    size, :func:`degenerate_path`) that lie in ``box`` (xmin, ymin, xmax, ymax), as
+    the kernels' dasher cuts a closed polygon (``dash_pieces``): the pattern (on/off
+    ``lengths``, floats, its ``period`` a Fraction) starts at ``phase`` at the first
+    vertex and runs on across the turns; a dash on at the end joins the one on at
+    the start when both are in the box; a dash that never ends is the whole ring.
+    Dash ends are exact (Fractions, rounded once to floats); the work is the box's
+    perimeter over the period, whatever the path's size.  Returns a list of
+    ``(polyline, closed)``."""
+    legs, total = _legs(path)
+    if total == 0:
+        return []
+    lengths = [Fraction(c) for c in lengths]
+    runs = [r for u, v in _visible(legs, box) for r in _on(u, v, lengths, period, phase)]
+    if runs and runs[0] == (0, total):
+        return [(np.array(path, np.float64), True)]
+    if len(runs) > 1 and runs[0][0] == 0 and runs[-1][1] == total:
+        runs = runs[1:-1] + [(runs[-1][0], total + runs[0][1])]
+    return [(_piece(legs, total, a, b, epsilon), False) for a, b in runs]

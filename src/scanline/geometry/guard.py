@@ -127,25 +127,38 @@ def _clip_segment(s):
     return clip_segment(*(Fraction(c) for c in s.tolist()))
 
 
-def clip_segment(x0, y0, x1, y1):
-    """The segment (x0, y0)-(x1, y1), exact numbers of any size (ints, Fractions),
-    clipped to the guard with exact parameters (Liang-Barsky) and rounded once to
-    floats: an array (x0, y0, x1, y1), or None when it misses the guard."""
+def clip_parameters(x0, y0, x1, y1, box):
+    """Liang-Barsky in exact arithmetic: the parameters ``(t0, t1)`` (Fractions) of
+    the part of the segment (x0, y0) + t (x1 - x0, y1 - y0), 0 <= t <= 1, inside
+    ``box`` = (xmin, ymin, xmax, ymax), all exact numbers of any size (ints,
+    Fractions), or None when it misses the box."""
     dx, dy = x1 - x0, y1 - y0
-    g = Fraction(GUARD)
+    xmin, ymin, xmax, ymax = box
     t0, t1 = Fraction(0), Fraction(1)
-    for p, q in ((-dx, x0 + g), (dx, g - x0), (-dy, y0 + g), (dy, g - y0)):
+    for p, q in ((-dx, x0 - xmin), (dx, xmax - x0), (-dy, y0 - ymin), (dy, ymax - y0)):
         if p == 0:
             if q < 0:
                 return None
             continue
-        r = q / p
+        r = Fraction(q) / p
         if p < 0:
             t0 = max(t0, r)
         else:
             t1 = min(t1, r)
         if t0 > t1:
             return None
+    return t0, t1
+
+
+def clip_segment(x0, y0, x1, y1):
+    """The segment (x0, y0)-(x1, y1), exact numbers of any size (ints, Fractions),
+    clipped to the guard with exact parameters (:func:`clip_parameters`) and rounded
+    once to floats: an array (x0, y0, x1, y1), or None when it misses the guard."""
+    g = Fraction(GUARD)
+    t = clip_parameters(x0, y0, x1, y1, (-g, -g, g, g))
+    if t is None:
+        return None
+    (t0, t1), dx, dy = t, x1 - x0, y1 - y0
     return np.array([float(x0 + t0 * dx), float(y0 + t0 * dy), float(x0 + t1 * dx),
                      float(y0 + t1 * dy)])
 

@@ -99,18 +99,18 @@ def _finite(*vals):
 
 
 #: Conic kinds that take any finite center and radius (issue 11): for those a
-#: ScanlineError on finite arguments is a failure (a wide dashed degenerate far
-#: ellipse is refused by name, so "wide-dash" draws circles).
+#: ScanlineError on finite arguments is a failure ("wide-dash" draws ellipses,
+#: degenerate ones included, "aa-dash" circles).
 DRAWN = {"circle", "ellipse", "fill_circle", "fill_ellipse", "wide", "aa", "dash", "arc",
-         "pie", "chord", "wide-dash"}
+         "pie", "chord", "wide-dash", "aa-dash"}
 
 
 @given(xc=values, yc=values, rx=values, ry=values, mode=MODES, w=size, h=size,
        kind=st.sampled_from(["circle", "ellipse", "fill_circle", "fill_ellipse", "wide",
-                             "aa", "dash", "arc", "pie", "chord", "wide-dash"]))
+                             "aa", "dash", "arc", "pie", "chord", "wide-dash", "aa-dash"]))
 def test_conics(xc, yc, rx, ry, mode, w, h, kind):
     fb, big = frame(mode, w, h)
-    radii = (rx,) if kind in ("circle", "fill_circle", "wide-dash") else (rx, ry)
+    radii = (rx,) if kind in ("circle", "fill_circle", "aa-dash") else (rx, ry)
     drawn = kind in DRAWN and _finite(xc, yc, *radii) and min(float(r) for r in radii) >= -0.5
     with bounded(refusals=not drawn):
         if kind == "circle":
@@ -130,6 +130,8 @@ def test_conics(xc, yc, rx, ry, mode, w, h, kind):
         elif kind == "arc":
             sl.draw.arc(fb, xc, yc, rx, ry, 0.5, 4.0)
         elif kind == "wide-dash":
+            sl.draw.ellipse(fb, xc, yc, rx, ry, width=3, dash=(2, 1))
+        elif kind == "aa-dash":
             sl.draw.circle(fb, xc, yc, rx, width=3, dash=(2, 1), antialias=True)
         elif kind == "chord":
             sl.draw.chord(fb, xc, yc, rx, ry, 4.0, 0.5, style=sl.FillStyle.hollow())

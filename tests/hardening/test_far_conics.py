@@ -11,6 +11,7 @@ shapely for the areas of thick and antialiased strokes."""
 
 import math
 from decimal import Decimal, getcontext
+from fractions import Fraction
 
 import numpy as np
 import pytest
@@ -455,11 +456,155 @@ def test_nan_and_inf_still_refused_by_name():
         sl.draw.circle(fb(), 1e12, 3, -1e12)
 
 
-def test_thick_dashed_degenerate_far_conics_are_refused_by_name():
-    with pytest.raises(sl.ArgumentValueError, match="dash="):
-        sl.draw.ellipse(fb(), 20, 15 - 2**40, 0, 2**40, width=3, dash=(4, 2))
-    with pytest.raises(sl.ArgumentValueError, match="dash="):
-        sl.draw.ellipse(fb(), 20 - 2**40, 15, 2**40, 0, antialias=True, dash=(4, 2))
+# -- wide and antialiased dashed degenerate ellipses: segments there and back ---------
+
+def _legs(xc, yc, rx, ry):
+    """The degenerate ellipse's path (t = 0 .. 2 pi of (xc + rx cos t, yc + ry sin t))
+    as legs (a0, a1, s0) along its line: coordinate a (x for ry = 0, y for rx = 0)
+    from a0 to a1, path length s0 at a0."""
+    if ry == 0:
+        return [(xc + rx, xc - rx, 0), (xc - rx, xc + rx, 2 * rx)]
+    return [(yc, yc + ry, 0), (yc + ry, yc - ry, ry), (yc - ry, yc, 3 * ry)]
+
+
+def _on_set(legs, lengths, phase, lo, hi):
+    """The dashes' intervals of coordinate a within [lo, hi] (exact Fractions): the
+    pattern of ``lengths`` (its period the float sum, as the kernels take it) from
+    ``phase`` at path length 0."""
+    total = 0.0
+    for c in lengths:
+        total += c
+    period = Fraction(total)
+    out = []
+    for a0, a1, s0 in legs:
+        d = 1 if a1 > a0 else -1
+        u, v = (max(lo, min(a0, a1)), min(hi, max(a0, a1)))
+        if u > v:
+            continue
+        s_lo = min(s0 + d * (u - a0), s0 + d * (v - a0))          # path lengths seen
+        s_hi = max(s0 + d * (u - a0), s0 + d * (v - a0))
+        q = (Fraction(phase) + s_lo) // period - 1
+        while q * period - Fraction(phase) <= s_hi:
+            at = q * period - Fraction(phase)
+            for k in range(0, len(lengths), 2):
+                b0 = at + sum(Fraction(c) for c in lengths[:k])
+                b1 = min(b0 + Fraction(lengths[k]), at + period)
+                e0, e1 = max(b0, s_lo), min(b1, s_hi)
+                if e0 < e1:
+                    x0, x1 = a0 + d * (e0 - s0), a0 + d * (e1 - s0)
+                    out.append((min(x0, x1), max(x0, x1)))
+            q += 1
+    return out
+
+
+def degenerate_reference(xc, yc, rx, ry, width, lengths, phase, cap, tol):
+    """Pixel centers of the stroke of the dashes along the degenerate ellipse (butt
+    caps and miter joins: the dashes' rectangles; round caps and joins: the points
+    within width / 2 of them), computed exactly, and those within ``tol`` of a
+    membership boundary along the line (``near``)."""
+    legs = _legs(xc, yc, rx, ry)
+    centre = yc if ry == 0 else xc
+    span = W if ry == 0 else H
+    on = _on_set(legs, lengths, phase, -5, span + 5)
+    ends = [e for iv in on for e in iv]
+    lit, near = set(), set()
+    for x in range(W):
+        for y in range(H):
+            a, lat = (x, y - centre) if ry == 0 else (y, x - centre)
+            if 4 * lat * lat >= width * width:
+                continue
+            reach = 0.0 if cap == "butt" else math.sqrt(width * width / 4 - lat * lat)
+            dist = min((0 if lo <= a <= hi else min(abs(a - lo), abs(a - hi))
+                        for lo, hi in on), default=math.inf)
+            if dist <= reach:
+                lit.add((x, y))
+            if any(abs(abs(a - e) - reach) < tol for e in ends):
+                near.add((x, y))
+    return lit, near
+
+
+DEGENERATE_STYLES = [dict(width=3, dash=(4.4, 1.3, 0.9, 2.1), dash_phase=0.25, cap="butt"),
+                     dict(width=2.5, dash=(3.7, 1.3), dash_phase=0.3, cap="round",
+                          join="round")]
+
+
+@pytest.mark.parametrize("rx, ry", [(0, 5), (9, 0), (0, 13), (30, 0), (0, 200), (2000, 0),
+                                    (0, 60_000), (2**20, 0)])
+def test_forced_far_dashed_degenerate_ellipses_are_the_kernels_but_for_their_polygon(rx, ry):
+    # the kernels stroke the polygon conic_polyline, whose vertices lie at
+    # sqrt(t / sin t) times the radii (the ellipse's area): its ends are up to 0.07
+    # pixel beyond (xc +- rx, yc), its length at most 0.27 pixel more than 4 r, so
+    # pixel centers within 0.3 pixel of a dash end (in the exact reference) may differ
+    from scanline.linestyle import LineStyle
+    rng = np.random.default_rng(rx + 7 * ry)
+    for kw in DEGENERATE_STYLES:
+        for _ in range(6):
+            xc, yc = _near_outline(rng, rx, ry)
+            want, got = fb("1"), fb("1")
+            sl.draw.ellipse(want, xc, yc, rx, ry, 1, **kw)
+            far.stroke(got, xc, yc, rx, ry, 1, LineStyle(**kw), False, False)
+            ref, near = degenerate_reference(xc, yc, rx, ry, kw["width"], kw["dash"],
+                                             kw["dash_phase"], kw["cap"], 0.3)
+            assert lit(got) ^ lit(want) <= near, (xc, yc, kw)
+            assert lit(got) ^ ref <= near, (xc, yc, kw)
+            # antialiased: the same coverage but where a dash end moved
+            want, got = image(lambda f: sl.draw.ellipse(f, xc, yc, rx, ry, antialias=True,
+                                                        **kw)), fb()
+            far.stroke(got, xc, yc, rx, ry, 255, LineStyle(**kw), True, False)
+            diff = np.abs(got.to_array().astype(int) - want.astype(int))[::-1]
+            ends = [e for iv in _on_set(_legs(xc, yc, rx, ry), kw["dash"], kw["dash_phase"],
+                                        -5, max(W, H) + 5) for e in iv]
+            for x, y in zip(*np.nonzero(diff.T)):    # pixels a dash end's cap may touch
+                a, lat = (x, y - yc) if ry == 0 else (y, x - xc)
+                assert abs(lat) <= kw["width"] / 2 + 1, (xc, yc, kw, x, y)
+                assert min(abs(a - e) for e in ends) <= kw["width"] / 2 + 1.5, (xc, yc, kw, x, y)
+            assert diff.max() <= 80, (xc, yc, kw)
+
+
+FAR_DEGENERATE = [
+    (-10**12, 12, 10**12 + 25, 0),             # its right end in the frame, at x = 25
+    (10**12, 7, 10**12 + 3, 0),                # from x = -3: across the frame, both legs
+    (17, -10**300, 0, 10**300 + 20),           # its top end at y = 20
+    (5, 10**300, 0, 10**300 - 10),             # from y = 10 up
+    (20, 15, 10**300, 0),                      # center in the frame, ends at +-1e300
+    (20, 15, 0, 10**300 + 1),
+    (20, 15, 1e300, 0),                        # a float radius, rounded
+    (-10**12 + 7, 3, 10**12, 0),               # the left end at x = -10**12 + 7 - 10**12
+]
+
+
+@pytest.mark.parametrize("xc, yc, rx, ry", FAR_DEGENERATE)
+@pytest.mark.parametrize("kw", DEGENERATE_STYLES)
+def test_far_dashed_degenerate_ellipses_match_the_exact_reference(xc, yc, rx, ry, kw):
+    # exact: only pixel centers on a membership boundary (ties, 1e-9) may differ
+    got = lit(_draw(lambda f: sl.draw.ellipse(f, xc, yc, rx, ry, **kw)))
+    rx, ry = (int(c) for c in (rx, ry))
+    want, near = degenerate_reference(xc, yc, rx, ry, kw["width"], kw["dash"],
+                                      kw["dash_phase"], kw["cap"], 1e-9)
+    assert got ^ want <= near and len(want) > 20
+    if kw["cap"] == "butt" and ry == 0:
+        # antialiased: the coverage adds up to the dashes' area in the frame
+        cover = image(lambda f: sl.draw.ellipse(f, xc, yc, rx, ry, antialias=True, **kw))
+        on = _on_set(_legs(xc, yc, rx, ry), kw["dash"], kw["dash_phase"], Fraction(-1, 2),
+                     W - Fraction(1, 2))
+        merged, area = sorted(on), Fraction(0)
+        end = None
+        for lo, hi in merged:                  # the union's length, times the width
+            lo = lo if end is None else max(lo, end)
+            if end is None or hi > end:
+                area += hi - lo
+                end = hi
+        assert abs(cover.sum() / 255 - 3 * float(area)) <= 0.01 * 3 * float(area) + 1
+
+
+def test_far_dashed_degenerate_ellipses_outside_draw_nothing_in_bounded_time():
+    with bounded(refusals=False):    # 20 s, 512 MiB; any error fails
+        for args in [(20, -10**12, 10**12, 0), (10**12, 15, 10**12 - 100, 0),
+                     (-10**300, 15, 0, 10**300), (1e12, 3, 0, 0),
+                     (-1e300, -1e300, 1e300, 0)]:
+            for kw in DEGENERATE_STYLES + [dict(dash=(2, 1))]:
+                assert not image(lambda f: sl.draw.ellipse(f, *args, antialias=True, **kw)).any()
+                assert not image(lambda f: sl.draw.ellipse(f, *args, **kw)).any()
 
 
 def decimal_pi():

@@ -355,6 +355,26 @@ def test_style_object_and_keyword_override():
     assert lit(a) == lit(b)
 
 
+def test_styles_pickle_and_copy_as_themselves():
+    import copy
+    import pickle
+
+    pen = np.array([[0, 1, 0], [1, 1, 1], [0, 1, 0]], bool)
+    for style in (sl.LineStyle(), sl.LineStyle(width=5, cap="round", join="bevel",
+                                               miter_limit=3, dash=(6, 3), dash_phase=2.5),
+                  sl.LineStyle(dash="dash-dot"), sl.LineStyle(pen=pen)):
+        back = pickle.loads(pickle.dumps(style))
+        assert back == style and repr(back) == repr(style)
+        assert copy.deepcopy(style) == style
+        a = sl.FrameBuffer(40, 30, mode="1")
+        b = sl.FrameBuffer(40, 30, mode="1")
+        sl.draw.polyline(a, [(5, 5), (30, 10), (10, 25)], color=1, style=style)
+        sl.draw.polyline(b, [(5, 5), (30, 10), (10, 25)], color=1, style=back)
+        assert lit(a) == lit(b)
+    with pytest.raises(AttributeError, match="immutable"):
+        back.width = 3
+
+
 def test_every_mode():
     for mode in ("1", "L", "RGB", "RGBA", "P"):
         fb = sl.FrameBuffer(20, 12, mode=mode)

@@ -236,6 +236,11 @@ class LineStyle:
     def __setattr__(self, name, value):
         raise AttributeError("LineStyle is immutable; make a new one with .replace(...)")
 
+    def __reduce__(self):
+        """Pickled (and copied) as the call that makes it: worker processes and Dask
+        clusters receive scenes holding line styles."""
+        return LineStyle, tuple(self._fields[name] for name in self._DEFAULTS)
+
     def _key(self):
         pen = self.pen
         if isinstance(pen, np.ndarray):

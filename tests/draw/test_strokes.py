@@ -181,6 +181,28 @@ def test_area_and_pixels_against_shapely(cap, join):
         assert (got != inside).sum() <= 0.002 * got.sum(), (trial, width)
 
 
+@pytest.mark.parametrize("pts", [[(17, 10), (17, 30), (17, 10)], [(17, 30), (17, 10), (17, 30)],
+                                 [(10, 15), (30, 15), (10, 15)], [(30, 15), (10, 15), (30, 15)],
+                                 [(10, 10), (30, 25), (10, 10)], [(5, 5), (20, 5), (5, 5), (5, 20)]])
+def test_a_reversal_gets_its_round_join(pts):
+    # a polyline turning back on itself (180 degrees exactly): the round join is the
+    # half disc beyond the turning vertex, whichever the direction and the sign of
+    # the zero cross product (shapely: the buffer of the same path)
+    from shapely import contains_xy
+
+    fb = sl.FrameBuffer(40, 40, mode="1")
+    sl.draw.polyline(fb, pts, color=1, width=7, join="round")
+    got = fb.to_array()[::-1]
+    geo = LineString(pts).buffer(3.5, quad_segs=64, cap_style="flat", join_style="round")
+    ys, xs = np.mgrid[0:40, 0:40]
+    inside = contains_xy(geo, xs.ravel() + 0.0, ys.ravel() + 0.0).reshape(40, 40)
+    near = np.abs(geo.boundary.distance(  # centers on the boundary: the tie rules decide
+        [Point(x, y) for x, y in zip(xs.ravel(), ys.ravel())])).reshape(40, 40) < 0.1
+    assert not ((got != inside) & ~near).any()
+    tip = np.array(pts[1]) + 3 * (np.array(pts[1]) - pts[0]) / np.hypot(*np.subtract(pts[1], pts[0]))
+    assert got[int(round(tip[1])), int(round(tip[0]))]      # the join's far side is drawn
+
+
 def test_area_of_self_overlapping_stroke_counts_once():
     # a star traced with a wide pen crosses itself: the union, once
     t = np.arange(5) * 4 * np.pi / 5
@@ -353,6 +375,26 @@ def test_style_object_and_keyword_override():
     sl.draw.polyline(a, [(5, 5), (30, 10), (10, 25)], color=1, style=style, cap="butt")
     sl.draw.polyline(b, [(5, 5), (30, 10), (10, 25)], color=1, width=5, join="bevel")
     assert lit(a) == lit(b)
+
+
+def test_styles_pickle_and_copy_as_themselves():
+    import copy
+    import pickle
+
+    pen = np.array([[0, 1, 0], [1, 1, 1], [0, 1, 0]], bool)
+    for style in (sl.LineStyle(), sl.LineStyle(width=5, cap="round", join="bevel",
+                                               miter_limit=3, dash=(6, 3), dash_phase=2.5),
+                  sl.LineStyle(dash="dash-dot"), sl.LineStyle(pen=pen)):
+        back = pickle.loads(pickle.dumps(style))
+        assert back == style and repr(back) == repr(style)
+        assert copy.deepcopy(style) == style
+        a = sl.FrameBuffer(40, 30, mode="1")
+        b = sl.FrameBuffer(40, 30, mode="1")
+        sl.draw.polyline(a, [(5, 5), (30, 10), (10, 25)], color=1, style=style)
+        sl.draw.polyline(b, [(5, 5), (30, 10), (10, 25)], color=1, style=back)
+        assert lit(a) == lit(b)
+    with pytest.raises(AttributeError, match="immutable"):
+        back.width = 3
 
 
 def test_every_mode():

@@ -189,6 +189,8 @@ def right_side(pts, m, closed, reverse, r, cap, join_kind, miter_limit, out, nv)
         cross = dx * by - dy * bx
         dot = dx * bx + dy * by
         phi = math.atan2(cross, dot)
+        if phi == -math.pi:
+            phi = math.pi       # a reversal (cross -0.0): both sides are outer, joined
         if phi > 0:
             nv = outer_join(out, nv, x1, y1, dx, dy, bx, by, r, join_kind, miter_limit, phi)
         elif phi < 0:

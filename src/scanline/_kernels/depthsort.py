@@ -218,18 +218,26 @@ SHORT = 32
 
 
 @helper
+def by_key_short(cand, n, fl):
+    """Sort ``cand[:n]`` by key (rank, number) by insertion (a short list)."""
+    for i in range(1, n):
+        q = cand[i]
+        j = i
+        while j > 0 and (fl[q, 10] < fl[cand[j - 1], 10] or (
+                fl[q, 10] == fl[cand[j - 1], 10] and q < cand[j - 1])):
+            cand[j] = cand[j - 1]
+            j -= 1
+        cand[j] = q
+
+
+@helper
 def by_key(cand, n, fl, keys, tkeys, titems):
-    """Sort ``cand[:n]`` by key (rank, number): a short list by insertion, a long one
-    by number and then stably by rank."""
+    """Sort ``cand[:n]`` by key (rank, number): a short list by insertion
+    (:func:`by_key_short`: the kernel calls it directly, as a helper that calls none
+    with arrays costs no reference counting), a long one by number and then stably
+    by rank."""
     if n <= SHORT:
-        for i in range(1, n):
-            q = cand[i]
-            j = i
-            while j > 0 and (fl[q, 10] < fl[cand[j - 1], 10] or (
-                    fl[q, 10] == fl[cand[j - 1], 10] and q < cand[j - 1])):
-                cand[j] = cand[j - 1]
-                j -= 1
-            cand[j] = q
+        by_key_short(cand, n, fl)
         return
     for i in range(n):
         keys[i] = cand[i]
@@ -240,34 +248,10 @@ def by_key(cand, n, fl, keys, tkeys, titems):
 
 
 @helper
-def separated(pv, it, fl, p, q, eps):
-    """Whether some edge of convex piece ``p`` has all of ``q``'s (x, y) projection on
-    its outer side (or within ``eps`` of it): a separating line."""
-    a0 = it[p, 0]
-    n = it[p, 1]
-    orient = fl[p, 11]
-    for k in range(n):
-        m = a0 + k + 1 if k + 1 < n else a0
-        x0 = pv[a0 + k, 0]
-        y0 = pv[a0 + k, 1]
-        ex = pv[m, 0] - x0
-        ey = pv[m, 1] - y0
-        tol2 = eps * eps * (ex * ex + ey * ey)
-        apart = True
-        for j in range(it[q, 0], it[q, 0] + it[q, 1]):
-            inner = (ex * (pv[j, 1] - y0) - ey * (pv[j, 0] - x0)) * orient
-            if inner > 0.0 and inner * inner > tol2:
-                apart = False
-                break
-        if apart:
-            return True
-    return False
-
-
-@helper
 def decide(pv, it, fl, s, t, eps):
     """Tests 3 to 5 for the pair (S, S') whose depths and boxes overlap: the number of
-    the test that says yes, or 0 when all fail (S may hide S')."""
+    the test that says yes, or 0 when all fail (S may hide S').  (It calls no helper:
+    a helper that passes arrays on pays for counting their references.)"""
     for side in range(2):        # 3: S behind the plane of S'; 4: S' in front of S's
         p = s if side == 0 else t
         q = t if side == 0 else s
@@ -280,8 +264,29 @@ def decide(pv, it, fl, s, t, eps):
                 break
         if on:
             return 3 + side
-    if separated(pv, it, fl, s, t, eps) or separated(pv, it, fl, t, s, eps):
-        return 5
+    # 5: the projections are apart: some edge of one convex piece has all of the
+    # other's (x, y) projection on its outer side (or within eps of it)
+    for side in range(2):
+        p = s if side == 0 else t
+        q = t if side == 0 else s
+        a0 = it[p, 0]
+        n = it[p, 1]
+        orient = fl[p, 11]
+        for k in range(n):
+            m = a0 + k + 1 if k + 1 < n else a0
+            x0 = pv[a0 + k, 0]
+            y0 = pv[a0 + k, 1]
+            ex = pv[m, 0] - x0
+            ey = pv[m, 1] - y0
+            tol2 = eps * eps * (ex * ex + ey * ey)
+            apart = True
+            for j in range(it[q, 0], it[q, 0] + it[q, 1]):
+                inner = (ex * (pv[j, 1] - y0) - ey * (pv[j, 0] - x0)) * orient
+                if inner > 0.0 and inner * inner > tol2:
+                    apart = False
+                    break
+            if apart:
+                return 5
     return 0
 
 
@@ -550,7 +555,9 @@ def depth_sort(pv, fl, it, heap, cells, ent, grid, first, low, cent, byz, order,
                                 m += 1
                             prev = e
                         e = nxt
-            if m > 1:
+            if m <= SHORT:
+                by_key_short(cand, m, fl)
+            else:
                 by_key(cand, m, fl, keys, tkeys, titems)
         mover = -1
         for i in range(m):

@@ -12,10 +12,16 @@ the head is the lesser of the two fronts (stale entries are skipped).
 A uniform grid over the screen lists the pieces whose bounding boxes meet each cell,
 so that the surfaces compared with the head are found among those sharing its cells
 (or, for a step table, among every surface alive).  The pieces given are bucketed
-once, each cell's in the order of ``byz`` with their boxes beside them (read in
-sequence, and cut off where the sort has not yet reached their depth: until then a
-surface lies wholly in front of the head); the pieces of splits are linked into the
-cells as they are made.  Painted surfaces leave the cells as the cells are read.
+once (:func:`bucket`), each cell's in the order of ``byz`` with their boxes and
+greatest depths beside them: a cell is read in sequence, up to the first surface
+that lies wholly in front of the head (the rest of the cell lies in front too, and
+cannot fail the tests against it).  The pieces of splits are linked into the cells
+as they are made.  Painted surfaces leave the cells as the cells are read.
+
+The inner loops are written in the kernel and in helpers that pass no array on to
+another helper: numba counts the references of the arrays of a helper that does (and
+of an inlined helper), two atomic operations per array per call, which once took
+most of the sort's time.
 
 All state lives in arrays the caller allocates (:mod:`scanline.visible.depth_sort`),
 and the scalars in ``st`` (indices below).  When an array has too little room for
@@ -52,11 +58,11 @@ STAMP = 11      # the last stamp handed out
 ALIVE = 12      # pieces alive
 MAXK = 13       # most vertices of a piece
 MAXCELLS = 14   # most grid cells of a piece
-OUT = 16        # vertices written to ``out``
-LIST = 17       # the first position of ``byz`` that may still be alive with its rank
-BUCKETED = 18   # 1 once the pieces given are bucketed in the grid
-BUCKETS = 19    # entries of the buckets (rows of ``cent`` needed)
-STATE = 20      # (15: unused)
+OUT = 15        # vertices written to ``out``
+LIST = 16       # the first position of ``byz`` that may still be alive with its rank
+BUCKETED = 17   # 1 once the pieces given are bucketed in the grid
+BUCKETS = 18    # entries of the buckets (rows of ``cent`` needed)
+STATE = 19
 
 # -- status codes ------------------------------------------------------------------------
 DONE = 0
@@ -135,9 +141,7 @@ def cell_span(lo, hi, origin, size, count):
     (cells of ``size`` from ``origin``, ``count`` of them), clipped to the grid (a
     NaN or infinite extent to its first or last cell).  (np.floor of the quotient,
     not ``//``: numba's floor division goes through fmod, several times slower; any
-    monotonic choice of cells finds the same overlapping boxes.)  Scalars only, as
-    are the other helpers of the inner loops: a helper given arrays counts their
-    references on every call."""
+    monotonic choice of cells finds the same overlapping boxes.)"""
     last = count - 1.0
     a = np.floor((lo - origin) / size)
     b = np.floor((hi - origin) / size)
@@ -233,9 +237,9 @@ def by_key_short(cand, n, fl):
 @helper
 def by_key(cand, n, fl, keys, tkeys, titems):
     """Sort ``cand[:n]`` by key (rank, number): a short list by insertion
-    (:func:`by_key_short`: the kernel calls it directly, as a helper that calls none
-    with arrays costs no reference counting), a long one by number and then stably
-    by rank."""
+    (:func:`by_key_short`, which the kernel calls directly: this helper passes arrays
+    on, and pays for counting their references), a long one by number and then
+    stably by rank."""
     if n <= SHORT:
         by_key_short(cand, n, fl)
         return
@@ -251,7 +255,7 @@ def by_key(cand, n, fl, keys, tkeys, titems):
 def decide(pv, it, fl, s, t, eps):
     """Tests 3 to 5 for the pair (S, S') whose depths and boxes overlap: the number of
     the test that says yes, or 0 when all fail (S may hide S').  (It calls no helper:
-    a helper that passes arrays on pays for counting their references.)"""
+    see the module's docstring.)"""
     for side in range(2):        # 3: S behind the plane of S'; 4: S' in front of S's
         p = s if side == 0 else t
         q = t if side == 0 else s
@@ -513,9 +517,8 @@ def depth_sort(pv, fl, it, heap, cells, ent, grid, first, low, cent, byz, order,
                     cand[m] = q
                     m += 1
         else:       # the pieces alive sharing a cell with S whose depths and boxes
-            # overlap its own (written out here, not in a helper: see cell_span)
-            i0, i1 = cell_span(x0, x1, grid[0], grid[2], grid[3])
-            j0, j1 = cell_span(y0, y1, grid[1], grid[2], grid[4])
+            # overlap its own (written out here: see the module's docstring)
+            i0, i1, j0, j1 = cell_range(fl, s, grid)
             for j in range(j0, j1 + 1):
                 for i in range(i0, i1 + 1):
                     c = j * int(grid[3]) + i

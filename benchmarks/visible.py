@@ -15,7 +15,8 @@ Workloads (fixed seed):
 
 Ratios are peer time / scanline time (above 1: scanline is faster).
 
-Run: ``python benchmarks/visible.py [--quick]`` (``--quick``: 10x fewer triangles).
+Run: ``python benchmarks/visible.py [--quick] [--only depth|methods]`` (``--quick``: 10x
+fewer triangles; ``--only``: one workload).
 """
 
 import argparse
@@ -70,11 +71,22 @@ def matplotlib_draw(tris):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--quick", action="store_true", help="10x fewer triangles")
+    parser.add_argument("--only", choices=("depth", "methods"),
+                        help="run one workload only (default: both)")
     args = parser.parse_args()
-    report = Report("visible", quick=args.quick)
+    report = Report("visible" + (f"-{args.only}" if args.only else ""), quick=args.quick)
     rng = np.random.default_rng(2026)
 
-    n = 10_000 // (10 if args.quick else 1)
+    if args.only != "methods":
+        depth_sort_workload(report, rng, args.quick)
+    if args.only != "depth":
+        methods_workload(report)
+    report.write()
+
+
+def depth_sort_workload(report, rng, quick):
+    """Depth sort and painting of random triangles against ``Poly3DCollection``."""
+    n = 10_000 // (10 if quick else 1)
     tris = triangles(rng, n)
     sp = sl.visible.ScreenPolygons.from_device(list(tris), W, H)
     values = np.tile(np.array([[78, 121, 167]], np.uint8), (n, 1))
@@ -91,6 +103,9 @@ def main():
                scanline_sort, repeats=2, n=n)
     report.target(work, "matplotlib", 5.0, ">= 5x faster than matplotlib's one-key sort")
 
+
+def methods_workload(report):
+    """Every method of ``sl.visible.METHODS`` on one scene."""
     meshes = [sl.mesh.sphere(1.0, (0.6, 0.4, 0.3), resolution=48),
               sl.mesh.torus(1.3, 0.35, resolution=(64, 24)), sl.mesh.cube(1.6)]
     faces = sum(m.face_count for m in meshes)
@@ -102,7 +117,6 @@ def main():
             return sl.visible.render(fb, meshes, cam, method=method)
         report.add(f"scene of {faces} faces", method, f"sl.visible.render(method={method!r})",
                    run, repeats=1, n=faces)
-    report.write()
 
 
 if __name__ == "__main__":

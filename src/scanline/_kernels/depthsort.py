@@ -2,14 +2,26 @@
 13-6) as one resumable kernel: the list sorted by greatest depth, the five overlap
 tests, reordering with the loop flag, and splitting.
 
-The list is a binary heap of keys (rank, piece): the head of the list is the least
-key alive; moving a surface to the head gives it a rank below every other; the two
+The list is ordered by keys (rank, piece): the head of the list is the least key
+alive; moving a surface to the head gives it a rank below every other; the two
 pieces of a split surface take its rank (the farther piece gets the lower number, so
-it comes first).  A uniform grid over the screen lists the pieces whose bounding
-boxes meet each cell, so that the surfaces compared with the head are found among
-those sharing its cells (or, for a step table, among every surface alive); a
-surface enters the grid only when the sort reaches its depth (until then it lies
-wholly in front of the head), and painted surfaces leave it as the cells are read.
+it comes first).  The pieces given keep their ranks in ``byz`` (the initial sort),
+read from a cursor; moved and split pieces go to a binary heap of (rank, piece), and
+the head is the lesser of the two fronts (stale entries are skipped).
+
+A uniform grid over the screen lists the pieces whose bounding boxes meet each cell,
+so that the surfaces compared with the head are found among those sharing its cells
+(or, for a step table, among every surface alive).  The pieces given are bucketed
+once (:func:`bucket`), each cell's in the order of ``byz`` with their boxes and
+greatest depths beside them: a cell is read in sequence, up to the first surface
+that lies wholly in front of the head (the rest of the cell lies in front too, and
+cannot fail the tests against it).  The pieces of splits are linked into the cells
+as they are made.  Painted surfaces leave the cells as the cells are read.
+
+The inner loops are written in the kernel and in helpers that pass no array on to
+another helper: numba counts the references of the arrays of a helper that does (and
+of an inlined helper), two atomic operations per array per call, which once took
+most of the sort's time.
 
 All state lives in arrays the caller allocates (:mod:`scanline.visible.depth_sort`),
 and the scalars in ``st`` (indices below).  When an array has too little room for
@@ -33,8 +45,8 @@ from .variants import token
 # -- indices into the state array ``st`` -------------------------------------------------
 PIECES = 0      # pieces so far
 VERTS = 1       # vertices used in pv
-HEAP = 2        # heap entries
-ENTRIES = 3     # grid entries
+HEAP = 2        # heap entries (moved and split pieces)
+ENTRIES = 3     # grid entries of split pieces
 DRAWN = 4       # pieces in drawing order
 ROWS = 5        # log rows
 STEPS = 6       # steps taken
@@ -46,9 +58,11 @@ STAMP = 11      # the last stamp handed out
 ALIVE = 12      # pieces alive
 MAXK = 13       # most vertices of a piece
 MAXCELLS = 14   # most grid cells of a piece
-NEXT = 15       # the next piece of ``byz`` to enter the grid
-OUT = 16        # vertices written to ``out``
-STATE = 17
+OUT = 15        # vertices written to ``out``
+LIST = 16       # the first position of ``byz`` that may still be alive with its rank
+BUCKETED = 17   # 1 once the pieces given are bucketed in the grid
+BUCKETS = 18    # entries of the buckets (rows of ``cent`` needed)
+STATE = 19
 
 # -- status codes ------------------------------------------------------------------------
 DONE = 0
@@ -65,6 +79,7 @@ ROOM_HEAP = 2
 ROOM_ENTRIES = 3
 ROOM_ROWS = 4
 ROOM_OUT = 5
+ROOM_BUCKETS = 6
 
 # -- the trace tokens (:mod:`scanline._kernels.variants`): the sort alone, or compared
 # with every surface alive and logged (step tables): only the variant used is compiled
@@ -121,18 +136,25 @@ def heap_pop(heap, n):
 
 
 @helper
+def cell_span(lo, hi, origin, size, count):
+    """The first and last grid cell along one axis that the extent lo..hi meets
+    (cells of ``size`` from ``origin``, ``count`` of them), clipped to the grid (a
+    NaN or infinite extent to its first or last cell).  (np.floor of the quotient,
+    not ``//``: numba's floor division goes through fmod, several times slower; any
+    monotonic choice of cells finds the same overlapping boxes.)"""
+    last = count - 1.0
+    a = np.floor((lo - origin) / size)
+    b = np.floor((hi - origin) / size)
+    return int(min(a, last) if a >= 0.0 else 0.0), int(min(b, last) if b >= 0.0 else 0.0)
+
+
+@helper
 def cell_range(fl, p, grid):
-    """The grid cells (i0, i1, j0, j1) that piece ``p``'s bounding box meets, clipped
-    to the grid (a NaN or infinite extent to its first or last cell); ``grid`` is
-    (x0, y0, cell, nx, ny)."""
-    last_i = grid[3] - 1.0
-    last_j = grid[4] - 1.0
-    a = (fl[p, 0] - grid[0]) // grid[2]
-    b = (fl[p, 1] - grid[0]) // grid[2]
-    c = (fl[p, 2] - grid[1]) // grid[2]
-    d = (fl[p, 3] - grid[1]) // grid[2]
-    return (int(min(a, last_i) if a >= 0.0 else 0.0), int(min(b, last_i) if b >= 0.0 else 0.0),
-            int(min(c, last_j) if c >= 0.0 else 0.0), int(min(d, last_j) if d >= 0.0 else 0.0))
+    """The grid cells (i0, i1, j0, j1) that piece ``p``'s bounding box meets
+    (:func:`cell_span`); ``grid`` is (x0, y0, cell, nx, ny)."""
+    i0, i1 = cell_span(fl[p, 0], fl[p, 1], grid[0], grid[2], grid[3])
+    j0, j1 = cell_span(fl[p, 2], fl[p, 3], grid[1], grid[2], grid[4])
+    return i0, i1, j0, j1
 
 
 @helper
@@ -150,23 +172,76 @@ def grid_add(cells, ent, ne, fl, p, grid):
     return ne
 
 
+@helper
+def bucket(fl, byz, grid, first, low, cent, st):
+    """Bucket the pieces given by the cells their boxes meet (a counting sort): cell
+    ``c`` lists ``cent[first[c]:first[c + 1]]``, in the order of ``byz``, each entry
+    the piece's xmin, xmax, ymin, ymax, zmax and the piece; ``low[c]`` starts at
+    ``first[c]``; ``st[MAXCELLS]`` becomes the most cells of a piece.  Returns the
+    entries needed; nothing is written to ``cent`` when it has fewer rows."""
+    nx = int(grid[3])
+    cells = low.shape[0]
+    for c in range(cells + 1):
+        first[c] = 0
+    for r in range(byz.shape[0]):
+        i0, i1, j0, j1 = cell_range(fl, byz[r], grid)
+        st[MAXCELLS] = max(st[MAXCELLS], (i1 - i0 + 1) * (j1 - j0 + 1))
+        for j in range(j0, j1 + 1):
+            for i in range(i0, i1 + 1):
+                first[j * nx + i + 1] += 1
+    for c in range(cells):
+        first[c + 1] += first[c]
+        low[c] = first[c]
+    if first[cells] > cent.shape[0]:
+        return first[cells]
+    for r in range(byz.shape[0]):
+        p = byz[r]
+        i0, i1, j0, j1 = cell_range(fl, p, grid)
+        for j in range(j0, j1 + 1):
+            for i in range(i0, i1 + 1):
+                e = low[j * nx + i]
+                for c in range(4):
+                    cent[e, c] = fl[p, c]
+                cent[e, 4] = fl[p, 5]
+                cent[e, 5] = p
+                low[j * nx + i] = e + 1
+    for c in range(cells):
+        low[c] = first[c]
+    return first[cells]
+
+
+@helper
+def extents_apart(lo, hi, s_lo, s_hi, eps):
+    """Whether the extents lo..hi and s_lo..s_hi do not overlap (by more than
+    ``eps``): tests 1 and 2 on one axis."""
+    return hi <= s_lo + eps or lo >= s_hi - eps
+
+
 #: Lists longer than this are sorted by merging (:func:`scanline._kernels.sort.sort_keys`).
 SHORT = 32
 
 
 @helper
+def by_key_short(cand, n, fl):
+    """Sort ``cand[:n]`` by key (rank, number) by insertion (a short list)."""
+    for i in range(1, n):
+        q = cand[i]
+        j = i
+        while j > 0 and (fl[q, 10] < fl[cand[j - 1], 10] or (
+                fl[q, 10] == fl[cand[j - 1], 10] and q < cand[j - 1])):
+            cand[j] = cand[j - 1]
+            j -= 1
+        cand[j] = q
+
+
+@helper
 def by_key(cand, n, fl, keys, tkeys, titems):
-    """Sort ``cand[:n]`` by key (rank, number): a short list by insertion, a long one
-    by number and then stably by rank."""
+    """Sort ``cand[:n]`` by key (rank, number): a short list by insertion
+    (:func:`by_key_short`, which the kernel calls directly: this helper passes arrays
+    on, and pays for counting their references), a long one by number and then
+    stably by rank."""
     if n <= SHORT:
-        for i in range(1, n):
-            q = cand[i]
-            j = i
-            while j > 0 and (fl[q, 10] < fl[cand[j - 1], 10] or (
-                    fl[q, 10] == fl[cand[j - 1], 10] and q < cand[j - 1])):
-                cand[j] = cand[j - 1]
-                j -= 1
-            cand[j] = q
+        by_key_short(cand, n, fl)
         return
     for i in range(n):
         keys[i] = cand[i]
@@ -177,34 +252,10 @@ def by_key(cand, n, fl, keys, tkeys, titems):
 
 
 @helper
-def separated(pv, it, fl, p, q, eps):
-    """Whether some edge of convex piece ``p`` has all of ``q``'s (x, y) projection on
-    its outer side (or within ``eps`` of it): a separating line."""
-    a0 = it[p, 0]
-    n = it[p, 1]
-    orient = fl[p, 11]
-    for k in range(n):
-        m = a0 + k + 1 if k + 1 < n else a0
-        x0 = pv[a0 + k, 0]
-        y0 = pv[a0 + k, 1]
-        ex = pv[m, 0] - x0
-        ey = pv[m, 1] - y0
-        tol2 = eps * eps * (ex * ex + ey * ey)
-        apart = True
-        for j in range(it[q, 0], it[q, 0] + it[q, 1]):
-            inner = (ex * (pv[j, 1] - y0) - ey * (pv[j, 0] - x0)) * orient
-            if inner > 0.0 and inner * inner > tol2:
-                apart = False
-                break
-        if apart:
-            return True
-    return False
-
-
-@helper
 def decide(pv, it, fl, s, t, eps):
     """Tests 3 to 5 for the pair (S, S') whose depths and boxes overlap: the number of
-    the test that says yes, or 0 when all fail (S may hide S')."""
+    the test that says yes, or 0 when all fail (S may hide S').  (It calls no helper:
+    see the module's docstring.)"""
     for side in range(2):        # 3: S behind the plane of S'; 4: S' in front of S's
         p = s if side == 0 else t
         q = t if side == 0 else s
@@ -217,8 +268,29 @@ def decide(pv, it, fl, s, t, eps):
                 break
         if on:
             return 3 + side
-    if separated(pv, it, fl, s, t, eps) or separated(pv, it, fl, t, s, eps):
-        return 5
+    # 5: the projections are apart: some edge of one convex piece has all of the
+    # other's (x, y) projection on its outer side (or within eps of it)
+    for side in range(2):
+        p = s if side == 0 else t
+        q = t if side == 0 else s
+        a0 = it[p, 0]
+        n = it[p, 1]
+        orient = fl[p, 11]
+        for k in range(n):
+            m = a0 + k + 1 if k + 1 < n else a0
+            x0 = pv[a0 + k, 0]
+            y0 = pv[a0 + k, 1]
+            ex = pv[m, 0] - x0
+            ey = pv[m, 1] - y0
+            tol2 = eps * eps * (ex * ex + ey * ey)
+            apart = True
+            for j in range(it[q, 0], it[q, 0] + it[q, 1]):
+                inner = (ex * (pv[j, 1] - y0) - ey * (pv[j, 0] - x0)) * orient
+                if inner > 0.0 and inner * inner > tol2:
+                    apart = False
+                    break
+            if apart:
+                return 5
     return 0
 
 
@@ -362,18 +434,25 @@ def split_pair(pv, fl, it, heap, cells, ent, st, grid, s, t, eps, min_area, limi
 
 
 @kernel
-def depth_sort(pv, fl, it, heap, cells, ent, grid, byz, order, out, cand, keys, tkeys,
-               titems, log, plane, st, eps, min_area, limit, max_steps, split_cycles,
-               trace):
+def depth_sort(pv, fl, it, heap, cells, ent, grid, first, low, cent, byz, order, out,
+               cand, keys, tkeys, titems, log, plane, st, eps, min_area, limit, max_steps,
+               split_cycles, trace):
     """Run (or resume) the depth sort: pieces go to ``order`` as they are painted, and
     their vertices to ``out``.  ``byz``: the pieces given, by decreasing greatest
-    depth (they enter the grid in this order as the sort reaches their depths);
-    ``limit``: most pieces in all; ``max_steps``: the loop bound; ``trace``: a
-    :data:`TRACE` token (LOGGED: compare with every surface alive and log each pair).
-    Returns the status (also in ``st[STATUS]``)."""
-    one = np.int64(1)             # typed, not literal, arguments of log_row
-    none = np.int64(NONE)
+    depth (the initial list; in the grid, :func:`bucket`, they are cut off where the
+    sort has not reached their depths); ``cells``, ``ent``: the split pieces linked
+    in the grid cells; ``limit``: most pieces in all; ``max_steps``: the loop bound;
+    ``trace``: a :data:`TRACE` token (LOGGED: compare with every surface alive and
+    log each pair).  Returns the status (also in ``st[STATUS]``)."""
+    none = np.int64(NONE)         # typed, not literal, arguments of log_row
     nil = np.int64(-1)
+    if st[BUCKETED] == 0:
+        st[BUCKETS] = bucket(fl, byz, grid, first, low, cent, st)
+        if st[BUCKETS] > cent.shape[0]:
+            st[STATUS] = NEED_ROOM
+            st[T] = ROOM_BUCKETS
+            return NEED_ROOM
+        st[BUCKETED] = 1
     while st[ALIVE] > 0:
         short = -1                   # which array lacks room for one more step
         if st[PIECES] + 2 > fl.shape[0]:
@@ -388,23 +467,6 @@ def depth_sort(pv, fl, it, heap, cells, ent, grid, byz, order, out, cand, keys, 
             short = ROOM_ROWS
         elif st[OUT] + st[MAXK] > out.shape[0]:
             short = ROOM_OUT
-        while short < 0:             # the head: the least key alive (stale entries off)
-            h = int(heap[0, 1])
-            if it[h, 3] == 1 and heap[0, 0] == fl[h, 10]:
-                break
-            st[HEAP] = heap_pop(heap, st[HEAP])
-        # the surfaces that reach behind the head's nearest depth enter the grid (the
-        # others lie wholly in front of it and cannot fail the tests against it)
-        while short < 0 and len(trace) == SILENT and st[NEXT] < byz.shape[0]:
-            p = byz[st[NEXT]]
-            if fl[p, 5] <= fl[h, 4] + eps:
-                break
-            i0, i1, j0, j1 = cell_range(fl, p, grid)
-            if st[ENTRIES] + (i1 - i0 + 1) * (j1 - j0 + 1) + 2 * st[MAXCELLS] > ent.shape[0]:
-                short = ROOM_ENTRIES
-                break
-            st[ENTRIES] = grid_add(cells, ent, st[ENTRIES], fl, p, grid)
-            st[NEXT] += 1
         if short >= 0:
             st[STATUS] = NEED_ROOM
             st[T] = short
@@ -413,21 +475,70 @@ def depth_sort(pv, fl, it, heap, cells, ent, grid, byz, order, out, cand, keys, 
         if st[STEPS] > max_steps:
             st[STATUS] = TOO_LONG
             return TOO_LONG
-        s = h
+        while st[LIST] < byz.shape[0]:   # the head: the least key (rank, piece) alive
+            p = byz[st[LIST]]            # (stale entries off): the front of ``byz``,
+            if it[p, 3] == 1 and fl[p, 10] == st[LIST]:
+                break
+            st[LIST] += 1
+        while st[HEAP] > 0:              # or of the heap of moved and split pieces
+            h = int(heap[0, 1])
+            if it[h, 3] == 1 and heap[0, 0] == fl[h, 10]:
+                break
+            st[HEAP] = heap_pop(heap, st[HEAP])
+        s = byz[min(st[LIST], byz.shape[0] - 1)]
+        if st[HEAP] > 0 and (st[LIST] == byz.shape[0] or heap[0, 0] < fl[s, 10] or (
+                heap[0, 0] == fl[s, 10] and heap[0, 1] < s)):
+            s = int(heap[0, 1])
         st[STAMP] += 1
-        n = np.int64(0)
+        stamp = st[STAMP]
+        x0 = fl[s, 0]
+        x1 = fl[s, 1]
+        y0 = fl[s, 2]
+        y1 = fl[s, 3]
+        near = fl[s, 4] + eps            # S' reaching no farther lies wholly in front
+        m = np.int64(0)
         if len(trace) == LOGGED:
+            n = np.int64(0)
             for q in range(st[PIECES]):
                 if q != s and it[q, 3] == 1:
                     cand[n] = q
                     n += 1
             by_key(cand, n, fl, keys, tkeys, titems)
-        else:                        # the pieces alive sharing a cell with S (dead unlinked)
+            # the pairs whose depths overlap (S' not wholly in front of S) by the boxes
+            for i in range(n):
+                q = cand[i]
+                if fl[q, 5] <= near:
+                    continue
+                if extents_apart(fl[q, 0], fl[q, 1], x0, x1, eps):
+                    log_row(log, st, s, q, np.int64(1), none, nil, nil, nil)
+                elif extents_apart(fl[q, 2], fl[q, 3], y0, y1, eps):
+                    log_row(log, st, s, q, np.int64(2), none, nil, nil, nil)
+                else:
+                    cand[m] = q
+                    m += 1
+        else:       # the pieces alive sharing a cell with S whose depths and boxes
+            # overlap its own (written out here: see the module's docstring)
             i0, i1, j0, j1 = cell_range(fl, s, grid)
-            nx = int(grid[3])
             for j in range(j0, j1 + 1):
                 for i in range(i0, i1 + 1):
-                    c = j * nx + i
+                    c = j * int(grid[3]) + i
+                    # the pieces given (bucket): the painted ones at the front leave
+                    # the cell; read up to the first that lies wholly in front of S
+                    e = low[c]
+                    while e < first[c + 1] and cent[e, 4] > near and it[int(cent[e, 5]),
+                                                                         3] == 0:
+                        e += 1
+                    low[c] = e
+                    while e < first[c + 1] and cent[e, 4] > near:
+                        q = int(cent[e, 5])
+                        if not (extents_apart(cent[e, 0], cent[e, 1], x0, x1, eps)
+                                or extents_apart(cent[e, 2], cent[e, 3], y0, y1, eps)) and (
+                                it[q, 3] == 1 and q != s and it[q, 5] != stamp):
+                            it[q, 5] = stamp
+                            cand[m] = q
+                            m += 1
+                        e += 1
+                    # the pieces of splits, linked (dead ones unlinked)
                     prev = -1
                     e = cells[c]
                     while e >= 0:
@@ -439,29 +550,18 @@ def depth_sort(pv, fl, it, heap, cells, ent, grid, byz, order, out, cand, keys, 
                             else:
                                 ent[prev, 0] = nxt
                         else:
-                            if q != s and it[q, 5] != st[STAMP]:
-                                it[q, 5] = st[STAMP]
-                                cand[n] = q
-                                n += 1
+                            if q != s and it[q, 5] != stamp and fl[q, 5] > near and not (
+                                    extents_apart(fl[q, 0], fl[q, 1], x0, x1, eps)
+                                    or extents_apart(fl[q, 2], fl[q, 3], y0, y1, eps)):
+                                it[q, 5] = stamp
+                                cand[m] = q
+                                m += 1
                             prev = e
                         e = nxt
-        # the pairs whose depths overlap (S' not wholly in front of S) by the boxes
-        m = np.int64(0)
-        for i in range(n):
-            q = cand[i]
-            if fl[q, 5] <= fl[s, 4] + eps:
-                continue
-            if fl[q, 1] <= fl[s, 0] + eps or fl[q, 0] >= fl[s, 1] - eps:
-                if len(trace) == LOGGED:
-                    log_row(log, st, s, q, one, none, nil, nil, nil)
-            elif fl[q, 3] <= fl[s, 2] + eps or fl[q, 2] >= fl[s, 3] - eps:
-                if len(trace) == LOGGED:
-                    log_row(log, st, s, q, one + one, none, nil, nil, nil)
+            if m <= SHORT:
+                by_key_short(cand, m, fl)
             else:
-                cand[m] = q
-                m += 1
-        if len(trace) == SILENT:
-            by_key(cand, m, fl, keys, tkeys, titems)
+                by_key(cand, m, fl, keys, tkeys, titems)
         mover = -1
         for i in range(m):
             q = cand[i]

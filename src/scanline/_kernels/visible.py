@@ -57,6 +57,22 @@ def covers(verts, start, end, x, y):
 PAINT_BAND_SHIFT = 4
 
 
+@helper
+def bands_of(r0, r1, band, step):
+    """The first band of rows r0..r1 that thread ``band`` of ``step`` paints and the
+    band after the last (its bands are every ``step``-th from the first): band ``k``
+    holds rows k * 2**PAINT_BAND_SHIFT to (k + 1) * 2**PAINT_BAND_SHIFT - 1, so a
+    thread visits its own rows only."""
+    k0 = r0 >> PAINT_BAND_SHIFT
+    return k0 + (band - k0) % step, (r1 >> PAINT_BAND_SHIFT) + 1
+
+
+@helper
+def rows_of(k, r0, r1):
+    """The rows of band ``k`` within r0..r1, as a range's start and stop."""
+    return max(r0, k << PAINT_BAND_SHIFT), min(r1 + 1, (k + 1) << PAINT_BAND_SHIFT)
+
+
 @kernel
 def paint_convex(band, step, buf, layout, width, height, verts, offsets, colors):
     """Paint convex polygons in order, polygon ``p`` (``verts[offsets[p]:offsets[p +
@@ -66,8 +82,8 @@ def paint_convex(band, step, buf, layout, width, height, verts, offsets, colors)
     :func:`crossing`): each edge adds its crossings to the lowest and highest x of
     its rows, with no edge table to sort.  The rows of this call are those of the
     bands of 2**PAINT_BAND_SHIFT rows numbered ``band``, ``band + step``, ...
-    (:mod:`scanline._kernels._threads`: one call per thread; in each band the
-    polygons are painted in order)."""
+    (:func:`bands_of`; :mod:`scanline._kernels._threads`: one call per thread; in
+    each band the polygons are painted in order)."""
     xl = np.empty(height)
     xr = np.empty(height)
     for p in range(offsets.shape[0] - 1):
@@ -86,9 +102,14 @@ def paint_convex(band, step, buf, layout, width, height, verts, offsets, colors)
         # convert a huge coordinate to an integer that does not exist)
         r0 = int(min(max(np.floor(lo) + 1.0, 0.0), float(height)))
         r1 = int(max(min(np.floor(hi), height - 1.0), -1.0))
-        for r in range(r0, r1 + 1):
-            xl[r] = np.inf
-            xr[r] = -np.inf
+        k0, k1 = bands_of(r0, r1, band, step)
+        if k0 >= k1:
+            continue
+        for k in range(k0, k1, step):
+            start_row, stop_row = rows_of(k, r0, r1)
+            for r in range(start_row, stop_row):
+                xl[r] = np.inf
+                xr[r] = -np.inf
         for i in range(start, end):
             j = i + 1 if i + 1 < end else start
             a = i if verts[i, 1] < verts[j, 1] else j
@@ -103,19 +124,22 @@ def paint_convex(band, step, buf, layout, width, height, verts, offsets, colors)
             # the rows ylo < r <= yhi within r0..r1
             first = int(min(max(np.floor(ylo) + 1.0, float(r0)), float(height)))
             last = int(max(min(np.floor(yhi), float(r1)), -1.0))
-            for r in range(first, last + 1):
-                if (r >> PAINT_BAND_SHIFT) % step != band:
-                    continue
-                xc = xlo + ((r - ylo) * dx) / dy
-                if xc == xc:             # not NaN (inf - inf over a huge edge)
-                    xl[r] = min(xl[r], xc)
-                    xr[r] = max(xr[r], xc)
+            e0, e1 = bands_of(first, last, band, step)
+            for k in range(e0, e1, step):
+                start_row, stop_row = rows_of(k, first, last)
+                for r in range(start_row, stop_row):
+                    xc = xlo + ((r - ylo) * dx) / dy
+                    if xc == xc:             # not NaN (inf - inf over a huge edge)
+                        xl[r] = min(xl[r], xc)
+                        xr[r] = max(xr[r], xc)
         color = colors[p]
-        for r in range(r0, r1 + 1):
-            if (r >> PAINT_BAND_SHIFT) % step == band and xl[r] < xr[r]:
-                x0 = min(max(np.ceil(xl[r]), 0.0), float(width))
-                x1 = max(min(np.ceil(xr[r]), float(width)), 0.0) - 1.0
-                span(buf, layout, width, height, r, int(x0), int(x1), color)
+        for k in range(k0, k1, step):
+            start_row, stop_row = rows_of(k, r0, r1)
+            for r in range(start_row, stop_row):
+                if xl[r] < xr[r]:
+                    x0 = min(max(np.ceil(xl[r]), 0.0), float(width))
+                    x1 = max(min(np.ceil(xr[r]), float(width)), 0.0) - 1.0
+                    span(buf, layout, width, height, r, int(x0), int(x1), color)
 
 
 @helper

@@ -38,8 +38,8 @@ def _grid(ext):
         if not np.isfinite(cell):
             return np.array([x0, y0, np.inf, 1.0, 1.0]), np.ones(len(ext), np.int64)
         nx, ny = int(wide // cell) + 1, int(high // cell) + 1
-        i = np.clip((ext[:, 0:2] - x0) // cell, 0, nx - 1)
-        j = np.clip((ext[:, 2:4] - y0) // cell, 0, ny - 1)
+        i = np.clip(np.floor((ext[:, 0:2] - x0) / cell), 0, nx - 1)
+        j = np.clip(np.floor((ext[:, 2:4] - y0) / cell), 0, ny - 1)
     cells = (i[:, 1] - i[:, 0] + 1) * (j[:, 1] - j[:, 0] + 1)
     return np.array([x0, y0, cell, nx, ny], np.float64), cells.astype(np.int64)
 
@@ -152,26 +152,26 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None):
     it[:n, 5] = -1
     pv = np.empty((2 * len(sp.vertices) + 64, 3))
     pv[:len(sp.vertices)] = sp.vertices
-    heap = np.empty((2 * cap, 2))          # sorted by rank: already a heap
-    heap[:n, 0] = np.arange(n)
-    heap[:n, 1] = order
-    ent = np.empty((3 * int(cells.sum()) + 4 * int(cells.max()) + 256, 2), np.int64)
+    heap = np.empty((cap, 2))
+    ent = np.empty((int(cells.sum()) + 4 * int(cells.max()) + 256, 2), np.int64)
     out = np.empty_like(pv)
     st = np.zeros(k.STATE, np.int64)
-    st[[k.PIECES, k.VERTS, k.HEAP, k.ALIVE]] = n, len(sp.vertices), n, n
+    st[[k.PIECES, k.VERTS, k.ALIVE]] = n, len(sp.vertices), n
     st[k.LOW] = -1
     st[k.MAXK] = counts.max()
-    st[k.MAXCELLS] = cells.max()
+    st[k.MAXCELLS] = 1
     drawn, cand, titems = (np.empty(cap, np.int64) for _ in range(3))
     keys, tkeys = np.empty(cap), np.empty(cap)
     rows = np.empty((4 * n + 16 if log is not None else 1, 7), np.int64)
     heads = np.full(int(grid[3] * grid[4]), -1, np.int64)
+    first, low = np.empty(len(heads) + 1, np.int64), np.empty(len(heads), np.int64)
+    cent = np.empty((int(cells.sum()), 6))
     max_steps = 4 * limit + 10 * n * n + 100
     while True:
-        status = call(k.depth_sort, 300 * n + 10, pv, fl, it, heap, heads, ent, grid, order,
-                      drawn, out, cand, keys, tkeys, titems, rows, np.empty(4), st, tolerance(sp),
-                      MIN_AREA * 1e-3, limit + n, max_steps, split_cycles,
-                      k.TRACE[log is not None])
+        status = call(k.depth_sort, 300 * n + 10, pv, fl, it, heap, heads, ent, grid, first,
+                      low, cent, order, drawn, out, cand, keys, tkeys, titems, rows,
+                      np.empty(4), st, tolerance(sp), MIN_AREA * 1e-3, limit + n, max_steps,
+                      split_cycles, k.TRACE[log is not None])
         if status != k.NEED_ROOM:
             break
         short = st[k.T]
@@ -185,6 +185,8 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None):
             heap = _grown(heap, st[k.HEAP] + 2)
         elif short == k.ROOM_ENTRIES:
             ent = _grown(ent, st[k.ENTRIES] + 2 * st[k.MAXCELLS])
+        elif short == k.ROOM_BUCKETS:
+            cent = np.empty((st[k.BUCKETS], 6))
         elif short == k.ROOM_ROWS:
             rows = _grown(rows, st[k.ROWS] + st[k.ALIVE] + 1)
         else:

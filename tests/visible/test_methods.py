@@ -9,6 +9,7 @@ import scanline as sl
 from scanline.visible import (ScreenPolygons, area_subdivision, depth_sort, painter,
                               scan_line)
 from scanline.visible.render import paint
+from tests.reference import lit
 
 from .reference import ray_cast
 
@@ -161,3 +162,16 @@ def test_warnock_cases_recorded():
     assert set(r.regions[:, 4].tolist()) >= {1, 2}
     assert (r.face == np.where(np.isin(np.arange(W)[None], range(3, 9))
                                & np.isin(np.arange(H)[:, None], range(4, 10)), 1, 0)).all()
+
+
+@pytest.mark.parametrize("tri", [[(1.07374182e9, 1.0, 0.0), (0.0, -1e300, 0.0), (0.0, 0.0, 0.0)],
+                                 [(3.0, 1e300, 0.5), (12.0, 2.0, 0.5), (-1e300, 5.0, 0.5)]])
+def test_scan_line_method_takes_crossings_beyond_the_integers(tri):
+    # an edge whose crossing overflows to inf (or a scan-line bound beyond int64) was
+    # converted to an integer unclamped: undefined in compiled code, and it crashed
+    # the interpreter; the spans are the 2-D fill's, as for any triangle
+    v = np.array(tri)
+    result = scan_line(ScreenPolygons.from_device([v], 16, 12))
+    fb = sl.FrameBuffer(16, 12, mode="1")
+    sl.draw.polygon(fb, v[:, :2], color=1)
+    assert {(x, y) for y, x in zip(*np.nonzero(result.face >= 0))} == lit(fb)

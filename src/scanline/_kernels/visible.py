@@ -17,6 +17,7 @@ import math
 import numpy as np
 
 from ._jit import helper, kernel, slow_to_compile
+from .curves import clamped_index
 from .spans import span
 
 
@@ -167,8 +168,10 @@ def scan_edges(verts, offsets, height, ef, ei):
             if ya == yb:
                 continue
             lo, hi = (i, j) if ya < yb else (j, i)
-            r0 = max(int(math.floor(verts[lo, 1])) + 1, 0)
-            r1 = min(int(math.floor(verts[hi, 1])), height - 1)
+            # (clamped before the conversion: a float beyond int64 or NaN converts
+            # to anything in compiled code, and the compiler may assume it does not)
+            r0 = clamped_index(np.floor(verts[lo, 1]) + 1.0, height)
+            r1 = clamped_index(np.floor(verts[hi, 1]) + 1.0, height) - 1
             if r0 > r1:
                 continue
             ef[n, 0] = verts[lo, 0]
@@ -235,8 +238,8 @@ def scan_spans(y, width, planes, ei, nact, active, xs, inside, on, onpos, face, 
             non += 1
         if non == 0 or k + 1 >= nact:
             continue
-        x0 = max(int(math.ceil(xs[k])), 0)
-        x1 = min(int(math.ceil(xs[k + 1])), width)
+        x0 = clamped_index(np.ceil(xs[k]), width)       # (crossings may be +-inf, NaN)
+        x1 = clamped_index(np.ceil(xs[k + 1]), width)
         for x in range(x0, x1):
             best = on[0]
             zbest = plane_depth(planes, best, np.float64(x), np.float64(y))

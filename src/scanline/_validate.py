@@ -225,7 +225,9 @@ def coordinate_array(name: str, value: object, columns: int,
             f"{name} must have shape (N, {columns}), got shape {a.shape}"
         )
     # in range (the common case) in two passes without temporaries; NaN fails both
-    if a.size and not (-COORD_LIMIT <= a.min() and a.max() <= COORD_LIMIT):
+    # (compared as Python floats: against a float16 array the limit itself would be
+    # cast to float16, where it is inf)
+    if a.size and not (-COORD_LIMIT <= float(a.min()) and float(a.max()) <= COORD_LIMIT):
         if not np.isfinite(a).all():
             row = int(np.argwhere(~np.isfinite(a))[0][0])
             raise ArgumentValueError(

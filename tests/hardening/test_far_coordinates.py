@@ -103,6 +103,18 @@ def test_nan_and_inf_are_still_refused():
             sl.draw.polyline(fb(), [(0, 0), (bad, 3)], width=2)
 
 
+@pytest.mark.parametrize("dtype", [np.float16, np.float32, np.float64])
+def test_inf_in_a_narrow_float_array_is_refused_too(dtype):
+    # against a float16 array the range check compared with the limit cast to
+    # float16 (inf), so inf passed it and reached the exact clipping as a raw error
+    for bad in (np.nan, np.inf, -np.inf):
+        for call in (lambda s: sl.draw.antialias.lines(fb(), s, "white"),
+                     lambda s: sl.draw.lines(fb(), s)):
+            with pytest.raises(sl.ArgumentValueError, match="finite"):
+                call(np.array([[0, 0, 0, bad]], dtype))
+    sl.draw.antialias.lines(fb(), np.array([[0, 0, 0, 60000]], np.float16), "white")
+
+
 def test_guard_ring_matches_shapely_inside_the_guard():
     shapely = peer("shapely")
     from shapely.geometry import Polygon, box

@@ -131,3 +131,44 @@ def test_far_segments_outside_the_guard_keep_their_colors():
     f = fb("RGB")
     sl.draw.lines(f, [[-1e300, -5e299, -1e300, 5e299], [0, 3, 39, 3]], color=["red", "blue"])
     assert (f.to_array()[H - 1 - 3] == (0, 0, 255)).all()
+
+
+def test_far_paths_clip_each_segment_as_the_exact_clipping_does():
+    # the guard's fast paths (segments within the guard kept, segments beyond one of
+    # its sides dropped, without exact arithmetic) give what clipping every segment
+    # exactly gives, joined into the same runs
+    g = guard.GUARD
+    rng = np.random.default_rng(11)
+    special = np.array([0.0, g, -g, 2 * g, -2 * g, g + 0.5, -g - 0.5, 3e9, 1e12, -1e300])
+    for _ in range(300):
+        k = int(rng.integers(2, 12))
+        p = np.where(rng.random((k, 2)) < 0.5, rng.choice(special, (k, 2)),
+                     rng.uniform(-3 * g, 3 * g, (k, 2)))
+        p[0] = (3e9, 0.0)                                       # far, so it is clipped
+        verts, offsets, closed, owner = guard.paths(p, np.array([0, k]), np.array([False]))
+        want, run = [], []
+        for e in np.hstack([p[:-1], p[1:]]):
+            s = guard._clip_segment(e)
+            if s is None:
+                continue
+            if run and not np.array_equal(run[-1], s[:2]):
+                want.append(np.array(run))
+                run = []
+            run = run or [s[:2]]
+            run.append(s[2:])
+        want += [np.array(run)] if run else []
+        got = [verts[a:b] for a, b in zip(offsets[:-1], offsets[1:])]
+        assert len(got) == len(want) and all(np.array_equal(a, b) for a, b in zip(got, want))
+        assert not closed.any() and (owner == 0).all()
+
+
+def test_a_long_far_path_clips_only_the_segments_crossing_the_guard(monkeypatch):
+    # an antialiased dashed circle of radius 2**30 centered at y = 2**30: its polygon
+    # of 230,000 segments reaches 2**31 and was clipped one exact segment at a time
+    # (18 s); only the few that cross the guard's boundary need exact arithmetic
+    exact = []
+    clip = guard._clip_segment
+    monkeypatch.setattr(guard, "_clip_segment", lambda e: exact.append(1) or clip(e))
+    fb_ = sl.FrameBuffer(1, 1, mode="1")
+    sl.draw.circle(fb_, 0, 2**30, 2**30, width=3, dash=(2, 1), antialias=True)
+    assert 0 < len(exact) < 100

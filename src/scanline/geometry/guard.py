@@ -163,6 +163,35 @@ def clip_segment(x0, y0, x1, y1):
                      float(y0 + t1 * dy)])
 
 
+def _clipped(segs):
+    """The segments (rows x0, y0, x1, y1) clipped to the guard, in order, those that
+    miss it left out: a segment within the guard is kept as it is and one wholly
+    beyond a side of it dropped (both as :func:`_clip_segment` gives them, without
+    its exact arithmetic: a circle of radius 2**30 has 230,000 of them); only the
+    segments that cross the guard's boundary are clipped exactly."""
+    inside = (np.abs(segs) <= GUARD).all(axis=1)
+    beyond = np.zeros(len(segs), bool)
+    for c in (0, 1):
+        beyond |= (segs[:, c] > GUARD) & (segs[:, c + 2] > GUARD)
+        beyond |= (segs[:, c] < -GUARD) & (segs[:, c + 2] < -GUARD)
+    pieces, keep = segs.copy(), inside.copy()
+    for j in np.flatnonzero(~inside & ~beyond).tolist():
+        piece = _clip_segment(segs[j])
+        if piece is not None:
+            pieces[j], keep[j] = piece, True
+    return pieces[keep]
+
+
+def _runs(segs):
+    """Consecutive segments joined into polylines (a new one wherever a segment does
+    not start where the previous one ended)."""
+    if not len(segs):
+        return []
+    starts = np.flatnonzero((segs[1:, :2] != segs[:-1, 2:]).any(axis=1)) + 1
+    bounds = [0] + starts.tolist() + [len(segs)]
+    return [np.vstack([segs[a:b, :2], segs[b - 1:b, 2:]]) for a, b in zip(bounds, bounds[1:])]
+
+
 def paths(verts, offsets, closed):
     """Polylines (``closed[i]``: joined back to their start) cut where they leave the
     guard square: each far polyline becomes the open runs of its segments' clipped
@@ -183,21 +212,8 @@ def paths(verts, offsets, closed):
             p = np.vstack([p, p[:1]])
         if len(p) == 1:
             continue          # a single far point: outside the guard, nothing to draw
-        run = []
-        for s in (_clip_segment(e) for e in np.hstack([p[:-1], p[1:]])):
-            if s is None:
-                continue
-            a, b = s[:2], s[2:]
-            if run and not np.array_equal(run[-1], a):
-                out.append(np.array(run))
-                flags.append(False)
-                owner.append(i)
-                run = []
-            if not run:
-                run.append(a)
-            run.append(b)
-        if run:
-            out.append(np.array(run))
+        for run in _runs(_clipped(np.hstack([p[:-1], p[1:]]))):
+            out.append(run)
             flags.append(False)
             owner.append(i)
     new_offsets = np.zeros(len(out) + 1, np.int64)

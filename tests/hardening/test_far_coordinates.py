@@ -8,7 +8,7 @@ import pytest
 
 import scanline as sl
 from scanline.geometry import guard
-from tests.reference import peer
+from tests.reference import lit, peer
 
 W, H = 40, 30
 BIG = [1e12, -1e12, 1e300, -1e300, 2.0**31, 9.007199254740993e15]
@@ -172,3 +172,40 @@ def test_a_long_far_path_clips_only_the_segments_crossing_the_guard(monkeypatch)
     fb_ = sl.FrameBuffer(1, 1, mode="1")
     sl.draw.circle(fb_, 0, 2**30, 2**30, width=3, dash=(2, 1), antialias=True)
     assert 0 < len(exact) < 100
+
+
+FAR_TRIANGLES = [[(0, 0), (1e300, 5), (5, 1e300)], [(3, -1e12), (40, 1e12), (-3e9, 7)],
+                 [(-1e300, -1e300), (1e300, -1e300), (0, 1e300)],
+                 [(5, 5), (2**31, 9), (9, 2**31)], [(1e15, 1e15), (2e15, 1e15), (1e15, 3e15)]]
+
+
+@pytest.mark.parametrize("xy", FAR_TRIANGLES)
+def test_far_triangles_are_drawn_with_their_depth_and_perspective_colors(xy):
+    # pixels: the 2-D polygon fill's; depth and colors: the plane and the
+    # perspective-correct interpolation of the whole triangle, evaluated exactly at
+    # each pixel center (Fractions), so the guard's cut edges change nothing inside
+    from fractions import Fraction
+
+    w, h = 16, 12
+    z, ws = (0.25, 0.5, 0.75), (1.0, 2.0, 4.0)
+    cols = np.array([[255, 0, 0], [0, 255, 0], [0, 0, 255]], float)
+    tri = np.array([[(x, y, zz) for (x, y), zz in zip(xy, z)]])
+    fb = sl.FrameBuffer(w, h)
+    depth = sl.DepthBuffer(w, h)
+    sl.draw.triangles(fb, tri, colors=cols[None], depth=depth, w=np.array([ws]))
+    ref = sl.FrameBuffer(w, h, mode="1")
+    sl.draw.polygon(ref, np.array(xy, float), color=1)
+    got = fb.to_array()[::-1]                                    # [y, x]
+    assert {(x, y) for y, x in zip(*np.nonzero(got.any(axis=2)))} == lit(ref)
+    (x0, y0), (x1, y1), (x2, y2) = [(Fraction(a), Fraction(b)) for a, b in xy]
+    area = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0)
+    zs = depth.to_array()[::-1]
+    for x, y in lit(ref):
+        l1 = ((x - x0) * (y2 - y0) - (x2 - x0) * (y - y0)) / area
+        l2 = ((x1 - x0) * (y - y0) - (x - x0) * (y1 - y0)) / area
+        lam = (1 - l1 - l2, l1, l2)
+        assert zs[y, x] == pytest.approx(float(sum(a * Fraction(b) for a, b in zip(lam, z))),
+                                         abs=1e-6)
+        q = [lam[i] / Fraction(ws[i]) for i in range(3)]
+        want = [float(sum(q[i] * Fraction(cols[i, c]) for i in range(3)) / sum(q)) for c in range(3)]
+        assert np.abs(got[y, x].astype(float) - want).max() <= 1.0, (x, y)

@@ -163,12 +163,22 @@ def test_depth_buffer_object():
     (np.zeros((2, 4, 3)), "shape"),
     ([[1, 2]], "shape"),
     ("triangles", "real numbers"),
-    (np.full((1, 3, 3), 1e300), "beyond"),
 ])
 def test_bad_vertices(bad, match):
     fb = sl.FrameBuffer(8, 8)
     with pytest.raises(sl.ScanlineError, match=match):
         sl.draw.triangles(fb, bad)
+
+
+def test_far_vertices_are_drawn_not_refused():
+    # any finite coordinate is drawn (issue 11; refused before): a triangle at 1e300
+    # collapsed to a point covers nothing, one reaching 1e300 covers the frame's part
+    # of it (tests/hardening/test_far_coordinates.py checks depths and colors)
+    fb = sl.FrameBuffer(8, 8)
+    sl.draw.triangles(fb, np.full((1, 3, 3), 1e300))
+    assert not fb.to_array().any()
+    sl.draw.triangles(fb, [[(0, 0, 0), (1e300, 0, 0), (0, 1e300, 0)]])
+    assert fb.to_array().any(axis=2).sum() == 8 * 8 - 8      # the bottom row is an edge
 
 
 def test_bad_depth_buffers_and_modes():

@@ -27,12 +27,29 @@ def _vertices(vertices):
         raise ArgumentValueError(
             f"vertices[{row}] = {tri[row].tolist()} is not finite; give finite device "
             "coordinates (clip 3-D geometry first: sl.render does, before the divide)")
-    big = np.abs(tri[:, :, :2]).max() if len(tri) else 0.0
-    if big > v.COORD_LIMIT:
-        raise ArgumentValueError(
-            f"vertices hold a device coordinate of {big:g}, beyond the range "
-            f"[-{v.COORD_LIMIT}, {v.COORD_LIMIT}]")
     return v.kernel_array(tri)
+
+
+def _far(tri, q, att):
+    """Triangles with a vertex beyond the kernels' exact range clipped to the guard
+    square in screen space (:func:`scanline.geometry.guard.triangles`) and cut into
+    triangles again; depth, 1/w and the attributes times 1/w are linear on the
+    screen, so they are interpolated exactly where an edge is cut (the attributes
+    are divided by 1/w again afterwards).  Triangles within the range are kept as
+    they are, in their order."""
+    from ..geometry import guard
+
+    far = np.abs(tri[:, :, :2]).max(axis=(1, 2)) > v.COORD_LIMIT
+    if not far.any():
+        return tri, q, att
+    rows = np.concatenate([tri, q[:, :, None], att * q[:, :, None]], axis=2)
+    pieces, owner = guard.triangles(rows[far])
+    keep = np.flatnonzero(~far)
+    where = np.concatenate([keep, np.flatnonzero(far)[owner]])
+    rows = np.concatenate([rows[keep], pieces])[np.argsort(where, kind="stable")]
+    q = rows[:, :, 3]
+    return (v.kernel_array(rows[:, :, :3]), v.kernel_array(q),
+            v.kernel_array(rows[:, :, 4:] / q[:, :, None]))
 
 
 def _inverse_w(w, n):
@@ -139,6 +156,9 @@ def triangles(fb, vertices, colors=None, depth=None, *, w=None):
 
     Notes
     -----
+    Any finite device coordinates are drawn: a triangle reaching beyond the kernels'
+    exact range (+-2**30) is first clipped to a guard square far outside the frame
+    buffer, its cut edges found exactly, as the polygon fill does.
     A pixel belongs to a triangle iff its center is inside, a center exactly on an
     edge following the top-left rule of :func:`scanline.draw.polygon`: the kernel
     evaluates the same edge crossings, so a triangle covers exactly the polygon
@@ -180,5 +200,7 @@ def triangles(fb, vertices, colors=None, depth=None, *, w=None):
     zbuf = None if depth is None else depth_argument(fb, depth)
     if n == 0:
         return
+    tri, q, att = _far(tri, q, att)
     buf = fb._raster()[0]
-    rasterize(fb.width, fb.height, tri, q, att, np.zeros(n, np.int64), zbuf=zbuf, buf=buf)
+    rasterize(fb.width, fb.height, tri, q, att, np.zeros(len(tri), np.int64), zbuf=zbuf,
+              buf=buf)

@@ -47,25 +47,33 @@ def far(verts):
 
 
 def _cross(a, b, axis, bound):
-    """The points where the segments a[i]-b[i] (rows (x, y)) meet the line
-    p[axis] = bound (each segment crosses it)."""
+    """The points where the segments a[i]-b[i] (rows (x, y, ...)) meet the line
+    p[axis] = bound (each segment crosses it); columns after the first two (values
+    linear along the segment, such as depths) are interpolated at the same point."""
     o = 1 - axis
     out = np.empty_like(a)
-    out[:, axis] = bound
     with np.errstate(all="ignore"):
         t = (bound - a[:, axis]) / (b[:, axis] - a[:, axis])
-        out[:, o] = a[:, o] + t * (b[:, o] - a[:, o])
-    big = np.flatnonzero(np.maximum(np.abs(a).max(axis=1), np.abs(b).max(axis=1)) > EXACT_FROM)
+    big = np.flatnonzero(np.maximum(np.abs(a[:, :2]).max(axis=1),
+                                    np.abs(b[:, :2]).max(axis=1)) > EXACT_FROM)
+    exact = {}
     for i in big.tolist():
-        ai, bi = a[i].tolist(), b[i].tolist()
-        t = (Fraction(bound) - Fraction(ai[axis])) / (Fraction(bi[axis]) - Fraction(ai[axis]))
-        out[i, o] = float(Fraction(ai[o]) + t * (Fraction(bi[o]) - Fraction(ai[o])))
+        ai, bi = a[i, :2].tolist(), b[i, :2].tolist()
+        r = (Fraction(bound) - Fraction(ai[axis])) / (Fraction(bi[axis]) - Fraction(ai[axis]))
+        t[i] = float(r)
+        exact[i] = float(Fraction(ai[o]) + r * (Fraction(bi[o]) - Fraction(ai[o])))
+    with np.errstate(all="ignore"):
+        out[:] = a + t[:, None] * (b - a)
+    out[:, axis] = bound
+    for i, value in exact.items():
+        out[i, o] = value
     return out
 
 
 def ring(points):
     """The (N, 2) closed contour ``points`` clipped to the guard square
-    (Sutherland-Hodgman, one side after another); may come back empty."""
+    (Sutherland-Hodgman, one side after another); may come back empty.  Columns
+    after the first two are carried along, interpolated where an edge is cut."""
     p = points
     for axis, sign in _SIDES:
         if len(p) == 0:
@@ -79,10 +87,27 @@ def ring(points):
         cut = np.zeros_like(p)
         cut[crossing] = _cross(prev[crossing], p[crossing], axis, sign * GUARD)
         # each vertex emits [the crossing of the edge reaching it] + [itself if inside]
-        pair = np.stack([cut, p], axis=1).reshape(-1, 2)
+        pair = np.stack([cut, p], axis=1).reshape(-1, p.shape[1])
         keep = np.stack([crossing, inside], axis=1).reshape(-1)
         p = pair[keep]
     return np.ascontiguousarray(p, np.float64)
+
+
+def triangles(rows):
+    """Far triangles clipped to the guard square and cut again into triangles:
+    ``rows`` (N, 3, K) per vertex x, y and K - 2 values linear on the screen (depth,
+    1/w, attributes times 1/w).  Returns ``(rows, owner)``: the pieces (M, 3, K), a
+    fan of each clipped triangle (their shared edges inside it, so each pixel is
+    still covered once), and the triangle each comes from."""
+    out, owner = [], []
+    for i in range(len(rows)):
+        r = ring(rows[i])
+        for j in range(1, len(r) - 1):
+            out.append(np.stack([r[0], r[j], r[j + 1]]))
+            owner.append(i)
+    shape = (0,) + rows.shape[1:]
+    return (np.array(out, np.float64).reshape(-1, *rows.shape[1:]) if out else np.empty(shape),
+            np.array(owner, np.int64))
 
 
 def areas(verts, offsets, polys):

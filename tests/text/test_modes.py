@@ -75,6 +75,19 @@ def test_text_far_outside_is_clipped():
 
 
 @pytest.mark.parametrize("font", ["sans", "stroke", "bitmap"])
+def test_text_at_any_finite_reference_point(font):
+    # refused beyond +-2**30 before (issue 11: any finite coordinate is drawn): far
+    # away, nothing of it reaches the frame; the same string near it does
+    fb = sl.FrameBuffer(40, 20)
+    for x, y in ((1e12, 5), (-1e12, 5), (3, 1e300), (-1e300, -1e300), (2**31, 2**31)):
+        for angle in (0.0, 0.7):
+            sl.draw.text(fb, x, y, "far text", font=font, height=12, angle=angle)
+    assert fb.to_array().sum() == 0
+    sl.draw.text(fb, 2, 5, "far text", font=font, height=12)
+    assert fb.to_array().sum() > 0
+
+
+@pytest.mark.parametrize("font", ["sans", "stroke", "bitmap"])
 @pytest.mark.parametrize("antialias", [False, True])
 def test_huge_text_at_the_edge_of_the_coordinate_range(font, antialias):
     fb = sl.FrameBuffer(30, 30, mode="L")

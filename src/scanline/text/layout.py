@@ -198,10 +198,8 @@ def _vertical(font, gids, line, nlines, style, sx, sy, gap):
 
 def place(text, x, y, style):
     """Place ``text`` at reference point ``(x, y)`` with a resolved ``style``."""
-    x = v.number("x", x)
-    y = v.number("y", y)
-    if abs(x) > v.COORD_LIMIT or abs(y) > v.COORD_LIMIT:
-        v.coordinate("x", x), v.coordinate("y", y)
+    x = v.number("x", x)          # any finite reference point (origins far away are
+    y = v.number("y", y)          # kept at the range's edge below: nothing is drawn)
     font = resolve_font(style.font)
     codes = codes_of(text)
     if "\n" in text:

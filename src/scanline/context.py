@@ -274,7 +274,7 @@ class Context:
         if isinstance(clip, tuple) and not (clip[0] <= clip[2] and clip[1] <= clip[3]):
             return  # empty clip region
         prim = p.Primitive(kind, geometry, attributes, None).transformed(self._state.ctm)
-        draw_primitive(prim, clip, self._device, kind)
+        draw_primitive(prim, clip, self._device)
 
     def line(self, x0, y0, x1, y1):
         """Stroke the segment (x0, y0)-(x1, y1) with the line attributes."""

@@ -231,13 +231,31 @@ def test_segment_transformation_acts_in_ndc():
     assert v.lines().tolist() == [[25.0, 25.0, 75.0, 75.0]]
 
 
-def test_coordinates_beyond_the_device_range_are_refused():
+def test_coordinates_beyond_the_device_range_are_drawn_and_overflow_is_refused():
+    # any finite device coordinate is drawn (issue 11; refused before): a segment
+    # scaled to 1e12 is clipped through the guard as sl.draw clips it, in order with
+    # its neighbours; a mapping that overflows to inf is refused by name
     df = pixel_file()
     df.create_segment("s")
     df.polyline([(0, 0), (10, 10)])
+    df.polyline([(0, 0), (0, 5)])                 # a run of two: the batch path
+    df.polygon([(0, 0), (3, 0), (0, 3)])
+    df.polyline([(1, 0), (1, 5)])
     df.close_segment()
     df.set_transformation("s", sl.transform.scaling(1e12))
-    with pytest.raises(sl.ArgumentValueError, match="segment 's', primitive 0"):
+    fb = raster(df)
+    ref = sl.FrameBuffer(fb.width, fb.height, mode=fb.mode)
+    sl.draw.polyline(ref, [(0, 0), (1e13, 1e13)], color="white")
+    sl.draw.polyline(ref, [(0, 0), (0, 5e12)], color="white")
+    sl.draw.polygon(ref, [(0, 0), (3e12, 0), (0, 3e12)], color="white")
+    sl.draw.polyline(ref, [(1e12, 0), (1e12, 5e12)], color="white")
+    assert np.array_equal(fb.to_array(), ref.to_array()) and fb.to_array().any()
+    df = pixel_file()
+    df.create_segment("t")
+    df.polyline([(0, 0), (1e9, 1e9)])
+    df.close_segment()
+    df.set_transformation("t", sl.transform.scaling(1e300))       # 1e309: inf
+    with pytest.raises(sl.ArgumentValueError, match="segment 't', primitive 0.*overflow"):
         raster(df)
 
 

@@ -19,6 +19,7 @@ import numpy as np
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError, ScanlineError
+from ..geometry import guard
 from . import batch, pipeline, text, three_d
 from .primitives import THIN, Primitive
 from .viewing import device_rectangle, workstation
@@ -33,59 +34,75 @@ CLIP_TOLERANCE = 1e-9
 HIGHLIGHT_MARGIN = 2.0
 
 
-def _check_range(points, where):
-    if points.size and not (np.abs(points) <= v.COORD_LIMIT).all():
+def _finite(points):
+    """``points`` (device coordinates) when finite; a mapping that overflowed is
+    refused by name."""
+    if points.size and not np.isfinite(points).all():
         raise ArgumentValueError(
-            f"{where} maps to device coordinates beyond +-{v.COORD_LIMIT} (for example "
-            f"{points[~(np.abs(points) <= v.COORD_LIMIT).all(axis=1)][0].tolist()}); "
-            "use a smaller segment transformation or window"
-        )
+            "maps to device coordinates that overflow (for example "
+            f"{points[~np.isfinite(points).all(axis=1)][0].tolist()}); use a smaller "
+            "segment transformation or window")
+    return points
+
+
+def _guarded_contour(c):
+    """A fill contour reaching beyond the kernels' exact range (+-2**30) clipped to
+    the guard square first (:func:`scanline.geometry.guard.ring`: exact crossings,
+    windings kept inside it), so that any finite device coordinate is drawn."""
+    return guard.ring(c) if guard.far(_finite(c)) else c
+
+
+def _clip_polyline(points, closed, rect):
+    """:func:`pipeline.polylines` of a polyline, whose far parts are cut at the guard
+    square first (:func:`scanline.geometry.guard.paths`)."""
+    if not guard.far(_finite(points)):
+        return pipeline.polylines(points, closed, rect)
+    verts, offsets, _, _ = guard.paths(points, np.array([0, len(points)]),
+                                       np.array([closed]))
+    pieces = [q for a, b in zip(offsets[:-1], offsets[1:])
+              for q in pipeline.polylines(verts[a:b], False, rect)[0]]
+    return pieces, False
 
 
 def _line(color):
     return {"color": color, "style": THIN}
 
 
-def _area(prim, rect, device, where):
+def _area(prim, rect, device):
     """Fill (and edge) an area given as contours; return the pieces drawn."""
     a = prim.attributes
     cs = prim.geometry["contours"]
-    for c in cs:
-        _check_range(c, where)
-    clipped = pipeline.contours(cs, rect)
+    clipped = pipeline.contours([_guarded_contour(c) for c in cs], rect)
     if not clipped:
         return []
     device.fill(clipped, a)
     if a.get("edge") is not None:  # the area's own boundary, clipped as lines: no
         for c in cs:                 # edges along the clip window
-            pieces, closed = pipeline.polylines(c, True, rect)
+            pieces, closed = _clip_polyline(c, True, rect)
             if pieces:
                 device.stroke(pieces, closed, a["edge"])
     return clipped
 
 
-def draw_primitive(prim, rect, device, where):
+def draw_primitive(prim, rect, device):
     """Draw one primitive (already in device coordinates) clipped to ``rect`` (a
     rectangle or a convex polygon, see :func:`pipeline.inside`); return the point
-    arrays drawn, for the highlight frame.  ``where`` names it in error messages."""
+    arrays drawn, for the highlight frame."""
     kind, g, a = prim.kind, prim.geometry, prim.attributes
     if kind == "ellipse":
         ring = pipeline.ellipse_points(g["center"], g["axes"])
         if a["fill"]:
-            return _area(Primitive("polygon", {"contours": [ring]}, a, None),
-                         rect, device, where)
+            return _area(Primitive("polygon", {"contours": [ring]}, a, None), rect, device)
         g, kind = {"points": ring}, "polyline"
     if kind == "polyline":
-        _check_range(g["points"], where)
-        pieces, closed = pipeline.polylines(g["points"], a["closed"], rect)
+        pieces, closed = _clip_polyline(g["points"], a["closed"], rect)
         if pieces:
             device.stroke(pieces, closed, a)
         return pieces
     if kind == "polygon":
-        return _area(prim, rect, device, where)
+        return _area(prim, rect, device)
     if kind == "markers":
-        _check_range(g["points"], where)
-        pts = g["points"]
+        pts = _finite(g["points"])
         segments = pipeline.marker_segments(pts[pipeline.inside(pts, rect)], a["kind"],
                                             a["size"])
         pieces = [s.reshape(2, 2) for s in segments]
@@ -93,7 +110,7 @@ def draw_primitive(prim, rect, device, where):
         if pieces:
             device.stroke(pieces, False, _line(a["color"]))
         return pieces
-    _check_range(g["anchor"][None], where)
+    _finite(g["anchor"][None])
     return text.draw(prim, rect, device)
 
 
@@ -161,18 +178,19 @@ def draw_run(seg, start, run, same, m, rect, device):
     ``seg``), mapped by ``m`` and clipped to ``rect``; return the point arrays drawn."""
     drawn = []
     if len(run) > 1:
-        pts, bad = (batch.lines if same[0] == "lines" else batch.areas)(run, m, rect, device)
-        drawn += pts
-        if bad is None:
-            return drawn
-        start, run = start + bad, run[bad:bad + 1]  # raises the range error
-    where = f"segment {seg.name!r}, primitive {start} ({run[0].kind})"
-    try:
-        drawn += draw_primitive(run[0].transformed(m), rect, device, where)
-    except ScanlineError as error:
-        if str(error).startswith(where):
-            raise
-        raise type(error)(f"{where}: {error}") from None
+        pts, far = (batch.lines if same[0] == "lines" else batch.areas)(run, m, rect, device)
+        if far is None:
+            return pts
+        # a primitive reaches beyond the exact range: the run drawn one by one, in
+        # order, each far one through the guard (nothing of the run was drawn yet)
+    for i, prim in enumerate(run):
+        where = f"segment {seg.name!r}, primitive {start + i} ({prim.kind})"
+        try:
+            drawn += draw_primitive(prim.transformed(m), rect, device)
+        except ScanlineError as error:
+            if str(error).startswith(where):
+                raise
+            raise type(error)(f"{where}: {error}") from None
     return drawn
 
 

@@ -214,8 +214,7 @@ def pick(display_file, x, y, aperture, device):
             rect = clip_rectangle(prim, ws, frame)
             if rect is None:
                 continue
-            draw_primitive(prim.transformed(m), rect, probe,
-                           f"segment {seg.name!r}, primitive {i} ({prim.kind})")
+            draw_primitive(prim.transformed(m), rect, probe)
             if probe.hit:
                 return Pick(seg.name, prim.pick_id)
     return None

@@ -111,8 +111,9 @@ def coordinate(name: str, value: object) -> int:
         return v
     raise ArgumentValueError(
         f"{name}={_show(value)} is outside the supported coordinate range "
-        f"[-{COORD_LIMIT}, {COORD_LIMIT}]; anything drawn beyond the frame buffer is "
-        "clipped anyway"
+        f"[-{COORD_LIMIT}, {COORD_LIMIT}] of a pixel position (a seed, a pixel read or "
+        "written, a block of pixels, a pattern's reference point, a step table's "
+        "points); give one within it"
     )
 
 

@@ -199,6 +199,15 @@ def test_far_triangles_are_drawn_with_their_depth_and_perspective_colors(xy):
     assert {(x, y) for y, x in zip(*np.nonzero(got.any(axis=2)))} == lit(ref)
     (x0, y0), (x1, y1), (x2, y2) = [(Fraction(a), Fraction(b)) for a, b in xy]
     area = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0)
+    # and independently: every pixel center strictly inside the exact triangle is
+    # drawn, every one strictly outside is not (centers on an edge: the tie rule)
+    for x in range(w):
+        for y in range(h):
+            l1 = ((x - x0) * (y2 - y0) - (x2 - x0) * (y - y0)) / area
+            l2 = ((x1 - x0) * (y - y0) - (x - x0) * (y1 - y0)) / area
+            lam = (1 - l1 - l2, l1, l2)
+            if min(lam) != 0:
+                assert got[y, x].any() == (min(lam) > 0), (x, y)
     zs = depth.to_array()[::-1]
     for x, y in lit(ref):
         l1 = ((x - x0) * (y2 - y0) - (x2 - x0) * (y - y0)) / area

@@ -241,6 +241,9 @@ def test_dask_workers_send_lz4_compressed_pixels(monkeypatch):
     assert all(isinstance(p[0], render_module.Compressed) for p in sent)
     assert sum(len(p[0].data) for p in sent) < sum(a.nbytes for a in serial) / 4
     assert lz4.decompress(sent[0][0].data) == np.ascontiguousarray(serial[0]).tobytes()
+    # frame 1 is a frame buffer: compressed from its storage, bottom row first
+    assert sent[1][0].bottom_up and not sent[0][0].bottom_up
+    assert lz4.decompress(sent[1][0].data) == np.ascontiguousarray(serial[1][::-1]).tobytes()
     raw = render_module.render_chunk(mixed, range(10))
     monkeypatch.setattr(render_module, "_lz4", lambda: None)        # lz4 not installed
     assert all(isinstance(p[0], np.ndarray) for p in
@@ -250,6 +253,36 @@ def test_dask_workers_send_lz4_compressed_pixels(monkeypatch):
         np.testing.assert_array_equal(a, np.asarray(render_module.unpack(packed)))
     for a, packed in zip(serial, raw):
         np.testing.assert_array_equal(a, np.asarray(render_module.unpack(packed)))
+
+
+_SHARED_FB = {}
+
+
+def redrawn(i):
+    """Every frame drawn into one frame buffer, returned each time (picklable)."""
+    fb = _SHARED_FB.setdefault("fb", sl.FrameBuffer(24, 16, background="white"))
+    fb.clear()
+    sl.draw.fill_circle(fb, 2 + 2 * i, 8, 4, color="navy")
+    return fb
+
+
+def test_a_frame_buffer_drawn_again_for_each_frame_gives_every_frame(monkeypatch):
+    """The pixels a worker sends are taken from the frame before the next frame is
+    drawn, whether they are compressed, put in shared memory or sent by the pipe."""
+    serial = [np.asarray(im) for im in Animation(redrawn, frames=8, fps=4).images()]
+    assert len({a.tobytes() for a in serial}) == 8
+    shipped = [render_module.render_chunk(redrawn, range(8))]
+    if render_module._lz4() is not None:
+        shipped.append(render_module.render_chunk(redrawn, range(8), compress=True))
+    slots = render_module._Slots(1)
+    shipped.append(render_module.render_chunk(redrawn, range(8), slots=slots, slot=0))
+    for packed in shipped:
+        images = [render_module.unpack(p, slots.memory) for p in packed]
+        assert [np.asarray(im).tobytes() for im in images] == [a.tobytes() for a in serial]
+    for slot in (render_module.SLOT_BYTES, 500):
+        monkeypatch.setattr(render_module, "SLOT_BYTES", slot)
+        images = list(Animation(redrawn, frames=8, fps=4).images(jobs=2))
+        assert [np.asarray(im).tobytes() for im in images] == [a.tobytes() for a in serial]
 
 
 @pytest.mark.parametrize("n, parts", [(0, 2), (1, 2), (3, 2), (200, 2), (1000, 4), (57, 1)])

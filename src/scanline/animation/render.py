@@ -77,17 +77,30 @@ def to_image(frame, index=None):
     return image
 
 
-def render_chunk(render, indices, compress=False):
+def render_chunk(render, indices, compress=False, slots=None, slot=None):
     """Render the frames ``indices`` with ``render`` (what one worker does with one
-    chunk): a list of packed frames, see :func:`pack`; with ``compress`` (a Dask
-    worker sending to a client that can read LZ4), their pixels LZ4-compressed."""
-    with one_thread():
-        packed = [pack(render(int(i)), int(i)) for i in indices]
+    chunk): a list of packed frames, see :func:`pack`.  Each frame's pixels are taken
+    away before the next frame is rendered (a render function may draw every frame
+    into one frame buffer): with ``compress`` (a Dask worker sending to a client that
+    can read LZ4) LZ4-compressed, with ``slots`` copied into the shared memory of
+    ``slot`` (see :class:`_Slots`), else copied.  A frame buffer's pixels are read
+    where they are, never copied first: a Dask worker's process gives freed memory
+    back to the system at once (Dask's nanny sets ``MALLOC_TRIM_THRESHOLD_``), so
+    every megabyte copied is a megabyte of fresh pages, about 2 ms of a 640 x 480
+    frame's 20 in page faults for the copy and the frame buffer together."""
     lz4 = _lz4() if compress else None
-    if lz4 is None:
-        return packed
-    return [(Compressed(lz4.compress(np.ascontiguousarray(pixels), store_size=True),
-                        pixels.shape, pixels.dtype.str), *rest) for pixels, *rest in packed]
+    out, offset = [], None if slots is None else slot * SLOT_BYTES
+    with one_thread():
+        for i in indices:
+            pixels, *rest = pack(render(int(i)), int(i))
+            if lz4 is not None:
+                pixels = Compressed.of(lz4, pixels)
+            elif slots is not None and slots.fits(pixels, offset, slot):
+                pixels, offset = slots.put(pixels, offset), offset + pixels.nbytes
+            else:
+                pixels = np.array(pixels)
+            out.append((pixels, *rest))
+    return out
 
 
 def _lz4():
@@ -111,10 +124,24 @@ class Compressed(typing.NamedTuple):
     """A frame's pixels LZ4-compressed for the network.  The frames of a drawn scene
     are mostly flat color: a 640 x 480 RGB frame of a few hundred primitives is about
     12 times smaller, compressed in about 0.3 ms and decompressed in less, while
-    sending its 0.9 MB between processes costs each side more (Collet, LZ4, 2011)."""
+    sending its 0.9 MB between processes costs each side more (Collet, LZ4, 2011).
+    ``bottom_up``: the rows are stored bottom row first, as a frame buffer keeps
+    them (compressed from its storage without a copy; Pillow's raw decoder turns
+    them over as it reads them)."""
     data: bytes
     shape: tuple
     dtype: str
+    bottom_up: bool = False
+
+    @classmethod
+    def of(cls, lz4, pixels):
+        """``pixels`` (an image-order array) compressed with the ``lz4.block``
+        module, from the bottom-up storage they view where they are one."""
+        flipped = pixels[::-1]
+        bottom_up = pixels.strides[0] < 0 and flipped.flags.c_contiguous
+        stored = flipped if bottom_up else np.ascontiguousarray(pixels)
+        return cls(lz4.compress(stored, store_size=True), pixels.shape, pixels.dtype.str,
+                   bool(bottom_up))
 
 
 #: Frame buffer modes whose pixels (``FrameBuffer.to_array``) are their Pillow image's.
@@ -125,11 +152,13 @@ def pack(frame, index=None):
     """A frame (anything :func:`to_image` takes) as (pixels, mode, palette, info): a
     numpy array travels between processes without the copies a pickled image takes
     (and Dask sends it as one buffer).  A frame buffer of mode "L", "RGB" or "RGBA"
-    is sent as its pixels, without making its Pillow image first."""
+    is sent as its pixels, without making its Pillow image first: ``pixels`` is then
+    a read-only view of the frame buffer (``np.asarray``), valid until it is drawn
+    on again."""
     from ..framebuffer import FrameBuffer
 
     if isinstance(frame, FrameBuffer) and frame.mode in _DIRECT:
-        return frame.to_array(), frame.mode, None, {}
+        return np.asarray(frame), frame.mode, None, {}
     image = to_image(frame, index)
     palette = image.getpalette() if image.mode == "P" else None
     return np.asarray(image), image.mode, palette, dict(image.info)
@@ -142,10 +171,13 @@ def unpack(packed, memory=None):
     if isinstance(pixels, InMemory):
         pixels = np.ndarray(pixels.shape, pixels.dtype, buffer=memory, offset=pixels.offset)
     elif isinstance(pixels, Compressed):
-        pixels = np.frombuffer(_lz4().decompress(pixels.data),
-                               pixels.dtype).reshape(pixels.shape)
-    image = Image.frombytes(mode, (pixels.shape[1], pixels.shape[0]),
-                            np.ascontiguousarray(pixels).data)
+        h, w = pixels.shape[:2]
+        image = Image.frombytes(mode, (w, h), _lz4().decompress(pixels.data), "raw", mode,
+                                0, -1 if pixels.bottom_up else 1)
+        pixels = None
+    if pixels is not None:
+        image = Image.frombytes(mode, (pixels.shape[1], pixels.shape[0]),
+                                np.ascontiguousarray(pixels).data)
     if palette is not None:
         image.putpalette(palette)
     image.info.update(info)
@@ -206,18 +238,14 @@ class _Slots:
         self.count = count
         self.memory = mmap.mmap(-1, count * SLOT_BYTES)
 
-    def put(self, packed, slot):
-        """``packed`` frames with their pixels moved into ``slot`` (worker side)."""
-        offset, end = slot * SLOT_BYTES, (slot + 1) * SLOT_BYTES
-        out = []
-        for pixels, *rest in packed:
-            if offset + pixels.nbytes <= end:
-                np.ndarray(pixels.shape, pixels.dtype, buffer=self.memory,
-                           offset=offset)[...] = pixels
-                where = InMemory(offset, pixels.shape, pixels.dtype.str)
-                pixels, offset = where, offset + pixels.nbytes
-            out.append((pixels, *rest))
-        return out
+    def fits(self, pixels, offset, slot):
+        """Whether ``pixels`` fit in ``slot`` from ``offset`` on."""
+        return offset + pixels.nbytes <= (slot + 1) * SLOT_BYTES
+
+    def put(self, pixels, offset):
+        """``pixels`` copied to ``offset`` (worker side): where they are now."""
+        np.ndarray(pixels.shape, pixels.dtype, buffer=self.memory, offset=offset)[...] = pixels
+        return InMemory(offset, pixels.shape, pixels.dtype.str)
 
 
 #: Bytes of shared address space for the frames of one chunk in flight (64 MB: 16
@@ -247,8 +275,7 @@ def _worker_chunk(indices, slot=None):
     if _WORKER_ERROR is not None:
         raise ArgumentValueError(f"the render function could not be loaded in a worker "
                                  f"process ({_WORKER_ERROR}); render with jobs=1")
-    packed = render_chunk(_WORKER_RENDER, indices)
-    return packed if slot is None else _WORKER_SLOTS.put(packed, slot)
+    return render_chunk(_WORKER_RENDER, indices, slots=_WORKER_SLOTS, slot=slot)
 
 
 def _context():

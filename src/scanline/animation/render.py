@@ -168,16 +168,14 @@ def unpack(packed, memory=None):
     """The Pillow image of a :func:`pack` (whose pixels may have been put in the
     shared ``memory`` of :class:`_Slots`: they are copied out)."""
     pixels, mode, palette, info = packed
-    if isinstance(pixels, InMemory):
-        pixels = np.ndarray(pixels.shape, pixels.dtype, buffer=memory, offset=pixels.offset)
-    elif isinstance(pixels, Compressed):
-        h, w = pixels.shape[:2]
-        image = Image.frombytes(mode, (w, h), _lz4().decompress(pixels.data), "raw", mode,
-                                0, -1 if pixels.bottom_up else 1)
-        pixels = None
-    if pixels is not None:
-        image = Image.frombytes(mode, (pixels.shape[1], pixels.shape[0]),
-                                np.ascontiguousarray(pixels).data)
+    h, w = pixels.shape[:2]
+    if isinstance(pixels, Compressed):
+        data, orientation = _lz4().decompress(pixels.data), -1 if pixels.bottom_up else 1
+    else:
+        if isinstance(pixels, InMemory):
+            pixels = np.ndarray(pixels.shape, pixels.dtype, buffer=memory, offset=pixels.offset)
+        data, orientation = np.ascontiguousarray(pixels).data, 1
+    image = Image.frombytes(mode, (w, h), data, "raw", mode, 0, orientation)
     if palette is not None:
         image.putpalette(palette)
     image.info.update(info)

@@ -39,7 +39,7 @@ import numpy as np
 from ._jit import helper, inline, kernel
 
 #: Rows per band (a power of two) and its shift.
-BAND_SHIFT = 6
+BAND_SHIFT = 5
 BAND = 1 << BAND_SHIFT
 
 #: The widest box (pixels) the work estimate of :func:`bin_triangles` counts: a
@@ -72,9 +72,10 @@ def bin_triangles(tri, height, rows, starts, order):
     input order, the triangles whose rows meet band ``b``; ``rows[t]`` = (first
     row, last row) of triangle ``t`` clamped to the raster (first > last: none).
     ``order``'s capacity must be at least the sum over triangles of the bands they
-    meet (:func:`band_entries`).  Returns the summed areas of the triangles' boxes
-    (rows met times their x extent plus one, at most :data:`WIDEST` pixels): the
-    work estimate of :func:`raster_triangles`."""
+    meet (:func:`band_entries`; else nothing is listed and -1 is returned: a guess
+    of the capacity spares that pass where it holds).  Returns the summed areas of
+    the triangles' boxes (rows met times their x extent plus one, at most
+    :data:`WIDEST` pixels): the work estimate of :func:`raster_triangles`."""
     n = tri.shape[0]
     bands = starts.shape[0] - 1
     for b in range(bands + 1):
@@ -100,6 +101,8 @@ def bin_triangles(tri, height, rows, starts, order):
             area += (r1 - r0 + 1) * min(wide, WIDEST)
     for b in range(bands):
         starts[b + 1] += starts[b]
+    if starts[bands] > order.shape[0]:
+        return -1.0
     fill = np.empty(bands, np.int64)
     for b in range(bands):
         fill[b] = starts[b]

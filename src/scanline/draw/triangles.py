@@ -109,9 +109,12 @@ def rasterize(width, height, tri, q, att, ids, zbuf=None, buf=None, abuf=None, i
     bands = ((height - 1) >> k.BAND_SHIFT) + 1
     rows = np.empty((n, 2), np.int64)
     starts = np.empty(bands + 1, np.int64)
-    entries = call(k.band_entries, 2 * n, tri, height)
-    order = np.empty(entries, np.int64)
+    # most triangles meet one or two bands: that many entries first, counted if short
+    order = np.empty(2 * n + bands, np.int64)
     area = call(k.bin_triangles, 4 * n, tri, height, rows, starts, order)
+    if area < 0:
+        order = np.empty(call(k.band_entries, 2 * n, tri, height), np.int64)
+        area = call(k.bin_triangles, 4 * n, tri, height, rows, starts, order)
     kk = att.shape[2]
     if buf is not None:
         out = token(k.COLOR)

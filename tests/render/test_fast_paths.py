@@ -238,3 +238,23 @@ def test_the_work_estimate_counts_the_boxes():
     # rows 1..10 (the bottom edge on row 0 is outside), 11 pixels wide; the point
     # covers no row
     assert area == 10 * 11.0 and rows.tolist() == [[1, 10], [6, 5]]
+
+
+@pytest.mark.parametrize("ids_only", [False, True])
+def test_a_far_vertex_reaching_the_rasterizer_does_not_crash(ids_only):
+    # the float -> int conversions of the kernel are clamped first (an out-of-range
+    # conversion is undefined in compiled code): a vertex at 1e300 given straight to
+    # the kernel, past the API's guard, draws the triangle's part in the raster only
+    from scanline.draw.triangles import rasterize
+
+    tri = np.array([[(2.0, 2.0, 0.5), (1e300, 3.0, 0.5), (4.0, 1e300, 0.5)],
+                    [(-1e300, -1e300, 0.2), (30.0, 5.0, 0.2), (5.0, 30.0, 0.2)]])
+    w, h = 40, 30
+    zbuf = np.full((h, w), np.inf)
+    ids = np.full((h, w), -1, np.int64)
+    abuf = None if ids_only else np.zeros((h, w, 2))
+    rasterize(w, h, tri, np.ones((2, 3)), np.zeros((2, 3, 2)), np.arange(2, dtype=np.int64),
+              zbuf=zbuf, abuf=abuf, idbuf=ids, clear=True)
+    assert set(np.unique(ids)) <= {-1, 0, 1}
+    assert np.isfinite(zbuf[ids >= 0]).all()
+

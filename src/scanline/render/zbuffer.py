@@ -7,7 +7,9 @@ its depth z is computed (incrementally along the scan line, z' = z - A/C) and, i
 < depth(x, y), depth(x, y) = z and the pixel takes the surface's intensity.  Here the
 "intensity" written is the face index and the barycentric coordinates of the point
 (a visibility buffer), shaded once per pixel afterwards, so a covered-over fragment
-costs no lighting.
+costs no lighting.  Where the compiled shading draws the whole (opaque) scene, the
+intensity written is the triangle's index alone (:func:`visible_triangles`), and the
+shading finds the barycentrics from the triangle itself.
 
 Simple transparency (Hearn & Baker, section 14-5): opaque faces first; then the
 nearest transparent face in front of them at each pixel, blended I = (1 - k_t)

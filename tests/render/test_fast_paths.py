@@ -189,25 +189,40 @@ def test_extreme_exponents_stay_within_a_level_of_the_numpy_path(shininess):
     assert (got != want).mean() < 0.01
 
 
-def test_shading_calls_sharing_the_bands_write_every_pixel_once():
+@pytest.mark.parametrize("source", ["buffers", "triangles"])
+def test_shading_calls_sharing_the_bands_write_every_pixel_once(source):
     torus, cam = scene()
     sc = prepare(torus, cam, 50, 140)
     faces, bary, _ = visibility(sc)
     table, thresholds = gamma_tables(2.2)
+    from scanline.render.zbuffer import visible_triangles
     from scanline.shading.buffer import homogeneous_eye, material_rows, source_rows
 
     sources, ambient = source_rows([sl.lighting.AmbientLight(0.2),
                                     sl.lighting.DirectionalLight((0.4, -0.6, -1.0), 0.8)])
-    args = (faces, bary, sc.world, sc.vertex_normals,
-            np.ascontiguousarray(np.broadcast_to(sc.vertex_colors, sc.world.shape)),
-            sc.front, sc.face_mesh, material_rows(sc.materials), ambient, sources,
+    colors = np.ascontiguousarray(np.broadcast_to(sc.vertex_colors, sc.world.shape))
+    if source == "buffers":
+        given, inputs = faces, (bary, np.zeros((0, 5)), np.zeros(0, np.int64), sc.world,
+                                sc.vertex_normals, colors)
+    else:
+        # the triangles' ids and functions: the face and barycentrics found per pixel
+        given, _ = visible_triangles(sc)
+        attributes = np.empty((len(sc.face), 5 + 27))
+        ks.triangle_attributes(0, len(sc.face), sc.triangles, sc.inv_w, sc.bary, sc.face,
+                               sc.world, sc.vertex_normals, colors, sc.front, attributes,
+                               ks.SHADING["phong"])
+        inputs = (np.zeros((1, 1, 2)), attributes, sc.face, sc.world, sc.vertex_normals,
+                  colors)
+    rest = (sc.front, sc.face_mesh, material_rows(sc.materials), ambient, sources,
             homogeneous_eye(sc.eye), table, thresholds)
     images = []
     for steps in (1, 3):
         raster = np.zeros((140, 50, 3), np.uint8)
+        ids = given.copy()
         for start in range(steps):
-            ks.shade_pixels(start, steps, *args, raster, ks.SHADING["phong"],
-                            ks.SPECULAR["phong"], MODE["RGB"])
+            ks.shade_pixels(start, steps, ids, *inputs, *rest, raster, ks.SHADING["phong"],
+                            ks.SPECULAR["phong"], MODE["RGB"], ks.SOURCE[source])
+        assert np.array_equal(ids, faces)          # the faces (from the triangles' ids)
         images.append(raster)
     assert np.array_equal(images[0], images[1])
     assert (images[0].any(axis=2) == (faces >= 0)).mean() > 0.99
@@ -223,3 +238,23 @@ def test_the_work_estimate_counts_the_boxes():
     # rows 1..10 (the bottom edge on row 0 is outside), 11 pixels wide; the point
     # covers no row
     assert area == 10 * 11.0 and rows.tolist() == [[1, 10], [6, 5]]
+
+
+@pytest.mark.parametrize("ids_only", [False, True])
+def test_a_far_vertex_reaching_the_rasterizer_does_not_crash(ids_only):
+    # the float -> int conversions of the kernel are clamped first (an out-of-range
+    # conversion is undefined in compiled code): a vertex at 1e300 given straight to
+    # the kernel, past the API's guard, draws the triangle's part in the raster only
+    from scanline.draw.triangles import rasterize
+
+    tri = np.array([[(2.0, 2.0, 0.5), (1e300, 3.0, 0.5), (4.0, 1e300, 0.5)],
+                    [(-1e300, -1e300, 0.2), (30.0, 5.0, 0.2), (5.0, 30.0, 0.2)]])
+    w, h = 40, 30
+    zbuf = np.full((h, w), np.inf)
+    ids = np.full((h, w), -1, np.int64)
+    abuf = None if ids_only else np.zeros((h, w, 2))
+    rasterize(w, h, tri, np.ones((2, 3)), np.zeros((2, 3, 2)), np.arange(2, dtype=np.int64),
+              zbuf=zbuf, abuf=abuf, idbuf=ids, clear=True)
+    assert set(np.unique(ids)) <= {-1, 0, 1}
+    assert np.isfinite(zbuf[ids >= 0]).all()
+

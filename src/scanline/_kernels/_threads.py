@@ -9,11 +9,70 @@ reference counts from both cores (the triangle kernel ran slower on two threads 
 on one); separate calls own their arrays' counts."""
 
 import contextlib
+import os
+import queue
 import threading
 
-from ._jit import TWIN_WORK, call, in_background
+from ._jit import TWIN_WORK, WAIT, call
 
 _local = threading.local()
+
+
+class _Worker:
+    """A daemon thread kept for the calls of :func:`_together`: starting a thread
+    per call cost 0.05-1.5 ms (the new thread waits for the interpreter lock while
+    the last one ends), several times per frame.  It runs one task at a time, from
+    its queue."""
+
+    def __init__(self):
+        self.tasks = queue.SimpleQueue()
+        self.busy = False
+        self.thread = threading.Thread(target=self._run, daemon=True, name="scanline worker")
+        self.thread.start()
+
+    def _run(self):
+        while True:
+            fn, outcome, done = self.tasks.get()
+            try:
+                outcome.append((True, fn()))
+            except BaseException as error:      # handed to the waiter
+                outcome.append((False, error))
+            finally:
+                self.busy = False
+                done.set()
+
+
+_workers = []
+_workers_lock = threading.Lock()
+_workers_pid = [os.getpid()]
+
+
+def _submit(fn):
+    """Run ``fn()`` on an idle kept worker (a new one when none is idle: another
+    caller's, or one still finishing a call whose waiter was interrupted); returns a
+    function that waits for it in steps of :data:`~scanline._kernels._jit.WAIT`
+    seconds (so KeyboardInterrupt reaches the waiting thread at once; ``fn`` then
+    finishes in the background) and returns its result or raises its error."""
+    with _workers_lock:
+        if _workers_pid[0] != os.getpid():          # a forked child: no threads there
+            _workers.clear()
+            _workers_pid[0] = os.getpid()
+        worker = next((w for w in _workers if not w.busy), None)
+        if worker is None:
+            worker = _Worker()
+            _workers.append(worker)
+        worker.busy = True
+    outcome, done = [], threading.Event()
+    worker.tasks.put((fn, outcome, done))
+
+    def wait():
+        while not done.wait(WAIT):
+            pass
+        ok, value = outcome[0]
+        if not ok:
+            raise value
+        return value
+    return wait
 
 
 def threads():
@@ -41,11 +100,11 @@ def one_thread():
 
 def _together(calls):
     """The ``(kernel, work, *args)`` calls at once, through
-    :func:`scanline._kernels._jit.call`: the first in this thread, the others in
-    daemon threads (:func:`scanline._kernels._jit.in_background`: Ctrl-C reaches
-    the caller at once, the other calls finish in the background, as a long kernel
-    does).  Returns their results in order."""
-    waits = [in_background(c[0], lambda c=c: call(*c)) for c in calls[1:]]
+    :func:`scanline._kernels._jit.call`: the first in this thread, the others on
+    kept daemon threads (:func:`_submit`: Ctrl-C reaches the caller at once, the
+    other calls finish in the background, as a long kernel does).  Returns their
+    results in order."""
+    waits = [_submit(lambda c=c: call(*c)) for c in calls[1:]]
     first = call(*calls[0])
     return [first] + [wait() for wait in waits]
 

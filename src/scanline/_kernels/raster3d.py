@@ -39,7 +39,7 @@ import numpy as np
 from ._jit import helper, inline, kernel
 
 #: Rows per band (a power of two) and its shift.
-BAND_SHIFT = 6
+BAND_SHIFT = 5
 BAND = 1 << BAND_SHIFT
 
 #: The widest box (pixels) the work estimate of :func:`bin_triangles` counts: a
@@ -48,9 +48,12 @@ WIDEST = 4096.0
 
 #: Output tokens (``len(out)``): write 0..255 attribute values rounded into the frame
 #: buffer's bytes; write the float attributes and the triangle's id into attribute
-#: and id buffers (a visibility buffer, for deferred shading).
+#: and id buffers (a visibility buffer, for deferred shading); write the id alone
+#: (the attributes are found again from the triangle's functions where the pixel is
+#: shaded, :func:`scanline._kernels.shade.triangle_attributes`).
 COLOR = 1
 ATTRIBUTES = 2
+IDS = 3
 
 #: Depth tokens: test and write the depth buffer; draw in the given order; peel
 #: (write where the depth lies strictly between ``floor[y, x]`` and the depth
@@ -69,9 +72,10 @@ def bin_triangles(tri, height, rows, starts, order):
     input order, the triangles whose rows meet band ``b``; ``rows[t]`` = (first
     row, last row) of triangle ``t`` clamped to the raster (first > last: none).
     ``order``'s capacity must be at least the sum over triangles of the bands they
-    meet (:func:`band_entries`).  Returns the summed areas of the triangles' boxes
-    (rows met times their x extent plus one, at most :data:`WIDEST` pixels): the
-    work estimate of :func:`raster_triangles`."""
+    meet (:func:`band_entries`; else nothing is listed and -1 is returned: a guess
+    of the capacity spares that pass where it holds).  Returns the summed areas of
+    the triangles' boxes (rows met times their x extent plus one, at most
+    :data:`WIDEST` pixels): the work estimate of :func:`raster_triangles`."""
     n = tri.shape[0]
     bands = starts.shape[0] - 1
     for b in range(bands + 1):
@@ -97,6 +101,8 @@ def bin_triangles(tri, height, rows, starts, order):
             area += (r1 - r0 + 1) * min(wide, WIDEST)
     for b in range(bands):
         starts[b + 1] += starts[b]
+    if starts[bands] > order.shape[0]:
+        return -1.0
     fill = np.empty(bands, np.int64)
     for b in range(bands):
         fill[b] = starts[b]
@@ -264,6 +270,10 @@ def raster_entries(out, depth, tri, q, att, ids, order, e0, e1, rows, lo, hi, g,
                         z += dzdx
                         continue
                     zbuf[y, x] = z
+                if len(out) == IDS:
+                    idbuf[y, x] = face
+                    z += dzdx
+                    continue
                 i = x - kl
                 r = 1.0 if affine else 1.0 / (qs + dqdx * i)      # a * 1.0 is exact
                 if len(out) == COLOR:
@@ -292,7 +302,8 @@ def raster_triangles(start, step, out, depth, tri, q, att, ids, rows, starts, or
     :func:`bin_triangles`.  Writes ``zbuf`` (H, W) (depth token TEST; PEEL: only
     between ``floor`` (H, W) and ``zbuf``; CLEAR_TEST: each band cleared first, with
     ``idbuf``), and ``buf`` (H, W', K) bytes (out COLOR)
-    or ``abuf`` (H, W, K) and ``idbuf`` (H, W) (out ATTRIBUTES)."""
+    or ``abuf`` (H, W, K) and ``idbuf`` (H, W) (out ATTRIBUTES), or ``idbuf`` alone
+    (out IDS)."""
     height = zbuf.shape[0]
     bands = starts.shape[0] - 1
     g = np.empty((att.shape[2] + 2, 3))
@@ -303,8 +314,9 @@ def raster_triangles(start, step, out, depth, tri, q, att, ids, rows, starts, or
             for y in range(lo, hi + 1):
                 for x in range(zbuf.shape[1]):
                     zbuf[y, x] = math.inf
-                if len(out) == ATTRIBUTES:
+                if len(out) != COLOR:
                     for x in range(idbuf.shape[1]):
                         idbuf[y, x] = -1
         raster_entries(out, depth, tri, q, att, ids, order, starts[b], starts[b + 1], rows, lo,
                        hi, g, zbuf, floor, buf, abuf, idbuf)
+

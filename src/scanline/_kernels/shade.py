@@ -3,10 +3,26 @@ whose visible face and barycentric coordinates are known gets its intensity and 
 stored, gamma-encoded, in the frame buffer.  The rows are shared out in bands
 between calls running on several threads (:func:`shade_pixels` takes every
 step-th band; the API layer starts the threads, the kernel releases the GIL): a
-``prange`` kernel took 1.5 s more to compile.  Per pixel the illumination is written
-out in one row helper (a helper called per pixel with the light and material arrays
-cost 3x in reference counting), and a light at infinity's direction and attenuation
-are computed once per call.
+``prange`` kernel took 1.5 s more to compile.  A row is shaded in chunks of
+:data:`CHUNK` covered pixels: a first loop finds each pixel's face and barycentric
+coordinates and interpolates its attributes into a planar scratch array (one field
+after the other, :data:`FIELDS` of them), then the illumination runs over the chunk
+field by field, light after light, in loops without branches that the compiler
+turns into vector instructions (several pixels per instruction); the encoding and
+the store come last.  A light at infinity's direction and attenuation are computed
+once per call, and where every material has the same whole-number exponent n_s
+(the common case) s^n_s is found by repeated squaring instead of a power (equal to
+the power to a few units in the last place).
+
+Where a pixel's face and barycentrics come from (the ``source`` token):
+:data:`BUFFERS`, buffers of faces and barycentrics (H, W) and (H, W, 2) made by the
+rasterizer; or :data:`TRIANGLES`, a buffer of the drawn triangles' indices (the
+rasterizer's id buffer, :data:`scanline._kernels.raster3d.IDS`), with per triangle
+the screen-space functions of its attributes times 1/w and of 1/w
+(:func:`triangle_attributes`) and its face: the attributes are evaluated where the
+pixel is shaded, once, for the visible triangle only (the rasterizer then writes
+neither barycentrics nor a division per fragment), and the face's index replaces
+the triangle's in the buffer.
 
 Variants (tokens, one specialization each):
 
@@ -35,7 +51,8 @@ import math
 
 import numpy as np
 
-from ._jit import helper, kernel
+from ._jit import helper, inline, kernel
+from .raster3d import setup
 from .variants import GRAY, RGBA, token
 
 #: Rows per band of :func:`shade_pixels` (the bands are shaded in parallel).
@@ -45,10 +62,13 @@ VERTEX = 1
 PHONG = 2
 SPEC_PHONG = 1
 SPEC_BLINN = 2
+BUFFERS = 1
+TRIANGLES = 2
 
-#: Tokens of the shading method and of the specular term.
+#: Tokens of the shading method, of the specular term and of the pixels' source.
 SHADING = {"vertex": token(VERTEX), "phong": token(PHONG)}
 SPECULAR = {"phong": token(SPEC_PHONG), "blinn": token(SPEC_BLINN)}
+SOURCE = {"buffers": token(BUFFERS), "triangles": token(TRIANGLES)}
 
 
 #: The smallest highlight factor s^n_s evaluated: for s below SHINE_FLOOR^(1/n_s) the
@@ -60,8 +80,40 @@ SHINE_FLOOR = 1e-12
 #: Entries of the gamma table (:func:`encode`).
 GAMMA_STEPS = 4096
 
+#: Covered pixels shaded together (the fields of a chunk, FIELDS x CHUNK reals, stay
+#: in the first-level cache).
+CHUNK = 128
 
-@helper
+#: The scratch fields of a chunk (field f of pixel i at ``f * CHUNK + i``): the
+#: point, the normal, the surface color (a mesh's own colors), the direction to the
+#: viewer, kd S_d, ks S_s, the intensity summed so far, the direction to the light
+#: and its factor f_l, N . L (0 where not lit), the highlight's base s and its power,
+#: and 1 where the highlight counts (else 0).  Flat and Gouraud shading interpolate
+#: the vertex intensities into the first three.
+PX, PY, PZ = 0, 1, 2
+NX, NY, NZ = 3, 4, 5
+CR, CG, CB = 6, 7, 8
+VX, VY, VZ = 9, 10, 11
+DR, DG, DB = 12, 13, 14
+SR, SG, SB = 15, 16, 17
+IR, IG, IB = 18, 19, 20
+LX, LY, LZ, FL = 21, 22, 23, 24
+NL, BASE, POW, LIT = 25, 26, 27, 28
+FIELDS = 29
+
+#: Fields reused by the store once the lighting is done: the stored values after the
+#: table and one step, and 1 where the climb goes on.
+EV = LX
+EM = NL
+
+#: The largest exponent n_s raised by repeated squaring (larger ones by the power),
+#: and the bits of the exponents raised inside the lighting loop (larger ones in
+#: passes of their own).
+SQUARED = 2.0 ** 31
+SMALL_BITS = 8
+
+
+@inline
 def encode(value, table, thresholds):
     """round(255 clamp(I, 0, 1)^(1/gamma)) without a power: ``table[j]`` is the stored
     value of I = j / (GAMMA_STEPS - 1), a lower bound for any I in the step, raised
@@ -80,23 +132,84 @@ def encode(value, table, thresholds):
 
 
 @kernel
-def shade_pixels(start, step, faces, bary, world, normals, colors, front, face_mat, mats,
-                 ambient, sources, eye, table, thresholds, raster, shading, spec, mode):
-    """Shade every pixel (y, x) with ``faces[y, x] >= 0`` into ``raster[y, x]``, on the
-    bands of :data:`BAND` rows numbered ``start``, ``start + step`` ... (calls with
-    ``start`` = 0 .. step - 1 share the work: each pixel is written by one of them).
+def triangle_attributes(lo, hi, tri, q, bary, tface, world, normals, colors, front, table,
+                        shading):
+    """For the source TRIANGLES: per drawn triangle ``t`` in ``lo .. hi - 1`` the
+    screen-space functions of its attributes times 1/w, so that a pixel's attributes
+    are (their functions at (x - x0, y - y0)) / (1/w's): ``table[t]`` = x0, y0 (its
+    vertex 0), (value, d/dx, d/dy) of 1/w, then of each attribute: PHONG the point,
+    the normal (turned toward the viewer on a back face) and, where ``colors`` has
+    rows, the surface color (5 + 3 x 9 columns, or 5 + 3 x 6 without colors); VERTEX
+    the vertex intensities of ``colors`` (5 + 3 x 3).  ``tri``, ``q`` and ``bary``
+    (T, 3, 2) as the rasterizer takes them (:mod:`scanline._kernels.raster3d`, the
+    barycentrics as the attributes), ``tface`` (T,) the triangles' faces.  The
+    rasterizer's :func:`~scanline._kernels.raster3d.setup` gives the functions of
+    1/w, lambda_1 / w and lambda_2 / w; an attribute A is A_0 + lambda_1 (A_1 - A_0)
+    + lambda_2 (A_2 - A_0), so its function times 1/w is A_0 (1/w) + (A_1 - A_0)
+    (lambda_1 / w) + (A_2 - A_0) (lambda_2 / w).  A triangle that covers no pixel,
+    or of no face, gets NaN."""
+    nf = front.shape[0]
+    kk = (table.shape[1] - 5) // 3
+    g = np.empty((4, 3))
+    for t in range(lo, hi):
+        f = tface[t]
+        if not (setup(tri, q, bary, t, g) and f >= 0 and f < nf):
+            for j in range(table.shape[1]):
+                table[t, j] = math.nan
+            continue
+        table[t, 0] = tri[t, 0, 0]
+        table[t, 1] = tri[t, 0, 1]
+        for c in range(3):
+            table[t, 2 + c] = g[1, c]
+        flip = 1.0 if front[f] else -1.0
+        for a in range(kk):
+            ch = a % 3
+            if len(shading) == VERTEX:
+                v0 = colors[f, 0, ch]
+                v1 = colors[f, 1, ch]
+                v2 = colors[f, 2, ch]
+            elif a < 3:
+                v0 = world[f, 0, ch]
+                v1 = world[f, 1, ch]
+                v2 = world[f, 2, ch]
+            elif a < 6:
+                v0 = flip * normals[f, 0, ch]
+                v1 = flip * normals[f, 1, ch]
+                v2 = flip * normals[f, 2, ch]
+            else:
+                v0 = colors[f, 0, ch]
+                v1 = colors[f, 1, ch]
+                v2 = colors[f, 2, ch]
+            d1 = v1 - v0
+            d2 = v2 - v0
+            for c in range(3):
+                table[t, 5 + 3 * a + c] = v0 * g[1, c] + d1 * g[2, c] + d2 * g[3, c]
+
+
+@kernel
+def shade_pixels(start, step, faces, bary, table, tface, world, normals, colors, front,
+                 face_mat, mats, ambient, sources, eye, gamma_table, thresholds, raster,
+                 shading, spec, mode, source):
+    """Shade every pixel (y, x) with a visible face into ``raster[y, x]``, on the bands
+    of :data:`BAND` rows numbered ``start``, ``start + step`` ... (calls with ``start``
+    = 0 .. step - 1 share the work: each pixel is written by one of them).
+
+    Source BUFFERS: ``faces[y, x]`` (-1: none) and ``bary[y, x]`` = (lambda_1,
+    lambda_2) (``table``, ``tface`` not read).  Source TRIANGLES: ``faces[y, x]``
+    the drawn triangle (-1: none), ``table`` its attributes' functions
+    (:func:`triangle_attributes`) and ``tface`` (T,) its face, which replaces it in
+    ``faces`` (``bary``, ``world``, ``normals`` and ``colors`` not read, but
+    ``colors`` must have rows where the surface colors are among the attributes).
 
     ``world``, ``normals``, ``colors``: (F, 3, 3) per face vertex (VERTEX: ``colors``
-    holds the vertex intensities and the other two are not read); ``front`` (F,) the
-    back-face test; ``face_mat`` (F,) the material row of each face in ``mats`` (M, 8:
-    :func:`scanline.shading.buffer.material_rows`); ``ambient`` (3,) the summed
-    ambient intensity; ``sources`` (S, 16); ``eye`` (4,) homogeneous; ``table``
-    (GAMMA_STEPS,) int64 and ``thresholds`` (257,) the gamma encoding
-    (:func:`encode`).  Each row's linear intensities go to a row
-    buffer first, then are encoded and stored."""
-    height, width = faces.shape
-    nf = colors.shape[0]
-    lin = np.empty((width, 3))
+    holds the vertex intensities and the other two are not read; PHONG: ``colors``
+    may have no rows, and then each face takes its material's color); ``front`` (F,)
+    the back-face test; ``face_mat`` (F,) the material row of each face in ``mats``
+    (M, 11: :func:`scanline.shading.buffer.material_rows`); ``ambient`` (3,) the
+    summed ambient intensity; ``sources`` (S, 16); ``eye`` (4,) homogeneous;
+    ``gamma_table`` (GAMMA_STEPS,) int64 and ``thresholds`` (257,) the gamma
+    encoding (:func:`encode`)."""
+    height = faces.shape[0]
     # per source: the unit vector toward a light at infinity (w = 0) and its
     # attenuation, the same at every point (the per-point formula's values)
     ns = sources.shape[0]
@@ -108,114 +221,332 @@ def shade_pixels(start, step, faces, bary, world, normals, colors, front, face_m
         r = 1.0 / d if d > 0 else 0.0
         for ch in range(3):
             far[s, ch] = sources[s, ch] * r
+    # one whole exponent for every material: raised by repeated squaring (-1: not)
+    expo = -1
+    if mats.shape[0] > 0:
+        n0 = mats[0, 3]
+        same = n0 >= 0.0 and n0 < SQUARED and n0 == math.floor(n0)
+        for m in range(1, mats.shape[0]):
+            if mats[m, 3] != n0:
+                same = False
+        if same:
+            expo = int(n0)
+    scratch = np.empty(FIELDS * CHUNK)
+    xs = np.empty(CHUNK, np.int64)
+    ms = np.empty(CHUNK, np.int64)
     for lo in range(start * BAND, height, max(step, 1) * BAND):
         for y in range(lo, min(lo + BAND, height)):
-            if len(shading) == VERTEX:
-                vertex_row(y, faces, bary, colors, lin)
-            else:
-                phong_row(y, faces, bary, world, normals, colors, front, face_mat, mats,
-                          ambient, sources, far, eye, lin, spec)
-            for x in range(width):
-                f = faces[y, x]
-                if f < 0 or f >= nf:
+            shade_row(y, faces, bary, table, tface, world, normals, colors, front, face_mat,
+                      mats, ambient, sources, far, eye, expo, gamma_table, thresholds, raster,
+                      scratch, xs, ms, shading, spec, mode, source)
+
+
+@helper
+def shade_row(y, faces, bary, table, tface, world, normals, colors, front, face_mat, mats,
+              ambient, sources, far, eye, expo, gamma_table, thresholds, raster, s, xs, ms,
+              shading, spec, mode, source):
+    """Row ``y``, chunk after chunk of :data:`CHUNK` covered pixels: each pixel's
+    face and attributes (the point, the normal and the color; VERTEX: the
+    interpolated intensity, I = sum lambda_i I_i), then the illumination
+    (:func:`light_chunk`), the encoding and the store.  Source TRIANGLES: a run of
+    pixels of one triangle loads its functions once."""
+    width = faces.shape[1]
+    nf = front.shape[0]
+    nt = tface.shape[0]
+    own = colors.shape[0] > 0
+    # the attributes interpolated: PHONG fields PX .. NZ (and CR .. CB), VERTEX 0 .. 2
+    kk = (3 if len(shading) == VERTEX else 9 if own else 6)
+    x = 0
+    while x < width:
+        n = 0
+        while n < CHUNK and x < width:
+            if len(source) == TRIANGLES:
+                t = faces[y, x]
+                if t < 0:
+                    x += 1
+                    while x < width and faces[y, x] < 0:
+                        x += 1
                     continue
-                if len(mode) == GRAY:
-                    raster[y, x, 0] = encode(0.299 * lin[x, 0] + 0.587 * lin[x, 1]
-                                             + 0.114 * lin[x, 2], table, thresholds)
+                # the run of pixels of triangle t, given its face
+                f = tface[t] if t < nt else -1
+                faces[y, x] = f
+                end = x + 1
+                most = min(width, x + CHUNK - n)
+                while end < most and faces[y, end] == t:
+                    faces[y, end] = f
+                    end += 1
+                if f < 0 or f >= nf:
+                    x = end
+                    continue
+                m = face_mat[f]
+                x0 = table[t, 0]
+                fy = y - table[t, 1]
+                q0 = table[t, 2] + table[t, 4] * fy
+                qx = table[t, 3]
+                # PHONG: P, N (and C); VERTEX: I (fields 0 .. 2)
+                a0 = table[t, 5] + table[t, 7] * fy
+                ax = table[t, 6]
+                b0 = table[t, 8] + table[t, 10] * fy
+                bx = table[t, 9]
+                c0 = table[t, 11] + table[t, 13] * fy
+                cx = table[t, 12]
+                if kk > 3:
+                    d0 = table[t, 14] + table[t, 16] * fy
+                    dx = table[t, 15]
+                    e0 = table[t, 17] + table[t, 19] * fy
+                    ex = table[t, 18]
+                    g0 = table[t, 20] + table[t, 22] * fy
+                    gx = table[t, 21]
                 else:
-                    for ch in range(3):
-                        raster[y, x, ch] = encode(lin[x, ch], table, thresholds)
-                    if len(mode) == RGBA:
-                        raster[y, x, 3] = 255
-
-
-@helper
-def vertex_row(y, faces, bary, colors, lin):
-    """Row ``y`` of the interpolated vertex intensities, I = sum lambda_i I_i."""
-    nf = colors.shape[0]
-    for x in range(faces.shape[1]):
-        f = faces[y, x]
-        if f < 0 or f >= nf:
+                    d0 = dx = e0 = ex = g0 = gx = 0.0
+                i = n
+                for at in range(x, end):
+                    fx = at - x0
+                    r = 1.0 / (q0 + qx * fx)
+                    s[i] = (a0 + ax * fx) * r
+                    s[CHUNK + i] = (b0 + bx * fx) * r
+                    s[2 * CHUNK + i] = (c0 + cx * fx) * r
+                    if kk > 3:
+                        s[3 * CHUNK + i] = (d0 + dx * fx) * r
+                        s[4 * CHUNK + i] = (e0 + ex * fx) * r
+                        s[5 * CHUNK + i] = (g0 + gx * fx) * r
+                    xs[i] = at
+                    ms[i] = m
+                    i += 1
+                if kk > 6:
+                    a0 = table[t, 23] + table[t, 25] * fy
+                    ax = table[t, 24]
+                    b0 = table[t, 26] + table[t, 28] * fy
+                    bx = table[t, 27]
+                    c0 = table[t, 29] + table[t, 31] * fy
+                    cx = table[t, 30]
+                    i = n
+                    for at in range(x, end):
+                        fx = at - x0
+                        r = 1.0 / (q0 + qx * fx)
+                        s[CR * CHUNK + i] = (a0 + ax * fx) * r
+                        s[CG * CHUNK + i] = (b0 + bx * fx) * r
+                        s[CB * CHUNK + i] = (c0 + cx * fx) * r
+                        i += 1
+                n += end - x
+                x = end
+                continue
+            at = x
+            x += 1
+            f = faces[y, at]
+            if f < 0 or f >= nf:
+                continue
+            l1 = bary[y, at, 0]
+            l2 = bary[y, at, 1]
+            l0 = 1.0 - l1 - l2
+            flip = 1.0 if front[f] else -1.0
+            for ch in range(3):
+                if len(shading) == VERTEX:
+                    s[ch * CHUNK + n] = (l0 * colors[f, 0, ch] + l1 * colors[f, 1, ch]
+                                         + l2 * colors[f, 2, ch])
+                    continue
+                s[(PX + ch) * CHUNK + n] = (l0 * world[f, 0, ch] + l1 * world[f, 1, ch]
+                                            + l2 * world[f, 2, ch])
+                s[(NX + ch) * CHUNK + n] = flip * (l0 * normals[f, 0, ch]
+                                                   + l1 * normals[f, 1, ch]
+                                                   + l2 * normals[f, 2, ch])
+                if own:
+                    s[(CR + ch) * CHUNK + n] = (l0 * colors[f, 0, ch]
+                                                + l1 * colors[f, 1, ch]
+                                                + l2 * colors[f, 2, ch])
+            xs[n] = at
+            ms[n] = face_mat[f]
+            n += 1
+        if n == 0:
             continue
-        l1 = bary[y, x, 0]
-        l2 = bary[y, x, 1]
-        l0 = 1.0 - l1 - l2
-        for ch in range(3):
-            lin[x, ch] = l0 * colors[f, 0, ch] + l1 * colors[f, 1, ch] + l2 * colors[f, 2, ch]
+        if len(shading) == PHONG:
+            light_chunk(n, s, ms, own, mats, ambient, sources, far, eye, expo, spec)
+        store_chunk(y, n, s, xs, gamma_table, thresholds, raster, shading, mode)
 
 
 @helper
-def phong_row(y, faces, bary, world, normals, colors, front, face_mat, mats, ambient, sources,
-              far, eye, lin, spec):
-    """Row ``y`` of Phong shading: the model at each pixel's point with the
-    interpolated, renormalized normal (``far``: the lights at infinity, see
-    :func:`shade_pixels`)."""
-    nf = colors.shape[0]
+def store_chunk(y, n, s, xs, gamma_table, thresholds, raster, shading, mode):
+    """The chunk's intensities encoded (:func:`encode`) and stored at row ``y``,
+    columns ``xs``: the table's value and one step up without a branch, the rest of
+    :func:`encode`'s climb only where the table's step spans more than two stored
+    values (near black); equal components are encoded once."""
+    first = IR if len(shading) == PHONG else 0
+    channels = 1 if len(mode) == GRAY else 3
+    top = GAMMA_STEPS - 1
+    for i in range(n):
+        at = xs[i]
+        before = math.nan
+        v = np.uint8(0)
+        for ch in range(channels):
+            if len(mode) == GRAY:
+                value = (0.299 * s[first * CHUNK + i] + 0.587 * s[(first + 1) * CHUNK + i]
+                         + 0.114 * s[(first + 2) * CHUNK + i])
+            else:
+                value = s[(first + ch) * CHUNK + i]
+            if not value == before:
+                before = value
+                iv = value if value > 0.0 else 0.0
+                iv = min(iv, 1.0)
+                j = int(iv * top)
+                e = gamma_table[j]
+                if gamma_table[min(j + 1, top)] - e > 1:
+                    v = encode(value, gamma_table, thresholds)
+                else:
+                    v = np.uint8(e + (iv >= thresholds[min(e + 1, 256)]))
+            raster[y, at, ch] = v
+        if len(mode) == RGBA:
+            raster[y, at, 3] = 255
+
+
+@helper
+def light_chunk(n, s, ms, own, mats, ambient, sources, far, eye, expo, spec):
+    """The illumination of the ``n`` pixels of a chunk (fields of ``s``, materials
+    ``ms``): the normals made unit vectors (N = 0 stays 0), the directions to the
+    viewer and the material's terms, then light after light N . L, the highlight and
+    their sum into the intensity fields.  The loops have no branches (a condition
+    selects a value), so the compiler vectorizes them; a spot light's cone and a
+    non-whole exponent are the loops it cannot.  With one material and no colors of
+    the mesh's own the material's terms are constants; with a light at infinity its
+    direction is; with a whole exponent below 2^:data:`SMALL_BITS` the highlight is
+    raised in the same loop, bit after bit."""
+    e0 = eye[0]
+    e1 = eye[1]
+    e2 = eye[2]
+    e3 = eye[3]
     last = mats.shape[0] - 1
-    for x in range(faces.shape[1]):
-        f = faces[y, x]
-        if f < 0 or f >= nf:
-            continue
-        l1 = bary[y, x, 0]
-        l2 = bary[y, x, 1]
-        l0 = 1.0 - l1 - l2
-        px = l0 * world[f, 0, 0] + l1 * world[f, 1, 0] + l2 * world[f, 2, 0]
-        py = l0 * world[f, 0, 1] + l1 * world[f, 1, 1] + l2 * world[f, 2, 1]
-        pz = l0 * world[f, 0, 2] + l1 * world[f, 1, 2] + l2 * world[f, 2, 2]
-        nx = l0 * normals[f, 0, 0] + l1 * normals[f, 1, 0] + l2 * normals[f, 2, 0]
-        ny = l0 * normals[f, 0, 1] + l1 * normals[f, 1, 1] + l2 * normals[f, 2, 1]
-        nz = l0 * normals[f, 0, 2] + l1 * normals[f, 1, 2] + l2 * normals[f, 2, 2]
-        cr = l0 * colors[f, 0, 0] + l1 * colors[f, 1, 0] + l2 * colors[f, 2, 0]
-        cg = l0 * colors[f, 0, 1] + l1 * colors[f, 1, 1] + l2 * colors[f, 2, 1]
-        cb = l0 * colors[f, 0, 2] + l1 * colors[f, 1, 2] + l2 * colors[f, 2, 2]
+    one = last == 0 and not own
+    if last >= 0:
+        ar = mats[0, 0] * ambient[0] * mats[0, 8]
+        ag = mats[0, 0] * ambient[1] * mats[0, 9]
+        ab = mats[0, 0] * ambient[2] * mats[0, 10]
+    else:
+        ar = ag = ab = 0.0
+    for i in range(n):
+        nx = s[NX * CHUNK + i]
+        ny = s[NY * CHUNK + i]
+        nz = s[NZ * CHUNK + i]
         nn = math.sqrt(nx * nx + ny * ny + nz * nz)
-        if not front[f]:
-            nn = -nn
         r = 1.0 / nn if nn != 0 else 0.0
-        nx *= r
-        ny *= r
-        nz *= r
-        m = min(max(face_mat[f], 0), last)
-        ka = mats[m, 0]
-        kd = mats[m, 1]
-        ks = mats[m, 2]
-        shininess = mats[m, 3]
-        ir = ka * cr * ambient[0]
-        ig = ka * cg * ambient[1]
-        ib = ka * cb * ambient[2]
-        vx = eye[0] - eye[3] * px
-        vy = eye[1] - eye[3] * py
-        vz = eye[2] - eye[3] * pz
+        s[NX * CHUNK + i] = nx * r
+        s[NY * CHUNK + i] = ny * r
+        s[NZ * CHUNK + i] = nz * r
+        vx = e0 - e3 * s[PX * CHUNK + i]
+        vy = e1 - e3 * s[PY * CHUNK + i]
+        vz = e2 - e3 * s[PZ * CHUNK + i]
         vl = math.sqrt(vx * vx + vy * vy + vz * vz)
         r = 1.0 / vl if vl > 0 else 0.0
-        vx *= r
-        vy *= r
-        vz *= r
-        for s in range(sources.shape[0]):
-            if sources[s, 3] == 0.0:
-                lx = far[s, 0]
-                ly = far[s, 1]
-                lz = far[s, 2]
-                fl = far[s, 3]
-            else:
-                lx = sources[s, 0] - sources[s, 3] * px
-                ly = sources[s, 1] - sources[s, 3] * py
-                lz = sources[s, 2] - sources[s, 3] * pz
-                d = math.sqrt(lx * lx + ly * ly + lz * lz)
-                fl = min(1.0, 1.0 / (sources[s, 4] + sources[s, 5] * d + sources[s, 6] * d * d))
-                r = 1.0 / d if d > 0 else 0.0
-                lx *= r
-                ly *= r
-                lz *= r
-            if sources[s, 9] > 0:
-                cos = -(lx * sources[s, 10] + ly * sources[s, 11] + lz * sources[s, 12])
-                if cos >= sources[s, 7]:
-                    fl *= min(max(cos, 0.0), 1.0) ** sources[s, 8]
+        s[VX * CHUNK + i] = vx * r
+        s[VY * CHUNK + i] = vy * r
+        s[VZ * CHUNK + i] = vz * r
+        s[IR * CHUNK + i] = ar
+        s[IG * CHUNK + i] = ag
+        s[IB * CHUNK + i] = ab
+    kd = ks = 0.0
+    if one:
+        kd = mats[0, 1]
+        ks = mats[0, 2]
+    elif last == 0:
+        for ch in range(3):
+            ka = mats[0, 0] * ambient[ch]
+            kd = mats[0, 1]
+            spec_ch = mats[0, 2] * mats[0, 4 + ch]
+            for i in range(n):
+                cc = s[(CR + ch) * CHUNK + i]
+                s[(DR + ch) * CHUNK + i] = kd * cc
+                s[(SR + ch) * CHUNK + i] = spec_ch
+                s[(IR + ch) * CHUNK + i] = ka * cc
+    else:
+        for i in range(n):
+            m = min(max(ms[i], 0), last)
+            ms[i] = m
+            for ch in range(3):
+                cc = s[(CR + ch) * CHUNK + i] if own else mats[m, 8 + ch]
+                s[(DR + ch) * CHUNK + i] = mats[m, 1] * cc
+                s[(SR + ch) * CHUNK + i] = mats[m, 2] * mats[m, 4 + ch]
+                s[(IR + ch) * CHUNK + i] = mats[m, 0] * ambient[ch] * cc
+    # the constant terms (one material): kd S_d and ks S_s
+    dr = dg = db = sr = sg = sb = 0.0
+    if one:
+        dr = kd * mats[0, 8]
+        dg = kd * mats[0, 9]
+        db = kd * mats[0, 10]
+        sr = ks * mats[0, 4]
+        sg = ks * mats[0, 5]
+        sb = ks * mats[0, 6]
+    cut = mats[0, 7] if last >= 0 else 0.0
+    small = expo >= 0 and expo < (1 << SMALL_BITS)
+    for src in range(sources.shape[0]):
+        cx = lx = far[src, 0]
+        cy = ly = far[src, 1]
+        cz = lz = far[src, 2]
+        cf = fl = far[src, 3]
+        # a light at a point, or a spot light: its direction and factor per pixel
+        per = sources[src, 3] != 0.0 or sources[src, 9] > 0
+        if per:
+            light_fields(n, s, sources, far, src)
+        ir = sources[src, 13]
+        ig = sources[src, 14]
+        ib = sources[src, 15]
+        if small:
+            for i in range(n):
+                nx = s[NX * CHUNK + i]
+                ny = s[NY * CHUNK + i]
+                nz = s[NZ * CHUNK + i]
+                vx = s[VX * CHUNK + i]
+                vy = s[VY * CHUNK + i]
+                vz = s[VZ * CHUNK + i]
+                # fields read whether used or not: a select, not a branch, in the loop
+                px = s[LX * CHUNK + i]
+                py = s[LY * CHUNK + i]
+                pz = s[LZ * CHUNK + i]
+                pf = s[FL * CHUNK + i]
+                lx = px if per else cx
+                ly = py if per else cy
+                lz = pz if per else cz
+                fl = pf if per else cf
+                nl = nx * lx + ny * ly + nz * lz
+                if len(spec) == SPEC_PHONG:
+                    sv = (vx * (2.0 * nl * nx - lx) + vy * (2.0 * nl * ny - ly)
+                          + vz * (2.0 * nl * nz - lz))
                 else:
-                    fl = 0.0
+                    hx = lx + vx
+                    hy = ly + vy
+                    hz = lz + vz
+                    hl = math.sqrt(hx * hx + hy * hy + hz * hz)
+                    sv = (nx * hx + ny * hy + nz * hz) / hl if hl > 0 else 0.0
+                lit = nl > 0
+                base = min(sv, 1.0)
+                power = 1.0
+                for bit in range(SMALL_BITS):
+                    if (expo >> bit) & 1:
+                        power *= base
+                    base *= base
+                shine = power if lit and sv > cut else 0.0
+                nl = nl if lit else 0.0
+                pr = s[DR * CHUNK + i]
+                pg = s[DG * CHUNK + i]
+                pb = s[DB * CHUNK + i]
+                qr = s[SR * CHUNK + i]
+                qg = s[SG * CHUNK + i]
+                qb = s[SB * CHUNK + i]
+                s[IR * CHUNK + i] += fl * ir * (nl * (dr if one else pr) + shine * (sr if one else qr))
+                s[IG * CHUNK + i] += fl * ig * (nl * (dg if one else pg) + shine * (sg if one else qg))
+                s[IB * CHUNK + i] += fl * ib * (nl * (db if one else pb) + shine * (sb if one else qb))
+            continue
+        for i in range(n):
+            nx = s[NX * CHUNK + i]
+            ny = s[NY * CHUNK + i]
+            nz = s[NZ * CHUNK + i]
+            vx = s[VX * CHUNK + i]
+            vy = s[VY * CHUNK + i]
+            vz = s[VZ * CHUNK + i]
+            px = s[LX * CHUNK + i]
+            py = s[LY * CHUNK + i]
+            pz = s[LZ * CHUNK + i]
+            lx = px if per else cx
+            ly = py if per else cy
+            lz = pz if per else cz
             nl = nx * lx + ny * ly + nz * lz
-            if not nl > 0:
-                continue
             if len(spec) == SPEC_PHONG:
                 sv = (vx * (2.0 * nl * nx - lx) + vy * (2.0 * nl * ny - ly)
                       + vz * (2.0 * nl * nz - lz))
@@ -225,11 +556,81 @@ def phong_row(y, faces, bary, world, normals, colors, front, face_mat, mats, amb
                 hz = lz + vz
                 hl = math.sqrt(hx * hx + hy * hy + hz * hz)
                 sv = (nx * hx + ny * hy + nz * hz) / hl if hl > 0 else 0.0
-            shine = ks * min(sv, 1.0) ** shininess if sv > mats[m, 7] else 0.0
-            diffuse = kd * nl
-            ir += fl * sources[s, 13] * (diffuse * cr + shine * mats[m, 4])
-            ig += fl * sources[s, 14] * (diffuse * cg + shine * mats[m, 5])
-            ib += fl * sources[s, 15] * (diffuse * cb + shine * mats[m, 6])
-        lin[x, 0] = ir
-        lin[x, 1] = ig
-        lin[x, 2] = ib
+            low = cut if expo >= 0 or last == 0 else mats[ms[i], 7]
+            lit = nl > 0
+            s[NL * CHUNK + i] = nl if lit else 0.0
+            s[BASE * CHUNK + i] = min(sv, 1.0)
+            s[LIT * CHUNK + i] = 1.0 if lit and sv > low else 0.0
+        if expo >= 0:                           # s^n by repeated squaring
+            for i in range(n):
+                s[POW * CHUNK + i] = 1.0
+            e = expo
+            while e > 0:
+                if e & 1:
+                    for i in range(n):
+                        s[POW * CHUNK + i] *= s[BASE * CHUNK + i]
+                e >>= 1
+                if e > 0:
+                    for i in range(n):
+                        s[BASE * CHUNK + i] *= s[BASE * CHUNK + i]
+        else:
+            for i in range(n):
+                if s[LIT * CHUNK + i] > 0:
+                    s[POW * CHUNK + i] = s[BASE * CHUNK + i] ** mats[ms[i], 3]
+        for i in range(n):
+            pf = s[FL * CHUNK + i]
+            fl = pf if per else cf
+            nl = s[NL * CHUNK + i]
+            shine = s[POW * CHUNK + i] if s[LIT * CHUNK + i] > 0 else 0.0
+            pr = s[DR * CHUNK + i]
+            pg = s[DG * CHUNK + i]
+            pb = s[DB * CHUNK + i]
+            qr = s[SR * CHUNK + i]
+            qg = s[SG * CHUNK + i]
+            qb = s[SB * CHUNK + i]
+            s[IR * CHUNK + i] += fl * ir * (nl * (dr if one else pr) + shine * (sr if one else qr))
+            s[IG * CHUNK + i] += fl * ig * (nl * (dg if one else pg) + shine * (sg if one else qg))
+            s[IB * CHUNK + i] += fl * ib * (nl * (db if one else pb) + shine * (sb if one else qb))
+
+
+@helper
+def light_fields(n, s, sources, far, src):
+    """The direction to light ``src`` and its factor f_l at each pixel of a chunk
+    (fields LX, LY, LZ, FL): L = unit(P - w p), f_l = min(1, 1 / (a0 + a1 d + a2
+    d^2)), times a spot light's cone factor."""
+    if sources[src, 3] == 0.0:
+        lx = far[src, 0]
+        ly = far[src, 1]
+        lz = far[src, 2]
+        fl = far[src, 3]
+        for i in range(n):
+            s[LX * CHUNK + i] = lx
+            s[LY * CHUNK + i] = ly
+            s[LZ * CHUNK + i] = lz
+            s[FL * CHUNK + i] = fl
+    else:
+        qx = sources[src, 0]
+        qy = sources[src, 1]
+        qz = sources[src, 2]
+        qw = sources[src, 3]
+        a0 = sources[src, 4]
+        a1 = sources[src, 5]
+        a2 = sources[src, 6]
+        for i in range(n):
+            lx = qx - qw * s[PX * CHUNK + i]
+            ly = qy - qw * s[PY * CHUNK + i]
+            lz = qz - qw * s[PZ * CHUNK + i]
+            d = math.sqrt(lx * lx + ly * ly + lz * lz)
+            s[FL * CHUNK + i] = min(1.0, 1.0 / (a0 + a1 * d + a2 * d * d))
+            r = 1.0 / d if d > 0 else 0.0
+            s[LX * CHUNK + i] = lx * r
+            s[LY * CHUNK + i] = ly * r
+            s[LZ * CHUNK + i] = lz * r
+    if sources[src, 9] > 0:                     # a spot light's cone
+        for i in range(n):
+            cos = -(s[LX * CHUNK + i] * sources[src, 10] + s[LY * CHUNK + i] * sources[src, 11]
+                    + s[LZ * CHUNK + i] * sources[src, 12])
+            if cos >= sources[src, 7]:
+                s[FL * CHUNK + i] *= min(max(cos, 0.0), 1.0) ** sources[src, 8]
+            else:
+                s[FL * CHUNK + i] = 0.0

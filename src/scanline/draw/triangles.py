@@ -95,7 +95,8 @@ def rasterize(width, height, tri, q, att, ids, zbuf=None, buf=None, abuf=None, i
 
     ``buf`` given: the attributes (0..255) are rounded into its bytes; else
     ``abuf`` (H, W, K) float64 and ``idbuf`` (H, W) int64 receive the interpolated
-    attributes and ``ids``.  ``zbuf`` None: no depth test (the input order wins);
+    attributes and ``ids`` (``abuf`` None: ``idbuf`` alone; the attributes are not
+    interpolated, and the work estimate does not count them).  ``zbuf`` None: no depth test (the input order wins);
     ``floor`` (H, W): depth peeling, only fragments behind ``floor`` and in front of
     ``zbuf`` pass; ``clear``: ``zbuf`` (and ``idbuf``) are cleared to +inf (-1) by
     the kernel first, on every core (their contents before do not matter)."""
@@ -108,14 +109,21 @@ def rasterize(width, height, tri, q, att, ids, zbuf=None, buf=None, abuf=None, i
     bands = ((height - 1) >> k.BAND_SHIFT) + 1
     rows = np.empty((n, 2), np.int64)
     starts = np.empty(bands + 1, np.int64)
-    entries = call(k.band_entries, 2 * n, tri, height)
-    order = np.empty(entries, np.int64)
+    # most triangles meet one or two bands: that many entries first, counted if short
+    order = np.empty(2 * n + bands, np.int64)
     area = call(k.bin_triangles, 4 * n, tri, height, rows, starts, order)
+    if area < 0:
+        order = np.empty(call(k.band_entries, 2 * n, tri, height), np.int64)
+        area = call(k.bin_triangles, 4 * n, tri, height, rows, starts, order)
     kk = att.shape[2]
     if buf is not None:
         out = token(k.COLOR)
         abuf = np.empty((1, 1, kk))
         idbuf = np.empty((1, 1), np.int64)
+    elif abuf is None:
+        out = token(k.IDS)
+        abuf = np.empty((1, 1, kk))
+        buf = np.empty((1, 1, 1), np.uint8)
     else:
         out = token(k.ATTRIBUTES)
         buf = np.empty((1, 1, 1), np.uint8)
@@ -126,7 +134,7 @@ def rasterize(width, height, tri, q, att, ids, zbuf=None, buf=None, abuf=None, i
         depth = token(k.NO_TEST)
         zbuf = np.empty((height, width))
     # work: the rows of each triangle's box times its width
-    work = 20 * n + area * (1 + kk)
+    work = 20 * n + area * (1 + (kk if len(out) != k.IDS else 0))
     call_in_bands(k.raster_triangles, work, out, depth, tri, q, att, ids, rows, starts, order,
                   zbuf, floor, buf, abuf, idbuf)
 

@@ -93,7 +93,8 @@ class ScreenScene:
         One per mesh.
 
     ``world``, ``normals`` and ``vertex_normals`` are shared with the meshes' kept
-    arrays (:func:`mesh_arrays`): read them, do not write them.  ``vertex_colors``
+    arrays (:func:`mesh_arrays`), and ``bary`` of a scene nothing was clipped from
+    with every scene's: read them, do not write them.  ``vertex_colors``
     of a mesh without colors is its material's color broadcast (not a copy).
     eye : 3-vector or ViewerAtInfinity
         The viewer for the illumination model.
@@ -279,6 +280,22 @@ def mesh_arrays(mesh):
     return arrays
 
 
+#: The barycentrics of a triangle's own vertices, (n, 3, 2) rows for up to n triangles
+#: (grown when a scene has more): kept, as every whole triangle's are the same.
+_VERTEX_BARY = [np.zeros((0, 3, 2))]
+
+
+def _vertex_bary(n):
+    """(n, 3, 2) rows of (0, 0), (1, 0), (0, 1), C-contiguous (a view of a kept array:
+    read it, do not write it)."""
+    kept = _VERTEX_BARY[0]
+    if len(kept) < n:
+        kept = np.empty((max(n, 2 * len(kept)), 3, 2))
+        kept[:] = [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]
+        _VERTEX_BARY[0] = kept
+    return kept[:n]
+
+
 def _joined(parts, shape):
     """One array of ``parts`` (the part itself when there is one: no copy)."""
     if len(parts) == 1:
@@ -337,7 +354,7 @@ def prepare(meshes, camera, width, height, materials=None, cull_back_faces=False
     tris = [dev if everything else dev[tface[0]]]
     tq = [inv_w if everything else inv_w[tface[0]]]
     eye_bary = np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]])
-    bary = [np.broadcast_to(eye_bary, (len(tface[0]), 3, 2))]
+    bary = [_vertex_bary(len(tface[0]))]
     polygons, polygon_face = [], []
     cut = np.flatnonzero(kept & ~inside)
     if len(cut):

@@ -7,7 +7,9 @@ its depth z is computed (incrementally along the scan line, z' = z - A/C) and, i
 < depth(x, y), depth(x, y) = z and the pixel takes the surface's intensity.  Here the
 "intensity" written is the face index and the barycentric coordinates of the point
 (a visibility buffer), shaded once per pixel afterwards, so a covered-over fragment
-costs no lighting.
+costs no lighting.  Where the compiled shading draws the whole (opaque) scene, the
+intensity written is the triangle's index alone (:func:`visible_triangles`), and the
+shading finds the barycentrics from the triangle itself.
 
 Simple transparency (Hearn & Baker, section 14-5): opaque faces first; then the
 nearest transparent face in front of them at each pixel, blended I = (1 - k_t)
@@ -21,6 +23,7 @@ import numpy as np
 
 from ..depthbuffer import DepthBuffer
 from ..draw.triangles import rasterize
+from ..shading.buffer import drawable, shade_buffer
 from .output import Rendering, background_linear, cue, point_colors, store, write_visible
 
 
@@ -60,6 +63,28 @@ def visibility(scene, select=None, zbuf=None, bary=None):
     return faces, bary, depth
 
 
+def visible_triangles(scene):
+    """The z-buffer pass over all the scene's triangles writing each visible one's
+    index alone: ``(ids, depth)``, ``ids`` (H, W) int64 the triangle seen at each
+    pixel (-1: none).  The barycentrics of a pixel are found where it is shaded
+    (:func:`scanline.shading.buffer.shade_buffer` with ``triangles=True``), once,
+    instead of at every fragment drawn."""
+    from .pool import recycled
+
+    h, w = scene.height, scene.width
+    ids = recycled("faces", (h, w), np.int64)
+    depth = recycled("depth", (h, w))
+    n = len(scene.triangles)
+    if n:
+        rasterize(w, h, np.ascontiguousarray(scene.triangles),
+                  np.ascontiguousarray(scene.inv_w), np.empty((n, 3, 0)),
+                  np.arange(n, dtype=np.int64), zbuf=depth, idbuf=ids, clear=True)
+    else:
+        ids.fill(-1)
+        depth.fill(np.inf)
+    return ids, depth
+
+
 def transparent_triangles(scene):
     """Per triangle: True when its material lets light through."""
     kt = np.array([m.transparency for m in scene.materials])
@@ -69,7 +94,10 @@ def transparent_triangles(scene):
 def render(scene, fb, options):
     """Draw ``scene`` into ``fb`` by the depth-buffer method."""
     clear = transparent_triangles(scene)
-    if not clear.any():
+    if not clear.any() and drawable(fb, options):
+        faces, depth = visible_triangles(scene)
+        shade_buffer(scene, fb, faces, None, options, triangles=True)
+    elif not clear.any():
         faces, bary, depth = visibility(scene, bary=scratch_bary(scene.height, scene.width))
         write_visible(scene, fb, faces, bary, depth, options)
     else:

@@ -51,17 +51,20 @@ def source_rows(lights):
     return np.array(rows).reshape(-1, 16), np.ascontiguousarray(ambient, np.float64)
 
 
-def material_rows(materials):
-    """ka, kd, ks, n_s, S_s of each material and the least s = V . R (or N . H) whose
-    s^n_s reaches :data:`scanline._kernels.shade.SHINE_FLOOR` (0 for n_s = 0), (M, 8)."""
+def material_rows(materials, gamma=2.2):
+    """ka, kd, ks, n_s, S_s of each material, the least s = V . R (or N . H) whose
+    s^n_s reaches :data:`scanline._kernels.shade.SHINE_FLOOR` (0 for n_s = 0), and
+    its color S_d decoded with ``gamma`` (linear), (M, 11)."""
     from .._kernels.shade import SHINE_FLOOR
+    from . import decode
 
     rows = []
     for m in materials:
         n = float(m.shininess)
         cut = SHINE_FLOOR ** (1.0 / n) if n > 0 else 0.0
-        rows.append([m.ka, m.kd, m.ks, n, *m.specular_color, cut])
-    return np.array(rows, np.float64).reshape(-1, 8)
+        rows.append([m.ka, m.kd, m.ks, n, *m.specular_color, cut,
+                     *decode(np.asarray(m.color, np.float64), gamma)])
+    return np.array(rows, np.float64).reshape(-1, 11)
 
 
 def homogeneous_eye(eye):
@@ -94,9 +97,23 @@ def drawable(fb, options):
             and options.get("depth_cue") is None and fb.mode in ("L", "RGB", "RGBA"))
 
 
-def shade_buffer(scene, fb, faces, bary, options):
+def _material_colored(scene):
+    """True when every face takes its material's color (the scene's vertex colors are
+    the one material's color broadcast): the kernel then reads it from the material
+    rows instead of an (F, 3, 3) array."""
+    c = scene.vertex_colors
+    return (len(scene.materials) == 1 and c.ndim == 3 and c.size > 0 and not any(c.strides[:-1])
+            and np.array_equal(c[0, 0], scene.materials[0].color))
+
+
+def shade_buffer(scene, fb, faces, bary, options, triangles=False):
     """Shade the pixels of ``faces`` (H, W; -1: none) with barycentrics ``bary`` (H, W,
-    2) into ``fb`` (:func:`drawable` must hold)."""
+    2) into ``fb`` (:func:`drawable` must hold).
+
+    ``triangles``: ``faces`` holds instead the index of the scene's triangle drawn at
+    each pixel (``scene.triangles``; the rasterizer's id buffer), whose attributes
+    are found from the triangle there; ``bary`` is not read, and ``faces`` (int64, C
+    order) is changed in place to hold the face at each pixel."""
     from .._kernels import shade as k
     from .._kernels._threads import call_in_bands
     from .._kernels.variants import MODE
@@ -109,7 +126,8 @@ def shade_buffer(scene, fb, faces, bary, options):
     if shading == "phong":
         world = v.kernel_array(scene.world)
         normals = v.kernel_array(scene.vertex_normals)
-        colors = v.kernel_array(decoded(scene.vertex_colors, gamma))
+        colors = (empty if _material_colored(scene) else
+                  v.kernel_array(decoded(scene.vertex_colors, gamma)))
     else:
         world = normals = empty
         colors = np.zeros((scene.face_count, 3, 3))
@@ -117,14 +135,39 @@ def shade_buffer(scene, fb, faces, bary, options):
         if len(seen):
             colors[seen] = vertex_intensities(scene, seen, lights, shading,
                                               options["specular"], gamma)
+    token = k.SHADING["phong" if shading == "phong" else "vertex"]
+    tface = np.zeros(0, np.int64)
+    if not triangles:
+        source = k.SOURCE["buffers"]
+        table = np.zeros((0, 5))
+        bary = np.ascontiguousarray(bary, np.float64)
+    else:
+        from .._kernels._threads import call_in_chunks
+        from ..render.pool import scratch
+
+        source = k.SOURCE["triangles"]
+        bary = np.zeros((1, 1, 2))
+        tface = v.kernel_array(scene.face, np.int64)
+        n = len(tface)
+        kk = 3 if shading != "phong" else 9 if len(colors) else 6
+        table = scratch("triangle attributes", (n, 5 + 3 * kk))
+        tri, q = v.kernel_array(scene.triangles), v.kernel_array(scene.inv_w)
+        front = np.ascontiguousarray(scene.front, np.bool_)
+        tb = v.kernel_array(scene.bary)
+        call_in_chunks(k.triangle_attributes, 10 * kk * n, n,
+                       lambda lo, hi: (lo, hi, tri, q, tb, tface, world, normals, colors,
+                                       front, table, token))
+        world = normals = empty
+        if shading != "phong" or len(colors):
+            colors = np.zeros((1, 3, 3))
     h, w = faces.shape
     work = h * w * (2 + (8 * len(sources) if shading == "phong" else 0))
-    args = (np.ascontiguousarray(faces, np.int64), np.ascontiguousarray(bary, np.float64),
-            world, normals, colors, np.ascontiguousarray(scene.front, np.bool_),
-            np.ascontiguousarray(scene.face_mesh, np.int64), material_rows(scene.materials),
+    args = (np.ascontiguousarray(faces, np.int64), bary, table, tface, world, normals, colors,
+            np.ascontiguousarray(scene.front, np.bool_),
+            np.ascontiguousarray(scene.face_mesh, np.int64),
+            material_rows(scene.materials, gamma),
             ambient, np.ascontiguousarray(sources), homogeneous_eye(scene.eye),
             *gamma_tables(gamma), fb._raster()[0],
-            k.SHADING["phong" if shading == "phong" else "vertex"],
-            k.SPECULAR[options["specular"] if shading == "phong" else "phong"], MODE[fb.mode])
+            token, k.SPECULAR[options["specular"] if shading == "phong" else "phong"], MODE[fb.mode],
+            source)
     call_in_bands(k.shade_pixels, work, *args)
-

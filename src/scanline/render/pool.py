@@ -1,0 +1,55 @@
+"""Large arrays kept between renders, per thread: a new array of a frame's size costs
+its page faults on first touch (a 1920 x 1080 float64 buffer, 16 MB: several
+milliseconds, more than its whole depth test), and a render makes several.
+
+:func:`scratch` is for temporaries that are not handed back (their contents are
+not kept).  :func:`recycled` is for the buffers a render hands back (the depth and
+face buffers of a :class:`~scanline.render.output.Rendering`): the array of the
+previous call is used again only when nothing else holds it any more -- its
+reference count says that only the pool does (a view of it, a
+:class:`~scanline.depthbuffer.DepthBuffer` or a kept ``Rendering`` each hold a
+reference) -- so a result the caller kept is never written over.
+"""
+
+import sys
+import threading
+
+import numpy as np
+
+_LOCAL = threading.local()
+
+
+def _kept():
+    kept = getattr(_LOCAL, "arrays", None)
+    if kept is None:
+        kept = _LOCAL.arrays = {}
+    return kept
+
+
+def scratch(name, shape, dtype=np.float64):
+    """An array of ``shape`` and ``dtype`` kept for the calling thread under ``name``
+    and given again to its next call with the same shape and dtype (contents not
+    kept)."""
+    kept = _kept()
+    a = kept.get(name)
+    if a is None or a.shape != tuple(shape) or a.dtype != dtype:
+        a = kept[name] = np.empty(shape, dtype)
+    return a
+
+
+#: References to an array of the pool that nothing else holds: the pool's dict, the
+#: local name in :func:`recycled` and the argument of ``sys.getrefcount``.
+_UNHELD = 3
+
+
+def recycled(name, shape, dtype=np.float64):
+    """A new array of ``shape`` and ``dtype`` for a result the caller gets: the one
+    handed out under ``name`` last time in this thread when nothing else references
+    it any more, else a new one (kept for next time)."""
+    kept = _kept()
+    a = kept.get(name)
+    if (a is None or a.shape != tuple(shape) or a.dtype != dtype
+            or sys.getrefcount(a) != _UNHELD):
+        a = np.empty(shape, dtype)
+        kept[name] = a
+    return a

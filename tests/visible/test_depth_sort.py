@@ -167,10 +167,10 @@ def test_the_buckets_grow_when_the_grid_needs_more_entries(monkeypatch):
     module = importlib.import_module("scanline.visible.depth_sort")   # not the function
     sp = small_triangles(300, 3)
     expected = depth_sort(sp)
-    grid = module._grid
-    assert grid(sp.extents())[1].sum() > len(sp)     # one row a piece is too few
-    monkeypatch.setattr(module, "_grid", lambda ext: (grid(ext)[0], np.ones(len(ext), np.int64)))
+    asked = []
+    monkeypatch.setattr(module, "_bucket_room", lambda entries: asked.append(entries) or 1)
     assert same_pieces(depth_sort(sp), expected)
+    assert asked and asked[0] > len(sp)              # one row a piece would be too few
 
 
 def test_too_many_pieces_is_an_error():

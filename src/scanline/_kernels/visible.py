@@ -18,7 +18,8 @@ import numpy as np
 
 from ._jit import helper, kernel, slow_to_compile
 from .curves import clamped_index
-from .spans import span
+from .raster import put_bit
+from .variants import PACKED
 
 
 @helper
@@ -55,7 +56,7 @@ def covers(verts, start, end, x, y):
 
 
 #: Bands of 2**PAINT_BAND_SHIFT rows share the painting between threads.
-PAINT_BAND_SHIFT = 4
+PAINT_BAND_SHIFT = 5
 
 
 @helper
@@ -74,20 +75,163 @@ def rows_of(k, r0, r1):
     return max(r0, k << PAINT_BAND_SHIFT), min(r1 + 1, (k + 1) << PAINT_BAND_SHIFT)
 
 
+@helper
+def fill_ids(ids, r, x0, x1, number):
+    """``ids[r, x0:x1] = number`` (0 <= x0 <= x1 <= the row's length) in stores of 8,
+    4, 2 and 1 that overlap rather than loop to the end: a span's length is not
+    predictable, and each loop ending a span at its own length costs a mispredicted
+    branch (unsigned indices: no wraparound test, so the stores of 8 are one vector
+    store)."""
+    n = x1 - x0
+    u0 = np.uint64(x0)
+    u1 = np.uint64(x1)
+    if n >= 8:
+        x = u0
+        while x + np.uint64(8) < u1:
+            for c in range(8):
+                ids[r, x + np.uint64(c)] = number
+            x += np.uint64(8)
+        for c in range(8):
+            ids[r, u1 - np.uint64(8 - c)] = number
+    elif n >= 4:
+        for c in range(4):
+            ids[r, u0 + np.uint64(c)] = number
+            ids[r, u1 - np.uint64(4 - c)] = number
+    elif n >= 2:
+        ids[r, u0] = number
+        ids[r, u0 + np.uint64(1)] = number
+        ids[r, u1 - np.uint64(2)] = number
+        ids[r, u1 - np.uint64(1)] = number
+    elif n == 1:
+        ids[r, u0] = number
+
+
+@helper
+def span_ends(lo, hi, width):
+    """The pixels ``x0 <= x < x1`` of the span between the crossings lo and hi (the
+    2-D fill's ``ceil(lo) <= x < ceil(hi)``), clipped to 0 .. width."""
+    x0 = int(min(max(np.ceil(lo), 0.0), float(width)))
+    x1 = int(max(min(np.ceil(hi), float(width)), 0.0))
+    return x0, x1
+
+
+@helper
+def paint_triangle(ids, width, height, verts, start, number, top, bottom):
+    """The spans of triangle ``verts[start:start + 3]`` (finite) on rows ``top`` ..
+    ``bottom``, as :func:`paint_polygon` finds them for any convex polygon, without its
+    arrays: the vertices a, b, c by rising y, each row r (y_a < r <= y_c) crosses the
+    edge a-c and the edge a-b (r <= y_b) or b-c, each crossing the expression of
+    :func:`crossing` for its edge (a horizontal edge crosses no row)."""
+    a = start
+    b = start + 1
+    c = start + 2
+    if verts[b, 1] < verts[a, 1]:
+        a, b = b, a
+    if verts[c, 1] < verts[b, 1]:
+        b, c = c, b
+        if verts[b, 1] < verts[a, 1]:
+            a, b = b, a
+    ya = verts[a, 1]
+    yb = verts[b, 1]
+    yc = verts[c, 1]
+    if not ya < yc:
+        return
+    r0 = int(min(max(np.floor(ya) + 1.0, 0.0), float(height)))
+    r1 = int(max(min(np.floor(yc), height - 1.0), -1.0))
+    rm = int(max(min(np.floor(yb), float(r1)), float(r0) - 1.0))    # rows <= y_b
+    xa = verts[a, 0]
+    dxl = verts[c, 0] - xa
+    dyl = yc - ya
+    for half in range(2):
+        if half == 0:
+            s0 = max(r0, top)
+            s1 = min(rm, bottom)
+            xe = xa
+            ye = ya
+            dxe = verts[b, 0] - xa
+            dye = yb - ya
+        else:
+            s0 = max(rm + 1, top)
+            s1 = min(r1, bottom)
+            xe = verts[b, 0]
+            ye = yb
+            dxe = verts[c, 0] - xe
+            dye = yc - yb
+        for r in range(max(s0, 0), s1 + 1):
+            u = xa + ((r - ya) * dxl) / dyl
+            w = xe + ((r - ye) * dxe) / dye
+            lo = min(u, w)
+            hi = max(u, w)
+            if lo < hi:
+                x0, x1 = span_ends(lo, hi, width)
+                fill_ids(ids, r, x0, x1, number)
+
+
+@helper
+def paint_polygon(ids, width, height, verts, start, end, number, top, bottom, xl, xr):
+    """The spans of the convex polygon ``verts[start:end]`` (finite) on rows ``top``
+    .. ``bottom`` (``xl``, ``xr``: scratch by row - top): each edge adds its crossings
+    to the lowest and highest x of its rows."""
+    lo = np.inf
+    hi = -np.inf
+    for i in range(start, end):
+        lo = min(lo, verts[i, 1])
+        hi = max(hi, verts[i, 1])
+    # rows clipped to the raster in floats first (np.floor: math.floor would
+    # convert a huge coordinate to an integer that does not exist)
+    r0 = max(int(min(max(np.floor(lo) + 1.0, 0.0), float(height))), top)
+    r1 = min(int(max(min(np.floor(hi), height - 1.0), -1.0)), bottom)
+    for r in range(r0, r1 + 1):
+        xl[r - top] = np.inf
+        xr[r - top] = -np.inf
+    for i in range(start, end):
+        j = i + 1 if i + 1 < end else start
+        a = i if verts[i, 1] < verts[j, 1] else j
+        b = j if a == i else i
+        ylo = verts[a, 1]
+        yhi = verts[b, 1]
+        if ylo == yhi:
+            continue
+        xlo = verts[a, 0]
+        dx = verts[b, 0] - xlo
+        dy = yhi - ylo
+        # the rows ylo < r <= yhi within r0..r1
+        first = int(min(max(np.floor(ylo) + 1.0, float(r0)), float(height)))
+        last = int(max(min(np.floor(yhi), float(r1)), -1.0))
+        for r in range(max(first, top), last + 1):
+            xc = xlo + ((r - ylo) * dx) / dy
+            if xc == xc:             # not NaN (inf - inf over a huge edge)
+                xl[r - top] = min(xl[r - top], xc)
+                xr[r - top] = max(xr[r - top], xc)
+    for r in range(r0, r1 + 1):
+        if xl[r - top] < xr[r - top]:
+            x0, x1 = span_ends(xl[r - top], xr[r - top], width)
+            fill_ids(ids, r, x0, x1, number)
+
+
 @kernel
-def paint_convex(band, step, buf, layout, width, height, verts, offsets, colors):
+def paint_convex(band, step, buf, layout, width, height, verts, offsets, colors, ids):
     """Paint convex polygons in order, polygon ``p`` (``verts[offsets[p]:offsets[p +
     1]]``) in ``colors[p]``: the object-order methods' painting.  A convex polygon
     has two crossings on each scan line it covers, and the span between them is the
     2-D fill's (``ceil(xl) <= x < ceil(xr)``, each crossing the expression of
-    :func:`crossing`): each edge adds its crossings to the lowest and highest x of
-    its rows, with no edge table to sort.  The rows of this call are those of the
-    bands of 2**PAINT_BAND_SHIFT rows numbered ``band``, ``band + step``, ...
-    (:func:`bands_of`; :mod:`scanline._kernels._threads`: one call per thread; in
-    each band the polygons are painted in order)."""
-    xl = np.empty(height)
-    xr = np.empty(height)
-    for p in range(offsets.shape[0] - 1):
+    :func:`crossing`; :func:`paint_polygon`, :func:`paint_triangle`).  The rows of
+    this call are those of the bands of 2**PAINT_BAND_SHIFT rows numbered ``band``,
+    ``band + step``, ... (:func:`bands_of`; :mod:`scanline._kernels._threads`: one
+    call per thread), painted band after band: the polygons are listed by the bands
+    they cover (in order), and in each band the spans of its polygons write the
+    polygon's number to ``ids`` (int32, height x width, scratch), the last polygon
+    painted over a pixel winning as in painting; then each pixel of a polygon takes
+    its color (the values of :func:`scanline._kernels.spans.span`), the others keep
+    theirs.  So the frame buffer's pixels are written once however deep the pieces
+    overlap, and a band's rows are read and written while they are in the cache."""
+    n = offsets.shape[0] - 1
+    size = 1 << PAINT_BAND_SHIFT
+    bands = (height + size - 1) >> PAINT_BAND_SHIFT
+    top = np.empty(n, np.int64)         # each polygon's rows (top > bottom: none)
+    bottom = np.empty(n, np.int64)
+    count = np.zeros(bands + 1, np.int64)
+    for p in range(n):
         start = offsets[p]
         end = offsets[p + 1]
         lo = np.inf
@@ -97,50 +241,67 @@ def paint_convex(band, step, buf, layout, width, height, verts, offsets, colors)
             finite = finite and abs(verts[i, 0]) < np.inf and abs(verts[i, 1]) < np.inf
             lo = min(lo, verts[i, 1])
             hi = max(hi, verts[i, 1])
+        top[p] = 1
+        bottom[p] = 0
         if not finite or end - start < 3:
             continue
-        # rows clipped to the raster in floats first (np.floor: math.floor would
-        # convert a huge coordinate to an integer that does not exist)
         r0 = int(min(max(np.floor(lo) + 1.0, 0.0), float(height)))
         r1 = int(max(min(np.floor(hi), height - 1.0), -1.0))
         k0, k1 = bands_of(r0, r1, band, step)
-        if k0 >= k1:
+        if r0 > r1 or k0 >= k1:
             continue
+        top[p] = r0
+        bottom[p] = r1
         for k in range(k0, k1, step):
-            start_row, stop_row = rows_of(k, r0, r1)
-            for r in range(start_row, stop_row):
-                xl[r] = np.inf
-                xr[r] = -np.inf
-        for i in range(start, end):
-            j = i + 1 if i + 1 < end else start
-            a = i if verts[i, 1] < verts[j, 1] else j
-            b = j if a == i else i
-            ylo = verts[a, 1]
-            yhi = verts[b, 1]
-            if ylo == yhi:
+            count[k + 1] += 1
+    for k in range(bands):
+        count[k + 1] += count[k]
+    listed = np.empty(max(count[bands], 1), np.int64)
+    at = np.empty(bands, np.int64)
+    for k in range(bands):
+        at[k] = count[k]
+    for p in range(n):
+        if top[p] <= bottom[p]:
+            k0, k1 = bands_of(top[p], bottom[p], band, step)
+            for k in range(k0, k1, step):
+                listed[at[k]] = p
+                at[k] += 1
+    xl = np.empty(size)
+    xr = np.empty(size)
+    zero = np.int64(0)               # (typed: a literal argument compiles the helpers again)
+    k0, k1 = bands_of(zero, height - 1, band, step)
+    for k in range(k0, k1, step):
+        first_row, stop_row = rows_of(k, zero, height - 1)
+        for r in range(first_row, stop_row):
+            for x in range(width):
+                ids[r, x] = -1
+        for e in range(count[k], count[k + 1]):
+            p = listed[e]
+            start = offsets[p]
+            end = offsets[p + 1]
+            if end - start == 3:
+                paint_triangle(ids, width, height, verts, start, np.int32(p), first_row,
+                               stop_row - 1)
+            else:
+                paint_polygon(ids, width, height, verts, start, end, np.int32(p),
+                              first_row, stop_row - 1, xl, xr)
+        for r in range(first_row, stop_row):
+            if len(layout) == PACKED:
+                for x in range(width):
+                    p = ids[r, x]
+                    if p >= 0:
+                        put_bit(buf, x, r, colors[p, 0])
                 continue
-            xlo = verts[a, 0]
-            dx = verts[b, 0] - xlo
-            dy = yhi - ylo
-            # the rows ylo < r <= yhi within r0..r1
-            first = int(min(max(np.floor(ylo) + 1.0, float(r0)), float(height)))
-            last = int(max(min(np.floor(yhi), float(r1)), -1.0))
-            e0, e1 = bands_of(first, last, band, step)
-            for k in range(e0, e1, step):
-                start_row, stop_row = rows_of(k, first, last)
-                for r in range(start_row, stop_row):
-                    xc = xlo + ((r - ylo) * dx) / dy
-                    if xc == xc:             # not NaN (inf - inf over a huge edge)
-                        xl[r] = min(xl[r], xc)
-                        xr[r] = max(xr[r], xc)
-        color = colors[p]
-        for k in range(k0, k1, step):
-            start_row, stop_row = rows_of(k, r0, r1)
-            for r in range(start_row, stop_row):
-                if xl[r] < xr[r]:
-                    x0 = min(max(np.ceil(xl[r]), 0.0), float(width))
-                    x1 = max(min(np.ceil(xr[r]), float(width)), 0.0) - 1.0
-                    span(buf, layout, width, height, r, int(x0), int(x1), color)
+            nc = colors.shape[1]         # (the channel writes of spans.span)
+            for x in range(width):
+                p = ids[r, x]
+                if p >= 0:
+                    buf[r, x, 0] = colors[p, 0]
+                    if nc > 1:
+                        buf[r, x, 1] = colors[p, 1]
+                        buf[r, x, 2] = colors[p, 2]
+                        if nc > 3:
+                            buf[r, x, 3] = colors[p, 3]
 
 
 @helper

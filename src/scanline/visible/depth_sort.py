@@ -5,6 +5,8 @@
 space), painted at image precision.
 """
 
+import threading
+
 import numpy as np
 
 from .. import _validate as v
@@ -22,38 +24,54 @@ TESTS = ("x extents apart", "y extents apart", "S behind plane of S'",
 TOLERANCE = 1e-9
 
 
-#: At most this many grid cells a side.
-GRID = 1000
+def _bucket_room(entries):
+    """Rows of the grid's buckets allocated for ``entries`` entries (the kernel asks
+    for more when they are too few)."""
+    return entries
 
 
-def _grid(ext):
-    """The grid of the candidate search: (x0, y0, cell, nx, ny), cells of twice the
-    median piece size (at most :data:`GRID` a side; one cell when the extents are too
-    large to subtract), and each piece's cell count."""
-    with np.errstate(all="ignore"):
-        size = np.maximum(ext[:, 1] - ext[:, 0], ext[:, 3] - ext[:, 2])
-        x0, y0 = float(ext[:, 0].min()), float(ext[:, 2].min())
-        wide, high = float(ext[:, 1].max()) - x0, float(ext[:, 3].max()) - y0
-        cell = max(float(np.median(size)) * 2.0, max(wide, high) / GRID, 1e-6)
-        if not np.isfinite(cell):
-            return np.array([x0, y0, np.inf, 1.0, 1.0]), np.ones(len(ext), np.int64)
-        nx, ny = int(wide // cell) + 1, int(high // cell) + 1
-        i = np.clip(np.floor((ext[:, 0:2] - x0) / cell), 0, nx - 1)
-        j = np.clip(np.floor((ext[:, 2:4] - y0) / cell), 0, ny - 1)
-    cells = (i[:, 1] - i[:, 0] + 1) * (j[:, 1] - j[:, 0] + 1)
-    return np.array([x0, y0, cell, nx, ny], np.float64), cells.astype(np.int64)
+#: Most bytes of working arrays a thread keeps from one sort to the next.
+KEEP = 64 << 20
+
+_KEPT = threading.local()
 
 
-def _grown(a, rows):
-    """``a`` with room for at least ``rows`` rows (doubling), the rows kept."""
-    out = np.empty((max(rows, 2 * len(a)),) + a.shape[1:], a.dtype)
+def _work(name, shape, dtype=np.float64):
+    """An uninitialized working array of ``shape``: the first rows of the array
+    ``name`` the calling thread kept from an earlier sort when it has enough of them
+    (megabytes of new memory cost the sort of 10,000 polygons more in page faults
+    than the sort itself, as the scratch buffers of :mod:`scanline.render.zbuffer`),
+    else a new one, kept while the thread keeps at most :data:`KEEP` bytes in all.
+    The arrays seen by the kernels have the rows asked for, kept or not."""
+    kept = getattr(_KEPT, "arrays", None)
+    if kept is None:
+        kept = _KEPT.arrays = {}
+    a = kept.get(name)
+    if a is not None and a.shape[0] >= shape[0] and a.shape[1:] == shape[1:] and (
+            a.dtype == dtype):
+        return a[:shape[0]]
+    a = np.empty(shape, dtype)
+    kept.pop(name, None)
+    if a.nbytes + sum(b.nbytes for b in kept.values()) <= KEEP:
+        kept[name] = a
+    return a
+
+
+def _grown(a, rows, name=None):
+    """``a`` with room for at least ``rows`` rows (doubling), the rows kept (a
+    working array ``name`` of :func:`_work`, or a new array)."""
+    shape = (max(rows, 2 * len(a)),) + a.shape[1:]
+    out = np.empty(shape, a.dtype) if name is None else _work(name, shape, a.dtype)
     out[:len(a)] = a
     return out
 
 
-def _describe(log, rows):
-    """The kernel's log rows as the dicts of :func:`depth_sort`'s ``log``."""
+def _describe(log, rows, byz):
+    """The kernel's log rows as the dicts of :func:`depth_sort`'s ``log``, the pieces
+    numbered as given (the kernel numbers the pieces given by rank: ``byz``)."""
+    n = len(byz)
     for s, t, decided, action, piece, by, new in log[:rows].tolist():
+        s, t, piece, by = (int(byz[x]) if 0 <= x < n else x for x in (s, t, piece, by))
         row = {"S": s, "S'": t}
         outcomes = ("no",) * (decided - 1) + ("yes",) if decided else ("no",) * 5
         row.update(zip(TESTS, outcomes))
@@ -129,70 +147,66 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None):
     n = len(sp)
     if n == 0:
         return sp.subset([])
-    ext = sp.extents()
-    grid, cells = _grid(ext)
+    nv = len(sp.vertices)
     cap = 2 * n + 16
-    norm = np.linalg.norm(sp.planes[:, :3], axis=1, keepdims=True)
-    fl = np.empty((cap, 12))
-    fl[:n, :6] = ext
-    fl[:n, 6:10] = sp.planes / np.where(norm > 0, norm, 1.0)
-    x, y = sp.vertices[:, 0], sp.vertices[:, 1]
-    nxt = np.arange(1, len(x) + 1)
-    nxt[sp.offsets[1:] - 1] = sp.offsets[:-1]
-    fl[:n, 11] = np.where(np.add.reduceat(x * y[nxt] - x[nxt] * y, sp.offsets[:-1]) > 0,
-                          1.0, -1.0)
-    order = np.argsort(-ext[:, 5], kind="stable")
-    fl[order, 10] = np.arange(n, dtype=np.float64)
-    counts = sp.counts
-    it = np.zeros((cap, 6), np.int64)
-    it[:n, 0] = sp.offsets[:-1]
-    it[:n, 1] = counts
-    it[:n, 2] = sp.face
-    it[:n, 3] = 1
-    it[:n, 5] = -1
-    pv = np.empty((2 * len(sp.vertices) + 64, 3))
-    pv[:len(sp.vertices)] = sp.vertices
-    heap = np.empty((cap, 2))
-    ent = np.empty((int(cells.sum()) + 4 * int(cells.max()) + 256, 2), np.int64)
-    out = np.empty_like(pv)
+    fl = _work("fl", (cap, 12))
+    it = _work("it", (cap, k.IT), np.int64)
+    tag = _work("tag", (cap,), np.int64)
+    pv = _work("pv", (2 * nv + 64, 3))
+    byz = _work("byz", (n,), np.int64)
+    keys, tkeys = _work("keys", (cap,)), _work("tkeys", (cap,))
+    cand, titems = _work("cand", (cap,), np.int64), _work("titems", (cap,), np.int64)
+    grid = np.empty(6)
     st = np.zeros(k.STATE, np.int64)
-    st[[k.PIECES, k.VERTS, k.ALIVE]] = n, len(sp.vertices), n
-    st[k.LOW] = -1
-    st[k.MAXK] = counts.max()
-    st[k.MAXCELLS] = 1
-    drawn, cand, titems = (np.empty(cap, np.int64) for _ in range(3))
-    keys, tkeys = np.empty(cap), np.empty(cap)
+    # work: the Python twin's microseconds (about 50 a polygon, and the radix sort's
+    # counts)
+    call(k.prepare, 40 * n + 10 * nv + 3000, np.ascontiguousarray(sp.vertices, np.float64),
+         np.ascontiguousarray(sp.offsets, np.int64),
+         np.ascontiguousarray(sp.planes, np.float64), np.ascontiguousarray(sp.face, np.int64),
+         fl, it, tag, pv, byz, keys, tkeys, titems, grid, st)
+    cells = int(grid[3]) * int(grid[4])
+    heads = _work("heads", (cells,), np.int64)
+    heads.fill(-1)
+    first, low = _work("first", (cells + 1,), np.int64), _work("low", (cells,), np.int64)
+    cent = _work("cent", (_bucket_room(int(st[k.BUCKETS])), 6))
+    ent = _work("ent", (int(st[k.BUCKETS]) // 2 + 4 * int(st[k.MAXCELLS]) + 256, 2), np.int64)
+    heap = _work("heap", (cap, 2))
+    out = _work("out", pv.shape)
+    dface, dplane = _work("dface", (cap,), np.int64), _work("dplane", (cap, 4))
+    doff = _work("doff", (cap + 1,), np.int64)
+    doff[0] = 0
+    memo = _work("memo", (8 * n + 1024,), np.int64)
     rows = np.empty((4 * n + 16 if log is not None else 1, 7), np.int64)
-    heads = np.full(int(grid[3] * grid[4]), -1, np.int64)
-    first, low = np.empty(len(heads) + 1, np.int64), np.empty(len(heads), np.int64)
-    cent = np.empty((int(cells.sum()), 6))
     max_steps = 4 * limit + 10 * n * n + 100
     while True:
-        status = call(k.depth_sort, 300 * n + 10, pv, fl, it, heap, heads, ent, grid, first,
-                      low, cent, order, drawn, out, cand, keys, tkeys, titems, rows,
-                      np.empty(4), st, tolerance(sp), MIN_AREA * 1e-3, limit + n, max_steps,
-                      split_cycles, k.TRACE[log is not None])
+        status = call(k.depth_sort, 300 * n + 10, pv, fl, it, tag, heap, heads, ent, grid, first,
+                      low, cent, dface, dplane, doff, out, cand, keys, tkeys, titems, memo,
+                      rows, np.empty(4), st, tolerance(sp), MIN_AREA * 1e-3, limit + n,
+                      max_steps, split_cycles, k.TRACE[log is not None])
         if status != k.NEED_ROOM:
             break
         short = st[k.T]
         if short == k.ROOM_PIECES:
-            fl, it = _grown(fl, len(fl) + 2), _grown(it, len(it) + 2)
-            drawn, cand, titems = (_grown(a, len(fl)) for a in (drawn, cand, titems))
-            keys, tkeys = _grown(keys, len(fl)), _grown(tkeys, len(fl))
+            fl, it = _grown(fl, len(fl) + 2, "fl"), _grown(it, len(it) + 2, "it")
+            tag = _grown(tag, len(fl), "tag")
+            cand, titems = _grown(cand, len(fl), "cand"), _grown(titems, len(fl), "titems")
+            keys, tkeys = _grown(keys, len(fl), "keys"), _grown(tkeys, len(fl), "tkeys")
+            dface, dplane = _grown(dface, len(fl), "dface"), _grown(dplane, len(fl), "dplane")
+            doff = _grown(doff, len(fl) + 1, "doff")
         elif short == k.ROOM_VERTS:
-            pv = _grown(pv, st[k.VERTS] + 4 * st[k.MAXK])
+            pv = _grown(pv, st[k.VERTS] + 4 * st[k.MAXK], "pv")
         elif short == k.ROOM_HEAP:
-            heap = _grown(heap, st[k.HEAP] + 2)
+            heap = _grown(heap, st[k.HEAP] + 2, "heap")
         elif short == k.ROOM_ENTRIES:
-            ent = _grown(ent, st[k.ENTRIES] + 2 * st[k.MAXCELLS])
+            ent = _grown(ent, st[k.ENTRIES] + 2 * st[k.MAXCELLS], "ent")
         elif short == k.ROOM_BUCKETS:
-            cent = np.empty((st[k.BUCKETS], 6))
+            cent = _work("cent", (st[k.BUCKETS], 6))
         elif short == k.ROOM_ROWS:
             rows = _grown(rows, st[k.ROWS] + st[k.ALIVE] + 1)
         else:
-            out = _grown(out, st[k.OUT] + st[k.MAXK])
+            out = _grown(out, st[k.OUT] + st[k.MAXK], "out")
     if log is not None:
-        log.extend(_describe(rows, st[k.ROWS]))
+        log.extend(_describe(rows, st[k.ROWS], byz))
     s, t = int(st[k.S]), int(st[k.T])
     if status == k.TOO_LONG:
         raise DepthSortLoopError(
@@ -204,17 +218,17 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None):
             f"depth sort needs more than max_pieces={limit} pieces to resolve the "
             f"overlaps of {n} polygons; raise max_pieces")
     if status in (k.CYCLE, k.UNCUT):
-        faces = f"polygons {s} and {t} (faces {it[s, 2]} and {it[t, 2]})"
+        named = [int(byz[x]) if x < n else x for x in (s, t)]
+        faces = f"polygons {named[0]} and {named[1]} (faces {it[s, 2]} and {it[t, 2]})"
         raise DepthSortLoopError(
             f"{faces} overlap cyclically or intersect: no drawing order exists without "
             "splitting; use split_cycles=True" if status == k.CYCLE else
             f"{faces} cannot be ordered and neither plane cuts the other polygon (nearly "
             "coincident polygons?); the loop flag stopped the sort")
-    drawn = drawn[:st[k.DRAWN]]
-    offsets = np.zeros(len(drawn) + 1, np.int64)
-    np.cumsum(it[drawn, 1], out=offsets[1:])
-    return ScreenPolygons(out[:st[k.OUT]], offsets, it[drawn, 2],
-                          np.ascontiguousarray(fl[drawn, 6:10]), sp.width, sp.height)
+    drawn = int(st[k.DRAWN])     # (copies of the working arrays: new arrays, no larger
+    return ScreenPolygons(out[:st[k.OUT]].copy(), doff[:drawn + 1].copy(),    # than
+                          dface[:drawn].copy(), dplane[:drawn].copy(),         # needed)
+                          sp.width, sp.height)
 
 
 def tolerance(sp):

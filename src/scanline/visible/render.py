@@ -1,6 +1,8 @@
 """``sl.visible.render``: one scene by any of the methods of this package, flat
 shaded (each face one color)."""
 
+import threading
+
 import numpy as np
 
 from .. import _validate as v
@@ -67,6 +69,19 @@ def face_colors(fb, meshes, colors=None):
     return np.concatenate(rows).astype(np.uint8).reshape(total, -1)
 
 
+_SCRATCH = threading.local()
+
+
+def _piece_buffer(height, width):
+    """The piece number per pixel that :func:`paint` paints before the colors (int32,
+    height x width), kept for the calling thread and reused by its next painting of
+    the same size (new megabytes cost more in page faults than the painting)."""
+    kept = getattr(_SCRATCH, "ids", None)
+    if kept is None or kept.shape != (height, width):
+        kept = _SCRATCH.ids = np.empty((height, width), np.int32)
+    return kept
+
+
 def paint(fb, result, values):
     """Paint a method's result: object order piece after piece, later over earlier
     (the convex pieces' spans, sampled as :func:`scanline.draw.polygons` samples);
@@ -82,7 +97,10 @@ def paint(fb, result, values):
             colors = np.ascontiguousarray(values[result.face], np.uint8)
             # work: a frame's worth of pixels and ten units a vertex (the pieces' own
             # areas would cost more to add up than small scenes take to paint)
-            call_in_bands(paint_convex, fb.width * fb.height + 10 * len(verts), buf, layout(packed), fb.width, fb.height, verts, result.offsets, colors)
+            call_in_bands(paint_convex, fb.width * fb.height + 10 * len(verts), buf,
+                          layout(packed), fb.width, fb.height, verts,
+                          np.ascontiguousarray(result.offsets, np.int64), colors,
+                          _piece_buffer(fb.height, fb.width))
         return
     face = result.face
     buf, packed = fb._raster()

@@ -258,7 +258,7 @@ def shade_row(y, faces, bary, table, tface, world, normals, colors, front, face_
     kk = (3 if len(shading) == VERTEX else 9 if own else 6)
     x = 0
     while x < width:
-        n = 0
+        n = np.int64(0)    # (a literal 0 would compile store_chunk twice)
         while n < CHUNK and x < width:
             if len(source) == TRIANGLES:
                 t = faces[y, x]

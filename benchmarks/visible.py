@@ -5,8 +5,9 @@ Workloads (fixed seed):
 
 * ``depth sort``: 10,000 random small triangles (a few pixels to tens of pixels, at
   random depths, some overlapping) on an 800 x 600 RGB canvas.  scanline:
-  ``sl.visible.depth_sort`` on the screen-space polygons and the pieces painted in
-  order (``scanline.visible.render.paint``; both timed); matplotlib: a ``Poly3DCollection`` of the same
+  ``sl.visible.paint_depth_sorted``: ``sl.visible.depth_sort`` on the screen-space
+  polygons with the pieces painted in order as the sort hands them over (on the
+  second core, while it orders the next ones; both timed); matplotlib: a ``Poly3DCollection`` of the same
   triangles in a 3-D axes drawn to an Agg canvas (``fig.canvas.draw()``), which sorts
   by one key per polygon -- it is doing less (no tests, no splitting).
 * ``methods``: a sphere, a torus and a cube (about 5,000 faces) through a perspective
@@ -30,7 +31,6 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from common import Report  # noqa: E402
 
 import scanline as sl  # noqa: E402
-from scanline.visible.render import paint  # noqa: E402
 
 W, H = 800, 600
 
@@ -94,12 +94,12 @@ def depth_sort_workload(report, rng, quick):
 
     def scanline_sort():
         fb = sl.FrameBuffer(W, H, background="white")
-        paint(fb, sl.visible.depth_sort(sp), values)
+        sl.visible.paint_depth_sorted(fb, sp, values)
         return fb
 
     report.add(work, "matplotlib", "Poly3DCollection + fig.canvas.draw() (Agg)",
                matplotlib_draw(tris), repeats=2, n=n)
-    report.add(work, "scanline", "depth_sort(sp) + the pieces painted in order",
+    report.add(work, "scanline", "paint_depth_sorted(fb, sp, values)",
                scanline_sort, repeats=2, n=n)
     report.target(work, "matplotlib", 5.0, ">= 5x faster than matplotlib's one-key sort")
 

@@ -244,3 +244,63 @@ def test_bsp_tree_of_crossed_sticks_grows_its_arrays_and_orders_every_piece(comp
 def test_bsp_piece_limit():
     with pytest.raises(BSPTooLargeError, match="max_pieces"):
         sl.visible.BSPTree(crossed_sticks(), max_pieces=40)
+
+
+@pytest.mark.parametrize("compile_mode", ["never", "always"])
+def test_runs_handed_over_are_every_piece_once_in_drawing_order(compile_mode, monkeypatch):
+    # the sort pauses after each run of RUN pieces (here 37: a run ends between any
+    # two pieces, splits included) and hands the run to drawn=; the runs put end to
+    # end are the pieces returned, and pausing changes no piece
+    from scanline._kernels import _jit
+
+    monkeypatch.setattr(_jit, "COMPILE", compile_mode)
+    module = importlib.import_module("scanline.visible.depth_sort")
+    monkeypatch.setattr(module, "RUN", 37)
+    sp = small_triangles(400, 4)
+    runs = []
+    out = depth_sort(sp, drawn=lambda v, o, f: runs.append((v.copy(), o.copy(), f.copy())))
+    assert len(out) > len(sp) and same_pieces(out, depth_sort(sp))
+    assert [len(f) for _, _, f in runs[:-1]] == [37] * (len(runs) - 1)
+    assert 0 < len(runs[-1][2]) <= 37
+    assert np.array_equal(np.concatenate([f for _, _, f in runs]), out.face)
+    assert np.array_equal(np.concatenate([v for v, _, _ in runs]), out.vertices)
+    for (v, o, f), lo in zip(runs, range(0, len(out), 37)):
+        assert o[0] == 0 and o[-1] == len(v) and len(o) == len(f) + 1
+        assert np.array_equal(o + out.offsets[lo], out.offsets[lo:lo + len(f) + 1])
+
+
+def test_drawn_must_be_a_function():
+    with pytest.raises(sl.ArgumentTypeError, match="drawn must be a function"):
+        depth_sort(small_triangles(5, 1), drawn=3)
+
+
+@pytest.mark.parametrize("mode", ["1", "L", "RGB", "RGBA"])
+def test_painting_beside_the_sort_gives_the_pixels_of_sort_then_paint(mode, monkeypatch):
+    # paint_depth_sorted paints each run on a second thread while the sort goes on;
+    # the pixels are those of painting the sorted pieces afterwards (short runs, so
+    # that many runs overlap the sort)
+    from scanline.visible.render import paint
+
+    module = importlib.import_module("scanline.visible.depth_sort")
+    monkeypatch.setattr(module, "RUN", 50)
+    sp = small_triangles(800, 5)
+    ours = sl.FrameBuffer(SMALL_W, SMALL_H, mode=mode, background="white")
+    theirs = sl.FrameBuffer(SMALL_W, SMALL_H, mode=mode, background="white")
+    rng = np.random.default_rng(5)
+    values = np.array([ours.pixel(tuple(int(c) for c in rng.integers(0, 256, 3)))
+                       for _ in range(len(sp))], np.uint8).reshape(len(sp), -1)
+    pieces = sl.visible.paint_depth_sorted(ours, sp, values)
+    paint(theirs, depth_sort(sp), values)
+    assert same_pieces(pieces, depth_sort(sp))
+    assert np.array_equal(ours.to_array(), theirs.to_array())
+    shades = len(np.unique(ours.to_array().reshape(SMALL_H * SMALL_W, -1), axis=0))
+    assert shades == 2 if mode == "1" else shades > 100
+
+
+def test_a_sort_that_fails_leaves_the_frame_buffer_as_it_was():
+    fb = sl.FrameBuffer(W, H, background="white")
+    before = fb.to_array()
+    with pytest.raises(DepthSortLoopError):
+        sl.visible.paint_depth_sorted(fb, ScreenPolygons.from_device(cyclic(), W, H),
+                                      np.array([[255, 0, 0]] * 3, np.uint8), split_cycles=False)
+    assert np.array_equal(fb.to_array(), before)

@@ -85,7 +85,8 @@ BUCKETED = 17   # 1 once the pieces given are bucketed in the grid
 BUCKETS = 18    # entries of the buckets (rows of ``cent`` needed)
 MEMO = 19       # memo entries used
 GIVEN = 20      # the pieces given (numbered 0 .. GIVEN - 1 by rank)
-STATE = 21
+PAUSE = 21      # pause once this many pieces are in drawing order (0: never)
+STATE = 22
 
 #: Columns of ``it``.
 IT = 8
@@ -108,6 +109,7 @@ TOO_LONG = 2    # the step bound was reached
 TOO_MANY = 3    # max_pieces would be exceeded
 CYCLE = 4       # a cycle and splitting is off
 UNCUT = 5       # a cycle neither plane cuts, nor a plane across the middle
+PAUSED = 6      # st[PAUSE] pieces are in drawing order: call again to go on
 
 # which array lacks room
 ROOM_PIECES = 0
@@ -725,7 +727,9 @@ def depth_sort(pv, fl, it, tag, heap, cells, ent, grid, first, low, cent, dface,
     the split pieces linked in the grid cells; ``memo``: the memo entries;
     ``limit``: most pieces in all; ``max_steps``: the loop bound; ``trace``: a
     :data:`TRACE` token (LOGGED: compare with every surface alive and log each pair).
-    Returns the status (also in ``st[STATUS]``)."""
+    Returns the status (also in ``st[STATUS]``): :data:`PAUSED` when the piece just
+    put in drawing order is the ``st[PAUSE]``-th and others remain (the caller may
+    paint the pieces ordered so far while the sort goes on, and calls again)."""
     none = np.int64(NONE)         # typed, not literal, arguments of log_row
     nil = np.int64(-1)
     given = st[GIVEN]
@@ -913,6 +917,9 @@ def depth_sort(pv, fl, it, tag, heap, cells, ent, grid, first, low, cent, dface,
             tag[s] = DEAD
             it[s, 3] = 0
             st[ALIVE] -= 1
+            if d + 1 == st[PAUSE] and st[ALIVE] > 0:
+                st[STATUS] = PAUSED
+                return PAUSED
             continue
         if len(trace) != LOGGED:     # S's memo: those before the mover passed
             if st[MEMO] + m <= memo.shape[0]:

@@ -232,21 +232,9 @@ def paint_convex(band, step, buf, layout, width, height, verts, offsets, colors,
     bottom = np.empty(n, np.int64)
     count = np.zeros(bands + 1, np.int64)
     for p in range(n):
-        start = offsets[p]
-        end = offsets[p + 1]
-        lo = np.inf
-        hi = -np.inf
-        finite = True
-        for i in range(start, end):
-            finite = finite and abs(verts[i, 0]) < np.inf and abs(verts[i, 1]) < np.inf
-            lo = min(lo, verts[i, 1])
-            hi = max(hi, verts[i, 1])
+        r0, r1 = piece_rows(verts, offsets[p], offsets[p + 1], height)
         top[p] = 1
         bottom[p] = 0
-        if not finite or end - start < 3:
-            continue
-        r0 = int(min(max(np.floor(lo) + 1.0, 0.0), float(height)))
-        r1 = int(max(min(np.floor(hi), height - 1.0), -1.0))
         k0, k1 = bands_of(r0, r1, band, step)
         if r0 > r1 or k0 >= k1:
             continue
@@ -286,22 +274,83 @@ def paint_convex(band, step, buf, layout, width, height, verts, offsets, colors,
                 paint_polygon(ids, width, height, verts, start, end, np.int32(p),
                               first_row, stop_row - 1, xl, xr)
         for r in range(first_row, stop_row):
-            if len(layout) == PACKED:
-                for x in range(width):
-                    p = ids[r, x]
-                    if p >= 0:
-                        put_bit(buf, x, r, colors[p, 0])
-                continue
-            nc = colors.shape[1]         # (the channel writes of spans.span)
-            for x in range(width):
-                p = ids[r, x]
-                if p >= 0:
-                    buf[r, x, 0] = colors[p, 0]
-                    if nc > 1:
-                        buf[r, x, 1] = colors[p, 1]
-                        buf[r, x, 2] = colors[p, 2]
-                        if nc > 3:
-                            buf[r, x, 3] = colors[p, 3]
+            color_row(buf, layout, width, ids, colors, r)
+
+
+@kernel
+def paint_ids(width, height, verts, offsets, first, ids):
+    """Paint the numbers ``first + p`` of convex polygons ``p`` (``verts[offsets[p]:
+    offsets[p + 1]]``) in order into ``ids`` (int32, height x width), the spans of
+    :func:`paint_convex` on every row, and no colors: a run of pieces painted while
+    the depth sort orders the next ones (:func:`color_ids` colors the pixels once
+    every run is in)."""
+    xl = np.empty(max(height, 1))
+    xr = np.empty(max(height, 1))
+    for p in range(offsets.shape[0] - 1):
+        start = offsets[p]
+        end = offsets[p + 1]
+        r0, r1 = piece_rows(verts, start, end, height)
+        if r0 > r1:
+            continue
+        number = np.int32(first + p)
+        if end - start == 3:
+            paint_triangle(ids, width, height, verts, start, number, r0, r1)
+        else:
+            paint_polygon(ids, width, height, verts, start, end, number, r0, r1, xl, xr)
+
+
+@kernel
+def color_ids(band, step, buf, layout, width, height, colors, ids):
+    """Each pixel of the bands of rows ``band``, ``band + step``, ... (as in
+    :func:`paint_convex`) whose ``ids`` number p is not negative takes ``colors[p]``;
+    the others keep theirs."""
+    zero = np.int64(0)
+    k0, k1 = bands_of(zero, height - 1, band, step)
+    for k in range(k0, k1, step):
+        first_row, stop_row = rows_of(k, zero, height - 1)
+        for r in range(first_row, stop_row):
+            color_row(buf, layout, width, ids, colors, r)
+
+
+@helper
+def piece_rows(verts, start, end, height):
+    """The rows ``r0 .. r1`` that the spans of convex piece ``verts[start:end]``
+    may cover (the 2-D fill's y_min < r <= y_max, clipped to the raster); r0 > r1
+    when there are none, or when the piece has fewer than three vertices or one
+    that is not finite (clipped in floats: a huge coordinate has no integer)."""
+    lo = np.inf
+    hi = -np.inf
+    finite = end - start >= 3
+    for i in range(start, end):
+        finite = finite and abs(verts[i, 0]) < np.inf and abs(verts[i, 1]) < np.inf
+        lo = min(lo, verts[i, 1])
+        hi = max(hi, verts[i, 1])
+    if not finite:
+        return 1, 0
+    return (int(min(max(np.floor(lo) + 1.0, 0.0), float(height))),
+            int(max(min(np.floor(hi), height - 1.0), -1.0)))
+
+
+@helper
+def color_row(buf, layout, width, ids, colors, r):
+    """Row ``r``'s pixels painted in ``ids`` (number p >= 0) take ``colors[p]`` (the
+    channel writes of :func:`scanline._kernels.spans.span`)."""
+    if len(layout) == PACKED:
+        for x in range(width):
+            p = ids[r, x]
+            if p >= 0:
+                put_bit(buf, x, r, colors[p, 0])
+        return
+    nc = colors.shape[1]
+    for x in range(width):
+        p = ids[r, x]
+        if p >= 0:
+            buf[r, x, 0] = colors[p, 0]
+            if nc > 1:
+                buf[r, x, 1] = colors[p, 1]
+                buf[r, x, 2] = colors[p, 2]
+                if nc > 3:
+                    buf[r, x, 3] = colors[p, 3]
 
 
 @helper

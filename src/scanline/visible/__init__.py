@@ -21,11 +21,11 @@ from .depth_sort import TESTS, depth_sort
 from .hidden_lines import hidden_lines, visible_lines
 from .painter import painter
 from .polygons import ScreenPolygons, VisibleFaces, screen_polygons
-from .render import METHODS, render, visible
+from .render import METHODS, paint_depth_sorted, render, visible
 from .scanline_method import scan_line
 from .warnock import area_subdivision
 
 __all__ = ["BSPTree", "METHODS", "ScreenPolygons", "TESTS", "VisibleFaces",
            "area_subdivision", "bsp", "camera_eye", "depth_sort", "hidden_lines",
-           "painter", "render", "scan_line", "screen_polygons", "visible",
+           "paint_depth_sorted", "painter", "render", "scan_line", "screen_polygons", "visible",
            "visible_lines"]

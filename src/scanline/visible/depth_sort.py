@@ -85,7 +85,20 @@ def _describe(log, rows, byz):
         yield row
 
 
-def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None):
+#: Pieces in a run handed to ``drawn`` (:func:`depth_sort`).
+RUN = 1024
+
+
+def _hand(drawn, out, doff, dface, lo, hi):
+    """``drawn`` called with the pieces ``lo .. hi - 1`` in drawing order (views of
+    the sort's arrays); returns ``hi``."""
+    if hi > lo and drawn is not None:
+        a = doff[lo]
+        drawn(out[a:doff[hi]], doff[lo:hi + 1] - a, dface[lo:hi])
+    return hi
+
+
+def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None, drawn=None):
     """Order (and split where needed) polygons back to front by the depth-sorting
     method.
 
@@ -102,6 +115,15 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None):
     max_pieces : int, optional
         Most pieces the splitting may create (default 16 P + 1000); beyond it
         :class:`~scanline.errors.DepthSortLoopError` is raised.
+    drawn : callable, optional
+        Called on this thread with each run of pieces (:data:`RUN`, the last one
+        shorter) as soon as their drawing order is fixed, while the sort of the rest
+        waits: ``drawn(vertices, offsets, face)`` (as in :class:`ScreenPolygons`;
+        views of the sort's working arrays, valid until the sort returns: copy what
+        must outlive it).  Every piece is handed over once, in drawing order, before
+        the sort returns (not after an error).  The painting of
+        :func:`scanline.visible.render.paint_depth_sorted` goes on beside the sort
+        this way.
 
     Returns
     -------
@@ -144,6 +166,9 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None):
         raise v.ArgumentTypeError(f"split_cycles must be True or False, got {split_cycles!r}")
     limit = 16 * len(sp) + 1000 if max_pieces is None else v.positive_int("max_pieces",
                                                                           max_pieces)
+    if drawn is not None and not callable(drawn):
+        raise v.ArgumentTypeError(f"drawn must be a function of (vertices, offsets, face) "
+                                  f"or None, got {v._show(drawn)}")
     n = len(sp)
     if n == 0:
         return sp.subset([])
@@ -178,11 +203,18 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None):
     memo = _work("memo", (8 * n + 1024,), np.int64)
     rows = np.empty((4 * n + 16 if log is not None else 1, 7), np.int64)
     max_steps = 4 * limit + 10 * n * n + 100
+    run = RUN if drawn is not None else 0
+    st[k.PAUSE] = run
+    handed = 0
     while True:
         status = call(k.depth_sort, 300 * n + 10, pv, fl, it, tag, heap, heads, ent, grid, first,
                       low, cent, dface, dplane, doff, out, cand, keys, tkeys, titems, memo,
                       rows, np.empty(4), st, tolerance(sp), MIN_AREA * 1e-3, limit + n,
                       max_steps, split_cycles, k.TRACE[log is not None])
+        if status == k.PAUSED:
+            handed = _hand(drawn, out, doff, dface, handed, int(st[k.DRAWN]))
+            st[k.PAUSE] += run
+            continue
         if status != k.NEED_ROOM:
             break
         short = st[k.T]
@@ -225,10 +257,10 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None):
             "splitting; use split_cycles=True" if status == k.CYCLE else
             f"{faces} cannot be ordered and neither plane cuts the other polygon (nearly "
             "coincident polygons?); the loop flag stopped the sort")
-    drawn = int(st[k.DRAWN])     # (copies of the working arrays: new arrays, no larger
-    return ScreenPolygons(out[:st[k.OUT]].copy(), doff[:drawn + 1].copy(),    # than
-                          dface[:drawn].copy(), dplane[:drawn].copy(),         # needed)
-                          sp.width, sp.height)
+    count = int(st[k.DRAWN])     # (copies of the working arrays: new arrays, no larger
+    _hand(drawn, out, doff, dface, handed, count)                        # than needed)
+    return ScreenPolygons(out[:st[k.OUT]].copy(), doff[:count + 1].copy(),
+                          dface[:count].copy(), dplane[:count].copy(), sp.width, sp.height)
 
 
 def tolerance(sp):

@@ -1,6 +1,7 @@
 """``sl.visible.render``: one scene by any of the methods of this package, flat
 shaded (each face one color)."""
 
+import queue
 import threading
 
 import numpy as np
@@ -12,7 +13,7 @@ from ..errors import ArgumentValueError
 from .bsp import BSPTree, bsp
 from .depth_sort import depth_sort
 from .painter import painter
-from .polygons import ScreenPolygons, VisibleFaces, meshes_list, screen_polygons
+from .polygons import ScreenPolygons, VisibleFaces, as_screen, meshes_list, screen_polygons
 from .scanline_method import scan_line
 from .warnock import area_subdivision
 
@@ -113,6 +114,53 @@ def paint(fb, result, values):
         buf[seen] = values[face[seen]]
 
 
+def paint_depth_sorted(fb, polygons, values, split_cycles=True, max_pieces=None):
+    """Depth-sort ``polygons`` (:func:`~scanline.visible.depth_sort.depth_sort`) and
+    paint the pieces in order, as :func:`paint` paints them: the same pixels, with
+    the painting done on a second thread while the sort goes on.
+
+    The sort hands over each run of pieces as soon as their order is fixed (its
+    ``drawn``); a painter thread writes the runs' piece numbers into the per-pixel
+    buffer of :func:`paint`, run after run, while the sort orders the next pieces;
+    when the last run is in, each pixel takes its piece's color (both cores, in
+    bands).  The frame buffer is written only then: on an error of the sort it is
+    left as it was.  ``values``: pixel values (F, channels) per face.  Returns the
+    pieces in drawing order."""
+    from .._kernels._jit import call
+    from .._kernels._threads import _submit, call_in_bands
+    from .._kernels.visible import color_ids, paint_ids
+
+    target(fb)
+    sp = as_screen(polygons)
+    buf, packed = fb._raster()
+    ids = _piece_buffer(fb.height, fb.width)
+    runs = queue.SimpleQueue()
+    numbered = [0]
+
+    def painter():
+        ids.fill(-1)
+        while (run := runs.get()) is not None:
+            verts, offsets, first = run
+            # work: ten units a vertex, as in paint
+            call(paint_ids, 10 * len(verts) + fb.height, fb.width, fb.height, verts,
+                 offsets, first, ids)
+
+    def drawn(verts, offsets, face):
+        runs.put((verts, offsets, numbered[0]))
+        numbered[0] += len(face)
+
+    wait = _submit(painter)
+    try:
+        pieces = depth_sort(sp, split_cycles, max_pieces=max_pieces, drawn=drawn)
+    finally:
+        runs.put(None)
+        wait()
+    if len(pieces):
+        call_in_bands(color_ids, fb.width * fb.height, buf, layout(packed), fb.width,
+                      fb.height, np.ascontiguousarray(values[pieces.face], np.uint8), ids)
+    return pieces
+
+
 def render(fb, meshes, camera, method="depth-sort", colors=None, cull_back_faces=False):
     """Draw ``meshes`` through ``camera`` with a visible-surface method, one flat
     color per face.
@@ -140,6 +188,9 @@ def render(fb, meshes, camera, method="depth-sort", colors=None, cull_back_faces
     target(fb)
     source = meshes._meshes if isinstance(meshes, BSPTree) else meshes
     values = face_colors(fb, source, colors)
+    if method == "depth-sort":
+        return paint_depth_sorted(fb, screen_polygons(meshes, camera, fb.width, fb.height,
+                                                      cull_back_faces), values)
     result = visible(meshes, camera, fb.width, fb.height, method, cull_back_faces)
     paint(fb, result, values)
     return result

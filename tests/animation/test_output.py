@@ -105,6 +105,14 @@ def test_serial_processes_and_dask_are_byte_identical(tmp_path):
             distributed.Client(cluster) as client:
         anim.save(tmp_path / "dask.gif", client=client)
         assert (tmp_path / "serial.gif").read_bytes() == (tmp_path / "dask.gif").read_bytes()
+        # the workers of this machine's cluster put the pixels in a shared file, which
+        # is gone after the render, whole or stopped early
+        assert _frames_files() == []
+        images = anim.images(client=client)
+        next(images)
+        assert len(_frames_files()) == 1
+        images.close()
+        assert _frames_files() == []
         # a long film: workers write the frames, this process encodes them at the end
         paths = anim.write_frames(tmp_path / "frames", client=client)
     assert [os.path.basename(p) for p in paths] == [f"frame-{i:05d}.png" for i in range(20)]
@@ -320,3 +328,48 @@ def test_workers_draw_on_one_thread_with_the_same_pixels():
         one = draw()
     assert _threads.threads() == __import__("numba").get_num_threads()
     np.testing.assert_array_equal(many, one)
+
+
+def _frames_files():
+    folder = "/dev/shm"
+    return sorted(f for f in os.listdir(folder) if f.startswith("scanline-frames-")) if (
+        os.path.isdir(folder)) else []
+
+
+@pytest.mark.skipif(not os.path.isdir("/dev/shm"), reason="no /dev/shm on this system")
+def test_dask_workers_of_this_machine_put_the_frames_in_a_shared_file(monkeypatch):
+    """A Dask worker given the client's shared file (by its path) copies the pixels
+    there and sends where they are; where it cannot open the file (another machine)
+    or reserve its pages (a full /dev/shm), or a frame does not fit its slot, the
+    frame goes LZ4-compressed (or copied) instead.  The file is removed on close."""
+    serial = [np.asarray(im) for im in Animation(mixed, frames=10, fps=4).images()]
+    slots = render_module._Slots.in_shared_file(2)
+    path = slots.path
+    assert _frames_files() == [os.path.basename(path)]
+    assert oct(os.stat(path).st_mode & 0o777) == "0o600"
+    sent = render_module.render_chunk(mixed, range(10), compress=True, slots=path, slot=1)
+    assert all(isinstance(p[0], render_module.InMemory) for p in sent)
+    assert sent[0][0].offset == render_module.SLOT_BYTES              # slot 1
+    for a, packed in zip(serial, sent):
+        np.testing.assert_array_equal(a, np.asarray(render_module.unpack(packed, slots.memory)))
+    elsewhere = render_module.render_chunk(mixed, range(3), compress=True,
+                                           slots=path + "-not-here", slot=0)
+    kinds = (render_module.Compressed if render_module._lz4() is not None else np.ndarray)
+    assert all(isinstance(p[0], kinds) for p in elsewhere)
+
+    def full(fd, offset, length):
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(os, "posix_fallocate", full)
+    unreserved = render_module.render_chunk(mixed, range(3), compress=False, slots=path, slot=0)
+    assert all(isinstance(p[0], np.ndarray) for p in unreserved)
+    monkeypatch.undo()
+    monkeypatch.setattr(render_module, "SLOT_BYTES", 5000)   # most frames do not fit
+    small = render_module._Slots.in_shared_file(1)
+    packed = render_module.render_chunk(mixed, range(10), slots=small.path, slot=0)
+    assert {type(p[0]) for p in packed} == {render_module.InMemory, np.ndarray}
+    for a, p in zip(serial, packed):
+        np.testing.assert_array_equal(a, np.asarray(render_module.unpack(p, small.memory)))
+    small.close()
+    slots.close()
+    assert _frames_files() == []

@@ -81,25 +81,36 @@ def render_chunk(render, indices, compress=False, slots=None, slot=None):
     """Render the frames ``indices`` with ``render`` (what one worker does with one
     chunk): a list of packed frames, see :func:`pack`.  Each frame's pixels are taken
     away before the next frame is rendered (a render function may draw every frame
-    into one frame buffer): with ``compress`` (a Dask worker sending to a client that
-    can read LZ4) LZ4-compressed, with ``slots`` copied into the shared memory of
-    ``slot`` (see :class:`_Slots`), else copied.  A frame buffer's pixels are read
-    where they are, never copied first: a Dask worker's process gives freed memory
-    back to the system at once (Dask's nanny sets ``MALLOC_TRIM_THRESHOLD_``), so
-    every megabyte copied is a megabyte of fresh pages, about 2 ms of a 640 x 480
-    frame's 20 in page faults for the copy and the frame buffer together."""
+    into one frame buffer): copied into ``slot`` of the shared memory ``slots`` (see
+    :class:`_Slots`; given by its file's path, a Dask worker opens it, if it can),
+    else, with ``compress`` (a Dask worker sending to a client that can read LZ4),
+    LZ4-compressed, else copied.  A frame buffer's pixels are read where they are,
+    never copied first: a Dask worker's process gives freed memory back to the
+    system at once (Dask's nanny sets ``MALLOC_TRIM_THRESHOLD_``), so every megabyte
+    copied is a megabyte of fresh pages, about 2 ms of a 640 x 480 frame's 20 in
+    page faults for the copy and the frame buffer together."""
     lz4 = _lz4() if compress else None
+    opened = None
+    if isinstance(slots, str):
+        opened = slots = _Slots.attach(slots)
     out, offset = [], None if slots is None else slot * SLOT_BYTES
-    with one_thread():
-        for i in indices:
-            pixels, *rest = pack(render(int(i)), int(i))
-            if lz4 is not None:
-                pixels = Compressed.of(lz4, pixels)
-            elif slots is not None and slots.fits(pixels, offset, slot):
-                pixels, offset = slots.put(pixels, offset), offset + pixels.nbytes
-            else:
-                pixels = np.array(pixels)
-            out.append((pixels, *rest))
+    try:
+        with one_thread():
+            for i in indices:
+                pixels, *rest = pack(render(int(i)), int(i))
+                placed = None
+                if slots is not None and slots.fits(pixels, offset, slot):
+                    placed = slots.put(pixels, offset)
+                if placed is not None:
+                    pixels, offset = placed, offset + pixels.nbytes
+                elif lz4 is not None:
+                    pixels = Compressed.of(lz4, pixels)
+                else:
+                    pixels = np.array(pixels)
+                out.append((pixels, *rest))
+    finally:
+        if opened is not None:
+            opened.close()
     return out
 
 
@@ -222,28 +233,101 @@ _WORKER_ERROR = None
 
 
 class _Slots:
-    """Shared memory for the frames of the chunks in flight: an anonymous shared
-    mapping made before the workers are forked, one slot of :data:`SLOT_BYTES` per
-    chunk.  A worker copies the chunk's pixels into its slot and sends only where
-    they are; the parent makes the images from there.  (Through the pool's pipe a
-    640 x 480 RGB frame costs each side about 3 ms of processor time, more than an
-    eighth of drawing a frame of a few hundred primitives.)  The pages are only
-    made when written; pixels that do not fit go through the pipe."""
+    """Shared memory for the frames of the chunks in flight, one slot of
+    :data:`SLOT_BYTES` per chunk.  A worker copies the chunk's pixels into its slot
+    and sends only where they are; this process makes the images from there.
+    (Through the pool's pipe a 640 x 480 RGB frame costs each side about 3 ms of
+    processor time, more than an eighth of drawing a frame of a few hundred
+    primitives; through a Dask worker's TCP connection, LZ4-compressed, about 1 ms.)
 
-    def __init__(self, count):
+    Two kinds: an anonymous shared mapping made before the worker processes are
+    forked (``_Slots(count)``), or a file in the machine's shared memory, /dev/shm
+    (:meth:`in_shared_file`), that a Dask worker opens by name (:meth:`attach`) when
+    it runs on this machine.  The pages are only made when written; a file's are
+    reserved first (``posix_fallocate``), so that a full /dev/shm is an error the
+    worker sees (the frame then goes another way), not a crash on the write.  Pixels
+    that do not fit in the slot go another way too."""
+
+    def __init__(self, count, memory=None, fd=None, path=None):
         import mmap
 
         self.count = count
-        self.memory = mmap.mmap(-1, count * SLOT_BYTES)
+        self.memory = mmap.mmap(-1, count * SLOT_BYTES) if memory is None else memory
+        self.fd = fd
+        self.path = path
+
+    @classmethod
+    def in_shared_file(cls, count):
+        """Slots in a new file of /dev/shm (readable by this user only), or None where
+        there is none (not Linux) or it cannot be made."""
+        import mmap
+        import secrets
+
+        folder = "/dev/shm"
+        if not (os.path.isdir(folder) and hasattr(os, "posix_fallocate")):
+            return None
+        path = os.path.join(folder, f"scanline-frames-{secrets.token_hex(8)}")
+        try:
+            fd = os.open(path, os.O_CREAT | os.O_EXCL | os.O_RDWR, 0o600)
+        except OSError:
+            return None
+        try:
+            os.ftruncate(fd, count * SLOT_BYTES)
+            return cls(count, mmap.mmap(fd, count * SLOT_BYTES), fd, path)
+        except OSError:
+            os.close(fd)
+            os.unlink(path)
+            return None
+
+    @classmethod
+    def attach(cls, path):
+        """The slots of the file ``path`` that :meth:`in_shared_file` made (worker
+        side), or None when this process cannot open it (another machine, or another
+        /dev/shm)."""
+        import mmap
+
+        try:
+            fd = os.open(path, os.O_RDWR)
+        except OSError:
+            return None
+        try:
+            size = os.fstat(fd).st_size
+            return cls(size // SLOT_BYTES, mmap.mmap(fd, size), fd)
+        except OSError:
+            os.close(fd)
+            return None
 
     def fits(self, pixels, offset, slot):
         """Whether ``pixels`` fit in ``slot`` from ``offset`` on."""
-        return offset + pixels.nbytes <= (slot + 1) * SLOT_BYTES
+        return slot < self.count and offset + pixels.nbytes <= (slot + 1) * SLOT_BYTES
 
     def put(self, pixels, offset):
-        """``pixels`` copied to ``offset`` (worker side): where they are now."""
+        """``pixels`` copied to ``offset`` (worker side): where they are now, or None
+        when a file's pages cannot be reserved (/dev/shm full)."""
+        if self.fd is not None:
+            try:
+                os.posix_fallocate(self.fd, offset, pixels.nbytes)
+            except OSError:
+                return None
         np.ndarray(pixels.shape, pixels.dtype, buffer=self.memory, offset=offset)[...] = pixels
         return InMemory(offset, pixels.shape, pixels.dtype.str)
+
+    def close(self):
+        """Unmap (and close a file; the one that made it removes it).  A view still
+        held (by a traceback) keeps the mapping, which goes with it."""
+        try:
+            self.memory.close()
+        except BufferError:
+            pass
+        if self.fd is not None:
+            os.close(self.fd)
+            self.fd = None
+        if self.path is not None:
+            try:
+                os.unlink(self.path)
+            except FileNotFoundError:
+                pass
+            self.path = None
 
 
 #: Bytes of shared address space for the frames of one chunk in flight (64 MB: 16
@@ -328,10 +412,7 @@ def _processes(render, parts, jobs):
             pool.terminate()
             pool.join()
             if slots is not None:
-                try:
-                    slots.memory.close()
-                except BufferError:     # a view still held (by a traceback): the
-                    pass                # mapping goes with it
+                slots.close()
     return gather()
 
 
@@ -365,23 +446,37 @@ def _dask(render, indices, client, owned):
         # a scatter the client is just releasing
         [shared] = client.scatter([render], broadcast=True, hash=False)
         window = 4 * workers
-        compress = _lz4() is not None       # the frames' pixels LZ4-compressed on the way
+        # the frames' pixels: in a shared file that workers on this machine open, else
+        # LZ4-compressed on the way
+        compress = _lz4() is not None
+        slots = _Slots.in_shared_file(window)
+        path = None if slots is None else slots.path
+        memory = None if slots is None else slots.memory
         pending = collections.deque()
+        free = list(range(window))
         queue = iter(parts)
-        try:
+
+        def submit():
             for part in queue:
-                pending.append(client.submit(render_chunk, shared, part, compress, pure=False))
-                if len(pending) >= window:
-                    break
+                slot = free.pop()
+                pending.append((client.submit(render_chunk, shared, part, compress, path, slot,
+                                              pure=False), slot))
+                return
+
+        try:
+            for _ in range(window):
+                submit()
             while pending:
-                packed = pending.popleft().result()
-                for part in queue:
-                    pending.append(client.submit(render_chunk, shared, part, compress, pure=False))
-                    break
-                yield from (unpack(p) for p in packed)
+                future, slot = pending.popleft()
+                images = [unpack(p, memory) for p in future.result()]
+                free.append(slot)                   # the pixels are copied out
+                submit()
+                yield from images
         finally:
             if pending:
-                client.cancel(list(pending))
+                client.cancel([future for future, _ in pending])
+            if slots is not None:
+                slots.close()
     finally:
         if owned:
             client.close()

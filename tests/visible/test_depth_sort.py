@@ -304,3 +304,18 @@ def test_a_sort_that_fails_leaves_the_frame_buffer_as_it_was():
         sl.visible.paint_depth_sorted(fb, ScreenPolygons.from_device(cyclic(), W, H),
                                       np.array([[255, 0, 0]] * 3, np.uint8), split_cycles=False)
     assert np.array_equal(fb.to_array(), before)
+
+
+def test_painting_beside_the_sort_checks_the_face_values():
+    sp = small_triangles(20, 6)
+    fb = sl.FrameBuffer(SMALL_W, SMALL_H, mode="L")
+    for values, message in [(np.zeros((20, 3), np.uint8), r"shape \(faces, 1\) for a mode 'L'"),
+                            (np.zeros(20, np.uint8), "one pixel value per face"),
+                            (np.full((20, 1), 300), "integers 0-255"),
+                            (np.zeros((20, 1), float), "integers 0-255"),
+                            (np.zeros((5, 1), np.uint8), "values holds 5 rows.*face 19")]:
+        with pytest.raises(sl.ArgumentValueError, match=message):
+            sl.visible.paint_depth_sorted(fb, sp, values)
+    assert not fb.to_array().any()
+    sl.visible.paint_depth_sorted(fb, sp, np.full((20, 1), 200))      # integers are taken
+    assert (fb.to_array() == 200).any()

@@ -114,6 +114,22 @@ def paint(fb, result, values):
         buf[seen] = values[face[seen]]
 
 
+def _face_values(values, channels, mode, face):
+    """``values`` as a uint8 array (F, ``channels``) with a row for every face in
+    ``face``, or a clear error."""
+    a = np.asarray(values)
+    if (a.ndim != 2 or a.shape[1] != channels or not np.issubdtype(a.dtype, np.integer)
+            or (a.size and (a.min() < 0 or a.max() > 255))):
+        raise ArgumentValueError(
+            f"values must hold one pixel value per face, integers 0-255 of shape (faces, "
+            f"{channels}) for a mode {mode!r} frame buffer (fb.pixel(color) gives a row), "
+            f"got dtype {a.dtype}, shape {a.shape}")
+    if len(face) and a.shape[0] <= int(face.max()):
+        raise ArgumentValueError(f"values holds {a.shape[0]} rows, but the polygons name face "
+                                 f"{int(face.max())}: give one row per face")
+    return a.astype(np.uint8, copy=False)
+
+
 def paint_depth_sorted(fb, polygons, values, split_cycles=True, max_pieces=None):
     """Depth-sort ``polygons`` (:func:`~scanline.visible.depth_sort.depth_sort`) and
     paint the pieces in order, as :func:`paint` paints them: the same pixels, with
@@ -133,6 +149,7 @@ def paint_depth_sorted(fb, polygons, values, split_cycles=True, max_pieces=None)
     target(fb)
     sp = as_screen(polygons)
     buf, packed = fb._raster()
+    values = _face_values(values, buf.shape[2], fb.mode, sp.face)
     ids = _piece_buffer(fb.height, fb.width)
     runs = queue.SimpleQueue()
     numbered = [0]

@@ -232,20 +232,25 @@ def test_three_d(segs, verts, faces, edges, counts, mode):
 
 
 @given(verts=arrays(3, max_rows=15), mode=MODES,
-       method=st.sampled_from(["painter", "depth-sort", "scan-line", "area-subdivision"]))
+       method=st.sampled_from(["painter", "depth-sort", "scan-line", "area-subdivision",
+                               "depth-sort beside"]))
 def test_visible_surface_methods(verts, mode, method):
     # hostile device triangles (every one planar and convex, so most pass validation
     # with their extreme values): sorted, split, painted into a guarded frame buffer
+    # (afterwards, or beside the sort: paint_depth_sorted)
     fb, big = frame(mode, 16, 12)
     with bounded():
         tris = [verts[i:i + 3] for i in range(0, len(verts) - 2, 3)] if np.ndim(verts) == 2 \
             else verts
         sp = sl.visible.ScreenPolygons.from_device(tris, 16, 12)
-        result = {"painter": sl.visible.painter, "depth-sort": sl.visible.depth_sort,
-                  "scan-line": sl.visible.scan_line,
-                  "area-subdivision": sl.visible.area_subdivision}[method](sp)
         values = np.full((max(len(tris), 1), len(fb.pixel("white"))), 255, np.uint8)
-        paint(fb, result, values)
+        if method == "depth-sort beside":
+            sl.visible.paint_depth_sorted(fb, sp, values)
+        else:
+            result = {"painter": sl.visible.painter, "depth-sort": sl.visible.depth_sort,
+                      "scan-line": sl.visible.scan_line,
+                      "area-subdivision": sl.visible.area_subdivision}[method](sp)
+            paint(fb, result, values)
     assert guard_intact(big)
 
 

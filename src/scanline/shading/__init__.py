@@ -80,12 +80,25 @@ def _facing(scene, faces, normals, points):
     return np.where(back[..., None], -normals, normals)
 
 
+def _runs(keys):
+    """``(key, where)`` for each distinct value of the integer array ``keys``: where
+    it is, as a slice when the keys are sorted (a mesh's faces come together), else
+    as indices from one stable sort (so every point is selected once, whatever the
+    number of meshes)."""
+    order = None
+    if len(keys) > 1 and (keys[1:] < keys[:-1]).any():
+        order = np.argsort(keys, kind="stable")
+        keys = keys[order]
+    starts = np.flatnonzero(np.r_[True, keys[1:] != keys[:-1]]) if len(keys) else []
+    ends = list(starts[1:]) + [len(keys)]
+    for a, b in zip(starts, ends):
+        yield keys[a], slice(a, b) if order is None else order[a:b]
+
+
 def _lit(scene, faces, points, normals, colors, lights, specular, visibility):
     """The illumination model for points of ``faces``, material by material."""
     out = np.empty(points.shape[:-1] + (3,))
-    mesh = scene.face_mesh[faces]
-    for m in np.unique(mesh):
-        sel = mesh == m
+    for m, sel in _runs(scene.face_mesh[faces]):
         vis = None if visibility is None else visibility(points[sel])
         out[sel] = intensity(points[sel], normals[sel], scene.eye, lights,
                              scene.materials[m], specular=specular, color=colors[sel],

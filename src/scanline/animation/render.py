@@ -293,7 +293,7 @@ class _Slots:
         try:
             size = os.fstat(fd).st_size
             return cls(size // SLOT_BYTES, mmap.mmap(fd, size), fd)
-        except OSError:
+        except (OSError, ValueError):        # (an empty file cannot be mapped)
             os.close(fd)
             return None
 

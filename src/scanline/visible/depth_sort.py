@@ -257,8 +257,9 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None, drawn=Non
             "splitting; use split_cycles=True" if status == k.CYCLE else
             f"{faces} cannot be ordered and neither plane cuts the other polygon (nearly "
             "coincident polygons?); the loop flag stopped the sort")
-    count = int(st[k.DRAWN])     # (copies of the working arrays: new arrays, no larger
-    _hand(drawn, out, doff, dface, handed, count)                        # than needed)
+    count = int(st[k.DRAWN])
+    _hand(drawn, out, doff, dface, handed, count)
+    # copies of the working arrays: new arrays, no larger than needed
     return ScreenPolygons(out[:st[k.OUT]].copy(), doff[:count + 1].copy(),
                           dface[:count].copy(), dplane[:count].copy(), sp.width, sp.height)
 

@@ -19,7 +19,11 @@ chosen by a *method token* (:mod:`scanline._kernels.variants`):
   volumes of :mod:`scanline.clip.volumes`: 1 left, 2 right, 3 below, 4 above,
   5 front, 6 back, as Hearn & Baker number them); trivial accept when both codes
   are 0, trivial reject when their AND is not 0, otherwise the outside endpoint
-  (P0 first) moves to the crossing with the first plane its code names;
+  (P0 first) moves to the crossing with the first plane its code names, exactly
+  onto that plane; the crossing's code comes from the boundary values at the
+  original endpoints, and the bits of the planes an endpoint was moved onto stay
+  cleared (round-off at an edge or a corner cannot send it back and forth); at
+  most 64 planes, one bit each;
 - Liang-Barsky: p_k = d_k(P0) - d_k(P1), q_k = d_k(P0) (for a box these are Hearn
   & Baker's p1 = -dx, q1 = x0 - xmin, ..., p6 = dz, q6 = zmax - z0), through the
   2-D clippers' :func:`scanline._kernels.clip.parametric_edge`.
@@ -42,8 +46,13 @@ CS_ACCEPT = 0
 CS_REJECT = 1
 CS_CLIP = 2
 CS_COLUMNS = 10
-#: Each clip moves an endpoint onto one more plane: at most 6 per endpoint.
-CS_MAX_STEPS = 12
+
+
+def cs_steps(planes):
+    """Most rows of a Cohen-Sutherland log for a volume of ``planes`` (K) planes:
+    each clip moves an endpoint onto one more plane, at most K per endpoint, and one
+    row for the decision."""
+    return 2 * planes + 1
 
 __all__ = ["PARAM_COLUMNS"]
 
@@ -105,6 +114,46 @@ def cs_log(log, n, end, c0, c1, action, plane, ends, which):
 
 
 @helper
+def snap(planes, k, ends, e):
+    """Put endpoint e of ``ends`` exactly on plane k: solve a x + b y + c z + d w = 0
+    for the coordinate with the largest coefficient among a, b, c (x = xmin, x = w,
+    x = z ... exactly for the planes of a box, the homogeneous unit cube and the
+    frustum, whose coefficients are 0 and +-1)."""
+    i = 0
+    for c in range(1, 3):
+        if abs(planes[k, c]) > abs(planes[k, i]):
+            i = c
+    rest = planes[k, 3] * ends[e, 3]
+    for c in range(3):
+        if c != i:
+            rest += planes[k, c] * ends[e, c]
+    ends[e, i] = 0.0 - rest / planes[k, i]     # (0.0 -: x = 0, not -0, on x >= 0)
+
+
+@helper
+def crossing_code(planes, start, k, d0, d1, ends, e):
+    """The region code of the crossing of the segment ``start`` with plane k (d0, d1:
+    d_k at its endpoints), from the boundary values at the endpoints rather than from
+    the rounded coordinates of the point: d_m at the crossing, times d0 - d1, is
+    d0 d_m(P1) - d1 d_m(P0), whose sign is exact where the boundary values and their
+    products are (a segment through an edge or a corner given in short binary
+    fractions).  Where a product overflows, bit m is that of the point ``ends[e]``."""
+    code = 0
+    for m in range(planes.shape[0]):
+        a0 = boundary(planes, m, start[0, 0], start[0, 1], start[0, 2], start[0, 3])
+        a1 = boundary(planes, m, start[1, 0], start[1, 1], start[1, 2], start[1, 3])
+        det = d0 * a1 - d1 * a0
+        if det == det:
+            outside = det < 0.0 if d0 > d1 else det > 0.0
+        else:
+            outside = not boundary(planes, m, ends[e, 0], ends[e, 1], ends[e, 2],
+                                   ends[e, 3]) >= 0.0
+        if outside:
+            code |= 1 << m
+    return code
+
+
+@helper
 def cohen_sutherland(planes, start, ends, trace, log):
     """Cohen-Sutherland on one segment: ``start`` (2, 4) holds the original
     endpoints and ``ends`` (2, 4) receives the clipped ones.  Returns whether the
@@ -113,19 +162,47 @@ def cohen_sutherland(planes, start, ends, trace, log):
     At each step: accept if both codes are 0, reject if code0 AND code1 != 0,
     otherwise move the outside endpoint (P0 first) to the crossing with the first
     plane k its code names, at t = d_k(P0) / (d_k(P0) - d_k(P1)) along the original
-    segment (Hearn & Baker's x = x0 + (x1 - x0) u, ... with u from the boundary), and
-    give it the code of its new position with bit k cleared (it lies on plane k)."""
+    segment (Hearn & Baker's x = x0 + (x1 - x0) u, ... with u from the boundary),
+    put it exactly on plane k (:func:`snap`), and give it the region code of the
+    crossing (:func:`crossing_code`) with the bits of plane k *and of every plane
+    this endpoint was moved onto before* cleared.
+
+    In exact arithmetic those bits are 0 anyway: the endpoint only moves toward the
+    other one, so it stays inside each plane it has crossed.  In floating point a
+    point computed on one plane where the segment enters through an edge or a corner
+    can land an ulp outside the other plane; recomputing that bit from the rounded
+    coordinates sent the endpoint back and forth between the two planes until a step
+    limit rejected a visible segment.  Now each endpoint is moved at most once per
+    plane: at most 2 K clips for K planes, after which both codes are 0.  A moved
+    endpoint that round-off puts outside a plane its code says it is inside (or on)
+    is put on that plane; for a box and the homogeneous unit cube, whose planes each
+    fix one coordinate, an accepted segment lies in the closed volume exactly, and
+    one that enters through an edge ends exactly on both planes.  The endpoints'
+    parameters stay in order (t0 <= t1), so a crossing that round-off puts beyond
+    the other endpoint moves no endpoint backward.
+
+    Decisions: with exactly representable boundary values and products (coordinates
+    in short binary fractions), the region codes of the crossings are exact, so a
+    segment is accepted exactly when some point of it lies in the closed volume --
+    also one that only touches an edge or a corner from outside, accepted as that
+    point.  Otherwise a segment that touches the volume, or misses it, by round-off
+    may go either way, as with Liang-Barsky's u1 <= u2."""
     for e in range(2):
         for c in range(4):
             ends[e, c] = start[e, c]
     c0 = region_code(planes, ends[0, 0], ends[0, 1], ends[0, 2], ends[0, 3])
     c1 = region_code(planes, ends[1, 0], ends[1, 1], ends[1, 2], ends[1, 3])
-    for n in range(CS_MAX_STEPS + 1):
+    done0 = 0                       # the planes each endpoint was moved onto
+    done1 = 0
+    t0 = 0.0                        # and where the endpoints are on the segment
+    t1 = 1.0
+    steps = 2 * planes.shape[0]
+    for n in range(steps + 1):
         if (c0 | c1) == 0:
             if trace:
                 cs_log(log, n, np.int64(-1), c0, c1, CS_ACCEPT, np.int64(0), ends, np.int64(-1))
             return True
-        if (c0 & c1) != 0 or n == CS_MAX_STEPS:
+        if (c0 & c1) != 0 or n == steps:              # (n == steps: cannot happen)
             if trace:
                 cs_log(log, n, np.int64(-1), c0, c1, CS_REJECT, np.int64(0), ends, np.int64(-1))
             return False
@@ -136,17 +213,41 @@ def cohen_sutherland(planes, start, ends, trace, log):
             k += 1
         d0 = boundary(planes, k, start[0, 0], start[0, 1], start[0, 2], start[0, 3])
         d1 = boundary(planes, k, start[1, 0], start[1, 1], start[1, 2], start[1, 3])
-        t = d0 / (d0 - d1) if d0 != d1 else 0.0      # (d0 != d1 here but for overflow)
+        crossing = d0 / (d0 - d1) if d0 != d1 else np.nan   # (parallel: by round-off)
+        here = t0 if e == 0 else t1
+        t = min(max(crossing, t0), t1) if crossing == crossing else here
+        # (beyond the other endpoint, or NaN: only by round-off or overflow)
+        if t != here:
+            for c in range(4):
+                ends[e, c] = start[0, c] + t * (start[1, c] - start[0, c])
+        done = (done0 if e == 0 else done1) | (1 << k)
+        snap(planes, k, ends, e)
+        if t == crossing:
+            new = crossing_code(planes, start, k, d0, d1, ends, e) & ~done
+        else:
+            new = region_code(planes, ends[e, 0], ends[e, 1], ends[e, 2], ends[e, 3]) & ~done
+        for m in range(planes.shape[0]):  # inside (or on) a plane, outside by round-off:
+            if (new >> m) & 1 == 0 and m != k and \
+                    boundary(planes, m, ends[e, 0], ends[e, 1], ends[e, 2], ends[e, 3]) < 0.0:
+                snap(planes, m, ends, e)  # put it on the plane
+        finite = True
         for c in range(4):
-            ends[e, c] = start[0, c] + t * (start[1, c] - start[0, c])
-        new = region_code(planes, ends[e, 0], ends[e, 1], ends[e, 2], ends[e, 3])
-        new &= ~(1 << k)
+            finite &= abs(ends[e, c]) < np.inf
+        if not finite:                    # (overflow: finite coordinates near 1e308)
+            if trace:
+                cs_log(log, n, np.int64(-1), c0, c1, CS_REJECT, np.int64(0), ends,
+                       np.int64(-1))
+            return False
         if trace:
             cs_log(log, n, e, c0, c1, CS_CLIP, k + 1, ends, e)
         if e == 0:
             c0 = new
+            done0 = done
+            t0 = t
         else:
             c1 = new
+            done1 = done
+            t1 = t
     return False
 
 

@@ -5,7 +5,9 @@ section 12-5; the kernels are in :mod:`scanline._kernels.clip3d`).
 Methods, by name (``method=``):
 
 - ``"cohen-sutherland"``: six-bit region codes, trivial accept and reject,
-  intersections with one plane at a time;
+  intersections with one plane at a time (an endpoint moved onto a plane is put
+  exactly on it and keeps that plane's bit cleared, so a segment entering through an
+  edge or a corner is not sent back and forth between the two planes);
 - ``"liang-barsky"``: the parametric clipper, p_k and q_k for each plane (for a box,
   p1 = -dx, q1 = x0 - xmin, ..., p6 = dz, q6 = zmax - z0);
 - ``"cyrus-beck"``: the same parametric test written for any convex polyhedron
@@ -26,12 +28,21 @@ from .volumes import UNIT_CUBE, volume as as_volume
 
 METHODS = ("liang-barsky", "cohen-sutherland", "cyrus-beck")
 
+#: Cohen-Sutherland's region code has one bit per plane, in a 64-bit integer.
+MAX_CODE_PLANES = 64
 
-def method_token(method):
-    """The kernel token of a line-clipping method."""
+
+def method_token(method, vol=None):
+    """The kernel token of a line-clipping method (for the volume ``vol``: a
+    Cohen-Sutherland region code holds at most 64 planes)."""
     from .._kernels import clip3d as k
 
     v.choice("method", method, METHODS)
+    if method == "cohen-sutherland" and vol is not None and len(vol.planes) > MAX_CODE_PLANES:
+        raise ArgumentValueError(
+            f"method='cohen-sutherland' takes a volume of at most {MAX_CODE_PLANES} planes "
+            f"(one region-code bit each), got {len(vol.planes)}; use method='liang-barsky' "
+            f"or 'cyrus-beck', which take any number")
     return variants.token(k.COHEN_SUTHERLAND if method == "cohen-sutherland" else
                           k.LIANG_BARSKY)
 
@@ -57,7 +68,7 @@ def _clip(segs, vol, method, dim):
 
     out = np.empty_like(segs)
     accepted = np.empty(len(segs), np.bool_)
-    call(k.clip_segments, 3 * len(segs) * len(vol.planes), method_token(method),
+    call(k.clip_segments, 3 * len(segs) * len(vol.planes), method_token(method, vol),
          k.dim_token(dim), segs.reshape(-1), vol.planes, out.reshape(-1), accepted)
     return out, accepted
 
@@ -76,6 +87,12 @@ def lines3d(segments, volume, method="liang-barsky"):
         :func:`~scanline.clip.volumes.polyhedron`).  Closed: what touches the
         boundary is kept.
     method : {"liang-barsky", "cohen-sutherland", "cyrus-beck"}
+        ``"cohen-sutherland"`` takes volumes of at most 64 planes (one region-code
+        bit each).  Every method accepts a segment that enters or leaves exactly
+        through an edge or a corner.  One that only touches the volume from outside
+        (at an edge or a corner) is accepted as that point where its coordinates
+        are exact in binary (0.5, 0.25, integers ...); where it touches, or misses,
+        only by round-off it may go either way.
 
     Returns
     -------

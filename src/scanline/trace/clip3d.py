@@ -37,7 +37,7 @@ def _run(method, p0, p1, vol, w, rows, columns):
     if w is not None:
         start[0, 3], start[1, 3] = v.number("w0", w[0]), v.number("w1", w[1])
     log = np.full((rows, columns), np.nan)
-    ok, ends = k.trace_segment(three_d.method_token(method), start, vol.planes, log)
+    ok, ends = k.trace_segment(three_d.method_token(method, vol), start, vol.planes, log)
     used = int(np.sum(~np.isnan(log[:, 0])))
     return start, ok, ends, log[:used]
 
@@ -85,9 +85,15 @@ def cohen_sutherland_3d(p0, p1, volume=None, w=None):
     plane an outside endpoint is moved to.
 
     Codes are written bit 6 to bit 1: back, front, above, below, right, left (Hearn
-    & Baker, section 12-5).  ``w`` = (w0, w1) makes the endpoints homogeneous
-    (x, y, z, w) and the volume the unit cube 0 <= x, y, z <= w, clipped before the
-    divide.  ``table.result`` is the clipped pair of points or None.
+    & Baker, section 12-5).  A moved endpoint lies exactly on its plane; its code is
+    that of the crossing, computed from the boundary values at the original endpoints
+    (not from the rounded point), and the bits of the planes it was moved onto stay
+    0, so round-off where a segment enters through an edge or a corner cannot send it
+    back and forth between two planes
+    (:func:`scanline._kernels.clip3d.cohen_sutherland`).  ``w`` = (w0, w1)
+    makes the endpoints homogeneous (x, y, z, w) and the volume the unit cube
+    0 <= x, y, z <= w, clipped before the divide.  ``table.result`` is the clipped
+    pair of points or None.
 
     >>> t = cohen_sutherland_3d((-5, 2, 5), (15, 22, 5))
     >>> for r in t.rows:
@@ -98,8 +104,8 @@ def cohen_sutherland_3d(p0, p1, volume=None, w=None):
     000000 000000 accept: both codes 000000 None
     """
     vol = _volume(volume, w)
-    start, ok, ends, log = _run("cohen-sutherland", p0, p1, vol, w, k.CS_MAX_STEPS + 1,
-                                k.CS_COLUMNS)
+    start, ok, ends, log = _run("cohen-sutherland", p0, p1, vol, w,
+                                k.cs_steps(len(vol.planes)), k.CS_COLUMNS)
     n = 4 if w is not None else 3
     rows = []
     for i, row in enumerate(log.tolist()):
@@ -120,6 +126,9 @@ def cohen_sutherland_3d(p0, p1, volume=None, w=None):
     notes = [_describe(vol, w),
              "region code bits " + " ".join(str(b + 1) for b in reversed(range(len(vol.planes))))
              + " = " + " ".join(reversed(vol.names)) + "; point: the moved endpoint",
+             "a moved endpoint is put exactly on its plane; its code is that of the exact "
+             "crossing, and the bits of the planes it was moved onto stay 0 (at most one "
+             "clip per plane and endpoint)",
              line]
     t = Table(_title("Cohen-Sutherland 3-D", start, w),
               ["step", "code0", "code1", "and", "decision", "point"], rows, notes)

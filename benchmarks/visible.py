@@ -5,14 +5,16 @@ Workloads (fixed seed):
 
 * ``depth sort``: 10,000 random small triangles (a few pixels to tens of pixels, at
   random depths, some overlapping) on an 800 x 600 RGB canvas.  scanline:
-  ``sl.visible.paint_depth_sorted``: ``sl.visible.depth_sort`` on the screen-space
-  polygons with the pieces painted in order as the sort hands them over (on the
-  second core, while it orders the next ones; both timed); matplotlib: a ``Poly3DCollection`` of the same
+  ``sl.visible.painted_depth_sort``: ``sl.visible.depth_sort`` on the screen-space
+  polygons with the pieces' numbers painted in order as the sort hands them over (on
+  the second core, while it orders the next ones), then each pixel colored by
+  ``sl.shading.paint`` (all timed); matplotlib: a ``Poly3DCollection`` of the same
   triangles in a 3-D axes drawn to an Agg canvas (``fig.canvas.draw()``), which sorts
   by one key per polygon -- it is doing less (no tests, no splitting).
-* ``methods``: a sphere, a torus and a cube (about 5,000 faces) through a perspective
-  camera at 640 x 480, by every method of ``sl.visible.METHODS`` (projection and
-  clipping included), so that users see each method's cost.
+* ``methods``: a sphere, a torus and a cube (about 2,700 faces) through a perspective
+  camera at 640 x 480, by every polygon method of ``sl.visible.METHODS`` through
+  ``sl.render(..., shading="none")``, each face one color (projection and clipping
+  included), so that users see each method's cost.
 
 Ratios are peer time / scanline time (above 1: scanline is faster).
 
@@ -33,6 +35,8 @@ from common import Report  # noqa: E402
 import scanline as sl  # noqa: E402
 
 W, H = 800, 600
+#: One color per mesh (the palette the visible-surface figures use).
+PALETTE = ["#4e79a7", "#f28e2b", "#e15759"]
 
 
 def triangles(rng, n):
@@ -94,29 +98,30 @@ def depth_sort_workload(report, rng, quick):
 
     def scanline_sort():
         fb = sl.FrameBuffer(W, H, background="white")
-        sl.visible.paint_depth_sorted(fb, sp, values)
+        pieces, numbers = sl.visible.painted_depth_sort(sp)
+        sl.shading.paint(fb, numbers, values[pieces.face])
         return fb
 
     report.add(work, "matplotlib", "Poly3DCollection + fig.canvas.draw() (Agg)",
                matplotlib_draw(tris), repeats=2, n=n)
-    report.add(work, "scanline", "paint_depth_sorted(fb, sp, values)",
+    report.add(work, "scanline", "painted_depth_sort(sp) + shading.paint(fb, ...)",
                scanline_sort, repeats=2, n=n)
     report.target(work, "matplotlib", 5.0, ">= 5x faster than matplotlib's one-key sort")
 
 
 def methods_workload(report):
-    """Every method of ``sl.visible.METHODS`` on one scene."""
+    """The polygon methods of ``sl.visible.METHODS`` on one scene, one color a face."""
     meshes = [sl.mesh.sphere(1.0, (0.6, 0.4, 0.3), resolution=48),
               sl.mesh.torus(1.3, 0.35, resolution=(64, 24)), sl.mesh.cube(1.6)]
     faces = sum(m.face_count for m in meshes)
     cam = sl.Camera(eye=(4, 3, 5), target=(0, 0, 0),
                     projection=sl.projection.perspective(fov=math.radians(45), near=1))
-    for method in sl.visible.METHODS:
+    for method in ("painter", "depth-sort", "bsp", "scan-line", "area-subdivision"):
         def run(method=method):
             fb = sl.FrameBuffer(640, 480)
-            return sl.visible.render(fb, meshes, cam, method=method)
-        report.add(f"scene of {faces} faces", method, f"sl.visible.render(method={method!r})",
-                   run, repeats=1, n=faces)
+            return sl.render(fb, meshes, cam, method=method, shading="none", colors=PALETTE)
+        report.add(f"scene of {faces} faces", method,
+                   f"sl.render(method={method!r}, shading='none')", run, repeats=1, n=faces)
 
 
 if __name__ == "__main__":

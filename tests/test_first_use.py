@@ -48,9 +48,14 @@ def outcome(mode, code, how):
 
 
 def same(a, b):
-    """Equal, recursively: arrays exactly (NaN where NaN), numbers, sequences."""
+    """Equal, recursively: arrays exactly (NaN where NaN), numbers, sequences,
+    dictionaries, objects' attributes."""
     if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
         np.testing.assert_array_equal(a, b)
+    elif isinstance(a, dict) and isinstance(b, dict):
+        assert sorted(a, key=repr) == sorted(b, key=repr)
+        for key in a:
+            same(a[key], b[key])
     elif isinstance(a, (list, tuple)) and isinstance(b, (list, tuple)):
         assert len(a) == len(b)
         for x, y in zip(a, b):

@@ -26,7 +26,8 @@ if TYPE_CHECKING:   # what the lazy attributes are, for type checkers and editor
     from . import projection as projection, raster as raster, scene as scene, text as text
     from . import trace as trace, transform as transform, transform3d as transform3d
     from . import viewing as viewing, visible as visible, lighting as lighting
-    from . import shading as shading, render as render
+    from . import shading as shading, rendering as rendering, screen as screen
+    from .rendering import render as render
     from .depthbuffer import DepthBuffer as DepthBuffer
     from .attributes import FillStyle as FillStyle
     from .context import Context as Context
@@ -77,7 +78,9 @@ _LAZY = {
     "DepthBuffer": ("scanline.depthbuffer", "DepthBuffer"),
     "lighting": ("scanline.lighting", None),
     "shading": ("scanline.shading", None),
-    "render": ("scanline.render", None),
+    "render": ("scanline.rendering", "render"),
+    "rendering": ("scanline.rendering", None),
+    "screen": ("scanline.screen", None),
     "visible": ("scanline.visible", None),
 }
 

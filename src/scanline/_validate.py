@@ -4,13 +4,16 @@ Each helper takes the argument's *name* so that the message names it, shows the 
 that was given and says what would work (DESIGN.md, convention 7).
 """
 
+import difflib
+import functools
+import inspect
 import math
 import numbers
 import os
 import re
 import sys
 import warnings
-from typing import Any, Iterable, Optional, Sequence, TypeVar
+from typing import Any, Callable, Iterable, Optional, Sequence, TypeVar, cast
 
 import numpy as np
 from numpy.typing import DTypeLike, NDArray
@@ -24,6 +27,7 @@ from .errors import AngleWarning, ArgumentTypeError, ArgumentValueError
 COORD_LIMIT = 2**30
 
 T = TypeVar("T")
+F = TypeVar("F", bound=Callable[..., Any])
 
 
 def _show(value: object) -> str:
@@ -426,3 +430,25 @@ def real_array(name: str, value: object, expected: str) -> NDArray[np.float64]:
         raise ArgumentTypeError(
             f"{name} must hold real numbers ({expected}), got an array of dtype {a.dtype}")
     return np.asarray(a, dtype=np.float64)
+
+
+def keywords(function: F) -> F:
+    """``function`` with its keyword arguments checked before the call: an unknown
+    keyword is an :class:`ArgumentTypeError` that names it and suggests the nearest
+    valid one ("material= is not an option of render; did you mean materials=?").
+    Type checkers see ``function``'s own signature."""
+    names = [p.name for p in inspect.signature(function).parameters.values()
+             if p.kind in (p.POSITIONAL_OR_KEYWORD, p.KEYWORD_ONLY)]
+
+    @functools.wraps(function)
+    def checked(*args: Any, **kwargs: Any) -> Any:
+        for key in kwargs:
+            if key not in names:
+                close = difflib.get_close_matches(key, names, n=1, cutoff=0.6)
+                hint = f"; did you mean {close[0]}=?" if close else \
+                    f"; its options are {', '.join(n + '=' for n in names)}"
+                raise ArgumentTypeError(f"{key}= is not an option of "
+                                        f"{function.__name__}{hint}")
+        return function(*args, **kwargs)
+
+    return cast(F, checked)

@@ -222,19 +222,19 @@ CALLS = {
                                      "target=(0, 0, 0)), method='ray-casting')", RGB),
     "render a-buffer": ("render", "sl.render(fb, sl.mesh.cube(), sl.Camera(eye=(3, 2, 4), "
                                   "target=(0, 0, 0)), method='a-buffer', samples=2)", RGB),
-    "visible scan-line": ("visible", "sl.visible.render(fb, [sl.mesh.cube(), sl.mesh.sphere(0.6, "
+    "visible scan-line": ("visible", "sl.render(fb, [sl.mesh.cube(), sl.mesh.sphere(0.6, "
                                      "(0.8, 0.5, 0.8))], sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)), "
-                                     "method='scan-line')", RGB),
-    "visible depth sort": ("visible", "sl.visible.render(fb, [sl.mesh.cube(), sl.mesh.sphere(0.6, "
+                                     "method='scan-line', shading='none')", RGB),
+    "visible depth sort": ("visible", "sl.render(fb, [sl.mesh.cube(), sl.mesh.sphere(0.6, "
                                       "(0.8, 0.5, 0.8))], sl.Camera(eye=(3, 2, 4), "
-                                      "target=(0, 0, 0)), method='depth-sort')", RGB),
-    "visible bsp": ("visible", "sl.visible.render(fb, [sl.mesh.cube(), sl.mesh.sphere(0.6, "
+                                      "target=(0, 0, 0)), method='depth-sort', shading='none')", RGB),
+    "visible bsp": ("visible", "sl.render(fb, [sl.mesh.cube(), sl.mesh.sphere(0.6, "
                                "(0.8, 0.5, 0.8))], sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)), "
-                               "method='bsp')", RGB),
-    "visible area subdivision": ("visible", "sl.visible.render(fb, [sl.mesh.cube(), "
+                               "method='bsp', shading='none')", RGB),
+    "visible area subdivision": ("visible", "sl.render(fb, [sl.mesh.cube(), "
                                             "sl.mesh.sphere(0.6, (0.8, 0.5, 0.8))], "
                                             "sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)), "
-                                            "method='area-subdivision')", RGB),
+                                            "method='area-subdivision', shading='none')", RGB),
     "visible lines": ("visible", "sl.visible.visible_lines(fb, sl.mesh.torus(1, 0.3), "
                                  "sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)), color='black', "
                                  "hidden='dash')", RGB),

@@ -11,7 +11,8 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 import scanline as sl
-from scanline.visible.render import paint
+from scanline.shading import paint
+from scanline.visible.visibility import piece_numbers
 from tests.fuzz.harness import arrays, bounded, guard_intact, guarded, index_arrays, values
 
 pytestmark = pytest.mark.boundscheck
@@ -237,7 +238,7 @@ def test_three_d(segs, verts, faces, edges, counts, mode):
 def test_visible_surface_methods(verts, mode, method):
     # hostile device triangles (every one planar and convex, so most pass validation
     # with their extreme values): sorted, split, painted into a guarded frame buffer
-    # (afterwards, or beside the sort: paint_depth_sorted)
+    # (afterwards, or beside the sort: painted_depth_sort)
     fb, big = frame(mode, 16, 12)
     with bounded():
         tris = [verts[i:i + 3] for i in range(0, len(verts) - 2, 3)] if np.ndim(verts) == 2 \
@@ -245,12 +246,15 @@ def test_visible_surface_methods(verts, mode, method):
         sp = sl.visible.ScreenPolygons.from_device(tris, 16, 12)
         values = np.full((max(len(tris), 1), len(fb.pixel("white"))), 255, np.uint8)
         if method == "depth-sort beside":
-            sl.visible.paint_depth_sorted(fb, sp, values)
+            pieces, numbers = sl.visible.painted_depth_sort(sp)
+            paint(fb, numbers, values[pieces.face])
+        elif method in ("scan-line", "area-subdivision"):
+            seen = getattr(sl.visible, method.replace("-", "_"))(sp).face
+            paint(fb, seen, values)
         else:
-            result = {"painter": sl.visible.painter, "depth-sort": sl.visible.depth_sort,
-                      "scan-line": sl.visible.scan_line,
-                      "area-subdivision": sl.visible.area_subdivision}[method](sp)
-            paint(fb, result, values)
+            pieces = {"painter": sl.visible.painter, "depth-sort": sl.visible.depth_sort}[
+                method](sp)
+            paint(fb, piece_numbers(pieces), values[pieces.face])
     assert guard_intact(big)
 
 
@@ -261,5 +265,5 @@ def test_bsp_trees(verts, mode):
     cam = sl.Camera(eye=(3, 2, 4), target=(0, 0, 0))
     with bounded():
         mesh = sl.mesh.Mesh(verts[:3 * n], np.arange(3 * n).reshape(n, 3))
-        sl.visible.render(fb, mesh, cam, method="bsp")
+        sl.render(fb, mesh, cam, method="bsp", shading="none")
     assert guard_intact(big)

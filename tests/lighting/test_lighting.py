@@ -106,8 +106,8 @@ def test_vertex_intensities_take_each_mesh_material_whatever_the_face_order():
     # three meshes of three materials, their faces asked for in a shuffled order: each
     # face is lit with its own mesh's material (the faces are grouped by one stable
     # sort, not selected mesh by mesh), the same values as in mesh order
-    from scanline.render.prepare import prepare
-    from scanline.shading import vertex_intensities
+    from scanline.screen import prepare
+    from scanline.shading import ShadingOptions, vertex_intensities
 
     meshes = [sl.mesh.cube(1.0), sl.mesh.sphere(0.5, (1.5, 0, 0), resolution=(8, 4)),
               sl.mesh.torus(0.6, 0.2, resolution=(8, 4))]
@@ -116,16 +116,17 @@ def test_vertex_intensities_take_each_mesh_material_whatever_the_face_order():
             sl.lighting.Material(ka=0.5, kd=0.1, ks=0.2, shininess=5)]
     cam = sl.Camera(eye=(3, 2, 4), target=(0, 0, 0))
     scene = prepare(meshes, cam, 64, 48, mats)
-    lights = [sl.lighting.AmbientLight(0.3),
-              sl.lighting.DirectionalLight(direction=(-1, -1, -1), intensity=0.8)]
-    faces = np.arange(scene.face_count)
-    shuffled = np.random.default_rng(3).permutation(faces)
-    ordered = vertex_intensities(scene, faces, lights)
-    assert len(np.unique(scene.face_mesh)) == 3
+    lights = ShadingOptions(lights=[sl.lighting.AmbientLight(0.3),
+                                    sl.lighting.DirectionalLight(direction=(-1, -1, -1),
+                                                                 intensity=0.8)])
+    facets = np.arange(scene.facet_count)
+    shuffled = np.random.default_rng(3).permutation(facets)
+    ordered = vertex_intensities(scene, facets, lights)
+    assert len(np.unique(scene.facet_mesh)) == 3
     np.testing.assert_array_equal(vertex_intensities(scene, shuffled, lights),
                                   ordered[shuffled])
     for m in range(3):                     # each mesh alone: its own material
-        own = faces[scene.face_mesh == m]
+        own = facets[scene.facet_mesh == m]
         np.testing.assert_array_equal(vertex_intensities(scene, own, lights), ordered[own])
-    means = [ordered[scene.face_mesh == m].mean() for m in range(3)]
+    means = [ordered[scene.facet_mesh == m].mean() for m in range(3)]
     assert not np.allclose(means[0], means[1])

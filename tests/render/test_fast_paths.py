@@ -16,10 +16,10 @@ from scanline._kernels import _threads
 from scanline._kernels import raster3d as k
 from scanline._kernels import shade as ks
 from scanline._kernels.variants import MODE, token
-from scanline.render.prepare import DevicePolygons, mesh_arrays, prepare
-from scanline.render.zbuffer import visibility
-from scanline.shading import encode, shade
+from scanline.screen import DevicePolygons, mesh_arrays, prepare
+from scanline.shading import ShadingOptions, barycentrics, encode, intensities
 from scanline.shading.buffer import gamma_tables, shade_buffer
+from scanline.visible.zbuffer import nearest
 
 
 def random_triangles(rng, n, width, height, size):
@@ -130,13 +130,13 @@ def scene():
 def test_the_kernel_clear_equals_a_cleared_buffer():
     torus, cam = scene()
     sc = prepare(torus, cam, 70, 150)
-    faces, bary, depth = visibility(sc)                      # cleared by the kernel
+    first = nearest(sc)                                      # cleared by the kernel
+    ids, depth = first.ids.copy(), first.depth.copy()
     before = np.full((150, 70), np.inf)
-    f2, b2, d2 = visibility(sc, zbuf=before)                 # cleared beforehand
-    assert np.array_equal(faces, f2) and np.array_equal(depth, d2)
-    seen = faces >= 0
-    assert seen.mean() > 0.1 and (faces[~seen] == -1).all() and np.isinf(depth[~seen]).all()
-    assert np.array_equal(bary[seen], b2[seen])
+    second = nearest(sc, zbuf=before)                        # cleared beforehand
+    assert np.array_equal(ids, second.ids) and np.array_equal(depth, second.depth)
+    seen = ids >= 0
+    assert seen.mean() > 0.1 and (ids[~seen] == -1).all() and np.isinf(depth[~seen]).all()
 
 
 def test_mesh_arrays_follow_changes_of_the_mesh():
@@ -162,7 +162,7 @@ def test_device_polygons_behave_as_a_list():
     polys = sc.polygons
     assert isinstance(polys, DevicePolygons)
     listed = list(polys)
-    assert len(listed) == len(polys) == len(sc.polygon_face)
+    assert len(listed) == len(polys) == len(sc.polygon_facet)
     assert np.array_equal(polys[-1], listed[-1]) and np.array_equal(polys[0], listed[0])
     assert [p.shape for p in polys[2:5]] == [(3, 3)] * 3
     with pytest.raises(IndexError):
@@ -175,57 +175,51 @@ def test_extreme_exponents_stay_within_a_level_of_the_numpy_path(shininess):
     torus, cam = scene()
     mat = sl.lighting.Material(ka=0.2, kd=0.5, ks=0.6, shininess=shininess)
     sc = prepare(torus, cam, 64, 48, mat)
-    faces, bary, _ = visibility(sc)
-    ys, xs = np.nonzero(faces >= 0)
+    ids = nearest(sc).ids.copy()
+    ys, xs = np.nonzero(ids >= 0)
+    tris = ids[ys, xs]
     lights = [sl.lighting.AmbientLight(0.1),
               sl.lighting.DirectionalLight((0.4, -0.6, -1.0), 0.8),
               sl.lighting.PointLight((2, 3, 4), 0.5)]
+    options = ShadingOptions(model="phong", lights=lights, specular="phong", gamma=2.2)
     fb = sl.FrameBuffer(64, 48)
-    shade_buffer(sc, fb, faces, bary, dict(lights=lights, shading="phong", specular="phong",
-                                           gamma=2.2))
+    shade_buffer(sc, fb, ids, options)
     got = fb._raster()[0][ys, xs].astype(int)
-    want = encode(shade(sc, faces[ys, xs], bary[ys, xs], lights, "phong", "phong", 2.2), 2.2)
+    bary = barycentrics(sc, tris, xs.astype(float), ys.astype(float))
+    want = encode(intensities(sc, sc.facet[tris], bary, options), 2.2)
     assert np.abs(got - want).max() <= 1
     assert (got != want).mean() < 0.01
 
 
-@pytest.mark.parametrize("source", ["buffers", "triangles"])
-def test_shading_calls_sharing_the_bands_write_every_pixel_once(source):
+def test_shading_calls_sharing_the_bands_write_every_pixel_once():
     torus, cam = scene()
     sc = prepare(torus, cam, 50, 140)
-    faces, bary, _ = visibility(sc)
+    given = nearest(sc).ids.copy()
+    facets = np.where(given >= 0, sc.facet[given], -1)
     table, thresholds = gamma_tables(2.2)
-    from scanline.render.zbuffer import visible_triangles
     from scanline.shading.buffer import homogeneous_eye, material_rows, source_rows
 
     sources, ambient = source_rows([sl.lighting.AmbientLight(0.2),
                                     sl.lighting.DirectionalLight((0.4, -0.6, -1.0), 0.8)])
     colors = np.ascontiguousarray(np.broadcast_to(sc.vertex_colors, sc.world.shape))
-    if source == "buffers":
-        given, inputs = faces, (bary, np.zeros((0, 5)), np.zeros(0, np.int64), sc.world,
-                                sc.vertex_normals, colors)
-    else:
-        # the triangles' ids and functions: the face and barycentrics found per pixel
-        given, _ = visible_triangles(sc)
-        attributes = np.empty((len(sc.face), 5 + 27))
-        ks.triangle_attributes(0, len(sc.face), sc.triangles, sc.inv_w, sc.bary, sc.face,
-                               sc.world, sc.vertex_normals, colors, sc.front, attributes,
-                               ks.SHADING["phong"])
-        inputs = (np.zeros((1, 1, 2)), attributes, sc.face, sc.world, sc.vertex_normals,
-                  colors)
-    rest = (sc.front, sc.face_mesh, material_rows(sc.materials), ambient, sources,
+    # the triangles' ids and functions: the facet and barycentrics found per pixel
+    attributes = np.empty((len(sc.facet), 5 + 27))
+    ks.triangle_attributes(0, len(sc.facet), sc.triangles, sc.inv_w, sc.bary, sc.facet,
+                           sc.world, sc.vertex_normals, colors, sc.front, attributes,
+                           ks.SHADING["phong"])
+    rest = (sc.facet_mesh, material_rows(sc.materials), ambient, sources,
             homogeneous_eye(sc.eye), table, thresholds)
     images = []
     for steps in (1, 3):
         raster = np.zeros((140, 50, 3), np.uint8)
         ids = given.copy()
         for start in range(steps):
-            ks.shade_pixels(start, steps, ids, *inputs, *rest, raster, ks.SHADING["phong"],
-                            ks.SPECULAR["phong"], MODE["RGB"], ks.SOURCE[source])
-        assert np.array_equal(ids, faces)          # the faces (from the triangles' ids)
+            ks.shade_pixels(start, steps, ids, attributes, sc.facet, *rest, raster,
+                            ks.SHADING["phong"], ks.SPECULAR["phong"], MODE["RGB"])
+        assert np.array_equal(ids, facets)          # the facets (from the triangles' ids)
         images.append(raster)
     assert np.array_equal(images[0], images[1])
-    assert (images[0].any(axis=2) == (faces >= 0)).mean() > 0.99
+    assert (images[0].any(axis=2) == (facets >= 0)).mean() > 0.99
 
 
 def test_the_work_estimate_counts_the_boxes():

@@ -19,5 +19,5 @@ def test_figure_draws_a_picture(make):
 def test_back_face_figure_counts_add_up():
     table = F.figure_back_faces().table
     numbers = dict(part.split(": ") for part in table.split(", "))
-    total, culled, kept = (int(numbers[k]) for k in ("faces", "culled", "kept"))
+    total, culled, kept = (int(numbers[k]) for k in ("triangles", "culled", "kept"))
     assert total == culled + kept and 0.3 * total < culled < 0.7 * total

@@ -1,12 +1,12 @@
-"""sl.render by the methods of scanline.visible (painter, depth sort, BSP tree,
-scan-line, area subdivision), shaded: against the plain-Python per-pixel reference
+"""sl.render by the polygon methods (painter, depth sort, BSP tree, scan-line, area
+subdivision), shaded: against the plain-Python per-pixel reference
 of tests/render/test_render.py and against the depth buffer's image."""
 
 import numpy as np
 import pytest
 
 import scanline as sl
-from scanline.render.prepare import prepare
+from scanline.screen import prepare
 
 from .test_render import H, W, camera, random_scene, reference_faces
 
@@ -78,8 +78,9 @@ def test_the_painters_one_key_sort_fails_where_depth_sort_does_not():
 
 
 def test_object_and_image_precision_are_stated():
-    from scanline.render.methods import METHODS, PRECISION
+    from scanline.visible import METHODS, PRECISION
 
     assert set(PRECISION) == set(METHODS)
     assert {PRECISION[m] for m in ("painter", "depth-sort", "bsp")} == {"object"}
-    assert {PRECISION[m] for m in ("scan-line", "area-subdivision", "z-buffer")} == {"image"}
+    assert {PRECISION[m] for m in ("scan-line", "area-subdivision", "z-buffer", "a-buffer",
+                                   "ray-casting")} == {"image"}

@@ -9,7 +9,7 @@ import numpy as np
 
 import scanline as sl
 from scanline._kernels import raycast as k
-from scanline.render.prepare import prepare
+from scanline.screen import prepare
 
 W, H = 320, 200
 

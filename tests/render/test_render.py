@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import scanline as sl
-from scanline.render.prepare import prepare
+from scanline.screen import prepare
 
 W, H = 48, 36
 
@@ -24,12 +24,12 @@ def random_scene(rng, n=14):
 
 
 def reference_faces(scene):
-    """Per pixel center, the face of the nearest device triangle whose crossings
+    """Per pixel center, the mesh face of the nearest device triangle whose crossings
     (edges active for ylo < Y <= yhi) enclose it; depth from its plane; -1 none."""
     out = np.full((scene.height, scene.width), -1)
     best = np.full((scene.height, scene.width), np.inf)
     second = np.full((scene.height, scene.width), np.inf)
-    for tri, face in zip(scene.triangles, scene.face):
+    for tri, face in zip(scene.triangles, scene.facet_face[scene.facet]):
         (x0, y0, z0), (x1, y1, z1), (x2, y2, z2) = tri
         area = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0)
         if area == 0:
@@ -149,25 +149,24 @@ def test_triangles_crossing_the_eye_plane_are_clipped_before_the_divide():
 
 
 def test_ordered_pieces_draw_in_order_with_the_faces_shading():
+    from scanline.rendering import default_lights
+    from scanline.shading import ShadingOptions, shade
+    from scanline.visible.visibility import painted
+
     rng = np.random.default_rng(4)
     mesh = random_scene(rng, 8)
     cam = camera()
     fb = sl.FrameBuffer(W, H)
     r = sl.render(fb, mesh, cam, shading="phong")
     scene = r.scene
-    # painter's order by the nearest-first z-buffer answer: draw every face's polygon
-    # farthest first; where the z-buffer saw face f the last-drawn covering piece is f
-    far = [np.nanmax(p[:, 2]) for p in scene.polygons]
-    order = np.argsort(far)[::-1]
-    from scanline.render.api import default_lights
-    from scanline.render import draw_pieces
-
-    options = dict(lights=default_lights(cam), shading="phong", specular="phong", gamma=2.2,
-                   depth_cue=None)
+    # painter's order by the nearest-first z-buffer answer: paint every facet's polygon
+    # farthest first; where the z-buffer saw facet f the last-painted covering piece is f
+    sp = scene.screen_polygons
+    far = np.maximum.reduceat(sp.vertices[:, 2], sp.offsets[:-1])
+    layer = painted(scene, sp.subset(np.argsort(-far, kind="stable")))
     fb2 = sl.FrameBuffer(W, H)
-    vis = draw_pieces(scene, fb2, [scene.polygons[i] for i in order],
-                      scene.polygon_face[order], options)
-    same = vis == r.faces
+    facets = shade(fb2, scene, layer, ShadingOptions(model="phong", lights=default_lights(cam)))
+    same = facets == r.facets
     assert same.mean() > 0.6                      # the painter's order is often right ...
     # ... and wherever it picked the same face, the pixel is the same
     a, b = fb.to_array()[::-1], fb2.to_array()[::-1]
@@ -217,7 +216,7 @@ def test_shadow_map_darkens_the_floor_under_a_cube():
         fb = sl.FrameBuffer(64, 64)
         r = sl.render(fb, [floor, cube], cam, lights=[sun], shadows=shadows, shading="phong")
         out.append((fb.to_array()[::-1].astype(int).sum(axis=2), r.faces))
-    on_floor = (out[1][1] >= 0) & (out[1][1] < 2)           # the floor's two triangles
+    on_floor = out[1][1] == 0                                # the floor is face 0
     dark = (out[1][0] < out[0][0]) & on_floor
     assert dark.sum() > 20                                   # the cube's shadow
     assert (out[1][0] <= out[0][0]).all()                    # shadows only darken
@@ -266,3 +265,88 @@ def test_z_buffer_trace_agrees_with_the_drawing():
                 assert r["depth"] != "inf" and r["z"] >= r["depth"]
         expect = {x: round(float(z), 6) for x, z in enumerate(depth.array[row]) if np.isfinite(z)}
         assert written == expect
+
+
+def test_flat_shading_gives_a_polygon_one_intensity():
+    # one planar quadrilateral under a point light: one level (its two fan triangles
+    # used to be lit apart, at their own centroids: 74 and 151)
+    quad = sl.mesh.Mesh([(-1, -1, 0), (1, -1, 0), (1, 1, 0), (-1, 1, 0)], [[0, 1, 2, 3]])
+    cam = sl.Camera(eye=(0, 0, 4), target=(0, 0, 0),
+                    projection=sl.projection.orthographic(window=(-1.5, -1.5, 1.5, 1.5)))
+    light = sl.lighting.PointLight((1.2, -0.9, 0.6))
+    for method in sorted(sl.visible.METHODS):
+        fb = sl.FrameBuffer(40, 30, mode="L")
+        r = sl.render(fb, quad, cam, method=method, shading="flat", lights=[light], gamma=1,
+                      materials=sl.lighting.Material(ka=0, kd=1, ks=0))
+        seen = r.faces >= 0
+        if method == "a-buffer":            # its edges are blended: the inner pixels
+            seen[[0, -1]] = seen[:, [0, -1]] = False
+            seen = seen & np.roll(seen, 1, 0) & np.roll(seen, -1, 0) & np.roll(seen, 1, 1) \
+                & np.roll(seen, -1, 1)
+        assert seen.sum() > 300
+        levels = np.unique(fb._raster()[0][..., 0][seen])
+        # the model at the centroid (0, 0, 0) with the plane normal (0, 0, 1)
+        to = np.array(light.position) / np.linalg.norm(light.position)
+        assert levels.tolist() == [round(255 * to[2])], (method, levels)
+
+
+def test_faces_are_mesh_faces_and_meshes_are_told_apart():
+    # two quads of two meshes: faces 0 and 1 (not the fan triangles 0..3), meshes 0, 1
+    a = sl.mesh.Mesh([(-1, -1, 0), (0, -1, 0), (0, 1, 0), (-1, 1, 0)], [[0, 1, 2, 3]])
+    b = sl.mesh.Mesh([(0, -1, 0), (1, -1, 0), (1, 1, 0), (0, 1, 0)], [[0, 1, 2, 3]])
+    cam = sl.Camera(eye=(0, 0, 4), target=(0, 0, 0),
+                    projection=sl.projection.orthographic(window=(-1.5, -1.5, 1.5, 1.5)))
+    for method in sorted(sl.visible.METHODS):
+        r = sl.render(sl.FrameBuffer(30, 30), [a, b], cam, method=method)
+        assert set(np.unique(r.faces).tolist()) == {-1, 0, 1}, method
+        assert np.array_equal(r.meshes, r.faces), method       # one face per mesh
+        assert set(np.unique(r.facets).tolist()) == {-1, 0, 1, 2, 3}, method
+        assert (r.faces[15, 6:14] == 0).all() and (r.faces[15, 16:24] == 1).all(), method
+
+
+def test_unknown_and_misplaced_keywords_are_clear_errors():
+    fb, cube, cam = sl.FrameBuffer(8, 8), sl.mesh.cube(), camera()
+    with pytest.raises(TypeError, match=r"material= is not an option of render; did you "
+                                        r"mean materials=\?"):
+        sl.render(fb, cube, cam, material=sl.lighting.Material())
+    with pytest.raises(TypeError, match=r"colour=.*did you mean colors="):
+        sl.render(fb, cube, cam, colour="red")
+    with pytest.raises(sl.ScanlineError, match=r"samples= is an option of method='a-buffer', "
+                                               r"not of method='z-buffer'"):
+        sl.render(fb, cube, cam, samples=2)
+    with pytest.raises(TypeError):
+        sl.render(fb, cube, cam, "z-buffer")                 # options are keywords
+    assert not fb.to_array().any()
+
+
+def test_a_rendering_prints_in_one_line_and_shows_as_a_picture():
+    from PIL import Image
+    import io
+
+    fb = sl.FrameBuffer(40, 30)
+    r = sl.render(fb, sl.mesh.cube(), camera((3, 2, 4)))
+    text = repr(r)
+    assert "\n" not in text and len(text) < 160
+    assert text.startswith("<Rendering method='z-buffer' 40x30: 1 mesh(es), 6 faces, ")
+    image = Image.open(io.BytesIO(r._repr_png_()))
+    assert image.size[0] >= 40 and image.format == "PNG"
+    assert r.image is fb
+
+
+def test_colors_per_mesh_and_per_face_and_any_mode():
+    cam = sl.Camera(eye=(3, 2, 4), target=(0, 0, 0))
+    for mode in ("1", "P", "L", "RGB", "RGBA"):
+        fb = sl.FrameBuffer(40, 30, mode=mode)
+        r = sl.render(fb, sl.mesh.cube(), cam, shading="none", colors="white")
+        lit = sl.text_image(fb)
+        assert lit.count("#") == int((r.faces >= 0).sum()) > 100, mode
+    fb = sl.FrameBuffer(40, 30)
+    colors = ["red", "lime", "blue", "yellow", "cyan", "magenta"]
+    r = sl.render(fb, sl.mesh.cube(), cam, shading="none", colors=colors)
+    a = fb._raster()[0]
+    for f in np.unique(r.faces[r.faces >= 0]):
+        assert (a[r.faces == f] == fb.pixel(colors[f])).all()
+    with pytest.raises(sl.ScanlineError, match="colors holds 4 colors"):
+        sl.render(fb, sl.mesh.cube(), cam, colors=colors[:4])
+    with pytest.raises(sl.ScanlineError, match="mode"):
+        sl.render(sl.FrameBuffer(8, 8, mode="1"), sl.mesh.cube(), cam, shading="phong")

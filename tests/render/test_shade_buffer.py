@@ -1,5 +1,5 @@
 """The compiled visibility-buffer shading (scanline.shading.buffer) against the numpy
-path (scanline.shading.shade + encode) it replaces: equal within one stored level,
+path (scanline.shading.intensities + encode): equal within one stored level,
 for every shading model the kernel draws, both specular terms, every mode, several
 kinds of lights, perspective and parallel views, back faces seen."""
 
@@ -9,10 +9,10 @@ import numpy as np
 import pytest
 
 import scanline as sl
-from scanline.render.prepare import prepare
-from scanline.render.zbuffer import visibility
-from scanline.shading import encode, shade
+from scanline.screen import prepare
+from scanline.shading import ShadingOptions, barycentrics, encode, intensities
 from scanline.shading.buffer import gamma_tables, shade_buffer
+from scanline.visible.zbuffer import nearest
 
 W, H = 64, 48
 
@@ -35,30 +35,33 @@ def scene(parallel=False):
             sl.lighting.Material(ka=0.2, kd=0.5, ks=0.6, shininess=80, color="teal",
                                  specular_color=(255, 220, 200))]
     sc = prepare([torus, box, back], cam, W, H, mats + [mats[0]])
-    assert not sc.front[sc.face_mesh == 2].any()
+    assert not sc.front[sc.facet_mesh == 2].any()
     return sc
 
 
-# Phong in every mode, view and specular term; the vertex path (flat, Gouraud) is
-# one code for every mode and view
+# Phong in every mode, view and specular term; the vertex path (none, flat, Gouraud)
+# is one code for every mode and view
 CASES = ([(parallel, "phong", specular, mode) for parallel in (False, True)
           for specular in ("phong", "blinn") for mode in ("L", "RGB", "RGBA")]
          + [(False, shading, specular, "RGB") for shading in ("flat", "gouraud")
-            for specular in ("phong", "blinn")])
+            for specular in ("phong", "blinn")] + [(False, "none", "phong", "RGB")])
 
 
 @pytest.mark.parametrize("parallel, shading, specular, mode", CASES)
 def test_kernel_matches_the_numpy_path(parallel, shading, specular, mode):
     sc = scene(parallel)
-    faces, bary, _ = visibility(sc)
-    ys, xs = np.nonzero(faces >= 0)
+    ids = nearest(sc).ids.copy()
+    ys, xs = np.nonzero(ids >= 0)
+    tris = ids[ys, xs]
     assert len(ys) > 500
-    assert (sc.face_mesh[faces[ys, xs]] == 2).sum() > 20        # the back face is seen
+    assert (sc.facet_mesh[sc.facet[tris]] == 2).sum() > 20        # the back face is seen
     fb = sl.FrameBuffer(W, H, mode=mode)
-    opts = dict(lights=LIGHTS, shading=shading, specular=specular, gamma=2.2)
-    shade_buffer(sc, fb, faces, bary, opts)
+    opts = ShadingOptions(model=shading, lights=LIGHTS, specular=specular, gamma=2.2)
+    shade_buffer(sc, fb, ids, opts)
+    assert np.array_equal(ids[ys, xs], sc.facet[tris])          # the facets, in place
     got = fb._raster()[0][ys, xs].astype(int)
-    linear = shade(sc, faces[ys, xs], bary[ys, xs], LIGHTS, shading, specular, 2.2)
+    bary = barycentrics(sc, tris, xs.astype(float), ys.astype(float))
+    linear = intensities(sc, sc.facet[tris], bary, opts)
     if mode == "L":
         want = encode((linear * [0.299, 0.587, 0.114]).sum(axis=1), 2.2)[:, None]
     else:
@@ -71,11 +74,10 @@ def test_kernel_matches_the_numpy_path(parallel, shading, specular, mode):
 
 def test_pixels_without_a_face_are_left_alone():
     sc = scene()
-    faces, bary, _ = visibility(sc)
+    faces = nearest(sc).ids.copy()
     fb = sl.FrameBuffer(W, H, background="orange")
     before = fb._raster()[0].copy()
-    shade_buffer(sc, fb, faces, bary, dict(lights=LIGHTS, shading="phong",
-                                            specular="phong", gamma=2.2))
+    shade_buffer(sc, fb, faces.copy(), ShadingOptions(model="phong", lights=LIGHTS))
     after = fb._raster()[0]
     assert np.array_equal(after[faces < 0], before[faces < 0])
     assert (after[faces >= 0] != before[faces >= 0]).any(axis=1).mean() > 0.9

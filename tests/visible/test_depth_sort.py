@@ -189,7 +189,7 @@ def test_bad_input():
     with pytest.raises(sl.ArgumentTypeError, match="ScreenPolygons"):
         depth_sort([quad(0, 0, 5, 5, 0.5)])
     with pytest.raises(sl.ArgumentValueError, match="method"):
-        sl.visible.render(sl.FrameBuffer(8, 8), sl.mesh.cube(), sl.Camera(), method="nope")
+        sl.render(sl.FrameBuffer(8, 8), sl.mesh.cube(), sl.Camera(), method="nope")
 
 
 def test_bsp_million_coplanar_polygons_bounded():
@@ -276,10 +276,11 @@ def test_drawn_must_be_a_function():
 
 @pytest.mark.parametrize("mode", ["1", "L", "RGB", "RGBA"])
 def test_painting_beside_the_sort_gives_the_pixels_of_sort_then_paint(mode, monkeypatch):
-    # paint_depth_sorted paints each run on a second thread while the sort goes on;
+    # painted_depth_sort paints each run on a second thread while the sort goes on;
     # the pixels are those of painting the sorted pieces afterwards (short runs, so
     # that many runs overlap the sort)
-    from scanline.visible.render import paint
+    from scanline.shading import paint
+    from scanline.visible.visibility import piece_numbers
 
     module = importlib.import_module("scanline.visible.depth_sort")
     monkeypatch.setattr(module, "RUN", 50)
@@ -289,33 +290,61 @@ def test_painting_beside_the_sort_gives_the_pixels_of_sort_then_paint(mode, monk
     rng = np.random.default_rng(5)
     values = np.array([ours.pixel(tuple(int(c) for c in rng.integers(0, 256, 3)))
                        for _ in range(len(sp))], np.uint8).reshape(len(sp), -1)
-    pieces = sl.visible.paint_depth_sorted(ours, sp, values)
-    paint(theirs, depth_sort(sp), values)
-    assert same_pieces(pieces, depth_sort(sp))
+    pieces, numbers = sl.visible.painted_depth_sort(sp)
+    paint(ours, numbers, values[pieces.face])
+    after = depth_sort(sp)
+    paint(theirs, piece_numbers(after), values[after.face])
+    assert same_pieces(pieces, after)
     assert np.array_equal(ours.to_array(), theirs.to_array())
     shades = len(np.unique(ours.to_array().reshape(SMALL_H * SMALL_W, -1), axis=0))
     assert shades == 2 if mode == "1" else shades > 100
 
 
-def test_a_sort_that_fails_leaves_the_frame_buffer_as_it_was():
+def cyclic_bars():
+    """Three flat bars in world space, each lying over the next (120 degrees apart,
+    each one's far end raised over the next one's near end)."""
+    bars = []
+    for k in range(3):
+        a = 2 * np.pi * k / 3
+        c, s = np.cos(a), np.sin(a)
+        turn = np.array([[c, -s, 0, 0], [s, c, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])
+        shift = np.array([[1, 0, 0, 0], [0, 1, 0, 0.55], [0, 0, 1, 0], [0, 0, 0, 1]])
+        bar = sl.mesh.Mesh([(-1.6, -0.22, -0.35), (1.6, -0.22, 0.35), (1.6, 0.22, 0.35),
+                            (-1.6, 0.22, -0.35)], [[0, 1, 2, 3]])
+        bars.append(bar.transformed(turn @ shift))
+    return bars
+
+
+def test_a_render_whose_sort_fails_leaves_the_frame_buffer_as_it_was():
+    cam = sl.Camera(eye=(0, 0, 6), target=(0, 0, 0),
+                    projection=sl.projection.orthographic(window=(-2.5, -2.5, 2.5, 2.5)))
     fb = sl.FrameBuffer(W, H, background="white")
     before = fb.to_array()
     with pytest.raises(DepthSortLoopError):
-        sl.visible.paint_depth_sorted(fb, ScreenPolygons.from_device(cyclic(), W, H),
-                                      np.array([[255, 0, 0]] * 3, np.uint8), split_cycles=False)
+        sl.render(fb, cyclic_bars(), cam, method="depth-sort", split_cycles=False)
     assert np.array_equal(fb.to_array(), before)
+    sl.render(fb, cyclic_bars(), cam, method="depth-sort")         # split: drawn
+    assert not np.array_equal(fb.to_array(), before)
 
 
-def test_painting_beside_the_sort_checks_the_face_values():
+def test_painting_checks_the_values_and_the_numbers():
+    from scanline.shading import paint
+    from scanline.visible.visibility import piece_numbers
+
     sp = small_triangles(20, 6)
+    numbers = piece_numbers(sp)
     fb = sl.FrameBuffer(SMALL_W, SMALL_H, mode="L")
-    for values, message in [(np.zeros((20, 3), np.uint8), r"shape \(faces, 1\) for a mode 'L'"),
-                            (np.zeros(20, np.uint8), "one pixel value per face"),
+    for values, message in [(np.zeros((20, 3), np.uint8), r"shape \(n, 1\) for a mode 'L'"),
+                            (np.zeros(20, np.uint8), "one pixel value per number"),
                             (np.full((20, 1), 300), "integers 0-255"),
                             (np.zeros((20, 1), float), "integers 0-255"),
-                            (np.zeros((5, 1), np.uint8), "values holds 5 rows.*face 19")]:
+                            (np.zeros((5, 1), np.uint8), "values holds 5 rows.*number 19")]:
         with pytest.raises(sl.ArgumentValueError, match=message):
-            sl.visible.paint_depth_sorted(fb, sp, values)
+            paint(fb, numbers, values)
+    for ids, message in [(numbers[:-1], "ids must have the frame buffer's shape"),
+                         (numbers.astype(float), "ids must be integers")]:
+        with pytest.raises(sl.ArgumentValueError, match=message):
+            paint(fb, ids, np.zeros((20, 1), np.uint8))
     assert not fb.to_array().any()
-    sl.visible.paint_depth_sorted(fb, sp, np.full((20, 1), 200))      # integers are taken
+    paint(fb, numbers, np.full((20, 1), 200))      # integers are taken
     assert (fb.to_array() == 200).any()

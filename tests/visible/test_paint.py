@@ -1,14 +1,21 @@
-"""The object-order methods paint their convex pieces with a span kernel of their own;
-its pixels must be the 2-D fill's (sl.draw.polygons), piece for piece, in every mode."""
+"""The object-order methods paint their convex pieces' numbers with a span kernel of
+their own, and the shading colors the numbers; the pixels must be the 2-D fill's
+(sl.draw.polygons), piece for piece, in every mode."""
 
 import numpy as np
 import pytest
 
 import scanline as sl
+from scanline.shading import paint as paint_ids
 from scanline.visible import ScreenPolygons
-from scanline.visible.render import paint
+from scanline.visible.visibility import piece_numbers
 
 W, H = 37, 23
+
+
+def paint(fb, sp, values):
+    """The pieces ``sp`` painted in order in their faces' ``values``."""
+    paint_ids(fb, piece_numbers(sp), values[sp.face])
 
 
 def convex(rng, integer):

@@ -1,5 +1,5 @@
 """Triangles of world coordinates to the screen, one pass per face (the per-face part of
-:func:`scanline.render.prepare.prepare`; Hearn & Baker, sections 12-3 and 13-2).
+:func:`scanline.screen.prepare`; Hearn & Baker, sections 12-3 and 13-2).
 
 Per triangle: the back-face test in viewing coordinates (V . N > 0, V from the center
 of projection to the first vertex, or the direction of projection), the homogeneous

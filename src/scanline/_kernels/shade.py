@@ -14,15 +14,12 @@ once per call, and where every material has the same whole-number exponent n_s
 (the common case) s^n_s is found by repeated squaring instead of a power (equal to
 the power to a few units in the last place).
 
-Where a pixel's face and barycentrics come from (the ``source`` token):
-:data:`BUFFERS`, buffers of faces and barycentrics (H, W) and (H, W, 2) made by the
-rasterizer; or :data:`TRIANGLES`, a buffer of the drawn triangles' indices (the
-rasterizer's id buffer, :data:`scanline._kernels.raster3d.IDS`), with per triangle
-the screen-space functions of its attributes times 1/w and of 1/w
-(:func:`triangle_attributes`) and its face: the attributes are evaluated where the
-pixel is shaded, once, for the visible triangle only (the rasterizer then writes
-neither barycentrics nor a division per fragment), and the face's index replaces
-the triangle's in the buffer.
+What is shaded: a buffer of the drawn triangles' indices (a visibility buffer:
+the z-buffer's id buffer, :data:`scanline._kernels.raster3d.IDS`, or any method's
+:class:`~scanline.visible.visibility.Layer`), with per triangle the screen-space
+functions of its attributes times 1/w and of 1/w (:func:`triangle_attributes`) and
+its facet: the attributes are evaluated where the pixel is shaded, once, for the
+visible triangle only, and the facet's index replaces the triangle's in the buffer.
 
 Variants (tokens, one specialization each):
 
@@ -62,13 +59,10 @@ VERTEX = 1
 PHONG = 2
 SPEC_PHONG = 1
 SPEC_BLINN = 2
-BUFFERS = 1
-TRIANGLES = 2
 
-#: Tokens of the shading method, of the specular term and of the pixels' source.
+#: Tokens of the shading method and of the specular term.
 SHADING = {"vertex": token(VERTEX), "phong": token(PHONG)}
 SPECULAR = {"phong": token(SPEC_PHONG), "blinn": token(SPEC_BLINN)}
-SOURCE = {"buffers": token(BUFFERS), "triangles": token(TRIANGLES)}
 
 
 #: The smallest highlight factor s^n_s evaluated: for s below SHINE_FLOOR^(1/n_s) the
@@ -134,7 +128,7 @@ def encode(value, table, thresholds):
 @kernel
 def triangle_attributes(lo, hi, tri, q, bary, tface, world, normals, colors, front, table,
                         shading):
-    """For the source TRIANGLES: per drawn triangle ``t`` in ``lo .. hi - 1`` the
+    """Per drawn triangle ``t`` in ``lo .. hi - 1`` the
     screen-space functions of its attributes times 1/w, so that a pixel's attributes
     are (their functions at (x - x0, y - y0)) / (1/w's): ``table[t]`` = x0, y0 (its
     vertex 0), (value, d/dx, d/dy) of 1/w, then of each attribute: PHONG the point,
@@ -187,28 +181,21 @@ def triangle_attributes(lo, hi, tri, q, bary, tface, world, normals, colors, fro
 
 
 @kernel
-def shade_pixels(start, step, faces, bary, table, tface, world, normals, colors, front,
-                 face_mat, mats, ambient, sources, eye, gamma_table, thresholds, raster,
-                 shading, spec, mode, source):
-    """Shade every pixel (y, x) with a visible face into ``raster[y, x]``, on the bands
-    of :data:`BAND` rows numbered ``start``, ``start + step`` ... (calls with ``start``
-    = 0 .. step - 1 share the work: each pixel is written by one of them).
+def shade_pixels(start, step, faces, table, tface, face_mat, mats, ambient, sources, eye,
+                 gamma_table, thresholds, raster, shading, spec, mode):
+    """Shade every pixel (y, x) with a visible triangle into ``raster[y, x]``, on the
+    bands of :data:`BAND` rows numbered ``start``, ``start + step`` ... (calls with
+    ``start`` = 0 .. step - 1 share the work: each pixel is written by one of them).
 
-    Source BUFFERS: ``faces[y, x]`` (-1: none) and ``bary[y, x]`` = (lambda_1,
-    lambda_2) (``table``, ``tface`` not read).  Source TRIANGLES: ``faces[y, x]``
-    the drawn triangle (-1: none), ``table`` its attributes' functions
-    (:func:`triangle_attributes`) and ``tface`` (T,) its face, which replaces it in
-    ``faces`` (``bary``, ``world``, ``normals`` and ``colors`` not read, but
-    ``colors`` must have rows where the surface colors are among the attributes).
-
-    ``world``, ``normals``, ``colors``: (F, 3, 3) per face vertex (VERTEX: ``colors``
-    holds the vertex intensities and the other two are not read; PHONG: ``colors``
-    may have no rows, and then each face takes its material's color); ``front`` (F,)
-    the back-face test; ``face_mat`` (F,) the material row of each face in ``mats``
-    (M, 11: :func:`scanline.shading.buffer.material_rows`); ``ambient`` (3,) the
-    summed ambient intensity; ``sources`` (S, 16); ``eye`` (4,) homogeneous;
-    ``gamma_table`` (GAMMA_STEPS,) int64 and ``thresholds`` (257,) the gamma
-    encoding (:func:`encode`)."""
+    ``faces[y, x]`` is the triangle drawn there (-1: none), ``table`` its
+    attributes' functions (:func:`triangle_attributes`) and ``tface`` (T,) its
+    facet, which replaces it in ``faces``.  ``face_mat`` (G,) the material row of
+    each facet in ``mats`` (M, 11: :func:`scanline.shading.buffer.material_rows`);
+    ``ambient`` (3,) the summed ambient intensity; ``sources`` (S, 16); ``eye`` (4,)
+    homogeneous; ``gamma_table`` (GAMMA_STEPS,) int64 and ``thresholds`` (257,) the
+    gamma encoding (:func:`encode`).  PHONG without the surface color among the
+    attributes (a table of 5 + 3 x 6 columns): each facet takes its material's
+    color."""
     height = faces.shape[0]
     # per source: the unit vector toward a light at infinity (w = 0) and its
     # attenuation, the same at every point (the per-point formula's values)
@@ -236,127 +223,97 @@ def shade_pixels(start, step, faces, bary, table, tface, world, normals, colors,
     ms = np.empty(CHUNK, np.int64)
     for lo in range(start * BAND, height, max(step, 1) * BAND):
         for y in range(lo, min(lo + BAND, height)):
-            shade_row(y, faces, bary, table, tface, world, normals, colors, front, face_mat,
-                      mats, ambient, sources, far, eye, expo, gamma_table, thresholds, raster,
-                      scratch, xs, ms, shading, spec, mode, source)
+            shade_row(y, faces, table, tface, face_mat, mats, ambient, sources, far, eye, expo,
+                      gamma_table, thresholds, raster, scratch, xs, ms, shading, spec, mode)
 
 
 @helper
-def shade_row(y, faces, bary, table, tface, world, normals, colors, front, face_mat, mats,
-              ambient, sources, far, eye, expo, gamma_table, thresholds, raster, s, xs, ms,
-              shading, spec, mode, source):
+def shade_row(y, faces, table, tface, face_mat, mats, ambient, sources, far, eye, expo,
+              gamma_table, thresholds, raster, s, xs, ms, shading, spec, mode):
     """Row ``y``, chunk after chunk of :data:`CHUNK` covered pixels: each pixel's
-    face and attributes (the point, the normal and the color; VERTEX: the
+    facet and attributes (the point, the normal and the color; VERTEX: the
     interpolated intensity, I = sum lambda_i I_i), then the illumination
-    (:func:`light_chunk`), the encoding and the store.  Source TRIANGLES: a run of
-    pixels of one triangle loads its functions once."""
+    (:func:`light_chunk`), the encoding and the store.  A run of pixels of one
+    triangle loads its functions once."""
     width = faces.shape[1]
-    nf = front.shape[0]
+    nf = face_mat.shape[0]
     nt = tface.shape[0]
-    own = colors.shape[0] > 0
     # the attributes interpolated: PHONG fields PX .. NZ (and CR .. CB), VERTEX 0 .. 2
-    kk = (3 if len(shading) == VERTEX else 9 if own else 6)
+    kk = (table.shape[1] - 5) // 3
+    own = kk > 6
     x = 0
     while x < width:
         n = np.int64(0)    # (a literal 0 would compile store_chunk twice)
         while n < CHUNK and x < width:
-            if len(source) == TRIANGLES:
-                t = faces[y, x]
-                if t < 0:
+            t = faces[y, x]
+            if t < 0:
+                x += 1
+                while x < width and faces[y, x] < 0:
                     x += 1
-                    while x < width and faces[y, x] < 0:
-                        x += 1
-                    continue
-                # the run of pixels of triangle t, given its face
-                f = tface[t] if t < nt else -1
-                faces[y, x] = f
-                end = x + 1
-                most = min(width, x + CHUNK - n)
-                while end < most and faces[y, end] == t:
-                    faces[y, end] = f
-                    end += 1
-                if f < 0 or f >= nf:
-                    x = end
-                    continue
-                m = face_mat[f]
-                x0 = table[t, 0]
-                fy = y - table[t, 1]
-                q0 = table[t, 2] + table[t, 4] * fy
-                qx = table[t, 3]
-                # PHONG: P, N (and C); VERTEX: I (fields 0 .. 2)
-                a0 = table[t, 5] + table[t, 7] * fy
-                ax = table[t, 6]
-                b0 = table[t, 8] + table[t, 10] * fy
-                bx = table[t, 9]
-                c0 = table[t, 11] + table[t, 13] * fy
-                cx = table[t, 12]
+                continue
+            # the run of pixels of triangle t, given its facet
+            f = tface[t] if t < nt else -1
+            faces[y, x] = f
+            end = x + 1
+            most = min(width, x + CHUNK - n)
+            while end < most and faces[y, end] == t:
+                faces[y, end] = f
+                end += 1
+            if f < 0 or f >= nf:
+                x = end
+                continue
+            m = face_mat[f]
+            x0 = table[t, 0]
+            fy = y - table[t, 1]
+            q0 = table[t, 2] + table[t, 4] * fy
+            qx = table[t, 3]
+            # PHONG: P, N (and C); VERTEX: I (fields 0 .. 2)
+            a0 = table[t, 5] + table[t, 7] * fy
+            ax = table[t, 6]
+            b0 = table[t, 8] + table[t, 10] * fy
+            bx = table[t, 9]
+            c0 = table[t, 11] + table[t, 13] * fy
+            cx = table[t, 12]
+            if kk > 3:
+                d0 = table[t, 14] + table[t, 16] * fy
+                dx = table[t, 15]
+                e0 = table[t, 17] + table[t, 19] * fy
+                ex = table[t, 18]
+                g0 = table[t, 20] + table[t, 22] * fy
+                gx = table[t, 21]
+            else:
+                d0 = dx = e0 = ex = g0 = gx = 0.0
+            i = n
+            for at in range(x, end):
+                fx = at - x0
+                r = 1.0 / (q0 + qx * fx)
+                s[i] = (a0 + ax * fx) * r
+                s[CHUNK + i] = (b0 + bx * fx) * r
+                s[2 * CHUNK + i] = (c0 + cx * fx) * r
                 if kk > 3:
-                    d0 = table[t, 14] + table[t, 16] * fy
-                    dx = table[t, 15]
-                    e0 = table[t, 17] + table[t, 19] * fy
-                    ex = table[t, 18]
-                    g0 = table[t, 20] + table[t, 22] * fy
-                    gx = table[t, 21]
-                else:
-                    d0 = dx = e0 = ex = g0 = gx = 0.0
+                    s[3 * CHUNK + i] = (d0 + dx * fx) * r
+                    s[4 * CHUNK + i] = (e0 + ex * fx) * r
+                    s[5 * CHUNK + i] = (g0 + gx * fx) * r
+                xs[i] = at
+                ms[i] = m
+                i += 1
+            if kk > 6:
+                a0 = table[t, 23] + table[t, 25] * fy
+                ax = table[t, 24]
+                b0 = table[t, 26] + table[t, 28] * fy
+                bx = table[t, 27]
+                c0 = table[t, 29] + table[t, 31] * fy
+                cx = table[t, 30]
                 i = n
                 for at in range(x, end):
                     fx = at - x0
                     r = 1.0 / (q0 + qx * fx)
-                    s[i] = (a0 + ax * fx) * r
-                    s[CHUNK + i] = (b0 + bx * fx) * r
-                    s[2 * CHUNK + i] = (c0 + cx * fx) * r
-                    if kk > 3:
-                        s[3 * CHUNK + i] = (d0 + dx * fx) * r
-                        s[4 * CHUNK + i] = (e0 + ex * fx) * r
-                        s[5 * CHUNK + i] = (g0 + gx * fx) * r
-                    xs[i] = at
-                    ms[i] = m
+                    s[CR * CHUNK + i] = (a0 + ax * fx) * r
+                    s[CG * CHUNK + i] = (b0 + bx * fx) * r
+                    s[CB * CHUNK + i] = (c0 + cx * fx) * r
                     i += 1
-                if kk > 6:
-                    a0 = table[t, 23] + table[t, 25] * fy
-                    ax = table[t, 24]
-                    b0 = table[t, 26] + table[t, 28] * fy
-                    bx = table[t, 27]
-                    c0 = table[t, 29] + table[t, 31] * fy
-                    cx = table[t, 30]
-                    i = n
-                    for at in range(x, end):
-                        fx = at - x0
-                        r = 1.0 / (q0 + qx * fx)
-                        s[CR * CHUNK + i] = (a0 + ax * fx) * r
-                        s[CG * CHUNK + i] = (b0 + bx * fx) * r
-                        s[CB * CHUNK + i] = (c0 + cx * fx) * r
-                        i += 1
-                n += end - x
-                x = end
-                continue
-            at = x
-            x += 1
-            f = faces[y, at]
-            if f < 0 or f >= nf:
-                continue
-            l1 = bary[y, at, 0]
-            l2 = bary[y, at, 1]
-            l0 = 1.0 - l1 - l2
-            flip = 1.0 if front[f] else -1.0
-            for ch in range(3):
-                if len(shading) == VERTEX:
-                    s[ch * CHUNK + n] = (l0 * colors[f, 0, ch] + l1 * colors[f, 1, ch]
-                                         + l2 * colors[f, 2, ch])
-                    continue
-                s[(PX + ch) * CHUNK + n] = (l0 * world[f, 0, ch] + l1 * world[f, 1, ch]
-                                            + l2 * world[f, 2, ch])
-                s[(NX + ch) * CHUNK + n] = flip * (l0 * normals[f, 0, ch]
-                                                   + l1 * normals[f, 1, ch]
-                                                   + l2 * normals[f, 2, ch])
-                if own:
-                    s[(CR + ch) * CHUNK + n] = (l0 * colors[f, 0, ch]
-                                                + l1 * colors[f, 1, ch]
-                                                + l2 * colors[f, 2, ch])
-            xs[n] = at
-            ms[n] = face_mat[f]
-            n += 1
+            n += end - x
+            x = end
         if n == 0:
             continue
         if len(shading) == PHONG:

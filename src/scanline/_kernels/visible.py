@@ -1,5 +1,5 @@
 """Image-space visible-surface kernels on screen-space convex polygons
-(:class:`scanline.visible.polygons.ScreenPolygons`): the scan-line method (Hearn &
+(:class:`scanline.screen.ScreenPolygons`): the scan-line method (Hearn &
 Baker, section 13-5) and area subdivision (Warnock; section 13-8), and the
 hidden-line test of visible-line detection (section 13-10).
 
@@ -210,21 +210,19 @@ def paint_polygon(ids, width, height, verts, start, end, number, top, bottom, xl
 
 
 @kernel
-def paint_convex(band, step, buf, layout, width, height, verts, offsets, colors, ids):
-    """Paint convex polygons in order, polygon ``p`` (``verts[offsets[p]:offsets[p +
-    1]]``) in ``colors[p]``: the object-order methods' painting.  A convex polygon
-    has two crossings on each scan line it covers, and the span between them is the
-    2-D fill's (``ceil(xl) <= x < ceil(xr)``, each crossing the expression of
-    :func:`crossing`; :func:`paint_polygon`, :func:`paint_triangle`).  The rows of
-    this call are those of the bands of 2**PAINT_BAND_SHIFT rows numbered ``band``,
-    ``band + step``, ... (:func:`bands_of`; :mod:`scanline._kernels._threads`: one
-    call per thread), painted band after band: the polygons are listed by the bands
-    they cover (in order), and in each band the spans of its polygons write the
-    polygon's number to ``ids`` (int32, height x width, scratch), the last polygon
-    painted over a pixel winning as in painting; then each pixel of a polygon takes
-    its color (the values of :func:`scanline._kernels.spans.span`), the others keep
-    theirs.  So the frame buffer's pixels are written once however deep the pieces
-    overlap, and a band's rows are read and written while they are in the cache."""
+def paint_numbers(band, step, width, height, verts, offsets, first, ids):
+    """Paint the numbers ``first + p`` of convex polygons ``p`` (``verts[offsets[p]:
+    offsets[p + 1]]``) in order into ``ids`` (int32, height x width), later over
+    earlier: the raster half of the object-order methods (the pixels then take the
+    colors of what they show, :func:`color_ids`).  A convex polygon has two crossings
+    on each scan line it covers, and the span between them is the 2-D fill's
+    (``ceil(xl) <= x < ceil(xr)``, each crossing the expression of :func:`crossing`;
+    :func:`paint_polygon`, :func:`paint_triangle`).  The rows of this call are those
+    of the bands of 2**PAINT_BAND_SHIFT rows numbered ``band``, ``band + step``, ...
+    (:func:`bands_of`; :mod:`scanline._kernels._threads`: one call per thread),
+    painted band after band: the polygons are listed by the bands they cover (in
+    order), so that a band's rows are read and written while they are in the cache.
+    Pixels no polygon covers keep their values."""
     n = offsets.shape[0] - 1
     size = 1 << PAINT_BAND_SHIFT
     bands = (height + size - 1) >> PAINT_BAND_SHIFT
@@ -260,49 +258,23 @@ def paint_convex(band, step, buf, layout, width, height, verts, offsets, colors,
     k0, k1 = bands_of(zero, height - 1, band, step)
     for k in range(k0, k1, step):
         first_row, stop_row = rows_of(k, zero, height - 1)
-        for r in range(first_row, stop_row):
-            for x in range(width):
-                ids[r, x] = -1
         for e in range(count[k], count[k + 1]):
             p = listed[e]
             start = offsets[p]
             end = offsets[p + 1]
+            number = np.int32(first + p)
             if end - start == 3:
-                paint_triangle(ids, width, height, verts, start, np.int32(p), first_row,
+                paint_triangle(ids, width, height, verts, start, number, first_row,
                                stop_row - 1)
             else:
-                paint_polygon(ids, width, height, verts, start, end, np.int32(p),
-                              first_row, stop_row - 1, xl, xr)
-        for r in range(first_row, stop_row):
-            color_row(buf, layout, width, ids, colors, r)
-
-
-@kernel
-def paint_ids(width, height, verts, offsets, first, ids):
-    """Paint the numbers ``first + p`` of convex polygons ``p`` (``verts[offsets[p]:
-    offsets[p + 1]]``) in order into ``ids`` (int32, height x width), the spans of
-    :func:`paint_convex` on every row, and no colors: a run of pieces painted while
-    the depth sort orders the next ones (:func:`color_ids` colors the pixels once
-    every run is in)."""
-    xl = np.empty(max(height, 1))
-    xr = np.empty(max(height, 1))
-    for p in range(offsets.shape[0] - 1):
-        start = offsets[p]
-        end = offsets[p + 1]
-        r0, r1 = piece_rows(verts, start, end, height)
-        if r0 > r1:
-            continue
-        number = np.int32(first + p)
-        if end - start == 3:
-            paint_triangle(ids, width, height, verts, start, number, r0, r1)
-        else:
-            paint_polygon(ids, width, height, verts, start, end, number, r0, r1, xl, xr)
+                paint_polygon(ids, width, height, verts, start, end, number, first_row,
+                              stop_row - 1, xl, xr)
 
 
 @kernel
 def color_ids(band, step, buf, layout, width, height, colors, ids):
     """Each pixel of the bands of rows ``band``, ``band + step``, ... (as in
-    :func:`paint_convex`) whose ``ids`` number p is not negative takes ``colors[p]``;
+    :func:`paint_numbers`) whose ``ids`` number p is not negative takes ``colors[p]``;
     the others keep theirs."""
     zero = np.int64(0)
     k0, k1 = bands_of(zero, height - 1, band, step)

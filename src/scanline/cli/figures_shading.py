@@ -105,7 +105,7 @@ def figure_depth_cue():
 
 def figure_back_faces():
     """The back-face test: which faces are culled, and the picture without them."""
-    from scanline.render.prepare import prepare
+    from scanline.screen import prepare
 
     pot = _teapot(6)
     cam = _camera()
@@ -120,17 +120,17 @@ def figure_back_faces():
     fb3 = sl.FrameBuffer(*size, background=PAPER)
     sl.render(fb3, pot, cam, shading="gouraud", cull_back_faces=True)
     sl.draw3d.wireframe(fb3, back_mesh, cam, color="#e15759")
-    total = scene.face_count
+    total = scene.facet_count
     return Figure(
         "shading-back-faces", "Back-face culling with the culled faces shown",
         f"The back-face test V . N > 0 in viewing coordinates marks {int(scene.culled.sum())} "
-        f"of the teapot's {total} faces as facing away from the viewer; culling drops them "
+        f"of the teapot's {total} triangles as facing away from the viewer; culling drops them "
         "before the z-buffer runs. Left: the picture with them culled (nothing changes for a "
         "closed surface); middle: the culled faces alone, in red; right: both, the culled "
         "faces drawn over the picture.", "Hearn & Baker, section 13-2",
         side_by_side([fb1.to_pil(), fb2.to_pil(), fb3.to_pil()],
                      ["culled", "the culled faces", "both"]),
-        f"faces: {total}, culled: {int(scene.culled.sum())}, kept: "
+        f"triangles: {total}, culled: {int(scene.culled.sum())}, kept: "
         f"{total - int(scene.culled.sum())}")
 
 

@@ -42,10 +42,10 @@ def figure_painter_failure():
     panels, notes = [], []
     for method in ("painter", "depth-sort"):
         fb = sl.FrameBuffer(260, 260, background=PAPER)
-        out = sl.visible.render(fb, bars, cam, method=method, colors=SHADES[:3])
+        out = sl.render(fb, bars, cam, method=method, shading="none", colors=SHADES[:3])
         sl.draw3d.wireframe(fb, bars, cam, color="black")
         panels.append(fb.to_pil())
-        notes.append(f"{method}: {len(out)} pieces drawn")
+        notes.append(f"{method}: {len(out.pieces)} pieces drawn")
     image = side_by_side(panels, ["painter (one key each)", "depth sort (tests, split)"])
     return Figure(
         "visible-painter-failure", "The painter's one-key sort against depth sorting",
@@ -81,17 +81,21 @@ def figure_methods():
     for method in sl.visible.METHODS:
         fb = sl.FrameBuffer(170, 140, background=PAPER)
         t = time.perf_counter()
-        sl.visible.render(fb, meshes, cam, method=method, colors=colors)
+        sl.render(fb, meshes, cam, method=method, shading="none", colors=colors)
         rows.append(f"{method:17s} {1000 * (time.perf_counter() - t):8.1f} ms")
         panels.append(fb.to_pil())
         titles.append(method)
-    image = stacked([side_by_side(panels[:3], titles[:3]), side_by_side(panels[3:], titles[3:])])
+    half = (len(panels) + 1) // 2
+    image = stacked([side_by_side(panels[:half], titles[:half]),
+                     side_by_side(panels[half:], titles[half:])])
     return Figure(
         "visible-methods", "One scene by every visible-surface method",
-        "A cube pierced by a sphere and a torus: painter (one key per polygon) gets the "
-        "intersections wrong; depth sort and BSP split polygons and agree with the "
-        "scan-line method and area subdivision pixel for pixel. Times include the first "
-        "call's interpretation or compilation.", "Hearn & Baker, sections 13-5 to 13-8",
+        "A cube pierced by a sphere and a torus, each face one color, by every method of "
+        "sl.render: painter (one key per polygon) gets the intersections wrong; depth sort "
+        "and BSP split polygons and agree pixel for pixel with the z-buffer, ray casting, "
+        "the scan-line method and area subdivision; the A-buffer smooths the edges. Times "
+        "include the first call's interpretation or compilation.",
+        "Hearn & Baker, sections 13-3 to 13-10",
         image, "\n".join(rows))
 
 

@@ -72,7 +72,7 @@ class Shading:
             t = s._table(m, f"materials.{name}", MATERIAL)
             self.materials[name] = s._call(f"materials.{name}", lighting.Material,
                                            **{k: _tuples(x) for k, x in t.items()})
-        from ..render import METHODS
+        from ..visible import METHODS
         from ..shading import MODELS
 
         method = data.get("method", "z-buffer")
@@ -117,7 +117,7 @@ class Shading:
 
     def draw(self, fb):
         """Render the surfaces into ``fb``, camera by camera."""
-        from ..render import render
+        from ..rendering import render
 
         by_camera = {}
         for mesh, material, camera in self.surfaces:

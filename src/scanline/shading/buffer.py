@@ -1,13 +1,13 @@
 """Shading a whole visibility buffer at once: the compiled form of
-:func:`scanline.shading.shade` followed by the gamma encoding and the store, for the
-image-space methods (the kernel is :mod:`scanline._kernels.shade`).
+:func:`scanline.shading.intensities` followed by the gamma encoding and the store
+(the kernel is :mod:`scanline._kernels.shade`).
 
-Flat and Gouraud shading compute the illumination model once per face or per
+Flat and Gouraud shading (and "none") compute their intensities once per face or per
 vertex (numpy, :func:`scanline.shading.vertex_intensities`), and the kernel
 interpolates those intensities at each pixel; Phong shading evaluates the model at
-every pixel in the kernel.  The numpy path (:func:`scanline.shading.shade`) stays
-the reference (the tests compare the two) and still serves what the kernel does not
-do: fast Phong, shadow maps, depth cueing.
+every pixel in the kernel.  The numpy path (:func:`scanline.shading.intensities`)
+stays the reference (the tests compare the two) and still serves what the kernel
+does not do: fast Phong, shadow maps, depth cueing, layers of fragments.
 """
 
 import functools
@@ -20,7 +20,7 @@ from ..lighting import AmbientLight, DirectionalLight, SpotLight
 from ..lighting.model import ViewerAtInfinity
 
 #: Shading models the kernel draws (the rest go through the numpy path).
-MODELS = ("flat", "gouraud", "phong")
+MODELS = ("none", "flat", "gouraud", "phong")
 
 
 def source_rows(lights):
@@ -92,82 +92,64 @@ def gamma_tables(gamma):
 
 
 def drawable(fb, options):
-    """True when the kernel can shade for these ``options`` into ``fb``."""
-    return (options["shading"] in MODELS and options.get("shadows") is None
-            and options.get("depth_cue") is None and fb.mode in ("L", "RGB", "RGBA"))
+    """True when the kernel can shade for these ``options`` (a
+    :class:`~scanline.shading.options.ShadingOptions`) into ``fb``."""
+    return (options.model in MODELS and options.shadows is None
+            and options.depth_cue is None and fb.mode in ("L", "RGB", "RGBA"))
 
 
 def _material_colored(scene):
-    """True when every face takes its material's color (the scene's vertex colors are
+    """True when every facet takes its material's color (the scene's vertex colors are
     the one material's color broadcast): the kernel then reads it from the material
-    rows instead of an (F, 3, 3) array."""
+    rows instead of an (G, 3, 3) array."""
     c = scene.vertex_colors
     return (len(scene.materials) == 1 and c.ndim == 3 and c.size > 0 and not any(c.strides[:-1])
             and np.array_equal(c[0, 0], scene.materials[0].color))
 
 
-def shade_buffer(scene, fb, faces, bary, options, triangles=False):
-    """Shade the pixels of ``faces`` (H, W; -1: none) with barycentrics ``bary`` (H, W,
-    2) into ``fb`` (:func:`drawable` must hold).
-
-    ``triangles``: ``faces`` holds instead the index of the scene's triangle drawn at
-    each pixel (``scene.triangles``; the rasterizer's id buffer), whose attributes
-    are found from the triangle there; ``bary`` is not read, and ``faces`` (int64, C
-    order) is changed in place to hold the face at each pixel."""
+def shade_buffer(scene, fb, ids, options):
+    """Shade the pixels of ``ids`` (H, W; the scene's device triangle seen at each
+    pixel, -1 none; int64, C order) into ``fb`` (:func:`drawable` must hold).  Each
+    triangle's attributes are found from the triangle itself
+    (:func:`scanline._kernels.shade.triangle_attributes`), once per triangle; ``ids``
+    is changed in place to hold the facet at each pixel."""
     from .._kernels import shade as k
-    from .._kernels._threads import call_in_bands
+    from .._kernels._threads import call_in_bands, call_in_chunks
     from .._kernels.variants import MODE
+    from .._pool import scratch
     from . import decoded, vertex_intensities
 
-    lights, gamma = options["lights"], options["gamma"]
-    shading = options["shading"]
-    sources, ambient = source_rows(lights)
+    gamma = options.gamma
+    model = options.model
+    sources, ambient = source_rows(options.lights)
     empty = np.zeros((0, 3, 3))
-    if shading == "phong":
+    if model == "phong":
         world = v.kernel_array(scene.world)
         normals = v.kernel_array(scene.vertex_normals)
         colors = (empty if _material_colored(scene) else
                   v.kernel_array(decoded(scene.vertex_colors, gamma)))
     else:
         world = normals = empty
-        colors = np.zeros((scene.face_count, 3, 3))
-        seen = np.unique(scene.face)
+        colors = np.zeros((scene.facet_count, 3, 3))
+        seen = np.unique(scene.facet)
         if len(seen):
-            colors[seen] = vertex_intensities(scene, seen, lights, shading,
-                                              options["specular"], gamma)
-    token = k.SHADING["phong" if shading == "phong" else "vertex"]
-    tface = np.zeros(0, np.int64)
-    if not triangles:
-        source = k.SOURCE["buffers"]
-        table = np.zeros((0, 5))
-        bary = np.ascontiguousarray(bary, np.float64)
-    else:
-        from .._kernels._threads import call_in_chunks
-        from ..render.pool import scratch
-
-        source = k.SOURCE["triangles"]
-        bary = np.zeros((1, 1, 2))
-        tface = v.kernel_array(scene.face, np.int64)
-        n = len(tface)
-        kk = 3 if shading != "phong" else 9 if len(colors) else 6
-        table = scratch("triangle attributes", (n, 5 + 3 * kk))
-        tri, q = v.kernel_array(scene.triangles), v.kernel_array(scene.inv_w)
-        front = np.ascontiguousarray(scene.front, np.bool_)
-        tb = v.kernel_array(scene.bary)
-        call_in_chunks(k.triangle_attributes, 10 * kk * n, n,
-                       lambda lo, hi: (lo, hi, tri, q, tb, tface, world, normals, colors,
-                                       front, table, token))
-        world = normals = empty
-        if shading != "phong" or len(colors):
-            colors = np.zeros((1, 3, 3))
-    h, w = faces.shape
-    work = h * w * (2 + (8 * len(sources) if shading == "phong" else 0))
-    args = (np.ascontiguousarray(faces, np.int64), bary, table, tface, world, normals, colors,
-            np.ascontiguousarray(scene.front, np.bool_),
-            np.ascontiguousarray(scene.face_mesh, np.int64),
-            material_rows(scene.materials, gamma),
-            ambient, np.ascontiguousarray(sources), homogeneous_eye(scene.eye),
-            *gamma_tables(gamma), fb._raster()[0],
-            token, k.SPECULAR[options["specular"] if shading == "phong" else "phong"], MODE[fb.mode],
-            source)
-    call_in_bands(k.shade_pixels, work, *args)
+            colors[seen] = vertex_intensities(scene, seen, options)
+    token = k.SHADING["phong" if model == "phong" else "vertex"]
+    tface = v.kernel_array(scene.facet, np.int64)
+    n = len(tface)
+    kk = 3 if model != "phong" else 9 if len(colors) else 6
+    table = scratch("triangle attributes", (n, 5 + 3 * kk))
+    tri, q = v.kernel_array(scene.triangles), v.kernel_array(scene.inv_w)
+    front = np.ascontiguousarray(scene.front, np.bool_)
+    tb = v.kernel_array(scene.bary)
+    call_in_chunks(k.triangle_attributes, 10 * kk * n, n,
+                   lambda lo, hi: (lo, hi, tri, q, tb, tface, world, normals, colors, front,
+                                   table, token))
+    h, w = ids.shape
+    work = h * w * (2 + (8 * len(sources) if model == "phong" else 0))
+    call_in_bands(k.shade_pixels, work, ids, table, tface,
+                  np.ascontiguousarray(scene.facet_mesh, np.int64),
+                  material_rows(scene.materials, gamma), ambient,
+                  np.ascontiguousarray(sources), homogeneous_eye(scene.eye),
+                  *gamma_tables(gamma), fb._raster()[0], token,
+                  k.SPECULAR[options.specular if model == "phong" else "phong"], MODE[fb.mode])

@@ -1,31 +1,36 @@
-"""Visible-surface detection on screen-space polygons (Hearn & Baker, chapter 13):
-the painter's one-key sort (the counter-example), depth sorting, BSP trees, the
-scan-line method, area subdivision, and visible-line detection for wireframes.
+"""Stage two of the 3-D pipeline: visible-surface detection (Hearn & Baker, chapter
+13) -- the z-buffer, the A-buffer, ray casting, the scan-line method, area
+subdivision, depth sorting, BSP trees and the painter's one-key sort (the
+counter-example) -- and visible-line detection for wireframes.
 
-Every method works on :class:`ScreenPolygons` (device x, y and depth per vertex, a
-face index and a device-space plane per polygon) and gives either the pieces in
-drawing order (object-order methods) or the visible face at every pixel (image
-space); :func:`render` draws either flat shaded.
+Each method of :data:`METHODS` takes the prepared scene
+(:class:`~scanline.screen.ScreenScene`) and returns what is visible, never a color:
+:func:`scanline.render` orders the stages.  The polygon methods can also be called
+on their own, on :class:`ScreenPolygons` (device x, y and depth per vertex, a face
+and a device-space plane per polygon): :func:`painter`, :func:`depth_sort` and
+:func:`bsp` give the pieces in drawing order, :func:`scan_line` and
+:func:`area_subdivision` the visible face at every pixel.
 
 >>> import scanline as sl
 >>> cam = sl.Camera(eye=(3, 2, 4), target=(0, 0, 0),
 ...                 projection=sl.projection.perspective(fov=0.8, near=1))
->>> fb = sl.FrameBuffer(48, 32)
->>> pieces = sl.visible.render(fb, sl.mesh.cube(), cam, method="depth-sort")
->>> sorted(set(pieces.face.tolist()))
+>>> polygons = sl.visible.screen_polygons(sl.mesh.cube(), cam, 48, 32)
+>>> sorted(set(sl.visible.depth_sort(polygons).face.tolist()))
 [0, 1, 2, 3, 4, 5]
 """
 
+from ..screen.polygons import ScreenPolygons
+from ..screen.prepare import screen_polygons
 from .bsp import BSPTree, bsp, camera_eye
-from .depth_sort import TESTS, depth_sort
+from .depth_sort import TESTS, depth_sort, painted_depth_sort
 from .hidden_lines import hidden_lines, visible_lines
+from .methods import METHODS, PRECISION, Method, MethodOptions, register
 from .painter import painter
-from .polygons import ScreenPolygons, VisibleFaces, screen_polygons
-from .render import METHODS, paint_depth_sorted, render, visible
 from .scanline_method import scan_line
+from .visibility import Fragments, Layer, VisibleFaces
 from .warnock import area_subdivision
 
-__all__ = ["BSPTree", "METHODS", "ScreenPolygons", "TESTS", "VisibleFaces",
-           "area_subdivision", "bsp", "camera_eye", "depth_sort", "hidden_lines",
-           "paint_depth_sorted", "painter", "render", "scan_line", "screen_polygons", "visible",
-           "visible_lines"]
+__all__ = ["BSPTree", "Fragments", "Layer", "METHODS", "Method", "MethodOptions", "PRECISION",
+           "ScreenPolygons", "TESTS", "VisibleFaces", "area_subdivision", "bsp", "camera_eye",
+           "depth_sort", "hidden_lines", "painted_depth_sort", "painter", "register",
+           "scan_line", "screen_polygons", "visible_lines"]

@@ -11,11 +11,52 @@ import numpy as np
 from .. import _validate as v
 from .._kernels import bsp as k
 from .._kernels._jit import call
-from ..errors import ArgumentTypeError, BSPTooLargeError
-from .polygons import meshes_list, project, world_polygons
+from ..errors import BSPTooLargeError
+from ..screen.meshes import meshes_list
+from ..screen.polygons import newell_planes
 
 #: Relative tolerance of "on the plane" (times the scene's size).
 TOLERANCE = 1e-9
+
+
+def world_polygons(meshes):
+    """The faces of ``meshes`` as world polygons: ``(vertices (V, 3), counts (P,),
+    face (P,))``, faces numbered across the meshes in order.  Convex faces that are
+    not planar (a teapot's bilinear patches) are split into a fan of triangles, each
+    keeping its face index.  Vectorized over the faces (a million faces take about a
+    second)."""
+    verts, counts, faces = [], [], []
+    base = 0
+    for mesh in meshes_list(meshes):
+        idx, off = mesh.face_indices, mesh.face_offsets
+        sizes = np.diff(off)
+        nf = len(sizes)
+        owner = np.repeat(np.arange(nf), sizes)
+        p = mesh.vertices[idx]
+        plane = newell_planes(p, off)
+        norm = np.linalg.norm(plane[:, :3], axis=1)
+        dist = np.abs(np.einsum("ij,ij->i", p, plane[owner, :3]) + plane[owner, 3])
+        off_plane = np.maximum.reduceat(dist, off[:-1]) / np.where(norm > 0, norm, 1.0)
+        size = (np.maximum.reduceat(p, off[:-1], axis=0)
+                - np.minimum.reduceat(p, off[:-1], axis=0)).max(axis=1)
+        flat = (norm > 0) & (off_plane <= 1e-9 * np.where(size > 0, size, 1.0))
+        keep = flat[owner]
+        verts.append(p[keep])
+        counts.append(sizes[flat])
+        faces.append(base + np.flatnonzero(flat))
+        bent = np.flatnonzero(~flat)
+        if len(bent):                    # fans (0, k, k + 1) of the bent faces
+            tri = sizes[bent] - 2
+            f = np.repeat(bent, tri)
+            k = np.arange(int(tri.sum())) - np.repeat(np.cumsum(tri) - tri, tri)
+            first = off[f]
+            corners = np.stack([first, first + k + 1, first + k + 2], axis=1)
+            verts.append(mesh.vertices[idx[corners.reshape(-1)]])
+            counts.append(np.full(len(f), 3, np.int64))
+            faces.append(base + f)
+        base += nf
+    return (np.ascontiguousarray(np.concatenate(verts)), np.concatenate(counts).astype(np.int64),
+            np.concatenate(faces).astype(np.int64))
 
 
 class BSPTree:
@@ -179,13 +220,20 @@ def camera_eye(camera, width, height):
 def bsp(meshes_or_tree, camera, width, height, cull_back_faces=False):
     """The faces of ``meshes_or_tree`` (meshes, or a :class:`BSPTree` built once)
     back to front through ``camera`` by BSP traversal, as
-    :class:`~scanline.visible.polygons.ScreenPolygons` in drawing order on a
-    ``width`` x ``height`` device (the pieces clipped and projected as
-    :func:`~scanline.visible.polygons.project` does).  Object precision."""
-    from ..projection import Camera
+    :class:`~scanline.screen.ScreenPolygons` in drawing order on a ``width`` x
+    ``height`` device (the pieces clipped and projected as the preparation clips the
+    scene's facets, :func:`scanline.screen.device_polygons`).  ``cull_back_faces``:
+    drop the pieces that face away from the viewer (Hearn & Baker, section 13-2:
+    clockwise as projected, the faces being counterclockwise seen from outside).
+    Object precision."""
+    from ..screen.prepare import camera_mapping, device_polygons
 
-    if not isinstance(camera, Camera):
-        raise ArgumentTypeError(f"camera must be a scanline.Camera, got {v._show(camera)}")
+    camera_mapping(camera, width, height)
     tree = meshes_or_tree if isinstance(meshes_or_tree, BSPTree) else BSPTree(meshes_or_tree)
     verts, counts, faces = tree.world_pieces(camera_eye(camera, width, height))
-    return project(verts, counts, faces, camera, width, height, cull_back_faces)
+    sp = device_polygons(verts, counts, faces, camera, width, height)
+    if cull_back_faces and len(sp):
+        from ..screen.polygons import signed_areas
+
+        sp = sp.subset(np.flatnonzero(signed_areas(sp.vertices, sp.offsets) > 0))
+    return sp

@@ -13,7 +13,7 @@ from .. import _validate as v
 from .._kernels import depthsort as k
 from .._kernels._jit import call
 from ..errors import DepthSortLoopError
-from .polygons import MIN_AREA, ScreenPolygons, as_screen
+from ..screen.polygons import MIN_AREA, ScreenPolygons, as_screen
 
 #: The overlap tests, in the order they are tried (each "yes" means: no reordering
 #: is needed for this pair).
@@ -40,7 +40,7 @@ def _work(name, shape, dtype=np.float64):
     """An uninitialized working array of ``shape``: the first rows of the array
     ``name`` the calling thread kept from an earlier sort when it has enough of them
     (megabytes of new memory cost the sort of 10,000 polygons more in page faults
-    than the sort itself, as the scratch buffers of :mod:`scanline.render.zbuffer`),
+    than the sort itself, as the kept buffers of :mod:`scanline._pool`),
     else a new one, kept while the thread keeps at most :data:`KEEP` bytes in all.
     The arrays seen by the kernels have the rows asked for, kept or not."""
     kept = getattr(_KEPT, "arrays", None)
@@ -121,9 +121,8 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None, drawn=Non
         waits: ``drawn(vertices, offsets, face)`` (as in :class:`ScreenPolygons`;
         views of the sort's working arrays, valid until the sort returns: copy what
         must outlive it).  Every piece is handed over once, in drawing order, before
-        the sort returns (not after an error).  The painting of
-        :func:`scanline.visible.render.paint_depth_sorted` goes on beside the sort
-        this way.
+        the sort returns (not after an error).  :func:`painted_depth_sort` paints
+        beside the sort this way.
 
     Returns
     -------
@@ -267,3 +266,46 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None, drawn=Non
 def tolerance(sp):
     """The absolute tolerance of the plane and separation tests on ``sp``'s device."""
     return TOLERANCE * max(sp.width, sp.height, 1.0)
+
+
+def painted_depth_sort(polygons, split_cycles=True, max_pieces=None):
+    """:func:`depth_sort` with the pieces painted as the sort goes:
+    ``(pieces, numbers)``, ``numbers`` (int32, height x width of the polygons' device)
+    the number of the piece seen at each pixel (-1: none), the pieces painted in
+    drawing order by the spans of the 2-D polygon fill, later over earlier.
+
+    The sort hands over each run of pieces as soon as their order is fixed (its
+    ``drawn``); a second thread paints the runs' piece numbers while the sort orders
+    the next pieces.  Painting numbers, not colors, the result says what is seen
+    (the shading colors it)."""
+    import queue
+
+    from .._kernels._jit import call
+    from .._kernels._threads import _submit
+    from .._kernels.visible import paint_numbers
+
+    sp = as_screen(polygons)
+    w, h = sp.width, sp.height
+    numbers = np.empty((h, w), np.int32)
+    runs = queue.SimpleQueue()
+    count = [0]
+
+    def painter():
+        numbers.fill(-1)
+        while (run := runs.get()) is not None:
+            verts, offsets, first = run
+            # work: a row per piece and ten units a vertex, as the fills count them
+            call(paint_numbers, h + 10 * len(verts) + len(offsets), 0, 1, w, h, verts,
+                 offsets, first, numbers)
+
+    def drawn(verts, offsets, face):
+        runs.put((verts, offsets, count[0]))
+        count[0] += len(face)
+
+    wait = _submit(painter)
+    try:
+        pieces = depth_sort(sp, split_cycles, max_pieces=max_pieces, drawn=drawn)
+    finally:
+        runs.put(None)
+        wait()
+    return pieces, numbers

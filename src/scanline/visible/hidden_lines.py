@@ -9,7 +9,9 @@ import numpy as np
 
 from .. import _validate as v
 from ..draw._common import target
-from .polygons import as_screen, meshes_list, screen_polygons
+from ..screen.meshes import meshes_list
+from ..screen.polygons import as_screen
+from ..screen.prepare import screen_polygons
 
 #: Depth tolerance: an edge lying in a face's plane (its own faces) is not hidden
 #: by it.

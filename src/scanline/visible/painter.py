@@ -6,7 +6,7 @@
 import numpy as np
 
 from .. import _validate as v
-from .polygons import as_screen
+from ..screen.polygons import as_screen
 
 KEYS = ("farthest", "mean")
 

@@ -5,7 +5,8 @@
 
 import numpy as np
 
-from .polygons import VisibleFaces, as_screen
+from ..screen.polygons import as_screen
+from .visibility import VisibleFaces
 
 
 def scan_line(polygons):

@@ -6,7 +6,8 @@ section 13-8).
 
 import numpy as np
 
-from .polygons import VisibleFaces, as_screen
+from ..screen.polygons import as_screen
+from .visibility import VisibleFaces
 
 #: The cases an area is decided by, as :attr:`VisibleFaces.regions` records them.
 CASES = ("background", "one polygon", "surrounding in front", "pixel")

@@ -5,23 +5,20 @@ nearest intersection is visible.  The kernel is :mod:`scanline._kernels.raycast`
 
 import numpy as np
 
-from ..depthbuffer import DepthBuffer
-from .output import Rendering, write_visible
+from .visibility import Layer
 
 
-def cast(scene):
-    """``(faces, bary, depth)`` (H, W) arrays of the nearest surface along each
-    pixel's ray."""
+def raycast(scene, options=None):
+    """The :class:`Layer` of the nearest triangle along each pixel's ray."""
     from .._kernels import raycast as k
     from .._kernels._jit import call
 
     h, w = scene.height, scene.width
-    faces = np.full((h, w), -1, np.int64)
-    bary = np.zeros((h, w, 2))
+    ids = np.full((h, w), -1, np.int64)
     depth = np.full((h, w), np.inf)
     n = len(scene.triangles)
     if n == 0:
-        return faces, bary, depth
+        return Layer(ids, depth)
     tri = np.ascontiguousarray(scene.triangles)
     boxes = np.empty((n, 4), np.int64)
     pairs = call(k.tile_boxes, 4 * n, tri, w, h, boxes)
@@ -35,16 +32,6 @@ def cast(scene):
     rank = np.empty((n, 3), np.int64)
     call(k.setups, 10 * n, tri, np.ascontiguousarray(scene.inv_w),
          np.ascontiguousarray(scene.bary), g, ok, rank)
-    call(k.cast_rays, 3 * pairs * k.TILE * k.TILE + h * w, tri,
-         np.ascontiguousarray(scene.face), g, ok, rank, tiles_x, starts, order, depth, bary,
-         faces)
-    return faces, bary, depth
-
-
-def render(scene, fb, options):
-    """Draw ``scene`` into ``fb`` by ray casting."""
-    faces, bary, depth = cast(scene)
-    write_visible(scene, fb, faces, bary, depth, options)
-    out = DepthBuffer(scene.width, scene.height)
-    out.array[...] = depth
-    return Rendering("ray-casting", out, faces, scene)
+    call(k.cast_rays, 3 * pairs * k.TILE * k.TILE + h * w, tri, np.arange(n, dtype=np.int64),
+         g, ok, rank, tiles_x, starts, order, depth, np.zeros((h, w, 2)), ids)
+    return Layer(ids, depth)

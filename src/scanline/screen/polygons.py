@@ -1,4 +1,6 @@
-"""The input of every visible-surface method here: screen-space polygons.
+"""Screen-space polygons: what the object-order and scan-line visible-surface methods
+work on (:mod:`scanline.visible`), made from a scene by :mod:`scanline.screen.prepare`
+or given by hand (:meth:`ScreenPolygons.from_device`).
 
 A :class:`ScreenPolygons` holds convex polygons in *device space* -- x and y in pixels
 of a ``width`` x ``height`` frame buffer, the depth z growing away from the viewer
@@ -16,9 +18,7 @@ above pixel (x, y) is z = -(A x + B y + D) / C.
 
 Object-order methods (painter, depth sort, BSP) return a :class:`ScreenPolygons`
 too: the pieces in drawing order, back to front; a piece split off a face lies in
-that face's plane and keeps its face index.  Image-space methods (scan-line, area
-subdivision) return a :class:`VisibleFaces`: the face index at every pixel (-1 is
-the background) and the depth there.
+that face's plane and keeps its face index.
 """
 
 from dataclasses import dataclass
@@ -165,23 +165,6 @@ def flat_polygons(vertices, counts, faces, width, height):
                      v.positive_int("width", width), v.positive_int("height", height))
 
 
-@dataclass
-class VisibleFaces:
-    """What an image-space method sees: the face at each pixel and its depth.
-
-    Attributes
-    ----------
-    face : ndarray of int64, shape (height, width)
-        ``face[y, x]`` is the face visible at pixel (x, y) (row y is scan line y,
-        bottom-up like the frame buffer's storage), -1 for the background.
-    depth : ndarray, shape (height, width)
-        Its depth (inf for the background).
-    """
-
-    face: np.ndarray
-    depth: np.ndarray
-
-
 def newell_plane(points):
     """Newell's plane (A, B, C, D) of the (K, 3) ``points`` (Hearn & Baker, section
     10-1; exact for planar polygons)."""
@@ -270,86 +253,6 @@ def _assemble(verts, counts, faces, width, height, front_only=False):
     sp = ScreenPolygons(np.ascontiguousarray(verts, np.float64), offsets,
                         np.ascontiguousarray(faces, np.int64), planes, width, height)
     return sp if keep.all() else sp.subset(np.flatnonzero(keep))
-
-
-def meshes_list(meshes):
-    """``meshes`` as a non-empty list of :class:`scanline.mesh.Mesh`."""
-    from ..mesh import Mesh
-
-    return list(v.one_or_many("meshes", meshes, Mesh, "a scanline.mesh.Mesh", empty=False))
-
-
-def world_polygons(meshes):
-    """The faces of ``meshes`` as world polygons: ``(vertices (V, 3), counts (P,),
-    face (P,))``, faces numbered across the meshes in order.  Convex faces that are
-    not planar (a teapot's bilinear patches) are split into a fan of triangles, each
-    keeping its face index.  Vectorized over the faces (a million faces take about a
-    second)."""
-    verts, counts, faces = [], [], []
-    base = 0
-    for mesh in meshes_list(meshes):
-        idx, off = mesh.face_indices, mesh.face_offsets
-        sizes = np.diff(off)
-        nf = len(sizes)
-        owner = np.repeat(np.arange(nf), sizes)
-        p = mesh.vertices[idx]
-        plane = newell_planes(p, off)
-        norm = np.linalg.norm(plane[:, :3], axis=1)
-        dist = np.abs(np.einsum("ij,ij->i", p, plane[owner, :3]) + plane[owner, 3])
-        off_plane = np.maximum.reduceat(dist, off[:-1]) / np.where(norm > 0, norm, 1.0)
-        size = (np.maximum.reduceat(p, off[:-1], axis=0)
-                - np.minimum.reduceat(p, off[:-1], axis=0)).max(axis=1)
-        flat = (norm > 0) & (off_plane <= 1e-9 * np.where(size > 0, size, 1.0))
-        keep = flat[owner]
-        verts.append(p[keep])
-        counts.append(sizes[flat])
-        faces.append(base + np.flatnonzero(flat))
-        bent = np.flatnonzero(~flat)
-        if len(bent):                    # fans (0, k, k + 1) of the bent faces
-            tri = sizes[bent] - 2
-            f = np.repeat(bent, tri)
-            k = np.arange(int(tri.sum())) - np.repeat(np.cumsum(tri) - tri, tri)
-            first = off[f]
-            corners = np.stack([first, first + k + 1, first + k + 2], axis=1)
-            verts.append(mesh.vertices[idx[corners.reshape(-1)]])
-            counts.append(np.full(len(f), 3, np.int64))
-            faces.append(base + f)
-        base += nf
-    return (np.ascontiguousarray(np.concatenate(verts)), np.concatenate(counts).astype(np.int64),
-            np.concatenate(faces).astype(np.int64))
-
-
-def project(vertices, counts, faces, camera, width, height, cull_back_faces=False):
-    """World polygons (flat form) through ``camera`` onto a ``width`` x ``height``
-    device: clipped in homogeneous coordinates against the view volume before the
-    divide (:func:`scanline.clip.polygons3d`), divided, mapped to device x, y and
-    depth.  ``cull_back_faces``: drop the polygons that face away from the viewer
-    (Hearn & Baker, section 13-2: clockwise as projected, the faces being
-    counterclockwise seen from outside)."""
-    from ..clip import UNIT_CUBE, polygons3d
-    from ..projection import Camera
-
-    if not isinstance(camera, Camera):
-        raise ArgumentTypeError(f"camera must be a scanline.Camera, got {v._show(camera)}")
-    w = v.positive_int("width", width, 2)
-    h = v.positive_int("height", height, 2)
-    clip, scale, offset = camera.mapping(camera._device_box(w, h))
-    hom = np.hstack([vertices, np.ones((len(vertices), 1))]) @ clip.T
-    out, out_counts = polygons3d(np.ascontiguousarray(hom), UNIT_CUBE, counts=counts,
-                                 homogeneous=True)
-    with np.errstate(over="ignore", invalid="ignore"):   # huge but finite coordinates
-        dev = out[:, :3] / out[:, 3:4] * scale + offset
-    whole = out_counts >= 3
-    return _assemble(dev[np.repeat(whole, out_counts)], out_counts[whole], faces[whole], w, h,
-                     cull_back_faces)
-
-
-def screen_polygons(meshes, camera, width, height, cull_back_faces=False):
-    """The faces of ``meshes`` as :class:`ScreenPolygons` seen through ``camera``
-    on a ``width`` x ``height`` device (:func:`world_polygons`, then
-    :func:`project`)."""
-    verts, counts, faces = world_polygons(meshes)
-    return project(verts, counts, faces, camera, width, height, cull_back_faces)
 
 
 def as_screen(polygons):

@@ -4,7 +4,7 @@ milliseconds, more than its whole depth test), and a render makes several.
 
 :func:`scratch` is for temporaries that are not handed back (their contents are
 not kept).  :func:`recycled` is for the buffers a render hands back (the depth and
-face buffers of a :class:`~scanline.render.output.Rendering`): the array of the
+face buffers of a :class:`~scanline.rendering.Rendering`): the array of the
 previous call is used again only when nothing else holds it any more -- its
 reference count says that only the pool does (a view of it, a
 :class:`~scanline.depthbuffer.DepthBuffer` or a kept ``Rendering`` each hold a

@@ -1,13 +1,11 @@
-"""Shadows by shadow depth maps (Williams 1978), the extra beyond the notes: the
-scene's depth buffer as seen from each light; a point is in shadow for that light
+"""The shadow-map pass of the renderer: shadows by shadow depth maps (Williams 1978),
+the extra beyond the notes: the scene's depth buffer as seen from each light; a point is in shadow for that light
 when something lies nearer the light along its line of sight than the point itself
 (a depth farther than the map's, by more than a small bias)."""
 
 import math
 
 import numpy as np
-
-from .lights import AmbientLight, DirectionalLight
 
 #: Side of each shadow map, in texels.
 SIZE = 1024
@@ -20,9 +18,10 @@ class ShadowMaps:
     meshes of a prepared ``scene``; :meth:`visibility` answers per point."""
 
     def __init__(self, meshes, scene, lights, size=SIZE, bias=BIAS):
+        from ..lighting import AmbientLight, DirectionalLight
         from ..projection import Camera, orthographic, perspective
-        from ..render.prepare import prepare
-        from ..render.zbuffer import visibility
+        from ..screen import prepare
+        from ..visible.zbuffer import nearest
 
         self.size, self.bias = size, bias
         world = scene.world.reshape(-1, 3)
@@ -49,11 +48,9 @@ class ShadowMaps:
                 cam = Camera(eye=p, target=p + d, up=up,
                              projection=perspective(fov=2 * half, near=max(dist - radius, 1e-3)
                                                     * 0.5, far=dist + radius))
-            light_scene = prepare(meshes, cam, size, size)
-            _, _, depth = visibility(light_scene)
-            self.maps.append((cam, depth))
+            self.maps.append((cam, nearest(prepare(meshes, cam, size, size)).depth.copy()))
 
-    def visibility(self, points):
+    def __call__(self, points):
         """Per non-ambient light, 1.0 where ``points`` (M, 3) see it, 0.0 where they
         are in its shadow (1.0 everywhere for lights without shadows)."""
         out = []

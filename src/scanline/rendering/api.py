@@ -1,0 +1,184 @@
+"""The renderer's entry point, :func:`render`: it orders the passes of the one 3-D
+pipeline and does nothing else (``docs/architecture.md``):
+
+1. the shadow maps of the lights that cast shadows (:mod:`scanline.rendering.shadows`);
+2. the preparation, :func:`scanline.screen.prepare`: the screen-space scene;
+3. the visible-surface method of :data:`scanline.visible.METHODS` on the scene's
+   opaque facets (the A-buffer, which resolves transparency itself, on all);
+4. the shading, :func:`scanline.shading.shade` (or :func:`~scanline.shading.composite`
+   for layers of fragments);
+5. the transparent layer: the nearest transparent surface in front of what the method
+   found, blended over it (Hearn & Baker 14-5).
+"""
+
+from dataclasses import replace
+from typing import Any, Iterable, Optional, Sequence, Tuple, Union
+
+import numpy as np
+
+from .. import _validate as v
+from ..depthbuffer import DepthBuffer
+from ..draw._common import target
+from ..errors import ArgumentValueError
+from ..framebuffer import FrameBuffer
+from ..mesh import Mesh
+from ..projection import Camera
+from .options import RenderOptions
+from .result import Rendering
+
+#: The modes :func:`render` draws lit surfaces into ("none" shading: every mode).
+MODES = ("L", "RGB", "RGBA")
+
+
+def default_lights(camera):
+    """Ambient light and one white directional light coming from above the viewer's
+    left shoulder (the direction fixed in viewing coordinates)."""
+    from ..lighting import AmbientLight, DirectionalLight
+
+    m = camera.projection.orientation @ camera.view_matrix
+    travel = np.linalg.inv(m)[:3, :3] @ np.array([0.45, -0.55, -1.0])
+    return (AmbientLight(0.2), DirectionalLight(direction=travel, intensity=0.9))
+
+
+@v.keywords
+def render(fb: FrameBuffer, meshes: Union[Mesh, Iterable[Mesh]], camera: Camera, *,
+           method: str = "z-buffer", shading: str = "gouraud",
+           lights: Optional[Sequence[Any]] = None, materials: Any = None, colors: Any = None,
+           specular: str = "phong", gamma: float = 2.2, cull_back_faces: bool = False,
+           depth_cue: Union[None, bool, Tuple[float, float]] = None, shadows: bool = False,
+           samples: Optional[int] = None, layers: Optional[int] = None,
+           key: Optional[str] = None, split_cycles: Optional[bool] = None,
+           max_pieces: Optional[int] = None) -> Rendering:
+    """Render meshes seen by ``camera`` into ``fb`` by a visible-surface method.
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+        Mode "L", "RGB" or "RGBA" (any mode with ``shading="none"``); pixels where no
+        surface is seen keep their value.
+    meshes : Mesh or list of Mesh
+    camera : Camera
+    method : str
+        A name in :data:`scanline.visible.METHODS`: "z-buffer" (Hearn & Baker 13-3),
+        "a-buffer" (13-4: fragments per pixel, transparency and antialiased edges),
+        "ray-casting" (13-10: one ray per pixel), "scan-line" (13-5),
+        "area-subdivision" (Warnock, 13-8), "depth-sort" (Newell, Newell and Sancha,
+        13-6), "bsp" (13-7), "painter" (one depth key per face: the
+        counter-example).  ``scanline.visible.PRECISION`` says which decide at image
+        and which at object precision.
+    shading : {"gouraud", "flat", "phong", "fast-phong", "none"}
+        Hearn & Baker, section 14-5 (see :mod:`scanline.shading`); "none": each
+        surface shows its color, unlit.
+    lights : list of lights, optional
+        From :mod:`scanline.lighting`; default: ambient 0.2 and a white directional
+        light from above the viewer's left shoulder.
+    materials : Material or list of Material (one per mesh), optional
+        Default ``Material()``; a mesh's own colors replace the material's color.
+    colors : color, or list of colors (one per mesh or one per face), optional
+        The surfaces' color S_d, instead of the meshes' and the materials' colors.
+    specular : {"phong", "blinn"}
+        The specular term: (V . R)^n or Blinn's (N . H)^n.
+    gamma : float
+        The display gamma the linear intensities are encoded with (1: none).
+    cull_back_faces : bool
+        Drop the faces whose outward normal points away from the viewer (the V . N
+        test, Hearn & Baker 13-2) before any method runs.
+    depth_cue : bool or (near, far), optional
+        Blend toward the background with the distance (section 9-1): factor
+        ``near`` (1.0) at the nearest visible point, ``far`` (0.25) at the farthest.
+    shadows : bool
+        Shadow maps for the lights made with ``shadows=True`` (Williams 1978).
+    samples, layers : int, optional
+        A-buffer: samples per pixel side (default 3) and most layers (default 8).
+    key : {"farthest", "mean"}, optional
+        Painter: each polygon's sort key.
+    split_cycles : bool, optional
+        Depth sort: split cyclic or intersecting polygons (default True).
+    max_pieces : int, optional
+        Depth sort and BSP: most pieces the splitting may make.
+
+    Returns
+    -------
+    Rendering
+        The faces seen, the depth buffer and the prepared scene.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> fb = sl.FrameBuffer(9, 9, mode="L")
+    >>> cam = sl.Camera(eye=(0, 0, 5), target=(0, 0, 0),
+    ...                 projection=sl.projection.orthographic(window=(-1.5, -1.5, 1.5, 1.5)))
+    >>> r = sl.render(fb, sl.mesh.cube(2), cam, shading="flat", gamma=1,
+    ...               lights=[sl.lighting.AmbientLight(1.0)],
+    ...               materials=sl.lighting.Material(ka=1.0, kd=0, ks=0))
+    >>> print(sl.text_image(fb))
+    ---------
+    ---------
+    --#####--
+    --#####--
+    --#####--
+    --#####--
+    --#####--
+    ---------
+    ---------
+    >>> r
+    <Rendering method='z-buffer' 9x9: 1 mesh(es), 6 faces, 25 of 81 pixels covered>
+    """
+    from ..draw3d.wireframe import depth_cue_intensities
+    from ..shading import ShadingOptions
+    from ..visible import MethodOptions
+
+    target(fb)
+    if not isinstance(camera, Camera):
+        from ..errors import ArgumentTypeError
+
+        raise ArgumentTypeError(f"camera must be a scanline.Camera, got {v._show(camera)}")
+    options = RenderOptions(
+        method=method,
+        visible=MethodOptions(samples=samples, layers=layers, key=key,
+                              split_cycles=split_cycles, max_pieces=max_pieces),
+        shading=ShadingOptions(model=shading,
+                               lights=default_lights(camera) if lights is None else lights,
+                               specular=specular, gamma=gamma,
+                               depth_cue=depth_cue_intensities(depth_cue)),
+        cull_back_faces=cull_back_faces, shadows=shadows)
+    if options.shading.model != "none" and fb.mode not in MODES:
+        raise ArgumentValueError(f"sl.render draws lit surfaces into modes {', '.join(MODES)}; "
+                                 f"the frame buffer is mode {fb.mode!r} (shading='none' draws "
+                                 f"the surfaces' colors into any mode)")
+    return run(fb, meshes, camera, options, materials=materials, colors=colors)
+
+
+def run(fb, meshes, camera, options, materials=None, colors=None):
+    """The passes of :func:`render` with its options already made
+    (:class:`RenderOptions`)."""
+    from ..screen import prepare
+    from ..shading import composite, shade
+    from ..visible import METHODS, Fragments
+    from ..visible.zbuffer import nearest
+
+    scene = prepare(meshes, camera, fb.width, fb.height, materials, colors,
+                    options.cull_back_faces)
+    shading = options.shading
+    if options.shadows:
+        from .shadows import ShadowMaps
+
+        shading = replace(shading, shadows=ShadowMaps(meshes, scene, shading.lights))
+    method = METHODS[options.method]
+    clear = scene.transparent
+    layered = bool(clear.any()) and not method.transparency
+    opaque = scene.with_triangles(~clear) if layered else scene
+    seen = method.find(opaque, options.visible)
+    pieces = None
+    if isinstance(seen, Fragments):
+        facets, depth = composite(fb, scene, seen.layers, seen.samples, shading)
+    else:
+        facets = shade(fb, opaque, seen, shading)
+        depth, pieces = seen.depth, seen.pieces
+    if layered:
+        glass = scene.with_triangles(clear)
+        front = nearest(glass, zbuf=depth.copy())
+        over, over_depth = composite(fb, glass, [front], 1, shading)
+        facets = np.where(over >= 0, over, facets)
+        depth = np.minimum(depth, over_depth)
+    return Rendering(options.method, fb, DepthBuffer.holding(depth), facets, scene, pieces)

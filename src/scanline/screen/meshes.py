@@ -1,0 +1,118 @@
+"""What the preparation takes from each mesh, computed once per mesh and kept with it:
+the faces' fan triangles (the *facets*), their normals and colors, and per face the
+plane normal, centroid and color that constant shading uses.
+
+A face of k vertices is cut into the k - 2 triangles of a fan from its first vertex;
+every later stage works on these facets (the rasterizers, the visible-surface
+methods' polygons, the interpolation of attributes) and reports the face each comes
+from.  Gouraud's vertex normals are averaged from the faces sharing the vertex
+(Hearn & Baker, section 14-5: N_v = sum N_k / |sum N_k|) unless the mesh gives its
+own; a face's normal is Newell's (Hearn & Baker, section 10-1), exact for planar
+faces and the best plane of a bent one.
+"""
+
+import weakref
+from dataclasses import dataclass
+
+import numpy as np
+
+from .. import _validate as v
+from .polygons import newell_planes
+
+
+def unit_rows(a):
+    """Rows of ``a`` (..., 3) divided by their length (zero rows stay zero)."""
+    n = np.sqrt((a * a).sum(axis=-1, keepdims=True))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(n > 0, a / n, 0.0)
+
+
+def meshes_list(meshes, empty=False):
+    """``meshes`` (one :class:`~scanline.mesh.Mesh` or several) as a list (``empty``:
+    whether none is allowed)."""
+    from ..mesh import Mesh
+
+    return list(v.one_or_many("meshes", meshes, Mesh, "a scanline.mesh.Mesh", empty=empty))
+
+
+def averaged_normals(mesh):
+    """Vertex normals (V, 3) averaged from the unit normals of the faces sharing each
+    vertex (Hearn & Baker, section 14-5, Gouraud shading: N_v = sum N_k / |sum N_k|)."""
+    idx, off = mesh.face_indices, mesh.face_offsets
+    owner = np.repeat(np.arange(mesh.face_count), np.diff(off))
+    fn = unit_rows(newell_planes(mesh.vertices[idx], off)[:, :3])
+    out = np.zeros_like(mesh.vertices)
+    np.add.at(out, idx, fn[owner])
+    return unit_rows(out)
+
+
+@dataclass
+class MeshArrays:
+    """One mesh's arrays for the preparation.
+
+    Per facet (G, the fan triangles, face after face): world vertices (G, 3, 3), unit
+    vertex normals (G, 3, 3), unit facet normals (G, 3), the stored colors / 255 at
+    the vertices (G, 3, 3; None: the material's color), degenerate facets (G,), and
+    the face of each facet (G,).  Per face (F): unit Newell normals (F, 3), centroids
+    (the mean of the vertices, F, 3) and colors (stored / 255, the mean of the
+    vertices' for a mesh colored by vertex; F, 3; None: the material's)."""
+    world: np.ndarray
+    vertex_normals: np.ndarray
+    normals: np.ndarray
+    colors: object
+    degenerate: np.ndarray
+    facet_face: np.ndarray
+    face_normals: np.ndarray
+    face_centroids: np.ndarray
+    face_colors: object
+
+
+#: mesh -> (copies of the arrays it was made from, MeshArrays)
+_KEPT = weakref.WeakKeyDictionary()
+
+
+def _key(mesh):
+    return (mesh.vertices, mesh.face_indices, mesh.face_offsets, mesh.normals, mesh.colors,
+            mesh.color_on)
+
+
+def _same(a, b):
+    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        return (isinstance(a, np.ndarray) and isinstance(b, np.ndarray) and a.shape == b.shape
+                and a.dtype == b.dtype and np.array_equal(a, b))
+    return a == b
+
+
+def mesh_arrays(mesh):
+    """The :class:`MeshArrays` of ``mesh``, computed once and kept while the mesh's
+    vertices, faces, normals and colors are equal to what they were (they are public
+    arrays: a change in place is noticed by comparing them with copies).  Its arrays
+    are read-only in effect: several scenes share them."""
+    key = _key(mesh)
+    kept = _KEPT.get(mesh)
+    if kept is not None and all(_same(a, b) for a, b in zip(kept[0], key)):
+        return kept[1]
+    idx, off = mesh.face_indices, mesh.face_offsets
+    sizes = np.diff(off)
+    tri = mesh.triangulated()
+    f = tri.face_indices.reshape(-1, 3)
+    facet_face = np.repeat(np.arange(mesh.face_count, dtype=np.int64), sizes - 2)
+    world = mesh.vertices[f]
+    vertex = mesh.normals if mesh.normals is not None else averaged_normals(mesh)
+    normals = unit_rows(np.cross(world[:, 1] - world[:, 0], world[:, 2] - world[:, 0]))
+    points = mesh.vertices[idx]
+    centroids = np.add.reduceat(points, off[:-1], axis=0) / sizes[:, None]
+    if mesh.colors is None:
+        colors = face_colors = None
+    elif mesh.color_on == "vertex":
+        colors = mesh.colors[f][..., :3] / 255.0
+        face_colors = np.add.reduceat(mesh.colors[idx][:, :3] / 255.0, off[:-1],
+                                      axis=0) / sizes[:, None]
+    else:
+        face_colors = mesh.colors[:, :3] / 255.0
+        colors = np.repeat(face_colors[facet_face][:, None], 3, axis=1)
+    arrays = MeshArrays(world, unit_rows(vertex[f]), normals, colors,
+                        ~(np.abs(normals).sum(axis=1) > 0), facet_face,
+                        unit_rows(newell_planes(points, off)[:, :3]), centroids, face_colors)
+    _KEPT[mesh] = (tuple(a.copy() if isinstance(a, np.ndarray) else a for a in key), arrays)
+    return arrays

@@ -1,0 +1,203 @@
+"""The screen-space scene: what the preparation makes (:func:`scanline.screen.prepare`)
+and every visible-surface method and the shading take.
+
+Three kinds of things are numbered in it:
+
+* **faces** (F): the meshes' faces, mesh after mesh -- what a user knows and what
+  :class:`scanline.rendering.Rendering` reports;
+* **facets** (G): the triangles of each face's fan (:mod:`scanline.screen.meshes`):
+  the unit of visibility and of interpolation (a facet is planar, and its
+  barycentric coordinates interpolate the face's attributes);
+* **triangles** (T): the device triangles left after clipping; a facet the view
+  volume cuts becomes a convex polygon, cut again into a fan.  Each knows its
+  facet.
+"""
+
+import functools
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from .polygons import ScreenPolygons, flat_polygons
+
+
+class DevicePolygons(Sequence):
+    """The clipped device polygons (k, 3) of a scene's facets, made on demand: the
+    facets left whole are rows of one (W, 3, 3) array (no list of W arrays is built
+    unless asked for), followed by the polygons of the facets the volume cut."""
+
+    def __init__(self, whole, cut):
+        self._whole = whole
+        self._cut = cut
+
+    def __len__(self):
+        return len(self._whole) + len(self._cut)
+
+    def __getitem__(self, i):
+        if isinstance(i, slice):
+            return [self[j] for j in range(*i.indices(len(self)))]
+        n = len(self)
+        if not -n <= i < n:
+            raise IndexError(f"polygon index {i} out of range for {n} polygons")
+        i %= n
+        return self._whole[i] if i < len(self._whole) else self._cut[i - len(self._whole)]
+
+    def flat(self):
+        """All the polygons at once: ``(vertices (V, 3), counts (P,))``, in order."""
+        whole = np.asarray(self._whole, np.float64).reshape(-1, 3)
+        cut = [np.asarray(p, np.float64) for p in self._cut]
+        counts = np.concatenate([np.full(len(self._whole), 3, np.int64),
+                                 np.array([len(p) for p in cut], np.int64)])
+        return np.concatenate([whole] + cut) if cut else whole, counts
+
+
+@dataclass(frozen=True, eq=False)
+class ScreenScene:
+    """Meshes seen by a camera on a ``width`` x ``height`` device, ready for the
+    visible-surface methods.
+
+    Device coordinates: x, y in pixels (centers at integers, y up), depth the NDC
+    depth in the camera's viewport range (0 front, 1 back by default).
+
+    Attributes
+    ----------
+    width, height : int
+    camera : Camera
+    eye : 3-vector or ViewerAtInfinity
+        The viewer, for the illumination model.
+    materials : tuple of Material
+        One per mesh.
+    face_mesh : ndarray of int64 (F,)
+        The mesh (index into the meshes and ``materials``) of each face.
+    face_normals, face_centroids : ndarray (F, 3)
+        Each face's unit Newell normal and the mean of its vertices (world): where
+        constant shading evaluates the illumination model (Hearn & Baker 14-5).
+    face_colors : ndarray (F, 3)
+        Each face's color S_d, stored values / 255.
+    facet_face : ndarray of int64 (G,)
+        The face of each facet.
+    world : ndarray (G, 3, 3)
+        World coordinates of each facet's vertices.
+    normals : ndarray (G, 3)
+        Unit outward facet normals (world).
+    vertex_normals : ndarray (G, 3, 3)
+        Unit normals at each facet's vertices: the mesh's own, else averaged over the
+        faces sharing the vertex (Gouraud).
+    vertex_colors : ndarray (G, 3, 3)
+        Surface color S_d at each facet vertex, stored values / 255.
+    front : ndarray of bool (G,)
+        The back-face test (Hearn & Baker 13-2): True where the outward normal points
+        toward the viewer (V . N < 0).
+    culled : ndarray of bool (G,)
+        Facets dropped by back-face culling.
+    planes : ndarray (G, 4)
+        A, B, C, D of each facet's plane in device space (A x + B y + C z + D = 0, C >
+        0 for a front facet), NaN for a facet nothing is left of.
+    triangles : ndarray (T, 3, 3)
+        Device x, y, depth of each vertex of each device triangle.
+    inv_w : ndarray (T, 3)
+        1 / w of each vertex (w the homogeneous clip coordinate), for perspective-
+        correct interpolation.
+    bary : ndarray (T, 3, 2)
+        Each vertex's barycentric coordinates (lambda_1, lambda_2) in its facet
+        (lambda_0 = 1 - lambda_1 - lambda_2).
+    facet : ndarray of int64 (T,)
+        The facet of each device triangle.
+    polygons : DevicePolygons
+        The clipped device polygon (x, y, depth) of each facet left, one per entry of
+        ``polygon_facet`` (convex).
+    polygon_facet : ndarray of int64 (P,)
+
+    The per-mesh arrays (``world``, ``normals``, ``vertex_normals`` ...) may be
+    shared with the meshes' kept arrays and with other scenes: read them, do not
+    write them.
+    """
+    width: int
+    height: int
+    camera: object
+    eye: object
+    materials: tuple
+    face_mesh: np.ndarray
+    face_normals: np.ndarray
+    face_centroids: np.ndarray
+    face_colors: np.ndarray
+    facet_face: np.ndarray
+    world: np.ndarray
+    normals: np.ndarray
+    vertex_normals: np.ndarray
+    vertex_colors: np.ndarray
+    front: np.ndarray
+    culled: np.ndarray
+    planes: np.ndarray
+    triangles: np.ndarray
+    inv_w: np.ndarray
+    bary: np.ndarray
+    facet: np.ndarray
+    polygons: DevicePolygons
+    polygon_facet: np.ndarray
+
+    @property
+    def face_count(self):
+        """F, the number of faces."""
+        return len(self.face_mesh)
+
+    @property
+    def facet_count(self):
+        """G, the number of facets."""
+        return len(self.facet_face)
+
+    @functools.cached_property
+    def facet_mesh(self):
+        """The mesh of each facet (G,)."""
+        return np.ascontiguousarray(self.face_mesh[self.facet_face])
+
+    @functools.cached_property
+    def screen_polygons(self):
+        """The clipped device polygons as :class:`ScreenPolygons` whose ``face`` is
+        the facet (what the object-order and scan-line methods take)."""
+        verts, counts = self.polygons.flat()
+        return flat_polygons(verts, counts, self.polygon_facet, self.width, self.height)
+
+    @functools.cached_property
+    def transparent(self):
+        """Per facet: True when its material lets light through (k_t > 0)."""
+        kt = np.array([m.transparency for m in self.materials], np.float64)
+        return kt[self.facet_mesh] > 0 if self.facet_count else np.zeros(0, bool)
+
+    @functools.cached_property
+    def facet_triangle(self):
+        """Per facet, the device triangle of largest screen area among its own (-1:
+        none): the one whose screen-space interpolation functions stand for the
+        facet's (all of a facet's triangles lie in its plane and share them)."""
+        out = np.full(self.facet_count, -1, np.int64)
+        t = self.triangles
+        if len(t):
+            area = np.abs((t[:, 1, 0] - t[:, 0, 0]) * (t[:, 2, 1] - t[:, 0, 1])
+                          - (t[:, 2, 0] - t[:, 0, 0]) * (t[:, 1, 1] - t[:, 0, 1]))
+            order = np.lexsort((area, self.facet))       # by facet, largest last
+            out[self.facet[order]] = order
+        return out
+
+    def with_triangles(self, select):
+        """The scene with only the device triangles and polygons of the facets where
+        ``select`` (G,) holds (the facets keep their numbers)."""
+        keep_t = select[self.facet]
+        keep_p = select[self.polygon_facet]
+        polys = [p for p, k in zip(self.polygons, keep_p) if k]
+        fields = {name: getattr(self, name) for name in self.__dataclass_fields__}
+        fields.update(triangles=np.ascontiguousarray(self.triangles[keep_t]),
+                      inv_w=np.ascontiguousarray(self.inv_w[keep_t]),
+                      bary=np.ascontiguousarray(self.bary[keep_t]),
+                      facet=np.ascontiguousarray(self.facet[keep_t]),
+                      polygons=DevicePolygons(np.empty((0, 3, 3)), polys),
+                      polygon_facet=self.polygon_facet[keep_p])
+        return ScreenScene(**fields)
+
+    def __repr__(self):
+        return (f"<ScreenScene {self.width}x{self.height}: {len(self.materials)} mesh(es), "
+                f"{self.face_count} faces, {self.facet_count} facets, "
+                f"{len(self.triangles)} device triangles>")
+
+
+__all__ = ["ScreenScene", "DevicePolygons", "ScreenPolygons"]

@@ -1,0 +1,220 @@
+"""Stage three of the 3-D pipeline: what a visible-surface method found, colored and
+stored -- the one way the renderer colors pixels.
+
+:func:`shade` takes a :class:`~scanline.visible.visibility.Layer` (the triangle seen
+at each pixel) and colors it: compiled (:mod:`scanline.shading.buffer`) where the
+kernel covers the options, else in numpy (:func:`~scanline.shading.intensities`, with
+depth cueing and shadow maps), and for ``model="none"`` by the surfaces' own pixel
+values, in any frame-buffer mode.  :func:`composite` resolves layers of fragments
+front to back over what the frame buffer holds (Hearn & Baker 14-5, transparency: I
+= (1 - k_t) I_refl + k_t I_trans, applied layer after layer; 13-4, the A-buffer's
+coverage), averaging the samples of each pixel.
+"""
+
+import numpy as np
+
+from ..errors import ArgumentValueError
+from ..lighting.model import depth_cue as cue_blend
+from .buffer import drawable, shade_buffer
+from .models import decode, encode, intensities
+
+
+def triangle_functions(scene, triangles):
+    """Per device triangle of ``triangles`` (U,): the screen-space linear functions
+    (value at the origin, d/dx, d/dy) of 1/w, lambda_1/w and lambda_2/w, (U, 3, 3);
+    NaN for a triangle with no area on the screen."""
+    tri = scene.triangles[triangles]
+    x, y = tri[:, :, 0], tri[:, :, 1]
+    q = scene.inv_w[triangles]
+    b = scene.bary[triangles]
+    vals = np.stack([q, b[:, :, 0] * q, b[:, :, 1] * q], 1)          # (U, fn, vertex)
+    m = np.stack([np.ones_like(x), x, y], axis=2)                     # (U, vertex, c a b)
+    out = np.full((len(triangles), 3, 3), np.nan)
+    ok = np.abs(np.linalg.det(m)) > 1e-12 * (np.abs(m).max(axis=(1, 2), initial=0) ** 2 + 1.0)
+    if ok.any():
+        out[ok] = np.linalg.solve(m[ok], vals[ok].transpose(0, 2, 1)).transpose(0, 2, 1)
+    return out
+
+
+def barycentrics(scene, triangles, xs, ys):
+    """The perspective-correct barycentric coordinates (lambda_1, lambda_2), (M, 2),
+    in their facets of the device points (``xs``, ``ys``) seen on ``triangles`` (M,)."""
+    u, inverse = np.unique(triangles, return_inverse=True)
+    g = triangle_functions(scene, u)[inverse.reshape(-1)]
+    vals = g[:, :, 0] + xs[:, None] * g[:, :, 1] + ys[:, None] * g[:, :, 2]
+    return vals[:, 1:] / vals[:, :1]
+
+
+def background_linear(fb, gamma):
+    """The frame buffer's background as linear RGB."""
+    value = np.asarray(fb._background, np.float64)
+    c = np.repeat(value[:1], 3) if len(value) == 1 else value[:3]
+    return decode(c / 255.0, gamma)
+
+
+def _cue(scene, linear, depth, options, background):
+    """Depth cueing of linear colors at device depths ``depth`` (M,)."""
+    if options.depth_cue is None or not len(depth):
+        return linear
+    d = scene.camera.linear_depth(depth)
+    return cue_blend(linear, d, float(d.min()), float(d.max()), options.depth_cue, background)
+
+
+def _points(scene, ids, depth, ys, xs, px, py, options, background):
+    """Linear colors of the samples (``ys``, ``xs``) of a layer, at device points
+    (``px``, ``py``): ``(facets, colors)``."""
+    t = ids[ys, xs]
+    facets = scene.facet[t]
+    bary = barycentrics(scene, t, px, py) if options.model not in ("flat", "none") else \
+        np.zeros((len(t), 2))
+    linear = intensities(scene, facets, bary, options)
+    return facets, _cue(scene, linear, depth[ys, xs], options, background)
+
+
+def store(fb, ys, xs, linear, gamma):
+    """Write linear RGB (M, 3) at pixels (xs, ys), encoded with ``gamma``."""
+    buf = fb._raster()[0]
+    if fb.mode == "L":
+        buf[ys, xs, 0] = encode((linear * np.array([0.299, 0.587, 0.114])).sum(axis=1), gamma)
+    else:
+        buf[ys, xs, :3] = encode(linear, gamma)
+        if fb.mode == "RGBA":
+            buf[ys, xs, 3] = 255
+
+
+def stored_linear(fb, ys, xs, gamma):
+    """The frame buffer's pixels (xs, ys) as linear RGB (M, 3)."""
+    stored = fb._raster()[0][ys, xs].astype(np.float64) / 255.0
+    if stored.shape[1] == 1:
+        stored = np.repeat(stored, 3, axis=1)
+    return decode(stored[:, :3], gamma)
+
+
+def _paint(fb, ids, values):
+    """:func:`paint` without its checks (``values`` has a row for every number in
+    ``ids``)."""
+    from .._kernels._threads import call_in_bands
+    from .._kernels.variants import layout
+    from .._kernels.visible import color_ids
+
+    buf, packed = fb._raster()
+    call_in_bands(color_ids, fb.width * fb.height, buf, layout(packed), fb.width, fb.height,
+                  np.ascontiguousarray(values, np.uint8), ids)
+
+
+def paint(fb, ids, values):
+    """Each pixel of ``fb`` whose number in ``ids`` (H, W integers, rows bottom-up as
+    the frame buffer stores them; e.g. the piece numbers of
+    :func:`scanline.visible.painted_depth_sort`) is p >= 0 takes the pixel value
+    ``values[p]`` (rows of the frame buffer's channels, integers 0-255: ``fb.pixel(color)``
+    gives one); the others keep theirs.  Any mode, on every core in bands."""
+    from .. import _validate as v
+    from ..draw._common import target
+
+    target(fb)
+    channels = fb._raster()[0].shape[2]
+    a = np.asarray(values)
+    if (a.ndim != 2 or a.shape[1] != channels or not np.issubdtype(a.dtype, np.integer)
+            or (a.size and (a.min() < 0 or a.max() > 255))):
+        raise ArgumentValueError(
+            f"values must hold one pixel value per number, integers 0-255 of shape (n, "
+            f"{channels}) for a mode {fb.mode!r} frame buffer (fb.pixel(color) gives a row), "
+            f"got dtype {a.dtype}, shape {a.shape}")
+    n = np.asarray(ids)
+    if n.shape != (fb.height, fb.width):
+        raise ArgumentValueError(f"ids must have the frame buffer's shape ({fb.height}, "
+                                 f"{fb.width}) (rows bottom-up), got {v._show(n.shape)}")
+    if n.dtype not in (np.int32, np.int64):
+        if not np.issubdtype(n.dtype, np.integer):
+            raise ArgumentValueError(f"ids must be integers (int32 or int64), got dtype "
+                                     f"{n.dtype}")
+        n = n.astype(np.int64)
+    top = int(n.max()) if n.size else -1
+    if top >= len(a):
+        raise ArgumentValueError(f"values holds {len(a)} rows, but ids name number {top}: "
+                                 "give one row per number")
+    _paint(fb, np.ascontiguousarray(n), a.astype(np.uint8, copy=False))
+
+
+def face_values(fb, scene):
+    """The pixel value of each face's color in ``fb``'s mode, (F, channels) uint8."""
+    rgb = np.rint(scene.face_colors * 255.0).astype(np.uint8)
+    unique, inverse = np.unique(rgb, axis=0, return_inverse=True)
+    values = np.array([fb.pixel(tuple(int(c) for c in row)) for row in unique], np.uint8)
+    return values.reshape(len(unique), -1)[inverse.reshape(-1)]
+
+
+def facets_of(scene, ids):
+    """The facet of each entry of a buffer of device triangles ``ids`` (-1 stays -1)."""
+    if not len(scene.facet):
+        return np.full(ids.shape, -1, np.int64)
+    return np.where(ids >= 0, scene.facet[np.maximum(ids, 0)], -1)
+
+
+def shade(fb, scene, layer, options):
+    """Color the pixels of ``layer`` (a :class:`~scanline.visible.visibility.Layer`)
+    into ``fb`` with ``options`` (:class:`~scanline.shading.ShadingOptions`); the
+    others keep their values.  Returns the facet seen at each pixel (H, W; -1 none):
+    ``layer.ids`` itself, overwritten, where the compiled path shades."""
+    ids = layer.ids
+    if options.model == "none" and options.depth_cue is None:
+        values = face_values(fb, scene)[scene.facet_face[scene.facet]]
+        _paint(fb, ids, values)
+        return facets_of(scene, ids)
+    if fb.mode not in ("L", "RGB", "RGBA"):
+        raise ArgumentValueError(f"shading={options.model!r} draws into modes L, RGB and "
+                                 f"RGBA; the frame buffer is mode {fb.mode!r} (use "
+                                 f"shading='none' for face colors)")
+    if drawable(fb, options):
+        shade_buffer(scene, fb, ids, options)
+        return ids
+    ys, xs = np.nonzero(ids >= 0)
+    background = background_linear(fb, options.gamma)
+    facets, linear = _points(scene, ids, layer.depth, ys, xs, xs.astype(np.float64),
+                             ys.astype(np.float64), options, background)
+    store(fb, ys, xs, linear, options.gamma)
+    out = np.full(ids.shape, -1, np.int64)
+    out[ys, xs] = facets
+    return out
+
+
+def composite(fb, scene, layers, samples, options):
+    """Resolve ``layers`` of fragments (Layers of ``samples`` x ``samples`` points per
+    pixel, front to back) over the frame buffer's pixels: at each sample, I = sum_k
+    T_k (1 - k_t,k) I_k + T I_behind, T_k the product of the transparencies k_t in
+    front of fragment k and I_behind the pixel's present color; each pixel averages
+    its samples, and is written where any sample met a surface.  Returns the facet
+    and the depth of the first layer at each pixel's central sample, (H, W) each."""
+    if fb.mode not in ("L", "RGB", "RGBA"):
+        raise ArgumentValueError(f"layers of fragments are blended in modes L, RGB and RGBA; "
+                                 f"the frame buffer is mode {fb.mode!r}")
+    s = samples
+    h, w = scene.height, scene.width
+    gamma = options.gamma
+    background = background_linear(fb, gamma)
+    kt = np.array([m.transparency for m in scene.materials], np.float64)[scene.facet_mesh] \
+        if scene.facet_count else np.zeros(0)
+    color = np.zeros((h * s, w * s, 3))
+    through = np.ones((h * s, w * s))
+    first = None
+    for layer in layers:
+        if first is None:
+            first = layer
+        ys, xs = np.nonzero(layer.ids >= 0)
+        # sample (i, j) of pixel (x, y) lies at device (x - 1/2 + (i + 1/2) / s, ...)
+        facets, linear = _points(scene, layer.ids, layer.depth, ys, xs,
+                                 (xs - (s - 1) / 2.0) / s, (ys - (s - 1) / 2.0) / s, options,
+                                 background)
+        t = kt[facets]
+        color[ys, xs] += (through[ys, xs] * (1 - t))[:, None] * linear
+        through[ys, xs] *= t
+    if first is None:
+        return np.full((h, w), -1, np.int64), np.full((h, w), np.inf)
+    covered = (first.ids >= 0).reshape(h, s, w, s).any(axis=(1, 3))
+    py, px = np.nonzero(covered)
+    behind = stored_linear(fb, py, px, gamma)
+    pixel = color.reshape(h, s, w, s, 3)[py, :, px] + \
+        through.reshape(h, s, w, s)[py, :, px][..., None] * behind[:, None, None, :]
+    store(fb, py, px, pixel.mean(axis=(1, 2)), gamma)
+    c = s // 2
+    return facets_of(scene, first.ids[c::s, c::s]), first.depth[c::s, c::s].copy()

@@ -1,0 +1,53 @@
+"""The A-buffer method (Hearn & Baker, section 13-4; Carpenter 1984): an image-space
+method that keeps, for each pixel, a list of the surface fragments that reach it --
+their depth, opacity and the part of the pixel each covers -- so that the shading can
+resolve the list front to back: transparent surfaces show what is behind them and
+edges are antialiased by their coverage.
+
+Here each pixel is sampled at ``samples`` x ``samples`` points (the coverage mask of
+Carpenter's fragments), and the fragment lists are gathered layer by layer by depth
+peeling (Everitt 2001): the first layer is the z-buffer of the scene, each next one
+the nearest fragment strictly behind the previous layer.  A sample stops peeling once
+it has met an opaque fragment, and the peeling stops when no sample has a fragment
+left or after ``layers`` layers.  The layers are made one at a time, as the shading
+consumes them (:func:`scanline.shading.composite`), so memory stays that of a few
+supersampled buffers whatever the depth complexity.
+"""
+
+import numpy as np
+
+from .visibility import Fragments, Layer
+from .zbuffer import nearest
+
+#: Default samples per pixel side, and most layers peeled.
+SAMPLES = 3
+LAYERS = 8
+
+
+def _layers(scene, samples, limit):
+    s = samples
+    hs, ws = scene.height * s, scene.width * s
+    # sample (i, j) of pixel (x, y) is at (x - 1/2 + (i + 1/2)/s, ...): device * s + (s-1)/2
+    tri = scene.triangles.copy()
+    tri[..., :2] = tri[..., :2] * s + (s - 1) / 2.0
+    opaque = ~scene.transparent
+    floor = np.full((hs, ws), -np.inf)
+    blocked = np.zeros((hs, ws), bool)
+    for _ in range(limit):
+        depth = np.full((hs, ws), np.inf)
+        layer = nearest(scene, zbuf=depth, floor=floor, triangles=tri, size=(ws, hs))
+        live = (layer.ids >= 0) & ~blocked
+        if not live.any():
+            return
+        ids = np.where(live, layer.ids, -1)
+        yield Layer(ids, np.where(live, depth, np.inf))
+        blocked |= live & opaque[scene.facet[np.maximum(ids, 0)]]
+        floor = np.where(live, depth, np.inf)       # peel behind this layer
+
+
+def abuffer(scene, options):
+    """The fragments at every sample, front to back (``options.samples`` per pixel
+    side, at most ``options.layers`` layers)."""
+    samples = SAMPLES if options.samples is None else options.samples
+    layers = LAYERS if options.layers is None else options.layers
+    return Fragments(samples, _layers(scene, samples, layers))

@@ -1,0 +1,155 @@
+"""Stage two of the 3-D pipeline: the visible-surface methods as one registry.
+
+Each method takes the prepared :class:`~scanline.screen.ScreenScene` and its
+:class:`MethodOptions` and returns what is visible -- a
+:class:`~scanline.visible.visibility.Layer` (the triangle seen at each pixel, and for
+the object-order methods the pieces in drawing order) or, for the A-buffer,
+:class:`~scanline.visible.visibility.Fragments` -- and never colors anything
+(:mod:`scanline.shading` does).  :func:`scanline.render` looks methods up here by
+name; :func:`register` adds one.
+
+Precision (Hearn & Baker, section 13-1): "image" methods decide visibility per pixel,
+"object" methods compare surfaces with one another.
+"""
+
+from dataclasses import dataclass, fields
+from typing import Callable, Optional
+
+import numpy as np
+
+from .. import _validate as v
+from ..errors import ArgumentTypeError, ArgumentValueError
+from .abuffer import abuffer
+from .bsp import BSPTree, camera_eye
+from .depth_sort import painted_depth_sort
+from .painter import KEYS, painter
+from .raycast import raycast
+from .scanline_method import scan_line
+from .visibility import facet_layer, painted
+from .warnock import area_subdivision
+from .zbuffer import zbuffer
+
+
+@dataclass(frozen=True)
+class MethodOptions:
+    """The options of the visible-surface methods (None: the method's default).
+
+    Attributes
+    ----------
+    samples : int, optional
+        A-buffer: samples per pixel side, 1..8 (default 3).
+    layers : int, optional
+        A-buffer: most layers of fragments peeled, 1..64 (default 8).
+    key : {"farthest", "mean"}, optional
+        Painter: each polygon's sort key (default "farthest").
+    split_cycles : bool, optional
+        Depth sort: split polygons that overlap cyclically or intersect (default
+        True; False raises :class:`~scanline.errors.DepthSortLoopError` instead).
+    max_pieces : int, optional
+        Depth sort and BSP: most pieces the splitting may make.
+    """
+    samples: Optional[int] = None
+    layers: Optional[int] = None
+    key: Optional[str] = None
+    split_cycles: Optional[bool] = None
+    max_pieces: Optional[int] = None
+
+    def __post_init__(self):
+        def whole(name, low, high):
+            value = getattr(self, name)
+            if value is not None and (not isinstance(value, (int, np.integer))
+                                      or isinstance(value, bool) or not low <= value <= high):
+                raise ArgumentValueError(f"{name} must be an integer in {low}..{high}, got "
+                                         f"{v._show(value)}")
+        whole("samples", 1, 8)
+        whole("layers", 1, 64)
+        whole("max_pieces", 1, 2**40)
+        if self.key is not None:
+            v.choice("key", self.key, KEYS)
+        if self.split_cycles is not None and not isinstance(self.split_cycles, bool):
+            raise ArgumentTypeError(f"split_cycles must be True or False, got "
+                                    f"{v._show(self.split_cycles)}")
+
+    def given(self):
+        """The names of the options that are set (not None)."""
+        return tuple(f.name for f in fields(self) if getattr(self, f.name) is not None)
+
+
+@dataclass(frozen=True)
+class Method:
+    """A visible-surface method: ``find(scene, options)`` -> Layer or Fragments, its
+    precision ("image" or "object"), the options of :class:`MethodOptions` it reads,
+    and whether it resolves transparency itself (else the renderer adds the nearest
+    transparent surface over its result)."""
+    name: str
+    find: Callable
+    precision: str
+    options: tuple = ()
+    transparency: bool = False
+
+
+def _image_space(method):
+    def find(scene, options):
+        seen = method(scene.screen_polygons)
+        return facet_layer(scene, seen.face, seen.depth)
+    find.__doc__ = f"The visible triangle at each pixel by :func:`{method.__name__}`."
+    return find
+
+
+def _painter(scene, options):
+    """The facets painted back to front by one depth key each (the counter-example)."""
+    return painted(scene, painter(scene.screen_polygons, options.key or "farthest"))
+
+
+def _depth_sort(scene, options):
+    """The pieces of the depth-sorting method, painted beside the sort."""
+    split = True if options.split_cycles is None else options.split_cycles
+    pieces, numbers = painted_depth_sort(scene.screen_polygons, split, options.max_pieces)
+    return painted(scene, pieces, numbers)
+
+
+def _bsp(scene, options):
+    """The facets back to front by a BSP tree built in world coordinates (Fuchs, Kedem
+    and Naylor 1980) from the scene's facets and traversed from the camera's eye; the
+    pieces clipped and projected as the preparation does."""
+    from ..mesh import Mesh
+    from ..screen.prepare import device_polygons
+
+    keep = np.unique(np.asarray(scene.polygon_facet, np.int64))
+    tri = scene.world[keep]
+    area = np.linalg.norm(np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0]), axis=1)
+    keep = keep[area > 0]
+    if not len(keep):
+        return painted(scene, scene.screen_polygons.subset([]))
+    mesh = Mesh(scene.world[keep].reshape(-1, 3), np.arange(3 * len(keep)).reshape(-1, 3))
+    tree = BSPTree(mesh, max_pieces=options.max_pieces)
+    verts, counts, labels = tree.world_pieces(camera_eye(scene.camera, scene.width,
+                                                         scene.height))
+    return painted(scene, device_polygons(verts, counts, keep[labels], scene.camera,
+                                          scene.width, scene.height))
+
+
+#: name -> :class:`Method`
+METHODS = {m.name: m for m in (
+    Method("z-buffer", zbuffer, "image"),
+    Method("a-buffer", abuffer, "image", ("samples", "layers"), transparency=True),
+    Method("ray-casting", raycast, "image"),
+    Method("scan-line", _image_space(scan_line), "image"),
+    Method("area-subdivision", _image_space(area_subdivision), "image"),
+    Method("depth-sort", _depth_sort, "object", ("split_cycles", "max_pieces")),
+    Method("bsp", _bsp, "object", ("max_pieces",)),
+    Method("painter", _painter, "object", ("key",)),
+)}
+
+#: Each method's precision, "image" or "object".
+PRECISION = {name: m.precision for name, m in METHODS.items()}
+
+
+def register(method):
+    """Add a :class:`Method` to :data:`METHODS` (replacing one of the same name)."""
+    if not isinstance(method, Method):
+        raise ArgumentTypeError(f"method must be a scanline.visible.Method, got "
+                                f"{v._show(method)}")
+    v.choice("precision", method.precision, ("image", "object"))
+    METHODS[method.name] = method
+    PRECISION[method.name] = method.precision

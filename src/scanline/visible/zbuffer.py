@@ -1,0 +1,50 @@
+"""The depth-buffer (z-buffer) method (Hearn & Baker, section 13-3; Catmull 1974):
+an image-space method ("image precision": visibility is decided at each pixel).
+
+Two buffers: the depth buffer, cleared to infinity, and the refresh buffer.  Each
+surface is scan-converted; at each pixel (x, y) it covers, its depth z is computed
+(incrementally along the scan line, z' = z - A/C) and, if z < depth(x, y), depth(x,
+y) = z and the pixel takes the surface's "intensity".  Here what is written is the
+index of the device triangle (a visibility buffer): the shading lights each pixel
+once afterwards, so a covered-over fragment costs no lighting.
+"""
+
+import numpy as np
+
+from .._pool import recycled
+from ..draw.triangles import rasterize
+from .visibility import Layer
+
+
+def nearest(scene, zbuf=None, floor=None, triangles=None, size=None):
+    """The z-buffer pass over the scene's device triangles: the :class:`Layer` of the
+    nearest triangle at each pixel center (its ``ids`` number the scene's triangles).
+
+    ``zbuf``: a depth buffer (H, W) to test against, updated in place (only fragments
+    in front of it are drawn); default a new one cleared to +inf.  ``floor``: depth
+    peeling, only fragments strictly behind ``floor`` count.  ``triangles`` and
+    ``size`` = (width, height): the scene's triangles mapped to another raster (the
+    A-buffer's samples) instead of its own."""
+    w, h = size if size is not None else (scene.width, scene.height)
+    tri = scene.triangles if triangles is None else triangles
+    n = len(tri)
+    clear = zbuf is None
+    if clear:
+        out = recycled("faces", (h, w), np.int64)
+        depth = recycled("depth", (h, w))
+    else:
+        out = np.full((h, w), -1, np.int64)
+        depth = zbuf
+    if n:
+        rasterize(w, h, np.ascontiguousarray(tri), np.ascontiguousarray(scene.inv_w),
+                  np.empty((n, 3, 0)), np.arange(n, dtype=np.int64), zbuf=depth, idbuf=out,
+                  floor=floor, clear=clear)
+    elif clear:
+        out.fill(-1)
+        depth.fill(np.inf)
+    return Layer(out, depth)
+
+
+def zbuffer(scene, options=None):
+    """The visible triangle at each pixel by the depth-buffer method."""
+    return nearest(scene)

@@ -167,7 +167,7 @@ def main():
         if ctx is not None:
             tri = teapot.triangulated()
             f = tri.face_indices.reshape(-1, 3)
-            from scanline.render.prepare import averaged_normals
+            from scanline.screen import averaged_normals
 
             normals = teapot.normals if teapot.normals is not None else averaged_normals(teapot)
             data = np.concatenate([teapot.vertices[f], normals[f]], axis=2)
@@ -188,7 +188,7 @@ def main():
         meshes = [sl.mesh.sphere(0.4, center=tuple(rng.uniform(-3, 3, 3)),
                                  resolution=(2 * res, res)) for _ in range(sphere_count)]
         cam = sl.Camera(eye=(0, 0, 10), target=(0, 0, 0))
-        for method in sorted(sl.render.METHODS):
+        for method in sorted(sl.visible.METHODS):
             fb = sl.FrameBuffer(W, H)
             report.add(f"methods {n // 1000}k", f"scanline {method}",
                        f'sl.render(fb, spheres, camera, method="{method}")',

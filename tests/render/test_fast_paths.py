@@ -245,7 +245,7 @@ def test_a_far_vertex_reaching_the_rasterizer_does_not_crash(ids_only):
                     [(-1e300, -1e300, 0.2), (30.0, 5.0, 0.2), (5.0, 30.0, 0.2)]])
     w, h = 40, 30
     zbuf = np.full((h, w), np.inf)
-    ids = np.full((h, w), -1, np.int64)
+    ids = np.full((h, w), -1, np.int32)
     abuf = None if ids_only else np.zeros((h, w, 2))
     rasterize(w, h, tri, np.ones((2, 3)), np.zeros((2, 3, 2)), np.arange(2, dtype=np.int64),
               zbuf=zbuf, abuf=abuf, idbuf=ids, clear=True)

@@ -272,16 +272,78 @@ def paint_numbers(band, step, width, height, verts, offsets, first, ids):
 
 
 @kernel
-def color_ids(band, step, buf, layout, width, height, colors, ids):
+def resolve_labels(start, step, polygons, table, fan, facet_triangle, triangles, planes, ids,
+                   depth, with_depth):
+    """The rows of the bands of 2**PAINT_BAND_SHIFT rows numbered ``start``, ``start +
+    step`` ...: each pixel's polygon p in ``polygons`` (H, W; -1 none), labeled g =
+    ``table[p]``, turned into the device triangle of the facet under the pixel
+    center, in ``ids`` (H, W; -1 none), and with ``with_depth`` that facet's plane's
+    depth there, in ``depth``.
+
+    A label is a facet (G of them: ``facet_triangle`` (G,) its stand-in triangle of
+    ``triangles`` (T, 3, 3), ``planes`` (G, 4) its device plane) or, where ``fan[g]``
+    = n > 1, the first of the n facets of a face taken whole, the fan (v0, v_(i+1),
+    v_(i+2)) of facets g .. g + n - 1: the pixel lies in facet g + j, j the number of
+    diagonals v0 -> v_(i+1), i = 1 .. n - 1, it is to the left of as the face turns
+    (corner 1 of facet g + i is v_(i+1)).  Polygons and labels out of range give -1."""
+    height, width = polygons.shape
+    p_count = table.shape[0]
+    g_count = fan.shape[0]
+    t_count = triangles.shape[0]
+    zero = np.int64(0)
+    k0, k1 = bands_of(zero, height - 1, start, step)
+    for k in range(k0, k1, step):
+        first_row, stop_row = rows_of(k, zero, height - 1)
+        for y in range(first_row, stop_row):
+            for x in range(width):
+                p = polygons[y, x]
+                g = table[p] if p >= 0 and p < p_count else -1
+                t = -1
+                f = g
+                if g >= 0 and g < g_count:
+                    n = fan[g]
+                    if n > 1 and g + n <= g_count:
+                        t0 = facet_triangle[g]
+                        if t0 >= 0 and t0 < t_count:
+                            x0 = triangles[t0, 0, 0]
+                            y0 = triangles[t0, 0, 1]
+                            turn = ((triangles[t0, 1, 0] - x0) * (triangles[t0, 2, 1] - y0)
+                                    - (triangles[t0, 2, 0] - x0) * (triangles[t0, 1, 1] - y0))
+                            for i in range(1, n):
+                                ti = facet_triangle[g + i]
+                                if ti < 0 or ti >= t_count:
+                                    continue
+                                side = ((triangles[ti, 1, 0] - x0) * (float(y) - y0)
+                                        - (triangles[ti, 1, 1] - y0) * (float(x) - x0))
+                                if side * turn > 0.0:
+                                    f += 1
+                    t = facet_triangle[f]
+                    if t >= t_count:
+                        t = -1
+                ids[y, x] = t
+                if with_depth:
+                    depth[y, x] = plane_depth(planes, f, float(x), float(y)) if t >= 0 \
+                        else np.inf
+
+
+@kernel
+def color_ids(band, step, buf, layout, width, height, colors, ids, facets):
     """Each pixel of the bands of rows ``band``, ``band + step``, ... (as in
     :func:`paint_numbers`) whose ``ids`` number p is not negative takes ``colors[p]``;
-    the others keep theirs."""
+    the others keep theirs.  Where ``facets`` has entries, the number p is replaced by
+    ``facets[p]`` in ``ids`` (a device triangle by its facet, for the renderer)."""
     zero = np.int64(0)
+    nf = facets.shape[0]
     k0, k1 = bands_of(zero, height - 1, band, step)
     for k in range(k0, k1, step):
         first_row, stop_row = rows_of(k, zero, height - 1)
         for r in range(first_row, stop_row):
             color_row(buf, layout, width, ids, colors, r)
+            if nf > 0:
+                for x in range(width):
+                    p = ids[r, x]
+                    if p >= 0:
+                        ids[r, x] = facets[p] if p < nf else -1
 
 
 @helper
@@ -306,17 +368,19 @@ def piece_rows(verts, start, end, height):
 @helper
 def color_row(buf, layout, width, ids, colors, r):
     """Row ``r``'s pixels painted in ``ids`` (number p >= 0) take ``colors[p]`` (the
-    channel writes of :func:`scanline._kernels.spans.span`)."""
+    channel writes of :func:`scanline._kernels.spans.span`); numbers beyond the rows
+    of ``colors`` paint nothing."""
+    n = colors.shape[0]
     if len(layout) == PACKED:
         for x in range(width):
             p = ids[r, x]
-            if p >= 0:
+            if p >= 0 and p < n:
                 put_bit(buf, x, r, colors[p, 0])
         return
     nc = colors.shape[1]
     for x in range(width):
         p = ids[r, x]
-        if p >= 0:
+        if p >= 0 and p < n:
             buf[r, x, 0] = colors[p, 0]
             if nc > 1:
                 buf[r, x, 1] = colors[p, 1]

@@ -94,7 +94,7 @@ def rasterize(width, height, tri, q, att, ids, zbuf=None, buf=None, abuf=None, i
     """Run the triangle kernel on normalized arrays.
 
     ``buf`` given: the attributes (0..255) are rounded into its bytes; else
-    ``abuf`` (H, W, K) float64 and ``idbuf`` (H, W) int64 receive the interpolated
+    ``abuf`` (H, W, K) float64 and ``idbuf`` (H, W) int32 receive the interpolated
     attributes and ``ids`` (``abuf`` None: ``idbuf`` alone; the attributes are not
     interpolated, and the work estimate does not count them).  ``zbuf`` None: no depth test (the input order wins);
     ``floor`` (H, W): depth peeling, only fragments behind ``floor`` and in front of
@@ -119,7 +119,7 @@ def rasterize(width, height, tri, q, att, ids, zbuf=None, buf=None, abuf=None, i
     if buf is not None:
         out = token(k.COLOR)
         abuf = np.empty((1, 1, kk))
-        idbuf = np.empty((1, 1), np.int64)
+        idbuf = np.empty((1, 1), np.int32)
     elif abuf is None:
         out = token(k.IDS)
         abuf = np.empty((1, 1, kk))

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import _validate as v
-from .polygons import newell_planes
+from .polygons import convex, newell_planes
 
 
 def unit_rows(a):
@@ -54,8 +54,11 @@ class MeshArrays:
     vertex normals (G, 3, 3), unit facet normals (G, 3), the stored colors / 255 at
     the vertices (G, 3, 3; None: the material's color), degenerate facets (G,), and
     the face of each facet (G,).  Per face (F): unit Newell normals (F, 3), centroids
-    (the mean of the vertices, F, 3) and colors (stored / 255, the mean of the
-    vertices' for a mesh colored by vertex; F, 3; None: the material's)."""
+    (the mean of the vertices, F, 3), colors (stored / 255, the mean of the
+    vertices' for a mesh colored by vertex; F, 3; None: the material's), and whether
+    the face is planar (its vertices within 1e-9 of its size of its Newell plane) and
+    convex (F,): a polygon method may then take it whole, since a planar convex
+    polygon in front of the eye projects to a convex polygon."""
     world: np.ndarray
     vertex_normals: np.ndarray
     normals: np.ndarray
@@ -65,6 +68,7 @@ class MeshArrays:
     face_normals: np.ndarray
     face_centroids: np.ndarray
     face_colors: object
+    face_planar: np.ndarray
 
 
 #: mesh -> (copies of the arrays it was made from, MeshArrays)
@@ -102,6 +106,21 @@ def mesh_arrays(mesh):
     normals = unit_rows(np.cross(world[:, 1] - world[:, 0], world[:, 2] - world[:, 0]))
     points = mesh.vertices[idx]
     centroids = np.add.reduceat(points, off[:-1], axis=0) / sizes[:, None]
+    plane = newell_planes(points, off)
+    norm = np.linalg.norm(plane[:, :3], axis=1)
+    owner = np.repeat(np.arange(mesh.face_count), sizes)
+    with np.errstate(over="ignore", invalid="ignore"):
+        dist = np.abs(np.einsum("ij,ij->i", points, plane[owner, :3]) + plane[owner, 3])
+        off_plane = np.maximum.reduceat(dist, off[:-1]) / np.where(norm > 0, norm, 1.0)
+        size = (np.maximum.reduceat(points, off[:-1], axis=0)
+                - np.minimum.reduceat(points, off[:-1], axis=0)).max(axis=1)
+    planar = (norm > 0) & (off_plane <= 1e-9 * np.where(size > 0, size, 1.0))
+    # convex: in the plane's own coordinates (the two axes the normal is least along)
+    drop = np.abs(plane[:, :3]).argmax(axis=1)[owner]
+    keep = np.array([[1, 2], [0, 2], [0, 1]])[drop]
+    flat = np.take_along_axis(points, keep, axis=1)
+    with np.errstate(over="ignore", invalid="ignore"):
+        planar &= convex(flat, off)
     if mesh.colors is None:
         colors = face_colors = None
     elif mesh.color_on == "vertex":
@@ -113,6 +132,6 @@ def mesh_arrays(mesh):
         colors = np.repeat(face_colors[facet_face][:, None], 3, axis=1)
     arrays = MeshArrays(world, unit_rows(vertex[f]), normals, colors,
                         ~(np.abs(normals).sum(axis=1) > 0), facet_face,
-                        unit_rows(newell_planes(points, off)[:, :3]), centroids, face_colors)
+                        unit_rows(plane[:, :3]), centroids, face_colors, planar)
     _KEPT[mesh] = (tuple(a.copy() if isinstance(a, np.ndarray) else a for a in key), arrays)
     return arrays

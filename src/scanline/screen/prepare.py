@@ -61,8 +61,8 @@ def _materials(materials, n):
 
 
 def _given_colors(colors, sizes):
-    """``colors`` (one per mesh, or one per face of all the meshes) as stored values /
-    255 per face (F, 3)."""
+    """``colors`` (one color, one per mesh, or one per face of all the meshes) as
+    stored values / 255 per face (F, 3)."""
     from ..color.spec import rgba
 
     total = int(sum(sizes))
@@ -71,20 +71,20 @@ def _given_colors(colors, sizes):
     items = list(colors)
     if len(items) == 1 and len(sizes) != 1:
         items = items * len(sizes)
-    if len(items) == len(sizes) and len(sizes) != total:
-        items = [c for c, n in zip(items, sizes) for _ in range(n)]
-    if len(items) != total:
+    per_mesh = len(items) == len(sizes) and len(sizes) != total
+    if len(items) != total and not per_mesh:
         raise ArgumentValueError(
             f"colors holds {len(items)} colors; give one color, one per mesh ({len(sizes)}) "
             f"or one per face ({total})")
     unique = {}
-    rows = np.empty((total, 3))
+    rows = np.empty((len(items), 3))
     for i, c in enumerate(items):
-        key = c if isinstance(c, (str, int)) else tuple(np.asarray(c).ravel().tolist())
+        key = (type(c), c) if isinstance(c, (str, int)) else \
+            (type(c), tuple(np.asarray(c).ravel().tolist()))
         if key not in unique:
             unique[key] = np.asarray(rgba(c, f"colors[{i}]")[:3], np.float64) / 255.0
         rows[i] = unique[key]
-    return rows
+    return np.repeat(rows, sizes, axis=0) if per_mesh else rows
 
 
 def _viewer(camera):
@@ -269,7 +269,8 @@ def prepare(meshes, camera, width, height, materials=None, colors=None, cull_bac
         face_mesh=face_mesh,
         face_normals=_joined([p.face_normals for p in parts], (0, 3)),
         face_centroids=_joined([p.face_centroids for p in parts], (0, 3)),
-        face_colors=face_colors, facet_face=facet_face, world=world,
+        face_colors=face_colors, face_planar=_joined([p.face_planar for p in parts], (0,)),
+        facet_face=facet_face, whole=drawn, world=world,
         normals=_joined([p.normals for p in parts], (0, 3)),
         vertex_normals=_joined([p.vertex_normals for p in parts], (0, 3, 3)),
         vertex_colors=vertex_colors, front=~back, culled=culled, planes=plane,

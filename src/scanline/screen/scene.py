@@ -75,8 +75,13 @@ class ScreenScene:
         constant shading evaluates the illumination model (Hearn & Baker 14-5).
     face_colors : ndarray (F, 3)
         Each face's color S_d, stored values / 255.
+    face_planar : ndarray of bool (F,)
+        Faces whose vertices lie in one plane and that are convex there.
     facet_face : ndarray of int64 (G,)
         The face of each facet.
+    whole : ndarray of bool (G,)
+        Facets kept (not culled, not degenerate) that the view volume did not cut: one
+        device triangle each.
     world : ndarray (G, 3, 3)
         World coordinates of each facet's vertices.
     normals : ndarray (G, 3)
@@ -122,7 +127,9 @@ class ScreenScene:
     face_normals: np.ndarray
     face_centroids: np.ndarray
     face_colors: np.ndarray
+    face_planar: np.ndarray
     facet_face: np.ndarray
+    whole: np.ndarray
     world: np.ndarray
     normals: np.ndarray
     vertex_normals: np.ndarray
@@ -153,11 +160,82 @@ class ScreenScene:
         return np.ascontiguousarray(self.face_mesh[self.facet_face])
 
     @functools.cached_property
+    def face_first(self):
+        """The first facet of each face (F,) and the number of its facets (F,)."""
+        counts = np.bincount(self.facet_face, minlength=self.face_count)
+        return np.concatenate([[0], np.cumsum(counts)[:-1]]).astype(np.int64), counts
+
+    @functools.cached_property
+    def joined(self):
+        """Per facet: True where its face is taken whole as one polygon by the polygon
+        methods (:attr:`units`): a planar convex face whose facets were all kept and none
+        cut (so it lies in front of the eye and projects to a convex polygon).  Such a
+        face's polygon is labeled with its first facet; :attr:`fans` says how many
+        facets it covers."""
+        if not self.face_count:
+            return np.zeros(self.facet_count, bool)
+        first, _ = self.face_first
+        out = np.logical_and.reduceat(self.whole, first) & self.face_planar
+        return out[self.facet_face]
+
+    def _face_vertices(self, faces, points, rows):
+        """The vertices of ``faces`` (whole ones) from their facets' corners: the first
+        facet's corners 0 and 1, then corner 1 of each next facet, then corner 2 of the
+        last (the fan's order).  ``points[rows[g]]`` holds facet g's corners (device
+        triangles, or world facets).  Returns ``(vertices, offsets)``."""
+        first, counts = self.face_first
+        n = counts[faces]
+        k = n + 2
+        offsets = np.zeros(len(faces) + 1, np.int64)
+        np.cumsum(k, out=offsets[1:])
+        owner = np.repeat(np.arange(len(faces)), k)
+        pos = np.arange(offsets[-1]) - offsets[:-1][owner]
+        facet = first[faces][owner] + np.clip(pos - 1, 0, n[owner] - 1)
+        corner = np.where(pos == 0, 0, np.where(pos == k[owner] - 1, 2, 1))
+        return points[rows[facet], corner], offsets
+
+    @functools.cached_property
+    def units(self):
+        """The polygons the polygon methods work on: ``(device (V, 3), world (V', 3),
+        counts (P,), world counts (P,), labels (P,))``.  A face taken whole
+        (:attr:`joined`) is one polygon labeled with its first facet; every other
+        facet left is its own (the device polygon the volume clipped, the world
+        triangle), labeled with itself.  Taking quadrilaterals whole halves the
+        polygons a sphere or a torus gives the depth sort."""
+        first, counts = self.face_first
+        faces = np.flatnonzero(self.joined[first]) if self.face_count else np.zeros(0, int)
+        dev, off = self._face_vertices(faces, self.triangles, self.facet_triangle)
+        world, _ = self._face_vertices(faces, self.world, np.arange(self.facet_count))
+        rest = np.flatnonzero(~self.joined[self.polygon_facet])
+        polys = [self.polygons[i] for i in rest] if len(rest) < len(self.polygon_facet) \
+            else list(self.polygons)
+        counts_rest = np.array([len(p) for p in polys], np.int64)
+        facets = self.polygon_facet[rest]
+        device = np.concatenate([dev] + [np.asarray(p, np.float64) for p in polys]) \
+            if polys else dev
+        return (device, np.concatenate([world, self.world[facets].reshape(-1, 3)]),
+                np.concatenate([np.diff(off), counts_rest]),
+                np.concatenate([np.diff(off), np.full(len(facets), 3, np.int64)]),
+                np.concatenate([first[faces], facets]).astype(np.int64))
+
+    @functools.cached_property
     def screen_polygons(self):
-        """The clipped device polygons as :class:`ScreenPolygons` whose ``face`` is
-        the facet (what the object-order and scan-line methods take)."""
-        verts, counts = self.polygons.flat()
-        return flat_polygons(verts, counts, self.polygon_facet, self.width, self.height)
+        """The polygon methods' :attr:`units` as :class:`ScreenPolygons` whose
+        ``face`` is the label (a facet, or the first facet of a face taken whole)."""
+        device, _, counts, _, labels = self.units
+        return flat_polygons(device, counts, labels, self.width, self.height)
+
+    @functools.cached_property
+    def fans(self):
+        """Per facet: the number of facets of its face when it is the first facet of a
+        face taken whole (:attr:`joined`), else 1 (G,): how many facets a polygon
+        labeled with it covers (the fan :func:`scanline._kernels.visible.resolve_labels`
+        looks a pixel's facet up in)."""
+        first, counts = self.face_first
+        out = np.ones(self.facet_count, np.int64)
+        whole = first[self.joined[first]] if self.face_count else first
+        out[whole] = counts[self.facet_face[whole]]
+        return out
 
     @functools.cached_property
     def transparent(self):
@@ -171,12 +249,15 @@ class ScreenScene:
         none): the one whose screen-space interpolation functions stand for the
         facet's (all of a facet's triangles lie in its plane and share them)."""
         out = np.full(self.facet_count, -1, np.int64)
-        t = self.triangles
+        # the whole facets' triangles come first, one each
+        n = int(self.whole.sum())
+        out[self.facet[:n]] = np.arange(n)
+        t = self.triangles[n:]
         if len(t):
             area = np.abs((t[:, 1, 0] - t[:, 0, 0]) * (t[:, 2, 1] - t[:, 0, 1])
                           - (t[:, 2, 0] - t[:, 0, 0]) * (t[:, 1, 1] - t[:, 0, 1]))
-            order = np.lexsort((area, self.facet))       # by facet, largest last
-            out[self.facet[order]] = order
+            order = np.lexsort((area, self.facet[n:]))       # by facet, largest last
+            out[self.facet[n:][order]] = n + order
         return out
 
     def with_triangles(self, select):
@@ -186,7 +267,8 @@ class ScreenScene:
         keep_p = select[self.polygon_facet]
         polys = [p for p, k in zip(self.polygons, keep_p) if k]
         fields = {name: getattr(self, name) for name in self.__dataclass_fields__}
-        fields.update(triangles=np.ascontiguousarray(self.triangles[keep_t]),
+        fields.update(whole=self.whole & select,
+                      triangles=np.ascontiguousarray(self.triangles[keep_t]),
                       inv_w=np.ascontiguousarray(self.inv_w[keep_t]),
                       bary=np.ascontiguousarray(self.bary[keep_t]),
                       facet=np.ascontiguousarray(self.facet[keep_t]),

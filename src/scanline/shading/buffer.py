@@ -131,7 +131,9 @@ def shade_buffer(scene, fb, ids, options):
     else:
         world = normals = empty
         colors = np.zeros((scene.facet_count, 3, 3))
-        seen = np.unique(scene.facet)
+        mark = np.zeros(scene.facet_count, bool)       # the facets drawn (np.unique:
+        mark[scene.facet] = True                         # a hash of every triangle)
+        seen = np.flatnonzero(mark)
         if len(seen):
             colors[seen] = vertex_intensities(scene, seen, options)
     token = k.SHADING["phong" if model == "phong" else "vertex"]

@@ -90,16 +90,17 @@ def stored_linear(fb, ys, xs, gamma):
     return decode(stored[:, :3], gamma)
 
 
-def _paint(fb, ids, values):
-    """:func:`paint` without its checks (``values`` has a row for every number in
-    ``ids``)."""
+def _paint(fb, ids, values, facets=None):
+    """:func:`paint` without its checks (``ids`` int32, C order); ``facets``: each
+    number's replacement in ``ids``."""
     from .._kernels._threads import call_in_bands
     from .._kernels.variants import layout
     from .._kernels.visible import color_ids
 
     buf, packed = fb._raster()
     call_in_bands(color_ids, fb.width * fb.height, buf, layout(packed), fb.width, fb.height,
-                  np.ascontiguousarray(values, np.uint8), ids)
+                  np.ascontiguousarray(values, np.uint8), ids,
+                  np.zeros(0, np.int64) if facets is None else facets)
 
 
 def paint(fb, ids, values):
@@ -124,16 +125,13 @@ def paint(fb, ids, values):
     if n.shape != (fb.height, fb.width):
         raise ArgumentValueError(f"ids must have the frame buffer's shape ({fb.height}, "
                                  f"{fb.width}) (rows bottom-up), got {v._show(n.shape)}")
-    if n.dtype not in (np.int32, np.int64):
-        if not np.issubdtype(n.dtype, np.integer):
-            raise ArgumentValueError(f"ids must be integers (int32 or int64), got dtype "
-                                     f"{n.dtype}")
-        n = n.astype(np.int64)
+    if not np.issubdtype(n.dtype, np.integer):
+        raise ArgumentValueError(f"ids must be integers, got dtype {n.dtype}")
     top = int(n.max()) if n.size else -1
     if top >= len(a):
         raise ArgumentValueError(f"values holds {len(a)} rows, but ids name number {top}: "
                                  "give one row per number")
-    _paint(fb, np.ascontiguousarray(n), a.astype(np.uint8, copy=False))
+    _paint(fb, np.ascontiguousarray(n, np.int32), np.ascontiguousarray(a, np.uint8))
 
 
 def face_values(fb, scene):
@@ -147,20 +145,20 @@ def face_values(fb, scene):
 def facets_of(scene, ids):
     """The facet of each entry of a buffer of device triangles ``ids`` (-1 stays -1)."""
     if not len(scene.facet):
-        return np.full(ids.shape, -1, np.int64)
-    return np.where(ids >= 0, scene.facet[np.maximum(ids, 0)], -1)
+        return np.full(ids.shape, -1, np.int32)
+    return np.where(ids >= 0, scene.facet[np.maximum(ids, 0)], -1).astype(np.int32)
 
 
 def shade(fb, scene, layer, options):
     """Color the pixels of ``layer`` (a :class:`~scanline.visible.visibility.Layer`)
     into ``fb`` with ``options`` (:class:`~scanline.shading.ShadingOptions`); the
     others keep their values.  Returns the facet seen at each pixel (H, W; -1 none):
-    ``layer.ids`` itself, overwritten, where the compiled path shades."""
+    ``layer.ids`` itself, overwritten, where a compiled path shades."""
     ids = layer.ids
     if options.model == "none" and options.depth_cue is None:
         values = face_values(fb, scene)[scene.facet_face[scene.facet]]
-        _paint(fb, ids, values)
-        return facets_of(scene, ids)
+        _paint(fb, ids, values, np.ascontiguousarray(scene.facet, np.int64))
+        return ids
     if fb.mode not in ("L", "RGB", "RGBA"):
         raise ArgumentValueError(f"shading={options.model!r} draws into modes L, RGB and "
                                  f"RGBA; the frame buffer is mode {fb.mode!r} (use "
@@ -173,7 +171,7 @@ def shade(fb, scene, layer, options):
     facets, linear = _points(scene, ids, layer.depth, ys, xs, xs.astype(np.float64),
                              ys.astype(np.float64), options, background)
     store(fb, ys, xs, linear, options.gamma)
-    out = np.full(ids.shape, -1, np.int64)
+    out = np.full(ids.shape, -1, np.int32)
     out[ys, xs] = facets
     return out
 

@@ -107,8 +107,19 @@ class BSPTree:
     """
 
     def __init__(self, meshes, max_pieces=None):
-        self._meshes = meshes_list(meshes)
-        verts, counts, faces = world_polygons(self._meshes)
+        self._build(*world_polygons(meshes_list(meshes)), max_pieces)
+
+    @classmethod
+    def of_polygons(cls, vertices, counts, faces, max_pieces=None):
+        """The tree of planar convex world polygons given flat (``vertices`` (V, 3),
+        ``counts`` (P,)), each labeled with its entry of ``faces`` (P,): what
+        :meth:`world_pieces` reports for its pieces."""
+        tree = cls.__new__(cls)
+        tree._build(np.ascontiguousarray(vertices, np.float64), np.asarray(counts, np.int64),
+                    np.asarray(faces, np.int64), max_pieces)
+        return tree
+
+    def _build(self, verts, counts, faces, max_pieces):
         n = len(counts)
         self.limit = 8 * n + 10_000 if max_pieces is None else v.positive_int(
             "max_pieces", max_pieces)

@@ -284,9 +284,11 @@ def painted_depth_sort(polygons, split_cycles=True, max_pieces=None):
     from .._kernels._threads import _submit
     from .._kernels.visible import paint_numbers
 
+    from .._pool import recycled
+
     sp = as_screen(polygons)
     w, h = sp.width, sp.height
-    numbers = np.empty((h, w), np.int32)
+    numbers = recycled("piece numbers", (h, w), np.int32)
     runs = queue.SimpleQueue()
     count = [0]
 

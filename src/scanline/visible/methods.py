@@ -90,8 +90,9 @@ class Method:
 
 def _image_space(method):
     def find(scene, options):
-        seen = method(scene.screen_polygons)
-        return facet_layer(scene, seen.face, seen.depth)
+        sp = scene.screen_polygons
+        seen = method(sp)
+        return facet_layer(scene, seen.polygon, sp.face, seen.depth)
     find.__doc__ = f"The visible triangle at each pixel by :func:`{method.__name__}`."
     return find
 
@@ -109,23 +110,19 @@ def _depth_sort(scene, options):
 
 
 def _bsp(scene, options):
-    """The facets back to front by a BSP tree built in world coordinates (Fuchs, Kedem
-    and Naylor 1980) from the scene's facets and traversed from the camera's eye; the
-    pieces clipped and projected as the preparation does."""
-    from ..mesh import Mesh
+    """The scene's polygons back to front by a BSP tree built in world coordinates
+    (Fuchs, Kedem and Naylor 1980) from its faces (those taken whole) and facets, and
+    traversed from the camera's eye; the pieces clipped and projected as the
+    preparation does."""
     from ..screen.prepare import device_polygons
 
-    keep = np.unique(np.asarray(scene.polygon_facet, np.int64))
-    tri = scene.world[keep]
-    area = np.linalg.norm(np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0]), axis=1)
-    keep = keep[area > 0]
-    if not len(keep):
+    _, world, _, counts, labels = scene.units
+    if not len(labels):
         return painted(scene, scene.screen_polygons.subset([]))
-    mesh = Mesh(scene.world[keep].reshape(-1, 3), np.arange(3 * len(keep)).reshape(-1, 3))
-    tree = BSPTree(mesh, max_pieces=options.max_pieces)
-    verts, counts, labels = tree.world_pieces(camera_eye(scene.camera, scene.width,
-                                                         scene.height))
-    return painted(scene, device_polygons(verts, counts, keep[labels], scene.camera,
+    tree = BSPTree.of_polygons(world, counts, labels, max_pieces=options.max_pieces)
+    verts, piece_counts, pieces = tree.world_pieces(camera_eye(scene.camera, scene.width,
+                                                               scene.height))
+    return painted(scene, device_polygons(verts, piece_counts, pieces, scene.camera,
                                           scene.width, scene.height))
 
 

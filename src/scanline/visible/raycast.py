@@ -14,7 +14,7 @@ def raycast(scene, options=None):
     from .._kernels._jit import call
 
     h, w = scene.height, scene.width
-    ids = np.full((h, w), -1, np.int64)
+    ids = np.full((h, w), -1, np.int32)
     depth = np.full((h, w), np.inf)
     n = len(scene.triangles)
     if n == 0:

@@ -53,7 +53,7 @@ def scan_line(polygons):
 
     sp = as_screen(polygons)
     w, h = sp.width, sp.height
-    face = np.full((h, w), -1, np.int64)
+    face = np.full((h, w), -1, np.int32)
     depth = np.full((h, w), np.inf)
     ne = len(sp.vertices)
     npoly = len(sp)
@@ -63,7 +63,6 @@ def scan_line(polygons):
                     np.empty(h + 1, np.int64), np.empty(ne, np.int64), np.empty(ne),
                     np.zeros(npoly, np.bool_), np.empty(npoly, np.int64),
                     np.empty(npoly, np.int64))
-    result = VisibleFaces(np.where(face >= 0, sp.face[np.maximum(face, 0)], -1)
-                          if npoly else face, depth)
+    result = VisibleFaces(face, depth, sp.face)
     result.compared = int(compared)
     return result

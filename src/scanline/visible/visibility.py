@@ -10,6 +10,7 @@
   every sample, front to back, made one at a time as the shading composites them.
 """
 
+import functools
 from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import Optional
@@ -19,21 +20,31 @@ import numpy as np
 from ..screen.polygons import ScreenPolygons
 
 
-@dataclass
 class VisibleFaces:
-    """What an image-space method sees: the face at each pixel and its depth.
+    """What an image-space method sees: the polygon at each pixel and its depth.
 
     Attributes
     ----------
+    polygon : ndarray of int64, shape (height, width)
+        ``polygon[y, x]`` is the number of the polygon visible at pixel (x, y) (row y
+        is scan line y, bottom-up like the frame buffer's storage), -1 for the
+        background.
     face : ndarray of int64, shape (height, width)
-        ``face[y, x]`` is the face visible at pixel (x, y) (row y is scan line y,
-        bottom-up like the frame buffer's storage), -1 for the background.
+        The source face of that polygon (-1 for the background).
     depth : ndarray, shape (height, width)
         Its depth (inf for the background).
     """
 
-    face: np.ndarray
-    depth: np.ndarray
+    def __init__(self, polygon, depth, faces):
+        self.polygon = polygon
+        self.depth = depth
+        self._faces = faces
+
+    @functools.cached_property
+    def face(self):
+        if not len(self._faces):
+            return self.polygon
+        return np.where(self.polygon >= 0, self._faces[np.maximum(self.polygon, 0)], -1)
 
 
 @dataclass(frozen=True, eq=False)
@@ -43,7 +54,7 @@ class Layer:
 
     Attributes
     ----------
-    ids : ndarray of int64 (H, W)
+    ids : ndarray of int32 (H, W)
         The index of the scene's device triangle seen at each pixel, -1 where none.
     depth : ndarray (H, W)
         Its depth (inf where none).
@@ -66,24 +77,25 @@ class Fragments:
     layers: Iterator[Layer]
 
 
-def plane_depth(scene, facets, xs, ys):
-    """The depth of the planes of ``facets`` at device points (``xs``, ``ys``)."""
-    a, b, c, d = scene.planes[facets].T
-    return -(a * xs + b * ys + d) / c
+def facet_layer(scene, polygons, table, depth=None):
+    """A :class:`Layer` from a buffer of polygon numbers (H, W int32; -1 none) whose
+    labels are ``table`` (the ``face`` of polygons of the scene's
+    :attr:`~scanline.screen.ScreenScene.screen_polygons`, or of pieces of them): the
+    stand-in triangle (:attr:`~scanline.screen.ScreenScene.facet_triangle`) of the
+    facet under each pixel center, and the depth (default: that facet's plane's at the
+    pixel center), in one compiled pass
+    (:func:`scanline._kernels.visible.resolve_labels`)."""
+    from .._kernels._threads import call_in_bands
+    from .._kernels.visible import resolve_labels
 
-
-def facet_layer(scene, facets, depth=None):
-    """A :class:`Layer` from a buffer of facets (H, W; -1 none): each facet's stand-in
-    triangle (:attr:`~scanline.screen.ScreenScene.facet_triangle`), and the depth
-    (default: its plane's at each pixel center)."""
-    ids = np.full(facets.shape, -1, np.int64)
-    ys, xs = np.nonzero(facets >= 0)
-    f = facets[ys, xs]
-    ids[ys, xs] = scene.facet_triangle[f]
-    if depth is None:
-        depth = np.full(facets.shape, np.inf)
-        depth[ys, xs] = plane_depth(scene, f, xs, ys)
-    return Layer(ids, depth)
+    h, w = polygons.shape
+    ids = np.empty((h, w), np.int32)
+    out = np.empty((h, w)) if depth is None else depth
+    call_in_bands(resolve_labels, 3 * h * w, np.ascontiguousarray(polygons, np.int32),
+                  np.ascontiguousarray(table, np.int64), scene.fans, scene.facet_triangle,
+                  np.ascontiguousarray(scene.triangles), np.ascontiguousarray(scene.planes),
+                  ids, out, depth is None)
+    return Layer(ids, out)
 
 
 def piece_numbers(pieces, numbers=None, first=0):
@@ -109,12 +121,10 @@ def piece_numbers(pieces, numbers=None, first=0):
 
 def painted(scene, pieces, numbers=None):
     """The :class:`Layer` of ``pieces`` (:class:`ScreenPolygons` in drawing order,
-    ``face`` the facet of each) painted in order (:func:`piece_numbers`, unless
-    ``numbers`` holds them already: the depth sort paints beside the sort)."""
+    ``face`` the label of each, as in the scene's polygons) painted in order
+    (:func:`piece_numbers`, unless ``numbers`` holds them already: the depth sort
+    paints beside the sort)."""
     if numbers is None:
         numbers = piece_numbers(pieces)
-    facets = np.full(numbers.shape, -1, np.int64)
-    seen = numbers >= 0
-    facets[seen] = pieces.face[numbers[seen]]
-    layer = facet_layer(scene, facets)
+    layer = facet_layer(scene, numbers, pieces.face)
     return Layer(layer.ids, layer.depth, pieces)

@@ -56,7 +56,7 @@ def area_subdivision(polygons, record=0):
     w, h = sp.width, sp.height
     npoly = len(sp)
     levels = int(np.ceil(np.log2(max(w, h)))) + 2
-    face = np.full((h, w), -1, np.int64)
+    face = np.full((h, w), -1, np.int32)
     depth = np.full((h, w), np.inf)
     regions = np.zeros((max(int(record), 0), 5), np.int64)
     ext = np.ascontiguousarray(sp.extents())
@@ -66,8 +66,7 @@ def area_subdivision(polygons, record=0):
                    np.empty((2 * levels, max(npoly, 1)), np.int64),
                    np.zeros(levels, np.int64), np.empty((3 * levels + 4, 5), np.int64),
                    regions)
-    result = VisibleFaces(np.where(face >= 0, sp.face[np.maximum(face, 0)], -1)
-                          if npoly else face, depth)
+    result = VisibleFaces(face, depth, sp.face)
     result.areas = int(decided)
     result.regions = regions[:min(decided, len(regions))]
     return result

@@ -30,10 +30,10 @@ def nearest(scene, zbuf=None, floor=None, triangles=None, size=None):
     n = len(tri)
     clear = zbuf is None
     if clear:
-        out = recycled("faces", (h, w), np.int64)
+        out = recycled("faces", (h, w), np.int32)
         depth = recycled("depth", (h, w))
     else:
-        out = np.full((h, w), -1, np.int64)
+        out = np.full((h, w), -1, np.int32)
         depth = zbuf
     if n:
         rasterize(w, h, np.ascontiguousarray(tri), np.ascontiguousarray(scene.inv_w),

@@ -27,6 +27,7 @@ if TYPE_CHECKING:   # what the lazy attributes are, for type checkers and editor
     from . import trace as trace, transform as transform, transform3d as transform3d
     from . import viewing as viewing, visible as visible, lighting as lighting
     from . import shading as shading, rendering as rendering, screen as screen
+    from . import budget as budget
     from .rendering import render as render
     from .depthbuffer import DepthBuffer as DepthBuffer
     from .attributes import FillStyle as FillStyle
@@ -81,6 +82,7 @@ _LAZY = {
     "render": ("scanline.rendering", "render"),
     "rendering": ("scanline.rendering", None),
     "screen": ("scanline.screen", None),
+    "budget": ("scanline.budget", None),
     "visible": ("scanline.visible", None),
 }
 

@@ -47,3 +47,9 @@ class DepthSortLoopError(ArgumentValueError):
 
 class BSPTooLargeError(ArgumentValueError):
     """A BSP tree would need more polygon pieces than its limit allows."""
+
+
+class MemoryBudgetError(ArgumentValueError):
+    """A call would allocate more memory than the budget allows
+    (:mod:`scanline.budget`): the message names the argument that sets the size and
+    the estimate, and says how to raise the limit."""

@@ -37,6 +37,7 @@ from ._typing import ArrayLike, Color, Mode, NDArray
 from . import _validate as v
 from . import imagefile
 from .color.spec import pixel_value, rgba
+from .budget import physical_memory
 from .errors import ArgumentTypeError, ArgumentValueError, OutputError, ScanlineError
 
 MODES = ("1", "L", "RGB", "RGBA", "P")
@@ -47,13 +48,6 @@ _BITS = {"1": 1, "L": 8, "RGB": 24, "RGBA": 32, "P": 8}
 #: it enlarges a small frame buffer to, so that a 16 x 16 image is visible in a notebook.
 _REPR_SIZE = 256
 _REPR_SCALE = 16
-
-
-def _physical_memory():
-    try:
-        return os.sysconf("SC_PHYS_PAGES") * os.sysconf("SC_PAGE_SIZE")
-    except (ValueError, OSError, AttributeError):  # pragma: no cover - non-POSIX
-        return 1 << 40
 
 
 def _umask():
@@ -213,7 +207,7 @@ class FrameBuffer:
                 raise ArgumentValueError(f"{name}={size} is larger than the limit {v.COORD_LIMIT}")
         row_bytes = (width + 7) // 8 if mode == "1" else width
         nbytes = height * row_bytes * _CHANNELS[mode]
-        available = _physical_memory()
+        available = physical_memory()
         if nbytes > available:
             raise ArgumentValueError(
                 f"width x height = {width} x {height} in mode {mode!r} needs {nbytes:,} bytes, "

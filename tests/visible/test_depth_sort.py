@@ -348,3 +348,70 @@ def test_painting_checks_the_values_and_the_numbers():
     assert not fb.to_array().any()
     paint(fb, numbers, np.full((20, 1), 200))      # integers are taken
     assert (fb.to_array() == 200).any()
+
+
+def tangled(n, seed=3, size=120.0):
+    """n large triangles at random depths in device space: each cuts hundreds of
+    others (the sort's worst case)."""
+    rng = np.random.default_rng(seed)
+    c = rng.uniform([0, 0], [800, 600], (n, 2))
+    r = rng.uniform(10, size, (n, 1, 1))
+    ang = rng.uniform(0, 2 * np.pi, (n, 1)) + np.sort(rng.uniform(0, 2 * np.pi, (n, 3)), 1)
+    xy = c[:, None, :] + r * np.stack([np.cos(ang), np.sin(ang)], axis=-1)
+    return np.concatenate([xy, rng.uniform(0.05, 0.95, (n, 3, 1))], axis=-1)
+
+
+def test_a_tangled_scene_stops_at_the_work_bound():
+    # 16,000 large triangles at random depths: without a bound the sort went on for
+    # minutes (pieces by the hundred thousand); it stops at the bound on the surfaces
+    # compared, 2,000,000 + 100 per polygon, with an error that says what to do
+    from scanline.visible.depth_sort import default_work
+
+    sp = ScreenPolygons.from_device(list(tangled(16_000)), 800, 600)
+    with pytest.raises(DepthSortLoopError, match=r"gave up after comparing 3,600,000 "
+                                                 r"surfaces.*method='z-buffer'.*max_work"):
+        depth_sort(sp)
+    assert default_work(16_000) == 3_600_000
+    with pytest.raises(DepthSortLoopError, match="gave up after comparing 50,000 surfaces"):
+        depth_sort(sp, max_work=50_000)
+
+
+def test_whole_objects_stay_within_the_bound_per_polygon():
+    # the benchmark's kind of scene (small triangles, many deep) and whole meshes sort
+    # within the bound's share per polygon alone (100 each), without its constant
+    sp = small_triangles(3000, 9)
+    assert len(depth_sort(sp, max_work=100 * 3000)) >= 3000
+    cam = sl.Camera(eye=(4, 3, 5), target=(0, 0, 0))
+    meshes = [sl.mesh.sphere(1.0, (0.6, 0.4, 0.3), resolution=24),
+              sl.mesh.torus(1.3, 0.35, resolution=(32, 12)), sl.mesh.cube(1.6)]
+    polys = sl.visible.screen_polygons(meshes, cam, 320, 240)
+    assert len(depth_sort(polys, max_work=100 * len(polys))) >= len(polys)
+
+
+def test_a_render_falls_back_when_the_sort_gives_up():
+    n = 2000
+    tri = tangled(n, 4)
+    # the same triangles as a mesh seen straight on by an orthographic camera
+    world = np.concatenate([tri[..., :2] / 100.0, -10 * tri[..., 2:]], axis=-1)
+    mesh = sl.mesh.Mesh(world.reshape(-1, 3), np.arange(3 * n).reshape(n, 3))
+    cam = sl.Camera(eye=(4, 3, 5), target=(4, 3, 0),
+                    projection=sl.projection.orthographic(window=(-4, -3, 4, 3)))
+    with pytest.raises(DepthSortLoopError):
+        sl.render(sl.FrameBuffer(80, 60), mesh, cam, method="depth-sort", max_work=10_000)
+    fb, ref = sl.FrameBuffer(80, 60), sl.FrameBuffer(80, 60)
+    with pytest.warns(sl.ScanlineWarning, match="method='depth-sort' gave up.*z-buffer"):
+        r = sl.render(fb, mesh, cam, method="depth-sort", max_work=10_000, fallback="z-buffer")
+    assert r.method == "z-buffer"
+    sl.render(ref, mesh, cam, method="z-buffer")
+    assert np.array_equal(fb.to_array(), ref.to_array())
+
+
+def test_a_step_table_log_is_bounded(monkeypatch):
+    module = importlib.import_module("scanline.visible.depth_sort")
+    monkeypatch.setattr(module, "LOG_ROWS", 500)
+    with pytest.raises(sl.ScanlineError, match="log: the step table of 400 polygons passes "
+                                               "500 rows"):
+        depth_sort(small_triangles(400, 2), log=[])
+    log = []
+    depth_sort(ScreenPolygons.from_device(cyclic(), W, H), log=log)   # a small one: in full
+    assert log and len(log) < 500

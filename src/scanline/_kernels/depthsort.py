@@ -86,7 +86,8 @@ BUCKETS = 18    # entries of the buckets (rows of ``cent`` needed)
 MEMO = 19       # memo entries used
 GIVEN = 20      # the pieces given (numbered 0 .. GIVEN - 1 by rank)
 PAUSE = 21      # pause once this many pieces are in drawing order (0: never)
-STATE = 22
+WORK = 22       # surfaces compared so far (one more a step): the work bound's count
+STATE = 23
 
 #: Columns of ``it``.
 IT = 8
@@ -105,7 +106,7 @@ MEMO_NEW = 32
 # -- status codes ------------------------------------------------------------------------
 DONE = 0
 NEED_ROOM = 1   # st[T] says which array: one of the ROOM codes
-TOO_LONG = 2    # the step bound was reached
+TOO_LONG = 2    # the work bound was reached
 TOO_MANY = 3    # max_pieces would be exceeded
 CYCLE = 4       # a cycle and splitting is off
 UNCUT = 5       # a cycle neither plane cuts, nor a plane across the middle
@@ -720,12 +721,14 @@ def by_size(keys, m):
 @kernel
 def depth_sort(pv, fl, it, tag, heap, cells, ent, grid, first, low, cent, dface, dplane,
                doff, out, cand, keys, tkeys, titems, memo, log, plane, st, eps, min_area,
-               limit, max_steps, split_cycles, trace):
+               limit, max_work, split_cycles, trace):
     """Run (or resume) the depth sort on the pieces :func:`prepare` set: the pieces
     painted go to ``dface``, ``dplane`` (their faces and planes) and their vertices
     to ``out`` (piece ``d`` from ``doff[d]`` to ``doff[d + 1]``); ``cells``, ``ent``:
     the split pieces linked in the grid cells; ``memo``: the memo entries;
-    ``limit``: most pieces in all; ``max_steps``: the loop bound; ``trace``: a
+    ``limit``: most pieces in all; ``max_work``: the most surfaces all the steps
+    may gather to compare with their heads (``st[WORK]``: one more per step), the
+    bound of the sort's time however tangled the scene; ``trace``: a
     :data:`TRACE` token (LOGGED: compare with every surface alive and log each pair).
     Returns the status (also in ``st[STATUS]``): :data:`PAUSED` when the piece just
     put in drawing order is the ``st[PAUSE]``-th and others remain (the caller may
@@ -760,7 +763,8 @@ def depth_sort(pv, fl, it, tag, heap, cells, ent, grid, first, low, cent, dface,
             st[T] = short
             return NEED_ROOM
         st[STEPS] += 1
-        if st[STEPS] > max_steps:
+        st[WORK] += 1
+        if st[WORK] > max_work:
             st[STATUS] = TOO_LONG
             return TOO_LONG
         while st[LIST] < given:          # the head: the least key (rank, piece) alive
@@ -882,6 +886,7 @@ def depth_sort(pv, fl, it, tag, heap, cells, ent, grid, first, low, cent, dface,
                                 m += 1
                             prev = e
                         e = nxt
+        st[WORK] += m
         if len(trace) != LOGGED:
             if m <= SHORT:
                 by_key_short(cand, m, fl)

@@ -48,7 +48,8 @@ def render(fb: FrameBuffer, meshes: Union[Mesh, Iterable[Mesh]], camera: Camera,
            depth_cue: Union[None, bool, Tuple[float, float]] = None, shadows: bool = False,
            samples: Optional[int] = None, layers: Optional[int] = None,
            key: Optional[str] = None, split_cycles: Optional[bool] = None,
-           max_pieces: Optional[int] = None) -> Rendering:
+           max_pieces: Optional[int] = None, max_work: Optional[int] = None,
+           fallback: Optional[str] = None) -> Rendering:
     """Render meshes seen by ``camera`` into ``fb`` by a visible-surface method.
 
     Parameters
@@ -96,6 +97,14 @@ def render(fb: FrameBuffer, meshes: Union[Mesh, Iterable[Mesh]], camera: Camera,
         Depth sort: split cyclic or intersecting polygons (default True).
     max_pieces : int, optional
         Depth sort and BSP: most pieces the splitting may make.
+    max_work : int, optional
+        Depth sort: the bound of its time, in surfaces compared (default 2,000,000 +
+        100 per polygon, seconds at most).
+    fallback : str, optional
+        A method to draw with when ``method`` gives up on the scene (a depth sort
+        past ``max_pieces`` or ``max_work``, a BSP tree past ``max_pieces``), e.g.
+        "z-buffer"; a :class:`~scanline.errors.ScanlineWarning` says so, and the
+        result's ``method`` names the one that drew.  Default: the error is raised.
 
     Returns
     -------
@@ -136,12 +145,13 @@ def render(fb: FrameBuffer, meshes: Union[Mesh, Iterable[Mesh]], camera: Camera,
     options = RenderOptions(
         method=method,
         visible=MethodOptions(samples=samples, layers=layers, key=key,
-                              split_cycles=split_cycles, max_pieces=max_pieces),
+                              split_cycles=split_cycles, max_pieces=max_pieces,
+                              max_work=max_work),
         shading=ShadingOptions(model=shading,
                                lights=default_lights(camera) if lights is None else lights,
                                specular=specular, gamma=gamma,
                                depth_cue=depth_cue_intensities(depth_cue)),
-        cull_back_faces=cull_back_faces, shadows=shadows)
+        cull_back_faces=cull_back_faces, shadows=shadows, fallback=fallback)
     if options.shading.model != "none" and fb.mode not in MODES:
         raise ArgumentValueError(f"sl.render draws lit surfaces into modes {', '.join(MODES)}; "
                                  f"the frame buffer is mode {fb.mode!r} (shading='none' draws "
@@ -164,11 +174,9 @@ def run(fb, meshes, camera, options, materials=None, colors=None):
         from .shadows import ShadowMaps
 
         shading = replace(shading, shadows=ShadowMaps(meshes, scene, shading.lights))
-    method = METHODS[options.method]
     clear = scene.transparent
-    layered = bool(clear.any()) and not method.transparency
-    opaque = scene.with_triangles(~clear) if layered else scene
-    seen = method.find(opaque, options.visible)
+    name, layered, opaque, seen = _visible(scene, clear, options.method, options.visible,
+                                           options.fallback)
     pieces = None
     if isinstance(seen, Fragments):
         facets, depth = composite(fb, scene, seen.layers, seen.samples, shading)
@@ -181,4 +189,28 @@ def run(fb, meshes, camera, options, materials=None, colors=None):
         over, over_depth = composite(fb, glass, [front], 1, shading)
         facets = np.where(over >= 0, over, facets)
         depth = np.minimum(depth, over_depth)
-    return Rendering(options.method, fb, DepthBuffer.holding(depth), facets, scene, pieces)
+    return Rendering(name, fb, DepthBuffer.holding(depth), facets, scene, pieces)
+
+
+def _visible(scene, clear, name, options, fallback=None):
+    """Run the method ``name`` on the scene's opaque facets (all, for a method that
+    resolves transparency itself; ``clear``: the transparent facets): ``(name,
+    layered, the scene it ran on, what it found)``.  Where it gives up and
+    ``fallback`` names a method, that one runs instead, with a warning."""
+    import warnings
+
+    from ..errors import BSPTooLargeError, DepthSortLoopError, ScanlineWarning
+    from ..visible import METHODS, MethodOptions
+
+    method = METHODS[name]
+    layered = bool(clear.any()) and not method.transparency
+    opaque = scene.with_triangles(~clear) if layered else scene
+    try:
+        return name, layered, opaque, method.find(opaque, options)
+    except (DepthSortLoopError, BSPTooLargeError) as error:
+        if fallback is None:
+            raise
+        warnings.warn(f"method={name!r} gave up on this scene ({error}); drawn by "
+                      f"fallback={fallback!r}", ScanlineWarning, stacklevel=4)
+        return _visible(scene, clear, fallback, MethodOptions())
+

@@ -2,6 +2,7 @@
 shading options, back-face culling and shadows."""
 
 from dataclasses import dataclass, field
+from typing import Optional
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
@@ -24,17 +25,22 @@ class RenderOptions:
         Drop the facets turned away from the viewer before any method runs.
     shadows : bool
         Shadow maps for the lights made with ``shadows=True`` (Williams 1978).
+    fallback : str or None
+        The method to draw with when ``method`` gives up on a scene.
     """
     method: str = "z-buffer"
     visible: MethodOptions = field(default_factory=MethodOptions)
     shading: ShadingOptions = field(default_factory=ShadingOptions)
     cull_back_faces: bool = False
     shadows: bool = False
+    fallback: Optional[str] = None
 
     def __post_init__(self):
-        if self.method not in METHODS:
-            raise ArgumentValueError(f"method must be one of {', '.join(sorted(METHODS))}, got "
-                                     f"{v._show(self.method)}")
+        for name in ("method", "fallback"):
+            value = getattr(self, name)
+            if (value is not None or name == "method") and value not in METHODS:
+                raise ArgumentValueError(f"{name} must be one of {', '.join(sorted(METHODS))}, "
+                                         f"got {v._show(value)}")
         for name in ("cull_back_faces", "shadows"):
             if not isinstance(getattr(self, name), bool):
                 raise ArgumentTypeError(f"{name} must be True or False, got "

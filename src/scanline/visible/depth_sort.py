@@ -98,7 +98,22 @@ def _hand(drawn, out, doff, dface, lo, hi):
     return hi
 
 
-def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None, drawn=None):
+#: Most rows a step table's ``log`` may take (each a pair examined, a dict in ``log``).
+LOG_ROWS = 200_000
+
+
+def default_work(n):
+    """The default bound of a sort's work, in surfaces gathered to compare with the
+    heads (one more per step), for ``n`` polygons: 2,000,000 + 100 n.  Scenes of
+    whole objects need a few times n (the 10k random triangles of the benchmark
+    72,845; 100k triangles of 40 spheres 276,898; the teapot's 36k 264,478); a
+    scene of thousands of large triangles at random depths, each cutting hundreds of
+    others, would go on for minutes, and stops instead after a few seconds."""
+    return 2_000_000 + 100 * n
+
+
+def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None, drawn=None,
+               max_work=None):
     """Order (and split where needed) polygons back to front by the depth-sorting
     method.
 
@@ -123,6 +138,11 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None, drawn=Non
         must outlive it).  Every piece is handed over once, in drawing order, before
         the sort returns (not after an error).  :func:`painted_depth_sort` paints
         beside the sort this way.
+    max_work : int, optional
+        The bound of the sort's time: the most surfaces all its steps may gather to
+        compare with their heads (default :func:`default_work`); beyond it
+        :class:`~scanline.errors.DepthSortLoopError` is raised (a scene this tangled
+        is drawn in a fraction of the time by the depth buffer).
 
     Returns
     -------
@@ -201,7 +221,7 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None, drawn=Non
     doff[0] = 0
     memo = _work("memo", (8 * n + 1024,), np.int64)
     rows = np.empty((4 * n + 16 if log is not None else 1, 7), np.int64)
-    max_steps = 4 * limit + 10 * n * n + 100
+    work = default_work(n) if max_work is None else v.positive_int("max_work", max_work)
     run = RUN if drawn is not None else 0
     st[k.PAUSE] = run
     handed = 0
@@ -209,7 +229,7 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None, drawn=Non
         status = call(k.depth_sort, 300 * n + 10, pv, fl, it, tag, heap, heads, ent, grid, first,
                       low, cent, dface, dplane, doff, out, cand, keys, tkeys, titems, memo,
                       rows, np.empty(4), st, tolerance(sp), MIN_AREA * 1e-3, limit + n,
-                      max_steps, split_cycles, k.TRACE[log is not None])
+                      work, split_cycles, k.TRACE[log is not None])
         if status == k.PAUSED:
             handed = _hand(drawn, out, doff, dface, handed, int(st[k.DRAWN]))
             st[k.PAUSE] += run
@@ -233,7 +253,14 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None, drawn=Non
         elif short == k.ROOM_BUCKETS:
             cent = _work("cent", (st[k.BUCKETS], 6))
         elif short == k.ROOM_ROWS:
-            rows = _grown(rows, st[k.ROWS] + st[k.ALIVE] + 1)
+            need = st[k.ROWS] + st[k.ALIVE] + 1
+            if need > LOG_ROWS:
+                from ..errors import MemoryBudgetError
+
+                raise MemoryBudgetError(
+                    f"log: the step table of {n} polygons passes {LOG_ROWS:,} rows (a row per "
+                    "pair examined); log a smaller scene, or sort without log=")
+            rows = _grown(rows, need)
         else:
             out = _grown(out, st[k.OUT] + st[k.MAXK], "out")
     if log is not None:
@@ -241,9 +268,10 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None, drawn=Non
     s, t = int(st[k.S]), int(st[k.T])
     if status == k.TOO_LONG:
         raise DepthSortLoopError(
-            f"depth sort did not finish after {st[k.STEPS] - 1} steps on {n} polygons; "
-            "the input holds an overlap the tests cannot order (nearly coincident "
-            "polygons?)")
+            f"depth sort gave up after comparing {work:,} surfaces in {st[k.STEPS]:,} steps "
+            f"on {n} polygons ({st[k.PIECES]:,} pieces so far): they overlap and cut one "
+            "another too much for an order to be found in bounded time (the depth buffer, "
+            "method='z-buffer', draws such scenes at once); raise max_work to go on")
     if status == k.TOO_MANY:
         raise DepthSortLoopError(
             f"depth sort needs more than max_pieces={limit} pieces to resolve the "
@@ -268,7 +296,7 @@ def tolerance(sp):
     return TOLERANCE * max(sp.width, sp.height, 1.0)
 
 
-def painted_depth_sort(polygons, split_cycles=True, max_pieces=None):
+def painted_depth_sort(polygons, split_cycles=True, max_pieces=None, max_work=None):
     """:func:`depth_sort` with the pieces painted as the sort goes:
     ``(pieces, numbers)``, ``numbers`` (int32, height x width of the polygons' device)
     the number of the piece seen at each pixel (-1: none), the pieces painted in
@@ -306,7 +334,8 @@ def painted_depth_sort(polygons, split_cycles=True, max_pieces=None):
 
     wait = _submit(painter)
     try:
-        pieces = depth_sort(sp, split_cycles, max_pieces=max_pieces, drawn=drawn)
+        pieces = depth_sort(sp, split_cycles, max_pieces=max_pieces, drawn=drawn,
+                            max_work=max_work)
     finally:
         runs.put(None)
         wait()

@@ -47,12 +47,16 @@ class MethodOptions:
         True; False raises :class:`~scanline.errors.DepthSortLoopError` instead).
     max_pieces : int, optional
         Depth sort and BSP: most pieces the splitting may make.
+    max_work : int, optional
+        Depth sort: the bound of its time, in surfaces compared
+        (:func:`scanline.visible.depth_sort.default_work`).
     """
     samples: Optional[int] = None
     layers: Optional[int] = None
     key: Optional[str] = None
     split_cycles: Optional[bool] = None
     max_pieces: Optional[int] = None
+    max_work: Optional[int] = None
 
     def __post_init__(self):
         def whole(name, low, high):
@@ -64,6 +68,7 @@ class MethodOptions:
         whole("samples", 1, 8)
         whole("layers", 1, 64)
         whole("max_pieces", 1, 2**40)
+        whole("max_work", 1, 2**62)
         if self.key is not None:
             v.choice("key", self.key, KEYS)
         if self.split_cycles is not None and not isinstance(self.split_cycles, bool):
@@ -105,7 +110,8 @@ def _painter(scene, options):
 def _depth_sort(scene, options):
     """The pieces of the depth-sorting method, painted beside the sort."""
     split = True if options.split_cycles is None else options.split_cycles
-    pieces, numbers = painted_depth_sort(scene.screen_polygons, split, options.max_pieces)
+    pieces, numbers = painted_depth_sort(scene.screen_polygons, split, options.max_pieces,
+                                         options.max_work)
     return painted(scene, pieces, numbers)
 
 
@@ -133,7 +139,7 @@ METHODS = {m.name: m for m in (
     Method("ray-casting", raycast, "image"),
     Method("scan-line", _image_space(scan_line), "image"),
     Method("area-subdivision", _image_space(area_subdivision), "image"),
-    Method("depth-sort", _depth_sort, "object", ("split_cycles", "max_pieces")),
+    Method("depth-sort", _depth_sort, "object", ("split_cycles", "max_pieces", "max_work")),
     Method("bsp", _bsp, "object", ("max_pieces",)),
     Method("painter", _painter, "object", ("key",)),
 )}

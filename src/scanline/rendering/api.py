@@ -179,14 +179,14 @@ def run(fb, meshes, camera, options, materials=None, colors=None):
                                            options.fallback)
     pieces = None
     if isinstance(seen, Fragments):
-        facets, depth = composite(fb, scene, seen.layers, seen.samples, shading)
+        facets, depth = composite(fb, scene, seen.bands, seen.samples, shading)
     else:
         facets = shade(fb, opaque, seen, shading)
         depth, pieces = seen.depth, seen.pieces
     if layered:
         glass = scene.with_triangles(clear)
         front = nearest(glass, zbuf=depth.copy())
-        over, over_depth = composite(fb, glass, [front], 1, shading)
+        over, over_depth = composite(fb, glass, [(0, scene.height, [front])], 1, shading)
         facets = np.where(over >= 0, over, facets)
         depth = np.minimum(depth, over_depth)
     return Rendering(name, fb, DepthBuffer.holding(depth), facets, scene, pieces)

@@ -255,11 +255,64 @@ def _assemble(verts, counts, faces, width, height, front_only=False):
     return sp if keep.all() else sp.subset(np.flatnonzero(keep))
 
 
+def _array(name, value, dtype, shape):
+    """``value`` as a C-contiguous array of ``dtype`` and ``shape`` (None: any
+    length), or a clear error."""
+    a = np.asarray(value)
+    if a.ndim != len(shape) or any(s is not None and n != s for n, s in zip(a.shape, shape)):
+        want = " x ".join("n" if s is None else str(s) for s in shape)
+        raise ArgumentValueError(f"polygons.{name} must have shape ({want}), got {a.shape}")
+    kind = "iu" if np.dtype(dtype).kind == "i" else "iuf"
+    if a.dtype.kind not in kind:
+        raise ArgumentValueError(f"polygons.{name} must hold {'integers' if kind == 'iu' else 'numbers'}"
+                                 f", got dtype {a.dtype}")
+    return np.ascontiguousarray(a, dtype)
+
+
 def as_screen(polygons):
-    """``polygons`` checked to be :class:`ScreenPolygons`."""
+    """``polygons`` checked to be :class:`ScreenPolygons` that the kernels can read
+    safely -- a hand-built one too: its arrays of the right shapes and types (copied
+    to float64 and int64 where they are not), the offsets starting at 0, ending at the
+    vertex count and rising by at least three, every coordinate finite (a plane may
+    overflow, for a polygon with coordinates near the largest floats), a face per
+    polygon, and the device within the coordinate range and the memory
+    budget of its per-pixel buffers."""
+    from ..budget import check
+
     if not isinstance(polygons, ScreenPolygons):
         raise ArgumentTypeError(
             "polygons must be scanline.visible.ScreenPolygons (from "
             "sl.visible.screen_polygons(meshes, camera, width, height) or "
             f"ScreenPolygons.from_device(...)), got {v._show(polygons)}")
-    return polygons
+    sp = polygons
+    w = v.positive_int("polygons.width", sp.width)
+    h = v.positive_int("polygons.height", sp.height)
+    for name, size in (("width", w), ("height", h)):
+        if size > v.COORD_LIMIT:
+            raise ArgumentValueError(f"polygons.{name}={size} is larger than the limit "
+                                     f"{v.COORD_LIMIT}")
+    # the methods' per-pixel buffers: a polygon number and a depth, about 16 bytes
+    check(16 * w * h, "polygons.width x polygons.height",
+          f"a {w} x {h} device's per-pixel buffers", "use a smaller device")
+    verts = _array("vertices", sp.vertices, np.float64, (None, 3))
+    offsets = _array("offsets", sp.offsets, np.int64, (None,))
+    if len(offsets) < 1 or offsets[0] != 0 or offsets[-1] != len(verts):
+        raise ArgumentValueError(
+            f"polygons.offsets must start at 0 and end at the vertex count {len(verts)}, got "
+            f"{v._show(offsets[:1].tolist())} ... {v._show(offsets[-1:].tolist())}")
+    counts = np.diff(offsets)
+    if len(counts) and counts.min() < 3:
+        i = int(np.argmin(counts))
+        raise ArgumentValueError(f"polygons.offsets: polygon {i} has {int(counts[i])} "
+                                 "vertices; each needs at least three (offsets rising by 3 or "
+                                 "more)")
+    n = len(counts)
+    face = _array("face", sp.face, np.int64, (n,))
+    planes = _array("planes", sp.planes, np.float64, (n, 4))
+    if not np.isfinite(verts).all():
+        raise ArgumentValueError("polygons.vertices must be finite (no NaN or inf): build the "
+                                 "polygons with ScreenPolygons.from_device")
+    if all(a is b for a, b in ((verts, sp.vertices), (offsets, sp.offsets), (face, sp.face),
+                               (planes, sp.planes))) and (w, h) == (sp.width, sp.height):
+        return sp
+    return ScreenPolygons(verts, offsets, face, planes, w, h)

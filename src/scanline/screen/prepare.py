@@ -29,6 +29,12 @@ from .meshes import mesh_arrays, meshes_list
 from .polygons import flat_polygons
 from .scene import DevicePolygons, ScreenScene
 
+#: Bytes the pipeline holds per facet (its world, normal, color, device and clipping
+#: arrays in the scene) and per pixel (the buffers of triangles, depths, facets and
+#: labels the methods and the shading pass along): the memory budget's estimate.
+FACET_BYTES = 640
+PIXEL_BYTES = 48
+
 #: Guard band: the clip volume reaches this many window widths beyond the window on
 #: each side (device coordinates stay within about 2**20 for any real frame buffer).
 GUARD = 256.0
@@ -121,11 +127,12 @@ def _vertex_bary(n):
     return kept[:n]
 
 
-def _joined(parts, shape):
-    """One array of ``parts`` (the part itself when there is one: no copy)."""
+def _joined(parts, shape, dtype=np.float64):
+    """One array of ``parts`` (the part itself when there is one: no copy; an empty
+    one of ``shape`` and ``dtype`` when there is none)."""
     if len(parts) == 1:
         return parts[0]
-    return np.concatenate(parts) if parts else np.zeros(shape)
+    return np.concatenate(parts) if parts else np.zeros(shape, dtype)
 
 
 def camera_mapping(camera, width, height):
@@ -185,17 +192,24 @@ def prepare(meshes, camera, width, height, materials=None, colors=None, cull_bac
     from .._kernels._threads import call_in_bands
     from .._kernels.screen import project_faces
 
+    from ..budget import check
+
     width = v.positive_int("width", width)
     height = v.positive_int("height", height)
     clip, scale, offset = camera_mapping(camera, width, height)
     meshes = meshes_list(meshes, empty=True)
+    facets = sum(len(m.face_indices) - 2 * m.face_count for m in meshes)
+    check(FACET_BYTES * facets, "meshes", f"{facets:,} triangles prepared for rendering",
+          "render fewer or coarser meshes")
+    check(PIXEL_BYTES * width * height, "width x height",
+          f"the per-pixel buffers of a {width} x {height} render", "render a smaller image")
     mats = _materials(materials, len(meshes))
     parts = [mesh_arrays(mesh) for mesh in meshes]
     sizes = [len(p.face_normals) for p in parts]
-    face_mesh = _joined([np.full(n, i, np.int64) for i, n in enumerate(sizes)], (0,))
+    face_mesh = _joined([np.full(n, i, np.int64) for i, n in enumerate(sizes)], (0,), np.int64)
     face_base = np.concatenate([[0], np.cumsum(sizes)]).astype(np.int64)
     facet_face = _joined([p.facet_face + face_base[i] if i else p.facet_face
-                          for i, p in enumerate(parts)], (0,))
+                          for i, p in enumerate(parts)], (0,), np.int64)
     if colors is not None:
         face_colors = _given_colors(colors, sizes)
         vertex_colors = np.repeat(face_colors[facet_face][:, None], 3, axis=1)
@@ -209,7 +223,7 @@ def prepare(meshes, camera, width, height, materials=None, colors=None, cull_bac
                                  for i, p in enumerate(parts)], (0, 3, 3))
     world = _joined([p.world for p in parts], (0, 3, 3))
     nf = len(world)
-    degenerate = _joined([p.degenerate for p in parts], (0,))
+    degenerate = _joined([p.degenerate for p in parts], (0,), bool)
 
     view = camera.projection.orientation @ camera.view_matrix
     if camera.projection.kind == "perspective":
@@ -269,7 +283,8 @@ def prepare(meshes, camera, width, height, materials=None, colors=None, cull_bac
         face_mesh=face_mesh,
         face_normals=_joined([p.face_normals for p in parts], (0, 3)),
         face_centroids=_joined([p.face_centroids for p in parts], (0, 3)),
-        face_colors=face_colors, face_planar=_joined([p.face_planar for p in parts], (0,)),
+        face_colors=face_colors,
+        face_planar=_joined([p.face_planar for p in parts], (0,), bool),
         facet_face=facet_face, whole=drawn, world=world,
         normals=_joined([p.normals for p in parts], (0, 3)),
         vertex_normals=_joined([p.vertex_normals for p in parts], (0, 3, 3)),

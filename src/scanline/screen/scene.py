@@ -163,7 +163,7 @@ class ScreenScene:
     def face_first(self):
         """The first facet of each face (F,) and the number of its facets (F,)."""
         counts = np.bincount(self.facet_face, minlength=self.face_count)
-        return np.concatenate([[0], np.cumsum(counts)[:-1]]).astype(np.int64), counts
+        return (np.cumsum(counts) - counts).astype(np.int64), counts
 
     @functools.cached_property
     def joined(self):

@@ -53,11 +53,21 @@ def background_linear(fb, gamma):
 
 
 def _cue(scene, linear, depth, options, background):
-    """Depth cueing of linear colors at device depths ``depth`` (M,)."""
+    """Depth cueing of linear colors at device depths ``depth`` (M,), between the
+    nearest and the farthest distance of the scene's device triangles (Hearn & Baker
+    9-1: d_min and d_max of the scene), the same for every pixel, layer and band."""
     if options.depth_cue is None or not len(depth):
         return linear
-    d = scene.camera.linear_depth(depth)
-    return cue_blend(linear, d, float(d.min()), float(d.max()), options.depth_cue, background)
+    near, far = _depth_range(scene)
+    return cue_blend(linear, scene.camera.linear_depth(depth), near, far, options.depth_cue,
+                     background)
+
+
+def _depth_range(scene):
+    """The nearest and farthest distances of the scene's device triangles' vertices."""
+    d = scene.camera.linear_depth(scene.triangles[..., 2].reshape(-1))
+    d = d[np.isfinite(d)]
+    return (float(d.min()), float(d.max())) if len(d) else (0.0, 0.0)
 
 
 def _points(scene, ids, depth, ys, xs, px, py, options, background):
@@ -136,10 +146,13 @@ def paint(fb, ids, values):
 
 def face_values(fb, scene):
     """The pixel value of each face's color in ``fb``'s mode, (F, channels) uint8."""
+    channels = fb._raster()[0].shape[2]
     rgb = np.rint(scene.face_colors * 255.0).astype(np.uint8)
+    if not len(rgb):
+        return np.zeros((0, channels), np.uint8)
     unique, inverse = np.unique(rgb, axis=0, return_inverse=True)
     values = np.array([fb.pixel(tuple(int(c) for c in row)) for row in unique], np.uint8)
-    return values.reshape(len(unique), -1)[inverse.reshape(-1)]
+    return values.reshape(len(unique), channels)[inverse.reshape(-1)]
 
 
 def facets_of(scene, ids):
@@ -176,13 +189,15 @@ def shade(fb, scene, layer, options):
     return out
 
 
-def composite(fb, scene, layers, samples, options):
-    """Resolve ``layers`` of fragments (Layers of ``samples`` x ``samples`` points per
-    pixel, front to back) over the frame buffer's pixels: at each sample, I = sum_k
-    T_k (1 - k_t,k) I_k + T I_behind, T_k the product of the transparencies k_t in
-    front of fragment k and I_behind the pixel's present color; each pixel averages
-    its samples, and is written where any sample met a surface.  Returns the facet
-    and the depth of the first layer at each pixel's central sample, (H, W) each."""
+def composite(fb, scene, bands, samples, options):
+    """Resolve layers of fragments over the frame buffer's pixels, band of rows after
+    band of rows: ``bands`` yields ``(y0, rows, layers)``, ``layers`` the Layers of
+    the band's rows at ``samples`` x ``samples`` points per pixel, front to back.  At
+    each sample, I = sum_k T_k (1 - k_t,k) I_k + T I_behind, T_k the product of the
+    transparencies k_t in front of fragment k and I_behind the pixel's present color;
+    each pixel averages its samples, and is written where any sample met a surface.
+    Returns the facet and the depth of the first layer at each pixel's central
+    sample, (H, W) each."""
     if fb.mode not in ("L", "RGB", "RGBA"):
         raise ArgumentValueError(f"layers of fragments are blended in modes L, RGB and RGBA; "
                                  f"the frame buffer is mode {fb.mode!r}")
@@ -192,27 +207,32 @@ def composite(fb, scene, layers, samples, options):
     background = background_linear(fb, gamma)
     kt = np.array([m.transparency for m in scene.materials], np.float64)[scene.facet_mesh] \
         if scene.facet_count else np.zeros(0)
-    color = np.zeros((h * s, w * s, 3))
-    through = np.ones((h * s, w * s))
-    first = None
-    for layer in layers:
-        if first is None:
-            first = layer
-        ys, xs = np.nonzero(layer.ids >= 0)
-        # sample (i, j) of pixel (x, y) lies at device (x - 1/2 + (i + 1/2) / s, ...)
-        facets, linear = _points(scene, layer.ids, layer.depth, ys, xs,
-                                 (xs - (s - 1) / 2.0) / s, (ys - (s - 1) / 2.0) / s, options,
-                                 background)
-        t = kt[facets]
-        color[ys, xs] += (through[ys, xs] * (1 - t))[:, None] * linear
-        through[ys, xs] *= t
-    if first is None:
-        return np.full((h, w), -1, np.int64), np.full((h, w), np.inf)
-    covered = (first.ids >= 0).reshape(h, s, w, s).any(axis=(1, 3))
-    py, px = np.nonzero(covered)
-    behind = stored_linear(fb, py, px, gamma)
-    pixel = color.reshape(h, s, w, s, 3)[py, :, px] + \
-        through.reshape(h, s, w, s)[py, :, px][..., None] * behind[:, None, None, :]
-    store(fb, py, px, pixel.mean(axis=(1, 2)), gamma)
+    facets = np.full((h, w), -1, np.int32)
+    depth = np.full((h, w), np.inf)
     c = s // 2
-    return facets_of(scene, first.ids[c::s, c::s]), first.depth[c::s, c::s].copy()
+    for y0, rows, layers in bands:
+        color = np.zeros((rows * s, w * s, 3))
+        through = np.ones((rows * s, w * s))
+        first = None
+        for layer in layers:
+            if first is None:
+                first = layer
+            ys, xs = np.nonzero(layer.ids >= 0)
+            # sample (i, j) of pixel (x, y) lies at device (x - 1/2 + (i + 1/2) / s, ...)
+            seen, linear = _points(scene, layer.ids, layer.depth, ys, xs,
+                                   (xs - (s - 1) / 2.0) / s, y0 + (ys - (s - 1) / 2.0) / s,
+                                   options, background)
+            t = kt[seen]
+            color[ys, xs] += (through[ys, xs] * (1 - t))[:, None] * linear
+            through[ys, xs] *= t
+        if first is None:
+            continue
+        covered = (first.ids >= 0).reshape(rows, s, w, s).any(axis=(1, 3))
+        py, px = np.nonzero(covered)
+        behind = stored_linear(fb, py + y0, px, gamma)
+        pixel = color.reshape(rows, s, w, s, 3)[py, :, px] + \
+            through.reshape(rows, s, w, s)[py, :, px][..., None] * behind[:, None, None, :]
+        store(fb, py + y0, px, pixel.mean(axis=(1, 2)), gamma)
+        facets[y0:y0 + rows] = facets_of(scene, first.ids[c::s, c::s])
+        depth[y0:y0 + rows] = first.depth[c::s, c::s]
+    return facets, depth

@@ -40,18 +40,21 @@ textbook's formulas give, and what the tests compare); the renderer's default is
 import numpy as np
 
 from ..lighting.model import ViewerAtInfinity, intensity
-from .options import GAMMA
+from .options import GAMMA, gamma_value
 
 
 def encode(linear, gamma=GAMMA):
-    """Stored 0..255 values of linear intensities: round(255 clamp(I, 0, 1)^(1/gamma))."""
-    i = np.clip(np.asarray(linear, np.float64), 0.0, 1.0)
+    """Stored 0..255 values of linear intensities: round(255 clamp(I, 0, 1)^(1/gamma))
+    (NaN stores 0)."""
+    gamma = gamma_value(gamma)
+    with np.errstate(invalid="ignore"):
+        i = np.nan_to_num(np.clip(np.asarray(linear, np.float64), 0.0, 1.0), nan=0.0)
     return np.rint(255.0 * i ** (1.0 / gamma)).astype(np.uint8)
 
 
 def decode(stored, gamma=GAMMA):
     """Linear values of stored colors given as reals 0..1 (c / 255): c^gamma."""
-    return np.asarray(stored, np.float64) ** gamma
+    return np.asarray(stored, np.float64) ** gamma_value(gamma)
 
 
 def decoded(colors, gamma=GAMMA):

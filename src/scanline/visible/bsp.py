@@ -220,9 +220,18 @@ def camera_eye(camera, width, height):
     perspective camera, or (direction, 0) toward the viewer for a parallel one --
     the preimage of the point at z = -infinity of clip space."""
     clip = camera.mapping(camera._device_box(width, height))[0]
-    e = np.linalg.solve(clip, np.array([0.0, 0.0, -1.0, 0.0]))
-    scale = np.abs(e).max()
-    e = e / scale
+    try:
+        with np.errstate(all="ignore"):
+            e = np.linalg.solve(clip, np.array([0.0, 0.0, -1.0, 0.0]))
+            scale = np.abs(e).max()
+            e = e / scale
+    except np.linalg.LinAlgError:
+        e = np.full(4, np.nan)
+    if not np.isfinite(e).all():
+        raise v.ArgumentValueError(
+            f"camera: its projection cannot be inverted in floating point (eye "
+            f"{v._show(camera.eye)}), so the viewer's position is unknown to the BSP "
+            "traversal; place the eye and the target at distances a float can resolve")
     if abs(e[3]) < 1e-12:
         e[3] = 0.0
     return e if e[3] >= 0 else -e

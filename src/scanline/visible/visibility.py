@@ -69,12 +69,14 @@ class Layer:
 
 @dataclass(frozen=True, eq=False)
 class Fragments:
-    """Layers of fragments at ``samples`` x ``samples`` points per pixel, front to back:
-    ``layers`` yields :class:`Layer` objects of the supersampled size (H s, W s), each
-    holding at every sample the nearest fragment behind the previous layer's, until no
-    sample has one left or an opaque fragment has been found at every sample."""
+    """Layers of fragments at ``samples`` x ``samples`` points per pixel, front to back,
+    band of rows after band of rows: ``bands`` yields ``(y0, rows, layers)``, where
+    ``layers`` yields :class:`Layer` objects of the band's supersampled size (rows s,
+    W s), each holding at every sample the nearest fragment behind the previous
+    layer's, until no sample has one left or an opaque fragment has been found at
+    every sample."""
     samples: int
-    layers: Iterator[Layer]
+    bands: Iterator[tuple]
 
 
 def facet_layer(scene, polygons, table, depth=None):

@@ -16,7 +16,7 @@ from ..draw.triangles import rasterize
 from .visibility import Layer
 
 
-def nearest(scene, zbuf=None, floor=None, triangles=None, size=None):
+def nearest(scene, zbuf=None, floor=None, triangles=None, size=None, select=None):
     """The z-buffer pass over the scene's device triangles: the :class:`Layer` of the
     nearest triangle at each pixel center (its ``ids`` number the scene's triangles).
 
@@ -24,9 +24,14 @@ def nearest(scene, zbuf=None, floor=None, triangles=None, size=None):
     in front of it are drawn); default a new one cleared to +inf.  ``floor``: depth
     peeling, only fragments strictly behind ``floor`` count.  ``triangles`` and
     ``size`` = (width, height): the scene's triangles mapped to another raster (the
-    A-buffer's samples) instead of its own."""
+    A-buffer's samples) instead of its own.  ``select``: the numbers of the triangles
+    to draw (default all)."""
     w, h = size if size is not None else (scene.width, scene.height)
     tri = scene.triangles if triangles is None else triangles
+    q = scene.inv_w
+    ids = None
+    if select is not None:
+        tri, q, ids = tri[select], q[select], np.ascontiguousarray(select, np.int64)
     n = len(tri)
     clear = zbuf is None
     if clear:
@@ -36,9 +41,9 @@ def nearest(scene, zbuf=None, floor=None, triangles=None, size=None):
         out = np.full((h, w), -1, np.int32)
         depth = zbuf
     if n:
-        rasterize(w, h, np.ascontiguousarray(tri), np.ascontiguousarray(scene.inv_w),
-                  np.empty((n, 3, 0)), np.arange(n, dtype=np.int64), zbuf=depth, idbuf=out,
-                  floor=floor, clear=clear)
+        rasterize(w, h, np.ascontiguousarray(tri), np.ascontiguousarray(q),
+                  np.empty((n, 3, 0)), np.arange(n, dtype=np.int64) if ids is None else ids,
+                  zbuf=depth, idbuf=out, floor=floor, clear=clear)
     elif clear:
         out.fill(-1)
         depth.fill(np.inf)

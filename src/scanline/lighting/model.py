@@ -122,7 +122,12 @@ def intensity(point, normal, eye, lights, material, *, specular="phong", color=N
     if p.shape[-1:] != (3,) or n.shape[-1:] != (3,):
         raise ArgumentValueError(f"point and normal must end in 3 coordinates, got shapes "
                                  f"{p.shape} and {n.shape}")
-    p, n = np.broadcast_arrays(p, n)
+    try:
+        p, n = np.broadcast_arrays(p, n)
+    except ValueError:
+        raise ArgumentValueError(f"point and normal must have shapes that broadcast (one "
+                                 f"normal for all points, or one per point), got {p.shape} "
+                                 f"and {n.shape}") from None
     big_n = _unit(n)
     if isinstance(eye, ViewerAtInfinity):
         big_v = np.broadcast_to(eye.toward, p.shape)
@@ -165,18 +170,35 @@ def depth_cue(intensities, distance, near_distance, far_distance, cue=(1.0, 0.25
     near, far = (v.number("cue", c) for c in cue)
     if not (0 <= near <= 1 and 0 <= far <= 1):
         raise ArgumentValueError(f"cue must be (near, far) factors in 0..1, got {cue!r}")
-    d = np.asarray(distance, np.float64)
+    near_distance = v.number("near_distance", near_distance)
+    far_distance = v.number("far_distance", far_distance)
+    d = v.real_array("distance", distance, "(...)")
+    i = v.real_array("intensities", intensities, "(..., 3)")
+    bg = v.real_array("background", background, "(3,)")
     span = far_distance - near_distance
-    t = np.clip((far_distance - d) / span, 0.0, 1.0) if span > 0 else np.ones_like(d)
-    f = (far + (near - far) * t)[..., None]
-    return f * np.asarray(intensities) + (1.0 - f) * np.asarray(background, np.float64)
+    with np.errstate(all="ignore"):
+        t = np.clip((far_distance - d) / span, 0.0, 1.0) if span > 0 else np.ones_like(d)
+        f = (far + (near - far) * t)[..., None]
+        try:
+            return f * i + (1.0 - f) * bg
+        except ValueError:
+            raise ArgumentValueError(
+                f"intensities (..., 3) and distance (...) must match point for point, got "
+                f"shapes {i.shape} and {d.shape}") from None
 
 
 def transparency(reflected, transmitted, kt):
     """Hearn & Baker's simple transparency (section 14-5): I = (1 - k_t) I_refl +
     k_t I_trans."""
-    kt = np.asarray(kt, np.float64)
+    kt = v.real_array("kt", kt, "(...)")
     if kt.size and (not np.isfinite(kt).all() or kt.min() < 0 or kt.max() > 1):
         raise ArgumentValueError("kt must be in 0..1")
     kt = kt[..., None] if kt.ndim else kt
-    return (1.0 - kt) * np.asarray(reflected) + kt * np.asarray(transmitted)
+    reflected = v.real_array("reflected", reflected, "(..., 3)")
+    transmitted = v.real_array("transmitted", transmitted, "(..., 3)")
+    try:
+        return (1.0 - kt) * reflected + kt * transmitted
+    except ValueError:
+        raise ArgumentValueError(f"reflected, transmitted and kt must match point for point, got "
+                                 f"shapes {reflected.shape}, {transmitted.shape} and "
+                                 f"{kt.shape}") from None

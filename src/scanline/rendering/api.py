@@ -11,6 +11,7 @@ pipeline and does nothing else (``docs/architecture.md``):
    found, blended over it (Hearn & Baker 14-5).
 """
 
+import math
 from dataclasses import replace
 from typing import Any, Iterable, Optional, Sequence, Tuple, Union
 
@@ -45,6 +46,7 @@ def render(fb: FrameBuffer, meshes: Union[Mesh, Iterable[Mesh]], camera: Camera,
            method: str = "z-buffer", shading: str = "gouraud",
            lights: Optional[Sequence[Any]] = None, materials: Any = None, colors: Any = None,
            specular: str = "phong", gamma: float = 2.2, cull_back_faces: bool = False,
+           crease_angle: Optional[float] = math.radians(30),
            depth_cue: Union[None, bool, Tuple[float, float]] = None, shadows: bool = False,
            samples: Optional[int] = None, layers: Optional[int] = None,
            key: Optional[str] = None, split_cycles: Optional[bool] = None,
@@ -156,10 +158,11 @@ def render(fb: FrameBuffer, meshes: Union[Mesh, Iterable[Mesh]], camera: Camera,
         raise ArgumentValueError(f"sl.render draws lit surfaces into modes {', '.join(MODES)}; "
                                  f"the frame buffer is mode {fb.mode!r} (shading='none' draws "
                                  f"the surfaces' colors into any mode)")
-    return run(fb, meshes, camera, options, materials=materials, colors=colors)
+    return run(fb, meshes, camera, options, materials=materials, colors=colors,
+               crease_angle=crease_angle)
 
 
-def run(fb, meshes, camera, options, materials=None, colors=None):
+def run(fb, meshes, camera, options, materials=None, colors=None, crease_angle=math.radians(30)):
     """The passes of :func:`render` with its options already made
     (:class:`RenderOptions`)."""
     from ..screen import prepare
@@ -168,7 +171,7 @@ def run(fb, meshes, camera, options, materials=None, colors=None):
     from ..visible.zbuffer import nearest
 
     scene = prepare(meshes, camera, fb.width, fb.height, materials, colors,
-                    options.cull_back_faces)
+                    options.cull_back_faces, crease_angle)
     shading = options.shading
     if options.shadows:
         from .shadows import ShadowMaps

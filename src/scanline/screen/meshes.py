@@ -5,11 +5,17 @@ plane normal, centroid and color that constant shading uses.
 A face of k vertices is cut into the k - 2 triangles of a fan from its first vertex;
 every later stage works on these facets (the rasterizers, the visible-surface
 methods' polygons, the interpolation of attributes) and reports the face each comes
-from.  Gouraud's vertex normals are averaged from the faces sharing the vertex
-(Hearn & Baker, section 14-5: N_v = sum N_k / |sum N_k|) unless the mesh gives its
-own; a face's normal is Newell's (Hearn & Baker, section 10-1), exact for planar
-faces and the best plane of a bent one.
+from.  A face's normal is Newell's (Hearn & Baker, section 10-1), exact for planar
+faces and the best plane of a bent one.  The normals at the vertices, where the mesh
+gives none, are the faces' around each vertex averaged, as modelers make them: split
+at a crease angle (a face's corner takes only the faces within that angle of its own,
+so a cube stays flat-faced and a cylinder keeps its rims) and weighted by each face's
+angle at the vertex (Thurmer & Wuthrich 1998, so that a face cut into more triangles
+weighs no more); ``crease_angle=None`` gives the book's plain average over every face
+sharing the vertex (Hearn & Baker, section 14-5: N_v = sum N_k / |sum N_k|).
 """
+
+import math
 
 import weakref
 from dataclasses import dataclass
@@ -33,6 +39,45 @@ def meshes_list(meshes, empty=False):
     from ..mesh import Mesh
 
     return list(v.one_or_many("meshes", meshes, Mesh, "a scanline.mesh.Mesh", empty=empty))
+
+
+#: The default crease angle (radians): faces meeting at a sharper angle keep their own
+#: normals at the shared vertex (about what modeling programs use).
+CREASE_ANGLE = math.radians(30.0)
+
+
+def corner_normals(mesh, crease_angle=CREASE_ANGLE):
+    """The unit normal at each face corner, (C, 3) in the order of
+    ``mesh.face_indices``: the mesh's own vertex normals where it has them, else the
+    normals of the faces around the vertex within ``crease_angle`` (radians, 0..pi) of
+    the corner's face, each weighted by its angle at the vertex; ``None``: the book's
+    plain average of every face around the vertex (:func:`averaged_normals`)."""
+    idx, off = mesh.face_indices, mesh.face_offsets
+    if mesh.normals is not None:
+        return unit_rows(mesh.normals[idx])
+    if crease_angle is None:
+        return averaged_normals(mesh)[idx]
+    from .._kernels._jit import call
+    from .._kernels.normals import crease_normals
+
+    sizes = np.diff(off)
+    owner = np.repeat(np.arange(mesh.face_count), sizes)
+    points = mesh.vertices[idx]
+    position = np.arange(len(idx)) - off[:-1][owner]
+    nxt = idx[off[:-1][owner] + (position + 1) % sizes[owner]]
+    prv = idx[off[:-1][owner] + (position - 1) % sizes[owner]]
+    a = mesh.vertices[nxt] - points
+    b = mesh.vertices[prv] - points
+    with np.errstate(all="ignore"):
+        angles = np.arctan2(np.linalg.norm(np.cross(a, b), axis=1), (a * b).sum(axis=1))
+    angles = np.nan_to_num(angles)
+    face_normals = unit_rows(newell_planes(points, off)[:, :3])
+    order = np.argsort(idx, kind="stable")
+    starts = np.searchsorted(idx[order], np.arange(len(mesh.vertices) + 1))
+    out = np.zeros((len(idx), 3))
+    call(crease_normals, 20 * len(idx), owner.astype(np.int64), face_normals, angles,
+         order.astype(np.int64), starts.astype(np.int64), math.cos(crease_angle), out)
+    return out
 
 
 def averaged_normals(mesh):
@@ -87,12 +132,14 @@ def _same(a, b):
     return a == b
 
 
-def mesh_arrays(mesh):
-    """The :class:`MeshArrays` of ``mesh``, computed once and kept while the mesh's
+def mesh_arrays(mesh, crease_angle=CREASE_ANGLE):
+    """The :class:`MeshArrays` of ``mesh`` (its vertex normals split at
+    ``crease_angle``, :func:`corner_normals`), computed once and kept while the mesh's
     vertices, faces, normals and colors are equal to what they were (they are public
-    arrays: a change in place is noticed by comparing them with copies).  Its arrays
-    are read-only in effect: several scenes share them."""
-    key = _key(mesh)
+    arrays: a change in place is noticed by comparing them with copies) and the crease
+    angle is the same.  Its arrays are read-only in effect: several scenes share
+    them."""
+    key = _key(mesh) + (crease_angle,)
     kept = _KEPT.get(mesh)
     if kept is not None and all(_same(a, b) for a, b in zip(kept[0], key)):
         return kept[1]
@@ -102,7 +149,10 @@ def mesh_arrays(mesh):
     f = tri.face_indices.reshape(-1, 3)
     facet_face = np.repeat(np.arange(mesh.face_count, dtype=np.int64), sizes - 2)
     world = mesh.vertices[f]
-    vertex = mesh.normals if mesh.normals is not None else averaged_normals(mesh)
+    # the corners of each facet among the face's corners: (0, j + 1, j + 2) of its fan
+    j = np.arange(len(facet_face)) - np.repeat(np.cumsum(sizes - 2) - (sizes - 2), sizes - 2)
+    first = off[:-1][facet_face]
+    corners = np.stack([first, first + j + 1, first + j + 2], axis=1)
     normals = unit_rows(np.cross(world[:, 1] - world[:, 0], world[:, 2] - world[:, 0]))
     points = mesh.vertices[idx]
     centroids = np.add.reduceat(points, off[:-1], axis=0) / sizes[:, None]
@@ -130,7 +180,7 @@ def mesh_arrays(mesh):
     else:
         face_colors = mesh.colors[:, :3] / 255.0
         colors = np.repeat(face_colors[facet_face][:, None], 3, axis=1)
-    arrays = MeshArrays(world, unit_rows(vertex[f]), normals, colors,
+    arrays = MeshArrays(world, corner_normals(mesh, crease_angle)[corners], normals, colors,
                         ~(np.abs(normals).sum(axis=1) > 0), facet_face,
                         unit_rows(plane[:, :3]), centroids, face_colors, planar)
     _KEPT[mesh] = (tuple(a.copy() if isinstance(a, np.ndarray) else a for a in key), arrays)

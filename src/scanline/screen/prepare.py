@@ -20,12 +20,14 @@ The same clipping serves polygons that a method makes in world coordinates (the
 pieces of a BSP tree): :func:`device_polygons`.
 """
 
+import math
+
 import numpy as np
 
 from .. import _validate as v
 from ..clip.volumes import Volume
 from ..errors import ArgumentTypeError, ArgumentValueError
-from .meshes import mesh_arrays, meshes_list
+from .meshes import CREASE_ANGLE, mesh_arrays, meshes_list
 from .polygons import flat_polygons
 from .scene import DevicePolygons, ScreenScene
 
@@ -173,7 +175,8 @@ def device_polygons(vertices, counts, labels, camera, width, height):
                          np.asarray(labels, np.int64)[whole], width, height)
 
 
-def prepare(meshes, camera, width, height, materials=None, colors=None, cull_back_faces=False):
+def prepare(meshes, camera, width, height, materials=None, colors=None, cull_back_faces=False,
+            crease_angle=CREASE_ANGLE):
     """The :class:`ScreenScene` of ``meshes`` seen by ``camera`` on a ``width`` x
     ``height`` device.
 
@@ -188,6 +191,10 @@ def prepare(meshes, camera, width, height, materials=None, colors=None, cull_bac
         the materials' colors).
     cull_back_faces : bool
         Drop the facets turned away from the viewer (Hearn & Baker, section 13-2).
+    crease_angle : float or None
+        Where a mesh gives no vertex normals, faces meeting at a sharper angle
+        (radians) keep their own normals at the shared vertex (default 30 degrees);
+        None: the plain average of every face around the vertex (Hearn & Baker 14-5).
     """
     from .._kernels._threads import call_in_bands
     from .._kernels.screen import project_faces
@@ -204,7 +211,12 @@ def prepare(meshes, camera, width, height, materials=None, colors=None, cull_bac
     check(PIXEL_BYTES * width * height, "width x height",
           f"the per-pixel buffers of a {width} x {height} render", "render a smaller image")
     mats = _materials(materials, len(meshes))
-    parts = [mesh_arrays(mesh) for mesh in meshes]
+    if crease_angle is not None:
+        crease_angle = v.number("crease_angle", crease_angle)
+        if not 0 <= crease_angle <= math.pi:
+            raise ArgumentValueError(f"crease_angle must be an angle in 0..pi radians (or None: "
+                                     f"no creases), got {v._show(crease_angle)}")
+    parts = [mesh_arrays(mesh, crease_angle) for mesh in meshes]
     sizes = [len(p.face_normals) for p in parts]
     face_mesh = _joined([np.full(n, i, np.int64) for i, n in enumerate(sizes)], (0,), np.int64)
     face_base = np.concatenate([[0], np.cumsum(sizes)]).astype(np.int64)

@@ -15,6 +15,8 @@ Workloads (fixed seed), at 1920 x 1080 RGB with a depth test:
   teapot, camera, shading="phong")`` -- preparation, clipping, z-buffer and per-pixel
   lighting all timed; Mesa: per-pixel Phong in a fragment shader, vertex buffers
   uploaded outside the clock.
+* ``teapot phong 4 samples``: the same with ``antialias=2`` (2 x 2 supersampling)
+  against llvmpipe's 4x MSAA (resolved, then read back).
 * ``methods``: every registered visible-surface method on one 100k-triangle scene.
 
 Ratios are peer time / scanline time (above 1: scanline is faster).
@@ -93,20 +95,25 @@ def gl_setup():
     return ctx, ctx.info.get("GL_RENDERER", "?")
 
 
-def gl_draw(ctx, program, buffers, fmt, names):
+def gl_draw(ctx, program, buffers, fmt, names, samples=0):
+    """A function drawing ``buffers`` with ``program`` from the clear to the pixels read
+    back; ``samples``: multisampling (MSAA), resolved into a plain buffer first."""
     import moderngl
 
     vbo = ctx.buffer(buffers.astype("f4").tobytes())
     vao = ctx.vertex_array(program, [(vbo, fmt, *names)])
-    fbo = ctx.framebuffer(color_attachments=[ctx.renderbuffer((W, H), 4)],
-                          depth_attachment=ctx.depth_renderbuffer((W, H)))
+    fbo = ctx.framebuffer(color_attachments=[ctx.renderbuffer((W, H), 4, samples=samples)],
+                          depth_attachment=ctx.depth_renderbuffer((W, H), samples=samples))
+    plain = ctx.framebuffer(color_attachments=[ctx.renderbuffer((W, H), 4)]) if samples else fbo
 
     def run():
         fbo.use()
         fbo.clear(0.0, 0.0, 0.0, 1.0, depth=1.0)
         ctx.enable(moderngl.DEPTH_TEST)
         vao.render(moderngl.TRIANGLES)
-        return fbo.read(components=4)
+        if samples:
+            ctx.copy_framebuffer(plain, fbo)
+        return plain.read(components=4)
     return run
 
 
@@ -179,6 +186,21 @@ def main():
             run = gl_draw(ctx, prog, data, "3f 3f", ("position", "normal"))
             report.add(work, "mesa", f"moderngl per-pixel Phong on {renderer}", run)
             report.target(work, "mesa", 1.0, ">= 1.0: at least as fast as Mesa llvmpipe")
+        # antialiased: 2 x 2 supersampling against 4x MSAA (four samples a pixel each;
+        # MSAA shades once a pixel, supersampling at every sample)
+        work_aa = work.replace("phong", "phong 4 samples")
+
+        def teapot_aa():
+            fb.clear()
+            sl.render(fb, teapot, cam, shading="phong", lights=lights, materials=mat,
+                      antialias=2)
+        report.add(work_aa, "scanline", 'sl.render(..., shading="phong", antialias=2)',
+                   teapot_aa)
+        if ctx is not None:
+            run = gl_draw(ctx, prog, data, "3f 3f", ("position", "normal"), samples=4)
+            report.add(work_aa, "mesa", f"moderngl MSAA 4x Phong on {renderer}", run)
+            report.target(work_aa, "mesa", 0.5, ">= 0.5: report (supersampling shades every "
+                          "sample, MSAA once a pixel)")
 
     # -- every method on one scene --------------------------------------------------------
     if run_group("methods"):

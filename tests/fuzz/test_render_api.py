@@ -48,7 +48,7 @@ OPTION = st.sampled_from([
     {"samples": 2}, {"samples": 10**9}, {"layers": -1}, {"key": "mean"}, {"key": 3},
     {"split_cycles": False}, {"split_cycles": "yes"}, {"max_pieces": 1}, {"max_work": 1},
     {"max_work": -5}, {"fallback": "z-buffer"}, {"fallback": "nope"}, {"material": 1},
-    {"crease_angle": None}, {"crease_angle": 0}, {"crease_angle": 3.2}, {"crease_angle": np.nan},
+    {"antialias": 2}, {"antialias": 0}, {"antialias": 3.5}, {"crease_angle": None}, {"crease_angle": 0}, {"crease_angle": 3.2}, {"crease_angle": np.nan},
 ])
 
 

@@ -4,6 +4,8 @@ shading options, back-face culling and shadows."""
 from dataclasses import dataclass, field
 from typing import Optional
 
+import numpy as np
+
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
 from ..shading.options import ShadingOptions
@@ -27,6 +29,8 @@ class RenderOptions:
         Shadow maps for the lights made with ``shadows=True`` (Williams 1978).
     fallback : str or None
         The method to draw with when ``method`` gives up on a scene.
+    antialias : int
+        Samples per pixel side of supersampling (1: none).
     """
     method: str = "z-buffer"
     visible: MethodOptions = field(default_factory=MethodOptions)
@@ -34,8 +38,14 @@ class RenderOptions:
     cull_back_faces: bool = False
     shadows: bool = False
     fallback: Optional[str] = None
+    antialias: int = 1
 
     def __post_init__(self):
+        a = self.antialias
+        if not isinstance(a, (int, np.integer)) or isinstance(a, bool) or not 1 <= a <= 8:
+            raise ArgumentValueError(f"antialias must be an integer in 1..8 (samples per pixel "
+                                     f"side; 1: none), got {v._show(a)}")
+        object.__setattr__(self, "antialias", int(a))
         for name in ("method", "fallback"):
             value = getattr(self, name)
             if (value is not None or name == "method") and value not in METHODS:

@@ -160,13 +160,14 @@ def _clipped(rows, counts, scale, offset):
     return dev, q, counts
 
 
-def device_polygons(vertices, counts, labels, camera, width, height):
+def device_polygons(vertices, counts, labels, camera, width, height, mapping=None):
     """World polygons (flat form: ``vertices`` (V, 3), ``counts`` (P,)) through
     ``camera`` onto a ``width`` x ``height`` device, clipped as the scene's facets are
     (:data:`CLIP_VOLUME`, before the divide), as :class:`ScreenPolygons` whose face is
     each polygon's entry of ``labels`` (P,), in the given order; those nothing is left
-    of, or seen edge-on, are dropped."""
-    clip, scale, offset = camera_mapping(camera, width, height)
+    of, or seen edge-on, are dropped.  ``mapping``: a scene's own ``(clip, scale,
+    offset)`` (:attr:`ScreenScene.mapping`) instead of the camera's on this device."""
+    clip, scale, offset = camera_mapping(camera, width, height) if mapping is None else mapping
     hom = np.hstack([vertices, np.ones((len(vertices), 1))]) @ clip.T
     dev, _, out = _clipped(np.ascontiguousarray(hom), np.asarray(counts, np.int64), scale,
                            offset)
@@ -291,7 +292,8 @@ def prepare(meshes, camera, width, height, materials=None, colors=None, cull_bac
     if polygons:
         plane[polygon_facet] = [_device_plane(p) for p in polygons]
     return ScreenScene(
-        width=width, height=height, camera=camera, eye=_viewer(camera), materials=mats,
+        width=width, height=height, camera=camera, mapping=(clip, scale, offset),
+        eye=_viewer(camera), materials=mats,
         face_mesh=face_mesh,
         face_normals=_joined([p.face_normals for p in parts], (0, 3)),
         face_centroids=_joined([p.face_centroids for p in parts], (0, 3)),

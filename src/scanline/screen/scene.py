@@ -64,6 +64,9 @@ class ScreenScene:
     ----------
     width, height : int
     camera : Camera
+    mapping : (clip (4, 4), scale (3,), offset (3,))
+        World to homogeneous clip coordinates, and NDC to device: device = NDC *
+        scale + offset per axis.
     eye : 3-vector or ViewerAtInfinity
         The viewer, for the illumination model.
     materials : tuple of Material
@@ -121,6 +124,7 @@ class ScreenScene:
     width: int
     height: int
     camera: object
+    mapping: tuple
     eye: object
     materials: tuple
     face_mesh: np.ndarray
@@ -274,6 +278,30 @@ class ScreenScene:
                       facet=np.ascontiguousarray(self.facet[keep_t]),
                       polygons=DevicePolygons(np.empty((0, 3, 3)), polys),
                       polygon_facet=self.polygon_facet[keep_p])
+        return ScreenScene(**fields)
+
+    def supersampled(self, n):
+        """The scene on a device ``n`` times finer in x and y: sample (i, j) of pixel (x,
+        y) at x' = n x + (n - 1) / 2 + ..., so that the n x n samples of a pixel lie
+        evenly around its center (as the A-buffer places them); device polygons, planes
+        and the device's size follow."""
+        c = (n - 1) / 2.0
+
+        def scaled(points):
+            out = np.array(points, np.float64, copy=True)
+            out[..., :2] = out[..., :2] * n + c
+            return out
+
+        a, b, cc, d = (self.planes[:, i] for i in range(4))
+        planes = np.stack([a / n, b / n, cc, d - (a + b) * c / n], axis=1)
+        fields = {name: getattr(self, name) for name in self.__dataclass_fields__}
+        clip, scale, offset = self.mapping
+        grow = np.array([n, n, 1.0])
+        fields.update(width=self.width * n, height=self.height * n,
+                      mapping=(clip, scale * grow, offset * grow + np.array([c, c, 0.0])),
+                      triangles=np.ascontiguousarray(scaled(self.triangles)), planes=planes,
+                      polygons=DevicePolygons(scaled(self.polygons._whole),
+                                              [scaled(p) for p in self.polygons._cut]))
         return ScreenScene(**fields)
 
     def __repr__(self):

@@ -129,7 +129,7 @@ def _bsp(scene, options):
     verts, piece_counts, pieces = tree.world_pieces(camera_eye(scene.camera, scene.width,
                                                                scene.height))
     return painted(scene, device_polygons(verts, piece_counts, pieces, scene.camera,
-                                          scene.width, scene.height))
+                                          scene.width, scene.height, scene.mapping))
 
 
 #: name -> :class:`Method`

@@ -21,7 +21,9 @@ FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-ne
 def client():
     from starlette.testclient import TestClient
 
-    with TestClient(create_app(), base_url="http://127.0.0.1") as c:
+    # the studio's pages send their Origin with every POST (and the server wants it)
+    with TestClient(create_app(), base_url="http://127.0.0.1",
+                    headers={"Origin": "http://127.0.0.1"}) as c:
         yield c
 
 

@@ -14,9 +14,11 @@ import argparse
 import math
 import operator
 
+from .. import budget
 from ..cli import Parser, UsageError
 from ..cli import trace as cli_trace
-from ..trace.conics import _mirror4
+from ..errors import MemoryBudgetError
+from ..trace.conics import MAX_RADIUS, _mirror4
 from ..trace.seedfill import EXAMPLE_GRID, _rows
 
 #: The first case the explorer shows for each algorithm (command-line arguments).
@@ -331,18 +333,89 @@ _VIEWS = {"bresenham": _lines, "dda": _lines, "midpoint-circle": _conics,
           "cox-de-boor": _cox_de_boor}
 
 
-def explore(algorithm, args):
+#: Estimated bytes that building, encoding and sending a view takes (measured with
+#: tracemalloc on CPython 3.11, rounded up): per table row of the Cox-de Boor and
+#: Cyrus-Beck views, per row of the conics (each lists its 4 or 8 pixels), per pixel of
+#: the scan-line fill's bounding box (each step lists its pixels), per vertex that a
+#: Sutherland-Hodgman step carries (the stage's polygon and the output so far), and per
+#: column and grid point of the floating horizon.
+ROW_BYTES, CONIC_ROW_BYTES, PIXEL_BYTES, VERTEX_BYTES = 1024, 4096, 256, 24
+COLUMN_BYTES, GRID_POINT_BYTES = 64, 96
+
+
+def _check(nbytes, argument, what, limit_bytes):
+    """:func:`scanline.budget.check` against ``limit_bytes`` (the studio's limit per
+    request), saying so in the message; ``None``: the package's own budget."""
+    hint = "ask for a smaller case"
+    if limit_bytes is None:
+        return budget.check(nbytes, argument, what, hint=hint)
+    try:
+        budget.check(nbytes, argument, what, hint=hint, limit_bytes=limit_bytes)
+    except MemoryBudgetError as error:
+        first = str(error).split("; ", 1)[0]
+        raise MemoryBudgetError(f"{first}; the studio takes at most {int(limit_bytes):,} bytes "
+                                "per request: ask for a smaller case, or run scanline trace "
+                                "on the command line") from None
+
+
+def check_memory(ns, limit_bytes=None):
+    """Refuse (:class:`~scanline.errors.MemoryBudgetError`, naming the argument) a case
+    whose view would take more than ``limit_bytes`` (default: the package's memory
+    budget), estimated from its sizes before anything is computed.  Sizes the tracer
+    itself refuses are left to it, so that its message is the command line's."""
+    a = ns.algorithm
+    if a == "floating-horizon":
+        columns, grid = COLUMN_BYTES * ns.width, GRID_POINT_BYTES * ns.nx * ns.ny
+        if columns >= grid:
+            _check(columns + grid, "--width", f"a horizon {ns.width} columns wide", limit_bytes)
+        else:
+            _check(columns + grid, "--nx" if ns.nx >= ns.ny else "--ny",
+                   f"a {ns.nx} x {ns.ny} grid", limit_bytes)
+    elif a == "cox-de-boor":
+        n, d = len(ns.knots), max(ns.order, 0)
+        rows = min(d * (d + 1) // 2, n * d)
+        if ROW_BYTES * rows >= COLUMN_BYTES * n:
+            _check(ROW_BYTES * rows + COLUMN_BYTES * n, "--order",
+                   f"order {d} (up to {rows:,} rows)", limit_bytes)
+        else:
+            _check(ROW_BYTES * rows + COLUMN_BYTES * n, "--knots", f"{n:,} knots", limit_bytes)
+    elif a == "cyrus-beck" and ns.window_polygon:
+        k = len(ns.window_polygon) // 2
+        _check(ROW_BYTES * k, "--window-polygon", f"a window of {k:,} edges", limit_bytes)
+    elif a == "sutherland-hodgman":
+        n = len(ns.points)
+        k = len(ns.window_polygon) // 2 if ns.window_polygon else 4
+        nbytes = VERTEX_BYTES * k * n * 2 * n
+        _check(nbytes, "--window-polygon" if k > n else "points",
+               f"{n:,} vertices clipped by {k:,} boundaries", limit_bytes)
+    elif a == "scan-line-fill" and ns.points:
+        xs = [p[0] for p in ns.points if p]
+        ys = [p[1] for p in ns.points if len(p) > 1]
+        if xs and ys and all(math.isfinite(c) for c in xs + ys):
+            w, h = max(xs) - min(xs) + 1, max(ys) - min(ys) + 1
+            _check(PIXEL_BYTES * w * h, "points", f"a polygon of {w:g} x {h:g} pixels",
+                   limit_bytes)
+    elif a == "midpoint-circle" and 0 <= ns.r <= MAX_RADIUS:
+        _check(CONIC_ROW_BYTES * ns.r * 0.71, "R", f"a circle of radius {ns.r}", limit_bytes)
+    elif a == "midpoint-ellipse" and 0 <= ns.rx <= MAX_RADIUS and 0 <= ns.ry <= MAX_RADIUS:
+        _check(CONIC_ROW_BYTES * (ns.rx + ns.ry), "RX" if ns.rx >= ns.ry else "RY",
+               f"an ellipse of semi-axes {ns.rx} and {ns.ry}", limit_bytes)
+
+
+def explore(algorithm, args, limit_bytes=None):
     """The explorer's view of ``scanline trace ALGORITHM ARGS...``: a JSON-ready dict
     with the table (title, notes, columns, rows as lists in column order), one step
     per row (``steps``; or, for the line algorithms, ``pixel_columns`` naming the
     columns that hold each row's pixel and ``rules``, rule templates filled from
     each row's columns and the template each row used), the static shapes, the
-    grid bounds and the handles."""
-    return view_of(parse(algorithm, args))
+    grid bounds and the handles.  A case whose view would take more than
+    ``limit_bytes`` is refused first (:func:`check_memory`)."""
+    return view_of(parse(algorithm, args), limit_bytes)
 
 
-def view_of(ns):
+def view_of(ns, limit_bytes=None):
     """The explorer's view of parsed arguments (see :func:`explore`)."""
+    check_memory(ns, limit_bytes)
     if ns.algorithm in ("midpoint-circle", "midpoint-ellipse") and ns.center is None:
         ns.center = [0, 0]
     table = cli_trace.table_of(ns)

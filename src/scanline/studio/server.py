@@ -9,17 +9,43 @@ scripts and style under ``/static``.  The JSON API:
 ``GET  /api/devices/{raster|random}/frame?t`` the screen at time t (raw RGBA, beam in headers)
 ``GET  /api/devices/raster/plane/{k}.png``    a bit plane of the frame buffer
 ``POST /api/ws``                              a new workstation; then ``/api/ws/{id}/...``:
-``GET  state``, ``GET image.png``, ``POST settings|position|request|input|await|drag|delete``
+``GET  state``, ``GET image.png``, ``POST settings|position|request|input|await|drag|delete|close``
 
-Every request runs in a worker thread with a time limit (:data:`TIME_LIMIT`);
-bad input answers 422 with the message the Python API (or the command line) gives.
-No endpoint reads or writes files, except the package's own static assets.
+How the studio keeps its neighbours (and itself) safe, on one machine shared with
+other work and other web pages (docs/studio.md says the same for users):
+
+* **Expensive work runs in worker processes** (:mod:`scanline.studio.pool`): the
+  explorer's traces and the device simulations.  A request past :data:`TIME_LIMIT`
+  is answered 503 and its worker killed, so its CPU is free at once; at most
+  ``pool.WORKERS`` run at once, a few more wait briefly, the rest are answered 503.
+* **Memory per request is bounded**: the explorer estimates a case's memory from its
+  sizes and refuses one over :data:`REQUEST_MEMORY` (422 naming the argument, from
+  :func:`scanline.budget.check`); behind the estimates each worker's address space is
+  limited.  Workstations hold at most ``workstation.MAX_SEGMENTS`` segments and
+  ``workstation.MAX_POINTS`` positions, so their actions stay cheap.
+* **Bodies are read in chunks** and refused (413) as soon as they pass
+  :data:`MAX_BODY`, whatever Content-Length says; a body that is not a JSON object,
+  nests deeper than :data:`MAX_DEPTH`, or has a field of the wrong type is 400.
+* **Only the studio's own pages may act**: a POST needs ``Content-Type:
+  application/json`` and an ``Origin`` equal to the studio's own (browsers send it;
+  other pages cannot forge it), and an API request a browser marks
+  ``Sec-Fetch-Site: cross-site`` or ``same-site`` is refused (403).  Workstations
+  belong to the session (a cookie) that created them: another session gets 404 for
+  them, and a session may hold :data:`MAX_WORKSTATIONS_PER_SESSION` of them (429 past
+  that; 503 when the studio holds :data:`MAX_WORKSTATIONS`), never evicting another's.
+* **Each workstation has its own lock**: a slow action on one delays no other.
+* **Ctrl-C stops the server at once**, workers killed, also while they are busy.
+* The Host header must name this machine (DNS rebinding), static files come only from
+  the package's static folder, and the pages show server text with ``textContent``.
 """
 
-import collections
+import contextlib
 import gc
+import math
+import re
 import secrets
 import threading
+import time
 from importlib import resources
 
 import anyio
@@ -27,20 +53,35 @@ import orjson
 from starlette.applications import Starlette
 from starlette.middleware import Middleware
 from starlette.middleware.trustedhost import TrustedHostMiddleware
+from starlette.requests import ClientDisconnect
 from starlette.responses import FileResponse, Response
 from starlette.routing import Mount, Route
 from starlette.staticfiles import StaticFiles
 
 from ..errors import ScanlineError
-from . import devices, explorer
+from . import explorer
+from .pool import Pool, PoolError
 from .workstation import Workstation
 
-#: Seconds a request may take before it is answered 503.
+#: Seconds of work a request may take before it is answered 503 and stopped.
 TIME_LIMIT = 10.0
-#: Workstations kept (least recently used dropped first).
-MAX_WORKSTATIONS = 32
+#: Bytes one explorer request may need, by the estimate of
+#: :func:`scanline.studio.explorer.check_memory` (past it: 422 naming the argument).
+REQUEST_MEMORY = 256 << 20
+#: Workstations the studio holds in all (past it: 503).
+MAX_WORKSTATIONS = 64
+#: Workstations one session (one browser) may hold (past it: 429).
+MAX_WORKSTATIONS_PER_SESSION = 8
+#: Seconds a workstation may go unused before it is dropped.
+WORKSTATION_IDLE = 3600.0
 #: Largest request body, in bytes.
 MAX_BODY = 1 << 20
+#: Deepest nesting of lists and objects in a request body.
+MAX_DEPTH = 32
+#: Threads that run workstation actions at once.
+WORKSTATION_THREADS = 4
+#: The session cookie: which workstations a browser owns.
+SESSION_COOKIE = "scanline_studio"
 
 STATIC = resources.files("scanline.studio") / "static"
 BAD = (ScanlineError, ValueError, TypeError, KeyError, explorer.BadArguments)
@@ -60,38 +101,18 @@ def _error(status, message):
     return JSONResponse({"error": " ".join(str(message).split())}, status_code=status)
 
 
-#: Set once the start-up warm-up has compiled the kernels the pages use.
+#: Set once the start-up warm-up has compiled the kernels the workstation uses.
 _WARM = threading.Event()
 
 
 def warm_up():
-    """Compile (or load from numba's cache) what the pages reach first: the device
-    simulations' frame buffer, the workstation's picture and a few traces.  On an
-    empty cache this takes a while; requests wait for it before their time limit
-    starts, so the limit bounds their own work, not a one-off compilation."""
+    """Compile (or load from numba's cache) what the workstation draws with; the
+    explorer and the device pages warm up in their worker processes.  Workstation
+    requests wait for it."""
     try:
-        devices.frame_buffer()
         Workstation().png()
-        for name in ("bresenham", "midpoint-circle", "cohen-sutherland"):
-            explorer.explore(name, explorer.DEFAULTS[name])
     finally:
         _WARM.set()
-
-
-async def _run(fn, *args):
-    """Run ``fn(*args)`` in a worker thread within the time limit (after the warm-up);
-    map bad input to 422 and a timeout to 503."""
-    if not _WARM.is_set():
-        await anyio.to_thread.run_sync(_WARM.wait)
-    try:
-        with anyio.fail_after(TIME_LIMIT):
-            return await anyio.to_thread.run_sync(fn, *args, abandon_on_cancel=True)
-    except TimeoutError:
-        raise _Fail(503, f"the request took longer than {TIME_LIMIT:g} s and was stopped; "
-                         "ask for a smaller case") from None
-    except BAD as error:
-        message = error.args[0] if isinstance(error, KeyError) and error.args else error
-        raise _Fail(422, message) from None
 
 
 class _Fail(Exception):
@@ -100,26 +121,107 @@ class _Fail(Exception):
         self.status = status
 
 
-async def _body(request):
-    raw = await request.body()
-    if len(raw) > MAX_BODY:
-        raise _Fail(413, f"the request body is {len(raw)} bytes; at most {MAX_BODY}")
-    try:
-        import json
+# -- what a request must be ------------------------------------------------------------
+def _origin(request):
+    return f"{request.url.scheme}://{request.headers.get('host', '')}".lower()
 
-        data = json.loads(raw or b"{}")
-    except ValueError as error:
-        raise _Fail(400, f"the body is not JSON: {error}") from None
+
+def _check_site(request):
+    """Refuse an API request that a browser says comes from another site's page."""
+    site = request.headers.get("sec-fetch-site")
+    if site is not None and site not in ("same-origin", "none"):
+        raise _Fail(403, f"a request from another site's page ({site}) is refused: only "
+                         f"the studio's own pages ({_origin(request)}) may use its API")
+
+
+def _check_post(request):
+    """A POST must carry JSON and come from one of the studio's own pages."""
+    media = request.headers.get("content-type", "").split(";")[0].strip().lower()
+    if media != "application/json":
+        raise _Fail(403, f"a POST must have Content-Type: application/json, not {media!r}")
+    origin = request.headers.get("origin")
+    expected = _origin(request)
+    if origin is None:
+        raise _Fail(403, f"a POST needs the header Origin: {expected} (the studio's pages send "
+                         "it)")
+    if origin.strip().lower() != expected:
+        raise _Fail(403, f"a POST from the origin {origin!r} is refused: only the studio's own "
+                         f"pages ({expected}) may post")
+
+
+def _too_deep(data, limit):
+    stack = [(data, 1)]
+    while stack:
+        item, depth = stack.pop()
+        if isinstance(item, (dict, list)):
+            if depth > limit:
+                return True
+            stack.extend((v, depth + 1) for v in (item.values() if isinstance(item, dict)
+                                                   else item))
+    return False
+
+
+async def _body(request):
+    """The request's JSON object, read in chunks and refused as soon as it passes
+    MAX_BODY (400: not a JSON object; 413: too large)."""
+    declared = request.headers.get("content-length")
+    if declared is not None:
+        if not declared.strip().isdigit():
+            raise _Fail(400, f"Content-Length {declared!r} is not a number of bytes")
+        if int(declared) > MAX_BODY:
+            raise _Fail(413, f"the request body is {int(declared)} bytes; at most {MAX_BODY}")
+    raw = bytearray()
+    try:
+        async for chunk in request.stream():
+            raw += chunk
+            if len(raw) > MAX_BODY:
+                raise _Fail(413, f"the request body is more than {MAX_BODY} bytes; at most "
+                                 f"{MAX_BODY}")
+    except ClientDisconnect:
+        raise _Fail(400, "the client went away before sending the whole body") from None
+    if not raw.strip():
+        return {}
+    try:
+        data = orjson.loads(raw)
+    except orjson.JSONDecodeError as error:
+        raise _Fail(400, f"the body is not JSON (UTF-8, no NaN or Infinity): {error}") from None
     if not isinstance(data, dict):
-        raise _Fail(400, "the body must be a JSON object")
+        raise _Fail(400, f"the body must be a JSON object, not a {type(data).__name__}")
+    if _too_deep(data, MAX_DEPTH):
+        raise _Fail(400, f"the body nests lists and objects more than {MAX_DEPTH} deep")
     return data
 
 
-def _endpoint(fn):
+def _kind_of(value):
+    return {bool: "true or false", str: "a string", list: "a list", dict: "an object",
+            float: "a number"}.get(value, value.__name__)
+
+
+def _fields(data, spec):
+    """Check the types of the body's fields that ``spec`` names ({name: type}; a
+    number is ``float``); None stands for a field not given.  400 names the field."""
+    for name, kind in spec.items():
+        value = data.get(name)
+        if value is None:
+            continue
+        ok = (isinstance(value, (int, float)) and not isinstance(value, bool)) if kind is float \
+            else isinstance(value, kind)
+        if not ok:
+            shown = orjson.dumps(value)[:60].decode("utf-8", "replace")
+            raise _Fail(400, f"{name} must be {_kind_of(kind)}, got {shown}")
+    return data
+
+
+def _endpoint(fn, post=False):
     async def wrapped(request):
         try:
+            _check_site(request)
+            if post:
+                _check_post(request)
             return await fn(request)
         except _Fail as fail:
+            return _error(fail.status, fail)
+        except PoolError as fail:
             return _error(fail.status, fail)
     return wrapped
 
@@ -130,152 +232,265 @@ def _page(name):
     return page
 
 
-class Sessions:
-    """The workstations, by id, least recently used dropped first."""
+# -- workstations -------------------------------------------------------------------------
+class _Entry:
+    """A workstation, its owner (a session), its own lock, when it was last used, and
+    its last picture (version, PNG)."""
+
+    def __init__(self, ws, owner):
+        self.ws, self.owner = ws, owner
+        self.lock = threading.Lock()
+        self.used = time.monotonic()
+        self.png = (None, b"")
+
+
+class Workstations:
+    """The workstations, by id; each belongs to the session that created it."""
 
     def __init__(self):
-        self._items = collections.OrderedDict()
+        self._items = {}
         self._lock = threading.Lock()
 
-    def new(self):
-        ws = Workstation()
-        key = secrets.token_hex(8)
-        with self._lock:
-            self._items[key] = ws
-            while len(self._items) > MAX_WORKSTATIONS:
-                self._items.popitem(last=False)
-        return key, ws
+    def __len__(self):
+        return len(self._items)
 
-    def get(self, key):
+    def _expire(self, now):
+        for key, entry in list(self._items.items()):
+            if now - entry.used > WORKSTATION_IDLE and not entry.lock.locked():
+                del self._items[key]
+
+    def new(self, owner):
+        ws = Workstation()
+        now = time.monotonic()
         with self._lock:
-            ws = self._items.get(key)
-            if ws is None:
-                raise _Fail(404, f"no workstation {key!r} (it may have expired): reload the page")
-            self._items.move_to_end(key)
-            return ws
+            self._expire(now)
+            mine = sum(1 for e in self._items.values() if e.owner == owner)
+            if mine >= MAX_WORKSTATIONS_PER_SESSION:
+                raise _Fail(429, f"this browser has {mine} workstations open, the most one "
+                                 "session may hold: close a workstation page first (unused "
+                                 f"ones are dropped after {WORKSTATION_IDLE:g} s)")
+            if len(self._items) >= MAX_WORKSTATIONS:
+                raise _Fail(503, f"the studio holds {len(self._items)} workstations, its limit; "
+                                 "try again later")
+            key = secrets.token_hex(16)
+            entry = self._items[key] = _Entry(ws, owner)
+        return key, entry
+
+    def get(self, key, owner):
+        with self._lock:
+            entry = self._items.get(key)
+            if entry is None or owner is None or not secrets.compare_digest(entry.owner, owner):
+                raise _Fail(404, f"no workstation {key[:40]!r} in this session (it may have "
+                                 "expired): reload the page")
+            entry.used = time.monotonic()
+            return entry
+
+    def close(self, key, owner):
+        entry = self.get(key, owner)
+        with self._lock:
+            if self._items.get(key) is entry:
+                del self._items[key]
+
+
+_SESSION = re.compile(r"[0-9a-f]{32}")
+
+
+def _session(request):
+    value = request.cookies.get(SESSION_COOKIE, "")
+    return value if _SESSION.fullmatch(value) else None
 
 
 #: The Host names a loopback studio answers to: a page elsewhere that rebinds its own
 #: name to 127.0.0.1 (DNS rebinding) is refused.
 LOOPBACK = ("127.0.0.1", "localhost", "::1", "[::1]")
 
+_WS_FIELDS = {
+    "settings": {"mode": str, "grid": float, "snap": bool, "gravity": float,
+                 "constraint": str, "tool": str},
+    "position": {"position": list, "anchor": list},
+    "request": {"device": str},
+    "input": {"device": str, "value": dict},
+    "await": {},
+    "drag": {"segment": str, "delta": list},
+    "delete": {"segment": str},
+    "close": {},
+}
 
-def create_app(allowed_hosts=LOOPBACK):
+
+def create_app(allowed_hosts=LOOPBACK, workers=None, address_space=None):
     """The studio's Starlette application, answering requests whose Host is one of
-    ``allowed_hosts`` (``("*",)``: any)."""
-    sessions = Sessions()
-    lock = threading.Lock()   # one workstation change at a time
+    ``allowed_hosts`` (``("*",)``: any); ``workers`` and ``address_space`` size its
+    worker pool (default: :data:`scanline.studio.pool.WORKERS`, ``ADDRESS_SPACE``).
+    The pool is ``app.state.pool``, the workstations ``app.state.workstations``."""
+    sessions = Workstations()
+    pool = Pool(workers, address_space)
+    limiter = []
 
-    @_endpoint
+    async def on_workstation(entry, fn):
+        """``fn(ws)`` in a thread, holding the workstation's own lock; bad input: 400
+        (a wrong type) or 422."""
+        if not _WARM.is_set():
+            await anyio.to_thread.run_sync(_WARM.wait)
+        if not limiter:
+            limiter.append(anyio.CapacityLimiter(WORKSTATION_THREADS))
+
+        def locked():
+            if not entry.lock.acquire(timeout=TIME_LIMIT):
+                raise _Fail(503, "the workstation is busy with another request; try again")
+            try:
+                return fn(entry.ws)
+            finally:
+                entry.lock.release()
+
+        try:
+            return await anyio.to_thread.run_sync(locked, limiter=limiter[0])
+        except _Fail:
+            raise
+        except TypeError as error:
+            raise _Fail(400, error) from None
+        except BAD as error:
+            message = error.args[0] if isinstance(error, KeyError) and error.args else error
+            raise _Fail(422, message) from None
+
+    async def in_worker(task, *args):
+        return await pool.run(task, args, TIME_LIMIT)
+
     async def algorithms(request):
         return JSONResponse(explorer.catalog())
 
-    @_endpoint
     async def explore(request):
-        data = await _body(request)
-        view = await _run(explorer.explore, data.get("algorithm"), data.get("args", []))
-        return JSONResponse(view)
+        data = _fields(await _body(request), {"algorithm": str, "args": list})
+        algorithm, args = data.get("algorithm"), data.get("args", [])
+        if algorithm is None:
+            raise _Fail(400, "algorithm must be a string: one of " + ", ".join(explorer._SUBS))
+        if args is None or not all(isinstance(a, str) for a in args):
+            raise _Fail(400, "args must be a list of strings, as on the command line")
+        body = await in_worker("explore", algorithm, args, REQUEST_MEMORY)
+        return Response(body, media_type="application/json")
 
     def _kind(request):
         kind = request.path_params["kind"]
         if kind not in ("raster", "random"):
-            raise _Fail(404, f"no display device {kind!r}: raster or random")
+            raise _Fail(404, f"no display device {kind[:40]!r}: raster or random")
         return kind
 
-    @_endpoint
     async def device_info(request):
         kind = _kind(request)
-        q = dict(request.query_params)
-        return JSONResponse(await _run(lambda: devices.info(devices.simulation(kind, q))))
+        return Response(await in_worker("device_info", kind, dict(request.query_params)),
+                        media_type="application/json")
 
-    @_endpoint
     async def device_frame(request):
         kind = _kind(request)
         q = dict(request.query_params)
-
-        def make():
-            sim = devices.simulation(kind, q)
-            return devices.frame(sim, float(q.get("t", 0)))
-
-        data, (x, y, state) = await _run(make)
+        try:
+            t = float(q.get("t", 0))
+        except ValueError:
+            raise _Fail(422, f"t={q.get('t')[:40]!r} must be a number of seconds") from None
+        if not math.isfinite(t):
+            raise _Fail(422, f"t={t} must be finite")
+        data, (x, y, state) = await in_worker("device_frame", kind, q, t)
         return Response(data, media_type="application/octet-stream",
                         headers={"X-Beam": f"{x:.3f},{y:.3f},{state}", "Cache-Control": "no-store"})
 
-    @_endpoint
     async def device_plane(request):
-        png = await _run(devices.plane_png, int(request.path_params["k"]))
+        png = await in_worker("device_plane", int(request.path_params["k"]))
         return Response(png, media_type="image/png")
 
-    @_endpoint
     async def ws_new(request):
-        key, ws = sessions.new()
-        return JSONResponse({"id": key, "state": ws.state()})
+        await _body(request)
+        owner = _session(request)
+        fresh = owner is None
+        if fresh:
+            owner = secrets.token_hex(16)
+        key, entry = sessions.new(owner)
+        state = await on_workstation(entry, lambda ws: ws.state())
+        response = JSONResponse({"id": key, "state": state})
+        if fresh:
+            response.set_cookie(SESSION_COOKIE, owner, httponly=True, samesite="strict", path="/")
+        return response
 
-    @_endpoint
     async def ws_state(request):
-        return JSONResponse(sessions.get(request.path_params["id"]).state())
+        entry = sessions.get(request.path_params["id"], _session(request))
+        return JSONResponse(await on_workstation(entry, lambda ws: ws.state()))
 
-    @_endpoint
     async def ws_image(request):
-        ws = sessions.get(request.path_params["id"])
-        return Response(await _run(ws.png), media_type="image/png",
+        entry = sessions.get(request.path_params["id"], _session(request))
+
+        def picture(ws):
+            version, png = entry.png
+            if version != ws.version:
+                png = ws.png()
+                entry.png = (ws.version, png)
+            return png
+
+        return Response(await on_workstation(entry, picture), media_type="image/png",
                         headers={"Cache-Control": "no-store"})
 
-    @_endpoint
     async def ws_action(request):
-        ws = sessions.get(request.path_params["id"])
-        action = request.path_params["action"]
-        data = await _body(request)
+        key, action = request.path_params["id"], request.path_params["action"]
+        owner = _session(request)
+        entry = sessions.get(key, owner)
+        if action not in _WS_FIELDS:
+            raise _Fail(404, f"no workstation action {action[:40]!r}")
+        data = _fields(await _body(request), _WS_FIELDS[action])
+        if action == "close":
+            sessions.close(key, owner)
+            return JSONResponse({"closed": key})
 
-        def act():
-            with lock:
-                if action == "settings":
-                    ws.settings(**{k: data[k] for k in ("mode", "grid", "snap", "gravity",
-                                                         "constraint", "tool") if k in data})
-                    out = {}
-                elif action == "position":
-                    out = ws.position(*data.get("position", (None, None)),
-                                      anchor=data.get("anchor"))
-                elif action == "request":
-                    ws.request(data.get("device"))
-                    out = {}
-                elif action == "input":
-                    out = ws.input(data.get("device"), data.get("value"))
-                elif action == "await":
-                    out = {"event": ws.await_event()}
-                elif action == "drag":
-                    delta = data.get("delta", (None, None))
-                    if not isinstance(delta, (list, tuple)) or len(delta) != 2:
-                        raise TypeError(f"delta must be a pair [dx, dy], got {delta!r}")
-                    out = ws.drag(data.get("segment"), *delta)
-                elif action == "delete":
-                    ws.delete(data.get("segment"))
-                    out = {}
-                else:
-                    raise _Fail(404, f"no workstation action {action!r}")
-                return {**out, "state": ws.state()}
+        def act(ws):
+            if action == "settings":
+                ws.settings(**{k: data[k] for k in ("mode", "grid", "snap", "gravity",
+                                                     "constraint", "tool") if k in data})
+                out = {}
+            elif action == "position":
+                position = data.get("position") or (None, None)
+                if len(position) != 2:
+                    raise TypeError(f"position must be a pair [x, y], got {len(position)} numbers")
+                out = ws.position(*position, anchor=data.get("anchor"))
+            elif action == "request":
+                ws.request(data.get("device"))
+                out = {}
+            elif action == "input":
+                out = ws.input(data.get("device"), data.get("value"))
+            elif action == "await":
+                out = {"event": ws.await_event()}
+            elif action == "drag":
+                delta = data.get("delta")
+                if not isinstance(delta, list) or len(delta) != 2:
+                    raise TypeError(f"delta must be a pair [dx, dy], got {delta!r}"[:120])
+                out = ws.drag(data.get("segment"), *delta)
+            else:   # delete
+                ws.delete(data.get("segment"))
+                out = {}
+            return {**out, "state": ws.state()}
 
-        try:
-            return JSONResponse(await _run(act))
-        except _Fail as fail:
-            return _error(fail.status, fail)
+        return JSONResponse(await on_workstation(entry, act))
 
     routes = [
         Route("/", _page("index.html")),
         Route("/explorer", _page("explorer.html")),
         Route("/devices", _page("devices.html")),
         Route("/workstation", _page("workstation.html")),
-        Route("/api/algorithms", algorithms),
-        Route("/api/explore", explore, methods=["POST"]),
-        Route("/api/devices/{kind:str}/info", device_info),
-        Route("/api/devices/{kind:str}/frame", device_frame),
-        Route("/api/devices/raster/plane/{k:int}.png", device_plane),
-        Route("/api/ws", ws_new, methods=["POST"]),
-        Route("/api/ws/{id:str}/state", ws_state),
-        Route("/api/ws/{id:str}/image.png", ws_image),
-        Route("/api/ws/{id:str}/{action:str}", ws_action, methods=["POST"]),
+        Route("/api/algorithms", _endpoint(algorithms)),
+        Route("/api/explore", _endpoint(explore, post=True), methods=["POST"]),
+        Route("/api/devices/{kind:str}/info", _endpoint(device_info)),
+        Route("/api/devices/{kind:str}/frame", _endpoint(device_frame)),
+        Route("/api/devices/raster/plane/{k:int}.png", _endpoint(device_plane)),
+        Route("/api/ws", _endpoint(ws_new, post=True), methods=["POST"]),
+        Route("/api/ws/{id:str}/state", _endpoint(ws_state)),
+        Route("/api/ws/{id:str}/image.png", _endpoint(ws_image)),
+        Route("/api/ws/{id:str}/{action:str}", _endpoint(ws_action, post=True), methods=["POST"]),
         Mount("/static", StaticFiles(directory=str(STATIC)), name="static"),
     ]
+
+    @contextlib.asynccontextmanager
+    async def lifespan(app):
+        pool.start()
+        try:
+            yield
+        finally:
+            with anyio.CancelScope(shield=True):
+                await anyio.to_thread.run_sync(pool.reap)
 
     # The app's long-lived objects (numba, numpy, the kernels) go to the permanent
     # generation, so that the garbage collections a large table's rows trigger do not
@@ -283,12 +498,17 @@ def create_app(allowed_hosts=LOOPBACK):
     gc.collect()
     gc.freeze()
     threading.Thread(target=warm_up, daemon=True, name="scanline-studio-warm-up").start()
-    return Starlette(routes=routes, middleware=[
+    app = Starlette(routes=routes, lifespan=lifespan, middleware=[
         Middleware(TrustedHostMiddleware, allowed_hosts=list(allowed_hosts))])
+    app.router.redirect_slashes = False     # '/api/ws/' is 404, not a redirect to follow
+    app.state.pool = pool
+    app.state.workstations = sessions
+    return app
 
 
 def serve(host="127.0.0.1", port=8765):
-    """Serve the studio with uvicorn until interrupted, printing its address."""
+    """Serve the studio with uvicorn until interrupted, printing its address.  Ctrl-C
+    (or SIGTERM) kills the worker processes at once, busy or not, and stops."""
     import uvicorn
 
     hosts = LOOPBACK
@@ -296,7 +516,10 @@ def serve(host="127.0.0.1", port=8765):
         print(f"scanline studio: listening on {host}, not only this machine: anyone who can "
               "reach this address can use the studio")
         hosts = ("*",)
-    config = uvicorn.Config(create_app(hosts), host=host, port=port, log_level="warning")
+    app = create_app(hosts)
+    pool = app.state.pool
+    config = uvicorn.Config(app, host=host, port=port, log_level="warning",
+                            timeout_graceful_shutdown=2)
     server = uvicorn.Server(config)
 
     original = server.startup
@@ -309,5 +532,15 @@ def serve(host="127.0.0.1", port=8765):
                 print(f"scanline studio: http://{'[' + h + ']' if ':' in h else h}:{p}/ "
                       "(Ctrl-C stops it)", flush=True)
 
+    handle_exit = server.handle_exit
+
+    def stop(sig, frame):
+        pool.close()          # no locks: safe in a signal handler
+        handle_exit(sig, frame)
+
     server.startup = startup
-    server.run()
+    server.handle_exit = stop
+    try:
+        server.run()
+    finally:
+        pool.reap()

@@ -42,6 +42,10 @@ MAX_EVENTS = 64
 MAX_SEGMENTS = 200
 MAX_STROKE = 2000
 MAX_TEXT = 200
+#: Positions (stroke and rubber-band points, text characters) the operator's segments
+#: hold in all: with MAX_SEGMENTS this bounds what a picture, a pick or the gravity
+#: field costs (20,000 random stroke points draw in about half a second).
+MAX_POINTS = 20_000
 
 
 def _scene(df):
@@ -100,6 +104,7 @@ class Workstation:
         self._count = 0
         self._moves = {}     # segment -> (tx, ty) world translation
         self._turns = {}     # segment -> degrees
+        self._sizes = {}     # segment -> positions it holds (MAX_POINTS)
 
     # -- geometry -------------------------------------------------------------------
     @property
@@ -112,9 +117,18 @@ class Workstation:
 
     def device(self, wx, wy):
         """World -> device (the forward mapping), for the page's echo."""
-        m = sl.viewing.ndc_to_device(WIDTH, HEIGHT) @ self.df.normalization
-        x, y = sl.transform.apply(m, [(wx, wy)])[0]
+        x, y = sl.transform.apply(self._forward(), [(wx, wy)])[0]
         return float(x), float(y)
+
+    def _forward(self):
+        return sl.viewing.ndc_to_device(WIDTH, HEIGHT) @ self.df.normalization
+
+    def _worlds(self, points):
+        """Device -> world for an (N, 2) array at once (the locator's inverse mapping,
+        as :meth:`world`)."""
+        m = sl.transform.compose(sl.transform.inverse(self.df.normalization),
+                                 sl.transform.inverse(sl.viewing.ndc_to_device(WIDTH, HEIGHT)))
+        return [tuple(p) for p in sl.transform.apply(m, np.asarray(points, float)).tolist()]
 
     def _lines(self):
         """Every polyline and polygon edge of the visible segments, in world
@@ -152,7 +166,7 @@ class Workstation:
                 den = (d * d).sum(axis=1)
                 t = np.clip(((np.array([wx, wy]) - a) * d).sum(axis=1) / np.where(den == 0, 1, den), 0, 1)
                 near = a + t[:, None] * d
-                dev = np.array([self.device(*p) for p in near])
+                dev = sl.transform.apply(self._forward(), near)
                 dist = np.hypot(dev[:, 0] - x, dev[:, 1] - y)
                 i = int(np.argmin(dist))
                 if dist[i] <= self.gravity:
@@ -254,6 +268,14 @@ class Workstation:
         self._count += 1
         return f"{kind}-{self._count}"
 
+    def _room(self, n, argument):
+        """Refuse ``n`` more positions past MAX_POINTS."""
+        held = sum(self._sizes.values())
+        if held + n > MAX_POINTS:
+            raise ArgumentValueError(
+                f"{argument}: {n} more positions would make {held + n}; a workstation holds "
+                f"at most {MAX_POINTS}: delete some segments")
+
     def _color(self):
         return COLORS[self._count % len(COLORS)]
 
@@ -266,9 +288,12 @@ class Workstation:
             return {"world": p["world"], "text": f"world ({p['world'][0]:.3f}, {p['world'][1]:.3f})"}
         a = self.position(*_point("value.anchor", value["anchor"]))["world"]
         b = p["world"]
+        size = 2 if tool == "line" else 4
+        self._room(size, "value.position")
         if dry:
             return {}
         name = self._new_name(tool)
+        self._sizes[name] = size
         self.df.create_segment(name, priority=3)
         pts = [a, b] if tool == "line" else [a, (b[0], a[1]), b, (a[0], b[1])]
         self.df.polyline(pts, color=self._color(), closed=tool == "rectangle", width=2)
@@ -281,10 +306,12 @@ class Workstation:
         if not isinstance(pts, list) or not 2 <= len(pts) <= MAX_STROKE:
             raise ArgumentValueError(
                 f"value.points must be a list of 2 to {MAX_STROKE} device positions")
-        world = [self.world(*_point(f"value.points[{i}]", p)) for i, p in enumerate(pts)]
+        world = self._worlds([_point(f"value.points[{i}]", p) for i, p in enumerate(pts)])
+        self._room(len(world), "value.points")
         if dry:
             return {}
         name = self._new_name("stroke")
+        self._sizes[name] = len(world)
         self.df.create_segment(name, priority=3)
         self.df.polyline(world, color=self._color(), width=2, cap="round", join="round")
         self.df.close_segment()
@@ -333,9 +360,11 @@ class Workstation:
         if not isinstance(text, str) or not 0 < len(text) <= MAX_TEXT:
             raise ArgumentValueError(f"value.text must be a string of 1 to {MAX_TEXT} characters")
         w = self.position(*_point("value.position", value.get("position")))["world"]
+        self._room(len(text), "value.text")
         if dry:
             return {}
         name = self._new_name("text")
+        self._sizes[name] = len(text)
         self.df.create_segment(name, priority=3)
         self.df.text(w, text, height=1.5, font="stroke", color=self._color())
         self.df.close_segment()
@@ -376,7 +405,9 @@ class Workstation:
             sl.transform.compose(move, turn)))
 
     def delete(self, segment):
-        self.df.delete_segment(self.df.segment(segment).name)
+        name = self.df.segment(segment).name
+        self.df.delete_segment(name)
+        self._sizes.pop(name, None)
         if self.selected == segment:
             self.selected = None
         self.version += 1

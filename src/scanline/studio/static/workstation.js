@@ -85,8 +85,9 @@ async function onDown(event) {
   const p = devicePosition(event), tool = ws.state.tool;
   $("overlay").setPointerCapture(event.pointerId);
   if (tool === "line" || tool === "rectangle") {
-    const snapped = await position(p);
-    ws.drag = {tool, anchor: p, start: snapped.device};
+    // the drag starts now; the snapped start arrives later (a release before it still counts)
+    const d = ws.drag = {tool, anchor: p, start: p};
+    d.ready = position(p).then((snapped) => { d.start = snapped.device; }, () => null);
   } else if (tool === "stroke") {
     ws.drag = {tool, points: [p]};
   } else if (tool === "drag") {
@@ -123,6 +124,7 @@ async function onUp(event) {
   const p = devicePosition(event), d = ws.drag, tool = ws.state.tool;
   ws.drag = null;
   band(null);
+  if (d && d.ready) await d.ready;
   if (d && (d.tool === "line" || d.tool === "rectangle"))
     await call("input", {device: "locator", value: {position: p, anchor: d.anchor, tool: d.tool}});
   else if (d && d.tool === "stroke" && d.points.length > 1)
@@ -135,10 +137,24 @@ async function onUp(event) {
 }
 
 // ---- start ---------------------------------------------------------------------------
+// The server keeps a few workstations per browser: give back this page's when it goes
+// (and the one a reload of this tab left behind), so that reloading never runs out.
+const JSON_POST = {method: "POST", headers: {"Content-Type": "application/json"}, body: "{}"};
+function close(id, keepalive) {
+  return fetch(`/api/ws/${id}/close`, {...JSON_POST, keepalive}).catch(() => null);
+}
+
 async function start() {
-  const response = await fetch("/api/ws", {method: "POST"});
+  const previous = sessionStorage.getItem("scanline-workstation");
+  if (previous) await close(previous, false);
+  const response = await fetch("/api/ws", JSON_POST);
   const data = await response.json();
+  if (!response.ok) { $("error").textContent = data.error; throw new Error(data.error); }
   ws.id = data.id;
+  sessionStorage.setItem("scanline-workstation", ws.id);
+  window.addEventListener("pagehide", (event) => {
+    if (!event.persisted) close(ws.id, true);
+  });
   data.state.menu.forEach((tool, i) => {
     const b = text($("menu"), "button", `${i + 1} ${tool}`);
     b.dataset.tool = tool;

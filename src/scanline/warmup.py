@@ -222,6 +222,8 @@ CALLS = {
                                      "target=(0, 0, 0)), method='ray-casting')", RGB),
     "render a-buffer": ("render", "sl.render(fb, sl.mesh.cube(), sl.Camera(eye=(3, 2, 4), "
                                   "target=(0, 0, 0)), method='a-buffer', samples=2)", RGB),
+    "render antialias": ("render", "sl.render(fb, sl.mesh.cube(), sl.Camera(eye=(3, 2, 4), "
+                                   "target=(0, 0, 0)), antialias=2)", ("L", "RGB", "RGBA")),
     "visible scan-line": ("visible", "sl.render(fb, [sl.mesh.cube(), sl.mesh.sphere(0.6, "
                                      "(0.8, 0.5, 0.8))], sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)), "
                                      "method='scan-line', shading='none')", RGB),

@@ -62,8 +62,12 @@ def check(nbytes, argument, what, hint=None, limit_bytes=None):
     bound = limit() if limit_bytes is None else int(limit_bytes)
     if nbytes <= bound:
         return
+    try:
+        size = f"{float(nbytes):.3g}"
+    except OverflowError:               # an integer beyond the floats: its magnitude
+        size = f"1e+{len(str(int(nbytes))) - 1}"
     raise MemoryBudgetError(
-        f"{argument}: {what} would take about {float(nbytes):.3g} bytes, more than the memory "
+        f"{argument}: {what} would take about {size} bytes, more than the memory "
         f"budget of {bound:,} bytes; " + (f"{hint}, or " if hint else "")
         + f"raise the limit with the environment variable {VARIABLE} (e.g. {VARIABLE}=64G)")
 

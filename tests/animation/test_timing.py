@@ -88,7 +88,8 @@ def test_spacing_by_easing_name_and_function():
     (lambda: frames_needed(1, -24), "fps must be > 0"),
     (lambda: frames_needed(1, 24, inbetweens=2.5), "inbetweens must be an integer"),
     (lambda: duration_of(0, 24), "key_frames must be >= 1"),
-    (lambda: frames_needed(1e300, 1e10), "the limit is 2,147,483,647"),
+    (lambda: frames_needed(1e300, 1e6), "the limit is 2,147,483,647"),
+    (lambda: frames_needed(1, 1e10), r"outside 0\.001 to 1e\+06"),
 ])
 def test_bad_input(call, words):
     with pytest.raises(sl.ScanlineError, match=words):

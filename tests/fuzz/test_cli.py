@@ -62,3 +62,49 @@ def test_heavy_commands_refuse_bad_arguments_in_one_line(tmp_path, command, args
     assert status == 2
     lines = err.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("scanline: error: "), err
+
+
+#: Arguments of ``animate`` and ``storyboard``: their options with hostile values
+#: (jobs far beyond the cores, malformed scheduler addresses, huge panels, frame rates
+#: out of range, frame selections, output folders), next to valid ones.
+ANIMATION = ["--example", "bouncing_ball", "--jobs", "1000000000", "0", "-1", "nan", "1",
+             "--scheduler", "tcp://", "nope", "tls://h:1", "tcp://h:0", "tcp://:", "\x00",
+             "--panel", "16384x16384", "40000x40000", "0x0", "16x16", "64x48", "99999999999x1",
+             "--columns", "100000", "2", "--fps", "1e-300", "1e300", "inf", "6", "0.5",
+             "--frames", "0:2", "5:1", ":", "2:", "1:1000000000", "--quality", "99", "10",
+             "--format", "json", "toml", "out.gif", "out.png", "out.webp", "out.mp4", "out.txt",
+             "frames/", "../escape/", "-o", "--progress", "--no-progress", "nonexistent.toml",
+             "", "-", "1e400"]
+
+
+@given(command=st.sampled_from(["animate", "storyboard"]),
+       args=st.lists(st.sampled_from(ANIMATION), max_size=8),
+       scene=st.sampled_from([["--example", "bouncing_ball"], [], ["nonexistent.toml"]]),
+       output=st.sampled_from([None, "out.gif", "out.png", "frames/", "board.png", "out.mp4"]))
+def test_hostile_animate_and_storyboard(tmp_path_factory, command, args, scene, output):
+    """``animate`` and ``storyboard`` on hostile command lines (a small memory budget,
+    so that what the budget lets through stays within the harness's): status 0, or 2
+    with one error line and nothing left in the folder -- no frames of an output
+    folder, no partial file, nothing written outside it."""
+    root = tmp_path_factory.mktemp("animation-cli")
+    where = root / "work"
+    where.mkdir()
+    old, budget = os.getcwd(), os.environ.get("SCANLINE_MEMORY_LIMIT")
+    os.chdir(where)
+    os.environ["SCANLINE_MEMORY_LIMIT"] = "256M"
+    try:
+        argv = [command] + scene + args + (["-o", output] if output else [])
+        with bounded():
+            status, err = run(argv)
+        assert status in (0, 2), (argv, status, err)
+        assert os.listdir(root) == ["work"], (argv, os.listdir(root))
+        if status == 2:
+            lines = err.strip().splitlines()
+            assert len(lines) == 1 and lines[0].startswith("scanline: error: "), (argv, err)
+            assert os.listdir(where) == [], (argv, os.listdir(where))
+    finally:
+        os.chdir(old)
+        if budget is None:
+            os.environ.pop("SCANLINE_MEMORY_LIMIT", None)
+        else:
+            os.environ["SCANLINE_MEMORY_LIMIT"] = budget

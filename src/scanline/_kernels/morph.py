@@ -3,7 +3,10 @@ sampled bilinearly and cross-dissolved in one pass.
 
 Images are uint8 storage ``img[y, x, channel]`` with rows bottom-up (row y is scan
 line y, as in the frame buffer); coordinates are device coordinates.  Every read is
-clamped to the image, every write is inside ``out``'s own loop bounds.
+clamped to the image, every write is inside ``out``'s own loop bounds, whatever the
+input: a sample point that is not finite (a NaN from a degenerate line or from weights
+that overflow, which the API layer refuses) is clamped like any other before it becomes
+an index, and a table or an image too small for what the kernel reads draws nothing.
 """
 
 import math
@@ -35,13 +38,15 @@ def _blend(src, x, y, weight, acc, channels, first):
     """Add ``weight`` times the bilinear sample of ``src`` at (x, y) (edges clamped)
     to ``acc[:channels]`` (or store it there when ``first``)."""
     h, w = src.shape[0], src.shape[1]
-    if x < 0.0:
+    # clamped before the conversion to an index: written so that NaN takes the first
+    # branch (every comparison with NaN is false) and +-inf the first or the second
+    if not x > 0.0:
         x = 0.0
-    elif x > w - 1.0:
+    elif not x < w - 1.0:
         x = w - 1.0
-    if y < 0.0:
+    if not y > 0.0:
         y = 0.0
-    elif y > h - 1.0:
+    elif not y < h - 1.0:
         y = h - 1.0
     x0 = int(x)
     y0 = int(y)
@@ -72,7 +77,11 @@ def field_morph(src_a, src_b, table, t, a, b, out):
     (1 - t) A(X'_A) + t B(X'_B), rounded half up (at most 4 channels).
     """
     h, w, channels = out.shape[0], out.shape[1], min(out.shape[2], 4)
+    channels = min(channels, src_a.shape[2], src_b.shape[2])
     n = table.shape[0]
+    if (table.shape[1] < COLUMNS or src_a.shape[0] < 1 or src_a.shape[1] < 1
+            or src_b.shape[0] < 1 or src_b.shape[1] < 1):
+        return
     acc = np.zeros(4)
     for y in range(h):
         for x in range(w):
@@ -104,9 +113,11 @@ def field_morph(src_a, src_b, table, t, a, b, out):
             if t > 0.0:
                 _blend(src_b, x + sbx / total, y + sby / total, t, acc, channels, False)
             for c in range(channels):
-                level = math.floor(acc[c] + 0.5)
-                if level < 0.0:
-                    level = 0.0
-                elif level > 255.0:
-                    level = 255.0
-                out[y, x, c] = int(level)
+                # rounded half up and clamped to 0..255 before the conversion (NaN: 0)
+                level = acc[c] + 0.5
+                if not level >= 1.0:
+                    out[y, x, c] = 0
+                elif level >= 255.0:
+                    out[y, x, c] = 255
+                else:
+                    out[y, x, c] = int(level)

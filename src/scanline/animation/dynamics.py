@@ -24,9 +24,39 @@ import numpy as np
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError, ScanlineError
+from ..budget import check as budget
+from ._checks import finite, floats
 
 #: Integration methods.
 METHODS = ("euler", "semi-implicit-euler", "verlet", "rk4")
+
+#: The most steps :meth:`Particles.run` takes in one call.
+MAX_STEPS = 2**40
+
+
+def _indices(name, value):
+    """Particle numbers: an integer array (numbers that are not whole are refused)."""
+    a = floats(name, value, "particle numbers (integers)")
+    if not (np.isfinite(a).all() and (a == np.floor(a)).all() and (np.abs(a) < 2**53).all()):
+        raise ArgumentValueError(f"{name} must hold particle numbers (whole numbers), got "
+                                 f"{v._show(value)}")
+    return a.astype(np.int64)
+
+
+def _per(name, value, count):
+    """A number, or one per item (``count``), as a float array of ``count``."""
+    a = floats(name, value, f"a number or {count} numbers")
+    try:
+        return np.broadcast_to(a, (count,)).copy()
+    except ValueError:
+        raise ArgumentValueError(f"{name} must be one number or {count}, one per item, got "
+                                 f"shape {a.shape}") from None
+
+
+def _objects(name, value):
+    if isinstance(value, (str, bytes)) or not hasattr(value, "__iter__"):
+        raise ArgumentTypeError(f"{name} must be a sequence, got {v._show(value)}")
+    return list(value)
 
 
 class DynamicsError(ScanlineError):
@@ -46,10 +76,7 @@ class DynamicsError(ScanlineError):
 
 
 def _vectors(name, value, count, dim):
-    try:
-        a = np.array(value, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise ArgumentTypeError(f"{name} must be an array of vectors, got {v._show(value)}") from None
+    a = floats(name, value, "an array of vectors")
     if a.ndim == 1 and dim is not None and a.shape == (dim,):
         a = np.tile(a, (count, 1))
     if a.ndim != 2 or (count is not None and len(a) != count) or (dim is not None and a.shape[1] != dim):
@@ -64,7 +91,7 @@ class Gravity:
     """A uniform field: F = m g.  Potential energy -m g · x."""
 
     def __init__(self, g=(0.0, -9.81)):
-        self.g = np.array(g, dtype=np.float64)
+        self.g = floats("g", g, "a vector")
         if self.g.ndim != 1 or not np.isfinite(self.g).all():
             raise ArgumentValueError(f"g must be a finite vector, got {v._show(g)}")
 
@@ -94,14 +121,15 @@ class Spring:
     """
 
     def __init__(self, pairs, stiffness, rest_length=None, damping=0.0, anchors=None):
-        self.pairs = np.array(pairs, dtype=np.int64)
-        self.anchors = None if anchors is None else np.array(anchors, dtype=np.float64)
+        self.pairs = _indices("pairs", pairs)
+        self.anchors = None if anchors is None else finite("anchors", anchors, "(m, dim) points")
         if self.anchors is None and (self.pairs.ndim != 2 or self.pairs.shape[1] != 2):
             raise ArgumentValueError(f"pairs must have shape (m, 2), got {self.pairs.shape}")
-        if self.anchors is not None and (self.pairs.ndim != 1 or len(self.anchors) != len(self.pairs)):
+        if self.anchors is not None and (self.pairs.ndim != 1 or self.anchors.ndim != 2
+                                         or len(self.anchors) != len(self.pairs)):
             raise ArgumentValueError("with anchors, pairs must list one particle per anchor")
         m = len(self.pairs)
-        self.stiffness = np.broadcast_to(np.array(stiffness, dtype=np.float64), (m,)).copy()
+        self.stiffness = _per("stiffness", stiffness, m)
         if not (np.isfinite(self.stiffness).all() and (self.stiffness > 0).all()):
             raise ArgumentValueError(f"stiffness must be finite and > 0, got {v._show(stiffness)}")
         self.damping = v.number("damping", damping)
@@ -126,8 +154,7 @@ class Spring:
             a, b = self._ends(system.positions)
             self.rest_length = np.linalg.norm(b - a, axis=1)
         else:
-            self.rest_length = np.broadcast_to(np.array(self.rest_length, np.float64),
-                                               (len(self.pairs),)).copy()
+            self.rest_length = _per("rest_length", self.rest_length, len(self.pairs))
             if not (np.isfinite(self.rest_length).all() and (self.rest_length >= 0).all()):
                 raise ArgumentValueError("rest_length must be finite and >= 0")
 
@@ -187,14 +214,21 @@ class Force:
         self._potential = potential
 
     def force(self, system, x, vel, t):
-        f = np.asarray(self.function(t, x, vel), dtype=np.float64)
+        f = floats("the force function's result", self.function(t, x, vel),
+                   f"forces, one per particle, shape {x.shape}")
         if f.shape != x.shape:
             raise ArgumentValueError(f"the force function returned shape {f.shape}; it must "
                                      f"return one force per particle, shape {x.shape}")
         return f
 
     def potential(self, system, x):
-        return 0.0 if self._potential is None else float(self._potential(x))
+        if self._potential is None:
+            return 0.0
+        value = floats("the potential function's result", self._potential(x), "a number")
+        if value.ndim != 0:
+            raise ArgumentValueError(f"the potential function returned shape {value.shape}; "
+                                     "it must return one number")
+        return float(value)
 
 
 class Plane:
@@ -212,8 +246,8 @@ class Plane:
     """
 
     def __init__(self, point, normal, restitution=1.0, friction=0.0):
-        self.point = np.array(point, dtype=np.float64)
-        n = np.array(normal, dtype=np.float64)
+        self.point = floats("point", point, "a vector")
+        n = floats("normal", normal, "a vector")
         if self.point.shape != n.shape or n.ndim != 1 or not (np.isfinite(n).all()
                                                               and np.isfinite(self.point).all()):
             raise ArgumentValueError("point and normal must be finite vectors of one dimension")
@@ -282,10 +316,10 @@ class Particles:
         self.dimension = dim
         self.velocities = (np.zeros_like(self.positions) if velocities is None
                            else _vectors("velocities", velocities, n, dim))
-        self.masses = np.broadcast_to(np.array(masses, dtype=np.float64), (n,)).copy()
+        self.masses = _per("masses", masses, n)
         if not (np.isfinite(self.masses).all() and (self.masses > 0).all()):
             raise ArgumentValueError(f"masses must be finite and > 0, got {v._show(masses)}")
-        self.forces = list(forces)
+        self.forces = _objects("forces", forces)
         for f in self.forces:
             if not hasattr(f, "force"):
                 raise ArgumentTypeError(f"forces must be Gravity, Spring, Drag, Force ... "
@@ -296,8 +330,10 @@ class Particles:
             if g is not None and g.shape != (dim,):
                 raise ArgumentValueError(f"Gravity g has {g.shape[0]} components; the "
                                          f"particles are {dim}-D")
-        self.obstacles = list(obstacles)
+        self.obstacles = _objects("obstacles", obstacles)
         for p in self.obstacles:
+            if not isinstance(p, Plane):
+                raise ArgumentTypeError(f"obstacles must be Plane objects, got {v._show(p)}")
             if p.normal.shape != (dim,):
                 raise ArgumentValueError(f"a Plane of dimension {p.normal.shape[0]} cannot hold "
                                          f"{dim}-D particles")
@@ -307,9 +343,10 @@ class Particles:
 
     def accelerations(self, x=None, vel=None, t=None):
         """a = F / m for every particle (F = m a, Newton's second law)."""
-        x = self.positions if x is None else x
-        vel = self.velocities if vel is None else vel
-        t = self.time if t is None else t
+        n, dim = self.positions.shape
+        x = self.positions if x is None else _vectors("x", x, n, dim)
+        vel = self.velocities if vel is None else _vectors("vel", vel, n, dim)
+        t = self.time if t is None else v.number("t", t)
         total = np.zeros_like(x)
         for f in self.forces:
             total += f.force(self, x, vel, t)
@@ -377,7 +414,15 @@ class Particles:
         dt = v.number("dt", dt)
         if duration < 0 or dt <= 0:
             raise ArgumentValueError(f"need duration >= 0 and dt > 0, got {duration}, {dt}")
-        steps = int(math.floor(duration / dt + 1e-9))
+        ratio = duration / dt + 1e-9
+        if not ratio < MAX_STEPS:
+            raise ArgumentValueError(f"duration / dt = {duration:g} / {dt:g} is {ratio:.3g} "
+                                     f"steps, more than {MAX_STEPS:.0e}; use a larger dt")
+        steps = int(math.floor(ratio))
+        budget((steps + 1) * self.positions.size * 8, "duration",
+               f"the positions after each of {steps} steps",
+               hint="use a shorter duration or a larger dt, or call step() in a loop and "
+                    "keep what you need")
         out = np.empty((steps + 1,) + self.positions.shape)
         out[0] = self.positions
         for i in range(steps):

@@ -211,11 +211,9 @@ def resolve(name, argument="ease"):
 
 def fractions(t, name="t"):
     """``t`` as a float64 array of fractions in [0, 1], or an error naming ``name``."""
-    try:
-        a = np.asarray(t, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise ArgumentTypeError(f"{name} must be a number or an array of numbers, "
-                                f"got {_show(t)}") from None
+    from ._checks import floats
+
+    a = floats(name, t)
     if a.size and not ((a >= 0) & (a <= 1)).all():   # also catches NaN
         bad = float(a[~((a >= 0) & (a <= 1))].ravel()[0])
         raise ArgumentValueError(f"{name} must lie in [0, 1] (the fraction of the segment's "

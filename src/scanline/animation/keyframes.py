@@ -28,17 +28,16 @@ import numpy as np
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
 from .easing import apply, resolve
-from .timing import frame_count
+from ..budget import check as budget
+from ._checks import floats
+from .timing import MAX_FRAMES, frame_count
 
 #: Interpolation methods between key values.
 INTERPOLATIONS = ("linear", "step", "catmull-rom", "cardinal", "kochanek-bartels")
 
 
 def _times(times):
-    try:
-        t = np.array(times, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise ArgumentTypeError(f"times must be a sequence of numbers, got {v._show(times)}") from None
+    t = floats("times", times, "a sequence of numbers")
     if t.ndim != 1 or len(t) < 1:
         raise ArgumentValueError(f"times must be a 1-D sequence of at least one time, got "
                                  f"shape {t.shape}")
@@ -56,12 +55,8 @@ def _times(times):
 
 
 def _values(values, count):
-    try:
-        a = np.array(values, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise ArgumentTypeError(
-            f"values must be numbers or equally shaped arrays of numbers, one per key frame, "
-            f"got {v._show(values)}") from None
+    a = floats("values", values, "numbers or equally shaped arrays of numbers, one per "
+               "key frame")
     if a.ndim == 0 or len(a) != count:
         raise ArgumentValueError(
             f"values must hold one value per key frame ({count}), got "
@@ -85,7 +80,8 @@ def _per_segment(name, value, segments, convert):
 
 
 def _spline_parameter(name, value, count):
-    a = np.array(value, dtype=np.float64) if not isinstance(value, numbers.Real) else None
+    a = floats(name, value, f"a number or one per key frame ({count})") \
+        if not isinstance(value, numbers.Real) else None
     if a is None or a.ndim == 0:
         return np.full(count, v.number(name, value if a is None else float(a)))
     if a.shape != (count,) or not np.isfinite(a).all():
@@ -197,10 +193,7 @@ class KeyFrames:
 
     def at(self, t):
         """The value at time(s) ``t``; see :meth:`__call__`."""
-        try:
-            ts = np.asarray(t, dtype=np.float64)
-        except (TypeError, ValueError):
-            raise ArgumentTypeError(f"t must be a time or an array of times, got {v._show(t)}") from None
+        ts = floats("t", t, "a time or an array of times")
         if not np.isfinite(ts).all():
             raise ArgumentValueError(f"t must be finite, got {v._show(t)}")
         if ts.ndim == 0:
@@ -216,6 +209,11 @@ class KeyFrames:
     def segment(self, t):
         """The segment index k (key k to key k + 1) and the eased fraction of it at
         each of the times ``t`` (a 1-D array), clamped to the track."""
+        t = floats("t", t, "a 1-D array of times")
+        if t.ndim != 1:
+            raise ArgumentValueError(f"t must be a 1-D array of times, got shape {t.shape}")
+        if not np.isfinite(t).all():
+            raise ArgumentValueError(f"t must be finite, got {v._show(t.tolist())}")
         times = self.times
         if len(times) == 1:
             return np.zeros(len(t), np.int64), np.zeros(len(t))
@@ -307,6 +305,9 @@ class Timeline:
         self.fps = _fps(fps)
         self.start = v.number("start", start)
         self.tracks = {}
+        if tracks is not None and not isinstance(tracks, dict):
+            raise ArgumentTypeError(f"tracks must be a dict of name -> KeyFrames (or function "
+                                    f"of time), got {v._show(tracks)}")
         for name, track in (tracks or {}).items():
             self.add(name, track)
         if duration is not None:
@@ -343,11 +344,18 @@ class Timeline:
     def time(self, frame):
         """The time of ``frame``."""
         frame = v.positive_int("frame", frame, minimum=0)
+        if frame > MAX_FRAMES:
+            raise ArgumentValueError(f"frame={frame} is beyond the {MAX_FRAMES:,} frames a "
+                                     "sequence may have")
         return self.start + frame / self.fps
 
     def times(self):
         """The times of all frames."""
-        return self.start + np.arange(len(self)) / self.fps
+        count = len(self)
+        budget(count * 8 * 3, "duration", f"the times of {count} frames",
+               hint="use a shorter duration or a lower fps, or compute the times of a "
+                    "range of frames with time(frame)")
+        return self.start + np.arange(count) / self.fps
 
     def values(self, frame):
         """Every track's value at ``frame``: a dict name -> value."""

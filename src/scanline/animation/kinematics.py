@@ -29,9 +29,14 @@ import numpy as np
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
+from ._checks import flag, floats
 
 #: Inverse-kinematics methods.
 METHODS = ("analytic", "ccd", "dls")
+
+#: The most iterations :meth:`Chain.inverse` may be asked for (each is a sweep of the
+#: joints or a linear solve: more would only make a call that never returns).
+MAX_ITERATIONS = 1_000_000
 
 
 class UnreachableTarget(ArgumentValueError):
@@ -112,11 +117,7 @@ class Chain:
     """
 
     def __init__(self, lengths, base=None, axes=None, limits=None):
-        try:
-            lengths = np.array(lengths, dtype=np.float64)
-        except (TypeError, ValueError):
-            raise ArgumentTypeError(f"lengths must be a sequence of numbers, got "
-                                    f"{v._show(lengths)}") from None
+        lengths = floats("lengths", lengths, "a sequence of numbers")
         if lengths.ndim != 1 or len(lengths) < 1:
             raise ArgumentValueError(f"lengths must be a 1-D sequence of at least one length, "
                                      f"got shape {lengths.shape}")
@@ -128,7 +129,7 @@ class Chain:
             self.axes = None
             self.dimension = 2
         else:
-            a = np.array(axes, dtype=np.float64)
+            a = floats("axes", axes, f"({n}, 3) axes, one per joint")
             if a.shape != (n, 3) or not np.isfinite(a).all():
                 raise ArgumentValueError(f"axes must have shape ({n}, 3), one finite axis per "
                                          f"joint, got {v._show(axes)}")
@@ -138,7 +139,7 @@ class Chain:
                                          "an axis needs a direction")
             self.axes = a / norms[:, None]
             self.dimension = 3
-        base = np.zeros(self.dimension) if base is None else np.array(base, dtype=np.float64)
+        base = np.zeros(self.dimension) if base is None else floats("base", base, "a point")
         if base.shape != (self.dimension,) or not np.isfinite(base).all():
             raise ArgumentValueError(f"base must be a finite {self.dimension}-D point, got "
                                      f"{v._show(base)}")
@@ -146,7 +147,7 @@ class Chain:
         if limits is None:
             self.limits = np.tile([-np.inf, np.inf], (n, 1))
         else:
-            lim = np.array(limits, dtype=np.float64)
+            lim = floats("limits", limits, f"({n}, 2) limits, (lower, upper) per joint")
             if lim.shape != (n, 2) or np.isnan(lim).any() or (lim[:, 0] > lim[:, 1]).any():
                 raise ArgumentValueError(f"limits must have shape ({n}, 2), (lower, upper) per "
                                          f"joint with lower <= upper, got {v._show(limits)}")
@@ -169,16 +170,13 @@ class Chain:
         longest = float(self.lengths.max())
         return max(0.0, 2 * longest - self.reach)
 
-    def _angles(self, angles):
-        try:
-            a = np.array(angles, dtype=np.float64)
-        except (TypeError, ValueError):
-            raise ArgumentTypeError(f"angles must be numbers, got {v._show(angles)}") from None
+    def _angles(self, angles, name="angles"):
+        a = floats(name, angles, "numbers")
         if a.ndim < 1 or a.shape[-1] != self.joints:
-            raise ArgumentValueError(f"angles must have one angle per joint ({self.joints}) in "
+            raise ArgumentValueError(f"{name} must have one angle per joint ({self.joints}) in "
                                      f"the last axis, got shape {a.shape}")
         if not np.isfinite(a).all():
-            raise ArgumentValueError(f"angles must be finite, got {v._show(a.tolist())}")
+            raise ArgumentValueError(f"{name} must be finite, got {v._show(a.tolist())}")
         return a
 
     def forward(self, angles):
@@ -273,7 +271,10 @@ class Chain:
             unreachable target is *reported*: the angles then bring the end as close
             as the method gets (the arm stretched toward it).
         """
-        p = np.array(target, dtype=np.float64) if not isinstance(target, str) else None
+        try:
+            p = floats("target", target, f"a {self.dimension}-D point")
+        except ArgumentTypeError:
+            p = None
         if p is None or p.shape != (self.dimension,) or not np.isfinite(p).all():
             raise ArgumentValueError(f"target must be a finite {self.dimension}-D point, got "
                                      f"{v._show(target)}")
@@ -283,6 +284,10 @@ class Chain:
         if tolerance <= 0:
             raise ArgumentValueError(f"tolerance must be > 0, got {tolerance}")
         max_iterations = v.positive_int("max_iterations", max_iterations)
+        if max_iterations > MAX_ITERATIONS:
+            raise ArgumentValueError(f"max_iterations={max_iterations} is more than "
+                                     f"{MAX_ITERATIONS:,}; the methods converge in far fewer")
+        strict = flag("strict", strict)
         v.choice("elbow", elbow, ("up", "down"))
         analytic_fits = self.axes is None and self.joints == 2
         if method is None:
@@ -328,7 +333,7 @@ class Chain:
             mid = np.zeros(self.joints)
             mid[finite] = (lo[finite] + hi[finite]) / 2
             return np.clip(mid, lo, hi)
-        a = self._angles(initial)
+        a = self._angles(initial, "initial")
         if a.ndim != 1:
             raise ArgumentValueError("initial must be one pose (a 1-D array of angles)")
         return np.clip(a, self.limits[:, 0], self.limits[:, 1])
@@ -414,7 +419,7 @@ class Chain:
 
         Returns an (m, n) array of angles and the list of :class:`Reach` results.
         """
-        pts = np.array(targets, dtype=np.float64)
+        pts = floats("targets", targets, f"(m, {self.dimension}) points")
         if pts.ndim != 2 or pts.shape[1] != self.dimension:
             raise ArgumentValueError(f"targets must have shape (m, {self.dimension}), got "
                                      f"{pts.shape}")

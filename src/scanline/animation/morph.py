@@ -28,12 +28,14 @@ edges get the extra sections), :func:`morph` interpolates.
 [[0.0, 0.0], [4.0, 0.0], [3.0, 2.75], [0.0, 3.5]]
 """
 
+import math
 from typing import NamedTuple
 
 import numpy as np
 
 from .. import _validate as v
-from ..errors import ArgumentTypeError, ArgumentValueError
+from ..errors import ArgumentValueError
+from ._checks import flag, floats
 from .easing import fractions
 
 
@@ -64,6 +66,7 @@ def equalization(count_a, count_b, closed=True):
     >>> equalization(3, 4, closed=False)          # the triangle -> quadrilateral case
     Equalization(edges_max=3, edges_min=2, n_e=1, n_s=1, vertices_max=4, vertices_min=3, n_ls=1, n_p=1)
     """
+    closed = flag("closed", closed)
     minimum = 3 if closed else 2
     va = v.positive_int("count_a", count_a, minimum=minimum)
     vb = v.positive_int("count_b", count_b, minimum=minimum)
@@ -74,10 +77,7 @@ def equalization(count_a, count_b, closed=True):
 
 
 def _shape(name, value, closed):
-    try:
-        a = np.array(value, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise ArgumentTypeError(f"{name} must be an array of vertices, got {v._show(value)}") from None
+    a = floats(name, value, "an array of vertices")
     minimum = 3 if closed else 2
     if a.ndim != 2 or len(a) < minimum or a.shape[1] < 1:
         raise ArgumentValueError(
@@ -151,6 +151,8 @@ def equalize(shape_a, shape_b, *more, closed=True, align=False, return_added=Fal
     into N_s + 1 sections and the others into N_s (N_s = int(L_max / L_min)); Hearn &
     Baker leave open which edges take the extra sections.
     """
+    closed, align = flag("closed", closed), flag("align", align)
+    return_added = flag("return_added", return_added)
     shapes = [_shape(name, s, closed) for name, s in
               zip(["shape_a", "shape_b"] + [f"more[{i}]" for i in range(len(more))],
                   (shape_a, shape_b) + more)]
@@ -198,7 +200,10 @@ def _image(name, image):
             raise ArgumentValueError(f"{name} is a mode {image.mode!r} frame buffer; morphing "
                                      "blends levels, so use mode 'L', 'RGB' or 'RGBA'")
         return image._raster()[0], ("fb", image.mode)
-    a = np.asarray(image)
+    try:
+        a = np.asarray(image)
+    except (TypeError, ValueError, OverflowError):
+        a = np.asarray(None)
     if a.dtype != np.uint8 or a.ndim not in (2, 3) or (a.ndim == 3 and a.shape[2] not in (1, 3, 4)):
         raise ArgumentValueError(f"{name} must be a FrameBuffer or a uint8 image array (h, w) or "
                                  f"(h, w, 1|3|4), got dtype {a.dtype}, shape {a.shape}")
@@ -206,12 +211,19 @@ def _image(name, image):
     return np.ascontiguousarray(storage), ("array", a.ndim)
 
 
+#: Feature lines: end points within +-COORD_LIMIT (as every device coordinate), and
+#: lines at least MIN_LENGTH long (a shorter line has no direction to measure u and v
+#: by: 1 / |d|^2 overflows or is lost to rounding).
+MIN_LENGTH = 1e-6
+
+#: The weights (|d|^p / (a + dist))^b must stay within 10**+-WEIGHT_EXPONENT over the
+#: image, so that neither their sum nor the weighted displacements overflow, and the
+#: best line's weight at the farthest pixel does not underflow to 0.
+WEIGHT_EXPONENT = 250
+
+
 def _lines(name, value, count=None):
-    try:
-        a = np.array(value, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise ArgumentTypeError(f"{name} must be an (n, 4) array of lines x0, y0, x1, y1, "
-                                f"got {v._show(value)}") from None
+    a = floats(name, value, "an (n, 4) array of lines x0, y0, x1, y1")
     if a.ndim == 3 and a.shape[1:] == (2, 2):
         a = a.reshape(-1, 4)
     if a.ndim != 2 or a.shape[1] != 4 or len(a) < 1:
@@ -222,11 +234,38 @@ def _lines(name, value, count=None):
                                  f"got {len(a)}")
     if not np.isfinite(a).all():
         raise ArgumentValueError(f"{name} must be finite, got {v._show(a.tolist())}")
-    zero = np.hypot(a[:, 2] - a[:, 0], a[:, 3] - a[:, 1]) == 0
+    far = np.abs(a) > v.COORD_LIMIT
+    if far.any():
+        k = int(np.flatnonzero(far.any(axis=1))[0])
+        raise ArgumentValueError(
+            f"{name}[{k}] = {v._show(a[k].tolist())} has an end point beyond the device "
+            f"coordinate range +-{v.COORD_LIMIT}; give feature lines near the image")
+    length = np.hypot(a[:, 2] - a[:, 0], a[:, 3] - a[:, 1])
+    zero = length == 0
     if zero.any():
         raise ArgumentValueError(f"{name}[{int(np.flatnonzero(zero)[0])}] has zero length; a "
                                  "feature line needs two different end points")
+    short = length < MIN_LENGTH
+    if short.any():
+        k = int(np.flatnonzero(short)[0])
+        raise ArgumentValueError(
+            f"{name}[{k}] has length {length[k]:.3g}, too short to give a direction; a "
+            f"feature line needs end points at least {MIN_LENGTH:g} pixels apart")
     return np.ascontiguousarray(a)
+
+
+def _between(lines, t):
+    """Check that the interpolated lines L(t) keep a length (a pair of lines turning
+    through a point, such as a line and its reverse, collapses halfway)."""
+    length = np.hypot(lines[:, 2] - lines[:, 0], lines[:, 3] - lines[:, 1])
+    short = length < MIN_LENGTH
+    if short.any():
+        k = int(np.flatnonzero(short)[0])
+        raise ArgumentValueError(
+            f"at t={t:g} feature line {k} (lines_a[{k}] -> lines_b[{k}]) shrinks to length "
+            f"{length[k]:.3g}: its end points meet, and the warp is undefined there; give "
+            "the pair end points that do not cross (not a line and its reverse), or "
+            "another t")
 
 
 def _weights(a, b, p):
@@ -235,6 +274,51 @@ def _weights(a, b, p):
         raise ArgumentValueError(f"need a > 0, b >= 0 and p >= 0 (the weight (length^p / "
                                  f"(a + dist))^b), got a={a}, b={b}, p={p}")
     return a, b, p
+
+
+def _weight_range(lines, size, a, b, p):
+    """Refuse weights (|d|^p / (a + dist))^b that overflow at a line or underflow far
+    from every line, over an image of ``size`` (h, w) pixels: both would make the
+    kernel's weighted mean 0 / 0 or inf / inf."""
+    h, w = size
+    if b == 0 or h == 0 or w == 0:
+        return                                   # every weight is 1
+    with np.errstate(all="ignore"):
+        log_length = np.log(np.hypot(lines[:, 2] - lines[:, 0], lines[:, 3] - lines[:, 1]))
+        log_lp = p * log_length if p else np.zeros(len(lines))
+        # the farthest pixel of the image from each segment is a corner (the distance
+        # to a segment is convex)
+        corners = np.array([[0.0, 0.0], [w - 1.0, 0.0], [0.0, h - 1.0], [w - 1.0, h - 1.0]])
+        far = np.zeros(len(lines))
+        for cx, cy in corners:
+            far = np.maximum(far, _segment_distance(lines, cx, cy))
+        base_high = float(log_lp.max()) - math.log(a)          # log of |d|^p / a
+        base_low = float((log_lp - np.log(a + far)).max())
+        highest, lowest = b * base_high, b * base_low
+    limit = WEIGHT_EXPONENT * math.log(10)
+    bounds = (float(log_lp.max()), base_high, base_low, highest, lowest)
+    if not (all(math.isfinite(x) and abs(x) <= limit for x in bounds[:2])
+            and all(math.isfinite(x) and x >= -limit for x in bounds[2:3] + bounds[4:])
+            and highest <= limit):
+        def power(x):
+            e = x / math.log(10)
+            if not math.isfinite(e) or abs(e) > 1e6:
+                return "0" if e < 0 else "infinity"
+            return f"1e{e:+.0f}"
+        raise ArgumentValueError(
+            f"a={a:g}, b={b:g}, p={p:g}: the line weights (length^p / (a + dist))^b would "
+            f"range from about {power(lowest)} (the farthest pixel) to {power(highest)} (on "
+            f"a line), beyond 1e+-{WEIGHT_EXPONENT}, where floating point loses them; use a "
+            "larger a, a smaller b or p (Beier and Neely suggest a small positive a, b in "
+            "[0.5, 2] and p in [0, 1])")
+
+
+def _segment_distance(lines, x, y):
+    """Distance from the point (x, y) to each segment of ``lines``."""
+    px, py, qx, qy = lines.T
+    dx, dy = qx - px, qy - py
+    u = np.clip(((x - px) * dx + (y - py) * dy) / (dx * dx + dy * dy), 0.0, 1.0)
+    return np.hypot(px + u * dx - x, py + u * dy - y)
 
 
 def _result(storage, how):
@@ -294,9 +378,16 @@ def beier_neely(image_a, image_b, lines_a, lines_b, t, a=1.0, b=2.0, p=0.5):
                                  f"storage {sa.shape} and {sb.shape}")
     la = _lines("lines_a", lines_a)
     lb = _lines("lines_b", lines_b, len(la))
-    t = float(fractions(t))
+    t = fractions(t)
+    if t.ndim != 0:
+        raise ArgumentValueError(f"t must be one fraction in [0, 1], got an array of shape "
+                                 f"{t.shape}")
+    t = float(t)
     lines = np.ascontiguousarray(la + t * (lb - la))
-    return _result(_morph(sa, sb, lines, la, lb, t, *_weights(a, b, p)), how)
+    _between(lines, t)
+    weights = _weights(a, b, p)
+    _weight_range(lines, sa.shape[:2], *weights)
+    return _result(_morph(sa, sb, lines, la, lb, t, *weights), how)
 
 
 def warp(image, lines_from, lines_to, a=1.0, b=2.0, p=0.5):
@@ -305,7 +396,9 @@ def warp(image, lines_from, lines_to, a=1.0, b=2.0, p=0.5):
     storage, how = _image("image", image)
     src = _lines("lines_from", lines_from)
     dst = _lines("lines_to", lines_to, len(src))
-    return _result(_morph(storage, storage, dst, src, src, 0.0, *_weights(a, b, p)), how)
+    weights = _weights(a, b, p)
+    _weight_range(dst, storage.shape[:2], *weights)
+    return _result(_morph(storage, storage, dst, src, src, 0.0, *weights), how)
 
 
 def _morph(sa, sb, lines, la, lb, t, a, b, p):

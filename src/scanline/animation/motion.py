@@ -9,6 +9,7 @@ import numpy as np
 
 from .. import _validate as v
 from ..errors import ArgumentValueError
+from ._checks import finite, floats
 
 
 def bouncing_ball(x, amplitude=1.0, omega=1.0, theta0=0.0, damping=0.0):
@@ -45,10 +46,12 @@ def bouncing_ball(x, amplitude=1.0, omega=1.0, theta0=0.0, damping=0.0):
         raise ArgumentValueError(
             f"need amplitude > 0, omega > 0 and damping >= 0; got amplitude={a}, omega={w}, "
             f"damping={k}")
-    xs = np.asarray(x, dtype=np.float64)
-    if not np.isfinite(xs).all():
-        raise ArgumentValueError(f"x must be finite, got {v._show(xs.tolist())}")
-    y = a * np.abs(np.sin(w * xs + theta0)) * np.exp(-k * xs)
+    xs = finite("x", x)
+    with np.errstate(all="ignore"):
+        y = a * np.abs(np.sin(w * xs + theta0)) * np.exp(-k * xs)
+    if not np.isfinite(y).all():
+        raise ArgumentValueError(f"x: the bounce overflows at x = {v._show(x)} (e^(-kx) "
+                                 f"beyond 1e308 with damping={k}); give x of a sane size")
     return float(y) if y.ndim == 0 else y
 
 
@@ -61,7 +64,9 @@ def ballistic(t, position, velocity, gravity=(0.0, -9.81)):
     >>> ballistic(2.0, (0, 0), (3, 10), (0, -10)).tolist()
     [6.0, 0.0]
     """
-    p0, v0, g = (np.asarray(a, dtype=np.float64) for a in (position, velocity, gravity))
+    p0, v0, g = (floats(n, a, "a vector") for n, a in (("position", position),
+                                                          ("velocity", velocity),
+                                                          ("gravity", gravity)))
     if not (p0.shape == v0.shape == g.shape and p0.ndim == 1):
         raise ArgumentValueError(
             f"position, velocity and gravity must be vectors of one dimension, got shapes "
@@ -69,5 +74,10 @@ def ballistic(t, position, velocity, gravity=(0.0, -9.81)):
     for name, a in (("position", p0), ("velocity", v0), ("gravity", g)):
         if not np.isfinite(a).all():
             raise ArgumentValueError(f"{name} must be finite, got {a.tolist()}")
-    ts = np.asarray(t, dtype=np.float64)[..., None]
-    return p0 + v0 * ts + 0.5 * g * ts * ts
+    ts = finite("t", t)[..., None]
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = p0 + v0 * ts + 0.5 * g * ts * ts
+    if not np.isfinite(out).all():
+        raise ArgumentValueError("t: the position overflows at these times (beyond 1e308); "
+                                 "give times, position, velocity and gravity of sane sizes")
+    return out

@@ -15,13 +15,18 @@ import base64
 import hashlib
 import io
 import math
+import numbers
 import os
+import re
+import string
 from fractions import Fraction
 
 import numpy as np
 
 from .. import _validate as v
-from ..errors import ArgumentTypeError, ArgumentValueError
+from ..budget import check
+from ._checks import progress_flag
+from ..errors import ArgumentTypeError, ArgumentValueError, OutputError
 from ..framebuffer import write_atomically
 from . import render as _render
 
@@ -47,6 +52,93 @@ def frame_durations(count, fps, unit):
     return [b - a for a, b in zip(edges, edges[1:])]
 
 
+#: GIF delays are 16-bit hundredths of a second (655.35 s at most): a GIF cannot play
+#: slower than this (one frame every 600 s, so that the rounding of frame-exact
+#: delays stays within the field).
+GIF_MIN_FPS = 1 / 600
+
+#: WebP times frames in 32-bit milliseconds.
+WEBP_MAX_MS = 2**31 - 1
+
+#: The most plays a GIF, APNG or WebP stores (16 bits); 0 plays forever.
+MAX_LOOP = 65535
+
+#: Frame file types of :meth:`Animation.write_frames`, by extension.
+FRAME_FILES = {".png": "PNG", ".gif": "GIF", ".bmp": "BMP", ".webp": "WEBP", ".tif": "TIFF",
+               ".tiff": "TIFF"}
+
+
+def _path(name, value):
+    """A file or folder argument as a string (refused: NUL bytes, non-paths)."""
+    try:
+        text = os.fspath(value)
+    except TypeError:
+        raise ArgumentTypeError(f"{name} must be a file path (str or os.PathLike), got "
+                                f"{v._show(value)}") from None
+    if isinstance(text, bytes):
+        text = os.fsdecode(text)
+    if not text or "\0" in text:
+        raise ArgumentValueError(f"{name}={text!r} is not a file path")
+    return text
+
+
+def check_frames_memory(count, width, height, mode, kind, argument="frames", hint=None):
+    """Refuse (MemoryBudgetError naming ``argument``) an animation of ``count``
+    frames of ``width`` x ``height`` pixels in Pillow ``mode`` that a writer holding
+    every frame (``kind``: GIF, APNG, WebP) could not hold: each frame's pixels, the
+    copy Pillow converts or compares, and its own buffers."""
+    bands = {"1": 1, "L": 1, "P": 1, "LA": 2, "RGB": 3, "RGBA": 4}.get(mode, 4)
+    per_frame = width * height * (bands + 2) + 1024
+    check(count * per_frame, argument,
+          f"{count} frames of {width} x {height} {mode} held in memory for {kind} (its writer "
+          "keeps every frame)",
+          hint=hint or "save as .mp4 (encoded as the frames come, any length) or write "
+                       "numbered files with write_frames, or save fewer frames "
+                       "(frames=(start, stop))")
+
+
+def check_pattern(pattern):
+    """A frame-file ``pattern`` of :meth:`Animation.write_frames`: one field, the
+    frame number (``{}``, ``{:05d}``, ``{0:6}``: digits, optionally zero-padded to a
+    width), in a plain file name with an image extension.  Refused: a pattern
+    without the field (every frame would overwrite one file), a fill character,
+    sign or other spec that could make two numbers one name, and any folder part
+    (``../x-{:05d}.png`` would write outside the folder)."""
+    shown = v._show(pattern)
+    if not isinstance(pattern, str):
+        raise ArgumentTypeError(f"pattern must be a string such as 'frame-{{:05d}}.png', got "
+                                f"{shown}")
+    try:
+        parts = list(string.Formatter().parse(pattern))
+    except ValueError as error:
+        raise ArgumentValueError(f"pattern={shown} must format a frame number, like "
+                                 f"'frame-{{:05d}}.png' ({error})") from None
+    fields = [(name, spec, conversion) for _, name, spec, conversion in parts
+              if name is not None]
+    if len(fields) != 1:
+        raise ArgumentValueError(
+            f"pattern={shown} must format a frame number: it has {len(fields)} fields, and "
+            "needs exactly one, so that each frame has its own file, like 'frame-{:05d}.png'")
+    name, spec, conversion = fields[0]
+    if name not in ("", "0") or conversion or not re.fullmatch(r"(0?[1-9][0-9]?)?d?", spec or ""):
+        raise ArgumentValueError(
+            f"pattern={shown}: the field must be the frame number as digits, '{{}}' or "
+            "'{:05d}' (a width up to 99, optionally zero-padded), so that every frame "
+            "gets a different name")
+    literal = "".join(text for text, *_ in parts)
+    for bad in (os.sep, os.altsep, "\0"):
+        if bad and bad in literal:
+            raise ArgumentValueError(
+                f"pattern={shown} names a folder; the pattern is a file name only (the "
+                "frames go into folder): give folder='...' and pattern='frame-{:05d}.png'")
+    first = pattern.format(0)
+    ext = os.path.splitext(first)[1].lower()
+    if ext not in FRAME_FILES:
+        raise ArgumentValueError(f"pattern={shown}: frame files must be .png, .gif, "
+                                 ".bmp, .webp or .tif")
+    return pattern
+
+
 class Animation:
     """A sequence of frames at a frame rate, to save or show.
 
@@ -70,20 +162,31 @@ class Animation:
     """
 
     def __init__(self, source, fps=24, frames=None, loop=0):
-        from .timing import _fps
+        from .timing import MAX_FRAMES, _fps
 
         self.fps = _fps(fps)
         self.loop = v.positive_int("loop", loop, minimum=0)
+        if self.loop > MAX_LOOP:
+            raise ArgumentValueError(f"loop={self.loop}: the formats store at most {MAX_LOOP} "
+                                     "plays; give 0 to play forever")
+        if frames is not None:
+            frames = v.positive_int("frames", frames)
+            if frames > MAX_FRAMES:
+                raise ArgumentValueError(f"frames={frames:,} is more than the {MAX_FRAMES:,} "
+                                         "frames a sequence may have")
         if callable(source) and not isinstance(source, (list, tuple)):
             self.render = source
             if frames is None:
                 try:
-                    frames = len(source)
+                    frames = v.positive_int("len(source)", len(source))
                 except TypeError:
                     raise ArgumentValueError(
                         "a render function needs the number of frames: "
                         "Animation(render, frames=N, fps=...)") from None
-            self.count = v.positive_int("frames", frames)
+                if frames > MAX_FRAMES:
+                    raise ArgumentValueError(f"len(source) = {frames:,} is more than the "
+                                             f"{MAX_FRAMES:,} frames a sequence may have")
+            self.count = frames
         else:
             if isinstance(source, (str, bytes)) or not hasattr(source, "__len__"):
                 raise ArgumentTypeError(f"source must be a sequence of frames or a render "
@@ -115,7 +218,19 @@ class Animation:
         if frames is None:
             return range(self.count)
         if isinstance(frames, slice):
+            for part in ("start", "stop", "step"):
+                value = getattr(frames, part)
+                if value is not None and (isinstance(value, bool)
+                                          or not isinstance(value, numbers.Integral)):
+                    raise ArgumentTypeError(f"frames={frames!r}: a slice of frame numbers "
+                                            f"needs integers, got {part}={v._show(value)}")
+            if frames.step == 0:
+                raise ArgumentValueError(f"frames={frames!r}: a slice step cannot be zero")
             return range(self.count)[frames]
+        if isinstance(frames, (str, bytes)) or not hasattr(frames, "__len__") \
+                or len(frames) != 2:
+            raise ArgumentTypeError(f"frames must be (start, stop) or a slice, got "
+                                    f"{v._show(frames)}")
         start, stop = frames
         start = v.positive_int("frames start", start, minimum=0)
         stop = v.positive_int("frames stop", stop, minimum=0)
@@ -161,7 +276,7 @@ class Animation:
         i / fps; APNG stores each delay as the exact fraction 1 / fps.  GIF, APNG and
         WebP store identical consecutive frames once, with their durations added.
         """
-        name = os.fspath(path)
+        name = _path("path", path)
         ext = os.path.splitext(name)[1].lower()
         if ext not in FORMATS:
             raise ArgumentValueError(f"path={name!r}: no writer for {ext or 'a file without an extension'!r}; "
@@ -172,6 +287,10 @@ class Animation:
                 f"fps={self.fps:g} is too fast for GIF: its delays are in 1/100 s and players "
                 f"show delays under 2/100 s as 1/10 s; use fps <= {GIF_MAX_FPS:g}, or .png, "
                 ".webp or .mp4")
+        if kind == "GIF" and self.fps < GIF_MIN_FPS:
+            raise ArgumentValueError(
+                f"fps={self.fps:g} is too slow for GIF: a frame's delay is at most 655.35 s; "
+                f"use fps >= {GIF_MIN_FPS:.3g} (one frame every 600 s), or .png, .webp or .mp4")
         if kind == "MP4":
             _mp4_available()
             if quality is not None and not 0 <= v.positive_int("quality", quality, 0) <= 51:
@@ -179,6 +298,11 @@ class Animation:
         elif quality is not None and not 0 <= v.positive_int("quality", quality, 0) <= 100:
             raise ArgumentValueError(f"quality must be 0..100, got {quality}")
         indices = self._range(frames)
+        if kind == "WebP" and len(indices) * 1000 / self.fps > WEBP_MAX_MS:
+            raise ArgumentValueError(
+                f"frames: {len(indices)} frames at fps={self.fps:g} last "
+                f"{len(indices) / self.fps:g} s; a WebP animation holds at most "
+                f"{WEBP_MAX_MS / 1000:g} s (its times are 32-bit milliseconds); save as .mp4")
         images = self.images(frames, jobs=jobs, client=client, progress=progress)
         writer = {"GIF": self._pillow, "APNG": self._pillow, "WebP": self._pillow,
                   "MP4": self._mp4}[kind]
@@ -189,7 +313,11 @@ class Animation:
 
     def _pillow(self, f, images, count, kind, quality):
         first = next(images)
-        # Pillow reads the frames twice (modes and sizes first), so it needs a list
+        # Pillow's GIF, APNG and WebP writers hold every frame (GIF and APNG compare
+        # each with the one before, WebP's encoder keeps them), and read them twice
+        # (modes and sizes first), so they take a list: refused up front where it would
+        # pass the memory budget (MP4 and numbered files stream any length)
+        check_frames_memory(count, first.width, first.height, first.mode, kind)
         rest = list(_Checked(images, first.size))
         options = {"save_all": True, "append_images": rest, "loop": self.loop}
         if kind == "GIF":
@@ -253,20 +381,24 @@ class Animation:
 
         Returns the list of paths written, in frame order.
         """
-        folder = os.fspath(folder)
-        os.makedirs(folder, exist_ok=True)
+        folder = _path("folder", folder)
+        check_pattern(pattern)
+        indices = self._range(frames)
+        # the list of paths returned: a name and its string, about 100 bytes a frame
+        check(len(indices) * (len(folder) + len(pattern) + 100), "frames",
+              f"the names of {len(indices)} frame files",
+              hint="write the film in parts (frames=(start, stop))")
+        receipts = _stream(_FrameWriter(self.render, folder, pattern), indices, jobs, client,
+                           progress)
         try:
-            pattern.format(0)
-        except (IndexError, KeyError, ValueError, AttributeError):
-            raise ArgumentValueError(f"pattern={pattern!r} must format a frame number, like "
-                                     "'frame-{:05d}.png'") from None
-        ext = os.path.splitext(pattern.format(0))[1].lower()
-        if ext not in (".png", ".gif", ".bmp", ".webp", ".tif", ".tiff"):
-            raise ArgumentValueError(f"pattern={pattern!r}: frame files must be .png, .gif, "
-                                     ".bmp, .webp or .tif")
-        receipts = _stream(_FrameWriter(self.render, folder, pattern), self._range(frames),
-                           jobs, client, progress)
-        return [os.path.join(folder, receipt.info["scanline_file"]) for receipt in receipts]
+            try:
+                os.makedirs(folder, exist_ok=True)
+            except OSError as error:
+                raise OutputError(f"folder={folder!r}: cannot make the folder "
+                                  f"({error.strerror or error})") from None
+            return [os.path.join(folder, receipt.info["scanline_file"]) for receipt in receipts]
+        finally:
+            receipts.close()
 
     def _repr_html_(self):
         """Jupyter: the animation as an animated PNG in an <img> tag (the first 250
@@ -311,9 +443,11 @@ class _FrameWriter:
 
         image = _render.to_image(self.render(index), index)
         name = self.pattern.format(index)
+        if os.path.basename(name) != name or name in (".", ".."):    # (check_pattern)
+            raise ArgumentValueError(f"pattern={self.pattern!r} makes {name!r} for frame "
+                                     f"{index}, not a file name")
         out = io.BytesIO()
-        fmt = {".png": "PNG", ".gif": "GIF", ".bmp": "BMP", ".webp": "WEBP", ".tif": "TIFF",
-               ".tiff": "TIFF"}[os.path.splitext(name)[1].lower()]
+        fmt = FRAME_FILES[os.path.splitext(name)[1].lower()]
         image.save(out, format=fmt, **({"lossless": True} if fmt == "WEBP" else {}))
         data = out.getvalue()
         write_atomically(os.path.join(self.folder, name), lambda f: f.write(data))
@@ -341,11 +475,15 @@ class _Checked:
 
 def _stream(render, indices, jobs, client, progress):
     """The rendered frames ``indices`` in order, with a progress bar; closing the
-    generator (or an error) stops the workers."""
+    stream (started or not), or an error, stops the workers."""
     if not indices:
         raise ArgumentValueError("frames selects no frame")
     stream = _render.frames(render, indices, jobs=jobs, client=client)
-    bar = _progress(progress, len(indices))
+    try:
+        bar = _progress(progress, len(indices))
+    except BaseException:
+        stream.close()
+        raise
 
     def run():
         try:
@@ -354,12 +492,15 @@ def _stream(render, indices, jobs, client, progress):
                 if bar is not None:
                     bar.update(1)
         finally:
-            close = getattr(stream, "close", None)
-            if close is not None:
-                close()
-            if bar is not None:
-                bar.close()
-    return run()
+            release()
+
+    def release():
+        close = getattr(stream, "close", None)
+        if close is not None:
+            close()
+        if bar is not None:
+            bar.close()
+    return _render.Stream(run(), release)
 
 
 def _prepend(first, rest):
@@ -377,6 +518,7 @@ def _mp4_available():
 
 def _progress(progress, total):
     """A tqdm bar (shown after half a second, on a terminal unless forced), or None."""
+    progress = progress_flag(progress)
     if progress is False:
         return None
     try:

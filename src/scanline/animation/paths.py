@@ -21,8 +21,14 @@ import math
 import numpy as np
 
 from .. import _validate as v
-from ..errors import ArgumentTypeError, ArgumentValueError
+from ..errors import ArgumentValueError
+from ..budget import check as budget
+from ._checks import flag, floats
 from .easing import apply, fractions, resolve
+
+#: Intervals of the arc-length table integrated at a time (bounding the memory of the
+#: quadrature's temporaries, whatever ``intervals`` is).
+CHUNK = 1 << 16
 
 #: Gauss–Legendre nodes and weights on [0, 1] (8 points: exact for degree 15).
 _NODES, _WEIGHTS = np.polynomial.legendre.leggauss(8)
@@ -75,12 +81,7 @@ def _geometry(curve):
         return _Smooth(curve)
     if isinstance(curve, MotionPath):
         return curve._geometry
-    try:
-        points = np.array(curve, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise ArgumentTypeError(
-            f"curve must be a scanline.curves curve or an array of polyline points, got "
-            f"{v._show(curve)}") from None
+    points = floats("curve", curve, "a scanline.curves curve or an array of polyline points")
     if points.ndim != 2 or len(points) < 2 or points.shape[1] < 1:
         raise ArgumentValueError(f"curve as points must have shape (N >= 2, dim), got "
                                  f"shape {points.shape}")
@@ -120,8 +121,11 @@ class MotionPath:
 
     def __init__(self, curve, arc_length=True, intervals=None):
         self._geometry = g = _geometry(curve)
-        self.arc_length = bool(arc_length)
+        self.arc_length = flag("arc_length", arc_length)
         lo, hi = g.domain
+        if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
+            raise ArgumentValueError(f"curve has the parameter domain [{lo:g}, {hi:g}]; a motion "
+                                     "path needs a finite one")
         if isinstance(g, _Polyline):
             self._u = np.arange(len(g.points), dtype=np.float64)
             pieces = np.linalg.norm(np.diff(g.points, axis=0), axis=1)
@@ -129,8 +133,15 @@ class MotionPath:
             if intervals is None:
                 intervals = max(256, 64 * math.ceil(hi - lo))
             intervals = v.positive_int("intervals", intervals)
+            # the table (parameters, lengths, running sums) and, per piece of at most
+            # CHUNK intervals, the quadrature's points and speeds
+            budget(intervals * 8 * 4 + CHUNK * 8 * 8 * (2 * g.dimension + 8), "intervals",
+                   f"an arc-length table of {intervals} intervals",
+                   hint="give fewer intervals (the default is 64 per curve section)")
             self._u = np.linspace(lo, hi, intervals + 1)
-            pieces = self._integral(self._u[:-1], self._u[1:])
+            starts, ends = self._u[:-1], self._u[1:]
+            pieces = np.concatenate([self._integral(starts[k:k + CHUNK], ends[k:k + CHUNK])
+                                     for k in range(0, intervals, CHUNK)])
         self._cumulative = np.concatenate([[0.0], np.cumsum(pieces)])
         self.length = float(self._cumulative[-1])
         if not (self.length > 0 and math.isfinite(self.length)):
@@ -226,9 +237,15 @@ class MotionPath:
         from .. import transform as tf
 
         self._require_2d("transform")
-        x, y = (float(c) for c in self.point(float(s)))
+        s = fractions(s, "s")
+        if s.ndim != 0:
+            raise ArgumentValueError(f"s must be one path parameter in [0, 1], got an array of "
+                                     f"shape {s.shape}")
+        s = float(s)
+        orient = flag("orient", orient)
+        x, y = (float(c) for c in self.point(s))
         m = tf.translation(x, y)
-        return tf.compose(m, tf.rotation(self.heading(float(s)))) if orient else m
+        return tf.compose(m, tf.rotation(self.heading(s))) if orient else m
 
     def at(self, t, start=0.0, end=1.0, ease="linear"):
         """The point at time(s) ``t`` of a trip from ``start`` to ``end`` seconds, the
@@ -240,7 +257,9 @@ class MotionPath:
         start, end = v.number("start", start), v.number("end", end)
         if not start < end:
             raise ArgumentValueError(f"start must come before end, got start={start}, end={end}")
-        t = np.asarray(t, dtype=np.float64)
+        if not math.isfinite(end - start):
+            raise ArgumentValueError(f"end - start overflows (start={start:g}, end={end:g})")
+        t = floats("t", t, "a time or an array of times")
         if not np.isfinite(t).all():
             raise ArgumentValueError(f"t must be finite, got {v._show(t.tolist())}")
         f = np.clip((t - start) / (end - start), 0.0, 1.0)

@@ -17,8 +17,10 @@ terminated, the cluster's pending tasks are cancelled.
 import collections
 import os
 import pickle
+import re
 import signal
 import threading
+import time
 import typing
 
 import numpy as np
@@ -198,14 +200,48 @@ def chunks(indices, parts):
     (guided self-scheduling, Polychronopoulos & Kuck 1987): each chunk takes about a
     quarter of the frames left per worker, at most 16, so that the overhead per task stays small while most frames
     are left, and the last chunks are single frames, so that the workers finish
-    within about one frame of each other and the output streams."""
-    indices = list(indices)
-    out, start = [], 0
-    while start < len(indices):
-        size = max(1, min(16, (len(indices) - start) // (4 * parts)))
-        out.append(indices[start:start + size])
+    within about one frame of each other and the output streams.  A list; the
+    renderers take them one at a time from :func:`iter_chunks`."""
+    return list(iter_chunks(indices, parts))
+
+
+def iter_chunks(indices, parts):
+    """The chunks of :func:`chunks`, made as they are asked for: a film of 10**9
+    frames is a ``range`` and its chunks are ranges, so no list of frames or chunks
+    is ever made."""
+    if not isinstance(indices, range):
+        indices = list(indices)
+    start, total = 0, len(indices)
+    while start < total:
+        size = max(1, min(16, (total - start) // (4 * parts)))
+        yield indices[start:start + size]
         start += size
-    return out
+
+
+class Stream:
+    """The frames of a render, one by one, with a ``close()`` that releases what the
+    render holds (worker processes, shared memory, a cluster connection) whether or
+    not the frames have started coming (closing a generator that never started runs
+    none of its ``finally`` clauses)."""
+
+    def __init__(self, frames, release=None):
+        self._frames, self._release = frames, release
+
+    def __iter__(self):
+        return self
+
+    def __next__(self):
+        return next(self._frames)
+
+    def close(self):
+        try:
+            close = getattr(self._frames, "close", None)
+            if close is not None:
+                close()
+        finally:
+            release, self._release = self._release, None
+            if release is not None:
+                release()
 
 
 # -- worker processes --------------------------------------------------------------------------
@@ -409,39 +445,154 @@ def _processes(render, parts, jobs):
             pool.close()
             pool.join()
         finally:
-            pool.terminate()
-            pool.join()
-            if slots is not None:
-                slots.close()
-    return gather()
+            stop()
+
+    def stop():
+        pool.terminate()
+        pool.join()
+        if slots is not None:
+            slots.close()
+    return Stream(gather(), stop)
 
 
 # -- Dask ----------------------------------------------------------------------------------------
 def connect(client):
     """``(client, owned)``: a ``distributed.Client`` as given, or one connected to the
-    scheduler address ``client`` (then ``owned``: the caller closes it)."""
+    scheduler address ``client`` (then ``owned``: the caller closes it).
+
+    An address is checked first (``tcp://HOST:PORT``), then the scheduler is asked who
+    it is; the connection *and* that first exchange must finish within
+    :data:`CONNECT_TIMEOUT` seconds, or :class:`SchedulerUnreachable` says so (a
+    server that accepts connections and never answers would otherwise hold the
+    client's handshake forever)."""
     if not isinstance(client, str):
         if not hasattr(client, "submit") or not hasattr(client, "scatter"):
             raise ArgumentTypeError(f"client must be a dask.distributed Client or a scheduler "
                                     f"address, got {v._show(client)}")
         return client, False
+    address = scheduler_address(client, "client")
     try:
         from distributed import Client
     except ImportError:
         raise ArgumentValueError("rendering on a Dask cluster needs dask.distributed: pip "
                                  "install 'scanline[dask]'") from None
-    try:
-        return Client(client, timeout=CONNECT_TIMEOUT, set_as_default=False), True
-    except (OSError, TimeoutError, ValueError) as error:
+    deadline = time.monotonic() + CONNECT_TIMEOUT
+    _probe(address, CONNECT_TIMEOUT)
+    made, gave_up = [], threading.Event()
+
+    def start():
+        try:
+            new = Client(address, timeout=max(0.1, deadline - time.monotonic()),
+                         set_as_default=False)
+        except BaseException as error:  # noqa: BLE001 - handed to the waiting thread
+            made.append(error)
+            return
+        made.append(new)
+        if gave_up.is_set():             # too late: nobody will use it
+            new.close()
+
+    thread = threading.Thread(target=start, daemon=True, name="scanline dask connect")
+    thread.start()
+    thread.join(max(0.0, deadline - time.monotonic()) + 1.0)
+    if not made:
+        gave_up.set()
+        if made and not isinstance(made[0], BaseException):   # it came just now
+            made[0].close()
         raise SchedulerUnreachable(
-            f"scheduler={client!r} cannot be reached within {CONNECT_TIMEOUT:g} s ({error}); "
-            "check the address (tcp://HOST:PORT) and that the scheduler is running") from None
+            f"scheduler={client!r} answered once, then did not complete the connection "
+            f"within {CONNECT_TIMEOUT:g} s; check that it is a running Dask scheduler")
+    if isinstance(made[0], BaseException):
+        error = made[0]
+        if not isinstance(error, Exception):
+            raise error
+        raise SchedulerUnreachable(
+            f"scheduler={client!r} cannot be reached within {CONNECT_TIMEOUT:g} s "
+            f"({type(error).__name__}: {error}); check the address (tcp://HOST:PORT) and "
+            "that the scheduler is running") from None
+    return made[0], True
+
+
+_HOST = re.compile(r"[A-Za-z0-9](?:[A-Za-z0-9._-]{0,252})")
+_IPV6 = re.compile(r"\[[0-9A-Fa-f:.]{2,45}\]")
+
+
+def scheduler_address(text, name="scheduler"):
+    """The Dask scheduler address ``text`` checked and written out in full:
+    ``tcp://HOST:PORT`` (``HOST:PORT`` means tcp), HOST a name, an IPv4 address or
+    an IPv6 address in brackets, PORT 1 to 65535.  Other schemes (tls, ws, ucx ...)
+    need more than an address (a security context, a transport): connect a
+    ``distributed.Client`` and pass it instead."""
+    shown = v._show(text)
+    what = (f"{name}={shown} is not a scheduler address: write tcp://HOST:PORT, such as "
+            "tcp://10.0.0.5:8786")
+    if not isinstance(text, str) or not text.strip():
+        raise ArgumentValueError(what)
+    scheme, sep, rest = text.strip().partition("://")
+    if not sep:
+        scheme, rest = "tcp", text.strip()
+    if scheme.lower() != "tcp":
+        raise ArgumentValueError(
+            f"{name}={shown}: scanline connects to tcp:// addresses only; for a "
+            f"{scheme!r} scheduler (security settings, another transport) make a "
+            "distributed.Client yourself and pass it as client=")
+    host, colon, port = rest.rpartition(":")
+    if not colon or not (_HOST.fullmatch(host) or _IPV6.fullmatch(host)):
+        raise ArgumentValueError(what)
+    if not re.fullmatch(r"[0-9]{1,5}", port) or not 1 <= int(port) <= 65535:
+        raise ArgumentValueError(f"{name}={shown}: the port must be a number from 1 to "
+                                 "65535, such as tcp://10.0.0.5:8786")
+    return f"tcp://{host}:{int(port)}"
+
+
+def _probe(address, timeout):
+    """Connect to ``address`` and ask the scheduler's identity, all within ``timeout``
+    seconds (in a thread of its own with its own event loop, so that it works where
+    an event loop is already running, as in Jupyter); raise SchedulerUnreachable
+    otherwise."""
+    import asyncio
+
+    from distributed.comm import connect as comm_connect
+    from distributed.core import send_recv
+
+    async def ask():
+        comm = await comm_connect(address, timeout=timeout)
+        try:
+            return await send_recv(comm, op="identity")
+        finally:
+            comm.abort()
+
+    async def bounded():
+        return await asyncio.wait_for(ask(), timeout)
+
+    outcome = []
+
+    def run():
+        try:
+            outcome.append(asyncio.run(bounded()))
+        except BaseException as error:  # noqa: BLE001 - handed to the waiting thread
+            outcome.append(error)
+
+    thread = threading.Thread(target=run, daemon=True, name="scanline dask probe")
+    thread.start()
+    thread.join(timeout + 1.0)
+    answer = outcome[0] if outcome else None
+    if isinstance(answer, dict) and answer.get("type") == "Scheduler":
+        return answer
+    if not outcome or isinstance(answer, asyncio.TimeoutError):
+        why = "no answer"
+    elif isinstance(answer, BaseException):
+        why = f"{type(answer).__name__}: {' '.join(str(answer).split())[:200]}"
+    else:
+        why = f"it answered as {v._show(answer)}, not as a Dask scheduler"
+    raise SchedulerUnreachable(
+        f"scheduler={address!r} did not answer as a Dask scheduler within {timeout:g} s "
+        f"({why}); check the address (tcp://HOST:PORT) and that the scheduler is running")
 
 
 def _dask(render, indices, client, owned):
     try:
         workers = max(1, len(client.scheduler_info().get("workers", {})))
-        parts = chunks(indices, workers)
+        parts = iter_chunks(indices, workers)
         # a fresh key each time (hash=False): a repeated render must not reuse the key of
         # a scatter the client is just releasing
         [shared] = client.scatter([render], broadcast=True, hash=False)
@@ -483,6 +634,37 @@ def _dask(render, indices, client, owned):
 
 
 # -- the one entry point -----------------------------------------------------------------------
+#: Most worker processes per core of this machine: rendering is bound by the
+#: processor, so more processes than cores only add memory and start-up time (a few
+#: per core still help a render function that waits for files).
+JOBS_PER_CORE = 4
+
+
+def cores():
+    """The cores this process may run on."""
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except (AttributeError, OSError):           # pragma: no cover - not Linux
+        return max(1, os.cpu_count() or 1)
+
+
+def max_jobs():
+    """The most worker processes ``jobs`` may ask for: :data:`JOBS_PER_CORE` per core."""
+    return JOBS_PER_CORE * cores()
+
+
+def check_jobs(jobs, name="jobs"):
+    """``jobs`` checked: an integer from 1 to :func:`max_jobs`."""
+    jobs = v.positive_int(name, jobs)
+    most = max_jobs()
+    if jobs > most:
+        raise ArgumentValueError(
+            f"{name}={jobs} is more worker processes than this machine can use: at most "
+            f"{most} ({JOBS_PER_CORE} per core, {cores()} cores); give {name} <= {most} "
+            "(for more, render on a Dask cluster)")
+    return jobs
+
+
 def frames(render, indices, jobs=1, client=None):
     """Yield the rendered frames ``indices`` as Pillow images, in order.
 
@@ -500,13 +682,16 @@ def frames(render, indices, jobs=1, client=None):
     if not callable(render):
         raise ArgumentTypeError(f"render must be a function of the frame index, got "
                                 f"{v._show(render)}")
-    jobs = v.positive_int("jobs", jobs)
+    jobs = check_jobs(jobs)
     if client is not None and jobs != 1:
         raise ArgumentValueError(f"give jobs (processes here) or client (a Dask cluster), not "
                                  f"both; got jobs={jobs} and client={v._show(client)}")
-    indices = list(indices)
+    if not isinstance(indices, range):       # a range stays one: a film of 10**9 frames
+        indices = list(indices)
     if client is not None:
-        return _dask(render, indices, *connect(client))
+        client, owned = connect(client)
+        return Stream(_dask(render, indices, client, owned),
+                      client.close if owned else None)
     if jobs == 1 or len(indices) <= 1:
         return (to_image(render(i), i) for i in indices)
-    return _processes(render, chunks(indices, jobs), min(jobs, len(indices)))
+    return _processes(render, iter_chunks(indices, jobs), min(jobs, len(indices)))

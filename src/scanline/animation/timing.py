@@ -20,12 +20,19 @@ from typing import NamedTuple
 import numpy as np
 
 from .. import _validate as v
+from ..budget import check as budget
 from ..errors import ArgumentValueError
 from .easing import SPACINGS, apply, resolve
 
 
 #: The most frames a sequence may have.
 MAX_FRAMES = 2**31 - 1
+
+#: The frame rates an animation may have: from one frame every 1000 seconds (a slide
+#: show) to a million frames a second (a simulation sampled finely).  Beyond them the
+#: times i / fps of the formats (MP4's rational time base, APNG's and WebP's delays)
+#: overflow or round to nothing.
+MIN_FPS, MAX_FPS = 1e-3, 1e6
 
 
 class FramePlan(NamedTuple):
@@ -55,10 +62,14 @@ class FramePlan(NamedTuple):
     key_frames: int
 
 
-def _fps(fps):
-    fps = v.number("fps", fps)
+def _fps(fps, name="fps"):
+    fps = v.number(name, fps)
     if fps <= 0:
-        raise ArgumentValueError(f"fps must be > 0 (frames per second), got {fps}")
+        raise ArgumentValueError(f"{name} must be > 0 (frames per second), got {fps}")
+    if not MIN_FPS <= fps <= MAX_FPS:
+        raise ArgumentValueError(
+            f"{name}={fps:g} frames per second is outside {MIN_FPS:g} to {MAX_FPS:g} (one frame "
+            "every 1000 s to a million a second), the rates the animation formats can time")
     return fps
 
 
@@ -141,6 +152,10 @@ def duration_of(key_frames, fps, inbetweens=0):
     fps = _fps(fps)
     n = _count("inbetweens", inbetweens, 0)
     frames = k + (k - 1) * n
+    if frames > MAX_FRAMES:
+        raise ArgumentValueError(
+            f"key_frames={k} with inbetweens={n} make {frames:,} frames; the limit is "
+            f"{MAX_FRAMES:,} (more than two years of film at 24 fps)")
     return FramePlan(frames / fps, fps, frames, n, k)
 
 
@@ -182,6 +197,9 @@ def inbetween_times(t1, t2, n, spacing="constant"):
         raise ArgumentValueError(f"t1 must come before t2, got t1={t1}, t2={t2}")
     n = _count("n", n, 0)
     function = resolve(spacing, "spacing")
+    # j, j / (n + 1), the spacing's value (and its temporaries) and the times
+    budget(n * 8 * 6, "n", f"{n} in-between times",
+          hint="ask for fewer in-betweens, or compute them in pieces (t1 and t2 of each piece)")
     j = np.arange(1, n + 1, dtype=np.float64)
     return t1 + (t2 - t1) * apply(function, j / (n + 1))
 

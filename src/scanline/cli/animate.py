@@ -87,15 +87,23 @@ def frame_range(text, count):
 def run_animate(args):
     """Load the animated scene, render and encode it."""
     from ..animation import Animation
+    from ..animation.output import FORMATS, check_frames_memory
+    from ..animation.render import check_jobs, scheduler_address
     from ..errors import ArgumentValueError
     from ..scene import load_animated
 
+    # the arguments first, before the scene is read and drawn
+    check_jobs(args.jobs, "--jobs")
+    if args.scheduler is not None:
+        scheduler_address(args.scheduler, "--scheduler")
+        if args.jobs != 1:
+            raise ArgumentValueError("give --jobs (processes here) or --scheduler (a Dask "
+                                     "cluster), not both")
+    if args.fps is not None:
+        from ..animation.timing import _fps
+
+        _fps(args.fps, "--fps")
     scene = load_animated(scene_path(args), args.format)
-    if args.jobs < 1:
-        raise ArgumentValueError(f"--jobs must be >= 1, got {args.jobs}")
-    if args.scheduler and args.jobs != 1:
-        raise ArgumentValueError("give --jobs (processes here) or --scheduler (a Dask "
-                                 "cluster), not both")
     if args.fps is not None:
         scene.set_fps(args.fps)
     fps = scene.fps
@@ -104,28 +112,48 @@ def run_animate(args):
     count = len(range(len(anim))[frames]) if frames is not None else len(anim)
     where = dict(jobs=args.jobs, client=args.scheduler, progress=args.progress, frames=frames)
     if args.output.endswith(("/", os.sep)):
+        if args.quality is not None:
+            raise ArgumentValueError("--quality is for .mp4 and .webp files; frames written "
+                                     "into a folder are lossless PNG files")
         paths = anim.write_frames(args.output, **where)
         print(f"scanline animate: wrote {len(paths)} frames to {args.output}")
         return
-    anim.save(args.output, quality=args.quality, **where)
+    kind = FORMATS.get(os.path.splitext(args.output)[1].lower())
     c = scene.canvas
+    if kind in ("GIF", "APNG", "WebP"):         # writers that hold every frame
+        check_frames_memory(count, c.width, c.height, "RGBA" if c.mode == "RGBA" else "RGB",
+                            kind, "--frames",
+                            hint=f"the scene's {count} frames do not fit: write .mp4 (encoded "
+                                 "as the frames come), or one PNG per frame into a folder/, "
+                                 "or give --frames A:B")
+    anim.save(args.output, quality=args.quality, **where)
     print(f"scanline animate: wrote {args.output} ({count} frames, {c.width}x{c.height}, "
           f"{fps:g} fps, {count / fps:g} s)")
 
 
 def run_storyboard(args):
     """Load the animated scene and draw its storyboard."""
+    from ..animation.storyboard import check_sheet
     from ..errors import ArgumentValueError
     from ..framebuffer import FrameBuffer
     from ..scene import load_animated
 
-    m = re.fullmatch(r"(\d+)x(\d+)", args.panel)
+    m = re.fullmatch(r"(\d{1,9})x(\d{1,9})", args.panel)
     if m is None:
         raise ArgumentValueError(f"--panel {args.panel!r} must be WxH, e.g. 240x180")
     panel = (int(m.group(1)), int(m.group(2)))
+    if min(panel) < 16:
+        raise ArgumentValueError(f"--panel {args.panel!r}: a panel must be at least 16x16 "
+                                 "pixels")
     if args.columns < 1:
         raise ArgumentValueError(f"--columns must be >= 1, got {args.columns}")
+    # the sheet's size for one panel a row, refused before the scene is read
+    check_sheet(1, 1, panel, name="--panel", copies=1)
     scene = load_animated(scene_path(args), args.format)
+    panels = scene.storyboard_frames()
+    # the sheet, and the frame buffer it is saved from
+    check_sheet(len(panels), min(args.columns, len(panels)), panel, [c for *_, c in panels],
+                title="storyboard", name="--panel", copies=1)
     sheet = scene.storyboard_sheet(columns=args.columns, panel=panel)
     FrameBuffer.from_pil(sheet).save(args.output)
-    print(f"scanline storyboard: wrote {args.output} ({len(scene.storyboard_frames())} panels)")
+    print(f"scanline storyboard: wrote {args.output} ({len(panels)} panels)")

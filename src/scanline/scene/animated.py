@@ -128,9 +128,34 @@ def _numeric_shape(value, path, text):
         return "color"
     try:
         a = np.array(value, dtype=np.float64)
-    except (TypeError, ValueError):
-        _fail(path, f"{text!r} holds {value!r}, which is not numbers (nor a color)")
+    except (TypeError, ValueError, OverflowError):
+        _fail(path, f"{text!r} holds {value!r}, which is not numbers (nor a color)"[:300])
     return a.shape
+
+
+#: Keys whose values name things (a segment's name is how ``[name]`` finds it): never
+#: animated, whatever they hold.
+_NAMES = {"name", "type", "viewport", "camera", "version"}
+
+
+def _animatable(tokens, current, path, text):
+    """Refuse a target that holds something other than numbers or a color: a name or
+    a kind (animating ``segments[ball].name`` would lose the segment that
+    ``segments[ball]`` finds), or a string that is not a color."""
+    last = tokens[-1]
+    if isinstance(last, str) and last in _NAMES:
+        _fail(path, f"{text!r} is the scene's {last!r}, which names or picks a part of the "
+              "scene; animate numbers or colors (a position, an angle, a radius, a color)")
+    if isinstance(current, str):
+        from ..color.spec import rgba
+
+        try:
+            rgba(current, "value")
+        except ScanlineError:
+            _fail(path, f"{text!r} holds {current!r}, which is neither numbers nor a color; "
+                  "animate numbers or colors"[:300])
+    elif isinstance(current, (bool, dict)) or current is None:
+        _fail(path, f"{text!r} holds {current!r}, which is not numbers (nor a color)"[:300])
 
 
 # -- values ----------------------------------------------------------------------------------
@@ -169,8 +194,13 @@ class _Writer:
             indices = []              # entry of a name is found once
             for token in self.tokens[:-1]:
                 if isinstance(token, tuple):
-                    token = next(k for k, item in enumerate(node)
-                                 if isinstance(item, dict) and item.get("name") == token[1])
+                    token = next((k for k, item in enumerate(node)
+                                  if isinstance(item, dict) and item.get("name") == token[1]),
+                                 None)
+                    if token is None:          # (_animatable keeps names unchanged)
+                        raise SceneError(f"{self.target!r}: no entry named "
+                                         f"{self.tokens[len(indices)][1]!r} in this frame",
+                                         path=self.target)
                 indices.append(token)
                 node = node[token]
             self._indices, node = indices, data
@@ -254,6 +284,7 @@ class AnimatedScene:
         node, key = locate(data, tokens, value, f"{path}.target")
         if value in self.writers:
             _fail(f"{path}.target", f"{value!r} is animated twice; give each value one track")
+        _animatable(tokens, node[key], f"{path}.target", value)
         return tokens, node[key]
 
     def _add(self, timeline, target, tokens, track, decode, path):
@@ -471,8 +502,22 @@ class AnimatedScene:
         panels = self.storyboard_frames()
         title = self.title or (os.path.basename(self.file) if self.file else "storyboard")
         title += f"  ({len(self)} frames at {self.fps:g} fps, {self.timeline.duration:g} s)"
-        return contact_sheet([self.frame(f) for f, _, _ in panels], [p[1] for p in panels],
+        return contact_sheet(_Frames(self, [f for f, _, _ in panels]), [p[1] for p in panels],
                              [p[2] for p in panels], columns=columns, panel=panel, title=title)
+
+
+class _Frames:
+    """Frames of a scene drawn when the contact sheet asks for them, one at a time (a
+    storyboard of many panels never holds every frame)."""
+
+    def __init__(self, scene, numbers):
+        self.scene, self.numbers = scene, numbers
+
+    def __len__(self):
+        return len(self.numbers)
+
+    def __getitem__(self, k):
+        return self.scene.frame(self.numbers[k])
 
 
 class _Along:

@@ -114,7 +114,9 @@ def _where(tokens, segments):
         raise _NoPlan()
     index = tokens[1]
     if isinstance(index, tuple):
-        index = next(k for k, s in enumerate(segments) if s.get("name") == index[1])
+        index = next((k for k, s in enumerate(segments) if s.get("name") == index[1]), None)
+        if index is None:            # (the full build finds, or refuses, the name)
+            raise _NoPlan()
     i = index % len(segments)
     if tokens[2] == "transform":
         return i, "transform", None

@@ -35,6 +35,12 @@ class DepthBuffer:
     clear : float
         The initial depth of every pixel (default infinity).
 
+    Raises
+    ------
+    MemoryBudgetError
+        When its 8 bytes a pixel pass the memory budget (:mod:`scanline.budget`),
+        before anything is allocated.
+
     Examples
     --------
     >>> import scanline as sl
@@ -46,15 +52,23 @@ class DepthBuffer:
     """
 
     def __init__(self, width, height, clear=np.inf):
+        from . import budget
+
         self.width = v.positive_int("width", width)
         self.height = v.positive_int("height", height)
         value = _depth_value("clear", clear)
+        budget.check(8 * self.width * self.height, "width x height",
+                     f"a {self.width} x {self.height} depth buffer (8 bytes a pixel)",
+                     hint="use a smaller size")
         self.array = np.full((self.height, self.width), value, np.float64)
 
     @classmethod
     def holding(cls, array):
         """A depth buffer whose pixels are ``array`` (H, W) float64, C-contiguous (not
         copied: what a renderer hands back)."""
+        if not isinstance(array, np.ndarray) or array.ndim != 2:
+            raise ArgumentValueError("a depth buffer's array must be a writable C-contiguous "
+                                     f"float64 (H, W) array, got {v._show(array)}")
         height, width = array.shape
         out = cls.__new__(cls)
         out.width = v.positive_int("width", width)
@@ -65,6 +79,10 @@ class DepthBuffer:
     @classmethod
     def like(cls, fb, clear=np.inf):
         """A depth buffer of the size of frame buffer ``fb``."""
+        from .framebuffer import FrameBuffer
+
+        if not isinstance(fb, FrameBuffer):
+            raise ArgumentTypeError(f"fb must be a scanline.FrameBuffer, got {v._show(fb)}")
         return cls(fb.width, fb.height, clear)
 
     def clear(self, value=np.inf):

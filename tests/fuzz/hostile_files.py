@@ -1,10 +1,12 @@
-"""Hostile input files, generated (nothing is downloaded): fonts, scene files and
-images built to break a careless reader.
+"""Hostile input files, generated (nothing is downloaded): fonts, scene files,
+images and mesh files (FIFOs, links to /dev/zero, PLY headers that never end or
+announce absurd counts, OBJ indices beyond int64) built to break a careless reader.
 
 Run as a script to write them all into a folder (``python -m tests.fuzz.hostile_files
 DIR``); the tests call the functions.
 """
 
+import functools
 import json
 import os
 import struct
@@ -151,6 +153,112 @@ def garbage(path, size=4096, seed=0):
     return path
 
 
+# -- mesh files and the scenes that name them (sl.mesh.load, a scene's `file =` key) --------
+def mesh_fifo(path):
+    """A FIFO named like a mesh file (``x.obj``): opening it for reading blocks until
+    a writer comes, unless the reader opens it without blocking."""
+    os.mkfifo(path)
+    return path
+
+
+def mesh_link_to_dev_zero(path):
+    """A symbolic link named like a mesh file to /dev/zero: endless zero bytes (a
+    careless reader follows it to gigabytes)."""
+    os.symlink("/dev/zero", path)
+    return path
+
+
+def ply_without_end_header(path, comments=0):
+    """A PLY header that never ends (``comments`` comment lines after it: more than
+    the header may take)."""
+    with open(path, "w") as f:
+        f.write("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                "property float y\nproperty float z\n" + "comment x\n" * comments)
+    return path
+
+
+def ply_with_huge_counts(path, vertices=10**11, faces=2**64, binary=False):
+    """A short PLY file whose header announces far more elements than it holds."""
+    fmt = "binary_little_endian" if binary else "ascii"
+    with open(path, "wb") as f:
+        f.write((f"ply\nformat {fmt} 1.0\nelement vertex {vertices}\nproperty float x\n"
+                 f"property float y\nproperty float z\nelement face {faces}\n"
+                 "property list uchar int vertex_indices\nend_header\n").encode()
+                + (b"\0" * 36 if binary else b"0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"))
+    return path
+
+
+def obj_with_a_huge_index(path, index=2**63):
+    """A triangle whose third index is ``index`` (2**63: beyond int64)."""
+    with open(path, "w") as f:
+        f.write(f"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 {index}\n")
+    return path
+
+
+def stl_with_a_huge_count(path):
+    """A binary STL header announcing 2**32 - 1 triangles, with one."""
+    with open(path, "wb") as f:
+        f.write(b"\0" * 80 + (2**32 - 1).to_bytes(4, "little") + b"\0" * 50)
+    return path
+
+
+def scene_with_a_mesh_file(path, mesh_file="fifo.obj", size=40):
+    """A version-2 scene whose one mesh primitive is ``file = mesh_file`` (relative
+    to the scene's folder)."""
+    with open(path, "w") as f:
+        f.write(f"version = 2\n[canvas]\nwidth = {size}\nheight = {size}\n"
+                "[[cameras]]\neye = [3, 2, 4]\ntarget = [0, 0, 0]\n"
+                "[[segments]]\nname = \"m\"\nprimitives = [{type = \"mesh\", file = "
+                + json.dumps(mesh_file) + "}]\n")
+    return path
+
+
+def scene_with_many_spheres(path, count=200, resolution=1024):
+    """``count`` spheres at ``resolution`` (each within the per-mesh limit): the
+    scene's total must be checked, not only each mesh."""
+    sphere = f'{{type = "mesh", generator = "sphere", resolution = {resolution}}}'
+    with open(path, "w") as f:
+        f.write("version = 2\n[canvas]\nwidth = 40\nheight = 40\n"
+                "[[cameras]]\neye = [3, 2, 4]\ntarget = [0, 0, 0]\n"
+                "[[segments]]\nname = \"m\"\nprimitives = [\n"
+                + ",\n".join([sphere] * count) + "\n]\n")
+    return path
+
+
+def scene_huge_3d_canvas(path, size=13000):
+    """About 400 bytes asking for a size x size canvas with 3-D surfaces (a z-buffer
+    of 12 bytes a pixel besides the frame buffer)."""
+    with open(path, "w") as f:
+        f.write(f"version = 2\n[canvas]\nwidth = {size}\nheight = {size}\n"
+                "[[cameras]]\neye = [3, 2, 4]\ntarget = [0, 0, 0]\n"
+                "[materials.m]\ncolor = \"red\"\n"
+                "[[segments]]\nname = \"m\"\nprimitives = [{type = \"mesh\", "
+                "generator = \"cube\", material = \"m\"}]\n")
+    return path
+
+
+def _scene_naming(mesh_file, path):
+    return scene_with_a_mesh_file(path, mesh_file)
+
+
+#: The hostile mesh files, by name (the scene files below name them).
+MESH_FILES = {
+    "fifo.obj": mesh_fifo,
+    "fifo.ply": mesh_fifo,
+    "fifo.stl": mesh_fifo,
+    "zero.obj": mesh_link_to_dev_zero,
+    "zero.stl": mesh_link_to_dev_zero,
+    "no-end-header.ply": ply_without_end_header,
+    "long-header.ply": lambda path: ply_without_end_header(path, comments=20000),
+    "huge-counts.ply": ply_with_huge_counts,
+    "huge-counts-binary.ply": lambda path: ply_with_huge_counts(path, binary=True),
+    "index-2-63.obj": obj_with_a_huge_index,
+    "index-2-64.obj": lambda path: obj_with_a_huge_index(path, 2**64),
+    "index-minus-2-63.obj": lambda path: obj_with_a_huge_index(path, -2**63),
+    "huge-count.stl": stl_with_a_huge_count,
+}
+
+
 ALL = {
     "far-points.ttf": font_with_far_points,
     "nested-composites.ttf": font_with_nested_composites,
@@ -164,6 +272,10 @@ ALL = {
     "huge-canvas.toml": scene_huge_canvas,
     "bomb.png": png_bomb,
     "garbage.png": garbage,
+    **MESH_FILES,
+    **{f"scene-{name}.toml": functools.partial(_scene_naming, name) for name in MESH_FILES},
+    "many-spheres.toml": scene_with_many_spheres,
+    "huge-3d-canvas.toml": scene_huge_3d_canvas,
 }
 
 

@@ -284,7 +284,7 @@ def test_view_volume_corners_map_to_the_unit_cube():
     (lambda: parallel((1, 1, 0)), "parallel"),
     (lambda: dimetric(1.5), "fz"),
     (lambda: sl.Camera(viewport=(0, 0, 0, 1, 1, 2)), "viewport"),
-    (lambda: sl.Camera().project([(0, 0, 0)], 1, 10), "width"),
+    (lambda: sl.Camera().project([(0, 0, 0)], 0, 10), "width"),   # 1 is a device (1 x N)
 ])
 def test_degenerate_cameras_and_projections_are_clear_errors(make, match):
     with pytest.raises(sl.ScanlineError, match=match):

@@ -18,20 +18,70 @@ from ..transform3d.arrays import finite, real_array
 PLANAR_TOLERANCE = 1e-9
 
 
+class Flat:
+    """Faces already in flat form -- ``indices`` (K,) and ``sizes`` (F,), int64 --
+    as the generators make them: :class:`Mesh` checks them with array operations
+    only (no per-face Python), so a generated mesh of millions of faces is built in
+    time proportional to numpy's work."""
+
+    __slots__ = ("indices", "sizes")
+
+    def __init__(self, indices, sizes):
+        self.indices = np.ascontiguousarray(indices, np.int64).reshape(-1)
+        self.sizes = np.ascontiguousarray(sizes, np.int64).reshape(-1)
+
+
+#: Bytes of memory a mesh takes per vertex, per face and per face index while it
+#: is made and checked (positions, normals, the index arrays, and the temporaries of
+#: the checks and of a generator's formulas: measured on the generators, rounded
+#: up).  The memory budget (:mod:`scanline.budget`) is checked against
+#: :func:`mesh_bytes` before a generator allocates.
+BYTES_PER_VERTEX = 400
+BYTES_PER_FACE = 64
+BYTES_PER_INDEX = 80
+
+
+def mesh_bytes(n_vertices, n_faces, n_indices):
+    """The estimated peak bytes of making a mesh of ``n_vertices`` vertices and
+    ``n_faces`` faces holding ``n_indices`` vertex indices together (Python ints:
+    exact at any size)."""
+    return (int(n_vertices) * BYTES_PER_VERTEX + int(n_faces) * BYTES_PER_FACE
+            + int(n_indices) * BYTES_PER_INDEX)
+
+
+def check_mesh_budget(argument, n_vertices, n_faces, n_indices, what, hint=None):
+    """Refuse, before anything is allocated, a mesh whose :func:`mesh_bytes` passes
+    the memory budget: a :class:`~scanline.errors.MemoryBudgetError` naming
+    ``argument`` (the argument that sets the size)."""
+    from .. import budget
+
+    budget.check(mesh_bytes(n_vertices, n_faces, n_indices), argument,
+                 f"{what} ({int(n_vertices):,} vertices, {int(n_faces):,} faces)",
+                 hint=hint or f"give a smaller {argument}")
+
+
 def _flat_faces(faces, n_vertices):
-    """``(indices, offsets)`` of faces given as an (F, n) array or a list of index
-    sequences, checked: integers in range, at least three per face, none repeated
-    within a face."""
+    """``(indices, offsets)`` of faces given as an (F, n) array, a list of index
+    sequences or a :class:`Flat`, checked: integers in range, at least three per
+    face, none repeated within a face."""
     top = max(n_vertices - 1, 0)
     bound = f" (larger is out of range: the mesh has {n_vertices} vertices)"
-    if isinstance(faces, np.ndarray) and faces.ndim == 2 and faces.size:
+    if isinstance(faces, Flat):
+        indices, sizes = faces.indices, faces.sizes
+        if (sizes < 0).any() or v.exact_sum(sizes) != len(indices):
+            raise ArgumentValueError("faces: the face sizes do not add up to the indices given")
+        offsets = np.zeros(len(sizes) + 1, np.int64)
+        np.cumsum(sizes, out=offsets[1:])
+    elif isinstance(faces, np.ndarray) and faces.ndim == 2 and faces.size:
         arr = v.index_array("faces", faces, shape=(None, None), high=top, bound_text=bound,
                             what="an (F, n) integer array of vertex indices")
         indices = arr.reshape(-1)
         offsets = np.arange(0, arr.size + 1, max(arr.shape[1], 1), dtype=np.int64)[:len(arr) + 1]
         sizes = np.full(len(arr), arr.shape[1])
     else:
-        if isinstance(faces, (str, bytes)) or not hasattr(faces, "__len__"):
+        if isinstance(faces, (str, bytes)) or not hasattr(faces, "__len__") \
+                or not hasattr(faces, "__iter__") or (isinstance(faces, np.ndarray)
+                                                      and faces.ndim == 0):
             raise ArgumentTypeError(
                 f"faces must be an (F, n) array or a list of vertex-index lists, got "
                 f"{v._show(faces)}")
@@ -56,15 +106,14 @@ def _flat_faces(faces, n_vertices):
         raise ArgumentValueError(
             f"face {face} refers to vertex {int(indices[bad[0]])}, out of range: the mesh "
             f"has {n_vertices} vertices (indices 0 to {n_vertices - 1})")
-    owner = np.repeat(np.arange(len(sizes)), sizes)
-    pairs = np.stack([owner, indices], axis=1)
-    uniq = np.unique(pairs, axis=0)
-    if len(uniq) != len(pairs):
-        seen = np.zeros(len(pairs), bool)
-        order = np.lexsort((indices, owner))
-        dup = (np.diff(pairs[order], axis=0) == 0).all(axis=1)
-        seen[order[1:][dup]] = True
-        face = int(owner[np.argmax(seen)])
+    owner = np.repeat(np.arange(len(sizes), dtype=np.int64), sizes)
+    # one key per (face, vertex) pair: a vertex repeated within a face repeats a key
+    # (len(sizes) * n_vertices stays far below 2**63 for any mesh that fits in memory)
+    keys = owner * max(n_vertices, 1) + indices
+    keys.sort()
+    dup = keys[1:] == keys[:-1]
+    if dup.any():
+        face = int(keys[1:][np.argmax(dup)] // max(n_vertices, 1))
         raise ArgumentValueError(
             f"face {face} repeats a vertex ({indices[offsets[face]:offsets[face + 1]].tolist()}): "
             "a polygon face visits each vertex once")
@@ -144,6 +193,12 @@ class Mesh:
                                                 and not isinstance(colors, bool)):
             colors = [colors] * nf
             color_on = "face"
+        if isinstance(colors, (bytes, dict)) or not hasattr(colors, "__len__") \
+                or not hasattr(colors, "__iter__") or (isinstance(colors, np.ndarray)
+                                                       and colors.ndim == 0):
+            raise ArgumentTypeError(
+                f"colors must be one color (a name or (r, g, b)) or one color per face or per "
+                f"vertex, got {v._show(colors)}")
         n = len(colors)
         if color_on is None:
             if n == nf:
@@ -168,7 +223,14 @@ class Mesh:
         return np.diff(self.face_offsets)
 
     def face(self, i):
-        """The vertex indices of face ``i``."""
+        """The vertex indices of face ``i`` (negative: counted from the end)."""
+        n = self.face_count
+        if isinstance(i, (bool, np.bool_)) or not isinstance(i, (int, np.integer)):
+            raise ArgumentTypeError(f"i must be an integer face number, got {v._show(i)}")
+        if not -n <= i < n:
+            raise ArgumentValueError(f"i={i} is not a face number: the mesh has {n} faces "
+                                     f"(0 to {n - 1}, or -{n} to -1 from the end)")
+        i = int(i) % n
         return self.face_indices[self.face_offsets[i]:self.face_offsets[i + 1]]
 
     @property
@@ -250,8 +312,19 @@ class Mesh:
         method is Sutherland, Sproull and Schumacker's (1974) for polygons with more
         than three vertices.
         """
-        planes = _newell(self.vertices, self.face_indices, self.face_offsets)
-        length = np.sqrt((planes[:, :3] ** 2).sum(axis=1))
+        t = v.number("tolerance", tolerance)
+        if t < 0:
+            raise ArgumentValueError(f"tolerance must be >= 0 (relative to a face's size), got "
+                                     f"{tolerance!r}")
+        with np.errstate(over="ignore", invalid="ignore"):
+            planes = _newell(self.vertices, self.face_indices, self.face_offsets)
+            length = np.sqrt((planes[:, :3] ** 2).sum(axis=1))
+        if not np.isfinite(planes).all():
+            f = int(np.argmax(~np.isfinite(planes).all(axis=1)))
+            raise ArgumentValueError(
+                f"face {f} ({self.face(f).tolist()}) is too large for its plane equation: its "
+                "coefficients overflow float64 (coordinates near 1e154 or beyond); scale the "
+                "mesh down")
         size = _face_sizes(self.vertices, self.face_indices, self.face_offsets)
         flat = ~(length > 1e-14 * np.maximum(size, 1e-300) ** 2)
         if flat.any():
@@ -259,7 +332,6 @@ class Mesh:
             raise ArgumentValueError(
                 f"face {f} ({self.face(f).tolist()}) is degenerate: its vertices lie on a "
                 "line (zero area), so it has no plane equation")
-        t = float(tolerance)
         dist = self.planarity(planes)
         bent = dist > t * size
         if bent.any():
@@ -327,20 +399,31 @@ class Mesh:
         m = t3.compose(matrix)
         verts = t3.apply(m, self.vertices)
         normals = None
-        if self.normals is not None:
-            lin = np.linalg.inv(m[:3, :3]).T if abs(np.linalg.det(m[:3, :3])) > 0 else m[:3, :3]
-            n = self.normals @ lin.T
-            normals = n / np.maximum(np.sqrt((n * n).sum(axis=1)), 1e-300)[:, None]
+        with np.errstate(all="ignore"):
+            det = np.linalg.det(m[:3, :3])
+            if self.normals is not None:
+                try:
+                    lin = np.linalg.inv(m[:3, :3]).T if abs(det) > 0 else m[:3, :3]
+                except np.linalg.LinAlgError:      # singular after all: flattens space
+                    lin = m[:3, :3]
+                n = self.normals @ lin.T
+                normals = n / np.maximum(np.sqrt((n * n).sum(axis=1)), 1e-300)[:, None]
+                if not np.isfinite(normals).all():     # the squares overflowed: rescale
+                    n = n / np.abs(n).max(axis=1, initial=1e-300)[:, None]
+                    normals = n / np.maximum(np.sqrt((n * n).sum(axis=1)), 1e-300)[:, None]
+                if not np.isfinite(normals).all():
+                    normals = None     # a transformation too degenerate to carry normals
         new = self._like(verts, normals)
-        if np.linalg.det(m[:3, :3]) < 0:
+        if det < 0:
             new.face_indices = _reversed_faces(self.face_indices, self.face_offsets)
         return new
 
     def translated(self, offset):
         """This mesh moved by ``offset`` (dx, dy, dz)."""
         from .. import transform3d as t3
+        from ..transform3d.arrays import vector
 
-        return self.transformed(t3.translation(*offset))
+        return self.transformed(t3.translation(*vector("offset", offset)))
 
     def colored(self, colors, color_on=None):
         """A copy with other colors (see the constructor)."""
@@ -381,10 +464,13 @@ def _rows_in(table, rows):
 
 
 def _reversed_faces(indices, offsets):
-    out = indices.copy()
-    for i in range(len(offsets) - 1):
-        out[offsets[i]:offsets[i + 1]] = indices[offsets[i]:offsets[i + 1]][::-1]
-    return out
+    """The flat face indices with every face's vertices in reverse order."""
+    sizes = np.diff(offsets)
+    owner = np.repeat(np.arange(len(sizes)), sizes)
+    # position q of face f (offsets[f] <= q < offsets[f + 1]) takes the vertex at
+    # offsets[f] + offsets[f + 1] - 1 - q
+    q = np.arange(len(indices))
+    return indices[offsets[owner] + offsets[owner + 1] - 1 - q]
 
 
 def _newell(vertices, indices, offsets):
@@ -423,6 +509,11 @@ def _face_sizes(vertices, indices, offsets):
 def merge(meshes, name=None):
     """One mesh holding all of ``meshes`` (their vertices renumbered); colors are
     kept when every mesh has them on the same kind of element."""
+    if isinstance(meshes, Mesh):
+        meshes = [meshes]
+    if isinstance(meshes, (str, bytes)) or not hasattr(meshes, "__iter__"):
+        raise ArgumentTypeError(f"meshes must be a list of scanline.mesh.Mesh, got "
+                                f"{v._show(meshes)}")
     meshes = list(meshes)
     if not meshes or not all(isinstance(m, Mesh) for m in meshes):
         raise ArgumentTypeError("merge needs a non-empty list of scanline.mesh.Mesh")

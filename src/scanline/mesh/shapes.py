@@ -27,11 +27,13 @@ A. H. Barr, "Superquadrics and angle-preserving transformations", IEEE Computer
 Graphics and Applications 1(1), 11-23, 1981.
 """
 
+import numbers
+
 import numpy as np
 
 from .. import _validate as v
 from ..errors import ArgumentValueError
-from .mesh import Mesh
+from .mesh import Flat, Mesh, check_mesh_budget
 
 #: Largest tessellation of the generators (vertices).
 MAX_VERTICES = 1 << 24
@@ -46,9 +48,10 @@ def _positive(name, value):
 
 def _resolution(resolution, low_v=2):
     """(nu, nv): intervals around (θ) and along (φ)."""
-    if isinstance(resolution, int) and not isinstance(resolution, bool):
-        nu, nv = resolution, max(low_v, resolution // 2)
-    elif hasattr(resolution, "__len__") and len(resolution) == 2:
+    if isinstance(resolution, numbers.Integral) and not isinstance(resolution, (bool, np.bool_)):
+        nu, nv = int(resolution), max(low_v, int(resolution) // 2)
+    elif not isinstance(resolution, (str, bytes)) and hasattr(resolution, "__len__") \
+            and hasattr(resolution, "__iter__") and len(resolution) == 2:
         nu, nv = resolution
     else:
         raise ArgumentValueError(
@@ -63,19 +66,32 @@ def _resolution(resolution, low_v=2):
 
 def spow(c, s):
     """sign(c) |c|^s, the signed power of the superquadrics."""
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         return np.sign(c) * np.abs(c) ** s
 
 
 def _unit(n):
-    length = np.sqrt((n * n).sum(axis=-1, keepdims=True))
-    with np.errstate(invalid="ignore", divide="ignore"):
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        # (an overflowed length gives NaN here, which _fallback replaces)
+        length = np.sqrt((n * n).sum(axis=-1, keepdims=True))
         return n / length
+
+
+def closed_size(nu, nv):
+    """(vertices, faces, face indices) of :func:`_closed_surface`'s tessellation."""
+    return nu * (nv - 1) + 2, nu * nv, 6 * nu + 4 * nu * (nv - 2)
+
+
+def periodic_size(nu, nv):
+    """(vertices, faces, face indices) of :func:`_periodic_surface`'s tessellation."""
+    return nu * nv, nu * nv, 4 * nu * nv
 
 
 def _closed_surface(point, normal, nu, nv, **kw):
     """A sphere-like mesh: rings at φ_j = -π/2 + j π / nv (j = 1 .. nv - 1) of nu
     vertices at θ_i = -π + 2π i / nu, and one vertex at each pole."""
+    check_mesh_budget("resolution", *closed_size(nu, nv),
+                      f"a tessellation of resolution ({nu}, {nv})")
     theta = -np.pi + 2 * np.pi * np.arange(nu) / nu
     phi = -np.pi / 2 + np.pi * np.arange(1, nv) / nv
     t, p = np.meshgrid(theta, phi)                 # rows: rings
@@ -84,18 +100,21 @@ def _closed_surface(point, normal, nu, nv, **kw):
                        point(north, np.zeros(1))])
     normals = np.vstack([normal(south, np.zeros(1)), normal(p.ravel(), t.ravel()),
                          normal(north, np.zeros(1))])
-    faces = []
-    ring = lambda j, i: 1 + j * nu + (i % nu)      # noqa: E731
-    for i in range(nu):
-        faces.append([0, ring(0, i + 1), ring(0, i)])
-    for j in range(nv - 2):
-        for i in range(nu):
-            faces.append([ring(j, i), ring(j, i + 1), ring(j + 1, i + 1), ring(j + 1, i)])
+    # faces in order: the south cap's triangles, the bands' quadrilaterals ring by
+    # ring, the north cap's triangles (vertex 1 + j nu + i is ring j's i-th vertex)
+    i = np.arange(nu, dtype=np.int64)
+    i1 = (i + 1) % nu
+    south = np.stack([np.zeros(nu, np.int64), 1 + i1, 1 + i], axis=1)
+    j = np.arange(nv - 2, dtype=np.int64)[:, None]
+    bands = np.stack([1 + j * nu + i, 1 + j * nu + i1, 1 + (j + 1) * nu + i1,
+                      1 + (j + 1) * nu + i], axis=-1)
     top = len(verts) - 1
-    for i in range(nu):
-        faces.append([ring(nv - 2, i), ring(nv - 2, i + 1), top])
+    north = np.stack([1 + (nv - 2) * nu + i, 1 + (nv - 2) * nu + i1,
+                      np.full(nu, top, np.int64)], axis=1)
+    flat = Flat(np.concatenate([south.ravel(), bands.ravel(), north.ravel()]),
+                np.concatenate([np.full(nu, 3), np.full(nu * (nv - 2), 4), np.full(nu, 3)]))
     normals = _fallback(normals, verts)
-    return Mesh(verts, faces, normals=normals, **kw)
+    return Mesh(verts, flat, normals=normals, **kw)
 
 
 def _fallback(normals, verts):
@@ -110,6 +129,8 @@ def _fallback(normals, verts):
 
 def _periodic_surface(point, normal, nu, nv, **kw):
     """A torus-like mesh: an nv x nu grid of quadrilaterals, periodic both ways."""
+    check_mesh_budget("resolution", *periodic_size(nu, nv),
+                      f"a tessellation of resolution ({nu}, {nv})")
     theta = -np.pi + 2 * np.pi * np.arange(nu) / nu
     phi = -np.pi + 2 * np.pi * np.arange(nv) / nv
     t, p = np.meshgrid(theta, phi)

@@ -13,14 +13,22 @@ from .. import _validate as v
 from .. import transform3d as t3
 from ..errors import ArgumentTypeError, ArgumentValueError
 from ..transform3d.arrays import points as point_array
-from .mesh import Mesh
+from .mesh import Flat, Mesh, _reversed_faces, check_mesh_budget
+
+#: Bytes a curve profile takes per sample while it is evaluated (the parameters,
+#: the points and the evaluation's temporaries), for the memory budget.
+BYTES_PER_SAMPLE = 256
 
 
 def profile_points(profile, samples=32):
     """The profile as (N, 3) points: a polyline (z = 0 added to 2-D points) or a
     curve sampled at ``samples`` equally spaced parameters."""
     if hasattr(profile, "evaluate") and hasattr(profile, "domain"):
+        from .. import budget
+
         n = v.positive_int("samples", samples, 2)
+        budget.check(n * BYTES_PER_SAMPLE, "samples", f"{n:,} samples of the profile curve",
+                     hint="give fewer samples")
         pts = np.asarray(profile.evaluate(np.linspace(*profile.domain, n)), np.float64)
     else:
         pts = profile
@@ -33,6 +41,9 @@ def profile_points(profile, samples=32):
 
 
 def _closed(p, closed):
+    if closed is not None and not isinstance(closed, (bool, np.bool_)):
+        raise ArgumentTypeError(f"closed must be True, False or None (None: when the "
+                                f"profile's ends coincide), got {v._show(closed)}")
     if closed is None:
         closed = bool(np.allclose(p[0], p[-1]))
     if closed and np.allclose(p[0], p[-1]):
@@ -65,23 +76,37 @@ def translational_sweep(profile, vector, closed=None, caps=True, samples=32, **k
     from ..transform3d.arrays import vector as vec
 
     p, closed = _closed(profile_points(profile, samples), closed)
+    if not isinstance(caps, (bool, np.bool_)):
+        raise ArgumentTypeError(f"caps must be True or False, got {v._show(caps)}")
     d = np.array(vec("vector", vector))
     if not np.abs(d).max() > 0:
         raise ArgumentValueError("vector must not be (0, 0, 0): the sweep would be flat")
+    with np.errstate(over="ignore"):
+        moved = p + d
+    if not np.isfinite(moved).all():
+        raise ArgumentValueError(f"vector={v._show(tuple(vector))} moves the profile beyond "
+                                 "the range of float64; use a shorter vector")
     n = len(p)
-    verts = np.vstack([p, p + d])
     count = n if closed else n - 1
+    capped = closed and caps
+    if capped and n < 3:
+        raise ArgumentValueError("a closed profile needs at least 3 points")
+    check_mesh_budget("profile", 2 * n, count + 2 * capped, 4 * count + 2 * n * capped,
+                      f"the translational sweep of {n:,} profile points",
+                      hint="give fewer profile points (or samples)")
+    verts = np.vstack([p, moved])
     i = np.arange(count)
     j = (i + 1) % n
-    faces = [list(f) for f in np.stack([i, j, j + n, i + n], axis=1).tolist()]
-    if closed and caps:
-        if n < 3:
-            raise ArgumentValueError("a closed profile needs at least 3 points")
-        faces.append(list(range(n))[::-1])
-        faces.append(list(range(n, 2 * n)))
-    mesh = Mesh(verts, faces, **kw)
+    parts = [np.stack([i, j, j + n, i + n], axis=1).ravel()]
+    sizes = [np.full(count, 4)]
+    if capped:
+        parts += [np.arange(n)[::-1], np.arange(n, 2 * n)]
+        sizes += [[n, n]]
+    flat = Flat(np.concatenate(parts), np.concatenate(sizes))
+    mesh = Mesh(verts, flat, **kw)
     if _newell_sign(mesh) < 0:
-        mesh = Mesh(verts, [f[::-1] for f in faces], **kw)
+        mesh = Mesh(verts, Flat(_reversed_faces(mesh.face_indices, mesh.face_offsets),
+                                mesh.face_sizes), **kw)
     return mesh
 
 
@@ -136,43 +161,96 @@ def rotational_sweep(profile, axis="y", angle=2 * np.pi, steps=32, closed=False,
     full = abs(a - 2 * np.pi) <= 1e-12
     steps = v.positive_int("steps", steps, 3 if full else 1)
     copies = steps if full else steps + 1
-    rots = [t3.rotation(a * k / steps, axis) for k in range(copies)]
+    n = len(p)
+    segs = n if closed else n - 1
+    check_mesh_budget("steps", copies * n, steps * segs, 4 * steps * segs,
+                      f"the rotational sweep of {n:,} profile points in {steps:,} steps",
+                      hint="give fewer steps (or profile points)")
+    moved = _rotated_copies(p, axis, [a * k / steps for k in range(copies)])
     if isinstance(axis, str):
         origin, direction = np.zeros(3), np.eye(3)["xyz".index(axis)]
     else:
+        from ..transform3d.arrays import direction as unit
+
         p1, p2 = (np.asarray(q, np.float64) for q in axis)
-        origin, direction = p1, (p2 - p1) / np.linalg.norm(p2 - p1)
-    rel = p - origin
-    off = rel - np.outer(rel @ direction, direction)
-    scale = max(float(np.abs(p).max()), 1.0)
-    on_axis = np.sqrt((off * off).sum(axis=1)) <= 1e-12 * scale
-    # vertex ids: points on the axis once, the others once per copy
-    ids = np.empty((copies, len(p)), np.int64)
-    verts = []
-    for k, m in enumerate(rots):
-        moved = t3.apply(m, p)
-        for i in range(len(p)):
-            if on_axis[i] and k > 0:
-                ids[k, i] = ids[0, i]
-            else:
-                ids[k, i] = len(verts)
-                verts.append(moved[i])
-    faces = []
-    segs = len(p) if closed else len(p) - 1
-    for k in range(steps):
-        k2 = (k + 1) % copies
-        for i in range(segs):
-            i2 = (i + 1) % len(p)
-            quad = [ids[k, i], ids[k, i2], ids[k2, i2], ids[k2, i]]
-            ring = [q for n, q in enumerate(quad) if q not in quad[:n]]
-            if len(ring) >= 3:
-                faces.append(ring)
-    if not faces:
+        origin = p1
+        with np.errstate(over="ignore"):
+            direction = unit("axis[1] - axis[0]", p2 - p1)
+    with np.errstate(over="ignore", invalid="ignore"):
+        rel = p - origin
+        off = rel - np.outer(rel @ direction, direction)
+        scale = max(float(np.abs(p).max()), 1.0)
+        on_axis = np.sqrt((off * off).sum(axis=1)) <= 1e-12 * scale
+    # vertex ids: points on the axis once (in the first copy), the others once per
+    # copy, numbered copy by copy
+    free = np.flatnonzero(~on_axis)
+    ids = np.empty((copies, n), np.int64)
+    ids[0] = np.arange(n)
+    ids[1:, free] = n + (np.arange(copies - 1)[:, None] * len(free) + np.arange(len(free)))
+    ids[1:, on_axis] = ids[0, on_axis]
+    verts = np.concatenate([moved[0], moved[1:, free].reshape(-1, 3)])
+    # the quadrilateral (a, b, c, d) between copies k, k + 1 and points i, i + 1 loses
+    # c where point i + 1 is on the axis and d where point i is (a triangle), and
+    # vanishes where both are
+    i = np.arange(segs)
+    i2 = (i + 1) % n
+    k = np.arange(steps)
+    k2 = (k + 1) % copies
+    quads = np.stack([ids[k][:, i], ids[k][:, i2], ids[k2][:, i2], ids[k2][:, i]], axis=-1)
+    keep = np.stack([np.ones(segs, bool), np.ones(segs, bool), ~on_axis[i2], ~on_axis[i]],
+                    axis=-1)
+    keep = np.broadcast_to(keep, quads.shape)
+    sizes = keep.sum(axis=-1).ravel()
+    whole = np.repeat(sizes >= 3, 4)
+    indices = quads.reshape(-1)[keep.reshape(-1) & whole]
+    sizes = sizes[sizes >= 3]
+    if not len(sizes):
         raise ArgumentValueError("the profile lies on the axis: the sweep has no area")
-    mesh = Mesh(np.array(verts), faces, **kw)
+    mesh = Mesh(verts, Flat(indices, sizes), **kw)
     if _newell_sign(mesh) < 0:
-        mesh = Mesh(mesh.vertices, [f[::-1] for f in faces], **kw)
+        mesh = Mesh(mesh.vertices, Flat(_reversed_faces(mesh.face_indices, mesh.face_offsets),
+                                        sizes), **kw)
     return mesh
+
+
+def _rotated_copies(p, axis, angles):
+    """``p`` (n, 3) turned by each of ``angles`` about ``axis``, (len(angles), n, 3):
+    the points :func:`scanline.transform3d.rotation` and
+    :func:`~scanline.transform3d.apply` give, computed for all the angles at once
+    (the same products in the same order, so the same numbers).  The matrices are
+    affine: their bottom row is exactly (0, 0, 0, 1), so no division is needed."""
+    import math
+
+    t3.rotation(angles[0], axis)                  # checks the axis
+    cos = np.array([math.cos(t) for t in angles])
+    sin = np.array([math.sin(t) for t in angles])
+    m = np.zeros((len(angles), 4, 4))
+    m[:, 3, 3] = 1.0
+    if isinstance(axis, str):
+        k = "xyz".index(axis)
+        a, b = [j for j in range(3) if j != k]    # the plane turned: (y, z), (x, z), (x, y)
+        m[:, k, k] = 1.0
+        m[:, a, a] = m[:, b, b] = cos
+        # Rx and Rz: -sin above the diagonal; Ry (a, b = x, z): +sin above it
+        sign = -1.0 if axis != "y" else 1.0
+        m[:, a, b], m[:, b, a] = sign * sin, -sign * sin
+    else:
+        steps = t3.rotation_steps(0.0, axis)
+        left = np.eye(4)
+        for step in reversed(steps[4:]):          # T^-1, Rx^-1, Ry^-1: the same for all
+            left = left @ step.matrix
+        m[:, 0, 0], m[:, 0, 1], m[:, 1, 0], m[:, 1, 1] = cos, -sin, sin, cos
+        m[:, 2, 2] = 1.0
+        m = left @ (m + 0.0)
+        for step in reversed(steps[:3]):          # Ry, Rx, T
+            m = m @ step.matrix
+    m = m + 0.0
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = p @ m[:, :3, :3].transpose(0, 2, 1) + m[:, None, :3, 3]
+    if not np.isfinite(out).all():
+        raise ArgumentValueError("the swept points overflow float64 (the profile or the axis "
+                                 "lies too far from the origin); move them closer")
+    return out + 0.0
 
 
 def sweep(profile, kind="rotational", **kw):
@@ -198,6 +276,11 @@ def from_surface(surface, nu=16, nv=16, **kw):
     if not isinstance(surface, Surface):
         raise ArgumentTypeError(f"surface must be a scanline.curves surface, got "
                                 f"{v._show(surface)}")
+    nu = v.positive_int("nu", nu)
+    nv = v.positive_int("nv", nv)
+    check_mesh_budget("nu x nv", (nu + 1) * (nv + 1), 2 * nu * nv, 6 * nu * nv,
+                      f"a tessellation of {nu} x {nv} intervals",
+                      hint="give fewer intervals nu x nv")
     verts, tris, normals = weld(*surface.tessellate(nu, nv))
     return Mesh(verts, tris, normals=normals, **kw)
 
@@ -213,7 +296,21 @@ def teapot(n=6, parts=None, **kw):
     >>> pot.vertices.shape[1], int(pot.face_sizes.max())
     (3, 3)
     """
-    from ..curves.teapot import teapot_mesh
+    from ..curves.teapot import PARTS, teapot_mesh
 
+    n = v.positive_int("n", n)
+    if parts is not None:
+        names = [parts] if isinstance(parts, str) else parts
+        if isinstance(names, (bytes, dict)) or not hasattr(names, "__iter__") \
+                or not hasattr(names, "__len__") or not len(names) \
+                or not all(isinstance(name, str) for name in names):
+            raise ArgumentTypeError(
+                f"parts must be a part name or a non-empty list of them ({', '.join(PARTS)}), "
+                f"got {v._show(parts)}")
+        for name in names:
+            v.choice("parts", name, tuple(PARTS))
+    # 32 patches (fewer with parts), each (n + 1)**2 points and 2 n**2 triangles
+    check_mesh_budget("n", 32 * (n + 1) ** 2, 64 * n * n, 192 * n * n,
+                      f"the teapot tessellated {n} x {n} per patch")
     verts, tris, normals = teapot_mesh(n, parts)
     return Mesh(verts, tris, normals=normals, **kw)

@@ -16,17 +16,41 @@ numbered from 1 when printed, as in the book, and from 0 in the arrays.
 
 import numpy as np
 
-from ..errors import ArgumentValueError
+from .. import _validate as v
+from ..errors import ArgumentTypeError, ArgumentValueError
 from ..transform3d.arrays import finite, real_array
+
+_LOWEST = -v.INT64_MAX - 1
 
 
 def _index_table(name, value, columns=None):
-    a = np.asarray(value)
+    try:
+        a = np.asarray(value)
+    except (TypeError, ValueError, OverflowError):
+        a = np.asarray(None)
     if a.dtype.kind not in "iu" or a.ndim != 2 or (columns and a.shape[1] != columns):
         raise ArgumentValueError(
             f"{name} must be an integer array of shape (N, {columns or 'k'}), got "
             f"{a.dtype} of shape {a.shape}")
-    return a.astype(np.int64)
+    # any int64 value: check() reports the ones out of range (uint64 beyond int64 too)
+    return v.index_array(name, a, shape=(None, a.shape[1]), low=_LOWEST)
+
+
+def _index_lists(name, value):
+    """A list of 1-D int64 arrays (each table entry's indices, in range or not:
+    :meth:`PolygonTables.check` reports those out of range)."""
+    if isinstance(value, (str, bytes, dict)) or not hasattr(value, "__iter__") or (
+            isinstance(value, np.ndarray) and value.ndim == 0):
+        raise ArgumentTypeError(f"{name} must be a list of index lists, got {v._show(value)}")
+    out = []
+    for i, entry in enumerate(value):
+        if isinstance(entry, (str, bytes, dict)) or not hasattr(entry, "__iter__") or (
+                isinstance(entry, np.ndarray) and entry.ndim != 1):
+            raise ArgumentTypeError(f"{name}[{i}] must be a list of integer indices, got "
+                                    f"{v._show(entry)}")
+        out.append(v.index_array(f"{name}[{i}]", list(entry), low=_LOWEST,
+                                 what="a list of integer indices"))
+    return out
 
 
 class PolygonTables:
@@ -48,17 +72,22 @@ class PolygonTables:
     """
 
     def __init__(self, vertices, edges, surfaces, edge_surfaces=None):
-        self.vertices = finite("vertices", real_array("vertices", vertices, "(V, 3)"))
+        verts = finite("vertices", real_array("vertices", vertices, "(V, 3)"))
+        if verts.ndim == 1 and verts.size == 0:
+            verts = verts.reshape(0, 3)
+        if verts.ndim != 2 or verts.shape[1] != 3:
+            raise ArgumentValueError(f"vertices must have shape (V, 3), got shape {verts.shape}")
+        self.vertices = verts
         self.edges = _index_table("edges", edges, 2)
-        self.surfaces = [np.asarray(s, dtype=np.int64) for s in surfaces]
+        self.surfaces = _index_lists("surfaces", surfaces)
         if edge_surfaces is None:
             pointers = [[] for _ in range(len(self.edges))]
             for s, ring in enumerate(self.surfaces):
-                for e in ring:
+                for e in ring.tolist():
                     if 0 <= e < len(pointers) and s not in pointers[e]:
                         pointers[e].append(s)
             edge_surfaces = pointers
-        self.edge_surfaces = [list(p) for p in edge_surfaces]
+        self.edge_surfaces = [p.tolist() for p in _index_lists("edge_surfaces", edge_surfaces)]
 
     @classmethod
     def from_mesh(cls, mesh):

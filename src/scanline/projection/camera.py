@@ -202,6 +202,16 @@ class Camera:
         if not isinstance(keep_aspect, bool):
             raise ArgumentTypeError(f"keep_aspect must be True or False, got {keep_aspect!r}")
         self.keep_aspect = keep_aspect
+        with np.errstate(all="ignore"):
+            clip = projection.normalization @ self.view_matrix
+        if not np.isfinite(clip).all():
+            given = ("eye, target and up" if usual else
+                     "view_reference_point, view_plane_normal and view_up" if textbook
+                     else "target")
+            raise ArgumentValueError(
+                f"{given} with this projection give a world -> clip matrix that overflows "
+                "float64 (the camera is too far from the origin for the view volume's size); "
+                "move the camera and the scene nearer the origin, or use a larger view volume")
 
     @classmethod
     def standard(cls, view, target=(0.0, 0.0, 0.0), distance=10.0, projection=None, **kw):
@@ -232,7 +242,10 @@ class Camera:
             elif key == "viewport":
                 new.viewport = _viewport(value)
             elif key == "keep_aspect":
-                new.keep_aspect = bool(value)
+                if not isinstance(value, bool):
+                    raise ArgumentTypeError(f"keep_aspect must be True or False, got "
+                                            f"{v._show(value)}")
+                new.keep_aspect = value
             else:
                 raise ArgumentTypeError(
                     f"replace() takes projection, viewport or keep_aspect; got {key!r}")
@@ -265,21 +278,52 @@ class Camera:
         the displayed aspect ratio ``aspect`` = width / height of ``box`` as seen,
         default the box's own), and the per-axis map from NDC to ``box``
         (x, y) and to the depth range (z): ``ndc * scale + offset``.  The camera's
-        3-D viewport is a part of ``box``."""
-        x0, y0, x1, y1 = (float(c) for c in box)
+        3-D viewport is a part of ``box``.
+
+        ``box`` needs x0 < x1 and y0 < y1 (finite); a device one pixel wide or high
+        gets the box (-0.5, 0.5) on that axis (see :meth:`device`)."""
+        if isinstance(box, (str, bytes)) or not hasattr(box, "__len__") or len(box) != 4:
+            raise ArgumentTypeError(f"box must be (x0, y0, x1, y1), four numbers, got "
+                                    f"{v._show(box)}")
+        x0, y0, x1, y1 = (v.number(f"box[{i}]", c) for i, c in enumerate(box))
+        with np.errstate(over="ignore"):
+            dx, dy = np.float64(x1) - x0, np.float64(y1) - y0
+        if not (x0 < x1 and y0 < y1 and math.isfinite(dx) and math.isfinite(dy)):
+            raise ArgumentValueError(
+                f"box={(x0, y0, x1, y1)} must have x0 < x1 and y0 < y1 (a rectangle with an "
+                "area, its sides within float64), e.g. (0, 0, 639, 479)")
+        dx, dy = float(dx), float(dy)
         vx0, vy0, vz0, vx1, vy1, vz1 = self.viewport
-        scale = np.array([(vx1 - vx0) * (x1 - x0), (vy1 - vy0) * (y1 - y0), vz1 - vz0])
-        offset = np.array([x0 + vx0 * (x1 - x0), y0 + vy0 * (y1 - y0), vz0])
+        scale = np.array([(vx1 - vx0) * dx, (vy1 - vy0) * dy, vz1 - vz0])
+        offset = np.array([x0 + vx0 * dx, y0 + vy0 * dy, vz0])
         if aspect is None:
-            aspect = (x1 - x0) / (y1 - y0)
-        seen = aspect * (vx1 - vx0) / (vy1 - vy0)
-        clip = self._fit(seen) @ self.projection.normalization @ self.view_matrix
+            aspect = dx / dy
+        else:
+            aspect = v.number("aspect", aspect)
+            if not aspect > 0:
+                raise ArgumentValueError(f"aspect must be > 0 (width / height as seen), got "
+                                         f"{aspect!r}")
+        with np.errstate(all="ignore"):
+            seen = aspect * (vx1 - vx0) / (vy1 - vy0)
+            clip = self._fit(seen) @ self.projection.normalization @ self.view_matrix
+        if not (np.isfinite(clip).all() and np.isfinite(scale).all()
+                and np.isfinite(offset).all() and seen > 0):
+            raise ArgumentValueError(
+                f"box={(x0, y0, x1, y1)} with aspect={aspect!r} gives a mapping that overflows "
+                "float64 (a box or an aspect ratio too extreme); use a box of ordinary "
+                "proportions")
         return clip, scale, offset
 
     def _device_box(self, width, height):
-        w = v.positive_int("width", width, 2)
-        h = v.positive_int("height", height, 2)
-        return (0.0, 0.0, float(w - 1), float(h - 1))
+        """The box of pixel centers of a ``width`` x ``height`` device: (0, 0) to
+        (width - 1, height - 1); an axis one pixel long gets (-0.5, 0.5), the pixel's
+        own extent about its center, so that NDC 0.5 -- the middle of the window --
+        falls on the pixel's center (docs/three-d.md)."""
+        w = v.positive_int("width", width)
+        h = v.positive_int("height", height)
+        x0, x1 = (0.0, float(w - 1)) if w > 1 else (-0.5, 0.5)
+        y0, y1 = (0.0, float(h - 1)) if h > 1 else (-0.5, 0.5)
+        return (x0, y0, x1, y1)
 
     def matrix(self, width=None, height=None):
         """The world -> homogeneous clip matrix: N · V, with the window widened to a
@@ -290,7 +334,10 @@ class Camera:
 
     def device(self, width, height):
         """``(scale, offset)``: device = NDC * scale + offset per axis (x, y, depth)
-        for a ``width`` x ``height`` frame buffer and this camera's 3-D viewport."""
+        for a ``width`` x ``height`` frame buffer and this camera's 3-D viewport.
+
+        NDC 0 and 1 fall on the centers of the first and last pixels; on an axis one
+        pixel long, on -0.5 and 0.5, the pixel's edges (its center is NDC 0.5)."""
         return self.mapping(self._device_box(width, height))[1:]
 
     # -- points ---------------------------------------------------------------------------
@@ -334,18 +381,20 @@ class Camera:
         the front plane along the viewing direction, linear in viewing coordinates
         (the NDC depth of a perspective view is a pseudo-depth, 1 - u_f / u scaled:
         the same order, not the same spacing)."""
-        d = np.asarray(depth, np.float64)
+        from .._validate import real_array
+
+        d = real_array("depth", depth, "a number or an array of depths")
         z0, z1 = self.viewport[2], self.viewport[5]
-        zn = (d - z0) / (z1 - z0)
         p = self.projection
-        if p.kind == "parallel":
-            return zn * (p.front - p.back)
-        uf = p.prp[2] - p.front
-        if p.back is None:
-            with np.errstate(divide="ignore"):
+        with np.errstate(all="ignore"):       # NaN depths (points behind the eye) stay NaN
+            zn = (d - z0) / (z1 - z0)
+            if p.kind == "parallel":
+                return zn * (p.front - p.back)
+            uf = p.prp[2] - p.front
+            if p.back is None:
                 return uf / (1.0 - zn) - uf
-        ub = p.prp[2] - p.back
-        return uf * ub / (ub - zn * (ub - uf)) - uf
+            ub = p.prp[2] - p.back
+            return uf * ub / (ub - zn * (ub - uf)) - uf
 
     def visible(self, points, width=None, height=None):
         """Whether each point lies inside the view volume (boundary included)."""
@@ -385,7 +434,7 @@ class Camera:
         computed "from viewing directions along the lines from each eye position to
         the center of the scene").  Needs a camera made with eye and target."""
         s = v.number("separation", separation)
-        if self.target is None:
+        if self.target is None or self._eye is None:
             raise ArgumentValueError(
                 "stereo_pair needs a camera made with eye= and target= (the eyes turn "
                 "toward the target)")

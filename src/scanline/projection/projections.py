@@ -140,12 +140,22 @@ class Projection:
     """
 
     def __init__(self, kind, name, window=DEFAULT_WINDOW, z_vp=0.0, front=None, back=None,
-                 shear=(0.0, 0.0), prp=None, orientation=None):
+                 shear=(0.0, 0.0), prp=None, orientation=None, *, given=None):
+        v.choice("kind", kind, KINDS)
+        if not isinstance(name, str):
+            raise ArgumentTypeError(f"name must be a string, got {v._show(name)}")
         self.kind = kind
         self.name = name
         self.window = _window(window)
         self.z_vp = v.number("z_vp", z_vp)
-        self.orientation = np.eye(4) if orientation is None else orientation
+        if orientation is None:
+            self.orientation = np.eye(4)
+        else:
+            from ..transform3d.arrays import matrix4
+
+            self.orientation = matrix4("orientation", orientation)
+        if isinstance(shear, (str, bytes)) or not hasattr(shear, "__len__") or len(shear) != 2:
+            raise ArgumentTypeError(f"shear must be a pair (a, b), got {v._show(shear)}")
         self.shear = (v.number("shear[0]", shear[0]), v.number("shear[1]", shear[1]))
         if kind == "perspective":
             from ..transform3d.arrays import vector
@@ -159,6 +169,27 @@ class Projection:
         else:
             self.prp = None
         self.front, self.back = self._planes(front, back)
+        self._check_finite(given)
+
+    def _check_finite(self, given):
+        """Refuse a view volume whose matrices overflow or underflow float64 (huge but
+        finite arguments such as z_prp=1e300, z_vp=-1e300, or tiny ones such as
+        near=5e-324): ``given`` names the arguments that built it."""
+        try:
+            with np.errstate(all="ignore"):
+                ok = np.isfinite(self.matrix).all() and np.isfinite(self.normalization).all()
+        except (ZeroDivisionError, OverflowError):
+            ok = False
+        if ok:
+            return
+        if given is None:
+            given = (f"window={self.window}, z_vp={self.z_vp:g}, front={self.front:g}, back="
+                     f"{'None' if self.back is None else format(self.back, 'g')}, "
+                     + (f"prp={self.prp}" if self.prp is not None else f"shear={self.shear}"))
+        raise ArgumentValueError(
+            f"{given}: the {self.name} projection's matrices overflow float64 (an entry is "
+            "infinite or NaN: the distances are too large, too small or too unequal); use "
+            "values nearer 1, e.g. a view volume a few units across")
 
     def _planes(self, front, back):
         if self.kind == "parallel":
@@ -264,7 +295,8 @@ class Projection:
         args = dict(window=self.window, z_vp=self.z_vp, front=self.front, back=self.back,
                     shear=self.shear, prp=self.prp, orientation=self.orientation)
         args.update(changes)
-        return Projection(self.kind, self.name, **args)
+        given = ", ".join(f"{k}={x!r}" for k, x in changes.items()) or None
+        return Projection(self.kind, self.name, **args, given=given)
 
     def volume_corners(self):
         """The corners of the view volume in viewing coordinates, (8, 3): the front
@@ -335,7 +367,8 @@ def orthographic(view=None, window=DEFAULT_WINDOW, front=None, back=None, z_vp=0
         name = "right" if view == "side" else view
         orientation = frame(*VIEWS[name])
     return Projection("parallel", name, window, z_vp, front, back, (0.0, 0.0),
-                      orientation=orientation)
+                      orientation=orientation,
+                      given=f"window={window!r}, front={front!r}, back={back!r}, z_vp={z_vp!r}")
 
 
 def axonometric(phi, theta, window=DEFAULT_WINDOW, front=None, back=None, name="trimetric"):
@@ -366,7 +399,8 @@ def axonometric(phi, theta, window=DEFAULT_WINDOW, front=None, back=None, name="
     phi = v.angle("phi", phi)
     theta = v.angle("theta", theta)
     rot = t3.compose(t3.rotation(theta, "x"), t3.rotation(phi, "y"))
-    return Projection("parallel", name, window, 0.0, front, back, (0.0, 0.0), orientation=rot)
+    return Projection("parallel", name, window, 0.0, front, back, (0.0, 0.0), orientation=rot,
+                      given=f"window={window!r}, front={front!r}, back={back!r}")
 
 
 def trimetric(phi, theta, window=DEFAULT_WINDOW, front=None, back=None):
@@ -431,7 +465,10 @@ def dimetric(fz, window=DEFAULT_WINDOW, front=None, back=None):
 def foreshortening(projection):
     """The lengths (f_x, f_y, f_z) on the view plane of the unit vectors along the
     world axes under a parallel ``projection`` (a Projection or a 4x4 matrix)."""
-    m = np.asarray(projection, dtype=np.float64)
+    from ..transform3d.arrays import matrix4
+
+    m = projection.matrix if isinstance(projection, Projection) else matrix4(
+        "projection", projection)
     return tuple(float(math.hypot(m[0, k], m[1, k])) for k in range(3))
 
 
@@ -482,7 +519,9 @@ def oblique(kind=None, phi=math.pi / 4, alpha=None, window=DEFAULT_WINDOW, front
         name = "oblique"
     l1 = 1.0 / tan_alpha
     return Projection("parallel", name, window, z_vp, front, back,
-                      (l1 * math.cos(phi), l1 * math.sin(phi)))
+                      (l1 * math.cos(phi), l1 * math.sin(phi)),
+                      given=f"kind={kind!r}, alpha={alpha!r}, phi={phi!r}, window={window!r}, "
+                            f"front={front!r}, back={back!r}, z_vp={z_vp!r}")
 
 
 def parallel(direction, window=DEFAULT_WINDOW, front=None, back=None, z_vp=0.0):
@@ -509,7 +548,9 @@ def parallel(direction, window=DEFAULT_WINDOW, front=None, back=None, z_vp=0.0):
             f"direction={v._show(tuple(direction))} is parallel (or nearly) to the view "
             "plane (pz = 0): its projectors never reach the plane; use a vector with "
             "pz != 0")
-    return Projection("parallel", "parallel", window, z_vp, front, back, (-px / pz, -py / pz))
+    return Projection("parallel", "parallel", window, z_vp, front, back, (-px / pz, -py / pz),
+                      given=f"direction={v._show(tuple(direction))}, window={window!r}, "
+                            f"front={front!r}, back={back!r}, z_vp={z_vp!r}")
 
 
 # -- perspective projections -------------------------------------------------------------
@@ -586,11 +627,16 @@ def perspective(z_prp=None, z_vp=None, window=DEFAULT_WINDOW, front=None, back=N
                     f"far must be greater than near (got near={near:g}, far={far:g}): the "
                     "back plane lies beyond the front plane")
         half = near * math.tan(fov / 2)
+        given = f"fov={fov!r}, aspect={aspect!r}, near={near!r}, far={far!r}"
         if not half > 0:
             raise ArgumentValueError(f"fov={fov!r} with near={near!r} gives an empty window")
+        if not (math.isfinite(half * aspect) and half * aspect > 0):
+            raise ArgumentValueError(
+                f"{given}: the window (±near tan(fov / 2), aspect times as wide) overflows or "
+                "underflows float64; use values nearer 1")
         return Projection("perspective", "perspective", (-half * aspect, -half, half * aspect,
                                                          half), -near, -near,
-                          None if far is None else -far, prp=(0.0, 0.0, 0.0))
+                          None if far is None else -far, prp=(0.0, 0.0, 0.0), given=given)
     if near is not None or far is not None:
         raise ArgumentValueError("near and far belong to the field-of-view form "
                                  "(fov=...); with z_prp and z_vp give front and back")
@@ -601,7 +647,9 @@ def perspective(z_prp=None, z_vp=None, window=DEFAULT_WINDOW, front=None, back=N
     z_prp = v.number("z_prp", z_prp)
     z_vp = v.number("z_vp", z_vp)
     return Projection("perspective", "perspective", window, z_vp, front, back,
-                      prp=(0.0, 0.0, z_prp))
+                      prp=(0.0, 0.0, z_prp),
+                      given=f"z_prp={z_prp!r}, z_vp={z_vp!r}, window={window!r}, "
+                            f"front={front!r}, back={back!r}")
 
 
 def frustum(prp, window=DEFAULT_WINDOW, z_vp=0.0, front=None, back=None):
@@ -625,5 +673,7 @@ def frustum(prp, window=DEFAULT_WINDOW, z_vp=0.0, front=None, back=None):
     """
     from ..transform3d.arrays import vector
 
+    p = vector("prp", prp)
     return Projection("perspective", "frustum", window, v.number("z_vp", z_vp), front, back,
-                      prp=vector("prp", prp))
+                      prp=p, given=f"prp={p!r}, window={window!r}, z_vp={z_vp!r}, "
+                                   f"front={front!r}, back={back!r}")

@@ -30,6 +30,13 @@ V2_KEYS = {"animation", "lights", "materials", "method", "shading"}
 #: Largest canvas side, in pixels.
 MAX_SIZE = 16384
 
+#: Bytes per pixel of the frame buffer, by mode (mode "1" is kept as one byte a pixel
+#: while it is drawn).
+_PIXEL_BYTES = {"1": 1, "L": 1, "P": 1, "RGB": 3, "RGBA": 4}
+#: Bytes per pixel that 3-D surfaces need besides the frame buffer: the z-buffer's
+#: face ids (4) and depths (8).
+SURFACE_BYTES_PER_PIXEL = 12
+
 _CANVAS = {"width", "height", "background", "mode", "highlight", "antialias"}
 _VIEWPORT = {"name", "window", "viewport", "view_up", "keep_aspect", "clip", "border", "camera"}
 _SEGMENT = {"name", "viewport", "priority", "visible", "highlighted", "transform",
@@ -191,6 +198,29 @@ class Canvas:
             _fail(f"{path}.mode", f"must be one of '1', 'L', 'RGB', 'RGBA', 'P'; got {mode!r}")
         self.mode = mode
         self.antialias = _flag(d.get("antialias", False), f"{path}.antialias")
+        self.path = path
+
+    def nbytes(self, three_d=False):
+        """The bytes drawing this canvas takes: its frame buffer, and with
+        ``three_d`` what 3-D surfaces need per pixel (:data:`SURFACE_BYTES_PER_PIXEL`)."""
+        per_pixel = _PIXEL_BYTES[self.mode] + (SURFACE_BYTES_PER_PIXEL if three_d else 0)
+        return self.width * self.height * per_pixel
+
+    def check_budget(self, three_d=False):
+        """Refuse, before anything is drawn, a canvas whose :meth:`nbytes` passes the
+        memory budget (:mod:`scanline.budget`): a SceneError naming
+        ``canvas.width x canvas.height``."""
+        from .. import budget
+        from ..errors import MemoryBudgetError
+
+        path = self.path
+        what = (f"a {self.width} x {self.height} canvas in mode {self.mode!r}"
+                + (" with 3-D surfaces (a z-buffer of 12 bytes a pixel)" if three_d else ""))
+        try:
+            budget.check(self.nbytes(three_d), f"{path}.width x {path}.height", what,
+                         hint="use a smaller canvas")
+        except MemoryBudgetError as error:
+            raise SceneError(str(error), path=f"{path}.width") from None
 
 
 def _size(value, path):
@@ -214,6 +244,8 @@ def build(data, base=None):
     if d["version"] == 1 and "cameras" in d:
         _fail("cameras", "need version = 2 (the 3-D schema)")
     canvas = Canvas(d.get("canvas", {}))
+    three_d = d["version"] == 2 and "cameras" in d
+    canvas.check_budget(three_d)
     default_window = d.get("window", (0, 0, canvas.width - 1, canvas.height - 1))
     df = DisplayFile(aspect(canvas.width, canvas.height))
     cameras = schema3d.cameras(d["cameras"], df) if "cameras" in d else []
@@ -221,7 +253,11 @@ def build(data, base=None):
 
     canvas.shading = shading(d) if d["version"] == 2 else None
     context = {"version": d["version"], "cameras": cameras, "base": base,
-               "background": canvas.background, "shading": canvas.shading}
+               "background": canvas.background, "shading": canvas.shading,
+               # the memory the scene keeps: the canvas, then each mesh primitive's
+               # (schema3d checks the sum against the budget, mesh by mesh)
+               "totals": {"bytes": canvas.nbytes(three_d), "meshes": 0, "vertices": 0,
+                          "faces": 0}}
     viewports = _viewports(d.get("viewports"), default_window, df)
     names = list(viewports)
     for i, seg in enumerate(_list(d.get("segments", []), "segments")):
@@ -325,7 +361,8 @@ def _primitive(data, path, df, context):
         if not context["cameras"]:
             _fail(f"{path}.type", f"a {kind} is seen through a camera: add [[cameras]]")
         schema3d.primitive(kind, data, path, df, context["background"], context["base"],
-                           context["shading"], context["segment_transform"])
+                           context["shading"], context["segment_transform"],
+                           totals=context.get("totals"))
         return
     if not isinstance(kind, str) or kind not in PRIMITIVES:
         known = list(PRIMITIVES) + (list(schema3d.PRIMITIVES) if context["version"] >= 2 else [])

@@ -11,6 +11,7 @@ import os
 import numpy as np
 
 from .. import transform3d as t3
+from ..errors import ScanlineError
 from .files import SceneError
 
 #: Keys of a camera.
@@ -54,6 +55,85 @@ _STEPS = ("translate", "rotate", "scale", "reflect", "shear", "matrix")
 #: The largest tessellations a scene may ask for (a scene file is data: it must not
 #: be able to ask for gigabytes).
 LIMITS = {"resolution": 1024, "n": 64, "steps": 4096}
+
+#: Bytes a scene keeps per mesh vertex, face and face index once the mesh is made
+#: (positions, normals, faces, the edge table, the projected copy a drawing makes):
+#: a scene's meshes together, with its canvas, must fit the memory budget (the
+#: tessellation limits above are per mesh, not per scene).
+KEPT_BYTES_PER_VERTEX = 80
+KEPT_BYTES_PER_FACE = 16
+KEPT_BYTES_PER_INDEX = 24
+
+
+def _kept_bytes(n_vertices, n_faces, n_indices):
+    return (n_vertices * KEPT_BYTES_PER_VERTEX + n_faces * KEPT_BYTES_PER_FACE
+            + n_indices * KEPT_BYTES_PER_INDEX)
+
+
+def _expected_size(gen, args):
+    """(vertices, faces, face indices) the generator ``gen`` will make from
+    ``args`` (the scene's keys as arguments), or None where it cannot say before
+    making it; a bad resolution raises the generator's own error."""
+    import inspect
+
+    from ..mesh import shapes
+
+    function = {"sphere": shapes.sphere, "ellipsoid": shapes.ellipsoid,
+                "superellipsoid": shapes.superellipsoid, "torus": shapes.torus,
+                "supertoroid": shapes.supertoroid}.get(gen)
+    if gen in ("cube", "box"):
+        return 8, 6, 24
+    if function is not None:
+        res = args.get("resolution",
+                       inspect.signature(function).parameters["resolution"].default)
+        if gen in ("torus", "supertoroid"):
+            return shapes.periodic_size(*shapes._resolution(res, 3))
+        return shapes.closed_size(*shapes._resolution(res))
+    if gen == "teapot":
+        n = args.get("n", 6)
+        if isinstance(n, numbers.Integral) and not isinstance(n, bool) and n > 0:
+            return 32 * (n + 1) ** 2, 64 * n * n, 192 * n * n
+        return None
+    profile = args.get("profile")
+    n = len(profile) if isinstance(profile, (list, tuple)) else None
+    if n is None:
+        return None
+    if args.get("kind", "rotational") == "translational":
+        return 2 * n, n + 2, 6 * n
+    steps = args.get("steps", 32)
+    if isinstance(steps, numbers.Integral) and not isinstance(steps, bool) and steps > 0:
+        return (steps + 1) * n, steps * n, 4 * steps * n
+    return None
+
+
+def _count(totals, path, size, kept=False):
+    """Add a mesh of ``size`` = (vertices, faces, face indices) to the scene's
+    ``totals`` after checking that the scene's memory -- what it keeps so far, and
+    this mesh's making (its peak, or with ``kept`` only what it keeps) -- fits the
+    memory budget: a SceneError naming the primitive's key path otherwise."""
+    from .. import budget
+    from ..errors import MemoryBudgetError
+    from ..mesh.mesh import mesh_bytes
+
+    if totals is None or size is None:
+        return
+    nv, nf, nk = (int(x) for x in size)
+    making = _kept_bytes(nv, nf, nk) if kept else max(mesh_bytes(nv, nf, nk),
+                                                      _kept_bytes(nv, nf, nk))
+    meshes = totals["meshes"] + 1
+    try:
+        budget.check(
+            totals["bytes"] + making, path,
+            f"the scene's canvas and its {meshes} mesh primitive{'s' * (meshes > 1)} together "
+            f"({totals['vertices'] + nv:,} vertices, {totals['faces'] + nf:,} faces)",
+            hint="the tessellation limits are per mesh, the budget is for the whole scene: "
+                 "use lower resolutions, fewer meshes or a smaller canvas")
+    except MemoryBudgetError as error:
+        raise SceneError(str(error), path=path) from None
+    totals["bytes"] += _kept_bytes(nv, nf, nk)
+    totals["meshes"] = meshes
+    totals["vertices"] += nv
+    totals["faces"] += nf
 
 
 def _schema():
@@ -192,7 +272,7 @@ def transformation(steps, path):
     return m
 
 
-def _mesh(data, path, base):
+def _mesh(data, path, base, totals=None):
     from .. import mesh as ms
 
     s = _schema()
@@ -204,9 +284,14 @@ def _mesh(data, path, base):
             s._fail(f"{path}.file", f"must be a file name, got {name!r}")
         full = name if os.path.isabs(name) or base is None else os.path.join(base, name)
         try:
-            return ms.load(full)
-        except ms.MeshFileError as error:
+            # ms.load reads only a regular file (no FIFO, device or folder, whatever a
+            # link points to), of a bounded size, within the memory budget
+            mesh = ms.load(full)
+        except ScanlineError as error:
             raise SceneError(f"{path}.file: {error}", path=f"{path}.file") from None
+        _count(totals, f"{path}.file", (len(mesh.vertices), mesh.face_count,
+                                        len(mesh.face_indices)), kept=True)
+        return mesh
     gen = data["generator"]
     if not isinstance(gen, str) or gen not in GENERATORS:
         s._fail(f"{path}.generator", f"must be one of {', '.join(GENERATORS)}; got {gen!r}")
@@ -225,6 +310,7 @@ def _mesh(data, path, base):
     if isinstance(given.get("profile"), list) and len(given["profile"]) > 100_000:
         s._fail(f"{path}.profile", "holds more than 100000 points")
     args = _arguments(given, path)
+    _count(totals, path, s._call(path, _expected_size, gen, args))
     if gen == "sweep":
         if "profile" not in args:
             s._fail(path, "needs the key 'profile' (a list of points [x, y])")
@@ -250,11 +336,14 @@ def _mesh(data, path, base):
     return s._call(path, function, **args)
 
 
-def primitive(kind, data, path, df, background, base, shading=None, segment=None):
+def primitive(kind, data, path, df, background, base, shading=None, segment=None, *,
+              totals=None):
     """Build one 3-D primitive into the open segment of ``df``; a mesh with a
     ``material`` becomes a surface of ``shading`` (:mod:`scanline.scene.shaded`),
     transformed by its own 3-D transformation (``segment``, the segment's 2-D one,
-    must be the identity)."""
+    must be the identity).  ``totals`` (the scene's memory so far, see
+    :func:`scanline.scene.schema.build`) gets each mesh added, checked against the
+    memory budget."""
     s = _schema()
     s._table(data, path, PRIMITIVES[kind] | {"type"},
              ("points",) if kind == "polyline3d" else ())
@@ -271,7 +360,7 @@ def primitive(kind, data, path, df, background, base, shading=None, segment=None
         closed = s._flag(data.get("closed", False), f"{path}.closed")
         s._call(path, df.polyline3d, pts, data.get("color", "white"), closed, **line)
         return
-    mesh = _mesh(data, path, base)
+    mesh = _mesh(data, path, base, totals)
     if "material" in data:
         if shading is None:
             s._fail(f"{path}.material", "needs the scene's lights, materials or shading keys "

@@ -45,6 +45,16 @@ def _tidy(m):
     return np.asarray(m, dtype=np.float64) + 0.0
 
 
+def _finite_matrix(m, arguments):
+    """``m``, or an error naming ``arguments`` when an entry overflowed float64 (huge
+    but finite arguments: 1e300 times 1e300)."""
+    if not np.isfinite(m).all():
+        raise ArgumentValueError(
+            f"{arguments} give a matrix whose entries overflow float64 (beyond about "
+            "1.8e308); use smaller values")
+    return m
+
+
 def translation(tx, ty, tz):
     """Translation by the vector (tx, ty, tz).
 
@@ -77,7 +87,8 @@ def _about(m3, fixed):
     m[:3, :3] = m3
     if fixed is not None:
         f = np.array(fixed)
-        m[:3, 3] = f - m3 @ f
+        with np.errstate(over="ignore", invalid="ignore"):
+            m[:3, 3] = f - m3 @ f
     return _tidy(m)
 
 
@@ -121,7 +132,9 @@ def scaling(sx, sy=None, sz=None, fixed=None):
             f"sz={sz!r}")
     sy = sx if sy is None else v.number("sy", sy)
     sz = sx if sz is None else v.number("sz", sz)
-    return _about(np.diag([sx, sy, sz]), None if fixed is None else vector("fixed", fixed))
+    return _finite_matrix(
+        _about(np.diag([sx, sy, sz]), None if fixed is None else vector("fixed", fixed)),
+        "the factors (sx, sy, sz) and the fixed point")
 
 
 def _axis_rotation(axis, c, s):
@@ -181,12 +194,23 @@ def rotation(angle, axis="z", pivot=None):
     if isinstance(axis, str):
         v.choice("axis", axis, AXES)
         m3 = _axis_rotation(axis, math.cos(theta), math.sin(theta))
-        return _about(m3, None if pivot is None else vector("pivot", pivot))
+        return _finite_matrix(_about(m3, None if pivot is None else vector("pivot", pivot)),
+                              "the angle and the pivot")
     if pivot is not None:
         raise ArgumentValueError("pivot is for rotations about a coordinate axis; an axis "
                                  "given by two points (p1, p2) already passes through p1")
     steps = rotation_steps(theta, axis)
-    return compose(*(s.matrix for s in reversed(steps)))
+    return _composite(steps, "the angle and the axis points (p1, p2)")
+
+
+def _composite(steps, arguments):
+    """The product of the steps' matrices, in the order they act; an error naming
+    ``arguments`` when it overflows."""
+    result = np.eye(4)
+    with np.errstate(over="ignore", invalid="ignore"):
+        for s in reversed(steps):
+            result = result @ s.matrix
+    return _finite_matrix(result, arguments)
 
 
 def _axis_points(axis):
@@ -215,7 +239,7 @@ def axis_alignment(axis):
     [0.0, 0.0, 2.0]
     """
     steps = rotation_steps(0.0, axis)
-    return compose(*(s.matrix for s in reversed(steps[:3])))
+    return _composite(steps[:3], "the axis points (p1, p2)")
 
 
 def rotation_steps(angle, axis):
@@ -290,7 +314,7 @@ def reflection(plane, normal=None):
         return _about(np.diag(d), None)
     q = vector("point", plane)
     n = direction("normal", normal)
-    return _about(np.eye(3) - 2.0 * np.outer(n, n), q)
+    return _finite_matrix(_about(np.eye(3) - 2.0 * np.outer(n, n), q), "the point and the normal")
 
 
 def shear(axis="z", a=0.0, b=0.0, reference=0.0):
@@ -326,8 +350,8 @@ def shear(axis="z", a=0.0, b=0.0, reference=0.0):
     m = np.eye(4)
     for row, f in zip(others, (a, b)):
         m[row, k] = f
-        m[row, 3] = -f * ref
-    return _tidy(m)
+        m[row, 3] = -f * ref          # Python floats: may overflow to inf, checked below
+    return _finite_matrix(_tidy(m), "a, b and reference")
 
 
 def compose(*matrices):
@@ -346,14 +370,23 @@ def compose(*matrices):
     """
     result = np.eye(4)
     for i, m in enumerate(matrices):
-        result = result @ matrix4(f"matrices[{i}]", m)
+        with np.errstate(over="ignore", invalid="ignore"):
+            result = result @ matrix4(f"matrices[{i}]", m)
+        if not np.isfinite(result).all():
+            raise ArgumentValueError(
+                f"the product of matrices[0] to matrices[{i}] overflows float64 (entries beyond "
+                "about 1.8e308); compose matrices with smaller entries")
     return result
 
 
 def is_affine(m, tolerance=1e-12):
     """Whether a 4x4 matrix's bottom row is (0, 0, 0, 1) within ``tolerance``."""
     a = matrix4("m", m)
-    return bool(np.abs(a[3] - (0.0, 0.0, 0.0, 1.0)).max() <= tolerance)
+    t = v.number("tolerance", tolerance)
+    if t < 0:
+        raise ArgumentValueError(f"tolerance must be >= 0, got {tolerance!r}")
+    with np.errstate(over="ignore"):
+        return bool(np.abs(a[3] - (0.0, 0.0, 0.0, 1.0)).max() <= t)
 
 
 def inverse(m):
@@ -385,8 +418,10 @@ def inverse(m):
     det = float(np.linalg.det(n))
     size = float(np.sqrt((n * n).sum())) ** n.shape[0]
     if not abs(det) > SINGULAR * size:
+        with np.errstate(over="ignore", under="ignore"):
+            shown = det * np.float64(big) ** n.shape[0]    # (a Python float ** overflows)
         raise ArgumentValueError(
-            f"m is singular (determinant {det * big ** n.shape[0]:.3g}), so it has no "
+            f"m is singular (determinant {shown:.3g}), so it has no "
             "inverse: it flattens space onto a plane, a line or a point (a zero scale "
             "factor, a projection onto the view plane, ...); use an invertible matrix")
     with np.errstate(over="ignore", invalid="ignore"):
@@ -427,15 +462,23 @@ def apply(m, points_):
     """
     a = matrix4("m", m)
     p, single = points("points", points_, (3, 4))
-    if p.shape[1] == 4:
-        out = p @ a.T
-    else:
-        h = p @ a[3, :3] + a[3, 3]
-        if (h == 0.0).any():
-            row = int(np.argmax(h == 0.0))
-            raise ArgumentValueError(
-                f"points row {row} = {p[row].tolist()} maps to infinity (homogeneous "
-                "factor h = 0: it lies in the plane of the center of projection)")
-        out = (p @ a[:3, :3].T + a[:3, 3]) / h[:, None]
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        if p.shape[1] == 4:
+            out = p @ a.T
+        else:
+            h = p @ a[3, :3] + a[3, 3]
+            if (h == 0.0).any():
+                row = int(np.argmax(h == 0.0))
+                raise ArgumentValueError(
+                    f"points row {row} = {p[row].tolist()} maps to infinity (homogeneous "
+                    "factor h = 0: it lies in the plane of the center of projection)")
+            out = (p @ a[:3, :3].T + a[:3, 3]) / h[:, None]
+    bad = ~np.isfinite(out).all(axis=1)
+    if bad.any():
+        row = int(np.argmax(bad))
+        raise ArgumentValueError(
+            f"points row {row} = {p[row].tolist()} maps beyond the range of float64 under m "
+            "(an overflow, or a homogeneous factor h that underflows); use smaller "
+            "coordinates or a smaller transformation")
     out = out + 0.0
     return out[0] if single else out

@@ -20,6 +20,8 @@ __all__ = ["direction", "finite", "matrix4", "points", "real_array", "vector"]
 def finite(name, a):
     """Raise unless every entry of ``a`` is finite, naming the first bad row."""
     if not np.isfinite(a).all():
+        if a.ndim == 0:
+            raise ArgumentValueError(f"{name} must be finite, got {a}")
         where = np.argwhere(~np.isfinite(a))[0]
         if a.ndim == 1:
             raise ArgumentValueError(f"{name} must be finite; {name}[{int(where[0])}] is "

@@ -475,7 +475,7 @@ def test_full_color_table_refuses_new_colors():
     fb = FrameBuffer(2, 2, mode="P", color_table=[(i, 0, 0) for i in range(256)])
     fb.set_pixel(0, 0, (255, 0, 0))  # already in the table: entry 255
     assert fb.get_pixel(0, 0) == 255
-    with pytest.raises(ValueError) as e:
+    with pytest.raises(ValueError) as e, pytest.warns(sl.ColorScaleWarning):
         fb.set_pixel(0, 0, (0, 1, 0))
     assert_package_error(e, "color")
 

@@ -10,7 +10,7 @@ from typing import Literal, Sequence, Tuple, Union
 from numpy.typing import ArrayLike, NDArray
 
 __all__ = ["ArrayLike", "NDArray", "Color", "Angle", "Mode", "LineMethod", "Rule", "Cap",
-           "Join", "Pen", "Connectivity", "ClipMethod", "Point", "Points"]
+           "Join", "Pen", "Connectivity", "ClipMethod", "Point", "Points", "Resample"]
 
 #: A color as the drawing functions take it: a name (Pillow's, or matplotlib's such as
 #: "tab:blue" and "C0"), "#rrggbb[aa]", an (r, g, b[, a]) tuple of ints 0..255 or of
@@ -35,6 +35,8 @@ Pen = Literal["square", "circle", "round"]
 Connectivity = Literal[4, 8]
 #: Line-clipping algorithms.
 ClipMethod = Literal["cohen-sutherland", "liang-barsky", "cyrus-beck"]
+#: Pillow's resampling filters by name (FrameBuffer.resize).
+Resample = Literal["nearest", "box", "bilinear", "hamming", "bicubic", "lanczos"]
 #: A device or world point, and a sequence of them ((N, 2) arrays too).
 Point = Tuple[float, float]
 Points = Union[Sequence[Point], ArrayLike]

@@ -31,7 +31,7 @@ from types import MappingProxyType
 import numpy as np
 
 from . import _validate as v
-from .color.spec import rgba
+from .color.spec import Channels, rgba
 from .errors import ArgumentTypeError, ArgumentValueError
 
 KINDS = ("solid", "hollow", "pattern", "hatch")
@@ -133,7 +133,7 @@ def _palette(tile):
         if a.ndim == 2:
             palette = tuple(int(c[0]) for c in colors)
         else:
-            palette = tuple(rgba(tuple(int(x) for x in c)) for c in colors)
+            palette = tuple(rgba(Channels(int(x) for x in c)) for c in colors)
         where = tuple(divmod(int(i), a.shape[1]) for i in first)
         return inverse.reshape(a.shape[:2]).astype(np.int32), palette, where
     rows = _grid(tile)

@@ -19,6 +19,11 @@ class ArgumentTypeError(ScanlineError, TypeError):
     """An argument has a type scanline cannot use."""
 
 
+class PixelIndexError(ScanlineError, IndexError):
+    """``fb[x, y]`` names a pixel outside the frame buffer: also a plain
+    ``IndexError``; the message names the coordinate and the valid range."""
+
+
 class OutputError(ScanlineError, OSError):
     """A file could not be written (a full disk, an encoder's failure): also a plain
     ``OSError``; the message names the file asked for, and no file is left."""
@@ -37,6 +42,13 @@ class AngleWarning(ScanlineWarning):
     """An angle given in radians looks as if it was meant in degrees (a whole number
     beyond one turn, such as ``30`` or ``90``): write ``"30deg"`` or
     ``math.radians(30)``, or pass a float to mean radians."""
+
+
+class ColorScaleWarning(ScanlineWarning):
+    """A color written as integers that are all 0 or 1, such as ``(1, 0, 0)``:
+    integers are read as 0..255, so this is nearly black; matplotlib's 0..1 form
+    is written with floats, ``(1.0, 0.0, 0.0)``.  Given once per distinct color;
+    ``(0, 0, 0)`` (black either way) never warns."""
 
 
 class DepthSortLoopError(ArgumentValueError):

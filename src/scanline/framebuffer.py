@@ -23,6 +23,7 @@ matplotlib.
 
 import contextlib
 import io
+import numbers
 import os
 import signal
 import tempfile
@@ -32,13 +33,14 @@ from typing import Any, BinaryIO, Callable, List, Optional, Sequence, Tuple, Uni
 import numpy as np
 from PIL import Image
 
-from ._typing import ArrayLike, Color, Mode, NDArray
+from ._typing import ArrayLike, Color, Mode, NDArray, Resample
 
 from . import _validate as v
 from . import imagefile
-from .color.spec import pixel_value, rgba
+from .color.spec import Channels, in_context, pixel_value, rgba
 from .budget import physical_memory
-from .errors import ArgumentTypeError, ArgumentValueError, OutputError, ScanlineError
+from .errors import (ArgumentTypeError, ArgumentValueError, OutputError, PixelIndexError,
+                     ScanlineError)
 
 MODES = ("1", "L", "RGB", "RGBA", "P")
 _CHANNELS = {"1": 1, "L": 1, "RGB": 3, "RGBA": 4, "P": 1}
@@ -163,6 +165,31 @@ def check_image_size(width, height, scale=1, given=None, hint=None):
         + (hint or "use a smaller size" + (" or scale" if scale > 1 else "")))
 
 
+def _row_bytes(width, height, mode, given=None):
+    """Bytes per storage row of a ``width`` x ``height`` frame buffer of ``mode``,
+    after checking that the size is within the coordinate limit and fits the
+    machine's memory (``given`` says how the caller gave the size, for messages)."""
+    for name, size in (("width", width), ("height", height)):
+        if size > v.COORD_LIMIT:
+            raise ArgumentValueError(f"{given + ': ' if given else ''}{name}={size} is larger "
+                                     f"than the limit {v.COORD_LIMIT}")
+    row_bytes = (width + 7) // 8 if mode == "1" else width
+    nbytes = height * row_bytes * _CHANNELS[mode]
+    available = physical_memory()
+    if nbytes > available:
+        raise ArgumentValueError(
+            f"{given or 'width x height'} = {width} x {height} in mode {mode!r} needs "
+            f"{nbytes:,} bytes, more than this machine's {available:,} bytes of memory; "
+            "use a smaller size")
+    return row_bytes
+
+
+#: ``resample=`` names of :meth:`FrameBuffer.resize` and Pillow's filters.
+RESAMPLE = {"nearest": Image.Resampling.NEAREST, "box": Image.Resampling.BOX,
+            "bilinear": Image.Resampling.BILINEAR, "hamming": Image.Resampling.HAMMING,
+            "bicubic": Image.Resampling.BICUBIC, "lanczos": Image.Resampling.LANCZOS}
+
+
 class FrameBuffer:
     """A width x height raster of pixels in one of the modes ``"1"``, ``"L"``,
     ``"RGB"``, ``"RGBA"`` and ``"P"``.
@@ -202,17 +229,7 @@ class FrameBuffer:
         width = v.positive_int("width", width)
         height = v.positive_int("height", height)
         v.choice("mode", mode, MODES)
-        for name, size in (("width", width), ("height", height)):
-            if size > v.COORD_LIMIT:
-                raise ArgumentValueError(f"{name}={size} is larger than the limit {v.COORD_LIMIT}")
-        row_bytes = (width + 7) // 8 if mode == "1" else width
-        nbytes = height * row_bytes * _CHANNELS[mode]
-        available = physical_memory()
-        if nbytes > available:
-            raise ArgumentValueError(
-                f"width x height = {width} x {height} in mode {mode!r} needs {nbytes:,} bytes, "
-                f"more than this machine's {available:,} bytes of memory; use a smaller size"
-            )
+        row_bytes = _row_bytes(width, height, mode)
         self._width = width
         self._height = height
         self._mode = mode
@@ -346,7 +363,7 @@ class FrameBuffer:
     @color_table.setter
     def color_table(self, colors: Sequence[Color]) -> None:
         self._require_p("color_table")
-        colors = list(colors)
+        colors = in_context(list(colors))
         if not 1 <= len(colors) <= 256:
             raise ArgumentValueError(f"color_table must have 1..256 entries, got {len(colors)}")
         table = np.array([rgba(c, f"color_table[{i}]")[:3] for i, c in enumerate(colors)], np.uint8)
@@ -438,6 +455,218 @@ class FrameBuffer:
             return int(self._buf[y, x >> 3, 0] >> (7 - (x & 7))) & 1
         values = self._buf[y, x]
         return int(values[0]) if values.size == 1 else tuple(int(c) for c in values)
+
+    # -- indexing: fb[x, y] -----------------------------------------------------------------
+    def _index(self, key):
+        """``(x, y)`` of ``fb[x, y]``: two integers inside the frame buffer, else the
+        error Python's indexing gives (TypeError, IndexError) naming the coordinate."""
+        if isinstance(key, slice) or (isinstance(key, tuple) and any(
+                isinstance(k, slice) for k in key)):
+            raise ArgumentTypeError(
+                f"fb[{_show_key(key)}]: a frame buffer is indexed by one pixel, fb[x, y]; for a "
+                "block use fb.crop(x0, y0, x1, y1) (corners included) or fb.to_array()")
+        if not (isinstance(key, tuple) and len(key) == 2):
+            raise ArgumentTypeError(
+                f"fb[{_show_key(key)}]: index a frame buffer by a pixel's device coordinates, "
+                "fb[x, y] (x to the right, y up, (0, 0) the bottom-left pixel)")
+        out = []
+        for name, value, size in (("x", key[0], self._width), ("y", key[1], self._height)):
+            if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+                raise ArgumentTypeError(
+                    f"fb[x, y]: {name} must be an integer, got {v._show(value)} of type "
+                    f"{type(value).__name__} (get_pixel and set_pixel round a float to the "
+                    "nearest pixel)")
+            value = int(value)
+            if not 0 <= value < size:
+                raise PixelIndexError(
+                    f"fb[x, y]: {name}={value} is outside the frame buffer, whose "
+                    f"{'columns' if name == 'x' else 'rows'} are {name} = 0..{size - 1} "
+                    f"({'width' if name == 'x' else 'height'} {size}); device coordinates "
+                    f"count from the {'left' if name == 'x' else 'bottom'} and are never "
+                    "negative inside it (get_pixel and set_pixel clip instead of raising)")
+            out.append(value)
+        return out[0], out[1]
+
+    def __getitem__(self, key: Tuple[int, int]) -> Any:
+        """``fb[x, y]``: pixel ``(x, y)`` in device coordinates (x right, y up), as
+        :meth:`get_pixel` returns it (an int in modes ``"1"``, ``"L"``, ``"P"``, a
+        tuple in ``"RGB"`` and ``"RGBA"``).
+
+        Unlike :meth:`get_pixel`, which clips, a pixel outside the frame buffer is an
+        ``IndexError`` (:class:`scanline.errors.PixelIndexError`) naming the
+        coordinate, and the coordinates must be integers.  A negative coordinate
+        is left of (below) the frame buffer, not counted from the end as in a list.
+        Slices are not taken: use :meth:`crop` or :meth:`to_array`.
+
+        >>> fb = FrameBuffer(3, 2, mode="L")
+        >>> fb[2, 0] = 200
+        >>> fb[2, 0], fb[0, 1]
+        (200, 0)
+        """
+        x, y = self._index(key)
+        return self.get_pixel(x, y)
+
+    def __setitem__(self, key: Tuple[int, int], color: Color) -> None:
+        """``fb[x, y] = color``: set pixel ``(x, y)`` as :meth:`set_pixel` does,
+        with the coordinate checks of :meth:`__getitem__`."""
+        x, y = self._index(key)
+        self.set_pixel(x, y, color)
+
+    #: A frame buffer is not a sequence: ``fb[x, y]`` takes two coordinates.
+    __iter__ = None
+
+    # -- copies, crops and sizes ---------------------------------------------------------
+    def _like(self, width, height, given=None):
+        """A new cleared ``width`` x ``height`` frame buffer with this one's mode,
+        background and color table."""
+        row_bytes = _row_bytes(width, height, self._mode, given)
+        out = object.__new__(type(self))
+        out.__dict__.update(self.__dict__)
+        out._width, out._height = width, height
+        out._table = self._table.copy()
+        out._background = self._background.copy()
+        out._cache = {}
+        out._buf = np.empty((height, row_bytes, _CHANNELS[self._mode]), np.uint8)
+        out.clear()
+        return out
+
+    def copy(self) -> "FrameBuffer":
+        """An independent copy: the same size, mode, background, color table and
+        pixels; drawing into one leaves the other alone (``copy.copy(fb)`` and
+        ``copy.deepcopy(fb)`` give the same).
+
+        >>> fb = FrameBuffer(2, 1, mode="L")
+        >>> twin = fb.copy()
+        >>> twin[0, 0] = 9
+        >>> fb[0, 0], twin[0, 0]
+        (0, 9)
+        """
+        out = object.__new__(type(self))
+        out.__dict__.update(self.__dict__)
+        out._buf = self._buf.copy()
+        out._table = self._table.copy()
+        out._background = self._background.copy()
+        out._cache = {}
+        return out
+
+    def __copy__(self) -> "FrameBuffer":
+        return self.copy()
+
+    def __deepcopy__(self, memo: Any) -> "FrameBuffer":
+        return self.copy()
+
+    def crop(self, x0: int, y0: int, x1: int, y1: int) -> "FrameBuffer":
+        """The block of pixels from corner ``(x0, y0)`` to corner ``(x1, y1)``, both
+        included, as a new frame buffer of the same mode, background and color table.
+
+        Device coordinates (x right, y up): the block holds columns x0..x1 and rows
+        y0..y1, ``x1 - x0 + 1`` by ``y1 - y0 + 1`` pixels, and its pixel (0, 0) is
+        pixel (x0, y0) here.  Corners are pixels, as in
+        :func:`scanline.draw.rectangle` (which fills exactly these pixels) and
+        :func:`scanline.draw.line`; either corner may come first.  Floats round to
+        the nearest pixel center.  What lies outside this frame buffer is the
+        background color (Pillow's ``crop`` pads the same way, with zeros), so the
+        size is always the one asked for.
+
+        Pillow's ``Image.crop((left, upper, right, lower))`` counts rows from the
+        top and excludes ``right`` and ``lower``: ``fb.crop(x0, y0, x1, y1)`` is
+        ``fb.to_pil().crop((x0, height - 1 - y1, x1 + 1, height - y0))``.
+
+        >>> fb = FrameBuffer(4, 3, mode="L")
+        >>> fb[1, 0] = 7
+        >>> fb.crop(1, 0, 2, 1).to_array()
+        array([[0, 0],
+               [7, 0]], dtype=uint8)
+        """
+        x0, y0 = v.coordinate("x0", x0), v.coordinate("y0", y0)
+        x1, y1 = v.coordinate("x1", x1), v.coordinate("y1", y1)
+        x0, x1 = min(x0, x1), max(x0, x1)
+        y0, y1 = min(y0, y1), max(y0, y1)
+        width, height = x1 - x0 + 1, y1 - y0 + 1
+        out = self._like(width, height, f"crop({x0}, {y0}, {x1}, {y1}): width x height")
+        ax0, ay0 = max(x0, 0), max(y0, 0)
+        ax1, ay1 = min(x1, self._width - 1), min(y1, self._height - 1)
+        if ax0 > ax1 or ay0 > ay1:
+            return out
+        rows, cols = slice(ay0 - y0, ay1 - y0 + 1), slice(ax0 - x0, ax1 - x0 + 1)
+        if self._mode == "1":
+            src = np.unpackbits(self._buf[ay0:ay1 + 1, :, 0], axis=1,
+                                count=self._width)[:, ax0:ax1 + 1]
+            dst = np.unpackbits(out._buf[:, :, 0], axis=1, count=width)
+            dst[rows, cols] = src
+            out._buf[:, :, 0] = np.packbits(dst, axis=1)
+        else:
+            out._buf[rows, cols] = self._buf[ay0:ay1 + 1, ax0:ax1 + 1]
+        return out
+
+    def resize(self, width: int, height: int, resample: Resample = "nearest") -> "FrameBuffer":
+        """A new ``width`` x ``height`` frame buffer holding this image scaled by
+        Pillow's ``Image.resize``, in the same mode (background and color table kept).
+
+        Parameters
+        ----------
+        width, height : int
+            The new size, each >= 1.
+        resample : {"nearest", "box", "bilinear", "hamming", "bicubic", "lanczos"}
+            Pillow's filter.  ``"nearest"`` (the default) copies pixels: an
+            enlargement by a whole factor turns each pixel into a block, as
+            scan-converted pixels are best looked at.
+
+        Notes
+        -----
+        Modes ``"L"``, ``"RGB"`` and ``"RGBA"`` are filtered as Pillow filters them
+        (RGBA with premultiplied alpha).  The stored values of the other two modes
+        cannot be averaged, and Pillow would fall back to ``"nearest"`` for them; here
+        a mode ``"1"`` image is filtered as gray levels and each pixel set where the
+        result is >= 128 (the mode's rule for colors), and a mode ``"P"`` image is
+        filtered in RGB and each pixel set to the nearest color-table entry
+        (smallest squared RGB distance, the lower index on a tie).  With
+        ``"nearest"`` both keep their stored values.
+
+        >>> fb = FrameBuffer(2, 1, mode="L")
+        >>> fb[0, 0] = 255
+        >>> fb.resize(4, 2).to_array()
+        array([[255, 255,   0,   0],
+               [255, 255,   0,   0]], dtype=uint8)
+        """
+        width = v.positive_int("width", width)
+        height = v.positive_int("height", height)
+        method = v.choice("resample", resample, tuple(RESAMPLE))
+        out = self._like(width, height, "resize(width, height)")
+        size, flt = (width, height), RESAMPLE[method]
+        if self._mode == "1":
+            if method == "nearest":
+                bits = np.asarray(self.to_pil().resize(size, flt), dtype=bool)
+            else:
+                gray = Image.fromarray(self.to_array().astype(np.uint8) * 255)
+                bits = np.asarray(gray.resize(size, flt)) >= 128
+            out._buf[:, :, 0] = np.packbits(bits[::-1], axis=1)
+        elif self._mode == "P":
+            if method == "nearest":
+                index = np.asarray(Image.fromarray(self.to_array()).resize(size, flt))
+            else:
+                rgb = np.asarray(self.to_pil().convert("RGB").resize(size, flt))
+                index = _nearest_entries(rgb, self._table)
+            out._buf[:, :, 0] = index[::-1]
+        else:
+            image = np.asarray(self.to_pil().resize(size, flt))
+            out._buf[...] = image[::-1].reshape(out._buf.shape)
+        return out
+
+    def show(self, title: Optional[str] = None, scale: Optional[int] = None) -> None:
+        """Open the image in the system's image viewer, through Pillow's
+        ``Image.show`` (a temporary PNG handed to the platform's viewer; nothing
+        happens where there is none, as on a headless server).
+
+        ``scale`` enlarges each pixel to a ``scale`` x ``scale`` block; by default a
+        small frame buffer is enlarged as in a notebook (a whole factor, at most 16,
+        to about 256 pixels on the longer side).  In Jupyter there is no need to call
+        this: a frame buffer that ends a cell is shown as an image
+        (``_repr_png_``), enlarged the same way.
+        """
+        if scale is None:
+            scale = self._repr_scale()
+        self._scaled_image(scale).show(title=title)
 
     # -- arrays and images --------------------------------------------------------------
     def __array__(self, dtype: Any = None, copy: Optional[bool] = None) -> NDArray[Any]:
@@ -598,7 +827,7 @@ class FrameBuffer:
             return cls.from_array(np.array(image, dtype=bool))
         if image.mode == "P":
             palette = image.getpalette("RGB") or []
-            table = [tuple(palette[i:i + 3]) for i in range(0, len(palette), 3)][:256]
+            table = [Channels(palette[i:i + 3]) for i in range(0, len(palette), 3)][:256]
             indices = np.array(image, np.uint8)
             used = max(int(indices.max()) + 1, 1) if indices.size else 1
             # a palette shorter than the indices used: the missing entries are black, as
@@ -666,10 +895,38 @@ class FrameBuffer:
         is enlarged by a whole factor (each pixel a square block, at most
         16 x 16) to about 256 pixels on its longer side, so that a 16 x 16 image is
         visible."""
-        scale = max(1, min(_REPR_SCALE, _REPR_SIZE // max(self._width, self._height)))
         out = io.BytesIO()
-        self._scaled_image(scale).save(out, format="PNG")
+        self._scaled_image(self._repr_scale()).save(out, format="PNG")
         return out.getvalue()
+
+    def _repr_scale(self):
+        """The whole factor that enlarges a small frame buffer to about
+        ``_REPR_SIZE`` pixels on its longer side (at most ``_REPR_SCALE``)."""
+        return max(1, min(_REPR_SCALE, _REPR_SIZE // max(self._width, self._height)))
+
+
+def _show_key(key):
+    """An index as it was written between the brackets."""
+    def one(k):
+        if isinstance(k, slice):
+            return ":".join("" if p is None else repr(p) for p in (k.start, k.stop)) + (
+                "" if k.step is None else f":{k.step!r}")
+        return v._show(k)
+    return ", ".join(one(k) for k in key) if isinstance(key, tuple) else one(key)
+
+
+def _nearest_entries(rgb, table):
+    """The color-table index nearest to each pixel of the (h, w, 3) uint8 image
+    ``rgb`` (squared RGB distance, the lower index on ties), as uint8 (h, w)."""
+    flat = rgb.reshape(-1, 3).astype(np.int32)
+    entries = table.astype(np.int32)
+    out = np.empty(len(flat), np.uint8)
+    step = max(1, (1 << 21) // max(len(entries), 1))     # about 8 MB of distances a chunk
+    for start in range(0, len(flat), step):
+        chunk = flat[start:start + step]
+        d = ((chunk[:, None, :] - entries[None, :, :]) ** 2).sum(axis=2)
+        out[start:start + step] = d.argmin(axis=1)
+    return out.reshape(rgb.shape[:2])
 
 
 def _unit_floats(a):

@@ -19,6 +19,17 @@ SHAPES = {
     "circle": ("XC YC R", "the circle of radius R about (XC, YC), by the midpoint algorithm"),
     "ellipse": ("XC YC RX RY", "the axis-aligned ellipse with semi-axes RX, RY about (XC, YC)"),
     "point": ("X Y", "the single pixel (X, Y)"),
+    "rectangle": ("X0 Y0 X1 Y1", "the outline of the rectangle with corner pixels (X0, Y0) "
+                  "and (X1, Y1), with the current line attributes"),
+    "fill-rectangle": ("X0 Y0 X1 Y1", "the filled rectangle: every pixel from (X0, Y0) to "
+                       "(X1, Y1), both included, in the current style"),
+    "rounded-rectangle": ("X0 Y0 X1 Y1 R", "the outline of that rectangle with its corners "
+                          "rounded by quarter circles of radius R"),
+    "fill-rounded-rectangle": ("X0 Y0 X1 Y1 R", "the filled rounded rectangle"),
+    "regular-polygon": ("XC YC R SIDES", "the outline of the regular polygon of SIDES sides "
+                        "inscribed in the circle of radius R about (XC, YC), turned by the "
+                        "current rotation (0: the bottom side horizontal)"),
+    "fill-regular-polygon": ("XC YC R SIDES", "the filled regular polygon"),
     "polygon": ("X1 Y1 X2 Y2 X3 Y3 ...", "the polygon through the vertices, filled by the "
                 "scan-line algorithm with the current rule and style (as many vertices as "
                 "numbers follow)"),
@@ -44,7 +55,8 @@ SHAPES = {
 
 #: Shapes drawn with the line attributes (width, cap, join, miter-limit, dash, pen,
 #: antialias).
-OUTLINES = ("line", "circle", "ellipse", "polyline", "closed-polyline")
+OUTLINES = ("line", "circle", "ellipse", "polyline", "closed-polyline", "rectangle",
+            "rounded-rectangle", "regular-polygon")
 
 #: Shape parameters that are colors, not numbers.
 COLOR_PARAMS = ("FOREGROUND", "BACKGROUND")
@@ -53,7 +65,8 @@ COLOR_PARAMS = ("FOREGROUND", "BACKGROUND")
 STRING_PARAMS = ("STRING",)
 
 #: Shapes that fill an area, and so take the current style.
-AREAS = ("polygon", "fill-circle", "fill-ellipse", "chord", "pie")
+AREAS = ("polygon", "fill-circle", "fill-ellipse", "chord", "pie", "fill-rectangle",
+         "fill-rounded-rectangle", "fill-regular-polygon")
 
 #: Words that set an attribute of the items after them, with their argument.
 SETTINGS = {
@@ -88,8 +101,11 @@ SETTINGS = {
             "following lines (default none)"),
     "antialias": ("on|off", "antialiased lines, circles, ellipses, polylines and text "
                   "(default off)"),
-    "font": ("NAME", "the font of the following text: sans (default), bitmap, stroke or a "
-             ".ttf/.otf file"),
+    "font": ("NAME", "the font of the following text: sans (default), bitmap, stroke, a "
+             ".ttf/.otf file or an installed font's family name such as 'DejaVu Serif' "
+             "(quoted: one word)"),
+    "rotation": ("DEG", "the rotation of the following regular polygons, degrees "
+                 "counterclockwise (default 0)"),
     "height": ("H", "the character (cap) height of the following text in pixels (default: "
                "the font's own, 10 for sans)"),
     "angle": ("DEG", "the baseline direction of the following text, degrees counterclockwise "
@@ -135,6 +151,8 @@ def _epilog():
         "  scanline draw circle 64 64 30 color green flood 64 64 -o disk.png",
         "  scanline draw --size 64x48 width 5 cap round join round dash 12,6 \\",
         "      polyline 5 5 30 40 58 10 -o strokes.png",
+        "  scanline draw --size 64x48 color navy fill-rounded-rectangle 4 4 59 43 8 \\",
+        "      color gold width 2 regular-polygon 32 24 14 5 -o badge.png",
         "  scanline draw --size 160x40 font stroke height 12 align center,half \\",
         "      text 80 20 'Hello, world' -o text.png",
         "  scanline draw --scale 4 color red method dda line -5 3 40 20 \\",
@@ -164,8 +182,8 @@ def positive_int(text):
 def register(subparsers):
     """Add the ``draw`` command."""
     parser = subparsers.add_parser(
-        "draw", help="draw lines, polylines, circles, ellipses, polygons, fills, points "
-        "and text, with their attributes, into a PNG, GIF or BMP",
+        "draw", help="draw lines, polylines, circles, ellipses, polygons, rectangles, "
+        "fills, points and text, with their attributes, into a PNG, GIF or BMP",
         description="Draw ITEMS into a frame buffer and save it; the extension of OUT\n"
         "(.png, .jpg, .webp, .tif, .gif, .bmp ...) picks the format.  Options may come before or after ITEMS.",
         epilog=_epilog(), formatter_class=argparse.RawDescriptionHelpFormatter,
@@ -278,7 +296,7 @@ def render(items, width, height, mode="RGB", background="black", rule="even-odd"
     fb = FrameBuffer(width, height, mode=mode, background=background)
     state = {"color": None, "method": "bresenham", "rule": rule, "style": None,
              "connectivity": 4, "boundary-color": None, "tolerance": 0,
-             "line": LineStyle(), "antialias": False, "text": TextStyle()}
+             "line": LineStyle(), "antialias": False, "text": TextStyle(), "rotation": 0.0}
     for item in items:
         try:
             if item.word in SETTINGS:
@@ -301,6 +319,8 @@ def render(items, width, height, mode="RGB", background="black", rule="even-odd"
                     value = _validate.choice("antialias", value, ("on", "off")) == "on"
                 elif item.word == "tolerance":
                     value = _validate.positive_int("tolerance", _number(value), minimum=0)
+                elif item.word == "rotation":
+                    value = _degree_setting("rotation", value)
                 else:  # connectivity
                     value = int(_validate.choice("connectivity", value, ("4", "8")))
                 state[item.word] = value
@@ -310,6 +330,16 @@ def render(items, width, height, mode="RGB", background="black", rule="even-odd"
             raise ArgumentValueError(
                 f"ITEMS word {item.position} ({item.text}): {exc}") from exc
     return fb
+
+
+def _degree_setting(word, text):
+    """A setting in degrees (``rotation DEG``) as radians."""
+    import math
+
+    value = _number(text)
+    if value is None:
+        raise ArgumentValueError(f"{word} must be a number of degrees, got {text!r}")
+    return math.radians(value)
 
 
 def _line_style(style, word, text):
@@ -358,7 +388,18 @@ def _draw(fb, item, state, draw):
     if word == "line":
         draw.line(fb, *args, color=color, method=state["method"], **lines)
     elif word == "point":
-        fb.set_pixel(*args, fb.foreground if color is None else color)
+        draw.point(fb, *args, color=color)
+    elif word in ("rectangle", "rounded-rectangle"):
+        getattr(draw, word.replace("-", "_"))(fb, *args, color=color, **lines)
+    elif word in ("fill-rectangle", "fill-rounded-rectangle"):
+        getattr(draw, word[5:].replace("-", "_"))(fb, *args, color=color, fill=True,
+                                                  fill_style=state["style"])
+    elif word in ("regular-polygon", "fill-regular-polygon"):
+        xc, yc, r, sides = args
+        if sides != int(sides):
+            raise ArgumentValueError(f"SIDES must be a whole number, got {sides}")
+        shape = dict(fill=True, fill_style=state["style"]) if word.startswith("fill") else lines
+        draw.regular_polygon(fb, xc, yc, r, int(sides), state["rotation"], color=color, **shape)
     elif word in ("circle", "ellipse"):
         getattr(draw, word)(fb, *args, color=color, **lines)
     elif word in ("polyline", "closed-polyline"):

@@ -3,10 +3,11 @@
 import math
 import numbers
 import re
+import warnings
 
 from PIL import ImageColor
 
-from ..errors import ArgumentTypeError, ArgumentValueError
+from ..errors import ArgumentTypeError, ArgumentValueError, ColorScaleWarning
 
 _HELP = ("a color name such as 'red' or 'tab:blue', a hex string '#rrggbb', an (r, g, b[, a]) "
          "tuple of integers 0..255 or of floats 0..1")
@@ -53,6 +54,62 @@ def _named(color, name):
     raise ArgumentValueError(f"{name}={color!r} is not a known color; use {_HELP}") from None
 
 
+class Channels(tuple):
+    """Channel values 0..255 that scanline made itself (read from pixels, a color
+    table or an integer array), passed on as a color spec.  A plain tuple to every
+    reader; only :func:`rgba`'s scale check knows the difference: these values
+    were never typed by a user, so ``Channels((1, 0, 0))`` is not questioned."""
+
+    __slots__ = ()
+
+
+def _above_one(spec):
+    """Whether ``spec`` is a tuple or list holding an integer above 1 (so written in
+    0..255)."""
+    return type(spec) in (tuple, list) and any(
+        isinstance(c, numbers.Integral) and not isinstance(c, bool) and c > 1 for c in spec)
+
+
+def in_context(specs):
+    """The color specs of one list (a batch's colors, a color table) as a whole: when
+    any of them is written with integers above 1, the list is in 0..255, and its 0/1
+    integer tuples (``(0, 0, 0, 1)`` beside ``(10, 200, 30, 100)``, entry 1 of
+    ``[(i, 0, 0) for i in range(256)]``) are meant so and are not questioned."""
+    if not any(_above_one(s) for s in specs):
+        return specs
+    return [Channels(s) if type(s) in (tuple, list) else s for s in specs]
+
+
+#: The 0/1 integer colors warned about so far (each distinct color once per process).
+_SCALE_WARNED = set()
+
+
+def _check_scale(color, values, name):
+    """Warn (:class:`~scanline.ColorScaleWarning`, once per distinct color) when a
+    tuple or list typed as integers holds only 0s and 1s and not only 0s:
+    ``(1, 0, 0)`` is rgb(1, 0, 0), nearly black, where ``(1.0, 0.0, 0.0)`` (red)
+    was most likely meant.  Arrays and :class:`Channels` are data, not literals,
+    and are never questioned."""
+    if type(color) not in (tuple, list) or not all(c == 0 or c == 1 for c in values) \
+            or not any(values):
+        return
+    key = tuple(int(c) for c in values)
+    if key in _SCALE_WARNED:
+        return
+    _SCALE_WARNED.add(key)
+    from .._validate import _caller_level
+
+    floats = "(" + ", ".join(f"{c}.0" for c in key) + ")"
+    read = " and ".join(what for what, yes in (
+        ("nearly black", any(key[:3])), ("nearly transparent", key[3:] == (1,))) if yes)
+    warnings.warn(
+        f"{name}={color!r} is read as 0..255 integers: {'rgba' if len(key) == 4 else 'rgb'}"
+        f"{key}, {read}; if you "
+        f"meant matplotlib's 0..1 form write floats, {name}={floats} (a color written with "
+        f"0..255 integers such as (255, 0, 0) does not warn)",
+        ColorScaleWarning, stacklevel=_caller_level())
+
+
 def _from_tuple(color, values, name):
     if not all(isinstance(c, numbers.Real) and not isinstance(c, bool) for c in values):
         raise ArgumentTypeError(f"{name}={color!r} is not a color; {_TUPLE_HELP}")
@@ -61,6 +118,7 @@ def _from_tuple(color, values, name):
             f"{name}={color!r} has {len(values)} values and is not a color; {_TUPLE_HELP}")
     if all(isinstance(c, numbers.Integral) for c in values):
         if all(0 <= c <= 255 for c in values):
+            _check_scale(color, values, name)
             return tuple(int(c) for c in values) + ((255,) if len(values) == 3 else ())
         raise ArgumentValueError(
             f"{name}={color!r} is not a color; integers must be in 0..255 ({_TUPLE_HELP})")
@@ -81,6 +139,11 @@ def rgba(color, name="color"):
     installed (``"tab:blue"``, ``"C0"``, ``"xkcd:sky blue"``, ``"k"``); a tuple of 3
     or 4 integers in 0..255, or of floats in [0, 1] (any float element makes it the
     [0, 1] form, scaled by 255 and rounded); or an integer gray level 0..255.
+
+    A tuple or list of integers that are all 0 or 1 (``(1, 0, 0)``, not
+    ``(0, 0, 0)``) is read as 0..255 -- nearly black -- and gives a
+    :class:`~scanline.ColorScaleWarning` once per distinct color, naming the float
+    form ``(1.0, 0.0, 0.0)`` that was probably meant.
 
     >>> rgba("red")
     (255, 0, 0, 255)

@@ -19,7 +19,7 @@ import numbers
 import numpy as np
 
 from ..errors import ArgumentTypeError, ArgumentValueError
-from .spec import rgba
+from .spec import in_context, rgba
 
 
 def gray_table(n):
@@ -149,7 +149,8 @@ def color_table(colors, name="palette"):
             raise ArgumentTypeError(
                 f"{name} must be a sequence of colors or an (n, 3) array, "
                 f"got {type(colors).__name__}") from None
-        table = np.array([rgba(c, f"{name}[{i}]")[:3] for i, c in enumerate(entries)],
+        table = np.array([rgba(c, f"{name}[{i}]")[:3]
+                          for i, c in enumerate(in_context(entries))],
                          np.uint8).reshape(-1, 3)
     if not 1 <= len(table) <= 256:
         raise ArgumentValueError(

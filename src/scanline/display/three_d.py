@@ -14,6 +14,7 @@ import numpy as np
 
 from ..draw3d.wireframe import (cue_factor, depth_cue_intensities, edge_colors,
                                 pieces_into, project_edges_into)
+from ..color.spec import Channels
 from .primitives import Primitive
 
 KINDS = ("polyline3d", "mesh")
@@ -69,6 +70,6 @@ def expand(primitives, display_file, width, height):
         for i, s in enumerate(segs):
             attrs = dict(line, closed=False)
             if colors is not None:
-                attrs["color"] = tuple(int(c) for c in colors[i])
+                attrs["color"] = Channels(int(c) for c in colors[i])
             out.append(Primitive("polyline", {"points": s.reshape(2, 2)}, attrs, prim.clip))
     return out

@@ -40,7 +40,7 @@ import numpy as np
 from .._kernels import blend as k
 from .._kernels._jit import call
 from .._kernels.variants import MODE
-from ..color.spec import rgba
+from ..color.spec import Channels, in_context, rgba
 from ._area import fill_area
 from ._common import colors, target
 
@@ -118,13 +118,14 @@ def sources(fb, color, n, name="color"):
             and np.issubdtype(color.dtype, np.integer) and fb.mode not in ("RGB", "RGBA"):
         # (N, 4) specs in a mode without color channels: convert each distinct RGB
         uniq, inverse = np.unique(color[:, :3], axis=0, return_inverse=True)
-        rows = np.array([_source(fb, tuple(int(c) for c in u), f"{name}") for u in uniq])
+        rows = np.array([_source(fb, Channels(int(c) for c in u), f"{name}") for u in uniq])
         out = rows[inverse.reshape(-1)]
         out[:, 3] = color[:, 3] / 255.0
         return out
     if isinstance(color, list):
         if len(color) == n:
-            return np.array([_source(fb, c, f"{name}[{i}]") for i, c in enumerate(color)],
+            return np.array([_source(fb, c, f"{name}[{i}]")
+                             for i, c in enumerate(in_context(color))],
                             np.float64).reshape(n, 4)
     values = colors(fb, color, n, name)   # validates the length and the values
     out = np.zeros((len(values), 4), np.float64)
@@ -228,7 +229,7 @@ def paint_each(fb, color, n, bboxes, draw):
 def _opaque_spec(fb, s):
     """The color spec of an opaque source row (the inverse of :func:`_source`)."""
     if fb.mode in ("RGB", "RGBA", "P"):
-        return (int(s[0]), int(s[1]), int(s[2]))
+        return Channels((int(s[0]), int(s[1]), int(s[2])))
     return int(s[0])  # the gray level ("L") or the bit ("1")
 
 

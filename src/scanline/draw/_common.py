@@ -2,6 +2,7 @@
 
 import numpy as np
 
+from ..color.spec import Channels, in_context
 from ..errors import ArgumentTypeError, ArgumentValueError
 from ..framebuffer import FrameBuffer
 
@@ -57,10 +58,10 @@ def colors(fb, color, n, name="color"):
         direct = _direct(fb, color, name)
         if direct is not None:
             return direct
-        color = [tuple(row.tolist()) if color.ndim == 2 else int(row) for row in color]
+        color = [Channels(row.tolist()) if color.ndim == 2 else int(row) for row in color]
     channels = fb._raster()[0].shape[2]
     out = np.empty((n, channels), np.uint8)
-    for i, spec in enumerate(color):
+    for i, spec in enumerate(in_context(color)):
         out[i] = fb.pixel(spec, f"{name}[{i}]")
     return out
 

@@ -26,6 +26,7 @@ from .._kernels import curved as kcurved
 from .._kernels import linetype as kl
 from .._kernels._jit import call
 from .._kernels.variants import layout, token
+from ..color.spec import Channels
 from ..geometry import far_conics as fc
 from ..geometry.guard import conics_outside
 from . import _blend
@@ -354,7 +355,7 @@ def antialiased_fill(fb, xc, yc, rx, ry, color):
 def spec(color, i):
     """The color spec of primitive i of a batch (one spec, a list, or an array)."""
     if isinstance(color, np.ndarray):
-        return tuple(int(c) for c in color[i]) if color.ndim == 2 else int(color[i])
+        return Channels(int(c) for c in color[i]) if color.ndim == 2 else int(color[i])
     if isinstance(color, list):
         return color[i]
     return color

@@ -138,8 +138,10 @@ def text(fb, x, y, text, color=None, font=None, height=None, expansion=None, spa
     color : color, optional
         Default: the style's color, else the frame buffer's ``foreground``.  A translucent color is
         composited over the frame buffer.
-    font : {"sans", "bitmap", "stroke"}, path or Font, optional
-        Default ``"sans"`` (DejaVu Sans).
+    font : {"sans", "bitmap", "stroke"}, path, family name or Font, optional
+        Default ``"sans"`` (DejaVu Sans, also by its family name ``"DejaVu Sans"``);
+        an installed font by its family name, ``"DejaVu Serif"``, found by
+        fontconfig or matplotlib (:mod:`scanline.text.system`).
     height, expansion, spacing, angle, up, path, align, antialias
         The text attributes, see :class:`scanline.TextStyle`.  ``height`` is the cap
         height in pixels; ``spacing`` a fraction of it; ``angle`` radians.

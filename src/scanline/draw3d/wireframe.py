@@ -13,6 +13,7 @@ import numpy as np
 
 from .. import _validate as v
 from ..clip.volumes import UNIT_CUBE
+from ..color.spec import Channels
 from ..draw import lines as draw_lines
 from ..draw import polylines as draw_polylines
 from ..draw._common import target
@@ -115,7 +116,7 @@ def _channel_values(fb, rgba):
     """Pixel values (N, channels) of RGBA rows for ``fb``: one ``fb.pixel`` per
     distinct color."""
     uniq, inverse = np.unique(rgba, axis=0, return_inverse=True)
-    values = np.array([fb.pixel(tuple(int(c) for c in row)) for row in uniq], np.uint8)
+    values = np.array([fb.pixel(Channels(int(c) for c in row)) for row in uniq], np.uint8)
     return values[inverse.reshape(-1)]
 
 

@@ -117,10 +117,11 @@ class ColorTableAnimation:
 
     def frame(self, step):
         """Frame ``step``: a copy of the frame buffer with the table of that step."""
+        from ..color.spec import Channels
         from ..framebuffer import FrameBuffer
 
         out = FrameBuffer(self.fb.width, self.fb.height, mode="P", background=0,
-                          color_table=[tuple(int(c) for c in row) for row in self.table(step)])
+                          color_table=[Channels(int(c) for c in row) for row in self.table(step)])
         out._raster()[0][...] = self.fb._raster()[0]
         return out
 

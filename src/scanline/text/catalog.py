@@ -4,7 +4,8 @@ Character generation (notes, syllabus: "Character generation"; Hearn & Baker,
 section 3-14) knows two ways to store the shapes of characters: as a *bitmap*
 (dot-matrix) grid per character, and as an *outline* (strokes or curved contours)
 that is scan-converted at any size.  scanline ships one font of each kind and reads
-more outline fonts from TrueType/OpenType files:
+more outline fonts from TrueType/OpenType files, given by path or by family name
+(``"DejaVu Serif"``: :mod:`scanline.text.system` asks fontconfig or matplotlib):
 
 ==========  ========  ===================================================
 name        kind      source
@@ -175,8 +176,9 @@ def load_font(path):
 
 
 def font(spec, name="font"):
-    """Resolve a font argument: a built-in name, a path to a .ttf/.otf file, or a
-    :class:`Font`."""
+    """Resolve a font argument: a built-in name, a path to a .ttf/.otf file, a font
+    family's name (``"DejaVu Sans"`` is the built-in ``"sans"``; others are looked
+    up among the installed fonts, :mod:`scanline.text.system`), or a :class:`Font`."""
     if isinstance(spec, Font):
         return spec
     if isinstance(spec, str) and spec in _LOADED:
@@ -186,9 +188,18 @@ def font(spec, name="font"):
         _LOADED[spec] = builtin[spec]()
         return _LOADED[spec]
     if isinstance(spec, (str, os.PathLike)) and (
-            os.fspath(spec).lower().endswith((".ttf", ".otf", ".ttc")) or os.path.exists(spec)):
+            os.fspath(spec).lower().endswith((".ttf", ".otf", ".ttc", ".otc"))
+            or os.path.exists(spec)):
         return load_font(spec)
-    if isinstance(spec, (str, os.PathLike)):
+    if isinstance(spec, str):
+        from . import system
+
+        found = system._find(spec)
+        if found is None:
+            raise ArgumentValueError(system.not_found(name, spec, tuple(builtin)))
+        _LOADED[spec] = font(found) if found in builtin else load_font(found)
+        return _LOADED[spec]
+    if isinstance(spec, os.PathLike):
         raise ArgumentValueError(
             f"{name}={v._show(spec)} is neither a built-in font ({', '.join(map(repr, builtin))}) "
             "nor an existing .ttf/.otf file")

@@ -63,8 +63,9 @@ class TextStyle:
     ----------
     font : str, path or Font
         ``"sans"`` (DejaVu Sans, an outline font), ``"bitmap"`` (5 x 7 dot matrix),
-        ``"stroke"`` (vector font), a path to a .ttf/.otf file, or a loaded
-        :class:`scanline.text.Font`.
+        ``"stroke"`` (vector font), a path to a .ttf/.otf file, the family name of
+        an installed font (``"DejaVu Serif"``; ``"DejaVu Sans"`` is ``"sans"``; see
+        :mod:`scanline.text.system`), or a loaded :class:`scanline.text.Font`.
     height : float, optional
         Character height: the *cap height* (baseline to the top of the capitals), in
         device pixels, as GKS and Hearn & Baker define it.  Default: the font's

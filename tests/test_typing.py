@@ -35,6 +35,8 @@ sl.draw.polygon(fb, [(0, 0), (4, 0), (0, 4)], rule="odd")
 sl.draw.nosuch(fb)
 cam = sl.Camera(eye=(3, 2, 4), target=(0, 0, 0))
 sl.render(fb, sl.mesh.cube(), cam, material=None)
+sl.draw.rectangle(fb, 0, 0, 5)
+fb.resize(8, 8, resample="cubic")
 '''
 RIGHT = '''
 import math
@@ -56,6 +58,16 @@ r = sl.render(fb, meshes, cam, method="z-buffer", shading="phong",
               lights=[sl.lighting.AmbientLight(0.2)], materials=sl.lighting.Material())
 faces: int = int(r.faces.max())
 print(r.depth, faces, r.meshes)
+sl.draw.rectangle(fb, 1, 1, 9, 9, color="red", fill=True, width=2, join="round")
+sl.draw.rounded_rectangle(fb, 1, 1, 14, 14, 3, fill=(0.5, 0.5, 0.5),
+                          fill_style=sl.FillStyle.hollow())
+sl.draw.regular_polygon(fb, 8, 8, 6, 5, rotation="18deg", color="blue")
+sl.draw.point(fb, 3, 3)
+sl.draw.points(fb, [(1, 1), (2, 2)])
+part = fb.crop(0, 0, 7, 7).resize(16, 16, resample="bilinear").copy()
+part[2, 2] = "red"
+font_file: str = sl.text.find_font("DejaVu Sans")
+print(part[1, 1], sl.ColorScaleWarning, font_file)
 '''
 
 
@@ -81,6 +93,9 @@ def test_mypy_flags_wrong_calls_and_accepts_right_ones(tmp_path):
         (7, 'Argument "rule" to "polygon" has incompatible type "Literal[\'odd\']"'),
         (8, 'Module has no attribute "nosuch"'),
         (10, 'Unexpected keyword argument "material" for "render"'),
+        (11, 'Missing positional argument "y1" in call to "rectangle"'),
+        (12, 'Argument "resample" to "resize" of "FrameBuffer" has incompatible type '
+             '"Literal[\'cubic\']"'),
     ]
     for line, message in expected:
         assert any(g.startswith(f"usage.py:{line}: error: {message}") for g in got), (message, got)

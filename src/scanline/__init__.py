@@ -27,13 +27,14 @@ if TYPE_CHECKING:   # what the lazy attributes are, for type checkers and editor
     from . import trace as trace, transform as transform, transform3d as transform3d
     from . import viewing as viewing, visible as visible, lighting as lighting
     from . import shading as shading, rendering as rendering, screen as screen
-    from . import budget as budget
+    from . import budget as budget, mpl as mpl
     from .rendering import render as render
     from .depthbuffer import DepthBuffer as DepthBuffer
     from .attributes import FillStyle as FillStyle
     from .context import Context as Context
     from .display import DisplayFile as DisplayFile
     from .errors import AngleWarning as AngleWarning, ArgumentTypeError as ArgumentTypeError
+    from .errors import ColorScaleWarning as ColorScaleWarning
     from .errors import ArgumentValueError as ArgumentValueError
     from .errors import ImageFileError as ImageFileError, ScanlineError as ScanlineError
     from .errors import OutputError as OutputError, ScanlineWarning as ScanlineWarning
@@ -52,6 +53,7 @@ _LAZY = {
     "ImageFileError": ("scanline.errors", "ImageFileError"),
     "ScanlineWarning": ("scanline.errors", "ScanlineWarning"),
     "AngleWarning": ("scanline.errors", "AngleWarning"),
+    "ColorScaleWarning": ("scanline.errors", "ColorScaleWarning"),
     "draw": ("scanline.draw", None),
     "trace": ("scanline.trace", None),
     "color": ("scanline.color", None),
@@ -83,6 +85,7 @@ _LAZY = {
     "rendering": ("scanline.rendering", None),
     "screen": ("scanline.screen", None),
     "budget": ("scanline.budget", None),
+    "mpl": ("scanline.mpl", None),
     "visible": ("scanline.visible", None),
 }
 

@@ -135,6 +135,18 @@ def _colors(name, colors, count):
                           f"{name}[{i}]") for i, c in enumerate(colors)], np.uint8).reshape(-1, 4)
 
 
+def _material(material):
+    """``material`` checked: None or a :class:`scanline.lighting.Material`."""
+    if material is None:
+        return None
+    from ..lighting.material import Material
+
+    if not isinstance(material, Material):
+        raise ArgumentTypeError(f"material must be a scanline.lighting.Material or None, got "
+                                f"{v._show(material)}")
+    return material
+
+
 class Mesh:
     """A polygon mesh.
 
@@ -153,6 +165,12 @@ class Mesh:
         Vertex normals (the generators give the exact ones of their surfaces).
     color_on : {"face", "vertex"}, optional
     name : str, optional
+    uv : array_like, shape (V, 2), optional
+        Texture coordinates (u, v) of each vertex (Hearn & Baker 14-9), as OBJ's ``vt``
+        and glTF's ``TEXCOORD_0`` give them; v = 0 is the bottom of the image.
+    material : scanline.lighting.Material, optional
+        The surface's material, used by :func:`scanline.render` when it is given no
+        ``materials`` (a mesh file's ``usemtl`` or glTF material).
 
     Examples
     --------
@@ -164,7 +182,8 @@ class Mesh:
     [[0.0, 0.0, 2.0, 0.0]]
     """
 
-    def __init__(self, vertices, faces, colors=None, normals=None, color_on=None, name=None):
+    def __init__(self, vertices, faces, colors=None, normals=None, color_on=None, name=None,
+                 uv=None, material=None):
         verts = real_array("vertices", vertices, "(V, 3)")
         if verts.ndim == 1 and verts.size == 0:
             verts = verts.reshape(0, 3)
@@ -184,6 +203,15 @@ class Mesh:
         self.colors, self.color_on = None, None
         if colors is not None:
             self._set_colors(colors, color_on)
+        self.uv = None
+        if uv is not None:
+            tex = finite("uv", real_array("uv", uv, "(V, 2)"))
+            if tex.shape != (len(self.vertices), 2):
+                raise ArgumentValueError(
+                    f"uv must have one (u, v) row per vertex, shape ({len(self.vertices)}, 2), "
+                    f"got {tex.shape}")
+            self.uv = np.array(tex, np.float64, order="C")
+        self.material = _material(material)
         self.name = name
         self._edges = None
 
@@ -528,6 +556,10 @@ def merge(meshes, name=None):
     out.face_offsets = offsets.astype(np.int64)
     out.normals = (np.concatenate([m.normals for m in meshes])
                    if all(m.normals is not None for m in meshes) else None)
+    out.uv = (np.concatenate([m.uv for m in meshes])
+              if all(m.uv is not None for m in meshes) else None)
+    materials = {id(m.material) for m in meshes}
+    out.material = meshes[0].material if len(materials) == 1 else None
     kinds = {m.color_on for m in meshes}
     if len(kinds) == 1 and None not in kinds:
         out.colors, out.color_on = np.concatenate([m.colors for m in meshes]), kinds.pop()

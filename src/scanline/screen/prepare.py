@@ -50,11 +50,15 @@ CLIP_VOLUME = Volume(
     "render clip volume")
 
 
-def _materials(materials, n):
+def _materials(materials, meshes):
+    """One Material per mesh: ``materials`` (one, or one per mesh), else each mesh's
+    own ``material``, else the default Material."""
     from ..lighting.material import Material
 
+    n = len(meshes)
     if materials is None:
-        return (Material(),) * n
+        default = Material()
+        return tuple(m.material if m.material is not None else default for m in meshes)
     if isinstance(materials, Material):
         return (materials,) * n
     if isinstance(materials, (str, bytes)) or not hasattr(materials, "__iter__"):
@@ -211,7 +215,7 @@ def prepare(meshes, camera, width, height, materials=None, colors=None, cull_bac
           "render fewer or coarser meshes")
     check(PIXEL_BYTES * width * height, "width x height",
           f"the per-pixel buffers of a {width} x {height} render", "render a smaller image")
-    mats = _materials(materials, len(meshes))
+    mats = _materials(materials, meshes)
     if crease_angle is not None:
         crease_angle = v.number("crease_angle", crease_angle)
         if not 0 <= crease_angle <= math.pi:

@@ -136,12 +136,11 @@ def _colors(name, colors, count):
 
 
 def _material(material):
-    """``material`` checked: None or a :class:`scanline.lighting.Material`."""
+    """``material`` checked: None or a :class:`scanline.lighting.Material` (recognized
+    by its coefficients: geometry does not import the lighting, docs/architecture.md)."""
     if material is None:
         return None
-    from ..lighting.material import Material
-
-    if not isinstance(material, Material):
+    if not all(hasattr(material, k) for k in ("ka", "kd", "ks", "shininess", "color")):
         raise ArgumentTypeError(f"material must be a scanline.lighting.Material or None, got "
                                 f"{v._show(material)}")
     return material

@@ -58,7 +58,12 @@ def _materials(materials, meshes):
     n = len(meshes)
     if materials is None:
         default = Material()
-        return tuple(m.material if m.material is not None else default for m in meshes)
+        own = tuple(m.material if m.material is not None else default for m in meshes)
+        for i, m in enumerate(own):
+            if not isinstance(m, Material):
+                raise ArgumentTypeError(f"meshes[{i}].material must be a sl.lighting.Material, "
+                                        f"got {v._show(m)}")
+        return own
     if isinstance(materials, Material):
         return (materials,) * n
     if isinstance(materials, (str, bytes)) or not hasattr(materials, "__iter__"):

@@ -27,7 +27,8 @@ if TYPE_CHECKING:   # what the lazy attributes are, for type checkers and editor
     from . import trace as trace, transform as transform, transform3d as transform3d
     from . import viewing as viewing, visible as visible, lighting as lighting
     from . import shading as shading, rendering as rendering, screen as screen
-    from . import budget as budget, mpl as mpl
+    from . import budget as budget, mpl as mpl, texture as texture
+    from .texture import Texture as Texture
     from .rendering import render as render
     from .depthbuffer import DepthBuffer as DepthBuffer
     from .attributes import FillStyle as FillStyle
@@ -87,6 +88,8 @@ _LAZY = {
     "budget": ("scanline.budget", None),
     "mpl": ("scanline.mpl", None),
     "visible": ("scanline.visible", None),
+    "texture": ("scanline.texture", None),
+    "Texture": ("scanline.texture", "Texture"),
 }
 
 __all__ = sorted(_LAZY) + ["__version__"]

@@ -1,6 +1,8 @@
 """Surface properties of the basic illumination model (Hearn & Baker, section 14-2
-and 14-6): reflection coefficients, the specular exponent, color, transparency."""
+and 14-6): reflection coefficients, the specular exponent, color, transparency, and
+the ray tracer's reflectivity, index of refraction and roughness (14-6)."""
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -48,6 +50,23 @@ class Material:
     transparency : float in 0..1
         k_t: the fraction of the light behind the surface that passes through
         (Hearn & Baker, section 14-5, I = (1 - k_t) I_refl + k_t I_trans).
+    texture : scanline.Texture or image, optional
+        The surface color S_d varies over the surface: S_d = color x the texel at the
+        point's texture coordinates (the mesh's ``uv``), so the diffuse and ambient
+        reflections are kd S_d and ka S_d (Hearn & Baker 14-9, texture mapping).  An
+        image (array, Pillow Image, path) becomes a bilinear, repeated Texture.
+    bump : scanline.Texture or image, optional
+        A height map (its first channel, 0..1) that perturbs the shading normal
+        (Blinn 1978, bump mapping; Hearn & Baker 14-9).
+    bump_scale : float
+        The height of a bump-map value of 1, in the surface's units per unit of
+        texture coordinate.
+    environment : scanline.Texture or image, optional
+        A latitude-longitude map of the surroundings, looked up in the direction of
+        the reflected view ray (Hearn & Baker 14-8, environment mapping).
+    reflectivity : float in 0..1
+        k_r: the fraction of the environment (or, when ray tracing, of the light
+        along the reflected ray) the surface reflects, added to its intensity.
     """
     ka: float
     kd: float
@@ -56,11 +75,27 @@ class Material:
     color: np.ndarray
     specular_color: np.ndarray
     transparency: float
+    texture: object
+    bump: object
+    bump_scale: float
+    environment: object
+    reflectivity: float
 
     def __init__(self, ka=0.2, kd=0.7, ks=0.3, shininess=20.0, color="white",
-                 specular_color="white", transparency=0.0):
-        for name, value in (("ka", ka), ("kd", kd), ("ks", ks), ("transparency", transparency)):
+                 specular_color="white", transparency=0.0, texture=None, bump=None,
+                 bump_scale=1.0, environment=None, reflectivity=0.0):
+        for name, value in (("ka", ka), ("kd", kd), ("ks", ks), ("transparency", transparency),
+                            ("reflectivity", reflectivity)):
             object.__setattr__(self, name, _coefficient(name, value))
+        if texture is not None or bump is not None or environment is not None:
+            from ..texture.texture import texture_of
+
+            texture, bump, environment = (texture_of(name, value) for name, value in (
+                ("texture", texture), ("bump", bump), ("environment", environment)))
+        object.__setattr__(self, "texture", texture)
+        object.__setattr__(self, "bump", bump)
+        object.__setattr__(self, "environment", environment)
+        object.__setattr__(self, "bump_scale", v.number("bump_scale", bump_scale))
         n = v.number("shininess", shininess)
         if n < 0:
             raise ArgumentValueError(f"shininess must be >= 0 (the specular exponent n_s), got "

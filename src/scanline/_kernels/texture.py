@@ -1,0 +1,149 @@
+"""Texture sampling (Hearn & Baker, section 14-9, "Texture mapping"): the texel color
+at texture coordinates (u, v), nearest, bilinear or trilinear (mipmapped, Williams
+1983), with the coordinates wrapped (repeat, mirror) or clamped.
+
+A texture's mipmap pyramid is one array ``texels`` (N, 3) float32 (level after level,
+each row after row from the bottom: row j holds v in [j/h, (j+1)/h)) and a table
+``levels`` (L, 3) int64 of each level's first texel, width and height.  Texel (i, j)
+of a w x h level covers u in [i/w, (i+1)/w): its center is at ((i + 1/2)/w, (j +
+1/2)/h).
+
+No index leaves its array whatever the coordinates: a coordinate is first brought
+into a small range as a real (its fraction for ``REPEAT``, modulo 2 for ``MIRROR``,
+clamped for ``CLAMP``; NaN and infinities become 0) before it becomes an integer,
+and every integer index is then wrapped or clamped into 0 .. n - 1 (a float too
+large for an integer is never converted).
+"""
+
+import math
+
+from ._jit import helper, kernel
+
+#: Wrap modes (:data:`scanline.texture.WRAPS`).
+REPEAT = 0
+CLAMP = 1
+MIRROR = 2
+
+#: Filters (:data:`scanline.texture.FILTERS`).
+NEAREST = 0
+BILINEAR = 1
+TRILINEAR = 2
+
+
+@helper
+def reduced(t, wrap):
+    """Texture coordinate ``t`` brought into [0, 1) (repeat), [0, 2) (mirror: the
+    period of a mirrored texture) or [-1, 2] (clamp) as a real; NaN and infinities
+    give 0."""
+    if not (t - t == 0.0):              # NaN or infinite
+        return 0.0
+    if wrap == REPEAT:
+        r = t - math.floor(t)
+        return r if r < 1.0 else 0.0
+    if wrap == MIRROR:
+        r = t - 2.0 * math.floor(0.5 * t)
+        return r if r < 2.0 else 0.0
+    return min(max(t, -1.0), 2.0)
+
+
+@helper
+def wrapped(i, n, wrap):
+    """Integer texel index ``i`` (any value) wrapped or clamped into 0 .. n - 1."""
+    if wrap == REPEAT:
+        i = i % n
+    elif wrap == MIRROR:
+        p = i % (2 * n)
+        i = p if p < n else 2 * n - 1 - p
+    return min(max(i, 0), n - 1)
+
+
+@helper
+def nearest(texels, levels, level, u, v, wrap):
+    """The texel whose square holds (u, v) at ``level``: (r, g, b)."""
+    base = levels[level, 0]
+    w = levels[level, 1]
+    h = levels[level, 2]
+    i = wrapped(int(math.floor(reduced(u, wrap) * w)), w, wrap)
+    j = wrapped(int(math.floor(reduced(v, wrap) * h)), h, wrap)
+    k = base + j * w + i
+    return texels[k, 0], texels[k, 1], texels[k, 2]
+
+
+@helper
+def bilinear(texels, levels, level, u, v, wrap):
+    """The four texels around (u, v) at ``level`` weighted by their distances
+    (bilinear interpolation between texel centers): (r, g, b)."""
+    base = levels[level, 0]
+    w = levels[level, 1]
+    h = levels[level, 2]
+    x = reduced(u, wrap) * w - 0.5
+    y = reduced(v, wrap) * h - 0.5
+    fx = math.floor(x)
+    fy = math.floor(y)
+    ax = x - fx
+    ay = y - fy
+    i0 = wrapped(int(fx), w, wrap)
+    i1 = wrapped(int(fx) + 1, w, wrap)
+    j0 = base + wrapped(int(fy), h, wrap) * w
+    j1 = base + wrapped(int(fy) + 1, h, wrap) * w
+    w00 = (1.0 - ax) * (1.0 - ay)
+    w10 = ax * (1.0 - ay)
+    w01 = (1.0 - ax) * ay
+    w11 = ax * ay
+    r = (w00 * texels[j0 + i0, 0] + w10 * texels[j0 + i1, 0] + w01 * texels[j1 + i0, 0]
+         + w11 * texels[j1 + i1, 0])
+    g = (w00 * texels[j0 + i0, 1] + w10 * texels[j0 + i1, 1] + w01 * texels[j1 + i0, 1]
+         + w11 * texels[j1 + i1, 1])
+    b = (w00 * texels[j0 + i0, 2] + w10 * texels[j0 + i1, 2] + w01 * texels[j1 + i0, 2]
+         + w11 * texels[j1 + i1, 2])
+    return r, g, b
+
+
+@helper
+def level_of_detail(levels, first, count, dudx, dvdx, dudy, dvdy):
+    """The mipmap level (a real in 0 .. count - 1) for a pixel whose texture
+    coordinates change by (dudx, dvdx) and (dudy, dvdy) per pixel: log2 of the longer
+    of the pixel's two sides measured in texels of the finest level (Williams 1983;
+    NaN derivatives give 0)."""
+    w = levels[first, 1]
+    h = levels[first, 2]
+    a = (dudx * w) ** 2 + (dvdx * h) ** 2
+    b = (dudy * w) ** 2 + (dvdy * h) ** 2
+    rho2 = max(a, b)
+    if not rho2 > 1.0:                  # magnified (or NaN): the finest level
+        return 0.0
+    lod = 0.5 * math.log2(rho2)
+    return min(lod, count - 1.0)
+
+
+@helper
+def sample(texels, levels, first, count, filter, wrap, u, v, dudx, dvdx, dudy, dvdy):
+    """The filtered color (r, g, b) of the texture whose levels are ``first`` ..
+    ``first + count - 1`` of ``levels`` at (u, v), the screen derivatives choosing the
+    mipmap levels of ``TRILINEAR`` (linear between the two nearest levels)."""
+    if filter == NEAREST:
+        return nearest(texels, levels, first, u, v, wrap)
+    if filter == BILINEAR or count <= 1:
+        return bilinear(texels, levels, first, u, v, wrap)
+    lod = level_of_detail(levels, first, count, dudx, dvdx, dudy, dvdy)
+    l0 = min(int(lod), count - 1)
+    t = lod - l0
+    r0, g0, b0 = bilinear(texels, levels, first + l0, u, v, wrap)
+    if t <= 0.0 or l0 + 1 >= count:
+        return r0, g0, b0
+    r1, g1, b1 = bilinear(texels, levels, first + l0 + 1, u, v, wrap)
+    return r0 + t * (r1 - r0), g0 + t * (g1 - g0), b0 + t * (b1 - b0)
+
+
+@kernel
+def sample_points(texels, levels, first, count, filter, wrap, uv, derivatives, out):
+    """``out[m]`` = the texture's color at ``uv[m]`` (M, 2) with screen derivatives
+    ``derivatives[m]`` = du/dx, dv/dx, du/dy, dv/dy (M, 4; read by ``TRILINEAR``
+    only)."""
+    for m in range(uv.shape[0]):
+        r, g, b = sample(texels, levels, first, count, filter, wrap, uv[m, 0], uv[m, 1],
+                         derivatives[m, 0], derivatives[m, 1], derivatives[m, 2],
+                         derivatives[m, 3])
+        out[m, 0] = r
+        out[m, 1] = g
+        out[m, 2] = b

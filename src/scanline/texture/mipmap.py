@@ -1,0 +1,49 @@
+"""Mipmaps (Williams 1983, "Pyramidal parametrics"; Hearn & Baker 14-9 on filtering
+texture patterns): the texture and its copies each half the size of the one before,
+down to one texel, every texel of a level the mean of the 2 x 2 texels below it (a
+box filter).  A level of odd width or height is rounded up, its last column or row
+the mean of the texels there are (as Pillow's ``Image.reduce(2)`` does).
+"""
+
+import numpy as np
+
+
+def halved(level):
+    """The next level of ``level`` (H, W, C): (ceil(H/2), ceil(W/2), C), each texel the
+    mean of the (up to) 2 x 2 texels of its box, boxes counted from the top-left
+    corner (image order)."""
+    h, w = level.shape[:2]
+    ph, pw = h + h % 2, w + w % 2
+    total = np.zeros((ph, pw) + level.shape[2:])
+    weight = np.zeros((ph, pw))
+    total[:h, :w] = level
+    weight[:h, :w] = 1.0
+    sums = total.reshape(ph // 2, 2, pw // 2, 2, -1).sum(axis=(1, 3))
+    counts = weight.reshape(ph // 2, 2, pw // 2, 2).sum(axis=(1, 3))
+    return sums / counts[..., None]
+
+
+def pyramid(image):
+    """The mipmap levels of ``image`` (H, W, C) in image order (top row first): the
+    image itself, then :func:`halved` ones down to 1 x 1."""
+    levels = [np.asarray(image, np.float64)]
+    while levels[-1].shape[0] > 1 or levels[-1].shape[1] > 1:
+        levels.append(halved(levels[-1]))
+    return levels
+
+
+def packed(levels):
+    """The levels as the sampling kernels take them
+    (:mod:`scanline._kernels.texture`): one (N, 3) float32 array, level after level
+    and each level's rows bottom first, and the table (L, 3) int64 of each level's
+    first texel, width and height."""
+    table = np.zeros((len(levels), 3), np.int64)
+    at = 0
+    for i, lv in enumerate(levels):
+        h, w = lv.shape[:2]
+        table[i] = at, w, h
+        at += w * h
+    texels = np.empty((at, 3), np.float32)
+    for (first, w, h), lv in zip(table, levels):
+        texels[first:first + w * h] = lv[::-1].reshape(-1, 3)
+    return texels, table

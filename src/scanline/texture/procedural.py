@@ -1,0 +1,84 @@
+"""Procedural textures (Hearn & Baker 14-9, "Procedural texturing methods"): images
+computed from a function of texture space rather than read, as
+:class:`~scanline.texture.Texture` sources -- a checkerboard, and marble and wood
+from Perlin's noise and turbulence (Perlin 1985, "An image synthesizer": marble is
+sin(x + turbulence) mapped through a color ramp; wood is rings around an axis
+perturbed by noise).  Each is deterministic for a given ``seed``.
+"""
+
+import numpy as np
+
+from .. import _validate as v
+from ..errors import ArgumentValueError
+from .noise import noise, turbulence
+from .texture import Texture
+
+
+def _size(size):
+    n = v.positive_int("size", size)
+    if n > 8192:
+        raise ArgumentValueError(f"size must be 1..8192 texels, got {n}")
+    return n
+
+
+def _rgb(name, color):
+    from ..lighting.material import linear_color
+
+    return linear_color(name, color)
+
+
+def _grid(n, scale):
+    """Texel centers of an n x n texture in image order, times ``scale``: (n, n, 3)
+    points with z = 0.5 (off the lattice)."""
+    t = (np.arange(n) + 0.5) / n * scale
+    x, y = np.meshgrid(t, t[::-1])
+    return np.stack([x, y, np.full_like(x, 0.5)], axis=-1)
+
+
+def _ramp(t, a, b):
+    """Colors from ``a`` (t = 0) to ``b`` (t = 1), (..., 3)."""
+    t = np.clip(t, 0.0, 1.0)[..., None]
+    return (1 - t) * a + t * b
+
+
+def checker(size=256, squares=8, colors=("white", "black"), **texture):
+    """A ``size`` x ``size`` checkerboard of ``squares`` x ``squares`` squares of the
+    two ``colors`` (the bottom-left square the first), as a :class:`Texture`
+    (``texture``: its ``filter`` and ``wrap``)."""
+    n = _size(size)
+    k = v.positive_int("squares", squares)
+    if k > n:
+        raise ArgumentValueError(f"squares must be at most size ({n}), got {k}")
+    a, b = (_rgb(f"colors[{i}]", c) for i, c in enumerate(colors))
+    i = (np.arange(n) * k) // n
+    odd = (i[None, :] + i[::-1, None]) % 2 == 1
+    return Texture(np.where(odd[..., None], b, a), **texture)
+
+
+def marble(size=256, veins=4.0, turbulence_power=5.0, octaves=5, seed=0,
+           colors=((235, 232, 225), (70, 70, 90)), **texture):
+    """Perlin's marble (1985): the stripes of sin(2 pi (veins x + turbulence_power
+    turbulence(4 p))) through a ramp from the first of ``colors`` (1) to the second
+    (-1), a ``size`` x ``size`` :class:`Texture`."""
+    n = _size(size)
+    p = _grid(n, 1.0)
+    t = turbulence(4.0 * p, octaves, seed)
+    s = np.sin(2 * np.pi * (v.number("veins", veins) * p[..., 0]
+                            + v.number("turbulence_power", turbulence_power) * t / 4))
+    light, dark = (_rgb(f"colors[{i}]", c) for i, c in enumerate(colors))
+    return Texture(_ramp((1 - s) / 2, light, dark), **texture)
+
+
+def wood(size=256, rings=12.0, grain=0.08, seed=0, colors=((200, 150, 90), (120, 75, 35)),
+         **texture):
+    """Wood: rings around an axis at the texture's left edge, the distance to the axis
+    times ``rings`` perturbed by ``grain`` times noise, its fraction through a ramp
+    from the first of ``colors`` to the second; a ``size`` x ``size``
+    :class:`Texture`."""
+    n = _size(size)
+    p = _grid(n, 1.0)
+    r = np.hypot(p[..., 0], p[..., 1] - 0.5)
+    g = r * v.number("rings", rings) + v.number("grain", grain) * rings * noise(p * 8.0, seed)
+    f = g - np.floor(g)
+    light, dark = (_rgb(f"colors[{i}]", c) for i, c in enumerate(colors))
+    return Texture(_ramp(f ** 3, light, dark), **texture)

@@ -103,7 +103,8 @@ class MeshArrays:
     vertices' for a mesh colored by vertex; F, 3; None: the material's), and whether
     the face is planar (its vertices within 1e-9 of its size of its Newell plane) and
     convex (F,): a polygon method may then take it whole, since a planar convex
-    polygon in front of the eye projects to a convex polygon."""
+    polygon in front of the eye projects to a convex polygon.  The texture
+    coordinates at each facet's vertices (G, 3, 2; None: the mesh has none)."""
     world: np.ndarray
     vertex_normals: np.ndarray
     normals: np.ndarray
@@ -114,6 +115,7 @@ class MeshArrays:
     face_centroids: np.ndarray
     face_colors: object
     face_planar: np.ndarray
+    uv: object = None
 
 
 #: mesh -> (copies of the arrays it was made from, MeshArrays)
@@ -122,7 +124,7 @@ _KEPT = weakref.WeakKeyDictionary()
 
 def _key(mesh):
     return (mesh.vertices, mesh.face_indices, mesh.face_offsets, mesh.normals, mesh.colors,
-            mesh.color_on)
+            mesh.color_on, mesh.uv)
 
 
 def _same(a, b):
@@ -182,6 +184,7 @@ def mesh_arrays(mesh, crease_angle=CREASE_ANGLE):
         colors = np.repeat(face_colors[facet_face][:, None], 3, axis=1)
     arrays = MeshArrays(world, corner_normals(mesh, crease_angle)[corners], normals, colors,
                         ~(np.abs(normals).sum(axis=1) > 0), facet_face,
-                        unit_rows(plane[:, :3]), centroids, face_colors, planar)
+                        unit_rows(plane[:, :3]), centroids, face_colors, planar,
+                        None if mesh.uv is None else mesh.uv[f])
     _KEPT[mesh] = (tuple(a.copy() if isinstance(a, np.ndarray) else a for a in key), arrays)
     return arrays

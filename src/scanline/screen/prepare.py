@@ -317,7 +317,9 @@ def prepare(meshes, camera, width, height, materials=None, colors=None, cull_bac
         bary=np.ascontiguousarray(_joined(bary, (0, 3, 2))),
         facet=np.ascontiguousarray(_joined(tfacet, (0,)), np.int64),
         polygons=DevicePolygons(dev[whole_facets] if len(whole_facets) < nf else dev, polygons),
-        polygon_facet=np.concatenate([whole_facets, np.array(polygon_facet, np.int64)]))
+        polygon_facet=np.concatenate([whole_facets, np.array(polygon_facet, np.int64)]),
+        uv=None if all(p.uv is None for p in parts) else _joined(
+            [np.zeros((len(p.world), 3, 2)) if p.uv is None else p.uv for p in parts], (0, 3, 2)))
 
 
 def screen_polygons(meshes, camera, width, height, cull_back_faces=False):

@@ -116,6 +116,9 @@ class ScreenScene:
         The clipped device polygon (x, y, depth) of each facet left, one per entry of
         ``polygon_facet`` (convex).
     polygon_facet : ndarray of int64 (P,)
+    uv : ndarray (G, 3, 2) or None
+        The texture coordinates (u, v) at each facet's vertices (Hearn & Baker 14-9;
+        0 for the facets of a mesh without them); None when no mesh has them.
 
     The per-mesh arrays (``world``, ``normals``, ``vertex_normals`` ...) may be
     shared with the meshes' kept arrays and with other scenes: read them, do not
@@ -147,6 +150,7 @@ class ScreenScene:
     facet: np.ndarray
     polygons: DevicePolygons
     polygon_facet: np.ndarray
+    uv: object = None
 
     @property
     def face_count(self):

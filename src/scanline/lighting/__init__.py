@@ -8,10 +8,10 @@ properties and the intensity at a point.
 [0.8, 0.8, 0.8]
 """
 
-from .lights import AmbientLight, DirectionalLight, PointLight, SpotLight
+from .lights import AmbientLight, AreaLight, DirectionalLight, PointLight, SpotLight
 from .material import Material
 from .model import ViewerAtInfinity, at_infinity, attenuation, depth_cue, intensity, transparency
 
-__all__ = ["AmbientLight", "DirectionalLight", "PointLight", "SpotLight", "Material",
-           "intensity", "attenuation", "depth_cue", "transparency", "at_infinity",
+__all__ = ["AmbientLight", "AreaLight", "DirectionalLight", "PointLight", "SpotLight",
+           "Material", "intensity", "attenuation", "depth_cue", "transparency", "at_infinity",
            "ViewerAtInfinity"]

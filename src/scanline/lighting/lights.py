@@ -127,6 +127,42 @@ class SpotLight:
         object.__setattr__(self, "shadows", bool(shadows))
 
 
+@dataclass(frozen=True, init=False)
+class AreaLight(PointLight):
+    """A light-emitting parallelogram: the corner ``corner`` and the edges ``edge_u``
+    and ``edge_v`` (world vectors), its ``intensity`` shared by its area.
+
+    The ray tracer samples it for soft shadows, distributed ray tracing (Cook, Porter
+    and Carpenter 1984; Hearn & Baker 14-6, "distributed ray tracing"): from each
+    point it shades, ``samples`` x ``samples`` shadow rays go to jittered points of as
+    many equal cells of the parallelogram, each carrying ``intensity / samples**2``;
+    the fraction that reach it is the penumbra.  The other methods see it as a
+    :class:`PointLight` at its center (its ``position``), without attenuation.
+    """
+    corner: np.ndarray
+    edge_u: np.ndarray
+    edge_v: np.ndarray
+    samples: int
+
+    def __init__(self, corner, edge_u, edge_v, intensity=1.0, samples=4, shadows=False):
+        c = np.array(vector("corner", corner))
+        u = np.array(vector("edge_u", edge_u))
+        w = np.array(vector("edge_v", edge_v))
+        if not np.linalg.norm(np.cross(u, w)) > 0:
+            raise ArgumentValueError(f"edge_u and edge_v must span a parallelogram (not "
+                                     f"parallel, not zero), got {v._show(edge_u)} and "
+                                     f"{v._show(edge_v)}")
+        if (not isinstance(samples, (int, np.integer)) or isinstance(samples, bool)
+                or not 1 <= samples <= 32):
+            raise ArgumentValueError(f"samples must be an integer in 1..32 (shadow rays per "
+                                     f"side of the light's grid), got {v._show(samples)}")
+        super().__init__(c + (u + w) / 2, intensity=intensity, shadows=shadows)
+        object.__setattr__(self, "corner", c)
+        object.__setattr__(self, "edge_u", u)
+        object.__setattr__(self, "edge_v", w)
+        object.__setattr__(self, "samples", int(samples))
+
+
 LIGHTS = (AmbientLight, DirectionalLight, PointLight, SpotLight)
 
 
@@ -135,5 +171,5 @@ def light_list(lights):
     if lights is None:
         return ()
     return v.one_or_many("lights", lights, LIGHTS,
-                         "an AmbientLight, DirectionalLight, PointLight or SpotLight from "
+                         "an AmbientLight, DirectionalLight, PointLight, SpotLight or AreaLight from "
                          "sl.lighting")

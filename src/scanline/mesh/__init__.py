@@ -1,7 +1,7 @@
 """Three-dimensional object representations (Hearn & Baker, chapter 10): polygon
 meshes with their polygon tables and plane equations, quadric surfaces and
 superquadrics, sweep representations, tensor-product surfaces and the Utah teapot,
-and mesh files (OBJ, PLY, STL).
+and mesh files (OBJ, PLY, STL, glTF).
 
 >>> import scanline as sl
 >>> cube = sl.mesh.cube()
@@ -11,14 +11,16 @@ and mesh files (OBJ, PLY, STL).
 (True, False)
 """
 
-from .files import FORMATS, MeshFileError, load, save
+from .files import FORMATS, MeshFileError, MeshFileWarning, load, load_all, save
+from .materials import MaterialRecord
 from .mesh import Mesh, merge
 from .shapes import (box, cube, ellipsoid, sphere, superellipsoid, superquadric, supertoroid,
                      torus)
 from .sweeps import from_surface, rotational_sweep, sweep, teapot, translational_sweep
 from .tables import PolygonTables
 
-__all__ = ["FORMATS", "Mesh", "MeshFileError", "PolygonTables", "box", "cube", "ellipsoid",
-           "from_surface", "load", "merge", "rotational_sweep", "save", "sphere",
+__all__ = ["FORMATS", "MaterialRecord", "Mesh", "MeshFileError", "MeshFileWarning",
+           "PolygonTables", "box", "cube", "ellipsoid",
+           "from_surface", "load", "load_all", "merge", "rotational_sweep", "save", "sphere",
            "superellipsoid", "superquadric", "supertoroid", "sweep", "teapot", "torus",
            "translational_sweep"]

@@ -1,48 +1,66 @@
-"""Reading and writing meshes: Wavefront OBJ, PLY (ASCII and binary) and STL.
+"""Reading and writing meshes: Wavefront OBJ (with its ``.mtl`` materials), PLY (ASCII
+and binary), STL and glTF 2.0 (``.gltf``, ``.glb``).
 
-meshio writes all three and reads PLY and STL; OBJ is read here (a small reader that
-names the line of every error, and takes OBJ's relative (negative) indices).  Faces
-keep their polygons (a cube's quadrilaterals stay quadrilaterals in OBJ and PLY;
-trimesh would triangulate them); STL holds only triangles, so faces are split into
-triangle fans when writing it.
+=========  ==========================================  ====================================
+format     read                                        written by :func:`save`
+=========  ==========================================  ====================================
+``.obj``   ``v vt vn``, faces ``v``, ``v/vt``,          positions, uv, normals, polygons
+           ``v//vn``, ``v/vt/vn`` (negative: relative),
+           ``mtllib``/``usemtl`` (:mod:`.obj`)
+``.ply``   positions, faces, vertex normals (``nx``),  positions, polygons, normals, uv,
+           colors (``red``...), uv (``s t``/``u v``)   vertex colors (binary)
+``.stl``   triangles                                   triangles (binary)
+``.gltf``  the default scene's triangle primitives     one mesh, triangles, normals, uv,
+``.glb``   with node transforms and materials          vertex colors, its material
+           (:mod:`.gltf`)
+=========  ==========================================  ====================================
+
+:func:`load` gives one :class:`Mesh`; :func:`load_all` gives the file's parts: one mesh
+per material of an OBJ file, one per triangle primitive of a glTF file (each with its
+``material``).  meshio reads PLY and STL; OBJ is tokenized by compiled kernels
+(:mod:`scanline._kernels.objtext`), glTF parsed by pygltflib and its accessors read
+with numpy.  Faces keep their polygons (a cube's quadrilaterals stay quadrilaterals in
+OBJ and PLY; trimesh would triangulate them); STL and glTF hold only triangles, so
+faces are split into triangle fans when writing them.
 
 Reading is guarded against hostile files (docs/three-d.md, "Mesh files"):
 
 - only a regular file is read: the file is opened without blocking (``O_NONBLOCK``,
   so a FIFO cannot hang the call) and checked with ``fstat`` after opening; a FIFO, a
   device (``/dev/zero``), a socket or a folder is refused, and a symbolic link is
-  followed only to a regular file;
+  followed only to a regular file (the same for ``.mtl`` files and glTF buffers);
 - its size is checked after opening, against ``max_bytes`` (default
   :data:`MAX_FILE_BYTES`) and against the memory budget (:mod:`scanline.budget`: the
   reading takes about :data:`READ_BYTES_PER_BYTE` bytes of memory per byte of file),
   and at most its size and one byte are read, so a file that grows meanwhile is
   refused too;
 - a PLY header must end (``end_header``) within :data:`MAX_PLY_HEADER` bytes, name
-  known property types, and announce element counts that the bytes after it can hold.
+  known property types, and announce element counts that the bytes after it can hold;
+- a glTF accessor's offset, stride and count must fit its buffer view, and the view
+  its buffer.
 
 Every failure is a :class:`MeshFileError` naming the file (and, in an OBJ file, the
-line): unreadable, truncated or garbage files, counts that do not fit the file,
-faces that refer to missing vertices, NaN coordinates.  Writing is atomic: a failure
-leaves no partial file.
+line; in a glTF file, the accessor): unreadable, truncated or garbage files, counts
+that do not fit the file, faces that refer to missing vertices, NaN coordinates.
+What is skipped (OBJ ``l`` lines, a missing ``.mtl`` file, glTF points and lines) is
+one :class:`MeshFileWarning`.  Writing is atomic: a failure leaves no partial file.
 """
 
 import io
-import math
 import os
 import re
 import stat
 import tempfile
 import warnings
-from array import array
 
 import numpy as np
 
 from .. import _validate as v
-from ..errors import ArgumentTypeError, ArgumentValueError
-from .mesh import Flat, Mesh
+from ..errors import ArgumentTypeError, ArgumentValueError, ScanlineWarning
+from .mesh import Flat, Mesh, merge
 
 #: File types by extension.
-FORMATS = {".obj": "obj", ".ply": "ply", ".stl": "stl"}
+FORMATS = {".obj": "obj", ".ply": "ply", ".stl": "stl", ".gltf": "gltf", ".glb": "glb"}
 
 #: The largest mesh file read by default (bytes); ``load(..., max_bytes=...)`` reads
 #: larger ones.  The memory budget applies as well.
@@ -65,6 +83,11 @@ class MeshFileError(ArgumentValueError):
         self.file = file
         self.message = message
         super().__init__(f"{file}: {message}" if file else message)
+
+
+class MeshFileWarning(ScanlineWarning):
+    """Something in a mesh file was skipped (OBJ lines, a missing material file,
+    glTF primitives that are not triangles)."""
 
 
 def _format(name, path, what):
@@ -157,79 +180,6 @@ def read_regular_file(filename, limit, limit_name="max_bytes", budget_name="path
         raise MeshFileError(f"the file changed while it was read (it has more than the "
                             f"{size:,} bytes it had when opened)", file=filename)
     return data
-
-
-# -- OBJ ---------------------------------------------------------------------------------
-def _read_obj(data, filename):
-    """(vertices (V, 3), Flat faces, the line of each face) of Wavefront OBJ text:
-    ``v x y z [w]`` vertices (extra values, a w or a color, are ignored) and
-    ``f i j k ...`` faces of 1-based vertex indices (``i/t/n`` forms take i; a
-    negative index counts back from the last vertex read); other statements
-    (texture coordinates, normals, groups, materials, lines) are ignored."""
-    def fail(number, message):
-        raise MeshFileError(f"line {number}: {message}", file=filename)
-
-    coords = array("d")
-    indices = array("q")
-    sizes = array("q")
-    lines = array("q")
-    # no file can hold more vertices than it has bytes: an index beyond that is
-    # refused on its line, before it is stored
-    most = max(len(data), 1)
-    for number, raw in enumerate(io.BytesIO(data), 1):
-        words = raw.split(b"#", 1)[0].split()
-        if not words:
-            continue
-        key = words[0]
-        if key == b"v":
-            if len(words) < 4:
-                fail(number, f"a vertex needs three coordinates (v x y z), got "
-                     f"{b' '.join(words).decode(errors='replace')!r}")
-            try:
-                xyz = [float(w) for w in words[1:4]]
-            except ValueError:
-                fail(number, "the vertex coordinates "
-                     f"{b' '.join(words[1:4]).decode(errors='replace')!r} are not numbers")
-            if not all(math.isfinite(c) for c in xyz):
-                fail(number, f"the vertex coordinates {xyz} are not all finite numbers")
-            coords.extend(xyz)
-        elif key == b"f":
-            count = len(coords) // 3
-            if len(words) < 4:
-                fail(number, f"a face needs at least three vertices, got {len(words) - 1}")
-            for word in words[1:]:
-                text = word.split(b"/", 1)[0]
-                try:
-                    i = int(text)
-                except ValueError:
-                    fail(number, f"the face's vertex index {word.decode(errors='replace')!r} "
-                         "is not an integer")
-                if i < 0:
-                    i += count            # relative: -1 is the last vertex read so far
-                    if i < 0:
-                        fail(number, f"the relative vertex index {text.decode()} reaches back "
-                             f"before the first vertex ({count} read so far)")
-                elif i == 0:
-                    fail(number, "vertex index 0: OBJ counts vertices from 1")
-                else:
-                    if i > most:
-                        fail(number, f"the face refers to vertex {i}, out of range: the file "
-                             f"cannot hold that many vertices ({len(data):,} bytes)")
-                    i -= 1
-                indices.append(i)
-            sizes.append(len(words) - 1)
-            lines.append(number)
-    vertices = np.frombuffer(coords, np.float64).reshape(-1, 3) if len(coords) \
-        else np.zeros((0, 3))
-    idx = np.frombuffer(indices, np.int64) if len(indices) else np.zeros(0, np.int64)
-    nv = len(vertices)
-    if len(idx) and nv and int(idx.max()) >= nv:
-        k = int(np.argmax(idx >= nv))
-        face = int(np.searchsorted(np.cumsum(np.frombuffer(sizes, np.int64)), k, side="right"))
-        fail(lines[face], f"the face refers to vertex {int(idx[k]) + 1}, out of range: the file "
-             f"has {nv} vertices")
-    return (vertices, Flat(idx, np.frombuffer(sizes, np.int64) if len(sizes)
-                           else np.zeros(0, np.int64)), lines)
 
 
 # -- PLY ---------------------------------------------------------------------------------
@@ -329,16 +279,73 @@ def _read_stl(meshio, data):
     return _stl._read_ascii(f)
 
 
+def _arguments(path, name, max_bytes):
+    filename = _file_name(path)
+    if name is not None and not isinstance(name, str):
+        raise ArgumentTypeError(f"name must be a string or None, got {v._show(name)}")
+    return filename, _max_bytes(max_bytes), _format(filename, path, "read")
+
+
+def load_all(path, name=None, max_bytes=None):
+    """Read the parts of a mesh file: a list of meshes.
+
+    An OBJ file gives one mesh per material (in the order its ``usemtl`` statements
+    first use them; faces before any ``usemtl`` first), each with its ``material``
+    (a :class:`~scanline.mesh.materials.MaterialRecord` from the ``.mtl`` file) and
+    only the vertices its faces use; a glTF file one mesh per triangle primitive of
+    the default scene, moved by its node's transformation, with its material; PLY
+    and STL one mesh.  ``sl.render(fb, sl.mesh.load_all(path), camera)`` draws each
+    part in its material.  Parameters and errors as :func:`load`.
+    """
+    filename, limit, fmt = _arguments(path, name, max_bytes)
+    data = read_regular_file(filename, limit)
+    mesh_name = name or os.path.basename(filename)
+    if fmt == "obj":
+        from .obj import obj_meshes
+
+        return obj_meshes(data, filename, mesh_name)
+    if fmt in ("gltf", "glb"):
+        from .gltf import gltf_meshes
+
+        return gltf_meshes(data, filename, mesh_name, limit)
+    return [_read_meshio(data, fmt, filename, mesh_name)]
+
+
+def joined(parts, name):
+    """One mesh of ``parts`` (:func:`load_all`'s): the parts merged, keeping their
+    material when they share one; parts of different materials get their faces
+    colored by each material's diffuse color (a part without a material: the
+    default gray) so that the merged mesh looks as the parts do."""
+    if len(parts) == 1:
+        parts[0].name = name
+        return parts[0]
+    records = [p.material for p in parts]
+    if len({id(r) for r in records}) > 1 and all(p.colors is None for p in parts) \
+            and all(r is None or hasattr(r, "diffuse_rgb255") for r in records):
+        from .materials import MaterialRecord
+
+        parts = [p.colored([(r or MaterialRecord("")).diffuse_rgb255] * p.face_count,
+                           color_on="face") for p, r in zip(parts, records)]
+    return merge(parts, name=name)
+
+
 def load(path, name=None, max_bytes=None):
-    """Read a mesh from an OBJ, PLY or STL file.
+    """Read a mesh from an OBJ, PLY, STL or glTF (``.gltf``, ``.glb``) file: one mesh.
 
     Faces of every polygon type in the file are kept (triangles, quadrilaterals,
-    polygons); points and lines are ignored.
+    polygons); points and lines are skipped.  Texture coordinates and normals come
+    along (OBJ ``vt``/``vn``, PLY ``s t``/``nx ny nz``, glTF ``TEXCOORD_0``/``NORMAL``),
+    as do vertex colors (PLY, glTF ``COLOR_0``).  A file of several parts
+    (:func:`load_all`: an OBJ file's materials, a glTF file's primitives) gives them
+    merged: with their shared material, or, when they differ, with each part's
+    faces colored by its material's diffuse color; :func:`load_all` keeps the parts
+    and their materials apart.
 
     Parameters
     ----------
     path : str or os.PathLike
-        A regular file (or a symbolic link to one) named ``.obj``, ``.ply`` or ``.stl``.
+        A regular file (or a symbolic link to one) named ``.obj``, ``.ply``, ``.stl``,
+        ``.gltf`` or ``.glb``.
     name : str, optional
         The mesh's name (default: the file's).
     max_bytes : int, optional
@@ -350,9 +357,11 @@ def load(path, name=None, max_bytes=None):
     MeshFileError
         Naming the file, for a missing, unreadable, truncated, oversized or garbage
         file, or one that is not a regular file (a FIFO, a device, a folder), a PLY
-        header without ``end_header`` or with counts the file cannot hold, or a mesh
-        with no faces, faces that refer to missing vertices, or coordinates that are
-        not finite numbers (in an OBJ file the message names the line).
+        header without ``end_header`` or with counts the file cannot hold, a glTF
+        accessor or buffer view reaching past its buffer, or a mesh with no faces,
+        faces that refer to missing vertices, or coordinates that are not finite
+        numbers (in an OBJ file the message names the line, in a glTF file the
+        accessor).
     MemoryBudgetError
         When reading the file would take more memory than the budget allows.
 
@@ -364,29 +373,12 @@ def load(path, name=None, max_bytes=None):
     >>> sl.mesh.load(path)
     <Mesh 'cube.obj': 8 vertices, 6 faces, 12 edges>
     """
-    filename = _file_name(path)
-    if name is not None and not isinstance(name, str):
-        raise ArgumentTypeError(f"name must be a string or None, got {v._show(name)}")
-    limit = _max_bytes(max_bytes)
-    fmt = _format(filename, path, "read")
-    data = read_regular_file(filename, limit)
-    mesh_name = name or os.path.basename(filename)
-    if fmt == "obj":
-        points, faces, lines = _read_obj(data, filename)
-        if len(points) == 0:
-            raise MeshFileError("the file holds no vertices: it is empty, truncated or not "
-                                "OBJ", file=filename)
-        if len(faces.sizes) == 0:
-            raise MeshFileError(f"the file holds no faces ({len(points)} vertices)",
-                                file=filename)
-        try:
-            return Mesh(points, faces, name=mesh_name)
-        except ArgumentValueError as error:
-            text = str(error)
-            which = re.match(r"face (\d+)", text)
-            where = f"line {lines[int(which.group(1))]}: " if which else ""
-            raise MeshFileError(f"{where}the file's mesh is broken: {text}",
-                                file=filename) from None
+    parts = load_all(path, name, max_bytes)
+    return joined(parts, name or os.path.basename(_file_name(path)))
+
+
+def _read_meshio(data, fmt, filename, mesh_name):
+    """A PLY or STL file's mesh, read by meshio."""
     import meshio
     from meshio.ply import _ply
 
@@ -412,13 +404,58 @@ def load(path, name=None, max_bytes=None):
     return _from_meshio(data_mesh, fmt, filename, mesh_name)
 
 
+#: PLY vertex properties carried into the mesh: normals, colors, texture coordinates
+#: (the names exporters use, first match wins).
+PLY_NORMALS = ("nx", "ny", "nz")
+PLY_COLORS = (("red", "green", "blue", "alpha"), ("diffuse_red", "diffuse_green",
+                                                  "diffuse_blue", "diffuse_alpha"),
+              ("r", "g", "b", "a"))
+PLY_UV = (("s", "t"), ("u", "v"), ("texture_u", "texture_v"), ("texture_s", "texture_t"))
+
+
+def _ply_attributes(data, count, face_data, face_count):
+    """The mesh keywords (normals, colors, color_on, uv) of meshio's PLY point data
+    (and cell data: face colors)."""
+    out = {}
+
+    def columns(table, names, n):
+        if not all(k in table for k in names[:3 if len(names) > 2 else 2]):
+            return None
+        cols = [np.asarray(table[k]).reshape(-1) for k in names if k in table]
+        return np.stack(cols, axis=1) if all(len(c) == n for c in cols) else None
+
+    normals = columns(data, PLY_NORMALS, count)
+    if normals is not None and np.isfinite(normals).all():
+        out["normals"] = normals.astype(np.float64)
+    for table, n, on in ((data, count, "vertex"), (face_data, face_count, "face")):
+        for names in PLY_COLORS:
+            c = columns(table, names, n)
+            if c is not None:
+                c = c.astype(np.float64)
+                if np.asarray(table[names[0]]).dtype.kind == "f" and c.max(initial=0) <= 1:
+                    c = c * 255
+                out["colors"] = np.clip(np.round(np.nan_to_num(c)), 0, 255).astype(np.uint8)
+                out["color_on"] = on
+                break
+        if "colors" in out:
+            break
+    for names in PLY_UV:
+        uv = columns(data, names, count)
+        if uv is not None and np.isfinite(uv).all():
+            out["uv"] = uv.astype(np.float64)
+            break
+    return out
+
+
 def _from_meshio(data, fmt, filename, mesh_name):
     """A Mesh from what meshio read."""
     indices, sizes = [], []
     try:
         with np.errstate(all="ignore"):
+            kept_all = True
             for block in data.cells:
                 if not (block.dim == 2 or block.type in ("triangle", "quad", "polygon")):
+                    kept_all = False
                     continue
                 cells = block.data
                 if isinstance(cells, list):       # polygons of several sizes
@@ -446,10 +483,17 @@ def _from_meshio(data, fmt, filename, mesh_name):
     if not indices or not sum(len(s) for s in sizes):
         raise MeshFileError(f"the file holds no faces ({len(points)} vertices)", file=filename)
     try:
+        face_data = {k: np.concatenate([np.asarray(c).reshape(-1) for c in blocks])
+                     for k, blocks in data.cell_data.items()} if kept_all else {}
+        extra = _ply_attributes(data.point_data, len(points), face_data,
+                                int(sum(len(s) for s in sizes)))
+    except (TypeError, ValueError):       # attributes meshio read oddly: the geometry only
+        extra = {}
+    try:
         idx = v.index_array("faces", np.concatenate(indices), what="vertex indices",
                             high=len(points) - 1,
                             bound_text=f" (the file has {len(points)} vertices)")
-        return Mesh(points, Flat(idx, np.concatenate(sizes)), name=mesh_name)
+        return Mesh(points, Flat(idx, np.concatenate(sizes)), name=mesh_name, **extra)
     except ArgumentValueError as error:
         raise MeshFileError(f"the file's mesh is broken: {error}", file=filename) from None
     except ArgumentTypeError as error:
@@ -474,11 +518,49 @@ def _cells(mesh, fmt):
     return blocks
 
 
-def save(mesh, path):
-    """Write ``mesh`` to an OBJ, PLY or STL file (by extension), atomically.
+def _obj_text(mesh):
+    """Wavefront OBJ text of ``mesh``: ``v``, ``vt`` and ``vn`` lines (17 significant
+    digits: the floats exactly) and faces ``f v/vt/vn`` (one index for all three, as
+    the uv and normals are per vertex)."""
+    out = io.StringIO()
+    out.write(f"# written by scanline{': ' + mesh.name if mesh.name else ''}\n")
+    np.savetxt(out, mesh.vertices, fmt="v %.17g %.17g %.17g")
+    if mesh.uv is not None:
+        np.savetxt(out, mesh.uv, fmt="vt %.17g %.17g")
+    if mesh.normals is not None:
+        np.savetxt(out, mesh.normals, fmt="vn %.17g %.17g %.17g")
+    corner = "%d" + ("/%d" if mesh.uv is not None else "/" if mesh.normals is not None
+                     else "") + ("/%d" if mesh.normals is not None else "")
+    repeat = corner.count("%d")
+    sizes = mesh.face_sizes
+    cuts = np.concatenate([[0], np.flatnonzero(np.diff(sizes)) + 1, [len(sizes)]])
+    for a, b in zip(cuts[:-1], cuts[1:]):
+        n = int(sizes[a])
+        block = mesh.face_indices[mesh.face_offsets[a]:mesh.face_offsets[b]].reshape(-1, n) + 1
+        np.savetxt(out, np.repeat(block, repeat, axis=1), fmt="f " + " ".join([corner] * n))
+    return out.getvalue().encode("utf-8")
 
-    OBJ and PLY keep every face as it is; STL gets the faces split into triangle
-    fans.  Colors and normals are not written."""
+
+def _ply_point_data(mesh):
+    """meshio point data of the mesh's normals, uv and vertex colors (PLY properties
+    nx ny nz, s t, red green blue alpha)."""
+    data = {}
+    if mesh.normals is not None:
+        data.update(zip(PLY_NORMALS, mesh.normals.astype(np.float32).T))
+    if mesh.uv is not None:
+        data.update(zip(PLY_UV[0], mesh.uv.astype(np.float32).T))
+    if mesh.colors is not None and mesh.color_on == "vertex":
+        data.update(zip(PLY_COLORS[0], np.ascontiguousarray(mesh.colors.T)))
+    return data
+
+
+def save(mesh, path):
+    """Write ``mesh`` to an OBJ, PLY, STL, glTF or GLB file (by extension), atomically.
+
+    OBJ and PLY keep every face as it is, with the uv and normals (and in PLY the
+    vertex colors); STL (triangles only) and glTF (triangles, with normals, uv,
+    vertex colors and the material's diffuse color) get the faces split into
+    triangle fans.  A ``.gltf`` file holds its buffer as a data URI (one file)."""
     import meshio
 
     from ..framebuffer import write_atomically
@@ -489,17 +571,25 @@ def save(mesh, path):
     if os.path.isdir(filename):
         raise MeshFileError("it is a folder; give a file name", file=filename)
     fmt = _format(filename, path, "write")
-    out = meshio.Mesh(mesh.vertices, _cells(mesh, fmt))
 
     def write(f):
+        if fmt == "obj":
+            f.write(_obj_text(mesh))
+            return
+        if fmt in ("gltf", "glb"):
+            from .gltf import gltf_bytes
+
+            f.write(gltf_bytes(mesh, fmt == "glb"))
+            return
+        out = meshio.Mesh(mesh.vertices, _cells(mesh, fmt),
+                          point_data=_ply_point_data(mesh) if fmt == "ply" else None)
         # meshio writes to a path: a private scratch folder, then the bytes into the
         # atomic writer's file
         with tempfile.TemporaryDirectory(prefix="scanline-mesh-") as folder:
             tmp = os.path.join(folder, "mesh." + fmt)
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")
-                getattr(meshio, fmt).write(tmp, out, **({"binary": True} if fmt in ("stl", "ply")
-                                                         else {}))
+                getattr(meshio, fmt).write(tmp, out, binary=True)
             with open(tmp, "rb") as src:
                 f.write(src.read())
     try:

@@ -106,18 +106,40 @@ def _flat_faces(faces, n_vertices):
         raise ArgumentValueError(
             f"face {face} refers to vertex {int(indices[bad[0]])}, out of range: the mesh "
             f"has {n_vertices} vertices (indices 0 to {n_vertices - 1})")
+    face = _repeated_vertex(indices, sizes, offsets, n_vertices)
+    if face >= 0:
+        raise ArgumentValueError(
+            f"face {face} repeats a vertex ({indices[offsets[face]:offsets[face + 1]].tolist()}): "
+            "a polygon face visits each vertex once")
+    return np.ascontiguousarray(indices), offsets
+
+
+#: Faces of at most this many vertices are checked for a repeated vertex by comparing
+#: each corner with the next ones (n - 1 array comparisons); larger ones by sorting.
+PAIRWISE_CHECK = 8
+
+
+def _repeated_vertex(indices, sizes, offsets, n_vertices):
+    """The first face that visits a vertex twice, or -1."""
+    most = int(sizes.max())
+    if most <= PAIRWISE_CHECK:
+        # corner q and corner q + d of the same face (d < the face's size - its place)
+        place = np.arange(len(indices), dtype=np.int64) - np.repeat(offsets[:-1], sizes)
+        left = np.repeat(sizes, sizes) - place
+        first = len(sizes)
+        for d in range(1, most):
+            q = np.flatnonzero((left[:-d] > d) & (indices[:-d] == indices[d:])) \
+                if d < len(indices) else np.zeros(0, np.int64)
+            if len(q):
+                first = min(first, int(np.searchsorted(offsets, q[0], side="right") - 1))
+        return first if first < len(sizes) else -1
     owner = np.repeat(np.arange(len(sizes), dtype=np.int64), sizes)
     # one key per (face, vertex) pair: a vertex repeated within a face repeats a key
     # (len(sizes) * n_vertices stays far below 2**63 for any mesh that fits in memory)
     keys = owner * max(n_vertices, 1) + indices
     keys.sort()
     dup = keys[1:] == keys[:-1]
-    if dup.any():
-        face = int(keys[1:][np.argmax(dup)] // max(n_vertices, 1))
-        raise ArgumentValueError(
-            f"face {face} repeats a vertex ({indices[offsets[face]:offsets[face + 1]].tolist()}): "
-            "a polygon face visits each vertex once")
-    return np.ascontiguousarray(indices), offsets
+    return int(keys[1:][np.argmax(dup)] // max(n_vertices, 1)) if dup.any() else -1
 
 
 def _colors(name, colors, count):
@@ -136,13 +158,16 @@ def _colors(name, colors, count):
 
 
 def _material(material):
-    """``material`` checked: None or a :class:`scanline.lighting.Material` (recognized
-    by its coefficients: geometry does not import the lighting, docs/architecture.md)."""
-    if material is None:
-        return None
+    """``material`` checked: None, a :class:`scanline.lighting.Material` (recognized
+    by its coefficients: geometry does not import the lighting, docs/architecture.md)
+    or a mesh file's :class:`~scanline.mesh.materials.MaterialRecord`."""
+    from .materials import MaterialRecord
+
+    if material is None or isinstance(material, MaterialRecord):
+        return material
     if not all(hasattr(material, k) for k in ("ka", "kd", "ks", "shininess", "color")):
-        raise ArgumentTypeError(f"material must be a scanline.lighting.Material or None, got "
-                                f"{v._show(material)}")
+        raise ArgumentTypeError(f"material must be a scanline.lighting.Material, a "
+                                f"scanline.mesh.MaterialRecord or None, got {v._show(material)}")
     return material
 
 
@@ -167,9 +192,10 @@ class Mesh:
     uv : array_like, shape (V, 2), optional
         Texture coordinates (u, v) of each vertex (Hearn & Baker 14-9), as OBJ's ``vt``
         and glTF's ``TEXCOORD_0`` give them; v = 0 is the bottom of the image.
-    material : scanline.lighting.Material, optional
+    material : scanline.lighting.Material or scanline.mesh.MaterialRecord, optional
         The surface's material, used by :func:`scanline.render` when it is given no
-        ``materials`` (a mesh file's ``usemtl`` or glTF material).
+        ``materials`` (a mesh file's ``usemtl`` or glTF material arrives as a
+        :class:`~scanline.mesh.materials.MaterialRecord`, which the render converts).
 
     Examples
     --------

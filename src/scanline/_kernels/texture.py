@@ -17,6 +17,8 @@ large for an integer is never converted).
 
 import math
 
+import numpy as np
+
 from ._jit import helper, kernel
 
 #: Wrap modes (:data:`scanline.texture.WRAPS`).
@@ -35,13 +37,13 @@ def reduced(t, wrap):
     """Texture coordinate ``t`` brought into [0, 1) (repeat), [0, 2) (mirror: the
     period of a mirrored texture) or [-1, 2] (clamp) as a real; NaN and infinities
     give 0."""
-    if not (t - t == 0.0):              # NaN or infinite
+    if not math.isfinite(t):
         return 0.0
     if wrap == REPEAT:
-        r = t - math.floor(t)
+        r = t - np.floor(t)
         return r if r < 1.0 else 0.0
     if wrap == MIRROR:
-        r = t - 2.0 * math.floor(0.5 * t)
+        r = t - 2.0 * np.floor(0.5 * t)
         return r if r < 2.0 else 0.0
     return min(max(t, -1.0), 2.0)
 
@@ -63,8 +65,8 @@ def nearest(texels, levels, level, u, v, wrap):
     base = levels[level, 0]
     w = levels[level, 1]
     h = levels[level, 2]
-    i = wrapped(int(math.floor(reduced(u, wrap) * w)), w, wrap)
-    j = wrapped(int(math.floor(reduced(v, wrap) * h)), h, wrap)
+    i = wrapped(int(np.floor(reduced(u, wrap) * w)), w, wrap)
+    j = wrapped(int(np.floor(reduced(v, wrap) * h)), h, wrap)
     k = base + j * w + i
     return texels[k, 0], texels[k, 1], texels[k, 2]
 
@@ -78,8 +80,8 @@ def bilinear(texels, levels, level, u, v, wrap):
     h = levels[level, 2]
     x = reduced(u, wrap) * w - 0.5
     y = reduced(v, wrap) * h - 0.5
-    fx = math.floor(x)
-    fy = math.floor(y)
+    fx = np.floor(x)
+    fy = np.floor(y)
     ax = x - fx
     ay = y - fy
     i0 = wrapped(int(fx), w, wrap)

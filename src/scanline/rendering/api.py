@@ -51,7 +51,8 @@ def render(fb: FrameBuffer, meshes: Union[Mesh, Iterable[Mesh]], camera: Camera,
            samples: Optional[int] = None, layers: Optional[int] = None,
            key: Optional[str] = None, split_cycles: Optional[bool] = None,
            max_pieces: Optional[int] = None, max_work: Optional[int] = None,
-           fallback: Optional[str] = None, antialias: int = 1) -> Rendering:
+           fallback: Optional[str] = None, antialias: int = 1,
+           texture_mapping: str = "perspective") -> Rendering:
     """Render meshes seen by ``camera`` into ``fb`` by a visible-surface method.
 
     Parameters
@@ -111,6 +112,10 @@ def render(fb: FrameBuffer, meshes: Union[Mesh, Iterable[Mesh]], camera: Camera,
         past ``max_pieces`` or ``max_work``, a BSP tree past ``max_pieces``), e.g.
         "z-buffer"; a :class:`~scanline.errors.ScanlineWarning` says so, and the
         result's ``method`` names the one that drew.  Default: the error is raised.
+    texture_mapping : {"perspective", "affine"}
+        How the materials' texture coordinates are interpolated: perspective-correct
+        (the default), or affine in screen space (to show the error it makes; Hearn
+        & Baker 14-9; see :mod:`scanline.shading.surface`).
 
     Returns
     -------
@@ -156,7 +161,8 @@ def render(fb: FrameBuffer, meshes: Union[Mesh, Iterable[Mesh]], camera: Camera,
         shading=ShadingOptions(model=shading,
                                lights=default_lights(camera) if lights is None else lights,
                                specular=specular, gamma=gamma,
-                               depth_cue=depth_cue_intensities(depth_cue)),
+                               depth_cue=depth_cue_intensities(depth_cue),
+                               texture_mapping=texture_mapping),
         cull_back_faces=cull_back_faces, shadows=shadows, fallback=fallback,
         antialias=antialias)
     if options.shading.model != "none" and fb.mode not in MODES:

@@ -319,7 +319,8 @@ def prepare(meshes, camera, width, height, materials=None, colors=None, cull_bac
         polygons=DevicePolygons(dev[whole_facets] if len(whole_facets) < nf else dev, polygons),
         polygon_facet=np.concatenate([whole_facets, np.array(polygon_facet, np.int64)]),
         uv=None if all(p.uv is None for p in parts) else _joined(
-            [np.zeros((len(p.world), 3, 2)) if p.uv is None else p.uv for p in parts], (0, 3, 2)))
+            [np.full((len(p.world), 3, 2), np.nan) if p.uv is None else p.uv for p in parts],
+            (0, 3, 2)))
 
 
 def screen_polygons(meshes, camera, width, height, cull_back_faces=False):

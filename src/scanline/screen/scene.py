@@ -118,7 +118,7 @@ class ScreenScene:
     polygon_facet : ndarray of int64 (P,)
     uv : ndarray (G, 3, 2) or None
         The texture coordinates (u, v) at each facet's vertices (Hearn & Baker 14-9;
-        0 for the facets of a mesh without them); None when no mesh has them.
+        NaN for the facets of a mesh without them); None when no mesh has them.
 
     The per-mesh arrays (``world``, ``normals``, ``vertex_normals`` ...) may be
     shared with the meshes' kept arrays and with other scenes: read them, do not

@@ -17,15 +17,17 @@ from ..errors import ArgumentValueError
 from ..lighting.model import depth_cue as cue_blend
 from .buffer import drawable, shade_buffer
 from .models import decode, encode, intensities
+from .surface import any_maps, check_maps, texture_coordinates
 
 
-def triangle_functions(scene, triangles):
+def triangle_functions(scene, triangles, perspective=True):
     """Per device triangle of ``triangles`` (U,): the screen-space linear functions
     (value at the origin, d/dx, d/dy) of 1/w, lambda_1/w and lambda_2/w, (U, 3, 3);
-    NaN for a triangle with no area on the screen."""
+    NaN for a triangle with no area on the screen.  ``perspective=False``: of 1,
+    lambda_1 and lambda_2 (affine interpolation in screen space)."""
     tri = scene.triangles[triangles]
     x, y = tri[:, :, 0], tri[:, :, 1]
-    q = scene.inv_w[triangles]
+    q = scene.inv_w[triangles] if perspective else np.ones(x.shape)
     b = scene.bary[triangles]
     vals = np.stack([q, b[:, :, 0] * q, b[:, :, 1] * q], 1)          # (U, fn, vertex)
     m = np.stack([np.ones_like(x), x, y], axis=2)                     # (U, vertex, c a b)
@@ -36,13 +38,28 @@ def triangle_functions(scene, triangles):
     return out
 
 
+def surface_coordinates(scene, triangles, xs, ys, perspective=True):
+    """The barycentric coordinates (lambda_0, lambda_1, lambda_2) (M, 3) in their
+    facets of the device points (``xs``, ``ys``) seen on ``triangles`` (M,), and their
+    screen derivatives (M, 3, 2) (d/dx, d/dy): perspective-correct, lambda = (lambda /
+    w) / (1 / w) with both linear in screen space (d lambda = (d(lambda/w) - lambda
+    d(1/w)) / (1/w)), or with ``perspective=False`` affine in screen space."""
+    u, inverse = np.unique(triangles, return_inverse=True)
+    g = triangle_functions(scene, u, perspective)[inverse.reshape(-1)]
+    vals = g[:, :, 0] + xs[:, None] * g[:, :, 1] + ys[:, None] * g[:, :, 2]
+    lam = np.empty((len(triangles), 3))
+    lam[:, 1:] = vals[:, 1:] / vals[:, :1]
+    lam[:, 0] = 1.0 - lam[:, 1] - lam[:, 2]
+    d = np.empty((len(triangles), 3, 2))
+    d[:, 1:] = (g[:, 1:, 1:] - lam[:, 1:, None] * g[:, :1, 1:]) / vals[:, :1, None]
+    d[:, 0] = -d[:, 1] - d[:, 2]
+    return lam, d
+
+
 def barycentrics(scene, triangles, xs, ys):
     """The perspective-correct barycentric coordinates (lambda_1, lambda_2), (M, 2),
     in their facets of the device points (``xs``, ``ys``) seen on ``triangles`` (M,)."""
-    u, inverse = np.unique(triangles, return_inverse=True)
-    g = triangle_functions(scene, u)[inverse.reshape(-1)]
-    vals = g[:, :, 0] + xs[:, None] * g[:, :, 1] + ys[:, None] * g[:, :, 2]
-    return vals[:, 1:] / vals[:, :1]
+    return surface_coordinates(scene, triangles, xs, ys)[0][:, 1:]
 
 
 def background_linear(fb, gamma):
@@ -77,7 +94,14 @@ def _points(scene, ids, depth, ys, xs, px, py, options, background):
     facets = scene.facet[t]
     bary = barycentrics(scene, t, px, py) if options.model not in ("flat", "none") else \
         np.zeros((len(t), 2))
-    linear = intensities(scene, facets, bary, options)
+    at = None
+    if any_maps(scene):
+        check_maps(scene, options)
+        if scene.uv is not None:
+            lam, dlam = surface_coordinates(scene, t, px, py,
+                                            options.texture_mapping == "perspective")
+            at = texture_coordinates(scene, facets, lam, dlam)
+    linear = intensities(scene, facets, bary, options, at)
     return facets, _cue(scene, linear, depth[ys, xs], options, background)
 
 
@@ -168,7 +192,8 @@ def shade(fb, scene, layer, options):
     others keep their values.  Returns the facet seen at each pixel (H, W; -1 none):
     ``layer.ids`` itself, overwritten, where a compiled path shades."""
     ids = layer.ids
-    if options.model == "none" and options.depth_cue is None:
+    maps = any_maps(scene)
+    if options.model == "none" and options.depth_cue is None and not maps:
         values = face_values(fb, scene)[scene.facet_face[scene.facet]]
         _paint(fb, ids, values, np.ascontiguousarray(scene.facet, np.int64))
         return ids
@@ -176,7 +201,7 @@ def shade(fb, scene, layer, options):
         raise ArgumentValueError(f"shading={options.model!r} draws into modes L, RGB and "
                                  f"RGBA; the frame buffer is mode {fb.mode!r} (use "
                                  f"shading='none' for face colors)")
-    if drawable(fb, options):
+    if drawable(fb, options) and not maps:
         shade_buffer(scene, fb, ids, options)
         return ids
     ys, xs = np.nonzero(ids >= 0)

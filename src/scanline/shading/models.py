@@ -102,11 +102,13 @@ def _lit(scene, meshes, points, normals, colors, options):
     return out
 
 
-def face_intensities(scene, faces, options):
+def face_intensities(scene, faces, options, colors=None):
     """The one intensity (U, 3) of each of ``faces`` (constant shading, Hearn & Baker
     14-5): the model at the face's centroid with its plane normal, turned toward the
-    viewer when the face is seen from behind; "none": the face's color."""
-    colors = decode(scene.face_colors[faces], options.gamma)
+    viewer when the face is seen from behind; "none": the face's color.  ``colors``
+    (U, 3): linear surface colors instead of the faces' own."""
+    if colors is None:
+        colors = decode(scene.face_colors[faces], options.gamma)
     if options.model == "none":
         return colors
     centroid = scene.face_centroids[faces]
@@ -120,11 +122,16 @@ def face_intensities(scene, faces, options):
 
 def _gouraud(scene, u, colors, options):
     """The intensities (U, 3, 3) at the vertices of each facet of ``u``, with the
-    averaged vertex normals."""
+    averaged vertex normals (``colors``: (G, 3, 3) per facet vertex)."""
+    return _gouraud_colored(scene, u, colors[u], options)
+
+
+def _gouraud_colored(scene, u, colors, options):
+    """:func:`_gouraud` with the colors (U, 3, 3) of ``u``'s own vertices."""
     pts = scene.world[u]                                            # (U, 3, 3)
     n = _facing(scene, np.repeat(u, 3), scene.vertex_normals[u].reshape(-1, 3))
     return _lit(scene, np.repeat(scene.facet_mesh[u], 3), pts.reshape(-1, 3), n,
-                colors[u].reshape(-1, 3), options).reshape(-1, 3, 3)
+                colors.reshape(-1, 3), options).reshape(-1, 3, 3)
 
 
 def vertex_intensities(scene, facets, options):
@@ -140,27 +147,53 @@ def vertex_intensities(scene, facets, options):
     return _gouraud(scene, facets, decoded(scene.vertex_colors, options.gamma), options)
 
 
-def intensities(scene, facets, bary, options):
+def _textured(per, colors, texels, fn):
+    """Intensities ``fn(colors)`` (U, ..., 3) with the surface colors scaled by each
+    point's texel: T (fn(colors) - S) + S, S = fn(0) the part S_d does not scale (the
+    specular term; :mod:`scanline.shading.surface`); ``per`` maps points to rows."""
+    full = fn(colors)
+    if texels is None:
+        return full[per]
+    spec = fn(np.zeros_like(colors))
+    return texels[(slice(None),) + (None,) * (full.ndim - 2)] * (full - spec)[per] + spec[per]
+
+
+def intensities(scene, facets, bary, options, texture=None):
     """Linear RGB intensities (M, 3) of M points given by their ``facets`` (M,) and
-    barycentric coordinates ``bary`` (M, 2) = (lambda_1, lambda_2) there."""
+    barycentric coordinates ``bary`` (M, 2) = (lambda_1, lambda_2) there.  ``texture``:
+    the points' texture coordinates and their screen derivatives, ``(uv (M, 2), (M,
+    4))``, for the materials' texture and bump maps (:mod:`scanline.shading.surface`)."""
+    from . import surface
+
     facets = np.asarray(facets, np.int64)
     model = options.model
+    texels = None
+    if texture is not None:
+        texels = surface.texel_factors(scene, facets, texture[0], texture[1], options.gamma)
     if model in ("flat", "none"):
         faces, inverse = np.unique(scene.facet_face[facets], return_inverse=True)
-        return face_intensities(scene, faces, options)[inverse.reshape(-1)]
+        return _textured(inverse.reshape(-1), decode(scene.face_colors[faces], options.gamma),
+                         texels, lambda c: face_intensities(scene, faces, options, c))
     lam = np.empty((len(facets), 3))
     lam[:, 1:] = bary
     lam[:, 0] = 1.0 - bary[:, 0] - bary[:, 1]
     colors = decoded(scene.vertex_colors, options.gamma)                   # (G, 3, 3)
     if model == "gouraud":
         u, inverse = np.unique(facets, return_inverse=True)
-        per = _gouraud(scene, u, colors, options)
-        return np.einsum("mi,mic->mc", lam, per[inverse.reshape(-1)])
+        per = _textured(inverse.reshape(-1), colors[u], texels,
+                        lambda c: _gouraud_colored(scene, u, c, options))
+        return np.einsum("mi,mic->mc", lam, per)
     if model == "phong":
         p = np.einsum("mi,mic->mc", lam, scene.world[facets])
-        n = np.einsum("mi,mic->mc", lam, scene.vertex_normals[facets])
+        n = _facing(scene, facets, np.einsum("mi,mic->mc", lam, scene.vertex_normals[facets]))
         c = np.einsum("mi,mic->mc", lam, colors[facets])
-        return _lit(scene, scene.facet_mesh[facets], p, _facing(scene, facets, n), c, options)
+        if texels is not None:
+            c = c * texels
+            n = surface.bumped(scene, facets, n, texture[0])
+        out = _lit(scene, scene.facet_mesh[facets], p, n, c, options)
+        if any(m.environment is not None for m in scene.materials):
+            out = out + surface.environment_light(scene, facets, p, n, options.gamma)
+        return out
     # fast Phong: six exact samples per facet, quadratic interpolation
     u, inverse = np.unique(facets, return_inverse=True)
     w6 = np.array([[1, 0, 0], [0, 1, 0], [0, 0, 1], [.5, .5, 0], [0, .5, .5], [.5, 0, .5]])
@@ -168,8 +201,9 @@ def intensities(scene, facets, bary, options):
     n = np.einsum("si,uic->usc", w6, scene.vertex_normals[u]).reshape(-1, 3)
     c = np.einsum("si,uic->usc", w6, colors[u]).reshape(-1, 3)
     f6 = np.repeat(u, 6)
-    samples = _lit(scene, scene.facet_mesh[f6], p, _facing(scene, f6, n), c,
-                   options).reshape(-1, 6, 3)[inverse.reshape(-1)]
+    samples = _textured(inverse.reshape(-1), c.reshape(-1, 6, 3), texels, lambda cc: _lit(
+        scene, scene.facet_mesh[f6], p, _facing(scene, f6, n), cc.reshape(-1, 3),
+        options).reshape(-1, 6, 3))
     l0, l1, l2 = lam[:, 0:1], lam[:, 1:2], lam[:, 2:3]
     return (l0 * (2 * l0 - 1) * samples[:, 0] + l1 * (2 * l1 - 1) * samples[:, 1]
             + l2 * (2 * l2 - 1) * samples[:, 2] + 4 * l0 * l1 * samples[:, 3]

@@ -40,6 +40,10 @@ class ShadingOptions:
     shadows : callable or None
         ``shadows(points (M, 3))`` -> per non-ambient light, 1 where the points see
         it and 0 in its shadow (a shadow map's answer).
+    texture_mapping : {"perspective", "affine"}
+        How texture coordinates are interpolated across the screen: perspective-
+        correct (u/w, v/w and 1/w linear, then divided), or affine (u and v linear
+        in screen space: wrong under perspective, shown for comparison).
     """
     model: str = "gouraud"
     lights: tuple = ()
@@ -47,12 +51,14 @@ class ShadingOptions:
     gamma: float = GAMMA
     depth_cue: Optional[tuple] = None
     shadows: Optional[Callable] = None
+    texture_mapping: str = "perspective"
 
     def __post_init__(self):
         from ..lighting.lights import light_list
 
         v.choice("shading", self.model, MODELS)
         v.choice("specular", self.specular, SPECULAR)
+        v.choice("texture_mapping", self.texture_mapping, ("perspective", "affine"))
         object.__setattr__(self, "gamma", gamma_value(self.gamma))
         object.__setattr__(self, "lights", tuple(light_list(self.lights)))
         if self.shadows is not None and not callable(self.shadows):

@@ -22,9 +22,10 @@ def _size(size):
 
 
 def _rgb(name, color):
-    from ..lighting.material import linear_color
+    """A color spec as stored values / 255 (3,)."""
+    from ..color import rgba
 
-    return linear_color(name, color)
+    return np.array(rgba(color, name)[:3], np.float64) / 255.0
 
 
 def _grid(n, scale):

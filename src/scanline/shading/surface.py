@@ -1,0 +1,194 @@
+"""Surface detail in the shading (Hearn & Baker 14-8 and 14-9): the texture, bump and
+environment maps of :class:`~scanline.lighting.Material` applied at the points a
+visible-surface method found.
+
+* **Texture coordinates**, perspective-correct: u/w, v/w and 1/w are linear in
+  screen space (w the homogeneous coordinate, the depth before the divide), so at a
+  pixel u = (u/w) / (1/w) -- the same interpolation as every attribute's
+  (:func:`scanline.shading.barycentrics`: the perspective-correct barycentric
+  coordinates, u = sum lambda_i u_i).  ``texture_mapping="affine"`` interpolates u
+  linearly in screen space instead, the error the perspective-correct form removes
+  (textures swim and bend along the diagonal of a quad seen at an angle).
+* **Texture mapping** (14-9): the surface color is S_d = color x texel, so the
+  ambient and diffuse terms are ka S_d I_a and kd S_d (N . L) I_l; the specular
+  term keeps S_s.  Flat and Gouraud shading compute the intensity at the face or
+  the vertices in two parts, I = S_d-scaled part A + specular part S, and each
+  pixel takes T A + S with its own texel T.
+* **Bump mapping** (Blinn 1978, "Simulation of wrinkled surfaces"; 14-9): the
+  surface P(u, v) displaced along its unit normal by the height B(u, v) has the
+  normal N' = P'_u x P'_v = N + B_u (n x P_v) - B_v (n x P_u) to first order (N = P_u
+  x P_v, n = N / |N|): P_u, P_v are a facet's tangents along u and v (constant on a
+  planar triangle, solved from its vertices and texture coordinates), B_u, B_v the
+  height map's central differences one texel apart.
+* **Environment mapping** (14-8): the view direction V reflected about the normal, R
+  = 2 (N . V) N - V, looks up a latitude-longitude map of the surroundings: u = 1/2
+  + atan2(R_x, -R_z) / (2 pi), v = 1/2 + asin(R_y) / pi (world y up; u = 1/2 looks
+  along -z); the surface adds k_r times its color.
+
+Bump and environment maps need a normal at each pixel: Phong shading.
+"""
+
+import numpy as np
+
+from ..errors import ArgumentValueError
+
+#: How texture coordinates are interpolated across the screen.
+TEXTURE_MAPPINGS = ("perspective", "affine")
+
+
+def any_maps(scene):
+    """True when some material of ``scene`` has a texture, bump or environment map."""
+    return any(m.texture is not None or m.bump is not None or m.environment is not None
+               for m in scene.materials)
+
+
+def check_maps(scene, options):
+    """Refuse maps the shading cannot apply: a textured mesh without texture
+    coordinates, bump or environment maps without per-pixel normals."""
+    for i, m in enumerate(scene.materials):
+        if m.texture is None and m.bump is None and m.environment is None:
+            continue
+        if (m.texture is not None or m.bump is not None) and (
+                scene.uv is None or np.isnan(scene.uv[scene.facet_mesh == i]).any()):
+            raise ArgumentValueError(
+                f"materials[{i}] has a texture or bump map, but meshes[{i}] has no texture "
+                f"coordinates: give the mesh uv= (one (u, v) per vertex)")
+        if (m.bump is not None or m.environment is not None) and options.model != "phong":
+            raise ArgumentValueError(
+                f"materials[{i}] has a bump or environment map, which needs a normal at each "
+                f"pixel: use shading='phong', not {options.model!r}")
+
+
+def _sample(texture, uv, derivatives, gamma):
+    """``texture``'s linear colors at ``uv`` (M, 2) (the kernel: no argument checks)."""
+    from .._kernels import texture as k
+    from .._kernels._jit import call
+    from ..texture.texture import FILTER_CODES, WRAP_CODES
+
+    texels, table = texture.kernel_arrays(gamma)
+    out = np.empty((len(uv), 3))
+    call(k.sample_points, 4 * len(uv), texels, table, 0, len(table),
+         FILTER_CODES[texture.filter], WRAP_CODES[texture.wrap],
+         np.ascontiguousarray(uv, np.float64), np.ascontiguousarray(derivatives, np.float64),
+         out)
+    return out
+
+
+def texture_coordinates(scene, facets, lam, dlam):
+    """(u, v) at points of ``facets`` (M,) with barycentric coordinates ``lam`` (M, 3)
+    and their screen derivatives ``dlam`` (M, 3, 2) (d/dx, d/dy): ``(uv (M, 2),
+    derivatives (M, 4): du/dx, dv/dx, du/dy, dv/dy)``."""
+    t = scene.uv[facets]                                               # (M, 3, 2)
+    uv = np.einsum("mi,mic->mc", lam, t)
+    d = np.einsum("mik,mic->mkc", dlam, t).reshape(-1, 4)
+    return uv, d
+
+
+def texel_factors(scene, facets, uv, derivatives, gamma):
+    """The texel T (M, 3, linear) scaling S_d at each point: its material's texture
+    there, 1 on untextured surfaces."""
+    out = np.ones((len(facets), 3))
+    mesh = scene.facet_mesh[facets]
+    for i, m in enumerate(scene.materials):
+        if m.texture is None:
+            continue
+        sel = np.flatnonzero(mesh == i)
+        if len(sel):
+            out[sel] = _sample(m.texture, uv[sel], derivatives[sel], gamma)
+    return out
+
+
+def facet_tangents(scene, facets):
+    """P_u and P_v (M, 3) each, of ``facets``: the world tangents along u and v, from
+    P_1 - P_0 = P_u du_1 + P_v dv_1 and P_2 - P_0 = P_u du_2 + P_v dv_2 (zero for a
+    facet whose texture coordinates are degenerate)."""
+    p = scene.world[facets]
+    t = scene.uv[facets]
+    e1, e2 = p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]
+    a1, a2 = t[:, 1] - t[:, 0], t[:, 2] - t[:, 0]
+    det = a1[:, 0] * a2[:, 1] - a2[:, 0] * a1[:, 1]
+    ok = np.abs(det) > 1e-300
+    r = np.where(ok, 1.0 / np.where(ok, det, 1.0), 0.0)[:, None]
+    pu = (e1 * a2[:, 1:2] - e2 * a1[:, 1:2]) * r
+    pv = (e2 * a1[:, 0:1] - e1 * a2[:, 0:1]) * r
+    return pu, pv
+
+
+def bumped_normals(normals, pu, pv, bu, bv):
+    """Blinn's perturbed unit normals (M, 3): N' = (N . n) n + B_u (n x P_v) - B_v (n x
+    P_u) with n the unit shading normal and N = P_u x P_v, turned to n's side."""
+    n = normals / np.maximum(np.linalg.norm(normals, axis=1, keepdims=True), 1e-300)
+    big = np.cross(pu, pv)
+    s = (big * n).sum(axis=1, keepdims=True)
+    out = s * n + bu[:, None] * np.cross(n, pv) - bv[:, None] * np.cross(n, pu)
+    out = np.where(s < 0, -out, out)
+    length = np.linalg.norm(out, axis=1, keepdims=True)
+    return np.where(length > 0, out / np.where(length > 0, length, 1.0), n)
+
+
+def height_slopes(bump, uv, scale):
+    """B_u and B_v (M,) of the height map ``bump`` (its first channel, stored values
+    0..1, times ``scale``) at ``uv``: central differences one texel apart."""
+    du, dv = 1.0 / bump.width, 1.0 / bump.height
+    zero = np.zeros((len(uv), 4))
+    shifts = np.array([[du, 0.0], [-du, 0.0], [0.0, dv], [0.0, -dv]])
+    h = _sample(bump, (uv[None] + shifts[:, None]).reshape(-1, 2),
+                np.tile(zero, (4, 1)), 1.0)[:, 0].reshape(4, -1) * scale
+    return (h[0] - h[1]) / (2 * du), (h[2] - h[3]) / (2 * dv)
+
+
+def bumped(scene, facets, normals, uv):
+    """``normals`` (M, 3) of points of ``facets`` at ``uv`` perturbed by their
+    materials' bump maps (:func:`bumped_normals`)."""
+    mesh = scene.facet_mesh[facets]
+    out = normals
+    for i, m in enumerate(scene.materials):
+        if m.bump is None:
+            continue
+        sel = np.flatnonzero(mesh == i)
+        if not len(sel):
+            continue
+        if out is normals:
+            out = normals.copy()
+        pu, pv = facet_tangents(scene, facets[sel])
+        bu, bv = height_slopes(m.bump, uv[sel], m.bump_scale)
+        out[sel] = bumped_normals(normals[sel], pu, pv, bu, bv)
+    return out
+
+
+def latitude_longitude(directions):
+    """The (u, v) (M, 2) of unit ``directions`` (M, 3) in a latitude-longitude map: u =
+    1/2 + atan2(x, -z) / (2 pi), v = 1/2 + asin(y) / pi."""
+    d = directions
+    return np.stack([0.5 + np.arctan2(d[:, 0], -d[:, 2]) / (2 * np.pi),
+                     0.5 + np.arcsin(np.clip(d[:, 1], -1.0, 1.0)) / np.pi], axis=1)
+
+
+def reflected_views(points, normals, eye):
+    """R = 2 (N . V) N - V (M, 3) for unit normals and V the unit direction to the
+    viewer (a point, or a viewer at infinity)."""
+    from ..lighting.model import ViewerAtInfinity
+
+    if isinstance(eye, ViewerAtInfinity):
+        view = np.broadcast_to(np.asarray(eye.toward, np.float64), points.shape)
+    else:
+        view = np.asarray(eye, np.float64) - points
+    view = view / np.maximum(np.linalg.norm(view, axis=1, keepdims=True), 1e-300)
+    n = normals / np.maximum(np.linalg.norm(normals, axis=1, keepdims=True), 1e-300)
+    return 2 * (n * view).sum(axis=1, keepdims=True) * n - view
+
+
+def environment_light(scene, facets, points, normals, gamma):
+    """k_r env(R) (M, 3, linear) at the points: each material's environment map in the
+    reflected view direction, 0 where it has none."""
+    out = np.zeros((len(facets), 3))
+    mesh = scene.facet_mesh[facets]
+    for i, m in enumerate(scene.materials):
+        if m.environment is None or m.reflectivity == 0:
+            continue
+        sel = np.flatnonzero(mesh == i)
+        if len(sel):
+            r = reflected_views(points[sel], normals[sel], scene.eye)
+            out[sel] = m.reflectivity * _sample(m.environment, latitude_longitude(r),
+                                                np.zeros((len(sel), 4)), gamma)
+    return out

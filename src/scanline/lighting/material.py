@@ -67,6 +67,14 @@ class Material:
     reflectivity : float in 0..1
         k_r: the fraction of the environment (or, when ray tracing, of the light
         along the reflected ray) the surface reflects, added to its intensity.
+    refractive_index : float > 0
+        eta, the index of refraction of the material behind the surface (1: no
+        bending; glass about 1.5): the ray tracer bends transmitted rays by Snell's law
+        (Hearn & Baker 14-6).
+    roughness : float in 0..pi/2
+        Half the angle (radians) of the cone the ray tracer spreads reflected rays
+        over: glossy reflection by distributed ray tracing (Cook, Porter and Carpenter
+        1984); 0: a perfect mirror.
     """
     ka: float
     kd: float
@@ -80,10 +88,13 @@ class Material:
     bump_scale: float
     environment: object
     reflectivity: float
+    refractive_index: float
+    roughness: float
 
     def __init__(self, ka=0.2, kd=0.7, ks=0.3, shininess=20.0, color="white",
                  specular_color="white", transparency=0.0, texture=None, bump=None,
-                 bump_scale=1.0, environment=None, reflectivity=0.0):
+                 bump_scale=1.0, environment=None, reflectivity=0.0,
+                 refractive_index=1.0, roughness=0.0):
         for name, value in (("ka", ka), ("kd", kd), ("ks", ks), ("transparency", transparency),
                             ("reflectivity", reflectivity)):
             object.__setattr__(self, name, _coefficient(name, value))
@@ -96,6 +107,16 @@ class Material:
         object.__setattr__(self, "bump", bump)
         object.__setattr__(self, "environment", environment)
         object.__setattr__(self, "bump_scale", v.number("bump_scale", bump_scale))
+        eta = v.number("refractive_index", refractive_index)
+        if not 0 < eta <= 100:
+            raise ArgumentValueError(f"refractive_index must be > 0 and at most 100 (1: air, "
+                                     f"1.5: glass, 2.42: diamond), got {refractive_index!r}")
+        object.__setattr__(self, "refractive_index", eta)
+        rough = v.number("roughness", roughness)
+        if not 0 <= rough <= math.pi / 2:
+            raise ArgumentValueError(f"roughness must be an angle in 0..pi/2 radians (0: a "
+                                     f"mirror), got {roughness!r}")
+        object.__setattr__(self, "roughness", rough)
         n = v.number("shininess", shininess)
         if n < 0:
             raise ArgumentValueError(f"shininess must be >= 0 (the specular exponent n_s), got "

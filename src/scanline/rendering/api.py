@@ -52,7 +52,8 @@ def render(fb: FrameBuffer, meshes: Union[Mesh, Iterable[Mesh]], camera: Camera,
            key: Optional[str] = None, split_cycles: Optional[bool] = None,
            max_pieces: Optional[int] = None, max_work: Optional[int] = None,
            fallback: Optional[str] = None, antialias: int = 1,
-           texture_mapping: str = "perspective") -> Rendering:
+           texture_mapping: str = "perspective", max_depth: Optional[int] = None,
+           seed: Optional[int] = None) -> Rendering:
     """Render meshes seen by ``camera`` into ``fb`` by a visible-surface method.
 
     Parameters
@@ -65,7 +66,9 @@ def render(fb: FrameBuffer, meshes: Union[Mesh, Iterable[Mesh]], camera: Camera,
     method : str
         A name in :data:`scanline.visible.METHODS`: "z-buffer" (Hearn & Baker 13-3),
         "a-buffer" (13-4: fragments per pixel, transparency and antialiased edges),
-        "ray-casting" (13-10: one ray per pixel), "scan-line" (13-5),
+        "ray-casting" (13-10: one ray per pixel), "ray-tracing" (14-6: the ray
+        caster's rays followed by shadow, reflected and refracted rays,
+        :mod:`scanline.raytrace`), "scan-line" (13-5),
         "area-subdivision" (Warnock, 13-8), "depth-sort" (Newell, Newell and Sancha,
         13-6), "bsp" (13-7), "painter" (one depth key per face: the
         counter-example).  ``scanline.visible.PRECISION`` says which decide at image
@@ -112,6 +115,12 @@ def render(fb: FrameBuffer, meshes: Union[Mesh, Iterable[Mesh]], camera: Camera,
         past ``max_pieces`` or ``max_work``, a BSP tree past ``max_pieces``), e.g.
         "z-buffer"; a :class:`~scanline.errors.ScanlineWarning` says so, and the
         result's ``method`` names the one that drew.  Default: the error is raised.
+    max_depth : int, optional
+        Ray tracing: the most levels of the ray tree (1..64, default 5; the primary
+        ray is level 1).
+    seed : int, optional
+        Ray tracing: the seed of the random numbers of area lights' soft shadows and
+        glossy reflection (default 0): the same seed, the same image.
     texture_mapping : {"perspective", "affine"}
         How the materials' texture coordinates are interpolated: perspective-correct
         (the default), or affine in screen space (to show the error it makes; Hearn
@@ -157,7 +166,7 @@ def render(fb: FrameBuffer, meshes: Union[Mesh, Iterable[Mesh]], camera: Camera,
         method=method,
         visible=MethodOptions(samples=samples, layers=layers, key=key,
                               split_cycles=split_cycles, max_pieces=max_pieces,
-                              max_work=max_work),
+                              max_work=max_work, max_depth=max_depth, seed=seed),
         shading=ShadingOptions(model=shading,
                                lights=default_lights(camera) if lights is None else lights,
                                specular=specular, gamma=gamma,
@@ -209,6 +218,11 @@ def run(fb, meshes, camera, options, materials=None, colors=None, crease_angle=m
     pieces = None
     if isinstance(seen, Fragments):
         facets, depth = composite(fb, scene, seen.bands, seen.samples, shading)
+    elif METHODS[name].traced:
+        from ..raytrace.render import shade as trace
+
+        facets = trace(fb, opaque, seen, shading, options.visible)
+        depth = seen.depth
     else:
         facets = shade(fb, opaque, seen, shading)
         depth, pieces = seen.depth, seen.pieces

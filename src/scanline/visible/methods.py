@@ -50,6 +50,12 @@ class MethodOptions:
     max_work : int, optional
         Depth sort: the bound of its time, in surfaces compared
         (:func:`scanline.visible.depth_sort.default_work`).
+    max_depth : int, optional
+        Ray tracing: the most levels of the ray tree, the primary ray's included,
+        1..64 (default 5; 1: primary rays and shadow rays only).
+    seed : int, optional
+        Ray tracing: the seed of the distributed rays' random numbers, 0..2**63 - 1
+        (default 0; the image is the same for the same seed).
     """
     samples: Optional[int] = None
     layers: Optional[int] = None
@@ -57,6 +63,8 @@ class MethodOptions:
     split_cycles: Optional[bool] = None
     max_pieces: Optional[int] = None
     max_work: Optional[int] = None
+    max_depth: Optional[int] = None
+    seed: Optional[int] = None
 
     def __post_init__(self):
         def whole(name, low, high):
@@ -69,6 +77,8 @@ class MethodOptions:
         whole("layers", 1, 64)
         whole("max_pieces", 1, 2**40)
         whole("max_work", 1, 2**62)
+        whole("max_depth", 1, 64)
+        whole("seed", 0, 2**63 - 1)
         if self.key is not None:
             v.choice("key", self.key, KEYS)
         if self.split_cycles is not None and not isinstance(self.split_cycles, bool):
@@ -84,13 +94,15 @@ class MethodOptions:
 class Method:
     """A visible-surface method: ``find(scene, options)`` -> Layer or Fragments, its
     precision ("image" or "object"), the options of :class:`MethodOptions` it reads,
-    and whether it resolves transparency itself (else the renderer adds the nearest
-    transparent surface over its result)."""
+    whether it resolves transparency itself (else the renderer adds the nearest
+    transparent surface over its result), and whether its hits are colored by the
+    recursive ray tracer (:mod:`scanline.raytrace`) instead of the local shading."""
     name: str
     find: Callable
     precision: str
     options: tuple = ()
     transparency: bool = False
+    traced: bool = False
 
 
 def _image_space(method):
@@ -137,6 +149,8 @@ METHODS = {m.name: m for m in (
     Method("z-buffer", zbuffer, "image"),
     Method("a-buffer", abuffer, "image", ("samples", "layers"), transparency=True),
     Method("ray-casting", raycast, "image"),
+    Method("ray-tracing", raycast, "image", ("max_depth", "seed"), transparency=True,
+           traced=True),
     Method("scan-line", _image_space(scan_line), "image"),
     Method("area-subdivision", _image_space(area_subdivision), "image"),
     Method("depth-sort", _depth_sort, "object", ("split_cycles", "max_pieces", "max_work")),

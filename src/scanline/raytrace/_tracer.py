@@ -1,0 +1,419 @@
+"""The recursive ray tracer as a compiled kernel with an explicit stack (Whitted
+1980; Hearn & Baker 14-6, "basic ray-tracing algorithm").
+
+Each sample's primary ray has its first surface already (the ray-casting method's,
+the same ray); from there the binary ray tree is walked depth first with a stack of
+rays instead of recursion.  At every hit point p the local intensity is the basic
+illumination model (Hearn & Baker 14-2, as :mod:`scanline._kernels.shade` evaluates
+it for Phong shading: the normal interpolated, the viewer along the incoming ray),
+with every light's term multiplied by what a shadow ray from p toward it lets through
+(0 behind an opaque surface, the product of the k_t of transparent ones); an area
+light sends a jittered shadow ray to each cell of its grid (Cook, Porter and
+Carpenter 1984).  Then
+
+    I = (1 - k_t) I_local + (k_r + k_t F) I_reflected + k_t (1 - F) I_transmitted
+
+with F the Fresnel reflectance of the interface (the full Fresnel equations for
+unpolarized light, :func:`fresnel`), the reflected ray in the mirror direction R =
+d + 2 (N . -d) N, spread over a cone of half-angle ``roughness`` for glossy
+surfaces (distributed ray tracing), and the transmitted ray bent by Snell's law,
+T = (eta_i / eta_t) d + ((eta_i / eta_t) cos i - cos t) N, cos t = sqrt(1 - (eta_i /
+eta_t)^2 (1 - cos^2 i)) (Hearn & Baker eq. 14-33); when the root is imaginary the
+light is totally reflected (F = 1).  A ray entering a surface against its outward
+normal goes from air (1) into the material's ``refractive_index``; one leaving it,
+back.  Rays that leave the scene bring the background's intensity.  The tree stops
+at ``max_depth`` levels (the primary ray is level 1), where a ray's weight falls
+below :data:`MIN_WEIGHT`, or after :data:`MAX_RAYS` rays of one sample.
+
+Random numbers (the jitter of area lights and glossy reflection) come from a
+counter-based generator (SplitMix64, Steele, Lea and Flood 2014) seeded by the
+user's seed and the sample's number, so an image is the same on any number of
+threads.
+"""
+
+import math
+
+import numpy as np
+from numba import prange
+
+from .._kernels._jit import helper, kernel, parallel_kernel
+from .._kernels.shade import encode
+from ._bvh import STACK, moller_trumbore, nearest, transmittance
+
+#: Weight below which a ray is not traced (a quarter of one step of 255).
+MIN_WEIGHT = 1.0 / 1024.0
+
+#: Most rays of the ray tree of one sample (shadow rays not counted).
+MAX_RAYS = 1024
+
+#: Columns of a material row: ka, kd, ks, n_s, S_s (3), the least highlight base,
+#: S_d (3) (:func:`scanline.shading.buffer.material_rows`), then k_r, k_t, eta,
+#: roughness.
+KR, KT, ETA, ROUGH = 11, 12, 13, 14
+
+#: Columns of a light row: the shading's 16 (:func:`scanline.shading.buffer.source_rows`),
+#: then an area light's corner, edges and samples per side (0: not an area light).
+CORNER, EDGE_U, EDGE_V, GRID = 16, 19, 22, 25
+
+#: Kinds of ray in the log.
+PRIMARY, REFLECTED, REFRACTED, SHADOW = 0, 1, 2, 3
+
+#: Columns of a log row: ray, parent, kind, depth, origin (3), direction (3), t of its
+#: hit, facet hit (-1: none), weight, local intensity (3), its contribution (3),
+#: light (shadow rays), transmittance (shadow rays).
+LOG_COLUMNS = 21
+
+#: Samples per parallel chunk.
+CHUNK = 64
+
+
+@helper
+def next_random(state):
+    """A uniform number in [0, 1) from the SplitMix64 generator whose state is
+    ``state[0]`` (uint64), advanced."""
+    state[0] += np.uint64(0x9E3779B97F4A7C15)
+    z = state[0]
+    z = (z ^ (z >> np.uint64(30))) * np.uint64(0xBF58476D1CE4E5B9)
+    z = (z ^ (z >> np.uint64(27))) * np.uint64(0x94D049BB133111EB)
+    z = z ^ (z >> np.uint64(31))
+    return float(z >> np.uint64(11)) * (1.0 / 9007199254740992.0)
+
+
+@helper
+def fresnel(cos_i, n1, n2):
+    """The reflectance of unpolarized light meeting the interface from index ``n1``
+    to ``n2`` at an angle whose cosine is ``cos_i`` (the Fresnel equations: the mean
+    of r_s^2 and r_p^2), and the cosine of the transmitted angle; ``(1.0, -1.0)``
+    past the critical angle (total internal reflection)."""
+    ratio = n1 / n2
+    k = 1.0 - ratio * ratio * (1.0 - cos_i * cos_i)
+    if k < 0.0:
+        return 1.0, -1.0
+    cos_t = math.sqrt(k)
+    rs = (n1 * cos_i - n2 * cos_t) / (n1 * cos_i + n2 * cos_t)
+    rp = (n2 * cos_i - n1 * cos_t) / (n2 * cos_i + n1 * cos_t)
+    return 0.5 * (rs * rs + rp * rp), cos_t
+
+
+@helper
+def mirror(d, n, cos_i, out):
+    """The mirror direction of ``d`` about the unit normal ``n`` (facing the incoming
+    ray, cos_i = N . -d) into ``out``: R = d + 2 cos_i N (Hearn & Baker 14-6)."""
+    for c in range(3):
+        out[c] = d[c] + 2.0 * cos_i * n[c]
+
+
+@helper
+def bend(d, n, ratio, cos_i, cos_t, out):
+    """The transmitted direction of the unit ``d`` through the unit normal ``n``
+    (facing the incoming ray) into ``out`` by Snell's law (Hearn & Baker eq. 14-33):
+    T = (eta_i / eta_t) d + ((eta_i / eta_t) cos_i - cos_t) N, ``ratio`` = eta_i /
+    eta_t, ``cos_t`` from :func:`fresnel`."""
+    for c in range(3):
+        out[c] = ratio * d[c] + (ratio * cos_i - cos_t) * n[c]
+
+
+@helper
+def _log(log, count, ray, parent, kind, depth, o, d, t, facet, weight, local, light, through):
+    """Append a row to ``log`` (when it has room; ``count[0]`` rows so far)."""
+    k = count[0]
+    if k >= log.shape[0]:
+        return
+    log[k, 0] = ray
+    log[k, 1] = parent
+    log[k, 2] = kind
+    log[k, 3] = depth
+    for c in range(3):
+        log[k, 4 + c] = o[c]
+        log[k, 7 + c] = d[c]
+        log[k, 13 + c] = local[c]
+        log[k, 16 + c] = weight * local[c]
+    log[k, 10] = t
+    log[k, 11] = facet
+    log[k, 12] = weight
+    log[k, 19] = light
+    log[k, 20] = through
+    count[0] = k + 1
+
+
+@helper
+def _lit(p, n, ng, v, sd, m, mats, lights, ambient, blinn, eps, bounds, links, table, clear,
+         stack, state, out, log, count, ray, depth):
+    """The local intensity at ``p`` (normal ``n``, geometric normal ``ng``, both facing
+    the viewer ``v``; color ``sd``; material row ``m``) into ``out`` (3,): ambient plus
+    every light's diffuse and specular terms, each times what its shadow rays let
+    through."""
+    for c in range(3):
+        out[c] = mats[m, 0] * ambient[c] * sd[c]
+    kd = mats[m, 1]
+    ks = mats[m, 2]
+    shin = mats[m, 3]
+    cut = mats[m, 7]
+    to = np.empty(3)
+    zero = np.zeros(3)
+    for s in range(lights.shape[0]):
+        grid = int(lights[s, GRID])
+        cells = grid * grid if grid > 0 else 1
+        for cell in range(cells):
+            if grid > 0:
+                a = (cell % grid + next_random(state)) / grid
+                b = (cell // grid + next_random(state)) / grid
+                for c in range(3):
+                    to[c] = (lights[s, CORNER + c] + a * lights[s, EDGE_U + c]
+                             + b * lights[s, EDGE_V + c] - p[c])
+                f = 1.0 / cells
+            else:
+                w = lights[s, 3]
+                for c in range(3):
+                    to[c] = lights[s, c] - w * p[c]
+                f = 1.0
+            dist = math.sqrt(to[0] * to[0] + to[1] * to[1] + to[2] * to[2])
+            if not dist > 0:
+                continue
+            lx = to[0] / dist
+            ly = to[1] / dist
+            lz = to[2] / dist
+            if grid == 0:
+                # f = min(1, 1 / (a0 + a1 d + a2 d^2)); a light at infinity: d = 1, f = 1
+                f = min(1.0, 1.0 / (lights[s, 4] + lights[s, 5] * dist
+                                    + lights[s, 6] * dist * dist))
+                if lights[s, 3] == 0.0:
+                    dist = math.inf
+                if lights[s, 9] > 0:
+                    cos = -(lx * lights[s, 10] + ly * lights[s, 11] + lz * lights[s, 12])
+                    if cos >= lights[s, 7]:
+                        f *= min(max(cos, 0.0), 1.0) ** lights[s, 8]
+                    else:
+                        f = 0.0
+            nl = n[0] * lx + n[1] * ly + n[2] * lz
+            if not (nl > 0 and f > 0):
+                continue
+            side = 1.0 if ng[0] * lx + ng[1] * ly + ng[2] * lz >= 0 else -1.0
+            ox = p[0] + side * eps * ng[0]
+            oy = p[1] + side * eps * ng[1]
+            oz = p[2] + side * eps * ng[2]
+            through = transmittance(ox, oy, oz, lx, ly, lz, 0.0, dist - eps, bounds, links,
+                                    table, clear, stack)
+            if log.shape[0] > 0:
+                to[0] = ox
+                to[1] = oy
+                to[2] = oz
+                d3 = np.empty(3)
+                d3[0] = lx
+                d3[1] = ly
+                d3[2] = lz
+                _log(log, count, -1, ray, SHADOW, depth + 1, to, d3, dist, -1, 0.0, zero, s,
+                     through)
+            if through <= 0.0:
+                continue
+            if blinn:
+                hx = lx + v[0]
+                hy = ly + v[1]
+                hz = lz + v[2]
+                hl = math.sqrt(hx * hx + hy * hy + hz * hz)
+                sv = (n[0] * hx + n[1] * hy + n[2] * hz) / hl if hl > 0 else 0.0
+            else:
+                sv = (v[0] * (2.0 * nl * n[0] - lx) + v[1] * (2.0 * nl * n[1] - ly)
+                      + v[2] * (2.0 * nl * n[2] - lz))
+            shine = min(sv, 1.0) ** shin if sv > cut else 0.0
+            g = f * through
+            for c in range(3):
+                out[c] += g * lights[s, 13 + c] * (nl * kd * sd[c] + shine * ks * mats[m, 4 + c])
+
+
+@helper
+def _cone(r, angle, state):
+    """``r`` (unit, (3,)) turned to a direction uniformly distributed over the cone of
+    half-angle ``angle`` around it (in place)."""
+    cos_t = 1.0 - next_random(state) * (1.0 - math.cos(angle))
+    sin_t = math.sqrt(max(0.0, 1.0 - cos_t * cos_t))
+    phi = 2.0 * math.pi * next_random(state)
+    if abs(r[0]) < 0.9:
+        ux, uy, uz = 0.0, r[2], -r[1]
+    else:
+        ux, uy, uz = -r[2], 0.0, r[0]
+    ul = math.sqrt(ux * ux + uy * uy + uz * uz)
+    ux /= ul
+    uy /= ul
+    uz /= ul
+    wx = r[1] * uz - r[2] * uy
+    wy = r[2] * ux - r[0] * uz
+    wz = r[0] * uy - r[1] * ux
+    cp = math.cos(phi) * sin_t
+    sp = math.sin(phi) * sin_t
+    r0 = cos_t * r[0] + cp * ux + sp * wx
+    r1 = cos_t * r[1] + cp * uy + sp * wy
+    r2 = cos_t * r[2] + cp * uz + sp * wz
+    r[0] = r0
+    r[1] = r1
+    r[2] = r2
+
+
+@helper
+def trace_sample(origin, direction, first, sample, seed, max_depth, eps, blinn, bounds, links,
+                 table, prim_facet, facet_row, clear, world_n, vertex_normals, colors,
+                 facet_mat, front, mats, lights, ambient, background, rays, stack, out, log,
+                 count):
+    """Walk the ray tree of one sample whose primary ray (``origin``, ``direction``:
+    unit) meets facet ``first`` (-1: nothing; then ``out`` is NaN): the intensity into
+    ``out`` (3,).  ``rays``: a (MAX_RAYS + 1, 10) stack of rays (origin, direction,
+    weight, depth, parent, kind)."""
+    if first < 0:
+        for c in range(3):
+            out[c] = math.nan
+        return
+    state = np.empty(1, np.uint64)
+    state[0] = np.uint64(seed) * np.uint64(0xD1B54A32D192ED03) + np.uint64(sample)
+    next_random(state)
+    for c in range(3):
+        out[c] = 0.0
+        rays[0, c] = origin[c]
+        rays[0, 3 + c] = direction[c]
+    rays[0, 6] = 1.0
+    rays[0, 7] = 1.0
+    rays[0, 8] = -1.0
+    rays[0, 9] = PRIMARY
+    top = 1
+    made = 1
+    ray = -1
+    p = np.empty(3)
+    n = np.empty(3)
+    ng = np.empty(3)
+    v = np.empty(3)
+    sd = np.empty(3)
+    local = np.empty(3)
+    o = np.empty(3)
+    d = np.empty(3)
+    while top > 0:
+        top -= 1
+        ray += 1
+        for c in range(3):
+            o[c] = rays[top, c]
+            d[c] = rays[top, 3 + c]
+        weight = rays[top, 6]
+        depth = int(rays[top, 7])
+        parent = int(rays[top, 8])
+        kind = int(rays[top, 9])
+        if parent < 0:
+            row = facet_row[first]
+            t, u, w = moller_trumbore(o[0], o[1], o[2], d[0], d[1], d[2], table, row)
+        else:
+            t, row, u, w = nearest(o[0], o[1], o[2], d[0], d[1], d[2], 0.0, math.inf, bounds,
+                                   links, table, stack)
+        if row < 0:
+            for c in range(3):
+                out[c] += weight * background[c]
+            if log.shape[0] > 0:
+                _log(log, count, ray, parent, kind, depth, o, d, math.inf, -1, weight,
+                     background, -1, 0.0)
+            continue
+        f = prim_facet[row]
+        m = facet_mat[f]
+        for c in range(3):
+            p[c] = table[row, c] + u * table[row, 3 + c] + w * table[row, 6 + c]
+            n[c] = ((1.0 - u - w) * vertex_normals[f, 0, c] + u * vertex_normals[f, 1, c]
+                    + w * vertex_normals[f, 2, c])
+            sd[c] = (1.0 - u - w) * colors[f, 0, c] + u * colors[f, 1, c] + w * colors[f, 2, c]
+            ng[c] = world_n[f, c]
+            v[c] = -d[c]
+        # which side the ray meets: the primary ray the side the back-face test saw
+        entering = ng[0] * d[0] + ng[1] * d[1] + ng[2] * d[2] < 0
+        toward = front[f] if parent < 0 else entering
+        nn = math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2])
+        r = (1.0 if toward else -1.0) / nn if nn != 0 else 0.0
+        for c in range(3):
+            n[c] *= r
+            if not entering:
+                ng[c] = -ng[c]
+        _lit(p, n, ng, v, sd, m, mats, lights, ambient, blinn, eps, bounds, links, table,
+             clear, stack, state, local, log, count, ray, depth)
+        kt = mats[m, KT]
+        kr = mats[m, KR]
+        for c in range(3):
+            out[c] += weight * (1.0 - kt) * local[c]
+        if log.shape[0] > 0:
+            for c in range(3):
+                local[c] *= 1.0 - kt
+            _log(log, count, ray, parent, kind, depth, o, d, t, f, weight, local, -1, 0.0)
+        if depth >= max_depth or (kr <= 0.0 and kt <= 0.0):
+            continue
+        # the normal for the new directions: the shading normal unless it faces away
+        cos_i = -(d[0] * n[0] + d[1] * n[1] + d[2] * n[2])
+        if not cos_i > 0:
+            for c in range(3):
+                n[c] = ng[c]
+            cos_i = -(d[0] * n[0] + d[1] * n[1] + d[2] * n[2])
+        eta = mats[m, ETA]
+        big_f = 0.0
+        cos_t = -1.0
+        if kt > 0.0:
+            big_f, cos_t = fresnel(cos_i, 1.0 if entering else eta, eta if entering else 1.0)
+        wr = weight * (kr + kt * big_f)
+        wt = weight * kt * (1.0 - big_f)
+        if wt >= MIN_WEIGHT and cos_t >= 0.0 and made < MAX_RAYS and top < rays.shape[0]:
+            bend(d, n, 1.0 / eta if entering else eta, cos_i, cos_t, rays[top, 3:6])
+            for c in range(3):
+                rays[top, c] = p[c] - eps * ng[c]
+            rays[top, 6] = wt
+            rays[top, 7] = depth + 1
+            rays[top, 8] = ray
+            rays[top, 9] = REFRACTED
+            top += 1
+            made += 1
+        if wr >= MIN_WEIGHT and made < MAX_RAYS and top < rays.shape[0]:
+            mirror(d, n, cos_i, rays[top, 3:6])
+            rough = mats[m, ROUGH]
+            if rough > 0:
+                _cone(rays[top, 3:6], rough, state)
+            if (rays[top, 3] * ng[0] + rays[top, 4] * ng[1] + rays[top, 5] * ng[2]) <= 0:
+                mirror(d, ng, -(d[0] * ng[0] + d[1] * ng[1] + d[2] * ng[2]), rays[top, 3:6])
+            for c in range(3):
+                rays[top, c] = p[c] + eps * ng[c]
+            rays[top, 6] = wr
+            rays[top, 7] = depth + 1
+            rays[top, 8] = ray
+            rays[top, 9] = REFLECTED
+            top += 1
+            made += 1
+
+
+@parallel_kernel
+def trace_all(origins, directions, firsts, samples, seed, max_depth, eps, blinn, bounds, links,
+              table, prim_facet, facet_row, clear, world_n, vertex_normals, colors, facet_mat,
+              front, mats, lights, ambient, background, out, log, count):
+    """:func:`trace_sample` for every sample (rows of ``origins``, ``directions``,
+    ``firsts`` and ``samples``, the samples' numbers for the random numbers) into
+    ``out`` (P, 3), chunks of :data:`CHUNK` samples in parallel.  ``log`` (L,
+    :data:`LOG_COLUMNS`) receives the rays when it has rows (one sample at a time)."""
+    total = origins.shape[0]
+    for chunk in prange((total + CHUNK - 1) // CHUNK):
+        stack = np.empty(STACK, np.int64)
+        rays = np.empty((MAX_RAYS + 1, 10))
+        for i in range(chunk * CHUNK, min(total, (chunk + 1) * CHUNK)):
+            trace_sample(origins[i], directions[i], firsts[i], samples[i], seed, max_depth,
+                         eps, blinn, bounds, links, table, prim_facet, facet_row, clear,
+                         world_n, vertex_normals, colors, facet_mat, front, mats, lights,
+                         ambient, background, rays, stack, out[i], log, count)
+
+
+@kernel
+def store(ys, xs, linear, gamma_table, thresholds, raster, gray, alpha):
+    """Linear intensities (P, 3) encoded with the shading's gamma tables
+    (:func:`scanline._kernels.shade.encode`) at pixels (``xs``, ``ys``) of ``raster``:
+    mode "L" (``gray``) the luminance 0.299 R + 0.587 G + 0.114 B, ``alpha``: 255 in
+    the fourth channel."""
+    h = raster.shape[0]
+    w = raster.shape[1]
+    for i in range(ys.shape[0]):
+        y = ys[i]
+        x = xs[i]
+        if not (0 <= y < h and 0 <= x < w):
+            continue
+        if gray:
+            raster[y, x, 0] = encode(0.299 * linear[i, 0] + 0.587 * linear[i, 1]
+                                     + 0.114 * linear[i, 2], gamma_table, thresholds)
+        else:
+            for c in range(3):
+                raster[y, x, c] = encode(linear[i, c], gamma_table, thresholds)
+            if alpha:
+                raster[y, x, 3] = 255

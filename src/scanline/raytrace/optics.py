@@ -1,0 +1,92 @@
+"""The directions and weights of the ray tracer's secondary rays, one ray at a time
+(Hearn & Baker 14-6): the mirror direction, Snell's law with total internal
+reflection, and the Fresnel reflectance.  These run the tracer's own compiled
+helpers (:mod:`scanline.raytrace._tracer`) as Python."""
+
+import numpy as np
+
+from .. import _validate as v
+from ..errors import ArgumentValueError
+
+
+def _unit(name, value):
+    a = v.real_array(name, value, "(3,)")
+    if a.shape != (3,) or not np.isfinite(a).all() or not np.linalg.norm(a) > 0:
+        raise ArgumentValueError(f"{name} must be a finite, non-zero 3-vector, got "
+                                 f"{v._show(value)}")
+    return a / np.linalg.norm(a)
+
+
+def _index(name, value):
+    x = v.number(name, value)
+    if not x > 0:
+        raise ArgumentValueError(f"{name} must be an index of refraction > 0 (1: air, 1.5: "
+                                 f"glass), got {value!r}")
+    return x
+
+
+def _facing(d, n):
+    """The normal turned to face the incoming direction, and cos i = N . -d."""
+    cos_i = -float(d @ n)
+    return (n, cos_i) if cos_i >= 0 else (-n, -cos_i)
+
+
+def reflect(direction, normal):
+    """The unit mirror direction of a ray traveling along ``direction`` that meets a
+    surface of normal ``normal`` (either side): R = d + 2 (N . -d) N.
+
+    >>> reflect((1, -1, 0), (0, 1, 0)).round(6).tolist()
+    [0.707107, 0.707107, 0.0]
+    """
+    from .._kernels._jit import python
+    from ._tracer import mirror
+
+    d = _unit("direction", direction)
+    n, cos_i = _facing(d, _unit("normal", normal))
+    out = np.empty(3)
+    python(mirror)(d, n, cos_i, out)
+    return out
+
+
+def fresnel(cos_i, n1, n2):
+    """The fraction of unpolarized light reflected where a ray meets the interface
+    from index ``n1`` to ``n2`` at incidence cos i = ``cos_i`` (0..1): the Fresnel
+    equations' (r_s^2 + r_p^2) / 2; 1 past the critical angle.
+
+    >>> round(fresnel(1.0, 1.0, 1.5), 6)     # ((n1 - n2) / (n1 + n2))^2 head on
+    0.04
+    """
+    from .._kernels._jit import python
+    from ._tracer import fresnel as kernel
+
+    c = v.number("cos_i", cos_i)
+    if not 0 <= c <= 1:
+        raise ArgumentValueError(f"cos_i must be the cosine of an incidence angle, 0..1, got "
+                                 f"{cos_i!r}")
+    return python(kernel)(c, _index("n1", n1), _index("n2", n2))[0]
+
+
+def refract(direction, normal, n1, n2):
+    """The unit direction of a ray traveling along ``direction`` through the interface
+    of normal ``normal`` from index ``n1`` into index ``n2``, by Snell's law (n1 sin
+    i = n2 sin t, Hearn & Baker eq. 14-33), or None when it is totally reflected (sin
+    t would pass 1: beyond the critical angle asin(n2 / n1)).
+
+    >>> refract((0, -1, 0), (0, 1, 0), 1.0, 1.5).tolist()
+    [0.0, -1.0, 0.0]
+    >>> refract((1, -0.1, 0), (0, 1, 0), 1.5, 1.0) is None
+    True
+    """
+    from .._kernels._jit import python
+    from ._tracer import bend
+    from ._tracer import fresnel as kernel
+
+    d = _unit("direction", direction)
+    n, cos_i = _facing(d, _unit("normal", normal))
+    a, b = _index("n1", n1), _index("n2", n2)
+    _, cos_t = python(kernel)(cos_i, a, b)
+    if cos_t < 0:
+        return None
+    out = np.empty(3)
+    python(bend)(d, n, a / b, cos_i, cos_t, out)
+    return out

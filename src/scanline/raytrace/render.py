@@ -1,0 +1,166 @@
+"""``sl.render(..., method="ray-tracing")``: the recursive ray tracer as the renderer's
+coloring pass (Whitted 1980; Hearn & Baker 14-6).
+
+The primary rays are the ray-casting method's (:mod:`scanline.visible.raycast`, one
+ray through each pixel center, or each sample's with ``antialias=n``): it finds the
+surface each one meets first.  From that surface on, the tracer
+(:mod:`scanline.raytrace._tracer`) follows shadow, reflected and transmitted rays
+through a bounding volume hierarchy of the scene's world facets
+(:class:`~scanline.raytrace.BVH`), and the intensity it sums is stored with the
+shading's gamma.  Every hit is lit by the basic illumination model at the point,
+with the interpolated normal (as Phong shading lights a pixel), so a scene with no
+reflective or transparent surface and no shadow falling on a seen point comes out
+as ray casting with ``shading="phong"`` draws it, pixel for pixel.
+"""
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .. import _validate as v
+
+#: The default depth of the ray tree (levels, the primary ray's included).
+MAX_DEPTH = 5
+
+#: Offset of secondary rays' origins from their surface, in units of the scene's size
+#: (its box's diagonal): no ray meets the surface it leaves.
+OFFSET = 1e-7
+
+
+@dataclass(frozen=True, eq=False)
+class Traced:
+    """A screen scene ready for the tracer kernel: the tree over its world facets and
+    the per-facet, per-material and per-light tables (the kernel's arguments after
+    the samples' own)."""
+    tree: object
+    arguments: tuple
+    lights: int
+
+
+def material_table(materials, gamma):
+    """The shading's material rows (:func:`scanline.shading.buffer.material_rows`)
+    with each material's k_r, k_t, refractive index and roughness, (M, 15)."""
+    from ..shading.buffer import material_rows
+
+    extra = np.array([[m.reflectivity, m.transparency, m.refractive_index, m.roughness]
+                      for m in materials], np.float64).reshape(-1, 4)
+    return np.ascontiguousarray(np.hstack([material_rows(materials, gamma), extra]))
+
+
+def light_table(lights):
+    """The shading's source rows (:func:`scanline.shading.buffer.source_rows`) with an
+    area light's corner, edges and samples per side (zeros for the others), (S, 26),
+    and the ambient intensity."""
+    from ..lighting.lights import AmbientLight, AreaLight
+    from ..shading.buffer import source_rows
+
+    rows, ambient = source_rows(lights)
+    area = np.zeros((len(rows), 10))
+    for i, light in enumerate(x for x in lights if not isinstance(x, AmbientLight)):
+        if isinstance(light, AreaLight):
+            area[i] = [*light.corner, *light.edge_u, *light.edge_v, light.samples]
+    return np.ascontiguousarray(np.hstack([rows, area])), ambient
+
+
+def traced(scene, shading, background, max_depth, seed):
+    """The :class:`Traced` form of ``scene`` with the shading options ``shading``
+    (lights, gamma, the specular term) and the linear ``background`` (3,)."""
+    from ..budget import check
+    from ..shading import decoded
+    from .bvh import BVH
+
+    world = v.kernel_array(scene.world)
+    check(200 * len(world), "meshes", f"the ray tracer's tables of {len(world):,} facets",
+          "trace fewer triangles")
+    tree = BVH(world)
+    facet_row = np.empty(len(world), np.int64)
+    facet_row[tree.order] = np.arange(len(world))
+    mats = material_table(scene.materials, shading.gamma)
+    kt = mats[:, 12][scene.facet_mesh] if len(world) else np.zeros(0)
+    lights, ambient = light_table(shading.lights)
+    size = float(np.linalg.norm(tree.bounds[0, 3:] - tree.bounds[0, :3])) if len(world) else 1.0
+    eps = OFFSET * max(size, 1e-300)
+    return Traced(tree, (
+        int(seed), int(max_depth), eps, shading.specular == "blinn", tree.bounds, tree.links,
+        tree.table, v.kernel_array(tree.order, np.int64), facet_row,
+        v.kernel_array(kt[tree.order]), v.kernel_array(scene.normals),
+        v.kernel_array(scene.vertex_normals), v.kernel_array(decoded(scene.vertex_colors,
+                                                                     shading.gamma)),
+        v.kernel_array(scene.facet_mesh, np.int64), v.kernel_array(scene.front, np.bool_),
+        mats, lights, v.kernel_array(ambient), v.kernel_array(background)), len(lights))
+
+
+def primary_rays(scene, xs, ys):
+    """The world rays through device points (``xs``, ``ys``) of ``scene``: origins on
+    the view volume's front plane and unit directions into it (for a
+    perspective camera, rays from the center of projection), (P, 3) each."""
+    clip, scale, offset = scene.mapping
+    inverse = np.linalg.inv(clip)
+    ndc = np.empty((len(xs), 4))
+    ndc[:, 0] = (np.asarray(xs, np.float64) - offset[0]) / scale[0]
+    ndc[:, 1] = (np.asarray(ys, np.float64) - offset[1]) / scale[1]
+    ndc[:, 3] = 1.0
+    ends = []
+    for z in (0.0, 0.5):              # the back plane may lie at infinity (w = 0)
+        ndc[:, 2] = z
+        h = ndc @ inverse.T
+        ends.append(h[:, :3] / h[:, 3:])
+    d = ends[1] - ends[0]
+    d /= np.linalg.norm(d, axis=1, keepdims=True)
+    return np.ascontiguousarray(ends[0]), np.ascontiguousarray(d)
+
+
+def trace(prepared, origins, directions, firsts, samples, log=None):
+    """Linear intensities (P, 3) of the samples whose primary rays (``origins``,
+    ``directions``) meet the facets ``firsts`` first (-1: none, NaN out), the
+    samples numbered ``samples`` for the random numbers; ``log``: a (L,
+    LOG_COLUMNS) array that receives the rays of a single sample (Python, the
+    kernel's twin), returned with the number of rows written."""
+    from .._kernels._jit import call, python
+    from . import _tracer as k
+
+    out = np.empty((len(origins), 3))
+    count = np.zeros(1, np.int64)
+    args = (v.kernel_array(origins), v.kernel_array(directions),
+            v.kernel_array(firsts, np.int64), v.kernel_array(samples, np.int64),
+            *prepared.arguments, out)
+    if log is None:
+        call(k.trace_all, lambda: 20 * len(origins) * (8 + 6 * prepared.lights), *args,
+             np.zeros((0, k.LOG_COLUMNS)), count)
+        return out
+    with np.errstate(all="ignore"):
+        python(k.trace_all)(*args, log, count)
+    return out, int(count[0])
+
+
+def shade(fb, scene, layer, shading, options):
+    """Color the pixels of ``layer`` (the ray-casting method's
+    :class:`~scanline.visible.visibility.Layer` of ``scene``) into ``fb`` by tracing
+    their rays; ``options``: the :class:`~scanline.visible.MethodOptions`
+    (``max_depth``, ``seed``).  Returns the facet seen at each pixel (H, W int32,
+    -1: none)."""
+    from .._kernels._jit import call
+    from ..errors import ArgumentValueError
+    from ..shading.buffer import gamma_tables
+    from ..shading.compose import background_linear
+    from . import _tracer as k
+
+    if fb.mode not in ("L", "RGB", "RGBA"):
+        raise ArgumentValueError(f"method='ray-tracing' draws into modes L, RGB and RGBA; the "
+                                 f"frame buffer is mode {fb.mode!r}")
+    ids = layer.ids
+    facets = np.full(ids.shape, -1, np.int32)
+    ys, xs = np.nonzero(ids >= 0)
+    if not len(ys):
+        return facets
+    first = scene.facet[ids[ys, xs]]
+    facets[ys, xs] = first
+    depth = MAX_DEPTH if options.max_depth is None else options.max_depth
+    prepared = traced(scene, shading, background_linear(fb, shading.gamma), depth,
+                      options.seed or 0)
+    origins, directions = primary_rays(scene, xs, ys)
+    linear = trace(prepared, origins, directions, first, ys.astype(np.int64) * fb.width + xs)
+    call(k.store, 4 * len(ys), v.kernel_array(ys, np.int64), v.kernel_array(xs, np.int64),
+         linear, *gamma_tables(shading.gamma), fb._raster()[0], fb.mode == "L",
+         fb.mode == "RGBA")
+    return facets

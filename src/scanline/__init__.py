@@ -28,6 +28,7 @@ if TYPE_CHECKING:   # what the lazy attributes are, for type checkers and editor
     from . import viewing as viewing, visible as visible, lighting as lighting
     from . import shading as shading, rendering as rendering, screen as screen
     from . import budget as budget, mpl as mpl, texture as texture
+    from . import raytrace as raytrace
     from .texture import Texture as Texture
     from .rendering import render as render
     from .depthbuffer import DepthBuffer as DepthBuffer
@@ -84,6 +85,7 @@ _LAZY = {
     "shading": ("scanline.shading", None),
     "render": ("scanline.rendering", "render"),
     "rendering": ("scanline.rendering", None),
+    "raytrace": ("scanline.raytrace", None),
     "screen": ("scanline.screen", None),
     "budget": ("scanline.budget", None),
     "mpl": ("scanline.mpl", None),

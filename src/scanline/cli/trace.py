@@ -88,6 +88,12 @@ ALGORITHMS = {
     "floating-horizon": (
         "the floating horizon: upper and lower horizons per curve (Rogers 4-2)", {}, False,
     ),
+    "ray-tracing": (
+        "recursive ray tracing: one pixel's ray tree, reflected, refracted and shadow rays "
+        "and the intensities summed (Whitted 1980, Hearn & Baker 14-6)",
+        {"X": "x of the pixel (0..31 of the built-in 32 x 24 scene)",
+         "Y": "y of the pixel (0..23, bottom row 0)"}, False,
+    ),
 }
 
 
@@ -245,6 +251,18 @@ def horizon_options(sub):
 
 
 OPTIONS.update({"depth-sort": depth_sort_options, "floating-horizon": horizon_options})
+
+
+def ray_tracing_options(sub):
+    """``--max-depth`` and ``--seed`` of ``ray-tracing``."""
+    sub.add_argument("--max-depth", type=integer, default=5,
+                     help="levels of the ray tree, 1..64 (default 5)")
+    sub.add_argument("--seed", type=integer, default=0,
+                     help="seed of the distributed rays' random numbers (default 0)")
+    return ["max_depth", "seed"]
+
+
+OPTIONS["ray-tracing"] = ray_tracing_options
 
 FORMATS = ("table", "csv", "json")
 

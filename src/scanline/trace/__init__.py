@@ -18,6 +18,7 @@ from .clip import cohen_sutherland, cyrus_beck, liang_barsky, sutherland_hodgman
 from .clip3d import cohen_sutherland_3d, liang_barsky_3d
 from .zbuffer import z_buffer
 from .visible import depth_sort, floating_horizon
+from .raytracing import ray_tracing
 
 #: CLI name -> function
 ALGORITHMS = {
@@ -39,11 +40,12 @@ ALGORITHMS = {
     "z-buffer": z_buffer,
     "depth-sort": depth_sort,
     "floating-horizon": floating_horizon,
+    "ray-tracing": ray_tracing,
 }
 
 __all__ = ["Table", "bresenham", "dda", "midpoint_circle", "midpoint_ellipse", "flood_fill",
            "boundary_fill", "scan_line_fill", "sutherland_hodgman", "de_casteljau", "cox_de_boor",
            "cohen_sutherland", "liang_barsky", "cyrus_beck",
            "cohen_sutherland_3d", "liang_barsky_3d", "z_buffer", "depth_sort",
-           "floating_horizon",
+           "floating_horizon", "ray_tracing",
            "ALGORITHMS"]

@@ -1,0 +1,165 @@
+"""The ray tree of one pixel's primary ray (Whitted 1980; Hearn & Baker 14-6): every
+surface the primary ray crosses, then each ray the tracer follows -- reflected,
+refracted and shadow rays with their depth -- and the intensities summed.  The rows
+are the log of the tracer kernel itself (:mod:`scanline.raytrace._tracer`), run as
+Python on the one sample."""
+
+import math
+
+import numpy as np
+
+from .. import _validate as v
+from ..errors import ArgumentValueError
+from .table import Table
+
+#: The built-in scene's device size.
+WIDTH, HEIGHT = 32, 24
+
+KINDS = ("primary", "reflected", "refracted", "shadow")
+
+
+def scene():
+    """The built-in scene: a gray floor, a mirror sphere and a glass sphere (index
+    1.5) under a point light, seen from above the floor: ``(meshes, materials,
+    lights, camera)``."""
+    import scanline as sl
+
+    lit = sl.lighting
+    floor = sl.mesh.Mesh([(-4, -1, -4), (4, -1, -4), (4, -1, 4), (-4, -1, 4)], [(3, 2, 1, 0)])
+    meshes = [floor, sl.mesh.sphere(1.0, center=(-1.2, 0, 0), resolution=12),
+              sl.mesh.sphere(0.8, center=(1.2, -0.2, 0.8), resolution=12)]
+    materials = [lit.Material(color=(200, 200, 200)),
+                 lit.Material(color=(255, 80, 80), kd=0.2, reflectivity=0.8),
+                 lit.Material(kd=0.1, ks=0.5, shininess=60, transparency=0.9,
+                              refractive_index=1.5)]
+    lights = [lit.AmbientLight(0.15), lit.PointLight((3, 5, 4), intensity=0.9)]
+    camera = sl.Camera(eye=(0, 1.5, 6), target=(0, 0, 0))
+    return meshes, materials, lights, camera
+
+
+def ray_tracing(x=20, y=11, meshes=None, materials=None, lights=None, camera=None,
+                width=WIDTH, height=HEIGHT, max_depth=5, seed=0, gamma=2.2,
+                background=(40, 60, 90)):
+    """The ray tree of the primary ray through pixel (``x``, ``y``), as
+    ``sl.render(fb, meshes, camera, method="ray-tracing", shading="phong", ...)``
+    follows it on a ``width`` x ``height`` frame buffer of color ``background``
+    (default: the built-in scene of :func:`scene`).
+
+    Rows, in the order the tracer takes the rays (depth first): ``ray`` (its number;
+    shadow rays have none), ``parent``, ``kind`` (primary, reflected, refracted,
+    shadow), ``depth`` (the primary ray is 1), ``t`` (the distance to its nearest
+    hit; a shadow ray's to its light), ``face`` (hit; -1: none, the ray brings the
+    background), ``light`` and ``through`` (a shadow ray's light and the fraction
+    that reaches the point), ``weight`` (the product of the k_r + k_t F and k_t (1 -
+    F) factors down the tree), ``I_r``, ``I_g``, ``I_b`` (the ray's own intensity:
+    (1 - k_t) I_local, or the background) and ``sum_r``, ``sum_g``, ``sum_b``
+    (the weighted intensities summed so far).  The notes list every intersection
+    of the primary ray and the pixel's stored value.
+
+    >>> t = ray_tracing(20, 11)
+    >>> t.rows[0]["kind"], t.rows[0]["depth"]
+    ('primary', 1)
+    """
+    import scanline as sl
+
+    from ..raytrace import _tracer as k
+    from ..rendering.api import default_lights
+    from ..raytrace.render import primary_rays, trace, traced
+    from ..screen import prepare
+    from ..shading import ShadingOptions
+    from ..shading.compose import background_linear
+    from ..visible import MethodOptions
+    from ..visible.raycast import raycast
+
+    width = v.positive_int("width", width)
+    height = v.positive_int("height", height)
+    for name, value, top in (("x", x, width), ("y", y, height)):
+        if (not isinstance(value, (int, np.integer)) or isinstance(value, bool)
+                or not 0 <= value < top):
+            raise ArgumentValueError(f"{name} must be a pixel 0..{top - 1} of the {width} x "
+                                     f"{height} device, got {v._show(value)}")
+    given = meshes is not None
+    if not given:
+        meshes, own_materials, own_lights, own_camera = scene()
+        materials = own_materials if materials is None else materials
+        lights = own_lights if lights is None else lights
+        camera = own_camera if camera is None else camera
+    if camera is None:
+        raise ArgumentValueError("camera must be given with meshes")
+    options = MethodOptions(max_depth=max_depth, seed=seed)
+    fb = sl.FrameBuffer(width, height, background=background)
+    shading = ShadingOptions(model="phong", lights=lights if lights is not None else
+                             default_lights(camera), gamma=gamma)
+    screen = prepare(meshes, camera, width, height, materials)
+    layer = raycast(screen)
+    seen = int(layer.ids[y, x])
+    first = int(screen.facet[seen]) if seen >= 0 else -1
+    prepared = traced(screen, shading, background_linear(fb, gamma), options.max_depth,
+                      options.seed)
+    origins, directions = primary_rays(screen, np.array([x]), np.array([y]))
+    notes = [f"{len(screen.materials)} mesh(es), {screen.face_count} faces on {width} x "
+             f"{height}; max_depth {options.max_depth}, seed {options.seed}, gamma {gamma}",
+             f"primary ray through pixel ({x}, {y}): origin "
+             f"{np.round(origins[0], 6).tolist()}, direction "
+             f"{np.round(directions[0], 6).tolist()}"]
+    notes.append("intersections of the primary ray (t, face): " + (
+        ", ".join(f"({t:.6f}, {f})" for t, f in _crossings(prepared, screen, origins[0],
+                                                            directions[0])) or "none"))
+    shadow_rays = sum(max(int(g), 1) ** 2 for g in prepared.arguments[16][:, k.GRID])
+    log = np.zeros((k.MAX_RAYS * (1 + shadow_rays), k.LOG_COLUMNS))
+    out, count = trace(prepared, origins, directions, np.array([first]),
+                       np.array([y * width + x]), log=log)
+    rows = []
+    total = np.zeros(3)
+    # the kernel logs a point's shadow rays before the ray that found the point
+    ordered, waiting = [], []
+    for r in log[:count]:
+        if int(r[2]) == k.SHADOW:
+            waiting.append(r)
+        else:
+            ordered += [r] + waiting
+            waiting = []
+    for r in ordered + waiting:
+        kind = KINDS[int(r[2])]
+        shadow = kind == "shadow"
+        facet = int(r[11])
+        if not shadow:
+            total += r[12] * r[13:16]
+        rows.append({
+            "ray": None if shadow else int(r[0]), "parent": None if r[1] < 0 else int(r[1]),
+            "kind": kind, "depth": int(r[3]),
+            "t": float(r[10]) if math.isfinite(r[10]) else "inf",
+            "face": int(screen.facet_face[facet]) if facet >= 0 else -1,
+            "light": int(r[19]) if shadow else None,
+            "through": float(r[20]) if shadow else None,
+            "weight": None if shadow else float(r[12]),
+            "I_r": None if shadow else float(r[13]), "I_g": None if shadow else float(r[14]),
+            "I_b": None if shadow else float(r[15]),
+            "sum_r": float(total[0]), "sum_g": float(total[1]), "sum_b": float(total[2])})
+    if first < 0:
+        notes.append("the primary ray meets nothing: the pixel keeps the background")
+    else:
+        from ..shading import encode
+
+        notes.append(f"pixel intensity I = sum of weight x I = {np.round(out[0], 6).tolist()}, "
+                     f"stored {encode(out[0], gamma).tolist()} (gamma {gamma})")
+    return Table(f"ray tracing, the ray tree of pixel ({x}, {y})",
+                 ["ray", "parent", "kind", "depth", "t", "face", "light", "through", "weight",
+                  "I_r", "I_g", "I_b", "sum_r", "sum_g", "sum_b"], rows, notes=notes)
+
+
+def _crossings(prepared, screen, origin, direction):
+    """Every facet the ray crosses, (t, face) nearest first, by the tracer's own
+    Moller-Trumbore test run on each triangle of its table."""
+    from .._kernels._jit import python
+    from ..raytrace._bvh import moller_trumbore
+
+    test = python(moller_trumbore)
+    table = prepared.tree.table
+    out = []
+    with np.errstate(all="ignore"):
+        for row in range(len(table)):
+            t, a, b = test(*origin, *direction, table, row)
+            if t > 0 and a >= 0 and b >= 0 and a + b <= 1:
+                out.append((float(t), int(screen.facet_face[prepared.tree.order[row]])))
+    return sorted(out)

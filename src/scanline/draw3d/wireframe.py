@@ -18,7 +18,7 @@ from ..draw import lines as draw_lines
 from ..draw import polylines as draw_polylines
 from ..draw._common import target
 from ..errors import ArgumentTypeError, ArgumentValueError
-from ..mesh import Mesh
+from ..mesh.convert import as_meshes
 from ..projection import Camera
 from ..transform3d.arrays import real_array
 
@@ -154,6 +154,8 @@ def wireframe(fb, meshes, camera, color=None, *, depth_cue=None, background=None
     ----------
     fb : FrameBuffer
     meshes : Mesh or list of Mesh
+        Or any mesh object :meth:`~scanline.mesh.Mesh.from_any` takes (a trimesh,
+        meshio or Open3D mesh).
     camera : Camera
     color : color, list of colors (one per mesh), or None
         None: each mesh's own colors (an edge takes the color of its first face, or
@@ -202,12 +204,7 @@ def wireframe(fb, meshes, camera, color=None, *, depth_cue=None, background=None
     """
     target(fb)
     camera = _camera(camera)
-    group = [meshes] if isinstance(meshes, Mesh) else list(meshes) \
-        if isinstance(meshes, (list, tuple)) else None
-    if not group or not all(isinstance(m, Mesh) for m in group):
-        raise ArgumentTypeError(
-            f"meshes must be a scanline.mesh.Mesh or a non-empty list of them, got "
-            f"{v._show(meshes)}")
+    group = as_meshes(meshes)
     if isinstance(color, list) and len(color) != len(group):
         raise ArgumentValueError(
             f"color holds {len(color)} colors for {len(group)} meshes; give one per mesh "

@@ -447,27 +447,37 @@ def _ply_attributes(data, count, face_data, face_count):
     return out
 
 
+def meshio_faces(data):
+    """(indices, sizes, whether every cell block was taken) of a meshio mesh's
+    surface cells (triangle, quad, polygon and other 2-D cells); points, lines and
+    volume cells are skipped."""
+    indices, sizes = [], []
+    kept_all = True
+    for block in data.cells:
+        if not (block.dim == 2 or block.type in ("triangle", "quad", "polygon")):
+            kept_all = False
+            continue
+        cells = block.data
+        if isinstance(cells, list):       # polygons of several sizes
+            for face in cells:
+                f = np.asarray(face)
+                indices.append(f.reshape(-1))
+                sizes.append([f.size])
+        else:
+            a = np.asarray(cells)
+            a = a.reshape(len(a), -1)
+            indices.append(a.reshape(-1))
+            sizes.append(np.full(len(a), a.shape[1]))
+    if not indices:
+        return np.zeros(0, np.int64), np.zeros(0, np.int64), kept_all
+    return np.concatenate(indices), np.concatenate(sizes).astype(np.int64), kept_all
+
+
 def _from_meshio(data, fmt, filename, mesh_name):
     """A Mesh from what meshio read."""
-    indices, sizes = [], []
     try:
         with np.errstate(all="ignore"):
-            kept_all = True
-            for block in data.cells:
-                if not (block.dim == 2 or block.type in ("triangle", "quad", "polygon")):
-                    kept_all = False
-                    continue
-                cells = block.data
-                if isinstance(cells, list):       # polygons of several sizes
-                    for face in cells:
-                        f = np.asarray(face)
-                        indices.append(f.reshape(-1))
-                        sizes.append([f.size])
-                else:
-                    a = np.asarray(cells)
-                    a = a.reshape(len(a), -1)
-                    indices.append(a.reshape(-1))
-                    sizes.append(np.full(len(a), a.shape[1]))
+            indices, sizes, kept_all = meshio_faces(data)
             points = np.asarray(data.points, np.float64)
     except (TypeError, ValueError, OverflowError) as error:
         raise MeshFileError(f"the file is not a readable {fmt.upper()} file ({error})",
@@ -480,20 +490,19 @@ def _from_meshio(data, fmt, filename, mesh_name):
                             file=filename)
     if points.shape[1] == 2:
         points = np.hstack([points, np.zeros((len(points), 1))])
-    if not indices or not sum(len(s) for s in sizes):
+    if not len(sizes):
         raise MeshFileError(f"the file holds no faces ({len(points)} vertices)", file=filename)
     try:
         face_data = {k: np.concatenate([np.asarray(c).reshape(-1) for c in blocks])
                      for k, blocks in data.cell_data.items()} if kept_all else {}
-        extra = _ply_attributes(data.point_data, len(points), face_data,
-                                int(sum(len(s) for s in sizes)))
+        extra = _ply_attributes(data.point_data, len(points), face_data, len(sizes))
     except (TypeError, ValueError):       # attributes meshio read oddly: the geometry only
         extra = {}
     try:
-        idx = v.index_array("faces", np.concatenate(indices), what="vertex indices",
+        idx = v.index_array("faces", indices, what="vertex indices",
                             high=len(points) - 1,
                             bound_text=f" (the file has {len(points)} vertices)")
-        return Mesh(points, Flat(idx, np.concatenate(sizes)), name=mesh_name, **extra)
+        return Mesh(points, Flat(idx, sizes), name=mesh_name, **extra)
     except ArgumentValueError as error:
         raise MeshFileError(f"the file's mesh is broken: {error}", file=filename) from None
     except ArgumentTypeError as error:

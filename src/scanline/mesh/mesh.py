@@ -502,8 +502,28 @@ class Mesh:
             new.colors = self.colors[owner]
         return new
 
+    @staticmethod
+    def from_any(obj, name=None):
+        """A mesh of ``obj``: a trimesh ``Trimesh`` or ``Scene``, a meshio ``Mesh``, an
+        Open3D ``TriangleMesh`` or any object with ``vertices`` and ``faces`` arrays
+        (their normals, colors and uv where they have them); a Mesh as it is.  The
+        packages are not imported unless ``obj`` is theirs
+        (:func:`scanline.mesh.convert.from_any`).
+
+        Examples
+        --------
+        >>> import types, scanline as sl
+        >>> sl.mesh.Mesh.from_any(types.SimpleNamespace(
+        ...     vertices=[(0, 0, 0), (1, 0, 0), (0, 1, 0)], faces=[(0, 1, 2)]))
+        <Mesh: 3 vertices, 1 faces, 3 edges>
+        """
+        from .convert import from_any
+
+        return from_any(obj, name)
+
     def save(self, path):
-        """Write the mesh to an OBJ, PLY or STL file (see :func:`scanline.mesh.save`)."""
+        """Write the mesh to an OBJ, PLY, STL, glTF or GLB file (see
+        :func:`scanline.mesh.save`)."""
         from .files import save
 
         save(self, path)

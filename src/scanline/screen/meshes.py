@@ -22,7 +22,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .. import _validate as v
 from .polygons import convex, newell_planes
 
 
@@ -34,11 +33,12 @@ def unit_rows(a):
 
 
 def meshes_list(meshes, empty=False):
-    """``meshes`` (one :class:`~scanline.mesh.Mesh` or several) as a list (``empty``:
-    whether none is allowed)."""
-    from ..mesh import Mesh
+    """``meshes`` (one mesh or several: :class:`~scanline.mesh.Mesh` or any object
+    :meth:`~scanline.mesh.Mesh.from_any` takes, a trimesh mesh say) as a list of Mesh
+    (``empty``: whether none is allowed)."""
+    from ..mesh.convert import as_meshes
 
-    return list(v.one_or_many("meshes", meshes, Mesh, "a scanline.mesh.Mesh", empty=empty))
+    return as_meshes(meshes, "meshes", empty=empty)
 
 
 #: The default crease angle (radians): faces meeting at a sharper angle keep their own

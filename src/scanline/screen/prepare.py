@@ -54,11 +54,13 @@ def _materials(materials, meshes):
     """One Material per mesh: ``materials`` (one, or one per mesh), else each mesh's
     own ``material``, else the default Material."""
     from ..lighting.material import Material
+    from ..mesh.materials import MaterialRecord
 
     n = len(meshes)
     if materials is None:
         default = Material()
         own = tuple(m.material if m.material is not None else default for m in meshes)
+        own = tuple(_from_record(m) if isinstance(m, MaterialRecord) else m for m in own)
         for i, m in enumerate(own):
             if not isinstance(m, Material):
                 raise ArgumentTypeError(f"meshes[{i}].material must be a sl.lighting.Material, "
@@ -75,6 +77,28 @@ def _materials(materials, meshes):
             f"materials must be one sl.lighting.Material or a list of {n} (one per mesh), "
             f"got {len(items)} item(s)")
     return items
+
+
+def _from_record(record):
+    """The Material of a mesh file's material record: the diffuse reflectance Kd as
+    k_d = max(Kd) times the color Kd / max(Kd), the specular Ks likewise (k_s and the
+    highlight color), Ns as the exponent, 1 - d as the transparency (Hearn & Baker,
+    sections 14-2, 14-5); what the file leaves out, the Material's defaults."""
+    from ..lighting.material import Material
+
+    def split(rgb):
+        rgb = np.clip(np.asarray(rgb, np.float64), 0.0, 1.0)
+        top = float(rgb.max())
+        return top, (rgb / top if top > 0 else np.ones(3))
+
+    kd, color = split(record.kd)
+    extra = {}
+    if record.ks is not None:
+        extra["ks"], extra["specular_color"] = split(record.ks)
+    if record.ns is not None:
+        extra["shininess"] = record.ns
+    return Material(kd=kd, color=color, transparency=min(max(1.0 - record.d, 0.0), 1.0),
+                    **extra)
 
 
 def _given_colors(colors, sizes):
@@ -193,9 +217,12 @@ def prepare(meshes, camera, width, height, materials=None, colors=None, cull_bac
     Parameters
     ----------
     meshes : Mesh or list of Mesh
+        Or any mesh object :meth:`~scanline.mesh.Mesh.from_any` takes.
     camera : Camera
     width, height : int
     materials : Material or list of Material (one per mesh), optional
+        Else each mesh's own material (a mesh file's material record is converted:
+        :func:`_from_record`), else the default Material.
     colors : color, or list of colors (one per mesh or one per face), optional
         The surface color S_d of the faces, instead of the meshes' own colors (else
         the materials' colors).

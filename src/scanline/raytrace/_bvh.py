@@ -241,6 +241,15 @@ def moller_trumbore(ox, oy, oz, dx, dy, dz, table, i):
 
 
 @helper
+def _inverse(dx, dy, dz):
+    """1 / d per axis for the slab test, 1e300 for a zero component: 1 / 0 = inf would
+    give 0 x inf = NaN for a ray lying in a box's face, and a finite huge number gives
+    the same answer everywhere else."""
+    return (1.0 / dx if dx != 0 else 1e300, 1.0 / dy if dy != 0 else 1e300,
+            1.0 / dz if dz != 0 else 1e300)
+
+
+@helper
 def _entry(bounds, node, ox, oy, oz, ix, iy, iz, tmax):
     """Where the ray o + t d (``ix`` = 1 / d_x ...) enters the box of ``node`` (the
     slab method, Kay & Kajiya 1986), inf when it misses it before ``tmax``."""
@@ -273,9 +282,7 @@ def nearest(ox, oy, oz, dx, dy, dz, tmin, tmax, bounds, links, table, stack):
     bv = 0.0
     if bounds.shape[0] == 0:
         return best, row, bu, bv
-    ix = 1.0 / dx
-    iy = 1.0 / dy
-    iz = 1.0 / dz
+    ix, iy, iz = _inverse(dx, dy, dz)
     if _entry(bounds, 0, ox, oy, oz, ix, iy, iz, best) == math.inf:
         return best, row, bu, bv
     top = 1
@@ -322,9 +329,7 @@ def transmittance(ox, oy, oz, dx, dy, dz, tmin, tmax, bounds, links, table, clea
     through = 1.0
     if bounds.shape[0] == 0:
         return through
-    ix = 1.0 / dx
-    iy = 1.0 / dy
-    iz = 1.0 / dz
+    ix, iy, iz = _inverse(dx, dy, dz)
     top = 1
     stack[0] = 0
     while top > 0 and through > 0.0:

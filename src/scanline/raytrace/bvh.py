@@ -101,7 +101,9 @@ class BVH:
         uv = np.empty((r, 2))
         call(_bvh.cast, 50 * r + 1, v.kernel_array(o), v.kernel_array(d), lo, float(hi),
              self.bounds, self.links, self.table, t, row, uv)
-        return Hits(t, np.where(row >= 0, self.order[np.maximum(row, 0)], -1), uv)
+        found = np.full(r, -1, np.int64)
+        found[row >= 0] = self.order[row[row >= 0]]
+        return Hits(t, found, uv)
 
     def __repr__(self):
         return f"<BVH of {len(self)} triangles, {len(self.bounds)} nodes>"

@@ -25,7 +25,8 @@ from ._jit import helper, kernel
 EVENT_USEMTL = 1
 EVENT_MTLLIB = 2
 
-# error codes (err[0]); err = code, line, token start, token end, kind (0 v, 1 vt, 2 vn)
+# error codes (err[0]); err = code, line, token start, token end, kind (0 v, 1 vt, 2 vn),
+# and err[5] the rows noted in ``slow``
 ERR_FEW_COORDS = 1
 ERR_NOT_NUMBER = 2
 ERR_NOT_FINITE = 3
@@ -111,10 +112,12 @@ def _pow10(e):
 
 @helper
 def _number(data, s, e):
-    """(value, ok) of the decimal number data[s:e] (sign, digits, point, exponent):
-    the digits as an integer scaled by a power of ten, one rounding for up to 15
-    significant digits and exponents within 22 (Clinger 1990's fast path); ok is
-    False when the token is not a number.  'nan' and 'inf' give themselves."""
+    """(value, ok, exact) of the decimal number data[s:e] (sign, digits, point,
+    exponent): the digits as an integer scaled by a power of ten -- one rounding, so
+    the correctly rounded double, when the digits' integer is below 2**53 and the
+    power within 10**22 (Clinger 1990's fast path: ``exact``); else close to it, and
+    the caller reads the token again exactly.  ok is False when the token is not a
+    number.  'nan' and 'inf' give themselves."""
     i = s
     neg = False
     if i < e and (data[i] == 45 or data[i] == 43):
@@ -124,11 +127,11 @@ def _number(data, s, e):
         word = e - i
         if word == 3 and (data[i] | 32) == 110 and (data[i + 1] | 32) == 97 \
                 and (data[i + 2] | 32) == 110:
-            return math.nan, True
+            return math.nan, True, True
         if (word == 3 or word == 8) and (data[i] | 32) == 105 and (data[i + 1] | 32) == 110 \
                 and (data[i + 2] | 32) == 102:
-            return -math.inf if neg else math.inf, True
-        return 0.0, False
+            return -math.inf if neg else math.inf, True, True
+        return 0.0, False, False
     mant = np.int64(0)
     digits = 0
     scale = 0
@@ -153,7 +156,7 @@ def _number(data, s, e):
                 scale -= 1
             i += 1
     if not seen:
-        return 0.0, False
+        return 0.0, False, False
     if i < e and (data[i] == 101 or data[i] == 69):
         i += 1
         eneg = False
@@ -161,7 +164,7 @@ def _number(data, s, e):
             eneg = data[i] == 45
             i += 1
         if i >= e:
-            return 0.0, False
+            return 0.0, False, False
         ex = 0
         while i < e and 48 <= data[i] <= 57:
             if ex < 100000:
@@ -169,8 +172,9 @@ def _number(data, s, e):
             i += 1
         scale += -ex if eneg else ex
     if i != e:
-        return 0.0, False
+        return 0.0, False, False
     x = float(mant)
+    exact = mant == 0 or (mant < 9007199254740992 and -22 <= scale <= 22)
     if mant == 0:
         x = 0.0
     elif -22 <= scale <= 22:
@@ -179,7 +183,7 @@ def _number(data, s, e):
         x = x * 10.0 ** scale if scale < 400 else math.inf
     else:
         x = x * 10.0 ** scale if scale > -400 else 0.0
-    return (-x if neg else x), True
+    return (-x if neg else x), True, exact
 
 
 @helper
@@ -246,18 +250,22 @@ def _fail(err, code, line, s, e, kind):
 
 
 @kernel
-def obj_parse(data, totals, pos, uv, nrm, corners, sizes, face_line, events, err):
+def obj_parse(data, totals, pos, uv, nrm, corners, sizes, face_line, events, slow, err):
     """Fill ``pos`` (V, 3), ``uv`` (T, 2), ``nrm`` (N, 3), ``corners`` (K, 3: 0-based
     v, vt, vn; -1 where absent), ``sizes`` and ``face_line`` (F,) and ``events`` (E,
     5: kind, first and end byte of the statement's argument, the faces read before
     it, its line) from the OBJ bytes ``data``, whose :func:`obj_count` gave the array
-    sizes (``totals``: V, T, N, the bounds of absolute indices).  Stops at the first
-    malformed statement, setting ``err``; err[0] stays 0 when all is well."""
+    sizes (``totals``: V, T, N, the bounds of absolute indices).  A v/vt/vn row with
+    a number off the exact fast path is noted in ``slow`` (kind 0/1/2, row, first
+    and end byte of its numbers; err[5] counts them) for the caller to read again.
+    Stops at the first malformed statement, setting ``err``; err[0] stays 0 when all
+    is well."""
     n = data.shape[0]
     counts = np.zeros(6, np.int64)        # v, vt, vn, f, corners, events stored
     limits = np.array([pos.shape[0], uv.shape[0], nrm.shape[0], sizes.shape[0],
                        corners.shape[0], events.shape[0]], np.int64)
     err[0] = 0
+    err[5] = 0
     line = 0
     i = 0
     while i < n:
@@ -277,9 +285,12 @@ def obj_parse(data, totals, pos, uv, nrm, corners, sizes, face_line, events, err
             most = 2 if key == 2 else 3
             got = 0
             j = _skip(data, t, end)
+            first = j
+            inexact = False
             while j < end and data[j] != 35 and got < most:
                 q = _token_end(data, j, end)
-                x, ok = _number(data, j, q)
+                x, ok, exact = _number(data, j, q)
+                inexact = inexact or not exact
                 if not ok:
                     _fail(err, ERR_NOT_NUMBER, line, j, q, k)
                     return
@@ -300,6 +311,12 @@ def obj_parse(data, totals, pos, uv, nrm, corners, sizes, face_line, events, err
                 return
             if key == 2 and got == 1:
                 uv[counts[1], 1] = 0.0
+            if inexact and err[5] < slow.shape[0]:
+                slow[err[5], 0] = k
+                slow[err[5], 1] = counts[k]
+                slow[err[5], 2] = first
+                slow[err[5], 3] = end
+                err[5] += 1
             counts[k] += 1
         elif key == 4:
             f = counts[3]

@@ -144,12 +144,10 @@ def _accessor(doc, buffers, index, filename, kinds=None):
         fail(f"count {count!r} is not a whole number")
     if acc.sparse is not None:
         fail("sparse accessors are not supported")
-    check_mesh_budget("path", count, 0, count * width // 2,
-                      f"{where} of the mesh file {filename!r}", hint="use a smaller mesh file")
     itemsize = np.dtype(dtype).itemsize
     element = itemsize * width
     if acc.bufferView is None:
-        return np.zeros((count, width))
+        fail("has no buffer view (an accessor of zeros): not supported")
     views = doc.bufferViews or []
     if not isinstance(acc.bufferView, int) or not 0 <= acc.bufferView < len(views):
         fail(f"refers to buffer view {acc.bufferView!r}; the file has {len(views)}")
@@ -169,6 +167,8 @@ def _accessor(doc, buffers, index, filename, kinds=None):
     if need > v_len:
         fail(f"{count:,} elements from byte {a_off:,} need {need:,} bytes of buffer view "
              f"{acc.bufferView}, which has {v_len:,}: the accessor is truncated or lies")
+    check_mesh_budget("path", count, 0, count * width // 2,
+                      f"{where} of the mesh file {filename!r}", hint="use a smaller mesh file")
     raw = np.ndarray((count, width), np.dtype(dtype).newbyteorder("<"), buffer=data,
                      offset=v_off + a_off, strides=(stride, itemsize))
     out = raw.astype(np.float64) if dtype is np.float32 or not acc.normalized else \

@@ -92,12 +92,14 @@ def read_obj(data, filename):
     corners = np.zeros((nk, 3), np.int64)
     sizes, face_line = np.zeros(nf, np.int64), np.zeros(nf, np.int64)
     events = np.zeros((ne, 5), np.int64)
-    err = np.zeros(5, np.int64)
+    err = np.zeros(6, np.int64)
     totals = np.array([nv, nt, nn], np.int64)
+    slow = np.zeros((nv + nt + nn, 4), np.int64)
     call(k.obj_parse, 4 * len(buf), buf, totals, pos, uvs, nrm, corners, sizes, face_line,
-         events, err)
+         events, slow, err)
     if err[0]:
         fail(int(err[1]), _message(int(err[0]), err, data, totals))
+    _exactly(data, slow[:int(err[5])], (pos, uvs, nrm))
     if nv == 0:
         raise MeshFileError("the file holds no vertices: it is empty, truncated or not OBJ",
                             file=filename)
@@ -111,6 +113,16 @@ def read_obj(data, filename):
     _split(out, pos, uvs, nrm, corners)
     _materials(out, events, data, filename)
     return out
+
+
+def _exactly(data, rows, arrays):
+    """Read again with Python's float (correctly rounded) the v/vt/vn rows whose
+    numbers the kernel's fast path could not round exactly (more than 15 digits, or
+    powers of ten beyond 22)."""
+    for kind, row, a, b in rows.tolist():
+        target = arrays[kind]
+        words = data[a:b].split()[:target.shape[1]]
+        target[row, :len(words)] = [float(w) for w in words]
 
 
 def _split(out, pos, uvs, nrm, corners):

@@ -431,6 +431,8 @@ def _ply_attributes(data, count, face_data, face_count):
         for names in PLY_COLORS:
             c = columns(table, names, n)
             if c is not None:
+                if c.dtype.kind == "i" and c.dtype.itemsize == 1:
+                    c = c.view(np.uint8)       # meshio reads a binary uchar as int8
                 c = c.astype(np.float64)
                 if np.asarray(table[names[0]]).dtype.kind == "f" and c.max(initial=0) <= 1:
                     c = c * 255

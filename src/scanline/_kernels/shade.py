@@ -197,8 +197,23 @@ def shade_pixels(start, step, faces, table, tface, face_mat, mats, ambient, sour
     attributes (a table of 5 + 3 x 6 columns): each facet takes its material's
     color."""
     height = faces.shape[0]
-    # per source: the unit vector toward a light at infinity (w = 0) and its
-    # attenuation, the same at every point (the per-point formula's values)
+    far, expo = light_setup(sources, mats)
+    scratch = np.empty(FIELDS * CHUNK)
+    xs = np.empty(CHUNK, np.int64)
+    ms = np.empty(CHUNK, np.int64)
+    for lo in range(start * BAND, height, max(step, 1) * BAND):
+        for y in range(lo, min(lo + BAND, height)):
+            shade_row(y, faces, table, tface, face_mat, mats, ambient, sources, far, eye, expo,
+                      gamma_table, thresholds, raster, scratch, xs, ms, shading, spec, mode)
+
+
+@helper
+def light_setup(sources, mats):
+    """What every pixel's lighting shares: per source the unit vector toward a light
+    at infinity (w = 0) and its attenuation, the same at every point (the per-point
+    formula's values), (S, 4); and the one whole exponent n_s of every material,
+    raised by repeated squaring (-1: the materials' exponents differ or are not
+    whole)."""
     ns = sources.shape[0]
     far = np.empty((ns, 4))
     for s in range(ns):
@@ -218,13 +233,7 @@ def shade_pixels(start, step, faces, table, tface, face_mat, mats, ambient, sour
                 same = False
         if same:
             expo = int(n0)
-    scratch = np.empty(FIELDS * CHUNK)
-    xs = np.empty(CHUNK, np.int64)
-    ms = np.empty(CHUNK, np.int64)
-    for lo in range(start * BAND, height, max(step, 1) * BAND):
-        for y in range(lo, min(lo + BAND, height)):
-            shade_row(y, faces, table, tface, face_mat, mats, ambient, sources, far, eye, expo,
-                      gamma_table, thresholds, raster, scratch, xs, ms, shading, spec, mode)
+    return far, expo
 
 
 @helper

@@ -19,7 +19,7 @@ import math
 
 import numpy as np
 
-from ._jit import helper, kernel
+from ._jit import helper, inline, kernel
 
 #: Wrap modes (:data:`scanline.texture.WRAPS`).
 REPEAT = 0
@@ -32,7 +32,7 @@ BILINEAR = 1
 TRILINEAR = 2
 
 
-@helper
+@inline
 def reduced(t, wrap):
     """Texture coordinate ``t`` brought into [0, 1) (repeat), [0, 2) (mirror: the
     period of a mirrored texture) or [-1, 2] (clamp) as a real; NaN and infinities
@@ -48,9 +48,11 @@ def reduced(t, wrap):
     return min(max(t, -1.0), 2.0)
 
 
-@helper
+@inline
 def wrapped(i, n, wrap):
     """Integer texel index ``i`` (any value) wrapped or clamped into 0 .. n - 1."""
+    if i >= 0 and i < n:
+        return i
     if wrap == REPEAT:
         i = i % n
     elif wrap == MIRROR:
@@ -59,7 +61,7 @@ def wrapped(i, n, wrap):
     return min(max(i, 0), n - 1)
 
 
-@helper
+@inline
 def nearest(texels, levels, level, u, v, wrap):
     """The texel whose square holds (u, v) at ``level``: (r, g, b)."""
     base = levels[level, 0]
@@ -71,7 +73,7 @@ def nearest(texels, levels, level, u, v, wrap):
     return texels[k, 0], texels[k, 1], texels[k, 2]
 
 
-@helper
+@inline
 def bilinear(texels, levels, level, u, v, wrap):
     """The four texels around (u, v) at ``level`` weighted by their distances
     (bilinear interpolation between texel centers): (r, g, b)."""
@@ -118,23 +120,27 @@ def level_of_detail(levels, first, count, dudx, dvdx, dudy, dvdy):
     return min(lod, count - 1.0)
 
 
-@helper
+@inline
 def sample(texels, levels, first, count, filter, wrap, u, v, dudx, dvdx, dudy, dvdy):
     """The filtered color (r, g, b) of the texture whose levels are ``first`` ..
     ``first + count - 1`` of ``levels`` at (u, v), the screen derivatives choosing the
     mipmap levels of ``TRILINEAR`` (linear between the two nearest levels)."""
     if filter == NEAREST:
         return nearest(texels, levels, first, u, v, wrap)
-    if filter == BILINEAR or count <= 1:
-        return bilinear(texels, levels, first, u, v, wrap)
-    lod = level_of_detail(levels, first, count, dudx, dvdx, dudy, dvdy)
-    l0 = min(int(lod), count - 1)
-    t = lod - l0
-    r0, g0, b0 = bilinear(texels, levels, first + l0, u, v, wrap)
-    if t <= 0.0 or l0 + 1 >= count:
-        return r0, g0, b0
-    r1, g1, b1 = bilinear(texels, levels, first + l0 + 1, u, v, wrap)
-    return r0 + t * (r1 - r0), g0 + t * (g1 - g0), b0 + t * (b1 - b0)
+    level = 0
+    t = 0.0
+    if filter == TRILINEAR and count > 1:
+        lod = level_of_detail(levels, first, count, dudx, dvdx, dudy, dvdy)
+        level = min(int(lod), count - 1)
+        t = lod - level if level + 1 < count else 0.0
+    r = g = b = 0.0
+    for j in range(2 if t > 0.0 else 1):
+        weight = 1.0 - t if j == 0 else t
+        rj, gj, bj = bilinear(texels, levels, first + level + j, u, v, wrap)
+        r += weight * rj
+        g += weight * gj
+        b += weight * bj
+    return r, g, b
 
 
 @kernel

@@ -155,3 +155,122 @@ def shade_buffer(scene, fb, ids, options):
                   np.ascontiguousarray(sources), homogeneous_eye(scene.eye),
                   *gamma_tables(gamma), fb._raster()[0], token,
                   k.SPECULAR[options.specular if model == "phong" else "phong"], MODE[fb.mode])
+
+
+def texture_rows(materials, gamma):
+    """Every material's texture for :mod:`scanline._kernels.surface`: ``(mat_tex (M,
+    4) int64: first level, level count, filter, wrap (first -1: none), texels (N, 3)
+    float32, levels (L, 3) int64)``, the textures' levels one after the other,
+    decoded with ``gamma``."""
+    from ..texture.texture import FILTER_CODES, WRAP_CODES
+
+    rows = np.full((len(materials), 4), -1, np.int64)
+    texels, levels = [], []
+    at_texel = at_level = 0
+    for i, m in enumerate(materials):
+        if m.texture is None:
+            continue
+        tx, lv = m.texture.kernel_arrays(gamma)
+        shifted = lv.copy()
+        shifted[:, 0] += at_texel
+        rows[i] = at_level, len(lv), FILTER_CODES[m.texture.filter], WRAP_CODES[m.texture.wrap]
+        texels.append(tx)
+        levels.append(shifted)
+        at_texel += len(tx)
+        at_level += len(lv)
+    if not texels:
+        return rows, np.zeros((1, 3), np.float32), np.array([[0, 1, 1]], np.int64)
+    return (rows, v.kernel_array(np.concatenate(texels), np.float32),
+            v.kernel_array(np.concatenate(levels), np.int64))
+
+
+def texturable(fb, scene, options):
+    """True when :func:`shade_textured` can shade ``scene`` (textures only: no bump or
+    environment map; perspective-correct) into ``fb``."""
+    return (drawable(fb, options) and options.texture_mapping == "perspective"
+            and scene.uv is not None
+            and all(m.bump is None and m.environment is None for m in scene.materials))
+
+
+def vertex_light(scene, facets, options):
+    """Gouraud's vertex intensities of ``facets`` in the two parts of
+    :func:`scanline.shading.models.vertex_parts`, (U, 3, 6): A then S, compiled
+    (:func:`scanline._kernels.surface.vertex_light`)."""
+    from .._kernels import surface as k
+    from .._kernels._threads import call_in_chunks
+    from .._kernels.shade import SPECULAR
+    from . import decoded
+
+    sources, ambient = source_rows(options.lights)
+    normals = scene.vertex_normals[facets]
+    back = ~scene.front[facets]
+    if back.any():
+        normals = np.where(back[:, None, None], -normals, normals)
+    points = v.kernel_array(scene.world[facets].reshape(-1, 3))
+    normals = v.kernel_array(normals.reshape(-1, 3))
+    colors = v.kernel_array(decoded(scene.vertex_colors, options.gamma)[facets].reshape(-1, 3))
+    material = v.kernel_array(np.repeat(scene.facet_mesh[facets], 3), np.int64)
+    out = np.empty((len(points), 6))
+    mats = material_rows(scene.materials, options.gamma)
+    eye = homogeneous_eye(scene.eye)
+    spec = SPECULAR[options.specular]
+    call_in_chunks(k.vertex_light, 20 * (1 + len(sources)) * len(points), len(points),
+                   lambda lo, hi: (lo, hi, points, normals, colors, material, mats, ambient,
+                                   np.ascontiguousarray(sources), eye, spec, out))
+    return out.reshape(-1, 3, 6)
+
+
+def shade_textured(scene, fb, ids, options):
+    """:func:`shade_buffer` for scenes with textured materials (:func:`texturable`):
+    the kernel :func:`scanline._kernels.surface.textured_pixels`."""
+    from .._kernels import surface as k
+    from .._kernels._threads import call_in_bands, call_in_chunks
+    from .._kernels.shade import SHADING, SPECULAR
+    from .._kernels.variants import MODE
+    from .._pool import scratch
+    from . import decoded
+    from .models import vertex_parts
+
+    gamma = options.gamma
+    model = options.model
+    sources, ambient = source_rows(options.lights)
+    g = scene.facet_count
+    uv = np.nan_to_num(scene.uv)
+    if model == "phong":
+        normals = np.where(scene.front[:, None, None], scene.vertex_normals,
+                           -scene.vertex_normals) if not scene.front.all() \
+            else scene.vertex_normals
+        attributes = np.concatenate([scene.world, normals,
+                                     np.broadcast_to(decoded(scene.vertex_colors, gamma),
+                                                     (g, 3, 3)), uv], axis=2)
+    else:
+        mark = np.zeros(g, bool)
+        mark[scene.facet] = True
+        seen = np.flatnonzero(mark)
+        attributes = np.zeros((g, 3, 8))
+        if len(seen) and model == "gouraud":
+            attributes[seen, :, :6] = vertex_light(scene, seen, options)
+        elif len(seen):
+            a, spec = vertex_parts(scene, seen, options)
+            attributes[seen, :, :3] = a
+            attributes[seen, :, 3:6] = spec
+        attributes[:, :, 6:] = uv
+    attributes = v.kernel_array(attributes)
+    tface = v.kernel_array(scene.facet, np.int64)
+    n = len(tface)
+    kk = attributes.shape[2]
+    table = scratch("textured triangle attributes", (n, 5 + 3 * kk))
+    tri, q = v.kernel_array(scene.triangles), v.kernel_array(scene.inv_w)
+    tb = v.kernel_array(scene.bary)
+    call_in_chunks(k.attribute_table, 10 * kk * n, n,
+                   lambda lo, hi: (lo, hi, tri, q, tb, tface, attributes, table))
+    mat_tex, texels, levels = texture_rows(scene.materials, gamma)
+    h, w = ids.shape
+    work = h * w * (4 + (8 * len(sources) if model == "phong" else 0))
+    call_in_bands(k.textured_pixels, work, ids, table, tface,
+                  np.ascontiguousarray(scene.facet_mesh, np.int64),
+                  material_rows(scene.materials, gamma), mat_tex, texels, levels, ambient,
+                  np.ascontiguousarray(sources), homogeneous_eye(scene.eye),
+                  *gamma_tables(gamma), fb._raster()[0],
+                  SHADING["phong" if model == "phong" else "vertex"],
+                  SPECULAR[options.specular if model == "phong" else "phong"], MODE[fb.mode])

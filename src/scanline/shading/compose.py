@@ -15,7 +15,7 @@ import numpy as np
 
 from ..errors import ArgumentValueError
 from ..lighting.model import depth_cue as cue_blend
-from .buffer import drawable, shade_buffer
+from .buffer import drawable, shade_buffer, shade_textured, texturable
 from .models import decode, encode, intensities
 from .surface import any_maps, check_maps, texture_coordinates
 
@@ -204,6 +204,11 @@ def shade(fb, scene, layer, options):
     if drawable(fb, options) and not maps:
         shade_buffer(scene, fb, ids, options)
         return ids
+    if maps:
+        check_maps(scene, options)
+        if texturable(fb, scene, options):
+            shade_textured(scene, fb, ids, options)
+            return ids
     ys, xs = np.nonzero(ids >= 0)
     background = background_linear(fb, options.gamma)
     facets, linear = _points(scene, ids, layer.depth, ys, xs, xs.astype(np.float64),

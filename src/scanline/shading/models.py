@@ -147,15 +147,35 @@ def vertex_intensities(scene, facets, options):
     return _gouraud(scene, facets, decoded(scene.vertex_colors, options.gamma), options)
 
 
+def _parts(colors, fn):
+    """The intensities ``fn(colors)`` split in two: the part A the surface colors scale
+    (ambient and diffuse) and the part S = fn(0) they do not (the highlight)."""
+    spec = fn(np.zeros_like(colors))
+    return fn(colors) - spec, spec
+
+
 def _textured(per, colors, texels, fn):
     """Intensities ``fn(colors)`` (U, ..., 3) with the surface colors scaled by each
-    point's texel: T (fn(colors) - S) + S, S = fn(0) the part S_d does not scale (the
-    specular term; :mod:`scanline.shading.surface`); ``per`` maps points to rows."""
-    full = fn(colors)
+    point's texel T: T A + S (:func:`_parts`; :mod:`scanline.shading.surface`);
+    ``per`` maps points to rows."""
     if texels is None:
-        return full[per]
-    spec = fn(np.zeros_like(colors))
-    return texels[(slice(None),) + (None,) * (full.ndim - 2)] * (full - spec)[per] + spec[per]
+        return fn(colors)[per]
+    a, spec = _parts(colors, fn)
+    return texels[(slice(None),) + (None,) * (a.ndim - 2)] * a[per] + spec[per]
+
+
+def vertex_parts(scene, facets, options):
+    """:func:`vertex_intensities` in two parts, A and S (U, 3, 3) each, the part a
+    texel scales and the part it does not (:func:`_parts`)."""
+    facets = np.asarray(facets, np.int64)
+    if options.model in ("flat", "none"):
+        faces, inverse = np.unique(scene.facet_face[facets], return_inverse=True)
+        a, spec = _parts(decode(scene.face_colors[faces], options.gamma),
+                         lambda c: face_intensities(scene, faces, options, c))
+        per = inverse.reshape(-1)
+        return (np.repeat(a[per][:, None], 3, axis=1), np.repeat(spec[per][:, None], 3, axis=1))
+    return _parts(decoded(scene.vertex_colors, options.gamma)[facets],
+                  lambda c: _gouraud_colored(scene, facets, c, options))
 
 
 def intensities(scene, facets, bary, options, texture=None):

@@ -1,0 +1,225 @@
+"""Shading a visibility buffer with texture maps (Hearn & Baker 14-9): the compiled
+form of :func:`scanline.shading.intensities` for textured materials (the numpy form
+is the reference; :mod:`scanline.shading.surface` says what is computed).
+
+Per drawn triangle, :func:`attribute_table` makes the screen-space linear functions
+of 1/w and of K attributes times 1/w (the rasterizer's
+:func:`~scanline._kernels.raster3d.setup`); per pixel, :func:`textured_pixels`
+evaluates them and divides by 1/w's (perspective-correct), so that the texture
+coordinates u, v and their screen derivatives (du/dx = (d(u/w)/dx - u d(1/w)/dx) /
+(1/w), which choose a trilinear texture's levels) are exact for the pixel's point.
+The attributes are, with the :data:`~scanline._kernels.shade.PHONG` token, the
+point, the normal (turned toward the viewer on a back face), the surface color and
+(u, v): the texel scales the color and the illumination runs per pixel
+(:func:`~scanline._kernels.shade.light_chunk`); with
+:data:`~scanline._kernels.shade.VERTEX`, the vertex intensities' part A that the
+surface color scales, the part S it does not (the highlight) and (u, v): I = T A +
+S.  Rows are shared out in bands as in :mod:`scanline._kernels.shade`, whose
+chunked lighting and store this kernel calls.
+"""
+
+import math
+
+import numpy as np
+
+from ._jit import helper, kernel
+from .raster3d import setup
+from .shade import (BAND, CB, CG, CHUNK, CR, FIELDS, IR, NX, PHONG, PX, light_chunk, light_setup,
+                    store_chunk)
+from .texture import sample
+
+#: Scratch fields after the lighting's: u, v, du/dx, dv/dx, du/dy, dv/dy and w (the
+#: reciprocal of 1/w).
+TU = FIELDS
+TDX = FIELDS + 2
+TW = FIELDS + 6
+TEX_FIELDS = FIELDS + 7
+
+
+@kernel
+def attribute_table(lo, hi, tri, q, bary, tface, attributes, table):
+    """Per triangle ``t`` in ``lo .. hi - 1``: ``table[t]`` = x0, y0 (its vertex 0),
+    (value at vertex 0, d/dx, d/dy) of 1/w, then of each of the K attributes of its
+    facet times 1/w (``attributes`` (G, 3, K) at the facet's vertices; an attribute
+    is A_0 + lambda_1 (A_1 - A_0) + lambda_2 (A_2 - A_0)).  NaN for a triangle
+    covering no pixel or of no facet."""
+    nf = attributes.shape[0]
+    k = attributes.shape[2]
+    g = np.empty((4, 3))
+    for t in range(lo, hi):
+        f = tface[t]
+        if not (setup(tri, q, bary, t, g) and f >= 0 and f < nf):
+            for j in range(table.shape[1]):
+                table[t, j] = math.nan
+            continue
+        table[t, 0] = tri[t, 0, 0]
+        table[t, 1] = tri[t, 0, 1]
+        for c in range(3):
+            table[t, 2 + c] = g[1, c]
+        for a in range(k):
+            v0 = attributes[f, 0, a]
+            d1 = attributes[f, 1, a] - v0
+            d2 = attributes[f, 2, a] - v0
+            for c in range(3):
+                table[t, 5 + 3 * a + c] = v0 * g[1, c] + d1 * g[2, c] + d2 * g[3, c]
+
+
+@kernel
+def textured_pixels(start, step, faces, table, tface, face_mat, mats, mat_tex, texels, levels,
+                    ambient, sources, eye, gamma_table, thresholds, raster, shading, spec,
+                    mode):
+    """Shade every pixel with a visible triangle into ``raster``, bands of :data:`BAND`
+    rows ``start``, ``start + step`` ...; the arguments as
+    :func:`scanline._kernels.shade.shade_pixels` takes them, ``table`` from
+    :func:`attribute_table`, and per material ``mat_tex`` (M, 4): its texture's first
+    level in ``levels`` (-1: none), level count, filter and wrap
+    (:mod:`scanline._kernels.texture`; ``texels``, ``levels``: every texture's
+    levels, one after the other)."""
+    height = faces.shape[0]
+    far, expo = light_setup(sources, mats)
+    scratch = np.empty(TEX_FIELDS * CHUNK)
+    xs = np.empty(CHUNK, np.int64)
+    ms = np.empty(CHUNK, np.int64)
+    for lo in range(start * BAND, height, max(step, 1) * BAND):
+        for y in range(lo, min(lo + BAND, height)):
+            textured_row(y, faces, table, tface, face_mat, mats, mat_tex, texels, levels,
+                         ambient, sources, far, eye, expo, gamma_table, thresholds, raster,
+                         scratch, xs, ms, shading, spec, mode)
+
+
+@helper
+def textured_row(y, faces, table, tface, face_mat, mats, mat_tex, texels, levels, ambient,
+                 sources, far, eye, expo, gamma_table, thresholds, raster, s, xs, ms, shading,
+                 spec, mode):
+    """Row ``y``, chunk after chunk of :data:`CHUNK` covered pixels: the attributes
+    of each pixel into the chunk's fields, then :func:`texture_chunk`, the lighting
+    (PHONG) and the store."""
+    width = faces.shape[1]
+    nf = face_mat.shape[0]
+    nt = tface.shape[0]
+    nm = mats.shape[0]
+    k = (table.shape[1] - 5) // 3
+    x = 0
+    while x < width:
+        n = np.int64(0)
+        while n < CHUNK and x < width:
+            t = faces[y, x]
+            if t < 0:
+                x += 1
+                while x < width and faces[y, x] < 0:
+                    x += 1
+                continue
+            f = tface[t] if t < nt else -1
+            faces[y, x] = f
+            end = x + 1
+            most = min(width, x + CHUNK - n)
+            while end < most and faces[y, end] == t:
+                faces[y, end] = f
+                end += 1
+            if f < 0 or f >= nf:
+                x = end
+                continue
+            m = min(max(face_mat[f], 0), nm - 1)
+            x0 = table[t, 0]
+            fy = y - table[t, 1]
+            q0 = table[t, 2] + table[t, 4] * fy
+            qx = table[t, 3]
+            qy = table[t, 4]
+            i = n
+            for px in range(x, end):
+                s[TW * CHUNK + i] = 1.0 / (q0 + qx * (px - x0))
+                i += 1
+            # the attributes: PHONG fields P, N, C then u, v; VERTEX fields A (0 .. 2),
+            # S (3 .. 5) then u, v
+            for a in range(k):
+                at_field = TU + (a - k + 2) if a >= k - 2 else a
+                a0 = table[t, 5 + 3 * a] + table[t, 7 + 3 * a] * fy
+                ax = table[t, 6 + 3 * a]
+                i = n
+                for px in range(x, end):
+                    s[at_field * CHUNK + i] = (a0 + ax * (px - x0)) * s[TW * CHUNK + i]
+                    i += 1
+            ux = table[t, 6 + 3 * (k - 2)]
+            uy = table[t, 7 + 3 * (k - 2)]
+            vx = table[t, 6 + 3 * (k - 1)]
+            vy = table[t, 7 + 3 * (k - 1)]
+            i = n
+            for px in range(x, end):
+                r = s[TW * CHUNK + i]
+                u = s[TU * CHUNK + i]
+                v = s[(TU + 1) * CHUNK + i]
+                s[TDX * CHUNK + i] = (ux - u * qx) * r
+                s[(TDX + 1) * CHUNK + i] = (vx - v * qx) * r
+                s[(TDX + 2) * CHUNK + i] = (uy - u * qy) * r
+                s[(TDX + 3) * CHUNK + i] = (vy - v * qy) * r
+                xs[i] = px
+                ms[i] = m
+                i += 1
+            n += end - x
+            x = end
+        if n == 0:
+            continue
+        texture_chunk(n, s, ms, mat_tex, texels, levels, shading)
+        if len(shading) == PHONG:
+            light_chunk(n, s, ms, True, mats, ambient, sources, far, eye, expo, spec)
+        store_chunk(y, n, s, xs, gamma_table, thresholds, raster, shading, mode)
+
+
+@helper
+def texture_chunk(n, s, ms, mat_tex, texels, levels, shading):
+    """Each pixel's texel T (1 without a texture): PHONG scales the surface color
+    fields by it, VERTEX makes the intensity T A + S in fields 0 .. 2."""
+    nl = levels.shape[0]
+    for i in range(n):
+        m = ms[i]
+        first = mat_tex[m, 0]
+        r = g = b = 1.0
+        if first >= 0 and first < nl:
+            count = min(mat_tex[m, 1], nl - first)
+            r, g, b = sample(texels, levels, first, count, mat_tex[m, 2], mat_tex[m, 3],
+                             s[TU * CHUNK + i], s[(TU + 1) * CHUNK + i], s[TDX * CHUNK + i],
+                             s[(TDX + 1) * CHUNK + i], s[(TDX + 2) * CHUNK + i],
+                             s[(TDX + 3) * CHUNK + i])
+        if len(shading) == PHONG:
+            s[CR * CHUNK + i] *= r
+            s[CG * CHUNK + i] *= g
+            s[CB * CHUNK + i] *= b
+        else:
+            s[i] = r * s[i] + s[3 * CHUNK + i]
+            s[CHUNK + i] = g * s[CHUNK + i] + s[4 * CHUNK + i]
+            s[2 * CHUNK + i] = b * s[2 * CHUNK + i] + s[5 * CHUNK + i]
+
+
+@kernel
+def vertex_light(lo, hi, points, normals, colors, material, mats, ambient, sources, eye, spec,
+                 out):
+    """The illumination model at points ``lo .. hi - 1`` of ``points``, ``normals``
+    (unit, or normalized here) and surface ``colors`` (N, 3) of materials
+    ``material`` (N,) (rows of ``mats``), in two parts: ``out[i, :3]`` = A, the part
+    the surface color scales (ambient and diffuse), ``out[i, 3:]`` = S, the highlight
+    (the model with the color 0): Gouraud's vertex intensities for a textured
+    surface, through the per-pixel lighting's :func:`~scanline._kernels.shade.
+    light_chunk`, a chunk of points at a time."""
+    far, expo = light_setup(sources, mats)
+    s = np.empty(TEX_FIELDS * CHUNK)
+    ms = np.empty(CHUNK, np.int64)
+    nm = mats.shape[0]
+    for c0 in range(lo, hi, CHUNK):
+        n = min(CHUNK, hi - c0)
+        for part in range(2):
+            for i in range(n):
+                p = c0 + i
+                ms[i] = min(max(material[p], 0), nm - 1)
+                for ch in range(3):
+                    s[(PX + ch) * CHUNK + i] = points[p, ch]
+                    s[(NX + ch) * CHUNK + i] = normals[p, ch]
+                    s[(CR + ch) * CHUNK + i] = colors[p, ch] if part == 0 else 0.0
+            light_chunk(n, s, ms, True, mats, ambient, sources, far, eye, expo, spec)
+            for i in range(n):
+                for ch in range(3):
+                    value = s[(IR + ch) * CHUNK + i]
+                    if part == 0:
+                        out[c0 + i, ch] = value
+                    else:
+                        out[c0 + i, 3 + ch] = value
+                        out[c0 + i, ch] -= value

@@ -136,25 +136,25 @@ def _number(data, s, e):
     digits = 0
     scale = 0
     seen = False
-    while i < e and 48 <= data[i] <= 57:
+    point = False
+    while i < e:
+        c = data[i]
+        if c == 46 and not point:            # the decimal point
+            point = True
+            i += 1
+            continue
+        if c < 48 or c > 57:
+            break
         seen = True
-        if digits < 18:
-            mant = mant * 10 + (data[i] - 48)
+        if digits < 18:                      # 18 significant digits kept (< 2**63)
+            mant = mant * 10 + (c - 48)
             if mant:
                 digits += 1
-        else:
+            if point:
+                scale -= 1
+        elif not point:
             scale += 1
         i += 1
-    if i < e and data[i] == 46:
-        i += 1
-        while i < e and 48 <= data[i] <= 57:
-            seen = True
-            if digits < 18:
-                mant = mant * 10 + (data[i] - 48)
-                if mant:
-                    digits += 1
-                scale -= 1
-            i += 1
     if not seen:
         return 0.0, False, False
     if i < e and (data[i] == 101 or data[i] == 69):
@@ -215,7 +215,7 @@ def obj_count(data, counts):
     """counts[:] = statements v, vt, vn, f, face corners, events (usemtl, mtllib),
     l lines, lines."""
     n = data.shape[0]
-    i = 0
+    i = np.int64(0)
     for k in range(8):
         counts[k] = 0
     while i < n:
@@ -266,8 +266,8 @@ def obj_parse(data, totals, pos, uv, nrm, corners, sizes, face_line, events, slo
                        corners.shape[0], events.shape[0]], np.int64)
     err[0] = 0
     err[5] = 0
-    line = 0
-    i = 0
+    line = np.int64(0)
+    i = np.int64(0)
     while i < n:
         end = _line_end(data, i, n)
         line += 1
@@ -292,10 +292,10 @@ def obj_parse(data, totals, pos, uv, nrm, corners, sizes, face_line, events, slo
                 x, ok, exact = _number(data, j, q)
                 inexact = inexact or not exact
                 if not ok:
-                    _fail(err, ERR_NOT_NUMBER, line, j, q, k)
+                    _fail(err, np.int64(ERR_NOT_NUMBER), line, j, q, k)
                     return
                 if not math.isfinite(x):
-                    _fail(err, ERR_NOT_FINITE, line, j, q, k)
+                    _fail(err, np.int64(ERR_NOT_FINITE), line, j, q, k)
                     return
                 if key == 1:
                     pos[counts[0], got] = x
@@ -306,7 +306,7 @@ def obj_parse(data, totals, pos, uv, nrm, corners, sizes, face_line, events, slo
                 got += 1
                 j = _skip(data, q, end)
             if got < need:
-                _fail(err, ERR_FEW_COORDS, line, s, _token_end(data, s, end), k)
+                _fail(err, np.int64(ERR_FEW_COORDS), line, s, _token_end(data, s, end), k)
                 err[3] = end
                 return
             if key == 2 and got == 1:
@@ -337,25 +337,25 @@ def obj_parse(data, totals, pos, uv, nrm, corners, sizes, face_line, events, slo
                         b += 1
                     if b == a:
                         if part == 0:
-                            _fail(err, ERR_NOT_INDEX, line, j, q, 0)
+                            _fail(err, np.int64(ERR_NOT_INDEX), line, j, q, np.int64(0))
                             return
                         corners[c, part] = -1
                     else:
                         value, neg, ok = _index(data, a, b)
                         if not ok:
-                            _fail(err, ERR_NOT_INDEX, line, j, q, part)
+                            _fail(err, np.int64(ERR_NOT_INDEX), line, j, q, part)
                             return
                         if value == 0:
-                            _fail(err, ERR_INDEX_ZERO, line, a, b, part)
+                            _fail(err, np.int64(ERR_INDEX_ZERO), line, a, b, part)
                             return
                         if neg:
                             if value > counts[part]:
-                                _fail(err, ERR_BEFORE_FIRST, line, a, b, part)
+                                _fail(err, np.int64(ERR_BEFORE_FIRST), line, a, b, part)
                                 return
                             corners[c, part] = counts[part] - value
                         else:
                             if value > totals[part]:
-                                _fail(err, ERR_OUT_OF_RANGE, line, a, b, part)
+                                _fail(err, np.int64(ERR_OUT_OF_RANGE), line, a, b, part)
                                 return
                             corners[c, part] = value - 1
                     if b >= q:
@@ -364,12 +364,12 @@ def obj_parse(data, totals, pos, uv, nrm, corners, sizes, face_line, events, slo
                         break
                     a = b + 1
                     if part == 2:
-                        _fail(err, ERR_NOT_INDEX, line, j, q, 0)
+                        _fail(err, np.int64(ERR_NOT_INDEX), line, j, q, np.int64(0))
                         return
                 counts[4] += 1
                 j = _skip(data, q, end)
             if counts[4] - start < 3:
-                _fail(err, ERR_FEW_CORNERS, line, s, end, counts[4] - start)
+                _fail(err, np.int64(ERR_FEW_CORNERS), line, s, end, counts[4] - start)
                 return
             sizes[f] = counts[4] - start
             face_line[f] = line

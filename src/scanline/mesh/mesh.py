@@ -122,6 +122,13 @@ PAIRWISE_CHECK = 8
 def _repeated_vertex(indices, sizes, offsets, n_vertices):
     """The first face that visits a vertex twice, or -1."""
     most = int(sizes.max())
+    if most <= PAIRWISE_CHECK and int(sizes.min()) == most:     # all of one size: columns
+        table = indices.reshape(-1, most)
+        bad = np.zeros(len(table), bool)
+        for i in range(most):
+            for j in range(i + 1, most):
+                bad |= table[:, i] == table[:, j]
+        return int(np.argmax(bad)) if bad.any() else -1
     if most <= PAIRWISE_CHECK:
         # corner q and corner q + d of the same face (d < the face's size - its place)
         place = np.arange(len(indices), dtype=np.int64) - np.repeat(offsets[:-1], sizes)

@@ -219,3 +219,12 @@ def test_round_trip_keeps_geometry_uv_normals_colors_and_material(tmp_path, ext)
     theirs = trimesh.load(tmp_path / f"m.{ext}", force="mesh")
     assert scanline_set(back, decimals=4) == triangle_set(theirs.vertices, theirs.faces,
                                                           decimals=4)
+
+
+def test_compressed_geometry_is_refused_by_name(tmp_path):
+    doc = square_document("square.bin", square_bytes())
+    doc["extensionsRequired"] = ["KHR_draco_mesh_compression"]
+    (tmp_path / "square.bin").write_bytes(square_bytes())
+    (tmp_path / "draco.gltf").write_text(json.dumps(doc))
+    with pytest.raises(MeshFileError, match="requires the extension.*KHR_draco_mesh_compression"):
+        load(tmp_path / "draco.gltf")

@@ -303,3 +303,19 @@ def test_obj_round_trip_keeps_uv_normals_and_polygons(tmp_path):
     assert back.faces == [] or [f.tolist() for f in back.faces] == [[0, 1, 2, 3], [3, 2, 4]]
     theirs = trimesh.load(tmp_path / "m.obj", process=False)
     assert scanline_set(back) == triangle_set(theirs.vertices, theirs.faces)
+
+
+def test_a_material_record_becomes_the_lighting_material_hearn_and_baker_use():
+    from scanline.mesh import MaterialRecord
+    from scanline.screen.prepare import _from_record
+
+    record = MaterialRecord("m", kd=(0.8, 0.4, 0.2), ks=(0.5, 0.5, 0.25), ns=64, d=0.25)
+    square = sl.mesh.Mesh([(0, 0, 0), (1, 0, 0), (1, 1, 0)], [[0, 1, 2]], material=record)
+    assert square.material is record
+    m = _from_record(record)
+    # Kd = k_d S_d with S_d scaled to a largest component of 1; likewise Ks
+    assert m.kd == 0.8 and m.ks == 0.5 and m.shininess == 64 and m.transparency == 0.75
+    np.testing.assert_allclose(m.color, (1.0, 0.5, 0.25))
+    np.testing.assert_allclose(m.specular_color, (1.0, 1.0, 0.5))
+    black = _from_record(MaterialRecord("b", kd=(0, 0, 0)))
+    assert black.kd == 0 and black.ks == sl.lighting.Material().ks

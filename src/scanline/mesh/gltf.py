@@ -35,6 +35,11 @@ COMPONENTS = {5120: np.int8, 5121: np.uint8, 5122: np.int16, 5123: np.uint16,
 #: Components of each accessor type.
 TYPES = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4, "MAT2": 4, "MAT3": 9, "MAT4": 16}
 
+#: Extensions a file may require that change nothing read here (material and
+#: texture extensions: the base color stays).
+SUPPORTED_EXTENSIONS = ("KHR_materials_unlit", "KHR_materials_emissive_strength",
+                        "KHR_mesh_quantization")
+
 #: Deepest node hierarchy followed.
 MAX_DEPTH = 256
 
@@ -72,6 +77,10 @@ def _parse(data, filename):
         fail(f"the file is not a readable glTF file ({text[:200]})")
     if doc is None or not isinstance(doc.accessors, list):
         fail("the file is not a readable glTF file (no glTF document)")
+    required = [e for e in (doc.extensionsRequired or []) if e not in SUPPORTED_EXTENSIONS]
+    if required:
+        fail(f"the file requires the extension(s) {', '.join(map(str, required))}, which "
+             "scanline does not decode (compressed geometry: export it uncompressed)")
     return doc, blob
 
 

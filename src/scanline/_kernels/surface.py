@@ -66,15 +66,17 @@ def attribute_table(lo, hi, tri, q, bary, tface, attributes, table):
 
 @kernel
 def textured_pixels(start, step, faces, table, tface, face_mat, mats, mat_tex, texels, levels,
-                    ambient, sources, eye, gamma_table, thresholds, raster, shading, spec,
-                    mode):
+                    slopes, ambient, sources, eye, gamma_table, thresholds, raster, shading,
+                    spec, mode):
     """Shade every pixel with a visible triangle into ``raster``, bands of :data:`BAND`
     rows ``start``, ``start + step`` ...; the arguments as
     :func:`scanline._kernels.shade.shade_pixels` takes them, ``table`` from
     :func:`attribute_table`, and per material ``mat_tex`` (M, 4): its texture's first
     level in ``levels`` (-1: none), level count, filter and wrap
     (:mod:`scanline._kernels.texture`; ``texels``, ``levels``: every texture's
-    levels, one after the other)."""
+    levels, one after the other); ``slopes``: whether a trilinear texture needs the
+    screen derivatives of u and v.  VERTEX tables of 5 attributes hold A and (u, v)
+    only (no highlight: S = 0)."""
     height = faces.shape[0]
     far, expo = light_setup(sources, mats)
     scratch = np.empty(TEX_FIELDS * CHUNK)
@@ -83,14 +85,14 @@ def textured_pixels(start, step, faces, table, tface, face_mat, mats, mat_tex, t
     for lo in range(start * BAND, height, max(step, 1) * BAND):
         for y in range(lo, min(lo + BAND, height)):
             textured_row(y, faces, table, tface, face_mat, mats, mat_tex, texels, levels,
-                         ambient, sources, far, eye, expo, gamma_table, thresholds, raster,
-                         scratch, xs, ms, shading, spec, mode)
+                         slopes, ambient, sources, far, eye, expo, gamma_table, thresholds,
+                         raster, scratch, xs, ms, shading, spec, mode)
 
 
 @helper
-def textured_row(y, faces, table, tface, face_mat, mats, mat_tex, texels, levels, ambient,
-                 sources, far, eye, expo, gamma_table, thresholds, raster, s, xs, ms, shading,
-                 spec, mode):
+def textured_row(y, faces, table, tface, face_mat, mats, mat_tex, texels, levels, slopes,
+                 ambient, sources, far, eye, expo, gamma_table, thresholds, raster, s, xs, ms,
+                 shading, spec, mode):
     """Row ``y``, chunk after chunk of :data:`CHUNK` covered pixels: the attributes
     of each pixel into the chunk's fields, then :func:`texture_chunk`, the lighting
     (PHONG) and the store."""
@@ -139,19 +141,23 @@ def textured_row(y, faces, table, tface, face_mat, mats, mat_tex, texels, levels
                 for px in range(x, end):
                     s[at_field * CHUNK + i] = (a0 + ax * (px - x0)) * s[TW * CHUNK + i]
                     i += 1
-            ux = table[t, 6 + 3 * (k - 2)]
-            uy = table[t, 7 + 3 * (k - 2)]
-            vx = table[t, 6 + 3 * (k - 1)]
-            vy = table[t, 7 + 3 * (k - 1)]
+            if slopes:
+                ux = table[t, 6 + 3 * (k - 2)]
+                uy = table[t, 7 + 3 * (k - 2)]
+                vx = table[t, 6 + 3 * (k - 1)]
+                vy = table[t, 7 + 3 * (k - 1)]
+                i = n
+                for px in range(x, end):
+                    r = s[TW * CHUNK + i]
+                    u = s[TU * CHUNK + i]
+                    v = s[(TU + 1) * CHUNK + i]
+                    s[TDX * CHUNK + i] = (ux - u * qx) * r
+                    s[(TDX + 1) * CHUNK + i] = (vx - v * qx) * r
+                    s[(TDX + 2) * CHUNK + i] = (uy - u * qy) * r
+                    s[(TDX + 3) * CHUNK + i] = (vy - v * qy) * r
+                    i += 1
             i = n
             for px in range(x, end):
-                r = s[TW * CHUNK + i]
-                u = s[TU * CHUNK + i]
-                v = s[(TU + 1) * CHUNK + i]
-                s[TDX * CHUNK + i] = (ux - u * qx) * r
-                s[(TDX + 1) * CHUNK + i] = (vx - v * qx) * r
-                s[(TDX + 2) * CHUNK + i] = (uy - u * qy) * r
-                s[(TDX + 3) * CHUNK + i] = (vy - v * qy) * r
                 xs[i] = px
                 ms[i] = m
                 i += 1
@@ -159,16 +165,17 @@ def textured_row(y, faces, table, tface, face_mat, mats, mat_tex, texels, levels
             x = end
         if n == 0:
             continue
-        texture_chunk(n, s, ms, mat_tex, texels, levels, shading)
+        texture_chunk(n, s, ms, mat_tex, texels, levels, k > 5, shading)
         if len(shading) == PHONG:
             light_chunk(n, s, ms, True, mats, ambient, sources, far, eye, expo, spec)
         store_chunk(y, n, s, xs, gamma_table, thresholds, raster, shading, mode)
 
 
 @helper
-def texture_chunk(n, s, ms, mat_tex, texels, levels, shading):
+def texture_chunk(n, s, ms, mat_tex, texels, levels, highlight, shading):
     """Each pixel's texel T (1 without a texture): PHONG scales the surface color
-    fields by it, VERTEX makes the intensity T A + S in fields 0 .. 2."""
+    fields by it, VERTEX makes the intensity T A + S in fields 0 .. 2 (T A without
+    ``highlight``)."""
     nl = levels.shape[0]
     for i in range(n):
         m = ms[i]
@@ -185,16 +192,21 @@ def texture_chunk(n, s, ms, mat_tex, texels, levels, shading):
             s[CG * CHUNK + i] *= g
             s[CB * CHUNK + i] *= b
         else:
-            s[i] = r * s[i] + s[3 * CHUNK + i]
-            s[CHUNK + i] = g * s[CHUNK + i] + s[4 * CHUNK + i]
-            s[2 * CHUNK + i] = b * s[2 * CHUNK + i] + s[5 * CHUNK + i]
+            s[i] *= r
+            s[CHUNK + i] *= g
+            s[2 * CHUNK + i] *= b
+            if highlight:
+                s[i] += s[3 * CHUNK + i]
+                s[CHUNK + i] += s[4 * CHUNK + i]
+                s[2 * CHUNK + i] += s[5 * CHUNK + i]
 
 
 @kernel
 def vertex_light(lo, hi, points, normals, colors, material, mats, ambient, sources, eye, spec,
                  out):
     """The illumination model at points ``lo .. hi - 1`` of ``points``, ``normals``
-    (unit, or normalized here) and surface ``colors`` (N, 3) of materials
+    (unit, or normalized here) and surface ``colors`` (N, 3; or (1, 3): one color
+    for all) of materials
     ``material`` (N,) (rows of ``mats``), in two parts: ``out[i, :3]`` = A, the part
     the surface color scales (ambient and diffuse), ``out[i, 3:]`` = S, the highlight
     (the model with the color 0): Gouraud's vertex intensities for a textured
@@ -204,6 +216,9 @@ def vertex_light(lo, hi, points, normals, colors, material, mats, ambient, sourc
     s = np.empty(TEX_FIELDS * CHUNK)
     ms = np.empty(CHUNK, np.int64)
     nm = mats.shape[0]
+    one = colors.shape[0] == 1
+    hi = min(hi, points.shape[0], normals.shape[0], material.shape[0], out.shape[0],
+             colors.shape[0] if not one else hi)
     for c0 in range(lo, hi, CHUNK):
         n = min(CHUNK, hi - c0)
         for part in range(2):
@@ -213,7 +228,7 @@ def vertex_light(lo, hi, points, normals, colors, material, mats, ambient, sourc
                 for ch in range(3):
                     s[(PX + ch) * CHUNK + i] = points[p, ch]
                     s[(NX + ch) * CHUNK + i] = normals[p, ch]
-                    s[(CR + ch) * CHUNK + i] = colors[p, ch] if part == 0 else 0.0
+                    s[(CR + ch) * CHUNK + i] = colors[0 if one else p, ch] if part == 0 else 0.0
             light_chunk(n, s, ms, True, mats, ambient, sources, far, eye, expo, spec)
             for i in range(n):
                 for ch in range(3):

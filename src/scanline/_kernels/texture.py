@@ -2,9 +2,10 @@
 at texture coordinates (u, v), nearest, bilinear or trilinear (mipmapped, Williams
 1983), with the coordinates wrapped (repeat, mirror) or clamped.
 
-A texture's mipmap pyramid is one array ``texels`` (N, 3) float32 (level after level,
-each row after row from the bottom: row j holds v in [j/h, (j+1)/h)) and a table
-``levels`` (L, 3) int64 of each level's first texel, width and height.  Texel (i, j)
+A texture's mipmap pyramid is one array ``texels`` (3 N,) float32, the R, G and B of
+N texels one after the other (level after level, each row after row from the
+bottom: row j holds v in [j/h, (j+1)/h)), and a table ``levels`` (L, 3) int64 of
+each level's first texel, width and height.  Texel (i, j)
 of a w x h level covers u in [i/w, (i+1)/w): its center is at ((i + 1/2)/w, (j +
 1/2)/h).
 
@@ -16,8 +17,6 @@ large for an integer is never converted).
 """
 
 import math
-
-import numpy as np
 
 from ._jit import helper, inline, kernel
 
@@ -32,18 +31,30 @@ BILINEAR = 1
 TRILINEAR = 2
 
 
+#: Above this magnitude every double is a whole number (2^52): its fraction is 0.
+WHOLE = 4503599627370496.0
+
+
+@inline
+def floor_of(t):
+    """floor(t) as an integer for |t| < :data:`WHOLE` (a truncation and a step, cheaper
+    than the library's floor)."""
+    i = int(t)
+    return i - 1 if t < i else i
+
+
 @inline
 def reduced(t, wrap):
     """Texture coordinate ``t`` brought into [0, 1) (repeat), [0, 2) (mirror: the
     period of a mirrored texture) or [-1, 2] (clamp) as a real; NaN and infinities
-    give 0."""
-    if not math.isfinite(t):
-        return 0.0
+    give 0, and so do coordinates past 2^52 for the wraps (whole numbers there)."""
+    if not abs(t) < WHOLE:              # NaN, infinite, or no fraction left
+        return min(max(t, -1.0), 2.0) if wrap == CLAMP and math.isfinite(t) else 0.0
     if wrap == REPEAT:
-        r = t - np.floor(t)
+        r = t - floor_of(t)
         return r if r < 1.0 else 0.0
     if wrap == MIRROR:
-        r = t - 2.0 * np.floor(0.5 * t)
+        r = t - 2.0 * floor_of(0.5 * t)
         return r if r < 2.0 else 0.0
     return min(max(t, -1.0), 2.0)
 
@@ -67,10 +78,10 @@ def nearest(texels, levels, level, u, v, wrap):
     base = levels[level, 0]
     w = levels[level, 1]
     h = levels[level, 2]
-    i = wrapped(int(np.floor(reduced(u, wrap) * w)), w, wrap)
-    j = wrapped(int(np.floor(reduced(v, wrap) * h)), h, wrap)
-    k = base + j * w + i
-    return texels[k, 0], texels[k, 1], texels[k, 2]
+    i = wrapped(floor_of(reduced(u, wrap) * w), w, wrap)
+    j = wrapped(floor_of(reduced(v, wrap) * h), h, wrap)
+    k = 3 * (base + j * w + i)
+    return texels[k], texels[k + 1], texels[k + 2]
 
 
 @inline
@@ -82,24 +93,27 @@ def bilinear(texels, levels, level, u, v, wrap):
     h = levels[level, 2]
     x = reduced(u, wrap) * w - 0.5
     y = reduced(v, wrap) * h - 0.5
-    fx = np.floor(x)
-    fy = np.floor(y)
+    fx = floor_of(x)
+    fy = floor_of(y)
     ax = x - fx
     ay = y - fy
-    i0 = wrapped(int(fx), w, wrap)
-    i1 = wrapped(int(fx) + 1, w, wrap)
-    j0 = base + wrapped(int(fy), h, wrap) * w
-    j1 = base + wrapped(int(fy) + 1, h, wrap) * w
+    i0 = 3 * wrapped(fx, w, wrap)
+    i1 = 3 * wrapped(fx + 1, w, wrap)
+    j0 = 3 * (base + wrapped(fy, h, wrap) * w)
+    j1 = 3 * (base + wrapped(fy + 1, h, wrap) * w)
     w00 = (1.0 - ax) * (1.0 - ay)
     w10 = ax * (1.0 - ay)
     w01 = (1.0 - ax) * ay
     w11 = ax * ay
-    r = (w00 * texels[j0 + i0, 0] + w10 * texels[j0 + i1, 0] + w01 * texels[j1 + i0, 0]
-         + w11 * texels[j1 + i1, 0])
-    g = (w00 * texels[j0 + i0, 1] + w10 * texels[j0 + i1, 1] + w01 * texels[j1 + i0, 1]
-         + w11 * texels[j1 + i1, 1])
-    b = (w00 * texels[j0 + i0, 2] + w10 * texels[j0 + i1, 2] + w01 * texels[j1 + i0, 2]
-         + w11 * texels[j1 + i1, 2])
+    k00 = j0 + i0
+    k10 = j0 + i1
+    k01 = j1 + i0
+    k11 = j1 + i1
+    r = w00 * texels[k00] + w10 * texels[k10] + w01 * texels[k01] + w11 * texels[k11]
+    g = (w00 * texels[k00 + 1] + w10 * texels[k10 + 1] + w01 * texels[k01 + 1]
+         + w11 * texels[k11 + 1])
+    b = (w00 * texels[k00 + 2] + w10 * texels[k10 + 2] + w01 * texels[k01 + 2]
+         + w11 * texels[k11 + 2])
     return r, g, b
 
 

@@ -159,7 +159,7 @@ def shade_buffer(scene, fb, ids, options):
 
 def texture_rows(materials, gamma):
     """Every material's texture for :mod:`scanline._kernels.surface`: ``(mat_tex (M,
-    4) int64: first level, level count, filter, wrap (first -1: none), texels (N, 3)
+    4) int64: first level, level count, filter, wrap (first -1: none), texels (3 N,)
     float32, levels (L, 3) int64)``, the textures' levels one after the other,
     decoded with ``gamma``."""
     from ..texture.texture import FILTER_CODES, WRAP_CODES
@@ -176,10 +176,10 @@ def texture_rows(materials, gamma):
         rows[i] = at_level, len(lv), FILTER_CODES[m.texture.filter], WRAP_CODES[m.texture.wrap]
         texels.append(tx)
         levels.append(shifted)
-        at_texel += len(tx)
+        at_texel += len(tx) // 3
         at_level += len(lv)
     if not texels:
-        return rows, np.zeros((1, 3), np.float32), np.array([[0, 1, 1]], np.int64)
+        return rows, np.zeros(3, np.float32), np.array([[0, 1, 1]], np.int64)
     return (rows, v.kernel_array(np.concatenate(texels), np.float32),
             v.kernel_array(np.concatenate(levels), np.int64))
 
@@ -195,21 +195,27 @@ def texturable(fb, scene, options):
 def vertex_light(scene, facets, options):
     """Gouraud's vertex intensities of ``facets`` in the two parts of
     :func:`scanline.shading.models.vertex_parts`, (U, 3, 6): A then S, compiled
-    (:func:`scanline._kernels.surface.vertex_light`)."""
+    (:func:`scanline._kernels.surface.vertex_light`; the facets' colors as one row
+    where they are one color broadcast)."""
     from .._kernels import surface as k
     from .._kernels._threads import call_in_chunks
     from .._kernels.shade import SPECULAR
     from . import decoded
 
     sources, ambient = source_rows(options.lights)
-    normals = scene.vertex_normals[facets]
-    back = ~scene.front[facets]
+    every = len(facets) == scene.facet_count
+    pick = (lambda a: a) if every else (lambda a: a[facets])
+    normals = pick(scene.vertex_normals)
+    back = ~pick(scene.front)
     if back.any():
         normals = np.where(back[:, None, None], -normals, normals)
-    points = v.kernel_array(scene.world[facets].reshape(-1, 3))
+    points = v.kernel_array(pick(scene.world).reshape(-1, 3))
     normals = v.kernel_array(normals.reshape(-1, 3))
-    colors = v.kernel_array(decoded(scene.vertex_colors, options.gamma)[facets].reshape(-1, 3))
-    material = v.kernel_array(np.repeat(scene.facet_mesh[facets], 3), np.int64)
+    colors = decoded(scene.vertex_colors, options.gamma)
+    colors = (colors[(0,) * (colors.ndim - 1)].reshape(1, 3)
+              if colors.size and not any(colors.strides[:-1]) else pick(colors).reshape(-1, 3))
+    colors = v.kernel_array(colors)
+    material = v.kernel_array(np.repeat(pick(scene.facet_mesh), 3), np.int64)
     out = np.empty((len(points), 6))
     mats = material_rows(scene.materials, options.gamma)
     eye = homogeneous_eye(scene.eye)
@@ -247,14 +253,16 @@ def shade_textured(scene, fb, ids, options):
         mark = np.zeros(g, bool)
         mark[scene.facet] = True
         seen = np.flatnonzero(mark)
-        attributes = np.zeros((g, 3, 8))
+        # no highlight anywhere (S = 0): the table holds A and (u, v) only
+        shiny = any(m.ks > 0 for m in scene.materials) and len(sources) > 0
+        attributes = np.zeros((g, 3, 8 if shiny else 5))
         if len(seen) and model == "gouraud":
-            attributes[seen, :, :6] = vertex_light(scene, seen, options)
+            parts = vertex_light(scene, seen, options)
         elif len(seen):
-            a, spec = vertex_parts(scene, seen, options)
-            attributes[seen, :, :3] = a
-            attributes[seen, :, 3:6] = spec
-        attributes[:, :, 6:] = uv
+            parts = np.concatenate(vertex_parts(scene, seen, options), axis=2)
+        if len(seen):
+            attributes[seen, :, :6 if shiny else 3] = parts[..., :6 if shiny else 3]
+        attributes[:, :, -2:] = uv
     attributes = v.kernel_array(attributes)
     tface = v.kernel_array(scene.facet, np.int64)
     n = len(tface)
@@ -265,11 +273,14 @@ def shade_textured(scene, fb, ids, options):
     call_in_chunks(k.attribute_table, 10 * kk * n, n,
                    lambda lo, hi: (lo, hi, tri, q, tb, tface, attributes, table))
     mat_tex, texels, levels = texture_rows(scene.materials, gamma)
+    slopes = any(m.texture is not None and m.texture.filter == "trilinear"
+                 for m in scene.materials)
     h, w = ids.shape
     work = h * w * (4 + (8 * len(sources) if model == "phong" else 0))
     call_in_bands(k.textured_pixels, work, ids, table, tface,
                   np.ascontiguousarray(scene.facet_mesh, np.int64),
-                  material_rows(scene.materials, gamma), mat_tex, texels, levels, ambient,
+                  material_rows(scene.materials, gamma), mat_tex, texels, levels, slopes,
+                  ambient,
                   np.ascontiguousarray(sources), homogeneous_eye(scene.eye),
                   *gamma_tables(gamma), fb._raster()[0],
                   SHADING["phong" if model == "phong" else "vertex"],

@@ -34,9 +34,9 @@ def pyramid(image):
 
 def packed(levels):
     """The levels as the sampling kernels take them
-    (:mod:`scanline._kernels.texture`): one (N, 3) float32 array, level after level
-    and each level's rows bottom first, and the table (L, 3) int64 of each level's
-    first texel, width and height."""
+    (:mod:`scanline._kernels.texture`): one (3 N,) float32 array of the texels' R, G,
+    B, level after level and each level's rows bottom first, and the table (L, 3)
+    int64 of each level's first texel, width and height."""
     table = np.zeros((len(levels), 3), np.int64)
     at = 0
     for i, lv in enumerate(levels):
@@ -46,4 +46,4 @@ def packed(levels):
     texels = np.empty((at, 3), np.float32)
     for (first, w, h), lv in zip(table, levels):
         texels[first:first + w * h] = lv[::-1].reshape(-1, 3)
-    return texels, table
+    return texels.reshape(-1), table

@@ -130,7 +130,7 @@ class Texture:
         return pyramid(self.image)
 
     def kernel_arrays(self, gamma=1.0):
-        """``(texels (N, 3) float32, levels (L, 3) int64)`` as
+        """``(texels (3 N,) float32, levels (L, 3) int64)`` as
         :mod:`scanline._kernels.texture` takes them, the texels decoded with
         ``gamma`` (linear values; 1: the stored ones), only the first level unless
         the filter is trilinear.  Kept per gamma."""

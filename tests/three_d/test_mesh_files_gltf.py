@@ -9,6 +9,8 @@ import warnings
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 import scanline as sl
 from scanline.mesh import MeshFileError, MeshFileWarning, load, load_all
@@ -228,3 +230,28 @@ def test_compressed_geometry_is_refused_by_name(tmp_path):
     (tmp_path / "draco.gltf").write_text(json.dumps(doc))
     with pytest.raises(MeshFileError, match="requires the extension.*KHR_draco_mesh_compression"):
         load(tmp_path / "draco.gltf")
+
+
+@pytest.mark.boundscheck
+@settings(max_examples=60, deadline=None)
+@given(ops=st.lists(st.tuples(st.floats(0, 1), st.binary(min_size=1, max_size=8)),
+                    min_size=1, max_size=6))
+def test_mutated_glb_files_are_read_or_refused(ops):
+    import tempfile
+
+    with tempfile.TemporaryDirectory() as folder:
+        sl.mesh.sphere(resolution=(6, 4)).save(f"{folder}/s.glb")
+        with open(f"{folder}/s.glb", "rb") as f:
+            data = bytearray(f.read())
+        for where, what in ops:
+            at = int(where * len(data))
+            data[at:at + len(what)] = what
+        with open(f"{folder}/m.glb", "wb") as f:
+            f.write(bytes(data))
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                mesh = load(f"{folder}/m.glb")
+        except MeshFileError:
+            return
+    assert np.isfinite(mesh.vertices).all()

@@ -8,6 +8,8 @@ import warnings
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 import scanline as sl
 from scanline.mesh import MeshFileError, MeshFileWarning, load, load_all
@@ -319,3 +321,40 @@ def test_a_material_record_becomes_the_lighting_material_hearn_and_baker_use():
     np.testing.assert_allclose(m.specular_color, (1.0, 1.0, 0.5))
     black = _from_record(MaterialRecord("b", kd=(0, 0, 0)))
     assert black.kd == 0 and black.ks == sl.lighting.Material().ks
+
+
+TOKENS = [b"/", b"//", b"-", b"-1", b"0", b"99999999999999999999", b"1e999", b"nan", b"\n",
+          b"f ", b"v ", b"vt ", b"vn ", b"usemtl ", b"mtllib ", b" ", b"#", b"\xff", b".", b"e"]
+
+
+@pytest.mark.boundscheck
+@settings(max_examples=60, deadline=None)
+@given(ops=st.lists(st.tuples(st.floats(0, 1), st.one_of(st.binary(max_size=8),
+                                                         st.sampled_from(TOKENS))),
+                    min_size=1, max_size=8))
+def test_mutated_obj_files_are_read_or_refused_by_the_compiled_kernels(ops):
+    """The kernels compiled (a small file would run their Python twins): whatever the
+    bytes, a mesh with finite vertices and faces in range, or a MeshFileError."""
+    import tempfile
+
+    from scanline._kernels import _jit
+
+    data = bytearray(BLENDER_CUBE.encode())
+    for where, what in ops:
+        at = int(where * len(data))
+        data[at:at + len(what)] = what
+    with tempfile.TemporaryDirectory() as folder:
+        path = f"{folder}/m.obj"
+        with open(path, "wb") as f:
+            f.write(bytes(data))
+        before, _jit.COMPILE = _jit.COMPILE, "always"
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                mesh = load(path)
+        except MeshFileError:
+            return
+        finally:
+            _jit.COMPILE = before
+    assert np.isfinite(mesh.vertices).all()
+    assert 0 <= mesh.face_indices.min() and mesh.face_indices.max() < len(mesh.vertices)

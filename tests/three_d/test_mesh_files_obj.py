@@ -358,3 +358,18 @@ def test_mutated_obj_files_are_read_or_refused_by_the_compiled_kernels(ops):
             _jit.COMPILE = before
     assert np.isfinite(mesh.vertices).all()
     assert 0 <= mesh.face_indices.min() and mesh.face_indices.max() < len(mesh.vertices)
+
+
+def test_vertex_colors_as_trimesh_writes_them(tmp_path):
+    tm = trimesh.creation.icosphere(subdivisions=1)
+    tm.visual.vertex_colors = np.random.default_rng(4).integers(0, 256, (len(tm.vertices), 4))
+    (tmp_path / "c.obj").write_text(trimesh.exchange.obj.export_obj(tm, include_color=True))
+    mine = load(tmp_path / "c.obj")
+    theirs = trimesh.load(tmp_path / "c.obj", process=False)
+    assert mine.color_on == "vertex"
+    assert scanline_set(mine, extra=mine.colors[:, :3]) == triangle_set(
+        theirs.vertices, theirs.faces, extra=theirs.visual.vertex_colors[:, :3])
+    # a w, or extra words that are not numbers: no colors
+    (tmp_path / "w.obj").write_text("v 0 0 0 1\nv 1 0 0 1\nv 0 1 0 1\nf 1 2 3\n")
+    (tmp_path / "x.obj").write_text("v 0 0 0 1 x y\nv 1 0 0 1 1 1\nv 0 1 0 0 0 0\nf 1 2 3\n")
+    assert load(tmp_path / "w.obj").colors is None and load(tmp_path / "x.obj").colors is None

@@ -251,7 +251,8 @@ def _fail(err, code, line, s, e, kind):
 
 @kernel
 def obj_parse(data, totals, pos, uv, nrm, corners, sizes, face_line, events, slow, err):
-    """Fill ``pos`` (V, 3), ``uv`` (T, 2), ``nrm`` (N, 3), ``corners`` (K, 3: 0-based
+    """Fill ``pos`` (V, 6: x, y, z and, where a line has six numbers, a color r, g, b;
+    err[6] counts those lines), ``uv`` (T, 2), ``nrm`` (N, 3), ``corners`` (K, 3: 0-based
     v, vt, vn; -1 where absent), ``sizes`` and ``face_line`` (F,) and ``events`` (E,
     5: kind, first and end byte of the statement's argument, the faces read before
     it, its line) from the OBJ bytes ``data``, whose :func:`obj_count` gave the array
@@ -266,6 +267,7 @@ def obj_parse(data, totals, pos, uv, nrm, corners, sizes, face_line, events, slo
                        corners.shape[0], events.shape[0]], np.int64)
     err[0] = 0
     err[5] = 0
+    err[6] = 0
     line = np.int64(0)
     i = np.int64(0)
     while i < n:
@@ -282,7 +284,7 @@ def obj_parse(data, totals, pos, uv, nrm, corners, sizes, face_line, events, slo
             if counts[k] >= limits[k]:
                 return
             need = 1 if key == 2 else 3
-            most = 2 if key == 2 else 3
+            most = 2 if key == 2 else 6 if key == 1 else 3
             got = 0
             j = _skip(data, t, end)
             first = j
@@ -290,6 +292,9 @@ def obj_parse(data, totals, pos, uv, nrm, corners, sizes, face_line, events, slo
             while j < end and data[j] != 35 and got < most:
                 q = _token_end(data, j, end)
                 x, ok, exact = _number(data, j, q)
+                if got >= 3 and not (ok and math.isfinite(x)):
+                    got = 3                   # extra values that are not numbers: no color
+                    break
                 inexact = inexact or not exact
                 if not ok:
                     _fail(err, np.int64(ERR_NOT_NUMBER), line, j, q, k)
@@ -311,6 +316,8 @@ def obj_parse(data, totals, pos, uv, nrm, corners, sizes, face_line, events, slo
                 return
             if key == 2 and got == 1:
                 uv[counts[1], 1] = 0.0
+            if key == 1 and got == 6:
+                err[6] += 1
             if inexact and err[5] < slow.shape[0]:
                 slow[err[5], 0] = k
                 slow[err[5], 1] = counts[k]

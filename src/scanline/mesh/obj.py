@@ -2,7 +2,8 @@
 Advanced Visualizer manual, appendix B1).
 
 Statements read: ``v x y z [w ...]`` positions, ``vt u [v]`` texture coordinates,
-``vn x y z`` normals, ``f`` faces of corners ``v``, ``v/vt``, ``v//vn`` or ``v/vt/vn``
+``vn x y z`` normals (``v x y z r g b``: a vertex color, as MeshLab and trimesh write
+it, kept when every vertex has one), ``f`` faces of corners ``v``, ``v/vt``, ``v//vn`` or ``v/vt/vn``
 (1-based; a negative index counts back from the last element read), ``mtllib`` and
 ``usemtl`` (materials, :mod:`scanline.mesh.materials`).  ``o``, ``g``, ``s`` and the
 free-form statements are skipped; ``l`` lines are skipped with one
@@ -36,12 +37,13 @@ MAX_MTL_BYTES = 64 << 20
 
 class ObjContent:
     """What an OBJ file holds, as arrays: the mesh vertices (split by (v, vt, vn)),
-    their uv and normals (None unless every corner has one), the faces (flat), the
+    their uv and normals (None unless every corner has one) and colors (None unless
+    every ``v`` line has one), the faces (flat), the
     line of each face, each face's material number (-1: none) and the materials
     (:class:`~scanline.mesh.materials.MaterialRecord` or None where ``usemtl`` names
     an unknown material), in the order first used."""
 
-    __slots__ = ("vertices", "uv", "normals", "indices", "sizes", "face_line",
+    __slots__ = ("vertices", "uv", "normals", "colors", "indices", "sizes", "face_line",
                  "face_material", "materials")
 
 
@@ -88,11 +90,11 @@ def read_obj(data, filename):
     nv, nt, nn, nf, nk, ne, nl, _ = (int(c) for c in counts)
     check_mesh_budget("path", nv + nk, nf, nk, f"reading the mesh file {filename!r}",
                       hint="use a smaller mesh file")
-    pos, uvs, nrm = np.zeros((nv, 3)), np.zeros((nt, 2)), np.zeros((nn, 3))
+    pos, uvs, nrm = np.zeros((nv, 6)), np.zeros((nt, 2)), np.zeros((nn, 3))
     corners = np.zeros((nk, 3), np.int64)
     sizes, face_line = np.zeros(nf, np.int64), np.zeros(nf, np.int64)
     events = np.zeros((ne, 5), np.int64)
-    err = np.zeros(6, np.int64)
+    err = np.zeros(7, np.int64)
     totals = np.array([nv, nt, nn], np.int64)
     slow = np.zeros((nv + nt + nn, 4), np.int64)
     call(k.obj_parse, 4 * len(buf), buf, totals, pos, uvs, nrm, corners, sizes, face_line,
@@ -110,7 +112,14 @@ def read_obj(data, filename):
                       MeshFileWarning, stacklevel=4)
     out = ObjContent()
     out.sizes, out.face_line = sizes, face_line
-    _split(out, pos, uvs, nrm, corners)
+    colors = pos[:, 3:] if err[6] == nv else None
+    source = _split(out, uvs, nrm, corners, nv)
+    out.vertices = pos[:, :3] if source is None else pos[source, :3]
+    out.colors = None
+    if colors is not None:         # v x y z r g b: reals 0..1 (or 0..255 where above 1)
+        colors = colors if source is None else colors[source]
+        scale = 255.0 if colors.max(initial=0) <= 1 else 1.0
+        out.colors = np.clip(np.round(colors * scale), 0, 255).astype(np.uint8)
     _materials(out, events, data, filename)
     return out
 
@@ -121,12 +130,17 @@ def _exactly(data, rows, arrays):
     powers of ten beyond 22)."""
     for kind, row, a, b in rows.tolist():
         target = arrays[kind]
-        words = data[a:b].split()[:target.shape[1]]
-        target[row, :len(words)] = [float(w) for w in words]
+        for column, word in enumerate(data[a:b].split(b"#")[0].split()[:target.shape[1]]):
+            try:
+                target[row, column] = float(word)
+            except ValueError:          # an extra value that is no number (no color then)
+                break
 
 
-def _split(out, pos, uvs, nrm, corners):
-    """Mesh vertices from the corners' (v, vt, vn) triples (module docstring)."""
+def _split(out, uvs, nrm, corners, nv):
+    """Mesh vertices from the corners' (v, vt, vn) triples (module docstring): sets
+    the faces' indices, uv and normals, and returns the position row of each mesh
+    vertex (None: the positions as they are)."""
     from .._kernels._jit import call
     from .._kernels.objtext import obj_split
 
@@ -134,24 +148,26 @@ def _split(out, pos, uvs, nrm, corners):
     has_n = len(nrm) > 0 and (corners[:, 2] >= 0).any()
     v = corners[:, 0]
     if not has_t and not has_n:
-        out.vertices, out.uv, out.normals, out.indices = pos, None, None, v
-        return
-    same_t = not has_t or (len(uvs) == len(pos) and np.array_equal(corners[:, 1], v))
-    same_n = not has_n or (len(nrm) == len(pos) and np.array_equal(corners[:, 2], v))
-    if same_t and same_n:        # one index for all three (trimesh writes so): no split
-        out.vertices, out.indices = pos, v
+        out.uv, out.normals, out.indices = None, None, v
+        return None
+    same_t = not has_t or (len(uvs) == nv and np.array_equal(corners[:, 1], v))
+    same_n = not has_n or (len(nrm) == nv and np.array_equal(corners[:, 2], v))
+    if same_t and same_n:
+        # one index for all three (trimesh writes so): no split
+        out.indices = v
         out.uv = uvs if has_t else None
         out.normals = nrm if has_n else None
-        return
+        return None
     size = 1 << max(int(2 * len(corners)).bit_length(), 4)
     table = np.full(size, -1, np.int64)
     vertex = np.zeros(len(corners), np.int64)
     unique = np.zeros((len(corners), 3), np.int64)
     count = call(obj_split, 3 * len(corners), corners, table, vertex, unique)
     unique = unique[:count]
-    out.vertices, out.indices = pos[unique[:, 0]], vertex
+    out.indices = vertex
     out.uv = uvs[unique[:, 1]] if has_t and (unique[:, 1] >= 0).all() else None
     out.normals = nrm[unique[:, 2]] if has_n and (unique[:, 2] >= 0).all() else None
+    return unique[:, 0]
 
 
 def _materials(out, events, data, filename):
@@ -206,6 +222,7 @@ def _mesh(content, filename, name, faces=None):
 
     indices, sizes, lines = content.indices, content.sizes, content.face_line
     vertices, uv, normals = content.vertices, content.uv, content.normals
+    colors = content.colors
     if faces is not None:
         indices = indices[np.repeat(faces, sizes)]
         sizes, lines = sizes[faces], lines[faces]
@@ -213,8 +230,10 @@ def _mesh(content, filename, name, faces=None):
         vertices = vertices[used]
         uv = uv[used] if uv is not None else None
         normals = normals[used] if normals is not None else None
+        colors = colors[used] if colors is not None else None
     try:
-        return Mesh(vertices, Flat(indices, sizes), normals=normals, uv=uv, name=name)
+        return Mesh(vertices, Flat(indices, sizes), normals=normals, uv=uv, name=name,
+                    colors=colors, color_on="vertex" if colors is not None else None)
     except ArgumentValueError as error:
         text = str(error)
         which = re.match(r"face (\d+)", text)

@@ -255,3 +255,13 @@ def test_mutated_glb_files_are_read_or_refused(ops):
         except MeshFileError:
             return
     assert np.isfinite(mesh.vertices).all()
+
+
+def test_degenerate_triangles_are_skipped_with_a_warning(tmp_path):
+    data = bytearray(square_bytes())
+    data[128:140] = np.array([0, 1, 2, 0, 0, 3], np.uint16).tobytes()
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        mesh = load(broken(tmp_path, lambda d: None, bytes(data)))
+    assert mesh.faces.tolist() == [[0, 1, 2]]
+    assert any("accessor 3: 1 degenerate triangle(s)" in str(w.message) for w in caught)

@@ -342,6 +342,17 @@ def _primitive(doc, buffers, prim, filename, name):
                                 file=filename)
     else:
         faces = np.arange(nv - nv % 3, dtype=np.int64)
+    triangles = faces.reshape(-1, 3)
+    flat = ((triangles[:, 0] == triangles[:, 1]) | (triangles[:, 1] == triangles[:, 2])
+            | (triangles[:, 0] == triangles[:, 2]))
+    if flat.any():
+        # exporters leave degenerate triangles (a vertex twice) in index lists: they
+        # cover nothing, and a mesh face visits each vertex once
+        from .files import MeshFileWarning
+
+        warnings.warn(f"{filename}: {where}: {int(flat.sum())} degenerate triangle(s) (a "
+                      "vertex repeated) skipped", MeshFileWarning, stacklevel=5)
+        triangles = triangles[~flat]
     extra = {}
     normal = getattr(attributes, "NORMAL", None)
     if normal is not None:
@@ -358,7 +369,7 @@ def _primitive(doc, buffers, prim, filename, name):
         extra["colors"] = np.round(np.clip(c, 0, 1) * 255).astype(np.uint8)
         extra["color_on"] = "vertex"
     try:
-        mesh = Mesh(vertices, faces.reshape(-1, 3), name=name, **extra)
+        mesh = Mesh(vertices, triangles, name=name, **extra)
     except ArgumentValueError as error:
         raise MeshFileError(f"{where}: the primitive's mesh is broken: {error}",
                             file=filename) from None

@@ -28,7 +28,7 @@ if TYPE_CHECKING:   # what the lazy attributes are, for type checkers and editor
     from . import viewing as viewing, visible as visible, lighting as lighting
     from . import shading as shading, rendering as rendering, screen as screen
     from . import budget as budget, mpl as mpl, texture as texture
-    from . import raytrace as raytrace
+    from . import raytrace as raytrace, radiosity as radiosity
     from .texture import Texture as Texture
     from .rendering import render as render
     from .depthbuffer import DepthBuffer as DepthBuffer
@@ -86,6 +86,7 @@ _LAZY = {
     "render": ("scanline.rendering", "render"),
     "rendering": ("scanline.rendering", None),
     "raytrace": ("scanline.raytrace", None),
+    "radiosity": ("scanline.radiosity", None),
     "screen": ("scanline.screen", None),
     "budget": ("scanline.budget", None),
     "mpl": ("scanline.mpl", None),

@@ -1,0 +1,295 @@
+"""Compiled form-factor kernels: rows of the form-factor matrix by the hemicube
+(Cohen and Greenberg 1985) and by ray casting (Wallace, Elmquist and Haines 1989).
+
+Every write goes to ``out[r, j]`` with ``r`` a row of the loop and ``j`` a patch
+number of the loop (0 <= j < P), or to the local buffers at pixel indices clamped to
+their shape: nothing outside the arrays, whatever the coordinates (NaN corners are
+refused by the API layer; a NaN projection fails every comparison and draws nothing).
+"""
+
+import math
+
+import numpy as np
+from numba import prange
+
+from .._kernels._jit import helper, parallel_kernel
+from ..raytrace._bvh import STACK, transmittance
+
+
+@helper
+def _frame(quads, normal, i):
+    """The hemicube's axes at patch ``i``: (n, u, w), n the normal, u along the
+    patch's first edge (made perpendicular to n), w = n x u."""
+    nx, ny, nz = normal[i, 0], normal[i, 1], normal[i, 2]
+    ex = quads[i, 1, 0] - quads[i, 0, 0]
+    ey = quads[i, 1, 1] - quads[i, 0, 1]
+    ez = quads[i, 1, 2] - quads[i, 0, 2]
+    d = ex * nx + ey * ny + ez * nz
+    ex -= d * nx
+    ey -= d * ny
+    ez -= d * nz
+    length = math.sqrt(ex * ex + ey * ey + ez * ez)
+    if not length > 0.0:               # (a patch's edge is never along its normal)
+        ex, ey, ez = (1.0, 0.0, 0.0) if abs(nx) < 0.9 else (0.0, 1.0, 0.0)
+        d = ex * nx + ey * ny + ez * nz
+        ex -= d * nx
+        ey -= d * ny
+        ez -= d * nz
+        length = math.sqrt(ex * ex + ey * ey + ez * ez)
+    ex /= length
+    ey /= length
+    ez /= length
+    axes = np.empty((3, 3))
+    axes[0, 0], axes[0, 1], axes[0, 2] = nx, ny, nz
+    axes[1, 0], axes[1, 1], axes[1, 2] = ex, ey, ez
+    axes[2, 0] = ny * ez - nz * ey
+    axes[2, 1] = nz * ex - nx * ez
+    axes[2, 2] = nx * ey - ny * ex
+    return axes
+
+
+@helper
+def _face_axes(axes, f, view):
+    """``view`` (3, 3) := the axes of hemicube face ``f``: looking direction, the
+    image's horizontal and vertical.  Face 0 is the top (looking along n; image
+    axes u, w); faces 1-4 the half sides looking along +u, -u, +w, -w (horizontal the
+    other tangent, vertical n)."""
+    if f == 0:
+        look, hor, ver = 0, 1, 2
+        sign = 1.0
+    else:
+        look = 1 if f <= 2 else 2
+        hor = 2 if f <= 2 else 1
+        ver = 0
+        sign = 1.0 if f % 2 == 1 else -1.0
+    for k in range(3):
+        view[0, k] = sign * axes[look, k]
+        view[1, k] = axes[hor, k]
+        view[2, k] = axes[ver, k]
+
+
+@helper
+def _clip_project(quads, j, cx, cy, cz, view, near, half, ylo, px, py):
+    """Patch ``j`` in the face's view: its corners relative to the eye (cx, cy, cz),
+    clipped to depth > ``near`` (Sutherland-Hodgman against one plane) and projected
+    to pixel coordinates (x / depth, y / depth scaled by ``half`` cells per unit,
+    pixel centres at integers; ``ylo`` the image's lowest y).  Returns the number of
+    vertices written to ``px``, ``py`` (0 when nothing is in front)."""
+    a = np.empty(4)
+    h = np.empty(4)
+    g = np.empty(4)
+    ahead = 0
+    for k in range(4):
+        dx = quads[j, k, 0] - cx
+        dy = quads[j, k, 1] - cy
+        dz = quads[j, k, 2] - cz
+        a[k] = dx * view[0, 0] + dy * view[0, 1] + dz * view[0, 2]
+        h[k] = dx * view[1, 0] + dy * view[1, 1] + dz * view[1, 2]
+        g[k] = dx * view[2, 0] + dy * view[2, 1] + dz * view[2, 2]
+        if a[k] > near:
+            ahead += 1
+    if ahead == 0:
+        return 0
+    m = 0
+    for k in range(4):
+        n = (k + 1) % 4
+        if a[k] > near:
+            px[m] = h[k] / a[k]
+            py[m] = g[k] / a[k]
+            m += 1
+        if (a[k] > near) != (a[n] > near):
+            t = (near - a[k]) / (a[n] - a[k])
+            px[m] = (h[k] + t * (h[n] - h[k])) / near
+            py[m] = (g[k] + t * (g[n] - g[k])) / near
+            m += 1
+    for k in range(m):
+        px[k] = (px[k] + 1.0) * half - 0.5
+        py[k] = (py[k] - ylo) * half - 0.5
+    return m
+
+
+@helper
+def _draw(j, px, py, m, plane, ids, depth, rows, cols, half, ylo):
+    """Scan-convert the convex polygon (``px``, ``py``, ``m`` vertices) of patch ``j``
+    into the item buffer ``ids`` with the z-buffer ``depth`` (rows x cols used):
+    a pixel centre inside (edge functions of one sign) takes ``j`` where the patch's
+    plane (``plane``: its normal in the view's axes and its offset) is nearer along
+    the pixel's ray than what the buffer holds."""
+    area = 0.0
+    for k in range(m):
+        n = (k + 1) % m
+        area += px[k] * py[n] - px[n] * py[k]
+    if not abs(area) > 1e-12:
+        return
+    s = 1.0 if area > 0 else -1.0
+    x0 = px[0]
+    x1 = px[0]
+    y0 = py[0]
+    y1 = py[0]
+    for k in range(1, m):
+        x0 = min(x0, px[k])
+        x1 = max(x1, px[k])
+        y0 = min(y0, py[k])
+        y1 = max(y1, py[k])
+    if not (x1 >= 0.0 and y1 >= 0.0 and x0 <= cols - 1.0 and y0 <= rows - 1.0):
+        return
+    c0 = int(math.ceil(max(x0, 0.0)))
+    c1 = int(math.floor(min(x1, cols - 1.0)))
+    r0 = int(math.ceil(max(y0, 0.0)))
+    r1 = int(math.floor(min(y1, rows - 1.0)))
+    for r in range(r0, r1 + 1):
+        y = float(r)
+        yv = (y + 0.5) / half + ylo
+        for c in range(c0, c1 + 1):
+            x = float(c)
+            inside = True
+            for k in range(m):
+                n = (k + 1) % m
+                if s * ((px[n] - px[k]) * (y - py[k]) - (py[n] - py[k]) * (x - px[k])) < 0.0:
+                    inside = False
+                    break
+            if not inside:
+                continue
+            xv = (x + 0.5) / half - 1.0
+            den = plane[0] + plane[1] * xv + plane[2] * yv
+            if den == 0.0:
+                continue
+            t = plane[3] / den
+            if t > 0.0 and t < depth[r, c]:
+                depth[r, c] = t
+                ids[r, c] = j
+
+
+@helper
+def hemicube_row(i, quads, centre, normal, near, res, top, side, row):
+    """Row ``i`` of the form factors by the hemicube: the five faces drawn as item
+    buffers of patch numbers by the z-buffer, each pixel's delta form factor (``top``
+    (res, res), ``side`` (res / 2, res)) added to ``row[j]`` of the patch j seen
+    there, if j faces patch i (a back face hides what is behind it but sends
+    nothing)."""
+    p = quads.shape[0]
+    axes = _frame(quads, normal, i)
+    view = np.empty((3, 3))
+    plane = np.empty(4)
+    px = np.empty(8)
+    py = np.empty(8)
+    ids = np.empty((res, res), np.int64)
+    depth = np.empty((res, res))
+    cx, cy, cz = centre[i, 0], centre[i, 1], centre[i, 2]
+    half = res / 2.0
+    for j in range(p):
+        row[j] = 0.0
+    for f in range(5):
+        _face_axes(axes, f, view)
+        rows = res if f == 0 else res // 2
+        ylo = -1.0 if f == 0 else 0.0
+        for r in range(rows):
+            for c in range(res):
+                ids[r, c] = -1
+                depth[r, c] = np.inf
+        for j in range(p):
+            if j == i:
+                continue
+            m = _clip_project(quads, j, cx, cy, cz, view, near, half, ylo, px, py)
+            if m < 3:
+                continue
+            for k in range(3):
+                plane[k] = (normal[j, 0] * view[k, 0] + normal[j, 1] * view[k, 1]
+                            + normal[j, 2] * view[k, 2])
+            plane[3] = (normal[j, 0] * (centre[j, 0] - cx) + normal[j, 1] * (centre[j, 1] - cy)
+                        + normal[j, 2] * (centre[j, 2] - cz))
+            _draw(j, px, py, m, plane, ids, depth, rows, res, half, ylo)
+        for r in range(rows):
+            for c in range(res):
+                j = ids[r, c]
+                if j < 0 or j >= p:
+                    continue
+                facing = (normal[j, 0] * (cx - centre[j, 0]) + normal[j, 1] * (cy - centre[j, 1])
+                          + normal[j, 2] * (cz - centre[j, 2]))
+                if facing > 0.0:
+                    row[j] += top[r, c] if f == 0 else side[r, c]
+
+
+@parallel_kernel
+def hemicube_rows(sources, quads, centre, normal, near, res, top, side, out):
+    """Rows ``sources`` of the form-factor matrix by the hemicube into ``out`` (R, P),
+    the rows in parallel."""
+    for r in prange(sources.shape[0]):
+        i = sources[r]
+        if i < 0 or i >= quads.shape[0]:
+            continue
+        hemicube_row(i, quads, centre, normal, near, res, top, side, out[r])
+
+
+@helper
+def raycast_row(i, quads, centre, normal, k, bounds, links, table, clear, stack, row):
+    """Row ``i`` by ray casting: for every patch j, k x k points y on j (centres of
+    the cells of its bilinear parameters, each of area dA = |dP/ds x dP/dt| / k**2),
+    F_ij = sum of cos(theta_i) cos(theta_j) dA / (pi r**2 + dA) over the points seen
+    from the centre of i (a shadow ray through the bounding volume hierarchy):
+    Wallace, Elmquist and Haines 1989, equation 4."""
+    p = quads.shape[0]
+    cx, cy, cz = centre[i, 0], centre[i, 1], centre[i, 2]
+    nx, ny, nz = normal[i, 0], normal[i, 1], normal[i, 2]
+    for j in range(p):
+        total = 0.0
+        if j != i:
+            for a in range(k):
+                t = (a + 0.5) / k
+                for b in range(k):
+                    s = (b + 0.5) / k
+                    w0 = (1 - s) * (1 - t)
+                    w1 = s * (1 - t)
+                    w2 = s * t
+                    w3 = (1 - s) * t
+                    yx = (w0 * quads[j, 0, 0] + w1 * quads[j, 1, 0] + w2 * quads[j, 2, 0]
+                          + w3 * quads[j, 3, 0])
+                    yy = (w0 * quads[j, 0, 1] + w1 * quads[j, 1, 1] + w2 * quads[j, 2, 1]
+                          + w3 * quads[j, 3, 1])
+                    yz = (w0 * quads[j, 0, 2] + w1 * quads[j, 1, 2] + w2 * quads[j, 2, 2]
+                          + w3 * quads[j, 3, 2])
+                    dx = yx - cx
+                    dy = yy - cy
+                    dz = yz - cz
+                    r2 = dx * dx + dy * dy + dz * dz
+                    if not r2 > 0.0:
+                        continue
+                    rn = math.sqrt(r2)
+                    ci = (dx * nx + dy * ny + dz * nz) / rn
+                    cj = -(dx * normal[j, 0] + dy * normal[j, 1] + dz * normal[j, 2]) / rn
+                    if ci <= 0.0 or cj <= 0.0:
+                        continue
+                    # dP/ds and dP/dt of the bilinear patch at (s, t)
+                    sx = ((1 - t) * (quads[j, 1, 0] - quads[j, 0, 0])
+                          + t * (quads[j, 2, 0] - quads[j, 3, 0]))
+                    sy = ((1 - t) * (quads[j, 1, 1] - quads[j, 0, 1])
+                          + t * (quads[j, 2, 1] - quads[j, 3, 1]))
+                    sz = ((1 - t) * (quads[j, 1, 2] - quads[j, 0, 2])
+                          + t * (quads[j, 2, 2] - quads[j, 3, 2]))
+                    tx = ((1 - s) * (quads[j, 3, 0] - quads[j, 0, 0])
+                          + s * (quads[j, 2, 0] - quads[j, 1, 0]))
+                    ty = ((1 - s) * (quads[j, 3, 1] - quads[j, 0, 1])
+                          + s * (quads[j, 2, 1] - quads[j, 1, 1]))
+                    tz = ((1 - s) * (quads[j, 3, 2] - quads[j, 0, 2])
+                          + s * (quads[j, 2, 2] - quads[j, 1, 2]))
+                    ax = sy * tz - sz * ty
+                    ay = sz * tx - sx * tz
+                    az = sx * ty - sy * tx
+                    da = math.sqrt(ax * ax + ay * ay + az * az) / (k * k)
+                    if transmittance(cx, cy, cz, dx, dy, dz, 1e-6, 1.0 - 1e-6, bounds, links,
+                                     table, clear, stack) <= 0.0:
+                        continue
+                    total += ci * cj * da / (math.pi * r2 + da)
+        row[j] = total
+
+
+@parallel_kernel
+def raycast_rows(sources, quads, centre, normal, k, bounds, links, table, clear, out):
+    """Rows ``sources`` of the form-factor matrix by ray casting into ``out`` (R, P),
+    the rows in parallel."""
+    for r in prange(sources.shape[0]):
+        i = sources[r]
+        if i < 0 or i >= quads.shape[0]:
+            continue
+        stack = np.empty(STACK, np.int64)
+        raycast_row(i, quads, centre, normal, k, bounds, links, table, clear, stack, out[r])

@@ -1,0 +1,188 @@
+"""Form factors between patches (Hearn & Baker, section 14-7, "radiosity lighting
+model"): F_ij, the fraction of the energy leaving patch i that arrives at patch j,
+
+    F_ij = 1 / A_i  integral over A_i, A_j of  cos(theta_i) cos(theta_j) / (pi r**2) V dA_j dA_i
+
+(V = 1 where the two points see each other), approximated from the centre of patch i.
+
+* **hemicube** (Cohen and Greenberg 1985): a half cube of ``resolution`` x
+  ``resolution`` cells on the top face (and half that on the four sides) is set on
+  the patch; every other patch is projected onto its faces and scan-converted with a
+  z-buffer into an item buffer; each cell of the cube carries a *delta form factor*,
+  dA / (pi (x**2 + y**2 + 1)**2) on the top and z dA / (pi (y**2 + z**2 + 1)**2) on a
+  side, and F_ij is the sum of the delta form factors of the cells where j is seen.
+* **ray-casting** (area to differential area; Wallace, Elmquist and Haines 1989):
+  ``resolution`` x ``resolution`` points on patch j, each seen or not from the centre
+  of i by a shadow ray through a bounding volume hierarchy
+  (:class:`scanline.raytrace.BVH`), F_ij = sum of cos cos dA / (pi r**2 + dA).
+
+The hemicube's rows come from the centre of the *shooting* patch and the ray cast's
+rows too, which is what progressive refinement needs (a row per shot).
+
+References
+----------
+C. M. Goral, K. E. Torrance, D. P. Greenberg and B. Battaile, "Modeling the
+interaction of light between diffuse surfaces", SIGGRAPH '84, 213-222.
+M. F. Cohen and D. P. Greenberg, "The hemi-cube: a radiosity solution for complex
+environments", SIGGRAPH '85, 31-40.
+J. R. Wallace, K. A. Elmquist and E. A. Haines, "A ray tracing algorithm for
+progressive radiosity", SIGGRAPH '89, 315-324.
+"""
+
+from typing import Any, Optional
+
+import numpy as np
+
+from .. import _validate as v
+from ..errors import ArgumentValueError
+from .patches import Patches, patches
+
+#: The methods of :func:`form_factors`.
+METHODS = ("hemicube", "ray-casting")
+
+#: Default resolution: hemicube cells per side of the top face; ray-casting sample
+#: points per side of a patch.
+RESOLUTION = {"hemicube": 100, "ray-casting": 4}
+
+#: Largest resolution of each method.
+MAX_RESOLUTION = {"hemicube": 2048, "ray-casting": 64}
+
+
+def as_patches(meshes: Any, subdivisions: int = 8) -> Patches:
+    """``meshes`` subdivided (:func:`~scanline.radiosity.patches.patches`), or the
+    :class:`Patches` given."""
+    return meshes if isinstance(meshes, Patches) else patches(meshes, subdivisions)
+
+
+def delta_form_factors(resolution: int):
+    """The hemicube's delta form factors (Cohen and Greenberg 1985, section 4): the top
+    face (res, res), rows from y = -1 up, and a side face (res / 2, res), rows from the
+    patch's plane (z = 0) up; a cell of side 2 / res at (x, y) on the top holds
+    dA / (pi (x**2 + y**2 + 1)**2), at (y, z) on a side z dA / (pi (y**2 + z**2 + 1)**2).
+    Together they add up to 1 (less the cells' discretization error)."""
+    res = resolution
+    c = (np.arange(res) + 0.5) / (res / 2) - 1.0
+    da = (2.0 / res) ** 2
+    top = da / (np.pi * (c[None, :] ** 2 + c[:, None] ** 2 + 1.0) ** 2)
+    z = c[res // 2:]
+    side = z[:, None] * da / (np.pi * (c[None, :] ** 2 + z[:, None] ** 2 + 1.0) ** 2)
+    return np.ascontiguousarray(top), np.ascontiguousarray(side)
+
+
+def check_resolution(method: str, resolution: Optional[int]) -> int:
+    """``resolution`` checked for ``method`` (None: its default)."""
+    if resolution is None:
+        return RESOLUTION[method]
+    res = v.positive_int("resolution", resolution, 2 if method == "hemicube" else 1)
+    if res > MAX_RESOLUTION[method]:
+        raise ArgumentValueError(f"resolution must be at most {MAX_RESOLUTION[method]} for "
+                                 f"method={method!r}, got {res}")
+    if method == "hemicube" and res % 2:
+        raise ArgumentValueError(f"resolution of a hemicube must be even (its sides are half "
+                                 f"cubes of resolution / 2 rows), got {res}")
+    return res
+
+
+class RowSource:
+    """Rows of the form-factor matrix of ``patches`` on demand, by ``method`` at
+    ``resolution`` (the progressive solution asks for one row per shot)."""
+
+    def __init__(self, patches: Patches, method: str = "hemicube",
+                 resolution: Optional[int] = None):
+        self.method = v.choice("method", method, METHODS)
+        self.resolution = check_resolution(self.method, resolution)
+        self.patches = patches
+        self.quads = v.kernel_array(patches.quads)
+        self.centre = v.kernel_array(patches.centre)
+        self.normal = v.kernel_array(patches.normal)
+        size = float(np.ptp(patches.vertices, axis=0).max())
+        self.near = 1e-9 * size
+        if self.method == "hemicube":
+            self.top, self.side = delta_form_factors(self.resolution)
+        else:
+            from ..raytrace import BVH
+
+            self.tree = BVH(patches.triangles())
+            self.clear = np.zeros(len(self.tree))
+
+    def rows(self, sources: Any) -> np.ndarray:
+        """The rows ``sources`` (patch numbers), (len(sources), P)."""
+        from .._kernels._jit import call
+        from . import _formfactors as k
+
+        src = np.ascontiguousarray(sources, np.int64).reshape(-1)
+        p = len(self.patches)
+        out = np.zeros((len(src), p))
+        # one row (a shot of the progressive solution): the serial row helper, which
+        # spares the start of the parallel loop's threads
+        one = len(src) == 1 and 0 <= src[0] < p
+        if self.method == "hemicube":
+            res = self.resolution
+            work = len(src) * (60 * p + 4 * res * res)
+            if one:
+                call(k.hemicube_row, work, int(src[0]), self.quads, self.centre, self.normal,
+                     self.near, res, self.top, self.side, out[0])
+            else:
+                call(k.hemicube_rows, work, src, self.quads, self.centre, self.normal,
+                     self.near, res, self.top, self.side, out)
+        else:
+            t = self.tree
+            work = len(src) * p * self.resolution ** 2 * 40
+            if one:
+                call(k.raycast_row, work, int(src[0]), self.quads, self.centre, self.normal,
+                     self.resolution, t.bounds, t.links, t.table, self.clear,
+                     np.empty(k.STACK, np.int64), out[0])
+            else:
+                call(k.raycast_rows, work, src, self.quads, self.centre, self.normal,
+                     self.resolution, t.bounds, t.links, t.table, self.clear, out)
+        return out
+
+
+def check_matrix_budget(n: int, copies: int = 1) -> None:
+    """Refuse, before it is allocated, an n x n matrix (``copies`` of it) past the
+    memory budget (:mod:`scanline.budget`)."""
+    from ..budget import check
+
+    check(8 * n * n * copies, "meshes", f"a {n:,} x {n:,} form-factor matrix",
+          "give fewer faces or a smaller subdivisions, or use method='progressive' "
+          "(one row at a time)")
+
+
+def form_factors(meshes: Any, subdivisions: int = 8, method: str = "hemicube",
+                 resolution: Optional[int] = None) -> np.ndarray:
+    """The form factors F_ij between the patches of ``meshes``.
+
+    Parameters
+    ----------
+    meshes : Mesh, list of Mesh, or Patches
+        Subdivided by :func:`~scanline.radiosity.patches.patches` (each face into
+        ``subdivisions`` x ``subdivisions`` patches); :class:`Patches` as they are.
+    subdivisions : int
+    method : {"hemicube", "ray-casting"}
+    resolution : int, optional
+        Hemicube: cells per side of the top face (even; default 100).  Ray casting:
+        sample points per side of each receiving patch (default 4).
+
+    Returns
+    -------
+    ndarray (P, P)
+        Row i: the fraction of the energy leaving patch i that reaches each patch j.
+        In a closed room every row adds up to 1, and A_i F_ij = A_j F_ji
+        (reciprocity), both up to the method's discretization.
+
+    Examples
+    --------
+    >>> import numpy as np, scanline as sl
+    >>> cube = sl.mesh.cube(2.0)
+    >>> room = sl.mesh.Mesh(cube.vertices, cube.faces[:, ::-1])      # the faces turned inward
+    >>> f = sl.radiosity.form_factors(room, subdivisions=1, resolution=64)
+    >>> f.shape, round(float(f[0].sum()), 3)          # a closed room: every row adds up to 1
+    ((6, 6), 1.0)
+    >>> round(float(f[0, 1]), 2)       # from the centre of a face to the opposite face
+    0.24
+    """
+    method = v.choice("method", method, METHODS)
+    res = check_resolution(method, resolution)
+    pts = as_patches(meshes, subdivisions)
+    check_matrix_budget(len(pts))
+    return RowSource(pts, method, res).rows(np.arange(len(pts)))

@@ -1,0 +1,279 @@
+"""Meshes subdivided into patches, the radiosity method's unknowns (Hearn & Baker,
+section 14-7; Goral, Torrance, Greenberg and Battaile 1984).
+
+Each face of each mesh is cut into ``subdivisions`` x ``subdivisions`` patches: a
+quadrilateral by its bilinear grid (n x n quadrilaterals), a triangle by its
+barycentric grid (n x n triangles), a larger polygon by a fan of triangles first.
+A patch is stored as four corners -- a triangle repeats its third -- with its area,
+its centre (the area centroid), its unit normal (Newell's), and the surface's
+emission E and reflectance rho per RGB channel.
+
+The patches of one face share their corner vertices (the *nodes* whose radiosities
+Gouraud shading interpolates, Cohen and Greenberg 1985, section 5); faces do not
+share nodes, so a corner of the room keeps both walls' colors apart.
+"""
+
+from dataclasses import dataclass
+from typing import Any, List, Sequence
+
+import numpy as np
+
+from .. import _validate as v
+from ..errors import ArgumentTypeError, ArgumentValueError
+
+#: Most patches a scene may have: the form factors are an n x n matrix and a
+#: hemicube renders every patch once for every patch (n**2 work).
+MAX_PATCHES = 60_000
+
+#: Largest subdivision of a face (patches per side).
+MAX_SUBDIVISIONS = 256
+
+#: A patch whose area is below this fraction of the scene's squared size is
+#: degenerate (its normal and form factors are undefined).
+DEGENERATE = 1e-12
+
+
+@dataclass(frozen=True)
+class Patches:
+    """The patches of a scene.
+
+    Attributes
+    ----------
+    vertices : ndarray (V, 3)
+        The nodes: corners of patches, shared by the patches of one face.
+    corners : ndarray of int64 (P, 4)
+        Each patch's corners, counterclockwise seen from its front (a triangle
+        repeats its third corner).
+    area, centre, normal : ndarray (P,), (P, 3), (P, 3)
+    emission, reflectance : ndarray (P, 3)
+        E and rho per RGB channel (linear).
+    mesh, face : ndarray of int64 (P,)
+        The mesh (its place in the list given) and the face each patch comes from.
+    """
+    vertices: np.ndarray
+    corners: np.ndarray
+    area: np.ndarray
+    centre: np.ndarray
+    normal: np.ndarray
+    emission: np.ndarray
+    reflectance: np.ndarray
+    mesh: np.ndarray
+    face: np.ndarray
+
+    def __len__(self) -> int:
+        return len(self.corners)
+
+    @property
+    def quads(self) -> np.ndarray:
+        """The patches' corner positions, (P, 4, 3)."""
+        return self.vertices[self.corners]
+
+    def triangles(self) -> np.ndarray:
+        """Two triangles per patch, (2P, 3, 3) (a triangle patch's second one is
+        degenerate, which a ray never hits)."""
+        q = self.quads
+        return np.concatenate([q[:, [0, 1, 2]], q[:, [0, 2, 3]]])
+
+    def with_values(self, emission: Any = None, reflectance: Any = None) -> "Patches":
+        """The same patches with other emission or reflectance (see :func:`patches`)."""
+        n_meshes = int(self.mesh.max()) + 1
+        e = self.emission if emission is None else _per_patch(
+            "emission", emission, self.mesh, n_meshes, upper=None)
+        r = self.reflectance if reflectance is None else _per_patch(
+            "reflectance", reflectance, self.mesh, n_meshes, upper=1.0)
+        return Patches(self.vertices, self.corners, self.area, self.centre, self.normal, e, r,
+                       self.mesh, self.face)
+
+    def __repr__(self) -> str:
+        return f"<Patches: {len(self)} patches, {len(self.vertices)} nodes>"
+
+
+def mesh_list(meshes: Any) -> List[Any]:
+    """``meshes`` as a list of :class:`~scanline.mesh.Mesh` (one mesh, or a list)."""
+    from ..mesh import Mesh
+
+    items = [meshes] if isinstance(meshes, Mesh) else meshes
+    if isinstance(items, (str, bytes)) or not hasattr(items, "__iter__"):
+        raise ArgumentTypeError(f"meshes must be a scanline.mesh.Mesh or a list of them, got "
+                                f"{v._show(meshes)}")
+    items = list(items)
+    for k, m in enumerate(items):
+        if not isinstance(m, Mesh):
+            raise ArgumentTypeError(f"meshes[{k}] must be a scanline.mesh.Mesh, got "
+                                    f"{v._show(m)}")
+    if not items:
+        raise ArgumentValueError("meshes is empty: give at least one mesh")
+    return items
+
+
+def patches(meshes: Any, subdivisions: int = 8, emission: Any = None,
+            reflectance: Any = None) -> Patches:
+    """Subdivide ``meshes`` into patches.
+
+    Parameters
+    ----------
+    meshes : Mesh or list of Mesh
+        Faces counterclockwise seen from the side that receives and emits light.
+    subdivisions : int
+        Patches per side of each face (1 to 256).
+    emission : optional
+        E, the light each patch emits (radiosity units, linear): one value or (r, g,
+        b) per mesh (a list as long as ``meshes``), or one per patch ((P,) or (P, 3));
+        a single number or triple for every mesh.  Default: nothing emits.
+    reflectance : optional
+        rho in [0, 1) per channel, given as ``emission``.  Default: the diffuse
+        reflection that :func:`scanline.render` shades each surface with, kd x S_d:
+        the mesh's material (default ``Material()``, kd = 0.7) and its face colors
+        (else the material's color), decoded to linear light.
+
+    Returns
+    -------
+    Patches
+    """
+    items = mesh_list(meshes)
+    n = v.positive_int("subdivisions", subdivisions)
+    if n > MAX_SUBDIVISIONS:
+        raise ArgumentValueError(f"subdivisions must be at most {MAX_SUBDIVISIONS}, got {n}")
+    count = sum(int(np.where(m.face_sizes == 4, 1, m.face_sizes - 2).sum()) for m in items) * n * n
+    if count > MAX_PATCHES:
+        raise ArgumentValueError(
+            f"meshes with subdivisions={n} make {count:,} patches, more than the "
+            f"{MAX_PATCHES:,} the radiosity method handles (its form factors are a "
+            f"patches x patches matrix): give fewer faces or a smaller subdivisions")
+    parts = [_subdivide(m, n) for m in items]
+    nodes = np.cumsum([0] + [len(p[0]) for p in parts])
+    verts = np.concatenate([p[0] for p in parts])
+    corners = np.concatenate([p[1] + base for p, base in zip(parts, nodes)])
+    owner = np.concatenate([np.full(len(p[1]), k, np.int64) for k, p in enumerate(parts)])
+    face = np.concatenate([p[2] for p in parts])
+    area, centre, normal = _geometry(verts[corners])
+    scale = float(np.ptp(verts, axis=0).max()) ** 2
+    flat = np.flatnonzero(~(area > DEGENERATE * scale))
+    if len(flat):
+        p = int(flat[0])
+        raise ArgumentValueError(
+            f"meshes[{int(owner[p])}] face {int(face[p])} is degenerate (area "
+            f"{float(area[p]):.3g}): a patch needs an area and a normal; remove faces whose "
+            f"vertices are collinear or coincide")
+    e = np.zeros((len(corners), 3)) if emission is None else _per_patch(
+        "emission", emission, owner, len(items), upper=None)
+    r = _default_reflectance(items, owner, face) if reflectance is None else _per_patch(
+        "reflectance", reflectance, owner, len(items), upper=1.0)
+    return Patches(verts, corners, area, centre, normal, e, r, owner, face)
+
+
+def _subdivide(mesh, n):
+    """(nodes (V, 3), corners (P, 4), face of each patch (P,)) of one mesh."""
+    idx, off, sizes = mesh.face_indices, mesh.face_offsets, mesh.face_sizes
+    pos = mesh.vertices
+    out_v, out_c, out_f = [], [], []
+    base = 0
+    quads = np.flatnonzero(sizes == 4)
+    if len(quads):
+        c = pos[idx[off[quads][:, None] + np.arange(4)]]                 # (Q, 4, 3)
+        s = np.linspace(0.0, 1.0, n + 1)
+        a, b = s[:, None, None], s[None, :, None]                          # rows t, columns s
+        grid = ((1 - a) * (1 - b) * c[:, None, None, 0] + (1 - a) * b * c[:, None, None, 1]
+                + a * b * c[:, None, None, 2] + a * (1 - b) * c[:, None, None, 3])
+        out_v.append(grid.reshape(-1, 3))
+        k = np.arange(n)
+        cell = (k[:, None] * (n + 1) + k[None, :]).reshape(-1)              # (row, column)
+        local = np.stack([cell, cell + 1, cell + n + 2, cell + n + 1], axis=1)
+        starts = base + np.arange(len(quads)) * (n + 1) ** 2
+        out_c.append((starts[:, None, None] + local[None]).reshape(-1, 4))
+        out_f.append(np.repeat(quads, n * n))
+        base += len(quads) * (n + 1) ** 2
+    others = np.flatnonzero(sizes != 4)
+    if len(others):
+        # fans of triangles (first vertex, k + 1, k + 2) of the other faces
+        per = sizes[others] - 2
+        owner = np.repeat(others, per)
+        k = np.arange(len(owner)) - np.repeat(np.cumsum(per) - per, per)
+        first = off[owner]
+        c = pos[np.stack([idx[first], idx[first + k + 1], idx[first + k + 2]], axis=1)]
+        i, j = np.meshgrid(np.arange(n + 1), np.arange(n + 1), indexing="ij")
+        keep = i + j <= n
+        i, j = i[keep], j[keep]                                 # node (i, j): weights i/n, j/n
+        number = -np.ones((n + 1, n + 1), np.int64)
+        number[i, j] = np.arange(len(i))
+        w1, w2 = (i / n)[None, :, None], (j / n)[None, :, None]
+        out_v.append(((1 - w1 - w2) * c[:, None, 0] + w1 * c[:, None, 1]
+                      + w2 * c[:, None, 2]).reshape(-1, 3))
+        up_i, up_j = np.nonzero((np.add.outer(np.arange(n), np.arange(n))) < n)
+        up = np.stack([number[up_i, up_j], number[up_i + 1, up_j], number[up_i, up_j + 1],
+                       number[up_i, up_j + 1]], axis=1)
+        dn_i, dn_j = np.nonzero((np.add.outer(np.arange(n), np.arange(n))) < n - 1)
+        dn = np.stack([number[dn_i + 1, dn_j], number[dn_i + 1, dn_j + 1],
+                       number[dn_i, dn_j + 1], number[dn_i, dn_j + 1]], axis=1)
+        local = np.concatenate([up, dn])                                    # n * n triangles
+        starts = base + np.arange(len(owner)) * len(i)
+        out_c.append((starts[:, None, None] + local[None]).reshape(-1, 4))
+        out_f.append(np.repeat(owner, n * n))
+    order = np.argsort(np.concatenate(out_f), kind="stable")       # patches in face order
+    return (np.concatenate(out_v), np.concatenate(out_c)[order].astype(np.int64),
+            np.concatenate(out_f)[order].astype(np.int64))
+
+
+def _geometry(q):
+    """Area, area centroid and unit normal of quadrilaterals ``q`` (P, 4, 3) (as the
+    triangles (0, 1, 2) and (0, 2, 3))."""
+    c1 = np.cross(q[:, 1] - q[:, 0], q[:, 2] - q[:, 0])
+    c2 = np.cross(q[:, 2] - q[:, 0], q[:, 3] - q[:, 0])
+    a1 = 0.5 * np.sqrt((c1 * c1).sum(axis=1))
+    a2 = 0.5 * np.sqrt((c2 * c2).sum(axis=1))
+    area = a1 + a2
+    with np.errstate(invalid="ignore", divide="ignore"):
+        centre = (a1[:, None] * (q[:, 0] + q[:, 1] + q[:, 2])
+                  + a2[:, None] * (q[:, 0] + q[:, 2] + q[:, 3])) / (3 * area[:, None])
+        newell = np.cross(q[:, 2] - q[:, 0], q[:, 3] - q[:, 1])    # twice the vector area
+        normal = newell / np.sqrt((newell * newell).sum(axis=1))[:, None]
+    return area, centre, normal
+
+
+def _per_patch(name, value, owner, n_meshes, upper):
+    """(P, 3) values of ``name`` given per mesh or per patch, checked: finite, >= 0 and
+    below ``upper`` where there is one."""
+    p = len(owner)
+    arr = v.real_array(name, value, "a number, (r, g, b), one per mesh or one per patch")
+    if arr.ndim == 0 or arr.shape == (3,):
+        out = np.broadcast_to(arr, (p, 3))
+    elif arr.shape in ((n_meshes,), (n_meshes, 3)) and n_meshes != p:
+        out = np.broadcast_to(arr.reshape(n_meshes, -1), (n_meshes, 3))[owner]
+    elif arr.shape in ((p,), (p, 3)):
+        out = np.broadcast_to(arr.reshape(p, -1), (p, 3))
+    else:
+        raise ArgumentValueError(
+            f"{name} has shape {arr.shape}: give one value or (r, g, b) for all, one per mesh "
+            f"({n_meshes}) or one per patch ({p})")
+    if not np.isfinite(out).all():
+        raise ArgumentValueError(f"{name} must be finite (got NaN or infinity)")
+    if (out < 0).any():
+        raise ArgumentValueError(f"{name} must be >= 0, got {float(out.min())!r}")
+    if upper is not None and (out >= upper).any():
+        raise ArgumentValueError(
+            f"{name} must be below {upper:g} on every channel (a surface that reflects all "
+            f"the light it receives makes the radiosity equations singular), got "
+            f"{float(out.max())!r}")
+    return np.array(out, np.float64)
+
+
+def _default_reflectance(items: Sequence[Any], owner, face):
+    """kd x S_d per patch: each mesh's material (default ``Material()``) and its
+    colors (per face, or the mean of a face's vertex colors), linear."""
+    from ..lighting import Material
+    from ..shading import decode
+
+    out = np.empty((len(owner), 3))
+    for k, mesh in enumerate(items):
+        sel = owner == k
+        mat = mesh.material if isinstance(mesh.material, Material) else Material()
+        if mesh.colors is None:
+            color = np.broadcast_to(decode(np.asarray(mat.color, np.float64)[:3]), (sel.sum(), 3))
+        elif mesh.color_on == "face":
+            color = decode(mesh.colors[face[sel], :3] / 255.0)
+        else:
+            per_face = np.add.reduceat(decode(mesh.colors[mesh.face_indices, :3] / 255.0),
+                                       mesh.face_offsets[:-1]) / mesh.face_sizes[:, None]
+            color = per_face[face[sel]]
+        out[sel] = mat.kd * color
+    return np.minimum(out, np.nextafter(1.0, 0.0))

@@ -58,6 +58,23 @@ def _area(b0, b1, b2, b3, b4, b5):
     return 2.0 * (dx * dy + dy * dz + dz * dx)
 
 
+@helper
+def _empty(box):
+    """Make ``box`` (6,) the empty box."""
+    for c in range(3):
+        box[c] = math.inf
+        box[3 + c] = -math.inf
+
+
+@helper
+def _grow(box, boxes, k):
+    """Grow ``box`` (6,) to hold ``boxes[k]``; returns its surface area."""
+    for c in range(3):
+        box[c] = min(box[c], boxes[k, c])
+        box[3 + c] = max(box[3 + c], boxes[k, 3 + c])
+    return _area(box[0], box[1], box[2], box[3], box[4], box[5])
+
+
 @kernel
 def build(tri, order, bounds, links, table):
     """Build the tree over ``tri`` (N, 3, 3) world triangles (finite): ``order`` (N,)
@@ -87,6 +104,7 @@ def build(tri, order, bounds, links, table):
     right_area = np.empty(BINS)
     right_n = np.empty(BINS, np.int64)
     cb = np.empty(6)
+    grown = np.empty(6)
     top = 0
     st_node[0] = 0
     st_start[0] = 0
@@ -102,12 +120,8 @@ def build(tri, order, bounds, links, table):
         end = st_end[top]
         depth = st_depth[top]
         b = bounds[node]
-        for c in range(3):
-            b[c] = math.inf
-            b[3 + c] = -math.inf
-        for c in range(3):
-            cb[c] = math.inf
-            cb[3 + c] = -math.inf
+        _empty(b)
+        _empty(cb)
         for i in range(start, end):
             t = order[i]
             for c in range(3):
@@ -130,9 +144,7 @@ def build(tri, order, bounds, links, table):
             scale = BINS / extent
             for k in range(BINS):
                 bin_n[k] = 0
-                for c in range(3):
-                    bin_box[k, c] = math.inf
-                    bin_box[k, 3 + c] = -math.inf
+                _empty(bin_box[k])
             for i in range(start, end):
                 t = order[i]
                 k = min(max(int((cent[t, axis] - cb[axis]) * scale), 0), BINS - 1)
@@ -141,33 +153,20 @@ def build(tri, order, bounds, links, table):
                     bin_box[k, c] = min(bin_box[k, c], lo[t, c])
                     bin_box[k, 3 + c] = max(bin_box[k, 3 + c], hi[t, c])
             # sweep from the right: the area and count of bins k .. BINS - 1
-            r0 = r1 = r2 = math.inf
-            r3 = r4 = r5 = -math.inf
+            _empty(grown)
             rn = 0
             for k in range(BINS - 1, 0, -1):
-                r0 = min(r0, bin_box[k, 0])
-                r1 = min(r1, bin_box[k, 1])
-                r2 = min(r2, bin_box[k, 2])
-                r3 = max(r3, bin_box[k, 3])
-                r4 = max(r4, bin_box[k, 4])
-                r5 = max(r5, bin_box[k, 5])
+                right_area[k] = _grow(grown, bin_box, k)
                 rn += bin_n[k]
-                right_area[k] = _area(r0, r1, r2, r3, r4, r5)
                 right_n[k] = rn
-            l0 = l1 = l2 = math.inf
-            l3 = l4 = l5 = -math.inf
+            _empty(grown)
             ln = 0
             for k in range(BINS - 1):          # split between bins k and k + 1
-                l0 = min(l0, bin_box[k, 0])
-                l1 = min(l1, bin_box[k, 1])
-                l2 = min(l2, bin_box[k, 2])
-                l3 = max(l3, bin_box[k, 3])
-                l4 = max(l4, bin_box[k, 4])
-                l5 = max(l5, bin_box[k, 5])
+                left_area = _grow(grown, bin_box, k)
                 ln += bin_n[k]
                 if ln == 0 or right_n[k + 1] == 0:
                     continue
-                cost = _area(l0, l1, l2, l3, l4, l5) * ln + right_area[k + 1] * right_n[k + 1]
+                cost = left_area * ln + right_area[k + 1] * right_n[k + 1]
                 if cost < best_cost:
                     best_cost = cost
                     best_axis = axis
@@ -241,6 +240,13 @@ def moller_trumbore(ox, oy, oz, dx, dy, dz, table, i):
 
 
 @helper
+def inside(t, u, v, tmin, tmax):
+    """Whether :func:`moller_trumbore`'s ``(t, u, v)`` is a hit: inside the triangle
+    (u, v >= 0, u + v <= 1) and the interval (tmin, tmax)."""
+    return t > tmin and t < tmax and u >= 0.0 and v >= 0.0 and u + v <= 1.0
+
+
+@helper
 def _inverse(dx, dy, dz):
     """1 / d per axis for the slab test, 1e300 for a zero component: 1 / 0 = inf would
     give 0 x inf = NaN for a ray lying in a box's face, and a finite huge number gives
@@ -295,7 +301,7 @@ def nearest(ox, oy, oz, dx, dy, dz, tmin, tmax, bounds, links, table, stack):
         if count > 0:
             for i in range(first, first + count):
                 t, u, v = moller_trumbore(ox, oy, oz, dx, dy, dz, table, i)
-                if t > tmin and t < best and u >= 0.0 and v >= 0.0 and u + v <= 1.0:
+                if inside(t, u, v, tmin, best):
                     best = t
                     row = i
                     bu = u
@@ -342,7 +348,7 @@ def transmittance(ox, oy, oz, dx, dy, dz, tmin, tmax, bounds, links, table, clea
         if count > 0:
             for i in range(first, first + count):
                 t, u, v = moller_trumbore(ox, oy, oz, dx, dy, dz, table, i)
-                if t > tmin and t < tmax and u >= 0.0 and v >= 0.0 and u + v <= 1.0:
+                if inside(t, u, v, tmin, tmax):
                     through *= clear[i]
             continue
         if top + 2 > stack.shape[0]:

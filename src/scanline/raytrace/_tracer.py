@@ -250,6 +250,19 @@ def _cone(r, angle, state):
 
 
 @helper
+def _push(rays, top, p, offset, ng, weight, depth, parent, kind):
+    """Row ``top`` of the ray stack (its direction already written): the origin ``p``
+    moved ``offset`` along the normal ``ng`` (off the surface, to the side the ray
+    goes), the weight, depth, parent ray and kind."""
+    for c in range(3):
+        rays[top, c] = p[c] + offset * ng[c]
+    rays[top, 6] = weight
+    rays[top, 7] = depth
+    rays[top, 8] = parent
+    rays[top, 9] = kind
+
+
+@helper
 def trace_sample(origin, direction, first, sample, seed, max_depth, eps, blinn, bounds, links,
                  table, prim_facet, facet_row, clear, world_n, vertex_normals, colors,
                  facet_mat, front, mats, lights, ambient, background, rays, stack, out, log,
@@ -352,12 +365,7 @@ def trace_sample(origin, direction, first, sample, seed, max_depth, eps, blinn, 
         wt = weight * kt * (1.0 - big_f)
         if wt >= MIN_WEIGHT and cos_t >= 0.0 and made < MAX_RAYS and top < rays.shape[0]:
             bend(d, n, 1.0 / eta if entering else eta, cos_i, cos_t, rays[top, 3:6])
-            for c in range(3):
-                rays[top, c] = p[c] - eps * ng[c]
-            rays[top, 6] = wt
-            rays[top, 7] = depth + 1
-            rays[top, 8] = ray
-            rays[top, 9] = REFRACTED
+            _push(rays, top, p, -eps, ng, wt, depth + 1, ray, REFRACTED)
             top += 1
             made += 1
         if wr >= MIN_WEIGHT and made < MAX_RAYS and top < rays.shape[0]:
@@ -367,12 +375,7 @@ def trace_sample(origin, direction, first, sample, seed, max_depth, eps, blinn, 
                 _cone(rays[top, 3:6], rough, state)
             if (rays[top, 3] * ng[0] + rays[top, 4] * ng[1] + rays[top, 5] * ng[2]) <= 0:
                 mirror(d, ng, -(d[0] * ng[0] + d[1] * ng[1] + d[2] * ng[2]), rays[top, 3:6])
-            for c in range(3):
-                rays[top, c] = p[c] + eps * ng[c]
-            rays[top, 6] = wr
-            rays[top, 7] = depth + 1
-            rays[top, 8] = ray
-            rays[top, 9] = REFLECTED
+            _push(rays, top, p, eps, ng, wr, depth + 1, ray, REFLECTED)
             top += 1
             made += 1
 

@@ -152,14 +152,14 @@ def _crossings(prepared, screen, origin, direction):
     """Every facet the ray crosses, (t, face) nearest first, by the tracer's own
     Moller-Trumbore test run on each triangle of its table."""
     from .._kernels._jit import python
-    from ..raytrace._bvh import moller_trumbore
+    from ..raytrace._bvh import inside, moller_trumbore
 
-    test = python(moller_trumbore)
+    test, hit = python(moller_trumbore), python(inside)
     table = prepared.tree.table
     out = []
     with np.errstate(all="ignore"):
         for row in range(len(table)):
             t, a, b = test(*origin, *direction, table, row)
-            if t > 0 and a >= 0 and b >= 0 and a + b <= 1:
+            if hit(t, a, b, 0.0, math.inf):
                 out.append((float(t), int(screen.facet_face[prepared.tree.order[row]])))
     return sorted(out)

@@ -126,7 +126,7 @@ def _trimesh_scene(obj, name):
 
 
 def _meshio(obj, name):
-    from .files import _ply_attributes, meshio_faces
+    from .files import ply_attributes, meshio_faces
 
     points = np.asarray(obj.points, np.float64)
     if points.ndim == 2 and points.shape[1] == 2:
@@ -136,7 +136,7 @@ def _meshio(obj, name):
         raise ArgumentTypeError("the meshio.Mesh has no triangle, quad or polygon cells")
     check_mesh_budget("mesh", len(points), len(sizes), len(indices),
                       "a mesh converted from meshio")
-    extra = _ply_attributes(obj.point_data, len(points), {}, len(sizes))
+    extra = ply_attributes(obj.point_data, len(points), {}, len(sizes))
     return Mesh(points, Flat(indices, sizes), name=name, **extra)
 
 

@@ -413,7 +413,7 @@ PLY_COLORS = (("red", "green", "blue", "alpha"), ("diffuse_red", "diffuse_green"
 PLY_UV = (("s", "t"), ("u", "v"), ("texture_u", "texture_v"), ("texture_s", "texture_t"))
 
 
-def _ply_attributes(data, count, face_data, face_count):
+def ply_attributes(data, count, face_data, face_count):
     """The mesh keywords (normals, colors, color_on, uv) of meshio's PLY point data
     (and cell data: face colors)."""
     out = {}
@@ -497,7 +497,7 @@ def _from_meshio(data, fmt, filename, mesh_name):
     try:
         face_data = {k: np.concatenate([np.asarray(c).reshape(-1) for c in blocks])
                      for k, blocks in data.cell_data.items()} if kept_all else {}
-        extra = _ply_attributes(data.point_data, len(points), face_data, len(sizes))
+        extra = ply_attributes(data.point_data, len(points), face_data, len(sizes))
     except (TypeError, ValueError):       # attributes meshio read oddly: the geometry only
         extra = {}
     try:

@@ -3,6 +3,7 @@ refracts or casts a shadow; mirrors, clear glass and shadows against values work
 out here; soft shadows reproducible by seed; bad options named."""
 
 import math
+import os
 
 import numpy as np
 import pytest
@@ -179,3 +180,21 @@ def test_deep_glass_is_bounded():
     r = sl.render(fb, meshes, ortho(1.2), method="ray-tracing", materials=mats,
                   shading="phong", max_depth=64)
     assert (r.faces >= 0).sum() > 100
+
+
+def test_supersampled_mirror_brings_the_frame_buffers_background():
+    """With antialias=n the samples are traced on a finer frame buffer: rays that leave
+    the scene still bring the frame buffer's own background."""
+    mirror = quad([(-1, -1, 1), (1, -1, -1), (1, 1, -1), (-1, 1, 1)])
+    fb = sl.FrameBuffer(9, 9, background=(0, 120, 240))
+    sl.render(fb, mirror, ortho(), method="ray-tracing", shading="phong", gamma=1,
+              materials=L.Material(ka=0, kd=0, ks=0, reflectivity=1.0),
+              lights=[L.AmbientLight(1.0)], antialias=2)
+    assert (fb.to_array() == [0, 120, 240]).all()
+
+
+def test_example_scene_glass_spheres_renders():
+    scene = sl.scene.load(os.path.join(os.path.dirname(sl.__file__), "data", "scenes",
+                                       "glass_spheres.toml"))
+    assert scene.canvas.shading.options["method"] == "ray-tracing"
+    assert scene.canvas.shading.options["max_depth"] == 6

@@ -245,6 +245,7 @@ def _finer(fb, n, layers):
     """A frame buffer ``n`` times finer than ``fb``; with ``layers`` (fragments blend
     over what lies behind them) holding its pixels, each an n x n block."""
     fine = FrameBuffer(fb.width * n, fb.height * n, mode=fb.mode)
+    fine._background = fb._background.copy()     # what the ray tracer's escaping rays bring
     if layers:
         fine._raster()[0][...] = np.repeat(np.repeat(fb._raster()[0], n, axis=0), n, axis=1)
     return fine

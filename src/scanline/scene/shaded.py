@@ -19,11 +19,14 @@ LIGHTS = {
     "point": {"position", "intensity", "attenuation", "shadows"},
     "spot": {"position", "direction", "intensity", "angle", "exponent", "attenuation",
              "shadows"},
+    "area": {"corner", "edge_u", "edge_v", "intensity", "samples", "shadows"},
 }
 #: Keys a light of each type must have.
-REQUIRED = {"point": ("position",), "spot": ("position", "direction")}
-MATERIAL = {"ka", "kd", "ks", "shininess", "color", "specular_color", "transparency"}
-SHADING = {"model", "specular", "gamma", "cull_back_faces", "depth_cue"}
+REQUIRED = {"point": ("position",), "spot": ("position", "direction"),
+            "area": ("corner", "edge_u", "edge_v")}
+MATERIAL = {"ka", "kd", "ks", "shininess", "color", "specular_color", "transparency",
+            "reflectivity", "refractive_index", "roughness"}
+SHADING = {"model", "specular", "gamma", "cull_back_faces", "depth_cue", "max_depth", "seed"}
 
 
 def _schema():
@@ -49,7 +52,8 @@ def light(data, path):
     args = {k: (s.angle(x, f"{path}.{k}") if k == "angle" else _tuples(x))
             for k, x in t.items() if k != "type"}
     make = {"ambient": lighting.AmbientLight, "directional": lighting.DirectionalLight,
-            "point": lighting.PointLight, "spot": lighting.SpotLight}[kind]
+            "point": lighting.PointLight, "spot": lighting.SpotLight,
+            "area": lighting.AreaLight}[kind]
     return s._call(path, make, **args)
 
 
@@ -99,6 +103,9 @@ class Shading:
         if "cull_back_faces" in t:
             self.options["cull_back_faces"] = s._flag(t["cull_back_faces"],
                                                       "shading.cull_back_faces")
+        for key in ("max_depth", "seed"):          # ray tracing's, checked by render
+            if key in t:
+                self.options[key] = t[key]
         if "depth_cue" in t:
             from ..draw3d.wireframe import depth_cue_intensities
 

@@ -228,6 +228,17 @@ CALLS = {
                                   "target=(0, 0, 0)), method='a-buffer', samples=2)", RGB),
     "render antialias": ("render", "sl.render(fb, sl.mesh.cube(), sl.Camera(eye=(3, 2, 4), "
                                    "target=(0, 0, 0)), antialias=2)", ("L", "RGB", "RGBA")),
+    "render texture": ("render", "sl.render(fb, sl.mesh.Mesh([(-1, 0, 0), (1, 0, 0), (1, 0, -4), "
+                                 "(-1, 0, -4)], [[0, 1, 2, 3]], uv=[(0, 0), (1, 0), (1, 2), "
+                                 "(0, 2)]), sl.Camera(eye=(0, 1, 1.5), target=(0, 0, -2)), "
+                                 "materials=sl.lighting.Material(texture=sl.texture.checker("
+                                 "16, 4, filter='trilinear')))", ("L", "RGB", "RGBA")),
+    "render texture phong": ("render", "sl.render(fb, sl.mesh.Mesh([(-1, 0, 0), (1, 0, 0), "
+                                       "(1, 0, -4), (-1, 0, -4)], [[0, 1, 2, 3]], uv=[(0, 0), "
+                                       "(1, 0), (1, 2), (0, 2)]), sl.Camera(eye=(0, 1, 1.5), "
+                                       "target=(0, 0, -2)), shading='phong', "
+                                       "materials=sl.lighting.Material(texture="
+                                       "sl.texture.checker(16, 4)))", RGB),
     "visible scan-line": ("visible", "sl.render(fb, [sl.mesh.cube(), sl.mesh.sphere(0.6, "
                                      "(0.8, 0.5, 0.8))], sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)), "
                                      "method='scan-line', shading='none')", RGB),

@@ -198,3 +198,10 @@ def test_example_scene_glass_spheres_renders():
                                        "glass_spheres.toml"))
     assert scene.canvas.shading.options["method"] == "ray-tracing"
     assert scene.canvas.shading.options["max_depth"] == 6
+
+
+def test_too_many_shadow_rays_is_an_error_naming_lights():
+    meshes, cam, mats, _ = scene_without_shadows()
+    many = [L.PointLight((0, 5, i)) for i in range(1025)]
+    with pytest.raises(ArgumentValueError, match="lights"):
+        sl.render(sl.FrameBuffer(8, 8), meshes, cam, method="ray-tracing", lights=many)

@@ -65,3 +65,22 @@ def test_command_line_json():
                           "--format", "json"], capture_output=True, text=True, check=True)
     rows = json.loads(out.stdout)
     assert rows == json.loads(sl.trace.ray_tracing(20, 11).to_json())
+
+
+def test_distributed_rays_are_the_same_in_the_trace_and_the_render():
+    """Area-light and glossy samples: the trace (the kernel run as Python) and the render
+    (compiled) draw the same random numbers for the same seed and sample."""
+    meshes, materials, _, camera = scene()
+    materials[1] = sl.lighting.Material(color=(255, 80, 80), kd=0.2, reflectivity=0.8,
+                                        roughness=0.2)
+    lights = [sl.lighting.AmbientLight(0.15),
+              sl.lighting.AreaLight((2, 5, 3), (2, 0, 0), (0, 0, 2), samples=3)]
+    fb = sl.FrameBuffer(WIDTH, HEIGHT, background=(40, 60, 90))
+    sl.render(fb, meshes, camera, method="ray-tracing", shading="phong", materials=materials,
+              lights=lights, seed=7)
+    for x, y in [(8, 12), (9, 10), (20, 11)]:
+        t = sl.trace.ray_tracing(x, y, materials=materials, lights=lights, seed=7)
+        last = t.rows[-1]
+        total = [last["sum_r"], last["sum_g"], last["sum_b"]]
+        assert fb.to_array()[HEIGHT - 1 - y, x].tolist() == \
+            sl.shading.encode(total, 2.2).tolist()

@@ -22,6 +22,9 @@ from .. import _validate as v
 #: The default depth of the ray tree (levels, the primary ray's included).
 MAX_DEPTH = 5
 
+#: Most shadow rays from one point (the lights' count, an area light's samples**2).
+SHADOW_RAYS = 1024
+
 #: Offset of secondary rays' origins from their surface, in units of the scene's size
 #: (its box's diagonal): no ray meets the surface it leaves.
 OFFSET = 1e-7
@@ -54,6 +57,14 @@ def light_table(lights):
     from ..lighting.lights import AmbientLight, AreaLight
     from ..shading.buffer import source_rows
 
+    from ..errors import ArgumentValueError
+
+    rays = sum(light.samples ** 2 if isinstance(light, AreaLight) else 1
+               for light in lights if not isinstance(light, AmbientLight))
+    if rays > SHADOW_RAYS:
+        raise ArgumentValueError(f"lights: the ray tracer would send {rays:,} shadow rays from "
+                                 f"every point (one per light, samples**2 per area light); at "
+                                 f"most {SHADOW_RAYS:,}: use fewer lights or fewer samples")
     rows, ambient = source_rows(lights)
     area = np.zeros((len(rows), 10))
     for i, light in enumerate(x for x in lights if not isinstance(x, AmbientLight)):

@@ -171,5 +171,5 @@ def light_list(lights):
     if lights is None:
         return ()
     return v.one_or_many("lights", lights, LIGHTS,
-                         "an AmbientLight, DirectionalLight, PointLight, SpotLight or AreaLight from "
-                         "sl.lighting")
+                         "an AmbientLight, DirectionalLight, PointLight, SpotLight or "
+                         "AreaLight from sl.lighting")

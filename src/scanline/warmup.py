@@ -204,8 +204,9 @@ CALLS = {
                                        "color='black', depth_cue=True)", RGB),
     "mesh obj": ("three_d", "(lambda c: (c.vertices, c.indices, c.uv, c.normals))(__import__("
                             "'scanline.mesh.obj', fromlist=['read_obj']).read_obj(b'v 0 0 0\\n"
-                            "v 1 0 0\\nv 0 1 1e-3\\nvt 0 0\\nvt .5 1\\nvn 0 0 1\\nf 1/1/1 2/2/1 "
-                            "-1/1/-1\\nf 1/2 2/1 3/1\\n', 'warmup.obj'))", None),
+                            "v 1 0 0\\nv 0 1 0.12345678901234567\\nvt 0 0\\nvt .5 1\\n"
+                            "vn 0 0 1\\nf 1/1/1 2/2/1 -1/1/-1\\nf 1/2 2/1 3/1\\n', "
+                            "'warmup.obj'))", None),
     "draw3d polylines thick": ("three_d", "sl.draw3d.polylines(fb, [[(0, 0, 0), (1, 1, 0), "
                                           "(1, 0, 1)]], sl.Camera(eye=(3, 2, 4), "
                                           "target=(0, 0, 0)), color='black', width=3)", RGB),

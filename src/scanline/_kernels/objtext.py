@@ -425,3 +425,41 @@ def obj_split(corners, table, vertex, unique):
                 break
             h = (h + 1) & mask
     return count
+
+
+@kernel
+def obj_tokens(data, rows, widths, tokens, where, long_rows):
+    """The numbers of the ``rows`` noted by :func:`obj_parse` (kind, row, first and
+    end byte), copied for an exact conversion: ``tokens[m]`` the bytes of number m
+    (zero-padded), ``where[m]`` its kind, row and column; at most ``widths[kind]``
+    numbers a row, up to the first word that is not a number.  A row with a number
+    longer than a token row is flagged in ``long_rows`` (and left to the caller);
+    returns the count of numbers."""
+    n = data.shape[0]
+    size = tokens.shape[1]
+    m = 0
+    for r in range(rows.shape[0]):
+        kind = rows[r, 0]
+        if kind < 0 or kind >= widths.shape[0]:
+            continue
+        j = max(min(rows[r, 2], n), 0)
+        b = max(min(rows[r, 3], n), 0)
+        j = _skip(data, j, b)
+        col = 0
+        while j < b and data[j] != 35 and col < widths[kind] and m < tokens.shape[0]:
+            q = _token_end(data, j, b)
+            x, ok, exact = _number(data, j, q)
+            if not ok:
+                break
+            if q - j >= size:
+                long_rows[r] = True
+                break
+            for c in range(size):
+                tokens[m, c] = data[j + c] if c < q - j else 0
+            where[m, 0] = kind
+            where[m, 1] = rows[r, 1]
+            where[m, 2] = col
+            m += 1
+            col += 1
+            j = _skip(data, q, b)
+    return m

@@ -1,10 +1,10 @@
 """Wavefront OBJ as exporters write it (Wavefront Technologies, "Object Files (.obj)",
 Advanced Visualizer manual, appendix B1).
 
-Statements read: ``v x y z [w ...]`` positions, ``vt u [v]`` texture coordinates,
-``vn x y z`` normals (``v x y z r g b``: a vertex color, as MeshLab and trimesh write
-it, kept when every vertex has one), ``f`` faces of corners ``v``, ``v/vt``, ``v//vn`` or ``v/vt/vn``
-(1-based; a negative index counts back from the last element read), ``mtllib`` and
+Statements read: ``v x y z [w ...]`` positions (``v x y z r g b``: a vertex color, as
+MeshLab and trimesh write it, kept when every vertex has one), ``vt u [v]`` texture
+coordinates, ``vn x y z`` normals, ``f`` faces of corners ``v``, ``v/vt``, ``v//vn`` or
+``v/vt/vn`` (1-based; a negative index counts back from the last element read), ``mtllib`` and
 ``usemtl`` (materials, :mod:`scanline.mesh.materials`).  ``o``, ``g``, ``s`` and the
 free-form statements are skipped; ``l`` lines are skipped with one
 :class:`~scanline.mesh.files.MeshFileWarning`.  Faces keep their polygons.
@@ -16,7 +16,9 @@ as trimesh does.  A file without ``vt`` and ``vn`` in its faces keeps its vertex
 as it is.
 
 The bytes are tokenized by compiled kernels (:mod:`scanline._kernels.objtext`); every
-error names the file and the line.
+error names the file and the line.  Numbers are read correctly rounded: the kernel's
+fast path (Clinger 1990) where it is exact, numpy's conversion of the few others
+(17-digit numbers, as ``repr`` and :func:`scanline.mesh.save` write them).
 """
 
 import os
@@ -101,7 +103,7 @@ def read_obj(data, filename):
          events, slow, err)
     if err[0]:
         fail(int(err[1]), _message(int(err[0]), err, data, totals))
-    _exactly(data, slow[:int(err[5])], (pos, uvs, nrm))
+    _exactly(buf, data, slow[:int(err[5])], (pos, uvs, nrm))
     if nv == 0:
         raise MeshFileError("the file holds no vertices: it is empty, truncated or not OBJ",
                             file=filename)
@@ -124,11 +126,31 @@ def read_obj(data, filename):
     return out
 
 
-def _exactly(data, rows, arrays):
-    """Read again with Python's float (correctly rounded) the v/vt/vn rows whose
-    numbers the kernel's fast path could not round exactly (more than 15 digits, or
-    powers of ten beyond 22)."""
-    for kind, row, a, b in rows.tolist():
+#: Bytes of the longest number converted in one numpy pass (longer ones: one by one).
+TOKEN_BYTES = 32
+
+
+def _exactly(buf, data, rows, arrays):
+    """Convert again, correctly rounded, the numbers of the v/vt/vn ``rows`` that the
+    kernel's fast path could not round exactly (more than 15 digits, or powers of
+    ten beyond 22): their bytes gathered by a kernel, converted by numpy's
+    string-to-float in one pass (as Python's float does)."""
+    from .._kernels._jit import call
+    from .._kernels.objtext import obj_tokens
+
+    if not len(rows):
+        return
+    widths = np.array([a.shape[1] for a in arrays], np.int64)
+    most = len(rows) * int(widths.max())
+    tokens = np.zeros((most, TOKEN_BYTES), np.uint8)
+    where = np.zeros((most, 3), np.int64)
+    long_rows = np.zeros(len(rows), bool)
+    m = call(obj_tokens, 8 * most, buf, rows, widths, tokens, where, long_rows)
+    values = tokens[:m].view(f"S{TOKEN_BYTES}").reshape(-1).astype(np.float64)
+    for kind, target in enumerate(arrays):
+        pick = where[:m, 0] == kind
+        target[where[:m][pick, 1], where[:m][pick, 2]] = values[pick]
+    for kind, row, a, b in rows[long_rows].tolist():
         target = arrays[kind]
         for column, word in enumerate(data[a:b].split(b"#")[0].split()[:target.shape[1]]):
             try:

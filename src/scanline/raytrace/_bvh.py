@@ -29,9 +29,7 @@ import math
 
 import numpy as np
 
-from numba import prange
-
-from .._kernels._jit import helper, kernel, parallel_kernel
+from .._kernels._jit import helper, kernel
 
 #: Centroid bins per axis of the binned surface-area heuristic.
 BINS = 16
@@ -359,18 +357,20 @@ def transmittance(ox, oy, oz, dx, dy, dz, tmin, tmax, bounds, links, table, clea
     return through
 
 
-#: Rays per chunk of :func:`cast` (the chunks run on every core).
+#: Rays per chunk of :func:`cast` (chunks are dealt out to the threads).
 CHUNK = 256
 
 
-@parallel_kernel
-def cast(origins, directions, tmin, tmax, bounds, links, table, t_out, row_out, uv_out):
+@kernel
+def cast(start, step, origins, directions, tmin, tmax, bounds, links, table, t_out, row_out,
+         uv_out):
     """The nearest hit of every ray (rows of ``origins`` and ``directions``, (R, 3))
     in (tmin, tmax): ``t_out`` (inf: none), ``row_out`` (-1: none), ``uv_out`` (R, 2);
-    chunks of :data:`CHUNK` rays in parallel."""
+    the chunks of :data:`CHUNK` rays numbered ``start``, ``start + step`` ... (one call
+    per thread, start = 0 .. step - 1)."""
     n = origins.shape[0]
-    for c in prange((n + CHUNK - 1) // CHUNK):
-        stack = np.empty(STACK, np.int64)
+    stack = np.empty(STACK, np.int64)
+    for c in range(start, (n + CHUNK - 1) // CHUNK, max(step, 1)):
         for r in range(c * CHUNK, min(n, (c + 1) * CHUNK)):
             t, row, u, v = nearest(origins[r, 0], origins[r, 1], origins[r, 2],
                                    directions[r, 0], directions[r, 1], directions[r, 2], tmin,

@@ -34,9 +34,7 @@ threads.
 import math
 
 import numpy as np
-from numba import prange
-
-from .._kernels._jit import helper, kernel, parallel_kernel
+from .._kernels._jit import helper, kernel
 from .._kernels.shade import encode
 from ._bvh import STACK, moller_trumbore, nearest, transmittance
 
@@ -63,7 +61,7 @@ PRIMARY, REFLECTED, REFRACTED, SHADOW = 0, 1, 2, 3
 #: light (shadow rays), transmittance (shadow rays).
 LOG_COLUMNS = 21
 
-#: Samples per parallel chunk.
+#: Samples per chunk of :func:`trace_all` (chunks are dealt out to the threads).
 CHUNK = 64
 
 
@@ -380,18 +378,20 @@ def trace_sample(origin, direction, first, sample, seed, max_depth, eps, blinn, 
             made += 1
 
 
-@parallel_kernel
-def trace_all(origins, directions, firsts, samples, seed, max_depth, eps, blinn, bounds, links,
-              table, prim_facet, facet_row, clear, world_n, vertex_normals, colors, facet_mat,
-              front, mats, lights, ambient, background, out, log, count):
+@kernel
+def trace_all(start, step, origins, directions, firsts, samples, seed, max_depth, eps, blinn,
+              bounds, links, table, prim_facet, facet_row, clear, world_n, vertex_normals,
+              colors, facet_mat, front, mats, lights, ambient, background, out, log, count):
     """:func:`trace_sample` for every sample (rows of ``origins``, ``directions``,
     ``firsts`` and ``samples``, the samples' numbers for the random numbers) into
-    ``out`` (P, 3), chunks of :data:`CHUNK` samples in parallel.  ``log`` (L,
+    ``out`` (P, 3): the chunks of :data:`CHUNK` samples numbered ``start``, ``start +
+    step`` ... (calls with start = 0 .. step - 1 on as many threads share the work,
+    the costly chunks of glass and mirrors spread among them).  ``log`` (L,
     :data:`LOG_COLUMNS`) receives the rays when it has rows (one sample at a time)."""
     total = origins.shape[0]
-    for chunk in prange((total + CHUNK - 1) // CHUNK):
-        stack = np.empty(STACK, np.int64)
-        rays = np.empty((MAX_RAYS + 1, 10))
+    stack = np.empty(STACK, np.int64)
+    rays = np.empty((MAX_RAYS + 1, 10))
+    for chunk in range(start, (total + CHUNK - 1) // CHUNK, max(step, 1)):
         for i in range(chunk * CHUNK, min(total, (chunk + 1) * CHUNK)):
             trace_sample(origins[i], directions[i], firsts[i], samples[i], seed, max_depth,
                          eps, blinn, bounds, links, table, prim_facet, facet_row, clear,

@@ -82,7 +82,7 @@ class BVH:
         """The nearest hit of each ray o + t d with t in (tmin, tmax): rows of
         ``origins`` and ``directions`` (R, 3; directions need not be unit vectors, t
         is in their units) -> :class:`Hits`."""
-        from .._kernels._jit import call
+        from .._kernels._threads import call_in_bands
         from . import _bvh
 
         o = v.real_array("origins", origins, "(R, 3)")
@@ -99,8 +99,8 @@ class BVH:
         t = np.empty(r)
         row = np.empty(r, np.int64)
         uv = np.empty((r, 2))
-        call(_bvh.cast, 50 * r + 1, v.kernel_array(o), v.kernel_array(d), lo, float(hi),
-             self.bounds, self.links, self.table, t, row, uv)
+        call_in_bands(_bvh.cast, 50 * r + 1, v.kernel_array(o), v.kernel_array(d), lo,
+                      float(hi), self.bounds, self.links, self.table, t, row, uv)
         found = np.full(r, -1, np.int64)
         found[row >= 0] = self.order[row[row >= 0]]
         return Hits(t, found, uv)

@@ -127,7 +127,8 @@ def trace(prepared, origins, directions, firsts, samples, log=None):
     samples numbered ``samples`` for the random numbers; ``log``: a (L,
     LOG_COLUMNS) array that receives the rays of a single sample (Python, the
     kernel's twin), returned with the number of rows written."""
-    from .._kernels._jit import call, python
+    from .._kernels._jit import python
+    from .._kernels._threads import call_in_bands
     from . import _tracer as k
 
     out = np.empty((len(origins), 3))
@@ -136,11 +137,11 @@ def trace(prepared, origins, directions, firsts, samples, log=None):
             v.kernel_array(firsts, np.int64), v.kernel_array(samples, np.int64),
             *prepared.arguments, out)
     if log is None:
-        call(k.trace_all, lambda: 20 * len(origins) * (8 + 6 * prepared.lights), *args,
-             np.zeros((0, k.LOG_COLUMNS)), count)
+        call_in_bands(k.trace_all, 20 * len(origins) * (8 + 6 * prepared.lights), *args,
+                      np.zeros((0, k.LOG_COLUMNS)), count)
         return out
     with np.errstate(all="ignore"):
-        python(k.trace_all)(*args, log, count)
+        python(k.trace_all)(0, 1, *args, log, count)
     return out, int(count[0])
 
 

@@ -222,74 +222,84 @@ def hemicube_rows(sources, quads, centre, normal, near, res, top, side, out):
 
 
 @helper
-def raycast_row(i, quads, centre, normal, k, bounds, links, table, clear, stack, row):
-    """Row ``i`` by ray casting: for every patch j, k x k points y on j (centres of
-    the cells of its bilinear parameters, each of area dA = |dP/ds x dP/dt| / k**2),
-    F_ij = sum of cos(theta_i) cos(theta_j) dA / (pi r**2 + dA) over the points seen
-    from the centre of i (a shadow ray through the bounding volume hierarchy):
-    Wallace, Elmquist and Haines 1989, equation 4."""
-    p = quads.shape[0]
-    cx, cy, cz = centre[i, 0], centre[i, 1], centre[i, 2]
-    nx, ny, nz = normal[i, 0], normal[i, 1], normal[i, 2]
-    for j in range(p):
-        total = 0.0
-        if j != i:
-            for a in range(k):
-                t = (a + 0.5) / k
-                for b in range(k):
-                    s = (b + 0.5) / k
-                    w0 = (1 - s) * (1 - t)
-                    w1 = s * (1 - t)
-                    w2 = s * t
-                    w3 = (1 - s) * t
-                    yx = (w0 * quads[j, 0, 0] + w1 * quads[j, 1, 0] + w2 * quads[j, 2, 0]
-                          + w3 * quads[j, 3, 0])
-                    yy = (w0 * quads[j, 0, 1] + w1 * quads[j, 1, 1] + w2 * quads[j, 2, 1]
-                          + w3 * quads[j, 3, 1])
-                    yz = (w0 * quads[j, 0, 2] + w1 * quads[j, 1, 2] + w2 * quads[j, 2, 2]
-                          + w3 * quads[j, 3, 2])
-                    dx = yx - cx
-                    dy = yy - cy
-                    dz = yz - cz
-                    r2 = dx * dx + dy * dy + dz * dz
-                    if not r2 > 0.0:
-                        continue
-                    rn = math.sqrt(r2)
-                    ci = (dx * nx + dy * ny + dz * nz) / rn
-                    cj = -(dx * normal[j, 0] + dy * normal[j, 1] + dz * normal[j, 2]) / rn
-                    if ci <= 0.0 or cj <= 0.0:
-                        continue
-                    # dP/ds and dP/dt of the bilinear patch at (s, t)
-                    sx = ((1 - t) * (quads[j, 1, 0] - quads[j, 0, 0])
-                          + t * (quads[j, 2, 0] - quads[j, 3, 0]))
-                    sy = ((1 - t) * (quads[j, 1, 1] - quads[j, 0, 1])
-                          + t * (quads[j, 2, 1] - quads[j, 3, 1]))
-                    sz = ((1 - t) * (quads[j, 1, 2] - quads[j, 0, 2])
-                          + t * (quads[j, 2, 2] - quads[j, 3, 2]))
-                    tx = ((1 - s) * (quads[j, 3, 0] - quads[j, 0, 0])
-                          + s * (quads[j, 2, 0] - quads[j, 1, 0]))
-                    ty = ((1 - s) * (quads[j, 3, 1] - quads[j, 0, 1])
-                          + s * (quads[j, 2, 1] - quads[j, 1, 1]))
-                    tz = ((1 - s) * (quads[j, 3, 2] - quads[j, 0, 2])
-                          + s * (quads[j, 2, 2] - quads[j, 1, 2]))
-                    ax = sy * tz - sz * ty
-                    ay = sz * tx - sx * tz
-                    az = sx * ty - sy * tx
-                    da = math.sqrt(ax * ax + ay * ay + az * az) / (k * k)
-                    if transmittance(cx, cy, cz, dx, dy, dz, 1e-6, 1.0 - 1e-6, bounds, links,
-                                     table, clear, stack) <= 0.0:
-                        continue
-                    total += ci * cj * da / (math.pi * r2 + da)
-        row[j] = total
+def point_to_patch(cx, cy, cz, nx, ny, nz, j, quads, normal, k, bounds, links, table, clear,
+                   stack):
+    """The form factor from the differential area at (cx, cy, cz) with normal n to
+    patch j: k x k points y on j (centres of the cells of its bilinear parameters,
+    each of area dA = |dP/ds x dP/dt| / k**2), the sum of cos(theta_i) cos(theta_j)
+    dA / (pi r**2 + dA) over the points seen from the differential area (a shadow
+    ray through the bounding volume hierarchy): Wallace, Elmquist and Haines 1989,
+    equation 4."""
+    total = 0.0
+    for a in range(k):
+        t = (a + 0.5) / k
+        for b in range(k):
+            s = (b + 0.5) / k
+            w0 = (1 - s) * (1 - t)
+            w1 = s * (1 - t)
+            w2 = s * t
+            w3 = (1 - s) * t
+            yx = w0 * quads[j, 0, 0] + w1 * quads[j, 1, 0] + w2 * quads[j, 2, 0] + w3 * quads[j, 3, 0]
+            yy = w0 * quads[j, 0, 1] + w1 * quads[j, 1, 1] + w2 * quads[j, 2, 1] + w3 * quads[j, 3, 1]
+            yz = w0 * quads[j, 0, 2] + w1 * quads[j, 1, 2] + w2 * quads[j, 2, 2] + w3 * quads[j, 3, 2]
+            dx = yx - cx
+            dy = yy - cy
+            dz = yz - cz
+            r2 = dx * dx + dy * dy + dz * dz
+            if not r2 > 0.0:
+                continue
+            rn = math.sqrt(r2)
+            ci = (dx * nx + dy * ny + dz * nz) / rn
+            cj = -(dx * normal[j, 0] + dy * normal[j, 1] + dz * normal[j, 2]) / rn
+            if ci <= 0.0 or cj <= 0.0:
+                continue
+            # dP/ds and dP/dt of the bilinear patch at (s, t)
+            sx = (1 - t) * (quads[j, 1, 0] - quads[j, 0, 0]) + t * (quads[j, 2, 0] - quads[j, 3, 0])
+            sy = (1 - t) * (quads[j, 1, 1] - quads[j, 0, 1]) + t * (quads[j, 2, 1] - quads[j, 3, 1])
+            sz = (1 - t) * (quads[j, 1, 2] - quads[j, 0, 2]) + t * (quads[j, 2, 2] - quads[j, 3, 2])
+            tx = (1 - s) * (quads[j, 3, 0] - quads[j, 0, 0]) + s * (quads[j, 2, 0] - quads[j, 1, 0])
+            ty = (1 - s) * (quads[j, 3, 1] - quads[j, 0, 1]) + s * (quads[j, 2, 1] - quads[j, 1, 1])
+            tz = (1 - s) * (quads[j, 3, 2] - quads[j, 0, 2]) + s * (quads[j, 2, 2] - quads[j, 1, 2])
+            ax = sy * tz - sz * ty
+            ay = sz * tx - sx * tz
+            az = sx * ty - sy * tx
+            da = math.sqrt(ax * ax + ay * ay + az * az) / (k * k)
+            if transmittance(cx, cy, cz, dx, dy, dz, 1e-6, 1.0 - 1e-6, bounds, links, table,
+                             clear, stack) <= 0.0:
+                continue
+            total += ci * cj * da / (math.pi * r2 + da)
+    return total
+
+
+@helper
+def raycast_row(i, quads, centre, normal, k, bounds, links, table, clear, stack, row,
+                column):
+    """Row ``i`` of the form factors by ray casting, from the centre of patch i to
+    every patch j (``column`` False); or column ``i``, from the centre of every patch
+    j to patch i (``column`` True: what each receiver j gets of what i shoots, area to
+    differential area, as progressive refinement by ray casting wants it)."""
+    for j in range(quads.shape[0]):
+        row[j] = 0.0
+        if j == i:
+            continue
+        if column:
+            row[j] = point_to_patch(centre[j, 0], centre[j, 1], centre[j, 2], normal[j, 0],
+                                    normal[j, 1], normal[j, 2], i, quads, normal, k, bounds,
+                                    links, table, clear, stack)
+        else:
+            row[j] = point_to_patch(centre[i, 0], centre[i, 1], centre[i, 2], normal[i, 0],
+                                    normal[i, 1], normal[i, 2], j, quads, normal, k, bounds,
+                                    links, table, clear, stack)
 
 
 @parallel_kernel
-def raycast_rows(sources, quads, centre, normal, k, bounds, links, table, clear, out):
-    """Rows ``sources`` of the form-factor matrix by ray casting into ``out`` (R, P),
-    the rows in parallel."""
+def raycast_rows(sources, quads, centre, normal, k, bounds, links, table, clear, column, out):
+    """Rows (or with ``column`` columns) ``sources`` of the form-factor matrix by ray
+    casting into ``out`` (R, P), in parallel."""
     for r in prange(sources.shape[0]):
         i = sources[r]
         if i < 0 or i >= quads.shape[0]:
             continue
         stack = np.empty(STACK, np.int64)
-        raycast_row(i, quads, centre, normal, k, bounds, links, table, clear, stack, out[r])
+        raycast_row(i, quads, centre, normal, k, bounds, links, table, clear, stack, out[r],
+                    column)

@@ -105,8 +105,10 @@ class RowSource:
             self.tree = BVH(patches.triangles())
             self.clear = np.zeros(len(self.tree))
 
-    def rows(self, sources: Any) -> np.ndarray:
-        """The rows ``sources`` (patch numbers), (len(sources), P)."""
+    def rows(self, sources: Any, columns: bool = False) -> np.ndarray:
+        """The rows ``sources`` (patch numbers), (len(sources), P); with ``columns``
+        (ray casting only) the columns instead: F_ji for every j, from the centre of
+        each patch j to the whole of patch i."""
         from .._kernels._jit import call
         from . import _formfactors as k
 
@@ -131,11 +133,23 @@ class RowSource:
             if one:
                 call(k.raycast_row, work, int(src[0]), self.quads, self.centre, self.normal,
                      self.resolution, t.bounds, t.links, t.table, self.clear,
-                     np.empty(k.STACK, np.int64), out[0])
+                     np.empty(k.STACK, np.int64), out[0], bool(columns))
             else:
                 call(k.raycast_rows, work, src, self.quads, self.centre, self.normal,
-                     self.resolution, t.bounds, t.links, t.table, self.clear, out)
+                     self.resolution, t.bounds, t.links, t.table, self.clear, bool(columns),
+                     out)
         return out
+
+    def received(self, i: int) -> np.ndarray:
+        """What each patch j receives of the energy patch i shoots, per unit of j's
+        area and of i's radiosity: F_ji.  Ray casting casts it directly (from each
+        receiver's centre to the shooter's area, Wallace et al. 1989); the hemicube
+        gives the shooter's row, and reciprocity F_ji = F_ij A_i / A_j (Cohen et al.
+        1988)."""
+        if self.method == "ray-casting":
+            return self.rows([i], columns=True)[0]
+        area = self.patches.area
+        return self.rows([i])[0] * area[i] / area
 
 
 def check_matrix_budget(n: int, copies: int = 1) -> None:

@@ -13,6 +13,7 @@ Gouraud shading interpolates, Cohen and Greenberg 1985, section 5); faces do not
 share nodes, so a corner of the room keeps both walls' colors apart.
 """
 
+import numbers
 from dataclasses import dataclass
 from typing import Any, List, Sequence
 
@@ -234,6 +235,16 @@ def _per_patch(name, value, owner, n_meshes, upper):
     """(P, 3) values of ``name`` given per mesh or per patch, checked: finite, >= 0 and
     below ``upper`` where there is one."""
     p = len(owner)
+    if isinstance(value, (list, tuple)) and len(value) == n_meshes \
+            and not all(isinstance(x, numbers.Real) for x in value):
+        # one item per mesh, each a number or (r, g, b)
+        rows = [v.real_array(f"{name}[{k}]", x, "a number or (r, g, b)") for k, x in
+                enumerate(value)]
+        for k, row in enumerate(rows):
+            if row.shape not in ((), (1,), (3,)):
+                raise ArgumentValueError(f"{name}[{k}] must be a number or (r, g, b), got "
+                                         f"shape {row.shape}")
+        value = np.array([np.broadcast_to(row.reshape(-1), (3,)) for row in rows])
     arr = v.real_array(name, value, "a number, (r, g, b), one per mesh or one per patch")
     if arr.ndim == 0 or arr.shape == (3,):
         out = np.broadcast_to(arr, (p, 3))

@@ -13,8 +13,10 @@ emission, rho the reflectance, F the form factors
   sweeps converge).
 * ``method="progressive"``: progressive refinement by shooting (Cohen, Chen, Wallace
   and Greenberg 1988): the patch with the most unshot energy dB_i A_i shoots it,
-  every patch j receiving rho_j dB_i F_ij A_i / A_j (the row of F from the shooter's
-  own hemicube, computed when it shoots), until the unshot energy is below
+  every patch j receiving rho_j dB_i F_ji, computed when i shoots: by the shooter's
+  own hemicube and reciprocity, F_ji = F_ij A_i / A_j, or by rays from each
+  receiver to the shooter (area to differential area, Wallace, Elmquist and Haines
+  1989); with a matrix given, its column i.  Until the unshot energy is below
   ``tolerance`` x the emitted energy.  Each estimate is displayed with the *ambient
   term* rho_j x ambient, ambient = R sum_j dB_j A_j / sum_j A_j, R = 1 / (1 -
   rho_avg), the area-weighted mean reflectance (section 3.4 of the paper), so the
@@ -241,9 +243,8 @@ def solve(meshes: Any, emission: Any = None, reflectance: Any = None, *,
         return _gauss_seidel(pts, f, tol, limit)
     if given:
         matrix = _matrix(form_factors, p)
-        return _progressive(pts, lambda i: matrix[i], tol, limit)
-    source = RowSource(pts, form_factors, resolution)
-    return _progressive(pts, lambda i: source.rows([i])[0], tol, limit)
+        return _progressive(pts, lambda i: matrix[:, i], tol, limit)
+    return _progressive(pts, RowSource(pts, form_factors, resolution).received, tol, limit)
 
 
 def _gauss_seidel(pts: Patches, f: np.ndarray, tol: float, limit: int) -> Radiosity:
@@ -265,7 +266,9 @@ def _gauss_seidel(pts: Patches, f: np.ndarray, tol: float, limit: int) -> Radios
                      np.array(history), np.array(power), converged, f)
 
 
-def _progressive(pts: Patches, row: Any, tol: float, limit: int) -> Radiosity:
+def _progressive(pts: Patches, received: Any, tol: float, limit: int) -> Radiosity:
+    """Shooting: ``received(i)`` gives F_ji for every j, the fraction of patch i's
+    radiosity that arrives at j per unit of j's area."""
     area = pts.area
     rho = pts.reflectance
     b = pts.emission.copy()
@@ -278,10 +281,10 @@ def _progressive(pts: Patches, row: Any, tol: float, limit: int) -> Radiosity:
     for _ in range(limit):
         energy = area * unshot.sum(axis=1)
         i = int(np.argmax(energy))
-        f = row(i)
+        f = received(i)
         shot = unshot[i].copy()
         unshot[i] = 0.0
-        gain = rho * shot[None, :] * (f * area[i] / area)[:, None]
+        gain = rho * shot[None, :] * f[:, None]
         b += gain
         unshot += gain
         history.append(float((area[:, None] * unshot).sum()) / emitted)

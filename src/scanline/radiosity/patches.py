@@ -29,6 +29,9 @@ MAX_PATCHES = 60_000
 #: Largest subdivision of a face (patches per side).
 MAX_SUBDIVISIONS = 256
 
+#: Largest emission: radiosities stay far from float64's overflow.
+MAX_EMISSION = 1e100
+
 #: A patch whose area is below this fraction of the scene's squared size is
 #: degenerate (its normal and form factors are undefined).
 DEGENERATE = 1e-12
@@ -260,6 +263,9 @@ def _per_patch(name, value, owner, n_meshes, upper):
         raise ArgumentValueError(f"{name} must be finite (got NaN or infinity)")
     if (out < 0).any():
         raise ArgumentValueError(f"{name} must be >= 0, got {float(out.min())!r}")
+    if upper is None and (out > MAX_EMISSION).any():
+        raise ArgumentValueError(f"{name} must be at most {MAX_EMISSION:g}, got "
+                                 f"{float(out.max())!r}")
     if upper is not None and (out >= upper).any():
         raise ArgumentValueError(
             f"{name} must be below {upper:g} on every channel (a surface that reflects all "

@@ -270,3 +270,21 @@ def test_fuzzed_generators_never_crash(gen, extra):
     _render({"version": 2, "canvas": {"width": 24, "height": 16},
              "cameras": [{"eye": [3, 2, 4], "target": [0, 0, 0]}],
              "segments": [{"name": "s", "primitives": [prim]}]})
+
+
+def test_display_file_meshes_take_other_libraries_meshes():
+    import trimesh
+    box = trimesh.creation.box(extents=(2, 2, 2))
+    cam = sl.Camera(eye=(4, 3, 3), target=(0, 0, 0))
+    df = sl.DisplayFile()
+    df.set_camera(cam)
+    df.create_segment("a")
+    df.mesh(box)
+    df.close_segment()
+    got = sl.FrameBuffer(40, 40)
+    df.draw(got)
+    ref = sl.FrameBuffer(40, 40)
+    sl.draw3d.wireframe(ref, sl.mesh.Mesh(np.asarray(box.vertices), np.asarray(box.faces)), cam)
+    assert (got.to_array() == ref.to_array()).all() and got.to_array().any()
+    with pytest.raises(TypeError, match="trimesh"):
+        df.mesh("cube.obj")

@@ -428,15 +428,18 @@ class DisplayFile:
         self._add3d("polyline3d", {"points": pts}, attrs)
 
     def mesh(self, mesh, color=None, depth_cue=None, background="black", **line):
-        """Append the wireframe of a :class:`~scanline.mesh.Mesh`, seen through the
-        current camera into the current viewport: ``color`` (None: the mesh's own
-        colors, else white), ``depth_cue`` as :func:`scanline.draw3d.wireframe`
-        (fading toward ``background``), ``line`` as :meth:`polyline`."""
+        """Append the wireframe of a mesh -- a :class:`~scanline.mesh.Mesh` or any
+        object :meth:`~scanline.mesh.Mesh.from_any` takes (trimesh, meshio, Open3D) --
+        seen through the current camera into the current viewport: ``color`` (None:
+        the mesh's own colors, else white), ``depth_cue`` as
+        :func:`scanline.draw3d.wireframe` (fading toward ``background``), ``line`` as
+        :meth:`polyline`."""
         from ..draw3d.wireframe import depth_cue_intensities
-        from ..mesh import Mesh
+        from ..mesh.convert import TAKES, from_any, kind
 
-        if not isinstance(mesh, Mesh):
-            raise ArgumentTypeError(f"mesh must be a scanline.mesh.Mesh, got {v._show(mesh)}")
+        if kind(mesh) is None:
+            raise ArgumentTypeError(f"mesh must be {TAKES}, got {v._show(mesh)}")
+        mesh = from_any(mesh)
         depth_cue_intensities(depth_cue)
         line_attrs = p.line_attributes("white" if color is None else color, **line)
         attrs = {"color": None if color is None else line_attrs["color"], "line": line_attrs,

@@ -167,7 +167,7 @@ def textured_row(y, faces, table, tface, face_mat, mats, mat_tex, texels, levels
             continue
         texture_chunk(n, s, ms, mat_tex, texels, levels, k > 5, shading)
         if len(shading) == PHONG:
-            light_chunk(n, s, ms, True, mats, ambient, sources, far, eye, expo, spec)
+            light_chunk(n, s, ms, np.bool_(True), mats, ambient, sources, far, eye, expo, spec)
         store_chunk(y, n, s, xs, gamma_table, thresholds, raster, shading, mode)
 
 
@@ -229,7 +229,7 @@ def vertex_light(lo, hi, points, normals, colors, material, mats, ambient, sourc
                     s[(PX + ch) * CHUNK + i] = points[p, ch]
                     s[(NX + ch) * CHUNK + i] = normals[p, ch]
                     s[(CR + ch) * CHUNK + i] = colors[0 if one else p, ch] if part == 0 else 0.0
-            light_chunk(n, s, ms, True, mats, ambient, sources, far, eye, expo, spec)
+            light_chunk(n, s, ms, np.bool_(True), mats, ambient, sources, far, eye, expo, spec)
             for i in range(n):
                 for ch in range(3):
                     value = s[(IR + ch) * CHUNK + i]

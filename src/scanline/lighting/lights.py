@@ -132,12 +132,12 @@ class AreaLight(PointLight):
     """A light-emitting parallelogram: the corner ``corner`` and the edges ``edge_u``
     and ``edge_v`` (world vectors), its ``intensity`` shared by its area.
 
-    The ray tracer samples it for soft shadows, distributed ray tracing (Cook, Porter
-    and Carpenter 1984; Hearn & Baker 14-6, "distributed ray tracing"): from each
-    point it shades, ``samples`` x ``samples`` shadow rays go to jittered points of as
-    many equal cells of the parallelogram, each carrying ``intensity / samples**2``;
-    the fraction that reach it is the penumbra.  The other methods see it as a
-    :class:`PointLight` at its center (its ``position``), without attenuation.
+    It lights as a :class:`PointLight` at its center (its ``position``), without
+    attenuation; the ray tracer samples it for soft shadows, distributed ray tracing
+    (Cook, Porter and Carpenter 1984; Hearn & Baker 14-6): from each point it shades,
+    ``samples`` x ``samples`` shadow rays go to jittered points of as many equal cells
+    of the parallelogram, and the fraction that reach it scales the light's term (the
+    penumbra).
     """
     corner: np.ndarray
     edge_u: np.ndarray

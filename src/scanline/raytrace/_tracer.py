@@ -2,14 +2,15 @@
 1980; Hearn & Baker 14-6, "basic ray-tracing algorithm").
 
 Each sample's primary ray has its first surface already (the ray-casting method's,
-the same ray); from there the binary ray tree is walked depth first with a stack of
-rays instead of recursion.  At every hit point p the local intensity is the basic
-illumination model (Hearn & Baker 14-2, as :mod:`scanline._kernels.shade` evaluates
-it for Phong shading: the normal interpolated, the viewer along the incoming ray),
-with every light's term multiplied by what a shadow ray from p toward it lets through
-(0 behind an opaque surface, the product of the k_t of transparent ones); an area
-light sends a jittered shadow ray to each cell of its grid (Cook, Porter and
-Carpenter 1984).  Then
+the same ray) and its local intensity (the shading stage's, with this module's
+shadow rays as its shadow test: :func:`shadow_all`); from there the binary ray tree
+is walked depth first with a stack of rays instead of recursion.  At every further
+hit point p the local intensity is the basic illumination model (Hearn & Baker 14-2,
+as Phong shading evaluates it: the normal interpolated, the viewer along the
+incoming ray), with every light's term multiplied by what a shadow ray from p toward
+it lets through (0 behind an opaque surface, the product of the k_t of transparent
+ones); an area light's term is its center's, times the mean of jittered shadow rays
+to each cell of its grid (Cook, Porter and Carpenter 1984).  Then
 
     I = (1 - k_t) I_local + (k_r + k_t F) I_reflected + k_t (1 - F) I_transmitted
 
@@ -135,88 +136,122 @@ def _log(log, count, ray, parent, kind, depth, o, d, t, facet, weight, local, li
 
 
 @helper
+def _seen(ox, oy, oz, tmin, s, lights, bounds, links, table, clear, stack, state):
+    """What reaches (ox, oy, oz) of light ``s``: the transmittance of the shadow ray
+    toward it (:func:`scanline.raytrace._bvh.transmittance`; from ``tmin`` on), or for
+    an area light the mean over its grid of cells of the shadow rays to a jittered
+    point of each (Cook, Porter and Carpenter 1984).  Returns ``(through, distance
+    to the light (inf at infinity), direction x, y, z)`` of the last ray."""
+    grid = int(lights[s, GRID])
+    cells = grid * grid if grid > 0 else 1
+    total = 0.0
+    dist = math.inf
+    lx = ly = lz = 0.0
+    for cell in range(cells):
+        if grid > 0:
+            a = (cell % grid + next_random(state)) / grid
+            b = (cell // grid + next_random(state)) / grid
+            tx = lights[s, CORNER] + a * lights[s, EDGE_U] + b * lights[s, EDGE_V] - ox
+            ty = (lights[s, CORNER + 1] + a * lights[s, EDGE_U + 1] + b * lights[s, EDGE_V + 1]
+                  - oy)
+            tz = (lights[s, CORNER + 2] + a * lights[s, EDGE_U + 2] + b * lights[s, EDGE_V + 2]
+                  - oz)
+        else:
+            w = lights[s, 3]
+            tx = lights[s, 0] - w * ox
+            ty = lights[s, 1] - w * oy
+            tz = lights[s, 2] - w * oz
+        dist = math.sqrt(tx * tx + ty * ty + tz * tz)
+        if not dist > 0:
+            total += 1.0
+            continue
+        lx = tx / dist
+        ly = ty / dist
+        lz = tz / dist
+        if grid == 0 and lights[s, 3] == 0.0:
+            dist = math.inf
+        total += transmittance(ox, oy, oz, lx, ly, lz, tmin, dist - tmin, bounds, links, table,
+                               clear, stack)
+    return total / cells, dist, lx, ly, lz
+
+
+@kernel
+def shadow_all(start, step, points, seed, eps, lights, bounds, links, table, clear, out):
+    """Per point (rows of ``points``) and light (rows of ``lights``) what reaches the
+    point (:func:`_seen`, shadow rays from ``eps`` along them on) into ``out`` (S,
+    P): the shading's shadow test for the primary rays' hits; the points numbered
+    ``start``, ``start + step`` ... (one call per thread)."""
+    stack = np.empty(STACK, np.int64)
+    state = np.empty(1, np.uint64)
+    for i in range(start, points.shape[0], max(step, 1)):
+        state[0] = np.uint64(seed) * np.uint64(0xD1B54A32D192ED03) + np.uint64(i)
+        next_random(state)
+        for s in range(lights.shape[0]):
+            out[s, i] = _seen(points[i, 0], points[i, 1], points[i, 2], eps, s, lights, bounds,
+                              links, table, clear, stack, state)[0]
+
+
+@helper
 def _lit(p, n, ng, v, sd, m, mats, lights, ambient, blinn, eps, bounds, links, table, clear,
          stack, state, out, log, count, ray, depth):
     """The local intensity at ``p`` (normal ``n``, geometric normal ``ng``, both facing
     the viewer ``v``; color ``sd``; material row ``m``) into ``out`` (3,): ambient plus
-    every light's diffuse and specular terms, each times what its shadow rays let
-    through."""
+    every light's diffuse and specular terms (an area light's from its center), each
+    times what its shadow rays let through (:func:`_seen`) -- the model of
+    :func:`scanline.lighting.intensity` with shadow maps' visibility."""
     for c in range(3):
         out[c] = mats[m, 0] * ambient[c] * sd[c]
     kd = mats[m, 1]
     ks = mats[m, 2]
     shin = mats[m, 3]
     cut = mats[m, 7]
-    to = np.empty(3)
     zero = np.zeros(3)
+    o = np.empty(3)
+    d3 = np.empty(3)
     for s in range(lights.shape[0]):
-        grid = int(lights[s, GRID])
-        cells = grid * grid if grid > 0 else 1
-        for cell in range(cells):
-            if grid > 0:
-                a = (cell % grid + next_random(state)) / grid
-                b = (cell // grid + next_random(state)) / grid
-                for c in range(3):
-                    to[c] = (lights[s, CORNER + c] + a * lights[s, EDGE_U + c]
-                             + b * lights[s, EDGE_V + c] - p[c])
-                f = 1.0 / cells
+        w = lights[s, 3]
+        tx = lights[s, 0] - w * p[0]
+        ty = lights[s, 1] - w * p[1]
+        tz = lights[s, 2] - w * p[2]
+        dist = math.sqrt(tx * tx + ty * ty + tz * tz)
+        if not dist > 0:
+            continue
+        lx = tx / dist
+        ly = ty / dist
+        lz = tz / dist
+        # f = min(1, 1 / (a0 + a1 d + a2 d^2)); a light at infinity: d = 1, f = 1
+        f = min(1.0, 1.0 / (lights[s, 4] + lights[s, 5] * dist + lights[s, 6] * dist * dist))
+        if lights[s, 9] > 0:
+            cos = -(lx * lights[s, 10] + ly * lights[s, 11] + lz * lights[s, 12])
+            if cos >= lights[s, 7]:
+                f *= min(max(cos, 0.0), 1.0) ** lights[s, 8]
             else:
-                w = lights[s, 3]
-                for c in range(3):
-                    to[c] = lights[s, c] - w * p[c]
-                f = 1.0
-            dist = math.sqrt(to[0] * to[0] + to[1] * to[1] + to[2] * to[2])
-            if not dist > 0:
-                continue
-            lx = to[0] / dist
-            ly = to[1] / dist
-            lz = to[2] / dist
-            if grid == 0:
-                # f = min(1, 1 / (a0 + a1 d + a2 d^2)); a light at infinity: d = 1, f = 1
-                f = min(1.0, 1.0 / (lights[s, 4] + lights[s, 5] * dist
-                                    + lights[s, 6] * dist * dist))
-                if lights[s, 3] == 0.0:
-                    dist = math.inf
-                if lights[s, 9] > 0:
-                    cos = -(lx * lights[s, 10] + ly * lights[s, 11] + lz * lights[s, 12])
-                    if cos >= lights[s, 7]:
-                        f *= min(max(cos, 0.0), 1.0) ** lights[s, 8]
-                    else:
-                        f = 0.0
-            nl = n[0] * lx + n[1] * ly + n[2] * lz
-            if not (nl > 0 and f > 0):
-                continue
-            side = 1.0 if ng[0] * lx + ng[1] * ly + ng[2] * lz >= 0 else -1.0
-            ox = p[0] + side * eps * ng[0]
-            oy = p[1] + side * eps * ng[1]
-            oz = p[2] + side * eps * ng[2]
-            through = transmittance(ox, oy, oz, lx, ly, lz, 0.0, dist - eps, bounds, links,
-                                    table, clear, stack)
-            if log.shape[0] > 0:
-                to[0] = ox
-                to[1] = oy
-                to[2] = oz
-                d3 = np.empty(3)
-                d3[0] = lx
-                d3[1] = ly
-                d3[2] = lz
-                _log(log, count, -1, ray, SHADOW, depth + 1, to, d3, dist, -1, 0.0, zero, s,
-                     through)
-            if through <= 0.0:
-                continue
-            if blinn:
-                hx = lx + v[0]
-                hy = ly + v[1]
-                hz = lz + v[2]
-                hl = math.sqrt(hx * hx + hy * hy + hz * hz)
-                sv = (n[0] * hx + n[1] * hy + n[2] * hz) / hl if hl > 0 else 0.0
-            else:
-                sv = (v[0] * (2.0 * nl * n[0] - lx) + v[1] * (2.0 * nl * n[1] - ly)
-                      + v[2] * (2.0 * nl * n[2] - lz))
-            shine = min(sv, 1.0) ** shin if sv > cut else 0.0
-            g = f * through
-            for c in range(3):
-                out[c] += g * lights[s, 13 + c] * (nl * kd * sd[c] + shine * ks * mats[m, 4 + c])
+                f = 0.0
+        nl = n[0] * lx + n[1] * ly + n[2] * lz
+        if not (nl > 0 and f > 0):
+            continue
+        side = 1.0 if ng[0] * lx + ng[1] * ly + ng[2] * lz >= 0 else -1.0
+        for c in range(3):
+            o[c] = p[c] + side * eps * ng[c]
+        through, far, d3[0], d3[1], d3[2] = _seen(o[0], o[1], o[2], 0.0, s, lights, bounds,
+                                                  links, table, clear, stack, state)
+        if log.shape[0] > 0:
+            _log(log, count, -1, ray, SHADOW, depth + 1, o, d3, far, -1, 0.0, zero, s, through)
+        if through <= 0.0:
+            continue
+        if blinn:
+            hx = lx + v[0]
+            hy = ly + v[1]
+            hz = lz + v[2]
+            hl = math.sqrt(hx * hx + hy * hy + hz * hz)
+            sv = (n[0] * hx + n[1] * hy + n[2] * hz) / hl if hl > 0 else 0.0
+        else:
+            sv = (v[0] * (2.0 * nl * n[0] - lx) + v[1] * (2.0 * nl * n[1] - ly)
+                  + v[2] * (2.0 * nl * n[2] - lz))
+        shine = min(sv, 1.0) ** shin if sv > cut else 0.0
+        g = f * through
+        for c in range(3):
+            out[c] += g * lights[s, 13 + c] * (nl * kd * sd[c] + shine * ks * mats[m, 4 + c])
 
 
 @helper
@@ -261,13 +296,13 @@ def _push(rays, top, p, offset, ng, weight, depth, parent, kind):
 
 
 @helper
-def trace_sample(origin, direction, first, sample, seed, max_depth, eps, blinn, bounds, links,
-                 table, prim_facet, facet_row, clear, world_n, vertex_normals, colors,
+def trace_sample(origin, direction, first, given, sample, seed, max_depth, eps, blinn, bounds,
+                 links, table, prim_facet, facet_row, clear, world_n, vertex_normals, colors,
                  facet_mat, front, mats, lights, ambient, background, rays, stack, out, log,
                  count):
     """Walk the ray tree of one sample whose primary ray (``origin``, ``direction``:
-    unit) meets facet ``first`` (-1: nothing; then ``out`` is NaN): the intensity into
-    ``out`` (3,).  ``rays``: a (MAX_RAYS + 1, 10) stack of rays (origin, direction,
+    unit) meets facet ``first`` (-1: nothing; then ``out`` is NaN), where the shading
+    stage found the local intensity ``given`` (3,): the intensity into ``out`` (3,).  ``rays``: a (MAX_RAYS + 1, 10) stack of rays (origin, direction,
     weight, depth, parent, kind)."""
     if first < 0:
         for c in range(3):
@@ -336,8 +371,12 @@ def trace_sample(origin, direction, first, sample, seed, max_depth, eps, blinn, 
             n[c] *= r
             if not entering:
                 ng[c] = -ng[c]
-        _lit(p, n, ng, v, sd, m, mats, lights, ambient, blinn, eps, bounds, links, table,
-             clear, stack, state, local, log, count, ray, depth)
+        if parent < 0:
+            for c in range(3):
+                local[c] = given[c]
+        else:
+            _lit(p, n, ng, v, sd, m, mats, lights, ambient, blinn, eps, bounds, links, table,
+                 clear, stack, state, local, log, count, ray, depth)
         kt = mats[m, KT]
         kr = mats[m, KR]
         for c in range(3):
@@ -379,11 +418,12 @@ def trace_sample(origin, direction, first, sample, seed, max_depth, eps, blinn, 
 
 
 @kernel
-def trace_all(start, step, origins, directions, firsts, samples, seed, max_depth, eps, blinn,
-              bounds, links, table, prim_facet, facet_row, clear, world_n, vertex_normals,
-              colors, facet_mat, front, mats, lights, ambient, background, out, log, count):
+def trace_all(start, step, origins, directions, firsts, givens, samples, seed, max_depth, eps,
+              blinn, bounds, links, table, prim_facet, facet_row, clear, world_n,
+              vertex_normals, colors, facet_mat, front, mats, lights, ambient, background, out,
+              log, count):
     """:func:`trace_sample` for every sample (rows of ``origins``, ``directions``,
-    ``firsts`` and ``samples``, the samples' numbers for the random numbers) into
+    ``firsts``, ``givens`` and ``samples``, the samples' numbers for the random numbers) into
     ``out`` (P, 3): the chunks of :data:`CHUNK` samples numbered ``start``, ``start +
     step`` ... (calls with start = 0 .. step - 1 on as many threads share the work,
     the costly chunks of glass and mirrors spread among them).  ``log`` (L,
@@ -393,10 +433,10 @@ def trace_all(start, step, origins, directions, firsts, samples, seed, max_depth
     rays = np.empty((MAX_RAYS + 1, 10))
     for chunk in range(start, (total + CHUNK - 1) // CHUNK, max(step, 1)):
         for i in range(chunk * CHUNK, min(total, (chunk + 1) * CHUNK)):
-            trace_sample(origins[i], directions[i], firsts[i], samples[i], seed, max_depth,
-                         eps, blinn, bounds, links, table, prim_facet, facet_row, clear,
-                         world_n, vertex_normals, colors, facet_mat, front, mats, lights,
-                         ambient, background, rays, stack, out[i], log, count)
+            trace_sample(origins[i], directions[i], firsts[i], givens[i], samples[i], seed,
+                         max_depth, eps, blinn, bounds, links, table, prim_facet, facet_row,
+                         clear, world_n, vertex_normals, colors, facet_mat, front, mats,
+                         lights, ambient, background, rays, stack, out[i], log, count)
 
 
 @kernel

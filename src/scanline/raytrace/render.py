@@ -7,10 +7,12 @@ surface each one meets first.  From that surface on, the tracer
 (:mod:`scanline.raytrace._tracer`) follows shadow, reflected and transmitted rays
 through a bounding volume hierarchy of the scene's world facets
 (:class:`~scanline.raytrace.BVH`), and the intensity it sums is stored with the
-shading's gamma.  Every hit is lit by the basic illumination model at the point,
-with the interpolated normal (as Phong shading lights a pixel), so a scene with no
-reflective or transparent surface and no shadow falling on a seen point comes out
-as ray casting with ``shading="phong"`` draws it, pixel for pixel.
+shading's gamma.  The primary hits are lit by the shading stage itself (any
+``shading=`` model, textures, depth cueing), its shadow test made by shadow rays;
+the further hits by the basic illumination model at the point with the interpolated
+normal, as Phong shading lights a pixel.  So a scene with no reflective or
+transparent surface and no shadow falling on a seen point comes out as ray casting
+draws it, pixel for pixel.
 """
 
 from dataclasses import dataclass
@@ -34,10 +36,13 @@ OFFSET = 1e-7
 class Traced:
     """A screen scene ready for the tracer kernel: the tree over its world facets and
     the per-facet, per-material and per-light tables (the kernel's arguments after
-    the samples' own)."""
+    the samples' own), and those the shadow test reads."""
     tree: object
     arguments: tuple
-    lights: int
+    lights: np.ndarray
+    seed: int
+    eps: float
+    clear: np.ndarray
 
 
 def material_table(materials, gamma):
@@ -91,14 +96,16 @@ def traced(scene, shading, background, max_depth, seed):
     lights, ambient = light_table(shading.lights)
     size = float(np.linalg.norm(tree.bounds[0, 3:] - tree.bounds[0, :3])) if len(world) else 1.0
     eps = OFFSET * max(size, 1e-300)
+    clear = v.kernel_array(kt[tree.order])
     return Traced(tree, (
         int(seed), int(max_depth), eps, shading.specular == "blinn", tree.bounds, tree.links,
-        tree.table, v.kernel_array(tree.order, np.int64), facet_row,
-        v.kernel_array(kt[tree.order]), v.kernel_array(scene.normals),
+        tree.table, v.kernel_array(tree.order, np.int64), facet_row, clear,
+        v.kernel_array(scene.normals),
         v.kernel_array(scene.vertex_normals), v.kernel_array(decoded(scene.vertex_colors,
                                                                      shading.gamma)),
         v.kernel_array(scene.facet_mesh, np.int64), v.kernel_array(scene.front, np.bool_),
-        mats, lights, v.kernel_array(ambient), v.kernel_array(background)), len(lights))
+        mats, lights, v.kernel_array(ambient), v.kernel_array(background)), lights, int(seed),
+        eps, clear)
 
 
 def primary_rays(scene, xs, ys):
@@ -121,12 +128,55 @@ def primary_rays(scene, xs, ys):
     return np.ascontiguousarray(ends[0]), np.ascontiguousarray(d)
 
 
-def trace(prepared, origins, directions, firsts, samples, log=None):
+def shadow_test(prepared, twin=False):
+    """The shading's shadow test (:attr:`scanline.shading.ShadingOptions.shadows`) by
+    shadow rays through the tree: ``test(points (M, 3))`` -> per non-ambient light,
+    the fraction of it that reaches each point
+    (:func:`scanline.raytrace._tracer.shadow_all`; ``twin``: run as Python, for the
+    step table)."""
+    from .._kernels._jit import python
+    from .._kernels._threads import call_in_bands
+    from . import _tracer as k
+
+    tree = prepared.tree
+    lights = prepared.lights
+
+    def test(points):
+        pts = v.kernel_array(np.reshape(points, (-1, 3)))
+        out = np.empty((len(lights), len(pts)))
+        args = (pts, prepared.seed, prepared.eps, lights, tree.bounds, tree.links, tree.table,
+                prepared.clear, out)
+        if twin:
+            with np.errstate(all="ignore"):
+                python(k.shadow_all)(0, 1, *args)
+        else:
+            call_in_bands(k.shadow_all, 50 * len(pts) * max(len(lights), 1), *args)
+        return list(out.reshape((len(lights),) + np.shape(points)[:-1]))
+    return test
+
+
+def primary_light(scene, layer, ys, xs, shading, prepared, background, twin=False):
+    """The local intensities (P, 3) of the primary rays' hits at pixels (``xs``, ``ys``)
+    of ``layer`` (the ray caster's): the shading stage's own
+    (:func:`scanline.shading.compose`: any shading model, textures, depth cueing),
+    with :func:`shadow_test` as its shadow test."""
+    from dataclasses import replace
+
+    from ..shading.compose import _points
+
+    options = replace(shading, shadows=shadow_test(prepared, twin))
+    _, linear = _points(scene, layer.ids, layer.depth, ys, xs, xs.astype(np.float64),
+                        ys.astype(np.float64), options, background)
+    return linear
+
+
+def trace(prepared, origins, directions, firsts, givens, samples, log=None):
     """Linear intensities (P, 3) of the samples whose primary rays (``origins``,
-    ``directions``) meet the facets ``firsts`` first (-1: none, NaN out), the
-    samples numbered ``samples`` for the random numbers; ``log``: a (L,
-    LOG_COLUMNS) array that receives the rays of a single sample (Python, the
-    kernel's twin), returned with the number of rows written."""
+    ``directions``) meet the facets ``firsts`` first (-1: none, NaN out), where the
+    local intensities are ``givens`` (P, 3), the samples numbered ``samples`` for the
+    random numbers; ``log``: a (L, LOG_COLUMNS) array that receives the rays of a
+    single sample (Python, the kernel's twin), returned with the number of rows
+    written."""
     from .._kernels._jit import python
     from .._kernels._threads import call_in_bands
     from . import _tracer as k
@@ -134,10 +184,10 @@ def trace(prepared, origins, directions, firsts, samples, log=None):
     out = np.empty((len(origins), 3))
     count = np.zeros(1, np.int64)
     args = (v.kernel_array(origins), v.kernel_array(directions),
-            v.kernel_array(firsts, np.int64), v.kernel_array(samples, np.int64),
-            *prepared.arguments, out)
+            v.kernel_array(firsts, np.int64), v.kernel_array(givens),
+            v.kernel_array(samples, np.int64), *prepared.arguments, out)
     if log is None:
-        call_in_bands(k.trace_all, 20 * len(origins) * (8 + 6 * prepared.lights), *args,
+        call_in_bands(k.trace_all, 20 * len(origins) * (8 + 6 * len(prepared.lights)), *args,
                       np.zeros((0, k.LOG_COLUMNS)), count)
         return out
     with np.errstate(all="ignore"):
@@ -168,10 +218,12 @@ def shade(fb, scene, layer, shading, options):
     first = scene.facet[ids[ys, xs]]
     facets[ys, xs] = first
     depth = MAX_DEPTH if options.max_depth is None else options.max_depth
-    prepared = traced(scene, shading, background_linear(fb, shading.gamma), depth,
-                      options.seed or 0)
+    background = background_linear(fb, shading.gamma)
+    prepared = traced(scene, shading, background, depth, options.seed or 0)
+    given = primary_light(scene, layer, ys, xs, shading, prepared, background)
     origins, directions = primary_rays(scene, xs, ys)
-    linear = trace(prepared, origins, directions, first, ys.astype(np.int64) * fb.width + xs)
+    linear = trace(prepared, origins, directions, first, given,
+                   ys.astype(np.int64) * fb.width + xs)
     call(k.store, 4 * len(ys), v.kernel_array(ys, np.int64), v.kernel_array(xs, np.int64),
          linear, *gamma_tables(shading.gamma), fb._raster()[0], fb.mode == "L",
          fb.mode == "RGBA")

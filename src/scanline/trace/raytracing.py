@@ -64,7 +64,7 @@ def ray_tracing(x=20, y=11, meshes=None, materials=None, lights=None, camera=Non
 
     from ..raytrace import _tracer as k
     from ..rendering.api import default_lights
-    from ..raytrace.render import primary_rays, trace, traced
+    from ..raytrace.render import primary_light, primary_rays, shadow_test, trace, traced
     from ..screen import prepare
     from ..shading import ShadingOptions
     from ..shading.compose import background_linear
@@ -94,9 +94,12 @@ def ray_tracing(x=20, y=11, meshes=None, materials=None, lights=None, camera=Non
     layer = raycast(screen)
     seen = int(layer.ids[y, x])
     first = int(screen.facet[seen]) if seen >= 0 else -1
-    prepared = traced(screen, shading, background_linear(fb, gamma), options.max_depth,
-                      options.seed)
+    light = background_linear(fb, gamma)
+    prepared = traced(screen, shading, light, options.max_depth, options.seed)
     origins, directions = primary_rays(screen, np.array([x]), np.array([y]))
+    px, py = np.array([x]), np.array([y])
+    local = primary_light(screen, layer, py, px, shading, prepared, light, twin=True) \
+        if first >= 0 else np.zeros((1, 3))
     notes = [f"{len(screen.materials)} mesh(es), {screen.face_count} faces on {width} x "
              f"{height}; max_depth {options.max_depth}, seed {options.seed}, gamma {gamma}",
              f"primary ray through pixel ({x}, {y}): origin "
@@ -105,10 +108,20 @@ def ray_tracing(x=20, y=11, meshes=None, materials=None, lights=None, camera=Non
     notes.append("intersections of the primary ray (t, face): " + (
         ", ".join(f"({t:.6f}, {f})" for t, f in _crossings(prepared, screen, origins[0],
                                                             directions[0])) or "none"))
-    shadow_rays = sum(max(int(g), 1) ** 2 for g in prepared.arguments[16][:, k.GRID])
+    shadow_rays = sum(max(int(g), 1) ** 2 for g in prepared.lights[:, k.GRID])
     log = np.zeros((k.MAX_RAYS * (1 + shadow_rays), k.LOG_COLUMNS))
-    out, count = trace(prepared, origins, directions, np.array([first]),
+    out, count = trace(prepared, origins, directions, np.array([first]), local,
                        np.array([y * width + x]), log=log)
+    if count:
+        # the primary hit's shadow rays: the shading stage's shadow test at the point
+        point = origins[0] + log[0, 10] * directions[0]
+        through = shadow_test(prepared, twin=True)(point[None])
+        extra = np.zeros((len(through), k.LOG_COLUMNS))
+        for s, fraction in enumerate(through):
+            extra[s, [0, 1, 2, 3, 10, 11, 19, 20]] = [-1, 0, k.SHADOW, 2, math.nan, -1, s,
+                                                      fraction[0]]
+        log = np.concatenate([extra, log[:count]])     # (put after the primary below)
+        count += len(extra)
     rows = []
     total = np.zeros(3)
     # the kernel logs a point's shadow rays before the ray that found the point
@@ -128,7 +141,7 @@ def ray_tracing(x=20, y=11, meshes=None, materials=None, lights=None, camera=Non
         rows.append({
             "ray": None if shadow else int(r[0]), "parent": None if r[1] < 0 else int(r[1]),
             "kind": kind, "depth": int(r[3]),
-            "t": float(r[10]) if math.isfinite(r[10]) else "inf",
+            "t": float(r[10]) if math.isfinite(r[10]) else None if math.isnan(r[10]) else "inf",
             "face": int(screen.facet_face[facet]) if facet >= 0 else -1,
             "light": int(r[19]) if shadow else None,
             "through": float(r[20]) if shadow else None,

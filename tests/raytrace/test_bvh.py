@@ -135,3 +135,21 @@ def test_bad_rays():
 def test_empty_tree_misses():
     hits = sl.raytrace.BVH(np.zeros((0, 3, 3))).intersect([(0, 0, 1)], [(0, 0, -1)])
     assert hits.triangle.tolist() == [-1]
+
+
+def test_degenerate_layouts_stay_correct_and_bounded():
+    """Hundreds of identical triangles (one centroid: no split) and triangles at
+    exponentially spaced places (a tree that would grow deeper than the traversal's
+    stack): the nearest hits are still the brute force's."""
+    base = np.array([[(0, 0, 0), (1, 0, 0), (0, 1, 0)]], float)
+    same = np.repeat(base, 300, axis=0)
+    far = base + (2.0 ** np.arange(120))[:, None, None] * np.array([1e-30, 0, 1.0])
+    for tri in (same, np.concatenate([same, far])):
+        tree = sl.raytrace.BVH(tri)
+        rng = np.random.default_rng(0)
+        o = np.c_[rng.uniform(0, 0.5, 200), rng.uniform(0, 0.5, 200), np.full(200, -1.0)]
+        d = np.tile([0.0, 0.0, 1.0], (200, 1))
+        t, _ = brute_force(tri, o, d)
+        hits = tree.intersect(o, d)
+        assert np.allclose(hits.t, t)
+        assert (tree.links[:, 1] >= 0).all() and len(tree.bounds) <= 2 * len(tri)

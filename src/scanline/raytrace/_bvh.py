@@ -130,7 +130,7 @@ def build(tri, order, bounds, links, table):
         count = end - start
         links[node, 0] = start
         links[node, 1] = count
-        if count <= 2 or depth >= DEPTH or nodes + 2 > cap:
+        if count <= 2 or depth >= DEPTH or nodes + 2 > cap or top + 2 > st_node.shape[0]:
             continue
         best_cost = math.inf
         best_axis = -1

@@ -98,18 +98,23 @@ def cornell_reference():
 # the shooter (Wallace et al. 1989) as accurate as gathering; by the shooter's
 # hemicube and reciprocity F_ji = F_ij A_i / A_j (Cohen et al. 1988), whose
 # centre-point error is largest next to the shooter and on the floor around the
-# blocks.  Tolerances: each surface's mean, and the patches' area-weighted RMS
-# difference over the reference's RMS.
-@pytest.mark.parametrize("method, form_factors, surfaces, patches", [
-    ("gauss-seidel", "hemicube", 0.03, 0.04),
-    ("gauss-seidel", "ray-casting", 0.02, 0.03),
-    ("progressive", "ray-casting", 0.02, 0.03),
-    ("progressive", "hemicube", 0.06, 0.12),
+# blocks.  Patches shooting in groups of 3 x 3 (Cohen et al. 1986's patches and
+# elements) shoot their mean unshot radiosity from their centroid: a coarser
+# shooter, a larger error.  Tolerances: each surface's mean, and the patches'
+# area-weighted RMS difference over the reference's RMS.
+@pytest.mark.parametrize("method, form_factors, group, surfaces, patches", [
+    ("gauss-seidel", "hemicube", 1, 0.03, 0.04),
+    ("gauss-seidel", "ray-casting", 1, 0.02, 0.03),
+    ("progressive", "ray-casting", 1, 0.02, 0.03),
+    ("progressive", "hemicube", 1, 0.06, 0.12),
+    ("progressive", "ray-casting", 3, 0.06, 0.08),
+    ("progressive", "hemicube", 3, 0.15, 0.25),
 ])
 def test_the_cornell_box_is_close_to_a_dense_reference(cornell_reference, method, form_factors,
-                                                        surfaces, patches):
+                                                        group, surfaces, patches):
     box, pts, reference = cornell_reference
-    s = sl.radiosity.solve(pts, method=method, form_factors=form_factors, tolerance=1e-5)
+    s = sl.radiosity.solve(pts, method=method, form_factors=form_factors, tolerance=1e-5,
+                           shooting_group=group)
     assert s.converged
 
     def by_surface(b):
@@ -193,6 +198,18 @@ def test_node_radiosity_is_the_mean_of_the_patches_around_it():
     assert at[(0.0, 0.0, 0.0)] == b[low_left, 0]
     bottom = np.flatnonzero(centre[:, 1] < 0.5)
     assert at[(0.5, 0.0, 0.0)] == pytest.approx(b[bottom, 0].mean())
+
+
+def test_shooting_groups_are_blocks_of_a_face_grid():
+    square = sl.mesh.Mesh([(0, 0, 0), (4, 0, 0), (4, 4, 0), (0, 4, 0)], [[0, 1, 2, 3]])
+    tri = sl.mesh.Mesh([(0, 0, 1), (1, 0, 1), (0, 1, 1)], [[0, 1, 2]])
+    pts = sl.radiosity.patches([square, tri], subdivisions=4)
+    group = pts.groups(2)
+    assert sorted(np.bincount(group).tolist()) == [1] * 16 + [4] * 4     # triangles alone
+    for g in set(group[:16].tolist()):          # each block: one quadrant of the square
+        c = pts.centre[group == g, :2]
+        assert len({tuple(x) for x in np.floor(c / 2)}) == 1
+    assert len(set(pts.groups(3)[:16].tolist())) == 4              # 3 + 1 rows and columns
 
 
 def test_a_triangle_is_cut_into_n_squared_triangles_of_equal_area():

@@ -17,13 +17,11 @@ from ..raytrace._bvh import STACK, transmittance
 
 
 @helper
-def _frame(quads, normal, i):
-    """The hemicube's axes at patch ``i``: (n, u, w), n the normal, u along the
-    patch's first edge (made perpendicular to n), w = n x u."""
-    nx, ny, nz = normal[i, 0], normal[i, 1], normal[i, 2]
-    ex = quads[i, 1, 0] - quads[i, 0, 0]
-    ey = quads[i, 1, 1] - quads[i, 0, 1]
-    ez = quads[i, 1, 2] - quads[i, 0, 2]
+def _frame(normal, edge, g):
+    """The hemicube's axes at source ``g``: (n, u, w), n its normal, u along its
+    ``edge`` (made perpendicular to n), w = n x u."""
+    nx, ny, nz = normal[g, 0], normal[g, 1], normal[g, 2]
+    ex, ey, ez = edge[g, 0], edge[g, 1], edge[g, 2]
     d = ex * nx + ey * ny + ez * nz
     ex -= d * nx
     ey -= d * ny
@@ -161,21 +159,24 @@ def _draw(j, px, py, m, plane, ids, depth, rows, cols, half, ylo):
 
 
 @helper
-def hemicube_row(i, quads, centre, normal, near, res, top, side, row):
-    """Row ``i`` of the form factors by the hemicube: the five faces drawn as item
-    buffers of patch numbers by the z-buffer, each pixel's delta form factor (``top``
-    (res, res), ``side`` (res / 2, res)) added to ``row[j]`` of the patch j seen
-    there, if j faces patch i (a back face hides what is behind it but sends
-    nothing)."""
+def hemicube_row(g, source, snormal, sedge, group, quads, centre, normal, near, res, top, side,
+                 row):
+    """The form factors from source ``g`` (its centre ``source[g]``, normal
+    ``snormal[g]``, first edge ``sedge[g]``) to every patch, by the hemicube: the
+    five faces drawn as item buffers of patch numbers by the z-buffer (the patches of
+    ``group`` g, the source itself, left out), each pixel's delta form factor
+    (``top`` (res, res), ``side`` (res / 2, res)) added to ``row[j]`` of the patch j
+    seen there, if j faces the source (a back face hides what is behind it but sends
+    nothing).  A source is a patch, or a group of patches that shoots together."""
     p = quads.shape[0]
-    axes = _frame(quads, normal, i)
+    axes = _frame(snormal, sedge, g)
     view = np.empty((3, 3))
     plane = np.empty(4)
     px = np.empty(8)
     py = np.empty(8)
     ids = np.empty((res, res), np.int64)
     depth = np.empty((res, res))
-    cx, cy, cz = centre[i, 0], centre[i, 1], centre[i, 2]
+    cx, cy, cz = source[g, 0], source[g, 1], source[g, 2]
     half = res / 2.0
     for j in range(p):
         row[j] = 0.0
@@ -188,7 +189,7 @@ def hemicube_row(i, quads, centre, normal, near, res, top, side, row):
                 ids[r, c] = -1
                 depth[r, c] = np.inf
         for j in range(p):
-            if j == i:
+            if group[j] == g:
                 continue
             m = _clip_project(quads, j, cx, cy, cz, view, near, half, ylo, px, py)
             if m < 3:
@@ -211,14 +212,16 @@ def hemicube_row(i, quads, centre, normal, near, res, top, side, row):
 
 
 @parallel_kernel
-def hemicube_rows(sources, quads, centre, normal, near, res, top, side, out):
-    """Rows ``sources`` of the form-factor matrix by the hemicube into ``out`` (R, P),
-    the rows in parallel."""
+def hemicube_rows(sources, source, snormal, sedge, group, quads, centre, normal, near, res, top,
+                  side, out):
+    """The rows of ``sources`` (numbers of sources, see :func:`hemicube_row`) by the
+    hemicube into ``out`` (R, P), the rows in parallel."""
     for r in prange(sources.shape[0]):
-        i = sources[r]
-        if i < 0 or i >= quads.shape[0]:
+        g = sources[r]
+        if g < 0 or g >= source.shape[0]:
             continue
-        hemicube_row(i, quads, centre, normal, near, res, top, side, out[r])
+        hemicube_row(g, source, snormal, sedge, group, quads, centre, normal, near, res, top,
+                     side, out[r])
 
 
 @helper

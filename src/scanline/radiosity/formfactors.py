@@ -85,16 +85,33 @@ def check_resolution(method: str, resolution: Optional[int]) -> int:
 
 class RowSource:
     """Rows of the form-factor matrix of ``patches`` on demand, by ``method`` at
-    ``resolution`` (the progressive solution asks for one row per shot)."""
+    ``resolution``; and what a group of patches (``group``, a number per patch,
+    :meth:`Patches.groups`; default each patch alone) sends to every patch when it
+    shoots (:meth:`received`, for the progressive solution)."""
 
     def __init__(self, patches: Patches, method: str = "hemicube",
-                 resolution: Optional[int] = None):
+                 resolution: Optional[int] = None, group: Optional[np.ndarray] = None):
         self.method = v.choice("method", method, METHODS)
         self.resolution = check_resolution(self.method, resolution)
         self.patches = patches
         self.quads = v.kernel_array(patches.quads)
         self.centre = v.kernel_array(patches.centre)
         self.normal = v.kernel_array(patches.normal)
+        self.edge = v.kernel_array(self.quads[:, 1] - self.quads[:, 0])
+        self.alone = np.arange(len(patches), dtype=np.int64)
+        self.group = self.alone if group is None else v.kernel_array(group, np.int64)
+        # each group's area, centroid, mean normal and first patch's edge
+        count = int(self.group.max()) + 1
+        area = patches.area
+        self.group_area = np.bincount(self.group, area, count)
+        weighted = [np.bincount(self.group, area * x, count) for x in
+                    (*self.centre.T, *self.normal.T)]
+        self.group_centre = v.kernel_array(np.stack(weighted[:3], 1) / self.group_area[:, None])
+        n = np.stack(weighted[3:], 1)
+        self.group_normal = v.kernel_array(n / np.sqrt((n * n).sum(axis=1))[:, None])
+        first = np.full(count, len(patches))
+        np.minimum.at(first, self.group, self.alone)
+        self.group_edge = v.kernel_array(self.edge[first])
         size = float(np.ptp(patches.vertices, axis=0).max())
         self.near = 1e-9 * size
         if self.method == "hemicube":
@@ -106,50 +123,46 @@ class RowSource:
             self.clear = np.zeros(len(self.tree))
 
     def rows(self, sources: Any, columns: bool = False) -> np.ndarray:
-        """The rows ``sources`` (patch numbers), (len(sources), P); with ``columns``
-        (ray casting only) the columns instead: F_ji for every j, from the centre of
-        each patch j to the whole of patch i."""
+        """The rows ``sources`` (patch numbers), (len(sources), P), in parallel; with
+        ``columns`` (ray casting only) the columns instead: F_ji for every j, from the
+        centre of each patch j to the whole of patch i."""
         from .._kernels._jit import call
         from . import _formfactors as k
 
         src = np.ascontiguousarray(sources, np.int64).reshape(-1)
         p = len(self.patches)
         out = np.zeros((len(src), p))
-        # one row (a shot of the progressive solution): the serial row helper, which
-        # spares the start of the parallel loop's threads
-        one = len(src) == 1 and 0 <= src[0] < p
         if self.method == "hemicube":
             res = self.resolution
-            work = len(src) * (60 * p + 4 * res * res)
-            if one:
-                call(k.hemicube_row, work, int(src[0]), self.quads, self.centre, self.normal,
-                     self.near, res, self.top, self.side, out[0])
-            else:
-                call(k.hemicube_rows, work, src, self.quads, self.centre, self.normal,
-                     self.near, res, self.top, self.side, out)
+            call(k.hemicube_rows, len(src) * (60 * p + 4 * res * res), src, self.centre,
+                 self.normal, self.edge, self.alone, self.quads, self.centre, self.normal,
+                 self.near, res, self.top, self.side, out)
         else:
             t = self.tree
-            work = len(src) * p * self.resolution ** 2 * 40
-            if one:
-                call(k.raycast_row, work, int(src[0]), self.quads, self.centre, self.normal,
-                     self.resolution, t.bounds, t.links, t.table, self.clear,
-                     np.empty(k.STACK, np.int64), out[0], bool(columns))
-            else:
-                call(k.raycast_rows, work, src, self.quads, self.centre, self.normal,
-                     self.resolution, t.bounds, t.links, t.table, self.clear, bool(columns),
-                     out)
+            call(k.raycast_rows, len(src) * p * self.resolution ** 2 * 40, src, self.quads,
+                 self.centre, self.normal, self.resolution, t.bounds, t.links, t.table,
+                 self.clear, bool(columns), out)
         return out
 
-    def received(self, i: int) -> np.ndarray:
-        """What each patch j receives of the energy patch i shoots, per unit of j's
-        area and of i's radiosity: F_ji.  Ray casting casts it directly (from each
-        receiver's centre to the shooter's area, Wallace et al. 1989); the hemicube
-        gives the shooter's row, and reciprocity F_ji = F_ij A_i / A_j (Cohen et al.
-        1988)."""
+    def received(self, g: int) -> np.ndarray:
+        """What each patch j receives of the energy group ``g`` shoots, per unit of j's
+        area and of the group's radiosity: F_jg.  Ray casting casts it directly (from
+        each receiver's centre to the group's patches, Wallace et al. 1989); the
+        hemicube, set at the group's centroid, gives its row, and reciprocity F_jg =
+        F_gj A_g / A_j (Cohen et al. 1988).  One hemicube runs serially (a parallel
+        loop's start would cost more than it saves)."""
+        from .._kernels._jit import call
+        from . import _formfactors as k
+
         if self.method == "ray-casting":
-            return self.rows([i], columns=True)[0]
-        area = self.patches.area
-        return self.rows([i])[0] * area[i] / area
+            return self.rows(np.flatnonzero(self.group == g), columns=True).sum(axis=0)
+        p = len(self.patches)
+        row = np.zeros(p)
+        res = self.resolution
+        call(k.hemicube_row, 60 * p + 4 * res * res, int(g), self.group_centre,
+             self.group_normal, self.group_edge, self.group, self.quads, self.centre,
+             self.normal, self.near, res, self.top, self.side, row)
+        return row * self.group_area[g] / self.patches.area
 
 
 def check_matrix_budget(n: int, copies: int = 1) -> None:

@@ -53,6 +53,10 @@ class Patches:
         E and rho per RGB channel (linear).
     mesh, face : ndarray of int64 (P,)
         The mesh (its place in the list given) and the face each patch comes from.
+    cell : ndarray of int64 (P,)
+        The patch's place in its face's grid: row x subdivisions + column for a
+        quadrilateral face, -1 for the triangles of other faces.
+    subdivisions : int
     """
     vertices: np.ndarray
     corners: np.ndarray
@@ -63,6 +67,8 @@ class Patches:
     reflectance: np.ndarray
     mesh: np.ndarray
     face: np.ndarray
+    cell: np.ndarray
+    subdivisions: int
 
     def __len__(self) -> int:
         return len(self.corners)
@@ -86,7 +92,21 @@ class Patches:
         r = self.reflectance if reflectance is None else _per_patch(
             "reflectance", reflectance, self.mesh, n_meshes, upper=1.0)
         return Patches(self.vertices, self.corners, self.area, self.centre, self.normal, e, r,
-                       self.mesh, self.face)
+                       self.mesh, self.face, self.cell, self.subdivisions)
+
+    def groups(self, size: int) -> np.ndarray:
+        """A group number per patch: the patches of a quadrilateral face in blocks of
+        ``size`` x ``size`` of its grid (the *patches* that shoot, of Cohen, Greenberg,
+        Immel and Brock 1986, these patches being their *elements*); each triangle on
+        its own."""
+        size = v.positive_int("size", size)
+        n = self.subdivisions
+        quad = self.cell >= 0
+        row, col = self.cell // n, self.cell % n
+        blocks = -(-n // size)
+        key = np.where(quad, (self.mesh * (int(self.face.max()) + 1) + self.face) * blocks ** 2
+                       + (row // size) * blocks + col // size, -1 - np.arange(len(self)))
+        return np.unique(key, return_inverse=True)[1].reshape(-1).astype(np.int64)
 
     def __repr__(self) -> str:
         return f"<Patches: {len(self)} patches, {len(self.vertices)} nodes>"
@@ -150,6 +170,7 @@ def patches(meshes: Any, subdivisions: int = 8, emission: Any = None,
     corners = np.concatenate([p[1] + base for p, base in zip(parts, nodes)])
     owner = np.concatenate([np.full(len(p[1]), k, np.int64) for k, p in enumerate(parts)])
     face = np.concatenate([p[2] for p in parts])
+    cell = np.concatenate([p[3] for p in parts])
     area, centre, normal = _geometry(verts[corners])
     scale = float(np.ptp(verts, axis=0).max()) ** 2
     flat = np.flatnonzero(~(area > DEGENERATE * scale))
@@ -163,14 +184,15 @@ def patches(meshes: Any, subdivisions: int = 8, emission: Any = None,
         "emission", emission, owner, len(items), upper=None)
     r = _default_reflectance(items, owner, face) if reflectance is None else _per_patch(
         "reflectance", reflectance, owner, len(items), upper=1.0)
-    return Patches(verts, corners, area, centre, normal, e, r, owner, face)
+    return Patches(verts, corners, area, centre, normal, e, r, owner, face, cell, n)
 
 
 def _subdivide(mesh, n):
-    """(nodes (V, 3), corners (P, 4), face of each patch (P,)) of one mesh."""
+    """(nodes (V, 3), corners (P, 4), face of each patch (P,), its cell (P,)) of one
+    mesh."""
     idx, off, sizes = mesh.face_indices, mesh.face_offsets, mesh.face_sizes
     pos = mesh.vertices
-    out_v, out_c, out_f = [], [], []
+    out_v, out_c, out_f, out_k = [], [], [], []
     base = 0
     quads = np.flatnonzero(sizes == 4)
     if len(quads):
@@ -186,6 +208,7 @@ def _subdivide(mesh, n):
         starts = base + np.arange(len(quads)) * (n + 1) ** 2
         out_c.append((starts[:, None, None] + local[None]).reshape(-1, 4))
         out_f.append(np.repeat(quads, n * n))
+        out_k.append(np.tile(np.arange(n * n), len(quads)))
         base += len(quads) * (n + 1) ** 2
     others = np.flatnonzero(sizes != 4)
     if len(others):
@@ -213,9 +236,11 @@ def _subdivide(mesh, n):
         starts = base + np.arange(len(owner)) * len(i)
         out_c.append((starts[:, None, None] + local[None]).reshape(-1, 4))
         out_f.append(np.repeat(owner, n * n))
+        out_k.append(np.full(len(owner) * n * n, -1))
     order = np.argsort(np.concatenate(out_f), kind="stable")       # patches in face order
     return (np.concatenate(out_v), np.concatenate(out_c)[order].astype(np.int64),
-            np.concatenate(out_f)[order].astype(np.int64))
+            np.concatenate(out_f)[order].astype(np.int64),
+            np.concatenate(out_k)[order].astype(np.int64))
 
 
 def _geometry(q):

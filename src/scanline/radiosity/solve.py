@@ -175,7 +175,8 @@ def _matrix(value: Any, n: int) -> np.ndarray:
 def solve(meshes: Any, emission: Any = None, reflectance: Any = None, *,
           subdivisions: int = 8, method: str = "gauss-seidel",
           form_factors: Union[str, Any] = "hemicube", resolution: Optional[int] = None,
-          tolerance: float = 1e-4, max_iterations: Optional[int] = None) -> Radiosity:
+          tolerance: float = 1e-4, max_iterations: Optional[int] = None,
+          shooting_group: int = 1) -> Radiosity:
     """Solve the radiosity equations of ``meshes``.
 
     Parameters
@@ -203,6 +204,12 @@ def solve(meshes: Any, emission: Any = None, reflectance: Any = None, *,
         the unshot energy over the emitted energy (0 < tolerance < 1).
     max_iterations : int, optional
         Most sweeps (default 1000) or shots (default 20 per patch).
+    shooting_group : int
+        Progressive: the patches of a quadrilateral face shoot together in blocks of
+        ``shooting_group`` x ``shooting_group`` (Cohen, Greenberg, Immel and Brock
+        1986: coarse *patches* shoot, fine *elements* receive; here the patches are
+        the elements), one hemicube at the block's centroid per shot.  1: each
+        patch shoots alone.
 
     Returns
     -------
@@ -241,10 +248,12 @@ def solve(meshes: Any, emission: Any = None, reflectance: Any = None, *,
         f = _matrix(form_factors, p) if given else \
             RowSource(pts, form_factors, resolution).rows(np.arange(p))
         return _gauss_seidel(pts, f, tol, limit)
+    group = pts.groups(v.positive_int("shooting_group", shooting_group))
     if given:
         matrix = _matrix(form_factors, p)
-        return _progressive(pts, lambda i: matrix[:, i], tol, limit)
-    return _progressive(pts, RowSource(pts, form_factors, resolution).received, tol, limit)
+        return _progressive(pts, group, lambda g: matrix[:, group == g].sum(axis=1), tol, limit)
+    source = RowSource(pts, form_factors, resolution, group)
+    return _progressive(pts, group, source.received, tol, limit)
 
 
 def _gauss_seidel(pts: Patches, f: np.ndarray, tol: float, limit: int) -> Radiosity:
@@ -266,24 +275,29 @@ def _gauss_seidel(pts: Patches, f: np.ndarray, tol: float, limit: int) -> Radios
                      np.array(history), np.array(power), converged, f)
 
 
-def _progressive(pts: Patches, received: Any, tol: float, limit: int) -> Radiosity:
-    """Shooting: ``received(i)`` gives F_ji for every j, the fraction of patch i's
-    radiosity that arrives at j per unit of j's area."""
+def _progressive(pts: Patches, group: np.ndarray, received: Any, tol: float,
+                 limit: int) -> Radiosity:
+    """Shooting: each patch's group (``group``) shoots the area-weighted mean of its
+    patches' unshot radiosity; ``received(g)`` gives F_jg for every j, the fraction of
+    group g's radiosity that arrives at j per unit of j's area."""
     area = pts.area
     rho = pts.reflectance
     b = pts.emission.copy()
     unshot = pts.emission.copy()
+    count = int(group.max()) + 1
+    group_area = np.bincount(group, area, count)
     emitted = float((area[:, None] * pts.emission).sum())
     mean_rho = (area[:, None] * rho).sum(axis=0) / area.sum()
     interreflection = 1.0 / (1.0 - mean_rho)
     history, power = [], []
     converged = False
     for _ in range(limit):
-        energy = area * unshot.sum(axis=1)
-        i = int(np.argmax(energy))
-        f = received(i)
-        shot = unshot[i].copy()
-        unshot[i] = 0.0
+        energy = np.bincount(group, area * unshot.sum(axis=1), count)
+        g = int(np.argmax(energy))
+        members = group == g
+        shot = (area[members, None] * unshot[members]).sum(axis=0) / group_area[g]
+        f = received(g)
+        unshot[members] = 0.0
         gain = rho * shot[None, :] * f[:, None]
         b += gain
         unshot += gain

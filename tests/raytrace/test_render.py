@@ -205,3 +205,50 @@ def test_too_many_shadow_rays_is_an_error_naming_lights():
     many = [L.PointLight((0, 5, i)) for i in range(1025)]
     with pytest.raises(ArgumentValueError, match="lights"):
         sl.render(sl.FrameBuffer(8, 8), meshes, cam, method="ray-tracing", lights=many)
+
+
+@pytest.mark.parametrize("case", ["empty", "mode-1", "huge", "inside-glass", "culled"])
+def test_hostile_scenes_give_a_picture_or_a_clear_error(case):
+    cam = sl.Camera(eye=(0, 0, 5), target=(0, 0, 0))
+    glass = L.Material(transparency=1.0, refractive_index=1.5, ka=0, kd=0)
+    if case == "empty":
+        r = sl.render(sl.FrameBuffer(8, 8), [], cam, method="ray-tracing")
+        assert (r.faces == -1).all()
+    elif case == "mode-1":
+        with pytest.raises(ArgumentValueError, match="mode"):
+            sl.render(sl.FrameBuffer(8, 8, mode="1"), sl.mesh.cube(), cam, method="ray-tracing")
+    elif case == "huge":
+        big = sl.mesh.cube(1e60)
+        fb = sl.FrameBuffer(16, 16)
+        sl.render(fb, big, sl.Camera(eye=(0, 0, 5e60), target=(0, 0, 0)), materials=glass,
+                  method="ray-tracing", max_depth=64)
+    elif case == "inside-glass":
+        fb = sl.FrameBuffer(16, 16, background="white")
+        r = sl.render(fb, sl.mesh.sphere(3.0, resolution=12), sl.Camera(eye=(0, 0, 0.5),
+                      target=(0, 0, 0)), materials=glass, method="ray-tracing", max_depth=64)
+        assert (r.faces >= 0).all()
+    else:
+        fb = sl.FrameBuffer(16, 16)
+        sl.render(fb, [sl.mesh.cube(), sl.mesh.sphere(0.3, center=(0, 0, 1))], cam,
+                  method="ray-tracing", cull_back_faces=True,
+                  materials=[L.Material(reflectivity=1.0), L.Material()])
+
+
+@pytest.mark.parametrize("projection", [None, "orthographic", "oblique"])
+def test_primary_rays_pass_through_the_points_the_camera_projects_there(projection):
+    from scanline.raytrace.render import primary_rays
+    from scanline.screen import prepare
+
+    kind = {None: {}, "orthographic": {"projection": sl.projection.orthographic(
+        window=(-3, -3, 3, 3))}, "oblique": {"projection": sl.projection.oblique(
+            "cabinet", window=(-3, -3, 3, 3))}}[projection]
+    cam = sl.Camera(eye=(1, 2, 6), target=(0, 0, 0), **kind)
+    scene = prepare(sl.mesh.cube(), cam, 64, 48)
+    rng = np.random.default_rng(4)
+    points = rng.uniform(-1, 1, (50, 3))
+    device = cam.project(points, 64, 48)
+    o, d = primary_rays(scene, device[:, 0], device[:, 1])
+    to = points - o
+    along = (to * d).sum(axis=1)
+    assert (along > 0).all()                                  # ahead of the origin
+    assert np.allclose(to - along[:, None] * d, 0, atol=1e-9)  # on the ray

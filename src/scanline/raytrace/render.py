@@ -28,7 +28,7 @@ MAX_DEPTH = 5
 SHADOW_RAYS = 1024
 
 #: Offset of secondary rays' origins from their surface, in units of the scene's size
-#: (its box's diagonal): no ray meets the surface it leaves.
+#: (its box's longest side): no ray meets the surface it leaves.
 OFFSET = 1e-7
 
 
@@ -94,7 +94,10 @@ def traced(scene, shading, background, max_depth, seed):
     mats = material_table(scene.materials, shading.gamma)
     kt = mats[:, 12][scene.facet_mesh] if len(world) else np.zeros(0)
     lights, ambient = light_table(shading.lights)
-    size = float(np.linalg.norm(tree.bounds[0, 3:] - tree.bounds[0, :3])) if len(world) else 1.0
+    with np.errstate(over="ignore"):
+        size = float(np.max(tree.bounds[0, 3:] - tree.bounds[0, :3])) if len(world) else 1.0
+    if not np.isfinite(size):                     # coordinates near the float range's end
+        size = float(np.max(np.abs(tree.bounds[0])))
     eps = OFFSET * max(size, 1e-300)
     clear = v.kernel_array(kt[tree.order])
     return Traced(tree, (
@@ -109,23 +112,40 @@ def traced(scene, shading, background, max_depth, seed):
 
 
 def primary_rays(scene, xs, ys):
-    """The world rays through device points (``xs``, ``ys``) of ``scene``: origins on
-    the view volume's front plane and unit directions into it (for a
-    perspective camera, rays from the center of projection), (P, 3) each."""
+    """The world rays through device points (``xs``, ``ys``) of ``scene``, (P, 3)
+    origins and unit directions into the view volume.
+
+    A point (X, 1) projects to NDC x = (r_x . (X, 1)) / (r_w . (X, 1)), r_x, r_y and
+    r_w rows of the clip matrix, so the points seen at (x, y) are where the planes
+    (r_x - x r_w) . (X, 1) = 0 and (r_y - y r_w) . (X, 1) = 0 meet: a line, with the
+    direction n_1 x n_2 of their normals, turned toward growing w (perspective) or
+    depth (parallel), and as origin its point on the front plane of the view volume
+    (NDC depth 0; where that cannot be found, its point nearest the world's origin).
+    No matrix is inverted: a camera whose depth range is lost to rounding still has
+    its rays."""
     clip, scale, offset = scene.mapping
-    inverse = np.linalg.inv(clip)
-    ndc = np.empty((len(xs), 4))
-    ndc[:, 0] = (np.asarray(xs, np.float64) - offset[0]) / scale[0]
-    ndc[:, 1] = (np.asarray(ys, np.float64) - offset[1]) / scale[1]
-    ndc[:, 3] = 1.0
-    ends = []
-    for z in (0.0, 0.5):              # the back plane may lie at infinity (w = 0)
-        ndc[:, 2] = z
-        h = ndc @ inverse.T
-        ends.append(h[:, :3] / h[:, 3:])
-    d = ends[1] - ends[0]
+    x = (np.asarray(xs, np.float64) - offset[0]) / scale[0]
+    y = (np.asarray(ys, np.float64) - offset[1]) / scale[1]
+    planes = []
+    for row, at in ((clip[0], x), (clip[1], y)):
+        p = row[None, :] - at[:, None] * clip[3][None, :]
+        p /= np.linalg.norm(p[:, :3] / np.abs(p[:, :3]).max(axis=1, keepdims=True), axis=1,
+                            keepdims=True) * np.abs(p[:, :3]).max(axis=1, keepdims=True)
+        planes.append(p)
+    (n1, h1), (n2, h2) = ((p[:, :3], -p[:, 3]) for p in planes)
+    d = np.cross(n1, n2)
     d /= np.linalg.norm(d, axis=1, keepdims=True)
-    return np.ascontiguousarray(ends[0]), np.ascontiguousarray(d)
+    ahead = clip[3, :3] if scene.camera.projection.kind == "perspective" else clip[2, :3]
+    d *= np.where(d @ ahead < 0, -1.0, 1.0)[:, None]
+    c = (n1 * n2).sum(axis=1)
+    det = 1.0 - c * c
+    origin = (((h1 - h2 * c) / det)[:, None] * n1 + ((h2 - h1 * c) / det)[:, None] * n2)
+    # moved along the line onto the front plane (NDC depth 0: r_z . (X, 1) = 0)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        t = -(origin @ clip[2, :3] + clip[2, 3]) / (d @ clip[2, :3])
+        front = origin + t[:, None] * d
+    origin = np.where(np.isfinite(front).all(axis=1)[:, None], front, origin)
+    return np.ascontiguousarray(origin), np.ascontiguousarray(d)
 
 
 def shadow_test(prepared, twin=False):

@@ -225,6 +225,18 @@ CALLS = {
                                  "sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)))", RGB),
     "render ray-casting": ("render", "sl.render(fb, sl.mesh.cube(), sl.Camera(eye=(3, 2, 4), "
                                      "target=(0, 0, 0)), method='ray-casting')", RGB),
+    "render ray-tracing": ("raytrace", "sl.render(fb, [sl.mesh.cube(), sl.mesh.sphere(0.5, "
+                                       "center=(0, 1.2, 0), resolution=(8, 4))], "
+                                       "sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)), "
+                                       "method='ray-tracing', materials=[sl.lighting.Material("
+                                       "reflectivity=0.5, roughness=0.1), sl.lighting.Material("
+                                       "transparency=0.5, refractive_index=1.5)], lights=["
+                                       "sl.lighting.AmbientLight(0.2), sl.lighting.AreaLight("
+                                       "(1, 4, 1), (1, 0, 0), (0, 0, 1), samples=2)])", RGB),
+    "raytrace bvh": ("raytrace", "sl.raytrace.BVH(sl.mesh.torus(1, 0.4, resolution=(8, 4))"
+                                 ".triangulated().vertices[sl.mesh.torus(1, 0.4, resolution="
+                                 "(8, 4)).triangulated().faces]).intersect([(0, 0, 3), "
+                                 "(1, 0, 3)], [(0, 0, -1), (0, 0, -1)]).t.tolist()", None),
     "render a-buffer": ("render", "sl.render(fb, sl.mesh.cube(), sl.Camera(eye=(3, 2, 4), "
                                   "target=(0, 0, 0)), method='a-buffer', samples=2)", RGB),
     "render antialias": ("render", "sl.render(fb, sl.mesh.cube(), sl.Camera(eye=(3, 2, 4), "

@@ -10,60 +10,43 @@ refused by the API layer; a NaN projection fails every comparison and draws noth
 import math
 
 import numpy as np
-from numba import prange
-
-from .._kernels._jit import helper, parallel_kernel
+from .._kernels._jit import helper, kernel
 from ..raytrace._bvh import STACK, transmittance
 
 
 @helper
-def _frame(normal, edge, g):
-    """The hemicube's axes at source ``g``: (n, u, w), n its normal, u along its
-    ``edge`` (made perpendicular to n), w = n x u."""
+def _view(normal, edge, g, f, view):
+    """``view`` (3, 3) := the axes of face ``f`` of the hemicube on source ``g``:
+    looking direction, the image's horizontal and vertical.  The cube's axes are n
+    (the source's ``normal``), u (its ``edge`` made perpendicular to n) and w = n x u;
+    face 0 is the top (looking along n; image axes u, w), faces 1-4 the half sides
+    looking along +u, -u, +w, -w (horizontal the other tangent, vertical n)."""
     nx, ny, nz = normal[g, 0], normal[g, 1], normal[g, 2]
     ex, ey, ez = edge[g, 0], edge[g, 1], edge[g, 2]
     d = ex * nx + ey * ny + ez * nz
-    ex -= d * nx
-    ey -= d * ny
-    ez -= d * nz
-    length = math.sqrt(ex * ex + ey * ey + ez * ez)
-    if not length > 0.0:               # (a patch's edge is never along its normal)
+    if not (ex - d * nx) ** 2 + (ey - d * ny) ** 2 + (ez - d * nz) ** 2 > 0.0:
+        # (a patch's edge is never along its normal; a group's mean normal may be)
         ex, ey, ez = (1.0, 0.0, 0.0) if abs(nx) < 0.9 else (0.0, 1.0, 0.0)
         d = ex * nx + ey * ny + ez * nz
-        ex -= d * nx
-        ey -= d * ny
-        ez -= d * nz
-        length = math.sqrt(ex * ex + ey * ey + ez * ez)
-    ex /= length
-    ey /= length
-    ez /= length
-    axes = np.empty((3, 3))
-    axes[0, 0], axes[0, 1], axes[0, 2] = nx, ny, nz
-    axes[1, 0], axes[1, 1], axes[1, 2] = ex, ey, ez
-    axes[2, 0] = ny * ez - nz * ey
-    axes[2, 1] = nz * ex - nx * ez
-    axes[2, 2] = nx * ey - ny * ex
-    return axes
-
-
-@helper
-def _face_axes(axes, f, view):
-    """``view`` (3, 3) := the axes of hemicube face ``f``: looking direction, the
-    image's horizontal and vertical.  Face 0 is the top (looking along n; image
-    axes u, w); faces 1-4 the half sides looking along +u, -u, +w, -w (horizontal the
-    other tangent, vertical n)."""
+    ux, uy, uz = ex - d * nx, ey - d * ny, ez - d * nz
+    length = math.sqrt(ux * ux + uy * uy + uz * uz)
+    ux /= length
+    uy /= length
+    uz /= length
+    wx, wy, wz = ny * uz - nz * uy, nz * ux - nx * uz, nx * uy - ny * ux
+    sign = -1.0 if f == 2 or f == 4 else 1.0
     if f == 0:
-        look, hor, ver = 0, 1, 2
-        sign = 1.0
+        view[0, 0], view[0, 1], view[0, 2] = nx, ny, nz
+        view[1, 0], view[1, 1], view[1, 2] = ux, uy, uz
+        view[2, 0], view[2, 1], view[2, 2] = wx, wy, wz
+    elif f <= 2:
+        view[0, 0], view[0, 1], view[0, 2] = sign * ux, sign * uy, sign * uz
+        view[1, 0], view[1, 1], view[1, 2] = wx, wy, wz
+        view[2, 0], view[2, 1], view[2, 2] = nx, ny, nz
     else:
-        look = 1 if f <= 2 else 2
-        hor = 2 if f <= 2 else 1
-        ver = 0
-        sign = 1.0 if f % 2 == 1 else -1.0
-    for k in range(3):
-        view[0, k] = sign * axes[look, k]
-        view[1, k] = axes[hor, k]
-        view[2, k] = axes[ver, k]
+        view[0, 0], view[0, 1], view[0, 2] = sign * wx, sign * wy, sign * wz
+        view[1, 0], view[1, 1], view[1, 2] = ux, uy, uz
+        view[2, 0], view[2, 1], view[2, 2] = nx, ny, nz
 
 
 @helper
@@ -158,70 +141,64 @@ def _draw(j, px, py, m, plane, ids, depth, rows, cols, half, ylo):
                 ids[r, c] = j
 
 
-@helper
-def hemicube_row(g, source, snormal, sedge, group, quads, centre, normal, near, res, top, side,
-                 row):
-    """The form factors from source ``g`` (its centre ``source[g]``, normal
-    ``snormal[g]``, first edge ``sedge[g]``) to every patch, by the hemicube: the
-    five faces drawn as item buffers of patch numbers by the z-buffer (the patches of
-    ``group`` g, the source itself, left out), each pixel's delta form factor
-    (``top`` (res, res), ``side`` (res / 2, res)) added to ``row[j]`` of the patch j
-    seen there, if j faces the source (a back face hides what is behind it but sends
-    nothing).  A source is a patch, or a group of patches that shoots together."""
+@kernel
+def hemicube_rows(start, step, sources, source, snormal, sedge, group, quads, centre, normal,
+                  near, res, top, side, out):
+    """Rows start, start + step, ... of ``sources`` by the hemicube into ``out`` (R, P)
+    (one band of interleaved rows per thread of the API layer).  Row r holds the form
+    factors from source g = sources[r] (its centre ``source[g]``, normal
+    ``snormal[g]``, first edge ``sedge[g]``: a patch, or a group of patches that shoots
+    together) to every patch: the five faces of its hemicube drawn as item buffers of
+    patch numbers by the z-buffer (the patches of ``group`` g, the source itself, left
+    out), each pixel's delta form factor (``top`` (res, res), ``side`` (res / 2, res))
+    added to ``out[r, j]`` of the patch j seen there, if j faces the source (a back
+    face hides what is behind it but sends nothing)."""
     p = quads.shape[0]
-    axes = _frame(snormal, sedge, g)
     view = np.empty((3, 3))
     plane = np.empty(4)
     px = np.empty(8)
     py = np.empty(8)
     ids = np.empty((res, res), np.int64)
     depth = np.empty((res, res))
-    cx, cy, cz = source[g, 0], source[g, 1], source[g, 2]
     half = res / 2.0
-    for j in range(p):
-        row[j] = 0.0
-    for f in range(5):
-        _face_axes(axes, f, view)
-        rows = res if f == 0 else res // 2
-        ylo = -1.0 if f == 0 else 0.0
-        for r in range(rows):
-            for c in range(res):
-                ids[r, c] = -1
-                depth[r, c] = np.inf
-        for j in range(p):
-            if group[j] == g:
-                continue
-            m = _clip_project(quads, j, cx, cy, cz, view, near, half, ylo, px, py)
-            if m < 3:
-                continue
-            for k in range(3):
-                plane[k] = (normal[j, 0] * view[k, 0] + normal[j, 1] * view[k, 1]
-                            + normal[j, 2] * view[k, 2])
-            plane[3] = (normal[j, 0] * (centre[j, 0] - cx) + normal[j, 1] * (centre[j, 1] - cy)
-                        + normal[j, 2] * (centre[j, 2] - cz))
-            _draw(j, px, py, m, plane, ids, depth, rows, res, half, ylo)
-        for r in range(rows):
-            for c in range(res):
-                j = ids[r, c]
-                if j < 0 or j >= p:
-                    continue
-                facing = (normal[j, 0] * (cx - centre[j, 0]) + normal[j, 1] * (cy - centre[j, 1])
-                          + normal[j, 2] * (cz - centre[j, 2]))
-                if facing > 0.0:
-                    row[j] += top[r, c] if f == 0 else side[r, c]
-
-
-@parallel_kernel
-def hemicube_rows(sources, source, snormal, sedge, group, quads, centre, normal, near, res, top,
-                  side, out):
-    """The rows of ``sources`` (numbers of sources, see :func:`hemicube_row`) by the
-    hemicube into ``out`` (R, P), the rows in parallel."""
-    for r in prange(sources.shape[0]):
+    for r in range(start, sources.shape[0], step):
         g = sources[r]
         if g < 0 or g >= source.shape[0]:
             continue
-        hemicube_row(g, source, snormal, sedge, group, quads, centre, normal, near, res, top,
-                     side, out[r])
+        cx, cy, cz = source[g, 0], source[g, 1], source[g, 2]
+        for j in range(p):
+            out[r, j] = 0.0
+        for f in range(5):
+            _view(snormal, sedge, g, f, view)
+            rows = res if f == 0 else res // 2
+            ylo = -1.0 if f == 0 else 0.0
+            for y in range(rows):
+                for x in range(res):
+                    ids[y, x] = -1
+                    depth[y, x] = np.inf
+            for j in range(p):
+                if group[j] == g:
+                    continue
+                m = _clip_project(quads, j, cx, cy, cz, view, near, half, ylo, px, py)
+                if m < 3:
+                    continue
+                for k in range(3):
+                    plane[k] = (normal[j, 0] * view[k, 0] + normal[j, 1] * view[k, 1]
+                                + normal[j, 2] * view[k, 2])
+                plane[3] = (normal[j, 0] * (centre[j, 0] - cx)
+                            + normal[j, 1] * (centre[j, 1] - cy)
+                            + normal[j, 2] * (centre[j, 2] - cz))
+                _draw(j, px, py, m, plane, ids, depth, rows, res, half, ylo)
+            for y in range(rows):
+                for x in range(res):
+                    j = ids[y, x]
+                    if j < 0 or j >= p:
+                        continue
+                    facing = (normal[j, 0] * (cx - centre[j, 0])
+                              + normal[j, 1] * (cy - centre[j, 1])
+                              + normal[j, 2] * (cz - centre[j, 2]))
+                    if facing > 0.0:
+                        out[r, j] += top[y, x] if f == 0 else side[y, x]
 
 
 @helper
@@ -295,14 +272,15 @@ def raycast_row(i, quads, centre, normal, k, bounds, links, table, clear, stack,
                                     links, table, clear, stack)
 
 
-@parallel_kernel
-def raycast_rows(sources, quads, centre, normal, k, bounds, links, table, clear, column, out):
+@kernel
+def raycast_rows(start, step, sources, quads, centre, normal, k, bounds, links, table, clear,
+                 column, out):
     """Rows (or with ``column`` columns) ``sources`` of the form-factor matrix by ray
-    casting into ``out`` (R, P), in parallel."""
-    for r in prange(sources.shape[0]):
+    casting into ``out`` (R, P): rows start, start + step, ... (one band per thread)."""
+    stack = np.empty(STACK, np.int64)
+    for r in range(start, sources.shape[0], step):
         i = sources[r]
         if i < 0 or i >= quads.shape[0]:
             continue
-        stack = np.empty(STACK, np.int64)
         raycast_row(i, quads, centre, normal, k, bounds, links, table, clear, stack, out[r],
                     column)

@@ -126,7 +126,7 @@ class RowSource:
         """The rows ``sources`` (patch numbers), (len(sources), P), in parallel; with
         ``columns`` (ray casting only) the columns instead: F_ji for every j, from the
         centre of each patch j to the whole of patch i."""
-        from .._kernels._jit import call
+        from .._kernels._threads import call_in_bands
         from . import _formfactors as k
 
         src = np.ascontiguousarray(sources, np.int64).reshape(-1)
@@ -134,14 +134,14 @@ class RowSource:
         out = np.zeros((len(src), p))
         if self.method == "hemicube":
             res = self.resolution
-            call(k.hemicube_rows, len(src) * (60 * p + 4 * res * res), src, self.centre,
-                 self.normal, self.edge, self.alone, self.quads, self.centre, self.normal,
-                 self.near, res, self.top, self.side, out)
+            call_in_bands(k.hemicube_rows, len(src) * (60 * p + 4 * res * res), src,
+                          self.centre, self.normal, self.edge, self.alone, self.quads,
+                          self.centre, self.normal, self.near, res, self.top, self.side, out)
         else:
             t = self.tree
-            call(k.raycast_rows, len(src) * p * self.resolution ** 2 * 40, src, self.quads,
-                 self.centre, self.normal, self.resolution, t.bounds, t.links, t.table,
-                 self.clear, bool(columns), out)
+            call_in_bands(k.raycast_rows, len(src) * p * self.resolution ** 2 * 40, src,
+                          self.quads, self.centre, self.normal, self.resolution, t.bounds,
+                          t.links, t.table, self.clear, bool(columns), out)
         return out
 
     def received(self, g: int) -> np.ndarray:
@@ -157,12 +157,12 @@ class RowSource:
         if self.method == "ray-casting":
             return self.rows(np.flatnonzero(self.group == g), columns=True).sum(axis=0)
         p = len(self.patches)
-        row = np.zeros(p)
+        row = np.zeros((1, p))
         res = self.resolution
-        call(k.hemicube_row, 60 * p + 4 * res * res, int(g), self.group_centre,
-             self.group_normal, self.group_edge, self.group, self.quads, self.centre,
-             self.normal, self.near, res, self.top, self.side, row)
-        return row * self.group_area[g] / self.patches.area
+        call(k.hemicube_rows, 60 * p + 4 * res * res, 0, 1, np.array([g], np.int64),
+             self.group_centre, self.group_normal, self.group_edge, self.group, self.quads,
+             self.centre, self.normal, self.near, res, self.top, self.side, row)
+        return row[0] * self.group_area[g] / self.patches.area
 
 
 def check_matrix_budget(n: int, copies: int = 1) -> None:

@@ -237,6 +237,14 @@ CALLS = {
                                  ".triangulated().vertices[sl.mesh.torus(1, 0.4, resolution="
                                  "(8, 4)).triangulated().faces]).intersect([(0, 0, 3), "
                                  "(1, 0, 3)], [(0, 0, -1), (0, 0, -1)]).t.tolist()", None),
+    "radiosity hemicube": ("radiosity", "sl.radiosity.solve(sl.radiosity.cornell_box()['meshes'], "
+                                        "sl.radiosity.cornell_box()['emission'], 0.5, "
+                                        "subdivisions=1, resolution=16).radiosity.tolist()", None),
+    "radiosity ray-casting": ("radiosity", "sl.radiosity.solve(sl.radiosity.cornell_box()["
+                                           "'meshes'], sl.radiosity.cornell_box()['emission'], "
+                                           "0.5, subdivisions=1, method='progressive', "
+                                           "form_factors='ray-casting', resolution=2"
+                                           ").radiosity.tolist()", None),
     "render a-buffer": ("render", "sl.render(fb, sl.mesh.cube(), sl.Camera(eye=(3, 2, 4), "
                                   "target=(0, 0, 0)), method='a-buffer', samples=2)", RGB),
     "render antialias": ("render", "sl.render(fb, sl.mesh.cube(), sl.Camera(eye=(3, 2, 4), "

@@ -252,3 +252,18 @@ def test_primary_rays_pass_through_the_points_the_camera_projects_there(projecti
     along = (to * d).sum(axis=1)
     assert (along > 0).all()                                  # ahead of the origin
     assert np.allclose(to - along[:, None] * d, 0, atol=1e-9)  # on the ray
+
+
+def test_an_environment_map_gives_way_to_the_reflected_rays():
+    """A mirror with an environment map: ray traced, its pixels are what its reflected
+    rays meet (the red wall), not the map (green) plus the wall."""
+    mirror = quad([(-1, -1, 1), (1, -1, -1), (1, 1, -1), (-1, 1, 1)])
+    wall = quad([(3, -5, -5), (3, -5, 5), (3, 5, 5), (3, 5, -5)])
+    sky = np.zeros((8, 16, 3))
+    sky[...] = (0.0, 1.0, 0.0)
+    mats = [L.Material(ka=0, kd=0, ks=0, reflectivity=1.0, environment=sl.Texture(sky)),
+            L.Material(ka=1.0, kd=0, ks=0, color=(200, 40, 40))]
+    fb = sl.FrameBuffer(21, 21, background="black")
+    sl.render(fb, [mirror, wall], ortho(), method="ray-tracing", materials=mats,
+              lights=[L.AmbientLight(1.0)], shading="phong", gamma=1)
+    assert fb.to_array()[10, 10].tolist() == [200, 40, 40]

@@ -175,15 +175,29 @@ def shadow_test(prepared, twin=False):
     return test
 
 
+def _without_environment(material):
+    """``material`` without its environment map (a copy, as ``Material.with_color``
+    makes one)."""
+    new = object.__new__(type(material))
+    new.__dict__.update(material.__dict__)
+    object.__setattr__(new, "environment", None)
+    return new
+
+
 def primary_light(scene, layer, ys, xs, shading, prepared, background, twin=False):
     """The local intensities (P, 3) of the primary rays' hits at pixels (``xs``, ``ys``)
     of ``layer`` (the ray caster's): the shading stage's own
     (:func:`scanline.shading.compose`: any shading model, textures, depth cueing),
-    with :func:`shadow_test` as its shadow test."""
+    with :func:`shadow_test` as its shadow test; environment maps are left out (the
+    reflected rays see the scene itself)."""
     from dataclasses import replace
 
     from ..shading.compose import _points
 
+    if any(getattr(m, "environment", None) is not None for m in scene.materials):
+        # the reflected rays see the scene itself: no environment map besides them
+        scene = replace(scene, materials=tuple(_without_environment(m)
+                                               for m in scene.materials))
     options = replace(shading, shadows=shadow_test(prepared, twin))
     _, linear = _points(scene, layer.ids, layer.depth, ys, xs, xs.astype(np.float64),
                         ys.astype(np.float64), options, background)

@@ -246,29 +246,15 @@ def shade_row(y, faces, table, tface, face_mat, mats, ambient, sources, far, eye
     triangle loads its functions once."""
     width = faces.shape[1]
     nf = face_mat.shape[0]
-    nt = tface.shape[0]
     # the attributes interpolated: PHONG fields PX .. NZ (and CR .. CB), VERTEX 0 .. 2
     kk = (table.shape[1] - 5) // 3
     own = kk > 6
-    x = 0
+    x = np.int64(0)
     while x < width:
         n = np.int64(0)    # (a literal 0 would compile store_chunk twice)
         while n < CHUNK and x < width:
-            t = faces[y, x]
-            if t < 0:
-                x += 1
-                while x < width and faces[y, x] < 0:
-                    x += 1
-                continue
-            # the run of pixels of triangle t, given its facet
-            f = tface[t] if t < nt else -1
-            faces[y, x] = f
-            end = x + 1
-            most = min(width, x + CHUNK - n)
-            while end < most and faces[y, end] == t:
-                faces[y, end] = f
-                end += 1
-            if f < 0 or f >= nf:
+            x, end, t, f = triangle_run(faces, tface, nf, y, x, CHUNK - n)
+            if f < 0:
                 x = end
                 continue
             m = face_mat[f]
@@ -328,6 +314,30 @@ def shade_row(y, faces, table, tface, face_mat, mats, ambient, sources, far, eye
         if len(shading) == PHONG:
             light_chunk(n, s, ms, own, mats, ambient, sources, far, eye, expo, spec)
         store_chunk(y, n, s, xs, gamma_table, thresholds, raster, shading, mode)
+
+
+@helper
+def triangle_run(faces, tface, nf, y, x, room):
+    """The next run of row ``y`` of ``faces`` from column ``x`` that one triangle
+    covers, at most ``room`` pixels: ``(start, end, t, f)``, the triangle t and its
+    facet f (-1 when t has none below ``nf``), which replaces t in ``faces`` along the
+    run; pixels of no triangle (-1) before it are skipped (start = end = the width
+    when none is left)."""
+    width = faces.shape[1]
+    while x < width and faces[y, x] < 0:
+        x += 1
+    if x >= width:
+        return width, width, -1, -1
+    t = faces[y, x]
+    f = tface[t] if t < tface.shape[0] else -1
+    if f >= nf:
+        f = -1
+    end = x
+    most = min(width, x + room)
+    while end < most and faces[y, end] == t:
+        faces[y, end] = f
+        end += 1
+    return x, end, t, f
 
 
 @helper

@@ -25,7 +25,7 @@ import numpy as np
 from ._jit import helper, kernel
 from .raster3d import setup
 from .shade import (BAND, CB, CG, CHUNK, CR, FIELDS, IR, NX, PHONG, PX, light_chunk, light_setup,
-                    store_chunk)
+                    store_chunk, triangle_run)
 from .texture import sample
 
 #: Scratch fields after the lighting's: u, v, du/dx, dv/dx, du/dy, dv/dy and w (the
@@ -98,27 +98,14 @@ def textured_row(y, faces, table, tface, face_mat, mats, mat_tex, texels, levels
     (PHONG) and the store."""
     width = faces.shape[1]
     nf = face_mat.shape[0]
-    nt = tface.shape[0]
     nm = mats.shape[0]
     k = (table.shape[1] - 5) // 3
-    x = 0
+    x = np.int64(0)
     while x < width:
         n = np.int64(0)
         while n < CHUNK and x < width:
-            t = faces[y, x]
-            if t < 0:
-                x += 1
-                while x < width and faces[y, x] < 0:
-                    x += 1
-                continue
-            f = tface[t] if t < nt else -1
-            faces[y, x] = f
-            end = x + 1
-            most = min(width, x + CHUNK - n)
-            while end < most and faces[y, end] == t:
-                faces[y, end] = f
-                end += 1
-            if f < 0 or f >= nf:
+            x, end, t, f = triangle_run(faces, tface, nf, y, x, CHUNK - n)
+            if f < 0:
                 x = end
                 continue
             m = min(max(face_mat[f], 0), nm - 1)

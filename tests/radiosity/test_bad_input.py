@@ -52,7 +52,8 @@ def test_a_million_emitters_are_refused_before_anything_is_built():
     n = 1000               # 10**6 quadrilaterals, each an emitter
     i, j = np.meshgrid(np.arange(n), np.arange(n), indexing="ij")
     base = (i * (n + 1) + j).reshape(-1)
-    faces = sl.mesh.mesh.Flat(np.stack([base, base + 1, base + n + 2, base + n + 1], 1), np.full(n * n, 4))
+    faces = sl.mesh.mesh.Flat(np.stack([base, base + 1, base + n + 2, base + n + 1], 1),
+                              np.full(n * n, 4))
     x, y = np.meshgrid(np.arange(n + 1.0), np.arange(n + 1.0), indexing="ij")
     grid = sl.mesh.Mesh(np.stack([x.ravel(), y.ravel(), np.zeros(x.size)], 1), faces)
     for call in (lambda: sl.radiosity.solve(grid, emission=1.0, subdivisions=1),

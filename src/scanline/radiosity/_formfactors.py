@@ -219,9 +219,12 @@ def point_to_patch(cx, cy, cz, nx, ny, nz, j, quads, normal, k, bounds, links, t
             w1 = s * (1 - t)
             w2 = s * t
             w3 = (1 - s) * t
-            yx = w0 * quads[j, 0, 0] + w1 * quads[j, 1, 0] + w2 * quads[j, 2, 0] + w3 * quads[j, 3, 0]
-            yy = w0 * quads[j, 0, 1] + w1 * quads[j, 1, 1] + w2 * quads[j, 2, 1] + w3 * quads[j, 3, 1]
-            yz = w0 * quads[j, 0, 2] + w1 * quads[j, 1, 2] + w2 * quads[j, 2, 2] + w3 * quads[j, 3, 2]
+            yx = (w0 * quads[j, 0, 0] + w1 * quads[j, 1, 0] + w2 * quads[j, 2, 0]
+                  + w3 * quads[j, 3, 0])
+            yy = (w0 * quads[j, 0, 1] + w1 * quads[j, 1, 1] + w2 * quads[j, 2, 1]
+                  + w3 * quads[j, 3, 1])
+            yz = (w0 * quads[j, 0, 2] + w1 * quads[j, 1, 2] + w2 * quads[j, 2, 2]
+                  + w3 * quads[j, 3, 2])
             dx = yx - cx
             dy = yy - cy
             dz = yz - cz
@@ -234,12 +237,18 @@ def point_to_patch(cx, cy, cz, nx, ny, nz, j, quads, normal, k, bounds, links, t
             if ci <= 0.0 or cj <= 0.0:
                 continue
             # dP/ds and dP/dt of the bilinear patch at (s, t)
-            sx = (1 - t) * (quads[j, 1, 0] - quads[j, 0, 0]) + t * (quads[j, 2, 0] - quads[j, 3, 0])
-            sy = (1 - t) * (quads[j, 1, 1] - quads[j, 0, 1]) + t * (quads[j, 2, 1] - quads[j, 3, 1])
-            sz = (1 - t) * (quads[j, 1, 2] - quads[j, 0, 2]) + t * (quads[j, 2, 2] - quads[j, 3, 2])
-            tx = (1 - s) * (quads[j, 3, 0] - quads[j, 0, 0]) + s * (quads[j, 2, 0] - quads[j, 1, 0])
-            ty = (1 - s) * (quads[j, 3, 1] - quads[j, 0, 1]) + s * (quads[j, 2, 1] - quads[j, 1, 1])
-            tz = (1 - s) * (quads[j, 3, 2] - quads[j, 0, 2]) + s * (quads[j, 2, 2] - quads[j, 1, 2])
+            sx = ((1 - t) * (quads[j, 1, 0] - quads[j, 0, 0])
+                  + t * (quads[j, 2, 0] - quads[j, 3, 0]))
+            sy = ((1 - t) * (quads[j, 1, 1] - quads[j, 0, 1])
+                  + t * (quads[j, 2, 1] - quads[j, 3, 1]))
+            sz = ((1 - t) * (quads[j, 1, 2] - quads[j, 0, 2])
+                  + t * (quads[j, 2, 2] - quads[j, 3, 2]))
+            tx = ((1 - s) * (quads[j, 3, 0] - quads[j, 0, 0])
+                  + s * (quads[j, 2, 0] - quads[j, 1, 0]))
+            ty = ((1 - s) * (quads[j, 3, 1] - quads[j, 0, 1])
+                  + s * (quads[j, 2, 1] - quads[j, 1, 1]))
+            tz = ((1 - s) * (quads[j, 3, 2] - quads[j, 0, 2])
+                  + s * (quads[j, 2, 2] - quads[j, 1, 2]))
             ax = sy * tz - sz * ty
             ay = sz * tx - sx * tz
             az = sx * ty - sy * tx

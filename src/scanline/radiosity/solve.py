@@ -9,8 +9,8 @@ emission, rho the reflectance, F the form factors
 * ``method="gauss-seidel"``: the full matrix of form factors, then Gauss-Seidel
   sweeps of the system (I - rho F) B = E until no B_i changes by more than
   ``tolerance`` x the largest reflected radiosity B - E (Cohen and Greenberg 1985,
-  section 2; the matrix is diagonally dominant since rho < 1 and each row of F adds up to at most 1, so the
-  sweeps converge).
+  section 2; the matrix is diagonally dominant since rho < 1 and each row of F adds
+  up to at most 1, so the sweeps converge).
 * ``method="progressive"``: progressive refinement by shooting (Cohen, Chen, Wallace
   and Greenberg 1988): the patch with the most unshot energy dB_i A_i shoots it,
   every patch j receiving rho_j dB_i F_ji, computed when i shoots: by the shooter's

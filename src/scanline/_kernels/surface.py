@@ -190,15 +190,16 @@ def texture_chunk(n, s, ms, mat_tex, texels, levels, highlight, shading):
 
 @kernel
 def vertex_light(lo, hi, points, normals, colors, material, mats, ambient, sources, eye, spec,
-                 out):
+                 highlight, out):
     """The illumination model at points ``lo .. hi - 1`` of ``points``, ``normals``
     (unit, or normalized here) and surface ``colors`` (N, 3; or (1, 3): one color
     for all) of materials
     ``material`` (N,) (rows of ``mats``), in two parts: ``out[i, :3]`` = A, the part
     the surface color scales (ambient and diffuse), ``out[i, 3:]`` = S, the highlight
-    (the model with the color 0): Gouraud's vertex intensities for a textured
-    surface, through the per-pixel lighting's :func:`~scanline._kernels.shade.
-    light_chunk`, a chunk of points at a time."""
+    (the model with the color 0; without ``highlight`` S = 0 is not computed):
+    Gouraud's vertex intensities for a textured surface, through the per-pixel
+    lighting's :func:`~scanline._kernels.shade.light_chunk`, a chunk of points at a
+    time."""
     far, expo = light_setup(sources, mats)
     s = np.empty(TEX_FIELDS * CHUNK)
     ms = np.empty(CHUNK, np.int64)
@@ -208,7 +209,7 @@ def vertex_light(lo, hi, points, normals, colors, material, mats, ambient, sourc
              colors.shape[0] if not one else hi)
     for c0 in range(lo, hi, CHUNK):
         n = min(CHUNK, hi - c0)
-        for part in range(2):
+        for part in range(2 if highlight else 1):
             for i in range(n):
                 p = c0 + i
                 ms[i] = min(max(material[p], 0), nm - 1)
@@ -222,6 +223,7 @@ def vertex_light(lo, hi, points, normals, colors, material, mats, ambient, sourc
                     value = s[(IR + ch) * CHUNK + i]
                     if part == 0:
                         out[c0 + i, ch] = value
+                        out[c0 + i, 3 + ch] = 0.0
                     else:
                         out[c0 + i, 3 + ch] = value
                         out[c0 + i, ch] -= value

@@ -192,6 +192,12 @@ def texturable(fb, scene, options):
             and all(m.bump is None and m.environment is None for m in scene.materials))
 
 
+def _shines(scene, sources):
+    """Whether any surface of ``scene`` has a highlight: a material with ks > 0 and a
+    light source that is not ambient (``sources``: :func:`source_rows`)."""
+    return any(m.ks > 0 for m in scene.materials) and len(sources) > 0
+
+
 def vertex_light(scene, facets, options):
     """Gouraud's vertex intensities of ``facets`` in the two parts of
     :func:`scanline.shading.models.vertex_parts`, (U, 3, 6): A then S, compiled
@@ -220,9 +226,10 @@ def vertex_light(scene, facets, options):
     mats = material_rows(scene.materials, options.gamma)
     eye = homogeneous_eye(scene.eye)
     spec = SPECULAR[options.specular]
+    highlight = _shines(scene, sources)
     call_in_chunks(k.vertex_light, 20 * (1 + len(sources)) * len(points), len(points),
                    lambda lo, hi: (lo, hi, points, normals, colors, material, mats, ambient,
-                                   np.ascontiguousarray(sources), eye, spec, out))
+                                   np.ascontiguousarray(sources), eye, spec, highlight, out))
     return out.reshape(-1, 3, 6)
 
 
@@ -254,7 +261,7 @@ def shade_textured(scene, fb, ids, options):
         mark[scene.facet] = True
         seen = np.flatnonzero(mark)
         # no highlight anywhere (S = 0): the table holds A and (u, v) only
-        shiny = any(m.ks > 0 for m in scene.materials) and len(sources) > 0
+        shiny = _shines(scene, sources)
         attributes = np.zeros((g, 3, 8 if shiny else 5))
         if len(seen) and model == "gouraud":
             parts = vertex_light(scene, seen, options)

@@ -115,3 +115,18 @@ def test_unknown_keywords_and_non_meshes_are_refused():
 def test_nan_geometry_never_reaches_the_kernels():
     with pytest.raises(ArgumentValueError):
         sl.mesh.Mesh([(0, 0, np.nan), (1, 0, 0), (0, 1, 0)], [[0, 1, 2]])
+
+
+def test_patches_made_by_hand_are_checked_before_the_kernels():
+    import dataclasses
+
+    pts = sl.radiosity.patches(facing(), subdivisions=2, emission=[1.0, 0.0], reflectance=0.5)
+    for change, message in [({"area": pts.area[:3]}, r"area must have shape \(8,\)"),
+                            ({"corners": pts.corners + 100}, "corners must be vertex numbers"),
+                            ({"normal": np.full((8, 3), np.nan)}, "normal must be finite"),
+                            ({"mesh": pts.mesh[:, None]}, "mesh must have shape")]:
+        bad = dataclasses.replace(pts, **change)
+        with pytest.raises(ArgumentValueError, match="meshes: the Patches' " + message):
+            sl.radiosity.solve(bad)
+        with pytest.raises(ArgumentValueError, match="meshes: the Patches' " + message):
+            sl.radiosity.form_factors(bad)

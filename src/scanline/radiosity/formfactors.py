@@ -51,7 +51,10 @@ MAX_RESOLUTION = {"hemicube": 2048, "ray-casting": 64}
 def as_patches(meshes: Any, subdivisions: int = 8) -> Patches:
     """``meshes`` subdivided (:func:`~scanline.radiosity.patches.patches`), or the
     :class:`Patches` given."""
-    return meshes if isinstance(meshes, Patches) else patches(meshes, subdivisions)
+    if not isinstance(meshes, Patches):
+        return patches(meshes, subdivisions)
+    meshes.check()
+    return meshes
 
 
 def delta_form_factors(resolution: int):

@@ -108,6 +108,26 @@ class Patches:
                        + (row // size) * blocks + col // size, -1 - np.arange(len(self)))
         return np.unique(key, return_inverse=True)[1].reshape(-1).astype(np.int64)
 
+    def check(self) -> None:
+        """Refuse patches made by hand whose arrays disagree (the kernels index them
+        by one another): shapes, corner indices in range, finite values."""
+        p = len(self.corners)
+        shapes = {"vertices": (len(self.vertices), 3), "corners": (p, 4), "area": (p,),
+                  "centre": (p, 3), "normal": (p, 3), "emission": (p, 3),
+                  "reflectance": (p, 3), "mesh": (p,), "face": (p,), "cell": (p,)}
+        for name, shape in shapes.items():
+            value = np.asarray(getattr(self, name))
+            if value.shape != shape or value.dtype.kind not in "iuf":
+                raise ArgumentValueError(f"meshes: the Patches' {name} must have shape {shape}, "
+                                         f"got {value.shape} of {value.dtype}; make patches "
+                                         "with scanline.radiosity.patches")
+            if value.dtype.kind == "f" and not np.isfinite(value).all():
+                raise ArgumentValueError(f"meshes: the Patches' {name} must be finite")
+        if p == 0 or self.corners.min() < 0 or self.corners.max() >= len(self.vertices) \
+                or self.mesh.min() < 0 or not (self.area > 0).all():
+            raise ArgumentValueError("meshes: the Patches' corners must be vertex numbers, "
+                                     "their meshes numbered from 0 and their areas > 0")
+
     def __repr__(self) -> str:
         return f"<Patches: {len(self)} patches, {len(self.vertices)} nodes>"
 

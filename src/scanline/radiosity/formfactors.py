@@ -1,7 +1,7 @@
 """Form factors between patches (Hearn & Baker, section 14-7, "radiosity lighting
 model"): F_ij, the fraction of the energy leaving patch i that arrives at patch j,
 
-    F_ij = 1 / A_i  integral over A_i, A_j of  cos(theta_i) cos(theta_j) V / (pi r**2)
+    F_ij = 1 / A_i  integral over A_i, A_j of  cos(theta_i) cos(theta_j) V / (pi r**2) dA_j dA_i
 
 (V = 1 where the two points see each other), approximated from the centre of patch i.
 
@@ -16,7 +16,7 @@ model"): F_ij, the fraction of the energy leaving patch i that arrives at patch 
   of i by a shadow ray through a bounding volume hierarchy
   (:class:`scanline.raytrace.BVH`), F_ij = sum of cos cos dA / (pi r**2 + dA).
 
-(dA_j dA_i.)  Progressive refinement (:mod:`scanline.radiosity.solve`) needs, when a
+Progressive refinement (:mod:`scanline.radiosity.solve`) needs, when a
 patch shoots, what every other patch receives of it: the hemicube set on the shooter
 gives its row, read backward by reciprocity; ray casting gives the column itself,
 from each receiver's centre to the shooter's area (Wallace et al.'s way).

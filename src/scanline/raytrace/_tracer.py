@@ -35,6 +35,7 @@ threads.
 import math
 
 import numpy as np
+
 from .._kernels._jit import helper, kernel
 from .._kernels.shade import encode
 from ._bvh import STACK, moller_trumbore, nearest, transmittance

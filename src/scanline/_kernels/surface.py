@@ -114,20 +114,31 @@ def textured_row(y, faces, table, tface, face_mat, mats, mat_tex, texels, levels
             q0 = table[t, 2] + table[t, 4] * fy
             qx = table[t, 3]
             qy = table[t, 4]
+            # the attributes: PHONG fields P, N, C then u, v; VERTEX fields A (0 .. 2),
+            # S (3 .. 5) then u, v.  First 1/(1/w), u, v and the first three
+            u0 = table[t, 5 + 3 * (k - 2)] + table[t, 7 + 3 * (k - 2)] * fy
+            ux = table[t, 6 + 3 * (k - 2)]
+            v0 = table[t, 5 + 3 * (k - 1)] + table[t, 7 + 3 * (k - 1)] * fy
+            vx = table[t, 6 + 3 * (k - 1)]
+            a0 = table[t, 5] + table[t, 7] * fy
+            ax = table[t, 6]
+            b0 = table[t, 8] + table[t, 10] * fy
+            bx = table[t, 9]
+            c0 = table[t, 11] + table[t, 13] * fy
+            cx = table[t, 12]
             i = n
             for px in range(x, end):
-                s[TW * CHUNK + i] = 1.0 / (q0 + qx * (px - x0))
+                fx = px - x0
+                r = 1.0 / (q0 + qx * fx)
+                s[TW * CHUNK + i] = r
+                s[TU * CHUNK + i] = (u0 + ux * fx) * r
+                s[(TU + 1) * CHUNK + i] = (v0 + vx * fx) * r
+                s[i] = (a0 + ax * fx) * r
+                s[CHUNK + i] = (b0 + bx * fx) * r
+                s[2 * CHUNK + i] = (c0 + cx * fx) * r
                 i += 1
-            # the attributes: PHONG fields P, N, C then u, v; VERTEX fields A (0 .. 2),
-            # S (3 .. 5) then u, v
-            for a in range(k):
-                at_field = TU + (a - k + 2) if a >= k - 2 else a
-                a0 = table[t, 5 + 3 * a] + table[t, 7 + 3 * a] * fy
-                ax = table[t, 6 + 3 * a]
-                i = n
-                for px in range(x, end):
-                    s[at_field * CHUNK + i] = (a0 + ax * (px - x0)) * s[TW * CHUNK + i]
-                    i += 1
+            for a in range(3, k - 2, 3):    # then the other triples
+                interpolated_triple(s, table, t, a, fy, x0, x, end, n)
             if slopes:
                 ux = table[t, 6 + 3 * (k - 2)]
                 uy = table[t, 7 + 3 * (k - 2)]
@@ -156,6 +167,27 @@ def textured_row(y, faces, table, tface, face_mat, mats, mat_tex, texels, levels
         if len(shading) == PHONG:
             light_chunk(n, s, ms, np.bool_(True), mats, ambient, sources, far, eye, expo, spec)
         store_chunk(y, n, s, xs, gamma_table, thresholds, raster, shading, mode)
+
+
+@helper
+def interpolated_triple(s, table, t, a, fy, x0, x, end, n):
+    """Attributes ``a`` .. ``a + 2`` of triangle ``t`` at the pixels ``x`` .. ``end -
+    1`` of a row into fields ``a`` .. ``a + 2`` of the chunk from position ``n``,
+    times the pixels' w (field :data:`TW`)."""
+    a0 = table[t, 5 + 3 * a] + table[t, 7 + 3 * a] * fy
+    ax = table[t, 6 + 3 * a]
+    b0 = table[t, 8 + 3 * a] + table[t, 10 + 3 * a] * fy
+    bx = table[t, 9 + 3 * a]
+    c0 = table[t, 11 + 3 * a] + table[t, 13 + 3 * a] * fy
+    cx = table[t, 12 + 3 * a]
+    i = n
+    for px in range(x, end):
+        fx = px - x0
+        r = s[TW * CHUNK + i]
+        s[a * CHUNK + i] = (a0 + ax * fx) * r
+        s[(a + 1) * CHUNK + i] = (b0 + bx * fx) * r
+        s[(a + 2) * CHUNK + i] = (c0 + cx * fx) * r
+        i += 1
 
 
 @helper

@@ -141,19 +141,19 @@ def sample(texels, levels, first, count, filter, wrap, u, v, dudx, dvdx, dudy, d
     mipmap levels of ``TRILINEAR`` (linear between the two nearest levels)."""
     if filter == NEAREST:
         return nearest(texels, levels, first, u, v, wrap)
-    level = 0
+    level = first
     t = 0.0
     if filter == TRILINEAR and count > 1:
         lod = level_of_detail(levels, first, count, dudx, dvdx, dudy, dvdy)
-        level = min(int(lod), count - 1)
-        t = lod - level if level + 1 < count else 0.0
-    r = g = b = 0.0
-    for j in range(2 if t > 0.0 else 1):
-        weight = 1.0 - t if j == 0 else t
-        rj, gj, bj = bilinear(texels, levels, first + level + j, u, v, wrap)
-        r += weight * rj
-        g += weight * gj
-        b += weight * bj
+        step = min(int(lod), count - 1)
+        level = first + step
+        t = lod - step if step + 1 < count else 0.0
+    r, g, b = bilinear(texels, levels, level, u, v, wrap)
+    if t > 0.0:
+        r1, g1, b1 = bilinear(texels, levels, level + 1, u, v, wrap)
+        r += t * (r1 - r)
+        g += t * (g1 - g)
+        b += t * (b1 - b)
     return r, g, b
 
 

@@ -248,7 +248,7 @@ def shade_textured(scene, fb, ids, options):
     model = options.model
     sources, ambient = source_rows(options.lights)
     g = scene.facet_count
-    uv = np.nan_to_num(scene.uv)
+    uv = scene.uv          # NaN only on meshes without a texture (check_maps)
     if model == "phong":
         normals = np.where(scene.front[:, None, None], scene.vertex_normals,
                            -scene.vertex_normals) if not scene.front.all() \
@@ -262,14 +262,17 @@ def shade_textured(scene, fb, ids, options):
         seen = np.flatnonzero(mark)
         # no highlight anywhere (S = 0): the table holds A and (u, v) only
         shiny = _shines(scene, sources)
-        attributes = np.zeros((g, 3, 8 if shiny else 5))
         if len(seen) and model == "gouraud":
             parts = vertex_light(scene, seen, options)
-        elif len(seen):
+        else:
             parts = np.concatenate(vertex_parts(scene, seen, options), axis=2)
-        if len(seen):
-            attributes[seen, :, :6 if shiny else 3] = parts[..., :6 if shiny else 3]
-        attributes[:, :, -2:] = uv
+        parts = parts[..., :6 if shiny else 3]
+        if len(seen) == g:
+            attributes = np.concatenate([parts, uv], axis=2)
+        else:
+            attributes = np.zeros((g, 3, parts.shape[2] + 2))
+            attributes[seen, :, :-2] = parts
+            attributes[:, :, -2:] = uv
     attributes = v.kernel_array(attributes)
     tface = v.kernel_array(scene.facet, np.int64)
     n = len(tface)

@@ -251,7 +251,7 @@ def build(data, base=None):
     cameras = schema3d.cameras(d["cameras"], df) if "cameras" in d else []
     from .shaded import shading
 
-    canvas.shading = shading(d) if d["version"] == 2 else None
+    canvas.shading = shading(d, base) if d["version"] == 2 else None
     context = {"version": d["version"], "cameras": cameras, "base": base,
                "background": canvas.background, "shading": canvas.shading,
                # the memory the scene keeps: the canvas, then each mesh primitive's

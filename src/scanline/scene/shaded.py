@@ -25,7 +25,12 @@ LIGHTS = {
 REQUIRED = {"point": ("position",), "spot": ("position", "direction"),
             "area": ("corner", "edge_u", "edge_v")}
 MATERIAL = {"ka", "kd", "ks", "shininess", "color", "specular_color", "transparency",
-            "reflectivity", "refractive_index", "roughness"}
+            "reflectivity", "refractive_index", "roughness", "texture", "bump", "bump_scale",
+            "environment"}
+#: The material keys that take a texture: an image file (relative to the scene file),
+#: or a procedural texture ``{procedural = "checker" | "marble" | "wood", ...}``.
+MAPS = ("texture", "bump", "environment")
+PROCEDURAL = ("checker", "marble", "wood")
 SHADING = {"model", "specular", "gamma", "cull_back_faces", "depth_cue", "max_depth", "seed"}
 
 
@@ -57,12 +62,37 @@ def light(data, path):
     return s._call(path, make, **args)
 
 
+def texture(value, path, base=None):
+    """A material's texture key -> a :class:`scanline.Texture`: an image file's name
+    (relative to the scene file's folder ``base``), or a table naming a procedural
+    texture of :mod:`scanline.texture` and its keywords (``size``, ``seed``,
+    ``filter``, ``wrap`` ...)."""
+    import inspect
+    import os
+
+    from .. import texture as tx
+
+    s = _schema()
+    if isinstance(value, str) and value:
+        full = value if os.path.isabs(value) or base is None else os.path.join(base, value)
+        return s._call(path, tx.Texture, full)
+    if not isinstance(value, dict) or value.get("procedural") not in PROCEDURAL:
+        s._fail(path, "must be an image file's name or a table {procedural = "
+                      f"{' | '.join(repr(p) for p in PROCEDURAL)}, ...}}, got {value!r}")
+    make = getattr(tx, value["procedural"])
+    known = (set(inspect.signature(make).parameters) - {"texture"}) | {"filter", "wrap"}
+    s._table(value, path, known | {"procedural"})
+    return s._call(path, make, **{k: _tuples(x) for k, x in value.items()
+                                  if k != "procedural"})
+
+
 class Shading:
     """What a scene's top-level shading keys say: ``lights`` (None: the renderer's
     default), ``materials`` (name -> Material), ``options`` for
-    :func:`scanline.render`, and the ``surfaces`` the mesh primitives add."""
+    :func:`scanline.render`, and the ``surfaces`` the mesh primitives add.  ``base``:
+    the scene file's folder, where texture files are found."""
 
-    def __init__(self, data):
+    def __init__(self, data, base=None):
         s = _schema()
         self.lights = None
         if "lights" in data:
@@ -74,8 +104,9 @@ class Shading:
             s._fail("materials", "must be a table of named materials ([materials.NAME])")
         for name, m in mats.items():
             t = s._table(m, f"materials.{name}", MATERIAL)
-            self.materials[name] = s._call(f"materials.{name}", lighting.Material,
-                                           **{k: _tuples(x) for k, x in t.items()})
+            args = {k: texture(x, f"materials.{name}.{k}", base) if k in MAPS else _tuples(x)
+                    for k, x in t.items()}
+            self.materials[name] = s._call(f"materials.{name}", lighting.Material, **args)
         from ..visible import METHODS
         from ..shading import MODELS
 
@@ -135,9 +166,9 @@ class Shading:
             render(fb, meshes, camera, lights=self.lights, materials=mats, **self.options)
 
 
-def shading(data):
+def shading(data, base=None):
     """The :class:`Shading` of scene data (a dict), or None when it has no shading
-    key and so no surfaces can be asked for."""
+    key and so no surfaces can be asked for (``base``: the scene file's folder)."""
     if not any(k in data for k in KEYS):
         return None
-    return Shading(data)
+    return Shading(data, base)

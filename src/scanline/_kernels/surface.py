@@ -24,9 +24,9 @@ import numpy as np
 
 from ._jit import helper, kernel
 from .raster3d import setup
-from .shade import (BAND, CB, CG, CHUNK, CR, FIELDS, IR, NX, PHONG, PX, light_chunk, light_setup,
+from .shade import (BAND, CHUNK, CR, FIELDS, IR, NX, PHONG, PX, light_chunk, light_setup,
                     store_chunk, triangle_run)
-from .texture import sample
+from .texture import sample_run
 
 #: Scratch fields after the lighting's: u, v, du/dx, dv/dx, du/dy, dv/dy and w (the
 #: reciprocal of 1/w).
@@ -196,28 +196,30 @@ def texture_chunk(n, s, ms, mat_tex, texels, levels, highlight, shading):
     fields by it, VERTEX makes the intensity T A + S in fields 0 .. 2 (T A without
     ``highlight``)."""
     nl = levels.shape[0]
-    for i in range(n):
+    i = np.int64(0)
+    while i < n:                        # runs of one material, sampled by one call
         m = ms[i]
+        j = i + 1
+        while j < n and ms[j] == m:
+            j += 1
         first = mat_tex[m, 0]
-        r = g = b = 1.0
         if first >= 0 and first < nl:
-            count = min(mat_tex[m, 1], nl - first)
-            r, g, b = sample(texels, levels, first, count, mat_tex[m, 2], mat_tex[m, 3],
-                             s[TU * CHUNK + i], s[(TU + 1) * CHUNK + i], s[TDX * CHUNK + i],
-                             s[(TDX + 1) * CHUNK + i], s[(TDX + 2) * CHUNK + i],
-                             s[(TDX + 3) * CHUNK + i])
-        if len(shading) == PHONG:
-            s[CR * CHUNK + i] *= r
-            s[CG * CHUNK + i] *= g
-            s[CB * CHUNK + i] *= b
+            sample_run(texels, levels, first, min(mat_tex[m, 1], nl - first), mat_tex[m, 2],
+                       mat_tex[m, 3], s, np.int64(TU * CHUNK), np.int64(CHUNK), i, j)
         else:
-            s[i] *= r
-            s[CHUNK + i] *= g
-            s[2 * CHUNK + i] *= b
-            if highlight:
-                s[i] += s[3 * CHUNK + i]
-                s[CHUNK + i] += s[4 * CHUNK + i]
-                s[2 * CHUNK + i] += s[5 * CHUNK + i]
+            for p in range(i, j):
+                s[TDX * CHUNK + p] = 1.0
+                s[(TDX + 1) * CHUNK + p] = 1.0
+                s[(TDX + 2) * CHUNK + p] = 1.0
+        i = j
+    # the texels are in fields TDX .. TDX + 2 (where the derivatives were)
+    to = CR if len(shading) == PHONG else 0
+    for ch in range(3):
+        for p in range(n):
+            s[(to + ch) * CHUNK + p] *= s[(TDX + ch) * CHUNK + p]
+        if highlight and len(shading) != PHONG:
+            for p in range(n):
+                s[ch * CHUNK + p] += s[(3 + ch) * CHUNK + p]
 
 
 @kernel

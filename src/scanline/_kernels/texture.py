@@ -18,6 +18,8 @@ large for an integer is never converted).
 
 import math
 
+import numpy as np
+
 from ._jit import helper, inline, kernel
 
 #: Wrap modes (:data:`scanline.texture.WRAPS`).
@@ -35,7 +37,7 @@ TRILINEAR = 2
 WHOLE = 4503599627370496.0
 
 
-@inline
+@helper
 def floor_of(t):
     """floor(t) as an integer for |t| < :data:`WHOLE` (a truncation and a step, cheaper
     than the library's floor)."""
@@ -43,7 +45,7 @@ def floor_of(t):
     return i - 1 if t < i else i
 
 
-@inline
+@helper
 def reduced(t, wrap):
     """Texture coordinate ``t`` brought into [0, 1) (repeat), [0, 2) (mirror: the
     period of a mirrored texture) or [-1, 2] (clamp) as a real; NaN and infinities
@@ -59,7 +61,7 @@ def reduced(t, wrap):
     return min(max(t, -1.0), 2.0)
 
 
-@inline
+@helper
 def wrapped(i, n, wrap):
     """Integer texel index ``i`` (any value) wrapped or clamped into 0 .. n - 1."""
     if i >= 0 and i < n:
@@ -148,24 +150,56 @@ def sample(texels, levels, first, count, filter, wrap, u, v, dudx, dvdx, dudy, d
         step = min(int(lod), count - 1)
         level = first + step
         t = lod - step if step + 1 < count else 0.0
-    r, g, b = bilinear(texels, levels, level, u, v, wrap)
-    if t > 0.0:
-        r1, g1, b1 = bilinear(texels, levels, level + 1, u, v, wrap)
-        r += t * (r1 - r)
-        g += t * (g1 - g)
-        b += t * (b1 - b)
+    r = g = b = 0.0
+    for j in range(2 if t > 0.0 else 1):   # one compiled copy of the bilinear step
+        weight = 1.0 - t if j == 0 else t
+        rj, gj, bj = bilinear(texels, levels, level + j, u, v, wrap)
+        r += weight * rj
+        g += weight * gj
+        b += weight * bj
     return r, g, b
+
+
+@helper
+def sample_run(texels, levels, first, count, filter, wrap, s, at, stride, lo, hi):
+    """Items ``lo .. hi - 1`` of planar fields in ``s``: field k of item i at ``s[at + k
+    stride + i]``, fields 0 and 1 the coordinates u and v, 2 .. 5 the screen
+    derivatives du/dx, dv/dx, du/dy, dv/dy; each item's color (r, g, b) replaces its
+    fields 2 .. 4.  One compiled copy of the sampling serves every caller (a call per
+    run of items, not per item); bilinear repeated textures, the common case, run a
+    loop of their own without the filter's dispatch."""
+    u_at = at
+    v_at = at + stride
+    d_at = at + 2 * stride
+    if filter == BILINEAR and wrap == REPEAT:
+        for i in range(lo, hi):
+            r, g, b = bilinear(texels, levels, first, s[u_at + i], s[v_at + i], wrap)
+            s[d_at + i] = r
+            s[d_at + stride + i] = g
+            s[d_at + 2 * stride + i] = b
+        return
+    for i in range(lo, hi):
+        r, g, b = sample(texels, levels, first, count, filter, wrap, s[u_at + i], s[v_at + i],
+                         s[d_at + i], s[d_at + stride + i], s[d_at + 2 * stride + i],
+                         s[d_at + 3 * stride + i])
+        s[d_at + i] = r
+        s[d_at + stride + i] = g
+        s[d_at + 2 * stride + i] = b
 
 
 @kernel
 def sample_points(texels, levels, first, count, filter, wrap, uv, derivatives, out):
     """``out[m]`` = the texture's color at ``uv[m]`` (M, 2) with screen derivatives
     ``derivatives[m]`` = du/dx, dv/dx, du/dy, dv/dy (M, 4; read by ``TRILINEAR``
-    only)."""
-    for m in range(uv.shape[0]):
-        r, g, b = sample(texels, levels, first, count, filter, wrap, uv[m, 0], uv[m, 1],
-                         derivatives[m, 0], derivatives[m, 1], derivatives[m, 2],
-                         derivatives[m, 3])
-        out[m, 0] = r
-        out[m, 1] = g
-        out[m, 2] = b
+    only), through :func:`sample_run`."""
+    n = min(uv.shape[0], derivatives.shape[0], out.shape[0])
+    s = np.empty(6 * n)
+    for m in range(n):
+        s[m] = uv[m, 0]
+        s[n + m] = uv[m, 1]
+        for k in range(4):
+            s[(2 + k) * n + m] = derivatives[m, k]
+    sample_run(texels, levels, first, count, filter, wrap, s, np.int64(0), n, np.int64(0), n)
+    for m in range(n):
+        for c in range(3):
+            out[m, c] = s[(2 + c) * n + m]

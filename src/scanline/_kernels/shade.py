@@ -125,6 +125,23 @@ def encode(value, table, thresholds):
     return np.uint8(v)
 
 
+@helper
+def table_start(tri, q, bary, t, f, nf, g, table):
+    """The start of row ``t`` of an attribute table: x0, y0 (the triangle's vertex 0)
+    and the (value, d/dx, d/dy) of 1/w, with the rasterizer's functions in ``g``
+    (:func:`~scanline._kernels.raster3d.setup`).  False, the row all NaN, for a
+    triangle that covers no pixel or whose facet ``f`` is not below ``nf``."""
+    if not (setup(tri, q, bary, t, g) and f >= 0 and f < nf):
+        for j in range(table.shape[1]):
+            table[t, j] = math.nan
+        return False
+    table[t, 0] = tri[t, 0, 0]
+    table[t, 1] = tri[t, 0, 1]
+    for c in range(3):
+        table[t, 2 + c] = g[1, c]
+    return True
+
+
 @kernel
 def triangle_attributes(lo, hi, tri, q, bary, tface, world, normals, colors, front, table,
                         shading):
@@ -147,14 +164,8 @@ def triangle_attributes(lo, hi, tri, q, bary, tface, world, normals, colors, fro
     g = np.empty((4, 3))
     for t in range(lo, hi):
         f = tface[t]
-        if not (setup(tri, q, bary, t, g) and f >= 0 and f < nf):
-            for j in range(table.shape[1]):
-                table[t, j] = math.nan
+        if not table_start(tri, q, bary, t, f, nf, g, table):
             continue
-        table[t, 0] = tri[t, 0, 0]
-        table[t, 1] = tri[t, 0, 1]
-        for c in range(3):
-            table[t, 2 + c] = g[1, c]
         flip = 1.0 if front[f] else -1.0
         for a in range(kk):
             ch = a % 3

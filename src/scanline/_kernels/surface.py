@@ -18,14 +18,11 @@ S.  Rows are shared out in bands as in :mod:`scanline._kernels.shade`, whose
 chunked lighting and store this kernel calls.
 """
 
-import math
-
 import numpy as np
 
 from ._jit import helper, kernel
-from .raster3d import setup
 from .shade import (BAND, CHUNK, CR, FIELDS, IR, NX, PHONG, PX, light_chunk, light_setup,
-                    store_chunk, triangle_run)
+                    store_chunk, table_start, triangle_run)
 from .texture import sample_run
 
 #: Scratch fields after the lighting's: u, v, du/dx, dv/dx, du/dy, dv/dy and w (the
@@ -48,14 +45,8 @@ def attribute_table(lo, hi, tri, q, bary, tface, attributes, table):
     g = np.empty((4, 3))
     for t in range(lo, hi):
         f = tface[t]
-        if not (setup(tri, q, bary, t, g) and f >= 0 and f < nf):
-            for j in range(table.shape[1]):
-                table[t, j] = math.nan
+        if not table_start(tri, q, bary, t, f, nf, g, table):
             continue
-        table[t, 0] = tri[t, 0, 0]
-        table[t, 1] = tri[t, 0, 1]
-        for c in range(3):
-            table[t, 2 + c] = g[1, c]
         for a in range(k):
             v0 = attributes[f, 0, a]
             d1 = attributes[f, 1, a] - v0

@@ -127,6 +127,8 @@ def textured_row(y, faces, table, tface, face_mat, mats, mat_tex, texels, levels
                 s[i] = (a0 + ax * fx) * r
                 s[CHUNK + i] = (b0 + bx * fx) * r
                 s[2 * CHUNK + i] = (c0 + cx * fx) * r
+                xs[i] = px
+                ms[i] = m
                 i += 1
             for a in range(3, k - 2, 3):    # then the other triples
                 interpolated_triple(s, table, t, a, fy, x0, x, end, n)
@@ -145,11 +147,6 @@ def textured_row(y, faces, table, tface, face_mat, mats, mat_tex, texels, levels
                     s[(TDX + 2) * CHUNK + i] = (uy - u * qy) * r
                     s[(TDX + 3) * CHUNK + i] = (vy - v * qy) * r
                     i += 1
-            i = n
-            for px in range(x, end):
-                xs[i] = px
-                ms[i] = m
-                i += 1
             n += end - x
             x = end
         if n == 0:

@@ -132,7 +132,7 @@ class RowSource:
         ``columns`` (ray casting only) the columns instead: F_ji for every j, from the
         centre of each patch j to the whole of patch i."""
         from .._kernels._threads import call_in_bands
-        from . import _formfactors as k
+        from .._kernels import formfactors as k
 
         src = np.ascontiguousarray(sources, np.int64).reshape(-1)
         p = len(self.patches)
@@ -157,7 +157,7 @@ class RowSource:
         F_gj A_g / A_j (Cohen et al. 1988).  One hemicube runs serially (a parallel
         loop's start would cost more than it saves)."""
         from .._kernels._jit import call
-        from . import _formfactors as k
+        from .._kernels import formfactors as k
 
         if self.method == "ray-casting":
             return self.rows(np.flatnonzero(self.group == g), columns=True).sum(axis=0)

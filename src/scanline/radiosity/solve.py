@@ -258,7 +258,7 @@ def solve(meshes: Any, emission: Any = None, reflectance: Any = None, *,
 
 def _gauss_seidel(pts: Patches, f: np.ndarray, tol: float, limit: int) -> Radiosity:
     from .._kernels._jit import call
-    from ._iterate import gauss_seidel_sweep
+    from .._kernels.radiosity import gauss_seidel_sweep
 
     rho, e = v.kernel_array(pts.reflectance), v.kernel_array(pts.emission)
     b = e.copy()

@@ -1,6 +1,6 @@
 """A bounding volume hierarchy over triangles, and rays cast against it (Hearn &
 Baker 14-6, "reducing object-intersection calculations"): the kernels and the
-construction by the surface-area heuristic are :mod:`scanline.raytrace._bvh`."""
+construction by the surface-area heuristic are :mod:`scanline._kernels.bvh`."""
 
 import math
 from dataclasses import dataclass
@@ -28,7 +28,7 @@ class Hits:
 class BVH:
     """A bounding volume hierarchy of ``triangles`` (N, 3, 3) world coordinates,
     built by the binned surface-area heuristic in compiled code
-    (:mod:`scanline.raytrace._bvh`): flat node arrays, traversed iteratively.
+    (:mod:`scanline._kernels.bvh`): flat node arrays, traversed iteratively.
 
     Attributes
     ----------
@@ -54,7 +54,7 @@ class BVH:
     def __init__(self, triangles):
         from .._kernels._jit import call
         from ..budget import check
-        from . import _bvh
+        from .._kernels import bvh as _bvh
 
         tri = v.real_array("triangles", triangles, "(N, 3, 3)")
         if tri.ndim != 3 or tri.shape[1:] != (3, 3):
@@ -83,7 +83,7 @@ class BVH:
         ``origins`` and ``directions`` (R, 3; directions need not be unit vectors, t
         is in their units) -> :class:`Hits`."""
         from .._kernels._threads import call_in_bands
-        from . import _bvh
+        from .._kernels import bvh as _bvh
 
         o = v.real_array("origins", origins, "(R, 3)")
         d = v.real_array("directions", directions, "(R, 3)")

@@ -1,7 +1,7 @@
 """The directions and weights of the ray tracer's secondary rays, one ray at a time
 (Hearn & Baker 14-6): the mirror direction, Snell's law with total internal
 reflection, and the Fresnel reflectance.  These run the tracer's own compiled
-helpers (:mod:`scanline.raytrace._tracer`) as Python."""
+helpers (:mod:`scanline._kernels.raytrace`) as Python."""
 
 import numpy as np
 
@@ -39,7 +39,7 @@ def reflect(direction, normal):
     [0.707107, 0.707107, 0.0]
     """
     from .._kernels._jit import python
-    from ._tracer import mirror
+    from .._kernels.raytrace import mirror
 
     d = _unit("direction", direction)
     n, cos_i = _facing(d, _unit("normal", normal))
@@ -57,7 +57,7 @@ def fresnel(cos_i, n1, n2):
     0.04
     """
     from .._kernels._jit import python
-    from ._tracer import fresnel as kernel
+    from .._kernels.raytrace import fresnel as kernel
 
     c = v.number("cos_i", cos_i)
     if not 0 <= c <= 1:
@@ -78,8 +78,8 @@ def refract(direction, normal, n1, n2):
     True
     """
     from .._kernels._jit import python
-    from ._tracer import bend
-    from ._tracer import fresnel as kernel
+    from .._kernels.raytrace import bend
+    from .._kernels.raytrace import fresnel as kernel
 
     d = _unit("direction", direction)
     n, cos_i = _facing(d, _unit("normal", normal))

@@ -4,7 +4,7 @@ coloring pass (Whitted 1980; Hearn & Baker 14-6).
 The primary rays are the ray-casting method's (:mod:`scanline.visible.raycast`, one
 ray through each pixel center, or each sample's with ``antialias=n``): it finds the
 surface each one meets first.  From that surface on, the tracer
-(:mod:`scanline.raytrace._tracer`) follows shadow, reflected and transmitted rays
+(:mod:`scanline._kernels.raytrace`) follows shadow, reflected and transmitted rays
 through a bounding volume hierarchy of the scene's world facets
 (:class:`~scanline.raytrace.BVH`), and the intensity it sums is stored with the
 shading's gamma.  The primary hits are lit by the shading stage itself (any
@@ -152,11 +152,11 @@ def shadow_test(prepared, twin=False):
     """The shading's shadow test (:attr:`scanline.shading.ShadingOptions.shadows`) by
     shadow rays through the tree: ``test(points (M, 3))`` -> per non-ambient light,
     the fraction of it that reaches each point
-    (:func:`scanline.raytrace._tracer.shadow_all`; ``twin``: run as Python, for the
+    (:func:`scanline._kernels.raytrace.shadow_all`; ``twin``: run as Python, for the
     step table)."""
     from .._kernels._jit import python
     from .._kernels._threads import call_in_bands
-    from . import _tracer as k
+    from .._kernels import raytrace as k
 
     tree = prepared.tree
     lights = prepared.lights
@@ -213,7 +213,7 @@ def trace(prepared, origins, directions, firsts, givens, samples, log=None):
     written."""
     from .._kernels._jit import python
     from .._kernels._threads import call_in_bands
-    from . import _tracer as k
+    from .._kernels import raytrace as k
 
     out = np.empty((len(origins), 3))
     count = np.zeros(1, np.int64)
@@ -239,7 +239,7 @@ def shade(fb, scene, layer, shading, options):
     from ..errors import ArgumentValueError
     from ..shading.buffer import gamma_tables
     from ..shading.compose import background_linear
-    from . import _tracer as k
+    from .._kernels import raytrace as k
 
     if fb.mode not in ("L", "RGB", "RGBA"):
         raise ArgumentValueError(f"method='ray-tracing' draws into modes L, RGB and RGBA; the "

@@ -1,7 +1,7 @@
 """The ray tree of one pixel's primary ray (Whitted 1980; Hearn & Baker 14-6): every
 surface the primary ray crosses, then each ray the tracer follows -- reflected,
 refracted and shadow rays with their depth -- and the intensities summed.  The rows
-are the log of the tracer kernel itself (:mod:`scanline.raytrace._tracer`), run as
+are the log of the tracer kernel itself (:mod:`scanline._kernels.raytrace`), run as
 Python on the one sample."""
 
 import math
@@ -62,7 +62,7 @@ def ray_tracing(x=20, y=11, meshes=None, materials=None, lights=None, camera=Non
     """
     import scanline as sl
 
-    from ..raytrace import _tracer as k
+    from .._kernels import raytrace as k
     from ..rendering.api import default_lights
     from ..raytrace.render import primary_light, primary_rays, shadow_test, trace, traced
     from ..screen import prepare
@@ -165,7 +165,7 @@ def _crossings(prepared, screen, origin, direction):
     """Every facet the ray crosses, (t, face) nearest first, by the tracer's own
     Moller-Trumbore test run on each triangle of its table."""
     from .._kernels._jit import python
-    from ..raytrace._bvh import inside, moller_trumbore
+    from .._kernels.bvh import inside, moller_trumbore
 
     test, hit = python(moller_trumbore), python(inside)
     table = prepared.tree.table

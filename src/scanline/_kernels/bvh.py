@@ -29,7 +29,7 @@ import math
 
 import numpy as np
 
-from .._kernels._jit import helper, kernel
+from ._jit import helper, kernel
 
 #: Centroid bins per axis of the binned surface-area heuristic.
 BINS = 16
@@ -287,7 +287,7 @@ def nearest(ox, oy, oz, dx, dy, dz, tmin, tmax, bounds, links, table, stack):
     if bounds.shape[0] == 0:
         return best, row, bu, bv
     ix, iy, iz = _inverse(dx, dy, dz)
-    if _entry(bounds, 0, ox, oy, oz, ix, iy, iz, best) == math.inf:
+    if _entry(bounds, np.int64(0), ox, oy, oz, ix, iy, iz, best) == math.inf:
         return best, row, bu, bv
     top = 1
     stack[0] = 0

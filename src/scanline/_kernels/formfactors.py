@@ -10,8 +10,8 @@ refused by the API layer; a NaN projection fails every comparison and draws noth
 import math
 
 import numpy as np
-from .._kernels._jit import helper, kernel
-from ..raytrace._bvh import STACK, transmittance
+from ._jit import helper, kernel
+from .bvh import STACK, transmittance
 
 
 @helper

@@ -36,9 +36,9 @@ import math
 
 import numpy as np
 
-from .._kernels._jit import helper, kernel
-from .._kernels.shade import encode
-from ._bvh import STACK, moller_trumbore, nearest, transmittance
+from ._jit import helper, kernel
+from .shade import encode
+from .bvh import STACK, moller_trumbore, nearest, transmittance
 
 #: Weight below which a ray is not traced (a quarter of one step of 255).
 MIN_WEIGHT = 1.0 / 1024.0
@@ -139,7 +139,7 @@ def _log(log, count, ray, parent, kind, depth, o, d, t, facet, weight, local, li
 @helper
 def _seen(ox, oy, oz, tmin, s, lights, bounds, links, table, clear, stack, state):
     """What reaches (ox, oy, oz) of light ``s``: the transmittance of the shadow ray
-    toward it (:func:`scanline.raytrace._bvh.transmittance`; from ``tmin`` on), or for
+    toward it (:func:`scanline._kernels.bvh.transmittance`; from ``tmin`` on), or for
     an area light the mean over its grid of cells of the shadow rays to a jittered
     point of each (Cook, Porter and Carpenter 1984).  Returns ``(through, distance
     to the light (inf at infinity), direction x, y, z)`` of the last ray."""
@@ -237,7 +237,8 @@ def _lit(p, n, ng, v, sd, m, mats, lights, ambient, blinn, eps, bounds, links, t
         through, far, d3[0], d3[1], d3[2] = _seen(o[0], o[1], o[2], 0.0, s, lights, bounds,
                                                   links, table, clear, stack, state)
         if log.shape[0] > 0:
-            _log(log, count, -1, ray, SHADOW, depth + 1, o, d3, far, -1, 0.0, zero, s, through)
+            _log(log, count, np.int64(-1), ray, np.int64(SHADOW), depth + 1, o, d3, far,
+                 np.int64(-1), 0.0, zero, s, through)
         if through <= 0.0:
             continue
         if blinn:
@@ -351,8 +352,8 @@ def trace_sample(origin, direction, first, given, sample, seed, max_depth, eps, 
             for c in range(3):
                 out[c] += weight * background[c]
             if log.shape[0] > 0:
-                _log(log, count, ray, parent, kind, depth, o, d, math.inf, -1, weight,
-                     background, -1, 0.0)
+                _log(log, count, ray, parent, kind, depth, o, d, math.inf, np.int64(-1), weight,
+                     background, np.int64(-1), 0.0)
             continue
         f = prim_facet[row]
         m = facet_mat[f]
@@ -385,7 +386,7 @@ def trace_sample(origin, direction, first, given, sample, seed, max_depth, eps, 
         if log.shape[0] > 0:
             for c in range(3):
                 local[c] *= 1.0 - kt
-            _log(log, count, ray, parent, kind, depth, o, d, t, f, weight, local, -1, 0.0)
+            _log(log, count, ray, parent, kind, depth, o, d, t, f, weight, local, np.int64(-1), 0.0)
         if depth >= max_depth or (kr <= 0.0 and kt <= 0.0):
             continue
         # the normal for the new directions: the shading normal unless it faces away

@@ -1,6 +1,6 @@
 """Compiled sweep of the Gauss-Seidel solution of the radiosity equations."""
 
-from .._kernels._jit import kernel
+from ._jit import kernel
 
 
 @kernel

@@ -1,4 +1,4 @@
-"""Render docs/figures/surface-detail.png: surface detail (Hearn & Baker 14-8, 14-9) --
+"""Render docs/images/surface-detail.png: surface detail (Hearn & Baker 14-8, 14-9) --
 procedural marble and wood from Perlin's noise on tilted tiles, a bump-mapped tile
 (Blinn 1978: a turbulence height map perturbing the normals of a flat square) and a
 mirror sphere with a latitude-longitude environment map (sky over a checkered ground).
@@ -64,4 +64,4 @@ def main(out):
 
 
 if __name__ == "__main__":
-    main(Path(sys.argv[1]) if len(sys.argv) > 1 else Path("docs/figures/surface-detail.png"))
+    main(Path(sys.argv[1]) if len(sys.argv) > 1 else Path("docs/images/surface-detail.png"))

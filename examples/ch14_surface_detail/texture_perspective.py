@@ -1,4 +1,4 @@
-"""Render docs/figures/texture-perspective.png: the same checker-textured quad in
+"""Render docs/images/texture-perspective.png: the same checker-textured quad in
 perspective, its texture coordinates interpolated affinely in screen space (left) and
 perspective-correctly (right; Hearn & Baker 14-9).
 
@@ -35,4 +35,4 @@ def main(out):
 
 
 if __name__ == "__main__":
-    main(Path(sys.argv[1]) if len(sys.argv) > 1 else Path("docs/figures/texture-perspective.png"))
+    main(Path(sys.argv[1]) if len(sys.argv) > 1 else Path("docs/images/texture-perspective.png"))

@@ -1,14 +1,14 @@
-"""Draw docs/figures/cornell-box.png: the Cornell box (its published geometry and
+"""Draw docs/images/cornell-box.png: the Cornell box (its published geometry and
 colors, ``sl.radiosity.cornell_box``) solved by radiosity -- 10 x 10 patches a face
 (1,900 patches), hemicube form factors, Gauss-Seidel -- and rendered through
 ``sl.render`` by Gouraud shading of the node radiosities, seen from the published
-camera.  Run from the repository root: ``python docs/figures/cornell_box.py``."""
+camera.  Run: ``python examples/ch14_surface_detail/cornell_box.py``."""
 
 import os
 
 import scanline as sl
 
-HERE = os.path.dirname(os.path.abspath(__file__))
+DOCS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "docs", "images")
 
 
 def main():
@@ -18,7 +18,7 @@ def main():
     print(solution, f"history: {[f'{x:.1e}' for x in solution.history]}")
     fb = sl.FrameBuffer(480, 480, mode="RGB", background="black")
     solution.render(fb, box["camera"], antialias=2)
-    fb.save(os.path.join(HERE, "cornell-box.png"))
+    fb.save(os.path.join(DOCS, "cornell-box.png"))
 
 
 if __name__ == "__main__":

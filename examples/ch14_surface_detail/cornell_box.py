@@ -6,19 +6,15 @@ camera.  Run: ``python examples/ch14_surface_detail/cornell_box.py``."""
 
 import os
 
-import scanline as sl
+from scanline.cli.figures_surface_rendering import cornell_box_image
 
 DOCS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "docs", "images")
 
 
 def main():
-    box = sl.radiosity.cornell_box()
-    solution = sl.radiosity.solve(box["meshes"], box["emission"], box["reflectance"],
-                                  subdivisions=10)
+    image, solution = cornell_box_image(480, subdivisions=10)
     print(solution, f"history: {[f'{x:.1e}' for x in solution.history]}")
-    fb = sl.FrameBuffer(480, 480, mode="RGB", background="black")
-    solution.render(fb, box["camera"], antialias=2)
-    fb.save(os.path.join(DOCS, "cornell-box.png"))
+    image.save(os.path.join(DOCS, "cornell-box.png"))
 
 
 if __name__ == "__main__":

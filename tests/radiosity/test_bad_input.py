@@ -130,3 +130,11 @@ def test_patches_made_by_hand_are_checked_before_the_kernels():
             sl.radiosity.solve(bad)
         with pytest.raises(ArgumentValueError, match="meshes: the Patches' " + message):
             sl.radiosity.form_factors(bad)
+
+
+@pytest.mark.parametrize("far", [1e61, 1e300, -1e300])
+def test_scenes_too_wide_for_finite_form_factors_are_refused(far):
+    wide = sl.mesh.Mesh([(far, 0, 0), (0, 0, 0), (0, 0, 1), (1, 0, 1)], [[0, 1, 2, 3]])
+    light = sl.mesh.Mesh([(0, 1, 0), (1, 1, 0), (1, 1, 1), (0, 1, 1)], [[0, 1, 2, 3]])
+    with pytest.raises(sl.ScanlineError, match="span .* scale the meshes down"):
+        sl.radiosity.solve([wide, light], [0, 1], 0.5, subdivisions=2)

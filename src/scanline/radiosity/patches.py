@@ -26,6 +26,10 @@ from ..errors import ArgumentTypeError, ArgumentValueError
 #: hemicube renders every patch once for every patch (n**2 work).
 MAX_PATCHES = 60_000
 
+#: The widest scene (units across) the radiosity method takes: beyond it a patch's
+#: area or the fourth power of a distance in a form factor could overflow.
+MAX_EXTENT = 1e60
+
 #: Largest subdivision of a face (patches per side).
 MAX_SUBDIVISIONS = 256
 
@@ -191,8 +195,15 @@ def patches(meshes: Any, subdivisions: int = 8, emission: Any = None,
     owner = np.concatenate([np.full(len(p[1]), k, np.int64) for k, p in enumerate(parts)])
     face = np.concatenate([p[2] for p in parts])
     cell = np.concatenate([p[3] for p in parts])
+    with np.errstate(over="ignore", invalid="ignore"):
+        extent = float(np.ptp(verts, axis=0).max())
+    if not extent <= MAX_EXTENT:
+        raise ArgumentValueError(
+            f"meshes span {extent:.3g} units: the radiosity method takes scenes up to "
+            f"{MAX_EXTENT:.0e} across (patch areas and the distances of the form factors "
+            "must stay finite); scale the meshes down")
     area, centre, normal = _geometry(verts[corners])
-    scale = float(np.ptp(verts, axis=0).max()) ** 2
+    scale = extent ** 2
     flat = np.flatnonzero(~(area > DEGENERATE * scale))
     if len(flat):
         p = int(flat[0])

@@ -25,7 +25,7 @@ VERSIONS = (1, 2)
 #: through (``animation``: key frames, motion paths and morphs,
 #: :mod:`scanline.scene.animated`; ``lights``, ``materials``, ``method``, ``shading``:
 #: :mod:`scanline.scene.shaded`).
-V2_KEYS = {"animation", "lights", "materials", "method", "shading"}
+V2_KEYS = {"animation", "lights", "materials", "method", "shading", "radiosity"}
 
 #: Largest canvas side, in pixels.
 MAX_SIZE = 16384

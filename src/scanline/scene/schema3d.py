@@ -44,10 +44,12 @@ GENERATORS = {
     "supertoroid": {"s1", "s2", "r", "radii", "center", "resolution"},
     "sweep": {"kind", "profile", "vector", "axis", "angle", "steps", "closed", "caps"},
     "teapot": {"n", "parts"},
+    "polygons": {"vertices", "faces"},
 }
 #: Keys of each 3-D primitive type besides ``type``.
 PRIMITIVES = {
-    "mesh": {"generator", "file", "transform", "depth_cue", "material"} | _LINE
+    "mesh": {"generator", "file", "transform", "depth_cue", "material", "emission",
+             "reflectance"} | _LINE
             | set().union(*GENERATORS.values()),
     "polyline3d": {"points", "closed", "transform"} | _LINE,
 }
@@ -89,6 +91,12 @@ def _expected_size(gen, args):
         if gen in ("torus", "supertoroid"):
             return shapes.periodic_size(*shapes._resolution(res, 3))
         return shapes.closed_size(*shapes._resolution(res))
+    if gen == "polygons":
+        faces = args.get("faces")
+        if isinstance(args.get("vertices"), (list, tuple)) and isinstance(faces, (list, tuple)):
+            return (len(args["vertices"]), len(faces),
+                    sum(len(f) if isinstance(f, (list, tuple)) else 1 for f in faces))
+        return None
     if gen == "teapot":
         n = args.get("n", 6)
         if isinstance(n, numbers.Integral) and not isinstance(n, bool) and n > 0:
@@ -307,10 +315,17 @@ def _mesh(data, path, base, totals=None):
             if isinstance(x, numbers.Real) and not isinstance(x, bool) and x > top:
                 where = f"{path}.{key}" + (f"[{i}]" if isinstance(value, list) else "")
                 s._fail(where, f"is {x!r}; a scene's meshes allow at most {top}")
-    if isinstance(given.get("profile"), list) and len(given["profile"]) > 100_000:
-        s._fail(f"{path}.profile", "holds more than 100000 points")
+    for key in ("profile", "vertices", "faces"):
+        if isinstance(given.get(key), list) and len(given[key]) > 100_000:
+            s._fail(f"{path}.{key}", "holds more than 100000 items")
     args = _arguments(given, path)
     _count(totals, path, s._call(path, _expected_size, gen, args))
+    if gen == "polygons":
+        for key in ("vertices", "faces"):
+            if key not in args:
+                s._fail(path, f"needs the key '{key}' (vertices: a list of [x, y, z]; faces: "
+                        "a list of vertex-number lists, from 0)")
+        return s._call(path, ms.Mesh, args["vertices"], args["faces"])
     if gen == "sweep":
         if "profile" not in args:
             s._fail(path, "needs the key 'profile' (a list of points [x, y])")
@@ -361,6 +376,13 @@ def primitive(kind, data, path, df, background, base, shading=None, segment=None
         s._call(path, df.polyline3d, pts, data.get("color", "white"), closed, **line)
         return
     mesh = _mesh(data, path, base, totals)
+    for key in ("emission", "reflectance"):
+        if key in data and (shading is None or shading.radiosity is None):
+            s._fail(f"{path}.{key}", "is a radiosity value: it needs the scene's radiosity "
+                    "table (radiosity = {subdivisions = 8})")
+        if key in data and "material" not in data:
+            s._fail(f"{path}.{key}", "needs the mesh's material (a radiosity surface is a "
+                    "shaded surface)")
     if "material" in data:
         if shading is None:
             s._fail(f"{path}.material", "needs the scene's lights, materials or shading keys "
@@ -371,7 +393,8 @@ def primitive(kind, data, path, df, background, base, shading=None, segment=None
     if not (m == t3.compose()).all():
         mesh = s._call(f"{path}.transform", mesh.transformed, m)
     if "material" in data:
-        shading.surface(mesh, data["material"], path, df.camera(df._current_camera))
+        shading.surface(mesh, data["material"], path, df.camera(df._current_camera),
+                        data.get("emission"), data.get("reflectance"))
         return
     cue = data.get("depth_cue")
     if isinstance(cue, list):

@@ -1,17 +1,22 @@
 """Shaded surfaces in a scene (schema version 2): the top-level ``lights``,
-``materials``, ``method`` and ``shading`` keys, and the ``material`` key of a mesh
-primitive, which makes the mesh a surface drawn by :func:`scanline.render` instead
-of a wireframe.  See docs/scene-format.md, "Lights, materials and shading".
+``materials``, ``method``, ``shading`` and ``radiosity`` keys, and the ``material``
+key of a mesh primitive, which makes the mesh a surface drawn by
+:func:`scanline.render` instead of a wireframe (with ``radiosity``, by
+:func:`scanline.radiosity.solve` and Gouraud shading of its node radiosities; the
+mesh's ``emission`` and ``reflectance`` keys give its radiosity values).  See
+docs/scene-format.md, "Lights, materials and shading" and "Radiosity".
 
 Surfaces are drawn first, through the camera of their segment (each camera's
 surfaces share one depth test), on the whole canvas; the display file (wireframes,
 lines, text) is drawn over them.
 """
 
+import numpy as np
+
 from .. import lighting
 
 #: Top-level keys this module reads.
-KEYS = {"lights", "materials", "method", "shading"}
+KEYS = {"lights", "materials", "method", "shading", "radiosity"}
 #: Light types and their keys (besides ``type``).
 LIGHTS = {
     "ambient": {"intensity"},
@@ -32,6 +37,10 @@ MATERIAL = {"ka", "kd", "ks", "shininess", "color", "specular_color", "transpare
 MAPS = ("texture", "bump", "environment")
 PROCEDURAL = ("checker", "marble", "wood")
 SHADING = {"model", "specular", "gamma", "cull_back_faces", "depth_cue", "max_depth", "seed"}
+#: Keys of the radiosity table: :func:`scanline.radiosity.solve`'s options, and the
+#: ``exposure`` and ``antialias`` of the drawing (:meth:`Radiosity.render`).
+RADIOSITY = {"subdivisions", "method", "form_factors", "resolution", "tolerance",
+             "max_iterations", "shooting_group", "exposure", "antialias"}
 
 
 def _schema():
@@ -143,15 +152,22 @@ class Shading:
             cue = _tuples(t["depth_cue"])
             s._call("shading.depth_cue", depth_cue_intensities, cue)
             self.options["depth_cue"] = cue
+        self.radiosity = None
+        if "radiosity" in data:
+            self.radiosity = _tuples(s._table(data["radiosity"], "radiosity", RADIOSITY))
         self.surfaces = []
+        self.values = []
 
-    def surface(self, mesh, material, path, camera):
-        """Add ``mesh`` as a surface of the named ``material`` seen by ``camera``."""
+    def surface(self, mesh, material, path, camera, emission=None, reflectance=None):
+        """Add ``mesh`` as a surface of the named ``material`` seen by ``camera``
+        (``emission``, ``reflectance``: its radiosity values, None: no light, the
+        material's kd x color)."""
         if not isinstance(material, str) or material not in self.materials:
             _schema()._fail(f"{path}.material", f"names no material: {material!r}; materials: "
                             + (", ".join(repr(k) for k in self.materials) or
                                "none (add [materials.NAME])"))
         self.surfaces.append((mesh, self.materials[material], camera))
+        self.values.append((path, _tuples(emission), _tuples(reflectance)))
 
     def draw(self, fb):
         """Render the surfaces into ``fb``, camera by camera."""
@@ -163,7 +179,50 @@ class Shading:
             by_camera[id(camera)][1].append(mesh)
             by_camera[id(camera)][2].append(material)
         for camera, meshes, mats in by_camera.values():
-            render(fb, meshes, camera, lights=self.lights, materials=mats, **self.options)
+            if self.radiosity is None:
+                render(fb, meshes, camera, lights=self.lights, materials=mats, **self.options)
+        if self.radiosity is not None:
+            self._radiosity(fb)
+
+    def _radiosity(self, fb):
+        """Solve the radiosity of every surface together (the light goes from surface
+        to surface whatever camera sees them) and draw the solution through each
+        camera."""
+        import copy
+
+        from .. import radiosity
+
+        s = _schema()
+        options = dict(self.radiosity)
+        draw = {k: options.pop(k) for k in ("exposure", "antialias") if k in options}
+        meshes = []
+        for mesh, material, _ in self.surfaces:
+            mesh = copy.copy(mesh)
+            mesh.material = material           # the default reflectance: kd x color
+            meshes.append(mesh)
+        pts = s._call("radiosity", radiosity.patches, meshes, options.pop("subdivisions", 8))
+        emission = np.zeros((len(pts), 3))
+        reflectance = pts.reflectance.copy()
+        for k, (path, e, r) in enumerate(self.values):
+            on = pts.mesh == k
+            if e is not None:
+                emission[on] = s._call(f"{path}.emission", _triple, "emission", e)
+            if r is not None:
+                reflectance[on] = s._call(f"{path}.reflectance", _triple, "reflectance", r)
+        pts = s._call("radiosity", pts.with_values, emission, reflectance)
+        solution = s._call("radiosity", radiosity.solve, pts, **options)
+        cameras = {id(camera): camera for _, _, camera in self.surfaces}
+        for camera in cameras.values():
+            s._call("radiosity", solution.render, fb, camera, **draw)
+
+
+def _triple(name, value):
+    """A radiosity value: one number or (r, g, b), as three floats."""
+    from .. import _validate as v
+
+    if isinstance(value, tuple) and len(value) == 3:
+        return tuple(v.number(f"{name}[{i}]", x) for i, x in enumerate(value))
+    return (v.number(name, value),) * 3
 
 
 def shading(data, base=None):

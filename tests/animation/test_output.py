@@ -166,35 +166,52 @@ def test_errors_leave_no_file(tmp_path):
 
 
 def test_ctrl_c_stops_the_workers(tmp_path):
+    """Ctrl-C while the workers render: the save stops with KeyboardInterrupt, every
+    worker exits and no file is left.  The test waits for states, not for times: the
+    signal is sent once two workers have each started a frame (each frame leaves a
+    marker with its worker's pid), and the workers' exit is polled."""
+    markers = tmp_path / "markers"
+    markers.mkdir()
     script = tmp_path / "slow.py"
     script.write_text(textwrap.dedent(f"""
-        import sys, time
-        sys.path.insert(0, {os.path.dirname(__file__)!r})
+        import os, sys, time
         import scanline as sl
         def slow(i):
+            open(os.path.join({str(markers)!r}, f"{{i}}-{{os.getpid()}}"), "w").close()
             time.sleep(0.3)
             return sl.FrameBuffer(8, 8)
         if __name__ == "__main__":
             try:
-                sl.animation.Animation(slow, frames=200, fps=10).save({str(tmp_path / 'out.gif')!r}, jobs=2)
+                sl.animation.Animation(slow, frames=400, fps=10).save({str(tmp_path / 'out.gif')!r}, jobs=2)
             except KeyboardInterrupt:
                 sys.exit(130)
     """))
     proc = subprocess.Popen([sys.executable, str(script)])
-    children = []
-    deadline = time.monotonic() + 60
-    while len(children) < 2 and time.monotonic() < deadline:
-        time.sleep(0.2)
-        with open(f"/proc/{proc.pid}/task/{proc.pid}/children") as f:
-            children = [int(p) for p in f.read().split()]
-    assert len(children) >= 2, "the workers did not start"
-    time.sleep(1.0)
-    proc.send_signal(signal.SIGINT)
-    assert proc.wait(timeout=30) == 130
-    time.sleep(0.5)
-    for pid in children:
-        assert not os.path.exists(f"/proc/{pid}") or "Z" in open(f"/proc/{pid}/stat").read().split()[2]
-    assert [n for n in os.listdir(tmp_path) if n != "slow.py"] == []
+    try:
+        workers = set()
+        deadline = time.monotonic() + 120
+        while len(workers) < 2 and proc.poll() is None and time.monotonic() < deadline:
+            time.sleep(0.05)
+            workers = {int(name.split("-")[1]) for name in os.listdir(markers)}
+        assert len(workers) == 2, f"two workers did not start rendering (pids {workers})"
+        proc.send_signal(signal.SIGINT)
+        assert proc.wait(timeout=60) == 130
+    finally:
+        proc.kill()
+        proc.wait()
+
+    def running(pid):
+        try:
+            with open(f"/proc/{pid}/stat") as f:
+                return f.read().rsplit(")", 1)[1].split()[0] != "Z"
+        except FileNotFoundError:
+            return False
+    deadline = time.monotonic() + 30
+    while any(running(pid) for pid in workers) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert not any(running(pid) for pid in workers), "a worker outlived the interrupted save"
+    assert len(os.listdir(markers)) < 400                     # stopped before the end
+    assert sorted(os.listdir(tmp_path)) == ["markers", "slow.py"]
 
 
 def test_jupyter_display_and_progress(capsys):

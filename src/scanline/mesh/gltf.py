@@ -26,6 +26,8 @@ import warnings
 
 import numpy as np
 
+from ..errors import ArgumentValueError
+from ..transform3d.quaternion import Quaternion
 from .mesh import Mesh, check_mesh_budget
 
 #: numpy dtypes of glTF's component types (section 3.6.2.2).
@@ -210,16 +212,19 @@ def _local(node, i, filename):
         else:
             t = np.asarray(node.translation if node.translation is not None else (0, 0, 0),
                            np.float64).reshape(3)
-            x, y, z, w = np.asarray(node.rotation if node.rotation is not None
-                                    else (0, 0, 0, 1), np.float64).reshape(4)
+            xyzw = np.asarray(node.rotation if node.rotation is not None
+                              else (0, 0, 0, 1), np.float64).reshape(4)
             s = np.asarray(node.scale if node.scale is not None else (1, 1, 1),
                            np.float64).reshape(3)
-            r = np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
-                          [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
-                          [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
+            try:
+                r = Quaternion.from_xyzw(xyzw, "rotation").matrix3()
+            except ArgumentValueError as error:     # zero or not finite
+                raise MeshFileError(f"node {i}: {error}", file=filename) from None
             m = np.eye(4)
             m[:3, :3] = r * s
             m[:3, 3] = t
+    except MeshFileError:
+        raise
     except (TypeError, ValueError):
         raise MeshFileError(f"node {i}: its matrix or translation/rotation/scale are not "
                             "16, 3, 4 and 3 numbers", file=filename) from None

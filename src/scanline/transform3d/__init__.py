@@ -10,6 +10,9 @@ counterclockwise looking from the positive axis toward the origin.
 ...                            sl.transform3d.rotation(math.pi / 2, "x"))
 >>> (sl.transform3d.apply(m, (0, 1, 0)).round(12) + 0).tolist()
 [0.0, 0.0, 2.0]
+
+Rotations can also be held as unit quaternions (:class:`Quaternion`, section 11-2),
+interpolated by :func:`slerp` and :func:`squad` (Shoemake 1985).
 """
 
 from .affine3d import (
@@ -28,7 +31,8 @@ from .affine3d import (
     shear,
     translation,
 )
+from .quaternion import Quaternion, slerp, squad, squad_controls
 
 __all__ = ["AXES", "PLANES", "Step", "apply", "axis_alignment", "compose", "inverse",
-           "is_affine", "reflection", "rotation", "rotation_steps", "scaling", "shear",
-           "translation"]
+           "is_affine", "Quaternion", "reflection", "rotation", "rotation_steps", "scaling",
+           "shear", "slerp", "squad", "squad_controls", "translation"]

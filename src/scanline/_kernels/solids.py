@@ -1,0 +1,311 @@
+"""Exact ray-solid intersections (Hearn & Baker 14-6, "ray-surface intersections";
+10-3, quadric surfaces): every primitive gives the intervals of the ray's parameter t
+where the ray o + t d is inside it, each end labelled with the surface it crosses there.
+
+A primitive is a row of ``prims`` (:data:`COLUMNS` reals): its kind, the affine map W
+(3 x 4, world -> the primitive's own coordinates), a symmetric 4 x 4 quadric Q and six
+slab limits (lo x, y, z, hi x, y, z; +-inf where unbounded).  In its own coordinates
+the solid is
+
+    { u : (u, 1)^T Q (u, 1) <= 0 } (kinds with a quadric)  n  { lo <= u <= hi }.
+
+A ray maps to u(t) = W (o, 1) + t W_lin d with the same t, so
+
+    f(t) = A t^2 + 2 B t + C,  A = d'^T Q d',  B = d'^T Q o',  C = o'^T Q o'
+
+(d' = (W_lin d, 0), o' = (W o, 1)), and the roots are taken by the numerically careful
+form (Press et al., *Numerical Recipes*, 2nd ed., section 5.6): q = -(B + sgn(B)
+sqrt(B^2 - A C)), t_1 = q / A, t_2 = C / q -- no difference of nearly equal numbers,
+so a far-away ray keeps the accuracy of its near root.  A > 0 gives one interval
+between the roots (none when B^2 - A C <= 0: a tangent ray grazes, it does not enter);
+A < 0 the two outside them (a hyperboloid's or a cone's nappes); A = 0 a half line.
+The slabs clip by the slab method (Kay & Kajiya 1986).  A closed mesh gives the
+intervals where the winding number of its crossings is positive (a crossing against
+the outward normal counts +1, along it -1), from every crossing of the whole line
+found through the bounding volume hierarchy of :mod:`scanline._kernels.bvh`.
+
+A surface label (a *code*) is ``2 * (8 * primitive + surface) + flip``: surface 0 the
+quadric, 1 .. 6 the slab faces (lo x, hi x, lo y, hi y, lo z, hi z); a mesh triangle is
+``2 * (8 * P + row) + flip`` (P primitives, ``row`` of the triangle table); ``flip``
+turns the normal inside out (the surface of B in A - B).  Normals are gradients:
+grad (f o W) = W_lin^T grad f (:func:`surface_normal`).
+"""
+
+import math
+
+import numpy as np
+
+from ._jit import helper
+from .bvh import inside, moller_trumbore
+
+#: Kinds of primitives.
+QUADRIC = 0
+SLABS = 1
+MESH = 2
+
+#: Columns of a primitive row: kind, W (12, row-major 3 x 4), Q (16), lo (3), hi (3).
+COLUMNS = 35
+W0 = 1
+Q0 = 13
+LO = 29
+HI = 32
+
+
+@helper
+def _local(prims, k, ox, oy, oz, dx, dy, dz, u):
+    """The ray in primitive ``k``'s coordinates into ``u`` (6,): origin, direction."""
+    for r in range(3):
+        w = W0 + 4 * r
+        u[r] = prims[k, w] * ox + prims[k, w + 1] * oy + prims[k, w + 2] * oz + prims[k, w + 3]
+        u[3 + r] = prims[k, w] * dx + prims[k, w + 1] * dy + prims[k, w + 2] * dz
+
+
+@helper
+def _slabs(prims, k, u, code):
+    """The slab method on primitive ``k``'s limits: ``(t_near, t_far, code_near,
+    code_far)``; t_near > t_far when the ray misses."""
+    near = -math.inf
+    far = math.inf
+    cn = -1
+    cf = -1
+    for a in range(3):
+        lo = prims[k, LO + a]
+        hi = prims[k, HI + a]
+        if lo == -math.inf and hi == math.inf:
+            continue
+        o = u[a]
+        d = u[3 + a]
+        if d == 0.0:
+            if not (lo <= o and o <= hi):
+                return math.inf, -math.inf, cn, cf
+            continue
+        t0 = (lo - o) / d
+        t1 = (hi - o) / d
+        c0 = 2 * (code + 1 + 2 * a)
+        c1 = 2 * (code + 2 + 2 * a)
+        if t0 > t1:
+            t0, t1 = t1, t0
+            c0, c1 = c1, c0
+        if t0 > near:
+            near = t0
+            cn = c0
+        if t1 < far:
+            far = t1
+            cf = c1
+    return near, far, cn, cf
+
+
+@helper
+def _form(prims, k, u, i, j):
+    """(u_i-part)^T Q (u_j-part) with homogeneous w: 1 for an origin (i = 0), 0 for a
+    direction (i = 3)."""
+    s = 0.0
+    for r in range(4):
+        a = (u[i + r] if r < 3 else (1.0 if i == 0 else 0.0))
+        if a == 0.0:
+            continue
+        for c in range(4):
+            b = (u[j + c] if c < 3 else (1.0 if j == 0 else 0.0))
+            s += a * prims[k, Q0 + 4 * r + c] * b
+    return s
+
+
+@helper
+def quadric_roots(qa, qb, qc):
+    """The intervals of t where qa t^2 + 2 qb t + qc < 0: ``(count, a0, b0, a1, b1)``,
+    count 0, 1 or 2 (ends may be +-inf), by the careful root formula of the module
+    docstring."""
+    if qa == 0.0:
+        if qb == 0.0:
+            if qc < 0.0:
+                return 1, -math.inf, math.inf, 0.0, 0.0
+            return 0, 0.0, 0.0, 0.0, 0.0
+        root = -qc / (2.0 * qb)
+        if qb > 0.0:
+            return 1, -math.inf, root, 0.0, 0.0
+        return 1, root, math.inf, 0.0, 0.0
+    disc = qb * qb - qa * qc
+    if not disc > 0.0:
+        if qa < 0.0:
+            return 1, -math.inf, math.inf, 0.0, 0.0
+        return 0, 0.0, 0.0, 0.0, 0.0
+    q = -(qb + math.copysign(math.sqrt(disc), qb))
+    r1 = q / qa
+    r2 = qc / q if q != 0.0 else -r1
+    if r1 > r2:
+        r1, r2 = r2, r1
+    if qa > 0.0:
+        return 1, r1, r2, 0.0, 0.0
+    return 2, -math.inf, r1, r2, math.inf
+
+
+@helper
+def primitive_intervals(prims, k, ox, oy, oz, dx, dy, dz, u, ts, cs, slot):
+    """The inside intervals of analytic primitive ``k`` along the ray into list
+    ``slot`` of ``ts`` (S, N, 2) / ``cs`` (S, N, 2) codes; returns their count (0..2)."""
+    _local(prims, k, ox, oy, oz, dx, dy, dz, u)
+    near, far, cn, cf = _slabs(prims, k, u, 8 * k)
+    if not near < far:
+        return 0
+    if int(prims[k, 0]) == SLABS:
+        ts[slot, 0, 0] = near
+        ts[slot, 0, 1] = far
+        cs[slot, 0, 0] = cn
+        cs[slot, 0, 1] = cf
+        return 1
+    qa = _form(prims, k, u, 3, 3)
+    qb = _form(prims, k, u, 3, 0)
+    qc = _form(prims, k, u, 0, 0)
+    count, a0, b0, a1, b1 = quadric_roots(qa, qb, qc)
+    n = 0
+    quad = 2 * (8 * k)
+    for i in range(count):
+        a = a0 if i == 0 else a1
+        b = b0 if i == 0 else b1
+        ca = quad
+        cb = quad
+        if near > a:
+            a = near
+            ca = cn
+        if far < b:
+            b = far
+            cb = cf
+        if a < b and n < ts.shape[1]:
+            ts[slot, n, 0] = a
+            ts[slot, n, 1] = b
+            cs[slot, n, 0] = ca
+            cs[slot, n, 1] = cb
+            n += 1
+    return n
+
+
+@helper
+def _meets_line(bounds, node, ox, oy, oz, ix, iy, iz):
+    """Whether the whole line o + t d (``ix`` = 1 / d_x ...) meets the box of ``node``."""
+    t0 = (bounds[node, 0] - ox) * ix
+    t1 = (bounds[node, 3] - ox) * ix
+    near = min(t0, t1)
+    far = max(t0, t1)
+    t0 = (bounds[node, 1] - oy) * iy
+    t1 = (bounds[node, 4] - oy) * iy
+    near = max(near, min(t0, t1))
+    far = min(far, max(t0, t1))
+    t0 = (bounds[node, 2] - oz) * iz
+    t1 = (bounds[node, 5] - oz) * iz
+    near = max(near, min(t0, t1))
+    far = min(far, max(t0, t1))
+    return far >= near
+
+
+@helper
+def crossings(ox, oy, oz, dx, dy, dz, bounds, links, table, hit_t, hit_row, stack):
+    """Every triangle the whole line o + t d crosses, sorted by t into ``hit_t`` /
+    ``hit_row``: returns the count, or -1 when there were more than the buffers hold."""
+    n = 0
+    if bounds.shape[0] == 0:
+        return n
+    ix = 1.0 / dx if dx != 0 else 1e300
+    iy = 1.0 / dy if dy != 0 else 1e300
+    iz = 1.0 / dz if dz != 0 else 1e300
+    top = 1
+    stack[0] = 0
+    while top > 0:
+        top -= 1
+        node = stack[top]
+        if not _meets_line(bounds, node, ox, oy, oz, ix, iy, iz):
+            continue
+        count = links[node, 1]
+        first = links[node, 0]
+        if count > 0:
+            for i in range(first, first + count):
+                t, a, b = moller_trumbore(ox, oy, oz, dx, dy, dz, table, i)
+                if not inside(t, a, b, -math.inf, math.inf):
+                    continue
+                if n >= hit_t.shape[0]:
+                    return -1
+                j = n                                  # insertion into the sorted buffer
+                while j > 0 and hit_t[j - 1] > t:
+                    hit_t[j] = hit_t[j - 1]
+                    hit_row[j] = hit_row[j - 1]
+                    j -= 1
+                hit_t[j] = t
+                hit_row[j] = i
+                n += 1
+            continue
+        if top + 2 > stack.shape[0]:
+            continue
+        stack[top] = first
+        stack[top + 1] = first + 1
+        top += 2
+    return n
+
+
+@helper
+def mesh_intervals(k, dx, dy, dz, table, tri_prim, base, hit_t, hit_row, hits, ts, cs, slot):
+    """The inside intervals of mesh primitive ``k`` from the line's sorted crossings
+    (``hits`` of them): where the winding number is positive.  ``base``: 8 P, the
+    first triangle code.  Returns the count (at most the list's length, then -1)."""
+    n = 0
+    wind = 0
+    for e in range(hits):
+        row = hit_row[e]
+        if tri_prim[row] != k:
+            continue
+        # the outward normal e1 x e2 against the direction: entering when negative
+        nx = table[row, 4] * table[row, 8] - table[row, 5] * table[row, 7]
+        ny = table[row, 5] * table[row, 6] - table[row, 3] * table[row, 8]
+        nz = table[row, 3] * table[row, 7] - table[row, 4] * table[row, 6]
+        step = 1 if nx * dx + ny * dy + nz * dz < 0 else -1
+        was = wind
+        wind += step
+        if was <= 0 and wind > 0:
+            if n >= ts.shape[1]:
+                return -1
+            ts[slot, n, 0] = hit_t[e]
+            cs[slot, n, 0] = 2 * (base + row)
+        elif was > 0 and wind <= 0:
+            ts[slot, n, 1] = hit_t[e]
+            cs[slot, n, 1] = 2 * (base + row)
+            if ts[slot, n, 1] > ts[slot, n, 0]:
+                n += 1
+    return n
+
+
+@helper
+def surface_normal(prims, table, code, px, py, pz, out):
+    """The unit outward normal (3,) of the surface ``code`` at the world point p (the
+    gradient of the quadric, the slab face's axis, the triangle's e1 x e2), turned
+    inside out when the code's flip bit is set."""
+    flip = code & 1
+    c = code >> 1
+    k = c >> 3
+    s = c & 7
+    if k >= prims.shape[0]:
+        row = c - 8 * prims.shape[0]
+        if 0 <= row < table.shape[0]:
+            out[0] = table[row, 4] * table[row, 8] - table[row, 5] * table[row, 7]
+            out[1] = table[row, 5] * table[row, 6] - table[row, 3] * table[row, 8]
+            out[2] = table[row, 3] * table[row, 7] - table[row, 4] * table[row, 6]
+        else:
+            out[0] = out[1] = out[2] = 0.0
+    else:
+        g = np.zeros(3)
+        if s == 0:
+            u = np.empty(3)
+            for r in range(3):
+                w = W0 + 4 * r
+                u[r] = (prims[k, w] * px + prims[k, w + 1] * py + prims[k, w + 2] * pz
+                        + prims[k, w + 3])
+            for r in range(3):
+                g[r] = (prims[k, Q0 + 4 * r] * u[0] + prims[k, Q0 + 4 * r + 1] * u[1]
+                        + prims[k, Q0 + 4 * r + 2] * u[2] + prims[k, Q0 + 4 * r + 3])
+        else:
+            a = (s - 1) >> 1
+            g[a] = 1.0 if (s - 1) & 1 else -1.0
+        for c3 in range(3):
+            out[c3] = (prims[k, W0 + c3] * g[0] + prims[k, W0 + 4 + c3] * g[1]
+                       + prims[k, W0 + 8 + c3] * g[2])
+    length = math.sqrt(out[0] * out[0] + out[1] * out[1] + out[2] * out[2])
+    scale = (-1.0 if flip else 1.0) / length if length > 0 else 0.0
+    for c3 in range(3):
+        out[c3] *= scale

@@ -193,6 +193,10 @@ def run(fb, meshes, camera, options, materials=None, colors=None, crease_angle=m
     from ..visible import METHODS, Fragments
     from ..visible.zbuffer import nearest
 
+    from ..solids.render import check_method, split
+
+    meshes, solids = split(meshes)
+    check_method(options.method, solids)
     n = options.antialias
     scene = prepare(meshes, camera, fb.width, fb.height, materials, colors,
                     options.cull_back_faces, crease_angle)
@@ -226,6 +230,11 @@ def run(fb, meshes, camera, options, materials=None, colors=None, crease_angle=m
     else:
         facets = shade(fb, opaque, seen, shading)
         depth, pieces = seen.depth, seen.pieces
+    solid_map = None
+    if solids:
+        from ..solids.render import draw
+
+        facets, depth, solid_map = draw(fb, scene, solids, shading, facets, depth)
     if layered:
         glass = scene.with_triangles(clear)
         front = nearest(glass, zbuf=depth.copy())
@@ -233,12 +242,14 @@ def run(fb, meshes, camera, options, materials=None, colors=None, crease_angle=m
         facets = np.where(over >= 0, over, facets)
         depth = np.minimum(depth, over_depth)
     if n > 1:
-        _resolve(target_fb, fb, facets >= 0, n, shading.gamma)
+        covered = facets >= 0 if solid_map is None else (facets >= 0) | (solid_map >= 0)
+        _resolve(target_fb, fb, covered, n, shading.gamma)
         c = n // 2
         facets = np.ascontiguousarray(facets[c::n, c::n])
         depth = np.ascontiguousarray(depth[c::n, c::n])
+        solid_map = None if solid_map is None else np.ascontiguousarray(solid_map[c::n, c::n])
         fb = target_fb
-    return Rendering(name, fb, DepthBuffer.holding(depth), facets, scene, pieces)
+    return Rendering(name, fb, DepthBuffer.holding(depth), facets, scene, pieces, solid_map)
 
 
 def _finer(fb, n, layers):

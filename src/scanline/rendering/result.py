@@ -29,9 +29,13 @@ class Rendering:
         -1: none), ``faces[y, x]``.
     meshes : ndarray of int64 (H, W)
         The mesh (its index in the list given) seen at each pixel (-1: none).
+    solids : ndarray of int64 (H, W)
+        The solid (:mod:`scanline.solids`, its index among the solids given) seen at
+        each pixel (-1: none; all -1 when no solid was given).
     """
 
-    def __init__(self, method, image, depth, facets, scene, pieces=None):
+    def __init__(self, method, image, depth, facets, scene, pieces=None, solids=None):
+        self.solids = np.full(facets.shape, -1, np.int64) if solids is None else solids
         self.method = method
         self.image = image
         self.depth = depth

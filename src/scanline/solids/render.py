@@ -1,0 +1,128 @@
+"""Solids in ``sl.render``: exact surfaces seen by the ray-casting method (Hearn &
+Baker 13-10 and 14-6: the ray through each pixel center against each object's exact
+surface; Roth 1982 for CSG trees).
+
+The rays are the ray caster's own (:func:`scanline.raytrace.render.primary_rays`: one
+through each pixel center, or each sample's with ``antialias=n``), cast against every
+solid given (their union, one program: :class:`~scanline.solids.program.Program`);
+a solid's first surface is projected by the camera's clip matrix to a device depth,
+and where it lies in the view volume and in front of the meshes' depth it is what the
+pixel sees.  It is lit by the illumination model (:func:`scanline.lighting.intensity`)
+with the surface's exact normal (the gradient of its quadric, its face's or triangle's
+normal), the primitive's material and the shading's lights, specular term and shadow
+test -- whatever ``shading=`` says, as Phong shading of an exact normal.
+"""
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import ArgumentValueError
+from .base import is_solid
+
+#: The methods that draw solids (they cast rays).
+METHODS = ("ray-casting", "ray-tracing")
+
+
+def split(items):
+    """``items`` (a mesh, a solid, or a list of both) -> (the meshes' list or the
+    original object when it holds no solid, the solids' list)."""
+    if is_solid(items):
+        return [], [items]
+    if isinstance(items, (list, tuple)):
+        solids = [x for x in items if is_solid(x)]
+        if solids:
+            return [x for x in items if not is_solid(x)], solids
+    return items, []
+
+
+def check_method(method, solids):
+    """Refuse solids for a method that does not cast rays."""
+    if solids and method not in METHODS:
+        raise ArgumentValueError(
+            f"method={method!r} draws polygon meshes; solids ({type(solids[0]).__name__}, CSG "
+            f"trees) are drawn exactly by method='ray-casting' or 'ray-tracing' (or convert a "
+            f"primitive to a mesh first, e.g. sl.mesh.sphere for a Sphere)")
+
+
+@dataclass(frozen=True, eq=False)
+class Hits:
+    """The solids' first surfaces at pixels (``ys``, ``xs``) seen in front of the
+    meshes: world ``points`` and unit ``normals`` (facing the viewer), ``rays`` (their
+    unit directions), ``depth`` (device), ``solid`` (the index in the list given),
+    ``material`` (the primitive's)."""
+    ys: np.ndarray
+    xs: np.ndarray
+    points: np.ndarray
+    normals: np.ndarray
+    rays: np.ndarray
+    depth: np.ndarray
+    solid: np.ndarray
+    materials: list
+    primitive: np.ndarray
+
+
+def cast(scene, solids, depth):
+    """Cast every pixel's ray of ``scene`` (its device and camera mapping) against
+    ``solids``; :class:`Hits` where a solid is nearer than ``depth`` (H, W)."""
+    from ..csg import union
+    from ..raytrace.render import primary_rays
+    from .program import Program, flatten
+
+    h, w = depth.shape
+    ys, xs = np.divmod(np.arange(h * w), w)
+    origins, directions = primary_rays(scene, xs, ys)
+    program = Program(union(*solids))
+    t, code, normal = program.cast(origins, directions)
+    points = origins + t[:, None] * directions
+    clip, scale, offset = scene.mapping
+    with np.errstate(all="ignore"):
+        hom = points @ clip[:, :3].T + clip[:, 3]
+        z = hom[:, 2] / hom[:, 3] * scale[2] + offset[2]
+        seen = (code >= 0) & (hom[:, 3] > 0) & (hom[:, 2] >= 0) & (hom[:, 2] <= hom[:, 3]) \
+            & (z < depth[ys, xs])
+    prim = program.primitive(code[seen])
+    # each primitive's solid: the solids' primitives are numbered one solid after another
+    sizes = [len(flatten(s)[1]) for s in solids]
+    owner = np.repeat(np.arange(len(solids)), sizes)
+    n = normal[seen]
+    d = directions[seen]
+    n *= np.where((n * d).sum(axis=1) > 0, -1.0, 1.0)[:, None]
+    return Hits(ys[seen], xs[seen], points[seen], n, d, z[seen], owner[prim],
+                program.materials, prim)
+
+
+def local_light(scene, hits, shading):
+    """The illumination model at the hits (linear RGB, (M, 3)), primitive by
+    primitive's material; unlit colors for ``shading="none"``."""
+    from ..lighting import intensity
+
+    out = np.empty((len(hits.ys), 3))
+    for k in np.unique(hits.primitive):
+        sel = hits.primitive == k
+        m = hits.materials[k]
+        if shading.model == "none":
+            out[sel] = m.color
+            continue
+        vis = None if shading.shadows is None else shading.shadows(hits.points[sel])
+        out[sel] = intensity(hits.points[sel], hits.normals[sel], scene.eye, list(shading.lights),
+                             m, specular=shading.specular, visibility=vis)
+    return out
+
+
+def draw(fb, scene, solids, shading, facets, depth):
+    """Draw ``solids`` over what the method drew of the meshes (``facets``, ``depth``:
+    (H, W)) where they are nearer: returns the new facets (-1 at a solid), depth and
+    the solid seen at each pixel (-1: none)."""
+    from ..shading.compose import store
+
+    hits = cast(scene, solids, depth)
+    seen = np.full(depth.shape, -1, np.int64)
+    if len(hits.ys):
+        store(fb, hits.ys, hits.xs, local_light(scene, hits, shading), shading.gamma)
+        facets = facets.copy()
+        depth = depth.copy()
+        facets[hits.ys, hits.xs] = -1
+        depth[hits.ys, hits.xs] = hits.depth
+        seen[hits.ys, hits.xs] = hits.solid
+    return facets, depth, seen

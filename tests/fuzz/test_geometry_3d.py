@@ -225,7 +225,7 @@ def test_camera_methods(pts, which, width, height, box, aspect, depth, direction
     with bounded():
         cam.volume_corners(width, height)
     with bounded():
-        cam.stereo_pair(separation)
+        cam.stereo(separation)
     with bounded():
         cam.replace(viewport=box, keep_aspect=aspect)
     with bounded():

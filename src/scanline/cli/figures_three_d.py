@@ -233,49 +233,50 @@ def figure_stereo_pair():
                sl.mesh.torus(0.7, 0.18, center=(-1.8, 0.2, -1.8), resolution=(20, 8))]
     cam = sl.Camera(eye=(0, 0.8, 4.4), target=(0, 0, -0.6),
                     projection=sl.projection.perspective(fov=math.radians(40), near=1))
-    left, right = cam.stereo_pair(0.35)
+    left, right = cam.stereo(0.35)
     size = (320, 220)
     views = []
     for eye in (left, right):
-        fb = sl.FrameBuffer(*size, mode="L", background=0)
-        sl.draw3d.wireframe(fb, objects, eye, color=255)
-        views.append(fb.to_array())
-    # on white paper each eye's lines darken the channels the other eye's filter passes
-    rgb = np.full(views[0].shape + (3,), 255, np.uint8)
-    rgb[..., 1] -= views[0]           # left (red filter): dark in green and blue
-    rgb[..., 2] -= views[0]
-    rgb[..., 0] -= views[1]           # right (cyan filter): dark in red
-    anaglyph = sl.FrameBuffer.from_array(rgb)
+        fb = sl.FrameBuffer(*size, mode="L", background=255)
+        sl.draw3d.wireframe(fb, objects, eye, color=0)
+        views.append(fb)
+    # red channel: the left eye's view, green and blue: the right eye's
+    anaglyph = sl.draw3d.anaglyph(*views)
     return Figure(
         "three-d-stereo", "A red-cyan stereoscopic pair",
         "Two views from eye positions 0.35 units apart along the camera's x axis, both "
-        "looking at the scene's center (camera.stereo_pair), printed as an anaglyph: the "
-        "left eye's view in cyan ink (seen through the red filter) and the right eye's in "
+        "looking at the scene's center (camera.stereo), merged by sl.draw3d.anaglyph: the "
+        "red channel is the left eye's view, green and blue the right eye's, so the left "
+        "eye's lines print in cyan ink (dark through the red filter) and the right eye's in "
         "red ink. With red-cyan glasses the sphere stands in front of the cube and the ring.",
         "Hearn & Baker, section 9-1 (stereoscopic views)", anaglyph.to_pil(), None)
 
 
 def figure_exploded_view():
     """The teapot's parts moved apart: an exploded view."""
-    offsets = {"lid": (0, 0, 1.3), "rim": (0, 0, 0.6), "body": (0, 0, 0), "handle": (-0.9, 0, 0),
-               "spout": (0.9, 0, 0), "bottom": (0, 0, -0.9)}
-    colors = {"lid": HIGHLIGHT, "rim": "#e15759", "body": PIXEL, "handle": SECOND,
-              "spout": "#b07aa1", "bottom": "#76b7b2"}
-    parts = [sl.mesh.teapot(4, parts=[p]).translated(o) for p, o in offsets.items()]
+    names = ("lid", "rim", "body", "handle", "spout", "bottom")
+    colors = (HIGHLIGHT, "#e15759", PIXEL, SECOND, "#b07aa1", "#76b7b2")
+    assembled = [sl.mesh.teapot(4, parts=[p]) for p in names]
+    factor = 1.7
+    parts = sl.draw3d.exploded(assembled, factor)
     cam = sl.Camera(eye=(2.5, -9, 4.5), target=(0.1, 0, 1.2), up=(0, 0, 1),
                     projection=sl.projection.perspective(fov=math.radians(40), near=1))
     fb = sl.FrameBuffer(420, 300, background=PAPER)
-    sl.draw3d.wireframe(fb, parts, cam, color=[colors[p] for p in offsets])
+    sl.draw3d.wireframe(fb, parts, cam.replace(projection=sl.projection.perspective(
+        fov=math.radians(52), near=1)), color=list(colors))
     whole = sl.FrameBuffer(300, 300, background=PAPER)
     sl.draw3d.wireframe(whole, sl.mesh.teapot(4), cam, color=PIXEL)
     image = side_by_side([whole.to_pil(), fb.to_pil()], ["assembled", "exploded"])
+    moves = [sl.draw3d.centroid(b) - sl.draw3d.centroid(a) for a, b in zip(assembled, parts)]
     return Figure(
         "three-d-exploded", "An exploded view of the teapot",
         "The teapot's six parts (lid, rim, body, handle, spout, bottom: Newell's patch "
-        "groups, each its own mesh) moved apart along the lines they are assembled on, so "
-        "that each part and how it joins the others can be seen.",
-        "Hearn & Baker, section 9-1 (exploded and cutaway views)", image,
-        "\n".join(f"{p:7s} moved by {o}" for p, o in offsets.items()))
+        f"groups, each its own mesh) moved apart by sl.draw3d.exploded(parts, {factor}): each "
+        "part along the line from the teapot's center through its own centroid, to "
+        f"{factor} times its distance, so that each part and how it joins the others can "
+        "be seen.", "Hearn & Baker, section 9-1 (exploded and cutaway views)", image,
+        "\n".join(f"{p:7s} moved by ({d[0]:.2f}, {d[1]:.2f}, {d[2]:.2f})"
+                  for p, d in zip(names, moves)))
 
 
 FIGURES = (figure_standard_views, figure_parallel_projections, figure_vanishing_points,

@@ -427,17 +427,29 @@ class Camera:
         ``width`` and ``height``, the window widened to that device."""
         return _corners(self.matrix(width, height), self.projection)
 
-    def stereo_pair(self, separation):
+    def stereo(self, eye_separation):
         """Left-eye and right-eye cameras for a stereoscopic view (Hearn & Baker,
-        section 9-1): the eye moved by -``separation`` / 2 and +``separation`` / 2
-        along the camera's x_v axis, both looking at the target (the two views are
-        computed "from viewing directions along the lines from each eye position to
-        the center of the scene").  Needs a camera made with eye and target."""
-        s = v.number("separation", separation)
+        section 9-1): the eye moved by -``eye_separation`` / 2 and +``eye_separation``
+        / 2 along the camera's x_v (u) axis, both looking at the target (the two views
+        are computed "from viewing directions along the lines from each eye position
+        to the center of the scene"); up vector, projection and viewport are the mono
+        camera's.  Needs a camera made with eye and target.  Show the pair with
+        :func:`scanline.draw3d.anaglyph` or :func:`scanline.draw3d.side_by_side`.
+
+        >>> import scanline as sl
+        >>> left, right = sl.Camera(eye=(0, 0, 5), target=(0, 0, 0)).stereo(0.5)
+        >>> [round(c, 6) for c in left.eye], [round(c, 6) for c in right.eye]
+        ([-0.25, 0.0, 5.0], [0.25, 0.0, 5.0])
+        """
+        s = v.number("eye_separation", eye_separation)
+        if not 0 <= s < 1e150:
+            raise ArgumentValueError(
+                f"eye_separation={s} must be >= 0 (the distance between the eyes, in world "
+                "units; about a thirtieth of the distance to the target looks natural)")
         if self.target is None or self._eye is None:
             raise ArgumentValueError(
-                "stereo_pair needs a camera made with eye= and target= (the eyes turn "
-                "toward the target)")
+                "stereo needs a camera made with eye= and target= (the eyes turn toward "
+                "the target)")
         eye = np.array(self._eye)
         u = t3.inverse(self.view_matrix)[:3, 0]
         return tuple(Camera(eye=eye + sign * s / 2 * u, target=self.target, up=self.up,

@@ -12,8 +12,10 @@ it lets through (0 behind an opaque surface, the product of the k_t of transpare
 ones); an area light's term is its center's, times the mean of jittered shadow rays
 to each cell of its grid (Cook, Porter and Carpenter 1984).  Then
 
-    I = (1 - k_t) I_local + (k_r + k_t F) I_reflected + k_t (1 - F) I_transmitted
+    I = (1 - k_t) I_local + (k_r S_s + k_t F) I_reflected + k_t (1 - F) I_transmitted
 
+(per color component: the reflected term of the recursive model has the specular
+coefficient, here k_r, and is tinted by the specular color S_s, as a highlight is),
 with F the Fresnel reflectance of the interface (the full Fresnel equations for
 unpolarized light, :func:`fresnel`), the reflected ray in the mirror direction R =
 d + 2 (N . -d) N, spread over a cone of half-angle ``roughness`` for glossy
@@ -22,7 +24,12 @@ T = (eta_i / eta_t) d + ((eta_i / eta_t) cos i - cos t) N, cos t = sqrt(1 - (eta
 eta_t)^2 (1 - cos^2 i)) (Hearn & Baker eq. 14-33); when the root is imaginary the
 light is totally reflected (F = 1).  A ray entering a surface against its outward
 normal goes from air (1) into the material's ``refractive_index``; one leaving it,
-back.  Rays that leave the scene bring the background's intensity.  The tree stops
+back.  A ray that leaves the scene brings the color of the environment map
+(:mod:`scanline._kernels.environment`) of the surface it left in its direction, or
+the background's intensity.  Every hit, after the first bounce too, takes its
+material's texture as its color S_d and its bump map's perturbed normal (Blinn 1978,
+as :mod:`scanline.shading.surface` computes them; the primary hit's bumped normal
+also turns its reflected and transmitted rays).  The tree stops
 at ``max_depth`` levels (the primary ray is level 1), where a ray's weight falls
 below :data:`MIN_WEIGHT`, or after :data:`MAX_RAYS` rays of one sample.
 
@@ -39,6 +46,8 @@ import numpy as np
 from ._jit import helper, kernel
 from .shade import encode
 from .bvh import STACK, moller_trumbore, nearest, transmittance
+from .environment import environment_color
+from .texture import sample_run
 
 #: Weight below which a ray is not traced (a quarter of one step of 255).
 MIN_WEIGHT = 1.0 / 1024.0
@@ -48,8 +57,18 @@ MAX_RAYS = 1024
 
 #: Columns of a material row: ka, kd, ks, n_s, S_s (3), the least highlight base,
 #: S_d (3) (:func:`scanline.shading.buffer.material_rows`), then k_r, k_t, eta,
-#: roughness.
-KR, KT, ETA, ROUGH = 11, 12, 13, 14
+#: roughness, bump scale.
+KR, KT, ETA, ROUGH, BUMP_SCALE = 11, 12, 13, 14, 15
+
+#: Rows of a material's maps (``maps`` (M, 3, 5)): its texture, bump map and
+#: environment map, each as the row of ``levels`` where it begins (-1: none), its
+#: levels (a face's, for a cube map), filter, wrap and kind of environment map.
+TEXTURE, BUMP, ENVIRONMENT = 0, 1, 2
+
+#: Columns of the ray stack: origin (3), direction (3), weight per color component
+#: (3), depth, parent, kind, material of the surface the ray leaves (-1: none).
+WEIGHT, DEPTH, PARENT, KIND, LEFT = 6, 9, 10, 11, 12
+RAY_COLUMNS = 13
 
 #: Columns of a light row: the shading's 16 (:func:`scanline.shading.buffer.source_rows`),
 #: then an area light's corner, edges and samples per side (0: not an area light).
@@ -59,9 +78,9 @@ CORNER, EDGE_U, EDGE_V, GRID = 16, 19, 22, 25
 PRIMARY, REFLECTED, REFRACTED, SHADOW = 0, 1, 2, 3
 
 #: Columns of a log row: ray, parent, kind, depth, origin (3), direction (3), t of its
-#: hit, facet hit (-1: none), weight, local intensity (3), its contribution (3),
-#: light (shadow rays), transmittance (shadow rays).
-LOG_COLUMNS = 21
+#: hit, facet hit (-1: none), weight (red), local intensity (3), its contribution (3),
+#: light (shadow rays), transmittance (shadow rays), weight (green, blue).
+LOG_COLUMNS = 23
 
 #: Samples per chunk of :func:`trace_all` (chunks are dealt out to the threads).
 CHUNK = 64
@@ -127,10 +146,12 @@ def _log(log, count, ray, parent, kind, depth, o, d, t, facet, weight, local, li
         log[k, 4 + c] = o[c]
         log[k, 7 + c] = d[c]
         log[k, 13 + c] = local[c]
-        log[k, 16 + c] = weight * local[c]
+        log[k, 16 + c] = weight[c] * local[c]
     log[k, 10] = t
     log[k, 11] = facet
-    log[k, 12] = weight
+    log[k, 12] = weight[0]
+    log[k, 21] = weight[1]
+    log[k, 22] = weight[2]
     log[k, 19] = light
     log[k, 20] = through
     count[0] = k + 1
@@ -238,7 +259,7 @@ def _lit(p, n, ng, v, sd, m, mats, lights, ambient, blinn, eps, bounds, links, t
                                                   links, table, clear, stack, state)
         if log.shape[0] > 0:
             _log(log, count, np.int64(-1), ray, np.int64(SHADOW), depth + 1, o, d3, far,
-                 np.int64(-1), 0.0, zero, s, through)
+                 np.int64(-1), zero, zero, s, through)
         if through <= 0.0:
             continue
         if blinn:
@@ -285,27 +306,91 @@ def _cone(r, angle, state):
 
 
 @helper
-def _push(rays, top, p, offset, ng, weight, depth, parent, kind):
+def _push(rays, top, p, offset, ng, weight, factor, depth, parent, kind, left):
     """Row ``top`` of the ray stack (its direction already written): the origin ``p``
     moved ``offset`` along the normal ``ng`` (off the surface, to the side the ray
-    goes), the weight, depth, parent ray and kind."""
+    goes), the weights ``weight`` (3,) times ``factor`` (3,), depth, parent ray, kind
+    and the material ``left``."""
     for c in range(3):
         rays[top, c] = p[c] + offset * ng[c]
-    rays[top, 6] = weight
-    rays[top, 7] = depth
-    rays[top, 8] = parent
-    rays[top, 9] = kind
+        rays[top, WEIGHT + c] = weight[c] * factor[c]
+    rays[top, DEPTH] = depth
+    rays[top, PARENT] = parent
+    rays[top, KIND] = kind
+    rays[top, LEFT] = left
+
+
+@helper
+def _sampled(texels, levels, at, s, items):
+    """``items`` planar items of ``s`` (u, v, then four derivatives, ``items`` apart)
+    sampled by the texture described by ``at`` (a row of ``maps``): each item's color
+    replaces its first three derivatives (:func:`scanline._kernels.texture.sample_run`)."""
+    sample_run(texels, levels, at[0], at[1], at[2], at[3], s, np.int64(0), items, np.int64(0),
+               items)
+
+
+@helper
+def _detail(f, m, a, b, secondary, uvs, tangents, maps, mats, texels, levels, sd, n, s):
+    """The texture and bump maps of material ``m`` at the point of facet ``f`` with
+    barycentric coordinates (1 - a - b, a, b): a secondary hit's color ``sd`` (3,)
+    scaled by the texel (Hearn & Baker 14-9), the unit normal ``n`` (3,) perturbed by
+    Blinn's bump mapping, N' = (N . n) n + B_u (n x P_v) - B_v (n x P_u), N = P_u x
+    P_v, turned to n's side (``tangents[f]``: P_u, P_v; B_u, B_v central differences
+    one texel apart); ``s``: scratch of 24 reals."""
+    if f >= uvs.shape[0] or f >= tangents.shape[0]:
+        return
+    a0 = 1.0 - a - b
+    tu = a0 * uvs[f, 0, 0] + a * uvs[f, 1, 0] + b * uvs[f, 2, 0]
+    tv = a0 * uvs[f, 0, 1] + a * uvs[f, 1, 1] + b * uvs[f, 2, 1]
+    if secondary and maps[m, TEXTURE, 0] >= 0:
+        s[0] = tu
+        s[1] = tv
+        for k in range(2, 6):
+            s[k] = 0.0
+        _sampled(texels, levels, maps[m, TEXTURE], s, np.int64(1))
+        for c in range(3):
+            sd[c] *= s[2 + c]
+    first = maps[m, BUMP, 0]
+    if first < 0:
+        return
+    du = 1.0 / levels[first, 1]
+    dv = 1.0 / levels[first, 2]
+    for k in range(4):
+        s[k] = tu + (du if k == 0 else -du if k == 1 else 0.0)
+        s[4 + k] = tv + (dv if k == 2 else -dv if k == 3 else 0.0)
+    for k in range(8, 24):
+        s[k] = 0.0
+    _sampled(texels, levels, maps[m, BUMP], s, np.int64(4))
+    scale = mats[m, BUMP_SCALE]
+    bu = (s[8] - s[9]) * scale / (2.0 * du)
+    bv = (s[10] - s[11]) * scale / (2.0 * dv)
+    px, py, pz = tangents[f, 0], tangents[f, 1], tangents[f, 2]
+    qx, qy, qz = tangents[f, 3], tangents[f, 4], tangents[f, 5]
+    side = ((py * qz - pz * qy) * n[0] + (pz * qx - px * qz) * n[1]
+            + (px * qy - py * qx) * n[2])
+    ox = side * n[0] + bu * (n[1] * qz - n[2] * qy) - bv * (n[1] * pz - n[2] * py)
+    oy = side * n[1] + bu * (n[2] * qx - n[0] * qz) - bv * (n[2] * px - n[0] * pz)
+    oz = side * n[2] + bu * (n[0] * qy - n[1] * qx) - bv * (n[0] * py - n[1] * px)
+    length = math.sqrt(ox * ox + oy * oy + oz * oz)
+    if not length > 0:
+        return
+    r = (-1.0 if side < 0 else 1.0) / length
+    n[0] = ox * r
+    n[1] = oy * r
+    n[2] = oz * r
 
 
 @helper
 def trace_sample(origin, direction, first, given, sample, seed, max_depth, eps, blinn, bounds,
                  links, table, prim_facet, facet_row, clear, world_n, vertex_normals, colors,
-                 facet_mat, front, mats, lights, ambient, background, rays, stack, out, log,
-                 count):
+                 facet_mat, front, mats, lights, ambient, background, uvs, tangents, maps,
+                 texels, levels, rays, stack, out, log, count):
     """Walk the ray tree of one sample whose primary ray (``origin``, ``direction``:
     unit) meets facet ``first`` (-1: nothing; then ``out`` is NaN), where the shading
-    stage found the local intensity ``given`` (3,): the intensity into ``out`` (3,).  ``rays``: a (MAX_RAYS + 1, 10) stack of rays (origin, direction,
-    weight, depth, parent, kind)."""
+    stage found the local intensity ``given`` (3,): the intensity into ``out`` (3,).
+    ``rays``: a (MAX_RAYS + 1, :data:`RAY_COLUMNS`) stack of rays; ``uvs`` (G, 3, 2)
+    and ``tangents`` (G, 6) the facets' texture coordinates and P_u, P_v (empty: no
+    maps), ``maps`` (M, 3, 5) each material's maps in ``texels`` and ``levels``."""
     if first < 0:
         for c in range(3):
             out[c] = math.nan
@@ -317,10 +402,11 @@ def trace_sample(origin, direction, first, given, sample, seed, max_depth, eps, 
         out[c] = 0.0
         rays[0, c] = origin[c]
         rays[0, 3 + c] = direction[c]
-    rays[0, 6] = 1.0
-    rays[0, 7] = 1.0
-    rays[0, 8] = -1.0
-    rays[0, 9] = PRIMARY
+        rays[0, WEIGHT + c] = 1.0
+    rays[0, DEPTH] = 1.0
+    rays[0, PARENT] = -1.0
+    rays[0, KIND] = PRIMARY
+    rays[0, LEFT] = -1.0
     top = 1
     made = 1
     ray = -1
@@ -332,16 +418,20 @@ def trace_sample(origin, direction, first, given, sample, seed, max_depth, eps, 
     local = np.empty(3)
     o = np.empty(3)
     d = np.empty(3)
+    weight = np.empty(3)
+    tint = np.empty(3)
+    scratch = np.empty(24)
     while top > 0:
         top -= 1
         ray += 1
         for c in range(3):
             o[c] = rays[top, c]
             d[c] = rays[top, 3 + c]
-        weight = rays[top, 6]
-        depth = int(rays[top, 7])
-        parent = int(rays[top, 8])
-        kind = int(rays[top, 9])
+            weight[c] = rays[top, WEIGHT + c]
+        depth = int(rays[top, DEPTH])
+        parent = int(rays[top, PARENT])
+        kind = int(rays[top, KIND])
+        left = int(rays[top, LEFT])
         if parent < 0:
             row = facet_row[first]
             t, u, w = moller_trumbore(o[0], o[1], o[2], d[0], d[1], d[2], table, row)
@@ -349,11 +439,20 @@ def trace_sample(origin, direction, first, given, sample, seed, max_depth, eps, 
             t, row, u, w = nearest(o[0], o[1], o[2], d[0], d[1], d[2], 0.0, math.inf, bounds,
                                    links, table, stack)
         if row < 0:
+            # leaving the scene: the environment map of the surface left, if any
+            if 0 <= left < maps.shape[0] and maps[left, ENVIRONMENT, 0] >= 0:
+                at = maps[left, ENVIRONMENT]
+                local[0], local[1], local[2] = environment_color(
+                    texels, levels, at[0], at[1], at[2], at[3], at[4], d[0], d[1], d[2],
+                    scratch)
+            else:
+                for c in range(3):
+                    local[c] = background[c]
             for c in range(3):
-                out[c] += weight * background[c]
+                out[c] += weight[c] * local[c]
             if log.shape[0] > 0:
                 _log(log, count, ray, parent, kind, depth, o, d, math.inf, np.int64(-1), weight,
-                     background, np.int64(-1), 0.0)
+                     local, np.int64(-1), 0.0)
             continue
         f = prim_facet[row]
         m = facet_mat[f]
@@ -373,6 +472,8 @@ def trace_sample(origin, direction, first, given, sample, seed, max_depth, eps, 
             n[c] *= r
             if not entering:
                 ng[c] = -ng[c]
+        _detail(f, m, u, w, parent >= 0, uvs, tangents, maps, mats, texels, levels, sd, n,
+                scratch)
         if parent < 0:
             for c in range(3):
                 local[c] = given[c]
@@ -382,11 +483,12 @@ def trace_sample(origin, direction, first, given, sample, seed, max_depth, eps, 
         kt = mats[m, KT]
         kr = mats[m, KR]
         for c in range(3):
-            out[c] += weight * (1.0 - kt) * local[c]
+            out[c] += weight[c] * (1.0 - kt) * local[c]
         if log.shape[0] > 0:
             for c in range(3):
                 local[c] *= 1.0 - kt
-            _log(log, count, ray, parent, kind, depth, o, d, t, f, weight, local, np.int64(-1), 0.0)
+            _log(log, count, ray, parent, kind, depth, o, d, t, f, weight, local, np.int64(-1),
+                 0.0)
         if depth >= max_depth or (kr <= 0.0 and kt <= 0.0):
             continue
         # the normal for the new directions: the shading normal unless it faces away
@@ -400,21 +502,26 @@ def trace_sample(origin, direction, first, given, sample, seed, max_depth, eps, 
         cos_t = -1.0
         if kt > 0.0:
             big_f, cos_t = fresnel(cos_i, 1.0 if entering else eta, eta if entering else 1.0)
-        wr = weight * (kr + kt * big_f)
-        wt = weight * kt * (1.0 - big_f)
-        if wt >= MIN_WEIGHT and cos_t >= 0.0 and made < MAX_RAYS and top < rays.shape[0]:
+        most = max(weight[0], weight[1], weight[2])
+        for c in range(3):
+            tint[c] = kt * (1.0 - big_f)
+        if most * tint[0] >= MIN_WEIGHT and cos_t >= 0.0 and made < MAX_RAYS \
+                and top < rays.shape[0]:
             bend(d, n, 1.0 / eta if entering else eta, cos_i, cos_t, rays[top, 3:6])
-            _push(rays, top, p, -eps, ng, wt, depth + 1, ray, REFRACTED)
+            _push(rays, top, p, -eps, ng, weight, tint, depth + 1, ray, np.int64(REFRACTED), m)
             top += 1
             made += 1
-        if wr >= MIN_WEIGHT and made < MAX_RAYS and top < rays.shape[0]:
+        for c in range(3):
+            tint[c] = kr * mats[m, 4 + c] + kt * big_f
+        if most * max(tint[0], tint[1], tint[2]) >= MIN_WEIGHT and made < MAX_RAYS \
+                and top < rays.shape[0]:
             mirror(d, n, cos_i, rays[top, 3:6])
             rough = mats[m, ROUGH]
             if rough > 0:
                 _cone(rays[top, 3:6], rough, state)
             if (rays[top, 3] * ng[0] + rays[top, 4] * ng[1] + rays[top, 5] * ng[2]) <= 0:
                 mirror(d, ng, -(d[0] * ng[0] + d[1] * ng[1] + d[2] * ng[2]), rays[top, 3:6])
-            _push(rays, top, p, eps, ng, wr, depth + 1, ray, REFLECTED)
+            _push(rays, top, p, eps, ng, weight, tint, depth + 1, ray, np.int64(REFLECTED), m)
             top += 1
             made += 1
 
@@ -422,8 +529,8 @@ def trace_sample(origin, direction, first, given, sample, seed, max_depth, eps, 
 @kernel
 def trace_all(start, step, origins, directions, firsts, givens, samples, seed, max_depth, eps,
               blinn, bounds, links, table, prim_facet, facet_row, clear, world_n,
-              vertex_normals, colors, facet_mat, front, mats, lights, ambient, background, out,
-              log, count):
+              vertex_normals, colors, facet_mat, front, mats, lights, ambient, background, uvs,
+              tangents, maps, texels, levels, out, log, count):
     """:func:`trace_sample` for every sample (rows of ``origins``, ``directions``,
     ``firsts``, ``givens`` and ``samples``, the samples' numbers for the random numbers) into
     ``out`` (P, 3): the chunks of :data:`CHUNK` samples numbered ``start``, ``start +
@@ -432,13 +539,14 @@ def trace_all(start, step, origins, directions, firsts, givens, samples, seed, m
     :data:`LOG_COLUMNS`) receives the rays when it has rows (one sample at a time)."""
     total = origins.shape[0]
     stack = np.empty(STACK, np.int64)
-    rays = np.empty((MAX_RAYS + 1, 10))
+    rays = np.empty((MAX_RAYS + 1, RAY_COLUMNS))
     for chunk in range(start, (total + CHUNK - 1) // CHUNK, max(step, 1)):
         for i in range(chunk * CHUNK, min(total, (chunk + 1) * CHUNK)):
             trace_sample(origins[i], directions[i], firsts[i], givens[i], samples[i], seed,
                          max_depth, eps, blinn, bounds, links, table, prim_facet, facet_row,
                          clear, world_n, vertex_normals, colors, facet_mat, front, mats,
-                         lights, ambient, background, rays, stack, out[i], log, count)
+                         lights, ambient, background, uvs, tangents, maps, texels, levels,
+                         rays, stack, out[i], log, count)
 
 
 @kernel

@@ -61,12 +61,16 @@ class Material:
     bump_scale : float
         The height of a bump-map value of 1, in the surface's units per unit of
         texture coordinate.
-    environment : scanline.Texture or image, optional
-        A latitude-longitude map of the surroundings, looked up in the direction of
-        the reflected view ray (Hearn & Baker 14-8, environment mapping).
+    environment : scanline.texture.CubeMap, scanline.Texture or image, optional
+        The surroundings as a cube map, or a latitude-longitude map (a Texture or
+        image), looked up in the direction of the reflected view ray (Hearn & Baker
+        14-8, environment mapping); the ray tracer looks it up for every ray that
+        leaves the scene from this surface.
     reflectivity : float in 0..1
         k_r: the fraction of the environment (or, when ray tracing, of the light
-        along the reflected ray) the surface reflects, added to its intensity.
+        along the reflected ray) the surface reflects, added to its intensity,
+        tinted by the specular color: k_r S_s I_reflected (the reflected term of
+        Whitted's model, Hearn & Baker 14-6, whose coefficient is the specular one).
     refractive_index : float > 0
         eta, the index of refraction of the material behind the surface (1: no
         bending; glass about 1.5): the ray tracer bends transmitted rays by Snell's law
@@ -99,10 +103,12 @@ class Material:
                             ("reflectivity", reflectivity)):
             object.__setattr__(self, name, _coefficient(name, value))
         if texture is not None or bump is not None or environment is not None:
+            from ..texture.cubemap import environment_of
             from ..texture.texture import texture_of
 
-            texture, bump, environment = (texture_of(name, value) for name, value in (
-                ("texture", texture), ("bump", bump), ("environment", environment)))
+            texture, bump = (texture_of(name, value) for name, value in (
+                ("texture", texture), ("bump", bump)))
+            environment = environment_of("environment", environment)
         object.__setattr__(self, "texture", texture)
         object.__setattr__(self, "bump", bump)
         object.__setattr__(self, "environment", environment)

@@ -47,12 +47,54 @@ class Traced:
 
 def material_table(materials, gamma):
     """The shading's material rows (:func:`scanline.shading.buffer.material_rows`)
-    with each material's k_r, k_t, refractive index and roughness, (M, 15)."""
+    with each material's k_r, k_t, refractive index, roughness and bump scale, (M,
+    16)."""
     from ..shading.buffer import material_rows
 
-    extra = np.array([[m.reflectivity, m.transparency, m.refractive_index, m.roughness]
-                      for m in materials], np.float64).reshape(-1, 4)
+    extra = np.array([[m.reflectivity, m.transparency, m.refractive_index, m.roughness,
+                       m.bump_scale] for m in materials], np.float64).reshape(-1, 5)
     return np.ascontiguousarray(np.hstack([material_rows(materials, gamma), extra]))
+
+
+def map_tables(scene, gamma):
+    """The materials' texture, bump and environment maps as the tracer kernel takes
+    them: ``(uvs (G, 3, 2), tangents (G, 6), maps (M, 3, 5), texels, levels)``
+    (:data:`scanline._kernels.raytrace.TEXTURE` ...: each map's first row of
+    ``levels``, -1 for none, its levels a face, filter, wrap and kind); the texture
+    decoded with ``gamma``, the bump map's heights as stored.  Empty facet tables
+    when no material has a texture or bump map."""
+    from ..shading.surface import facet_tangents
+    from ..texture.cubemap import environment_arrays
+    from ..texture.mipmap import joined
+    from ..texture.texture import FILTER_CODES, WRAP_CODES
+
+    maps = np.full((len(scene.materials), 3, 5), -1, np.int64)
+    parts, where = [], []
+    for i, m in enumerate(scene.materials):
+        for j, (texture, g) in enumerate(((m.texture, gamma), (m.bump, 1.0))):
+            if texture is not None:
+                texels, table = texture.kernel_arrays(g)
+                parts.append((texels, table))
+                where.append((i, j))
+                maps[i, j, 1:] = (len(table), FILTER_CODES[texture.filter],
+                                  WRAP_CODES[texture.wrap], 0)
+        if m.environment is not None:
+            texels, table, count, filt, wrap, kind = environment_arrays(m.environment, gamma)
+            parts.append((texels, table))
+            where.append((i, 2))
+            maps[i, 2, 1:] = count, filt, wrap, kind
+    texels, levels, firsts = joined(parts)
+    for (i, j), first in zip(where, firsts):
+        maps[i, j, 0] = first
+    if scene.uv is None or (maps[:, :2, 0] < 0).all():
+        uvs, tangents = np.zeros((0, 3, 2)), np.zeros((0, 6))
+    else:
+        facets = np.arange(len(scene.world))
+        with np.errstate(invalid="ignore"):      # NaN uv: meshes without maps
+            tangents = np.hstack(facet_tangents(scene, facets))
+        uvs = scene.uv
+    return (v.kernel_array(uvs), v.kernel_array(tangents), maps,
+            v.kernel_array(texels, np.float32), v.kernel_array(levels, np.int64))
 
 
 def light_table(lights):
@@ -107,8 +149,8 @@ def traced(scene, shading, background, max_depth, seed):
         v.kernel_array(scene.vertex_normals), v.kernel_array(decoded(scene.vertex_colors,
                                                                      shading.gamma)),
         v.kernel_array(scene.facet_mesh, np.int64), v.kernel_array(scene.front, np.bool_),
-        mats, lights, v.kernel_array(ambient), v.kernel_array(background)), lights, int(seed),
-        eps, clear)
+        mats, lights, v.kernel_array(ambient), v.kernel_array(background),
+        *map_tables(scene, shading.gamma)), lights, int(seed), eps, clear)
 
 
 def primary_rays(scene, xs, ys):
@@ -189,13 +231,13 @@ def primary_light(scene, layer, ys, xs, shading, prepared, background, twin=Fals
     of ``layer`` (the ray caster's): the shading stage's own
     (:func:`scanline.shading.compose`: any shading model, textures, depth cueing),
     with :func:`shadow_test` as its shadow test; environment maps are left out (the
-    reflected rays see the scene itself)."""
+    reflected rays see the scene, and the map where they leave it)."""
     from dataclasses import replace
 
     from ..shading.compose import _points
 
     if any(getattr(m, "environment", None) is not None for m in scene.materials):
-        # the reflected rays see the scene itself: no environment map besides them
+        # the reflected rays see the scene, and the map where they leave it
         scene = replace(scene, materials=tuple(_without_environment(m)
                                                for m in scene.materials))
     options = replace(shading, shadows=shadow_test(prepared, twin))

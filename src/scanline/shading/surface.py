@@ -21,9 +21,10 @@ visible-surface method found.
   planar triangle, solved from its vertices and texture coordinates), B_u, B_v the
   height map's central differences one texel apart.
 * **Environment mapping** (14-8): the view direction V reflected about the normal, R
-  = 2 (N . V) N - V, looks up a latitude-longitude map of the surroundings: u = 1/2
-  + atan2(R_x, -R_z) / (2 pi), v = 1/2 + asin(R_y) / pi (world y up; u = 1/2 looks
-  along -z); the surface adds k_r times its color.
+  = 2 (N . V) N - V, looks up a cube map or a latitude-longitude map of the
+  surroundings (:mod:`scanline._kernels.environment`); the surface adds k_r S_s
+  times its color (the reflected term tinted by the specular color, as the ray
+  tracer's).
 
 Bump and environment maps need a normal at each pixel: Phong shading.
 """
@@ -156,14 +157,6 @@ def bumped(scene, facets, normals, uv):
     return out
 
 
-def latitude_longitude(directions):
-    """The (u, v) (M, 2) of unit ``directions`` (M, 3) in a latitude-longitude map: u =
-    1/2 + atan2(x, -z) / (2 pi), v = 1/2 + asin(y) / pi."""
-    d = directions
-    return np.stack([0.5 + np.arctan2(d[:, 0], -d[:, 2]) / (2 * np.pi),
-                     0.5 + np.arcsin(np.clip(d[:, 1], -1.0, 1.0)) / np.pi], axis=1)
-
-
 def reflected_views(points, normals, eye):
     """R = 2 (N . V) N - V (M, 3) for unit normals and V the unit direction to the
     viewer (a point, or a viewer at infinity)."""
@@ -179,8 +172,11 @@ def reflected_views(points, normals, eye):
 
 
 def environment_light(scene, facets, points, normals, gamma):
-    """k_r env(R) (M, 3, linear) at the points: each material's environment map in the
-    reflected view direction, 0 where it has none."""
+    """k_r S_s env(R) (M, 3, linear) at the points: each material's environment map
+    (cube or latitude-longitude) in the reflected view direction, tinted by its
+    specular color, 0 where it has none."""
+    from ..texture.cubemap import environment_colors
+
     out = np.zeros((len(facets), 3))
     mesh = scene.facet_mesh[facets]
     for i, m in enumerate(scene.materials):
@@ -189,6 +185,6 @@ def environment_light(scene, facets, points, normals, gamma):
         sel = np.flatnonzero(mesh == i)
         if len(sel):
             r = reflected_views(points[sel], normals[sel], scene.eye)
-            out[sel] = m.reflectivity * _sample(m.environment, latitude_longitude(r),
-                                                np.zeros((len(sel), 4)), gamma)
+            out[sel] = (m.reflectivity * np.asarray(m.specular_color)
+                        * environment_colors(m.environment, r, gamma))
     return out

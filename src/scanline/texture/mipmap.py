@@ -47,3 +47,20 @@ def packed(levels):
     for (first, w, h), lv in zip(table, levels):
         texels[first:first + w * h] = lv[::-1].reshape(-1, 3)
     return texels.reshape(-1), table
+
+
+def joined(parts):
+    """Packed textures ``parts`` (``(texels, table)`` pairs of :func:`packed`) as one
+    pair, each table's first texels moved past the texels before it: ``(texels,
+    table, firsts)`` with ``firsts`` the row of ``table`` where each part begins."""
+    tables, firsts, at, row = [], [], 0, 0
+    for texels, table in parts:
+        moved = table.copy()
+        moved[:, 0] += at
+        tables.append(moved)
+        firsts.append(row)
+        at += len(texels) // 3
+        row += len(table)
+    texels = np.concatenate([p[0] for p in parts]) if parts else np.zeros(0, np.float32)
+    table = np.concatenate(tables) if tables else np.zeros((0, 3), np.int64)
+    return np.ascontiguousarray(texels, np.float32), np.ascontiguousarray(table), firsts

@@ -50,9 +50,10 @@ def ray_tracing(x=20, y=11, meshes=None, materials=None, lights=None, camera=Non
     shadow), ``depth`` (the primary ray is 1), ``t`` (the distance to its nearest
     hit; a shadow ray's to its light), ``face`` (hit; -1: none, the ray brings the
     background), ``light`` and ``through`` (a shadow ray's light and the fraction
-    that reaches the point), ``weight`` (the product of the k_r + k_t F and k_t (1 -
-    F) factors down the tree), ``I_r``, ``I_g``, ``I_b`` (the ray's own intensity:
-    (1 - k_t) I_local, or the background) and ``sum_r``, ``sum_g``, ``sum_b``
+    that reaches the point), ``weight`` (the product of the k_r S_s + k_t F and k_t (1 -
+    F) factors down the tree; a list of three, red, green and blue, where a
+    specular color tints it), ``I_r``, ``I_g``, ``I_b`` (the ray's own intensity:
+    (1 - k_t) I_local, or the background or environment map) and ``sum_r``, ``sum_g``, ``sum_b``
     (the weighted intensities summed so far).  The notes list every intersection
     of the primary ray and the pixel's stored value.
 
@@ -136,8 +137,9 @@ def ray_tracing(x=20, y=11, meshes=None, materials=None, lights=None, camera=Non
         kind = KINDS[int(r[2])]
         shadow = kind == "shadow"
         facet = int(r[11])
+        weight = r[[12, 21, 22]]
         if not shadow:
-            total += r[12] * r[13:16]
+            total += r[16:19]
         rows.append({
             "ray": None if shadow else int(r[0]), "parent": None if r[1] < 0 else int(r[1]),
             "kind": kind, "depth": int(r[3]),
@@ -145,7 +147,8 @@ def ray_tracing(x=20, y=11, meshes=None, materials=None, lights=None, camera=Non
             "face": int(screen.facet_face[facet]) if facet >= 0 else -1,
             "light": int(r[19]) if shadow else None,
             "through": float(r[20]) if shadow else None,
-            "weight": None if shadow else float(r[12]),
+            "weight": None if shadow else float(weight[0]) if (weight == weight[0]).all()
+            else weight.tolist(),
             "I_r": None if shadow else float(r[13]), "I_g": None if shadow else float(r[14]),
             "I_b": None if shadow else float(r[15]),
             "sum_r": float(total[0]), "sum_g": float(total[1]), "sum_b": float(total[2])})

@@ -1,0 +1,191 @@
+"""Environment maps (Hearn & Baker, section 14-8): the surroundings of a scene as a
+cube map -- six square images on the faces of a cube around the viewer, looked up in
+a direction by its major axis (OpenGL's convention: The OpenGL Graphics System 4.6,
+section 8.13, "Cube Map Texture Selection", table 8.19) -- or as a
+latitude-longitude map (one :class:`~scanline.texture.Texture`).  Both serve as
+``Material(environment=...)``: the shading looks them up in the reflected view
+direction, the ray tracer in the direction of each ray that leaves the scene.
+"""
+
+import numpy as np
+
+from .. import _validate as v
+from ..errors import ArgumentTypeError, ArgumentValueError
+from .texture import Texture, _image_array
+
+#: The faces in OpenGL's order, and the order of ``CubeMap(faces)``.
+FACES = ("+x", "-x", "+y", "-y", "+z", "-z")
+
+#: Where each face sits in the horizontal cross layout (column, row of a 4 x 3 grid
+#: of faces, top row 0): +y above +z, -y below it, and -x, +z, +x, -z across the
+#: middle -- the arrangement in which OpenGL's faces meet edge to edge.
+CROSS = {"+x": (2, 1), "-x": (0, 1), "+y": (1, 0), "-y": (1, 2), "+z": (1, 1), "-z": (3, 1)}
+
+#: Per face, the direction (x, y, z) of the face point (s_c, t_c) (each -1..1, s_c to
+#: the right, t_c down the image): the inverse of OpenGL's table 8.19, as rows of
+#: the matrix taking (s_c, t_c, 1) to the direction.
+FACE_AXES = np.array([
+    [[0, 0, 1], [0, -1, 0], [-1, 0, 0]],     # +x: (1, -t_c, -s_c)
+    [[0, 0, -1], [0, -1, 0], [1, 0, 0]],     # -x: (-1, -t_c, s_c)
+    [[1, 0, 0], [0, 0, 1], [0, 1, 0]],       # +y: (s_c, 1, t_c)
+    [[1, 0, 0], [0, 0, -1], [0, -1, 0]],     # -y: (s_c, -1, -t_c)
+    [[1, 0, 0], [0, -1, 0], [0, 0, 1]],      # +z: (s_c, -t_c, 1)
+    [[-1, 0, 0], [0, -1, 0], [0, 0, -1]],    # -z: (-s_c, -t_c, -1)
+], np.float64)
+
+#: Filters of a cube map's faces (looked up at their finest level).
+CUBE_FILTERS = ("nearest", "bilinear")
+
+
+def _cross_faces(image):
+    """The six faces (+x, -x, +y, -y, +z, -z) cut out of a horizontal cross image."""
+    a = _image_array("faces", image)
+    h, w = a.shape[:2]
+    if w * 3 != h * 4:
+        raise ArgumentValueError(
+            f"faces: a single image must be a horizontal cross of 4 x 3 square faces (width "
+            f"4 n, height 3 n), got {w} x {h}; or give the six faces +x, -x, +y, -y, +z, -z")
+    n = h // 3
+    return [a[r * n:(r + 1) * n, c * n:(c + 1) * n] for c, r in (CROSS[f] for f in FACES)]
+
+
+class CubeMap:
+    """An environment map on the six faces of a cube (Hearn & Baker 14-8).
+
+    Parameters
+    ----------
+    faces : six images, or one image
+        The faces +x, -x, +y, -y, +z, -z in OpenGL's convention (each an (n, n) or (n,
+        n, 3|4) array of uint8 0..255 or reals 0..1, a Pillow image or a file, top
+        row first; all square and of one size), or one image holding them as a
+        horizontal cross (4 n x 3 n: +y above +z, -y below, -x, +z, +x, -z across).
+        Face (s_c, t_c) coordinates follow OpenGL's table 8.19: on +z, s_c = x to the
+        right and t_c = -y down the image.
+    filter : {"nearest", "bilinear"}
+        Texel lookup in a face (at its finest level); bilinear clamps at the face's
+        edges.
+
+    Examples
+    --------
+    >>> import numpy as np, scanline as sl
+    >>> faces = [np.full((2, 2, 3), 40 * k, np.uint8) for k in range(6)]
+    >>> cube = sl.texture.CubeMap(faces, filter="nearest")
+    >>> (cube.sample([[0, 0, -1], [0, 2, 0]]) * 255).round().tolist()
+    [[200.0, 200.0, 200.0], [80.0, 80.0, 80.0]]
+    """
+
+    def __init__(self, faces, filter="bilinear"):
+        self.filter = v.choice("filter", filter, CUBE_FILTERS)
+        if isinstance(faces, (list, tuple)):
+            if len(faces) != 6:
+                raise ArgumentValueError(f"faces must be six images (+x, -x, +y, -y, +z, -z) "
+                                         f"or one cross image, got {len(faces)} items")
+            arrays = [_image_array(f"faces[{i}] ({FACES[i]})", f) for i, f in enumerate(faces)]
+        else:
+            arrays = _cross_faces(faces)
+        n = arrays[0].shape[0]
+        for name, a in zip(FACES, arrays):
+            if a.shape[0] != a.shape[1] or a.shape[0] != n:
+                raise ArgumentValueError(
+                    f"faces: every face must be square and of one size ({n} x {n} like "
+                    f"+x), face {name} is {a.shape[1]} x {a.shape[0]}")
+        self.faces = tuple(Texture(a, filter=self.filter, wrap="clamp") for a in arrays)
+        self._kept = {}
+
+    @property
+    def size(self):
+        """The side of each face, in texels."""
+        return self.faces[0].width
+
+    @classmethod
+    def from_latitude_longitude(cls, texture, size=256, filter="bilinear"):
+        """The cube map of ``size`` x ``size`` faces whose texels are the
+        latitude-longitude map ``texture`` (a :class:`Texture` or image) looked up in
+        the directions of their centers."""
+        from .texture import texture_of
+
+        n = v.positive_int("size", size)
+        if n > 4096:
+            raise ArgumentValueError(f"size must be 1..4096 texels a side, got {n}")
+        texture = texture_of("texture", texture)
+        if not isinstance(texture, Texture):
+            raise ArgumentTypeError(f"texture must be a latitude-longitude Texture or image, "
+                                    f"got {v._show(texture)}")
+        c = (np.arange(n) + 0.5) / n * 2 - 1
+        sc, tc = np.meshgrid(c, c)
+        st1 = np.stack([sc, tc, np.ones_like(sc)], axis=-1)               # (n, n, 3)
+        directions = np.einsum("ijk,fkl->fijl", st1, FACE_AXES).reshape(-1, 3)
+        colors = environment_colors(texture, directions).reshape(6, n, n, 3)
+        return cls(list(np.clip(colors, 0.0, 1.0)), filter=filter)
+
+    def kernel_arrays(self, gamma=1.0):
+        """``(texels, levels)`` of the six faces one after another (face k's level is
+        row k), the texels decoded with ``gamma``.  Kept per gamma."""
+        from .mipmap import joined
+
+        gamma = float(gamma)
+        if gamma not in self._kept:
+            if len(self._kept) >= 4:
+                self._kept.clear()
+            texels, table, _ = joined([f.kernel_arrays(gamma) for f in self.faces])
+            texels.flags.writeable = table.flags.writeable = False
+            self._kept[gamma] = texels, table
+        return self._kept[gamma]
+
+    def sample(self, directions, gamma=1.0):
+        """The map's colors (M, 3) in ``directions`` (M, 3), stored values 0..1
+        (``gamma``: decoded with it)."""
+        return environment_colors(self, checked_directions(directions), gamma)
+
+    def __repr__(self):
+        return f"<CubeMap 6 x {self.size}x{self.size} {self.filter}>"
+
+
+def checked_directions(directions, name="directions"):
+    """``directions`` as a (M, 3) float64 array of finite, non-zero vectors."""
+    d = v.real_array(name, directions, "(M, 3)")
+    d = d.reshape(1, 3) if d.shape == (3,) else d
+    if d.ndim != 2 or d.shape[1] != 3:
+        raise ArgumentValueError(f"{name} must have shape (M, 3), got {d.shape}")
+    if not np.isfinite(d).all():
+        raise ArgumentValueError(f"{name} must be finite vectors; it holds NaN or infinite "
+                                 f"values")
+    if len(d) and not (np.abs(d).max(axis=1) > 0).all():
+        raise ArgumentValueError(f"{name} must be non-zero vectors; it holds (0, 0, 0)")
+    return np.ascontiguousarray(d)
+
+
+def environment_of(name, value):
+    """``value`` as an environment map: a :class:`CubeMap` kept, anything else a
+    latitude-longitude :class:`Texture` (:func:`scanline.texture.texture.texture_of`)."""
+    from .texture import texture_of
+
+    return value if isinstance(value, CubeMap) else texture_of(name, value)
+
+
+def environment_arrays(environment, gamma):
+    """The kernel's description of ``environment`` (a :class:`CubeMap` or a
+    latitude-longitude :class:`Texture`): ``(texels, levels, count of levels a face,
+    filter code, wrap code, kind)`` (:mod:`scanline._kernels.environment`)."""
+    from .._kernels.environment import CUBE, LATITUDE_LONGITUDE
+    from .texture import FILTER_CODES, WRAP_CODES
+
+    texels, table = environment.kernel_arrays(gamma)
+    if isinstance(environment, CubeMap):
+        return (texels, table, len(table) // 6, FILTER_CODES[environment.filter],
+                WRAP_CODES["clamp"], CUBE)
+    return (texels, table, len(table), FILTER_CODES[environment.filter],
+            WRAP_CODES[environment.wrap], LATITUDE_LONGITUDE)
+
+
+def environment_colors(environment, directions, gamma=1.0):
+    """The colors (M, 3) of ``environment`` (cube or latitude-longitude) in
+    ``directions`` (M, 3) (any length, not checked), decoded with ``gamma``."""
+    from .._kernels import environment as k
+    from .._kernels._jit import call
+
+    texels, table, count, filter, wrap, kind = environment_arrays(environment, gamma)
+    d = np.ascontiguousarray(directions, np.float64)
+    out = np.empty((len(d), 3))
+    call(k.environment_points, 8 * len(d), texels, table, 0, count, filter, wrap, kind, d, out)
+    return out

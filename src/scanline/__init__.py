@@ -29,7 +29,7 @@ if TYPE_CHECKING:   # what the lazy attributes are, for type checkers and editor
     from . import shading as shading, rendering as rendering, screen as screen
     from . import budget as budget, mpl as mpl, texture as texture
     from . import raytrace as raytrace, radiosity as radiosity
-    from . import solids as solids, csg as csg
+    from . import solids as solids, csg as csg, octree as octree
     from .texture import Texture as Texture
     from .rendering import render as render
     from .depthbuffer import DepthBuffer as DepthBuffer
@@ -90,6 +90,7 @@ _LAZY = {
     "radiosity": ("scanline.radiosity", None),
     "solids": ("scanline.solids", None),
     "csg": ("scanline.csg", None),
+    "octree": ("scanline.octree", None),
     "screen": ("scanline.screen", None),
     "budget": ("scanline.budget", None),
     "mpl": ("scanline.mpl", None),

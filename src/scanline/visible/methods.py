@@ -22,6 +22,7 @@ from ..errors import ArgumentTypeError, ArgumentValueError
 from .abuffer import abuffer
 from .bsp import BSPTree, camera_eye
 from .depth_sort import painted_depth_sort
+from .octree import octree
 from .painter import KEYS, painter
 from .raycast import raycast
 from .scanline_method import scan_line
@@ -52,7 +53,8 @@ class MethodOptions:
         (:func:`scanline.visible.depth_sort.default_work`).
     max_depth : int, optional
         Ray tracing: the most levels of the ray tree, the primary ray's included,
-        1..64 (default 5; 1: primary rays and shadow rays only).
+        1..64 (default 5; 1: primary rays and shadow rays only).  Octree: the deepest
+        level of the scene's octree (default 10, :mod:`scanline.visible.octree`).
     seed : int, optional
         Ray tracing: the seed of the distributed rays' random numbers, 0..2**63 - 1
         (default 0; the image is the same for the same seed).
@@ -153,6 +155,7 @@ METHODS = {m.name: m for m in (
            traced=True),
     Method("scan-line", _image_space(scan_line), "image"),
     Method("area-subdivision", _image_space(area_subdivision), "image"),
+    Method("octree", octree, "image", ("max_depth",)),
     Method("depth-sort", _depth_sort, "object", ("split_cycles", "max_pieces", "max_work")),
     Method("bsp", _bsp, "object", ("max_pieces",)),
     Method("painter", _painter, "object", ("key",)),

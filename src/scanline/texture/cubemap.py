@@ -22,11 +22,11 @@ FACES = ("+x", "-x", "+y", "-y", "+z", "-z")
 CROSS = {"+x": (2, 1), "-x": (0, 1), "+y": (1, 0), "-y": (1, 2), "+z": (1, 1), "-z": (3, 1)}
 
 #: Per face, the direction (x, y, z) of the face point (s_c, t_c) (each -1..1, s_c to
-#: the right, t_c down the image): the inverse of OpenGL's table 8.19, as rows of
-#: the matrix taking (s_c, t_c, 1) to the direction.
+#: the right, t_c down the image): the inverse of OpenGL's table 8.19, as the rows
+#: that s_c, t_c and 1 multiply.
 FACE_AXES = np.array([
-    [[0, 0, 1], [0, -1, 0], [-1, 0, 0]],     # +x: (1, -t_c, -s_c)
-    [[0, 0, -1], [0, -1, 0], [1, 0, 0]],     # -x: (-1, -t_c, s_c)
+    [[0, 0, -1], [0, -1, 0], [1, 0, 0]],     # +x: (1, -t_c, -s_c)
+    [[0, 0, 1], [0, -1, 0], [-1, 0, 0]],     # -x: (-1, -t_c, s_c)
     [[1, 0, 0], [0, 0, 1], [0, 1, 0]],       # +y: (s_c, 1, t_c)
     [[1, 0, 0], [0, 0, -1], [0, -1, 0]],     # -y: (s_c, -1, -t_c)
     [[1, 0, 0], [0, -1, 0], [0, 0, 1]],      # +z: (s_c, -t_c, 1)

@@ -90,14 +90,14 @@ def combine(op, ts, cs, counts, left, right, out):
 
 
 @helper
-def evaluate(ox, oy, oz, dx, dy, dz, program, prims, bounds, links, table, tri_prim, ts, cs,
-             counts, hit_t, hit_row, stack, u):
+def evaluate(ox, oy, oz, dx, dy, dz, program, prims, bounds, links, table, verts, tri_prim, ts,
+             cs, counts, hit_t, hit_row, stack, u):
     """The inside intervals of the program's solid along the line o + t d: returns
     their count in list 0 of ``ts`` / ``cs`` (S = the program's stack depth + 1
     lists), or -1 when a list would pass its length (or the crossings their buffer)."""
     hits = 0
     if table.shape[0] > 0:
-        hits = crossings(ox, oy, oz, dx, dy, dz, bounds, links, table, hit_t, hit_row, stack)
+        hits = crossings(ox, oy, oz, dx, dy, dz, bounds, links, verts, hit_t, hit_row, stack)
         if hits < 0:
             return -1
     slots = ts.shape[0]
@@ -134,7 +134,7 @@ def evaluate(ox, oy, oz, dx, dy, dz, program, prims, bounds, links, table, tri_p
 
 
 @kernel
-def cast(start, step, origins, directions, tmin, program, prims, bounds, links, table,
+def cast(start, step, origins, directions, tmin, program, prims, bounds, links, table, verts,
          tri_prim, lists, length, t_out, code_out, normal_out, status):
     """The first surface of the solid each ray meets beyond ``tmin``: ``t_out`` (inf:
     none), ``code_out`` (-1: none) and the unit outward normal ``normal_out`` (R, 3);
@@ -159,8 +159,8 @@ def cast(start, step, origins, directions, tmin, program, prims, bounds, links, 
             dz = directions[r, 2]
             t_out[r] = math.inf
             code_out[r] = -1
-            m = evaluate(ox, oy, oz, dx, dy, dz, program, prims, bounds, links, table, tri_prim,
-                         ts, cs, counts, hit_t, hit_row, stack, u)
+            m = evaluate(ox, oy, oz, dx, dy, dz, program, prims, bounds, links, table, verts,
+                         tri_prim, ts, cs, counts, hit_t, hit_row, stack, u)
             if m < 0:
                 status[start % status.shape[0]] += 1
                 m = 0
@@ -184,7 +184,7 @@ def cast(start, step, origins, directions, tmin, program, prims, bounds, links, 
 
 
 @kernel
-def moments(start, step, origins, program, prims, bounds, links, table, tri_prim, lists,
+def moments(start, step, origins, program, prims, bounds, links, table, verts, tri_prim, lists,
             length, out, status):
     """Volume integrals along rays parallel to the z axis (Hearn & Baker 10-16, volume
     by ray casting): per ray from ``origins`` (R, 3) in direction +z, the sums over its
@@ -203,8 +203,8 @@ def moments(start, step, origins, program, prims, bounds, links, table, tri_prim
         for r in range(c * CHUNK, min(n, (c + 1) * CHUNK)):
             z0 = origins[r, 2]
             m = evaluate(origins[r, 0], origins[r, 1], z0, 0.0, 0.0, 1.0, program, prims,
-                         bounds, links, table, tri_prim, ts, cs, counts, hit_t, hit_row, stack,
-                         u)
+                         bounds, links, table, verts, tri_prim, ts, cs, counts, hit_t, hit_row,
+                         stack, u)
             if m < 0:
                 status[start % status.shape[0]] += 1
                 m = 0

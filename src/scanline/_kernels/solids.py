@@ -22,7 +22,8 @@ A < 0 the two outside them (a hyperboloid's or a cone's nappes); A = 0 a half li
 The slabs clip by the slab method (Kay & Kajiya 1986).  A closed mesh gives the
 intervals where the winding number of its crossings is positive (a crossing against
 the outward normal counts +1, along it -1), from every crossing of the whole line
-found through the bounding volume hierarchy of :mod:`scanline._kernels.bvh`.
+found through the bounding volume hierarchy of :mod:`scanline._kernels.bvh` by the
+watertight ray-triangle test of Woop, Benthin and Wald (2013).
 
 A surface label (a *code*) is ``2 * (8 * primitive + surface) + flip``: surface 0 the
 quadric, 1 .. 6 the slab faces (lo x, hi x, lo y, hi y, lo z, hi z); a mesh triangle is
@@ -36,7 +37,6 @@ import math
 import numpy as np
 
 from ._jit import helper
-from .bvh import inside, moller_trumbore
 
 #: Kinds of primitives.
 QUADRIC = 0
@@ -198,15 +198,79 @@ def _meets_line(bounds, node, ox, oy, oz, ix, iy, iz):
 
 
 @helper
-def crossings(ox, oy, oz, dx, dy, dz, bounds, links, table, hit_t, hit_row, stack):
-    """Every triangle the whole line o + t d crosses, sorted by t into ``hit_t`` /
-    ``hit_row``: returns the count, or -1 when there were more than the buffers hold."""
+def _owns(e, ex, ey):
+    """Whether a point whose edge function is ``e`` for the edge (ex, ey) (the
+    triangle turned counterclockwise) is inside on that edge's side: e > 0, or on the
+    edge (e = 0) of a top-left edge -- the rule of scan conversion, which gives a
+    point on an edge shared by two triangles to exactly one of them."""
+    return e > 0.0 or (e == 0.0 and (ey > 0.0 or (ey == 0.0 and ex < 0.0)))
+
+
+@helper
+def watertight(ox, oy, oz, kx, ky, kz, sx, sy, sz, verts, i):
+    """The line's crossing of triangle ``i`` of ``verts`` (T, 3, 3) by the watertight
+    test of Woop, Benthin and Wald (2013): the vertices relative to o, sheared so the
+    ray runs along the axis kz, and 2-D edge functions U, V, W that two triangles
+    sharing an edge compute from the same two vertices, so a line through an edge is
+    never lost between them; the top-left rule (:func:`_owns`) gives it to exactly one
+    of them, as the scan-line fill's pixels on a shared edge.  Returns t, or NaN for a
+    miss."""
+    a0 = verts[i, 0, kx] - (ox if kx == 0 else oy if kx == 1 else oz)
+    a1 = verts[i, 0, ky] - (ox if ky == 0 else oy if ky == 1 else oz)
+    a2 = verts[i, 0, kz] - (ox if kz == 0 else oy if kz == 1 else oz)
+    b0 = verts[i, 1, kx] - (ox if kx == 0 else oy if kx == 1 else oz)
+    b1 = verts[i, 1, ky] - (ox if ky == 0 else oy if ky == 1 else oz)
+    b2 = verts[i, 1, kz] - (ox if kz == 0 else oy if kz == 1 else oz)
+    c0 = verts[i, 2, kx] - (ox if kx == 0 else oy if kx == 1 else oz)
+    c1 = verts[i, 2, ky] - (ox if ky == 0 else oy if ky == 1 else oz)
+    c2 = verts[i, 2, kz] - (ox if kz == 0 else oy if kz == 1 else oz)
+    ax = a0 - sx * a2
+    ay = a1 - sy * a2
+    bx = b0 - sx * b2
+    by = b1 - sy * b2
+    cx = c0 - sx * c2
+    cy = c1 - sy * c2
+    u = cx * by - cy * bx
+    v = ax * cy - ay * cx
+    w = bx * ay - by * ax
+    det = u + v + w
+    if det == 0.0:
+        return math.nan
+    turn = 1.0 if det > 0.0 else -1.0
+    if not (_owns(turn * u, turn * (cx - bx), turn * (cy - by))
+            and _owns(turn * v, turn * (ax - cx), turn * (ay - cy))
+            and _owns(turn * w, turn * (bx - ax), turn * (by - ay))):
+        return math.nan
+    return (u * sz * a2 + v * sz * b2 + w * sz * c2) / det
+
+
+@helper
+def crossings(ox, oy, oz, dx, dy, dz, bounds, links, verts, hit_t, hit_row, stack):
+    """Every triangle (rows of ``verts``, in the tree's leaf order) the whole line o +
+    t d crosses (:func:`watertight`), sorted by t into ``hit_t`` / ``hit_row``:
+    returns the count, or -1 when there were more than the buffers hold."""
     n = 0
     if bounds.shape[0] == 0:
         return n
     ix = 1.0 / dx if dx != 0 else 1e300
     iy = 1.0 / dy if dy != 0 else 1e300
     iz = 1.0 / dz if dz != 0 else 1e300
+    # the ray's dominant axis kz, the other two in an order that keeps the winding
+    kz = 0
+    if abs(dy) > abs(dx) and abs(dy) >= abs(dz):
+        kz = 1
+    elif abs(dz) > abs(dx) and abs(dz) > abs(dy):
+        kz = 2
+    kx = (kz + 1) % 3
+    ky = (kx + 1) % 3
+    dkz = dx if kz == 0 else dy if kz == 1 else dz
+    if dkz < 0:
+        kx, ky = ky, kx
+    dkx = dx if kx == 0 else dy if kx == 1 else dz
+    dky = dx if ky == 0 else dy if ky == 1 else dz
+    sx = dkx / dkz
+    sy = dky / dkz
+    sz = 1.0 / dkz
     top = 1
     stack[0] = 0
     while top > 0:
@@ -218,8 +282,8 @@ def crossings(ox, oy, oz, dx, dy, dz, bounds, links, table, hit_t, hit_row, stac
         first = links[node, 0]
         if count > 0:
             for i in range(first, first + count):
-                t, a, b = moller_trumbore(ox, oy, oz, dx, dy, dz, table, i)
-                if not inside(t, a, b, -math.inf, math.inf):
+                t = watertight(ox, oy, oz, kx, ky, kz, sx, sy, sz, verts, i)
+                if not (t == t):
                     continue
                 if n >= hit_t.shape[0]:
                     return -1

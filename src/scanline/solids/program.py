@@ -80,12 +80,14 @@ class Program:
         self.prims = np.ascontiguousarray(rows)
         self.materials = [leaf.material for leaf in self.primitives]
         if triangles:
-            tree = BVH(np.concatenate(triangles))
+            every = np.concatenate(triangles)
+            tree = BVH(every)
             self.tree = (tree.bounds, tree.links, tree.table,
+                         np.ascontiguousarray(every[tree.order]),
                          np.ascontiguousarray(np.concatenate(owner)[tree.order]))
         else:
             self.tree = (np.zeros((0, 6)), np.zeros((0, 2), np.int64), np.zeros((0, 9)),
-                         np.zeros(0, np.int64))
+                         np.zeros((0, 3, 3)), np.zeros(0, np.int64))
 
     def _arguments(self):
         return (self.program, self.prims, *self.tree, self.lists, self.length)
@@ -121,8 +123,8 @@ class Program:
         c = np.asarray(code) >> 1
         k = c >> 3
         mesh = k >= len(self.primitives)
-        rows = np.clip(c - 8 * len(self.primitives), 0, max(len(self.tree[3]) - 1, 0))
-        owner = self.tree[3][rows] if len(self.tree[3]) else np.zeros_like(c)
+        rows = np.clip(c - 8 * len(self.primitives), 0, max(len(self.tree[4]) - 1, 0))
+        owner = self.tree[4][rows] if len(self.tree[4]) else np.zeros_like(c)
         return np.where(np.asarray(code) < 0, -1, np.where(mesh, owner, k))
 
     def inside(self, points):

@@ -9,7 +9,7 @@ import pytest
 import scanline as sl
 from scanline.errors import ArgumentTypeError, ArgumentValueError
 
-from .test_mapping import pixel_rays, render
+from .test_mapping import mirror_reflections, render
 
 CubeMap = sl.texture.CubeMap
 
@@ -137,22 +137,12 @@ def test_the_cross_layout_is_the_six_faces():
 
 
 def test_the_shading_reflects_a_cube_map_tinted_by_the_specular_color():
-    """A mirror on z = 0 facing -z seen from (0, 0, -1.5) (Phong shading): each pixel
-    is k_r S_s times the map of the smooth function in R = 2 (N . V) N - V."""
-    mirror = sl.mesh.Mesh([(-1, -1, 0), (-1, 1, 0), (1, 1, 0), (1, -1, 0)], [[0, 1, 2, 3]])
-    eye = np.array([0.0, 0.0, -1.5])
-    cam = sl.Camera(eye=tuple(eye), target=(0, 0, 0), up=(0, 1, 0))
+    """A mirror seen with Phong shading: each pixel is k_r S_s times the map of the
+    smooth function in the reflected view direction R = 2 (N . V) N - V."""
     tint = np.array([1.0, 0.5, 0.25])
     mat = sl.lighting.Material(ka=0, kd=0, ks=0, reflectivity=0.9, specular_color=tint,
                                environment=CubeMap(faces_of(smooth, 64)))
-    img = render(mat, "phong", mesh=mirror, camera=cam, size=(50, 50))
-    o, d = pixel_rays(cam, 50, 50)
-    p = o + (-o[..., 2] / d[..., 2])[..., None] * d
-    hit = (np.abs(p[..., 0]) < 0.97) & (np.abs(p[..., 1]) < 0.97)
-    view = eye - p
-    view /= np.linalg.norm(view, axis=-1, keepdims=True)
-    n = np.array([0.0, 0.0, -1.0])
-    r = 2 * (view @ n)[..., None] * n - view
+    img, hit, r = mirror_reflections(mat)
     assert hit.sum() > 400
     np.testing.assert_allclose(img[hit], 0.9 * tint * smooth(r[hit]), atol=0.02)
 

@@ -155,22 +155,27 @@ def test_bump_mapping_tilts_the_normal_by_the_ramps_slope():
     assert abs(normal @ to_light - to_light[2]) > 0.1
 
 
-def test_environment_map_is_looked_up_in_the_reflected_view_direction():
-    # a mirror on the plane z = 0 facing -z, seen from (0, 0, -1.5): at the point p, V =
-    # unit(eye - p), R = 2 (N . V) N - V, u = 1/2 + atan2(R_x, -R_z) / 2 pi, v = 1/2 +
-    # asin(R_y) / pi
+def mirror_reflections(material, size=50):
+    """A mirror on the plane z = 0 facing -z, seen from (0, 0, -1.5) with Phong
+    shading: the image, the pixels well inside the mirror and each pixel's reflected
+    view direction, at the point p, V = unit(eye - p), R = 2 (N . V) N - V."""
     mirror = sl.mesh.Mesh([(-1, -1, 0), (-1, 1, 0), (1, 1, 0), (1, -1, 0)], [[0, 1, 2, 3]])
     eye = np.array([0.0, 0.0, -1.5])
     cam = sl.Camera(eye=tuple(eye), target=(0, 0, 0), up=(0, 1, 0))
-    mat = sl.lighting.Material(ka=0, kd=0, ks=0, environment=ramp_texture(), reflectivity=0.9)
-    img = render(mat, "phong", mesh=mirror, camera=cam, size=(50, 50))
-    o, d = pixel_rays(cam, 50, 50)
+    img = render(material, "phong", mesh=mirror, camera=cam, size=(size, size))
+    o, d = pixel_rays(cam, size, size)
     p = o + (-o[..., 2] / d[..., 2])[..., None] * d
     hit = (np.abs(p[..., 0]) < 0.97) & (np.abs(p[..., 1]) < 0.97)
     view = eye - p
     view /= np.linalg.norm(view, axis=-1, keepdims=True)
     n = np.array([0.0, 0.0, -1.0])
-    r = 2 * (view @ n)[..., None] * n - view
+    return img, hit, 2 * (view @ n)[..., None] * n - view
+
+
+def test_environment_map_is_looked_up_in_the_reflected_view_direction():
+    # u = 1/2 + atan2(R_x, -R_z) / 2 pi, v = 1/2 + asin(R_y) / pi
+    mat = sl.lighting.Material(ka=0, kd=0, ks=0, environment=ramp_texture(), reflectivity=0.9)
+    img, hit, r = mirror_reflections(mat)
     u = 0.5 + np.arctan2(r[..., 0], -r[..., 2]) / (2 * np.pi)
     v = 0.5 + np.arcsin(r[..., 1]) / np.pi
     assert hit.sum() > 400 and np.ptp(u[hit]) > 0.1

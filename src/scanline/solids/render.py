@@ -74,7 +74,7 @@ def cast(scene, solids, depth):
     origins, directions = primary_rays(scene, xs, ys)
     program = Program(union(*solids))
     t, code, normal = program.cast(origins, directions)
-    points = origins + t[:, None] * directions
+    points = origins + np.where(code >= 0, t, 0.0)[:, None] * directions
     clip, scale, offset = scene.mapping
     with np.errstate(all="ignore"):
         hom = points @ clip[:, :3].T + clip[:, 3]

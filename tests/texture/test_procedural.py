@@ -89,6 +89,68 @@ def test_marble_and_wood_stay_within_their_colors():
     assert sl.texture.wood(64).image.std() > 0.03
 
 
+@pytest.mark.parametrize("period", [3, (2, 5, 7), (4, None, 1)])
+def test_noise_with_a_period_repeats(period):
+    pts = np.random.default_rng(5).uniform(-20, 20, (500, 3))
+    base = sl.texture.noise(pts, 4, period)
+    each = [period] * 3 if isinstance(period, int) else period
+    for axis, p in enumerate(each):
+        if p is None:
+            continue
+        for k in (1, -2):
+            shifted = pts.copy()
+            shifted[:, axis] += k * p
+            np.testing.assert_allclose(sl.texture.noise(shifted, 4, period), base, atol=1e-12)
+    shifted = pts + 0.5
+    assert np.abs(sl.texture.noise(shifted, 4, period) - base).max() > 0.1
+
+
+def test_periodic_noise_is_perlins_inside_one_period():
+    """Where no lattice coordinate reaches the period (cells 0 .. P - 2), the wrap
+    changes nothing: the reference noise itself."""
+    pts = np.random.default_rng(6).uniform(0, 5, (200, 3))
+    p = permutation(2).tolist()
+    expect = [reference_noise(*pt, p) for pt in pts]
+    np.testing.assert_allclose(sl.texture.noise(pts, 2, period=6), expect, atol=1e-12)
+
+
+def test_periodic_turbulence_repeats_with_the_first_octaves_period():
+    pts = np.random.default_rng(7).uniform(0, 4, (300, 3))
+    base = sl.texture.turbulence(pts, octaves=4, seed=1, period=4)
+    np.testing.assert_allclose(sl.texture.turbulence(pts + [4, -8, 12], octaves=4, seed=1,
+                                                     period=4), base, atol=1e-12)
+
+
+@pytest.mark.parametrize("make", [sl.texture.marble, sl.texture.wood])
+def test_tileable_marble_and_wood_have_no_seams(make):
+    """Repeated side by side (and one above the other), a tileable texture's last
+    column meets its first about as any two neighboring columns meet (the mean
+    difference of the pair, against the mean over the neighboring pairs); the
+    texture made without the period has a seam there, twice the change or more."""
+    def seams(img):
+        across = np.abs(np.diff(img, axis=1)).mean()
+        up = np.abs(np.diff(img, axis=0)).mean()
+        return (np.abs(img[:, 0] - img[:, -1]).mean() / across,
+                np.abs(img[0] - img[-1]).mean() / up)
+
+    assert max(seams(make(128, seed=3).image)) < 1.25
+    assert min(seams(make(128, seed=3, tileable=False).image)) > 1.5
+
+
+@pytest.mark.parametrize("period", [0, -2, 2.5, True, (1, 2), "4", (1, 0, 1)])
+def test_bad_period_is_refused(period):
+    with pytest.raises(ArgumentValueError, match="period"):
+        sl.texture.noise(np.zeros((1, 3)), period=period)
+    with pytest.raises(ArgumentValueError, match="period"):
+        sl.texture.turbulence(np.zeros((1, 3)), period=period)
+
+
+def test_a_tileable_marble_needs_whole_veins():
+    with pytest.raises(ArgumentValueError, match="veins"):
+        sl.texture.marble(16, veins=2.5)
+    assert sl.texture.marble(16, veins=2.5, tileable=False).width == 16
+
+
 @pytest.mark.parametrize("call", [
     lambda: sl.texture.checker(0), lambda: sl.texture.checker(8, 9),
     lambda: sl.texture.marble(16, seed=-1), lambda: sl.texture.wood(10 ** 6),

@@ -56,30 +56,52 @@ def checker(size=256, squares=8, colors=("white", "black"), **texture):
     return Texture(np.where(odd[..., None], b, a), **texture)
 
 
+def _tile(k, tileable):
+    """The lattice periods (x, y, z) of the noise of a tileable texture whose square
+    spans ``k`` lattice cells: k across and up, none for z (constant); None when not
+    ``tileable``."""
+    return (k, k, None) if tileable else None
+
+
 def marble(size=256, veins=4.0, turbulence_power=5.0, octaves=5, seed=0,
-           colors=((235, 232, 225), (70, 70, 90)), **texture):
+           colors=((235, 232, 225), (70, 70, 90)), tileable=True, **texture):
     """Perlin's marble (1985): the stripes of sin(2 pi (veins x + turbulence_power
     turbulence(4 p))) through a ramp from the first of ``colors`` (1) to the second
-    (-1), a ``size`` x ``size`` :class:`Texture`."""
+    (-1), a ``size`` x ``size`` :class:`Texture`.  ``tileable``: the turbulence
+    repeats across the texture square (:func:`~scanline.texture.noise`'s
+    ``period``) and ``veins`` must be whole, so that repeated copies meet without
+    seams."""
     n = _size(size)
     p = _grid(n, 1.0)
-    t = turbulence(4.0 * p, octaves, seed)
-    s = np.sin(2 * np.pi * (v.number("veins", veins) * p[..., 0]
+    veins = v.number("veins", veins)
+    if tileable and veins != round(veins):
+        raise ArgumentValueError(f"veins must be a whole number for a tileable marble (the "
+                                 f"stripes must repeat across the texture), got {veins!r}; "
+                                 f"or give tileable=False")
+    t = turbulence(4.0 * p, octaves, seed, _tile(4, tileable))
+    s = np.sin(2 * np.pi * (veins * p[..., 0]
                             + v.number("turbulence_power", turbulence_power) * t / 4))
     light, dark = (_rgb(f"colors[{i}]", c) for i, c in enumerate(colors))
     return Texture(_ramp((1 - s) / 2, light, dark), **texture)
 
 
 def wood(size=256, rings=12.0, grain=0.08, seed=0, colors=((200, 150, 90), (120, 75, 35)),
-         **texture):
+         tileable=True, **texture):
     """Wood: rings around an axis at the texture's left edge, the distance to the axis
     times ``rings`` perturbed by ``grain`` times noise, its fraction through a ramp
     from the first of ``colors`` to the second; a ``size`` x ``size``
-    :class:`Texture`."""
+    :class:`Texture`.  ``tileable``: the distance is measured as hypot(sin(pi dx),
+    sin(pi dy)) / pi (the distance near the axis, periodic across the texture
+    square: the rings of the neighboring copies' axes meet it at the edges) and the
+    noise repeats, so that repeated copies meet without seams."""
     n = _size(size)
     p = _grid(n, 1.0)
-    r = np.hypot(p[..., 0], p[..., 1] - 0.5)
-    g = r * v.number("rings", rings) + v.number("grain", grain) * rings * noise(p * 8.0, seed)
+    if tileable:
+        r = np.hypot(np.sin(np.pi * p[..., 0]), np.sin(np.pi * (p[..., 1] - 0.5))) / np.pi
+    else:
+        r = np.hypot(p[..., 0], p[..., 1] - 0.5)
+    g = r * v.number("rings", rings) + v.number("grain", grain) * rings * noise(
+        p * 8.0, seed, _tile(8, tileable))
     f = g - np.floor(g)
     light, dark = (_rgb(f"colors[{i}]", c) for i, c in enumerate(colors))
     return Texture(_ramp(f ** 3, light, dark), **texture)

@@ -311,7 +311,7 @@ def test_bad_device_parameters(client, query):
     kind = "random" if "lines" in query or "speed" in query else "raster"
     r = client.get(f"/api/devices/{kind}/frame?{query}")
     assert r.status_code == 422 and r.json()["error"]
-    assert client.get("/api/devices/plasma/info").status_code == 404
+    assert client.get("/api/devices/teletype/info").status_code == 404
 
 
 def test_a_long_request_is_stopped_with_503(client, monkeypatch):

@@ -20,6 +20,11 @@ grows with the number and length of the lines, and a short cycle is delayed so t
 the refresh rate never exceeds ``max_rate`` (60 per second in the notes: "faster
 refreshing of the set of lines could burn out the phosphor").
 
+The color CRTs (beam penetration and shadow mask, :mod:`scanline.display.color_crt`),
+the direct-view storage tube (:mod:`scanline.display.storage_tube`) and the flat
+panels (plasma and LCD, :mod:`scanline.display.flat_panel`) are simulated the same
+way and can be imported from here too.
+
 Each simulation gives the screen at any time (:meth:`screen`), the beam's position
 (:meth:`beam`), a list of frames (:meth:`frames`) and a GIF (:meth:`save`, written
 with Pillow).  Times are in seconds of simulated time; the frames show it slowed
@@ -82,7 +87,15 @@ def last_visit(hit, period, t):
 
 
 class _Simulation:
-    """What both simulations share: frames, scaled, with the beam, and a GIF."""
+    """What every simulation shares: frames, scaled, with the beam, and a GIF.
+
+    A subclass gives ``period`` (seconds per refresh cycle, or of the whole
+    sequence shown), ``screen(t)`` (an image-order RGB array) and ``beam(t)``
+    (``(x, y, state)`` in device units; state ``"off"``: no beam to draw); ``dots``
+    is the number of screen pixels per device unit of its screen (a shadow mask or a
+    flat panel draws each pixel as several)."""
+
+    dots = 1
 
     def frames(self, frames_per_refresh=24, refreshes=1, scale=1, beam=True):
         """The screen at ``frames_per_refresh`` evenly spaced times per refresh cycle,
@@ -105,12 +118,13 @@ class _Simulation:
         img = self.screen(t)
         if scale > 1:
             img = np.repeat(np.repeat(img, scale, axis=0), scale, axis=1)
-        if beam:
-            x, y, state = self.beam(t)
+        x, y, state = self.beam(t) if beam else (0.0, 0.0, "off")
+        if state != "off":
             h = img.shape[0]
-            cx, cy = int(round((x + 0.5) * scale - 0.5)), int(round(h - 1 - (y + 0.5) * scale + 0.5))
-            r = max(1, scale)
-            color = BEAM if state == "drawing" else RETRACE
+            k = scale * self.dots
+            cx, cy = int(round((x + 0.5) * k - 0.5)), int(round(h - 1 - (y + 0.5) * k + 0.5))
+            r = max(1, k)
+            color = BEAM if state in ("drawing", "firing", "row select") else RETRACE
             img[max(cy - r, 0):max(cy + r + 1, 0), max(cx - r, 0):max(cx + r + 1, 0)] = color
         return img
 
@@ -335,7 +349,7 @@ class RandomScan(_Simulation):
         path, pts, times, colors = [], [], [], []
         for cmd in self.commands:
             if cmd[0] == "COLOR":
-                color = cmd[1:4]
+                color = self._beam_color(cmd[1:4])
                 continue
             end = (float(cmd[1]), float(cmd[2]))
             length = math.hypot(end[0] - beam[0], end[1] - beam[1])
@@ -366,6 +380,10 @@ class RandomScan(_Simulation):
             self._times = np.zeros(0)
             self._colors = np.zeros((0, 3))
 
+    def _beam_color(self, rgb):
+        """The color the phosphor shows for a COLOR command's (r, g, b)."""
+        return rgb
+
     def screen(self, t):
         """The glow of the screen at time ``t``: an image-order uint8 RGB array (each
         spot the brightest of the line samples on it)."""
@@ -392,3 +410,16 @@ class RandomScan(_Simulation):
                 return (a[0] + w * (b[0] - a[0]), a[1] + w * (b[1] - a[1]), state)
         last = self._path[-1][3] if self._path else (0.0, float(self.height - 1))
         return (float(last[0]), float(last[1]), "waiting")
+
+
+_MORE = {"BeamPenetration": "color_crt", "ShadowMask": "color_crt", "StorageTube": "storage_tube",
+         "PlasmaPanel": "flat_panel", "LCD": "flat_panel"}
+
+
+def __getattr__(name):
+    """The other devices' simulations, from their modules (which import this one)."""
+    if name in _MORE:
+        import importlib
+
+        return getattr(importlib.import_module(f".{_MORE[name]}", __package__), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

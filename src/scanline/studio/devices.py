@@ -1,7 +1,11 @@
 """The display-device page's simulations: the studio's demo scene on a raster-scan
 display (a mode "P" frame buffer, so that its bit planes and color table can be
 shown) and on a random-scan display (its display file, with extra lines to show the
-refresh cycle growing), from :mod:`scanline.display.crt`."""
+refresh cycle growing), from :mod:`scanline.display.crt`; and on the color CRTs
+(beam penetration, shadow mask), the direct-view storage tube and the flat panels
+(plasma, LCD) of :mod:`scanline.display.color_crt`, :mod:`~scanline.display.storage_tube`
+and :mod:`~scanline.display.flat_panel`.  ``KINDS`` lists the devices; each takes
+its parameters from the query string (checked by the simulation's own checks)."""
 
 import functools
 import io
@@ -11,18 +15,33 @@ import numpy as np
 import scanline as sl
 
 from .. import _validate as v
+from ..display.color_crt import BeamPenetration, ShadowMask
 from ..display.crt import RandomScan, RasterScan, bit_planes
+from ..display.flat_panel import LCD, PlasmaPanel
+from ..display.storage_tube import StorageTube
 from ..errors import ArgumentValueError
 from .workstation import _scene
 
 SIZE = 256
 MAX_EXTRA_LINES = 5000
+#: The devices of the page (the ``kind`` of /api/devices/{kind}/...).
+KINDS = ("raster", "random", "penetration", "shadow-mask", "storage", "plasma", "lcd")
+#: The matrix and triad displays show a smaller frame buffer, each pixel a cell of
+#: several screen pixels: SMALL x SMALL pixels of DOTS x DOTS.
+SMALL, DOTS = 64, 4
+MASK_DOTS = 6
 
 
 def _display_file(extra=0):
     df = sl.DisplayFile()
     df.set_viewing(window=(0, -5, 40, 35), keep_aspect=True)
     _scene(df)
+    # the scene's label is black, for the workstation's white page: on this page's
+    # dark screen it is drawn in white
+    df.delete_segment("label")
+    df.create_segment("label", priority=2)
+    df.text((3, 25), "SCANLINE", height=2.5, font="stroke", color="white")
+    df.close_segment()
     if extra:
         rng = np.random.default_rng(extra)
         df.create_segment("extra lines")
@@ -32,10 +51,10 @@ def _display_file(extra=0):
     return df
 
 
-@functools.lru_cache(maxsize=1)
-def frame_buffer():
-    """The demo scene on a SIZE x SIZE mode "P" frame buffer."""
-    fb = sl.FrameBuffer(SIZE, SIZE, mode="P", background="midnightblue")
+@functools.lru_cache(maxsize=4)
+def frame_buffer(size=SIZE):
+    """The demo scene on a size x size mode "P" frame buffer."""
+    fb = sl.FrameBuffer(size, size, mode="P", background="midnightblue")
     _display_file().draw(fb)
     return fb
 
@@ -60,34 +79,109 @@ def random(lines=0, speed=2e5, persistence=0.02):
                       persistence=persistence)
 
 
+@functools.lru_cache(maxsize=16)
+def penetration(lines=0, speed=2e5, persistence=0.02):
+    return BeamPenetration(_display_file(lines), SIZE, SIZE, writing_speed=speed,
+                           persistence=persistence)
+
+
+@functools.lru_cache(maxsize=16)
+def shadow_mask(arrangement="delta", misconvergence=0.0, rate=60.0, persistence=0.02):
+    return ShadowMask(frame_buffer(SIZE // MASK_DOTS), arrangement=arrangement,
+                      dots=MASK_DOTS, misconvergence=misconvergence, refresh_rate=rate,
+                      persistence=persistence)
+
+
+@functools.lru_cache(maxsize=16)
+def storage(remove=None, speed=1e5):
+    return StorageTube(_display_file(), SIZE, SIZE, writing_speed=speed, hold=0.05,
+                       remove=remove, erase_time=0.02)
+
+
+@functools.lru_cache(maxsize=16)
+def plasma(rate=60.0, persistence=0.02):
+    return PlasmaPanel(frame_buffer(SMALL), refresh_rate=rate, persistence=persistence,
+                       threshold=60, dots=DOTS)
+
+
+@functools.lru_cache(maxsize=16)
+def lcd(rate=60.0, response=0.004):
+    return LCD(frame_buffer(SMALL), refresh_rate=rate, response_time=response,
+               alternate=True, dots=DOTS)
+
+
+def _number(query, name, default):
+    try:
+        return v.number(name, float(query.get(name, default)))
+    except ValueError as e:
+        if isinstance(e, ArgumentValueError):
+            raise
+        raise ArgumentValueError(f"{name}={str(query.get(name))[:40]!r} must be a number") \
+            from None
+
+
 def simulation(kind, query):
     """The simulation a query string asks for (validated by the simulation's own
     checks)."""
-    persistence = v.number("persistence", float(query.get("persistence", 0.02)))
+    persistence = _number(query, "persistence", 0.02)
+    rate = _number(query, "rate", 60)
     if kind == "raster":
-        return raster(v.number("rate", float(query.get("rate", 60))),
-                      _flag("interlaced", query.get("interlaced", "0")), persistence)
-    lines = int(query.get("lines", 0))
-    if not 0 <= lines <= MAX_EXTRA_LINES:
-        raise ArgumentValueError(f"lines={lines} must be between 0 and {MAX_EXTRA_LINES}")
-    return random(lines, v.number("speed", float(query.get("speed", 2e5))), persistence)
+        return raster(rate, _flag("interlaced", query.get("interlaced", "0")), persistence)
+    if kind in ("random", "penetration"):
+        lines = int(_number(query, "lines", 0))
+        if not 0 <= lines <= MAX_EXTRA_LINES:
+            raise ArgumentValueError(f"lines={lines} must be between 0 and {MAX_EXTRA_LINES}")
+        make = random if kind == "random" else penetration
+        return make(lines, _number(query, "speed", 2e5), persistence)
+    if kind == "shadow-mask":
+        arrangement = query.get("arrangement", "delta")
+        v.choice("arrangement", arrangement, ("delta", "in-line"))
+        return shadow_mask(arrangement, _number(query, "misconvergence", 0.0), rate,
+                           persistence)
+    if kind == "storage":
+        remove = query.get("remove") or None
+        if remove is not None:
+            v.choice("remove", remove, [s.name for s in _display_file().segments])
+        return storage(remove, _number(query, "speed", 1e5))
+    if kind == "plasma":
+        return plasma(rate, persistence)
+    if kind == "lcd":
+        return lcd(rate, _number(query, "response", 0.004))
+    raise ArgumentValueError(f"no display device {kind[:40]!r}; one of {', '.join(KINDS)}")
 
 
 def info(sim):
     """What the page prints beside the screen."""
-    out = {"period": sim.period, "refresh_rate": 1 / sim.period, "size": [sim.width, sim.height]}
-    if isinstance(sim, RasterScan):
+    img = sim.screen(0.0)
+    out = {"period": sim.period, "refresh_rate": 1 / sim.period, "size": [sim.width, sim.height],
+           "screen": [img.shape[1], img.shape[0]]}
+    if isinstance(sim, ShadowMask):
+        out.update(arrangement=sim.arrangement, dots=sim.dots, offsets=sim.offsets.tolist(),
+                   triad=sim.triad_centers().tolist(), line_time=sim.line_time)
+    elif isinstance(sim, RasterScan):
         fb = frame_buffer()
         counts = np.bincount(fb.to_array().ravel(), minlength=len(fb.color_table))
+        planes = bit_planes(fb)
         out.update(line_time=sim.line_time, field_time=sim.field_time,
-                   interlaced=sim.interlaced, planes=8,
+                   interlaced=sim.interlaced, planes=len(planes),
+                   plane_used=[bool(p.any()) for p in planes],
+                   bits_needed=max(1, (len(fb.color_table) - 1).bit_length()),
                    color_table=[{"index": i, "rgb": c, "pixels": int(n)} for i, (c, n) in
                                 enumerate(zip(fb.color_table.tolist(), counts.tolist()))])
-    else:
+    elif isinstance(sim, RandomScan):
         out.update(drawing_time=sim.drawing_time, commands=len(sim.commands),
                    lines=sum(1 for c in sim.commands if c[0] == "LINE"),
                    listing=[" ".join(str(round(x, 1)) if isinstance(x, float) else str(x)
                                      for x in c) for c in sim.commands[:40]])
+        if isinstance(sim, BeamPenetration):
+            out["voltages"] = [{"kV": kv, "color": name} for kv, name in sim.voltages]
+    elif isinstance(sim, StorageTube):
+        out.update(phases=[{"phase": n, "start": a, "end": b} for n, a, b in sim.phases],
+                   segments=[s.name for s in _display_file().segments])
+    elif isinstance(sim, PlasmaPanel):
+        out.update(cell_time=sim.cell_time, cells_on=int(sim.on.sum()), dots=sim.dots)
+    elif isinstance(sim, LCD):
+        out.update(line_time=sim.line_time, response_time=sim.response_time, dots=sim.dots)
     return out
 
 

@@ -5,8 +5,8 @@ scripts and style under ``/static``.  The JSON API:
 
 ``GET  /api/algorithms``                      the explorer's algorithms
 ``POST /api/explore {algorithm, args}``       the view of one case (422: the CLI's message)
-``GET  /api/devices/{raster|random}/info``    a simulation's timing
-``GET  /api/devices/{raster|random}/frame?t`` the screen at time t (raw RGBA, beam in headers)
+``GET  /api/devices/{kind}/info``    a simulation's timing (kind: devices.KINDS)
+``GET  /api/devices/{kind}/frame?t`` the screen at time t (raw RGBA, beam in headers)
 ``GET  /api/devices/raster/plane/{k}.png``    a bit plane of the frame buffer
 ``POST /api/ws``                              a new workstation; then ``/api/ws/{id}/...``:
 ``GET  state``, ``GET image.png``, ``POST settings|position|request|input|await|drag|delete|close``
@@ -370,8 +370,10 @@ def create_app(allowed_hosts=LOOPBACK, workers=None, address_space=None):
 
     def _kind(request):
         kind = request.path_params["kind"]
-        if kind not in ("raster", "random"):
-            raise _Fail(404, f"no display device {kind[:40]!r}: raster or random")
+        from .devices import KINDS
+
+        if kind not in KINDS:
+            raise _Fail(404, f"no display device {kind[:40]!r}: one of {', '.join(KINDS)}")
         return kind
 
     async def device_info(request):

@@ -34,23 +34,29 @@ TEX_FIELDS = FIELDS + 7
 
 
 @kernel
-def attribute_table(lo, hi, tri, q, bary, tface, attributes, table):
+def attribute_table(lo, hi, tri, q, bary, tface, attributes, k, uv, table):
     """Per triangle ``t`` in ``lo .. hi - 1``: ``table[t]`` = x0, y0 (its vertex 0),
-    (value at vertex 0, d/dx, d/dy) of 1/w, then of each of the K attributes of its
-    facet times 1/w (``attributes`` (G, 3, K) at the facet's vertices; an attribute
-    is A_0 + lambda_1 (A_1 - A_0) + lambda_2 (A_2 - A_0)).  NaN for a triangle
-    covering no pixel or of no facet."""
-    nf = attributes.shape[0]
-    k = attributes.shape[2]
+    (value at vertex 0, d/dx, d/dy) of 1/w, then of each of the first ``k``
+    attributes of its facet times 1/w (``attributes`` (G, 3, K >= k) at the facet's
+    vertices), then of u and v times 1/w (``uv`` (G, 3, 2)); an attribute is A_0 +
+    lambda_1 (A_1 - A_0) + lambda_2 (A_2 - A_0).  NaN for a triangle covering no pixel
+    or of no facet."""
+    nf = min(attributes.shape[0], uv.shape[0])
+    k = min(max(k, 0), attributes.shape[2], (table.shape[1] - 11) // 3)
     g = np.empty((4, 3))
     for t in range(lo, hi):
         f = tface[t]
         if not table_start(tri, q, bary, t, f, nf, g, table):
             continue
-        for a in range(k):
-            v0 = attributes[f, 0, a]
-            d1 = attributes[f, 1, a] - v0
-            d2 = attributes[f, 2, a] - v0
+        for a in range(k + 2):
+            if a < k:
+                v0 = attributes[f, 0, a]
+                d1 = attributes[f, 1, a] - v0
+                d2 = attributes[f, 2, a] - v0
+            else:
+                v0 = uv[f, 0, a - k]
+                d1 = uv[f, 1, a - k] - v0
+                d2 = uv[f, 2, a - k] - v0
             for c in range(3):
                 table[t, 5 + 3 * a + c] = v0 * g[1, c] + d1 * g[2, c] + d2 * g[3, c]
 

@@ -166,18 +166,14 @@ def sample_run(texels, levels, first, count, filter, wrap, s, at, stride, lo, hi
     stride + i]``, fields 0 and 1 the coordinates u and v, 2 .. 5 the screen
     derivatives du/dx, dv/dx, du/dy, dv/dy; each item's color (r, g, b) replaces its
     fields 2 .. 4.  One compiled copy of the sampling serves every caller (a call per
-    run of items, not per item); bilinear repeated textures, the common case, run a
-    loop of their own without the filter's dispatch."""
+    run of items, not per item); bilinear repeated textures, the common case, take
+    :func:`repeat_bilinear_run` (fields 0 and 1 are then overwritten)."""
+    if filter == BILINEAR and wrap == REPEAT:
+        repeat_bilinear_run(texels, levels, first, s, at, stride, lo, hi)
+        return
     u_at = at
     v_at = at + stride
     d_at = at + 2 * stride
-    if filter == BILINEAR and wrap == REPEAT:
-        for i in range(lo, hi):
-            r, g, b = bilinear(texels, levels, first, s[u_at + i], s[v_at + i], wrap)
-            s[d_at + i] = r
-            s[d_at + stride + i] = g
-            s[d_at + 2 * stride + i] = b
-        return
     for i in range(lo, hi):
         r, g, b = sample(texels, levels, first, count, filter, wrap, s[u_at + i], s[v_at + i],
                          s[d_at + i], s[d_at + stride + i], s[d_at + 2 * stride + i],
@@ -185,6 +181,70 @@ def sample_run(texels, levels, first, count, filter, wrap, s, at, stride, lo, hi
         s[d_at + i] = r
         s[d_at + stride + i] = g
         s[d_at + 2 * stride + i] = b
+
+
+@helper
+def repeat_bilinear_run(texels, levels, level, s, at, stride, lo, hi):
+    """:func:`bilinear` with ``REPEAT`` at ``level`` for items ``lo .. hi - 1`` of
+    :func:`sample_run`'s fields, in two passes with the same arithmetic: first, without
+    a branch (so that the compiler vectorizes it), each item's weights (ax, ay) into
+    fields 0 and 1 and its four texels' places (the first texel's index and the steps
+    to its right and upper neighbours, wrapped) into fields 2 .. 4; then the texel
+    lookups, whose colors replace fields 2 .. 4.  Every index is clamped into the
+    level whatever the coordinates (NaN and infinities give 0, as :func:`reduced`)."""
+    n = hi - lo
+    if n <= 0:
+        return
+    base = float(levels[level, 0])
+    w = float(levels[level, 1])
+    h = float(levels[level, 2])
+    u = s[at + lo:at + lo + n]
+    v = s[at + stride + lo:at + stride + lo + n]
+    k = s[at + 2 * stride + lo:at + 2 * stride + lo + n]
+    kx = s[at + 3 * stride + lo:at + 3 * stride + lo + n]
+    ky = s[at + 4 * stride + lo:at + 4 * stride + lo + n]
+    for i in range(n):
+        ax, i0, di = repeat_axis(u[i], w)
+        ay, j0, dj = repeat_axis(v[i], h)
+        u[i] = ax
+        v[i] = ay
+        k[i] = 3.0 * (base + j0 * w + i0)
+        kx[i] = 3.0 * di
+        ky[i] = 3.0 * w * dj
+    for i in range(n):
+        ax = u[i]
+        ay = v[i]
+        k00 = int(k[i])
+        k10 = k00 + int(kx[i])
+        k01 = k00 + int(ky[i])
+        k11 = k01 + int(kx[i])
+        w00 = (1.0 - ax) * (1.0 - ay)
+        w10 = ax * (1.0 - ay)
+        w01 = (1.0 - ax) * ay
+        w11 = ax * ay
+        k[i] = (w00 * texels[k00] + w10 * texels[k10] + w01 * texels[k01]
+                + w11 * texels[k11])
+        kx[i] = (w00 * texels[k00 + 1] + w10 * texels[k10 + 1] + w01 * texels[k01 + 1]
+                 + w11 * texels[k11 + 1])
+        ky[i] = (w00 * texels[k00 + 2] + w10 * texels[k10 + 2] + w01 * texels[k01 + 2]
+                 + w11 * texels[k11 + 2])
+
+
+@inline
+def repeat_axis(t, n):
+    """One axis of a repeated bilinear lookup in a level ``n`` texels wide, as reals
+    without a branch: the weight of the upper texel, the lower texel's index and the
+    step to the upper one (1, or 1 - n where it wraps), as :func:`bilinear` computes
+    them (t reduced as :func:`reduced`: its fraction, 0 for NaN, infinities and
+    coordinates past 2^52)."""
+    r = t - np.floor(t)
+    r = r if abs(t) < WHOLE and r < 1.0 else 0.0
+    x = r * n - 0.5
+    f = min(max(np.floor(x), -1.0), n - 1.0)
+    a = x - f
+    i0 = f if f >= 0.0 else n - 1.0
+    d = 1.0 if i0 + 1.0 < n else 1.0 - n
+    return a, i0, d
 
 
 @kernel

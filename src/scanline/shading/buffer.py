@@ -157,11 +157,30 @@ def shade_buffer(scene, fb, ids, options):
                   k.SPECULAR[options.specular if model == "phong" else "phong"], MODE[fb.mode])
 
 
+#: The last few results of :func:`texture_rows`, by their textures, filters, wraps
+#: and gamma: the joined texels are a copy (writable, as the kernels take arrays)
+#: that a frame after frame of the same textures need not make again.
+_TEXTURE_ROWS = {}
+
+
 def texture_rows(materials, gamma):
     """Every material's texture for :mod:`scanline._kernels.surface`: ``(mat_tex (M,
     4) int64: first level, level count, filter, wrap (first -1: none), texels (3 N,)
     float32, levels (L, 3) int64)``, the textures' levels one after the other,
-    decoded with ``gamma``."""
+    decoded with ``gamma``.  Kept for the same textures (:data:`_TEXTURE_ROWS`);
+    the arrays are the kernels' to read, not to write."""
+    key = (float(gamma),) + tuple((m.texture, m.texture.filter, m.texture.wrap)
+                                  if m.texture is not None else None for m in materials)
+    kept = _TEXTURE_ROWS.get(key)
+    if kept is None:
+        if len(_TEXTURE_ROWS) >= 4:
+            _TEXTURE_ROWS.clear()
+        kept = _TEXTURE_ROWS[key] = _joined_textures(materials, gamma)
+    return kept
+
+
+def _joined_textures(materials, gamma):
+    """:func:`texture_rows` computed."""
     from ..texture.texture import FILTER_CODES, WRAP_CODES
 
     rows = np.full((len(materials), 4), -1, np.int64)
@@ -248,40 +267,37 @@ def shade_textured(scene, fb, ids, options):
     model = options.model
     sources, ambient = source_rows(options.lights)
     g = scene.facet_count
-    uv = scene.uv          # NaN only on meshes without a texture (check_maps)
+    uv = v.kernel_array(scene.uv)   # NaN only on meshes without a texture (check_maps)
     if model == "phong":
         normals = np.where(scene.front[:, None, None], scene.vertex_normals,
                            -scene.vertex_normals) if not scene.front.all() \
             else scene.vertex_normals
         attributes = np.concatenate([scene.world, normals,
                                      np.broadcast_to(decoded(scene.vertex_colors, gamma),
-                                                     (g, 3, 3)), uv], axis=2)
+                                                     (g, 3, 3))], axis=2)
+        kk = 9
     else:
         mark = np.zeros(g, bool)
         mark[scene.facet] = True
         seen = np.flatnonzero(mark)
-        # no highlight anywhere (S = 0): the table holds A and (u, v) only
-        shiny = _shines(scene, sources)
         if len(seen) and model == "gouraud":
-            parts = vertex_light(scene, seen, options)
+            attributes = vertex_light(scene, seen, options)
         else:
-            parts = np.concatenate(vertex_parts(scene, seen, options), axis=2)
-        parts = parts[..., :6 if shiny else 3]
-        if len(seen) == g:
-            attributes = np.concatenate([parts, uv], axis=2)
-        else:
-            attributes = np.zeros((g, 3, parts.shape[2] + 2))
-            attributes[seen, :, :-2] = parts
-            attributes[:, :, -2:] = uv
+            attributes = np.concatenate(vertex_parts(scene, seen, options), axis=2)
+        if len(seen) < g:
+            every = np.zeros((g, 3, attributes.shape[2]))
+            every[seen] = attributes
+            attributes = every
+        # no highlight anywhere (S = 0): the table holds A and (u, v) only
+        kk = 6 if _shines(scene, sources) else 3
     attributes = v.kernel_array(attributes)
     tface = v.kernel_array(scene.facet, np.int64)
     n = len(tface)
-    kk = attributes.shape[2]
-    table = scratch("textured triangle attributes", (n, 5 + 3 * kk))
+    table = scratch("textured triangle attributes", (n, 5 + 3 * (kk + 2)))
     tri, q = v.kernel_array(scene.triangles), v.kernel_array(scene.inv_w)
     tb = v.kernel_array(scene.bary)
-    call_in_chunks(k.attribute_table, 10 * kk * n, n,
-                   lambda lo, hi: (lo, hi, tri, q, tb, tface, attributes, table))
+    call_in_chunks(k.attribute_table, 10 * (kk + 2) * n, n,
+                   lambda lo, hi: (lo, hi, tri, q, tb, tface, attributes, kk, uv, table))
     mat_tex, texels, levels = texture_rows(scene.materials, gamma)
     slopes = any(m.texture is not None and m.texture.filter == "trilinear"
                  for m in scene.materials)

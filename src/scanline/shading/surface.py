@@ -43,14 +43,25 @@ def any_maps(scene):
                for m in scene.materials)
 
 
+def _has_uv(scene, mesh):
+    """Whether mesh ``mesh`` of ``scene`` has texture coordinates: the scene's are NaN
+    for every facet of a mesh without them and finite for the others (``Mesh``
+    refuses coordinates that are not), so its first facet tells (a mesh with no
+    facet needs none)."""
+    if scene.uv is None:
+        return False
+    mine = scene.facet_mesh == mesh
+    first = int(mine.argmax())
+    return not (mine[first] and np.isnan(scene.uv[first]).any()) if len(mine) else True
+
+
 def check_maps(scene, options):
     """Refuse maps the shading cannot apply: a textured mesh without texture
     coordinates, bump or environment maps without per-pixel normals."""
     for i, m in enumerate(scene.materials):
         if m.texture is None and m.bump is None and m.environment is None:
             continue
-        if (m.texture is not None or m.bump is not None) and (
-                scene.uv is None or np.isnan(scene.uv[scene.facet_mesh == i]).any()):
+        if (m.texture is not None or m.bump is not None) and not _has_uv(scene, i):
             raise ArgumentValueError(
                 f"materials[{i}] has a texture or bump map, but meshes[{i}] has no texture "
                 f"coordinates: give the mesh uv= (one (u, v) per vertex)")

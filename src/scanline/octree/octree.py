@@ -13,6 +13,13 @@ from .tree import FULL, SPLIT, Tree, build, check_depth
 #: Samples per cell of :meth:`Octree.from_solid`: the eight corners and the center.
 _SAMPLES = np.array([[(j >> a) & 1 for a in range(3)] for j in range(8)] + [[0.5] * 3])
 
+#: Cells are decided by their samples only in the last levels: a cell more than this
+#: many levels above the finest is split whatever its samples say, so a feature can
+#: be missed only where it passes between the samples of a cell at most 2**3
+#: finest cells a side (a torus's hole, a CSG difference through the center, seen
+#: from the root's nine samples, would otherwise leave the tree empty).
+SAMPLED_LEVELS = 3
+
 #: Cells whose samples are tested in one call of a solid's ``contains``.
 _CHUNK = 1 << 15
 
@@ -89,9 +96,11 @@ class Octree(Tree):
 
         Each cell, from the root down, is sampled at its eight corners and its center:
         full where all nine are inside, empty where none is, else split -- down to
-        ``depth`` levels, where a cell is full when its center is inside.  A feature
-        thinner than a cell that passes between the samples is missed (the method's
-        limit: sampling cannot see it).
+        ``depth`` levels, where a cell is full when its center is inside.  Cells more
+        than :data:`SAMPLED_LEVELS` levels above the finest are split whatever their
+        samples (the root's nine samples alone would miss a torus).  A feature that
+        passes between the samples of a cell is missed: the method's limit, as
+        sampling cannot see it.
 
         Parameters
         ----------
@@ -130,6 +139,8 @@ class Octree(Tree):
                 inside = inside.astype(bool).reshape(len(c), len(samples))
                 every, some = inside.all(axis=1), inside.any(axis=1)
                 kinds[a:a + _CHUNK] = np.where(every, FULL, np.where(some, SPLIT, 0))
+            if level < depth - SAMPLED_LEVELS:
+                kinds[:] = SPLIT
             return kinds
 
         kind, child = build(classify, depth, 3)

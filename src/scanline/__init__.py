@@ -30,6 +30,7 @@ if TYPE_CHECKING:   # what the lazy attributes are, for type checkers and editor
     from . import budget as budget, mpl as mpl, texture as texture
     from . import raytrace as raytrace, radiosity as radiosity
     from . import solids as solids, csg as csg, octree as octree
+    from . import fractals as fractals
     from .texture import Texture as Texture
     from .rendering import render as render
     from .depthbuffer import DepthBuffer as DepthBuffer
@@ -91,6 +92,7 @@ _LAZY = {
     "solids": ("scanline.solids", None),
     "csg": ("scanline.csg", None),
     "octree": ("scanline.octree", None),
+    "fractals": ("scanline.fractals", None),
     "screen": ("scanline.screen", None),
     "budget": ("scanline.budget", None),
     "mpl": ("scanline.mpl", None),

@@ -278,6 +278,10 @@ CALLS = {
                                  "hidden='dash')", RGB),
     "floating horizon": ("visible", "sl.draw3d.floating_horizon(fb, lambda x, y: np.sin(3 * x) "
                                     "* np.cos(2 * y), color='black')", RGB),
+    "fractals mandelbrot": ("fractals", "sl.fractals.mandelbrot(24, 16, max_iterations=64)"
+                                        ".tolist()", None),
+    "fractals fern": ("fractals", "sl.fractals.fern(200, seed=1).tolist()", None),
+    "fractals turtle": ("fractals", "[p.tolist() for p in sl.fractals.plant(2)]", None),
     "four calls": ("mixed", "sl.draw.line(fb, 3, 4, 90, 50, color='black'); "
                             f"sl.draw.polygon(fb, {STAR}, color='navy', rule='nonzero'); "
                             "sl.draw.text(fb, 4, 20, 'Hello', color='black', height=14); "

@@ -6,7 +6,8 @@ run.py's record.)
 Times, with timeit (best of 5), the whole call and each of its parts: argument
 checks of the API layer, the color lookup, and the numba kernel called directly
 (dispatch + drawing), on a short line (overhead-bound) and a long one (pixel-bound),
-next to ``cv2.line`` on the same pixels.  The parts are looked up by their current
+next to ``cv2.line`` on the same pixels; then one short line, circle and filled
+polygon against the matching OpenCV call, as ratios.  The parts are looked up by their current
 internal names; a part that has been renamed is reported as missing.
 """
 
@@ -39,10 +40,12 @@ def main(argv):
         k = importlib.import_module("scanline._kernels.lines")
         _common = importlib.import_module("scanline.draw._common")
         api = importlib.import_module("scanline.draw.lines")  # the module, not the function
+        variants = importlib.import_module("scanline._kernels.variants")
         buf, packed = fb._raster()
+        lay = variants.layout(packed)
         color = fb.pixel(white)
         code = api._method("bresenham")
-        globs.update(v=v, k=k, _common=_common, api=api, buf=buf, packed=packed, color=color,
+        globs.update(v=v, k=k, _common=_common, api=api, buf=buf, lay=lay, color=color,
                      code=code, W=W, H=H)
         parts = {
             "target(fb)": "_common.target(fb)",
@@ -72,13 +75,28 @@ def main(argv):
         rows += [(name, stmt) for name, stmt in parts.items()]
         if "k" in globs:
             rows.append(("kernel k.draw_line(...) called directly",
-                         "k.draw_line(buf, packed, W, H, x0, y0, x1, y1, color, code)"))
+                         "k.draw_line(buf, lay, W, H, x0, y0, x1, y1, color, code)"))
         print(f"\n{label}: microseconds per call (best of 5 x {n:,})")
         for name, stmt in rows:
             try:
                 print(f"  {best(stmt, n, globs):9.3f}  {name}")
             except Exception as exc:
                 print(f"  {'missing':>9}  {name} ({type(exc).__name__}: {exc})")
+
+    # the issue's three single calls against OpenCV's (target: at most 2.5x its time)
+    globs.update(pts=[(10, 10), (40, 12), (30, 40), (12, 30)],
+                 cpts=[np.array([[10, H - 11], [40, H - 13], [30, H - 41], [12, H - 31]], np.int32)])
+    pairs = (("line, 21 pixels", "sl.draw.line(fb, 10, 10, 30, 17, color=white)",
+              "cv2.line(img, (10, H - 11), (30, H - 18), white, 1, cv2.LINE_8)"),
+             ("circle, r = 10", "sl.draw.circle(fb, 100, 100, 10, color=white)",
+              "cv2.circle(img, (100, H - 101), 10, white, 1, cv2.LINE_8)"),
+             ("filled quadrilateral", "sl.draw.polygon(fb, pts, color=white)",
+              "cv2.fillPoly(img, cpts, white, cv2.LINE_8)"))
+    print("\nsingle calls, microseconds (best of 5 x 20,000): scanline, OpenCV, ratio (target <= 2.5)")
+    for label, ours, theirs in pairs:
+        exec(ours, globs)                       # compiled (or loaded) before timing
+        a, b = best(ours, 20000, globs), best(theirs, 20000, globs)
+        print(f"  {label:22s} {a:8.3f} {b:8.3f} {a / b:6.2f}x")
 
     if "--cprofile" in argv:
         import cProfile

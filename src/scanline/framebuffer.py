@@ -44,6 +44,10 @@ from .errors import (ArgumentTypeError, ArgumentValueError, OutputError, PixelIn
 
 MODES = ("1", "L", "RGB", "RGBA", "P")
 _CHANNELS = {"1": 1, "L": 1, "RGB": 3, "RGBA": 4, "P": 1}
+
+#: The key of the color cache's last entry used, ``(color, name, value)``: a loop that
+#: draws in one color finds it by the color object's identity, with no type checks.
+_LAST = object()
 _BITS = {"1": 1, "L": 8, "RGB": 24, "RGBA": 32, "P": 8}
 
 #: Largest scale factor ``_repr_png_`` uses, and the size (pixels on the longer side)
@@ -310,6 +314,9 @@ class FrameBuffer:
         up in the table and appended to it when absent.  ``None`` is
         :attr:`foreground`.
         """
+        last = self._cache.get(_LAST)
+        if last is not None and color is last[0] and name == last[1]:
+            return last[2]      # the very object of the last cached call (immutable)
         if color is None:
             color = self.foreground
         # cache exact types only: True == 1 and (1.0, 2) == (1, 2) must not share
@@ -320,6 +327,7 @@ class FrameBuffer:
         if cacheable:
             hit = self._cache.get(key)
             if hit is not None:
+                self._cache[_LAST] = (color, name, hit)
                 return hit
         if self._mode == "P":
             value = (self._table_index(color, name),)
@@ -328,6 +336,7 @@ class FrameBuffer:
         out = np.array(value, np.uint8)
         if cacheable:
             self._cache[key] = out
+            self._cache[_LAST] = (color, name, out)
         return out
 
     def _table_index(self, color, name):

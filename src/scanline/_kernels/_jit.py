@@ -128,6 +128,39 @@ def call(kernel, work, *args):
         _SPENT[kernel] = spent + time.perf_counter() - t0
 
 
+#: Compiled entry points by ``(kernel, types)``: see :func:`call_typed`.
+_ENTRIES = {}
+
+
+def call_typed(kernel, types, bound, work, *args):
+    """:func:`call`, for a single call that is too small to pay numba's dispatch.
+
+    A dispatcher call resolves the numba type of every argument (``typeof``) to
+    choose its compiled specialization, about as long as drawing a short line.  The
+    caller knows better: ``types`` is a hashable key that determines the numba types
+    of ``args`` (for a line: the frame buffer's storage layout and the method's
+    token, the other arguments being arrays and ints of fixed types), so the
+    specialization found for the first call of each key is called directly after it
+    -- its compiled entry point, which unboxes the arguments with no type
+    resolution.  A key must never stand for two sets of types: the entry point does
+    not check them.  ``bound`` is an upper bound of ``work`` known at no cost (for a
+    line, twice the frame buffer's width plus height): a call that may run long
+    (``bound`` >= :data:`LONG_WORK`), a first one or one run as the Python twin goes
+    through :func:`call`, with the work that ``work(*args)`` estimates.
+    """
+    entry = _ENTRIES.get((kernel, types))
+    if entry is not None and bound < LONG_WORK and COMPILE != "never":
+        return entry(*args)
+    result = call(kernel, lambda: work(*args), *args)
+    if getattr(kernel, "overloads", None):
+        from numba.core.typing.typeof import Purpose, typeof
+
+        found = kernel.overloads.get(tuple(typeof(a, Purpose.argument) for a in args))
+        if found is not None:
+            _ENTRIES[kernel, types] = found.entry_point
+    return result
+
+
 #: Work units from which a compiled kernel runs in a worker thread while the main
 #: thread waits for it in steps of :data:`WAIT` seconds, so that Ctrl-C is answered
 #: at once (a kernel releases the GIL but cannot see signals: the interrupt would

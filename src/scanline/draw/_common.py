@@ -9,10 +9,9 @@ from ..framebuffer import FrameBuffer
 
 def target(fb):
     """Check that ``fb`` is a FrameBuffer; return ``(buf, packed, width, height)``."""
-    if not isinstance(fb, FrameBuffer):
+    if type(fb) is not FrameBuffer and not isinstance(fb, FrameBuffer):
         raise ArgumentTypeError(f"fb must be a scanline.FrameBuffer, got {type(fb).__name__}")
-    buf, packed = fb._raster()
-    return buf, packed, fb.width, fb.height
+    return fb._buf, fb._mode == "1", fb._width, fb._height     # (FrameBuffer._raster)
 
 
 def _direct(fb, a, name):

@@ -6,7 +6,7 @@ import numpy as np
 
 from .. import _validate as v
 from .._kernels import conics as k
-from .._kernels._jit import call
+from .._kernels._jit import call, call_typed
 from .._kernels.variants import layout
 from ..errors import ArgumentValueError
 from ..geometry import guard
@@ -26,11 +26,14 @@ ELLIPSE_AXIS_LIMIT = 2**24
 ELLIPSE_PRODUCT_LIMIT = 2**29
 
 
-def _big(*values):
+def _big(xc, yc, rx, ry):
     """Whether a conic's parameters may be beyond the exact limits (not all ints of
     at most 2**14), so that :func:`scanline.geometry.guard.conic_outside` is asked
-    first."""
-    return not all(type(c) is int and -(1 << 14) <= c <= 1 << 14 for c in values)
+    first.  (Written out: a generator costs more than a short circle's kernel.)"""
+    small = 1 << 14
+    return not (type(xc) is type(yc) is type(rx) is type(ry) is int
+                and -small <= xc <= small and -small <= yc <= small
+                and -small <= rx <= small and -small <= ry <= small)
 
 
 def _outside(fb, xc, yc, rx, ry, attrs):
@@ -141,8 +144,14 @@ def circle(fb: "FrameBuffer", xc: float, yc: float, r: float, color: Optional[Co
         strokes.conics(fb, np.array([[xc, yc, r, r]], np.int64), color, attrs, antialias)
         return
     buf, packed, width, height = target(fb)
-    call(k.draw_circle, min(8 * r, 4 * (width + height)), buf, layout(packed), width, height,
-         xc, yc, r, fb.pixel(color))
+    call_typed(k.draw_circle, packed, 4 * (width + height), _circle_work, buf, layout(packed),
+               width, height, xc, yc, r, fb.pixel(color))
+
+
+def _circle_work(buf, layout, width, height, xc, yc, r, color):
+    """Work units of one circle (its pixels, at most twice the frame buffer's
+    perimeter)."""
+    return min(8 * r, 4 * (width + height))
 
 
 def circles(fb, circles, color=None, *, style=None, antialias=False, width=None, cap=None,
@@ -255,8 +264,14 @@ def ellipse(fb: "FrameBuffer", xc: float, yc: float, rx: float, ry: float,
         strokes.conics(fb, np.array([[xc, yc, rx, ry]], np.int64), color, attrs, antialias)
         return
     buf, packed, width, height = target(fb)
-    call(k.draw_ellipse, min(4 * (rx + ry), 4 * (width + height)), buf, layout(packed), width,
-         height, xc, yc, rx, ry, fb.pixel(color))
+    call_typed(k.draw_ellipse, packed, 4 * (width + height), _ellipse_work, buf, layout(packed),
+               width, height, xc, yc, rx, ry, fb.pixel(color))
+
+
+def _ellipse_work(buf, layout, width, height, xc, yc, rx, ry, color):
+    """Work units of one ellipse (its pixels, at most twice the frame buffer's
+    perimeter)."""
+    return min(4 * (rx + ry), 4 * (width + height))
 
 
 def ellipses(fb, ellipses, color=None, *, style=None, antialias=False, width=None, cap=None,

@@ -6,7 +6,7 @@ import numpy as np
 
 from .. import _validate as v
 from .._kernels import lines as k
-from .._kernels._jit import call
+from .._kernels._jit import call, call_typed
 from .._kernels._threads import call_in_bands
 from .._kernels.variants import layout, token
 from ..errors import ArgumentValueError
@@ -113,16 +113,24 @@ def line(fb: "FrameBuffer", x0: float, y0: float, x1: float, y1: float,
         strokes.polyline(fb, points, color, style=attrs, antialias=antialias)
         return
     buf, packed, width, height = target(fb)
-    if not all(type(c) is int and -v.COORD_LIMIT <= c <= v.COORD_LIMIT
-               for c in (x0, y0, x1, y1)):
+    limit = v.COORD_LIMIT
+    if not (type(x0) is type(y0) is type(x1) is type(y1) is int
+            and -limit <= x0 <= limit and -limit <= y0 <= limit
+            and -limit <= x1 <= limit and -limit <= y1 <= limit):
         ends = [v.number(n, c) for n, c in (("x0", x0), ("y0", y0), ("x1", x1), ("y1", y1))]
-        if max(map(abs, ends)) > v.COORD_LIMIT:     # far: clipped to the guard first
+        if max(map(abs, ends)) > limit:     # far: clipped to the guard first
             lines(fb, np.array([ends]), color, method)
             return
-    x0, y0, x1, y1 = (v.coordinate(n, c) for n, c in (("x0", x0), ("y0", y0), ("x1", x1),
-                                                      ("y1", y1)))
-    call(k.draw_line, 2 * min(max(abs(x1 - x0), abs(y1 - y0)), width + height), buf,
-         layout(packed), width, height, x0, y0, x1, y1, fb.pixel(color), code)
+        x0, y0, x1, y1 = (v.coordinate(n, c) for n, c in (("x0", x0), ("y0", y0),
+                                                          ("x1", x1), ("y1", y1)))
+    # the types of the kernel's arguments follow from the storage and the method
+    call_typed(k.draw_line, (packed, code), 2 * (width + height), _line_work,
+               buf, layout(packed), width, height, x0, y0, x1, y1, fb.pixel(color), code)
+
+
+def _line_work(buf, layout, width, height, x0, y0, x1, y1, color, code):
+    """Work units of one line (its pixels, at most the frame buffer's perimeter)."""
+    return 2 * min(max(abs(x1 - x0), abs(y1 - y0)), width + height)
 
 
 def lines(fb: "FrameBuffer", segments: ArrayLike, color: Any = None,

@@ -225,6 +225,21 @@ def locate(kind, child, depth, x, y, z, size):
     return i
 
 
+@helper
+def put_face(out, count, axis, sign, plane, u, v, size):
+    """Row ``count`` of ``out`` set to the face (axis, sign, plane, u, v, size) where
+    there is room; returns the rows now used."""
+    if count >= out.shape[0]:
+        return count
+    out[count, 0] = axis
+    out[count, 1] = sign
+    out[count, 2] = plane
+    out[count, 3] = u
+    out[count, 4] = v
+    out[count, 5] = size
+    return count + 1
+
+
 @kernel
 def boundary_faces(kind, child, depth, cells, out):
     """The faces between full and empty space: for each full cell of ``cells`` (rows
@@ -240,7 +255,7 @@ def boundary_faces(kind, child, depth, cells, out):
     stack = np.empty(cap, np.int64)
     spos = np.empty((cap, 4), np.int64)
     p = np.empty(3, np.int64)
-    count = 0
+    count = np.int64(0)
     for r in range(cells.shape[0]):
         if cells[r, 4] != FULL:
             continue
@@ -258,14 +273,7 @@ def boundary_faces(kind, child, depth, cells, out):
                 else:
                     m = locate(kind, child, depth, p[0], p[1], p[2], s)
                 if m < 0 or kind[m] == EMPTY:
-                    if count < out.shape[0]:
-                        out[count, 0] = axis
-                        out[count, 1] = sign
-                        out[count, 2] = plane
-                        out[count, 3] = cells[r, u]
-                        out[count, 4] = cells[r, v]
-                        out[count, 5] = s
-                        count += 1
+                    count = put_face(out, count, axis, sign, plane, cells[r, u], cells[r, v], s)
                     continue
                 if kind[m] == FULL:
                     continue
@@ -282,14 +290,8 @@ def boundary_faces(kind, child, depth, cells, out):
                     i = stack[sp]
                     h = spos[sp, 3]
                     if kind[i] == EMPTY:
-                        if count < out.shape[0]:
-                            out[count, 0] = axis
-                            out[count, 1] = sign
-                            out[count, 2] = plane
-                            out[count, 3] = spos[sp, u]
-                            out[count, 4] = spos[sp, v]
-                            out[count, 5] = h
-                            count += 1
+                        count = put_face(out, count, axis, sign, plane, spos[sp, u],
+                                         spos[sp, v], h)
                         continue
                     c = child[i]
                     if kind[i] != SPLIT or h < 2 or c <= i or c + 8 > n or sp + 8 > cap:
@@ -410,6 +412,16 @@ def fill_columns(offsets, zs, grid):
             grid[i, j, k] = inside
 
 
+@helper
+def meets(lo, hi, t, boxes, j):
+    """Whether triangle ``t``'s box (``lo[t]``, ``hi[t]``) meets ``boxes[j]`` (x0, x1,
+    y0, y1, z0, z1), boundaries included."""
+    for a in range(3):
+        if lo[t, a] > boxes[j, 2 * a + 1] or hi[t, a] < boxes[j, 2 * a]:
+            return False
+    return True
+
+
 @kernel
 def scene_octree(box, lo, hi, max_depth, leaf, nbox, nchild, nstart, ncount, entries):
     """The octree of a screen-space scene's triangles (Hearn & Baker 13-10: the
@@ -459,9 +471,7 @@ def scene_octree(box, lo, hi, max_depth, leaf, nbox, nchild, nstart, ncount, ent
         for e in range(s0, s0 + cnt):
             t = entries[e]
             for j in range(8):
-                if (lo[t, 0] <= cb[j, 1] and hi[t, 0] >= cb[j, 0] and lo[t, 1] <= cb[j, 3]
-                        and hi[t, 1] >= cb[j, 2] and lo[t, 2] <= cb[j, 5]
-                        and hi[t, 2] >= cb[j, 4]):
+                if meets(lo, hi, t, cb, j):
                     counts[j] += 1
                     total += 1
         if total > 2 * cnt or used + total > ecap:
@@ -480,9 +490,7 @@ def scene_octree(box, lo, hi, max_depth, leaf, nbox, nchild, nstart, ncount, ent
         for e in range(s0, s0 + cnt):
             t = entries[e]
             for j in range(8):
-                if (lo[t, 0] <= cb[j, 1] and hi[t, 0] >= cb[j, 0] and lo[t, 1] <= cb[j, 3]
-                        and hi[t, 1] >= cb[j, 2] and lo[t, 2] <= cb[j, 5]
-                        and hi[t, 2] >= cb[j, 4]):
+                if meets(lo, hi, t, cb, j):
                     c = nxt + j
                     entries[nstart[c] + ncount[c]] = t
                     ncount[c] += 1

@@ -118,7 +118,7 @@ _STUDIO = (
 FIGURE_MODULES = ("figures", "figures_attributes", "figures_antialias", "figures_color",
                   "figures_text", "figures_clip", "figures_scene", "figures_curves",
                   "figures_surfaces", "figures_three_d", "figures_visible", "figures_shading",
-                  "figures_surface_rendering", "figures_animation")
+                  "figures_surface_rendering", "figures_animation", "figures_octree")
 
 
 def all_figures():

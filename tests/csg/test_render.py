@@ -106,3 +106,53 @@ def test_methods_that_do_not_cast_rays_refuse_solids(method):
     with pytest.raises(ArgumentValueError, match="ray-casting"):
         sl.render(fb, [S.Sphere(), sl.mesh.cube()], sl.Camera(eye=(0, 0, 5), target=(0, 0, 0)),
                   method=method)
+
+
+def ortho(size=31):
+    cam = sl.Camera(eye=(0, 0, 5), target=(0, 0, 0),
+                    projection=sl.projection.orthographic(window=(-1.5, -1.5, 1.5, 1.5)))
+    clip, scale, offset = cam.mapping(cam._device_box(size, size))
+    world_x = ((np.arange(size) - offset[0]) / scale[0] - clip[0, 3]) / clip[0, 0]
+    return cam, world_x
+
+
+def test_ray_traced_mirror_sphere_solid_reflects_a_wall_at_the_mirror_angle():
+    # orthographic rays down -z meet the unit sphere at normal (x, 0, sqrt(1 - x^2));
+    # at x = 1/sqrt(2) the mirror direction is +x exactly, onto a wall at x = 3 lit by
+    # ambient light alone: the pixel shows the wall's color; at the center the ray
+    # goes straight back and leaves the scene: the background
+    cam, wx = ortho(41)
+    mirror = L.Material(ka=0.0, kd=0.0, ks=0.0, reflectivity=1.0)
+    wall = sl.mesh.Mesh([(3, -9, -9), (3, 9, -9), (3, 9, 9), (3, -9, 9)], [(0, 1, 2, 3)])
+    fb = sl.FrameBuffer(41, 41, mode="RGB", background=(10, 20, 30))
+    r = sl.render(fb, [wall, S.Sphere((0, 0, 0), 1.0, material=mirror)], cam,
+                  method="ray-tracing", materials=L.Material(ka=1.0, kd=0, ks=0,
+                                                             color=(200, 120, 40)),
+                  lights=[L.AmbientLight(1.0)])
+    px = fb._raster()[0]
+    at45 = int(np.argmin(np.abs(wx - 1 / math.sqrt(2))))
+    assert r.solids[20, at45] == 0 and r.solids[20, 20] == 0
+    assert np.abs(px[20, at45].astype(int) - [200, 120, 40]).max() <= 1
+    assert px[20, 20].tolist() == [10, 20, 30]
+    # the same sphere by ray casting shows its own (black) local color there
+    fb2 = sl.FrameBuffer(41, 41, mode="RGB", background=(10, 20, 30))
+    sl.render(fb2, [wall, S.Sphere((0, 0, 0), 1.0, material=mirror)], cam,
+              method="ray-casting", lights=[L.AmbientLight(1.0)])
+    assert fb2._raster()[0][20, at45].tolist() == [0, 0, 0]
+
+
+def test_a_solid_casts_a_ray_traced_shadow_on_a_mesh():
+    # a point light straight above a small box above the floor; the eye between box
+    # and floor sees the floor only: under the box, ambient light alone
+    floor = sl.mesh.Mesh([(-3, -3, -1), (3, -3, -1), (3, 3, -1), (-3, 3, -1)], [(0, 1, 2, 3)])
+    blocker = S.Box((-0.25, -0.25, 2.0), (0.25, 0.25, 2.5))
+    m = L.Material(ka=1.0, kd=0.5, ks=0.0, color="white")
+    lights = [L.AmbientLight(0.2), L.PointLight((0, 0, 4.5))]
+    fb = sl.FrameBuffer(31, 31, mode="L")
+    cam = sl.Camera(eye=(0, -0.01, 1.9), target=(0, 0, -1))
+    r = sl.render(fb, [floor, blocker], cam, method="ray-tracing", materials=m, lights=lights,
+                  gamma=1.0, shading="phong")
+    px = fb._raster()[0][..., 0]
+    assert (r.solids == -1).all() and (r.faces >= 0).all()
+    assert px[15, 15] == round(255 * 0.2)            # under the box: ambient only
+    assert px[15, 1] > px[15, 15] + 60                # beyond its shadow: lit

@@ -136,49 +136,27 @@ def evaluate(ox, oy, oz, dx, dy, dz, program, prims, bounds, links, table, verts
 @kernel
 def cast(start, step, origins, directions, tmin, program, prims, bounds, links, table, verts,
          tri_prim, lists, length, t_out, code_out, normal_out, status):
-    """The first surface of the solid each ray meets beyond ``tmin``: ``t_out`` (inf:
-    none), ``code_out`` (-1: none) and the unit outward normal ``normal_out`` (R, 3);
-    an interval that began before ``tmin`` shows its exit (a ray from inside).
-    ``lists``: the program's stack depth + 1, ``length``: intervals per list; rays
-    past them add 1 to ``status[start]``.  Chunks ``start``, ``start + step`` ..."""
+    """The first surface of the solid each ray meets beyond ``tmin``
+    (:func:`first_surface`): ``t_out`` (inf: none), ``code_out`` (-1: none) and the
+    unit outward normal ``normal_out`` (R, 3); an interval that began before ``tmin``
+    shows its exit (a ray from inside).  ``lists``: the program's stack depth + 1,
+    ``length``: intervals per list; rays past them add 1 to ``status[start]``.  Chunks
+    ``start``, ``start + step`` ..."""
     n = origins.shape[0]
-    ts = np.empty((lists, length, 2))
-    cs = np.empty((lists, length, 2), np.int64)
-    counts = np.zeros(lists, np.int64)
-    hit_t = np.empty(8 * length)
-    hit_row = np.empty(8 * length, np.int64)
-    stack = np.empty(64, np.int64)
-    u = np.empty(6)
+    none = np.zeros(prims.shape[0])
+    solids = (program, prims, bounds, links, table, verts, tri_prim, lists, length,
+              none.astype(np.int64), none)
+    work = solid_scratch(solids)
     for c in range(start, (n + CHUNK - 1) // CHUNK, max(step, 1)):
         for r in range(c * CHUNK, min(n, (c + 1) * CHUNK)):
-            ox = origins[r, 0]
-            oy = origins[r, 1]
-            oz = origins[r, 2]
-            dx = directions[r, 0]
-            dy = directions[r, 1]
-            dz = directions[r, 2]
-            t_out[r] = math.inf
-            code_out[r] = -1
-            m = evaluate(ox, oy, oz, dx, dy, dz, program, prims, bounds, links, table, verts,
-                         tri_prim, ts, cs, counts, hit_t, hit_row, stack, u)
-            if m < 0:
+            t, code = first_surface(origins[r, 0], origins[r, 1], origins[r, 2],
+                                    directions[r, 0], directions[r, 1], directions[r, 2], tmin,
+                                    math.inf, solids, work, normal_out[r])
+            if work[2][0] < 0:
                 status[start % status.shape[0]] += 1
-                m = 0
-            for e in range(m):
-                if ts[0, e, 0] > tmin:
-                    t_out[r] = ts[0, e, 0]
-                    code_out[r] = cs[0, e, 0]
-                    break
-                if ts[0, e, 1] > tmin:
-                    if ts[0, e, 1] < math.inf:
-                        t_out[r] = ts[0, e, 1]
-                        code_out[r] = cs[0, e, 1]
-                    break
-            if code_out[r] >= 0:
-                t = t_out[r]
-                surface_normal(prims, table, code_out[r], ox + t * dx, oy + t * dy, oz + t * dz,
-                               normal_out[r])
-            else:
+            t_out[r] = t
+            code_out[r] = code
+            if code < 0:
                 for k in range(3):
                     normal_out[r, k] = 0.0
 
@@ -220,3 +198,87 @@ def moments(start, step, origins, program, prims, bounds, links, table, verts, t
             out[r, 0] = s0
             out[r, 1] = s1
             out[r, 2] = s2
+
+
+# -- solids in the ray tracer (:mod:`scanline._kernels.raytrace`) -------------------------
+#
+# The tracer takes the solids as one tuple ``solids`` = (program, prims, bounds, links,
+# table, verts, tri_prim, lists, length, prim_material, prim_kt): a program as above
+# (possibly empty: no solids), each primitive's row of the tracer's material table and
+# its transparency k_t.
+
+
+@helper
+def solid_scratch(solids):
+    """Per-thread work arrays for :func:`first_surface` (a tuple)."""
+    lists = solids[7]
+    length = solids[8]
+    return (np.empty((lists, length, 2)), np.empty((lists, length, 2), np.int64),
+            np.zeros(lists, np.int64), np.empty(8 * length), np.empty(8 * length, np.int64),
+            np.empty(64, np.int64), np.empty(6))
+
+
+@helper
+def code_primitive(code, prims, tri_prim):
+    """The primitive a surface code belongs to (a mesh triangle's owner)."""
+    c = code >> 1
+    k = c >> 3
+    if k < prims.shape[0]:
+        return k
+    row = c - 8 * prims.shape[0]
+    if 0 <= row < tri_prim.shape[0]:
+        return tri_prim[row]
+    return 0
+
+
+@helper
+def first_surface(ox, oy, oz, dx, dy, dz, tmin, tmax, solids, work, normal):
+    """The first surface of the solids along o + t d with t in (tmin, tmax): ``(t,
+    code)`` (code -1: none; t = tmax) and its unit outward normal into ``normal`` (3,);
+    a ray from inside meets its exit.  A ray past the lists' length sees nothing and
+    leaves -1 in ``work[2][0]``."""
+    program = solids[0]
+    prims = solids[1]
+    if program.shape[0] == 0:
+        return tmax, np.int64(-1)
+    ts = work[0]
+    cs = work[1]
+    m = evaluate(ox, oy, oz, dx, dy, dz, program, prims, solids[2], solids[3], solids[4],
+                 solids[5], solids[6], ts, cs, work[2], work[3], work[4], work[5], work[6])
+    if m < 0:
+        work[2][0] = -1
+    t = tmax
+    code = np.int64(-1)
+    for e in range(max(m, 0)):
+        if ts[0, e, 0] > tmin:
+            if ts[0, e, 0] < tmax:
+                t = ts[0, e, 0]
+                code = cs[0, e, 0]
+            break
+        if ts[0, e, 1] > tmin:
+            if ts[0, e, 1] < tmax:
+                t = ts[0, e, 1]
+                code = cs[0, e, 1]
+            break
+    if code < 0:
+        return tmax, np.int64(-1)
+    surface_normal(prims, solids[4], code, ox + t * dx, oy + t * dy, oz + t * dz, normal)
+    return t, code
+
+
+@helper
+def solid_transmittance(ox, oy, oz, dx, dy, dz, tmin, tmax, solids, work):
+    """The fraction of light the solids let through along o + t d for t in (tmin,
+    tmax): the product of the k_t of every surface crossed (0: opaque), as the
+    triangles' shadow test takes it."""
+    through = 1.0
+    normal = np.empty(3)
+    t = tmin
+    for _ in range(64):
+        t, code = first_surface(ox, oy, oz, dx, dy, dz, t, tmax, solids, work, normal)
+        if code < 0:
+            break
+        through *= solids[10][code_primitive(code, solids[1], solids[6])]
+        if through <= 0.0:
+            break
+    return through

@@ -46,6 +46,7 @@ import numpy as np
 from ._jit import helper, kernel
 from .shade import encode
 from .bvh import STACK, moller_trumbore, nearest, transmittance
+from .csg import code_primitive, first_surface, solid_scratch, solid_transmittance
 from .environment import environment_color
 from .texture import sample_run
 
@@ -73,6 +74,9 @@ RAY_COLUMNS = 13
 #: Columns of a light row: the shading's 16 (:func:`scanline.shading.buffer.source_rows`),
 #: then an area light's corner, edges and samples per side (0: not an area light).
 CORNER, EDGE_U, EDGE_V, GRID = 16, 19, 22, 25
+
+#: ``first`` of a sample whose primary ray meets a solid (:mod:`scanline.solids`) first.
+SOLID = -2
 
 #: Kinds of ray in the log.
 PRIMARY, REFLECTED, REFRACTED, SHADOW = 0, 1, 2, 3
@@ -158,7 +162,7 @@ def _log(log, count, ray, parent, kind, depth, o, d, t, facet, weight, local, li
 
 
 @helper
-def _seen(ox, oy, oz, tmin, s, lights, bounds, links, table, clear, stack, state):
+def _seen(ox, oy, oz, tmin, s, lights, bounds, links, table, clear, solids, work, stack, state):
     """What reaches (ox, oy, oz) of light ``s``: the transmittance of the shadow ray
     toward it (:func:`scanline._kernels.bvh.transmittance`; from ``tmin`` on), or for
     an area light the mean over its grid of cells of the shadow rays to a jittered
@@ -192,30 +196,34 @@ def _seen(ox, oy, oz, tmin, s, lights, bounds, links, table, clear, stack, state
         lz = tz / dist
         if grid == 0 and lights[s, 3] == 0.0:
             dist = math.inf
-        total += transmittance(ox, oy, oz, lx, ly, lz, tmin, dist - tmin, bounds, links, table,
-                               clear, stack)
+        through = transmittance(ox, oy, oz, lx, ly, lz, tmin, dist - tmin, bounds, links, table,
+                                clear, stack)
+        if through > 0.0:
+            through *= solid_transmittance(ox, oy, oz, lx, ly, lz, tmin, dist - tmin, solids, work)
+        total += through
     return total / cells, dist, lx, ly, lz
 
 
 @kernel
-def shadow_all(start, step, points, seed, eps, lights, bounds, links, table, clear, out):
+def shadow_all(start, step, points, seed, eps, lights, bounds, links, table, clear, solids, out):
     """Per point (rows of ``points``) and light (rows of ``lights``) what reaches the
     point (:func:`_seen`, shadow rays from ``eps`` along them on) into ``out`` (S,
     P): the shading's shadow test for the primary rays' hits; the points numbered
     ``start``, ``start + step`` ... (one call per thread)."""
     stack = np.empty(STACK, np.int64)
     state = np.empty(1, np.uint64)
+    work = solid_scratch(solids)
     for i in range(start, points.shape[0], max(step, 1)):
         state[0] = np.uint64(seed) * np.uint64(0xD1B54A32D192ED03) + np.uint64(i)
         next_random(state)
         for s in range(lights.shape[0]):
             out[s, i] = _seen(points[i, 0], points[i, 1], points[i, 2], eps, s, lights, bounds,
-                              links, table, clear, stack, state)[0]
+                              links, table, clear, solids, work, stack, state)[0]
 
 
 @helper
 def _lit(p, n, ng, v, sd, m, mats, lights, ambient, blinn, eps, bounds, links, table, clear,
-         stack, state, out, log, count, ray, depth):
+         solids, work, stack, state, out, log, count, ray, depth):
     """The local intensity at ``p`` (normal ``n``, geometric normal ``ng``, both facing
     the viewer ``v``; color ``sd``; material row ``m``) into ``out`` (3,): ambient plus
     every light's diffuse and specular terms (an area light's from its center), each
@@ -256,7 +264,8 @@ def _lit(p, n, ng, v, sd, m, mats, lights, ambient, blinn, eps, bounds, links, t
         for c in range(3):
             o[c] = p[c] + side * eps * ng[c]
         through, far, d3[0], d3[1], d3[2] = _seen(o[0], o[1], o[2], 0.0, s, lights, bounds,
-                                                  links, table, clear, stack, state)
+                                                  links, table, clear, solids, work, stack,
+                                                  state)
         if log.shape[0] > 0:
             _log(log, count, np.int64(-1), ray, np.int64(SHADOW), depth + 1, o, d3, far,
                  np.int64(-1), zero, zero, s, through)
@@ -337,7 +346,7 @@ def _detail(f, m, a, b, secondary, uvs, tangents, maps, mats, texels, levels, sd
     Blinn's bump mapping, N' = (N . n) n + B_u (n x P_v) - B_v (n x P_u), N = P_u x
     P_v, turned to n's side (``tangents[f]``: P_u, P_v; B_u, B_v central differences
     one texel apart); ``s``: scratch of 24 reals."""
-    if f >= uvs.shape[0] or f >= tangents.shape[0]:
+    if f < 0 or f >= uvs.shape[0] or f >= tangents.shape[0]:
         return
     a0 = 1.0 - a - b
     tu = a0 * uvs[f, 0, 0] + a * uvs[f, 1, 0] + b * uvs[f, 2, 0]
@@ -384,14 +393,17 @@ def _detail(f, m, a, b, secondary, uvs, tangents, maps, mats, texels, levels, sd
 def trace_sample(origin, direction, first, given, sample, seed, max_depth, eps, blinn, bounds,
                  links, table, prim_facet, facet_row, clear, world_n, vertex_normals, colors,
                  facet_mat, front, mats, lights, ambient, background, uvs, tangents, maps,
-                 texels, levels, rays, stack, out, log, count):
+                 texels, levels, solids, work, rays, stack, out, log, count):
     """Walk the ray tree of one sample whose primary ray (``origin``, ``direction``:
     unit) meets facet ``first`` (-1: nothing; then ``out`` is NaN), where the shading
     stage found the local intensity ``given`` (3,): the intensity into ``out`` (3,).
     ``rays``: a (MAX_RAYS + 1, :data:`RAY_COLUMNS`) stack of rays; ``uvs`` (G, 3, 2)
     and ``tangents`` (G, 6) the facets' texture coordinates and P_u, P_v (empty: no
-    maps), ``maps`` (M, 3, 5) each material's maps in ``texels`` and ``levels``."""
-    if first < 0:
+    maps), ``maps`` (M, 3, 5) each material's maps in ``texels`` and ``levels``;
+    ``solids`` (:mod:`scanline._kernels.csg`, ``work`` its scratch) the solids, met as
+    exactly as the triangles (a primary ray whose ``first`` is :data:`SOLID` meets a
+    solid first)."""
+    if first < 0 and first != SOLID:
         for c in range(3):
             out[c] = math.nan
         return
@@ -421,6 +433,7 @@ def trace_sample(origin, direction, first, given, sample, seed, max_depth, eps, 
     weight = np.empty(3)
     tint = np.empty(3)
     scratch = np.empty(24)
+    sn = np.empty(3)
     while top > 0:
         top -= 1
         ray += 1
@@ -432,13 +445,19 @@ def trace_sample(origin, direction, first, given, sample, seed, max_depth, eps, 
         parent = int(rays[top, PARENT])
         kind = int(rays[top, KIND])
         left = int(rays[top, LEFT])
-        if parent < 0:
+        code = np.int64(-1)
+        if parent < 0 and first >= 0:
             row = facet_row[first]
             t, u, w = moller_trumbore(o[0], o[1], o[2], d[0], d[1], d[2], table, row)
+        elif parent < 0:                 # the primary ray's first surface is a solid's
+            t, row, u, w = math.inf, np.int64(-1), 0.0, 0.0
         else:
             t, row, u, w = nearest(o[0], o[1], o[2], d[0], d[1], d[2], 0.0, math.inf, bounds,
                                    links, table, stack)
-        if row < 0:
+        if not (parent < 0 and first >= 0):
+            t, code = first_surface(o[0], o[1], o[2], d[0], d[1], d[2], 0.0,
+                                    t if row >= 0 else math.inf, solids, work, sn)
+        if row < 0 and code < 0:
             # leaving the scene: the environment map of the surface left, if any
             if 0 <= left < maps.shape[0] and maps[left, ENVIRONMENT, 0] >= 0:
                 at = maps[left, ENVIRONMENT]
@@ -454,18 +473,29 @@ def trace_sample(origin, direction, first, given, sample, seed, max_depth, eps, 
                 _log(log, count, ray, parent, kind, depth, o, d, math.inf, np.int64(-1), weight,
                      local, np.int64(-1), 0.0)
             continue
-        f = prim_facet[row]
-        m = facet_mat[f]
-        for c in range(3):
-            p[c] = table[row, c] + u * table[row, 3 + c] + w * table[row, 6 + c]
-            n[c] = ((1.0 - u - w) * vertex_normals[f, 0, c] + u * vertex_normals[f, 1, c]
-                    + w * vertex_normals[f, 2, c])
-            sd[c] = (1.0 - u - w) * colors[f, 0, c] + u * colors[f, 1, c] + w * colors[f, 2, c]
-            ng[c] = world_n[f, c]
-            v[c] = -d[c]
+        if code >= 0:          # a solid's surface: its exact normal and material
+            f = np.int64(-1)
+            m = solids[9][code_primitive(code, solids[1], solids[6])]
+            for c in range(3):
+                p[c] = o[c] + t * d[c]
+                n[c] = sn[c]
+                ng[c] = sn[c]
+                sd[c] = mats[m, 8 + c]
+                v[c] = -d[c]
+        else:
+            f = prim_facet[row]
+            m = facet_mat[f]
+            for c in range(3):
+                p[c] = table[row, c] + u * table[row, 3 + c] + w * table[row, 6 + c]
+                n[c] = ((1.0 - u - w) * vertex_normals[f, 0, c] + u * vertex_normals[f, 1, c]
+                        + w * vertex_normals[f, 2, c])
+                sd[c] = ((1.0 - u - w) * colors[f, 0, c] + u * colors[f, 1, c]
+                         + w * colors[f, 2, c])
+                ng[c] = world_n[f, c]
+                v[c] = -d[c]
         # which side the ray meets: the primary ray the side the back-face test saw
         entering = ng[0] * d[0] + ng[1] * d[1] + ng[2] * d[2] < 0
-        toward = front[f] if parent < 0 else entering
+        toward = front[f] if parent < 0 and f >= 0 else entering
         nn = math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2])
         r = (1.0 if toward else -1.0) / nn if nn != 0 else 0.0
         for c in range(3):
@@ -479,7 +509,7 @@ def trace_sample(origin, direction, first, given, sample, seed, max_depth, eps, 
                 local[c] = given[c]
         else:
             _lit(p, n, ng, v, sd, m, mats, lights, ambient, blinn, eps, bounds, links, table,
-                 clear, stack, state, local, log, count, ray, depth)
+                 clear, solids, work, stack, state, local, log, count, ray, depth)
         kt = mats[m, KT]
         kr = mats[m, KR]
         for c in range(3):
@@ -530,7 +560,7 @@ def trace_sample(origin, direction, first, given, sample, seed, max_depth, eps, 
 def trace_all(start, step, origins, directions, firsts, givens, samples, seed, max_depth, eps,
               blinn, bounds, links, table, prim_facet, facet_row, clear, world_n,
               vertex_normals, colors, facet_mat, front, mats, lights, ambient, background, uvs,
-              tangents, maps, texels, levels, out, log, count):
+              tangents, maps, texels, levels, solids, out, log, count):
     """:func:`trace_sample` for every sample (rows of ``origins``, ``directions``,
     ``firsts``, ``givens`` and ``samples``, the samples' numbers for the random numbers) into
     ``out`` (P, 3): the chunks of :data:`CHUNK` samples numbered ``start``, ``start +
@@ -540,13 +570,14 @@ def trace_all(start, step, origins, directions, firsts, givens, samples, seed, m
     total = origins.shape[0]
     stack = np.empty(STACK, np.int64)
     rays = np.empty((MAX_RAYS + 1, RAY_COLUMNS))
+    work = solid_scratch(solids)
     for chunk in range(start, (total + CHUNK - 1) // CHUNK, max(step, 1)):
         for i in range(chunk * CHUNK, min(total, (chunk + 1) * CHUNK)):
             trace_sample(origins[i], directions[i], firsts[i], givens[i], samples[i], seed,
                          max_depth, eps, blinn, bounds, links, table, prim_facet, facet_row,
                          clear, world_n, vertex_normals, colors, facet_mat, front, mats,
                          lights, ambient, background, uvs, tangents, maps, texels, levels,
-                         rays, stack, out[i], log, count)
+                         solids, work, rays, stack, out[i], log, count)
 
 
 @kernel

@@ -43,6 +43,7 @@ class Traced:
     seed: int
     eps: float
     clear: np.ndarray
+    solids: tuple = ()
 
 
 def material_table(materials, gamma):
@@ -120,11 +121,13 @@ def light_table(lights):
     return np.ascontiguousarray(np.hstack([rows, area])), ambient
 
 
-def traced(scene, shading, background, max_depth, seed):
+def traced(scene, shading, background, max_depth, seed, program=None):
     """The :class:`Traced` form of ``scene`` with the shading options ``shading``
-    (lights, gamma, the specular term) and the linear ``background`` (3,)."""
+    (lights, gamma, the specular term) and the linear ``background`` (3,); ``program``:
+    the solids (:class:`scanline.solids.program.Program`) traced with the facets."""
     from ..budget import check
     from ..shading import decoded
+    from ..solids.program import tracer_solids
     from .bvh import BVH
 
     world = v.kernel_array(scene.world)
@@ -133,7 +136,9 @@ def traced(scene, shading, background, max_depth, seed):
     tree = BVH(world)
     facet_row = np.empty(len(world), np.int64)
     facet_row[tree.order] = np.arange(len(world))
-    mats = material_table(scene.materials, shading.gamma)
+    solid_materials = () if program is None else tuple(program.materials)
+    mats = material_table(tuple(scene.materials) + solid_materials, shading.gamma)
+    solids = tracer_solids(program, len(scene.materials))
     kt = mats[:, 12][scene.facet_mesh] if len(world) else np.zeros(0)
     lights, ambient = light_table(shading.lights)
     with np.errstate(over="ignore"):
@@ -150,7 +155,7 @@ def traced(scene, shading, background, max_depth, seed):
                                                                      shading.gamma)),
         v.kernel_array(scene.facet_mesh, np.int64), v.kernel_array(scene.front, np.bool_),
         mats, lights, v.kernel_array(ambient), v.kernel_array(background),
-        *map_tables(scene, shading.gamma)), lights, int(seed), eps, clear)
+        *map_tables(scene, shading.gamma), solids), lights, int(seed), eps, clear, solids)
 
 
 def primary_rays(scene, xs, ys):
@@ -207,7 +212,7 @@ def shadow_test(prepared, twin=False):
         pts = v.kernel_array(np.reshape(points, (-1, 3)))
         out = np.empty((len(lights), len(pts)))
         args = (pts, prepared.seed, prepared.eps, lights, tree.bounds, tree.links, tree.table,
-                prepared.clear, out)
+                prepared.clear, prepared.solids, out)
         if twin:
             with np.errstate(all="ignore"):
                 python(k.shadow_all)(0, 1, *args)
@@ -271,12 +276,14 @@ def trace(prepared, origins, directions, firsts, givens, samples, log=None):
     return out, int(count[0])
 
 
-def shade(fb, scene, layer, shading, options):
+def shade(fb, scene, layer, shading, options, hits=None):
     """Color the pixels of ``layer`` (the ray-casting method's
     :class:`~scanline.visible.visibility.Layer` of ``scene``) into ``fb`` by tracing
     their rays; ``options``: the :class:`~scanline.visible.MethodOptions`
-    (``max_depth``, ``seed``).  Returns the facet seen at each pixel (H, W int32,
-    -1: none)."""
+    (``max_depth``, ``seed``); ``hits``: the solids seen in front of the layer
+    (:class:`scanline.solids.render.Hits`: their pixels' rays start at a solid, and
+    every further ray meets the solids too).  Returns the facet seen at each pixel
+    (H, W int32, -1: none)."""
     from .._kernels._jit import call
     from ..errors import ArgumentValueError
     from ..shading.buffer import gamma_tables
@@ -288,15 +295,29 @@ def shade(fb, scene, layer, shading, options):
                                  f"frame buffer is mode {fb.mode!r}")
     ids = layer.ids
     facets = np.full(ids.shape, -1, np.int32)
-    ys, xs = np.nonzero(ids >= 0)
-    if not len(ys):
+    meshes = ids >= 0
+    if hits is not None:
+        meshes[hits.ys, hits.xs] = False
+    ys, xs = np.nonzero(meshes)
+    if not len(ys) and (hits is None or not len(hits.ys)):
         return facets
     first = scene.facet[ids[ys, xs]]
     facets[ys, xs] = first
     depth = MAX_DEPTH if options.max_depth is None else options.max_depth
     background = background_linear(fb, shading.gamma)
-    prepared = traced(scene, shading, background, depth, options.seed or 0)
-    given = primary_light(scene, layer, ys, xs, shading, prepared, background)
+    prepared = traced(scene, shading, background, depth, options.seed or 0,
+                      None if hits is None else hits.program)
+    given = primary_light(scene, layer, ys, xs, shading, prepared, background) if len(ys) \
+        else np.zeros((0, 3))
+    if hits is not None and len(hits.ys):
+        from dataclasses import replace
+
+        from ..solids.render import local_light
+
+        lit = local_light(scene, hits, replace(shading, shadows=shadow_test(prepared)))
+        ys, xs = np.concatenate([ys, hits.ys]), np.concatenate([xs, hits.xs])
+        first = np.concatenate([first, np.full(len(hits.ys), k.SOLID)])
+        given = np.vstack([given, lit])
     origins, directions = primary_rays(scene, xs, ys)
     linear = trace(prepared, origins, directions, first, given,
                    ys.astype(np.int64) * fb.width + xs)

@@ -224,14 +224,18 @@ def run(fb, meshes, camera, options, materials=None, colors=None, crease_angle=m
         facets, depth = composite(fb, scene, seen.bands, seen.samples, shading)
     elif METHODS[name].traced:
         from ..raytrace.render import shade as trace
+        from ..solids.render import cast, mark
 
-        facets = trace(fb, opaque, seen, shading, options.visible)
+        hits = cast(opaque, solids, seen.depth) if solids else None
+        facets = trace(fb, opaque, seen, shading, options.visible, hits)
         depth = seen.depth
     else:
         facets = shade(fb, opaque, seen, shading)
         depth, pieces = seen.depth, seen.pieces
     solid_map = None
-    if solids:
+    if solids and METHODS[name].traced:
+        facets, depth, solid_map = mark(hits, facets, depth)
+    elif solids:
         from ..solids.render import draw
 
         facets, depth, solid_map = draw(fb, scene, solids, shading, facets, depth)

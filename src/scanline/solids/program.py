@@ -151,3 +151,17 @@ class Program:
                       *self._arguments(), out, status)
         self._check(status, "rays")
         return out
+
+
+def tracer_solids(program, first_material):
+    """The ray tracer's ``solids`` tuple (:mod:`scanline._kernels.csg`) of ``program``
+    (None: no solids), the primitives' materials numbered from ``first_material`` in
+    the tracer's material table."""
+    if program is None:
+        return (np.zeros((0, 2), np.int64), np.zeros((0, 35)), np.zeros((0, 6)),
+                np.zeros((0, 2), np.int64), np.zeros((0, 9)), np.zeros((0, 3, 3)),
+                np.zeros(0, np.int64), 1, 1, np.zeros(0, np.int64), np.zeros(0))
+    count = len(program.primitives)
+    kt = np.array([m.transparency for m in program.materials], np.float64)
+    return (*program._arguments()[:7], program.lists, program.length,
+            first_material + np.arange(count, dtype=np.int64), kt)

@@ -50,7 +50,8 @@ class Hits:
     """The solids' first surfaces at pixels (``ys``, ``xs``) seen in front of the
     meshes: world ``points`` and unit ``normals`` (facing the viewer), ``rays`` (their
     unit directions), ``depth`` (device), ``solid`` (the index in the list given),
-    ``material`` (the primitive's)."""
+    ``primitive`` (the program's) and ``materials`` (the primitives'), ``program``
+    (:class:`~scanline.solids.program.Program` of the solids' union)."""
     ys: np.ndarray
     xs: np.ndarray
     points: np.ndarray
@@ -60,6 +61,7 @@ class Hits:
     solid: np.ndarray
     materials: list
     primitive: np.ndarray
+    program: object
 
 
 def cast(scene, solids, depth):
@@ -89,40 +91,50 @@ def cast(scene, solids, depth):
     d = directions[seen]
     n *= np.where((n * d).sum(axis=1) > 0, -1.0, 1.0)[:, None]
     return Hits(ys[seen], xs[seen], points[seen], n, d, z[seen], owner[prim],
-                program.materials, prim)
+                program.materials, prim, program)
 
 
 def local_light(scene, hits, shading):
     """The illumination model at the hits (linear RGB, (M, 3)), primitive by
-    primitive's material; unlit colors for ``shading="none"``."""
+    primitive's material (its color decoded with the shading's gamma, as a mesh's);
+    unlit colors for ``shading="none"``."""
     from ..lighting import intensity
+    from ..shading import decode
 
     out = np.empty((len(hits.ys), 3))
     for k in np.unique(hits.primitive):
         sel = hits.primitive == k
         m = hits.materials[k]
+        color = decode(np.asarray(m.color, np.float64), shading.gamma)
         if shading.model == "none":
-            out[sel] = m.color
+            out[sel] = color
             continue
         vis = None if shading.shadows is None else shading.shadows(hits.points[sel])
         out[sel] = intensity(hits.points[sel], hits.normals[sel], scene.eye, list(shading.lights),
-                             m, specular=shading.specular, visibility=vis)
+                             m, specular=shading.specular, color=np.broadcast_to(color, (int(sel.sum()), 3)),
+                             visibility=vis)
     return out
 
 
-def draw(fb, scene, solids, shading, facets, depth):
-    """Draw ``solids`` over what the method drew of the meshes (``facets``, ``depth``:
-    (H, W)) where they are nearer: returns the new facets (-1 at a solid), depth and
-    the solid seen at each pixel (-1: none)."""
-    from ..shading.compose import store
-
-    hits = cast(scene, solids, depth)
+def mark(hits, facets, depth):
+    """``facets`` (-1 where a solid is seen) and ``depth`` (H, W) with the hits in
+    front, and the solid seen at each pixel (-1: none)."""
     seen = np.full(depth.shape, -1, np.int64)
     if len(hits.ys):
-        store(fb, hits.ys, hits.xs, local_light(scene, hits, shading), shading.gamma)
         facets = facets.copy()
         depth = depth.copy()
         facets[hits.ys, hits.xs] = -1
         depth[hits.ys, hits.xs] = hits.depth
         seen[hits.ys, hits.xs] = hits.solid
     return facets, depth, seen
+
+
+def draw(fb, scene, solids, shading, facets, depth):
+    """Draw ``solids`` over what the method drew of the meshes (``facets``, ``depth``:
+    (H, W)) where they are nearer: returns :func:`mark`'s arrays."""
+    from ..shading.compose import store
+
+    hits = cast(scene, solids, depth)
+    if len(hits.ys):
+        store(fb, hits.ys, hits.xs, local_light(scene, hits, shading), shading.gamma)
+    return mark(hits, facets, depth)

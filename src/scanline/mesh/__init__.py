@@ -1,7 +1,8 @@
 """Three-dimensional object representations (Hearn & Baker, chapter 10): polygon
 meshes with their polygon tables and plane equations, quadric surfaces and
 superquadrics, sweep representations, tensor-product surfaces and the Utah teapot,
-and mesh files (OBJ, PLY, STL, glTF).
+blobby objects (:func:`blobby`, iso-surfaces of summed densities), and mesh files
+(OBJ, PLY, STL, glTF).
 
 >>> import scanline as sl
 >>> cube = sl.mesh.cube()
@@ -11,6 +12,7 @@ and mesh files (OBJ, PLY, STL, glTF).
 (True, False)
 """
 
+from .blobby import blobby
 from .files import FORMATS, MeshFileError, MeshFileWarning, load, load_all, save
 from .materials import MaterialRecord
 from .mesh import Mesh, merge
@@ -20,7 +22,7 @@ from .sweeps import from_surface, rotational_sweep, sweep, teapot, translational
 from .tables import PolygonTables
 
 __all__ = ["FORMATS", "MaterialRecord", "Mesh", "MeshFileError", "MeshFileWarning",
-           "PolygonTables", "box", "cube", "ellipsoid",
+           "PolygonTables", "blobby", "box", "cube", "ellipsoid",
            "from_surface", "load", "load_all", "merge", "rotational_sweep", "save", "sphere",
            "superellipsoid", "superquadric", "supertoroid", "sweep", "teapot", "torus",
            "translational_sweep"]

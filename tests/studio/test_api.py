@@ -305,10 +305,45 @@ def test_random_scan_cycle_grows_with_lines(client):
     assert many["period"] > few["period"] and many["refresh_rate"] < few["refresh_rate"] <= 60
 
 
+@pytest.mark.parametrize("kind, query, device", [
+    ("penetration", "lines=10", "BeamPenetration"), ("shadow-mask", "arrangement=in-line",
+                                                     "ShadowMask"),
+    ("storage", "remove=sun", "StorageTube"), ("plasma", "rate=50", "PlasmaPanel"),
+    ("lcd", "response=0.002", "LCD")])
+def test_color_storage_and_flat_panel_devices(client, kind, query, device):
+    from scanline.studio import devices
+
+    info = client.get(f"/api/devices/{kind}/info?{query}").json()
+    w, h = info["screen"]
+    r = client.get(f"/api/devices/{kind}/frame?t=0.01&{query}")
+    assert r.status_code == 200 and len(r.content) == w * h * 4
+    sim = devices.simulation(kind, dict(p.split("=") for p in query.split("&")))
+    assert type(sim).__name__ == device
+    assert r.content == devices.frame(sim, 0.01)[0]
+    assert r.headers["X-Beam"].split(",")[2] == sim.beam(0.01)[2]
+
+
+def test_devices_page_text_is_readable_and_planes_are_explained(client):
+    from scanline.studio import devices
+
+    info = client.get("/api/devices/raster/info").json()
+    assert info["bits_needed"] == 3 and info["plane_used"] == [True] * 3 + [False] * 5
+    # the label is drawn in white on the dark blue screen
+    table = [tuple(e["rgb"]) for e in info["color_table"] if e["pixels"]]
+    assert (255, 255, 255) in table and (0, 0, 0) not in table
+    assert devices.frame_buffer().color_table[0].tolist() == [25, 25, 112]
+
+
 @pytest.mark.parametrize("query", ["rate=nan", "rate=-1", "lines=99999", "persistence=0",
-                                   "interlaced=maybe", "t=abc", "speed=inf"])
+                                   "interlaced=maybe", "t=abc", "speed=inf",
+                                   "kind=shadow-mask&misconvergence=99",
+                                   "kind=shadow-mask&arrangement=trinitron",
+                                   "kind=storage&remove=moon", "kind=lcd&response=-1",
+                                   "kind=plasma&rate=x"])
 def test_bad_device_parameters(client, query):
     kind = "random" if "lines" in query or "speed" in query else "raster"
+    if query.startswith("kind="):
+        kind, query = query[5:].split("&")
     r = client.get(f"/api/devices/{kind}/frame?{query}")
     assert r.status_code == 422 and r.json()["error"]
     assert client.get("/api/devices/teletype/info").status_code == 404

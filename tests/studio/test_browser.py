@@ -202,3 +202,29 @@ def test_devices_page_animates_both_screens(server, page):
     assert lit[0] > 1000 and lit[1] > 50
     assert "refresh period 16.67 ms" in page.inner_text("#raster-info")
     assert page.locator("#planes img").count() == 8
+    captions = page.locator("#planes figcaption").all_inner_texts()
+    assert captions[0] == "bit 0 (value 1)" and captions[7] == "bit 7 (value 128): all 0"
+    assert page.locator("#planes figure.unused").count() == 5
+    assert "need 3 of the 8 bit planes" in page.inner_text("#planes-notes")
+
+
+@pytest.mark.parametrize("kind", ["penetration", "shadow-mask", "storage", "plasma", "lcd"])
+def test_devices_page_steps_each_color_and_flat_panel_display(server, page, kind):
+    errors = []
+    page.on("console", lambda m: errors.append(m.text) if m.type == "error" else None)
+    page.goto(f"{server}/devices")
+    page.wait_for_function("window.devices && window.devices.device.t > 0", timeout=30000)
+    page.select_option("#kind", kind)
+    page.wait_for_function(f"window.devices.device.kind === '{kind}' && "
+                           "window.devices.device.t > 0.002", timeout=30000)
+    page.wait_for_timeout(700)
+    size, lit = page.evaluate("""() => { const c = document.getElementById('device');
+        const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+        let n = 0; for (let i = 0; i < d.length; i += 4) if (d[i] + d[i + 1] + d[i + 2] > 60) n++;
+        return [[c.width, c.height], n]; }""")
+    info = page.evaluate(f"fetch('/api/devices/{kind}/info').then((r) => r.json())")
+    assert size == info["screen"] and lit > 50
+    assert page.locator(f"[data-for='{kind}']").count() == 0 or \
+        page.locator(f"[data-for='{kind}']").is_visible()
+    assert page.inner_text("#kind-notes") and page.inner_text("#device-info")
+    assert not errors

@@ -44,10 +44,10 @@ OFF = (0, 0, 0)
 
 #: Dot arrangements of a shadow-mask tube, and the (u, v) centers of the red,
 #: green and blue dots inside a pixel's cell (fractions of the cell, v down).
-TRIADS = {"delta": ((0.27, 0.32), (0.73, 0.32), (0.5, 0.74)),
+TRIADS = {"delta": ((0.26, 0.3), (0.74, 0.3), (0.5, 0.72)),
           "in-line": ((1 / 6, 0.5), (0.5, 0.5), (5 / 6, 0.5))}
 #: Dot radius as a fraction of the cell.
-DOT_RADIUS = {"delta": 0.2, "in-line": 0.15}
+DOT_RADIUS = {"delta": 0.22, "in-line": 0.16}
 #: Most screen pixels per frame-buffer pixel of a shadow-mask screen.
 MAX_DOTS = 16
 

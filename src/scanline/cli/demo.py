@@ -118,7 +118,8 @@ _STUDIO = (
 FIGURE_MODULES = ("figures", "figures_attributes", "figures_antialias", "figures_color",
                   "figures_text", "figures_clip", "figures_scene", "figures_curves",
                   "figures_surfaces", "figures_three_d", "figures_visible", "figures_shading",
-                  "figures_surface_rendering", "figures_animation", "figures_octree")
+                  "figures_surface_rendering", "figures_animation", "figures_octree",
+                  "figures_devices")
 
 
 def all_figures():

@@ -423,14 +423,16 @@ def meets(lo, hi, t, boxes, j):
 
 
 @kernel
-def scene_octree(box, lo, hi, max_depth, leaf, nbox, nchild, nstart, ncount, entries):
+def scene_octree(box, lo, hi, max_depth, leaf, smallest, nbox, nchild, nstart, ncount,
+                 entries):
     """The octree of a screen-space scene's triangles (Hearn & Baker 13-10: the
     octree of the viewing volume, after the perspective transformation, so the view
     looks along its depth axis): node 0 is ``box`` (x0, x1, y0, y1, z0, z1); a node
     whose triangles (boxes ``lo``, ``hi`` (T, 3), all given to the root) number more
     than ``leaf`` is split at its middle into 8, each child listing the triangles
-    whose boxes meet its own, unless it is ``max_depth`` levels down, the split would
-    list more than twice as many, or the arrays are full.  Node ``i``: ``nbox[i]``,
+    whose boxes meet its own, unless it is ``max_depth`` levels down, narrower and
+    lower than ``smallest`` (pixels), the split would list more than twice as many,
+    or the arrays are full.  Node ``i``: ``nbox[i]``,
     first child ``nchild[i]`` (-1 for a leaf), its triangles ``entries[nstart[i]:
     nstart[i] + ncount[i]]``.  Returns (nodes, entries used)."""
     cap = nbox.shape[0]
@@ -452,7 +454,8 @@ def scene_octree(box, lo, hi, max_depth, leaf, nbox, nchild, nstart, ncount, ent
     while o < nxt:
         nchild[o] = -1
         cnt = ncount[o]
-        if cnt <= leaf or level[o] >= max_depth or nxt + 8 > cap:
+        if (cnt <= leaf or level[o] >= max_depth or nxt + 8 > cap
+                or max(nbox[o, 1] - nbox[o, 0], nbox[o, 3] - nbox[o, 2]) < smallest):
             o += 1
             continue
         xm = 0.5 * (nbox[o, 0] + nbox[o, 1])

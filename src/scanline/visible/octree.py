@@ -36,7 +36,11 @@ from ..budget import check
 from .visibility import Layer
 
 #: Most triangles a leaf lists before it is split.
-LEAF = 8
+LEAF = 16
+
+#: Nodes narrower and lower than this many pixels are not split: the depth test within
+#: a leaf sorts out its few pixels sooner than more levels would.
+SMALLEST = 4.0
 
 #: The default deepest level of the scene's octree.
 DEPTH = 10
@@ -85,8 +89,8 @@ def octree(scene, options=None):
     nstart = np.empty(node_cap, np.int64)
     ncount = np.empty(node_cap, np.int64)
     entries = np.empty(entry_cap, np.int64)
-    call(k.scene_octree, 20 * n, box, lo, hi, int(depth_limit), LEAF, nbox, nchild, nstart,
-         ncount, entries)
+    call(k.scene_octree, 20 * n, box, lo, hi, int(depth_limit), LEAF, SMALLEST, nbox,
+         nchild, nstart, ncount, entries)
     final = np.zeros((h, w), np.uint8)
     call(k.octree_visible, 20 * n + 3 * w * h, tri, q, nbox, nchild, nstart, ncount, entries,
          ids, depth, final)

@@ -119,7 +119,7 @@ FIGURE_MODULES = ("figures", "figures_attributes", "figures_antialias", "figures
                   "figures_text", "figures_clip", "figures_scene", "figures_curves",
                   "figures_surfaces", "figures_three_d", "figures_visible", "figures_shading",
                   "figures_surface_rendering", "figures_animation", "figures_octree",
-                  "figures_devices")
+                  "figures_devices", "figures_csg")
 
 
 def all_figures():

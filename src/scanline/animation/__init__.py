@@ -7,7 +7,8 @@ key-frame specifications, in-between frames — and the tools of an animation pa
   & Baker's spacing laws for simulated accelerations), :func:`ease` and the Penner
   easing catalog;
 - key frames: :class:`KeyFrames` for any numeric parameter (linear, step,
-  Catmull–Rom, cardinal, Kochanek–Bartels in-betweens, per-segment easing) and
+  Catmull–Rom, cardinal, Kochanek–Bartels in-betweens, per-segment easing),
+  :class:`RotationKeyFrames` for orientations (quaternion slerp and squad) and
   :class:`Timeline`;
 - motion specification: :func:`bouncing_ball` (direct motion), :class:`MotionPath`
   (any :mod:`scanline.curves` curve by arc length), :class:`Chain` (forward and
@@ -36,12 +37,14 @@ from .motion import ballistic, bouncing_ball
 from .output import Animation
 from .paths import MotionPath
 from .render import SchedulerUnreachable
+from .rotations import ROTATION_INTERPOLATIONS, RotationKeyFrames
 from .storyboard import contact_sheet
 from .timing import FramePlan, duration_of, frame_count, frames_needed, inbetween_times
 
 __all__ = ["Animation", "Chain", "Drag", "DynamicsError", "EASINGS", "Equalization", "Force",
            "FramePlan", "Gravity", "INTERPOLATIONS", "KeyFrames", "MotionPath", "Particles",
-           "Plane", "Reach", "SPACINGS", "SchedulerUnreachable", "Spring", "Timeline",
+           "Plane", "ROTATION_INTERPOLATIONS", "Reach", "RotationKeyFrames", "SPACINGS",
+           "SchedulerUnreachable", "Spring", "Timeline",
            "UnreachableTarget", "ballistic", "beier_neely", "bouncing_ball", "contact_sheet",
            "cubic_bezier", "duration_of", "ease", "equalization", "equalize", "frame_count",
            "frames_needed", "inbetween_times", "morph", "warp"]

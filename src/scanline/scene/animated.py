@@ -12,6 +12,9 @@ addressable by name (``segments[ball].transform[0].translate``):
 - ``paths``: motion along a curve by arc length, eased, optionally turning an angle
   to face along the path;
 - ``morphs``: a polygon's points through key shapes, equalized as Hearn & Baker do;
+- ``rotations``: key orientations of a 3-D ``rotate = {quaternion = [w, x, y, z]}``
+  step (given as quaternions, axis and angle, or Euler angles), in-betweens by
+  quaternion slerp or squad (Shoemake 1985);
 - ``storyboard``: captions at times, for ``scanline storyboard``.
 
 Each frame is the base scene with the values of that time written in, checked and
@@ -32,7 +35,8 @@ from .locate import line_of
 from .scene import Scene
 from .schema import _fail, _real, _table
 
-_ANIMATION = {"fps", "duration", "start", "title", "storyboard", "tracks", "paths", "morphs"}
+_ANIMATION = {"fps", "duration", "start", "title", "storyboard", "tracks", "paths", "morphs",
+              "rotations"}
 _TRACK = {"target", "keys", "interpolation", "ease", "tension", "continuity", "bias"}
 _KEY = {"time", "value", "ease"}
 _PATH = {"target", "curve", "start", "end", "ease", "orient", "arc_length"}
@@ -40,6 +44,9 @@ _CURVE = {"type", "points", "order", "closed", "tension"}
 _MORPH = {"target", "keys", "interpolation", "ease", "closed", "align"}
 _MORPH_KEY = {"time", "points", "ease"}
 _STORY = {"time", "caption"}
+_ROTATION = {"target", "keys", "interpolation", "ease"}
+_ROTATION_KEY = {"time", "quaternion", "axis", "degrees", "radians", "euler", "ease"}
+_EULER = {"seq", "degrees", "radians"}
 CURVES = ("polyline", "bezier", "bspline", "catmull-rom", "cardinal")
 
 class _UNPLANNED:
@@ -267,8 +274,10 @@ class AnimatedScene:
             self._path(p, f"animation.paths[{i}]", timeline, data)
         for i, m in enumerate(_list(a.get("morphs", []), "animation.morphs")):
             self._morph(m, f"animation.morphs[{i}]", timeline, data)
+        for i, r in enumerate(_list(a.get("rotations", []), "animation.rotations")):
+            self._rotation(r, f"animation.rotations[{i}]", timeline, data)
         if not timeline.tracks:
-            _fail("animation", "animates nothing: give tracks, paths or morphs")
+            _fail("animation", "animates nothing: give tracks, paths, morphs or rotations")
         self.timeline = timeline
         self.storyboard = []
         for i, s in enumerate(_list(a.get("storyboard", []), "animation.storyboard")):
@@ -406,6 +415,24 @@ class AnimatedScene:
                       ease=self._eases(keys, m.get("ease", "linear"), path))
         self._add(timeline, m["target"], tokens, track, _plain, path)
 
+    def _rotation(self, r, path, timeline, data):
+        from .. import animation as an
+
+        r = _table(r, path, _ROTATION, ("target", "keys"))
+        tokens, current = self._target(r["target"], path, data)
+        if _numeric_shape(current, f"{path}.target", r["target"]) != (4,):
+            _fail(f"{path}.target", f"{r['target']!r} holds {current!r}; a rotation track "
+                  "animates a quaternion [w, x, y, z]: target a 3-D step's "
+                  "rotate.quaternion")
+        keys = [_table(k, f"{path}.keys[{i}]", _ROTATION_KEY, ("time",))
+                for i, k in enumerate(_list(r["keys"], f"{path}.keys", 1))]
+        times = self._keys_times(keys, path)
+        rotations = [_orientation(k, f"{path}.keys[{i}]") for i, k in enumerate(keys)]
+        track = _wrap(path, an.RotationKeyFrames, times, rotations,
+                      interpolation=r.get("interpolation", "slerp"),
+                      ease=self._eases(keys, r.get("ease", "linear"), path))
+        self._add(timeline, r["target"], tokens, track, _quaternion, path)
+
     # -- frames ---------------------------------------------------------------------------
     def __getstate__(self):
         """Pickled for worker processes without the static scene's display file (the
@@ -540,6 +567,50 @@ class _Heading(_Along):
     def __call__(self, t):
         angle = self.motion.heading(self.motion.progress(t, self.start, self.end, self.ease))
         return angle if self.radians else math.degrees(angle)
+
+
+def _quaternion(q):
+    """A rotation track's value as the scene writes it: [w, x, y, z]."""
+    return q.wxyz.tolist()
+
+
+def _orientation(key, path):
+    """A rotation key's orientation: ``quaternion = [w, x, y, z]``, ``axis = [x, y, z]``
+    with ``degrees`` or ``radians``, or ``euler = {seq = "xyz", degrees = [...]}``."""
+    from ..transform3d.quaternion import Quaternion
+    from .schema import angle
+
+    given = [k for k in ("quaternion", "axis", "euler") if k in key]
+    if len(given) != 1:
+        _fail(path, "must give its orientation one way: quaternion = [w, x, y, z], axis = "
+              "[x, y, z] with degrees or radians, or euler = {seq = \"xyz\", degrees = [...]}")
+    unit = {k: key[k] for k in ("degrees", "radians") if k in key}
+    how = given[0]
+    if how != "axis" and unit:
+        _fail(f"{path}.{next(iter(unit))}", f"goes with axis, not with {how}")
+    if how == "quaternion":
+        q = key["quaternion"]
+        if not isinstance(q, list) or len(q) != 4:
+            _fail(f"{path}.quaternion", f"must be four numbers [w, x, y, z], got {q!r}")
+        return _wrap(f"{path}.quaternion", Quaternion.from_array,
+                     [_real(c, f"{path}.quaternion[{i}]") for i, c in enumerate(q)],
+                     "quaternion")
+    if how == "axis":
+        axis = key["axis"]
+        if not isinstance(axis, list) or len(axis) != 3:
+            _fail(f"{path}.axis", f"must be [x, y, z], got {axis!r}")
+        axis = [_real(c, f"{path}.axis[{i}]") for i, c in enumerate(axis)]
+        return _wrap(f"{path}.axis", Quaternion.from_axis_angle, axis, angle(unit, path))
+    e = _table(key["euler"], f"{path}.euler", _EULER, ("seq",))
+    units = [k for k in ("degrees", "radians") if k in e]
+    if len(units) != 1:
+        _fail(f"{path}.euler", "must give its angles in degrees or in radians: "
+              "{seq = \"xyz\", degrees = [10, 20, 30]}")
+    values = e[units[0]]
+    if not isinstance(values, list):
+        _fail(f"{path}.euler.{units[0]}", f"must be a list of angles, got {values!r}")
+    angles = [angle({units[0]: x}, f"{path}.euler.{units[0]}[{i}]") for i, x in enumerate(values)]
+    return _wrap(f"{path}.euler", Quaternion.from_euler, e["seq"], angles)
 
 
 def loads(text, format="toml", file=None):

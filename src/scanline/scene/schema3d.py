@@ -235,7 +235,9 @@ def step(step_, path):
     if name == "translate":
         return t3.translation(*_vector(arg, here))
     if name == "rotate":
-        a = s._table(arg, here, {"degrees", "radians", "axis", "pivot"})
+        a = s._table(arg, here, {"degrees", "radians", "axis", "pivot", "quaternion"})
+        if "quaternion" in a:
+            return _quaternion_step(a, here)
         unit = {k: a[k] for k in a if k in ("degrees", "radians")}
         axis = a.get("axis", "z")
         if isinstance(axis, list):
@@ -270,6 +272,30 @@ def step(step_, path):
     if name == "matrix":
         return s._call(here, t3.compose, arg)
     s._fail(path, f"has an unknown transformation {name!r}; use one of {', '.join(_STEPS)}")
+
+
+def _quaternion_step(a, here):
+    """``{rotate = {quaternion = [w, x, y, z], pivot = [x, y, z]}}``: the rotation of a
+    unit quaternion (Hearn & Baker 11-2; any nonzero multiple is the same rotation),
+    about the origin or the pivot."""
+    from ..transform3d.quaternion import Quaternion
+
+    s = _schema()
+    extra = sorted(set(a) - {"quaternion", "pivot"})
+    if extra:
+        s._fail(f"{here}.{extra[0]}", "cannot go with a quaternion (it holds the axis and "
+                "the angle); give one or the other")
+    q = a["quaternion"]
+    if not isinstance(q, list) or len(q) != 4:
+        s._fail(f"{here}.quaternion", f"must be four numbers [w, x, y, z], got {q!r}")
+    q = s._call(here, Quaternion.from_array,
+                [_real(c, f"{here}.quaternion[{i}]") for i, c in enumerate(q)], "quaternion")
+    m = q.matrix()
+    pivot = a.get("pivot")
+    if pivot is None:
+        return m
+    p = _vector(pivot, f"{here}.pivot")
+    return t3.compose(t3.translation(*p), m, t3.translation(*(-c for c in p)))
 
 
 def transformation(steps, path):

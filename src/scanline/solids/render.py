@@ -64,6 +64,34 @@ class Hits:
     program: object
 
 
+def pixels(solids, clip, scale, offset, shape):
+    """The pixels (ys, xs) whose rays may meet the solids: those in the device
+    rectangle of their bounding boxes' corners when every corner lies in front of the
+    eye (the bounding-rectangle test of Hearn & Baker 13-10), else every pixel."""
+    h, w = shape
+    lo = np.full(2, np.inf)
+    hi = np.full(2, -np.inf)
+    for s in solids:
+        a, b = s.bounds()
+        corners = np.array([[x, y, z] for x in (a[0], b[0]) for y in (a[1], b[1])
+                            for z in (a[2], b[2])])
+        with np.errstate(all="ignore"):
+            hom = corners @ clip[:, :3].T + clip[:, 3]
+            dev = hom[:, :2] / hom[:, 3:] * scale[:2] + offset[:2]
+        if not (np.isfinite(corners).all() and (hom[:, 3] > 0).all()
+                and np.isfinite(dev).all()):
+            lo[:], hi[:] = -np.inf, np.inf
+            break
+        lo, hi = np.minimum(lo, dev.min(axis=0)), np.maximum(hi, dev.max(axis=0))
+    x0, y0 = (max(int(np.floor(c)), 0) if np.isfinite(c) else 0 for c in lo)
+    x1, y1 = (min(int(np.ceil(c)), n - 1) if np.isfinite(c) else n - 1 for c, n in
+              zip(hi, (w, h)))
+    if x0 > x1 or y0 > y1:
+        return np.zeros(0, np.int64), np.zeros(0, np.int64)
+    ys, xs = np.divmod(np.arange((y1 - y0 + 1) * (x1 - x0 + 1)), x1 - x0 + 1)
+    return ys + y0, xs + x0
+
+
 def cast(scene, solids, depth):
     """Cast every pixel's ray of ``scene`` (its device and camera mapping) against
     ``solids``; :class:`Hits` where a solid is nearer than ``depth`` (H, W)."""
@@ -71,13 +99,12 @@ def cast(scene, solids, depth):
     from ..raytrace.render import primary_rays
     from .program import Program, flatten
 
-    h, w = depth.shape
-    ys, xs = np.divmod(np.arange(h * w), w)
-    origins, directions = primary_rays(scene, xs, ys)
     program = Program(union(*solids))
+    clip, scale, offset = scene.mapping
+    ys, xs = pixels(solids, clip, scale, offset, depth.shape)
+    origins, directions = primary_rays(scene, xs, ys)
     t, code, normal = program.cast(origins, directions)
     points = origins + np.where(code >= 0, t, 0.0)[:, None] * directions
-    clip, scale, offset = scene.mapping
     with np.errstate(all="ignore"):
         hom = points @ clip[:, :3].T + clip[:, 3]
         z = hom[:, 2] / hom[:, 3] * scale[2] + offset[2]

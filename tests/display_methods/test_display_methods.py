@@ -243,3 +243,31 @@ def test_anaglyph_refuses_mismatched_views():
         sl.draw3d.anaglyph(sl.FrameBuffer(4, 4), sl.FrameBuffer(5, 4))
     with pytest.raises(ScanlineError):
         sl.draw3d.anaglyph(np.zeros((4, 4)), sl.FrameBuffer(4, 4))
+
+
+def test_planes_through_vertices_and_faces_keep_the_mesh_closed():
+    # planes through mesh vertices, some containing whole faces (the torus's flat
+    # bottom band at z = -0.3 sin 72 degrees, the box's faces)
+    rng = np.random.default_rng(11)
+    meshes = [CUBE, sl.mesh.box((0, 0, 0), (1, 2, 3)), sl.mesh.torus(1, 0.3, resolution=(24, 10)),
+              sl.mesh.sphere(1, resolution=(16, 8))]
+    z = -0.3 * math.sin(math.radians(72))
+    cases = [(meshes[2], [(0, 0, -1, z)]), (meshes[2], [(0, 0, 1, -z)]),
+             (meshes[1], [(0, 0, -1, 0.0)]), (meshes[1], [(0, 0, 1, 0.0), (-1, -2, -1, 3)])]
+    for _ in range(60):
+        m = meshes[rng.integers(4)]
+        k = rng.integers(1, 4)
+        v = m.vertices[rng.integers(0, len(m.vertices), k)]
+        n = np.round(rng.normal(size=(k, 3)))
+        n[np.all(n == 0, axis=1)] = (1, 0, 0)
+        cases.append((m, np.hstack([n, -(n * v).sum(axis=1)[:, None]])))
+    for m, planes in cases:
+        cut = sl.draw3d.cutaway(m, planes)
+        if cut.closed[0] is None:
+            continue
+        assert edge_uses(cut.closed[0]) == {2}, planes
+        assert solid(cut.closed[0]).is_winding_consistent
+    flat = sl.draw3d.cutaway(meshes[2], (0, 0, -1, z))       # only the band in the plane
+    assert flat.meshes[0] is None or solid(flat.closed[0]).volume == pytest.approx(0, abs=1e-12)
+    whole = sl.draw3d.cutaway(meshes[2], (0, 0, 1, -z))       # keep z >= z: the band stays
+    assert solid(whole.closed[0]).volume == pytest.approx(solid(meshes[2]).volume, rel=1e-12)

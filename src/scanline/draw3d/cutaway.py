@@ -16,7 +16,8 @@ ones holes (a torus cut through its hole gives a ring), and the cap polygons are
 triangulated with their holes by mapbox's earcut.  A closed mesh stays closed: the
 caps use the loops' own vertices, so every edge of the clipped and capped surface
 borders two faces.  Open loops (a mesh with a hole where the plane passes) are left
-uncapped.
+uncapped.  A face lying in a plane is kept where it faces the removed side (it is then
+part of the cut face itself) and removed where it faces the kept side.
 """
 
 from dataclasses import dataclass
@@ -129,6 +130,11 @@ def _clip(verts, attrs, tris, labels, plane, eps):
     order = np.argsort(~valid, axis=1, kind="stable")
     comp = np.take_along_axis(slots, order, axis=1)
     count = valid.sum(axis=1)
+    # a face lying in the plane bounds the kept part only if it faces away from it
+    flat = (~pos[tris] & ~neg[tris]).all(axis=1)
+    p = verts[tris[flat]]
+    away = np.einsum("ij,j->i", np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), plane[:3]) < 0
+    count[np.flatnonzero(flat)[~away]] = 0
     three, four = count == 3, count == 4
     tris = np.vstack([comp[three, :3], comp[four][:, [0, 1, 2]], comp[four][:, [0, 2, 3]]])
     labels = np.concatenate([labels[three], labels[four], labels[four]])

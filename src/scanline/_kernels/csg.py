@@ -215,7 +215,7 @@ def solid_scratch(solids):
     length = solids[8]
     return (np.empty((lists, length, 2)), np.empty((lists, length, 2), np.int64),
             np.zeros(lists, np.int64), np.empty(8 * length), np.empty(8 * length, np.int64),
-            np.empty(64, np.int64), np.empty(6))
+            np.empty(64, np.int64), np.empty(6), np.empty(3))
 
 
 @helper
@@ -272,7 +272,7 @@ def solid_transmittance(ox, oy, oz, dx, dy, dz, tmin, tmax, solids, work):
     tmax): the product of the k_t of every surface crossed (0: opaque), as the
     triangles' shadow test takes it."""
     through = 1.0
-    normal = np.empty(3)
+    normal = work[7]
     t = tmin
     for _ in range(64):
         t, code = first_surface(ox, oy, oz, dx, dy, dz, t, tmax, solids, work, normal)

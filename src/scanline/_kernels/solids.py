@@ -353,22 +353,32 @@ def surface_normal(prims, table, code, px, py, pz, out):
         else:
             out[0] = out[1] = out[2] = 0.0
     else:
-        g = np.zeros(3)
+        gx = gy = gz = 0.0
         if s == 0:
-            u = np.empty(3)
-            for r in range(3):
-                w = W0 + 4 * r
-                u[r] = (prims[k, w] * px + prims[k, w + 1] * py + prims[k, w + 2] * pz
-                        + prims[k, w + 3])
-            for r in range(3):
-                g[r] = (prims[k, Q0 + 4 * r] * u[0] + prims[k, Q0 + 4 * r + 1] * u[1]
-                        + prims[k, Q0 + 4 * r + 2] * u[2] + prims[k, Q0 + 4 * r + 3])
+            w = W0
+            ux = prims[k, w] * px + prims[k, w + 1] * py + prims[k, w + 2] * pz + prims[k, w + 3]
+            w = W0 + 4
+            uy = prims[k, w] * px + prims[k, w + 1] * py + prims[k, w + 2] * pz + prims[k, w + 3]
+            w = W0 + 8
+            uz = prims[k, w] * px + prims[k, w + 1] * py + prims[k, w + 2] * pz + prims[k, w + 3]
+            q = Q0
+            gx = prims[k, q] * ux + prims[k, q + 1] * uy + prims[k, q + 2] * uz + prims[k, q + 3]
+            q = Q0 + 4
+            gy = prims[k, q] * ux + prims[k, q + 1] * uy + prims[k, q + 2] * uz + prims[k, q + 3]
+            q = Q0 + 8
+            gz = prims[k, q] * ux + prims[k, q + 1] * uy + prims[k, q + 2] * uz + prims[k, q + 3]
         else:
+            sign = 1.0 if (s - 1) & 1 else -1.0
             a = (s - 1) >> 1
-            g[a] = 1.0 if (s - 1) & 1 else -1.0
+            if a == 0:
+                gx = sign
+            elif a == 1:
+                gy = sign
+            else:
+                gz = sign
         for c3 in range(3):
-            out[c3] = (prims[k, W0 + c3] * g[0] + prims[k, W0 + 4 + c3] * g[1]
-                       + prims[k, W0 + 8 + c3] * g[2])
+            out[c3] = (prims[k, W0 + c3] * gx + prims[k, W0 + 4 + c3] * gy
+                       + prims[k, W0 + 8 + c3] * gz)
     length = math.sqrt(out[0] * out[0] + out[1] * out[1] + out[2] * out[2])
     scale = (-1.0 if flip else 1.0) / length if length > 0 else 0.0
     for c3 in range(3):

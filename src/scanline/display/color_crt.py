@@ -28,7 +28,7 @@ offset from the others, and every edge shows color fringes (``misconvergence``).
 import numpy as np
 
 from .. import _validate as v
-from ..errors import ArgumentValueError
+from ..errors import ArgumentTypeError, ArgumentValueError
 from ..framebuffer import FrameBuffer
 from .crt import RandomScan, RasterScan, glow, last_visit
 
@@ -52,6 +52,25 @@ DOT_RADIUS = {"delta": 0.22, "in-line": 0.16}
 MAX_DOTS = 16
 
 
+#: The beam off, then the four colors: the choices of a beam-penetration screen.
+_CHOICES = np.array([OFF] + list(PENETRATION_COLORS.values()), np.float64)
+_NAMES = np.array(["off"] + list(PENETRATION_COLORS), dtype=object)
+
+
+def _nearest(rgb):
+    """Index into _CHOICES of the choice nearest (in RGB) to each of ``rgb``."""
+    a = np.asarray(rgb, np.float64)
+    if a.shape[-1:] != (3,) or not np.isfinite(a).all():
+        raise ArgumentValueError(f"rgb must be finite (..., 3) colors, got shape {a.shape}")
+    best = np.zeros(a.shape[:-1], np.int64)
+    least = np.full(a.shape[:-1], np.inf)
+    for k, choice in enumerate(_CHOICES):          # one (..., ) array at a time, not (..., 5, 3)
+        d = ((a - choice) ** 2).sum(axis=-1)
+        best[d < least] = k
+        least = np.minimum(least, d)
+    return best
+
+
 def penetration_color(rgb):
     """The beam-penetration color nearest (in RGB) to each of ``rgb`` (..., 3), the
     beam off (black) where that is nearer: an array of names, ``"off"`` included.
@@ -59,25 +78,16 @@ def penetration_color(rgb):
     >>> penetration_color([(250, 20, 10), (255, 200, 40), (0, 0, 30), (90, 255, 0)]).tolist()
     ['red', 'yellow', 'off', 'green']
     """
-    a = np.asarray(rgb, np.float64)
-    if a.shape[-1:] != (3,) or not np.isfinite(a).all():
-        raise ArgumentValueError(f"rgb must be finite (..., 3) colors, got shape {a.shape}")
-    names = ["off"] + list(PENETRATION_COLORS)
-    table = np.array([OFF] + list(PENETRATION_COLORS.values()), np.float64)
-    d = ((a[..., None, :] - table) ** 2).sum(axis=-1)
-    return np.array(names, dtype=object)[d.argmin(axis=-1)]
+    return _NAMES[_nearest(rgb)]
 
 
 def penetration_colors(fb):
     """``fb`` as a beam-penetration screen shows it: every pixel in the nearest of
     red, orange, yellow and green, or dark.  An RGB frame buffer."""
     if not isinstance(fb, FrameBuffer):
-        raise ArgumentValueError(f"fb must be a scanline.FrameBuffer, got {v._show(fb)}")
+        raise ArgumentTypeError(f"fb must be a scanline.FrameBuffer, got {v._show(fb)}")
     rgb = np.asarray(fb.to_pil().convert("RGB"))
-    names = penetration_color(rgb)
-    lookup = dict(PENETRATION_COLORS, off=OFF)
-    out = np.array([lookup[n] for n in names.reshape(-1)], np.uint8).reshape(rgb.shape)
-    return FrameBuffer.from_array(out)
+    return FrameBuffer.from_array(_CHOICES[_nearest(rgb)].astype(np.uint8))
 
 
 class BeamPenetration(RandomScan):

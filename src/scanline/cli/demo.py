@@ -119,7 +119,8 @@ FIGURE_MODULES = ("figures", "figures_attributes", "figures_antialias", "figures
                   "figures_text", "figures_clip", "figures_scene", "figures_curves",
                   "figures_surfaces", "figures_three_d", "figures_visible", "figures_shading",
                   "figures_surface_rendering", "figures_animation", "figures_octree",
-                  "figures_devices", "figures_csg")
+                  "figures_devices", "figures_csg", "figures_fractals", "figures_quaternions",
+                  "figures_blobby")
 
 
 def all_figures():

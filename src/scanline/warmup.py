@@ -273,6 +273,13 @@ CALLS = {
                                             "sl.mesh.sphere(0.6, (0.8, 0.5, 0.8))], "
                                             "sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)), "
                                             "method='area-subdivision', shading='none')", RGB),
+    "visible octree": ("visible", "sl.render(fb, [sl.mesh.cube(), sl.mesh.sphere(0.6, "
+                                  "(0.8, 0.5, 0.8))], sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)), "
+                                  "method='octree', shading='none')", RGB),
+    "octree": ("octree", "(sl.octree.Octree.from_mesh(sl.mesh.cube(), 3) - sl.octree.Octree"
+                         ".from_solid(sl.solids.Sphere(), 3)).to_mesh().face_count", None),
+    "quadtree": ("octree", "(sl.octree.Quadtree.from_polygon([(1, 1), (7, 2), (3, 6)], 3) | "
+                           "sl.octree.Quadtree.from_image(np.eye(8))).to_image().sum()", None),
     "visible lines": ("visible", "sl.visible.visible_lines(fb, sl.mesh.torus(1, 0.3), "
                                  "sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)), color='black', "
                                  "hidden='dash')", RGB),

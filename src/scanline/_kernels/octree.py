@@ -18,7 +18,7 @@ import math
 import numpy as np
 
 from ._jit import helper, kernel
-from .raster3d import rising, setup, span_limits
+from .raster3d import rising, span_limits
 
 EMPTY = 0
 FULL = 1
@@ -522,8 +522,67 @@ def covered(final, x0, x1, y0, y1):
     return True
 
 
+@helper
+def depth_plane(tri, t, g):
+    """The depth of triangle ``t`` as a function of the screen, (value at vertex 0,
+    d/dx, d/dy) into ``g``, computed as the z-buffer's setup computes it
+    (:func:`scanline._kernels.raster3d.setup`, its first row) so both find the same
+    depths; False where the triangle covers no pixel (zero area, not finite)."""
+    x0 = tri[t, 0, 0]
+    y0 = tri[t, 0, 1]
+    ex1 = tri[t, 1, 0] - x0
+    ey1 = tri[t, 1, 1] - y0
+    ex2 = tri[t, 2, 0] - x0
+    ey2 = tri[t, 2, 1] - y0
+    area = ex1 * ey2 - ex2 * ey1
+    if not (area != 0.0 and math.isfinite(area)):
+        return False
+    r = 1.0 / area
+    f0 = tri[t, 0, 2]
+    d1 = tri[t, 1, 2] - f0
+    d2 = tri[t, 2, 2] - f0
+    g[0] = f0
+    g[1] = (d1 * ey2 - d2 * ey1) * r
+    g[2] = (d2 * ex1 - d1 * ex2) * r
+    return math.isfinite(g[0] + g[1] + g[2])
+
+
+@helper
+def draw_leaf(tri, entries, e0, e1, px0, px1, py0, py1, z0, z1, ids, depth, final, touched,
+              g):
+    """Scan-convert the triangles ``entries[e0:e1]`` at the pixels of the rectangle
+    px0..px1 x py0..py1 that are not final, keeping the nearest fragment with a depth
+    in z0..z1; the pixels written the first time are listed in ``touched``.  Returns
+    how many."""
+    height, width = ids.shape
+    ntri = tri.shape[0]
+    nt = 0
+    for e in range(e0, e1):
+        t = entries[e]
+        if t < 0 or t >= ntri or not depth_plane(tri, t, g):
+            continue
+        low, mid, high = rising(tri, t)
+        r0 = max(int(math.floor(max(tri[t, low, 1], -2.0))) + 1, py0)
+        r1 = min(int(math.floor(min(tri[t, high, 1], height + 1.0))), py1)
+        xt = tri[t, 0, 0]
+        yt = tri[t, 0, 1]
+        for y in range(r0, r1 + 1):
+            kl, kr = span_limits(tri, t, y, low, mid, high, width)
+            for x in range(max(kl, px0), min(kr, px1 + 1)):
+                if final[y, x]:
+                    continue
+                z = g[0] + g[1] * (x - xt) + g[2] * (y - yt)
+                if z0 <= z and z <= z1 and z < depth[y, x]:
+                    if depth[y, x] == math.inf:
+                        touched[nt] = y * width + x
+                        nt += 1
+                    depth[y, x] = z
+                    ids[y, x] = t
+    return nt
+
+
 @kernel
-def octree_visible(tri, q, nbox, nchild, nstart, ncount, entries, ids, depth, final):
+def octree_visible(tri, nbox, nchild, nstart, ncount, entries, ids, depth, final):
     """The octree visible-surface method (Hearn & Baker 13-10) over the octree of
     :func:`scene_octree`: nodes depth first, front to back (the four octants nearer
     the viewer, then the four behind, within each node), and a node whose pixels are
@@ -538,9 +597,7 @@ def octree_visible(tri, q, nbox, nchild, nstart, ncount, entries, ids, depth, fi
     height, width = ids.shape
     n = nbox.shape[0]
     ecount = entries.shape[0]
-    ntri = tri.shape[0]
-    att = np.empty((1, 3, 0))
-    g = np.empty((2, 3))
+    g = np.empty(3)
     cap = 8 * 64 + 1
     stack = np.empty(cap, np.int64)
     touched = np.empty(height * width, np.int64)
@@ -560,31 +617,9 @@ def octree_visible(tri, q, nbox, nchild, nstart, ncount, entries, ids, depth, fi
                 stack[sp] = c + j
                 sp += 1
             continue
-        z0 = nbox[o, 4]
-        z1 = nbox[o, 5]
-        nt = 0
         s0 = max(nstart[o], 0)
-        for e in range(s0, min(s0 + ncount[o], ecount)):
-            t = entries[e]
-            if t < 0 or t >= ntri or not setup(tri, q, att, t, g):
-                continue
-            low, mid, high = rising(tri, t)
-            r0 = max(int(math.floor(max(tri[t, low, 1], -2.0))) + 1, py0)
-            r1 = min(int(math.floor(min(tri[t, high, 1], height + 1.0))), py1)
-            xt = tri[t, 0, 0]
-            yt = tri[t, 0, 1]
-            for y in range(r0, r1 + 1):
-                kl, kr = span_limits(tri, t, y, low, mid, high, width)
-                for x in range(max(kl, px0), min(kr, px1 + 1)):
-                    if final[y, x]:
-                        continue
-                    z = g[0, 0] + g[0, 1] * (x - xt) + g[0, 2] * (y - yt)
-                    if z0 <= z and z <= z1 and z < depth[y, x]:
-                        if depth[y, x] == math.inf:
-                            touched[nt] = y * width + x
-                            nt += 1
-                        depth[y, x] = z
-                        ids[y, x] = t
+        nt = draw_leaf(tri, entries, s0, min(s0 + ncount[o], ecount), px0, px1, py0, py1,
+                       nbox[o, 4], nbox[o, 5], ids, depth, final, touched, g)
         for k in range(nt):
             final[touched[k] // width, touched[k] % width] = 1
         drawn += 1

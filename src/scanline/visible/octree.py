@@ -59,7 +59,6 @@ def octree(scene, options=None):
 
     w, h = scene.width, scene.height
     tri = np.ascontiguousarray(scene.triangles, np.float64)
-    q = np.ascontiguousarray(scene.inv_w, np.float64)
     n = len(tri)
     depth_limit = DEPTH if options is None or options.max_depth is None else options.max_depth
     node_cap = 8 * (4 * n // LEAF + 1) + 1
@@ -92,6 +91,6 @@ def octree(scene, options=None):
     call(k.scene_octree, 20 * n, box, lo, hi, int(depth_limit), LEAF, SMALLEST, nbox,
          nchild, nstart, ncount, entries)
     final = np.zeros((h, w), np.uint8)
-    call(k.octree_visible, 20 * n + 3 * w * h, tri, q, nbox, nchild, nstart, ncount, entries,
+    call(k.octree_visible, 20 * n + 3 * w * h, tri, nbox, nchild, nstart, ncount, entries,
          ids, depth, final)
     return Layer(ids, depth)

@@ -208,3 +208,39 @@ def test_bad_solids_meshes_and_regions_are_refused():
         a | Octree.from_voxels(np.ones((4, 4, 4)), voxel_size=2.0)
     with pytest.raises(ArgumentTypeError, match="Octree"):
         a & sl.octree.Quadtree.from_image(np.ones((4, 4)))
+
+
+@pytest.mark.parametrize("seed", range(20))
+def test_malformed_trees_never_index_outside_their_arrays(seed, monkeypatch):
+    # the kernels' Python twins raise IndexError where a compiled kernel would read or
+    # write outside an array: run them on trees made by hand with children pointing
+    # anywhere (backwards, past the end, to -5), kinds beyond the three
+    from scanline._kernels import _jit
+
+    monkeypatch.setattr(_jit, "COMPILE", "never")
+    rng = np.random.default_rng(seed)
+    n = int(rng.integers(1, 40))
+    kind = rng.integers(0, 4, size=n).astype(np.int8)
+    child = rng.integers(-5, n + 5, size=n)
+    tree = Octree(kind, child, int(rng.integers(1, 4)), np.zeros(3), 1.0)
+    good = Octree.from_voxels(rng.random((8, 8, 8)) < 0.5)
+    good = Octree(good.kind, good.child, tree.depth, np.zeros(3), 1.0)
+    for result in (tree | good, tree & good, tree - good, good - tree):
+        assert result.kind[0] in (0, 1, 2)
+    tree.volume()
+    tree.to_voxels()
+    try:
+        tree.to_mesh()
+    except ArgumentValueError as error:
+        assert "no faces" in str(error)
+    tree.cells(direction=(1, 2, 3))
+
+
+def test_an_empty_octree_has_no_boundary_mesh():
+    with pytest.raises(ArgumentValueError, match="no faces"):
+        Octree.from_voxels(np.zeros((4, 4, 4))).to_mesh()
+
+
+def test_kind_and_child_must_match():
+    with pytest.raises(ArgumentValueError, match="one length"):
+        Octree(np.zeros(3, np.int8), np.zeros(2), 2, np.zeros(3), 1.0)

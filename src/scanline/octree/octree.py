@@ -231,6 +231,9 @@ class Octree(Tree):
         from ..mesh import Mesh
 
         vertices, faces = self._boundary
+        if not len(faces):
+            raise ArgumentValueError("this octree has no full cell beside an empty one: its "
+                                     "boundary mesh would have no faces")
         return Mesh(vertices, faces)
 
     @property

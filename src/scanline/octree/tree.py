@@ -120,6 +120,12 @@ class Tree:
     noun = "tree"
 
     def __init__(self, kind, child, depth, origin, side):
+        kind = np.ascontiguousarray(kind, np.int8)
+        child = np.ascontiguousarray(child, np.int64)
+        if kind.ndim != 1 or not len(kind) or child.shape != kind.shape:
+            raise ArgumentValueError(f"kind and child must be 1-D arrays of one length (a "
+                                     f"node each, the root first), got shapes {kind.shape} "
+                                     f"and {child.shape}")
         self.kind = kind
         self.child = child
         self.depth = depth

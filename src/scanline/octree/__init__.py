@@ -7,8 +7,8 @@ visible-surface method (section 13-10) is ``sl.render(..., method="octree")``
 
 >>> import scanline as sl
 >>> ball = sl.octree.Octree.from_solid(sl.solids.Sphere(radius=1.0), depth=5)
->>> round(ball.volume(), 2)
-4.17
+>>> round(ball.volume(), 2), round(4 / 3 * 3.14159265, 2)     # exact: 4/3 pi r^3
+(4.21, 4.19)
 """
 
 from .octree import Octree

@@ -238,7 +238,7 @@ def figure_stereo_pair():
     views = []
     for eye in (left, right):
         fb = sl.FrameBuffer(*size, mode="L", background=255)
-        sl.draw3d.wireframe(fb, objects, eye, color=0)
+        sl.draw3d.wireframe(fb, objects, eye, color=0, depth_cue=(1.0, 0.35))
         views.append(fb)
     # red channel: the left eye's view, green and blue: the right eye's
     anaglyph = sl.draw3d.anaglyph(*views)
@@ -248,7 +248,9 @@ def figure_stereo_pair():
         "looking at the scene's center (camera.stereo), merged by sl.draw3d.anaglyph: the "
         "red channel is the left eye's view, green and blue the right eye's, so the left "
         "eye's lines print in cyan ink (dark through the red filter) and the right eye's in "
-        "red ink. With red-cyan glasses the sphere stands in front of the cube and the ring.",
+        "red ink; depth cueing (sl.draw3d.wireframe's depth_cue, the farthest lines at 35%) "
+        "adds its own cue. With red-cyan glasses the sphere stands in front of the cube and "
+        "the ring.",
         "Hearn & Baker, section 9-1 (stereoscopic views)", anaglyph.to_pil(), None)
 
 

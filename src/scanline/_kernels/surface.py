@@ -20,7 +20,7 @@ chunked lighting and store this kernel calls.
 
 import numpy as np
 
-from ._jit import helper, kernel
+from ._jit import kernel
 from .shade import (BAND, CHUNK, CR, FIELDS, IR, NX, PHONG, PX, light_chunk, light_setup,
                     store_chunk, table_start, triangle_run)
 from .texture import sample_run
@@ -73,147 +73,124 @@ def textured_pixels(start, step, faces, table, tface, face_mat, mats, mat_tex, t
     (:mod:`scanline._kernels.texture`; ``texels``, ``levels``: every texture's
     levels, one after the other); ``slopes``: whether a trilinear texture needs the
     screen derivatives of u and v.  VERTEX tables of 5 attributes hold A and (u, v)
-    only (no highlight: S = 0)."""
+    only (no highlight: S = 0).
+
+    Each row, chunk after chunk of :data:`CHUNK` covered pixels: the attributes of
+    each pixel into the chunk's fields, then the texels T, the lighting (PHONG) and
+    the store.  One function rather than a chain of helpers: numba optimizes a
+    caller again with every helper it links, so each level of helpers added compile
+    time."""
     height = faces.shape[0]
-    far, expo = light_setup(sources, mats)
-    scratch = np.empty(TEX_FIELDS * CHUNK)
+    width = faces.shape[1]
+    if len(shading) == PHONG:
+        far, expo = light_setup(sources, mats)
+    else:
+        far, expo = np.empty((0, 4)), -1
+    s = np.empty(TEX_FIELDS * CHUNK)
     xs = np.empty(CHUNK, np.int64)
     ms = np.empty(CHUNK, np.int64)
-    for lo in range(start * BAND, height, max(step, 1) * BAND):
-        for y in range(lo, min(lo + BAND, height)):
-            textured_row(y, faces, table, tface, face_mat, mats, mat_tex, texels, levels,
-                         slopes, ambient, sources, far, eye, expo, gamma_table, thresholds,
-                         raster, scratch, xs, ms, shading, spec, mode)
-
-
-@helper
-def textured_row(y, faces, table, tface, face_mat, mats, mat_tex, texels, levels, slopes,
-                 ambient, sources, far, eye, expo, gamma_table, thresholds, raster, s, xs, ms,
-                 shading, spec, mode):
-    """Row ``y``, chunk after chunk of :data:`CHUNK` covered pixels: the attributes
-    of each pixel into the chunk's fields, then :func:`texture_chunk`, the lighting
-    (PHONG) and the store."""
-    width = faces.shape[1]
     nf = face_mat.shape[0]
     nm = mats.shape[0]
-    k = (table.shape[1] - 5) // 3
-    x = np.int64(0)
-    while x < width:
-        n = np.int64(0)
-        while n < CHUNK and x < width:
-            x, end, t, f = triangle_run(faces, tface, nf, y, x, CHUNK - n)
-            if f < 0:
-                x = end
-                continue
-            m = min(max(face_mat[f], 0), nm - 1)
-            x0 = table[t, 0]
-            fy = y - table[t, 1]
-            q0 = table[t, 2] + table[t, 4] * fy
-            qx = table[t, 3]
-            qy = table[t, 4]
-            # the attributes: PHONG fields P, N, C then u, v; VERTEX fields A (0 .. 2),
-            # S (3 .. 5) then u, v.  First 1/(1/w), u, v and the first three
-            u0 = table[t, 5 + 3 * (k - 2)] + table[t, 7 + 3 * (k - 2)] * fy
-            ux = table[t, 6 + 3 * (k - 2)]
-            v0 = table[t, 5 + 3 * (k - 1)] + table[t, 7 + 3 * (k - 1)] * fy
-            vx = table[t, 6 + 3 * (k - 1)]
-            a0 = table[t, 5] + table[t, 7] * fy
-            ax = table[t, 6]
-            b0 = table[t, 8] + table[t, 10] * fy
-            bx = table[t, 9]
-            c0 = table[t, 11] + table[t, 13] * fy
-            cx = table[t, 12]
-            i = n
-            for px in range(x, end):
-                fx = px - x0
-                r = 1.0 / (q0 + qx * fx)
-                s[TW * CHUNK + i] = r
-                s[TU * CHUNK + i] = (u0 + ux * fx) * r
-                s[(TU + 1) * CHUNK + i] = (v0 + vx * fx) * r
-                s[i] = (a0 + ax * fx) * r
-                s[CHUNK + i] = (b0 + bx * fx) * r
-                s[2 * CHUNK + i] = (c0 + cx * fx) * r
-                xs[i] = px
-                ms[i] = m
-                i += 1
-            for a in range(3, k - 2, 3):    # then the other triples
-                interpolated_triple(s, table, t, a, fy, x0, x, end, n)
-            if slopes:
-                ux = table[t, 6 + 3 * (k - 2)]
-                uy = table[t, 7 + 3 * (k - 2)]
-                vx = table[t, 6 + 3 * (k - 1)]
-                vy = table[t, 7 + 3 * (k - 1)]
-                i = n
-                for px in range(x, end):
-                    r = s[TW * CHUNK + i]
-                    u = s[TU * CHUNK + i]
-                    v = s[(TU + 1) * CHUNK + i]
-                    s[TDX * CHUNK + i] = (ux - u * qx) * r
-                    s[(TDX + 1) * CHUNK + i] = (vx - v * qx) * r
-                    s[(TDX + 2) * CHUNK + i] = (uy - u * qy) * r
-                    s[(TDX + 3) * CHUNK + i] = (vy - v * qy) * r
-                    i += 1
-            n += end - x
-            x = end
-        if n == 0:
-            continue
-        texture_chunk(n, s, ms, mat_tex, texels, levels, k > 5, shading)
-        if len(shading) == PHONG:
-            light_chunk(n, s, ms, np.bool_(True), mats, ambient, sources, far, eye, expo, spec)
-        store_chunk(y, n, s, xs, gamma_table, thresholds, raster, shading, mode)
-
-
-@helper
-def interpolated_triple(s, table, t, a, fy, x0, x, end, n):
-    """Attributes ``a`` .. ``a + 2`` of triangle ``t`` at the pixels ``x`` .. ``end -
-    1`` of a row into fields ``a`` .. ``a + 2`` of the chunk from position ``n``,
-    times the pixels' w (field :data:`TW`)."""
-    a0 = table[t, 5 + 3 * a] + table[t, 7 + 3 * a] * fy
-    ax = table[t, 6 + 3 * a]
-    b0 = table[t, 8 + 3 * a] + table[t, 10 + 3 * a] * fy
-    bx = table[t, 9 + 3 * a]
-    c0 = table[t, 11 + 3 * a] + table[t, 13 + 3 * a] * fy
-    cx = table[t, 12 + 3 * a]
-    i = n
-    for px in range(x, end):
-        fx = px - x0
-        r = s[TW * CHUNK + i]
-        s[a * CHUNK + i] = (a0 + ax * fx) * r
-        s[(a + 1) * CHUNK + i] = (b0 + bx * fx) * r
-        s[(a + 2) * CHUNK + i] = (c0 + cx * fx) * r
-        i += 1
-
-
-@helper
-def texture_chunk(n, s, ms, mat_tex, texels, levels, highlight, shading):
-    """Each pixel's texel T (1 without a texture): PHONG scales the surface color
-    fields by it, VERTEX makes the intensity T A + S in fields 0 .. 2 (T A without
-    ``highlight``)."""
     nl = levels.shape[0]
-    i = np.int64(0)
-    while i < n:                        # runs of one material, sampled by one call
-        m = ms[i]
-        j = i + 1
-        while j < n and ms[j] == m:
-            j += 1
-        first = mat_tex[m, 0]
-        if first >= 0 and first < nl:
-            sample_run(texels, levels, first, min(mat_tex[m, 1], nl - first), mat_tex[m, 2],
-                       mat_tex[m, 3], s, np.int64(TU * CHUNK), np.int64(CHUNK), i, j)
-        else:
-            for p in range(i, j):
-                s[TDX * CHUNK + p] = 1.0
-                s[(TDX + 1) * CHUNK + p] = 1.0
-                s[(TDX + 2) * CHUNK + p] = 1.0
-        i = j
-    # the texels are in fields TDX .. TDX + 2 (where the derivatives were)
-    to = CR if len(shading) == PHONG else 0
-    for ch in range(3):
-        for p in range(n):
-            s[(to + ch) * CHUNK + p] *= s[(TDX + ch) * CHUNK + p]
-        if highlight and len(shading) != PHONG:
-            for p in range(n):
-                s[ch * CHUNK + p] += s[(3 + ch) * CHUNK + p]
+    k = (table.shape[1] - 5) // 3
+    for lo in range(start * BAND, height, max(step, 1) * BAND):
+        for y in range(lo, min(lo + BAND, height)):
+            x = np.int64(0)
+            while x < width:
+                n = np.int64(0)
+                while n < CHUNK and x < width:
+                    x, end, t, f = triangle_run(faces, tface, nf, y, x, CHUNK - n)
+                    if f < 0:
+                        x = end
+                        continue
+                    m = min(max(face_mat[f], 0), nm - 1)
+                    x0 = table[t, 0]
+                    fy = y - table[t, 1]
+                    q0 = table[t, 2] + table[t, 4] * fy
+                    qx = table[t, 3]
+                    qy = table[t, 4]
+                    # the attributes: PHONG fields P, N, C then u, v; VERTEX fields A
+                    # (0 .. 2), S (3 .. 5) then u, v.  First 1/(1/w), u, v and the
+                    # first three
+                    u0 = table[t, 5 + 3 * (k - 2)] + table[t, 7 + 3 * (k - 2)] * fy
+                    ux = table[t, 6 + 3 * (k - 2)]
+                    v0 = table[t, 5 + 3 * (k - 1)] + table[t, 7 + 3 * (k - 1)] * fy
+                    vx = table[t, 6 + 3 * (k - 1)]
+                    a0 = table[t, 5] + table[t, 7] * fy
+                    ax = table[t, 6]
+                    b0 = table[t, 8] + table[t, 10] * fy
+                    bx = table[t, 9]
+                    c0 = table[t, 11] + table[t, 13] * fy
+                    cx = table[t, 12]
+                    i = n
+                    for px in range(x, end):
+                        fx = px - x0
+                        r = 1.0 / (q0 + qx * fx)
+                        s[TW * CHUNK + i] = r
+                        s[TU * CHUNK + i] = (u0 + ux * fx) * r
+                        s[(TU + 1) * CHUNK + i] = (v0 + vx * fx) * r
+                        s[i] = (a0 + ax * fx) * r
+                        s[CHUNK + i] = (b0 + bx * fx) * r
+                        s[2 * CHUNK + i] = (c0 + cx * fx) * r
+                        xs[i] = px
+                        ms[i] = m
+                        i += 1
+                    for a in range(3, k - 2):       # then the other attributes
+                        a0 = table[t, 5 + 3 * a] + table[t, 7 + 3 * a] * fy
+                        ax = table[t, 6 + 3 * a]
+                        i = n
+                        for px in range(x, end):
+                            s[a * CHUNK + i] = (a0 + ax * (px - x0)) * s[TW * CHUNK + i]
+                            i += 1
+                    if slopes:
+                        uy = table[t, 7 + 3 * (k - 2)]
+                        vy = table[t, 7 + 3 * (k - 1)]
+                        i = n
+                        for px in range(x, end):
+                            r = s[TW * CHUNK + i]
+                            u = s[TU * CHUNK + i]
+                            v = s[(TU + 1) * CHUNK + i]
+                            s[TDX * CHUNK + i] = (ux - u * qx) * r
+                            s[(TDX + 1) * CHUNK + i] = (vx - v * qx) * r
+                            s[(TDX + 2) * CHUNK + i] = (uy - u * qy) * r
+                            s[(TDX + 3) * CHUNK + i] = (vy - v * qy) * r
+                            i += 1
+                    n += end - x
+                    x = end
+                if n == 0:
+                    continue
+                # each pixel's texel T into fields TDX .. TDX + 2 (1 without a texture),
+                # a run of one material sampled by one call
+                i = np.int64(0)
+                while i < n:
+                    m = ms[i]
+                    j = i + 1
+                    while j < n and ms[j] == m:
+                        j += 1
+                    first = mat_tex[m, 0]
+                    if first >= 0 and first < nl:
+                        sample_run(texels, levels, first, min(mat_tex[m, 1], nl - first),
+                                   mat_tex[m, 2], mat_tex[m, 3], s, np.int64(TU * CHUNK),
+                                   np.int64(CHUNK), i, j)
+                    else:
+                        for p in range(i, j):
+                            s[TDX * CHUNK + p] = 1.0
+                            s[(TDX + 1) * CHUNK + p] = 1.0
+                            s[(TDX + 2) * CHUNK + p] = 1.0
+                    i = j
+                # the texels are in fields TDX .. TDX + 2 (where the derivatives were):
+                # PHONG scales the surface color by T, VERTEX makes I = T A + S
+                to = CR if len(shading) == PHONG else 0
+                for ch in range(3):
+                    for p in range(n):
+                        s[(to + ch) * CHUNK + p] *= s[(TDX + ch) * CHUNK + p]
+                    if k > 5 and len(shading) != PHONG:
+                        for p in range(n):
+                            s[ch * CHUNK + p] += s[(3 + ch) * CHUNK + p]
+                if len(shading) == PHONG:
+                    light_chunk(n, s, ms, np.bool_(True), mats, ambient, sources, far, eye,
+                                expo, spec)
+                store_chunk(y, n, s, xs, gamma_table, thresholds, raster, shading, mode)
 
 
 @kernel

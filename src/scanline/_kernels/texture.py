@@ -11,9 +11,9 @@ of a w x h level covers u in [i/w, (i+1)/w): its center is at ((i + 1/2)/w, (j +
 
 No index leaves its array whatever the coordinates: a coordinate is first brought
 into a small range as a real (its fraction for ``REPEAT``, modulo 2 for ``MIRROR``,
-clamped for ``CLAMP``; NaN and infinities become 0) before it becomes an integer,
-and every integer index is then wrapped or clamped into 0 .. n - 1 (a float too
-large for an integer is never converted).
+clamped for ``CLAMP``; NaN and infinities become 0), and every texel index, a real
+until the lookup, is then wrapped or clamped into 0 .. n - 1 (a float too large for
+an integer is never converted).
 """
 
 import math
@@ -38,79 +38,53 @@ WHOLE = 4503599627370496.0
 
 
 @helper
-def floor_of(t):
-    """floor(t) as an integer for |t| < :data:`WHOLE` (a truncation and a step, cheaper
-    than the library's floor)."""
-    i = int(t)
-    return i - 1 if t < i else i
-
-
-@helper
-def reduced(t, wrap):
-    """Texture coordinate ``t`` brought into [0, 1) (repeat), [0, 2) (mirror: the
-    period of a mirrored texture) or [-1, 2] (clamp) as a real; NaN and infinities
-    give 0, and so do coordinates past 2^52 for the wraps (whole numbers there)."""
-    if not abs(t) < WHOLE:              # NaN, infinite, or no fraction left
-        return min(max(t, -1.0), 2.0) if wrap == CLAMP and math.isfinite(t) else 0.0
-    if wrap == REPEAT:
-        r = t - floor_of(t)
-        return r if r < 1.0 else 0.0
-    if wrap == MIRROR:
-        r = t - 2.0 * floor_of(0.5 * t)
-        return r if r < 2.0 else 0.0
-    return min(max(t, -1.0), 2.0)
+def axis(t, n, wrap, half):
+    """One axis of a lookup in a level ``n`` texels wide (a real), every wrap by
+    selects rather than branches: ``(a, i0, d)``, the weight of the upper
+    texel, the lower texel's index and the step from it to the upper one's, as reals.
+    ``t`` is first brought into [0, 1) (``REPEAT``: its fraction), [0, 2)
+    (``MIRROR``: the period of a mirrored texture) or [-1, 2] (``CLAMP``); NaN and
+    infinities give 0, and so do coordinates past 2^52 for the wraps (whole numbers
+    there).  ``half`` = 1/2: bilinear, the two texel centers around r n - 1/2; 0:
+    nearest, the texel holding r n (the upper one's weight 0)."""
+    rep = t - np.floor(t)
+    mir = t - 2.0 * np.floor(0.5 * t)
+    clamped = min(max(t, -1.0), 2.0) if abs(t) < math.inf else 0.0
+    r = (rep if rep < 1.0 else 0.0) if wrap == REPEAT else \
+        (mir if mir < 2.0 else 0.0) if wrap == MIRROR else clamped
+    r = r if abs(t) < WHOLE or wrap == CLAMP else 0.0
+    x = r * n - half
+    f = np.floor(x)
+    a = x - f if half > 0.0 else 0.0
+    i0 = wrapped(f, n, wrap)
+    return a, i0, wrapped(f + 1.0, n, wrap) - i0
 
 
 @helper
 def wrapped(i, n, wrap):
-    """Integer texel index ``i`` (any value) wrapped or clamped into 0 .. n - 1."""
-    if i >= 0 and i < n:
-        return i
-    if wrap == REPEAT:
-        i = i % n
-    elif wrap == MIRROR:
-        p = i % (2 * n)
-        i = p if p < n else 2 * n - 1 - p
-    return min(max(i, 0), n - 1)
+    """Whole number ``i`` (a real, -n - 1 .. 2 n as :func:`axis` makes them) wrapped
+    (repeat: modulo n; mirror: modulo 2 n, reflected) or clamped into 0 .. n - 1,
+    without a branch; whatever ``i``, the result is in 0 .. n - 1."""
+    twice = 2.0 * n
+    p = i + twice if i < 0.0 else i - twice if i >= twice else i
+    i = (i + n if i < 0.0 else i - n if i >= n else i) if wrap == REPEAT else \
+        (p if p < n else twice - 1.0 - p) if wrap == MIRROR else i
+    return min(max(i, 0.0), n - 1.0)
 
 
 @inline
-def nearest(texels, levels, level, u, v, wrap):
-    """The texel whose square holds (u, v) at ``level``: (r, g, b)."""
-    base = levels[level, 0]
-    w = levels[level, 1]
-    h = levels[level, 2]
-    i = wrapped(floor_of(reduced(u, wrap) * w), w, wrap)
-    j = wrapped(floor_of(reduced(v, wrap) * h), h, wrap)
-    k = 3 * (base + j * w + i)
-    return texels[k], texels[k + 1], texels[k + 2]
-
-
-@inline
-def bilinear(texels, levels, level, u, v, wrap):
-    """The four texels around (u, v) at ``level`` weighted by their distances
-    (bilinear interpolation between texel centers): (r, g, b)."""
-    base = levels[level, 0]
-    w = levels[level, 1]
-    h = levels[level, 2]
-    x = reduced(u, wrap) * w - 0.5
-    y = reduced(v, wrap) * h - 0.5
-    fx = floor_of(x)
-    fy = floor_of(y)
-    ax = x - fx
-    ay = y - fy
-    i0 = 3 * wrapped(fx, w, wrap)
-    i1 = 3 * wrapped(fx + 1, w, wrap)
-    j0 = 3 * (base + wrapped(fy, h, wrap) * w)
-    j1 = 3 * (base + wrapped(fy + 1, h, wrap) * w)
+def lookup(texels, k, kx, ky, ax, ay):
+    """The four texels from index ``k`` (its right neighbour ``kx`` further, its upper
+    one ``ky``; reals) weighted by ``ax``, ``ay`` (bilinear interpolation between
+    texel centers; 0, 0: the first texel alone): (r, g, b)."""
+    k00 = int(k)
+    k10 = k00 + int(kx)
+    k01 = k00 + int(ky)
+    k11 = k01 + int(kx)
     w00 = (1.0 - ax) * (1.0 - ay)
     w10 = ax * (1.0 - ay)
     w01 = (1.0 - ax) * ay
     w11 = ax * ay
-    k00 = j0 + i0
-    k10 = j0 + i1
-    k01 = j1 + i0
-    k11 = j1 + i1
     r = w00 * texels[k00] + w10 * texels[k10] + w01 * texels[k01] + w11 * texels[k11]
     g = (w00 * texels[k00 + 1] + w10 * texels[k10 + 1] + w01 * texels[k01 + 1]
          + w11 * texels[k11 + 1])
@@ -136,115 +110,90 @@ def level_of_detail(levels, first, count, dudx, dvdx, dudy, dvdy):
     return min(lod, count - 1.0)
 
 
-@inline
-def sample(texels, levels, first, count, filter, wrap, u, v, dudx, dvdx, dudy, dvdy):
-    """The filtered color (r, g, b) of the texture whose levels are ``first`` ..
-    ``first + count - 1`` of ``levels`` at (u, v), the screen derivatives choosing the
-    mipmap levels of ``TRILINEAR`` (linear between the two nearest levels)."""
-    if filter == NEAREST:
-        return nearest(texels, levels, first, u, v, wrap)
-    level = first
-    t = 0.0
-    if filter == TRILINEAR and count > 1:
-        lod = level_of_detail(levels, first, count, dudx, dvdx, dudy, dvdy)
-        step = min(int(lod), count - 1)
-        level = first + step
-        t = lod - step if step + 1 < count else 0.0
-    r = g = b = 0.0
-    for j in range(2 if t > 0.0 else 1):   # one compiled copy of the bilinear step
-        weight = 1.0 - t if j == 0 else t
-        rj, gj, bj = bilinear(texels, levels, level + j, u, v, wrap)
-        r += weight * rj
-        g += weight * gj
-        b += weight * bj
-    return r, g, b
-
-
 @helper
 def sample_run(texels, levels, first, count, filter, wrap, s, at, stride, lo, hi):
     """Items ``lo .. hi - 1`` of planar fields in ``s``: field k of item i at ``s[at + k
     stride + i]``, fields 0 and 1 the coordinates u and v, 2 .. 5 the screen
     derivatives du/dx, dv/dx, du/dy, dv/dy; each item's color (r, g, b) replaces its
-    fields 2 .. 4.  One compiled copy of the sampling serves every caller (a call per
-    run of items, not per item); bilinear repeated textures, the common case, take
-    :func:`repeat_bilinear_run` (fields 0 and 1 are then overwritten)."""
-    if filter == BILINEAR and wrap == REPEAT:
-        repeat_bilinear_run(texels, levels, first, s, at, stride, lo, hi)
-        return
-    u_at = at
-    v_at = at + stride
-    d_at = at + 2 * stride
-    for i in range(lo, hi):
-        r, g, b = sample(texels, levels, first, count, filter, wrap, s[u_at + i], s[v_at + i],
-                         s[d_at + i], s[d_at + stride + i], s[d_at + 2 * stride + i],
-                         s[d_at + 3 * stride + i])
-        s[d_at + i] = r
-        s[d_at + stride + i] = g
-        s[d_at + 2 * stride + i] = b
+    fields 2 .. 4 (fields 0 and 1 are overwritten).  The texture's levels are
+    ``first .. first + count - 1`` of ``levels``.
 
-
-@helper
-def repeat_bilinear_run(texels, levels, level, s, at, stride, lo, hi):
-    """:func:`bilinear` with ``REPEAT`` at ``level`` for items ``lo .. hi - 1`` of
-    :func:`sample_run`'s fields, in two passes with the same arithmetic: first, without
-    a branch (so that the compiler vectorizes it), each item's weights (ax, ay) into
-    fields 0 and 1 and its four texels' places (the first texel's index and the steps
-    to its right and upper neighbours, wrapped) into fields 2 .. 4; then the texel
-    lookups, whose colors replace fields 2 .. 4.  Every index is clamped into the
-    level whatever the coordinates (NaN and infinities give 0, as :func:`reduced`)."""
+    ``NEAREST`` and ``BILINEAR`` read the first level in two passes: first each
+    item's weights (:func:`axis`) into its fields 0 and 1 and its four texels' places
+    into 2 .. 4 (:func:`places`), then the lookups (:func:`lookup`).  ``TRILINEAR`` reads, item by item, the two levels nearest the
+    pixel's size (the screen derivatives choose them: :func:`level_of_detail`) and
+    interpolates linearly between them.  One compiled copy of the sampling serves
+    every caller, a call per run of items."""
     n = hi - lo
     if n <= 0:
         return
-    base = float(levels[level, 0])
-    w = float(levels[level, 1])
-    h = float(levels[level, 2])
     u = s[at + lo:at + lo + n]
     v = s[at + stride + lo:at + stride + lo + n]
     k = s[at + 2 * stride + lo:at + 2 * stride + lo + n]
     kx = s[at + 3 * stride + lo:at + 3 * stride + lo + n]
     ky = s[at + 4 * stride + lo:at + 4 * stride + lo + n]
-    for i in range(n):
-        ax, i0, di = repeat_axis(u[i], w)
-        ay, j0, dj = repeat_axis(v[i], h)
+    if filter == TRILINEAR and count > 1:
+        dvdy = s[at + 5 * stride + lo:at + 5 * stride + lo + n]
+        for i in range(n):
+            lod = level_of_detail(levels, first, count, k[i], kx[i], ky[i], dvdy[i])
+            step = min(int(lod), count - 1)
+            t = lod - step if step + 1 < count else 0.0
+            r = g = b = 0.0
+            for j in range(2 if t > 0.0 else 1):   # one compiled copy of a level's lookup
+                weight = 1.0 - t if j == 0 else t
+                level = first + step + j
+                w = float(levels[level, 1])
+                ax, i0, di = axis(u[i], w, wrap, 0.5)
+                ay, j0, dj = axis(v[i], float(levels[level, 2]), wrap, 0.5)
+                rj, gj, bj = lookup(texels, 3.0 * (levels[level, 0] + j0 * w + i0), 3.0 * di,
+                                    3.0 * w * dj, ax, ay)
+                r += weight * rj
+                g += weight * gj
+                b += weight * bj
+            k[i] = r
+            kx[i] = g
+            ky[i] = b
+        return
+    places(u, v, k, kx, ky, levels, first, wrap, 0.0 if filter == NEAREST else 0.5)
+    for i in range(len(k)):
+        k[i], kx[i], ky[i] = lookup(texels, k[i], kx[i], ky[i], u[i], v[i])
+
+
+@helper
+def places(u, v, k, kx, ky, levels, level, wrap, half):
+    """:func:`sample_run`'s first pass at ``level``: each item's weights into ``u``,
+    ``v`` and its four texels' places into ``k``, ``kx``, ``ky`` (:func:`lookup`'s
+    arguments).  Bilinear repeated textures, the common case, take
+    :func:`repeat_axis`, whose loop the compiler vectorizes."""
+    base = float(levels[level, 0])
+    w = float(levels[level, 1])
+    h = float(levels[level, 2])
+    fast = wrap == REPEAT and half > 0.0
+    for i in range(len(k)):
+        if fast:
+            ax, i0, di = repeat_axis(u[i], w)
+            ay, j0, dj = repeat_axis(v[i], h)
+        else:
+            ax, i0, di = axis(u[i], w, wrap, half)
+            ay, j0, dj = axis(v[i], h, wrap, half)
         u[i] = ax
         v[i] = ay
         k[i] = 3.0 * (base + j0 * w + i0)
         kx[i] = 3.0 * di
         ky[i] = 3.0 * w * dj
-    for i in range(n):
-        ax = u[i]
-        ay = v[i]
-        k00 = int(k[i])
-        k10 = k00 + int(kx[i])
-        k01 = k00 + int(ky[i])
-        k11 = k01 + int(kx[i])
-        w00 = (1.0 - ax) * (1.0 - ay)
-        w10 = ax * (1.0 - ay)
-        w01 = (1.0 - ax) * ay
-        w11 = ax * ay
-        k[i] = (w00 * texels[k00] + w10 * texels[k10] + w01 * texels[k01]
-                + w11 * texels[k11])
-        kx[i] = (w00 * texels[k00 + 1] + w10 * texels[k10 + 1] + w01 * texels[k01 + 1]
-                 + w11 * texels[k11 + 1])
-        ky[i] = (w00 * texels[k00 + 2] + w10 * texels[k10 + 2] + w01 * texels[k01 + 2]
-                 + w11 * texels[k11 + 2])
 
 
 @inline
 def repeat_axis(t, n):
-    """One axis of a repeated bilinear lookup in a level ``n`` texels wide, as reals
-    without a branch: the weight of the upper texel, the lower texel's index and the
-    step to the upper one (1, or 1 - n where it wraps), as :func:`bilinear` computes
-    them (t reduced as :func:`reduced`: its fraction, 0 for NaN, infinities and
-    coordinates past 2^52)."""
+    """:func:`axis` for a bilinear repeated texture, without a call: the fraction of
+    ``t`` (0 for NaN, infinities and past 2^52), and an index that wraps by one
+    step (1 - n)."""
     r = t - np.floor(t)
     r = r if abs(t) < WHOLE and r < 1.0 else 0.0
     x = r * n - 0.5
-    f = min(max(np.floor(x), -1.0), n - 1.0)
-    a = x - f
+    f = np.floor(x)
     i0 = f if f >= 0.0 else n - 1.0
-    d = 1.0 if i0 + 1.0 < n else 1.0 - n
-    return a, i0, d
+    return x - f, i0, 1.0 if i0 + 1.0 < n else 1.0 - n
 
 
 @kernel

@@ -200,8 +200,8 @@ def vertex_light(lo, hi, points, normals, colors, material, mats, ambient, sourc
     (unit, or normalized here) and surface ``colors`` (N, 3; or (1, 3): one color
     for all) of materials
     ``material`` (N,) (rows of ``mats``), in two parts: ``out[i, :3]`` = A, the part
-    the surface color scales (ambient and diffuse), ``out[i, 3:]`` = S, the highlight
-    (the model with the color 0; without ``highlight`` S = 0 is not computed):
+    the surface color scales (ambient and diffuse), ``out[i, 3:6]`` = S, the highlight
+    (the model with the color 0; only with ``highlight`` and six columns in ``out``):
     Gouraud's vertex intensities for a textured surface, through the per-pixel
     lighting's :func:`~scanline._kernels.shade.light_chunk`, a chunk of points at a
     time."""
@@ -212,6 +212,7 @@ def vertex_light(lo, hi, points, normals, colors, material, mats, ambient, sourc
     one = colors.shape[0] == 1
     hi = min(hi, points.shape[0], normals.shape[0], material.shape[0], out.shape[0],
              colors.shape[0] if not one else hi)
+    highlight = highlight and out.shape[1] >= 6
     for c0 in range(lo, hi, CHUNK):
         n = min(CHUNK, hi - c0)
         for part in range(2 if highlight else 1):
@@ -228,7 +229,6 @@ def vertex_light(lo, hi, points, normals, colors, material, mats, ambient, sourc
                     value = s[(IR + ch) * CHUNK + i]
                     if part == 0:
                         out[c0 + i, ch] = value
-                        out[c0 + i, 3 + ch] = 0.0
                     else:
                         out[c0 + i, 3 + ch] = value
                         out[c0 + i, ch] -= value

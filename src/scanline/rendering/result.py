@@ -35,13 +35,18 @@ class Rendering:
     """
 
     def __init__(self, method, image, depth, facets, scene, pieces=None, solids=None):
-        self.solids = np.full(facets.shape, -1, np.int64) if solids is None else solids
+        if solids is not None:
+            self.solids = solids       # else made when first read (a frame's worth of -1)
         self.method = method
         self.image = image
         self.depth = depth
         self.facets = facets
         self.scene = scene
         self.pieces = pieces
+
+    @functools.cached_property
+    def solids(self):
+        return np.full(self.facets.shape, -1, np.int64)
 
     @functools.cached_property
     def faces(self):

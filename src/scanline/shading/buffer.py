@@ -219,7 +219,8 @@ def _shines(scene, sources):
 
 def vertex_light(scene, facets, options):
     """Gouraud's vertex intensities of ``facets`` in the two parts of
-    :func:`scanline.shading.models.vertex_parts`, (U, 3, 6): A then S, compiled
+    :func:`scanline.shading.models.vertex_parts`, (U, 3, 6): A then S (U, 3, 3: A
+    alone where nothing shines, S = 0), compiled
     (:func:`scanline._kernels.surface.vertex_light`; the facets' colors as one row
     where they are one color broadcast)."""
     from .._kernels import surface as k
@@ -241,15 +242,15 @@ def vertex_light(scene, facets, options):
               if colors.size and not any(colors.strides[:-1]) else pick(colors).reshape(-1, 3))
     colors = v.kernel_array(colors)
     material = v.kernel_array(np.repeat(pick(scene.facet_mesh), 3), np.int64)
-    out = np.empty((len(points), 6))
+    highlight = _shines(scene, sources)
+    out = np.empty((len(points), 6 if highlight else 3))
     mats = material_rows(scene.materials, options.gamma)
     eye = homogeneous_eye(scene.eye)
     spec = SPECULAR[options.specular]
-    highlight = _shines(scene, sources)
     call_in_chunks(k.vertex_light, 20 * (1 + len(sources)) * len(points), len(points),
                    lambda lo, hi: (lo, hi, points, normals, colors, material, mats, ambient,
                                    np.ascontiguousarray(sources), eye, spec, highlight, out))
-    return out.reshape(-1, 3, 6)
+    return out.reshape(len(facets), 3, -1)
 
 
 def shade_textured(scene, fb, ids, options):

@@ -110,9 +110,11 @@ SMALL_BITS = 8
 @inline
 def encode(value, table, thresholds):
     """round(255 clamp(I, 0, 1)^(1/gamma)) without a power: ``table[j]`` is the stored
-    value of I = j / (GAMMA_STEPS - 1), a lower bound for any I in the step, raised
-    while I reaches the next value's threshold ``thresholds[v + 1]`` = ((v + 1/2) /
-    255)^gamma (``thresholds[256]`` = inf); NaN stores 0."""
+    value of I = j / (GAMMA_STEPS - 1), a lower bound for any I in the step (as -2 -
+    that value where the step spans more than one stored value: the fast path of
+    :func:`store_chunk` is wrong there), raised while I reaches the next value's
+    threshold ``thresholds[v + 1]`` = ((v + 1/2) / 255)^gamma (``thresholds[256]`` =
+    inf); NaN stores 0."""
     i = value
     if not i > 0.0:
         i = 0.0
@@ -120,6 +122,7 @@ def encode(value, table, thresholds):
         i = 1.0
     j = min(int(i * (GAMMA_STEPS - 1)), GAMMA_STEPS - 1)
     v = table[j]
+    v = v if v >= 0 else -2 - v
     while v < 255 and i >= thresholds[v + 1]:
         v += 1
     return np.uint8(v)
@@ -354,32 +357,27 @@ def triangle_run(faces, tface, nf, y, x, room):
 @helper
 def store_chunk(y, n, s, xs, gamma_table, thresholds, raster, shading, mode):
     """The chunk's intensities encoded (:func:`encode`) and stored at row ``y``,
-    columns ``xs``: the table's value and one step up without a branch, the rest of
-    :func:`encode`'s climb only where the table's step spans more than two stored
-    values (near black); equal components are encoded once."""
+    columns ``xs``: the table's value and one step up without a branch where the
+    table's step spans at most one stored value (its entry is not negative), the
+    rest of :func:`encode`'s climb only where it spans more (near black)."""
     first = IR if len(shading) == PHONG else 0
     channels = 1 if len(mode) == GRAY else 3
     top = GAMMA_STEPS - 1
     for i in range(n):
         at = xs[i]
-        before = math.nan
-        v = np.uint8(0)
         for ch in range(channels):
             if len(mode) == GRAY:
                 value = (0.299 * s[first * CHUNK + i] + 0.587 * s[(first + 1) * CHUNK + i]
                          + 0.114 * s[(first + 2) * CHUNK + i])
             else:
                 value = s[(first + ch) * CHUNK + i]
-            if not value == before:
-                before = value
-                iv = value if value > 0.0 else 0.0
-                iv = min(iv, 1.0)
-                j = int(iv * top)
-                e = gamma_table[j]
-                if gamma_table[min(j + 1, top)] - e > 1:
-                    v = encode(value, gamma_table, thresholds)
-                else:
-                    v = np.uint8(e + (iv >= thresholds[min(e + 1, 256)]))
+            iv = value if value > 0.0 else 0.0
+            iv = min(iv, 1.0)
+            e = gamma_table[int(iv * top)]
+            if e < 0:
+                v = encode(value, gamma_table, thresholds)
+            else:
+                v = np.uint8(e + (iv >= thresholds[min(e + 1, 256)]))
             raster[y, at, ch] = v
         if len(mode) == RGBA:
             raster[y, at, 3] = 255

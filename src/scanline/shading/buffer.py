@@ -76,14 +76,16 @@ def homogeneous_eye(eye):
 
 @functools.lru_cache(maxsize=8)
 def gamma_tables(gamma):
-    """The gamma encoding as the kernel's tables: the stored value of each of
-    ``GAMMA_STEPS`` evenly spaced intensities, and the intensity ((v - 1/2) /
-    255)^gamma from which value v is stored (index 0: -inf, 256: inf).  Kept per
-    gamma, read-only."""
+    """The gamma encoding as the kernel's tables: the stored value v of each of
+    ``GAMMA_STEPS`` evenly spaced intensities (-2 - v where the next one is more than
+    one value higher: :func:`scanline._kernels.shade.encode` climbs there), and the
+    intensity ((v - 1/2) / 255)^gamma from which value v is stored (index 0: -inf,
+    256: inf).  Kept per gamma, read-only."""
     from .._kernels.shade import GAMMA_STEPS
     from . import encode
 
     table = encode(np.linspace(0.0, 1.0, GAMMA_STEPS), gamma).astype(np.int64)
+    table[:-1] = np.where(np.diff(table) > 1, -2 - table[:-1], table[:-1])
     thresholds = np.empty(257)
     thresholds[0], thresholds[256] = -np.inf, np.inf
     thresholds[1:256] = ((np.arange(1, 256) - 0.5) / 255.0) ** gamma

@@ -89,6 +89,13 @@ LOG_COLUMNS = 23
 #: Samples per chunk of :func:`trace_all` (chunks are dealt out to the threads).
 CHUNK = 64
 
+#: Codes of the tokens (:mod:`scanline._kernels.variants`) of the tracer's optional
+#: parts, ``maps_token`` (texture, bump and environment maps) and ``with_solids`` (the
+#: solids of :mod:`scanline._kernels.csg`): a scene without them compiles none of
+#: their code (measured: the lookups and the solids are most of the tracer's compile
+#: time on an empty cache).
+WITHOUT, WITH = 1, 2
+
 
 @helper
 def next_random(state):
@@ -162,7 +169,8 @@ def _log(log, count, ray, parent, kind, depth, o, d, t, facet, weight, local, li
 
 
 @helper
-def _seen(ox, oy, oz, tmin, s, lights, bounds, links, table, clear, solids, work, stack, state):
+def _seen(ox, oy, oz, tmin, s, lights, bounds, links, table, clear, solids, work, with_solids,
+          stack, state):
     """What reaches (ox, oy, oz) of light ``s``: the transmittance of the shadow ray
     toward it (:func:`scanline._kernels.bvh.transmittance`; from ``tmin`` on), or for
     an area light the mean over its grid of cells of the shadow rays to a jittered
@@ -198,14 +206,17 @@ def _seen(ox, oy, oz, tmin, s, lights, bounds, links, table, clear, solids, work
             dist = math.inf
         through = transmittance(ox, oy, oz, lx, ly, lz, tmin, dist - tmin, bounds, links, table,
                                 clear, stack)
-        if through > 0.0:
-            through *= solid_transmittance(ox, oy, oz, lx, ly, lz, tmin, dist - tmin, solids, work)
+        if len(with_solids) == WITH:
+            if through > 0.0:
+                through *= solid_transmittance(ox, oy, oz, lx, ly, lz, tmin, dist - tmin, solids,
+                                               work)
         total += through
     return total / cells, dist, lx, ly, lz
 
 
 @kernel
-def shadow_all(start, step, points, seed, eps, lights, bounds, links, table, clear, solids, out):
+def shadow_all(start, step, points, seed, eps, lights, bounds, links, table, clear, solids,
+               with_solids, out):
     """Per point (rows of ``points``) and light (rows of ``lights``) what reaches the
     point (:func:`_seen`, shadow rays from ``eps`` along them on) into ``out`` (S,
     P): the shading's shadow test for the primary rays' hits; the points numbered
@@ -218,12 +229,12 @@ def shadow_all(start, step, points, seed, eps, lights, bounds, links, table, cle
         next_random(state)
         for s in range(lights.shape[0]):
             out[s, i] = _seen(points[i, 0], points[i, 1], points[i, 2], eps, s, lights, bounds,
-                              links, table, clear, solids, work, stack, state)[0]
+                              links, table, clear, solids, work, with_solids, stack, state)[0]
 
 
 @helper
 def _lit(p, n, ng, v, sd, m, mats, lights, ambient, blinn, eps, bounds, links, table, clear,
-         solids, work, stack, state, out, log, count, ray, depth):
+         solids, work, with_solids, stack, state, out, log, count, ray, depth):
     """The local intensity at ``p`` (normal ``n``, geometric normal ``ng``, both facing
     the viewer ``v``; color ``sd``; material row ``m``) into ``out`` (3,): ambient plus
     every light's diffuse and specular terms (an area light's from its center), each
@@ -264,8 +275,8 @@ def _lit(p, n, ng, v, sd, m, mats, lights, ambient, blinn, eps, bounds, links, t
         for c in range(3):
             o[c] = p[c] + side * eps * ng[c]
         through, far, d3[0], d3[1], d3[2] = _seen(o[0], o[1], o[2], 0.0, s, lights, bounds,
-                                                  links, table, clear, solids, work, stack,
-                                                  state)
+                                                  links, table, clear, solids, work,
+                                                  with_solids, stack, state)
         if log.shape[0] > 0:
             _log(log, count, np.int64(-1), ray, np.int64(SHADOW), depth + 1, o, d3, far,
                  np.int64(-1), zero, zero, s, through)
@@ -393,7 +404,8 @@ def _detail(f, m, a, b, secondary, uvs, tangents, maps, mats, texels, levels, sd
 def trace_sample(origin, direction, first, given, sample, seed, max_depth, eps, blinn, bounds,
                  links, table, prim_facet, facet_row, clear, world_n, vertex_normals, colors,
                  facet_mat, front, mats, lights, ambient, background, uvs, tangents, maps,
-                 texels, levels, solids, work, rays, stack, out, log, count):
+                 texels, levels, maps_token, solids, work, with_solids, rays, stack, out, log,
+                 count):
     """Walk the ray tree of one sample whose primary ray (``origin``, ``direction``:
     unit) meets facet ``first`` (-1: nothing; then ``out`` is NaN), where the shading
     stage found the local intensity ``given`` (3,): the intensity into ``out`` (3,).
@@ -454,35 +466,38 @@ def trace_sample(origin, direction, first, given, sample, seed, max_depth, eps, 
         else:
             t, row, u, w = nearest(o[0], o[1], o[2], d[0], d[1], d[2], 0.0, math.inf, bounds,
                                    links, table, stack)
-        if not (parent < 0 and first >= 0):
-            t, code = first_surface(o[0], o[1], o[2], d[0], d[1], d[2], 0.0,
-                                    t if row >= 0 else math.inf, solids, work, sn)
+        if len(with_solids) == WITH:
+            if not (parent < 0 and first >= 0):
+                t, code = first_surface(o[0], o[1], o[2], d[0], d[1], d[2], 0.0,
+                                        t if row >= 0 else math.inf, solids, work, sn)
         if row < 0 and code < 0:
             # leaving the scene: the environment map of the surface left, if any
-            if 0 <= left < maps.shape[0] and maps[left, ENVIRONMENT, 0] >= 0:
-                at = maps[left, ENVIRONMENT]
-                local[0], local[1], local[2] = environment_color(
-                    texels, levels, at[0], at[1], at[2], at[3], at[4], d[0], d[1], d[2],
-                    scratch)
-            else:
-                for c in range(3):
-                    local[c] = background[c]
+            for c in range(3):
+                local[c] = background[c]
+            if len(maps_token) == WITH:
+                if 0 <= left < maps.shape[0] and maps[left, ENVIRONMENT, 0] >= 0:
+                    at = maps[left, ENVIRONMENT]
+                    local[0], local[1], local[2] = environment_color(
+                        texels, levels, at[0], at[1], at[2], at[3], at[4], d[0], d[1], d[2],
+                        scratch)
             for c in range(3):
                 out[c] += weight[c] * local[c]
             if log.shape[0] > 0:
                 _log(log, count, ray, parent, kind, depth, o, d, math.inf, np.int64(-1), weight,
                      local, np.int64(-1), 0.0)
             continue
-        if code >= 0:          # a solid's surface: its exact normal and material
-            f = np.int64(-1)
-            m = solids[9][code_primitive(code, solids[1], solids[6])]
-            for c in range(3):
-                p[c] = o[c] + t * d[c]
-                n[c] = sn[c]
-                ng[c] = sn[c]
-                sd[c] = mats[m, 8 + c]
-                v[c] = -d[c]
-        else:
+        f = np.int64(-1)
+        m = np.int64(0)
+        if len(with_solids) == WITH:
+            if code >= 0:          # a solid's surface: its exact normal and material
+                m = solids[9][code_primitive(code, solids[1], solids[6])]
+                for c in range(3):
+                    p[c] = o[c] + t * d[c]
+                    n[c] = sn[c]
+                    ng[c] = sn[c]
+                    sd[c] = mats[m, 8 + c]
+                    v[c] = -d[c]
+        if code < 0:
             f = prim_facet[row]
             m = facet_mat[f]
             for c in range(3):
@@ -502,14 +517,15 @@ def trace_sample(origin, direction, first, given, sample, seed, max_depth, eps, 
             n[c] *= r
             if not entering:
                 ng[c] = -ng[c]
-        _detail(f, m, u, w, parent >= 0, uvs, tangents, maps, mats, texels, levels, sd, n,
-                scratch)
+        if len(maps_token) == WITH:
+            _detail(f, m, u, w, parent >= 0, uvs, tangents, maps, mats, texels, levels, sd, n,
+                    scratch)
         if parent < 0:
             for c in range(3):
                 local[c] = given[c]
         else:
             _lit(p, n, ng, v, sd, m, mats, lights, ambient, blinn, eps, bounds, links, table,
-                 clear, solids, work, stack, state, local, log, count, ray, depth)
+                 clear, solids, work, with_solids, stack, state, local, log, count, ray, depth)
         kt = mats[m, KT]
         kr = mats[m, KR]
         for c in range(3):
@@ -560,7 +576,7 @@ def trace_sample(origin, direction, first, given, sample, seed, max_depth, eps, 
 def trace_all(start, step, origins, directions, firsts, givens, samples, seed, max_depth, eps,
               blinn, bounds, links, table, prim_facet, facet_row, clear, world_n,
               vertex_normals, colors, facet_mat, front, mats, lights, ambient, background, uvs,
-              tangents, maps, texels, levels, solids, out, log, count):
+              tangents, maps, texels, levels, maps_token, solids, with_solids, out, log, count):
     """:func:`trace_sample` for every sample (rows of ``origins``, ``directions``,
     ``firsts``, ``givens`` and ``samples``, the samples' numbers for the random numbers) into
     ``out`` (P, 3): the chunks of :data:`CHUNK` samples numbered ``start``, ``start +
@@ -577,7 +593,8 @@ def trace_all(start, step, origins, directions, firsts, givens, samples, seed, m
                          max_depth, eps, blinn, bounds, links, table, prim_facet, facet_row,
                          clear, world_n, vertex_normals, colors, facet_mat, front, mats,
                          lights, ambient, background, uvs, tangents, maps, texels, levels,
-                         solids, work, rays, stack, out[i], log, count)
+                         maps_token, solids, work, with_solids, rays, stack, out[i], log,
+                         count)
 
 
 @kernel

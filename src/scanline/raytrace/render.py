@@ -44,6 +44,7 @@ class Traced:
     eps: float
     clear: np.ndarray
     solids: tuple = ()
+    with_solids: tuple = (0,)
 
 
 def material_table(materials, gamma):
@@ -127,6 +128,8 @@ def traced(scene, shading, background, max_depth, seed, program=None):
     the solids (:class:`scanline.solids.program.Program`) traced with the facets."""
     from ..budget import check
     from ..shading import decoded
+    from .._kernels import raytrace as k
+    from .._kernels.variants import token
     from ..solids.program import tracer_solids
     from .bvh import BVH
 
@@ -139,6 +142,9 @@ def traced(scene, shading, background, max_depth, seed, program=None):
     solid_materials = () if program is None else tuple(program.materials)
     mats = material_table(tuple(scene.materials) + solid_materials, shading.gamma)
     solids = tracer_solids(program, len(scene.materials))
+    with_solids = token(k.WITH if program is not None and len(program.primitives) else k.WITHOUT)
+    tables = map_tables(scene, shading.gamma)
+    maps_used = bool((tables[2][:, :, 0] >= 0).any())
     kt = mats[:, 12][scene.facet_mesh] if len(world) else np.zeros(0)
     lights, ambient = light_table(shading.lights)
     with np.errstate(over="ignore"):
@@ -155,7 +161,8 @@ def traced(scene, shading, background, max_depth, seed, program=None):
                                                                      shading.gamma)),
         v.kernel_array(scene.facet_mesh, np.int64), v.kernel_array(scene.front, np.bool_),
         mats, lights, v.kernel_array(ambient), v.kernel_array(background),
-        *map_tables(scene, shading.gamma), solids), lights, int(seed), eps, clear, solids)
+        *tables, token(k.WITH if maps_used else k.WITHOUT), solids, with_solids), lights,
+        int(seed), eps, clear, solids, with_solids)
 
 
 def primary_rays(scene, xs, ys):
@@ -212,7 +219,7 @@ def shadow_test(prepared, twin=False):
         pts = v.kernel_array(np.reshape(points, (-1, 3)))
         out = np.empty((len(lights), len(pts)))
         args = (pts, prepared.seed, prepared.eps, lights, tree.bounds, tree.links, tree.table,
-                prepared.clear, prepared.solids, out)
+                prepared.clear, prepared.solids, prepared.with_solids, out)
         if twin:
             with np.errstate(all="ignore"):
                 python(k.shadow_all)(0, 1, *args)

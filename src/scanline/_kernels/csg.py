@@ -95,13 +95,13 @@ def evaluate(ox, oy, oz, dx, dy, dz, program, prims, bounds, links, table, verts
     """The inside intervals of the program's solid along the line o + t d: returns
     their count in list 0 of ``ts`` / ``cs`` (S = the program's stack depth + 1
     lists), or -1 when a list would pass its length (or the crossings their buffer)."""
-    hits = 0
+    hits = np.int64(0)
     if table.shape[0] > 0:
         hits = crossings(ox, oy, oz, dx, dy, dz, bounds, links, verts, hit_t, hit_row, stack)
         if hits < 0:
             return -1
     slots = ts.shape[0]
-    top = 0
+    top = np.int64(0)
     base = 8 * prims.shape[0]
     for p in range(program.shape[0]):
         op = program[p, 0]

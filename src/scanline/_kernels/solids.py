@@ -96,17 +96,15 @@ def _slabs(prims, k, u, code):
 
 
 @helper
-def _form(prims, k, u, i, j):
-    """(u_i-part)^T Q (u_j-part) with homogeneous w: 1 for an origin (i = 0), 0 for a
-    direction (i = 3)."""
+def _form(prims, k, a0, a1, a2, a3, b0, b1, b2, b3):
+    """a^T Q b for homogeneous 4-vectors a and b (w = 1 for a point, 0 for a
+    direction) and primitive ``k``'s Q."""
     s = 0.0
     for r in range(4):
-        a = (u[i + r] if r < 3 else (1.0 if i == 0 else 0.0))
-        if a == 0.0:
-            continue
-        for c in range(4):
-            b = (u[j + c] if c < 3 else (1.0 if j == 0 else 0.0))
-            s += a * prims[k, Q0 + 4 * r + c] * b
+        a = a0 if r == 0 else a1 if r == 1 else a2 if r == 2 else a3
+        q = Q0 + 4 * r
+        s += a * (prims[k, q] * b0 + prims[k, q + 1] * b1 + prims[k, q + 2] * b2
+                  + prims[k, q + 3] * b3)
     return s
 
 
@@ -153,9 +151,9 @@ def primitive_intervals(prims, k, ox, oy, oz, dx, dy, dz, u, ts, cs, slot):
         cs[slot, 0, 0] = cn
         cs[slot, 0, 1] = cf
         return 1
-    qa = _form(prims, k, u, 3, 3)
-    qb = _form(prims, k, u, 3, 0)
-    qc = _form(prims, k, u, 0, 0)
+    qa = _form(prims, k, u[3], u[4], u[5], 0.0, u[3], u[4], u[5], 0.0)
+    qb = _form(prims, k, u[3], u[4], u[5], 0.0, u[0], u[1], u[2], 1.0)
+    qc = _form(prims, k, u[0], u[1], u[2], 1.0, u[0], u[1], u[2], 1.0)
     count, a0, b0, a1, b1 = quadric_roots(qa, qb, qc)
     n = 0
     quad = 2 * (8 * k)

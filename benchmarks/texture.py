@@ -15,7 +15,15 @@ to the pixels read back (``fbo.read``).
 
 Ratio: Mesa time / scanline time (above 1: scanline is faster).
 
-Run: ``python benchmarks/texture.py [--quick]`` (``--quick``: a 10x smaller grid).
+Thread counts: the same on both sides, every core by default: scanline's rows and
+triangles are shared out by numba's thread count (``numba.set_num_threads``), and
+llvmpipe's rasterizer threads are set by ``LP_NUM_THREADS`` (read when the GL context
+is made, after scanline's timing) to the same number; ``--threads N`` sets both.
+Each side's time is the best of ``--repeats`` warm frames (default 10: llvmpipe's
+frames vary more on a shared machine).
+
+Run: ``python benchmarks/texture.py [--quick] [--threads N] [--repeats R]``
+(``--quick``: a 10x smaller grid).
 """
 
 import argparse
@@ -68,7 +76,16 @@ def grid(n, size=40.0, repeats=8.0):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--threads", type=int, default=None,
+                    help="threads for both sides (default: numba's, every core)")
+    ap.add_argument("--repeats", type=int, default=10)
     args = ap.parse_args()
+    import numba
+
+    if args.threads is not None:
+        numba.set_num_threads(args.threads)
+    threads = numba.get_num_threads()
+    os.environ["LP_NUM_THREADS"] = str(threads)
     report = Report("texture", quick=args.quick)
     n = 70 if args.quick else 224
     mesh = grid(n)
@@ -85,8 +102,8 @@ def main():
     def ours():
         fb.clear()
         sl.render(fb, mesh, cam, materials=mat, lights=lights)
-    report.add(work, "scanline", "sl.render(fb, grid, camera, materials=Material(texture=...))",
-               ours)
+    report.add(work, "scanline", "sl.render(fb, grid, camera, materials=Material(texture=...)), "
+               f"{threads} threads", ours, repeats=args.repeats)
     fb.save(os.path.join(os.path.dirname(os.path.abspath(__file__)), "results",
                          "texture-grid.png"))
     ctx, renderer = gl_setup()
@@ -119,14 +136,14 @@ def main():
             vao.render(moderngl.TRIANGLES)
             return fbo.read(components=4)
         report.add(work, "mesa", f"moderngl textured GL_TRIANGLES on {renderer}, GL_LINEAR, "
-                   "clear to read-back", mesa)
+                   f"clear to read-back, LP_NUM_THREADS={threads}", mesa, repeats=args.repeats)
         report.target(work, "mesa", 1.0, ">= 1.0: at least as fast as Mesa llvmpipe")
         from PIL import Image
 
         pixels = np.frombuffer(mesa(), np.uint8).reshape(H, W, 4)[::-1, :, :3]
         Image.fromarray(pixels).save(os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                                   "results", "texture-grid-mesa.png"))
-    print(f"  cores: {os.cpu_count()}")
+    print(f"  cores: {os.cpu_count()}, threads: scanline {threads}, llvmpipe {threads}")
     report.write()
 
 

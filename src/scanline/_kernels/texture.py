@@ -93,7 +93,7 @@ def lookup(texels, k, kx, ky, ax, ay):
     return r, g, b
 
 
-@helper
+@inline
 def level_of_detail(levels, first, count, dudx, dvdx, dudy, dvdy):
     """The mipmap level (a real in 0 .. count - 1) for a pixel whose texture
     coordinates change by (dudx, dvdx) and (dudy, dvdy) per pixel: log2 of the longer
@@ -159,7 +159,7 @@ def sample_run(texels, levels, first, count, filter, wrap, s, at, stride, lo, hi
         k[i], kx[i], ky[i] = lookup(texels, k[i], kx[i], ky[i], u[i], v[i])
 
 
-@helper
+@inline
 def places(u, v, k, kx, ky, levels, level, wrap, half):
     """:func:`sample_run`'s first pass at ``level``: each item's weights into ``u``,
     ``v`` and its four texels' places into ``k``, ``kx``, ``ky`` (:func:`lookup`'s

@@ -276,6 +276,12 @@ CALLS = {
     "visible octree": ("visible", "sl.render(fb, [sl.mesh.cube(), sl.mesh.sphere(0.6, "
                                   "(0.8, 0.5, 0.8))], sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)), "
                                   "method='octree', shading='none')", RGB),
+    "csg ray-casting": ("csg", "sl.render(fb, [(sl.solids.Box() & sl.solids.Sphere(radius=1.3)) "
+                               "- sl.solids.Cylinder(radius=0.5, height=3), sl.solids.MeshSolid("
+                               "sl.mesh.cube(0.5, center=(2, 0, 0)))], sl.Camera(eye=(3, 2, 4), "
+                               "target=(0, 0, 0)), method='ray-casting')", RGB),
+    "csg volume": ("csg", "sl.csg.mass_properties(sl.solids.Sphere() - sl.solids.MeshSolid("
+                          "sl.mesh.cube(1.0)), resolution=16).volume", None),
     "octree": ("octree", "(sl.octree.Octree.from_mesh(sl.mesh.cube(), 3) - sl.octree.Octree"
                          ".from_solid(sl.solids.Sphere(), 3)).to_mesh().face_count", None),
     "quadtree": ("octree", "(sl.octree.Quadtree.from_polygon([(1, 1), (7, 2), (3, 6)], 3) | "

@@ -90,9 +90,10 @@ LOG_COLUMNS = 23
 CHUNK = 64
 
 #: Codes of the tokens (:mod:`scanline._kernels.variants`) of the tracer's optional
-#: parts, ``maps_token`` (texture, bump and environment maps) and ``with_solids`` (the
-#: solids of :mod:`scanline._kernels.csg`): a scene without them compiles none of
-#: their code (measured: the lookups and the solids are most of the tracer's compile
+#: parts, ``maps_token`` (texture, bump and environment maps), ``with_solids`` (the
+#: solids of :mod:`scanline._kernels.csg`) and ``logging`` (the ray tree's log, written
+#: by the step table's Python twin only): a scene without them compiles none of
+#: their code (measured: the lookups and the solids were most of the tracer's compile
 #: time on an empty cache).
 WITHOUT, WITH = 1, 2
 
@@ -223,7 +224,9 @@ def shadow_all(start, step, points, seed, eps, lights, bounds, links, table, cle
     ``start``, ``start + step`` ... (one call per thread)."""
     stack = np.empty(STACK, np.int64)
     state = np.empty(1, np.uint64)
-    work = solid_scratch(solids)
+    work = np.empty(0)           # (no solids: not used)
+    if len(with_solids) == WITH:
+        work = solid_scratch(solids)
     for i in range(start, points.shape[0], max(step, 1)):
         state[0] = np.uint64(seed) * np.uint64(0xD1B54A32D192ED03) + np.uint64(i)
         next_random(state)
@@ -234,7 +237,7 @@ def shadow_all(start, step, points, seed, eps, lights, bounds, links, table, cle
 
 @helper
 def _lit(p, n, ng, v, sd, m, mats, lights, ambient, blinn, eps, bounds, links, table, clear,
-         solids, work, with_solids, stack, state, out, log, count, ray, depth):
+         solids, work, with_solids, stack, state, out, logging, log, count, ray, depth):
     """The local intensity at ``p`` (normal ``n``, geometric normal ``ng``, both facing
     the viewer ``v``; color ``sd``; material row ``m``) into ``out`` (3,): ambient plus
     every light's diffuse and specular terms (an area light's from its center), each
@@ -277,7 +280,7 @@ def _lit(p, n, ng, v, sd, m, mats, lights, ambient, blinn, eps, bounds, links, t
         through, far, d3[0], d3[1], d3[2] = _seen(o[0], o[1], o[2], 0.0, s, lights, bounds,
                                                   links, table, clear, solids, work,
                                                   with_solids, stack, state)
-        if log.shape[0] > 0:
+        if len(logging) == WITH:
             _log(log, count, np.int64(-1), ray, np.int64(SHADOW), depth + 1, o, d3, far,
                  np.int64(-1), zero, zero, s, through)
         if through <= 0.0:
@@ -400,40 +403,33 @@ def _detail(f, m, a, b, secondary, uvs, tangents, maps, mats, texels, levels, sd
     n[2] = oz * r
 
 
-@helper
-def trace_sample(origin, direction, first, given, sample, seed, max_depth, eps, blinn, bounds,
-                 links, table, prim_facet, facet_row, clear, world_n, vertex_normals, colors,
-                 facet_mat, front, mats, lights, ambient, background, uvs, tangents, maps,
-                 texels, levels, maps_token, solids, work, with_solids, rays, stack, out, log,
-                 count):
-    """Walk the ray tree of one sample whose primary ray (``origin``, ``direction``:
-    unit) meets facet ``first`` (-1: nothing; then ``out`` is NaN), where the shading
-    stage found the local intensity ``given`` (3,): the intensity into ``out`` (3,).
-    ``rays``: a (MAX_RAYS + 1, :data:`RAY_COLUMNS`) stack of rays; ``uvs`` (G, 3, 2)
-    and ``tangents`` (G, 6) the facets' texture coordinates and P_u, P_v (empty: no
-    maps), ``maps`` (M, 3, 5) each material's maps in ``texels`` and ``levels``;
-    ``solids`` (:mod:`scanline._kernels.csg`, ``work`` its scratch) the solids, met as
-    exactly as the triangles (a primary ray whose ``first`` is :data:`SOLID` meets a
-    solid first)."""
-    if first < 0 and first != SOLID:
-        for c in range(3):
-            out[c] = math.nan
-        return
+@kernel
+def trace_all(start, step, origins, directions, firsts, givens, samples, seed, max_depth, eps,
+              blinn, bounds, links, table, prim_facet, facet_row, clear, world_n,
+              vertex_normals, colors, facet_mat, front, mats, lights, ambient, background, uvs,
+              tangents, maps, texels, levels, maps_token, solids, with_solids, out, logging, log,
+              count):
+    """Walk the ray tree of every sample (rows of ``origins``, ``directions`` (unit),
+    ``firsts``, ``givens`` and ``samples``, the samples' numbers for the random
+    numbers) into ``out`` (P, 3): the sample's primary ray meets facet ``first`` (-1:
+    nothing, the output is NaN; :data:`SOLID`: a solid), where the shading stage found
+    the local intensity ``given`` (3,).  ``rays``: a (MAX_RAYS + 1,
+    :data:`RAY_COLUMNS`) stack of rays; ``uvs`` (G, 3, 2) and ``tangents`` (G, 6) the
+    facets' texture coordinates and P_u, P_v (empty: no maps), ``maps`` (M, 3, 5) each
+    material's maps in ``texels`` and ``levels``; ``solids``
+    (:mod:`scanline._kernels.csg`) the solids, met as exactly as the triangles.  The
+    chunks of :data:`CHUNK` samples numbered ``start``, ``start +
+    step`` ... (calls with start = 0 .. step - 1 on as many threads share the work,
+    the costly chunks of glass and mirrors spread among them).  ``log`` (L,
+    :data:`LOG_COLUMNS`) receives the rays when ``logging`` says so (one sample at a
+    time)."""
+    total = origins.shape[0]
+    stack = np.empty(STACK, np.int64)
+    rays = np.empty((MAX_RAYS + 1, RAY_COLUMNS))
+    work = np.empty(0)           # (no solids: not used)
+    if len(with_solids) == WITH:
+        work = solid_scratch(solids)
     state = np.empty(1, np.uint64)
-    state[0] = np.uint64(seed) * np.uint64(0xD1B54A32D192ED03) + np.uint64(sample)
-    next_random(state)
-    for c in range(3):
-        out[c] = 0.0
-        rays[0, c] = origin[c]
-        rays[0, 3 + c] = direction[c]
-        rays[0, WEIGHT + c] = 1.0
-    rays[0, DEPTH] = 1.0
-    rays[0, PARENT] = -1.0
-    rays[0, KIND] = PRIMARY
-    rays[0, LEFT] = -1.0
-    top = 1
-    made = 1
-    ray = -1
     p = np.empty(3)
     n = np.empty(3)
     ng = np.empty(3)
@@ -446,155 +442,159 @@ def trace_sample(origin, direction, first, given, sample, seed, max_depth, eps, 
     tint = np.empty(3)
     scratch = np.empty(24)
     sn = np.empty(3)
-    while top > 0:
-        top -= 1
-        ray += 1
-        for c in range(3):
-            o[c] = rays[top, c]
-            d[c] = rays[top, 3 + c]
-            weight[c] = rays[top, WEIGHT + c]
-        depth = int(rays[top, DEPTH])
-        parent = int(rays[top, PARENT])
-        kind = int(rays[top, KIND])
-        left = int(rays[top, LEFT])
-        code = np.int64(-1)
-        if parent < 0 and first >= 0:
-            row = facet_row[first]
-            t, u, w = moller_trumbore(o[0], o[1], o[2], d[0], d[1], d[2], table, row)
-        elif parent < 0:                 # the primary ray's first surface is a solid's
-            t, row, u, w = math.inf, np.int64(-1), 0.0, 0.0
-        else:
-            t, row, u, w = nearest(o[0], o[1], o[2], d[0], d[1], d[2], 0.0, math.inf, bounds,
-                                   links, table, stack)
-        if len(with_solids) == WITH:
-            if not (parent < 0 and first >= 0):
-                t, code = first_surface(o[0], o[1], o[2], d[0], d[1], d[2], 0.0,
-                                        t if row >= 0 else math.inf, solids, work, sn)
-        if row < 0 and code < 0:
-            # leaving the scene: the environment map of the surface left, if any
+    for j in range(total):          # this thread's samples, chunk after chunk
+        i = (start + (j // CHUNK) * max(step, 1)) * CHUNK + j % CHUNK
+        if i >= total:
+            break
+        origin = origins[i]
+        direction = directions[i]
+        first = firsts[i]
+        given = givens[i]
+        sample = samples[i]
+        pixel = out[i]
+        if first < 0 and first != SOLID:
             for c in range(3):
-                local[c] = background[c]
-            if len(maps_token) == WITH:
-                if 0 <= left < maps.shape[0] and maps[left, ENVIRONMENT, 0] >= 0:
-                    at = maps[left, ENVIRONMENT]
-                    local[0], local[1], local[2] = environment_color(
-                        texels, levels, at[0], at[1], at[2], at[3], at[4], d[0], d[1], d[2],
-                        scratch)
-            for c in range(3):
-                out[c] += weight[c] * local[c]
-            if log.shape[0] > 0:
-                _log(log, count, ray, parent, kind, depth, o, d, math.inf, np.int64(-1), weight,
-                     local, np.int64(-1), 0.0)
+                pixel[c] = math.nan
             continue
-        f = np.int64(-1)
-        m = np.int64(0)
-        if len(with_solids) == WITH:
-            if code >= 0:          # a solid's surface: its exact normal and material
-                m = solids[9][code_primitive(code, solids[1], solids[6])]
+        state[0] = np.uint64(seed) * np.uint64(0xD1B54A32D192ED03) + np.uint64(sample)
+        next_random(state)
+        for c in range(3):
+            pixel[c] = 0.0
+            rays[0, c] = origin[c]
+            rays[0, 3 + c] = direction[c]
+            rays[0, WEIGHT + c] = 1.0
+        rays[0, DEPTH] = 1.0
+        rays[0, PARENT] = -1.0
+        rays[0, KIND] = PRIMARY
+        rays[0, LEFT] = -1.0
+        top = 1
+        made = 1
+        ray = -1
+        while top > 0:
+            top -= 1
+            ray += 1
+            for c in range(3):
+                o[c] = rays[top, c]
+                d[c] = rays[top, 3 + c]
+                weight[c] = rays[top, WEIGHT + c]
+            depth = int(rays[top, DEPTH])
+            parent = int(rays[top, PARENT])
+            kind = int(rays[top, KIND])
+            left = int(rays[top, LEFT])
+            code = np.int64(-1)
+            if parent < 0 and first >= 0:
+                row = facet_row[first]
+                t, u, w = moller_trumbore(o[0], o[1], o[2], d[0], d[1], d[2], table, row)
+            elif parent < 0:                 # the primary ray's first surface is a solid's
+                t, row, u, w = math.inf, np.int64(-1), 0.0, 0.0
+            else:
+                t, row, u, w = nearest(o[0], o[1], o[2], d[0], d[1], d[2], 0.0, math.inf, bounds,
+                                       links, table, stack)
+            if len(with_solids) == WITH:
+                if not (parent < 0 and first >= 0):
+                    t, code = first_surface(o[0], o[1], o[2], d[0], d[1], d[2], 0.0,
+                                            t if row >= 0 else math.inf, solids, work, sn)
+            if row < 0 and code < 0:
+                # leaving the scene: the environment map of the surface left, if any
                 for c in range(3):
-                    p[c] = o[c] + t * d[c]
-                    n[c] = sn[c]
-                    ng[c] = sn[c]
-                    sd[c] = mats[m, 8 + c]
+                    local[c] = background[c]
+                if len(maps_token) == WITH:
+                    if 0 <= left < maps.shape[0] and maps[left, ENVIRONMENT, 0] >= 0:
+                        at = maps[left, ENVIRONMENT]
+                        local[0], local[1], local[2] = environment_color(
+                            texels, levels, at[0], at[1], at[2], at[3], at[4], d[0], d[1], d[2],
+                            scratch)
+                for c in range(3):
+                    pixel[c] += weight[c] * local[c]
+                if len(logging) == WITH:
+                    _log(log, count, ray, parent, kind, depth, o, d, math.inf, np.int64(-1),
+                         weight, local, np.int64(-1), 0.0)
+                continue
+            f = np.int64(-1)
+            m = np.int64(0)
+            if len(with_solids) == WITH:
+                if code >= 0:          # a solid's surface: its exact normal and material
+                    m = solids[9][code_primitive(code, solids[1], solids[6])]
+                    for c in range(3):
+                        p[c] = o[c] + t * d[c]
+                        n[c] = sn[c]
+                        ng[c] = sn[c]
+                        sd[c] = mats[m, 8 + c]
+                        v[c] = -d[c]
+            if code < 0:
+                f = prim_facet[row]
+                m = facet_mat[f]
+                for c in range(3):
+                    p[c] = table[row, c] + u * table[row, 3 + c] + w * table[row, 6 + c]
+                    n[c] = ((1.0 - u - w) * vertex_normals[f, 0, c] + u * vertex_normals[f, 1, c]
+                            + w * vertex_normals[f, 2, c])
+                    sd[c] = ((1.0 - u - w) * colors[f, 0, c] + u * colors[f, 1, c]
+                             + w * colors[f, 2, c])
+                    ng[c] = world_n[f, c]
                     v[c] = -d[c]
-        if code < 0:
-            f = prim_facet[row]
-            m = facet_mat[f]
+            # which side the ray meets: the primary ray the side the back-face test saw
+            entering = ng[0] * d[0] + ng[1] * d[1] + ng[2] * d[2] < 0
+            toward = front[f] if parent < 0 and f >= 0 else entering
+            nn = math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2])
+            r = (1.0 if toward else -1.0) / nn if nn != 0 else 0.0
             for c in range(3):
-                p[c] = table[row, c] + u * table[row, 3 + c] + w * table[row, 6 + c]
-                n[c] = ((1.0 - u - w) * vertex_normals[f, 0, c] + u * vertex_normals[f, 1, c]
-                        + w * vertex_normals[f, 2, c])
-                sd[c] = ((1.0 - u - w) * colors[f, 0, c] + u * colors[f, 1, c]
-                         + w * colors[f, 2, c])
-                ng[c] = world_n[f, c]
-                v[c] = -d[c]
-        # which side the ray meets: the primary ray the side the back-face test saw
-        entering = ng[0] * d[0] + ng[1] * d[1] + ng[2] * d[2] < 0
-        toward = front[f] if parent < 0 and f >= 0 else entering
-        nn = math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2])
-        r = (1.0 if toward else -1.0) / nn if nn != 0 else 0.0
-        for c in range(3):
-            n[c] *= r
-            if not entering:
-                ng[c] = -ng[c]
-        if len(maps_token) == WITH:
-            _detail(f, m, u, w, parent >= 0, uvs, tangents, maps, mats, texels, levels, sd, n,
-                    scratch)
-        if parent < 0:
+                n[c] *= r
+                if not entering:
+                    ng[c] = -ng[c]
+            if len(maps_token) == WITH:
+                _detail(f, m, u, w, parent >= 0, uvs, tangents, maps, mats, texels, levels, sd, n,
+                        scratch)
+            if parent < 0:
+                for c in range(3):
+                    local[c] = given[c]
+            else:
+                _lit(p, n, ng, v, sd, m, mats, lights, ambient, blinn, eps, bounds, links, table,
+                     clear, solids, work, with_solids, stack, state, local, logging, log, count,
+                     ray, depth)
+            kt = mats[m, KT]
+            kr = mats[m, KR]
             for c in range(3):
-                local[c] = given[c]
-        else:
-            _lit(p, n, ng, v, sd, m, mats, lights, ambient, blinn, eps, bounds, links, table,
-                 clear, solids, work, with_solids, stack, state, local, log, count, ray, depth)
-        kt = mats[m, KT]
-        kr = mats[m, KR]
-        for c in range(3):
-            out[c] += weight[c] * (1.0 - kt) * local[c]
-        if log.shape[0] > 0:
-            for c in range(3):
-                local[c] *= 1.0 - kt
-            _log(log, count, ray, parent, kind, depth, o, d, t, f, weight, local, np.int64(-1),
-                 0.0)
-        if depth >= max_depth or (kr <= 0.0 and kt <= 0.0):
-            continue
-        # the normal for the new directions: the shading normal unless it faces away
-        cos_i = -(d[0] * n[0] + d[1] * n[1] + d[2] * n[2])
-        if not cos_i > 0:
-            for c in range(3):
-                n[c] = ng[c]
+                pixel[c] += weight[c] * (1.0 - kt) * local[c]
+            if len(logging) == WITH:
+                for c in range(3):
+                    local[c] *= 1.0 - kt
+                _log(log, count, ray, parent, kind, depth, o, d, t, f, weight, local, np.int64(-1),
+                     0.0)
+            if depth >= max_depth or (kr <= 0.0 and kt <= 0.0):
+                continue
+            # the normal for the new directions: the shading normal unless it faces away
             cos_i = -(d[0] * n[0] + d[1] * n[1] + d[2] * n[2])
-        eta = mats[m, ETA]
-        big_f = 0.0
-        cos_t = -1.0
-        if kt > 0.0:
-            big_f, cos_t = fresnel(cos_i, 1.0 if entering else eta, eta if entering else 1.0)
-        most = max(weight[0], weight[1], weight[2])
-        for c in range(3):
-            tint[c] = kt * (1.0 - big_f)
-        if most * tint[0] >= MIN_WEIGHT and cos_t >= 0.0 and made < MAX_RAYS \
-                and top < rays.shape[0]:
-            bend(d, n, 1.0 / eta if entering else eta, cos_i, cos_t, rays[top, 3:6])
-            _push(rays, top, p, -eps, ng, weight, tint, depth + 1, ray, np.int64(REFRACTED), m)
-            top += 1
-            made += 1
-        for c in range(3):
-            tint[c] = kr * mats[m, 4 + c] + kt * big_f
-        if most * max(tint[0], tint[1], tint[2]) >= MIN_WEIGHT and made < MAX_RAYS \
-                and top < rays.shape[0]:
-            mirror(d, n, cos_i, rays[top, 3:6])
-            rough = mats[m, ROUGH]
-            if rough > 0:
-                _cone(rays[top, 3:6], rough, state)
-            if (rays[top, 3] * ng[0] + rays[top, 4] * ng[1] + rays[top, 5] * ng[2]) <= 0:
-                mirror(d, ng, -(d[0] * ng[0] + d[1] * ng[1] + d[2] * ng[2]), rays[top, 3:6])
-            _push(rays, top, p, eps, ng, weight, tint, depth + 1, ray, np.int64(REFLECTED), m)
-            top += 1
-            made += 1
-
-
-@kernel
-def trace_all(start, step, origins, directions, firsts, givens, samples, seed, max_depth, eps,
-              blinn, bounds, links, table, prim_facet, facet_row, clear, world_n,
-              vertex_normals, colors, facet_mat, front, mats, lights, ambient, background, uvs,
-              tangents, maps, texels, levels, maps_token, solids, with_solids, out, log, count):
-    """:func:`trace_sample` for every sample (rows of ``origins``, ``directions``,
-    ``firsts``, ``givens`` and ``samples``, the samples' numbers for the random numbers) into
-    ``out`` (P, 3): the chunks of :data:`CHUNK` samples numbered ``start``, ``start +
-    step`` ... (calls with start = 0 .. step - 1 on as many threads share the work,
-    the costly chunks of glass and mirrors spread among them).  ``log`` (L,
-    :data:`LOG_COLUMNS`) receives the rays when it has rows (one sample at a time)."""
-    total = origins.shape[0]
-    stack = np.empty(STACK, np.int64)
-    rays = np.empty((MAX_RAYS + 1, RAY_COLUMNS))
-    work = solid_scratch(solids)
-    for chunk in range(start, (total + CHUNK - 1) // CHUNK, max(step, 1)):
-        for i in range(chunk * CHUNK, min(total, (chunk + 1) * CHUNK)):
-            trace_sample(origins[i], directions[i], firsts[i], givens[i], samples[i], seed,
-                         max_depth, eps, blinn, bounds, links, table, prim_facet, facet_row,
-                         clear, world_n, vertex_normals, colors, facet_mat, front, mats,
-                         lights, ambient, background, uvs, tangents, maps, texels, levels,
-                         maps_token, solids, work, with_solids, rays, stack, out[i], log,
-                         count)
+            if not cos_i > 0:
+                for c in range(3):
+                    n[c] = ng[c]
+                cos_i = -(d[0] * n[0] + d[1] * n[1] + d[2] * n[2])
+            eta = mats[m, ETA]
+            big_f = 0.0
+            cos_t = -1.0
+            if kt > 0.0:
+                big_f, cos_t = fresnel(cos_i, 1.0 if entering else eta, eta if entering else 1.0)
+            most = max(weight[0], weight[1], weight[2])
+            for c in range(3):
+                tint[c] = kt * (1.0 - big_f)
+            if most * tint[0] >= MIN_WEIGHT and cos_t >= 0.0 and made < MAX_RAYS \
+                    and top < rays.shape[0]:
+                bend(d, n, 1.0 / eta if entering else eta, cos_i, cos_t, rays[top, 3:6])
+                _push(rays, top, p, -eps, ng, weight, tint, depth + 1, ray, np.int64(REFRACTED), m)
+                top += 1
+                made += 1
+            for c in range(3):
+                tint[c] = kr * mats[m, 4 + c] + kt * big_f
+            if most * max(tint[0], tint[1], tint[2]) >= MIN_WEIGHT and made < MAX_RAYS \
+                    and top < rays.shape[0]:
+                mirror(d, n, cos_i, rays[top, 3:6])
+                rough = mats[m, ROUGH]
+                if rough > 0:
+                    _cone(rays[top, 3:6], rough, state)
+                if (rays[top, 3] * ng[0] + rays[top, 4] * ng[1] + rays[top, 5] * ng[2]) <= 0:
+                    mirror(d, ng, -(d[0] * ng[0] + d[1] * ng[1] + d[2] * ng[2]), rays[top, 3:6])
+                _push(rays, top, p, eps, ng, weight, tint, depth + 1, ray, np.int64(REFLECTED), m)
+                top += 1
+                made += 1
 
 
 @kernel

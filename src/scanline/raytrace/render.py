@@ -268,6 +268,7 @@ def trace(prepared, origins, directions, firsts, givens, samples, log=None):
     from .._kernels._jit import python
     from .._kernels._threads import call_in_bands
     from .._kernels import raytrace as k
+    from .._kernels.variants import token
 
     out = np.empty((len(origins), 3))
     count = np.zeros(1, np.int64)
@@ -276,10 +277,10 @@ def trace(prepared, origins, directions, firsts, givens, samples, log=None):
             v.kernel_array(samples, np.int64), *prepared.arguments, out)
     if log is None:
         call_in_bands(k.trace_all, 20 * len(origins) * (8 + 6 * len(prepared.lights)), *args,
-                      np.zeros((0, k.LOG_COLUMNS)), count)
+                      token(k.WITHOUT), np.zeros((0, k.LOG_COLUMNS)), count)
         return out
     with np.errstate(all="ignore"):
-        python(k.trace_all)(0, 1, *args, log, count)
+        python(k.trace_all)(0, 1, *args, token(k.WITH), log, count)
     return out, int(count[0])
 
 

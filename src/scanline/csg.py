@@ -125,6 +125,9 @@ def _grid(solid, resolution):
         raise ArgumentValueError(f"resolution must be at most 8192 (rays per side), got {n}")
     check(64 * n * n, "resolution", f"{n} x {n} rays", "use a smaller resolution")
     lo, hi = finite_bounds(solid)
+    if not (np.abs(np.concatenate([lo, hi])) < 1e150).all():
+        raise ArgumentValueError(f"solid: bounds {lo.tolist()} .. {hi.tolist()} reach past "
+                                 f"1e150: its volume would overflow; scale it down")
     if not (hi > lo).all():
         return np.zeros((0, 3)), 0.0
     size = (hi - lo)[:2] / n

@@ -196,3 +196,26 @@ def test_open_box_is_refused_and_inverted_face_named():
     faces[0] = faces[0][::-1]
     with pytest.raises(ArgumentValueError, match="same way"):
         S.MeshSolid(sl.mesh.Mesh(box.vertices, faces))
+
+
+def test_hostile_rays_give_misses_or_hits_never_garbage():
+    # NaN, infinite, huge and zero components against every kind of primitive and a mesh
+    tree = (S.Box() & S.Sphere(radius=1.3)) - S.Cylinder(radius=0.5, height=3) | \
+        S.Cone() | S.MeshSolid(sl.mesh.cube(0.5, center=(2, 0, 0))) | \
+        S.Quadric.from_coefficients(a=1, b=1, c=-1, j=-1)
+    values = np.array([0.0, 1.0, -1.0, 1e300, -1e300, 1e-300, np.inf, -np.inf, np.nan])
+    o = RNG.choice(values, (3000, 3))
+    d = RNG.choice(values, (3000, 3))
+    t, code, n = Program(tree).cast(o, d)
+    hit = code >= 0
+    assert np.array_equal(hit, np.isfinite(t)) and (code >= -1).all()
+    assert hit.any() and (t[hit] > 0).all()
+    finite = n[hit][np.isfinite(n[hit]).all(axis=1)]
+    assert np.allclose(np.linalg.norm(finite[(finite != 0).any(axis=1)], axis=1), 1)
+
+
+def test_huge_solids_are_refused_by_volume():
+    with pytest.raises(ArgumentValueError, match="1e150"):
+        sl.csg.volume(S.Box((0, 0, 0), (1e200, 1, 1)))
+    with pytest.raises(ArgumentValueError, match="unbounded"):      # its bounds overflow
+        sl.csg.volume(S.Sphere((0, 0, 0), 1e200))

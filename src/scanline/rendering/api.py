@@ -62,6 +62,9 @@ def render(fb: FrameBuffer, meshes: Union[Mesh, Iterable[Mesh]], camera: Camera,
         Mode "L", "RGB" or "RGBA" (any mode with ``shading="none"``); pixels where no
         surface is seen keep their value.
     meshes : Mesh or list of Mesh
+        Solids (:mod:`scanline.solids`, CSG trees of :mod:`scanline.csg`) may be given
+        among them: ``method="ray-casting"`` and ``"ray-tracing"`` draw their exact
+        surfaces (``docs/solids.md``); the other methods refuse them.
     camera : Camera
     method : str
         A name in :data:`scanline.visible.METHODS`: "z-buffer" (Hearn & Baker 13-3),

@@ -150,7 +150,8 @@ class Ellipsoid(Primitive):
     def bounds(self):
         """Exact: the center +- the norms of the rows of M's linear part."""
         c = self.matrix[:3, 3]
-        half = np.sqrt((self.matrix[:3, :3] ** 2).sum(axis=1))
+        with np.errstate(over="ignore"):            # past the float range: unbounded
+            half = np.sqrt((self.matrix[:3, :3] ** 2).sum(axis=1))
         return c - half, c + half
 
 

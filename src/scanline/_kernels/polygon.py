@@ -325,3 +325,29 @@ def fill_polygons(buf, layout, width, height, ox, oy, verts, contours, polys, co
         fill_polygon(buf, layout, width, height, ox, oy, verts, contours, polys[p],
                      polys[p + 1], colors[0 if one else p], rule, et, ef, counts, order,
                      active, keys, dirs, fkeys, tkeys, titems)
+
+
+#: The vertex coordinates :func:`fill_ring` takes (+-2**30, as the API checks).
+RING_LIMIT = float(1 << 30)
+
+
+@kernel
+def fill_ring(buf, layout, width, height, verts, color, rule):
+    """Fill one contour, ``verts`` (N, 2) float64, with ``color`` (the single-call
+    path of :func:`scanline.draw.polygon`).  Returns False, having drawn nothing,
+    unless every vertex is finite and within +-2**30 (the API then takes its
+    general path, which clips far geometry or names the bad vertex)."""
+    n = verts.shape[0]
+    for i in range(n):
+        if not (abs(verts[i, 0]) <= RING_LIMIT and abs(verts[i, 1]) <= RING_LIMIT):
+            return False            # (NaN fails the comparison too)
+    contours = np.empty(2, np.int64)
+    contours[0] = 0
+    contours[1] = n
+    polys = np.empty(2, np.int64)
+    polys[0] = 0
+    polys[1] = 1
+    fill_polygons(buf, layout, width, height, 0, 0, verts, contours, polys,
+                  color.reshape((1, color.shape[0])), rule, n)
+    return True
+

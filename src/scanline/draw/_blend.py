@@ -62,7 +62,7 @@ def _alpha(spec):
     """The alpha (0..255) of one color spec without converting it fully."""
     if isinstance(spec, str):
         return rgba(spec)[3] if len(spec) in (5, 9) or not spec.startswith("#") else 255
-    if isinstance(spec, (tuple, list, np.ndarray)) and np.ndim(spec) == 1 and len(spec) == 4 \
+    if isinstance(spec, (tuple, list, np.ndarray)) and len(spec) == 4 and np.ndim(spec) == 1 \
             and isinstance(spec[3], numbers.Integral):
         return int(spec[3])
     return 255

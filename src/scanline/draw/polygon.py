@@ -7,7 +7,7 @@ import numpy as np
 
 from .. import _validate as v
 from .._kernels import polygon as k
-from .._kernels._jit import call
+from .._kernels._jit import call, call_typed
 from .._kernels.variants import layout
 from ..errors import ArgumentValueError
 from ..geometry import contours as parse
@@ -160,6 +160,16 @@ def polygon(fb: "FrameBuffer", points: Any, color: Optional[Color] = None,
     ######
     ------
     """
+    if (style is None and antialias is False and type(points) is np.ndarray
+            and points.ndim == 2 and points.shape[1] == 2 and points.dtype.kind in "fiu"
+            and not _blend.translucent(color, one=True)):
+        # one contour in an opaque solid color: a single compiled call
+        buf, packed, width, height = target(fb)
+        verts = np.ascontiguousarray(points, np.float64)
+        code = _rule(rule)
+        if call_typed(k.fill_ring, (packed, code), width * height + len(verts), _ring_work,
+                      buf, layout(packed), width, height, verts, fb.pixel(color), code):
+            return
     target(fb)
     if antialias:
         from .antialias import fill
@@ -181,6 +191,11 @@ def polygon(fb: "FrameBuffer", points: Any, color: Optional[Color] = None,
         _outline(fb, verts, offsets, color)
 
     _blend.fill(fb, color, style, _bbox(verts), draw, outline)
+
+
+def _ring_work(buf, layout, width, height, verts, color, rule):
+    """Work units of :func:`scanline._kernels.polygon.fill_ring`."""
+    return area_work(width, height, verts) / 4
 
 
 def polygons(fb, polygons, color=None, rule="even-odd", counts=None, antialias=False):

@@ -73,8 +73,9 @@ def render(fb: FrameBuffer, meshes: Union[Mesh, Iterable[Mesh]], camera: Camera,
         caster's rays followed by shadow, reflected and refracted rays,
         :mod:`scanline.raytrace`), "scan-line" (13-5),
         "area-subdivision" (Warnock, 13-8), "depth-sort" (Newell, Newell and Sancha,
-        13-6), "bsp" (13-7), "painter" (one depth key per face: the
-        counter-example).  ``scanline.visible.PRECISION`` says which decide at image
+        13-6), "bsp" (13-7), "octree" (13-10: an octree of the viewing volume
+        traversed front to back, covered regions skipped; :mod:`scanline.octree`),
+        "painter" (one depth key per face: the counter-example).  ``scanline.visible.PRECISION`` says which decide at image
         and which at object precision.
     shading : {"gouraud", "flat", "phong", "fast-phong", "none"}
         Hearn & Baker, section 14-5 (see :mod:`scanline.shading`); "none": each
@@ -120,7 +121,8 @@ def render(fb: FrameBuffer, meshes: Union[Mesh, Iterable[Mesh]], camera: Camera,
         result's ``method`` names the one that drew.  Default: the error is raised.
     max_depth : int, optional
         Ray tracing: the most levels of the ray tree (1..64, default 5; the primary
-        ray is level 1).
+        ray is level 1).  Octree: the most levels of the viewing volume's octree
+        (1..64, default :data:`scanline.visible.octree.DEPTH`).
     seed : int, optional
         Ray tracing: the seed of the random numbers of area lights' soft shadows and
         glossy reflection (default 0): the same seed, the same image.

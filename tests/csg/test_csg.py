@@ -172,3 +172,43 @@ def test_a_deep_tree_flattens_without_recursion():
     for i in range(3000):
         tree = tree | S.Sphere((0, 0, 0), 0.5)
     assert Program(tree).program.shape == (6001, 2)
+
+
+def random_tree(rng, depth):
+    """A random CSG tree of spheres, boxes, cylinders and cones, ``depth`` levels."""
+    if depth == 0:
+        c = rng.uniform(-0.6, 0.6, 3)
+        kind = rng.integers(4)
+        if kind == 0:
+            return S.Sphere(c, rng.uniform(0.3, 0.9))
+        if kind == 1:
+            return S.Box(c - rng.uniform(0.2, 0.8, 3), c + rng.uniform(0.2, 0.8, 3))
+        axis = rng.normal(size=3)
+        if kind == 2:
+            return S.Cylinder(c, rng.uniform(0.2, 0.6), rng.uniform(0.5, 1.5), axis=axis)
+        return S.Cone(c, rng.uniform(0.3, 0.8), rng.uniform(0.5, 1.5), axis=axis)
+    op = ("union", "intersection", "difference")[rng.integers(3)]
+    return csg.CSG(op, random_tree(rng, depth - 1), random_tree(rng, depth - 1))
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_first_surfaces_of_random_trees_agree_with_contains(seed):
+    # contains() combines the primitives' own point tests with numpy's set operations,
+    # independently of the kernels' interval rules: just before the first surface a ray
+    # from outside is outside, just after it inside; a ray that meets nothing stays out
+    rng = np.random.default_rng(seed)
+    tree = random_tree(rng, 3) | random_tree(rng, 1)          # not empty
+    o = rng.normal(size=(3000, 3))
+    o = 4 * o / np.linalg.norm(o, axis=1, keepdims=True)            # outside every primitive
+    d = rng.uniform(-0.8, 0.8, (3000, 3)) - o
+    d /= np.linalg.norm(d, axis=1, keepdims=True)
+    t, code, _ = Program(tree).cast(o, d)
+    hit = code >= 0
+    assert hit.sum() > 50
+    eps = 1e-7
+    before = tree.contains(o[hit] + (t[hit] - eps)[:, None] * d[hit])
+    after = tree.contains(o[hit] + (t[hit] + eps)[:, None] * d[hit])
+    assert (~before).mean() > 0.995 and after.mean() > 0.995
+    steps = np.linspace(0, 8, 161)
+    missed = o[~hit][:, None, :] + steps[None, :, None] * d[~hit][:, None, :]
+    assert not tree.contains(missed.reshape(-1, 3)).any()

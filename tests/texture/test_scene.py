@@ -76,3 +76,76 @@ def test_bad_texture_keys_name_the_key(tmp_path, texture, words):
     with pytest.raises(sl.scene.SceneError, match=words) as error:
         render(tmp_path, texture)
     assert "materials.tiles.texture" in str(error.value)
+
+
+MIRROR_SCENE = """version = 2
+shading = "phong"
+[canvas]
+width = 21
+height = 21
+background = "black"
+[[cameras]]
+name = "eye"
+eye = [0, 0, 3]
+target = [0, 0, 0]
+[[lights]]
+type = "ambient"
+intensity = 1.0
+[materials.mirror]
+ka = 0.0
+kd = 0.0
+ks = 0.0
+reflectivity = 1.0
+environment = {environment}
+[[segments]]
+name = "quad"
+primitives = [{{type = "mesh", file = "quad.obj", material = "mirror"}}]
+"""
+
+#: Face colors +x, -x, +y, -y, +z, -z.
+FACES = [(255, 0, 0), (0, 255, 255), (0, 255, 0), (255, 0, 255), (0, 0, 255), (255, 255, 0)]
+
+
+def mirror(tmp_path, environment):
+    (tmp_path / "quad.obj").write_text(OBJ)
+    path = tmp_path / "scene.toml"
+    path.write_text(MIRROR_SCENE.format(environment=environment))
+    return sl.scene.load(path).raster().to_array()
+
+
+def test_a_cube_map_from_six_files(tmp_path):
+    """The mirror faces the eye (+z): the reflected view at its center is +z, the +z
+    face (blue)."""
+    names = []
+    for name, color in zip(("px", "nx", "py", "ny", "pz", "nz"), FACES):
+        Image.new("RGB", (4, 4), color).save(tmp_path / f"{name}.png")
+        names.append(f'"{name}.png"')
+    a = mirror(tmp_path, "{cube = [" + ", ".join(names) + '], filter = "nearest"}')
+    assert a[10, 10].tolist() == [0, 0, 255]
+
+
+def test_a_cube_map_from_a_cross_image(tmp_path):
+    cross = Image.new("RGB", (16, 12), (0, 0, 0))
+    for color, (col, row) in zip(FACES, [(2, 1), (0, 1), (1, 0), (1, 2), (1, 1), (3, 1)]):
+        cross.paste(color, (4 * col, 4 * row, 4 * col + 4, 4 * row + 4))
+    cross.save(tmp_path / "cross.png")
+    assert mirror(tmp_path, '{cube = "cross.png"}')[10, 10].tolist() == [0, 0, 255]
+
+
+@pytest.mark.parametrize("environment, words", [
+    ('{cube = ["a.png", "b.png"]}', r"environment\.cube.*six"),
+    ('{cube = 3}', r"environment\.cube.*image file"),
+    ('{cube = "cross.png", wrap = "repeat"}', r"environment\.wrap"),
+    ('{cube = "cross.png", filter = "trilinear"}', r"environment.*filter"),
+    ('{cube = "missing.png"}', r"environment.*missing"),
+])
+def test_bad_cube_maps_name_the_key(tmp_path, environment, words):
+    Image.new("RGB", (16, 12)).save(tmp_path / "cross.png")
+    with pytest.raises(sl.scene.SceneError, match=words) as error:
+        mirror(tmp_path, environment)
+    assert "materials.mirror.environment" in str(error.value)
+
+
+def test_a_tileable_procedural_texture_from_a_scene(tmp_path):
+    a = render(tmp_path, '{procedural = "marble", size = 16, tileable = false, veins = 2.5}')
+    assert a.std() > 0

@@ -33,8 +33,11 @@ MATERIAL = {"ka", "kd", "ks", "shininess", "color", "specular_color", "transpare
             "reflectivity", "refractive_index", "roughness", "texture", "bump", "bump_scale",
             "environment"}
 #: The material keys that take a texture: an image file (relative to the scene file),
-#: or a procedural texture ``{procedural = "checker" | "marble" | "wood", ...}``.
+#: or a procedural texture ``{procedural = "checker" | "marble" | "wood", ...}``; the
+#: environment also a cube map, ``{cube = [six files] | "cross file", filter = ...}``.
 MAPS = ("texture", "bump", "environment")
+#: Keys of a cube map table.
+CUBE = {"cube", "filter"}
 PROCEDURAL = ("checker", "marble", "wood")
 SHADING = {"model", "specular", "gamma", "cull_back_faces", "depth_cue", "max_depth", "seed"}
 #: Keys of the radiosity table: :func:`scanline.radiosity.solve`'s options, and the
@@ -95,6 +98,36 @@ def texture(value, path, base=None):
                                   if k != "procedural"})
 
 
+def environment(value, path, base=None):
+    """A material's ``environment`` key -> a :class:`scanline.texture.CubeMap` for a
+    table ``{cube = [+x, -x, +y, -y, +z, -z files] | "cross file", filter = ...}``
+    (files relative to the scene file's folder ``base``), else a latitude-longitude
+    texture (:func:`texture`)."""
+    import os
+
+    from ..texture import CubeMap
+
+    if not (isinstance(value, dict) and "cube" in value):
+        return texture(value, path, base)
+    s = _schema()
+    t = s._table(value, path, CUBE, ("cube",))
+    faces = t["cube"]
+
+    def place(name, where):
+        if not isinstance(name, str) or not name:
+            s._fail(where, f"must be an image file's name, got {name!r}")
+        return name if os.path.isabs(name) or base is None else os.path.join(base, name)
+
+    if isinstance(faces, list):
+        if len(faces) != 6:
+            s._fail(f"{path}.cube", f"must be six image files (+x, -x, +y, -y, +z, -z) or "
+                                    f"one cross image, got {len(faces)}")
+        faces = [place(f, f"{path}.cube[{i}]") for i, f in enumerate(faces)]
+    else:
+        faces = place(faces, f"{path}.cube")
+    return s._call(path, CubeMap, faces, **{k: x for k, x in t.items() if k != "cube"})
+
+
 class Shading:
     """What a scene's top-level shading keys say: ``lights`` (None: the renderer's
     default), ``materials`` (name -> Material), ``options`` for
@@ -113,7 +146,8 @@ class Shading:
             s._fail("materials", "must be a table of named materials ([materials.NAME])")
         for name, m in mats.items():
             t = s._table(m, f"materials.{name}", MATERIAL)
-            args = {k: texture(x, f"materials.{name}.{k}", base) if k in MAPS else _tuples(x)
+            args = {k: (environment if k == "environment" else texture)(
+                        x, f"materials.{name}.{k}", base) if k in MAPS else _tuples(x)
                     for k, x in t.items()}
             self.materials[name] = s._call(f"materials.{name}", lighting.Material, **args)
         from ..visible import METHODS

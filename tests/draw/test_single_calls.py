@@ -53,20 +53,24 @@ def test_the_twins_still_run_when_compiling_is_off(monkeypatch):
 
 @pytest.mark.parametrize("mode", ["1", "L", "RGB", "RGBA", "P"])
 @pytest.mark.parametrize("rule", ["even-odd", "nonzero"])
-def test_one_contour_arrays_match_the_general_path(mode, rule):
-    """An (N, 2) array in an opaque color takes the single compiled call; a list of
-    the same vertices takes the general path (contours, guard, blend)."""
+def test_one_contour_matches_the_general_path(mode, rule):
+    """One contour in an opaque color takes the single compiled call; the same
+    vertices as one contour of a list of contours take the general path (contours,
+    guard, blend)."""
     rng = np.random.default_rng(3)
     fast, general = sl.FrameBuffer(64, 48, mode=mode), sl.FrameBuffer(64, 48, mode=mode)
     for n in (3, 5, 9, 17):
         for dtype in (np.float64, np.int32, np.float32):
             verts = (rng.random((n, 2)) * 90 - 15).astype(dtype)
-            sl.draw.polygon(fast, verts, rule=rule)
-            sl.draw.polygon(general, verts.tolist(), rule=rule)
+            sl.draw.polygon(fast, verts if dtype is np.int32 else verts.tolist(), rule=rule)
+            sl.draw.polygon(general, [verts], rule=rule)
     # far and non-finite vertices: the fast call draws nothing and hands over
     far = np.array([[-1e12, -5.0], [40.0, 1e15], [50.0, 10.0]])
     sl.draw.polygon(fast, far, rule=rule)
-    sl.draw.polygon(general, far.tolist(), rule=rule)
+    sl.draw.polygon(general, [far], rule=rule)
     assert np.array_equal(fast.to_array(), general.to_array())
     with pytest.raises(sl.ScanlineError, match=r"points must be finite; vertex 1 is \[nan"):
         sl.draw.polygon(fast, np.array([[0.0, 0.0], [np.nan, 3.0], [5.0, 5.0]]))
+    with pytest.raises(sl.ScanlineError, match="must hold real numbers"):
+        sl.draw.polygon(fast, [(True, False), (False, True), (True, True)])
+

@@ -134,12 +134,13 @@ def circle(fb: "FrameBuffer", xc: float, yc: float, r: float, color: Optional[Co
     --###--
     """
     attrs = strokes.styled(style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen)
-    if _outside(fb, xc, yc, r, r, attrs):
-        return
-    xc, yc, r = v.any_coordinate("xc", xc), v.any_coordinate("yc", yc), v.any_radius("r", r)
-    if not exact(xc, yc, r, r, True):
-        _far(fb, xc, yc, r, r, color, attrs, antialias, True)
-        return
+    if _big(xc, yc, r, r) or r < 0:         # (small ints, r >= 0: nothing to check)
+        if _outside(fb, xc, yc, r, r, attrs):
+            return
+        xc, yc, r = v.any_coordinate("xc", xc), v.any_coordinate("yc", yc), v.any_radius("r", r)
+        if not exact(xc, yc, r, r, True):
+            _far(fb, xc, yc, r, r, color, attrs, antialias, True)
+            return
     if attrs is not None:
         strokes.conics(fb, np.array([[xc, yc, r, r]], np.int64), color, attrs, antialias)
         return
@@ -252,14 +253,15 @@ def ellipse(fb: "FrameBuffer", xc: float, yc: float, rx: float, ry: float,
     --#####--
     """
     attrs = strokes.styled(style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen)
-    if _outside(fb, xc, yc, rx, ry, attrs):
-        return
-    rx = v.any_radius("rx", rx)
-    ry = v.any_radius("ry", ry)
-    xc, yc = v.any_coordinate("xc", xc), v.any_coordinate("yc", yc)
-    if not exact(xc, yc, rx, ry, False):
-        _far(fb, xc, yc, rx, ry, color, attrs, antialias, False)
-        return
+    if _big(xc, yc, rx, ry) or rx < 0 or ry < 0:     # (small ints: nothing to check)
+        if _outside(fb, xc, yc, rx, ry, attrs):
+            return
+        rx = v.any_radius("rx", rx)
+        ry = v.any_radius("ry", ry)
+        xc, yc = v.any_coordinate("xc", xc), v.any_coordinate("yc", yc)
+        if not exact(xc, yc, rx, ry, False):
+            _far(fb, xc, yc, rx, ry, color, attrs, antialias, False)
+            return
     if attrs is not None:
         strokes.conics(fb, np.array([[xc, yc, rx, ry]], np.int64), color, attrs, antialias)
         return

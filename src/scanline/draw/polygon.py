@@ -160,12 +160,11 @@ def polygon(fb: "FrameBuffer", points: Any, color: Optional[Color] = None,
     ######
     ------
     """
-    if (style is None and antialias is False and type(points) is np.ndarray
-            and points.ndim == 2 and points.shape[1] == 2 and points.dtype.kind in "fiu"
-            and not _blend.translucent(color, one=True)):
+    ring = _one_ring(points) if style is None and antialias is False else None
+    if ring is not None and not _blend.translucent(color, one=True):
         # one contour in an opaque solid color: a single compiled call
         buf, packed, width, height = target(fb)
-        verts = np.ascontiguousarray(points, np.float64)
+        verts = np.ascontiguousarray(ring, np.float64)
         code = _rule(rule)
         if call_typed(k.fill_ring, (packed, code), width * height + len(verts), _ring_work,
                       buf, layout(packed), width, height, verts, fb.pixel(color), code):
@@ -191,6 +190,21 @@ def polygon(fb: "FrameBuffer", points: Any, color: Optional[Color] = None,
         _outline(fb, verts, offsets, color)
 
     _blend.fill(fb, color, style, _bbox(verts), draw, outline)
+
+
+def _one_ring(points):
+    """``points`` as an (N, 2) array of numbers when it is one contour (an array, or
+    a list or tuple of vertices), else None (several contours, or something for the
+    general path to refuse by name)."""
+    a = points
+    if type(a) is list or type(a) is tuple:
+        try:
+            a = np.asarray(a)
+        except (TypeError, ValueError):             # ragged: several contours
+            return None
+    if type(a) is np.ndarray and a.ndim == 2 and a.shape[1] == 2 and a.dtype.kind in "fiu":
+        return a
+    return None
 
 
 def _ring_work(buf, layout, width, height, verts, color, rule):

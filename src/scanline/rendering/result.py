@@ -66,10 +66,12 @@ class Rendering:
         return self.faces[::-1].copy()
 
     def __repr__(self):
-        covered = int((self.facets >= 0).sum())
+        covered = int(((self.facets >= 0) | (self.solids >= 0)).sum())
         s = self.scene
+        solids = len(np.unique(self.solids[self.solids >= 0]))
         return (f"<Rendering method={self.method!r} {s.width}x{s.height}: "
-                f"{len(s.materials)} mesh(es), {s.face_count} faces, {covered} of "
+                f"{len(s.materials)} mesh(es), {s.face_count} faces, "
+                f"{f'{solids} solid(s) seen, ' if solids else ''}{covered} of "
                 f"{s.width * s.height} pixels covered>")
 
     def _repr_png_(self):

@@ -71,7 +71,9 @@ def test_the_wheel_is_lean(dist):
     assert "scanline/data/scenes/rotation.toml" in names and "scanline/py.typed" in names
     meta = zipfile.ZipFile(wheel).read(next(n for n in names if n.endswith("METADATA"))).decode()
     assert "License-Expression: MIT AND Bitstream-Vera" in meta
-    assert sum(zipfile.ZipFile(wheel).getinfo(n).file_size for n in names) < 4_000_000
+    # what is in it is the package's sources (3.1 MB on 2026-12-05, grown with chapters
+    # 10-14) and one 0.76 MB font: the bound catches a data file or a cache swept in
+    assert sum(zipfile.ZipFile(wheel).getinfo(n).file_size for n in names) < 5_000_000
 
 
 def test_tests_pass_from_the_unpacked_sdist(dist, tmp_path):

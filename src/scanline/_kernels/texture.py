@@ -120,10 +120,11 @@ def sample_run(texels, levels, first, count, filter, wrap, s, at, stride, lo, hi
 
     ``NEAREST`` and ``BILINEAR`` read the first level in two passes: first each
     item's weights (:func:`axis`) into its fields 0 and 1 and its four texels' places
-    into 2 .. 4 (:func:`places`), then the lookups (:func:`lookup`).  ``TRILINEAR`` reads, item by item, the two levels nearest the
-    pixel's size (the screen derivatives choose them: :func:`level_of_detail`) and
-    interpolates linearly between them.  One compiled copy of the sampling serves
-    every caller, a call per run of items."""
+    into 2 .. 4 (:func:`places`), then the lookups (:func:`lookup`).  ``TRILINEAR``
+    reads, item by item, the two levels nearest the pixel's size (the screen
+    derivatives choose them: :func:`level_of_detail`) and interpolates linearly
+    between them.  One compiled copy of the sampling serves every caller, a call per
+    run of items; items whose fields would lie past the end of ``s`` are left."""
     n = hi - lo
     if n <= 0:
         return
@@ -132,9 +133,10 @@ def sample_run(texels, levels, first, count, filter, wrap, s, at, stride, lo, hi
     k = s[at + 2 * stride + lo:at + 2 * stride + lo + n]
     kx = s[at + 3 * stride + lo:at + 3 * stride + lo + n]
     ky = s[at + 4 * stride + lo:at + 4 * stride + lo + n]
+    n = min(len(u), len(v), len(k), len(kx), len(ky))     # fields past the end: fewer
     if filter == TRILINEAR and count > 1:
         dvdy = s[at + 5 * stride + lo:at + 5 * stride + lo + n]
-        for i in range(n):
+        for i in range(min(n, len(dvdy))):
             lod = level_of_detail(levels, first, count, k[i], kx[i], ky[i], dvdy[i])
             step = min(int(lod), count - 1)
             t = lod - step if step + 1 < count else 0.0
@@ -154,22 +156,22 @@ def sample_run(texels, levels, first, count, filter, wrap, s, at, stride, lo, hi
             kx[i] = g
             ky[i] = b
         return
-    places(u, v, k, kx, ky, levels, first, wrap, 0.0 if filter == NEAREST else 0.5)
-    for i in range(len(k)):
+    places(u, v, k, kx, ky, n, levels, first, wrap, 0.0 if filter == NEAREST else 0.5)
+    for i in range(n):
         k[i], kx[i], ky[i] = lookup(texels, k[i], kx[i], ky[i], u[i], v[i])
 
 
 @inline
-def places(u, v, k, kx, ky, levels, level, wrap, half):
-    """:func:`sample_run`'s first pass at ``level``: each item's weights into ``u``,
-    ``v`` and its four texels' places into ``k``, ``kx``, ``ky`` (:func:`lookup`'s
-    arguments).  Bilinear repeated textures, the common case, take
+def places(u, v, k, kx, ky, n, levels, level, wrap, half):
+    """:func:`sample_run`'s first pass at ``level``: each of ``n`` items' weights into
+    ``u``, ``v`` and its four texels' places into ``k``, ``kx``, ``ky``
+    (:func:`lookup`'s arguments).  Bilinear repeated textures, the common case, take
     :func:`repeat_axis`, whose loop the compiler vectorizes."""
     base = float(levels[level, 0])
     w = float(levels[level, 1])
     h = float(levels[level, 2])
     fast = wrap == REPEAT and half > 0.0
-    for i in range(len(k)):
+    for i in range(n):
         if fast:
             ax, i0, di = repeat_axis(u[i], w)
             ay, j0, dj = repeat_axis(v[i], h)

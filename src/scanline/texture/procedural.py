@@ -90,14 +90,15 @@ def wood(size=256, rings=12.0, grain=0.08, seed=0, colors=((200, 150, 90), (120,
     """Wood: rings around an axis at the texture's left edge, the distance to the axis
     times ``rings`` perturbed by ``grain`` times noise, its fraction through a ramp
     from the first of ``colors`` to the second; a ``size`` x ``size``
-    :class:`Texture`.  ``tileable``: the distance is measured as hypot(sin(pi dx),
-    sin(pi dy)) / pi (the distance near the axis, periodic across the texture
-    square: the rings of the neighboring copies' axes meet it at the edges) and the
-    noise repeats, so that repeated copies meet without seams."""
+    :class:`Texture`.  ``tileable``: the distance is to the nearest of the axis and
+    its copies one texture square apart (periodic: the rings of the neighboring
+    copies meet it half way, as the rings of two branches meet) and the noise
+    repeats, so that repeated copies meet without seams."""
     n = _size(size)
     p = _grid(n, 1.0)
-    if tileable:
-        r = np.hypot(np.sin(np.pi * p[..., 0]), np.sin(np.pi * (p[..., 1] - 0.5))) / np.pi
+    if tileable:             # the distance to the nearest copy of the axis
+        dx, dy = p[..., 0], p[..., 1] - 0.5
+        r = np.hypot(dx - np.round(dx), dy - np.round(dy))
     else:
         r = np.hypot(p[..., 0], p[..., 1] - 0.5)
     g = r * v.number("rings", rings) + v.number("grain", grain) * rings * noise(

@@ -233,6 +233,19 @@ CALLS = {
                                        "transparency=0.5, refractive_index=1.5)], lights=["
                                        "sl.lighting.AmbientLight(0.2), sl.lighting.AreaLight("
                                        "(1, 4, 1), (1, 0, 0), (0, 0, 1), samples=2)])", RGB),
+    "render ray-tracing maps": ("raytrace", "sl.render(fb, [sl.mesh.Mesh([(-2, -1, -2), "
+                                            "(2, -1, -2), (2, -1, 2), (-2, -1, 2)], [[3, 2, 1, 0]], "
+                                            "uv=[(0, 0), (1, 0), (1, 1), (0, 1)]), "
+                                            "sl.mesh.sphere(0.8, resolution=(8, 4))], "
+                                            "sl.Camera(eye=(3, 2, 4), target=(0, 0, 0)), "
+                                            "method='ray-tracing', shading='phong', materials=["
+                                            "sl.lighting.Material(texture=sl.texture.checker(8, 2), "
+                                            "bump=sl.texture.checker(8, 2), reflectivity=0.3), "
+                                            "sl.lighting.Material(reflectivity=0.8, environment="
+                                            "sl.texture.CubeMap([np.full((2, 2, 3), 40 * k, "
+                                            "np.uint8) for k in range(6)]))])", RGB),
+    "cube map": ("render", "sl.texture.CubeMap([np.full((2, 2, 3), 40 * k, np.uint8) for k in "
+                            "range(6)]).sample([(1, 0, 0), (0, -1, 0.5)]).tolist()", None),
     "raytrace bvh": ("raytrace", "sl.raytrace.BVH(sl.mesh.torus(1, 0.4, resolution=(8, 4))"
                                  ".triangulated().vertices[sl.mesh.torus(1, 0.4, resolution="
                                  "(8, 4)).triangulated().faces]).intersect([(0, 0, 3), "

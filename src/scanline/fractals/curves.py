@@ -84,8 +84,9 @@ def self_similar(initiator, generator, depth, sides=None):
         raise ArgumentValueError(f"sides must be a sequence of +1 and -1 (left, right), got "
                                  f"{v._show(sides.tolist())}")
     segments = len(start) - 1
-    limits.points("depth", segments * g ** depth + 1, f"depth={depth} of a {g}-segment "
-                  f"generator on {segments} segment(s)", bytes_per_point=16 * 4)
+    limits.points("depth", segments * limits.power(g, depth) + 1,
+                  f"depth={depth} of a {g}-segment generator on {segments} segment(s)",
+                  bytes_per_point=16 * 4)
     points = start
     for _ in range(depth):
         p, q = points[:-1], points[1:]

@@ -16,6 +16,16 @@ MAX_POINTS = 1 << 26
 MAX_ITERATIONS = 50_000_000_000
 
 
+def power(base, exponent):
+    """base ** exponent for counting points, capped at 2 ** 80 (far past every limit)
+    without computing a huge integer."""
+    import math
+
+    if base <= 1 or exponent * math.log2(base) <= 80:
+        return base ** exponent
+    return 1 << 80
+
+
 def points(argument, count, what, bytes_per_point=16, hint=None):
     """Refuse ``count`` points (a Python int, exact at any size) past
     :data:`MAX_POINTS` or the memory budget, naming ``argument``."""

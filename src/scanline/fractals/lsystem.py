@@ -37,8 +37,20 @@ from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
 from . import limits
 
+#: Most rewriting steps (a string that stops growing could otherwise be rewritten
+#: for ever).
+MAX_STEPS = 10_000
+
 #: The turtle's command code of each symbol (:func:`scanline._kernels.fractals.turtle`).
 COMMANDS = {"F": 1, "G": 1, "f": 2, "+": 3, "-": 4, "[": 5, "]": 6, "|": 7}
+
+
+def _steps(n):
+    n = v.positive_int("n", n, minimum=0)
+    if n > MAX_STEPS:
+        raise ArgumentValueError(f"n={n:,} rewriting steps is more than the limit of "
+                                 f"{MAX_STEPS:,} (scanline.fractals.lsystem.MAX_STEPS)")
+    return n
 
 
 class LSystem:
@@ -91,7 +103,7 @@ class LSystem:
     def counts(self, n):
         """How many of each symbol (in :attr:`symbols` order) the string has after
         ``n`` steps: the rules' matrix applied n times to the axiom's counts."""
-        n = v.positive_int("n", n, minimum=0)
+        n = _steps(n)
         c = self._start
         for _ in range(n):
             c = [sum(row[j] * c[j] for j in range(len(c))) for row in self._matrix]
@@ -105,7 +117,7 @@ class LSystem:
 
     def string(self, n):
         """The string after ``n`` parallel rewriting steps."""
-        n = v.positive_int("n", n, minimum=0)
+        n = _steps(n)
         limits.points("n", self.length(n), f"{n} steps of the L-system (symbols)",
                       bytes_per_point=2)
         s = self.axiom
@@ -220,7 +232,7 @@ def hilbert(order):
     [[0.5, 0.5], [0.5, 1.5], [1.5, 1.5], [1.5, 0.5]]
     """
     order = v.positive_int("order", order, minimum=1)
-    limits.points("order", 4 ** order, f"Hilbert's curve of order {order}")
+    limits.points("order", limits.power(4, order), f"Hilbert's curve of order {order}")
     lines = example("hilbert").draw(order, start=(0.5, 0.5), heading=0.0)
     return lines[0]
 

@@ -38,6 +38,10 @@ def _plane(width, height, center, span):
     if span <= 0:
         raise ArgumentValueError(f"span must be > 0 (the width of the real axis shown), got "
                                  f"{span:g}")
+    from .. import budget
+
+    budget.check(width * height * 8 + (width + height) * 24, "width x height",
+                 f"iteration counts of {width} x {height} pixels")
     step = span / width
     with np.errstate(over="ignore", invalid="ignore"):
         xs = cx + (np.arange(width) + 0.5 - width / 2) * step
@@ -52,12 +56,10 @@ def _counts(width, height, center, span, max_iterations, c):
     from .._kernels import fractals as k
     from .._kernels._jit import call
 
-    width, height, xs, ys = _plane(width, height, center, span)
     max_iterations = v.positive_int("max_iterations", max_iterations)
-    limits.iterations("max_iterations", width * height, max_iterations)
-    from .. import budget
-    budget.check(width * height * 8, "width x height",
-                 f"iteration counts of {width} x {height} pixels")
+    limits.iterations("max_iterations", v.positive_int("width", width)
+                      * v.positive_int("height", height), max_iterations)
+    width, height, xs, ys = _plane(width, height, center, span)
     out = np.empty((height, width), np.int64)
     julia = c is not None
     cr, ci = (c.real, c.imag) if julia else (0.0, 0.0)

@@ -175,6 +175,11 @@ def blobby(centers, radii, threshold=0.5, resolution=64, kind="blinn", strengths
     if not (np.isfinite(lo).all() and np.isfinite(hi).all() and np.isfinite(span)):
         raise ArgumentValueError("centers and radii reach beyond float64; use smaller ones")
     step = span / (resolution - 1)
+    if not step > 0 or not np.all(np.abs(lo) + step > np.abs(lo)):
+        raise ArgumentValueError(
+            "radii are too small beside the centers' coordinates: the grid's spacing rounds "
+            f"to nothing (radii {v._show(r.tolist())}); use larger radii or centers nearer "
+            "the origin")
     shape = np.maximum(np.ceil((hi - lo) / step).astype(np.int64) + 1, 2) + 2   # + a rim
     cells = int(np.prod(shape))
     from .. import budget

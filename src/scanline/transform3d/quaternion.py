@@ -181,8 +181,9 @@ class Quaternion:
                     f"m has a translation {a[:3, 3].tolist()}: a quaternion holds a "
                     "rotation about the origin only; pass m[:3, :3] for its rotation part")
             a = a[:3, :3]
-        error = np.abs(a.T @ a - np.eye(3)).max()
-        det = float(np.linalg.det(a))
+        with np.errstate(over="ignore", invalid="ignore"):   # huge entries: inf, refused
+            error = float(np.abs(a.T @ a - np.eye(3)).max())
+            det = float(np.linalg.det(a))
         if error > ORTHONORMAL_TOLERANCE or abs(det - 1) > ORTHONORMAL_TOLERANCE:
             what = "a reflection (det < 0)" if det < 0 else "not orthonormal (a scaling or a shear?)"
             raise ArgumentValueError(
@@ -445,11 +446,23 @@ def slerp(q1, q2, t):
     d = min(d, 1.0)
     theta = math.acos(d)
     if theta < _TINY_ANGLE:
-        out = p + t * (q - p)
+        with np.errstate(over="ignore", invalid="ignore"):
+            out = p + t * (q - p)
     else:
         s = math.sin(theta)
         out = math.sin((1 - t) * theta) / s * p + math.sin(t * theta) / s * q
-    return Quaternion._of(out / np.linalg.norm(out), "slerp")
+    return _unit(out, "slerp")
+
+
+def _unit(q, what):
+    """``q`` / |q| without overflow; an error naming ``what`` where q is not finite or
+    zero (t far outside [0, 1] on nearly equal keys)."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        big = np.abs(q).max()
+        if not np.isfinite(big) or big == 0:
+            return Quaternion._of(q, what)
+        q = q / big
+    return Quaternion._of(q / np.linalg.norm(q), what)
 
 
 def squad(q1, q2, a1, a2, t):

@@ -13,13 +13,21 @@ algorithm.
 import argparse
 import math
 import operator
+import re
+import shlex
 
 from .. import budget
 from ..cli import Parser, UsageError
 from ..cli import trace as cli_trace
 from ..errors import MemoryBudgetError
 from ..trace.conics import MAX_RADIUS, _mirror4
+from ..trace.raytracing import HEIGHT as RT_HEIGHT
+from ..trace.raytracing import WIDTH as RT_WIDTH
 from ..trace.seedfill import EXAMPLE_GRID, _rows
+from ..trace.visible import SCENES as DEPTH_SORT_SCENES
+from ..trace.zbuffer import HEIGHT as ZB_HEIGHT
+from ..trace.zbuffer import SCENE as ZB_SCENE
+from ..trace.zbuffer import WIDTH as ZB_WIDTH
 
 #: The first case the explorer shows for each algorithm (command-line arguments).
 DEFAULTS = {
@@ -36,6 +44,13 @@ DEFAULTS = {
     "sutherland-hodgman": ["--", "-2,2", "6,-1", "13,6", "6,13"],
     "de-casteljau": ["0,0", "2,8", "10,8", "12,0", "--u", "0.5"],
     "cox-de-boor": ["--knots", "0,0,0,0,1,2,2,2,2", "--order", "4", "--u", "1.5"],
+    # a segment entering through the left plane, leaving through the back one
+    "cohen-sutherland-3d": ["-4", "2", "3", "14", "8", "13"],
+    "liang-barsky-3d": ["-4", "2", "3", "14", "8", "13"],
+    "z-buffer": ["--row", "4"],
+    "depth-sort": ["--scene", "cyclic"],
+    "floating-horizon": ["--nx", "6", "--ny", "4", "--width", "24", "--height", "16"],
+    "ray-tracing": ["20", "11"],
 }
 
 #: Tables longer than this are refused: the page lists every row.
@@ -95,6 +110,10 @@ def canonical(ns):
             continue
         value = getattr(ns, action.dest, None)
         if value is None:
+            continue
+        if action.option_strings and action.nargs == 0:
+            if value != action.default:      # a flag (--no-split): its name, no value
+                options.append(action.option_strings[0])
             continue
         if action.option_strings:
             options.append(action.option_strings[0])
@@ -319,6 +338,154 @@ def _cox_de_boor(table, ns, where):
             "shapes": [], "handles": []}
 
 
+#: The oblique (cabinet) projection of the 3-D views: depth z recedes up and to the
+#: right at 30 degrees, at half scale (Hearn & Baker, section 12-1, oblique projections).
+_OBLIQUE = (0.5 * math.cos(math.pi / 6), 0.5 * math.sin(math.pi / 6))
+
+
+def _volume_corners(ns):
+    """The clip volume's 8 corners (front face first) in the coordinates the segment
+    is drawn in: the box, the canonical frustum, or the unit cube of ``--w``."""
+    if ns.w is not None:
+        lo, hi = [0.0] * 3, [1.0] * 3
+    elif ns.frustum is not None:     # z <= x, y <= -z between z = ZMIN and z = -1
+        lo, hi = [[z, z, z] for z in (ns.frustum, -1.0)], [[-z, -z, z] for z in (ns.frustum, -1.0)]
+        return [c for a, b in zip(lo, hi) for c in ([a[0], a[1], a[2]], [b[0], a[1], a[2]],
+                                                  [b[0], b[1], a[2]], [a[0], b[1], a[2]])]
+    else:
+        b = ns.volume or [0, 0, 0, 10, 10, 10]
+        lo, hi = b[:3], b[3:]
+    return [[lo[0], lo[1], lo[2]], [hi[0], lo[1], lo[2]], [hi[0], hi[1], lo[2]],
+            [lo[0], hi[1], lo[2]], [lo[0], lo[1], hi[2]], [hi[0], lo[1], hi[2]],
+            [hi[0], hi[1], hi[2]], [lo[0], hi[1], hi[2]]]
+
+
+def _clip3d(table, ns, where):
+    """The 3-D clippers on the grid: the volume and the segment in an oblique
+    projection scaled to about 20 cells, the piece kept so far drawn at each step."""
+    corners = _volume_corners(ns)
+    p0, p1 = [ns.x0, ns.y0, ns.z0], [ns.x1, ns.y1, ns.z1]
+    if ns.w is not None:             # drawn after the divide, where w > 0
+        p0, p1 = ([c / w for c in p] if w > 0 else None for p, w in ((p0, ns.w[0]), (p1, ns.w[1])))
+    span = max(max(c[i] for c in corners) - min(c[i] for c in corners) for i in range(3))
+    scale = 20.0 / span if span > 0 and math.isfinite(span) else 1.0
+
+    def at(p):
+        x, y, z = p
+        return [round(scale * (x + _OBLIQUE[0] * z), 6), round(scale * (y + _OBLIQUE[1] * z), 6)]
+
+    def along(a, b, u):
+        return at([a[i] + u * (b[i] - a[i]) for i in range(3)])
+
+    steps = []
+    if ns.algorithm == "cohen-sutherland-3d":
+        cur = [p0, p1]
+        for r in table.rows:
+            if r["point"] is not None and ns.w is None:
+                cur[int(r["decision"][6])] = _vertex(r["point"])
+            seg = [at(cur[0]), at(cur[1])] if None not in cur else None
+            steps.append({"segment": seg, "mark": [seg[int(r["decision"][6])]] if seg and
+                          r["point"] else [],
+                          "rule": f"codes {r['code0']} {r['code1']}, AND {r['and']}: "
+                                  f"{r['decision']}"})
+    else:
+        for r in table.rows:
+            u1, u2 = r["u1"], r["u2"]
+            seg = ([along(p0, p1, u1), along(p0, p1, u2)] if None not in (p0, p1) and u1 <= u2
+                   and ns.w is None else None)
+            t = "parallel" if r["t"] is None else f"t = q/p = {r['t']:.6g}"
+            steps.append({"segment": seg, "rule": f"{r['plane']}: p = {r['p']:g}, q = {r['q']:g}, "
+                          f"{t}, {r['kind']}: u1 = {u1:.6g}, u2 = {u2:.6g}"})
+    box = [at(c) for c in corners]
+    shapes = [{"kind": "polygon", "points": box[:4], "role": "window"},
+              {"kind": "polygon", "points": box[4:], "role": "window"}]
+    shapes += [{"kind": "line", "points": [box[i], box[i + 4]], "role": "window"} for i in range(4)]
+    ends = [at(p) for p in (p0, p1) if p is not None]
+    if len(ends) == 2:
+        shapes.append({"kind": "line", "points": ends, "role": "subject"})
+    return {"before": [], "steps": steps, "bounds": _bounds(box + ends), "shapes": shapes,
+            "handles": []}
+
+
+def _z_buffer(table, ns, where):
+    """The scene's triangles on its device, the scan line, and at each step the pixel
+    written (a write) or marked (a keep)."""
+    steps = []
+    for r in table.rows:
+        write = r["result"] == "write"
+        steps.append({"pixels": [[r["x"], ns.row]] if write else [], "mark": [[r["x"], ns.row]],
+                      "rule": f"triangle {r['triangle']} at x = {r['x']}: z = {r['z']:.6g} "
+                              f"{'<' if write else '>='} depth {r['depth']}: {r['result']}"})
+    shapes = [{"kind": "polygon", "points": [[float(x), float(y)] for x, y, _ in tri.tolist()]}
+              for tri in ZB_SCENE]
+    shapes.append({"kind": "line", "points": [[0, ns.row], [ZB_WIDTH - 1, ns.row]]})
+    return {"before": [], "steps": steps, "bounds": [0, 0, ZB_WIDTH - 1, ZB_HEIGHT - 1],
+            "shapes": shapes, "handles": []}
+
+
+_SPLIT = re.compile(r"split (\d+) by the plane of \d+ into (\d+) and (\d+)")
+
+
+def _depth_sort(table, ns, where):
+    """The scene's polygons; at each step the pair compared: S (this step's color)
+    and S' (plotted), split pieces drawn as the polygon they came from."""
+    polys = [[[float(x), float(y)] for x, y, _ in p] for p in DEPTH_SORT_SCENES[ns.scene]]
+    face = list(range(len(polys)))                 # piece number -> its polygon
+    steps = []
+    for r in table.rows:
+        s, t = r["S"], r["S'"]
+        tried = [f"{k + 1} {r[f'test {k + 1}']}" for k in range(5) if r[f"test {k + 1}"]]
+        steps.append({"areas": [[polys[face[s]], "current"], [polys[face[t]], "plotted"]],
+                      "rule": f"S = {s}, S' = {t}: tests {', '.join(tried)}; {r['action']}"})
+        split = _SPLIT.search(r["action"])
+        if split:
+            a, b, c = (int(g) for g in split.groups())
+            face += [face[a]] * (max(b, c) + 1 - len(face))
+            face[b] = face[c] = face[a]
+    return {"before": [], "steps": steps, "bounds": [0, 0, 39, 29],
+            "shapes": [{"kind": "polygon", "points": p} for p in polys], "handles": []}
+
+
+def _floating_horizon(table, ns, where):
+    """Each curve's point at each column: plotted where visible (above the upper or
+    below the lower horizon), marked where hidden; the page draws both horizons as
+    they stand after the step (``horizon``: the columns that hold them)."""
+    steps = []
+    for r in table.rows:
+        at = [r["column"], round(r["y"])]
+        seen = r["visible"] != "hidden"
+        steps.append({"pixels": [at] if seen else [], "mark": [at],
+                      "rule": f"curve {r['curve']}, column {r['column']}: y = {r['y']:.6g}, "
+                              f"horizons {_finite_text(r['lower before'])}..."
+                              f"{_finite_text(r['upper before'])}: {r['visible']}"})
+    ys = [round(r["y"]) for r in table.rows]
+    return {"before": [], "steps": steps,
+            "bounds": [0, min([0] + ys), ns.width - 1, max([ns.height - 1] + ys)],
+            "horizon": {"column": "column", "upper": "upper after", "lower": "lower after"},
+            "shapes": [], "handles": []}
+
+
+def _finite_text(x):
+    return "none" if x is None else f"{x:.6g}"
+
+
+def _ray_tracing(table, ns, where):
+    """The pixel whose ray tree the table lists, draggable; each ray's row as a rule."""
+    steps = []
+    for r in table.rows:
+        if r["kind"] == "shadow":
+            rule = (f"shadow ray of ray {r['parent']} to light {r['light']}: lets through "
+                    f"{r['through']:g}")
+        else:
+            hit = (f"hits face {r['face']} at t = {r['t']:.6g}" if r["face"] is not None
+                   and r["face"] >= 0 else "leaves the scene")
+            rule = (f"ray {r['ray']} ({r['kind']}, depth {r['depth']}): {hit}; weight "
+                    f"{r['weight']:.6g}, sum ({r['sum_r']:.4g}, {r['sum_g']:.4g}, {r['sum_b']:.4g})")
+        steps.append({"pixels": [[ns.x, ns.y]], "rule": rule})
+    return {"before": [], "steps": steps, "bounds": [0, 0, RT_WIDTH - 1, RT_HEIGHT - 1],
+            "shapes": [], "handles": [_handle(where, "pixel", ns.x, ns.y, ("x", 0), ("y", 0))]}
+
+
 def _table_only(table, ns, where):
     """An algorithm with no grid view yet: its table, stepped row by row."""
     return {"before": [], "steps": [{"rule": ""} for _ in table.rows], "bounds": [0, 0, 10, 10],
@@ -330,7 +497,9 @@ _VIEWS = {"bresenham": _lines, "dda": _lines, "midpoint-circle": _conics,
           "scan-line-fill": _scan_fill, "cohen-sutherland": _line_clip,
           "liang-barsky": _line_clip, "cyrus-beck": _line_clip,
           "sutherland-hodgman": _polygon_clip, "de-casteljau": _casteljau,
-          "cox-de-boor": _cox_de_boor}
+          "cox-de-boor": _cox_de_boor, "cohen-sutherland-3d": _clip3d,
+          "liang-barsky-3d": _clip3d, "z-buffer": _z_buffer, "depth-sort": _depth_sort,
+          "floating-horizon": _floating_horizon, "ray-tracing": _ray_tracing}
 
 
 #: Estimated bytes that building, encoding and sending a view takes (measured with
@@ -428,7 +597,7 @@ def view_of(ns, limit_bytes=None):
                  "notes": table.notes, "columns": table.columns,
                  "rows": _cells(table),
                  "count": len(table.rows),
-                 "command": "scanline trace " + ns.algorithm + " " + " ".join(tokens)})
+                 "command": shlex.join(["scanline", "trace", ns.algorithm, *tokens])})
     return view
 
 

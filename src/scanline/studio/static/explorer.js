@@ -42,11 +42,16 @@ async function load(algorithm, args, keepStep) {
 }
 
 // ---- geometry of the grid --------------------------------------------------------
+// The grid fills the canvas's width, or its height up to MAX_HEIGHT; a wide grid
+// shortens the canvas to fit (so no band of blank canvas is left below it).
+const MAX_HEIGHT = 520;
 function layout(view) {
   const canvas = $("grid");
   const [x0, y0, x1, y1] = view.bounds;
   const nx = x1 - x0 + 1, ny = y1 - y0 + 1;
-  const cell = Math.max(0.5, Math.min(40, (canvas.width - 40) / nx, (canvas.height - 30) / ny));
+  const cell = Math.max(0.5, Math.min((canvas.width - 42) / nx, (MAX_HEIGHT - 30) / ny));
+  const height = Math.min(MAX_HEIGHT, Math.ceil(8 + ny * cell + 22));
+  if (canvas.height !== height) canvas.height = height;
   return {x0, y0, x1, y1, cell, left: 34, top: 8,
           // device (x, y), y up -> canvas coordinates of the pixel's center
           sx: (x) => 34 + (x - x0 + 0.5) * cell,
@@ -136,6 +141,11 @@ function drawGrid() {
     for (const [x, y] of step.output) { ctx.beginPath(); ctx.arc(g.sx(x), g.sy(y), 5, 0, 7); ctx.fill(); }
     if (step.output.length > 1) { ctx.strokeStyle = COLORS.result; ctx.lineWidth = 2; path(ctx, g, step.output, false); ctx.stroke(); }
   }
+  for (const [points, role] of step.areas || []) {  // depth sort: the pair compared
+    ctx.fillStyle = COLORS[role]; ctx.globalAlpha = 0.35; path(ctx, g, points, true); ctx.fill();
+    ctx.globalAlpha = 1; ctx.strokeStyle = COLORS[role]; ctx.lineWidth = 2; ctx.stroke();
+  }
+  if (view.horizon) drawHorizons(ctx, g, view, i);
   if (view.algorithm === "de-casteljau") {         // the triangle up to this step
     for (let k = 0; k <= i; k++) {
       const [x, y] = steps[k].points[0];
@@ -163,6 +173,28 @@ function drawGrid() {
       ctx.fillRect(g.sx(h.x) - 5, g.sy(h.y) - 5, 10, 10);
       ctx.fillText(h.label, g.sx(h.x) + 7, g.sy(h.y) - 7);
     }
+  }
+}
+
+// The floating horizon: the upper (result color) and lower (plotted color) horizons as
+// the table's rows up to this one leave them, one polyline per run of finite columns.
+function drawHorizons(ctx, g, view, i) {
+  const [c, up, lo] = [view.horizon.column, view.horizon.upper, view.horizon.lower].map((k) => view.index[k]);
+  const upper = new Map(), lower = new Map();
+  for (let k = 0; k <= i; k++) {
+    const r = view.rows[k];
+    upper.set(r[c], r[up]); lower.set(r[c], r[lo]);
+  }
+  for (const [values, color] of [[upper, COLORS.result], [lower, COLORS.plotted]]) {
+    ctx.strokeStyle = color; ctx.lineWidth = 2; ctx.beginPath();
+    let open = false;
+    for (const x of [...values.keys()].sort((a, b) => a - b)) {
+      const y = values.get(x);
+      if (y === null || y === undefined) { open = false; continue; }
+      (open ? ctx.lineTo : ctx.moveTo).call(ctx, g.sx(x), g.sy(y));
+      open = true;
+    }
+    ctx.stroke();
   }
 }
 

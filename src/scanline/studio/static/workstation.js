@@ -6,7 +6,7 @@
 
 const $ = (id) => document.getElementById(id);
 const DEVICES = ["locator", "stroke", "valuator", "choice", "pick", "string"];
-const ws = {id: null, state: null, drag: null, moving: false};
+const ws = {id: null, state: null, drag: null, moving: false, down: null};
 
 async function call(action, body) {
   const response = await fetch(`/api/ws/${ws.id}/${action}`, {method: "POST",
@@ -81,9 +81,18 @@ function band(points, closed) {          // the rubber band, in the overlay
 function rectangle(a, b) { return [a, [b[0], a[1]], b, [a[0], b[1]]]; }
 
 // ---- the canvas's gestures, by tool -----------------------------------------------------
+// In event mode a menu choice waits in the queue: take the choices at its head before a
+// gesture starts, so that the drag uses the tool the operator chose (AWAIT EVENT).
+async function takeChoices() {
+  while (ws.state.mode === "event" && ws.state.events[0] === "choice") await call("await");
+}
+
 async function onDown(event) {
-  const p = devicePosition(event), tool = ws.state.tool;
+  const p = devicePosition(event);
   $("overlay").setPointerCapture(event.pointerId);
+  ws.down = takeChoices();
+  await ws.down;
+  const tool = ws.state.tool;
   if (tool === "line" || tool === "rectangle") {
     // the drag starts now; the snapped start arrives later (a release before it still counts)
     const d = ws.drag = {tool, anchor: p, start: p};
@@ -121,7 +130,9 @@ async function onMove(event) {
 }
 
 async function onUp(event) {
-  const p = devicePosition(event), d = ws.drag, tool = ws.state.tool;
+  const p = devicePosition(event);
+  if (ws.down) await ws.down;             // the gesture's start (and its queued choice) first
+  const d = ws.drag, tool = ws.state.tool;
   ws.drag = null;
   band(null);
   if (d && d.ready) await d.ready;

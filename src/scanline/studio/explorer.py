@@ -455,14 +455,19 @@ def _floating_horizon(table, ns, where):
         at = [r["column"], round(r["y"])]
         seen = r["visible"] != "hidden"
         steps.append({"pixels": [at] if seen else [], "mark": [at],
-                      "rule": f"curve {r['curve']}, column {r['column']}: y = {r['y']:.6g}, "
-                              f"horizons {_finite_text(r['lower before'])}..."
-                              f"{_finite_text(r['upper before'])}: {r['visible']}"})
+                      "rule": f"curve {r['curve']}, column {r['column']}: y = {r['y']:.6g}; "
+                              f"lower {_finite_text(r['lower before'])}, upper "
+                              f"{_finite_text(r['upper before'])}: {_SEEN[r['visible']]}"})
     ys = [round(r["y"]) for r in table.rows]
     return {"before": [], "steps": steps,
             "bounds": [0, min([0] + ys), ns.width - 1, max([ns.height - 1] + ys)],
             "horizon": {"column": "column", "upper": "upper after", "lower": "lower after"},
             "shapes": [], "handles": []}
+
+
+_SEEN = {"above": "above the upper horizon, visible; it raises the upper",
+         "below": "below the lower horizon, visible; it lowers the lower",
+         "hidden": "between the horizons, hidden"}
 
 
 def _finite_text(x):

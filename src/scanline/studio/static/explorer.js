@@ -42,15 +42,17 @@ async function load(algorithm, args, keepStep) {
 }
 
 // ---- geometry of the grid --------------------------------------------------------
-// The grid fills the canvas's width, or its height up to MAX_HEIGHT; a wide grid
-// shortens the canvas to fit (so no band of blank canvas is left below it).
-const MAX_HEIGHT = 520;
+// The grid takes the largest cells that fit MAX_WIDTH x MAX_HEIGHT, and the canvas is
+// cut to the grid (no band of blank canvas beside or below it).
+const MAX_WIDTH = 720, MAX_HEIGHT = 520;
 function layout(view) {
   const canvas = $("grid");
   const [x0, y0, x1, y1] = view.bounds;
   const nx = x1 - x0 + 1, ny = y1 - y0 + 1;
-  const cell = Math.max(0.5, Math.min((canvas.width - 42) / nx, (MAX_HEIGHT - 30) / ny));
+  const cell = Math.max(0.5, Math.min((MAX_WIDTH - 42) / nx, (MAX_HEIGHT - 30) / ny));
+  const width = Math.min(MAX_WIDTH, Math.ceil(34 + nx * cell + 8));
   const height = Math.min(MAX_HEIGHT, Math.ceil(8 + ny * cell + 22));
+  if (canvas.width !== width) canvas.width = width;
   if (canvas.height !== height) canvas.height = height;
   return {x0, y0, x1, y1, cell, left: 34, top: 8,
           // device (x, y), y up -> canvas coordinates of the pixel's center
@@ -211,8 +213,14 @@ function drawTable() {
     for (const v of view.rows[k]) tr.insertCell().textContent = cell(v);
   }
   $("window").textContent = view.count > hi - lo ? `rows ${lo}..${hi - 1} of ${view.count} shown` : "";
-  const current = table.querySelector("tr.current");
-  if (current) current.scrollIntoView({block: "nearest"});
+  // scroll the table's box (not the page) to keep the current row in view, below the
+  // sticky header
+  const current = table.querySelector("tr.current"), box = table.parentElement;
+  if (current) {
+    const r = current.getBoundingClientRect(), b = box.getBoundingClientRect();
+    if (r.top < b.top + head.offsetHeight || r.bottom > b.bottom)
+      box.scrollTop += r.top - b.top - (b.height - r.height) / 2;
+  }
 }
 
 function render() {

@@ -94,6 +94,17 @@ ALGORITHMS = {
         {"X": "x of the pixel (0..31 of the built-in 32 x 24 scene)",
          "Y": "y of the pixel (0..23, bottom row 0)"}, False,
     ),
+    "back-face": (
+        "the back-face test: V . N for each face of a cube (Hearn & Baker 13-2)", {}, False,
+    ),
+    "gouraud": (
+        "Gouraud shading along one scan line: vertex intensities interpolated (Hearn & "
+        "Baker 14-5)", {}, False,
+    ),
+    "phong": (
+        "Phong shading along one scan line: normals interpolated, the model per pixel "
+        "(Hearn & Baker 14-5)", {}, False,
+    ),
 }
 
 
@@ -263,6 +274,26 @@ def ray_tracing_options(sub):
 
 
 OPTIONS["ray-tracing"] = ray_tracing_options
+
+
+def back_face_options(sub):
+    """``--eye`` of ``back-face``."""
+    sub.add_argument("--eye", nargs=3, type=float, metavar=("X", "Y", "Z"), default=[3, 2, 4],
+                     help="the eye, looking at the cube's center (default 3 2 4)")
+    return ["eye"]
+
+
+OPTIONS["back-face"] = back_face_options
+
+
+def shading_options(sub):
+    """``--row`` of ``gouraud`` and ``phong``."""
+    sub.add_argument("--row", type=integer, default=12,
+                     help="the scan line, 0..23 of the built-in 32 x 24 sphere (default 12)")
+    return ["row"]
+
+
+OPTIONS.update({"gouraud": shading_options, "phong": shading_options})
 
 FORMATS = ("table", "csv", "json")
 

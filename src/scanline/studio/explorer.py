@@ -20,7 +20,11 @@ from .. import budget
 from ..cli import Parser, UsageError
 from ..cli import trace as cli_trace
 from ..errors import MemoryBudgetError
+from ..trace.backface import HEIGHT as BF_HEIGHT
+from ..trace.backface import WIDTH as BF_WIDTH
 from ..trace.conics import MAX_RADIUS, _mirror4
+from ..trace.shading import HEIGHT as SH_HEIGHT
+from ..trace.shading import WIDTH as SH_WIDTH
 from ..trace.raytracing import HEIGHT as RT_HEIGHT
 from ..trace.raytracing import WIDTH as RT_WIDTH
 from ..trace.seedfill import EXAMPLE_GRID, _rows
@@ -51,6 +55,9 @@ DEFAULTS = {
     "depth-sort": ["--scene", "cyclic"],
     "floating-horizon": ["--nx", "6", "--ny", "4", "--width", "24", "--height", "16"],
     "ray-tracing": ["20", "11"],
+    "back-face": ["--eye", "3", "2", "4"],
+    "gouraud": ["--row", "12"],
+    "phong": ["--row", "12"],
 }
 
 #: Tables longer than this are refused: the page lists every row.
@@ -491,6 +498,39 @@ def _ray_tracing(table, ns, where):
             "shapes": [], "handles": [_handle(where, "pixel", ns.x, ns.y, ("x", 0), ("y", 0))]}
 
 
+def _back_face(table, ns, where):
+    """The cube's faces on the device: at each step the face tested (this step's
+    color), the front faces found before it plotted."""
+    steps = []
+    for r in table.rows:
+        front = r["result"] == "front"
+        done = [[t, "plotted"] for q in table.rows[:r["face"]] if q["result"] == "front"
+                for t in table.outlines[q["face"]]]
+        steps.append({"areas": done + [[t, "current"] for t in table.outlines[r["face"]]],
+                      "rule": f"face {r['face']}: V.N = {r['V.N']:g} "
+                              f"{'< 0: front face, drawn' if front else '> 0: back face, culled'}"
+                              if r["V.N"] else f"face {r['face']}: V.N = 0, seen edge-on"})
+    shapes = [{"kind": "polygon", "points": t} for face in table.outlines for t in face]
+    return {"before": [], "steps": steps, "bounds": [0, 0, BF_WIDTH - 1, BF_HEIGHT - 1],
+            "shapes": shapes, "handles": []}
+
+
+def _shading(table, ns, where):
+    """The sphere's triangles that the scan line crosses; at each step the pixel
+    shaded, its triangle filled, and the pixels before it in their gray (the
+    ``shade_column``, a linear intensity)."""
+    steps = []
+    for r, k in zip(table.rows, table.triangle_of):
+        what = (f"I = {r['l0']:.4g} x {r['I0']:.4g} + {r['l1']:.4g} x {r['I1']:.4g} + "
+                f"{r['l2']:.4g} x {r['I2']:.4g}" if "I0" in r else f"N = {r['N']}, I")
+        steps.append({"pixels": [[r["x"], ns.row]], "areas": [[table.triangles[k], "plotted"]],
+                      "rule": f"x = {r['x']}, facet {r['facet']}: {what} = {r['I']:.6g}"})
+    shapes = [{"kind": "polygon", "points": t} for t in table.triangles.values()]
+    shapes.append({"kind": "line", "points": [[0, ns.row], [SH_WIDTH - 1, ns.row]]})
+    return {"before": [], "steps": steps, "bounds": [0, 0, SH_WIDTH - 1, SH_HEIGHT - 1],
+            "shapes": shapes, "handles": [], "shade_column": "I"}
+
+
 def _table_only(table, ns, where):
     """An algorithm with no grid view yet: its table, stepped row by row."""
     return {"before": [], "steps": [{"rule": ""} for _ in table.rows], "bounds": [0, 0, 10, 10],
@@ -504,7 +544,8 @@ _VIEWS = {"bresenham": _lines, "dda": _lines, "midpoint-circle": _conics,
           "sutherland-hodgman": _polygon_clip, "de-casteljau": _casteljau,
           "cox-de-boor": _cox_de_boor, "cohen-sutherland-3d": _clip3d,
           "liang-barsky-3d": _clip3d, "z-buffer": _z_buffer, "depth-sort": _depth_sort,
-          "floating-horizon": _floating_horizon, "ray-tracing": _ray_tracing}
+          "floating-horizon": _floating_horizon, "ray-tracing": _ray_tracing,
+          "back-face": _back_face, "gouraud": _shading, "phong": _shading}
 
 
 #: Estimated bytes that building, encoding and sending a view takes (measured with

@@ -19,6 +19,8 @@ from .clip3d import cohen_sutherland_3d, liang_barsky_3d
 from .zbuffer import z_buffer
 from .visible import depth_sort, floating_horizon
 from .raytracing import ray_tracing
+from .backface import back_face
+from .shading import gouraud, phong
 
 #: CLI name -> function
 ALGORITHMS = {
@@ -41,11 +43,14 @@ ALGORITHMS = {
     "depth-sort": depth_sort,
     "floating-horizon": floating_horizon,
     "ray-tracing": ray_tracing,
+    "back-face": back_face,
+    "gouraud": gouraud,
+    "phong": phong,
 }
 
 __all__ = ["Table", "bresenham", "dda", "midpoint_circle", "midpoint_ellipse", "flood_fill",
            "boundary_fill", "scan_line_fill", "sutherland_hodgman", "de_casteljau", "cox_de_boor",
            "cohen_sutherland", "liang_barsky", "cyrus_beck",
            "cohen_sutherland_3d", "liang_barsky_3d", "z_buffer", "depth_sort",
-           "floating_horizon", "ray_tracing",
+           "floating_horizon", "ray_tracing", "back_face", "gouraud", "phong",
            "ALGORITHMS"]

@@ -124,8 +124,12 @@ function drawGrid() {
 
   const steps = view.steps, i = state.step, step = stepOf(i);
   for (const [x, y] of view.before) fillPixel(ctx, g, x, y, COLORS.plotted);
-  for (let k = 0; k < i; k++)
-    for (const [x, y] of pixelsOf(k)) fillPixel(ctx, g, x, y, COLORS.plotted);
+  const shade = view.shade_column !== undefined ? view.index[view.shade_column] : undefined;
+  for (let k = 0; k < i; k++) {        // a shading's pixels in their own gray (linear I)
+    const color = shade === undefined ? COLORS.plotted :
+      `rgb(${Array(3).fill(Math.round(255 * Math.min(1, Math.max(0, view.rows[k][shade])))).join(",")})`;
+    for (const [x, y] of pixelsOf(k)) fillPixel(ctx, g, x, y, color);
+  }
   for (const [x, y] of pixelsOf(i)) fillPixel(ctx, g, x, y, COLORS.current);
 
   ctx.lineWidth = 1.5; ctx.setLineDash([5, 4]); ctx.strokeStyle = COLORS.shape;

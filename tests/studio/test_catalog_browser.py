@@ -31,11 +31,11 @@ COLORED_PIXELS = """() => {
     let n = 0;
     for (let i = 0; i < d.length; i += 4) {
         const r = d[i], g = d[i + 1], b = d[i + 2];
-        if (Math.max(r, g, b) - Math.min(r, g, b) < 40) continue;      // gray
+        if (Math.max(r, g, b) - Math.min(r, g, b) < 40) continue;    // gray
         // on the segment from white to the handle color (a handle or its label)?
         const t = (255 - g) / (255 - h[1]);
-        if (Math.abs(w[0] + t * (h[0] - w[0]) - r) < 12 && Math.abs(w[2] + t * (h[2] - w[2]) - b) < 12)
-            continue;
+        if (Math.abs(w[0] + t * (h[0] - w[0]) - r) < 12 &&
+            Math.abs(w[2] + t * (h[2] - w[2]) - b) < 12) continue;
         n++;
     }
     return n;

@@ -15,7 +15,7 @@ def _numbers(text):
 
 
 @pytest.mark.parametrize("eye", [(3, 2, 4), (0, 0, 5), (-6, 1, 0.5), (0.5, -4, -3),
-                                 (2.5, 2.5, 2.5)])
+                                 (2.5, 2.5, 2.5), (0, 5, 0), (0, -3, 0)])
 def test_back_face_is_the_sign_of_v_dot_n(eye):
     """Each face of the cube (edge 2 about the origin) lies in the plane N . P = 1, so
     V . N = (P - eye) . N = 1 - eye . N whatever the vertex P: a back face where it is

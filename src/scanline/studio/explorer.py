@@ -491,8 +491,9 @@ def _ray_tracing(table, ns, where):
         else:
             hit = (f"hits face {r['face']} at t = {r['t']:.6g}" if r["face"] is not None
                    and r["face"] >= 0 else "leaves the scene")
+            total = ", ".join(f"{r[c]:.4g}" for c in ("sum_r", "sum_g", "sum_b"))
             rule = (f"ray {r['ray']} ({r['kind']}, depth {r['depth']}): {hit}; weight "
-                    f"{r['weight']:.6g}, sum ({r['sum_r']:.4g}, {r['sum_g']:.4g}, {r['sum_b']:.4g})")
+                    f"{r['weight']:.6g}, sum ({total})")
         steps.append({"pixels": [[ns.x, ns.y]], "rule": rule})
     return {"before": [], "steps": steps, "bounds": [0, 0, RT_WIDTH - 1, RT_HEIGHT - 1],
             "shapes": [], "handles": [_handle(where, "pixel", ns.x, ns.y, ("x", 0), ("y", 0))]}

@@ -19,7 +19,10 @@ def scene(eye):
     prepared for a :data:`WIDTH` x :data:`HEIGHT` device."""
     import scanline as sl
 
-    camera = sl.Camera(eye=tuple(eye), target=(0.0, 0.0, 0.0))
+    # view-up +y, or -z for an eye straight above or below the cube (+y would be the
+    # direction of view)
+    up = (0.0, 0.0, -1.0) if eye[0] == 0 and eye[2] == 0 else (0.0, 1.0, 0.0)
+    camera = sl.Camera(eye=tuple(eye), target=(0.0, 0.0, 0.0), up=up)
     return sl.screen.prepare(sl.mesh.cube(), camera, WIDTH, HEIGHT)
 
 

@@ -1,5 +1,5 @@
-"""The Mandelbrot set by escape time: scanline's compiled kernel (rows in parallel,
-numba's prange) against a vectorized numpy version written here, on the same
+"""The Mandelbrot set by escape time: scanline's compiled kernel (interleaved rows, one
+call per thread) against a vectorized numpy version written here, on the same
 workload, with the same arithmetic (their counts are compared, pixel for pixel).
 
 Workload (fixed): ``sl.fractals.mandelbrot(1920, 1080, center=(-0.5, 0), span=3.0,

@@ -100,7 +100,7 @@ def test_colorize_uses_the_tables_first_color_for_the_set():
 
 @pytest.mark.parametrize("call, error, match", [
     (lambda: mandelbrot(10**5, 10**5, max_iterations=10**4), ArgumentValueError,
-     "max_iterations: .* more than the limit of 50,000,000,000"),
+     "max_iterations: .* more than the limit of 10,000,000,000"),
     (lambda: mandelbrot(0, 10), ArgumentValueError, "width must be >= 1"),
     (lambda: mandelbrot(10, 10, span=0), ArgumentValueError, "span must be > 0"),
     (lambda: mandelbrot(10, 10, center=(float("nan"), 0)), ArgumentValueError, "center"),

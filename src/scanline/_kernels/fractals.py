@@ -9,9 +9,7 @@ no input reaches outside the arrays.
 
 import math
 
-from numba import prange
-
-from ._jit import helper, kernel, parallel_kernel
+from ._jit import helper, kernel
 
 
 @helper
@@ -24,9 +22,11 @@ def escape_step(zr, zi, cr, ci):
     return zr2 - zi2 + cr, 2.0 * zr * zi + ci, False
 
 
-@parallel_kernel
-def escape_times(xs, ys, cr, ci, julia, max_iterations, out):
-    """Iteration counts of z -> z² + c, rows in parallel (numba's ``prange``).
+@kernel
+def escape_times(start, step, xs, ys, cr, ci, julia, max_iterations, out):
+    """Iteration counts of z -> z² + c on rows ``start``, ``start + step``, ... (one
+    call per thread, :func:`scanline._kernels._threads.call_in_bands`: interleaved
+    rows share the slow rows near the set among the threads).
 
     Pixel (row r, column k) stands for the complex number xs[k] + i ys[r].  For the
     Mandelbrot set (``julia`` false) c is that number and z starts at 0; for a
@@ -44,7 +44,7 @@ def escape_times(xs, ys, cr, ci, julia, max_iterations, out):
     """
     height = min(ys.shape[0], out.shape[0])
     width = min(xs.shape[0], out.shape[1])
-    for r in prange(height):
+    for r in range(start, height, step):
         y = ys[r]
         for k0 in range(0, width, 4):
             m = min(4, width - k0)

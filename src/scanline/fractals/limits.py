@@ -12,8 +12,9 @@ from ..errors import ArgumentValueError
 MAX_POINTS = 1 << 26
 
 #: Most pixel iterations (width x height x max_iterations) of one escape-time image:
-#: about a minute on one core.
-MAX_ITERATIONS = 50_000_000_000
+#: about ten seconds on one core (a 1920 x 1080 image of points in the set to 4,800
+#: iterations).
+MAX_ITERATIONS = 10_000_000_000
 
 
 def power(base, exponent):

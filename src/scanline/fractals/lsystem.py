@@ -139,6 +139,8 @@ def _directions(angle, heading):
     divides the full turn into an even number of directions (right angles: 4, 60
     degrees: 6 ...), with the values of the axes exact; else empty tables."""
     n = 2 * math.pi / angle if angle > 0 else 0.0
+    if not n <= 3600.5:                 # (a tiny angle: n is huge or infinite)
+        return np.zeros(0), np.zeros(0)
     count = int(round(n))
     if count < 2 or count % 2 or count > 3600 or abs(n - count) > 1e-9 * count:
         return np.zeros(0), np.zeros(0)

@@ -6,8 +6,8 @@ The transformation is z -> z² + c in the complex plane.  Hearn & Baker's test: 
 |z| > 2 the iterates run off to infinity, so a point whose orbit stays within
 |z| <= 2 for ``max_iterations`` steps is taken as a member.
 
-The compiled loop is :func:`scanline._kernels.fractals.escape_times` (rows in
-parallel; the counts do not depend on the number of threads).
+The compiled loop is :func:`scanline._kernels.fractals.escape_times` (interleaved
+rows, one call per thread; the counts do not depend on the number of threads).
 
 References
 ----------
@@ -54,7 +54,7 @@ def _plane(width, height, center, span):
 
 def _counts(width, height, center, span, max_iterations, c):
     from .._kernels import fractals as k
-    from .._kernels._jit import call
+    from .._kernels._threads import call_in_bands
 
     max_iterations = v.positive_int("max_iterations", max_iterations)
     limits.iterations("max_iterations", v.positive_int("width", width)
@@ -63,8 +63,8 @@ def _counts(width, height, center, span, max_iterations, c):
     out = np.empty((height, width), np.int64)
     julia = c is not None
     cr, ci = (c.real, c.imag) if julia else (0.0, 0.0)
-    call(k.escape_times, lambda: width * height * min(max_iterations, 64) // 4, xs, ys,
-         float(cr), float(ci), julia, max_iterations, out)
+    call_in_bands(k.escape_times, width * height * max_iterations // 4, xs, ys,
+                  float(cr), float(ci), julia, max_iterations, out)
     return out
 
 

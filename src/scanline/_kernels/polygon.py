@@ -347,7 +347,8 @@ def fill_ring(buf, layout, width, height, verts, color, rule):
     polys = np.empty(2, np.int64)
     polys[0] = 0
     polys[1] = 1
-    fill_polygons(buf, layout, width, height, 0, 0, verts, contours, polys,
+    origin = np.int64(0)    # (typed, not literal 0s: the helpers compile once)
+    fill_polygons(buf, layout, width, height, origin, origin, verts, contours, polys,
                   color.reshape((1, color.shape[0])), rule, n)
     return True
 

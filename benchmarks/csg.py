@@ -19,6 +19,9 @@ Workloads:
 * ``volume <solid>``: scanline ``sl.csg.volume(tree, resolution=256)`` (65,536 rays);
   peer ``manifold``: the boolean of the tessellated operands and the volume of the
   mesh it makes.  Both values and the exact volume (where closed-form) are printed.
+* ``two blobs, marching cubes 128^3``: scanline ``sl.mesh.blobby`` of two merging
+  blobs (the density on the grid, then scikit-image's marching cubes); peer: the union
+  of two icospheres by manifold3d, a surface of the same size.
 
 Best of 3 after a first call (which compiles scanline's kernels or loads them from
 numba's cache; manifold3d is compiled C++).  Run under ``flock /tmp/bench.lock python
@@ -103,6 +106,23 @@ def main():
         report.add(work, "manifold", "trimesh.boolean(engine='manifold').volume",
                    lambda: tessellated(tree).volume)
         report.target(work, "manifold", 0.0, "reported beside, no target")
+    # blobby objects (H&B 10-7) are meshed by marching cubes: two blobs merging, beside
+    # the union of two spheres where they meet by manifold3d (a surface of the same size)
+    res = 32 if args.quick else 128
+    work = f"two blobs, marching cubes {res}^3"
+    centers = [(-0.6, 0.0, 0.0), (0.6, 0.0, 0.0)]
+    report.add(work, "scanline", f"sl.mesh.blobby(two centers, resolution={res})",
+               lambda: sl.mesh.blobby(centers, 1.0, resolution=res))
+
+    def spheres():
+        balls = []
+        for c in centers:
+            m = trimesh.creation.icosphere(subdivisions=5, radius=1.0)
+            m.apply_translation(c)
+            balls.append(m)
+        return trimesh.boolean.union(balls, engine="manifold")
+    report.add(work, "manifold", "trimesh.boolean.union of two icospheres (manifold)", spheres)
+    report.target(work, "manifold", 0.0, "reported beside, no target")
     report.write()
 
 

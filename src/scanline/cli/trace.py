@@ -97,6 +97,10 @@ ALGORITHMS = {
     "back-face": (
         "the back-face test: V . N for each face of a cube (Hearn & Baker 13-2)", {}, False,
     ),
+    "bsp-tree": (
+        "the BSP tree: splitting planes, front and back lists, splits, then the traversal "
+        "back to front from the eye (Hearn & Baker 13-7)", {}, False,
+    ),
     "gouraud": (
         "Gouraud shading along one scan line: vertex intensities interpolated (Hearn & "
         "Baker 14-5)", {}, False,
@@ -294,6 +298,16 @@ def shading_options(sub):
 
 
 OPTIONS.update({"gouraud": shading_options, "phong": shading_options})
+
+
+def bsp_options(sub):
+    """``--eye`` of ``bsp-tree``."""
+    sub.add_argument("--eye", nargs=2, type=float, metavar=("X", "Y"), default=[6, 22],
+                     help="the eye in plan, half way up the walls (default 6 22)")
+    return ["eye"]
+
+
+OPTIONS["bsp-tree"] = bsp_options
 
 FORMATS = ("table", "csv", "json")
 

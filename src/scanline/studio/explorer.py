@@ -22,6 +22,8 @@ from ..cli import trace as cli_trace
 from ..errors import MemoryBudgetError
 from ..trace.backface import HEIGHT as BF_HEIGHT
 from ..trace.backface import WIDTH as BF_WIDTH
+from ..trace.bsp import HEIGHT as BSP_HEIGHT
+from ..trace.bsp import WIDTH as BSP_WIDTH
 from ..trace.conics import MAX_RADIUS, _mirror4
 from ..trace.shading import HEIGHT as SH_HEIGHT
 from ..trace.shading import WIDTH as SH_WIDTH
@@ -58,6 +60,7 @@ DEFAULTS = {
     "back-face": ["--eye", "3", "2", "4"],
     "gouraud": ["--row", "12"],
     "phong": ["--row", "12"],
+    "bsp-tree": ["--eye", "6", "22"],
 }
 
 #: Tables longer than this are refused: the page lists every row.
@@ -532,6 +535,47 @@ def _shading(table, ns, where):
             "shapes": shapes, "handles": [], "shade_column": "I"}
 
 
+def _plane_line(plane, width, height):
+    """The plan line A x + B y + D = 0 of a wall's plane cut to the grid [0, width - 1]
+    x [0, height - 1]: its two ends."""
+    a, b, _, d = plane
+    w, h = width - 1, height - 1
+    ends = [[x, -(a * x + d) / b] for x in (0, w) if b] + [[-(b * y + d) / a, y] for y in (0, h)
+                                                          if a]
+    ends = [p for p in ends if -1e-9 <= p[0] <= w + 1e-9 and -1e-9 <= p[1] <= h + 1e-9]
+    return [min(ends), max(ends)] if ends else []
+
+
+def _bsp_tree(table, ns, where):
+    """The walls in plan.  Building: the node's splitting plane (a line across the
+    grid), its pieces (this step's color), the pieces in front (result color) and
+    behind (plotted).  Drawing: the pieces painted so far and this one; the eye is a
+    handle."""
+    steps, drawn = [], []
+    for r in table.rows:
+        if r["phase"] == "build":
+            n = r["node"]
+            sets = [(r["in front"], "result"), (r["behind"], "plotted"), (r["on"], "current")]
+            areas = [[table.pieces[p], role] for names, role in sets if names != "-"
+                     for p in names.split()]
+            steps.append({"areas": areas,
+                          "plane": _plane_line(table.planes[n], BSP_WIDTH, BSP_HEIGHT),
+                          "rule": f"node {n}: plane {r['plane']} of wall {r['on']}; in front: "
+                                  f"{r['in front']}; behind: {r['behind']}; split: {r['splits']}"})
+        else:
+            near = "front" if r["side"] == "back" else "back"
+            steps.append({"areas": [[table.pieces[p], "plotted"] for p in drawn]
+                          + [[table.pieces[r["piece"]], "current"]],
+                          "rule": f"node {r['node']}: the eye is on its {r['side']} side, so its "
+                                  f"{near} subtree was painted first; piece {r['piece']} "
+                                  f"(wall {r['wall']}) painted"})
+            drawn.append(r["piece"])
+    shapes = [{"kind": "line", "points": seg} for seg in table.pieces.values()]
+    return {"before": [], "steps": steps, "bounds": [0, 0, BSP_WIDTH - 1, BSP_HEIGHT - 1],
+            "shapes": shapes,
+            "handles": [_handle(where, "eye", ns.eye[0], ns.eye[1], ("eye", 0), ("eye", 1))]}
+
+
 def _table_only(table, ns, where):
     """An algorithm with no grid view yet: its table, stepped row by row."""
     return {"before": [], "steps": [{"rule": ""} for _ in table.rows], "bounds": [0, 0, 10, 10],
@@ -546,7 +590,8 @@ _VIEWS = {"bresenham": _lines, "dda": _lines, "midpoint-circle": _conics,
           "cox-de-boor": _cox_de_boor, "cohen-sutherland-3d": _clip3d,
           "liang-barsky-3d": _clip3d, "z-buffer": _z_buffer, "depth-sort": _depth_sort,
           "floating-horizon": _floating_horizon, "ray-tracing": _ray_tracing,
-          "back-face": _back_face, "gouraud": _shading, "phong": _shading}
+          "back-face": _back_face, "gouraud": _shading, "phong": _shading,
+          "bsp-tree": _bsp_tree}
 
 
 #: Estimated bytes that building, encoding and sending a view takes (measured with

@@ -21,6 +21,7 @@ from .visible import depth_sort, floating_horizon
 from .raytracing import ray_tracing
 from .backface import back_face
 from .shading import gouraud, phong
+from .bsp import bsp_tree
 
 #: CLI name -> function
 ALGORITHMS = {
@@ -46,6 +47,7 @@ ALGORITHMS = {
     "back-face": back_face,
     "gouraud": gouraud,
     "phong": phong,
+    "bsp-tree": bsp_tree,
 }
 
 __all__ = ["Table", "bresenham", "dda", "midpoint_circle", "midpoint_ellipse", "flood_fill",
@@ -53,4 +55,5 @@ __all__ = ["Table", "bresenham", "dda", "midpoint_circle", "midpoint_ellipse", "
            "cohen_sutherland", "liang_barsky", "cyrus_beck",
            "cohen_sutherland_3d", "liang_barsky_3d", "z_buffer", "depth_sort",
            "floating_horizon", "ray_tracing", "back_face", "gouraud", "phong",
+           "bsp_tree",
            "ALGORITHMS"]

@@ -149,7 +149,12 @@ function drawGrid() {
   }
   for (const [points, role] of step.areas || []) {  // depth sort: the pair compared
     ctx.fillStyle = COLORS[role]; ctx.globalAlpha = 0.35; path(ctx, g, points, true); ctx.fill();
-    ctx.globalAlpha = 1; ctx.strokeStyle = COLORS[role]; ctx.lineWidth = 2; ctx.stroke();
+    ctx.globalAlpha = 1; ctx.strokeStyle = COLORS[role];
+    ctx.lineWidth = points.length === 2 ? 4 : 2; ctx.stroke();     // a wall in plan: a segment
+  }
+  if (step.plane && step.plane.length) {           // a BSP node's splitting plane, in plan
+    ctx.strokeStyle = "#e03131"; ctx.lineWidth = 2; ctx.setLineDash([8, 4]);
+    path(ctx, g, step.plane, false); ctx.stroke(); ctx.setLineDash([]);
   }
   if (view.horizon) drawHorizons(ctx, g, view, i);
   if (view.algorithm === "de-casteljau") {         // the triangle up to this step

@@ -79,3 +79,84 @@ def test_bsp_explorer_view():
     assert view["steps"][0]["plane"] == [[0, 12], [31, 12]]
     last = view["steps"][-1]
     assert len(last["areas"]) == 9 and last["areas"][-1][1] == "current"
+
+
+# -- Warnock's area subdivision ----------------------------------------------------------
+def _side(poly, x, y):
+    """+1 inside the convex polygon (strictly), -1 outside, 0 on its boundary."""
+    p = np.asarray(poly, float)[:, :2]
+    cross = [(b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0])
+             for a, b in zip(p, np.roll(p, -1, axis=0))]
+    if all(c > 1e-9 for c in cross) or all(c < -1e-9 for c in cross):
+        return 1
+    return 0 if all(c >= -1e-9 for c in cross) or all(c <= 1e-9 for c in cross) else -1
+
+
+def _depth(poly, x, y):
+    """The depth of the polygon's plane (through its first three vertices) at (x, y)."""
+    a, b, c = np.asarray(poly, float)[:3]
+    n = np.cross(b - a, c - a)
+    return a[2] - (n[0] * (x - a[0]) + n[1] * (y - a[1])) / n[2]
+
+
+@pytest.mark.parametrize("scene", ["overlap", "surrounding"])
+def test_warnock_areas_tile_the_screen_and_match_the_kernels_record(scene):
+    from scanline.trace import subdivision as warnock
+    from scanline.visible import ScreenPolygons, area_subdivision
+    from scanline.visible.warnock import CASES
+
+    t = sl.trace.warnock(scene)
+    decided = [r for r in t.rows if r["decision"] != "subdivide"]
+    count = np.zeros((warnock.HEIGHT, warnock.WIDTH), int)
+    for r in decided:
+        count[r["y0"]:r["y1"] + 1, r["x0"]:r["x1"] + 1] += 1
+    assert (count == 1).all()
+    sp = ScreenPolygons.from_device([np.array(p, float) for p in warnock.SCENES[scene]],
+                                    warnock.WIDTH, warnock.HEIGHT)
+    result = area_subdivision(sp, record=1000)
+    assert result.areas == len(decided)
+    assert result.regions.tolist() == [[r["x0"], r["y0"], r["x1"], r["y1"],
+                                        CASES.index(r["decision"])] for r in decided]
+    for r in t.rows:        # a subdivided area's quadrants are the rows one level down
+        if r["decision"] == "subdivide":
+            assert r["x0"] < r["x1"] or r["y0"] < r["y1"]
+
+
+@pytest.mark.parametrize("scene", ["overlap", "surrounding"])
+def test_warnock_classes_and_pixels_against_plane_geometry(scene):
+    from scanline.trace import subdivision as warnock
+
+    polys = warnock.SCENES[scene]
+    t = sl.trace.warnock(scene)
+    for r in t.rows:
+        x0, y0, x1, y1 = r["x0"], r["y0"], r["x1"], r["y1"]
+        for i, poly in enumerate(polys):
+            c = r[f"P{i}"]
+            if c == "surrounding":
+                assert all(_side(poly, x, y) >= 0 for x in (x0, x1) for y in (y0, y1))
+            elif c == "inside":
+                xs, ys = [p[0] for p in poly], [p[1] for p in poly]
+                assert x0 <= min(xs) and max(xs) <= x1 and y0 <= min(ys) and max(ys) <= y1
+            elif c == "outside":
+                assert all(_side(poly, x, y) <= 0 for x in range(x0, x1 + 1)
+                           for y in range(y0, y1 + 1))
+    checked = 0
+    for y in range(warnock.HEIGHT):
+        for x in range(warnock.WIDTH):
+            sides = [_side(p, x, y) for p in polys]
+            if 0 in sides:
+                continue                    # on an edge: the fill rule decides
+            near = [(_depth(p, x, y), i) for i, p in enumerate(polys) if sides[i] > 0]
+            assert t.face[y, x] == (min(near)[1] if near else -1), (x, y)
+            checked += 1
+    assert checked > 100
+    painted = [p for w in t.written for p in w]
+    assert len(painted) == len(set(painted)) == int((t.face >= 0).sum())
+
+
+def test_warnock_explorer_view():
+    view = explorer.explore("warnock", ["--scene", "overlap"])
+    assert view["count"] == len(view["steps"])
+    first = view["steps"][0]
+    assert first["areas"][0][0] == [[-0.5, -0.5], [15.5, -0.5], [15.5, 11.5], [-0.5, 11.5]]
+    assert "subdivide" in first["rule"]

@@ -101,6 +101,10 @@ ALGORITHMS = {
         "the BSP tree: splitting planes, front and back lists, splits, then the traversal "
         "back to front from the eye (Hearn & Baker 13-7)", {}, False,
     ),
+    "warnock": (
+        "Warnock's area subdivision: each area, the class of each polygon (surrounding, "
+        "overlapping, inside, outside) and the decision (Hearn & Baker 13-8)", {}, False,
+    ),
     "gouraud": (
         "Gouraud shading along one scan line: vertex intensities interpolated (Hearn & "
         "Baker 14-5)", {}, False,
@@ -308,6 +312,16 @@ def bsp_options(sub):
 
 
 OPTIONS["bsp-tree"] = bsp_options
+
+
+def warnock_options(sub):
+    """``--scene`` of ``warnock``."""
+    sub.add_argument("--scene", choices=("overlap", "surrounding"), default="overlap",
+                     help="the built-in scene on a 16 x 12 device (default overlap)")
+    return ["scene"]
+
+
+OPTIONS["warnock"] = warnock_options
 
 FORMATS = ("table", "csv", "json")
 

@@ -31,6 +31,8 @@ from ..trace.raytracing import HEIGHT as RT_HEIGHT
 from ..trace.raytracing import WIDTH as RT_WIDTH
 from ..trace.seedfill import EXAMPLE_GRID, _rows
 from ..trace.visible import SCENES as DEPTH_SORT_SCENES
+from ..trace.subdivision import HEIGHT as WA_HEIGHT
+from ..trace.subdivision import WIDTH as WA_WIDTH
 from ..trace.zbuffer import HEIGHT as ZB_HEIGHT
 from ..trace.zbuffer import SCENE as ZB_SCENE
 from ..trace.zbuffer import WIDTH as ZB_WIDTH
@@ -61,6 +63,7 @@ DEFAULTS = {
     "gouraud": ["--row", "12"],
     "phong": ["--row", "12"],
     "bsp-tree": ["--eye", "6", "22"],
+    "warnock": ["--scene", "overlap"],
 }
 
 #: Tables longer than this are refused: the page lists every row.
@@ -576,6 +579,23 @@ def _bsp_tree(table, ns, where):
             "handles": [_handle(where, "eye", ns.eye[0], ns.eye[1], ("eye", 0), ("eye", 1))]}
 
 
+def _warnock(table, ns, where):
+    """The scene's polygons; at each step the area examined (this step's color), the
+    pixels its decision paints, and those painted before (plotted)."""
+    steps = []
+    for r, pixels in zip(table.rows, table.written):
+        x0, y0, x1, y1 = r["x0"] - 0.5, r["y0"] - 0.5, r["x1"] + 0.5, r["y1"] + 0.5
+        classes = ", ".join(f"{p} {r[p]}" for p in table.columns[5:-2])
+        what = r["decision"] + (f": {r['painted']} painted" if r["painted"] else "")
+        steps.append({"pixels": [list(p) for p in pixels],
+                      "areas": [[[[x0, y0], [x1, y0], [x1, y1], [x0, y1]], "current"]],
+                      "rule": f"area ({r['x0']}, {r['y0']})-({r['x1']}, {r['y1']}), level "
+                              f"{r['level']}: {classes}; {what}"})
+    return {"before": [], "steps": steps, "bounds": [0, 0, WA_WIDTH - 1, WA_HEIGHT - 1],
+            "shapes": [{"kind": "polygon", "points": p} for p in table.polygons],
+            "handles": []}
+
+
 def _table_only(table, ns, where):
     """An algorithm with no grid view yet: its table, stepped row by row."""
     return {"before": [], "steps": [{"rule": ""} for _ in table.rows], "bounds": [0, 0, 10, 10],
@@ -591,7 +611,7 @@ _VIEWS = {"bresenham": _lines, "dda": _lines, "midpoint-circle": _conics,
           "liang-barsky-3d": _clip3d, "z-buffer": _z_buffer, "depth-sort": _depth_sort,
           "floating-horizon": _floating_horizon, "ray-tracing": _ray_tracing,
           "back-face": _back_face, "gouraud": _shading, "phong": _shading,
-          "bsp-tree": _bsp_tree}
+          "bsp-tree": _bsp_tree, "warnock": _warnock}
 
 
 #: Estimated bytes that building, encoding and sending a view takes (measured with

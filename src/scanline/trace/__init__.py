@@ -22,6 +22,7 @@ from .raytracing import ray_tracing
 from .backface import back_face
 from .shading import gouraud, phong
 from .bsp import bsp_tree
+from .subdivision import warnock
 
 #: CLI name -> function
 ALGORITHMS = {
@@ -48,6 +49,7 @@ ALGORITHMS = {
     "gouraud": gouraud,
     "phong": phong,
     "bsp-tree": bsp_tree,
+    "warnock": warnock,
 }
 
 __all__ = ["Table", "bresenham", "dda", "midpoint_circle", "midpoint_ellipse", "flood_fill",
@@ -55,5 +57,5 @@ __all__ = ["Table", "bresenham", "dda", "midpoint_circle", "midpoint_ellipse", "
            "cohen_sutherland", "liang_barsky", "cyrus_beck",
            "cohen_sutherland_3d", "liang_barsky_3d", "z_buffer", "depth_sort",
            "floating_horizon", "ray_tracing", "back_face", "gouraud", "phong",
-           "bsp_tree",
+           "bsp_tree", "warnock",
            "ALGORITHMS"]

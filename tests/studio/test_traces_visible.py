@@ -99,6 +99,20 @@ def _depth(poly, x, y):
     return a[2] - (n[0] * (x - a[0]) + n[1] * (y - a[1])) / n[2]
 
 
+def _check_nearest(face, polys):
+    """Every pixel whose center is on no polygon's edge holds the nearest polygon
+    covering it (-1: none)."""
+    checked = 0
+    for y, x in np.ndindex(face.shape):
+        sides = [_side(p, x, y) for p in polys]
+        if 0 in sides:
+            continue                    # on an edge: the fill rule decides
+        near = [(_depth(p, x, y), i) for i, p in enumerate(polys) if sides[i] > 0]
+        assert face[y, x] == (min(near)[1] if near else -1), (x, y)
+        checked += 1
+    assert checked > 100
+
+
 @pytest.mark.parametrize("scene", ["overlap", "surrounding"])
 def test_warnock_areas_tile_the_screen_and_match_the_kernels_record(scene):
     from scanline.trace import subdivision as warnock
@@ -140,16 +154,7 @@ def test_warnock_classes_and_pixels_against_plane_geometry(scene):
             elif c == "outside":
                 assert all(_side(poly, x, y) <= 0 for x in range(x0, x1 + 1)
                            for y in range(y0, y1 + 1))
-    checked = 0
-    for y in range(warnock.HEIGHT):
-        for x in range(warnock.WIDTH):
-            sides = [_side(p, x, y) for p in polys]
-            if 0 in sides:
-                continue                    # on an edge: the fill rule decides
-            near = [(_depth(p, x, y), i) for i, p in enumerate(polys) if sides[i] > 0]
-            assert t.face[y, x] == (min(near)[1] if near else -1), (x, y)
-            checked += 1
-    assert checked > 100
+    _check_nearest(t.face, polys)
     painted = [p for w in t.written for p in w]
     assert len(painted) == len(set(painted)) == int((t.face >= 0).sum())
 
@@ -160,3 +165,46 @@ def test_warnock_explorer_view():
     first = view["steps"][0]
     assert first["areas"][0][0] == [[-0.5, -0.5], [15.5, -0.5], [15.5, 11.5], [-0.5, 11.5]]
     assert "subdivide" in first["rule"]
+
+
+# -- the scan-line method ----------------------------------------------------------------
+@pytest.mark.parametrize("scene", ["overlap", "surrounding"])
+def test_scan_line_method_rows_against_the_polygons(scene):
+    from scanline.trace import subdivision
+    from scanline.visible import ScreenPolygons, scan_line
+
+    polys = subdivision.SCENES[scene]
+    t = sl.trace.scan_line_method(scene)
+    sp = ScreenPolygons.from_device([np.array(p, float) for p in polys], subdivision.WIDTH,
+                                    subdivision.HEIGHT)
+    assert (t.face == scan_line(sp).face).all()
+    assert (t.face == sl.trace.warnock(scene).face).all()
+    _check_nearest(t.face, polys)
+    shown = set()
+    for y in range(subdivision.HEIGHT):
+        line = [r for r in t.rows if r["y"] == y]
+        xs = [r["x"] for r in line]
+        assert xs == sorted(xs)
+        for r in line:                  # the crossing lies on an edge of its polygon
+            p = np.array(polys[int(r["edge"].split("P")[1].rstrip(")"))], float)
+            hits = [a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
+                    for a, b in zip(p, np.roll(p, -1, axis=0))
+                    if min(a[1], b[1]) < y <= max(a[1], b[1])]
+            assert r["x"] == pytest.approx(min(hits, key=lambda h: abs(h - r["x"])))
+            if r["span"]:
+                a, b = (int(c) for c in r["span"].split(".."))
+                shown |= {(x, y) for x in range(a, b + 1)}
+                assert set(r["visible"].split()) == {f"P{f}" for f in t.face[y, a:b + 1]}
+            if r["depths"]:
+                for item in r["depths"].split(", "):
+                    name, z = item.split()
+                    q = int(name[1:])
+                    assert float(z) == pytest.approx(_depth(polys[q], a, y), abs=1e-4)
+    assert shown == {(x, y) for y, x in zip(*np.nonzero(t.face >= 0))}
+
+
+def test_scan_line_method_explorer_view():
+    view = explorer.explore("scan-line-visible", ["--scene", "overlap"])
+    assert view["count"] == len(view["steps"])
+    assert view["steps"][0]["pixels"] == [[x, 2] for x in range(1, 14)]
+    assert "depths P0 0.8, P1 0.3: P1 shown" in view["steps"][5]["rule"]

@@ -105,6 +105,10 @@ ALGORITHMS = {
         "Warnock's area subdivision: each area, the class of each polygon (surrounding, "
         "overlapping, inside, outside) and the decision (Hearn & Baker 13-8)", {}, False,
     ),
+    "scan-line-visible": (
+        "the scan-line method of visible surfaces: active edges, polygon flags, depths "
+        "compared where spans overlap (Hearn & Baker 13-5)", {}, False,
+    ),
     "gouraud": (
         "Gouraud shading along one scan line: vertex intensities interpolated (Hearn & "
         "Baker 14-5)", {}, False,
@@ -315,13 +319,13 @@ OPTIONS["bsp-tree"] = bsp_options
 
 
 def warnock_options(sub):
-    """``--scene`` of ``warnock``."""
+    """``--scene`` of ``warnock`` and ``scan-line-visible``."""
     sub.add_argument("--scene", choices=("overlap", "surrounding"), default="overlap",
                      help="the built-in scene on a 16 x 12 device (default overlap)")
     return ["scene"]
 
 
-OPTIONS["warnock"] = warnock_options
+OPTIONS.update({"warnock": warnock_options, "scan-line-visible": warnock_options})
 
 FORMATS = ("table", "csv", "json")
 

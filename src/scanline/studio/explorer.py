@@ -64,6 +64,7 @@ DEFAULTS = {
     "phong": ["--row", "12"],
     "bsp-tree": ["--eye", "6", "22"],
     "warnock": ["--scene", "overlap"],
+    "scan-line-visible": ["--scene", "overlap"],
 }
 
 #: Tables longer than this are refused: the page lists every row.
@@ -596,6 +597,33 @@ def _warnock(table, ns, where):
             "handles": []}
 
 
+def _scan_line_visible(table, ns, where):
+    """The scene's polygons and the scan line; at each step the crossing (marked)
+    and the span to the next crossing (this step's color), the spans before it
+    plotted."""
+    steps = []
+    for r in table.rows:
+        y = r["y"]
+        p = r["edge"].split("(")[1].rstrip(")")
+        turned = "on" if p in r["on"].split() else "off"
+        text = f"y = {y}: edge {r['edge']} crossed at x = {r['x']:.4g} turns {p} {turned}; "
+        if r["span"] is None:
+            text += "no pixel to the next crossing" if r["on"] != "-" else "no polygon on"
+        elif r["depths"] is None:
+            text += f"span {r['span']}: only {r['on']} on, shown without depths"
+        else:
+            text += f"span {r['span']}: {r['on']} on, depths {r['depths']}: {r['visible']} shown"
+        pixels = []
+        if r["span"]:
+            a, b = (int(c) for c in r["span"].split(".."))
+            pixels = [[x, y] for x in range(a, b + 1)]
+        steps.append({"pixels": pixels, "mark": [[r["x"], y]], "rule": text,
+                      "plane": [[0, y], [WA_WIDTH - 1, y]]})
+    return {"before": [], "steps": steps, "bounds": [0, 0, WA_WIDTH - 1, WA_HEIGHT - 1],
+            "shapes": [{"kind": "polygon", "points": p} for p in table.polygons],
+            "handles": []}
+
+
 def _table_only(table, ns, where):
     """An algorithm with no grid view yet: its table, stepped row by row."""
     return {"before": [], "steps": [{"rule": ""} for _ in table.rows], "bounds": [0, 0, 10, 10],
@@ -611,7 +639,8 @@ _VIEWS = {"bresenham": _lines, "dda": _lines, "midpoint-circle": _conics,
           "liang-barsky-3d": _clip3d, "z-buffer": _z_buffer, "depth-sort": _depth_sort,
           "floating-horizon": _floating_horizon, "ray-tracing": _ray_tracing,
           "back-face": _back_face, "gouraud": _shading, "phong": _shading,
-          "bsp-tree": _bsp_tree, "warnock": _warnock}
+          "bsp-tree": _bsp_tree, "warnock": _warnock,
+          "scan-line-visible": _scan_line_visible}
 
 
 #: Estimated bytes that building, encoding and sending a view takes (measured with

@@ -23,6 +23,7 @@ from .backface import back_face
 from .shading import gouraud, phong
 from .bsp import bsp_tree
 from .subdivision import warnock
+from .scanline_method import scan_line_method
 
 #: CLI name -> function
 ALGORITHMS = {
@@ -50,6 +51,7 @@ ALGORITHMS = {
     "phong": phong,
     "bsp-tree": bsp_tree,
     "warnock": warnock,
+    "scan-line-visible": scan_line_method,
 }
 
 __all__ = ["Table", "bresenham", "dda", "midpoint_circle", "midpoint_ellipse", "flood_fill",
@@ -57,5 +59,5 @@ __all__ = ["Table", "bresenham", "dda", "midpoint_circle", "midpoint_ellipse", "
            "cohen_sutherland", "liang_barsky", "cyrus_beck",
            "cohen_sutherland_3d", "liang_barsky_3d", "z_buffer", "depth_sort",
            "floating_horizon", "ray_tracing", "back_face", "gouraud", "phong",
-           "bsp_tree", "warnock",
+           "bsp_tree", "warnock", "scan_line_method",
            "ALGORITHMS"]

@@ -152,7 +152,7 @@ function drawGrid() {
     ctx.globalAlpha = 1; ctx.strokeStyle = COLORS[role];
     ctx.lineWidth = points.length === 2 ? 4 : 2; ctx.stroke();     // a wall in plan: a segment
   }
-  if (step.plane && step.plane.length) {           // a BSP node's splitting plane, in plan
+  if (step.plane && step.plane.length) {   // a BSP node's splitting plane in plan; a scan line
     ctx.strokeStyle = "#e03131"; ctx.lineWidth = 2; ctx.setLineDash([8, 4]);
     path(ctx, g, step.plane, false); ctx.stroke(); ctx.setLineDash([]);
   }

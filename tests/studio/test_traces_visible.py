@@ -208,3 +208,50 @@ def test_scan_line_method_explorer_view():
     assert view["count"] == len(view["steps"])
     assert view["steps"][0]["pixels"] == [[x, 2] for x in range(1, 14)]
     assert "depths P0 0.8, P1 0.3: P1 shown" in view["steps"][5]["rule"]
+
+
+# -- ray casting -------------------------------------------------------------------------
+@pytest.mark.parametrize("row", [1, 4, 7, 9])
+def test_ray_casting_hits_against_barycentric_depths(row):
+    from types import SimpleNamespace
+
+    from scanline.trace import zbuffer
+    from scanline.visible.raycast import raycast
+
+    t = sl.trace.ray_casting(row)
+    tris = zbuffer.SCENE
+    scene = SimpleNamespace(triangles=tris, width=zbuffer.WIDTH, height=zbuffer.HEIGHT,
+                            inv_w=np.ones((3, 3)), bary=np.zeros((3, 3, 0)))
+    layer = raycast(scene)
+    compared = 0
+    for r in t.rows:
+        x = r["x"]
+        assert r["nearest"] == (f"T{layer.ids[row, x]}" if layer.ids[row, x] >= 0 else "none")
+        hits = {} if r["hits"] == "none" else {
+            int(h.split()[0][1:]): float(h.split()[1]) for h in r["hits"].split(", ")}
+        for k, tri in enumerate(tris):
+            side = _side(tri, x, row)
+            if side == 0:
+                continue                    # on an edge: the fill rule decides
+            assert (k in hits) == (side > 0), (x, k)
+            if k in hits:
+                assert hits[k] == pytest.approx(_depth(tri, x, row), abs=1e-5)
+                compared += 1
+        if hits:
+            k = min(hits, key=hits.get)
+            assert r["nearest"] == f"T{k}" and r["depth"] == pytest.approx(hits[k], abs=1e-6)
+    zb = sl.trace.z_buffer(row).notes[-1].split(": ")[1].split()
+    assert zb == [r["nearest"][1:] if r["nearest"] != "none" else "." for r in t.rows]
+    assert compared > 0
+
+
+def test_ray_casting_refuses_a_row_off_the_device():
+    with pytest.raises(ArgumentValueError, match="0..9"):
+        sl.trace.ray_casting(10)
+
+
+def test_ray_casting_explorer_view():
+    view = explorer.explore("ray-casting", ["--row", "4"])
+    assert view["count"] == len(view["steps"]) == 16
+    assert view["steps"][6]["areas"][0][0] == [[4.0, 0.5], [15.0, 5.0], [8.0, 9.5]]
+    assert view["steps"][0]["pixels"] == [] and "background" in view["steps"][0]["rule"]

@@ -109,6 +109,10 @@ ALGORITHMS = {
         "the scan-line method of visible surfaces: active edges, polygon flags, depths "
         "compared where spans overlap (Hearn & Baker 13-5)", {}, False,
     ),
+    "ray-casting": (
+        "ray casting along one scan line: per pixel the triangles its ray meets, their "
+        "depths and the nearest (Hearn & Baker 13-10)", {}, False,
+    ),
     "gouraud": (
         "Gouraud shading along one scan line: vertex intensities interpolated (Hearn & "
         "Baker 14-5)", {}, False,
@@ -248,12 +252,12 @@ OPTIONS.update({"cohen-sutherland-3d": clip3d_options, "liang-barsky-3d": clip3d
 
 
 def z_buffer_options(sub):
-    """``--row`` of ``z-buffer``."""
+    """``--row`` of ``z-buffer`` and ``ray-casting``."""
     sub.add_argument("--row", type=integer, default=4, help="the scan line (default 4)")
     return ["row"]
 
 
-OPTIONS["z-buffer"] = z_buffer_options
+OPTIONS.update({"z-buffer": z_buffer_options, "ray-casting": z_buffer_options})
 
 
 def depth_sort_options(sub):

@@ -65,6 +65,7 @@ DEFAULTS = {
     "bsp-tree": ["--eye", "6", "22"],
     "warnock": ["--scene", "overlap"],
     "scan-line-visible": ["--scene", "overlap"],
+    "ray-casting": ["--row", "4"],
 }
 
 #: Tables longer than this are refused: the page lists every row.
@@ -624,6 +625,25 @@ def _scan_line_visible(table, ns, where):
             "handles": []}
 
 
+def _ray_casting(table, ns, where):
+    """The z-buffer's triangles and the scan line; at each step the pixel whose ray
+    is cast (this step's color, the nearest triangle filled), the pixels before it
+    plotted where a triangle was met."""
+    steps = []
+    for r in table.rows:
+        hit = r["nearest"] != "none"
+        rule = (f"x = {r['x']}: the ray meets {r['hits']}; nearest {r['nearest']} at depth "
+                f"{r['depth']:.6g}" if hit else f"x = {r['x']}: the ray meets nothing: "
+                "background")
+        steps.append({"pixels": [[r["x"], ns.row]] if hit else [], "mark": [[r["x"], ns.row]],
+                      "areas": [[table.triangles[int(r["nearest"][1:])], "current"]] if hit
+                      else [], "rule": rule})
+    shapes = [{"kind": "polygon", "points": t} for t in table.triangles]
+    shapes.append({"kind": "line", "points": [[0, ns.row], [ZB_WIDTH - 1, ns.row]]})
+    return {"before": [], "steps": steps, "bounds": [0, 0, ZB_WIDTH - 1, ZB_HEIGHT - 1],
+            "shapes": shapes, "handles": []}
+
+
 def _table_only(table, ns, where):
     """An algorithm with no grid view yet: its table, stepped row by row."""
     return {"before": [], "steps": [{"rule": ""} for _ in table.rows], "bounds": [0, 0, 10, 10],
@@ -640,7 +660,7 @@ _VIEWS = {"bresenham": _lines, "dda": _lines, "midpoint-circle": _conics,
           "floating-horizon": _floating_horizon, "ray-tracing": _ray_tracing,
           "back-face": _back_face, "gouraud": _shading, "phong": _shading,
           "bsp-tree": _bsp_tree, "warnock": _warnock,
-          "scan-line-visible": _scan_line_visible}
+          "scan-line-visible": _scan_line_visible, "ray-casting": _ray_casting}
 
 
 #: Estimated bytes that building, encoding and sending a view takes (measured with

@@ -24,6 +24,7 @@ from .shading import gouraud, phong
 from .bsp import bsp_tree
 from .subdivision import warnock
 from .scanline_method import scan_line_method
+from .raycasting import ray_casting
 
 #: CLI name -> function
 ALGORITHMS = {
@@ -52,6 +53,7 @@ ALGORITHMS = {
     "bsp-tree": bsp_tree,
     "warnock": warnock,
     "scan-line-visible": scan_line_method,
+    "ray-casting": ray_casting,
 }
 
 __all__ = ["Table", "bresenham", "dda", "midpoint_circle", "midpoint_ellipse", "flood_fill",
@@ -59,5 +61,5 @@ __all__ = ["Table", "bresenham", "dda", "midpoint_circle", "midpoint_ellipse", "
            "cohen_sutherland", "liang_barsky", "cyrus_beck",
            "cohen_sutherland_3d", "liang_barsky_3d", "z_buffer", "depth_sort",
            "floating_horizon", "ray_tracing", "back_face", "gouraud", "phong",
-           "bsp_tree", "warnock", "scan_line_method",
+           "bsp_tree", "warnock", "scan_line_method", "ray_casting",
            "ALGORITHMS"]

@@ -113,6 +113,14 @@ ALGORITHMS = {
         "ray casting along one scan line: per pixel the triangles its ray meets, their "
         "depths and the nearest (Hearn & Baker 13-10)", {}, False,
     ),
+    "inbetween-spacing": (
+        "in-betweens of two key frames spaced by a law of motion: constant, accelerate, "
+        "decelerate, both, or an easing (notes, chapter 6; Hearn & Baker 16-5)", {}, False,
+    ),
+    "morph-equalize": (
+        "morphing: two key-frame polygons given equal vertex counts, the vertices added, "
+        "the in-between shape (notes, chapter 6, Q4; Hearn & Baker 16-5)", {}, False,
+    ),
     "gouraud": (
         "Gouraud shading along one scan line: vertex intensities interpolated (Hearn & "
         "Baker 14-5)", {}, False,
@@ -330,6 +338,32 @@ def warnock_options(sub):
 
 
 OPTIONS.update({"warnock": warnock_options, "scan-line-visible": warnock_options})
+
+def inbetween_options(sub):
+    """``--n``, ``--spacing``, ``--t1`` and ``--t2`` of ``inbetween-spacing``."""
+    sub.add_argument("--n", type=integer, default=7, help="in-betweens, 1..200 (default 7)")
+    sub.add_argument("--spacing", default="accelerate", help="constant, accelerate, "
+                     "decelerate, accelerate-decelerate, or an easing such as ease-out-bounce "
+                     "(default accelerate)")
+    sub.add_argument("--t1", type=float, default=0.0, help="the first key frame's time "
+                     "(default 0)")
+    sub.add_argument("--t2", type=float, default=1.0, help="the second key frame's time "
+                     "(default 1)")
+    return ["n", "spacing", "t1", "t2"]
+
+
+def morph_options(sub):
+    """``--a``, ``--b`` and ``--t`` of ``morph-equalize``."""
+    sub.add_argument("--a", type=numbers, metavar="X,Y,X,Y,...",
+                     help="the first key frame's polygon (default a triangle)")
+    sub.add_argument("--b", type=numbers, metavar="X,Y,X,Y,...",
+                     help="the second key frame's polygon (default a pentagon)")
+    sub.add_argument("--t", type=float, default=0.5, help="the in-between's fraction, 0..1 "
+                     "(default 0.5)")
+    return ["a", "b", "t"]
+
+
+OPTIONS.update({"inbetween-spacing": inbetween_options, "morph-equalize": morph_options})
 
 FORMATS = ("table", "csv", "json")
 

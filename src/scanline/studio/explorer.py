@@ -20,6 +20,7 @@ from .. import budget
 from ..cli import Parser, UsageError
 from ..cli import trace as cli_trace
 from ..errors import MemoryBudgetError
+from ..trace.animation import TIME_CELLS
 from ..trace.backface import HEIGHT as BF_HEIGHT
 from ..trace.backface import WIDTH as BF_WIDTH
 from ..trace.bsp import HEIGHT as BSP_HEIGHT
@@ -66,6 +67,8 @@ DEFAULTS = {
     "warnock": ["--scene", "overlap"],
     "scan-line-visible": ["--scene", "overlap"],
     "ray-casting": ["--row", "4"],
+    "inbetween-spacing": ["--n", "7", "--spacing", "accelerate"],
+    "morph-equalize": ["--t", "0.5"],
 }
 
 #: Tables longer than this are refused: the page lists every row.
@@ -644,6 +647,47 @@ def _ray_casting(table, ns, where):
             "shapes": shapes, "handles": []}
 
 
+def _inbetweens(table, ns, where):
+    """Time across (the key frames' interval :data:`TIME_CELLS` cells wide), frame
+    number up: the key frames at the corners, each in-between's point, its tick on
+    the time line (ticks before it plotted) and the drop from point to tick."""
+    scale = TIME_CELLS / (ns.t2 - ns.t1)
+    steps = []
+    for r in table.rows:
+        x, j = (r["t"] - ns.t1) * scale, r["j"]
+        steps.append({"pixels": [[round(x), 0]], "mark": [[x, j], [x, 0]],
+                      "areas": [[[[x, 0], [x, j]], "current"]],
+                      "rule": f"in-between {j}: {ns.spacing}({r['j/(n+1)']:.4g}) = "
+                              f"{r['eased']:.4g}, t = {r['t']:.6g}, {r['dt']:.4g} after the "
+                              "frame before"})
+    curve = [[0, 0]] + [[(r["t"] - ns.t1) * scale, r["j"]] for r in table.rows]
+    curve.append([TIME_CELLS, len(table.rows) + 1])
+    return {"before": [], "steps": steps, "bounds": [0, 0, TIME_CELLS, len(table.rows) + 1],
+            "shapes": [{"kind": "line", "points": curve},
+                       {"kind": "line", "points": [[0, 0], [TIME_CELLS, 0]]}], "handles": []}
+
+
+def _morph_equalize(table, ns, where):
+    """Both key frames; at each step the vertex pair joined (this step's color) and
+    the in-between vertex's pixel, those before plotted; at the last, the
+    in-between polygon."""
+    steps = []
+    for r in table.rows:
+        a, b = [r["ax"], r["ay"]], [r["bx"], r["by"]]
+        new = {"A": " (added to A)", "B": " (added to B)", "-": ""}[r["added"]]
+        steps.append({"pixels": [[round(r["x"]), round(r["y"])]], "mark": [a, b],
+                      "areas": [[[a, b], "current"]],
+                      "rule": f"vertex {r['k']}{new}: A ({r['ax']:.4g}, {r['ay']:.4g}), B "
+                              f"({r['bx']:.4g}, {r['by']:.4g}); at t = {ns.t:g}: "
+                              f"({r['x']:.4g}, {r['y']:.4g})"})
+    steps[-1]["areas"].append([[[r["x"], r["y"]] for r in table.rows], "result"])
+    points = [p for shape in table.shapes for p in shape]
+    return {"before": [], "steps": steps,
+            "bounds": [math.floor(min(p[0] for p in points)), math.floor(min(p[1] for p in points)),
+                       math.ceil(max(p[0] for p in points)), math.ceil(max(p[1] for p in points))],
+            "shapes": [{"kind": "polygon", "points": s} for s in table.shapes], "handles": []}
+
+
 def _table_only(table, ns, where):
     """An algorithm with no grid view yet: its table, stepped row by row."""
     return {"before": [], "steps": [{"rule": ""} for _ in table.rows], "bounds": [0, 0, 10, 10],
@@ -660,7 +704,8 @@ _VIEWS = {"bresenham": _lines, "dda": _lines, "midpoint-circle": _conics,
           "floating-horizon": _floating_horizon, "ray-tracing": _ray_tracing,
           "back-face": _back_face, "gouraud": _shading, "phong": _shading,
           "bsp-tree": _bsp_tree, "warnock": _warnock,
-          "scan-line-visible": _scan_line_visible, "ray-casting": _ray_casting}
+          "scan-line-visible": _scan_line_visible, "ray-casting": _ray_casting,
+          "inbetween-spacing": _inbetweens, "morph-equalize": _morph_equalize}
 
 
 #: Estimated bytes that building, encoding and sending a view takes (measured with

@@ -25,6 +25,7 @@ from .bsp import bsp_tree
 from .subdivision import warnock
 from .scanline_method import scan_line_method
 from .raycasting import ray_casting
+from .animation import inbetweens, morph_equalize
 
 #: CLI name -> function
 ALGORITHMS = {
@@ -54,6 +55,8 @@ ALGORITHMS = {
     "warnock": warnock,
     "scan-line-visible": scan_line_method,
     "ray-casting": ray_casting,
+    "inbetween-spacing": inbetweens,
+    "morph-equalize": morph_equalize,
 }
 
 __all__ = ["Table", "bresenham", "dda", "midpoint_circle", "midpoint_ellipse", "flood_fill",
@@ -62,4 +65,5 @@ __all__ = ["Table", "bresenham", "dda", "midpoint_circle", "midpoint_ellipse", "
            "cohen_sutherland_3d", "liang_barsky_3d", "z_buffer", "depth_sort",
            "floating_horizon", "ray_tracing", "back_face", "gouraud", "phong",
            "bsp_tree", "warnock", "scan_line_method", "ray_casting",
+           "inbetweens", "morph_equalize",
            "ALGORITHMS"]

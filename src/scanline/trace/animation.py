@@ -1,0 +1,110 @@
+"""Step tables of the animation chapter (notes, chapter 6; Hearn & Baker, section
+16-5): the in-betweens of one pair of key frames spaced by a law of motion
+(:func:`scanline.animation.inbetween_times`), and the equalization of two key-frame
+shapes before a morph (:func:`scanline.animation.equalize`)."""
+
+import numpy as np
+
+from .. import _validate as v
+from ..errors import ArgumentValueError
+from .table import Table
+
+#: The explorer's time line: the key frames' interval drawn this many cells wide.
+TIME_CELLS = 40
+
+#: The default key-frame shapes of the morph: a triangle and a pentagon.
+TRIANGLE = [2.0, 2.0, 18.0, 2.0, 10.0, 16.0]
+PENTAGON = [26.5, 2.5, 35.5, 2.5, 38.0, 11.0, 31.0, 16.0, 24.0, 11.0]
+
+#: The most vertices a morph's key frame may have (one row each after equalizing).
+MAX_VERTICES = 1000
+
+#: The most in-betweens a table lists (one row each).
+MAX_INBETWEENS = 200
+
+
+def inbetweens(n=7, spacing="accelerate", t1=0.0, t2=1.0):
+    """The ``n`` in-betweens between key frames at times ``t1`` and ``t2`` spaced by
+    ``spacing`` (Hearn & Baker's ``constant``, ``accelerate``, ``decelerate``,
+    ``accelerate-decelerate``, or any easing name): one row per in-between ``j``:
+    ``j/(n+1)`` (its place in the frame sequence), ``eased`` (the fraction of the
+    interval its time lies at: the law, or the easing, at j/(n+1)), its time ``t``
+    (what :func:`~scanline.animation.inbetween_times` returns) and ``dt``, the gap
+    from the frame before (the key frame at t1 for j = 1).
+
+    >>> [r["t"] for r in inbetweens(3, "constant").rows]
+    [0.25, 0.5, 0.75]
+    """
+    from ..animation import inbetween_times
+    from ..animation.easing import ease
+
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) \
+            or not 1 <= n <= MAX_INBETWEENS:
+        raise ArgumentValueError(f"n must be a count of in-betweens 1..{MAX_INBETWEENS}, got "
+                                 f"{v._show(n)}")
+    times = inbetween_times(t1, t2, n, spacing)
+    u = np.arange(1, n + 1) / (n + 1)
+    eased = np.atleast_1d(ease(spacing, u))
+    rows, before = [], float(t1)
+    for j in range(n):
+        t = float(times[j])
+        rows.append({"j": j + 1, "j/(n+1)": round(float(u[j]), 6),
+                     "eased": round(float(eased[j]), 6), "t": round(t, 6),
+                     "dt": round(t - before, 6)})
+        before = t
+    notes = [f"key frames at t1 = {t1:g} and t2 = {t2:g}, {n} in-betweens, spacing "
+             f"{spacing!r}", "t_j = t1 + (t2 - t1) * spacing(j / (n + 1)) (Hearn & Baker "
+             "16-5: constant t; accelerate 1 - cos(t pi/2); decelerate sin(t pi/2); "
+             "accelerate-decelerate (1 - cos(t pi)) / 2)",
+             f"last gap, to the key frame at t2: {float(t2) - before:.6g}"]
+    return Table(f"in-betweens spaced {spacing!r}", ["j", "j/(n+1)", "eased", "t", "dt"],
+                 rows, notes)
+
+
+def _vertices(name, flat):
+    a = v.real_array(name, flat, "(2 V,)")
+    if a.ndim != 1 or len(a) % 2 or not 6 <= len(a) <= 2 * MAX_VERTICES \
+            or not np.isfinite(a).all():
+        raise ArgumentValueError(f"{name} must be finite x,y pairs of 3..{MAX_VERTICES} "
+                                 f"vertices, got {v._show(flat)}")
+    return a.reshape(-1, 2)
+
+
+def morph_equalize(a=None, b=None, t=0.5):
+    """Hearn & Baker's equalization of two key-frame polygons (section 16-5): the
+    shape with fewer edges (L_min) gets N_e = L_max mod L_min of its edges divided
+    into N_s + 1 sections and the others into N_s (N_s = int(L_max / L_min)), then
+    corresponding vertices are interpolated.  One row per vertex pair ``k``: the
+    vertex of shape A (``ax, ay``) and of B (``bx, by``) after equalizing, which
+    shape had it ``added`` (``A``, ``B`` or ``-``), and the in-between vertex at
+    fraction ``t`` (``x, y``: :func:`~scanline.animation.morph`).  ``a`` and ``b``:
+    flat x, y lists (default a triangle and a pentagon).
+
+    >>> [r["added"] for r in morph_equalize().rows]
+    ['-', '-', 'A', '-', 'A']
+    """
+    from ..animation import equalization, equalize, morph
+
+    sa = _vertices("a", TRIANGLE if a is None else a)
+    sb = _vertices("b", PENTAGON if b is None else b)
+    t = v.number("t", t)
+    if not 0 <= t <= 1:
+        raise ArgumentValueError(f"t must be a fraction 0..1, got {t:g}")
+    ea, eb, added_a, added_b = equalize(sa, sb, return_added=True)
+    between = morph(sa, sb, t)
+    rows = []
+    for k in range(len(ea)):
+        rows.append({"k": k, "ax": float(ea[k, 0]), "ay": float(ea[k, 1]),
+                     "bx": float(eb[k, 0]), "by": float(eb[k, 1]),
+                     "added": "A" if added_a[k] else "B" if added_b[k] else "-",
+                     "x": round(float(between[k, 0]), 6), "y": round(float(between[k, 1]), 6)})
+    c = equalization(len(sa), len(sb))
+    notes = [f"A: {len(sa)} vertices, B: {len(sb)} vertices (closed polygons)",
+             f"L_max = {c.edges_max}, L_min = {c.edges_min}: N_e = L_max mod L_min = {c.n_e} "
+             f"edge(s) divided into N_s + 1 = {c.n_s + 1} sections, the other "
+             f"{c.edges_min - c.n_e} into N_s = {c.n_s} (the longest edges take the extra)",
+             f"in-between at t = {t:g}: (1 - t) A + t B per vertex pair"]
+    table = Table(f"morph: equalizing {len(sa)} and {len(sb)} vertices",
+                  ["k", "ax", "ay", "bx", "by", "added", "x", "y"], rows, notes)
+    table.shapes = [sa.tolist(), sb.tolist()]
+    return table

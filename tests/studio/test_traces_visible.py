@@ -165,6 +165,8 @@ def test_warnock_explorer_view():
     first = view["steps"][0]
     assert first["areas"][0][0] == [[-0.5, -0.5], [15.5, -0.5], [15.5, 11.5], [-0.5, 11.5]]
     assert "subdivide" in first["rule"]
+    for step in view["steps"]:          # one polygon per decision, in its color
+        assert len(step["colors"]) == len(step["pixels"]) and len(set(step["colors"])) <= 1
 
 
 # -- the scan-line method ----------------------------------------------------------------
@@ -208,6 +210,7 @@ def test_scan_line_method_explorer_view():
     assert view["count"] == len(view["steps"])
     assert view["steps"][0]["pixels"] == [[x, 2] for x in range(1, 14)]
     assert "depths P0 0.8, P1 0.3: P1 shown" in view["steps"][5]["rule"]
+    assert view["steps"][5]["colors"] == [explorer.POLYGON_COLORS[1]] * 7     # P1's span
 
 
 # -- ray casting -------------------------------------------------------------------------

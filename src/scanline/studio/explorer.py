@@ -584,15 +584,27 @@ def _bsp_tree(table, ns, where):
             "handles": [_handle(where, "eye", ns.eye[0], ns.eye[1], ("eye", 0), ("eye", 1))]}
 
 
+#: The colors of polygons P0, P1, P2, ... (cycled) where the image-space visible-surface
+#: views paint their pixels.
+POLYGON_COLORS = ("#1c7ed6", "#2b8a3e", "#ae3ec9", "#f59f00")
+
+
+def _polygon_colors(table, pixels):
+    """The color of the polygon that ``table.face`` shows at each pixel (x, y)."""
+    return [POLYGON_COLORS[int(table.face[y, x]) % len(POLYGON_COLORS)] for x, y in pixels]
+
+
 def _warnock(table, ns, where):
     """The scene's polygons; at each step the area examined (this step's color), the
-    pixels its decision paints, and those painted before (plotted)."""
+    pixels its decision paints, and those painted before (each in its polygon's
+    color, :data:`POLYGON_COLORS`)."""
     steps = []
     for r, pixels in zip(table.rows, table.written):
         x0, y0, x1, y1 = r["x0"] - 0.5, r["y0"] - 0.5, r["x1"] + 0.5, r["y1"] + 0.5
         classes = ", ".join(f"{p} {r[p]}" for p in table.columns[5:-2])
         what = r["decision"] + (f": {r['painted']} painted" if r["painted"] else "")
         steps.append({"pixels": [list(p) for p in pixels],
+                      "colors": _polygon_colors(table, pixels),
                       "areas": [[[[x0, y0], [x1, y0], [x1, y1], [x0, y1]], "current"]],
                       "rule": f"area ({r['x0']}, {r['y0']})-({r['x1']}, {r['y1']}), level "
                               f"{r['level']}: {classes}; {what}"})
@@ -603,8 +615,8 @@ def _warnock(table, ns, where):
 
 def _scan_line_visible(table, ns, where):
     """The scene's polygons and the scan line; at each step the crossing (marked)
-    and the span to the next crossing (this step's color), the spans before it
-    plotted."""
+    and the span to the next crossing (this step's color), the spans before it in
+    their polygons' colors."""
     steps = []
     for r in table.rows:
         y = r["y"]
@@ -621,7 +633,8 @@ def _scan_line_visible(table, ns, where):
         if r["span"]:
             a, b = (int(c) for c in r["span"].split(".."))
             pixels = [[x, y] for x in range(a, b + 1)]
-        steps.append({"pixels": pixels, "mark": [[r["x"], y]], "rule": text,
+        steps.append({"pixels": pixels, "colors": _polygon_colors(table, pixels),
+                      "mark": [[r["x"], y]], "rule": text,
                       "plane": [[0, y], [WA_WIDTH - 1, y]]})
     return {"before": [], "steps": steps, "bounds": [0, 0, WA_WIDTH - 1, WA_HEIGHT - 1],
             "shapes": [{"kind": "polygon", "points": p} for p in table.polygons],

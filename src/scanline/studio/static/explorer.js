@@ -128,7 +128,8 @@ function drawGrid() {
   for (let k = 0; k < i; k++) {        // a shading's pixels in their own gray (linear I)
     const color = shade === undefined ? COLORS.plotted :
       `rgb(${Array(3).fill(Math.round(255 * Math.min(1, Math.max(0, view.rows[k][shade])))).join(",")})`;
-    for (const [x, y] of pixelsOf(k)) fillPixel(ctx, g, x, y, color);
+    const own = stepOf(k).colors;     // visible surfaces: each pixel in its polygon's color
+    pixelsOf(k).forEach(([x, y], m) => fillPixel(ctx, g, x, y, own ? own[m] : color));
   }
   for (const [x, y] of pixelsOf(i)) fillPixel(ctx, g, x, y, COLORS.current);
 

@@ -43,6 +43,8 @@ def test_inbetweens_refuse_bad_counts_and_names():
             sl.trace.inbetweens(bad)
     with pytest.raises(ScanlineError, match="not an easing"):
         sl.trace.inbetweens(3, "sideways")
+    with pytest.raises(ScanlineError, match="t2 - t1 must be finite"):
+        sl.trace.inbetweens(3, "constant", -1e308, 1e308)
 
 
 def test_morph_adds_the_midpoints_of_the_triangles_two_longest_edges():
@@ -73,6 +75,8 @@ def test_morph_square_to_decagon_divides_two_edges_in_three():
         sl.trace.morph_equalize([0, 0, 1, 1])
     with pytest.raises(ScanlineError, match="x,y pairs"):
         sl.trace.morph_equalize([0, 0, 1, 1, math.nan, 2])
+    with pytest.raises(ScanlineError, match="overflow"):
+        sl.trace.morph_equalize([-1e308, 0, 1e308, 0, 0, 1])
 
 
 def test_animation_explorer_views():

@@ -42,6 +42,10 @@ def inbetweens(n=7, spacing="accelerate", t1=0.0, t2=1.0):
             or not 1 <= n <= MAX_INBETWEENS:
         raise ArgumentValueError(f"n must be a count of in-betweens 1..{MAX_INBETWEENS}, got "
                                  f"{v._show(n)}")
+    t1, t2 = v.number("t1", t1), v.number("t2", t2)
+    if not np.isfinite(t2 - t1):
+        raise ArgumentValueError(f"t2 - t1 must be finite, got t1={t1:g}, t2={t2:g}: bring the "
+                                 "key frames' times closer together")
     times = inbetween_times(t1, t2, n, spacing)
     u = np.arange(1, n + 1) / (n + 1)
     eased = np.atleast_1d(ease(spacing, u))
@@ -67,6 +71,11 @@ def _vertices(name, flat):
             or not np.isfinite(a).all():
         raise ArgumentValueError(f"{name} must be finite x,y pairs of 3..{MAX_VERTICES} "
                                  f"vertices, got {v._show(flat)}")
+    with np.errstate(over="ignore"):
+        spread = np.ptp(a)
+    if not np.isfinite(spread):
+        raise ArgumentValueError(f"{name}'s coordinates must differ by a finite amount (their "
+                                 "differences overflow floats): bring them closer together")
     return a.reshape(-1, 2)
 
 

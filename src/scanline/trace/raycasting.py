@@ -46,7 +46,7 @@ def ray_casting(row=4):
     with its ``depth`` (none: the background).
 
     >>> [r["nearest"] for r in ray_casting(4).rows][:4]
-    ['T2', 'T2', 'T2', 'T2']
+    ['none', 'T2', 'T2', 'T2']
     """
     if isinstance(row, bool) or not isinstance(row, (int, np.integer)) \
             or not 0 <= row < HEIGHT:

@@ -6,7 +6,7 @@ camera.  Run: ``python examples/ch14_surface_detail/cornell_box.py``."""
 
 import os
 
-from scanline.cli.figures_surface_rendering import cornell_box_image
+from scanline.gallery.surface_rendering import cornell_box_image
 
 DOCS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "docs", "images")
 

@@ -2,15 +2,15 @@
 procedural marble and wood from Perlin's noise on tilted tiles, a bump-mapped tile
 (Blinn 1978: a turbulence height map perturbing the normals of a flat square) and a
 mirror sphere with a latitude-longitude environment map (sky over a checkered ground);
-the demo's figure (``scanline.cli.figures_surface_rendering``) at the documentation's
+the demo's figure (``scanline.gallery.surface_rendering``) at the documentation's
 size.
 """
 
 import sys
 from pathlib import Path
 
-from scanline.cli._plot import side_by_side
-from scanline.cli.figures_surface_rendering import surface_detail_panels
+from scanline.gallery._plot import side_by_side
+from scanline.gallery.surface_rendering import surface_detail_panels
 
 
 def main(out):

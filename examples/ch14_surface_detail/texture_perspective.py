@@ -1,7 +1,7 @@
 """Render docs/images/texture-perspective.png: the same checker-textured quad in
 perspective, its texture coordinates interpolated affinely in screen space (left) and
 perspective-correctly (right; Hearn & Baker 14-9) -- the demo's figure
-(``scanline.cli.figures_surface_rendering``) at the documentation's size.
+(``scanline.gallery.surface_rendering``) at the documentation's size.
 
 The quad is two triangles.  Affine interpolation is linear in screen x and y within
 each triangle, so the squares do not shrink with the distance and the checker bends
@@ -13,8 +13,8 @@ horizon.
 import sys
 from pathlib import Path
 
-from scanline.cli._plot import side_by_side
-from scanline.cli.figures_surface_rendering import texture_perspective_panels
+from scanline.gallery._plot import side_by_side
+from scanline.gallery.surface_rendering import texture_perspective_panels
 
 
 def main(out):

@@ -3,7 +3,7 @@
 import numpy as np
 
 import scanline as sl
-from scanline.cli import figures_animation as fa
+from scanline.gallery import animation as fa
 
 
 def test_every_figure_and_animation_renders():

@@ -5,7 +5,7 @@ import numpy as np
 from scipy import ndimage
 
 from scanline.cli import demo
-from scanline.cli import figures_blobby as F
+from scanline.gallery import blobby as F
 
 
 def test_the_gallery_shows_it():

@@ -8,7 +8,8 @@ import re
 import pytest
 from PIL import Image
 
-from scanline.cli import demo, figures, main
+from scanline.cli import demo, main
+from scanline.gallery import primitives as figures
 
 
 @pytest.fixture(scope="module")
@@ -28,7 +29,7 @@ def test_demo_writes_every_figure_gallery_and_page(gallery):
     assert len(figures.FIGURES) == 13
     every = demo.all_figures()
     assert every[:13] == list(figures.FIGURES)  # the chapter 2 figures come first
-    assert len(every) == sum(len(importlib.import_module(f"scanline.cli.{name}").FIGURES)
+    assert len(every) == sum(len(importlib.import_module(f"scanline.gallery.{name}").FIGURES)
                              for name in demo.FIGURE_MODULES)
     pngs = sorted(p.name for p in out.glob("*.png"))
     assert "gallery.png" in pngs and len(pngs) == len(every) + 1
@@ -113,3 +114,17 @@ def test_demo_jobs_must_be_a_whole_number(call, one_line_error, tmp_path, jobs):
 def test_demo_into_a_file_fails_cleanly(call, one_line_error, tmp_path):
     (tmp_path / "taken").write_text("")
     one_line_error(call("demo", "--out", tmp_path / "taken"), "taken")
+
+
+def test_a_gallery_module_runs_alone(tmp_path):
+    """``python -m scanline.gallery.curves -o DIR`` writes that chapter's figures."""
+    import subprocess
+    import sys
+
+    proc = subprocess.run([sys.executable, "-m", "scanline.gallery.curves", "-o", str(tmp_path)],
+                          capture_output=True, text=True, timeout=600)
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    pngs = sorted(p.name for p in tmp_path.iterdir())
+    assert pngs == sorted(["de-casteljau.png", "bspline-blending.png", "hermite-splines.png",
+                           "nurbs-circle.png"])
+    assert "de Casteljau's construction at u = 0.5" in proc.stdout

@@ -2,11 +2,12 @@
 
 import pytest
 
-from scanline.cli import demo, figures_color
+from scanline.cli import demo
+from scanline.gallery import color as figures_color
 
 
 def test_registered_in_the_gallery():
-    assert "figures_color" in demo.FIGURE_MODULES
+    assert "color" in demo.FIGURE_MODULES
     assert all(make in demo.all_figures() for make in figures_color.FIGURES)
 
 

@@ -3,7 +3,7 @@
 import numpy as np
 
 from scanline.cli import demo
-from scanline.cli import figures_csg as F
+from scanline.gallery import csg as F
 
 
 def test_the_gallery_shows_it():

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from scanline.cli import demo
-from scanline.cli import figures_devices as F
+from scanline.gallery import devices as F
 from scanline.display.color_crt import PENETRATION_COLORS
 
 

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from scanline.cli import demo
-from scanline.cli import figures_fractals as F
+from scanline.gallery import fractals as F
 
 
 def test_the_gallery_shows_them():

@@ -7,7 +7,7 @@ import pytest
 
 import scanline as sl
 from scanline.cli import demo
-from scanline.cli import figures_octree as F
+from scanline.gallery import octree as F
 
 
 def test_the_gallery_shows_them():

@@ -6,7 +6,7 @@ import math
 import numpy as np
 
 from scanline.cli import demo
-from scanline.cli import figures_quaternions as F
+from scanline.gallery import quaternions as F
 
 
 def test_the_gallery_shows_it():

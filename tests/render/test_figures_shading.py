@@ -4,7 +4,7 @@ states."""
 import numpy as np
 import pytest
 
-from scanline.cli import figures_shading as F
+from scanline.gallery import shading as F
 
 
 @pytest.mark.parametrize("make", F.FIGURES, ids=lambda f: f.__name__)

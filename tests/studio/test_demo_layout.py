@@ -7,7 +7,7 @@ import pytest
 from PIL import Image
 
 from scanline.cli.demo import page
-from scanline.cli.figures import Figure
+from scanline.gallery.primitives import Figure
 
 
 @pytest.fixture

@@ -1,6 +1,6 @@
 """``scanline demo [--out DIR] [--jobs N]``: render the gallery of figures into DIR.
 
-DIR receives one PNG per figure of :mod:`scanline.cli.figures`, each written as soon
+DIR receives one PNG per figure of the modules of :mod:`scanline.gallery`, each written as soon
 as it is drawn, then ``gallery.png`` (all of them on one sheet) and ``index.html``, a
 self-contained page that shows each figure with its caption and step table.  The
 figure modules are drawn by N processes (default: one per core), each taking whole
@@ -14,6 +14,7 @@ import sys
 import time
 
 from .. import __version__
+from ..gallery import MODULES as FIGURE_MODULES
 from .progress import Progress, cpu_jobs, run_groups
 from .warmup import jobs_argument
 
@@ -113,22 +114,12 @@ _STUDIO = (
     '<a href="http://127.0.0.1:8765/workstation">workstation with its input devices</a>.</p>')
 
 
-#: The modules of figures, in gallery order; each has a ``FIGURES`` tuple of
-#: functions that return a :class:`scanline.cli.figures.Figure`.
-FIGURE_MODULES = ("figures", "figures_attributes", "figures_antialias", "figures_color",
-                  "figures_text", "figures_clip", "figures_scene", "figures_curves",
-                  "figures_surfaces", "figures_three_d", "figures_visible", "figures_shading",
-                  "figures_surface_rendering", "figures_animation", "figures_octree",
-                  "figures_devices", "figures_csg", "figures_fractals", "figures_quaternions",
-                  "figures_blobby")
-
-
 def all_figures():
     """Every figure function of the gallery, in order."""
     import importlib
 
     return [make for name in FIGURE_MODULES
-            for make in importlib.import_module(f"{__package__}.{name}").FIGURES]
+            for make in importlib.import_module(f"scanline.gallery.{name}").FIGURES]
 
 
 def all_animations():
@@ -136,7 +127,7 @@ def all_animations():
     optional ``ANIMATIONS`` tuple of functions returning ``(name, Animation)``)."""
     import importlib
 
-    return {m: len(getattr(importlib.import_module(f"{__package__}.{m}"), "ANIMATIONS", ()))
+    return {m: len(getattr(importlib.import_module(f"scanline.gallery.{m}"), "ANIMATIONS", ()))
             for m in FIGURE_MODULES}
 
 
@@ -155,19 +146,12 @@ def draw_module(group, report):
     then its animations as GIFs, reporting ``(module, None, name)``."""
     import importlib
 
-    from ..framebuffer import write_atomically
+    from ..gallery import write
 
     module, out = group
-    figures = importlib.import_module(f"{__package__}.{module}")
-    for index, make in enumerate(figures.FIGURES):
-        fig = make()
-        write_atomically(os.path.join(out, f"{fig.name}.png"),
-                         lambda f, image=fig.image: image.save(f, format="PNG"))
-        report((module, index, fig._replace(image=None)))
-    for make in getattr(figures, "ANIMATIONS", ()):
-        name, animation = make()
-        animation.save(os.path.join(out, f"{name}.gif"), progress=False)
-        report((module, None, name))
+    figures = importlib.import_module(f"scanline.gallery.{module}")
+    write(figures.FIGURES, getattr(figures, "ANIMATIONS", ()), out,
+          lambda index, item: report((module, index, item)))
 
 
 def run(args):
@@ -180,10 +164,10 @@ def run(args):
     from ..framebuffer import write_atomically
     from ..studio.page import explain
     from . import build_parser
-    from ._plot import grid_of
+    from ..gallery._plot import grid_of
 
     os.makedirs(args.out, exist_ok=True)
-    sizes = {m: len(importlib.import_module(f"{__package__}.{m}").FIGURES)
+    sizes = {m: len(importlib.import_module(f"scanline.gallery.{m}").FIGURES)
              for m in FIGURE_MODULES}
     animated = all_animations()
     total = sum(sizes.values()) + sum(animated.values())

@@ -1,4 +1,8 @@
-"""Demo figures for surface rendering (Hearn & Baker, chapter 14, sections 14-6 to
+"""
+Surface rendering
+=================
+
+Demo figures for surface rendering (Hearn & Baker, chapter 14, sections 14-6 to
 14-9): texture coordinates interpolated affinely and perspective-correctly, surface
 detail (procedural marble and wood, a bump map, an environment map), recursive ray
 tracing of the ``glass_spheres`` example scene, and the Cornell box by radiosity.
@@ -12,8 +16,8 @@ import numpy as np
 
 import scanline as sl
 
-from ._plot import side_by_side
-from .figures import Figure
+from scanline.gallery._plot import side_by_side
+from scanline.gallery.primitives import Figure
 
 BACKGROUND = "#e4e4e4"
 
@@ -159,3 +163,9 @@ def figure_radiosity():
 
 FIGURES = (figure_texture_perspective, figure_surface_detail, figure_ray_tracing,
            figure_radiosity)
+
+
+if __name__ == "__main__":
+    from scanline.gallery import main
+
+    main(FIGURES)

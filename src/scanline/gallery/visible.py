@@ -1,4 +1,8 @@
-"""Demo figures for visible-surface and visible-line detection (Hearn & Baker,
+"""
+Visible-surface detection
+=========================
+
+Demo figures for visible-surface and visible-line detection (Hearn & Baker,
 chapter 13): the painter's one-key sort failing where depth sorting succeeds, the
 scene by every method, a floating-horizon plot and a hidden-line wireframe.  Every
 picture is drawn by :mod:`scanline.visible` and :func:`scanline.draw3d.floating_horizon`;
@@ -11,8 +15,8 @@ import numpy as np
 
 import scanline as sl
 
-from ._plot import side_by_side, stacked
-from .figures import PAPER, PIXEL, Figure
+from scanline.gallery._plot import side_by_side, stacked
+from scanline.gallery.primitives import PAPER, PIXEL, Figure
 
 SHADES = ["#4e79a7", "#f28e2b", "#e15759", "#76b7b2", "#59a14f", "#edc948"]
 
@@ -142,3 +146,9 @@ def figure_hidden_lines():
 
 
 FIGURES = (figure_painter_failure, figure_methods, figure_floating_horizon, figure_hidden_lines)
+
+
+if __name__ == "__main__":
+    from scanline.gallery import main
+
+    main(FIGURES)

@@ -1,4 +1,8 @@
-"""Demo figures for computer animation (notes, chapter 6; Hearn & Baker, chapter 16):
+"""
+Computer animation
+==================
+
+Demo figures for computer animation (notes, chapter 6; Hearn & Baker, chapter 16):
 in-between spacing, an eased motion path, morphing, kinematics, dynamics and
 color-table animation; and two short GIFs (:data:`ANIMATIONS`)."""
 
@@ -9,8 +13,8 @@ from PIL import ImageDraw
 
 import scanline as sl
 
-from ._plot import INK, enlarge, font, side_by_side, stacked
-from .figures import HIGHLIGHT, OCTANT_COLORS, PAPER, PIXEL, SECOND, Figure
+from scanline.gallery._plot import INK, enlarge, font, side_by_side, stacked
+from scanline.gallery.primitives import HIGHLIGHT, OCTANT_COLORS, PAPER, PIXEL, SECOND, Figure
 
 PATH_COLOR = "#9aa3b5"
 
@@ -264,3 +268,9 @@ def animation_color_table():
 
 #: Short GIFs the demo writes beside the figures: functions returning (name, Animation).
 ANIMATIONS = (animation_motion_path, animation_color_table)
+
+
+if __name__ == "__main__":
+    from scanline.gallery import main
+
+    main(FIGURES, ANIMATIONS)

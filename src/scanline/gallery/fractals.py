@@ -1,4 +1,8 @@
-"""Demo figures for fractal-geometry methods (Hearn & Baker, sections 10-18 and
+"""
+Fractals
+========
+
+Demo figures for fractal-geometry methods (Hearn & Baker, sections 10-18 and
 10-19): the Mandelbrot and a Julia set colored through a color table, self-similar
 curves with their box-counting dimensions, Barnsley's fern and an L-system plant,
 and midpoint-displacement terrain at two roughnesses."""
@@ -9,8 +13,8 @@ import numpy as np
 
 import scanline as sl
 
-from ._plot import side_by_side
-from .figures import PAPER, PIXEL, Figure
+from scanline.gallery._plot import side_by_side
+from scanline.gallery.primitives import PAPER, PIXEL, Figure
 
 TERRAIN_COLORS = np.array([(40, 80, 160), (70, 130, 60), (120, 150, 70), (140, 110, 80),
                            (245, 245, 245)], np.float64)
@@ -140,3 +144,9 @@ def figure_terrain():
 
 
 FIGURES = (figure_escape_time, figure_fractal_curves, figure_fern_and_plant, figure_terrain)
+
+
+if __name__ == "__main__":
+    from scanline.gallery import main
+
+    main(FIGURES)

@@ -1,4 +1,8 @@
-"""Figures of ``scanline demo`` for antialiasing and alpha blending
+"""
+Antialiasing and alpha blending
+===============================
+
+Figures of ``scanline demo`` for antialiasing and alpha blending
 (:mod:`scanline.draw.antialias`, :mod:`scanline.draw._blend`)."""
 
 import math
@@ -8,8 +12,8 @@ from PIL import Image
 
 import scanline as sl
 
-from ._plot import enlarge, side_by_side
-from .figures import PAPER, PIXEL, Figure
+from scanline.gallery._plot import enlarge, side_by_side
+from scanline.gallery.primitives import PAPER, PIXEL, Figure
 
 SIZE = (44, 30)
 
@@ -108,3 +112,9 @@ def figure_blending():
 
 
 FIGURES = (figure_antialiasing, figure_blending)
+
+
+if __name__ == "__main__":
+    from scanline.gallery import main
+
+    main(FIGURES)

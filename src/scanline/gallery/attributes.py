@@ -1,4 +1,8 @@
-"""Figures of ``scanline demo`` for the line attributes: line types, widths, caps and
+"""
+Line attributes
+===============
+
+Figures of ``scanline demo`` for the line attributes: line types, widths, caps and
 joins, pens (notes, syllabus: "Line attributes - Line type. Line width. Pen and
 Brush options")."""
 
@@ -6,8 +10,8 @@ import numpy as np
 
 import scanline as sl
 
-from ._plot import enlarge, side_by_side, stacked
-from .figures import HIGHLIGHT, PAPER, PIXEL, SECOND, Figure
+from scanline.gallery._plot import enlarge, side_by_side, stacked
+from scanline.gallery.primitives import HIGHLIGHT, PAPER, PIXEL, SECOND, Figure
 
 
 def _stroked(size, path, color, scale, **attributes):
@@ -111,3 +115,9 @@ def figure_pens():
 
 
 FIGURES = (figure_line_types, figure_caps_and_joins, figure_pens)
+
+
+if __name__ == "__main__":
+    from scanline.gallery import main
+
+    main(FIGURES)

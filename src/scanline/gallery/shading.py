@@ -1,4 +1,8 @@
-"""Demo figures for illumination and shading (Hearn & Baker, chapters 13 and 14): the
+"""
+Illumination and shading
+========================
+
+Demo figures for illumination and shading (Hearn & Baker, chapters 13 and 14): the
 teapot flat, Gouraud and Phong shaded, Mach bands on Gouraud-shaded facets, depth
 cueing, back-face culling with the culled faces shown, and the kinds of light.  Every
 surface pixel is drawn by :func:`scanline.render`; labels are Pillow text."""
@@ -9,8 +13,8 @@ import numpy as np
 
 import scanline as sl
 
-from ._plot import side_by_side, stacked
-from .figures import PAPER, Figure
+from scanline.gallery._plot import side_by_side, stacked
+from scanline.gallery.primitives import PAPER, Figure
 
 #: The teapot standing up (its model has z up), seen from the front and above.
 TEAPOT_CAMERA = dict(eye=(0, 3.2, 8.0), target=(0, 0.75, 0))
@@ -169,3 +173,9 @@ def figure_light_types():
 
 FIGURES = (figure_teapot_shading, figure_mach_bands, figure_depth_cue, figure_back_faces,
            figure_light_types)
+
+
+if __name__ == "__main__":
+    from scanline.gallery import main
+
+    main(FIGURES)

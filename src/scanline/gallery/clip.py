@@ -1,4 +1,8 @@
-"""Figures of ``scanline demo`` for clipping (notes, chapter 4): lines P1 ... P4
+"""
+Clipping
+========
+
+Figures of ``scanline demo`` for clipping (notes, chapter 4): lines P1 ... P4
 against a clip window with their region codes, and Sutherland-Hodgman versus
 Weiler-Atherton on a concave polygon."""
 
@@ -6,8 +10,8 @@ import numpy as np
 
 import scanline as sl
 
-from ._plot import INK, GraphPaper, enlarge, side_by_side
-from .figures import HIGHLIGHT, PAPER, PIXEL, SECOND, Figure
+from scanline.gallery._plot import INK, GraphPaper, enlarge, side_by_side
+from scanline.gallery.primitives import HIGHLIGHT, PAPER, PIXEL, SECOND, Figure
 
 FAINT = "#c8c8c8"
 WINDOW = (8, 6, 40, 26)
@@ -130,3 +134,9 @@ def figure_viewing():
 
 
 FIGURES = (figure_cohen_sutherland, figure_polygon_clipping, figure_viewing)
+
+
+if __name__ == "__main__":
+    from scanline.gallery import main
+
+    main(FIGURES)

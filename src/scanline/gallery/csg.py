@@ -1,4 +1,8 @@
-"""Demo figure of constructive solid geometry (Hearn & Baker 10-16; Roth 1982): the
+"""
+Constructive solid geometry
+===========================
+
+Demo figure of constructive solid geometry (Hearn & Baker 10-16; Roth 1982): the
 classic CSG tree -- a box intersected with a sphere, minus three cylinders along the
 axes -- ray cast exactly (``sl.render(..., method="ray-casting")``), with its tree drawn
 beside it, each node ray cast on its own."""
@@ -9,8 +13,8 @@ from PIL import Image, ImageDraw
 
 import scanline as sl
 
-from ._plot import INK, PAPER, font, side_by_side
-from .figures import Figure
+from scanline.gallery._plot import INK, PAPER, font, side_by_side
+from scanline.gallery.primitives import Figure
 
 BACKGROUND = "#e4e4e4"
 
@@ -96,3 +100,9 @@ def figure_csg():
 
 
 FIGURES = (figure_csg,)
+
+
+if __name__ == "__main__":
+    from scanline.gallery import main
+
+    main(FIGURES)

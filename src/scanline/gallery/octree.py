@@ -1,4 +1,8 @@
-"""Demo figures for octrees and quadtrees (Hearn & Baker, sections 10-17 and 13-10):
+"""
+Octrees and quadtrees
+=====================
+
+Demo figures for octrees and quadtrees (Hearn & Baker, sections 10-17 and 13-10):
 the quadtree of a filled polygon drawn with its cell boundaries, and the octree of a
 CSG solid rendered by the octree visible-surface method."""
 
@@ -8,8 +12,8 @@ import numpy as np
 
 import scanline as sl
 
-from ._plot import side_by_side
-from .figures import Figure
+from scanline.gallery._plot import side_by_side
+from scanline.gallery.primitives import Figure
 
 BACKGROUND = "#e4e4e4"
 
@@ -75,3 +79,9 @@ def _exact_volume():
 
 
 FIGURES = (figure_octrees,)
+
+
+if __name__ == "__main__":
+    from scanline.gallery import main
+
+    main(FIGURES)

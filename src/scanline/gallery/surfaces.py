@@ -1,13 +1,17 @@
-"""Demo figures for surfaces and curve rasterization: the Utah teapot as a wireframe,
+"""
+Surfaces
+========
+
+Demo figures for surfaces and curve rasterization: the Utah teapot as a wireframe,
 a bicubic patch over its control net, and adaptive flattening."""
 
 import numpy as np
 
 import scanline as sl
 
-from ..curves.flatten import flatten
-from ._plot import enlarge, side_by_side
-from .figures import PAPER, PIXEL, HIGHLIGHT, Figure
+from scanline.curves.flatten import flatten
+from scanline.gallery._plot import enlarge, side_by_side
+from scanline.gallery.primitives import PAPER, PIXEL, HIGHLIGHT, Figure
 
 LIGHT = "#c8cdd8"
 
@@ -96,3 +100,9 @@ def figure_flattening():
 
 
 FIGURES = (figure_teapot, figure_bicubic_patch, figure_flattening)
+
+
+if __name__ == "__main__":
+    from scanline.gallery import main
+
+    main(FIGURES)

@@ -1,12 +1,16 @@
-"""Figures of ``scanline demo`` for character generation and text attributes
+"""
+Character generation and text attributes
+========================================
+
+Figures of ``scanline demo`` for character generation and text attributes
 (:mod:`scanline.text`, :func:`scanline.draw.text`)."""
 
 import math
 
 import scanline as sl
 
-from ._plot import GraphPaper, enlarge, side_by_side, stacked
-from .figures import Figure
+from scanline.gallery._plot import GraphPaper, enlarge, side_by_side, stacked
+from scanline.gallery.primitives import Figure
 
 INK = "#2b4c8c"
 MARK = "#e15759"
@@ -133,3 +137,9 @@ def figure_glyph_outline():
 
 
 FIGURES = (figure_fonts, figure_text_attributes, figure_glyph_outline)
+
+
+if __name__ == "__main__":
+    from scanline.gallery import main
+
+    main(FIGURES)

@@ -1,4 +1,8 @@
-"""Figures of ``scanline demo`` drawn from the scene files in ``examples/scenes``.
+"""
+Scene files
+===========
+
+Figures of ``scanline demo`` drawn from the scene files in ``examples/scenes``.
 
 Each figure renders one example scene through the display-file interpreter (raster
 device) and shows the display file's segment table beside it.  The scene files are
@@ -8,7 +12,7 @@ to them), so the figures come with every installation.
 
 import os
 
-from .figures import Figure
+from scanline.gallery.primitives import Figure
 
 #: The folder of example scene files.
 EXAMPLES = os.path.normpath(os.path.join(os.path.dirname(__file__), "..", "data", "scenes"))
@@ -29,7 +33,7 @@ def segment_table(scene):
 
 def _figure(stem, title, caption, source):
     def make():
-        from ..scene import load
+        from scanline.scene import load
 
         path = os.path.join(EXAMPLES, f"{stem}.toml")
         scene = load(path)
@@ -67,3 +71,9 @@ FIGURES = (
             "highlighted.",
             "Notes, syllabus of chapter 4 (window to viewport)"),
 )
+
+
+if __name__ == "__main__":
+    from scanline.gallery import main
+
+    main(FIGURES)

@@ -1,4 +1,8 @@
-"""Demo figure for rotations with quaternions (Hearn & Baker, section 11-2; Shoemake
+"""
+Rotations with quaternions
+==========================
+
+Demo figure for rotations with quaternions (Hearn & Baker, section 11-2; Shoemake
 1985): the in-betweens of two key orientations by linear interpolation of Euler
 angles and by quaternion slerp, and the path each gives the teapot's spout."""
 
@@ -8,8 +12,8 @@ import numpy as np
 
 import scanline as sl
 
-from ._plot import side_by_side, stacked
-from .figures import HIGHLIGHT, PAPER, PIXEL, Figure
+from scanline.gallery._plot import side_by_side, stacked
+from scanline.gallery.primitives import HIGHLIGHT, PAPER, PIXEL, Figure
 
 #: The key orientations, as Euler angles (scipy's extrinsic "xyz", degrees).
 START, END = (0.0, 0.0, 0.0), (160.0, 70.0, 110.0)
@@ -94,3 +98,9 @@ def figure_euler_and_slerp():
 
 
 FIGURES = (figure_euler_and_slerp,)
+
+
+if __name__ == "__main__":
+    from scanline.gallery import main
+
+    main(FIGURES)

@@ -1,5 +1,9 @@
-"""The figures of ``scanline demo``: the notes' worked examples and more, drawn by
-:mod:`scanline.draw` and annotated by :mod:`scanline.cli._plot`.
+"""
+Output primitives and area filling
+==================================
+
+The figures of ``scanline demo``: the notes' worked examples and more, drawn by
+:mod:`scanline.draw` and annotated by :mod:`scanline.gallery._plot`.
 
 Each ``figure_*`` function returns a :class:`Figure`; :data:`FIGURES` lists them in
 gallery order.
@@ -14,7 +18,7 @@ from PIL import Image, ImageColor
 
 import scanline as sl
 
-from ._plot import INK, GraphPaper, enlarge, side_by_side, stacked
+from scanline.gallery._plot import INK, GraphPaper, enlarge, side_by_side, stacked
 
 #: ``name`` (file stem), ``title``, ``caption`` (plain text), ``source`` (the notes'
 #: section), ``image`` (a Pillow image) and ``table`` (step-table text or None).
@@ -459,3 +463,9 @@ def figure_seed_fills():
 FIGURES = (figure_bresenham, figure_dda_vs_bresenham, figure_octants, figure_circle,
            figure_ellipse, figure_concentric, figure_color_table, figure_bitmap, figure_batch,
            figure_fill_rules, figure_curved_areas, figure_fill_styles, figure_seed_fills)
+
+
+if __name__ == "__main__":
+    from scanline.gallery import main
+
+    main(FIGURES)

@@ -1,4 +1,8 @@
-"""Demo figure for blobby objects (Hearn & Baker, section 10-7): two soft objects
+"""
+Blobby objects
+==============
+
+Demo figure for blobby objects (Hearn & Baker, section 10-7): two soft objects
 (Wyvill et al. 1986) drawn together until they merge, each frame the iso-surface of
 the summed densities extracted by marching cubes; and the same as a short GIF
 (:data:`ANIMATIONS`)."""
@@ -9,8 +13,8 @@ import numpy as np
 
 import scanline as sl
 
-from ._plot import side_by_side
-from .figures import PAPER, Figure
+from scanline.gallery._plot import side_by_side
+from scanline.gallery.primitives import PAPER, Figure
 
 #: Half the distance between the two centers at each frame of the strip.
 STRIP = (1.3, 1.05, 0.9, 0.8, 0.7, 0.55, 0.35)
@@ -61,3 +65,9 @@ def animation_blobby_merge():
 
 #: Short GIFs the demo writes beside the figures: functions returning (name, Animation).
 ANIMATIONS = (animation_blobby_merge,)
+
+
+if __name__ == "__main__":
+    from scanline.gallery import main
+
+    main(FIGURES, ANIMATIONS)

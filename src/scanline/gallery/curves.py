@@ -1,12 +1,16 @@
-"""Demo figures for curves (notes, chapter 5): de Casteljau's construction, B-spline
+"""
+Curves
+======
+
+Demo figures for curves (notes, chapter 5): de Casteljau's construction, B-spline
 blending functions, Hermite-family splines and the NURBS circle."""
 
 import numpy as np
 
 import scanline as sl
 
-from ._plot import side_by_side
-from .figures import HIGHLIGHT, OCTANT_COLORS, PAPER, PIXEL, SECOND, Figure
+from scanline.gallery._plot import side_by_side
+from scanline.gallery.primitives import HIGHLIGHT, OCTANT_COLORS, PAPER, PIXEL, SECOND, Figure
 
 POLYGON = "#9aa3b5"
 
@@ -110,3 +114,9 @@ def figure_nurbs_circle():
 
 FIGURES = (figure_de_casteljau, figure_bspline_blending, figure_hermite_family,
            figure_nurbs_circle)
+
+
+if __name__ == "__main__":
+    from scanline.gallery import main
+
+    main(FIGURES)

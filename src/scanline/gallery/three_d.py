@@ -1,4 +1,8 @@
-"""Demo figures for three-dimensional viewing (Hearn & Baker, chapters 9 to 12): the
+"""
+Three-dimensional viewing
+=========================
+
+Demo figures for three-dimensional viewing (Hearn & Baker, chapters 9 to 12): the
 six standard views, parallel projections side by side, one-, two- and three-point
 perspective with their vanishing points, view-volume clipping, wireframes, a
 stereoscopic pair and an exploded view.  Every line is drawn by
@@ -12,8 +16,8 @@ from PIL import ImageDraw
 
 import scanline as sl
 
-from ._plot import font, side_by_side, stacked
-from .figures import HIGHLIGHT, PAPER, PIXEL, SECOND, Figure
+from scanline.gallery._plot import font, side_by_side, stacked
+from scanline.gallery.primitives import HIGHLIGHT, PAPER, PIXEL, SECOND, Figure
 
 FAINT = "#c8c8c8"
 #: The house of the standard views: a pentagonal prism (x -1.5..1.5, y 0..3,
@@ -283,3 +287,9 @@ def figure_exploded_view():
 
 FIGURES = (figure_standard_views, figure_parallel_projections, figure_vanishing_points,
            figure_view_volume, figure_wireframes, figure_stereo_pair, figure_exploded_view)
+
+
+if __name__ == "__main__":
+    from scanline.gallery import main
+
+    main(FIGURES)

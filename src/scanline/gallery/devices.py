@@ -1,4 +1,8 @@
-"""Demo figures for display devices and three-dimensional display methods (Hearn &
+"""
+Display devices
+===============
+
+Demo figures for display devices and three-dimensional display methods (Hearn &
 Baker, sections 2-1 and 9-1; the notes' chapter 1): the shadow mask's phosphor
 triads close up, delta and in-line, converged and not; the beam-penetration
 screen's four colors; the direct-view storage tube's erase and redraw; the plasma
@@ -17,8 +21,8 @@ from scanline.display.color_crt import (PENETRATION_COLORS, PENETRATION_VOLTAGES
 from scanline.display.flat_panel import LCD, PlasmaPanel
 from scanline.display.storage_tube import StorageTube
 
-from ._plot import enlarge, font, side_by_side, stacked
-from .figures import PAPER, Figure
+from scanline.gallery._plot import enlarge, font, side_by_side, stacked
+from scanline.gallery.primitives import PAPER, Figure
 
 
 def _bars(width=12, height=6):
@@ -201,3 +205,9 @@ def figure_cutaway():
 
 FIGURES = (figure_shadow_mask, figure_beam_penetration, figure_storage_tube, figure_flat_panels,
            figure_cutaway)
+
+
+if __name__ == "__main__":
+    from scanline.gallery import main
+
+    main(FIGURES)

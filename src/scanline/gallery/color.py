@@ -1,4 +1,8 @@
-"""Figures of ``scanline demo`` for color: dithering and halftoning, color models and
+"""
+Color: dithering, halftoning and color models
+=============================================
+
+Figures of ``scanline demo`` for color: dithering and halftoning, color models and
 color tables (:mod:`scanline.color`)."""
 
 import numpy as np
@@ -6,8 +10,8 @@ from PIL import ImageOps
 
 import scanline as sl
 
-from ._plot import enlarge, side_by_side, stacked
-from .figures import Figure
+from scanline.gallery._plot import enlarge, side_by_side, stacked
+from scanline.gallery.primitives import Figure
 
 
 def _photo_like(width=96, height=72):
@@ -110,3 +114,9 @@ def figure_halftone():
 
 
 FIGURES = (figure_dithering, figure_halftone, figure_color_models)
+
+
+if __name__ == "__main__":
+    from scanline.gallery import main
+
+    main(FIGURES)

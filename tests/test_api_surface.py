@@ -12,6 +12,10 @@ from tests import api_surface
 # the packages whose public names are complete; a package joins when it lacks nothing
 COMPLETE = [
     "scanline.errors",
+    "scanline.budget",
+    "scanline.linestyle",
+    "scanline.imagefile",
+    "scanline.warmup",
 ]
 
 

@@ -4,21 +4,24 @@ as an input must be refused before anything is read or allocated)."""
 
 import os
 import stat
+from typing import Any, cast
 
 from . import _validate as v
 from .errors import ArgumentTypeError, ArgumentValueError
 
 
-def _error(error, what, name, message):
+def _error(error: type[Exception], what: str, name: str, message: str) -> Exception:
     """``error(message)`` naming the file: as ``file=`` where the class keeps it (a
     SceneError prints ``FILE: MESSAGE``), else in the message."""
     code = getattr(error.__init__, "__code__", None)
     if code is not None and "file" in code.co_varnames:
-        return error(f"cannot read the file: {message}", file=name)
+        keeps_file: Any = error     # a class whose __init__ takes file= (checked above)
+        return cast(Exception, keeps_file(f"cannot read the file: {message}", file=name))
     return error(f"{what} {name!r}: {message}")
 
 
-def input_path(path, what="file", limit=None, error=ArgumentValueError):
+def input_path(path: object, what: str = "file", limit: int | None = None,
+               error: type[Exception] = ArgumentValueError) -> str:
     """``path`` as a str, checked: a str or os.PathLike naming an existing regular
     file of at most ``limit`` bytes (None: any size).  ``error`` is the exception
     class raised."""
@@ -45,7 +48,8 @@ def input_path(path, what="file", limit=None, error=ArgumentValueError):
     return name
 
 
-def read_limited(path, what="file", limit=None, error=ArgumentValueError):
+def read_limited(path: object, what: str = "file", limit: int | None = None,
+                 error: type[Exception] = ArgumentValueError) -> bytes:
     """The bytes of the regular file ``path`` (see :func:`input_path`); at most
     ``limit`` + 1 bytes are read, so a file that grows meanwhile is still refused."""
     name = input_path(path, what, limit, error)

@@ -13,20 +13,22 @@ reference) -- so a result the caller kept is never written over.
 
 import sys
 import threading
+from typing import Any
 
 import numpy as np
+from numpy.typing import DTypeLike, NDArray
 
 _LOCAL = threading.local()
 
 
-def _kept():
-    kept = getattr(_LOCAL, "arrays", None)
+def _kept() -> dict[str, NDArray[Any]]:
+    kept: dict[str, NDArray[Any]] | None = getattr(_LOCAL, "arrays", None)
     if kept is None:
         kept = _LOCAL.arrays = {}
     return kept
 
 
-def scratch(name, shape, dtype=np.float64):
+def scratch(name: str, shape: tuple[int, ...], dtype: DTypeLike = np.float64) -> NDArray[Any]:
     """An array of ``shape`` and ``dtype`` kept for the calling thread under ``name``
     and given again to its next call with the same shape and dtype (contents not
     kept)."""
@@ -42,7 +44,7 @@ def scratch(name, shape, dtype=np.float64):
 _UNHELD = 3
 
 
-def recycled(name, shape, dtype=np.float64):
+def recycled(name: str, shape: tuple[int, ...], dtype: DTypeLike = np.float64) -> NDArray[Any]:
     """A new array of ``shape`` and ``dtype`` for a result the caller gets: the one
     handed out under ``name`` last time in this thread when nothing else references
     it any more, else a new one (kept for next time)."""

@@ -19,7 +19,7 @@ import os
 import struct
 import warnings
 import zlib
-from typing import IO, Any, Union
+from typing import IO, Any, TypeGuard, Union
 
 from PIL import Image, UnidentifiedImageError
 
@@ -44,7 +44,7 @@ def _describe(file: object) -> str:
     return f"file={file!r}"
 
 
-def _is_path(file: object) -> bool:
+def _is_path(file: object) -> TypeGuard[str | os.PathLike[str]]:
     return isinstance(file, (str, os.PathLike))
 
 
@@ -119,12 +119,12 @@ def format_of(file: File, format: str | None) -> str:
         raise ArgumentValueError(
             f"format={format!r} is not a format Pillow writes; use one of "
             f"{', '.join(writable)}")
-    name = os.fspath(file) if _is_path(file) else getattr(file, "name", None)
-    if not isinstance(name, str):
+    file_name = os.fspath(file) if _is_path(file) else getattr(file, "name", None)
+    if not isinstance(file_name, str):
         raise ArgumentValueError(
             f"{_describe(file)} has no name to take the format from; give format= "
             "(for example format='png')")
-    ext = os.path.splitext(name)[1].lower()
+    ext = os.path.splitext(file_name)[1].lower()
     if ext not in extensions:
         common = ".png, .jpg, .webp, .tif, .gif, .bmp"
         raise ArgumentValueError(

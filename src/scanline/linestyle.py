@@ -7,11 +7,18 @@ Importing this module does not load numba; it is re-exported by
 
 import math
 import numbers
+from typing import Any, Sequence, Union, cast
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from . import _validate as v
 from .errors import ArgumentTypeError, ArgumentValueError
+
+#: A normalized line type: None (solid), a line-type name, a 16-bit mask or lengths.
+Dash = Union[None, str, int, tuple[float, ...]]
+#: A normalized pen: None, a pen name or a read-only 2-D bool footprint.
+PenShape = Union[None, str, NDArray[np.bool_]]
 
 CAPS = ("butt", "round", "square")
 JOINS = ("miter", "round", "bevel")
@@ -35,7 +42,7 @@ MAX_WIDTH = 2.0**16
 MAX_PEN = 64
 
 
-def _width(width):
+def _width(width: object) -> float:
     w = v.number("width", width)
     if not 1 <= w <= MAX_WIDTH:
         raise ArgumentValueError(
@@ -44,7 +51,7 @@ def _width(width):
     return w
 
 
-def _miter_limit(value):
+def _miter_limit(value: object) -> float:
     m = v.number("miter_limit", value)
     if not 1 <= m <= 1e6:
         raise ArgumentValueError(
@@ -54,7 +61,7 @@ def _miter_limit(value):
     return m
 
 
-def _dash(dash):
+def _dash(dash: object) -> Dash:
     """Normalize a dash argument to None (solid), an int mask or a tuple of lengths."""
     if dash is None or (isinstance(dash, str) and dash == "solid"):
         return None
@@ -65,7 +72,7 @@ def _dash(dash):
     if isinstance(dash, (bool, np.bool_)):
         raise ArgumentTypeError(f"dash must be a line type name, an int mask or lengths, got {dash!r}")
     if isinstance(dash, numbers.Integral):
-        if not 0 < dash < 1 << 16:
+        if not 0 < int(dash) < 1 << 16:
             raise ArgumentValueError(
                 f"dash={dash!r}: a bit-mask line type must be a 16-bit integer with at least "
                 "one bit set, 1 .. 0xFFFF (such as 0b1111000011110000)"
@@ -76,23 +83,24 @@ def _dash(dash):
             f"dash must be None, 'solid', {', '.join(map(repr, LINE_TYPES))}, a 16-bit int "
             f"mask or a sequence of dash and gap lengths; got {v._show(dash)}"
         )
-    if len(dash) == 0:
+    given = cast(Sequence[object], dash)
+    if len(given) == 0:
         raise ArgumentValueError("dash lengths must not be empty; use dash=None for a solid line")
-    lengths = tuple(v.number(f"dash[{i}]", d) for i, d in enumerate(dash))
+    lengths = tuple(v.number(f"dash[{i}]", d) for i, d in enumerate(given))
     if min(lengths) < 0:
-        raise ArgumentValueError(f"dash lengths must be >= 0, got {list(dash)!r}")
+        raise ArgumentValueError(f"dash lengths must be >= 0, got {list(given)!r}")
     if len(lengths) % 2:
         lengths = lengths * 2  # an odd list repeats (SVG's stroke-dasharray rule)
     if sum(lengths) < 1:
         raise ArgumentValueError(
-            f"dash lengths {list(dash)!r} add up to less than 1 pixel per period; give "
+            f"dash lengths {list(given)!r} add up to less than 1 pixel per period; give "
             "lengths in device units (pixels), such as (6, 3)")
     if sum(lengths[1::2]) == 0:
         return None             # no gap: solid
     return lengths
 
 
-def _pen(pen):
+def _pen(pen: object) -> PenShape:
     if pen is None:
         return None
     if isinstance(pen, str):
@@ -114,12 +122,12 @@ def _pen(pen):
             f"a pen footprint must be at most {MAX_PEN}x{MAX_PEN} with at least one True "
             f"cell, got shape {a.shape} with {int(a.sum())} True cells"
         )
-    a = a.copy()
-    a.flags.writeable = False
-    return a
+    footprint: NDArray[np.bool_] = a.copy()
+    footprint.flags.writeable = False
+    return footprint
 
 
-def mask_runs(mask):
+def mask_runs(mask: int) -> tuple[tuple[int, ...], int]:
     """The 16-bit ``mask`` as alternating on/off run lengths in bits, starting with
     an on run, and the bit index where the first on run starts.
 
@@ -129,7 +137,7 @@ def mask_runs(mask):
     bits = [(mask >> (15 - i)) & 1 for i in range(16)]
     first = bits.index(1)
     bits = bits[first:] + bits[:first]
-    runs = []
+    runs: list[int] = []
     for b in bits:
         if runs and (len(runs) % 2 == 1) == (b == 1):
             runs[-1] += 1
@@ -202,8 +210,9 @@ class LineStyle:
     _DEFAULTS = {"width": 1, "cap": "butt", "join": "miter", "miter_limit": 10.0,
                  "dash": None, "dash_phase": 0.0, "pen": None}
 
-    def __init__(self, width=1, cap="butt", join="miter", miter_limit=10.0, dash=None,
-                 dash_phase=0.0, pen=None):
+    def __init__(self, width: float = 1, cap: str = "butt", join: str = "miter",
+                 miter_limit: float = 10.0, dash: object = None, dash_phase: float = 0.0,
+                 pen: object = None) -> None:
         w = _width(width)
         fields = {
             "width": int(w) if w == int(w) else w,
@@ -216,7 +225,7 @@ class LineStyle:
         }
         object.__setattr__(self, "_fields", fields)
 
-    def replace(self, **changes):
+    def replace(self, **changes: Any) -> "LineStyle":
         """A copy with some attributes changed (None keeps the current value)."""
         fields = dict(self._fields)
         for name, value in changes.items():
@@ -227,33 +236,33 @@ class LineStyle:
                 fields[name] = value
         return LineStyle(**fields)
 
-    def __getattr__(self, name):
+    def __getattr__(self, name: str) -> Any:
         fields = object.__getattribute__(self, "_fields")
         if name in fields:
             return fields[name]
         raise AttributeError(f"LineStyle has no attribute {name!r}")
 
-    def __setattr__(self, name, value):
+    def __setattr__(self, name: str, value: object) -> None:
         raise AttributeError("LineStyle is immutable; make a new one with .replace(...)")
 
-    def __reduce__(self):
+    def __reduce__(self) -> tuple[type["LineStyle"], tuple[Any, ...]]:
         """Pickled (and copied) as the call that makes it: worker processes and Dask
         clusters receive scenes holding line styles."""
         return LineStyle, tuple(self._fields[name] for name in self._DEFAULTS)
 
-    def _key(self):
+    def _key(self) -> tuple[tuple[str, Any], ...]:
         pen = self.pen
         if isinstance(pen, np.ndarray):
             pen = (pen.shape, pen.tobytes())
         return tuple((k, pen if k == "pen" else val) for k, val in self._fields.items())
 
-    def __eq__(self, other):
+    def __eq__(self, other: object) -> bool:
         return isinstance(other, LineStyle) and self._key() == other._key()
 
-    def __hash__(self):
+    def __hash__(self) -> int:
         return hash(self._key())
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         args = []
         for k, val in self._fields.items():
             if k == "pen" and isinstance(val, np.ndarray):
@@ -265,18 +274,18 @@ class LineStyle:
 
     # -- what the drawing functions need ------------------------------------------------
     @property
-    def solid(self):
+    def solid(self) -> bool:
         """True when the line type draws every pixel."""
         return self.dash is None
 
-    def mask(self):
+    def mask(self) -> int | None:
         """The 16-bit pixel mask of a mask or named line type, else None."""
         dash = self.dash
         if isinstance(dash, str):
             return LINE_TYPES[dash]
         return dash if isinstance(dash, int) else None
 
-    def lengths(self, unit=None):
+    def lengths(self, unit: float | None = None) -> tuple[tuple[float, ...] | None, float]:
         """The line type as ``(on/off lengths, phase)`` in device units (None, phase
         for a solid line).  A mask bit stands for ``unit`` units (default: the width)."""
         mask = self.mask()
@@ -288,7 +297,7 @@ class LineStyle:
         runs, first = mask_runs(mask)
         return tuple(unit * r for r in runs), unit * (self.dash_phase - first)
 
-    def footprint(self):
+    def footprint(self) -> NDArray[np.int64]:
         """The pen as (K, 2) int64 pixel offsets (dx, dy), y up; ``[(0, 0)]`` for
         no pen."""
         pen = self.pen
@@ -309,7 +318,7 @@ class LineStyle:
             np.stack([cols - (w - 1) // 2, rows - (h - 1) // 2], axis=1).astype(np.int64))
 
     @staticmethod
-    def parse_dash(text):
+    def parse_dash(text: str) -> str | int | tuple[float, ...]:
         """A dash argument from its command-line spelling: ``solid``, ``dashed``,
         ``dotted``, ``dash-dot``, an integer mask (``0b1111000011110000``,
         ``0xF0F0`` or decimal) or comma-separated lengths (``6,3``).

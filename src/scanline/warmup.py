@@ -15,6 +15,11 @@ specializations they produce.
 """
 
 import time
+from typing import TYPE_CHECKING, Callable, Iterable, Iterator, Sequence, cast
+
+if TYPE_CHECKING:
+    from ._typing import Mode
+    from .framebuffer import FrameBuffer
 
 #: The frame-buffer modes.
 MODES = ("1", "L", "RGB", "RGBA", "P")
@@ -315,7 +320,8 @@ CALLS = {
 }
 
 
-def cases(names=None, modes=MODES):
+def cases(names: Iterable[str] | None = None,
+          modes: Sequence[str] = MODES) -> Iterator[tuple[str, str | None, str]]:
     """``(name, mode, code)`` for the calls ``names`` (default: all) in ``modes`` (a
     call that does not draw runs once, with mode None)."""
     for name in names or CALLS:
@@ -328,19 +334,21 @@ def cases(names=None, modes=MODES):
                     yield name, mode, code
 
 
-def run_case(mode, code):
+def run_case(mode: str | None, code: str) -> "FrameBuffer":
     """Make one call: ``code`` with ``sl``, ``np`` and a fresh 96 x 64 ``fb`` (white,
     in ``mode``; RGB for calls that do not draw).  Returns the frame buffer."""
     import numpy as np
 
     import scanline as sl
 
-    fb = sl.FrameBuffer(96, 64, mode=mode or "RGB", background="white")
+    fb = sl.FrameBuffer(96, 64, mode=cast("Mode", mode or "RGB"), background="white")
     exec(code, {"sl": sl, "np": np, "fb": fb})
     return fb
 
 
-def run(names=None, modes=MODES, progress=None):
+def run(names: Iterable[str] | None = None, modes: Sequence[str] = MODES,
+        progress: Callable[[int, int, str], object] | None = None
+        ) -> dict[tuple[str, str | None], float]:
     """Make the calls ``names`` (default: every call) in ``modes``, compiling or
     loading every kernel they reach (small as the calls are, never through the
     kernels' Python twins: :func:`scanline._kernels._jit.call`); returns the seconds
@@ -349,7 +357,7 @@ def run(names=None, modes=MODES, progress=None):
     from ._kernels import _jit
 
     todo = list(cases(names, modes))
-    seconds = {}
+    seconds: dict[tuple[str, str | None], float] = {}
     before, _jit.COMPILE = _jit.COMPILE, "always"
     try:
         for i, (name, mode, code) in enumerate(todo):
@@ -363,10 +371,10 @@ def run(names=None, modes=MODES, progress=None):
     return seconds
 
 
-def by_group(modes=MODES):
+def by_group(modes: Sequence[str] = MODES) -> list[list[str]]:
     """The names of the calls, one list per group, the groups with the most calls in
     ``modes`` first (the order in which parallel workers should take them)."""
-    members = {}
+    members: dict[str, list[str]] = {}
     for name, mode, _ in cases(None, modes):
         members.setdefault(CALLS[name][0], [])
         if name not in members[CALLS[name][0]]:
@@ -375,11 +383,11 @@ def by_group(modes=MODES):
     return [members[g] for g in sorted(members, key=lambda g: -sizes[g])]
 
 
-def groups(jobs, modes=MODES):
+def groups(jobs: int, modes: Sequence[str] = MODES) -> list[list[str]]:
     """The calls split into ``jobs`` lists of names, whole groups to one list,
     balanced by the number of calls (so that two processes rarely compile the same
     kernel)."""
-    parts = [[] for _ in range(jobs)]
+    parts: list[list[str]] = [[] for _ in range(jobs)]
     load = [0] * jobs
     for names in by_group(modes):
         k = load.index(min(load))

@@ -24,9 +24,11 @@ import math
 from collections.abc import Sequence
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from .._validate import real_array as _real_array
+from .._typing import Angle
 from ..errors import ArgumentTypeError, ArgumentValueError
 
 #: The axes accepted by :func:`reflection`.
@@ -41,7 +43,7 @@ SINGULAR = 64 * np.finfo(np.float64).eps
 
 
 # -- argument checking ------------------------------------------------------------------
-def _point(name, value):
+def _point(name: str, value: object) -> tuple[float, float]:
     """A point or vector given as two finite real numbers -> (float, float)."""
     if isinstance(value, (str, bytes)) or not isinstance(value, (Sequence, np.ndarray)):
         raise ArgumentTypeError(
@@ -55,7 +57,7 @@ def _point(name, value):
     return v.number(f"{name}[0]", value[0]), v.number(f"{name}[1]", value[1])
 
 
-def _matrix(name, value):
+def _matrix(name: str, value: object) -> NDArray[np.float64]:
     """A finite 3x3 matrix as a new float64 array."""
     a = _real_array(name, value, "(3, 3)")
     if a.shape != (3, 3):
@@ -71,7 +73,7 @@ def _matrix(name, value):
     return a
 
 
-def _affine(name, value):
+def _affine(name: str, value: object) -> NDArray[np.float64]:
     """A finite 3x3 matrix whose bottom row is (0, 0, 1)."""
     a = _matrix(name, value)
     bottom = a[2]
@@ -87,7 +89,7 @@ def _affine(name, value):
     return a
 
 
-def _points(name, value):
+def _points(name: str, value: object) -> tuple[NDArray[np.float64], bool]:
     """(N, 2) float64 points and whether a single (2,) point was given."""
     a = _real_array(name, value, "(N, 2)")
     if a.ndim == 1 and a.size == 0:  # [] is an empty batch
@@ -106,7 +108,8 @@ def _points(name, value):
     return a, single
 
 
-def _homogeneous(a, b, c, d, e, f):
+def _homogeneous(a: float, b: float, c: float, d: float, e: float,
+                 f: float) -> NDArray[np.float64]:
     """The matrix [[a, b, c], [d, e, f], [0, 0, 1]] (negative zeros made positive)."""
     m = np.array([[a, b, c], [d, e, f], [0.0, 0.0, 1.0]], dtype=np.float64)
     m += 0.0  # -0.0 + 0.0 == +0.0: tidy printing, no change in value
@@ -114,7 +117,7 @@ def _homogeneous(a, b, c, d, e, f):
 
 
 # -- the basic transformations ------------------------------------------------------------
-def translation(tx, ty):
+def translation(tx: float, ty: float) -> NDArray[np.float64]:
     """Translation by the vector (tx, ty).
 
     ::
@@ -131,6 +134,11 @@ def translation(tx, ty):
     Returns
     -------
     ndarray of float64, shape (3, 3)
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If ``tx`` or ``ty`` is not a finite real number.
 
     Notes
     -----
@@ -157,7 +165,7 @@ def translation(tx, ty):
     return _homogeneous(1.0, 0.0, tx, 0.0, 1.0, ty)
 
 
-def rotation(angle, pivot=None):
+def rotation(angle: Angle, pivot: ArrayLike | None = None) -> NDArray[np.float64]:
     """Rotation by ``angle`` radians, counterclockwise, about the origin or a pivot.
 
     ::
@@ -185,6 +193,11 @@ def rotation(angle, pivot=None):
     Returns
     -------
     ndarray of float64, shape (3, 3)
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If ``angle`` is not a finite angle or ``pivot`` not a point of two finite numbers.
 
     Notes
     -----
@@ -217,7 +230,8 @@ def rotation(angle, pivot=None):
     return _homogeneous(c, -s, xr * (1.0 - c) + yr * s, s, c, yr * (1.0 - c) - xr * s)
 
 
-def scaling(sx, sy=None, fixed=None):
+def scaling(sx: float, sy: float | None = None,
+            fixed: ArrayLike | None = None) -> NDArray[np.float64]:
     """Scaling by sx along x and sy along y, about the origin or a fixed point.
 
     ::
@@ -246,6 +260,12 @@ def scaling(sx, sy=None, fixed=None):
     Returns
     -------
     ndarray of float64, shape (3, 3)
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If a factor is not a finite real number or ``fixed`` not a point of two finite
+        numbers.
 
     Notes
     -----
@@ -285,7 +305,7 @@ _REFLECTIONS = {
 }
 
 
-def reflection(axis):
+def reflection(axis: str) -> NDArray[np.float64]:
     """Reflection about a coordinate axis, the origin or a diagonal.
 
     ::
@@ -306,6 +326,11 @@ def reflection(axis):
     Returns
     -------
     ndarray of float64, shape (3, 3)
+
+    Raises
+    ------
+    ArgumentValueError
+        If ``axis`` is not one of :data:`AXES`.
 
     See Also
     --------
@@ -334,7 +359,7 @@ def reflection(axis):
     return _homogeneous(a, b, 0.0, d, e, 0.0)
 
 
-def reflection_about_line(point, direction):
+def reflection_about_line(point: ArrayLike, direction: ArrayLike) -> NDArray[np.float64]:
     """Reflection about the line through ``point`` along ``direction``.
 
     With (dx, dy) the direction, n = dx² + dy², c = (dx² - dy²) / n = cos 2α and
@@ -356,6 +381,12 @@ def reflection_about_line(point, direction):
     Returns
     -------
     ndarray of float64, shape (3, 3)
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If ``point`` or ``direction`` is not a point of two finite numbers, or
+        ``direction`` is (0, 0).
 
     Notes
     -----
@@ -398,7 +429,8 @@ def reflection_about_line(point, direction):
     return _homogeneous(c, s, x0 - c * x0 - s * y0, s, -c, y0 - s * x0 + c * y0)
 
 
-def shear(shx=0.0, shy=0.0, reference=None):
+def shear(shx: float = 0.0, shy: float = 0.0,
+          reference: ArrayLike | None = None) -> NDArray[np.float64]:
     """Shear along x (by ``shx``) and along y (by ``shy``), relative to a reference.
 
     ::
@@ -428,6 +460,12 @@ def shear(shx=0.0, shy=0.0, reference=None):
     Returns
     -------
     ndarray of float64, shape (3, 3)
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If a parameter is not a finite real number or ``reference`` not a point of two
+        finite numbers.
 
     Notes
     -----
@@ -460,7 +498,7 @@ def shear(shx=0.0, shy=0.0, reference=None):
 
 
 # -- composition, inversion, application ----------------------------------------------------
-def compose(*matrices):
+def compose(*matrices: ArrayLike) -> NDArray[np.float64]:
     """The product of 3x3 matrices, applied right to left.
 
     ``compose(A, B, C)`` is ``A @ B @ C``: applied to a point it performs C first, then
@@ -474,6 +512,11 @@ def compose(*matrices):
     Returns
     -------
     ndarray of float64, shape (3, 3)
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If a matrix is not a finite real 3x3 array.
 
     Notes
     -----
@@ -502,7 +545,7 @@ def compose(*matrices):
     return result
 
 
-def inverse(m):
+def inverse(m: ArrayLike) -> NDArray[np.float64]:
     """The inverse of an affine 3x3 transformation matrix.
 
     For ``m`` = [[A, t], [0, 1]] with A = [[a, b], [c, d]] its 2x2 part and t its
@@ -582,7 +625,7 @@ def inverse(m):
     return _homogeneous(Ai[0, 0], Ai[0, 1], ti[0], Ai[1, 0], Ai[1, 1], ti[1])
 
 
-def apply(m, points):
+def apply(m: ArrayLike, points: ArrayLike) -> NDArray[np.float64]:
     """Transform points by an affine 3x3 matrix: p' = m @ (x, y, 1).
 
     ::
@@ -601,6 +644,12 @@ def apply(m, points):
     -------
     ndarray of float64, shape (N, 2) or (2,)
         The transformed points, in the shape given.
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If ``m`` is not a finite affine 3x3 matrix or ``points`` not finite points of
+        shape (N, 2) or (2,).
 
     Notes
     -----
@@ -623,4 +672,4 @@ def apply(m, points):
     a = _affine("m", m)
     p, single = _points("points", points)
     out = p @ a[:2, :2].T + a[:2, 2]
-    return out[0] if single else out
+    return out.reshape(2) if single else out

@@ -16,11 +16,14 @@ def register(subparsers):
     for sub in trace.add_algorithms(parser, run).values():
         sub.add_argument("-o", "--output", metavar="PAGE.html", required=True,
                          help="the HTML file to write")
+        sub.add_argument("--quiz", action="store_true",
+                         help="a quiz: the page asks for each step (the next pixel, the "
+                         "decision, ...) before showing it, and keeps the score")
 
 
 def run(args):
     """Trace the case and write the page."""
     from ..studio.page import explain
 
-    explain(args, args.output)
+    explain(args, args.output, args.quiz)
     print(f"scanline explain: wrote {args.output}")

@@ -13,6 +13,7 @@ from importlib import resources
 
 from ..framebuffer import write_atomically
 from .explorer import view_of
+from .quiz import questions
 
 STATIC = resources.files("scanline.studio") / "static"
 
@@ -23,26 +24,31 @@ def _json_for_script(data):
             .replace("<", "\\u003c").replace(">", "\\u003e").replace("&", "\\u0026"))
 
 
-def explain_html(ns):
-    """The self-contained explorer page of the parsed ``scanline trace`` arguments."""
+def explain_html(ns, quiz=False):
+    """The self-contained explorer page of the parsed ``scanline trace`` arguments;
+    ``quiz``: the page asks each step before showing it (:mod:`scanline.studio.quiz`)."""
     html = (STATIC / "explorer.html").read_text(encoding="utf-8")
     css = (STATIC / "studio.css").read_text(encoding="utf-8")
-    js = (STATIC / "explorer.js").read_text(encoding="utf-8")
+    js = "\n".join((STATIC / name).read_text(encoding="utf-8")
+                   for name in ("quiz.js", "explorer.js"))
     view = view_of(ns)
+    if quiz:
+        view["quiz"] = questions(ns.algorithm, view)
     html = html.replace('<link rel="stylesheet" href="/static/studio.css">',
                         f"<style>\n{css}</style>")
     html = re.sub(r"<header>.*?</header>",
                   '<header><h1>scanline explain</h1><span>step through the algorithm: '
                   'the buttons, the arrow keys, or a click on a row</span></header>',
                   html, flags=re.S)
+    html = html.replace('<script src="/static/quiz.js"></script>\n', "")
     html = html.replace('<script src="/static/explorer.js"></script>',
                         f'<script id="trace" type="application/json">{_json_for_script(view)}'
                         f"</script>\n<script>\n{js}</script>")
     return html
 
 
-def explain(ns, path):
+def explain(ns, path, quiz=False):
     """Write the page of ``ns`` (arguments parsed by ``scanline explain``) to ``path``,
-    atomically."""
-    page = explain_html(ns)
+    atomically (``quiz``: the quiz page)."""
+    page = explain_html(ns, quiz)
     write_atomically(path, lambda f: f.write(page.encode("utf-8")))

@@ -5,6 +5,7 @@ scripts and style under ``/static``.  The JSON API:
 
 ``GET  /api/algorithms``                      the explorer's algorithms
 ``POST /api/explore {algorithm, args}``       the view of one case (422: the CLI's message)
+``POST /api/quiz {algorithm, seed}``          quiz case ``seed``: the view and its questions
 ``GET  /api/devices/{kind}/info``    a simulation's timing (kind: devices.KINDS)
 ``GET  /api/devices/{kind}/frame?t`` the screen at time t (raw RGBA, beam in headers)
 ``GET  /api/devices/raster/plane/{k}.png``    a bit plane of the frame buffer
@@ -368,6 +369,14 @@ def create_app(allowed_hosts=LOOPBACK, workers=None, address_space=None):
         body = await in_worker("explore", algorithm, args, REQUEST_MEMORY)
         return Response(body, media_type="application/json")
 
+    async def quiz(request):
+        data = _fields(await _body(request), {"algorithm": str, "seed": int})
+        algorithm, seed = data.get("algorithm"), data.get("seed")
+        if algorithm is None or seed is None:
+            raise _Fail(400, "algorithm (a string) and seed (an integer, the case number) "
+                        "are both needed")
+        return Response(await in_worker("quiz", algorithm, seed), media_type="application/json")
+
     def _kind(request):
         kind = request.path_params["kind"]
         from .devices import KINDS
@@ -475,6 +484,7 @@ def create_app(allowed_hosts=LOOPBACK, workers=None, address_space=None):
         Route("/workstation", _page("workstation.html")),
         Route("/api/algorithms", _endpoint(algorithms)),
         Route("/api/explore", _endpoint(explore, post=True), methods=["POST"]),
+        Route("/api/quiz", _endpoint(quiz, post=True), methods=["POST"]),
         Route("/api/devices/{kind:str}/info", _endpoint(device_info)),
         Route("/api/devices/{kind:str}/frame", _endpoint(device_frame)),
         Route("/api/devices/raster/plane/{k:int}.png", _endpoint(device_plane)),

@@ -50,7 +50,14 @@ def device_plane(k):
     return devices.plane_png(k)
 
 
-TASKS = {"explore": explore, "device_info": device_info, "device_frame": device_frame,
+def quiz(algorithm, seed):
+    """Quiz case ``seed`` of ``algorithm``: the view with its questions, as JSON."""
+    from . import quiz as quizzes
+
+    return orjson.dumps(quizzes.quiz(algorithm, quizzes.case(algorithm, seed)))
+
+
+TASKS = {"explore": explore, "quiz": quiz, "device_info": device_info, "device_frame": device_frame,
          "device_plane": device_plane}
 
 

@@ -13,10 +13,11 @@ const state = {view: null, step: 0, timer: null, busy: false, queued: null, drag
                geometry: null};
 
 // ---- the server ------------------------------------------------------------------
-async function explore(algorithm, args) {
+async function explore(algorithm, args, seed) {
   const t0 = performance.now();
-  const response = await fetch("/api/explore", {method: "POST",
-    headers: {"Content-Type": "application/json"}, body: JSON.stringify({algorithm, args})});
+  const [url, body] = seed === undefined ? ["/api/explore", {algorithm, args}] : ["/api/quiz", {algorithm, seed}];
+  const response = await fetch(url, {method: "POST",
+    headers: {"Content-Type": "application/json"}, body: JSON.stringify(body)});
   const data = await response.json();
   if (!response.ok) throw new Error(data.error || response.statusText);
   data.fetchMs = performance.now() - t0;
@@ -24,11 +25,12 @@ async function explore(algorithm, args) {
 }
 
 // Ask for a case; while a request is in flight keep only the newest one asked for.
-async function load(algorithm, args, keepStep) {
-  if (state.busy) { state.queued = [algorithm, args, keepStep]; return; }
+// A quiz (`seed`: the case number) asks for its own case.
+async function load(algorithm, args, keepStep, seed) {
+  if (state.busy) { state.queued = [algorithm, args, keepStep, seed]; return; }
   state.busy = true;
   try {
-    const view = await explore(algorithm, args);
+    const view = await explore(algorithm, args, seed);
     $("error").textContent = "";
     const t0 = performance.now();
     show(view, keepStep ? state.step : 0);
@@ -89,6 +91,7 @@ function pixelsOf(k) {        // a line's row holds its pixel; other views list 
 }
 function ruleOf(k) {          // a rule template filled with the row's values, or the step's text
   const v = state.view;
+  if (k < 0) return "";       // a quiz before its first step
   if (!v.rules) return stepOf(k).rule || "";
   const row = v.rows[k];
   return v.rules.templates[v.rules.pick[k]].replace(/\{(\w+)\}/g, (m, c) => c in v.index ? cell(row[v.index[c]]) : m);
@@ -113,7 +116,11 @@ function drawGrid() {
       ctx.lineTo(g.sx(g.x1) + g.cell / 2, g.sy(y) + g.cell / 2); ctx.stroke();
     }
   }
-  const every = Math.max(1, Math.ceil(5 / Math.max(g.cell / 10, 0.01) / 5) * 5);
+  // labels every 5 cells or more: at most about 40 along the longer axis, however
+  // far apart the case's points are
+  const span = Math.max(g.x1 - g.x0, g.y1 - g.y0);
+  const every = Math.max(1, Math.ceil(5 / Math.max(g.cell / 10, 0.01) / 5) * 5,
+                         Math.ceil(span / 40 / 5) * 5);
   for (let x = Math.ceil(g.x0 / every) * every; x <= g.x1; x += every)
     ctx.fillText(String(x), g.sx(x) - 6, g.sy(g.y0) + g.cell / 2 + 11);
   for (let y = Math.ceil(g.y0 / every) * every; y <= g.y1; y += every)
@@ -179,7 +186,7 @@ function drawGrid() {
   for (const [x, y] of step.mark || []) {
     ctx.beginPath(); ctx.arc(g.sx(x), g.sy(y), Math.max(2, g.cell / 4), 0, 7); ctx.fill();
   }
-  if (!embedded) {
+  if (!embedded && !state.quiz) {
     ctx.fillStyle = COLORS.handle; ctx.font = "11px sans-serif";
     for (const h of view.handles) {
       ctx.fillRect(g.sx(h.x) - 5, g.sy(h.y) - 5, 10, 10);
@@ -212,7 +219,8 @@ function drawHorizons(ctx, g, view, i) {
 
 function drawTable() {
   const view = state.view, table = $("table"), i = state.step;
-  const lo = Math.max(0, i - TABLE_WINDOW), hi = Math.min(view.count, i + TABLE_WINDOW + 1);
+  // a quiz shows no row after the current one
+  const lo = Math.max(0, i - TABLE_WINDOW), hi = Math.min(view.count, i + (state.quiz ? 1 : TABLE_WINDOW + 1));
   table.replaceChildren();
   const head = table.insertRow();
   for (const c of view.columns) { const th = document.createElement("th"); th.textContent = c; head.appendChild(th); }
@@ -236,6 +244,7 @@ function drawTable() {
 function render() {
   const n = state.view.count;
   $("counter").textContent = n ? `step ${state.step + 1} of ${n}` : "no steps";
+  $("quiz").hidden = !state.quiz;
   $("rule").textContent = n ? ruleOf(state.step) : "";
   drawGrid();
   drawTable();
@@ -247,18 +256,23 @@ function show(view, step) {
   if (state.drag && state.view) view.bounds = state.view.bounds;
   view.index = Object.fromEntries(view.columns.map((c, j) => [c, j]));   // column -> position
   state.view = view;
-  state.step = Math.max(0, Math.min(step, view.count - 1));
+  state.quiz = Boolean(view.quiz);
+  state.step = Math.max(first(), Math.min(step, view.count - 1));
   $("title").textContent = view.title;
   $("notes").textContent = view.notes.join("\n");
   $("command").textContent = view.command;
   if (!embedded) $("args").value = view.args.join(" ");
+  $("stepper").hidden = state.quiz;
   render();
+  if (state.quiz) window.quiz.begin(view);
   document.body.dataset.ready = String(Date.now());
 }
 
+const first = () => state.quiz ? -1 : 0;    // a quiz may show the grid before step 0
+
 function go(step) {
   if (!state.view) return;
-  state.step = Math.max(0, Math.min(step, state.view.count - 1));
+  state.step = Math.max(first(), Math.min(step, state.view.count - 1));
   render();
 }
 
@@ -290,8 +304,10 @@ function pointer(event) {
 }
 
 function onDown(event) {
-  if (embedded || !state.view) return;
+  if (!state.view) return;
   const p = pointer(event), g = state.geometry;
+  if (state.quiz) { window.quiz.click(p.x, p.y); return; }     // a pixel answered
+  if (embedded) return;
   const hit = state.view.handles.find((h) => Math.hypot(g.sx(h.x) - p.px, g.sy(h.y) - p.py) < 9);
   if (hit) { state.drag = {handle: hit, x: hit.x, y: hit.y}; $("grid").setPointerCapture(event.pointerId); }
 }
@@ -322,7 +338,7 @@ function bind() {
   $("play").onclick = play;
   $("table").onclick = (e) => { const tr = e.target.closest("tr"); if (tr && tr.dataset.step) go(Number(tr.dataset.step)); };
   document.addEventListener("keydown", (e) => {
-    if (e.target.tagName === "INPUT") return;
+    if (e.target.tagName === "INPUT" || state.quiz) return;     // a quiz reveals by answers
     if (e.key === "ArrowRight") go(state.step + 1);
     if (e.key === "ArrowLeft") go(state.step - 1);
   });
@@ -359,8 +375,14 @@ async function start() {
   select.onchange = () => choose();
   const words = (text) => text.trim() ? text.trim().split(/\s+/) : [];
   $("run").onclick = () => load(select.value, words($("args").value), false);
+  const quizCase = () => Math.max(0, Math.floor(Number($("case").value)) || 0);
+  $("quiz-me").onclick = () => load(select.value, [], false, quizCase());
   $("args").addEventListener("keydown", (e) => { if (e.key === "Enter") $("run").click(); });
-  choose(params.get("args") ? words(params.get("args")) : null);
+  if (params.get("case") !== null) {          // ?algorithm=...&case=17: quiz case 17
+    $("usage").textContent = byName[select.value].usage;
+    $("case").value = params.get("case");
+    load(select.value, [], false, quizCase());
+  } else choose(params.get("args") ? words(params.get("args")) : null);
 }
 
 start();

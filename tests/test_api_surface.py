@@ -16,6 +16,9 @@ COMPLETE = [
     "scanline.linestyle",
     "scanline.imagefile",
     "scanline.warmup",
+    "scanline.texture",
+    "scanline.viewing",
+    "scanline.depthbuffer",
 ]
 
 

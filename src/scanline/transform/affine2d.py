@@ -671,5 +671,5 @@ def apply(m: ArrayLike, points: ArrayLike) -> NDArray[np.float64]:
     """
     a = _affine("m", m)
     p, single = _points("points", points)
-    out = p @ a[:2, :2].T + a[:2, 2]
+    out: NDArray[np.float64] = p @ a[:2, :2].T + a[:2, 2]
     return out.reshape(2) if single else out

@@ -404,7 +404,7 @@ class FrameBuffer:
             raise ArgumentValueError(f"{what} exists only in mode 'P', this frame buffer is {self._mode!r}")
 
     # -- pixels -----------------------------------------------------------------------
-    def _raster(self):
+    def _raster(self) -> Tuple[NDArray[np.uint8], bool]:
         """Storage for the kernels: ``(buf, packed)``; ``buf[y, x]`` is pixel (x, y),
         or in mode ``"1"`` the byte holding it (most significant bit first)."""
         return self._buf, self._mode == "1"

@@ -7,11 +7,14 @@ latitude-longitude map (one :class:`~scanline.texture.Texture`).  Both serve as
 direction, the ray tracer in the direction of each ray that leaves the scene.
 """
 
+from typing import Dict, List, Sequence, Tuple, Union
+
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
-from .texture import Texture, _image_array
+from .texture import ImageSource, Packed, Texture, _image_array
 
 #: The faces in OpenGL's order, and the order of ``CubeMap(faces)``.
 FACES = ("+x", "-x", "+y", "-y", "+z", "-z")
@@ -37,7 +40,7 @@ FACE_AXES = np.array([
 CUBE_FILTERS = ("nearest", "bilinear")
 
 
-def _cross_faces(image):
+def _cross_faces(image: object) -> List[NDArray[np.float64]]:
     """The six faces (+x, -x, +y, -y, +z, -z) cut out of a horizontal cross image."""
     a = _image_array("faces", image)
     h, w = a.shape[:2]
@@ -74,7 +77,8 @@ class CubeMap:
     [[200.0, 200.0, 200.0], [80.0, 80.0, 80.0]]
     """
 
-    def __init__(self, faces, filter="bilinear"):
+    def __init__(self, faces: Union[Sequence[ImageSource], ImageSource],
+                 filter: str = "bilinear") -> None:
         self.filter = v.choice("filter", filter, CUBE_FILTERS)
         if isinstance(faces, (list, tuple)):
             if len(faces) != 6:
@@ -90,37 +94,93 @@ class CubeMap:
                     f"faces: every face must be square and of one size ({n} x {n} like "
                     f"+x), face {name} is {a.shape[1]} x {a.shape[0]}")
         self.faces = tuple(Texture(a, filter=self.filter, wrap="clamp") for a in arrays)
-        self._kept = {}
+        self._kept: Dict[float, Packed] = {}
 
     @property
-    def size(self):
+    def size(self) -> int:
         """The side of each face, in texels."""
         return self.faces[0].width
 
     @classmethod
-    def from_latitude_longitude(cls, texture, size=256, filter="bilinear"):
+    def from_latitude_longitude(cls, texture: Union[Texture, ImageSource], size: int = 256,
+                                filter: str = "bilinear") -> "CubeMap":
         """The cube map of ``size`` x ``size`` faces whose texels are the
         latitude-longitude map ``texture`` (a :class:`Texture` or image) looked up in
-        the directions of their centers."""
+        the directions of their centers.
+
+        Parameters
+        ----------
+        texture : Texture or image
+            The latitude-longitude map.
+        size : int
+            Texels a side of each face, 1..4096.
+        filter : {"nearest", "bilinear"}
+            The cube map's filter.
+
+        Returns
+        -------
+        CubeMap
+            The six faces.
+
+        Raises
+        ------
+        ArgumentValueError
+            ``size`` outside 1..4096.
+        ArgumentTypeError
+            ``texture`` neither a Texture nor an image.
+
+        Notes
+        -----
+        Hearn & Baker 14-8, "Environment mapping".
+
+        Examples
+        --------
+        >>> import numpy as np, scanline as sl
+        >>> gray = sl.Texture(np.full((2, 4, 3), 128, np.uint8))
+        >>> cube = sl.texture.CubeMap.from_latitude_longitude(gray, size=2)
+        >>> cube.size, (cube.sample([[1, 0, 0]]) * 255).round().tolist()
+        (2, [[128.0, 128.0, 128.0]])
+        """
         from .texture import texture_of
 
         n = v.positive_int("size", size)
         if n > 4096:
             raise ArgumentValueError(f"size must be 1..4096 texels a side, got {n}")
-        texture = texture_of("texture", texture)
-        if not isinstance(texture, Texture):
+        lat_long = texture_of("texture", texture)
+        if not isinstance(lat_long, Texture):
             raise ArgumentTypeError(f"texture must be a latitude-longitude Texture or image, "
                                     f"got {v._show(texture)}")
         c = (np.arange(n) + 0.5) / n * 2 - 1
         sc, tc = np.meshgrid(c, c)
         st1 = np.stack([sc, tc, np.ones_like(sc)], axis=-1)               # (n, n, 3)
         directions = np.einsum("ijk,fkl->fijl", st1, FACE_AXES).reshape(-1, 3)
-        colors = environment_colors(texture, directions).reshape(6, n, n, 3)
+        colors = environment_colors(lat_long, directions).reshape(6, n, n, 3)
         return cls(list(np.clip(colors, 0.0, 1.0)), filter=filter)
 
-    def kernel_arrays(self, gamma=1.0):
+    def kernel_arrays(self, gamma: float = 1.0) -> Packed:
         """``(texels, levels)`` of the six faces one after another (face k's level is
-        row k), the texels decoded with ``gamma``.  Kept per gamma."""
+        row k), the texels decoded with ``gamma``.  Kept per gamma.
+
+        Parameters
+        ----------
+        gamma : float
+            Decodes the stored values (1: as stored).
+
+        Returns
+        -------
+        texels : ndarray (3 N,) float32
+            The faces' texels, as :meth:`Texture.kernel_arrays` packs them.
+        levels : ndarray (6, 3) int64
+            Each face's first texel, width and height.
+
+        Examples
+        --------
+        >>> import numpy as np, scanline as sl
+        >>> cube = sl.texture.CubeMap([np.zeros((1, 1, 3), np.uint8)] * 6)
+        >>> texels, levels = cube.kernel_arrays()
+        >>> len(texels), levels[:, 0].tolist()
+        (18, [0, 1, 2, 3, 4, 5])
+        """
         from .mipmap import joined
 
         gamma = float(gamma)
@@ -132,16 +192,42 @@ class CubeMap:
             self._kept[gamma] = texels, table
         return self._kept[gamma]
 
-    def sample(self, directions, gamma=1.0):
+    def sample(self, directions: ArrayLike, gamma: float = 1.0) -> NDArray[np.float64]:
         """The map's colors (M, 3) in ``directions`` (M, 3), stored values 0..1
-        (``gamma``: decoded with it)."""
+        (``gamma``: decoded with it).
+
+        Parameters
+        ----------
+        directions : array_like (M, 3) or (3,)
+            Finite, non-zero directions (any length).
+        gamma : float
+            Decodes the stored values (1: as stored).
+
+        Returns
+        -------
+        ndarray (M, 3) float64
+            The colors, each from the face of its direction's major axis.
+
+        Raises
+        ------
+        ArgumentValueError
+            Directions not (M, 3), not finite, or zero.
+
+        Examples
+        --------
+        >>> import numpy as np, scanline as sl
+        >>> faces = [np.full((1, 1, 3), 50 * k, np.uint8) for k in range(6)]
+        >>> cube = sl.texture.CubeMap(faces)
+        >>> (cube.sample([[0, -3, 1], [0.5, 0, -2]])[:, 0] * 255).round().tolist()  # -y, -z
+        [150.0, 250.0]
+        """
         return environment_colors(self, checked_directions(directions), gamma)
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"<CubeMap 6 x {self.size}x{self.size} {self.filter}>"
 
 
-def checked_directions(directions, name="directions"):
+def checked_directions(directions: ArrayLike, name: str = "directions") -> NDArray[np.float64]:
     """``directions`` as a (M, 3) float64 array of finite, non-zero vectors."""
     d = v.real_array(name, directions, "(M, 3)")
     d = d.reshape(1, 3) if d.shape == (3,) else d
@@ -155,7 +241,7 @@ def checked_directions(directions, name="directions"):
     return np.ascontiguousarray(d)
 
 
-def environment_of(name, value):
+def environment_of(name: str, value: object) -> Union["CubeMap", Texture, None]:
     """``value`` as an environment map: a :class:`CubeMap` kept, anything else a
     latitude-longitude :class:`Texture` (:func:`scanline.texture.texture.texture_of`)."""
     from .texture import texture_of
@@ -163,7 +249,8 @@ def environment_of(name, value):
     return value if isinstance(value, CubeMap) else texture_of(name, value)
 
 
-def environment_arrays(environment, gamma):
+def environment_arrays(environment: Union[CubeMap, Texture], gamma: float
+                       ) -> Tuple[NDArray[np.float32], NDArray[np.int64], int, int, int, int]:
     """The kernel's description of ``environment`` (a :class:`CubeMap` or a
     latitude-longitude :class:`Texture`): ``(texels, levels, count of levels a face,
     filter code, wrap code, kind)`` (:mod:`scanline._kernels.environment`)."""
@@ -178,7 +265,8 @@ def environment_arrays(environment, gamma):
             WRAP_CODES[environment.wrap], LATITUDE_LONGITUDE)
 
 
-def environment_colors(environment, directions, gamma=1.0):
+def environment_colors(environment: Union[CubeMap, Texture], directions: ArrayLike,
+                       gamma: float = 1.0) -> NDArray[np.float64]:
     """The colors (M, 3) of ``environment`` (cube or latitude-longitude) in
     ``directions`` (M, 3) (any length, not checked), decoded with ``gamma``."""
     from .._kernels import environment as k

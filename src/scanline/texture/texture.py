@@ -7,11 +7,22 @@ or clamped outside 0..1.
 
 import functools
 import os
+from typing import TYPE_CHECKING, Dict, List, Optional, Tuple, Union, cast
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
+
+if TYPE_CHECKING:
+    from PIL import Image
+
+#: An image as textures take it: an array, a Pillow image or an image file's path.
+ImageSource = Union[ArrayLike, "Image.Image", str, "os.PathLike[str]"]
+
+#: Packed texels (3 N,) float32 and their levels' table (L, 3) int64.
+Packed = Tuple[NDArray[np.float32], NDArray[np.int64]]
 
 #: The filters: the nearest texel, bilinear interpolation between the four nearest
 #: texel centers, and trilinear (bilinear in the two mipmap levels nearest the
@@ -26,7 +37,7 @@ WRAPS = ("repeat", "clamp", "mirror")
 TEXEL_BYTES = 8 * 3 + 2 * 4 * 3 * 4 // 3 + 8
 
 
-def _image_array(name, image):
+def _image_array(name: str, image: object) -> NDArray[np.float64]:
     """``image`` as stored values 0..1 (H, W, 3) float64 in image order (top row
     first): an (H, W), (H, W, 1|3|4) array of integers 0..255 or reals 0..1, a Pillow
     image, or an image file's path (alpha is not used)."""
@@ -106,34 +117,59 @@ class Texture:
     [[0.0, 0.0, 0.0], [1.0, 1.0, 1.0]]
     """
 
-    def __init__(self, image, filter="bilinear", wrap="repeat"):
+    def __init__(self, image: ImageSource, filter: str = "bilinear",
+                 wrap: str = "repeat") -> None:
         self.filter = v.choice("filter", filter, FILTERS)
         self.wrap = v.choice("wrap", wrap, WRAPS)
         self.image = _image_array("image", image)
         self.image.flags.writeable = False
-        self._kept = {}
+        self._kept: Dict[float, Packed] = {}
 
     @property
-    def width(self):
-        return self.image.shape[1]
+    def width(self) -> int:
+        """The image's width W, in texels."""
+        return int(self.image.shape[1])
 
     @property
-    def height(self):
-        return self.image.shape[0]
+    def height(self) -> int:
+        """The image's height H, in texels."""
+        return int(self.image.shape[0])
 
     @functools.cached_property
-    def levels(self):
+    def levels(self) -> List[NDArray[np.float64]]:
         """The mipmap pyramid (:func:`scanline.texture.mipmap.pyramid`): (h, w, 3)
         stored values 0..1, image order, from the image down to 1 x 1."""
         from .mipmap import pyramid
 
         return pyramid(self.image)
 
-    def kernel_arrays(self, gamma=1.0):
+    def kernel_arrays(self, gamma: float = 1.0) -> Packed:
         """``(texels (3 N,) float32, levels (L, 3) int64)`` as
         :mod:`scanline._kernels.texture` takes them, the texels decoded with
         ``gamma`` (linear values; 1: the stored ones), only the first level unless
-        the filter is trilinear.  Kept per gamma."""
+        the filter is trilinear.  Kept per gamma.
+
+        Parameters
+        ----------
+        gamma : float
+            The exponent that decodes the stored values (1: kept as stored).
+
+        Returns
+        -------
+        texels : ndarray (3 N,) float32
+            R, G, B of each texel, level after level, each level's rows bottom first
+            (read-only).
+        levels : ndarray (L, 3) int64
+            Each level's first texel, width and height (read-only).
+
+        Examples
+        --------
+        >>> import numpy as np, scanline as sl
+        >>> t = sl.Texture(np.array([[[0, 0, 0]], [[255, 255, 255]]], np.uint8))
+        >>> texels, levels = t.kernel_arrays()
+        >>> texels.tolist(), levels.tolist()       # the bottom (white) row first
+        ([1.0, 1.0, 1.0, 0.0, 0.0, 0.0], [[0, 1, 2]])
+        """
         from .mipmap import packed
 
         gamma = float(gamma)
@@ -150,12 +186,45 @@ class Texture:
         self._kept[gamma] = texels, table
         return texels, table
 
-    def sample(self, uv, derivatives=None, gamma=1.0):
+    def sample(self, uv: ArrayLike, derivatives: Optional[ArrayLike] = None,
+               gamma: float = 1.0) -> NDArray[np.float64]:
         """The texture's color at texture coordinates ``uv`` (M, 2), filtered and
         wrapped as the texture says: (M, 3) reals 0..1 (stored values; ``gamma``:
         decoded with it).  ``derivatives`` (M, 4): du/dx, dv/dx, du/dy, dv/dy per
         pixel, which choose the mipmap levels of a trilinear texture (default 0:
-        the finest level)."""
+        the finest level).
+
+        Parameters
+        ----------
+        uv : array_like (M, 2) or (2,)
+            Finite texture coordinates.
+        derivatives : array_like (M, 4), optional
+            The screen derivatives of u and v at each point.
+        gamma : float
+            Decodes the stored values (1: as stored).
+
+        Returns
+        -------
+        ndarray (M, 3) float64
+            The filtered colors.
+
+        Raises
+        ------
+        ArgumentValueError
+            ``uv`` or ``derivatives`` of the wrong shape, or not finite.
+
+        Notes
+        -----
+        Hearn & Baker 14-9, "Texture mapping"; trilinear filtering after Williams
+        (1983), "Pyramidal parametrics".
+
+        Examples
+        --------
+        >>> import numpy as np, scanline as sl
+        >>> t = sl.Texture(np.array([[[0, 0, 0], [255, 255, 255]]], np.uint8))
+        >>> t.sample([[0.5, 0.5], [1.25, 0.5]]).tolist()   # halfway; 1.25 wraps to 0.25
+        [[0.5, 0.5, 0.5], [0.0, 0.0, 0.0]]
+        """
         from .._kernels import texture as k
         from .._kernels._jit import call
 
@@ -177,7 +246,7 @@ class Texture:
              FILTER_CODES[self.filter], WRAP_CODES[self.wrap], a, d, out)
         return out
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"<Texture {self.width}x{self.height} {self.filter} {self.wrap}>"
 
 
@@ -185,12 +254,12 @@ FILTER_CODES = {"nearest": 0, "bilinear": 1, "trilinear": 2}
 WRAP_CODES = {"repeat": 0, "clamp": 1, "mirror": 2}
 
 
-def texture_of(name, value):
+def texture_of(name: str, value: object) -> Optional[Texture]:
     """``value`` as a :class:`Texture` (an image becomes a bilinear, repeated one),
     ``None`` kept."""
     if value is None or isinstance(value, Texture):
         return value
     try:
-        return Texture(value)
+        return Texture(cast(ImageSource, value))
     except (ArgumentTypeError, ArgumentValueError) as e:
         raise type(e)(f"{name}: {e}") from None

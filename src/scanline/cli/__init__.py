@@ -19,12 +19,12 @@ import traceback
 
 from .. import __version__
 from ..errors import ScanlineError
-from . import (animate, demo, dither, draw, examples, explain, fonts, render, simulate, studio, trace,
-               warmup)
+from . import (animate, demo, dither, draw, examples, exercises, explain, fonts, render, simulate,
+               studio, trace, warmup)
 
 #: The sub-command modules; each has ``register(subparsers)``.
-COMMANDS = (trace, draw, demo, render, dither, fonts, simulate, explain, studio, animate, warmup,
-            examples)
+COMMANDS = (trace, draw, demo, render, dither, fonts, simulate, explain, exercises, studio, animate,
+            warmup, examples)
 
 #: Errors reported as bad input (exit status 2).
 INPUT_ERRORS = (ScanlineError, ValueError, TypeError, OSError)

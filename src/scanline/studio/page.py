@@ -36,9 +36,10 @@ def explain_html(ns, quiz=False):
         view["quiz"] = questions(ns.algorithm, view)
     html = html.replace('<link rel="stylesheet" href="/static/studio.css">',
                         f"<style>\n{css}</style>")
+    hint = ("answer each step before it is shown; the score is kept" if quiz else
+            "step through the algorithm: the buttons, the arrow keys, or a click on a row")
     html = re.sub(r"<header>.*?</header>",
-                  '<header><h1>scanline explain</h1><span>step through the algorithm: '
-                  'the buttons, the arrow keys, or a click on a row</span></header>',
+                  f'<header><h1>scanline explain</h1><span>{hint}</span></header>',
                   html, flags=re.S)
     html = html.replace('<script src="/static/quiz.js"></script>\n', "")
     html = html.replace('<script src="/static/explorer.js"></script>',

@@ -46,7 +46,7 @@ class Question:
 
 
 def _pixel(x: str, y: str) -> Question:
-    return Question("pixel", (x, y), "Which pixel does this step plot? Click it on the grid.")
+    return Question("pixel", (x, y), "Which pixel does this step plot?")
 
 
 def _choice(column: str, prompt: str, offered: tuple[str, ...] = ()) -> Question:
@@ -106,7 +106,8 @@ def _ints(rng: random.Random, lo: int, hi: int, n: int) -> list[str]:
 
 def _segment(rng: random.Random) -> list[str]:
     x0, y0 = rng.randint(0, 12), rng.randint(0, 12)
-    dx, dy = rng.randint(4, 14), rng.randint(-10, 10)
+    # both coordinates change: a sloped line, in any of the eight octants
+    dx, dy = rng.choice([-1, 1]) * rng.randint(4, 14), rng.choice([-1, 1]) * rng.randint(2, 10)
     if rng.random() < 0.5:
         dx, dy = dy, dx
     return [str(x0), str(y0), str(x0 + dx), str(y0 + dy)]

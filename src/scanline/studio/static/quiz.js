@@ -48,7 +48,8 @@ window.quiz = (() => {
       q.waiting = false;
       return;
     }
-    el("quiz-prompt").textContent = `Step ${k + 1} of ${n}: ${question.prompt}`;
+    el("quiz-prompt").textContent = `Step ${k + 1} of ${n}: ${question.prompt}` +
+      (question.kind === "pixel" ? " Click it on the grid." : "");
     q.waiting = question.kind === "pixel";
     if (question.kind === "choice") buttons(question.choices, (c) => reveal(c === String(question.answer[0])));
     else if (question.kind === "number") {

@@ -12,6 +12,7 @@ from tests import api_surface
 # the packages whose public names are complete; a package joins when it lacks nothing
 COMPLETE = [
     "scanline.errors",
+    "scanline.geometry",
     "scanline.budget",
     "scanline.linestyle",
     "scanline.imagefile",

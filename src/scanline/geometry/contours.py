@@ -7,14 +7,17 @@ last vertex joins the first), or several contours: a list of such arrays or an
 rule decides what is inside).
 """
 
+from typing import Any
+
 import numpy as np
+from numpy.typing import NDArray
 
 from .._validate import COORD_LIMIT, _show
 from .._validate import counts as index_counts
 from ..errors import ArgumentTypeError, ArgumentValueError
 
 
-def _numeric(name, a):
+def _numeric(name: str, a: NDArray[Any]) -> NDArray[np.float64]:
     if a.dtype == bool or a.dtype.kind not in "iuf":
         raise ArgumentTypeError(
             f"{name} must hold real numbers (vertex coordinates), got an array of dtype "
@@ -23,7 +26,7 @@ def _numeric(name, a):
     return a.astype(np.float64, copy=False)
 
 
-def _ring(name, value):
+def _ring(name: str, value: object) -> NDArray[np.float64]:
     """One contour as a float64 (N, 2) array."""
     try:
         a = np.asarray(value)
@@ -40,7 +43,8 @@ def _ring(name, value):
     return _numeric(name, a)
 
 
-def check_vertices(name, verts, offsets=None, far=False):
+def check_vertices(name: str, verts: NDArray[np.float64],
+                   offsets: NDArray[np.int64] | None = None, far: bool = False) -> None:
     """Raise naming ``name`` unless every vertex is finite and within +-2**30 (any
     finite value with ``far``: the drawing functions clip such geometry to a guard
     rectangle, :mod:`scanline.geometry.guard`).
@@ -67,13 +71,15 @@ def check_vertices(name, verts, offsets=None, far=False):
             raise ArgumentValueError(f"{where} {what}; vertex {j} is {verts[i].tolist()}")
 
 
-def contours(name, value, far=False):
+def contours(name: str, value: object,
+             far: bool = False) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
     """Parse a polygon given as one contour or several.
 
     Returns ``(verts, offsets)``: contour ``c`` is ``verts[offsets[c]:offsets[c+1]]``.
     """
-    rings = None
+    rings: list[NDArray[np.float64]] = []
     multiple = False
+    a: NDArray[Any] | None
     if isinstance(value, np.ndarray):
         a = value
     else:
@@ -120,7 +126,8 @@ def contours(name, value, far=False):
     return verts, offsets
 
 
-def batch(name, value, far=False):
+def batch(name: str, value: object, far: bool = False
+          ) -> tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.int64]]:
     """Parse a batch of polygons: a list of polygons (each one contour or several,
     as :func:`contours` takes) or an (M, K, 2) array of M one-contour polygons.
 
@@ -141,15 +148,16 @@ def batch(name, value, far=False):
             f"{name} must be a list of polygons ((N, 2) arrays of vertices) or an "
             f"(M, K, 2) array, got {_show(value)}"
         )
+    joined: NDArray[Any] | None
     try:  # the fast path: one contour per polygon, (N_i, 2) array-likes
-        verts = np.concatenate(value) if len(value) else np.empty((0, 2), np.float64)
+        joined = np.concatenate(value) if len(value) else np.empty((0, 2), np.float64)
     except (TypeError, ValueError):
-        verts = None
-    if verts is not None and verts.ndim == 2 and verts.shape[1] == 2:
+        joined = None
+    if joined is not None and joined.ndim == 2 and joined.shape[1] == 2:
         m = len(value)
         offsets = np.zeros(m + 1, np.int64)
         offsets[1:] = np.cumsum(np.fromiter(map(len, value), np.int64, m))
-        verts = np.ascontiguousarray(_numeric(name, verts))
+        verts = np.ascontiguousarray(_numeric(name, joined))
         check_vertices(name, verts, offsets, far)
         return verts, offsets, np.arange(m + 1, dtype=np.int64)
     parts = [contours(f"{name}[{i}]", p, far) for i, p in enumerate(value)]
@@ -165,7 +173,8 @@ def batch(name, value, far=False):
     return verts, np.concatenate(offs), polys
 
 
-def flat(name, vertices, counts, far=False):
+def flat(name: str, vertices: object, counts: object, far: bool = False
+         ) -> tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.int64]]:
     """Parse a batch given flat: all vertices in one (V, 2) array and the vertex
     count of each polygon (one contour each) in ``counts``, so that numpy data needs
     no per-polygon conversion.

@@ -44,21 +44,34 @@ plotter", Computer Journal 10(3), 1967.
 from decimal import Decimal, localcontext
 from fractions import Fraction
 from math import isqrt
+from typing import Sequence, Union
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .._kernels import conics as kc
 from .._kernels._jit import python
-from .guard import clip_parameters
+from .guard import Exact, clip_parameters
+
+#: A window or box (x0, y0, x1, y1) of integers.
+Window = tuple[int, int, int, int]
+#: A point of a conic or a path, exact.
+Pixel = tuple[int, int]
+#: (index, axial steps, diagonal steps) of a point in a conic's pixel sequence.
+Steps = tuple[int, int, int]
+#: A leg of an axis-parallel path: start, end, path length at the start, length.
+Leg = tuple[Pixel, Pixel, int, int]
+#: A real number of any size.
+Real = Union[int, float, Fraction]
 
 _next = python(kc.ellipse_next)
 
 
-def _ceil_div(a, b):
+def _ceil_div(a: int, b: int) -> int:
     return -(-a // b)
 
 
-def circle_y(x, r):
+def circle_y(x: int, r: int) -> int:
     """The octant point's row y(x) of the midpoint circle of radius r at column
     0 <= x < r (r = 0: 0)."""
     if r == 0:
@@ -66,7 +79,7 @@ def circle_y(x, r):
     return (isqrt(4 * (r * r - x * x) - 1) + 1) // 2
 
 
-def circle_half_width(d, r):
+def circle_half_width(d: int, r: int) -> int:
     """The right-most outline pixel (offset from the center) of row offset d of the
     midpoint circle, or -1 beyond it (the kernel's ``circle_half_width``): rows up to
     the diagonal are the octant's columns; above it, the last column x with
@@ -88,17 +101,18 @@ class Quadrant:
     integer semi-axes ``rx``, ``ry``, queried per column (region 1) and per row
     (region 2) without stepping the whole quadrant."""
 
-    def __init__(self, rx, ry):
+    def __init__(self, rx: int, ry: int) -> None:
         self.rx, self.ry = rx, ry
         self.rx2, self.ry2 = rx * rx, ry * ry
-        self.points = []          # the stepped part, (x, y) pairs
+        self.points: list[Pixel] = []          # the stepped part, (x, y) pairs
         self.m = -1               # region 1 is (x, Y1(x)) for 0 <= x <= m
         self.ye, self.xe = 0, 0   # region 2 is (x(y), y) for 0 <= y < ye
         self.tip = rx             # the tip is (x, 0) for tip < x <= rx
         # (index, axial steps, diagonal steps) from (0, ry), in the kernel's order, of
         # the point before region 2's closed form and of the point before the tip
-        self.steps = []           # of self.points
-        self.end = self.before_tip = (-1, -1, 0)
+        self.steps: list[Steps] = []           # of self.points
+        self.end: Steps = (-1, -1, 0)
+        self.before_tip: Steps = self.end
         if rx == 0:               # the segment x = 0, 0 <= y <= ry (region 2 only)
             self.ye, self.xe, self.tip = ry + 1, 0, 0
             return
@@ -108,18 +122,18 @@ class Quadrant:
         self._setup()
 
     # -- closed forms ----------------------------------------------------------------
-    def y1(self, x):
+    def y1(self, x: int) -> int:
         """Y1(x): the least y >= 0 with f(x, y + 1/2) >= 0, 0 <= x <= rx."""
         n = _ceil_div(4 * self.ry2 * (self.rx2 - x * x), self.rx2)
         c = isqrt(n - 1) + 1 if n > 0 else 0
         return c // 2
 
-    def x2(self, y):
+    def x2(self, y: int) -> int:
         """X2(y): the greatest x >= 0 with f(x - 1/2, y) <= 0, 0 <= y <= ry."""
         s = isqrt(4 * self.rx2 * (self.ry2 - y * y) // self.ry2)
         return (s + 1) // 2
 
-    def _setup(self):
+    def _setup(self) -> None:
         rx, ry, rx2, ry2 = self.rx, self.ry, self.rx2, self.ry2
         lo, hi = 0, rx            # the first x where region 1 would end without lag
         while lo < hi:
@@ -161,20 +175,20 @@ class Quadrant:
                     self.before_tip = self._region2(self.tip, 0)
                 return
 
-    def _region2(self, x, y):
+    def _region2(self, x: int, y: int) -> Steps:
         """(index, axial, diagonal) of region 2's closed-form point (x, y), y < ye."""
         i, a, d = self.end
         n, dd = self.ye - y, x - self.xe
         return i + n, a + n - dd, d + dd
 
-    def x2_closed(self, y):
+    def x2_closed(self, y: int) -> int:
         """Region 2's column at row 0 <= y < ye."""
         if self.rx == 0:
             return 0
         return max(self.xe, min(self.x2(y), self.xe + self.ye - y))
 
     # -- queries ---------------------------------------------------------------------
-    def locate(self, a, b):
+    def locate(self, a: int, b: int) -> Steps | None:
         """(i, axial, diagonal) of the quadrant point (a, b): its index in the kernel's
         order from (0, ry) and the axial and diagonal steps that reach it; or None
         when (a, b) is not a point of the quadrant."""
@@ -190,19 +204,19 @@ class Quadrant:
             return i + a - self.tip, ax + a - self.tip, d
         return None
 
-    def column_points(self, x):
+    def column_points(self, x: int) -> int | None:
         """The region-1 point's row in column x (0 <= x <= m), else None."""
         if 0 <= x <= self.m:
             return self.y1(x)
         return None
 
-    def row_point(self, y):
+    def row_point(self, y: int) -> int | None:
         """The region-2 point's column in row y (0 <= y < ye), else None."""
         if 0 <= y < self.ye:
             return self.x2_closed(y)
         return None
 
-    def half_width(self, y):
+    def half_width(self, y: int) -> int:
         """The right-most quadrant point of row y (the fill's extent), or -1."""
         if y < 0 or y > self.ry:
             return -1
@@ -224,15 +238,15 @@ class Quadrant:
         return best
 
 
-def _in(lo, hi, v):
+def _in(lo: int, hi: int, v: int) -> bool:
     return lo <= v <= hi
 
 
-def circle_pixels(xc, yc, r, window):
+def circle_pixels(xc: int, yc: int, r: int, window: Window) -> NDArray[np.int64]:
     """The pixels of the midpoint circle (integers of any size) inside ``window``
     (x0, y0, x1, y1), as an (N, 2) int64 array of (x, y), each once."""
     x0, y0, x1, y1 = window
-    out = set()
+    out: set[Pixel] = set()
     if r == 0:
         if _in(x0, x1, xc) and _in(y0, y1, yc):
             out.add((xc, yc))
@@ -250,14 +264,14 @@ def circle_pixels(xc, yc, r, window):
     return _array(out)
 
 
-def ellipse_pixels(xc, yc, rx, ry, window):
+def ellipse_pixels(xc: int, yc: int, rx: int, ry: int, window: Window) -> NDArray[np.int64]:
     """The pixels of the midpoint ellipse (integers of any size) inside ``window``
     (x0, y0, x1, y1), as an (N, 2) int64 array, each once."""
     x0, y0, x1, y1 = window
     q = Quadrant(rx, ry)
-    out = set()
+    out: set[Pixel] = set()
 
-    def put(a, b):
+    def put(a: int, b: int) -> None:
         for col in (xc + a, xc - a):
             for row in (yc + b, yc - b):
                 if _in(x0, x1, col) and _in(y0, y1, row):
@@ -270,9 +284,9 @@ def ellipse_pixels(xc, yc, rx, ry, window):
             put(x, y)
     for row in range(y0, y1 + 1):       # region 2: one point per row
         y = abs(row - yc)
-        x = q.row_point(y)
-        if x is not None:
-            put(x, y)
+        xr = q.row_point(y)
+        if xr is not None:
+            put(xr, y)
     for a, b in q.points:
         put(a, b)
     if _in(y0, y1, yc) and q.tip < rx:   # the tip's run along y = 0
@@ -282,31 +296,33 @@ def ellipse_pixels(xc, yc, rx, ry, window):
     return _array(out)
 
 
-def half_widths(yc, rx, ry, height, circle):
+def half_widths(yc: int, rx: int, ry: int, height: int, circle: bool
+                ) -> list[tuple[int, int, int]]:
     """The right-most outline pixel w (offset from the center) of each visible scan
     line that the conic reaches: a list of (row, y - yc, w), the filled area's span
     being xc - w .. xc + w (the kernels' ``w`` table)."""
     q = None if circle else Quadrant(rx, ry)
-    out = []
+    out: list[tuple[int, int, int]] = []
     for row in range(height):
         d = abs(row - yc)
-        w = circle_half_width(d, rx) if circle else q.half_width(d)
+        w = circle_half_width(d, rx) if q is None else q.half_width(d)
         if w >= 0:
             out.append((row, row - yc, w))
     return out
 
 
-def spans(xc, yc, rx, ry, width, height, circle):
+def spans(xc: int, yc: int, rx: int, ry: int, width: int, height: int,
+          circle: bool) -> NDArray[np.int64]:
     """The filled conic's span of each visible scan line: an (N, 3) int64 array of
     rows (y, x0, x1), from the left-most to the right-most outline pixel, clipped to
     columns -3 .. width + 2 (see :func:`clipped`)."""
-    rows = []
+    rows: list[tuple[int, int, int]] = []
     for row, _, w in half_widths(yc, rx, ry, height, circle):
         rows += clipped(row, xc - w, xc + w, width)
     return np.array(rows, np.int64).reshape(-1, 3)
 
 
-def clipped(row, x0, x1, width):
+def clipped(row: int, x0: int, x1: int, width: int) -> list[tuple[int, int, int]]:
     """The span x0 .. x1 of ``row`` (integers of any size) clipped to columns
     -3 .. width + 2 as spans (row, a, b) with b - a even (the kernels draw a span as
     a flat ellipse about an integer center): a clipped end moves one column further
@@ -329,7 +345,7 @@ class CircleQuadrant:
     octant from (0, r), then its mirror image in the diagonal back to (r, 0), the
     diagonal pixel once), with :meth:`Quadrant.locate`."""
 
-    def __init__(self, r):
+    def __init__(self, r: int) -> None:
         self.r = r
         lo, hi = 0, max(r - 1, 0)         # the octant's last column: x <= y(x)
         while lo < hi:
@@ -342,7 +358,9 @@ class CircleQuadrant:
         self.yd = circle_y(lo, r)
         self.dup = self.yd == lo
 
-    def locate(self, a, b):
+    def locate(self, a: int, b: int) -> Steps | None:
+        """As :meth:`Quadrant.locate`: (i, axial, diagonal) of the point (a, b), or
+        None when it is not a point of the quadrant."""
         r, xd, yd = self.r, self.xd, self.yd
         if r == 0:
             return (0, 0, 0) if a == b == 0 else None
@@ -363,7 +381,8 @@ class CircleQuadrant:
 _PIECES = (((1, 1), True), ((-1, 1), False), ((-1, -1), True), ((1, -1), False))
 
 
-def sequence_runs(xc, yc, rx, ry, circle, window):
+def sequence_runs(xc: int, yc: int, rx: int, ry: int, circle: bool, window: Window
+                  ) -> list[tuple[NDArray[np.int64], int, int, int]]:
     """The visible part of the conic's pixel sequence (the order in which a line
     type numbers the midpoint pixels: counterclockwise from (xc + rx, yc), each
     quadrant's pixels once, :func:`scanline.draw.strokes.conic_pixels`), as runs of
@@ -371,9 +390,11 @@ def sequence_runs(xc, yc, rx, ry, circle, window):
     diagonal) with k the index of the run's first pixel in the whole sequence and
     axial, diagonal the unit and diagonal steps before it (its arc length is
     axial + diagonal sqrt 2).  Integers of any size; O(window) work."""
-    q = CircleQuadrant(rx) if circle else Quadrant(rx, ry)
-    n, total_a, total_d = q.locate(rx, 0)          # the quadrant's last point
-    found = {}
+    q: CircleQuadrant | Quadrant = CircleQuadrant(rx) if circle else Quadrant(rx, ry)
+    last = q.locate(rx, 0)          # the quadrant's last point
+    assert last is not None
+    n, total_a, total_d = last
+    found: dict[int, tuple[int, int, int, int]] = {}
     for x, y in (circle_pixels(xc, yc, rx, window) if circle
                  else ellipse_pixels(xc, yc, rx, ry, window)).tolist():
         for piece, ((sx, sy), backwards) in enumerate(_PIECES):
@@ -387,7 +408,7 @@ def sequence_runs(xc, yc, rx, ry, circle, window):
             k = piece * n + i
             if k < 4 * n or n == 0:
                 found[k] = (x, y, piece * total_a + a, piece * total_d + d)
-    runs = []
+    runs: list[tuple[list[Pixel], int, int, int]] = []
     for k in sorted(found):
         x, y, a, d = found[k]
         if runs and runs[-1][1] + len(runs[-1][0]) == k:
@@ -397,7 +418,7 @@ def sequence_runs(xc, yc, rx, ry, circle, window):
     return [(np.array(p, np.int64).reshape(-1, 2), k, a, d) for p, k, a, d in runs]
 
 
-def _array(pixels):
+def _array(pixels: set[Pixel]) -> NDArray[np.int64]:
     return np.array(sorted(pixels), np.int64).reshape(-1, 2)
 
 
@@ -410,13 +431,13 @@ _ONE = 1 << _BITS
 _DEPTH = 24
 
 
-def _branch(a, b, t):
+def _branch(a: int, b: int, t: int) -> int:
     """b sqrt(1 - t**2 / a**2) for fixed-point a > 0, b and |t| <= a."""
     n = b * b * (a * a - t * t)
     return isqrt(n // (a * a)) if n > 0 else 0
 
 
-def _fixed(value):
+def _fixed(value: Real) -> int:
     """A real number (int, float, Fraction) in fixed point, to the nearest 2**-40."""
     return round(Fraction(value) * _ONE)
 
@@ -424,7 +445,7 @@ def _fixed(value):
 _SIGNS = ((1, 1), (-1, 1), (-1, -1), (1, -1))   # quadrants I..IV, counterclockwise
 
 
-def _quadrant(u, v):
+def _quadrant(u: Exact, v: Exact) -> int:
     """The quadrant (0..3) a point (u, v) relative to the center belongs to; an axis
     point starts the quadrant that leaves it counterclockwise."""
     if v == 0:
@@ -434,14 +455,15 @@ def _quadrant(u, v):
     return (0 if u > 0 else 1) if v > 0 else (2 if u < 0 else 3)
 
 
-def _key(q, u, v):
+def _key(q: int, u: int, v: int) -> tuple[int, int, int]:
     """The counterclockwise order of points of quadrant q: x falls in I and II and
     rises in III and IV, y the other way round in II and IV."""
     su, sv = _SIGNS[q]
     return (q, -sv * u, su * v)
 
 
-def local_runs(xc, yc, rx, ry, window, tolerance=0.025):
+def local_runs(xc: Real, yc: Real, rx: Real, ry: Real, window: Window, tolerance: float = 0.025
+               ) -> list[tuple[NDArray[np.float64], bool, tuple[Fraction, Fraction]]]:
     """The ideal ellipse (xc, yc, rx, ry) (reals of any size, rx, ry > 0) inside
     the ``window`` (x0, y0, x1, y1) of integers, as polylines within ``tolerance``
     pixel of it, counterclockwise: a list of ((K, 2) float64 array, closed, start),
@@ -458,9 +480,9 @@ def local_runs(xc, yc, rx, ry, window, tolerance=0.025):
     xc, yc, rx, ry = (_fixed(c) for c in (xc, yc, rx, ry))
     if rx <= 0 or ry <= 0:
         return []
-    pts = {}
+    pts: dict[Pixel, tuple[int, int, int]] = {}
 
-    def add(u, v):
+    def add(u: int, v: int) -> None:
         pts[(u, v)] = _key(_quadrant(u, v), u, v)
 
     for swap in (False, True):    # by columns where |slope| <= 1, by rows where >= 1
@@ -477,14 +499,14 @@ def local_runs(xc, yc, rx, ry, window, tolerance=0.025):
     for u, v in ((rx, 0), (0, ry), (-rx, 0), (0, -ry)):
         if x0 * _ONE <= xc + u <= x1 * _ONE and y0 * _ONE <= yc + v <= y1 * _ONE:
             add(u, v)
-    order = sorted(pts, key=pts.get)
+    order = sorted(pts, key=lambda p: pts[p])
     if not order:
         return []
 
-    def starts_quadrant(p):
+    def starts_quadrant(p: Pixel) -> bool:
         return p[0] == 0 or p[1] == 0
 
-    def linked(p, q):
+    def linked(p: Pixel, q: Pixel) -> bool:
         a, b = pts[p][0], pts[q][0]
         return a == b or ((a + 1) % 4 == b and starts_quadrant(q))
 
@@ -500,7 +522,7 @@ def local_runs(xc, yc, rx, ry, window, tolerance=0.025):
         runs = [r for r in runs if len(r) > 1]    # a point that only grazes it
         closed = False
 
-    def bisect(p, q, depth, out):
+    def bisect(p: Pixel, q: Pixel, depth: int, out: list[Pixel]) -> None:
         du, dv = q[0] - p[0], q[1] - p[1]
         su, sv = _SIGNS[pts[p][0]]      # the arc from p on is in p's quadrant
         if abs(du) >= abs(dv):
@@ -533,7 +555,7 @@ def local_runs(xc, yc, rx, ry, window, tolerance=0.025):
 
 # -- arc length (the dashes of wide and antialiased far conics) ---------------------
 
-def _carlson(x, y, z, r, rd):
+def _carlson(x: Decimal, y: Decimal, z: Decimal, r: Decimal, rd: bool) -> Decimal:
     """Carlson's symmetric elliptic integral R_F(x, y, z) (``rd`` False) or
     R_D(x, y, z) (``rd`` True, z > 0) in the current decimal context, relative error
     about ``r``: the duplication theorem until the arguments agree to r**(1/6), then
@@ -562,7 +584,7 @@ def _carlson(x, y, z, r, rd):
     return f * series / (a * a.sqrt()) + 3 * total
 
 
-def _from_minor(major, minor, t, w, r):
+def _from_minor(major: Decimal, minor: Decimal, t: Decimal, w: Decimal, r: Decimal) -> Decimal:
     """The arc length of the ellipse of semi-axes ``major`` >= ``minor`` > 0 from its
     minor-axis point to the point at (t, w) >= 0 along the (major, minor) axes:
     major E(psi | m), m = 1 - minor**2 / major**2, with sin psi : cos psi =
@@ -581,7 +603,7 @@ def _from_minor(major, minor, t, w, r):
                     - (1 - k2) * s * s2 * _carlson(c2, y, one, r, True) / 3)
 
 
-def arc_length(rx, ry, u, v):
+def arc_length(rx: int, ry: int, u: Fraction, v: Fraction) -> Fraction:
     """The arc length of the ideal ellipse (integer semi-axes rx, ry > 0 of any
     size) counterclockwise from (rx, 0) to its point (u, v) (relative to the center,
     exact Fractions within 2**-40 of the curve, e.g. a sample of
@@ -604,14 +626,14 @@ def arc_length(rx, ry, u, v):
         return Fraction(q * quarter + (part if starts_minor else quarter - part))
 
 
-def _dec(c):
+def _dec(c: Fraction) -> Decimal:
     """A Fraction as a decimal of the current precision."""
     return Decimal(c.numerator) / Decimal(c.denominator)
 
 
 # -- dashes along a degenerate ellipse ---------------------------------------------------
 
-def degenerate_path(xc, yc, rx, ry):
+def degenerate_path(xc: int, yc: int, rx: int, ry: int) -> list[Pixel]:
     """The turning points, in order, of the closed path a degenerate ellipse (integers,
     rx = 0 or ry = 0) is stroked along: its curve (xc + rx cos t, yc + ry sin t) from
     t = 0, as the kernels' polygon (:func:`scanline.draw.strokes.conic_polyline`)
@@ -622,10 +644,11 @@ def degenerate_path(xc, yc, rx, ry):
     return [(xc, yc), (xc, yc + ry), (xc, yc - ry)]
 
 
-def _legs(path):
+def _legs(path: Sequence[Pixel]) -> tuple[list[Leg], int]:
     """The legs of the closed axis-parallel path: (start, end, path length at the
     start, length), exact, and the path's whole length."""
-    legs, at = [], 0
+    legs: list[Leg] = []
+    at = 0
     for i, p in enumerate(path):
         q = path[(i + 1) % len(path)]
         n = abs(q[0] - p[0]) + abs(q[1] - p[1])
@@ -634,10 +657,11 @@ def _legs(path):
     return legs, at
 
 
-def _visible(legs, box):
+def _visible(legs: list[Leg], box: tuple[Exact, Exact, Exact, Exact]
+             ) -> list[tuple[Fraction, Fraction]]:
     """The path-length intervals (u, v) of the path inside ``box``, in path order,
     those meeting at a vertex inside it merged (exact Liang-Barsky per leg)."""
-    out = []
+    out: list[tuple[Fraction, Fraction]] = []
     for p, q, at, n in legs:
         t = clip_parameters(*p, *q, box) if n else None
         if t is None:
@@ -650,7 +674,8 @@ def _visible(legs, box):
     return out
 
 
-def _on(u, v, lengths, period, phase):
+def _on(u: Fraction, v: Fraction, lengths: list[Fraction], period: Fraction,
+        phase: Real) -> list[tuple[Fraction, Fraction]]:
     """The path-length intervals (a, b) within [u, v] where the dash pattern (on/off
     ``lengths``, exact Fractions, repeating every ``period`` from path length
     -``phase``) is on, in order: a < b, or a = b for a zero-length dash."""
@@ -669,7 +694,8 @@ def _on(u, v, lengths, period, phase):
     return out
 
 
-def _point(legs, total, s):
+def _point(legs: list[Leg], total: int, s: Fraction
+           ) -> tuple[tuple[Fraction, Fraction], tuple[int, int]]:
     """The point at path length s (taken modulo the path's length) and the
     direction (dx, dy) of the leg it is on (the one that starts there at a vertex)."""
     s %= total
@@ -680,20 +706,23 @@ def _point(legs, total, s):
     raise AssertionError("a path length beyond the path")
 
 
-def _piece(legs, total, a, b, epsilon):
+def _piece(legs: list[Leg], total: int, a: Fraction, b: Fraction, epsilon: float) -> NDArray[np.float64]:
     """The polyline from path length a to b >= a (b may run past the end into the
     start): its ends and the vertices between, as floats; a zero-length dash is
     given the length ``epsilon`` along its leg, as the kernels give it."""
     start, d = _point(legs, total, a)
+    pts: list[tuple[float | Fraction, float | Fraction]]
     if a == b:
         pts = [start, (start[0] + epsilon * d[0], start[1] + epsilon * d[1])]
     else:
         turns = [p for lap in (0, total) for p, _, at, _ in legs if a < at + lap < b]
-        pts = [start] + turns + [_point(legs, total, b)[0]]
+        pts = [start, *turns, _point(legs, total, b)[0]]
     return np.array([[float(x), float(y)] for x, y in pts], np.float64)
 
 
-def path_dashes(path, lengths, period, phase, box, epsilon):
+def path_dashes(path: list[Pixel], lengths: Sequence[float], period: Fraction, phase: Real,
+                box: tuple[Exact, Exact, Exact, Exact], epsilon: float
+                ) -> list[tuple[NDArray[np.float64], bool]]:
     """The dashes of the closed axis-parallel path ``path`` (exact vertices of any
     size, :func:`degenerate_path`) that lie in ``box`` (xmin, ymin, xmax, ymax), as
     the kernels' dasher cuts a closed polygon (``dash_pieces``): the pattern (on/off
@@ -706,9 +735,9 @@ def path_dashes(path, lengths, period, phase, box, epsilon):
     legs, total = _legs(path)
     if total == 0:
         return []
-    lengths = [Fraction(c) for c in lengths]
-    runs = [r for u, v in _visible(legs, box) for r in _on(u, v, lengths, period, phase)]
-    if runs and runs[0] == (0, total):
+    exact = [Fraction(c) for c in lengths]
+    runs = [r for u, v in _visible(legs, box) for r in _on(u, v, exact, period, phase)]
+    if runs and runs[0] == (Fraction(0), Fraction(total)):
         return [(np.array(path, np.float64), True)]
     if len(runs) > 1 and runs[0][0] == 0 and runs[-1][1] == total:
         runs = runs[1:-1] + [(runs[-1][0], total + runs[0][1])]

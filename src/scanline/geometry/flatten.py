@@ -30,6 +30,7 @@ curves, the Bernstein blending functions).
 """
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentValueError
@@ -39,7 +40,7 @@ from ..errors import ArgumentValueError
 MAX_STEPS = 1 << 16
 
 
-def _controls(name, value, count):
+def _controls(name: str, value: ArrayLike, count: int) -> NDArray[np.float64]:
     a = np.asarray(value, dtype=np.float64)
     if a.ndim == 2 and a.shape == (count, 2):
         a = a[None]
@@ -52,7 +53,7 @@ def _controls(name, value, count):
     return a
 
 
-def steps(controls, tolerance):
+def steps(controls: NDArray[np.float64], tolerance: float) -> NDArray[np.int64]:
     """The number of equal parameter steps that flattens each segment within
     ``tolerance`` (Wang's bound, see the module docstring).
 
@@ -82,10 +83,11 @@ def steps(controls, tolerance):
     second = controls[:, :-2] - 2 * controls[:, 1:-1] + controls[:, 2:]
     worst = np.sqrt((second ** 2).sum(axis=2)).max(axis=1)
     m = np.ceil(np.sqrt(n * (n - 1) * worst / (8.0 * tolerance)))
-    return np.clip(m, 1, MAX_STEPS).astype(np.int64)
+    counts: NDArray[np.int64] = np.clip(m, 1, MAX_STEPS).astype(np.int64)
+    return counts
 
 
-def _bernstein(controls, m):
+def _bernstein(controls: NDArray[np.float64], m: NDArray[np.int64]) -> NDArray[np.float64]:
     """Points of each segment at u = 1/m .. m/m (the start point is left out, so
     consecutive segments of a contour join without repeating points)."""
     n = controls.shape[1] - 1
@@ -101,7 +103,8 @@ def _bernstein(controls, m):
             + u * u * u * c[:, 3])
 
 
-def _flatten(name, controls, count, tolerance):
+def _flatten(name: str, controls: ArrayLike, count: int, tolerance: float
+             ) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
     tolerance = v.number("tolerance", tolerance)
     if tolerance <= 0:
         raise ArgumentValueError(f"tolerance must be > 0 (device units), got {tolerance}")
@@ -110,7 +113,7 @@ def _flatten(name, controls, count, tolerance):
     return _bernstein(c, m), m
 
 
-def quadratic(controls, tolerance=0.25):
+def quadratic(controls: ArrayLike, tolerance: float = 0.25) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
     """Flatten quadratic Bezier segments.
 
     Parameters
@@ -138,7 +141,7 @@ def quadratic(controls, tolerance=0.25):
     return _flatten("controls", controls, 3, tolerance)
 
 
-def cubic(controls, tolerance=0.25):
+def cubic(controls: ArrayLike, tolerance: float = 0.25) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
     """Flatten cubic Bezier segments; as :func:`quadratic` with P0 .. P3.
 
     Examples

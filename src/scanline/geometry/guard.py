@@ -26,10 +26,18 @@ Y.-D. Liang, B. A. Barsky, "A new concept and method for line clipping", ACM TOG
 
 import numbers
 from fractions import Fraction
+from typing import TYPE_CHECKING, Union, cast
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .._validate import COORD_LIMIT
+
+if TYPE_CHECKING:
+    from ..framebuffer import FrameBuffer
+
+#: An exact number of any size.
+Exact = Union[int, Fraction]
 
 #: Half side of the guard square (device pixels).
 GUARD = float(2**29)
@@ -41,12 +49,12 @@ EXACT_FROM = float(2**36)
 _SIDES = ((0, 1.0), (0, -1.0), (1, 1.0), (1, -1.0))
 
 
-def far(verts):
+def far(verts: NDArray[np.float64]) -> bool:
     """Whether any vertex of the (N, 2) array lies beyond the exact range."""
-    return verts.size > 0 and not np.abs(verts).max() <= COORD_LIMIT
+    return bool(verts.size > 0 and not np.abs(verts).max() <= COORD_LIMIT)
 
 
-def _cross(a, b, axis, bound):
+def _cross(a: NDArray[np.float64], b: NDArray[np.float64], axis: int, bound: float) -> NDArray[np.float64]:
     """The points where the segments a[i]-b[i] (rows (x, y, ...)) meet the line
     p[axis] = bound (each segment crosses it); columns after the first two (values
     linear along the segment, such as depths) are interpolated at the same point."""
@@ -56,7 +64,7 @@ def _cross(a, b, axis, bound):
         t = (bound - a[:, axis]) / (b[:, axis] - a[:, axis])
     big = np.flatnonzero(np.maximum(np.abs(a[:, :2]).max(axis=1),
                                     np.abs(b[:, :2]).max(axis=1)) > EXACT_FROM)
-    exact = {}
+    exact: dict[int, float] = {}
     for i in big.tolist():
         ai, bi = a[i, :2].tolist(), b[i, :2].tolist()
         r = (Fraction(bound) - Fraction(ai[axis])) / (Fraction(bi[axis]) - Fraction(ai[axis]))
@@ -70,7 +78,7 @@ def _cross(a, b, axis, bound):
     return out
 
 
-def ring(points):
+def ring(points: NDArray[np.float64]) -> NDArray[np.float64]:
     """The (N, 2) closed contour ``points`` clipped to the guard square
     (Sutherland-Hodgman, one side after another); may come back empty.  Columns
     after the first two are carried along, interpolated where an edge is cut."""
@@ -93,13 +101,14 @@ def ring(points):
     return np.ascontiguousarray(p, np.float64)
 
 
-def triangles(rows):
+def triangles(rows: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
     """Far triangles clipped to the guard square and cut again into triangles:
     ``rows`` (N, 3, K) per vertex x, y and K - 2 values linear on the screen (depth,
     1/w, attributes times 1/w).  Returns ``(rows, owner)``: the pieces (M, 3, K), a
     fan of each clipped triangle (their shared edges inside it, so each pixel is
     still covered once), and the triangle each comes from."""
-    out, owner = [], []
+    out: list[NDArray[np.float64]] = []
+    owner: list[int] = []
     for i in range(len(rows)):
         r = ring(rows[i])
         for j in range(1, len(r) - 1):
@@ -110,13 +119,14 @@ def triangles(rows):
             np.array(owner, np.int64))
 
 
-def areas(verts, offsets, polys):
+def areas(verts: NDArray[np.float64], offsets: NDArray[np.int64], polys: NDArray[np.int64]) -> tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.int64]]:
     """Clip every contour of a batch of areas (:func:`scanline.geometry.contours.batch`
     form) that reaches beyond the exact range; contours left empty are dropped.
     Returns new ``(verts, offsets, polys)`` (the same arrays when nothing is far)."""
     if not far(verts):
         return verts, offsets, polys
-    rings, counts = [], np.zeros(len(polys) - 1, np.int64)
+    rings: list[NDArray[np.float64]] = []
+    counts = np.zeros(len(polys) - 1, np.int64)
     for p in range(len(polys) - 1):
         for c in range(polys[p], polys[p + 1]):
             r = verts[offsets[c]:offsets[c + 1]]
@@ -133,26 +143,27 @@ def areas(verts, offsets, polys):
     return np.ascontiguousarray(new_verts), new_offsets, new_polys
 
 
-def segments(segs):
+def segments(segs: NDArray[np.float64]) -> NDArray[np.float64]:
     """Liang-Barsky: the (N, 4) segments (x0, y0, x1, y1) clipped to the guard
     square; a segment outside it becomes the point (-GUARD, -GUARD), outside every
     frame buffer (so rows keep their colors); rows within the exact range are
     unchanged (the same array when no row is far)."""
     if not far(segs.reshape(-1, 2)):
         return segs
-    out = segs.copy()
+    out: NDArray[np.float64] = segs.copy()
     for i in np.flatnonzero(np.abs(segs).max(axis=1) > COORD_LIMIT).tolist():
         piece = _clip_segment(segs[i])
         out[i] = (-GUARD, -GUARD, -GUARD, -GUARD) if piece is None else piece
     return out
 
 
-def _clip_segment(s):
+def _clip_segment(s: NDArray[np.float64]) -> NDArray[np.float64] | None:
     """One float segment clipped to the guard (:func:`clip_segment`), or None."""
     return clip_segment(*(Fraction(c) for c in s.tolist()))
 
 
-def clip_parameters(x0, y0, x1, y1, box):
+def clip_parameters(x0: Exact, y0: Exact, x1: Exact, y1: Exact,
+                    box: tuple[Exact, Exact, Exact, Exact]) -> tuple[Fraction, Fraction] | None:
     """Liang-Barsky in exact arithmetic: the parameters ``(t0, t1)`` (Fractions) of
     the part of the segment (x0, y0) + t (x1 - x0, y1 - y0), 0 <= t <= 1, inside
     ``box`` = (xmin, ymin, xmax, ymax), all exact numbers of any size (ints,
@@ -175,7 +186,7 @@ def clip_parameters(x0, y0, x1, y1, box):
     return t0, t1
 
 
-def clip_segment(x0, y0, x1, y1):
+def clip_segment(x0: Exact, y0: Exact, x1: Exact, y1: Exact) -> NDArray[np.float64] | None:
     """The segment (x0, y0)-(x1, y1), exact numbers of any size (ints, Fractions),
     clipped to the guard with exact parameters (:func:`clip_parameters`) and rounded
     once to floats: an array (x0, y0, x1, y1), or None when it misses the guard."""
@@ -188,7 +199,7 @@ def clip_segment(x0, y0, x1, y1):
                      float(y0 + t1 * dy)])
 
 
-def _clipped(segs):
+def _clipped(segs: NDArray[np.float64]) -> NDArray[np.float64]:
     """The segments (rows x0, y0, x1, y1) clipped to the guard, in order, those that
     miss it left out: a segment within the guard is kept as it is and one wholly
     beyond a side of it dropped (both as :func:`_clip_segment` gives them, without
@@ -199,15 +210,17 @@ def _clipped(segs):
     for c in (0, 1):
         beyond |= (segs[:, c] > GUARD) & (segs[:, c + 2] > GUARD)
         beyond |= (segs[:, c] < -GUARD) & (segs[:, c + 2] < -GUARD)
-    pieces, keep = segs.copy(), inside.copy()
+    pieces: NDArray[np.float64] = segs.copy()
+    keep = inside.copy()
     for j in np.flatnonzero(~inside & ~beyond).tolist():
         piece = _clip_segment(segs[j])
         if piece is not None:
             pieces[j], keep[j] = piece, True
-    return pieces[keep]
+    kept: NDArray[np.float64] = pieces[keep]
+    return kept
 
 
-def _runs(segs):
+def _runs(segs: NDArray[np.float64]) -> list[NDArray[np.float64]]:
     """Consecutive segments joined into polylines (a new one wherever a segment does
     not start where the previous one ended)."""
     if not len(segs):
@@ -217,7 +230,8 @@ def _runs(segs):
     return [np.vstack([segs[a:b, :2], segs[b - 1:b, 2:]]) for a, b in zip(bounds, bounds[1:])]
 
 
-def paths(verts, offsets, closed):
+def paths(verts: NDArray[np.float64], offsets: NDArray[np.int64], closed: NDArray[np.bool_]
+          ) -> tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.bool_], NDArray[np.int64]]:
     """Polylines (``closed[i]``: joined back to their start) cut where they leave the
     guard square: each far polyline becomes the open runs of its segments' clipped
     parts.  Returns ``(verts, offsets, closed, owner)``, ``owner[j]`` the polyline
@@ -225,7 +239,9 @@ def paths(verts, offsets, closed):
     n = len(offsets) - 1
     if not far(verts):
         return verts, offsets, closed, np.arange(n)
-    out, flags, owner = [], [], []
+    out: list[NDArray[np.float64]] = []
+    flags: list[bool] = []
+    owner: list[int] = []
     for i in range(n):
         p = verts[offsets[i]:offsets[i + 1]]
         if not far(p):
@@ -248,7 +264,8 @@ def paths(verts, offsets, closed):
             np.array(flags, bool), np.array(owner, np.int64))
 
 
-def conic_outside(fb, xc, yc, rx, ry, reach=1.0, fill=False):
+def conic_outside(fb: "FrameBuffer", xc: object, yc: object, rx: object, ry: object,
+                  reach: float = 1.0, fill: bool = False) -> bool:
     """Whether the axis-aligned ellipse (or circle, rx = ry) about (xc, yc), its
     outline widened by ``reach`` pixels (or its interior with ``fill``), certainly
     misses the frame buffer ``fb``, for a conic beyond the kernels' exact limits
@@ -266,16 +283,17 @@ def conic_outside(fb, xc, yc, rx, ry, reach=1.0, fill=False):
                for c in vals):
         return False
     try:
-        xc, yc, rx, ry = (float(c) for c in vals)
+        x, y, a, b = (float(cast(numbers.Real, c)) for c in vals)
     except OverflowError:
         return False
-    if not all(np.isfinite((xc, yc, rx, ry))) or rx < -0.5 or ry < -0.5:
+    if not all(np.isfinite((x, y, a, b))) or a < -0.5 or b < -0.5:
         return False
-    rows = (np.array([c], np.float64) for c in (xc, yc, rx, ry))
-    return bool(conics_outside(fb, *rows, reach, fill)[0])    # -0.5 < r < 0 rounds to 0
+    rows = [np.array([c], np.float64) for c in (x, y, a, b)]
+    return bool(conics_outside(fb, rows[0], rows[1], rows[2], rows[3], reach, fill)[0])    # -0.5 < r < 0 rounds to 0
 
 
-def conics_outside(fb, xc, yc, rx, ry, reach=1.0, fill=False):
+def conics_outside(fb: "FrameBuffer", xc: NDArray[np.float64], yc: NDArray[np.float64], rx: NDArray[np.float64], ry: NDArray[np.float64],
+                   reach: float = 1.0, fill: bool = False) -> NDArray[np.bool_]:
     """:func:`conic_outside` for arrays of finite centers and radii >= -0.5 (a batch
     of conics): a bool array, True where the conic certainly misses ``fb``."""
     rx, ry = np.maximum(rx, 0.0), np.maximum(ry, 0.0)

@@ -19,8 +19,10 @@ over points x edges, in chunks that bound the memory.
 """
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
+from .._typing import Points, Rule
 from ..errors import ArgumentTypeError, ArgumentValueError
 from .contours import check_vertices, contours
 
@@ -30,7 +32,7 @@ RULES = ("even-odd", "nonzero")
 CHUNK = 1 << 18
 
 
-def _points(points):
+def _points(points: Points) -> tuple[NDArray[np.float64], tuple[int, ...]]:
     try:
         a = np.asarray(points)
     except (TypeError, ValueError):
@@ -47,18 +49,19 @@ def _points(points):
     return a, shape
 
 
-def _edges(polygon):
+def _edges(polygon: ArrayLike) -> NDArray[np.float64]:
     """The non-horizontal edges, lower endpoint first: xlo, ylo, xhi, yhi, direction."""
     verts, offsets = contours("polygon", polygon)
-    a, b = [], []
+    rings: list[NDArray[np.float64]] = []
+    nexts: list[NDArray[np.float64]] = []
     for c in range(len(offsets) - 1):
         ring = verts[offsets[c]:offsets[c + 1]]
-        a.append(ring)
-        b.append(np.roll(ring, -1, axis=0))
-    if not a:
+        rings.append(ring)
+        nexts.append(np.roll(ring, -1, axis=0))
+    if not rings:
         return np.empty((5, 0))
-    a = np.concatenate(a)
-    b = np.concatenate(b)
+    a = np.concatenate(rings)
+    b = np.concatenate(nexts)
     keep = a[:, 1] != b[:, 1]
     a, b = a[keep], b[keep]
     up = a[:, 1] < b[:, 1]
@@ -67,7 +70,7 @@ def _edges(polygon):
     return np.stack([lo[:, 0], lo[:, 1], hi[:, 0], hi[:, 1], np.where(up, 1.0, -1.0)])
 
 
-def _left_crossings(pts, edges):
+def _left_crossings(pts: NDArray[np.float64], edges: NDArray[np.float64]) -> NDArray[np.int64]:
     """Signed sum of the edges crossed left of each point (+1 up, -1 down)."""
     out = np.zeros(len(pts), np.int64)
     if edges.shape[1] == 0 or len(pts) == 0:
@@ -97,7 +100,7 @@ def _left_crossings(pts, edges):
     return out
 
 
-def winding_number(points, polygon):
+def winding_number(points: Points, polygon: ArrayLike) -> NDArray[np.int64]:
     """Winding number of ``polygon`` about each point.
 
     Parameters
@@ -114,6 +117,15 @@ def winding_number(points, polygon):
         How many times the boundary winds counterclockwise about each point
         (clockwise counts negative).  Points on the boundary follow the top-left
         rule of the module docstring.
+
+    Raises
+    ------
+    TypeError
+        ``points`` or ``polygon`` is not an array of real numbers.
+    ValueError
+        ``points`` is not of shape (..., 2), ``polygon`` not of shape (N, 2) (or a
+        list of such arrays, or (C, N, 2)), or a coordinate is not finite or beyond
+        +-2**30.
 
     Notes
     -----
@@ -134,12 +146,13 @@ def winding_number(points, polygon):
     return (-_left_crossings(pts, _edges(polygon))).reshape(shape)
 
 
-def inside(points, polygon, rule="even-odd"):
+def inside(points: Points, polygon: ArrayLike, rule: Rule = "even-odd") -> NDArray[np.bool_]:
     """Which points are inside ``polygon`` under an inside-outside rule.
 
     Parameters
     ----------
     points : array_like, shape (M, 2) or (..., 2)
+        The points (x, y).
     polygon : array_like
         One contour or several (see :func:`winding_number`).
     rule : {"even-odd", "nonzero"}
@@ -150,6 +163,15 @@ def inside(points, polygon, rule="even-odd"):
     Returns
     -------
     ndarray of bool, shape (M,) (or the leading shape of ``points``)
+        True where the point is inside.
+
+    Raises
+    ------
+    TypeError
+        ``points`` or ``polygon`` is not an array of real numbers.
+    ValueError
+        ``rule`` is not one of the two rules, or the points or the polygon are
+        malformed (see :func:`winding_number`).
 
     Notes
     -----
@@ -176,5 +198,5 @@ def inside(points, polygon, rule="even-odd"):
     v.choice("rule", rule, RULES)
     pts, shape = _points(points)
     s = _left_crossings(pts, _edges(polygon))
-    out = (s & 1) != 0 if rule == "even-odd" else s != 0
-    return out.reshape(shape)
+    out: NDArray[np.bool_] = ((s & 1) != 0 if rule == "even-odd" else s != 0).reshape(shape)
+    return out

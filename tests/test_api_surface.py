@@ -20,6 +20,7 @@ COMPLETE = [
     "scanline.texture",
     "scanline.viewing",
     "scanline.depthbuffer",
+    "scanline.lighting",
 ]
 
 

@@ -9,16 +9,21 @@ section 14-6).
 
 import math
 from dataclasses import dataclass
+from typing import Sequence, Tuple, Union
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
 from ..transform3d.arrays import direction as unit_vector
 from ..transform3d.arrays import vector
 
+#: A 3-vector: three numbers, or a (3,) array.
+Vector3 = Union[Sequence[float], NDArray[np.float64]]
 
-def rgb_intensity(name, value):
+
+def rgb_intensity(name: str, value: ArrayLike) -> NDArray[np.float64]:
     """An intensity as an (3,) float64 array: a number (gray) or 3 numbers, each
     finite and >= 0."""
     if isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(value, bool):
@@ -40,7 +45,7 @@ def rgb_intensity(name, value):
     return a
 
 
-def attenuation_coefficients(value):
+def attenuation_coefficients(value: Sequence[float]) -> Tuple[float, float, float]:
     """(a0, a1, a2) of f(d) = 1 / (a0 + a1 d + a2 d^2): finite, >= 0, not all 0."""
     try:
         a = tuple(float(x) for x in value)
@@ -51,28 +56,63 @@ def attenuation_coefficients(value):
         raise ArgumentValueError(
             f"attenuation must be three finite numbers a0, a1, a2 >= 0, not all zero (f(d) "
             f"= 1 / (a0 + a1 d + a2 d^2)), got {v._show(value)}")
-    return a
+    return a[0], a[1], a[2]
 
 
 @dataclass(frozen=True, init=False)
 class AmbientLight:
     """Background light, the same from every direction: I_a (Hearn & Baker, 14-2,
-    "ambient light")."""
-    intensity: np.ndarray
+    "ambient light").
 
-    def __init__(self, intensity=0.2):
+    Parameters
+    ----------
+    intensity : float or (r, g, b)
+        I_a: a gray level or a triple, each finite and >= 0 (1: full).
+
+    Raises
+    ------
+    ArgumentValueError
+        A negative or non-finite intensity, or not 1 or 3 numbers.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> sl.lighting.AmbientLight(0.5).intensity.tolist()
+    [0.5, 0.5, 0.5]
+    """
+    intensity: NDArray[np.float64]
+
+    def __init__(self, intensity: ArrayLike = 0.2) -> None:
         object.__setattr__(self, "intensity", rgb_intensity("intensity", intensity))
 
 
 @dataclass(frozen=True, init=False)
 class DirectionalLight:
     """A source at infinity: parallel rays traveling along ``direction`` (so the
-    unit vector toward the light is L = -direction), no attenuation."""
-    direction: np.ndarray
-    intensity: np.ndarray
+    unit vector toward the light is L = -direction), no attenuation (Hearn & Baker
+    14-2).
+
+    Parameters
+    ----------
+    direction : 3-vector
+        The direction the light travels (normalized here).
+    intensity : float or (r, g, b)
+        I_l, finite and >= 0.
+    shadows : bool
+        Whether the light casts shadows (a shadow map or shadow rays).
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> sl.lighting.DirectionalLight(direction=(0, 0, -2)).direction.tolist()
+    [0.0, 0.0, -1.0]
+    """
+    direction: NDArray[np.float64]
+    intensity: NDArray[np.float64]
     shadows: bool
 
-    def __init__(self, direction=(0.0, 0.0, -1.0), intensity=1.0, shadows=False):
+    def __init__(self, direction: Vector3 = (0.0, 0.0, -1.0),
+                 intensity: ArrayLike = 1.0, shadows: bool = False) -> None:
         object.__setattr__(self, "direction", unit_vector("direction", direction))
         object.__setattr__(self, "intensity", rgb_intensity("intensity", intensity))
         object.__setattr__(self, "shadows", bool(shadows))
@@ -82,13 +122,37 @@ class DirectionalLight:
 class PointLight:
     """A point source at ``position``, radiating equally in all directions, its
     intensity attenuated with the distance d by f(d) = min(1, 1 / (a0 + a1 d + a2
-    d^2)) (Hearn & Baker, eq. 14-8; ``attenuation=(1, 0, 0)``: none)."""
-    position: np.ndarray
-    intensity: np.ndarray
-    attenuation: tuple
+    d^2)) (Hearn & Baker, eq. 14-8; ``attenuation=(1, 0, 0)``: none).
+
+    Parameters
+    ----------
+    position : 3-vector
+        The source's world position.
+    intensity : float or (r, g, b)
+        I_l, finite and >= 0.
+    attenuation : (a0, a1, a2)
+        The coefficients of f(d), finite, >= 0, not all zero.
+    shadows : bool
+        Whether the light casts shadows.
+
+    Raises
+    ------
+    ArgumentValueError
+        Bad attenuation coefficients or intensity.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> sl.lighting.PointLight((1, 2, 3), attenuation=(1, 0, 1)).attenuation
+    (1.0, 0.0, 1.0)
+    """
+    position: NDArray[np.float64]
+    intensity: NDArray[np.float64]
+    attenuation: Tuple[float, float, float]
     shadows: bool
 
-    def __init__(self, position, intensity=1.0, attenuation=(1.0, 0.0, 0.0), shadows=False):
+    def __init__(self, position: Vector3, intensity: ArrayLike = 1.0,
+                 attenuation: Sequence[float] = (1.0, 0.0, 0.0), shadows: bool = False) -> None:
         object.__setattr__(self, "position", np.array(vector("position", position)))
         object.__setattr__(self, "intensity", rgb_intensity("intensity", intensity))
         object.__setattr__(self, "attenuation", attenuation_coefficients(attenuation))
@@ -100,17 +164,53 @@ class SpotLight:
     """A point source that shines in a cone: along ``direction``, within
     ``angle`` (radians, half the cone's opening) of it, with the intensity falling
     as cos^exponent of the angle off the axis (Warn's model, 1983), and attenuated
-    with distance as a :class:`PointLight`."""
-    position: np.ndarray
-    direction: np.ndarray
-    intensity: np.ndarray
+    with distance as a :class:`PointLight` (Hearn & Baker 14-2).
+
+    Parameters
+    ----------
+    position : 3-vector
+        The source's world position.
+    direction : 3-vector
+        The cone's axis (normalized here).
+    intensity : float or (r, g, b)
+        I_l, finite and >= 0.
+    angle : float
+        Half the cone's opening, in (0, pi/2] radians.
+    exponent : float
+        Warn's exponent e >= 0 of cos^e.
+    attenuation : (a0, a1, a2)
+        As :class:`PointLight`'s.
+    shadows : bool
+        Whether the light casts shadows.
+
+    Raises
+    ------
+    ArgumentValueError
+        An angle outside (0, pi/2], a negative exponent, bad attenuation.
+
+    References
+    ----------
+    Warn, D. R. (1983). Lighting controls for synthetic images. SIGGRAPH '83.
+
+    Examples
+    --------
+    >>> import math, scanline as sl
+    >>> spot = sl.lighting.SpotLight((0, 0, 5), (0, 0, -3), angle=math.pi / 4, exponent=2)
+    >>> spot.direction.tolist(), round(spot.angle, 6), spot.exponent
+    ([0.0, 0.0, -1.0], 0.785398, 2.0)
+    """
+    position: NDArray[np.float64]
+    direction: NDArray[np.float64]
+    intensity: NDArray[np.float64]
     angle: float
     exponent: float
-    attenuation: tuple
+    attenuation: Tuple[float, float, float]
     shadows: bool
 
-    def __init__(self, position, direction, intensity=1.0, angle=math.radians(30),
-                 exponent=1.0, attenuation=(1.0, 0.0, 0.0), shadows=False):
+    def __init__(self, position: Vector3, direction: Vector3,
+                 intensity: ArrayLike = 1.0, angle: float = math.radians(30),
+                 exponent: float = 1.0, attenuation: Sequence[float] = (1.0, 0.0, 0.0),
+                 shadows: bool = False) -> None:
         object.__setattr__(self, "position", np.array(vector("position", position)))
         object.__setattr__(self, "direction", unit_vector("direction", direction))
         object.__setattr__(self, "intensity", rgb_intensity("intensity", intensity))
@@ -138,13 +238,44 @@ class AreaLight(PointLight):
     ``samples`` x ``samples`` shadow rays go to jittered points of as many equal cells
     of the parallelogram, and the fraction that reach it scales the light's term (the
     penumbra).
+
+    Parameters
+    ----------
+    corner : 3-vector
+        A corner of the parallelogram.
+    edge_u, edge_v : 3-vectors
+        Its edges from ``corner`` (not parallel, not zero).
+    intensity : float or (r, g, b)
+        I_l, finite and >= 0.
+    samples : int
+        Shadow rays per side of the sampling grid, 1..32.
+    shadows : bool
+        Whether the light casts shadows.
+
+    Raises
+    ------
+    ArgumentValueError
+        Parallel or zero edges, or samples outside 1..32.
+
+    References
+    ----------
+    Cook, R. L., Porter, T., Carpenter, L. (1984). Distributed ray tracing. SIGGRAPH '84.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> panel = sl.lighting.AreaLight((0, 0, 4), (2, 0, 0), (0, 2, 0))
+    >>> panel.position.tolist(), panel.samples          # lights as a point at its center
+    ([1.0, 1.0, 4.0], 4)
     """
-    corner: np.ndarray
-    edge_u: np.ndarray
-    edge_v: np.ndarray
+    corner: NDArray[np.float64]
+    edge_u: NDArray[np.float64]
+    edge_v: NDArray[np.float64]
     samples: int
 
-    def __init__(self, corner, edge_u, edge_v, intensity=1.0, samples=4, shadows=False):
+    def __init__(self, corner: Vector3, edge_u: Vector3,
+                 edge_v: Vector3, intensity: ArrayLike = 1.0, samples: int = 4,
+                 shadows: bool = False) -> None:
         c = np.array(vector("corner", corner))
         u = np.array(vector("edge_u", edge_u))
         w = np.array(vector("edge_v", edge_v))
@@ -165,8 +296,13 @@ class AreaLight(PointLight):
 
 LIGHTS = (AmbientLight, DirectionalLight, PointLight, SpotLight)
 
+#: A light source (an AreaLight is a PointLight).
+Light = Union[AmbientLight, DirectionalLight, PointLight, SpotLight]
+#: Light sources as the renderers take them: one, several, or None.
+Lights = Union[Light, Sequence[Light], None]
 
-def light_list(lights):
+
+def light_list(lights: object) -> Tuple[Light, ...]:
     """``lights`` as a tuple of light objects, or an error naming the bad one."""
     if lights is None:
         return ()

@@ -4,21 +4,28 @@ the ray tracer's reflectivity, index of refraction and roughness (14-6)."""
 
 import math
 from dataclasses import dataclass
+from typing import TYPE_CHECKING, Optional, Union
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
+from .._typing import Color
 from ..errors import ArgumentValueError
 
+if TYPE_CHECKING:
+    from ..texture.cubemap import CubeMap
+    from ..texture.texture import ImageSource, Texture
 
-def _coefficient(name, value):
+
+def _coefficient(name: str, value: float) -> float:
     x = v.number(name, value)
     if not 0.0 <= x <= 1.0:
         raise ArgumentValueError(f"{name} must be in 0..1, got {value!r}")
     return x
 
 
-def linear_color(name, color):
+def linear_color(name: str, color: Union[Color, NDArray[np.float64]]) -> NDArray[np.float64]:
     """A color spec as linear RGB reals 0..1 (the sRGB-like stored values decoded with
     the display gamma is the shading's job: here the stored values / 255)."""
     if isinstance(color, np.ndarray) and color.dtype.kind == "f" and color.shape == (3,):
@@ -79,26 +86,49 @@ class Material:
         Half the angle (radians) of the cone the ray tracer spreads reflected rays
         over: glossy reflection by distributed ray tracing (Cook, Porter and Carpenter
         1984); 0: a perfect mirror.
+
+    Raises
+    ------
+    ArgumentValueError
+        A coefficient outside 0..1, a negative shininess, a refractive index not in
+        (0, 100], a roughness outside 0..pi/2.
+
+    Notes
+    -----
+    The coefficients of the basic illumination model, Hearn & Baker 14-2 (ka, kd,
+    ks, n_s), 14-5 (k_t), 14-6 (S_d, S_s, k_r, eta) and 14-8 / 14-9 (the maps).
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> m = sl.lighting.Material(kd=0.5, color=(255, 0, 0))
+    >>> m.kd, m.color.tolist(), m.specular_color.tolist()
+    (0.5, [1.0, 0.0, 0.0], [1.0, 1.0, 1.0])
     """
     ka: float
     kd: float
     ks: float
     shininess: float
-    color: np.ndarray
-    specular_color: np.ndarray
+    color: NDArray[np.float64]
+    specular_color: NDArray[np.float64]
     transparency: float
-    texture: object
-    bump: object
+    texture: Optional["Texture"]
+    bump: Optional["Texture"]
     bump_scale: float
-    environment: object
+    environment: Union["CubeMap", "Texture", None]
     reflectivity: float
     refractive_index: float
     roughness: float
 
-    def __init__(self, ka=0.2, kd=0.7, ks=0.3, shininess=20.0, color="white",
-                 specular_color="white", transparency=0.0, texture=None, bump=None,
-                 bump_scale=1.0, environment=None, reflectivity=0.0,
-                 refractive_index=1.0, roughness=0.0):
+    def __init__(self, ka: float = 0.2, kd: float = 0.7, ks: float = 0.3,
+                 shininess: float = 20.0, color: Color = "white",
+                 specular_color: Color = "white", transparency: float = 0.0,
+                 texture: Union["Texture", "ImageSource", None] = None,
+                 bump: Union["Texture", "ImageSource", None] = None,
+                 bump_scale: float = 1.0,
+                 environment: Union["CubeMap", "Texture", "ImageSource", None] = None,
+                 reflectivity: float = 0.0, refractive_index: float = 1.0,
+                 roughness: float = 0.0) -> None:
         for name, value in (("ka", ka), ("kd", kd), ("ks", ks), ("transparency", transparency),
                             ("reflectivity", reflectivity)):
             object.__setattr__(self, name, _coefficient(name, value))
@@ -106,12 +136,13 @@ class Material:
             from ..texture.cubemap import environment_of
             from ..texture.texture import texture_of
 
-            texture, bump = (texture_of(name, value) for name, value in (
-                ("texture", texture), ("bump", bump)))
-            environment = environment_of("environment", environment)
-        object.__setattr__(self, "texture", texture)
-        object.__setattr__(self, "bump", bump)
-        object.__setattr__(self, "environment", environment)
+            object.__setattr__(self, "texture", texture_of("texture", texture))
+            object.__setattr__(self, "bump", texture_of("bump", bump))
+            object.__setattr__(self, "environment", environment_of("environment", environment))
+        else:
+            object.__setattr__(self, "texture", None)
+            object.__setattr__(self, "bump", None)
+            object.__setattr__(self, "environment", None)
         object.__setattr__(self, "bump_scale", v.number("bump_scale", bump_scale))
         eta = v.number("refractive_index", refractive_index)
         if not 0 < eta <= 100:
@@ -132,8 +163,26 @@ class Material:
         object.__setattr__(self, "specular_color", linear_color("specular_color",
                                                                 specular_color))
 
-    def with_color(self, color):
-        """The same material in another color."""
+    def with_color(self, color: Color) -> "Material":
+        """The same material in another color.
+
+        Parameters
+        ----------
+        color : color
+            The new surface color S_d.
+
+        Returns
+        -------
+        Material
+            A copy with that color, everything else the same.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> m = sl.lighting.Material(ks=0.5).with_color("blue")
+        >>> m.color.tolist(), m.ks
+        ([0.0, 0.0, 1.0], 0.5)
+        """
         new = object.__new__(Material)
         new.__dict__.update(self.__dict__)
         object.__setattr__(new, "color", linear_color("color", color))

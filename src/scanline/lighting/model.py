@@ -17,14 +17,17 @@ clamps them to 0..1 and encodes them with the display's gamma
 """
 
 from dataclasses import dataclass
+from typing import Optional, Sequence, Tuple, Union
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
 from ..transform3d.arrays import direction as unit_vector
 from ..transform3d.arrays import vector
-from .lights import AmbientLight, DirectionalLight, PointLight, SpotLight, light_list
+from .lights import (AmbientLight, DirectionalLight, Lights, PointLight, SpotLight, Vector3,
+                     light_list)
 from .material import Material
 
 SPECULAR = ("phong", "blinn")
@@ -33,36 +36,89 @@ SPECULAR = ("phong", "blinn")
 @dataclass(frozen=True)
 class ViewerAtInfinity:
     """A viewer infinitely far away (a parallel projection): V is the same unit
-    vector ``toward`` (from the surface to the viewer) at every point."""
-    toward: np.ndarray
+    vector ``toward`` (from the surface to the viewer) at every point.
+
+    Parameters
+    ----------
+    toward : ndarray (3,)
+        The unit vector from the surfaces to the viewer (:func:`at_infinity` makes
+        one from any non-zero vector).
+
+    Examples
+    --------
+    >>> import numpy as np, scanline as sl
+    >>> sl.lighting.ViewerAtInfinity(np.array([0.0, 0.0, 1.0])).toward.tolist()
+    [0.0, 0.0, 1.0]
+    """
+    toward: NDArray[np.float64]
 
 
-def at_infinity(toward):
-    """A :class:`ViewerAtInfinity` looking back along ``toward``."""
+def at_infinity(toward: Vector3) -> ViewerAtInfinity:
+    """A :class:`ViewerAtInfinity` looking back along ``toward``.
+
+    Parameters
+    ----------
+    toward : 3-vector
+        Non-zero: the direction from the surfaces to the viewer (normalized here).
+
+    Returns
+    -------
+    ViewerAtInfinity
+        The viewer of a parallel projection (Hearn & Baker 14-2: V constant).
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> sl.lighting.at_infinity((0, 0, 2)).toward.tolist()
+    [0.0, 0.0, 1.0]
+    """
     return ViewerAtInfinity(unit_vector("toward", toward))
 
 
-def attenuation(distance, coefficients):
+def attenuation(distance: ArrayLike, coefficients: Sequence[float]) -> NDArray[np.float64]:
     """Hearn & Baker's radial intensity attenuation f(d) = min(1, 1 / (a0 + a1 d +
-    a2 d^2)) (eq. 14-8), elementwise."""
+    a2 d^2)) (eq. 14-8), elementwise.
+
+    Parameters
+    ----------
+    distance : array_like
+        Distances d from the source.
+    coefficients : (a0, a1, a2)
+        The attenuation coefficients.
+
+    Returns
+    -------
+    ndarray
+        f(d) at each distance.
+
+    Examples
+    --------
+    >>> from scanline.lighting import attenuation
+    >>> attenuation([0, 1, 2], (1, 0, 1)).tolist()     # 1 / (1 + d^2), at most 1
+    [1.0, 0.5, 0.2]
+    """
     a0, a1, a2 = coefficients
     d = np.asarray(distance, np.float64)
     with np.errstate(divide="ignore"):
-        return np.minimum(1.0, 1.0 / (a0 + a1 * d + a2 * d * d))
+        f: NDArray[np.float64] = np.minimum(1.0, 1.0 / (a0 + a1 * d + a2 * d * d))
+    return f
 
 
-def _unit(a):
+def _unit(a: NDArray[np.float64]) -> NDArray[np.float64]:
     n = np.sqrt((a * a).sum(axis=-1, keepdims=True))
     with np.errstate(invalid="ignore", divide="ignore"):
         out = a / n
     return np.where(n > 0, out, 0.0)
 
 
-def _dot(a, b):
-    return (a * b).sum(axis=-1)
+def _dot(a: NDArray[np.float64], b: NDArray[np.float64]) -> NDArray[np.float64]:
+    dot: NDArray[np.float64] = (a * b).sum(axis=-1)
+    return dot
 
 
-def source_terms(light, points):
+def source_terms(light: Union[DirectionalLight, PointLight, SpotLight],
+                 points: NDArray[np.float64]
+                 ) -> Tuple[NDArray[np.float64], NDArray[np.float64]]:
     """(L, factor): unit vectors toward ``light`` (..., 3) and its attenuated
     intensity factor f_l (...,) at ``points``."""
     if isinstance(light, DirectionalLight):
@@ -78,8 +134,10 @@ def source_terms(light, points):
     return big_l, f
 
 
-def intensity(point, normal, eye, lights, material, *, specular="phong", color=None,
-              visibility=None):
+def intensity(point: ArrayLike, normal: ArrayLike, eye: Union[Vector3, ViewerAtInfinity],
+              lights: Lights, material: Material, *, specular: str = "phong",
+              color: Optional[ArrayLike] = None,
+              visibility: Optional[Sequence[ArrayLike]] = None) -> NDArray[np.float64]:
     """The illumination model at points: RGB intensities (..., 3).
 
     Parameters
@@ -101,6 +159,19 @@ def intensity(point, normal, eye, lights, material, *, specular="phong", color=N
         Per light, 1 where the point sees the light and 0 in its shadow (a shadow
         map's answer); ambient light ignores it.
 
+    Returns
+    -------
+    ndarray (..., 3) float64
+        The linear intensities, unclamped.
+
+    Raises
+    ------
+    ArgumentTypeError
+        ``material`` not a Material, or a light not a light.
+    ArgumentValueError
+        Shapes that do not end in 3 or do not broadcast; ``visibility`` not one
+        array per non-ambient light; an unknown ``specular``.
+
     Examples
     --------
     A white surface facing a light straight on, viewed from the light's side:
@@ -116,7 +187,7 @@ def intensity(point, normal, eye, lights, material, *, specular="phong", color=N
         raise ArgumentTypeError(f"material must be a scanline.lighting.Material, got "
                                 f"{v._show(material)}")
     v.choice("specular", specular, SPECULAR)
-    lights = light_list(lights)
+    all_lights = light_list(lights)
     p = v.real_array("point", point, "(..., 3)")
     n = v.real_array("normal", normal, "(..., 3)")
     if p.shape[-1:] != (3,) or n.shape[-1:] != (3,):
@@ -135,9 +206,12 @@ def intensity(point, normal, eye, lights, material, *, specular="phong", color=N
         big_v = _unit(np.array(vector("eye", eye)) - p)
     sd = material.color if color is None else np.asarray(color, np.float64)
     out = np.zeros(p.shape[:-1] + (3,))
-    out += material.ka * sd * sum((light.intensity for light in lights
-                                   if isinstance(light, AmbientLight)), np.zeros(3))
-    sources = [light for light in lights if not isinstance(light, AmbientLight)]
+    ambient = np.zeros(3)
+    for light in all_lights:
+        if isinstance(light, AmbientLight):
+            ambient = ambient + light.intensity
+    out += material.ka * sd * ambient
+    sources = [light for light in all_lights if not isinstance(light, AmbientLight)]
     if visibility is not None and len(visibility) != len(sources):
         raise ArgumentValueError(f"visibility must hold one array per non-ambient light "
                                  f"({len(sources)}), got {len(visibility)}")
@@ -161,12 +235,46 @@ def intensity(point, normal, eye, lights, material, *, specular="phong", color=N
     return out
 
 
-def depth_cue(intensities, distance, near_distance, far_distance, cue=(1.0, 0.25),
-              background=(0.0, 0.0, 0.0)):
+def depth_cue(intensities: ArrayLike, distance: ArrayLike, near_distance: float,
+              far_distance: float, cue: Tuple[float, float] = (1.0, 0.25),
+              background: ArrayLike = (0.0, 0.0, 0.0)) -> NDArray[np.float64]:
     """Depth cueing (Hearn & Baker, section 9-1 and 14-2): the intensities (..., 3)
     blended toward ``background`` with the factor f = f_far + (f_near - f_far)
     (d_max - d) / (d_max - d_min) of the distance d between ``near_distance`` (f =
-    ``cue[0]``) and ``far_distance`` (f = ``cue[1]``): I' = f I + (1 - f) I_bg."""
+    ``cue[0]``) and ``far_distance`` (f = ``cue[1]``): I' = f I + (1 - f) I_bg.
+
+    Parameters
+    ----------
+    intensities : array_like (..., 3)
+        The intensities before cueing.
+    distance : array_like (...)
+        Each point's distance d.
+    near_distance, far_distance : float
+        d_min and d_max: f is ``cue[0]`` at and before d_min, ``cue[1]`` at and past
+        d_max.
+    cue : (near, far)
+        The factors, each in 0..1.
+    background : array_like (3,)
+        I_bg, the intensity blended toward.
+
+    Returns
+    -------
+    ndarray (..., 3) float64
+        The cued intensities.
+
+    Raises
+    ------
+    ArgumentValueError
+        Factors outside 0..1, or intensities and distances that do not match.
+
+    Examples
+    --------
+    Halfway between d_min = 0 and d_max = 10, f = 0.25 + (1 - 0.25) / 2 = 0.625:
+
+    >>> from scanline.lighting import depth_cue
+    >>> depth_cue([[1.0, 1.0, 1.0]], [5.0], 0, 10).tolist()
+    [[0.625, 0.625, 0.625]]
+    """
     near, far = (v.number("cue", c) for c in cue)
     if not (0 <= near <= 1 and 0 <= far <= 1):
         raise ArgumentValueError(f"cue must be (near, far) factors in 0..1, got {cue!r}")
@@ -180,16 +288,44 @@ def depth_cue(intensities, distance, near_distance, far_distance, cue=(1.0, 0.25
         t = np.clip((far_distance - d) / span, 0.0, 1.0) if span > 0 else np.ones_like(d)
         f = (far + (near - far) * t)[..., None]
         try:
-            return f * i + (1.0 - f) * bg
+            cued: NDArray[np.float64] = f * i + (1.0 - f) * bg
+            return cued
         except ValueError:
             raise ArgumentValueError(
                 f"intensities (..., 3) and distance (...) must match point for point, got "
                 f"shapes {i.shape} and {d.shape}") from None
 
 
-def transparency(reflected, transmitted, kt):
+def transparency(reflected: ArrayLike, transmitted: ArrayLike,
+                 kt: ArrayLike) -> NDArray[np.float64]:
     """Hearn & Baker's simple transparency (section 14-5): I = (1 - k_t) I_refl +
-    k_t I_trans."""
+    k_t I_trans.
+
+    Parameters
+    ----------
+    reflected : array_like (..., 3)
+        I_refl, the intensity of the transparent surface itself.
+    transmitted : array_like (..., 3)
+        I_trans, the intensity of what lies behind it.
+    kt : array_like (...)
+        The transmission coefficients, each in 0..1.
+
+    Returns
+    -------
+    ndarray (..., 3) float64
+        The blended intensities.
+
+    Raises
+    ------
+    ArgumentValueError
+        ``kt`` outside 0..1, or shapes that do not match.
+
+    Examples
+    --------
+    >>> from scanline.lighting import transparency
+    >>> transparency((1.0, 0.0, 0.0), (0.0, 0.0, 1.0), 0.25).tolist()
+    [0.75, 0.0, 0.25]
+    """
     kt = v.real_array("kt", kt, "(...)")
     if kt.size and (not np.isfinite(kt).all() or kt.min() < 0 or kt.max() > 1):
         raise ArgumentValueError("kt must be in 0..1")
@@ -197,7 +333,8 @@ def transparency(reflected, transmitted, kt):
     reflected = v.real_array("reflected", reflected, "(..., 3)")
     transmitted = v.real_array("transmitted", transmitted, "(..., 3)")
     try:
-        return (1.0 - kt) * reflected + kt * transmitted
+        blended: NDArray[np.float64] = (1.0 - kt) * reflected + kt * transmitted
+        return blended
     except ValueError:
         raise ArgumentValueError(f"reflected, transmitted and kt must match point for point, got "
                                  f"shapes {reflected.shape}, {transmitted.shape} and "

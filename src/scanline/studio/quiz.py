@@ -45,8 +45,8 @@ class Question:
     offered: tuple[str, ...] = ()
 
 
-def _pixel(x: str, y: str) -> Question:
-    return Question("pixel", (x, y), "Which pixel does this step plot?")
+def _pixel(x: str, y: str, prompt: str = "Which pixel does this step plot?") -> Question:
+    return Question("pixel", (x, y), prompt)
 
 
 def _choice(column: str, prompt: str, offered: tuple[str, ...] = ()) -> Question:
@@ -65,8 +65,8 @@ QUESTIONS: dict[str, Question] = {
     "dda": _pixel("x", "y"),
     "midpoint-circle": _pixel("xc+x", "yc+y"),
     "midpoint-ellipse": _pixel("xc+x", "yc+y"),
-    "flood-fill": _pixel("x", "y"),
-    "boundary-fill": _pixel("x", "y"),
+    "flood-fill": _pixel("x", "y", "Which seed is popped from the stack at this step?"),
+    "boundary-fill": _pixel("x", "y", "Which seed is popped from the stack at this step?"),
     "scan-line-fill": _choice("spans", "Which spans does this scan line fill?"),
     "cohen-sutherland": _choice("decision", "What do the region codes decide?"),
     "cohen-sutherland-3d": _choice("decision", "What do the region codes decide?"),

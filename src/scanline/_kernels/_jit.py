@@ -19,9 +19,26 @@ import types
 import warnings
 
 import numpy as np
-from numba import njit
-from numba.core.dispatcher import Dispatcher
-from numba.core.errors import NumbaWarning
+
+
+def check_thread_setting(environ=os.environ):
+    """Refuse a ``NUMBA_NUM_THREADS`` that is not a positive integer, before numba
+    is imported: numba itself raises a bare "Number of threads specified must be > 0"
+    for 0 or a negative count and ignores other text with a warning.  (A count above
+    the machine's cores is clamped by :func:`scanline._kernels._threads.threads`.)"""
+    value = environ.get("NUMBA_NUM_THREADS")
+    if value is not None and not (value.strip().isdigit() and int(value) > 0):
+        raise ValueError(
+            f"NUMBA_NUM_THREADS must be a positive integer (the threads a batch drawing "
+            f"call uses, at most {len(os.sched_getaffinity(0))} on this machine), got "
+            f"{value!r}; unset it to use every core")
+
+
+check_thread_setting()
+
+from numba import njit  # noqa: E402  (after the check: numba reads the setting)
+from numba.core.dispatcher import Dispatcher  # noqa: E402
+from numba.core.errors import NumbaWarning  # noqa: E402
 
 
 def _compiled(**options):

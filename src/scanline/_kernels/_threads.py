@@ -12,6 +12,7 @@ import contextlib
 import os
 import queue
 import threading
+import warnings
 
 from ._jit import TWIN_WORK, WAIT, call
 
@@ -75,13 +76,37 @@ def _submit(fn):
     return wait
 
 
+def cores():
+    """The CPU cores this process may run on."""
+    return len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1
+
+
+#: Whether :func:`threads` has warned of a thread count above the cores (once).
+_warned = []
+
+
 def threads():
     """How many threads :func:`call_in_bands` uses: numba's thread count (1 on one
     core, ``NUMBA_NUM_THREADS`` or ``numba.set_num_threads`` to change it), or 1
-    inside :func:`one_thread`."""
+    inside :func:`one_thread`.  A count above the machine's cores is clamped to
+    them, with a RuntimeWarning the first time: more threads than cores only take
+    turns (``NUMBA_NUM_THREADS`` of 0, a negative count or text is refused when the
+    kernels are loaded, :func:`scanline._kernels._jit.check_thread_setting`)."""
     import numba
 
-    return 1 if getattr(_local, "one", False) else numba.get_num_threads()
+    if getattr(_local, "one", False):
+        return 1
+    count = numba.get_num_threads()
+    most = cores()
+    if count > most:
+        if not _warned:
+            _warned.append(True)
+            warnings.warn(f"numba's thread count {count} (NUMBA_NUM_THREADS or "
+                          f"numba.set_num_threads) is above this machine's {most} cores; "
+                          f"batch drawing calls use {most} threads", RuntimeWarning,
+                          stacklevel=3)
+        return most
+    return count
 
 
 @contextlib.contextmanager

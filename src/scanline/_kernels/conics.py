@@ -13,6 +13,7 @@ import numpy as np
 
 from ._jit import helper, inline, kernel
 from .raster import band_sorted, put, store
+from .spans import strip
 from .variants import BYTES
 
 #: Ellipse region labels in traces; TIP is the run along y = 0 that completes flat
@@ -176,15 +177,23 @@ def draw_circle(buf, layout, width, height, xc, yc, r, color):
 
 
 @kernel
-def draw_circles(buf, layout, width, height, circles, colors):
+def draw_circles(band, step, buf, layout, width, height, circles, colors):
     """Draw N circles, ``circles[i] = (xc, yc, r)``, with ``colors[i]`` (or
-    ``colors[0]`` for all)."""
+    ``colors[0]`` for all), in order, into strip ``band`` of ``step`` of the rows
+    (:func:`scanline._kernels.spans.strip`: one call per thread, the pixels
+    independent of the thread count)."""
+    top, rows = strip(band, step, height)
+    if rows <= 0:
+        return
+    view = buf[top:top + rows]
     one = colors.shape[0] == 1
     if one:  # one color: any order gives the same image
         circles = band_sorted(circles, height)
     for i in range(circles.shape[0]):
-        draw_circle(buf, layout, width, height, circles[i, 0], circles[i, 1], circles[i, 2],
-                    colors[0 if one else i])
+        yc = circles[i, 1] - top
+        r = circles[i, 2]
+        if yc + r >= 0 and yc - r < rows:
+            draw_circle(view, layout, width, rows, circles[i, 0], yc, r, colors[0 if one else i])
 
 
 @kernel
@@ -327,15 +336,23 @@ def draw_ellipse(buf, layout, width, height, xc, yc, rx, ry, color):
 
 
 @kernel
-def draw_ellipses(buf, layout, width, height, ellipses, colors):
+def draw_ellipses(band, step, buf, layout, width, height, ellipses, colors):
     """Draw N ellipses, ``ellipses[i] = (xc, yc, rx, ry)``, with ``colors[i]`` (or
-    ``colors[0]`` for all)."""
+    ``colors[0]`` for all), in order, into strip ``band`` of ``step`` of the rows (as
+    :func:`draw_circles`)."""
+    top, rows = strip(band, step, height)
+    if rows <= 0:
+        return
+    view = buf[top:top + rows]
     one = colors.shape[0] == 1
     if one:  # one color: any order gives the same image
         ellipses = band_sorted(ellipses, height)
     for i in range(ellipses.shape[0]):
-        draw_ellipse(buf, layout, width, height, ellipses[i, 0], ellipses[i, 1],
-                     ellipses[i, 2], ellipses[i, 3], colors[0 if one else i])
+        yc = ellipses[i, 1] - top
+        ry = ellipses[i, 3]
+        if yc + ry >= 0 and yc - ry < rows:
+            draw_ellipse(view, layout, width, rows, ellipses[i, 0], yc, ellipses[i, 2], ry,
+                         colors[0 if one else i])
 
 
 @kernel

@@ -31,3 +31,18 @@ def span(buf, layout, width, height, y, x0, x1, color):
             buf[y, x, 2] = color[2]
             if n > 3:
                 buf[y, x, 3] = color[3]
+
+
+@inline
+def strip(band, step, height):
+    """The rows ``(top, rows)`` of strip ``band`` of ``step``: the raster's rows cut
+    into ``step`` contiguous strips of nearly equal height, one per thread
+    (:func:`scanline._kernels._threads.call_in_bands`; DESIGN.md, "Parallel work").
+    A batch kernel given one strip draws each primitive that reaches it into a view
+    of the strip's rows, the primitive moved down by ``top``: its pixels move with
+    it, so each pixel is written by one thread, by the primitives in the batch's
+    order, whatever the thread count.  Contiguous strips, not interleaved bands:
+    a primitive smaller than a strip is then drawn whole, once, by one thread (a
+    circle clipped to a band of rows still steps through its whole octant)."""
+    top = height * band // step
+    return top, height * (band + 1) // step - top

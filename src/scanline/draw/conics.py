@@ -6,7 +6,8 @@ import numpy as np
 
 from .. import _validate as v
 from .._kernels import conics as k
-from .._kernels._jit import call, call_typed
+from .._kernels._jit import call_typed
+from .._kernels._threads import call_in_bands
 from .._kernels.variants import layout
 from ..errors import ArgumentValueError
 from ..geometry import guard
@@ -177,7 +178,7 @@ def circles(fb, circles, color=None, *, style=None, antialias=False, width=None,
 
     def near(arr, c):
         arr = np.ascontiguousarray(arr[:, :3])
-        call(k.draw_circles, lambda: conic_work(arr[:, 2], arr[:, 2], width, height), buf,
+        call_in_bands(k.draw_circles, conic_work(arr[:, 2], arr[:, 2], width, height), buf,
              layout(packed), width, height, arr, colors(fb, c, len(arr)))
 
     far.batch(fb, rows, color, _exact_rows(rows, True), near,
@@ -296,7 +297,7 @@ def ellipses(fb, ellipses, color=None, *, style=None, antialias=False, width=Non
     buf, packed, width, height = target(fb)
 
     def near(arr, c):
-        call(k.draw_ellipses, lambda: conic_work(arr[:, 2], arr[:, 3], width, height), buf,
+        call_in_bands(k.draw_ellipses, conic_work(arr[:, 2], arr[:, 3], width, height), buf,
              layout(packed), width, height, arr, colors(fb, c, len(arr)))
 
     far.batch(fb, rows, color, ok, near, lambda *row: _far(fb, *row, None, False, False))

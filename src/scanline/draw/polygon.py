@@ -8,6 +8,7 @@ import numpy as np
 from .. import _validate as v
 from .._kernels import polygon as k
 from .._kernels._jit import call, call_typed
+from .._kernels._threads import call_in_bands
 from .._kernels.variants import layout
 from ..errors import ArgumentValueError
 from ..geometry import contours as parse
@@ -287,5 +288,5 @@ def polygons(fb, polygons, color=None, rule="even-odd", counts=None, antialias=F
     if len(values) == 1 and n > 1:   # one color: the order cannot change the image
         verts, offsets, polys = call(k.band_reordered, len(verts), verts, offsets, polys, 0,
                                      height)
-    call(k.fill_polygons, work, buf, layout(packed), width, height, 0, 0, verts, offsets, polys,
-         values, code, most)
+    call_in_bands(k.fill_polygons_in_strip, work, buf, layout(packed), width, height, 0, 0,
+                  verts, offsets, polys, values, code, most)

@@ -589,7 +589,36 @@ def _probe(address, timeout):
         f"({why}); check the address (tcp://HOST:PORT) and that the scheduler is running")
 
 
+class WorkerLost(ScanlineError):
+    """Frames a Dask cluster could not render: the worker rendering them died (as often
+    as the scheduler allows, ``distributed.scheduler.allowed-failures``), or the cluster
+    had no worker for :data:`NO_WORKER_TIMEOUT` seconds."""
+
+
+#: Seconds a render waits for a cluster without workers before it gives up.
+NO_WORKER_TIMEOUT = 30.0
+
+
+def _span(part):
+    """Frames ``part`` written out for a message: ``7`` or ``8-15``."""
+    return f"{part[0]}" if len(part) == 1 else f"{part[0]}-{part[-1]}"
+
+
 def _dask(render, indices, client, owned):
+    """The frames ``indices`` rendered on the Dask ``client``'s workers, in order.
+
+    Chunks are sized to the workers (:func:`iter_chunks`) and a new one is sent as
+    soon as any chunk comes back (``distributed.as_completed``), not only the oldest:
+    a worker that finishes first gets more work at once, so no worker waits for a slow
+    neighbour's chunk.  The frames that come back early wait here, unpacked, until
+    their turn; at most four chunks per worker are in flight, and eight in flight or
+    waiting, which bounds the memory.  A chunk whose worker died (``KilledWorker``), or a cluster left
+    without workers for :data:`NO_WORKER_TIMEOUT` seconds, raises
+    :class:`WorkerLost` naming the frames lost, and the other chunks are cancelled."""
+    from concurrent.futures import CancelledError
+
+    from distributed import as_completed
+
     try:
         workers = max(1, len(client.scheduler_info().get("workers", {})))
         parts = iter_chunks(indices, workers)
@@ -603,34 +632,110 @@ def _dask(render, indices, client, owned):
         slots = _Slots.in_shared_file(window)
         path = None if slots is None else slots.path
         memory = None if slots is None else slots.memory
-        pending = collections.deque()
+        pending = {}                 # future -> (chunk number, slot, frames)
+        done = {}                    # chunk number -> its images, waiting for their turn
         free = list(range(window))
         queue = iter(parts)
+        arrived = as_completed(loop=client.loop, raise_errors=False)
+        sent, turn = 0, 0
 
-        def submit():
-            for part in queue:
+        def refill():
+            nonlocal sent
+            while len(pending) < window and len(pending) + len(done) < 2 * window:
+                part = next(queue, None)
+                if part is None:
+                    return
                 slot = free.pop()
-                pending.append((client.submit(render_chunk, shared, part, compress, path, slot,
-                                              pure=False), slot))
-                return
+                future = client.submit(render_chunk, shared, part, compress, path, slot,
+                                       pure=False)
+                pending[future] = (sent, slot, part)
+                arrived.add(future)
+                sent += 1
 
         try:
-            for _ in range(window):
-                submit()
+            refill()
             while pending:
-                future, slot = pending.popleft()
-                images = [unpack(p, memory) for p in future.result()]
-                free.append(slot)                   # the pixels are copied out
-                submit()
-                yield from images
+                _await(arrived, client, pending)
+                for future in arrived.next_batch(block=False):
+                    number, slot, part = pending.pop(future)
+                    try:
+                        packed = future.result() if future.status == "finished" else None
+                    except CancelledError:      # finished, then its workers all died
+                        packed = None
+                    if packed is None:
+                        _lost(future, part, pending)
+                    done[number] = [unpack(p, memory) for p in packed]
+                    free.append(slot)               # the pixels are copied out
+                    future.release()
+                refill()
+                while turn in done:
+                    images = done.pop(turn)
+                    turn += 1
+                    yield from images
         finally:
             if pending:
-                client.cancel([future for future, _ in pending])
+                client.cancel(list(pending))
             if slots is not None:
                 slots.close()
     finally:
         if owned:
             client.close()
+
+
+def _await(arrived, client, pending):
+    """Wait until a chunk of ``arrived`` is back; raise :class:`WorkerLost` when the
+    cluster has had no worker for :data:`NO_WORKER_TIMEOUT` seconds (its tasks would
+    wait for ever)."""
+    since, asked = None, time.monotonic()
+    while not arrived.has_ready():
+        with arrived.thread_condition:
+            arrived.thread_condition.wait(timeout=0.1)
+        now = time.monotonic()
+        if arrived.has_ready() or now - asked < 1.0:     # ask the scheduler once a second
+            continue
+        asked = now
+        if client.scheduler_info().get("workers"):
+            since = None
+        elif since is None:
+            since = now
+        elif now - since > NO_WORKER_TIMEOUT:
+            frames = sorted(i for _, _, part in pending.values() for i in part)
+            raise WorkerLost(
+                f"frames {_spans(frames)} were lost: the Dask cluster has had no worker for "
+                f"{NO_WORKER_TIMEOUT:g} s; start workers (or a cluster with a nanny, which "
+                "restarts them) and render again")
+
+
+def _spans(frames):
+    """Sorted frame numbers as runs: ``3-7, 12, 20-23``."""
+    runs, start = [], 0
+    for k in range(1, len(frames) + 1):
+        if k == len(frames) or frames[k] != frames[k - 1] + 1:
+            runs.append(_span(frames[start:k]))
+            start = k
+    return ", ".join(runs)
+
+
+def _lost(future, part, pending):
+    """Raise the error of the chunk ``part`` (its ``future`` failed): the render
+    function's own error, or :class:`WorkerLost` naming the frames lost (those of this
+    chunk and of every ``pending`` chunk that failed too) when the worker rendering
+    them died, or their tasks were cancelled (the workers holding the scattered render
+    function all died, or the cluster closed)."""
+    error = future.exception() if future.status == "error" else None
+    if error is not None and type(error).__name__ != "KilledWorker":
+        raise error
+    failed = [future] + [f for f in pending if f.status in ("error", "cancelled")]
+    frames = sorted({i for f in failed for i in (part if f is future else pending[f][2])})
+    died = any(f.status == "error" for f in failed)
+    raise WorkerLost(
+        f"frames {_spans(frames)} were lost: "
+        + ("the Dask worker rendering them died (its process ended: out of memory, a "
+           "crash in the render function, or killed) as many times as the scheduler "
+           "retries a task" if died else
+           "their tasks were cancelled, because the Dask workers holding the render "
+           "function died or the cluster closed")
+        + "; the render is stopped") from error
 
 
 # -- the one entry point -----------------------------------------------------------------------

@@ -11,11 +11,12 @@ to them), so the figures come with every installation.
 """
 
 import os
+from importlib import resources
 
 from scanline.gallery.primitives import Figure
 
 #: The folder of example scene files.
-EXAMPLES = os.path.normpath(os.path.join(os.path.dirname(__file__), "..", "data", "scenes"))
+EXAMPLES = str(resources.files("scanline") / "data" / "scenes")
 
 
 def segment_table(scene):

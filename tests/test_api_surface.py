@@ -19,8 +19,10 @@ COMPLETE = [
     "scanline.warmup",
     "scanline.texture",
     "scanline.viewing",
+    "scanline.transform",
     "scanline.depthbuffer",
     "scanline.lighting",
+    "scanline.framebuffer",
 ]
 
 

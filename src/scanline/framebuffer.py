@@ -28,7 +28,8 @@ import os
 import signal
 import tempfile
 import threading
-from typing import Any, BinaryIO, Callable, List, Optional, Sequence, Tuple, Union
+from types import FrameType
+from typing import Any, BinaryIO, Callable, Iterator, List, Optional, Sequence, Tuple, Union, cast
 
 import numpy as np
 from PIL import Image
@@ -56,20 +57,52 @@ _REPR_SIZE = 256
 _REPR_SCALE = 16
 
 
-def _umask():
+def _umask() -> int:
     mask = os.umask(0)
     os.umask(mask)
     return mask
 
 
-def output_path(path, name="path"):
+def output_path(path: object, name: str = "path") -> str:
     """``path`` (a str or os.PathLike) as a str, checked as the name of a file to
-    write: no NUL character, not a folder, in a folder that exists."""
+    write: no NUL character, not a folder, in a folder that exists.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The name of the file to write.
+    name : str
+        The argument's name, for error messages.
+
+    Returns
+    -------
+    str
+        ``path`` as a str.
+
+    Raises
+    ------
+    ArgumentTypeError
+        When ``path`` is not a str or os.PathLike.
+    ArgumentValueError
+        When it is empty, holds a NUL character, names a folder or lies in a folder
+        that does not exist.
+
+    Examples
+    --------
+    >>> import pathlib
+    >>> from scanline.framebuffer import output_path
+    >>> output_path(pathlib.Path("picture.png"))
+    'picture.png'
+    >>> output_path("no-such-folder/picture.png")
+    Traceback (most recent call last):
+      ...
+    scanline.errors.ArgumentValueError: path='no-such-folder/picture.png': the folder ... does not exist
+    """
     if not isinstance(path, (str, os.PathLike)):
         raise ArgumentTypeError(f"{name} must be a file name (str or os.PathLike), got "
                                 f"{v._show(path)}")
     try:
-        path = os.fsdecode(os.fspath(path))
+        path = os.fsdecode(os.fspath(cast("str | os.PathLike[str]", path)))
     except (TypeError, UnicodeDecodeError):
         raise ArgumentTypeError(f"{name} must be a file name, got {v._show(path)}") from None
     if "\0" in path:
@@ -90,7 +123,7 @@ class _Terminated(BaseException):
 
 
 @contextlib.contextmanager
-def _terminate_cleanly():
+def _terminate_cleanly() -> Iterator[None]:
     """While the block runs, SIGTERM raises :class:`_Terminated` instead of killing the
     process at once, so that the temporary file is removed; the caller then
     terminates as SIGTERM would.  Only in the main thread, and only where SIGTERM
@@ -100,7 +133,7 @@ def _terminate_cleanly():
         yield
         return
 
-    def terminated(signum, frame):
+    def terminated(signum: int, frame: Optional[FrameType]) -> None:
         raise _Terminated()
 
     signal.signal(signal.SIGTERM, terminated)
@@ -117,6 +150,32 @@ def write_atomically(path: Union[str, "os.PathLike[str]"], write: Callable[[Bina
     no file at ``path`` and no temporary file beside it; after SIGTERM the process
     then terminates as the signal asks.  Errors name ``path`` (not the temporary
     file).
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The file to write (checked by :func:`output_path`).
+    write : callable
+        Called once with the temporary file, opened for binary writing.
+
+    Raises
+    ------
+    ArgumentValueError
+        When ``path`` is not a file that can be written (see :func:`output_path`),
+        or no file can be made in its folder.
+    OutputError
+        When writing fails (a full disk, no permission).
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> from scanline.framebuffer import write_atomically
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     path = os.path.join(folder, "out.bin")
+    ...     write_atomically(path, lambda f: f.write(b"abc"))
+    ...     with open(path, "rb") as f:
+    ...         f.read(), os.listdir(folder)
+    (b'abc', ['out.bin'])
     """
     path = output_path(path)
     directory = os.path.dirname(os.path.abspath(path))
@@ -144,20 +203,60 @@ def write_atomically(path: Union[str, "os.PathLike[str]"], write: Callable[[Bina
         raise
 
 
-def image_limit():
+def image_limit() -> int:
     """Most pixels an image file written by scanline may hold: twice Pillow's
     decompression-bomb threshold (``PIL.Image.MAX_IMAGE_PIXELS``, 89,478,485 by
-    default), past which Pillow refuses to open the file again."""
+    default), past which Pillow refuses to open the file again.
+
+    Returns
+    -------
+    int
+        The limit in pixels (2**40 when Pillow's threshold is switched off).
+
+    Examples
+    --------
+    >>> from PIL import Image
+    >>> from scanline.framebuffer import image_limit
+    >>> image_limit() == 2 * Image.MAX_IMAGE_PIXELS
+    True
+    """
     bound = Image.MAX_IMAGE_PIXELS
     return 2 * int(bound) if bound else 1 << 40
 
 
-def check_image_size(width, height, scale=1, given=None, hint=None):
+def check_image_size(width: int, height: int, scale: int = 1, given: Optional[str] = None,
+                     hint: Optional[str] = None) -> None:
     """The size rule of every image scanline writes, checked before anything is
     allocated: ``width x height`` pixels enlarged ``scale`` times must fit
     :func:`image_limit`.  ``given`` says how the caller gave the size (for
     instance ``"--size 40000x40000"``, ``"canvas.width x canvas.height"``), so
-    that the message names it; ``hint`` says what to change."""
+    that the message names it; ``hint`` says what to change.
+
+    Parameters
+    ----------
+    width, height : int
+        The size in pixels before enlarging.
+    scale : int
+        The whole factor each pixel is enlarged by.
+    given : str, optional
+        How the caller gave the size, named in the message.
+    hint : str, optional
+        What to change, ending the message (default: use a smaller size).
+
+    Raises
+    ------
+    ArgumentValueError
+        When ``width * height * scale**2`` is more than :func:`image_limit`.
+
+    Examples
+    --------
+    >>> from scanline.framebuffer import check_image_size
+    >>> check_image_size(640, 480, scale=4)
+    >>> check_image_size(100000, 100000, given="--size 100000x100000")
+    Traceback (most recent call last):
+      ...
+    scanline.errors.ArgumentValueError: --size 100000x100000 is 10,000,000,000 pixels, more than the ... an image file may hold; use a smaller size
+    """
     pixels = width * height * scale * scale
     limit = image_limit()
     if pixels <= limit:
@@ -169,7 +268,7 @@ def check_image_size(width, height, scale=1, given=None, hint=None):
         + (hint or "use a smaller size" + (" or scale" if scale > 1 else "")))
 
 
-def _row_bytes(width, height, mode, given=None):
+def _row_bytes(width: int, height: int, mode: str, given: Optional[str] = None) -> int:
     """Bytes per storage row of a ``width`` x ``height`` frame buffer of ``mode``,
     after checking that the size is within the coordinate limit and fits the
     machine's memory (``given`` says how the caller gave the size, for messages)."""
@@ -238,7 +337,7 @@ class FrameBuffer:
         self._height = height
         self._mode = mode
         self._table = np.zeros((0, 3), np.uint8)
-        self._cache = {}
+        self._cache: dict[object, Any] = {}
         if mode == "P" and color_table is not None:
             self.color_table = color_table
         elif color_table is not None:
@@ -307,16 +406,43 @@ class FrameBuffer:
         return "white" if dark else "black"
 
     # -- colors -----------------------------------------------------------------------
-    def pixel(self, color: Color, name: str = "color") -> Tuple[int, ...]:
+    def pixel(self, color: Optional[Color], name: str = "color") -> NDArray[np.uint8]:
         """Return the stored channel values of ``color`` as a uint8 array.
 
         In mode ``"P"`` an integer is a color-table index; any other color is looked
         up in the table and appended to it when absent.  ``None`` is
         :attr:`foreground`.
+
+        Parameters
+        ----------
+        color : Color or None
+            The color (see :func:`scanline.color.spec.rgba`); None for
+            :attr:`foreground`.
+        name : str
+            The argument's name, for error messages.
+
+        Returns
+        -------
+        numpy.ndarray
+            uint8, one value per stored channel (a bit, a gray level, a table index,
+            RGB or RGBA); do not write to it (it is cached).
+
+        Raises
+        ------
+        ArgumentValueError
+            For a color that is not one, or a new color in a full color table.
+
+        Examples
+        --------
+        >>> FrameBuffer(2, 2, mode="L").pixel("red")      # luma (299 * 255) // 1000
+        array([76], dtype=uint8)
+        >>> fb = FrameBuffer(2, 2, mode="P")             # table: black
+        >>> fb.pixel("red"), fb.color_table.tolist()
+        (array([1], dtype=uint8), [[0, 0, 0], [255, 0, 0]])
         """
         last = self._cache.get(_LAST)
         if last is not None and color is last[0] and name == last[1]:
-            return last[2]      # the very object of the last cached call (immutable)
+            return cast(NDArray[np.uint8], last[2])      # the very object of the last cached call (immutable)
         if color is None:
             color = self.foreground
         # cache exact types only: True == 1 and (1.0, 2) == (1, 2) must not share
@@ -328,18 +454,19 @@ class FrameBuffer:
             hit = self._cache.get(key)
             if hit is not None:
                 self._cache[_LAST] = (color, name, hit)
-                return hit
+                return cast(NDArray[np.uint8], hit)
+        value: Tuple[int, ...]
         if self._mode == "P":
             value = (self._table_index(color, name),)
         else:
             value = pixel_value(color, self._mode, name)
-        out = np.array(value, np.uint8)
+        out: NDArray[np.uint8] = np.array(value, np.uint8)
         if cacheable:
             self._cache[key] = out
             self._cache[_LAST] = (color, name, out)
         return out
 
-    def _table_index(self, color, name):
+    def _table_index(self, color: Color, name: str) -> int:
         if isinstance(color, int) and not isinstance(color, bool):
             if 0 <= color < len(self._table):
                 return color
@@ -367,15 +494,16 @@ class FrameBuffer:
         so the image is recolored.
         """
         self._require_p("color_table")
-        return self._table.copy()
+        return np.array(self._table)
 
     @color_table.setter
     def color_table(self, colors: Sequence[Color]) -> None:
         self._require_p("color_table")
-        colors = in_context(list(colors))
-        if not 1 <= len(colors) <= 256:
-            raise ArgumentValueError(f"color_table must have 1..256 entries, got {len(colors)}")
-        table = np.array([rgba(c, f"color_table[{i}]")[:3] for i, c in enumerate(colors)], np.uint8)
+        entries = in_context(list(colors))
+        if not 1 <= len(entries) <= 256:
+            raise ArgumentValueError(f"color_table must have 1..256 entries, got {len(entries)}")
+        table = np.array([rgba(c, f"color_table[{i}]")[:3] for i, c in enumerate(entries)],
+                         np.uint8)
         if hasattr(self, "_buf") and self._buf.size and int(self._buf.max()) >= len(table):
             raise ArgumentValueError(
                 f"color_table has {len(table)} entries but the image uses index "
@@ -386,7 +514,28 @@ class FrameBuffer:
 
     def set_table_entry(self, index: int, color: Color) -> None:
         """Mode ``"P"``: set color-table entry ``index`` to ``color`` (recolors every
-        pixel that stores that index).  ``index`` may be the next free entry."""
+        pixel that stores that index).  ``index`` may be the next free entry.
+
+        Parameters
+        ----------
+        index : int
+            The entry, 0 .. the table's length (the next free entry), at most 255.
+        color : Color
+            Its new color (alpha is dropped).
+
+        Raises
+        ------
+        ArgumentValueError
+            When the frame buffer is not in mode ``"P"`` or ``index`` is out of range.
+
+        Examples
+        --------
+        >>> fb = FrameBuffer(2, 1, mode="P", color_table=["black", "white"])
+        >>> fb[1, 0] = 1
+        >>> fb.set_table_entry(1, "red")
+        >>> fb.to_pil().convert("RGB").getpixel((1, 0))
+        (255, 0, 0)
+        """
         self._require_p("set_table_entry")
         index = v.positive_int("index", index, minimum=0)
         if index > len(self._table) or index > 255:
@@ -399,7 +548,7 @@ class FrameBuffer:
         self._table[index] = rgb[0]
         self._cache.clear()
 
-    def _require_p(self, what):
+    def _require_p(self, what: str) -> None:
         if self._mode != "P":
             raise ArgumentValueError(f"{what} exists only in mode 'P', this frame buffer is {self._mode!r}")
 
@@ -410,7 +559,24 @@ class FrameBuffer:
         return self._buf, self._mode == "1"
 
     def clear(self, color: Optional[Color] = None) -> None:
-        """Set every pixel to ``color`` (default: the background)."""
+        """Set every pixel to ``color`` (default: the background).
+
+        Parameters
+        ----------
+        color : Color, optional
+            The color; None (the default) is the background given when the frame
+            buffer was made.
+
+        Examples
+        --------
+        >>> fb = FrameBuffer(3, 1, mode="L", background=9)
+        >>> fb.clear(200)
+        >>> fb.to_array().tolist()
+        [[200, 200, 200]]
+        >>> fb.clear()
+        >>> fb.to_array().tolist()
+        [[9, 9, 9]]
+        """
         value = self._background if color is None else self.pixel(color)
         if self._mode == "1":
             self._buf.fill(0xFF if value[0] else 0)
@@ -421,7 +587,7 @@ class FrameBuffer:
             # over the whole (H, W, C) array directly is about 20 times slower
             self._buf[...] = np.tile(value, (self._buf.shape[1], 1))
 
-    def _check_xy(self, x, y):
+    def _check_xy(self, x: float, y: float) -> Tuple[int, int, bool]:
         x = v.coordinate("x", x)
         y = v.coordinate("y", y)
         return x, y, 0 <= x < self._width and 0 <= y < self._height
@@ -432,19 +598,43 @@ class FrameBuffer:
         One rule for both pixel methods, the rule of every drawing operation: a
         pixel outside the frame buffer is clipped.  ``set_pixel`` writes nothing
         there and :meth:`get_pixel` returns its ``default`` (None).  The color is
-        checked either way."""
-        x, y, inside = self._check_xy(x, y)
+        checked either way.
+
+        Parameters
+        ----------
+        x, y : float
+            The pixel in device coordinates (x right, y up); floats round to the
+            nearest pixel.
+        color : Color
+            Its color.
+
+        Raises
+        ------
+        ArgumentTypeError
+            When ``color`` is None, or a coordinate is not a number.
+        ArgumentValueError
+            When ``color`` is not a color.
+
+        Examples
+        --------
+        >>> fb = FrameBuffer(3, 2, mode="L")
+        >>> fb.set_pixel(2, 1, 255)
+        >>> fb.set_pixel(7, 7, 255)          # outside: clipped, no error
+        >>> fb.to_array().tolist()
+        [[0, 0, 255], [0, 0, 0]]
+        """
+        xi, yi, inside = self._check_xy(x, y)
         if color is None:
             raise ArgumentTypeError("color=None: set_pixel needs a color, e.g. fb.foreground")
         value = self.pixel(color)
         if not inside:
             return
         if self._mode == "1":
-            bit = 0x80 >> (x & 7)
-            byte = int(self._buf[y, x >> 3, 0])
-            self._buf[y, x >> 3, 0] = (byte | bit) if value[0] else (byte & ~bit & 0xFF)
+            bit = 0x80 >> (xi & 7)
+            byte = int(self._buf[yi, xi >> 3, 0])
+            self._buf[yi, xi >> 3, 0] = (byte | bit) if value[0] else (byte & ~bit & 0xFF)
         else:
-            self._buf[y, x] = value
+            self._buf[yi, xi] = value
 
     def get_pixel(self, x: float, y: float, default: Any = None) -> Any:
         """Return pixel ``(x, y)``: an int in modes ``"1"``, ``"L"`` and ``"P"`` (bit,
@@ -453,20 +643,38 @@ class FrameBuffer:
         A pixel outside the frame buffer is clipped, as :meth:`set_pixel` clips it:
         the result is ``default`` (None unless given, like ``dict.get``).
 
+        Parameters
+        ----------
+        x, y : float
+            The pixel in device coordinates (x right, y up); floats round to the
+            nearest pixel.
+        default : object
+            What a pixel outside the frame buffer gives.
+
+        Returns
+        -------
+        int, tuple of int or ``default``
+            The stored value: an int in modes ``"1"``, ``"L"`` and ``"P"``, an
+            ``(r, g, b[, a])`` tuple in ``"RGB"`` and ``"RGBA"``.
+
+        Examples
+        --------
         >>> fb = FrameBuffer(2, 2, mode="L")
         >>> fb.get_pixel(1, 1), fb.get_pixel(5, 0), fb.get_pixel(-1, 0, default=0)
         (0, None, 0)
+        >>> FrameBuffer(1, 1, background=(10, 20, 30)).get_pixel(0, 0)
+        (10, 20, 30)
         """
-        x, y, inside = self._check_xy(x, y)
+        xi, yi, inside = self._check_xy(x, y)
         if not inside:
             return default
         if self._mode == "1":
-            return int(self._buf[y, x >> 3, 0] >> (7 - (x & 7))) & 1
-        values = self._buf[y, x]
+            return int(self._buf[yi, xi >> 3, 0] >> (7 - (xi & 7))) & 1
+        values = self._buf[yi, xi]
         return int(values[0]) if values.size == 1 else tuple(int(c) for c in values)
 
     # -- indexing: fb[x, y] -----------------------------------------------------------------
-    def _index(self, key):
+    def _index(self, key: object) -> Tuple[int, int]:
         """``(x, y)`` of ``fb[x, y]``: two integers inside the frame buffer, else the
         error Python's indexing gives (TypeError, IndexError) naming the coordinate."""
         if isinstance(key, slice) or (isinstance(key, tuple) and any(
@@ -479,13 +687,13 @@ class FrameBuffer:
                 f"fb[{_show_key(key)}]: index a frame buffer by a pixel's device coordinates, "
                 "fb[x, y] (x to the right, y up, (0, 0) the bottom-left pixel)")
         out = []
-        for name, value, size in (("x", key[0], self._width), ("y", key[1], self._height)):
-            if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+        for name, given, size in (("x", key[0], self._width), ("y", key[1], self._height)):
+            if isinstance(given, bool) or not isinstance(given, numbers.Integral):
                 raise ArgumentTypeError(
-                    f"fb[x, y]: {name} must be an integer, got {v._show(value)} of type "
-                    f"{type(value).__name__} (get_pixel and set_pixel round a float to the "
+                    f"fb[x, y]: {name} must be an integer, got {v._show(given)} of type "
+                    f"{type(given).__name__} (get_pixel and set_pixel round a float to the "
                     "nearest pixel)")
-            value = int(value)
+            value = int(given)
             if not 0 <= value < size:
                 raise PixelIndexError(
                     f"fb[x, y]: {name}={value} is outside the frame buffer, whose "
@@ -525,7 +733,7 @@ class FrameBuffer:
     __iter__ = None
 
     # -- copies, crops and sizes ---------------------------------------------------------
-    def _like(self, width, height, given=None):
+    def _like(self, width: int, height: int, given: Optional[str] = None) -> "FrameBuffer":
         """A new cleared ``width`` x ``height`` frame buffer with this one's mode,
         background and color table."""
         row_bytes = _row_bytes(width, height, self._mode, given)
@@ -544,6 +752,13 @@ class FrameBuffer:
         pixels; drawing into one leaves the other alone (``copy.copy(fb)`` and
         ``copy.deepcopy(fb)`` give the same).
 
+        Returns
+        -------
+        FrameBuffer
+            The copy.
+
+        Examples
+        --------
         >>> fb = FrameBuffer(2, 1, mode="L")
         >>> twin = fb.copy()
         >>> twin[0, 0] = 9
@@ -581,6 +796,26 @@ class FrameBuffer:
         top and excludes ``right`` and ``lower``: ``fb.crop(x0, y0, x1, y1)`` is
         ``fb.to_pil().crop((x0, height - 1 - y1, x1 + 1, height - y0))``.
 
+        Parameters
+        ----------
+        x0, y0 : int
+            One corner pixel, included.
+        x1, y1 : int
+            The opposite corner pixel, included.
+
+        Returns
+        -------
+        FrameBuffer
+            ``|x1 - x0| + 1`` by ``|y1 - y0| + 1`` pixels.
+
+        Raises
+        ------
+        ArgumentValueError
+            When the block is larger than the coordinate limit or this machine's
+            memory.
+
+        Examples
+        --------
         >>> fb = FrameBuffer(4, 3, mode="L")
         >>> fb[1, 0] = 7
         >>> fb.crop(1, 0, 2, 1).to_array()
@@ -632,6 +867,13 @@ class FrameBuffer:
         (smallest squared RGB distance, the lower index on a tie).  With
         ``"nearest"`` both keep their stored values.
 
+        Returns
+        -------
+        FrameBuffer
+            The scaled image, ``width`` x ``height``.
+
+        Examples
+        --------
         >>> fb = FrameBuffer(2, 1, mode="L")
         >>> fb[0, 0] = 255
         >>> fb.resize(4, 2).to_array()
@@ -672,6 +914,23 @@ class FrameBuffer:
         to about 256 pixels on the longer side).  In Jupyter there is no need to call
         this: a frame buffer that ends a cell is shown as an image
         (``_repr_png_``), enlarged the same way.
+
+        Parameters
+        ----------
+        title : str, optional
+            The viewer window's title, where the viewer takes one.
+        scale : int, optional
+            Enlarge each pixel to a ``scale`` x ``scale`` block (default: as in a
+            notebook).
+
+        Raises
+        ------
+        ArgumentValueError
+            When the enlarged image would pass :func:`image_limit`.
+
+        Examples
+        --------
+        >>> FrameBuffer(16, 16).show(scale=8)      # doctest: +SKIP
         """
         if scale is None:
             scale = self._repr_scale()
@@ -714,18 +973,33 @@ class FrameBuffer:
             a = a.astype(dtype)
         return a
 
-    def to_array(self) -> NDArray[np.uint8]:
+    def to_array(self) -> NDArray[Any]:
         """A copy of the pixels in image order (top row first).
 
         Shape (height, width) for modes ``"1"`` (bool), ``"L"`` and ``"P"`` (uint8
         indices), (height, width, 3 or 4) for ``"RGB"`` and ``"RGBA"``.
+
+        Returns
+        -------
+        numpy.ndarray
+            bool in mode ``"1"``, else uint8; a new array.
+
+        Examples
+        --------
+        >>> fb = FrameBuffer(2, 2, mode="1")
+        >>> fb.set_pixel(0, 0, 1)
+        >>> fb.to_array()
+        array([[False, False],
+               [ True, False]])
+        >>> FrameBuffer(1, 1, background="red").to_array().shape
+        (1, 1, 3)
         """
         rows = self._buf[::-1]
         if self._mode == "1":
             return np.unpackbits(rows[:, :, 0], axis=1, count=self._width).astype(bool)
         if self._mode in ("L", "P"):
-            return rows[:, :, 0].copy()
-        return rows.copy()
+            return np.array(rows[:, :, 0])
+        return np.array(rows)
 
     @classmethod
     def from_array(cls, array: ArrayLike, mode: Optional[Mode] = None,
@@ -741,6 +1015,28 @@ class FrameBuffer:
         0..255 and rounded (``floor(255 v + 0.5)``).  Anything else (a float above
         1 or NaN, an integer above 255) is refused, not clipped.
 
+        Parameters
+        ----------
+        array : array_like
+            The image, top row first: (h, w), (h, w, 1), (h, w, 3) or (h, w, 4).
+        mode : {"1", "L", "RGB", "RGBA", "P"}, optional
+            The mode; by default it follows from the shape and dtype.
+        color_table : sequence of colors, optional
+            Mode ``"P"``: the colors of the indices the array holds.
+
+        Returns
+        -------
+        FrameBuffer
+            A new frame buffer holding the pixels.
+
+        Raises
+        ------
+        ArgumentValueError
+            For a shape that is not an image, values out of range, a mode the array
+            cannot hold, or mode ``"P"`` without a long enough color table.
+
+        Examples
+        --------
         >>> FrameBuffer.from_array([[0.0, 0.5], [1.0, 0.25]]).to_array()
         array([[  0, 128],
                [255,  64]], dtype=uint8)
@@ -761,7 +1057,7 @@ class FrameBuffer:
             raise ArgumentValueError(
                 f"array of shape {a.shape} is not an image; use (h, w), (h, w, 1), (h, w, 3) "
                 "or (h, w, 4)")
-        mode = inferred if mode is None else v.choice("mode", mode, MODES)
+        mode = cast(Mode, inferred if mode is None else v.choice("mode", mode, MODES))
         if (mode != inferred and not (mode == "P" and inferred == "L")):
             raise ArgumentValueError(
                 f"array of shape {a.shape} and dtype {a.dtype} does not hold mode {mode!r} pixels; "
@@ -785,7 +1081,7 @@ class FrameBuffer:
         if mode == "P" and color_table is None:
             raise ArgumentValueError("mode 'P' needs a color_table for the indices in array")
         if mode == "P":
-            color_table = list(color_table)
+            color_table = list(cast(Sequence[Color], color_table))
             top = int(a.max())
             if top >= len(color_table):
                 raise ArgumentValueError(
@@ -800,7 +1096,22 @@ class FrameBuffer:
         return fb
 
     def to_pil(self) -> Image.Image:
-        """The image as a Pillow ``Image`` (modes map one to one)."""
+        """The image as a Pillow ``Image`` (modes map one to one).
+
+        Returns
+        -------
+        PIL.Image.Image
+            A new image of the same mode and size (mode ``"P"`` with the color table
+            as its palette).
+
+        Examples
+        --------
+        >>> fb = FrameBuffer(3, 2, mode="L")
+        >>> fb.set_pixel(0, 0, 200)               # bottom left: Pillow's row 1
+        >>> image = fb.to_pil()
+        >>> image.mode, image.size, image.getpixel((0, 1))
+        ('L', (3, 2), 200)
+        """
         h, w = self._height, self._width
         if self._mode == "1":
             return Image.frombytes("1", (w, h), np.ascontiguousarray(self._buf[::-1]).tobytes())
@@ -816,7 +1127,32 @@ class FrameBuffer:
         ``RGB`` and ``RGBA`` map directly (a ``P`` image with a transparent color
         becomes ``RGBA``); 16-bit gray (``I;16``, and ``I`` holding 0..65535) keeps
         its high byte as ``L``; other modes are converted by Pillow to ``L`` (``F``),
-        ``RGB``, or ``RGBA`` when they carry transparency."""
+        ``RGB``, or ``RGBA`` when they carry transparency.
+
+        Parameters
+        ----------
+        image : PIL.Image.Image
+            The image.
+
+        Returns
+        -------
+        FrameBuffer
+            A new frame buffer holding its pixels.
+
+        Raises
+        ------
+        ArgumentTypeError
+            When ``image`` is not a Pillow image.
+        ArgumentValueError
+            For a 32-bit integer image holding values outside 0..65535.
+
+        Examples
+        --------
+        >>> from PIL import Image
+        >>> fb = FrameBuffer.from_pil(Image.new("I;16", (2, 1), 0x1234))
+        >>> fb.mode, fb.to_array().tolist()       # the high byte, 0x12
+        ('L', [[18, 18]])
+        """
         if not isinstance(image, Image.Image):
             raise ArgumentTypeError(f"image must be a PIL.Image.Image, got {type(image).__name__}")
         if image.mode.startswith("I;16") or image.mode == "I":
@@ -841,8 +1177,8 @@ class FrameBuffer:
             used = max(int(indices.max()) + 1, 1) if indices.size else 1
             # a palette shorter than the indices used: the missing entries are black, as
             # Pillow shows them
-            table = (table + [(0, 0, 0)] * used)[:used]
-            return cls.from_array(indices, mode="P", color_table=table)
+            entries = (table + [(0, 0, 0)] * used)[:used]
+            return cls.from_array(indices, mode="P", color_table=cast(List[Color], entries))
         if image.mode not in ("L", "RGB", "RGBA"):
             has_alpha = "A" in image.getbands() or "transparency" in image.info
             image = image.convert("RGBA" if has_alpha else "RGB")
@@ -857,6 +1193,31 @@ class FrameBuffer:
         Pillow's safety limits are kept: a file that is not an image, a truncated
         one, or an image over ``PIL.Image.MAX_IMAGE_PIXELS`` pixels (a decompression
         bomb) raises :class:`scanline.ImageFileError` before its pixels are decoded.
+
+        Parameters
+        ----------
+        file : str, os.PathLike or binary file object
+            The image file.
+
+        Returns
+        -------
+        FrameBuffer
+            Its first frame.
+
+        Raises
+        ------
+        ImageFileError
+            For a missing, damaged or too large file, or one that is not an image.
+
+        Examples
+        --------
+        >>> import io
+        >>> from PIL import Image
+        >>> data = io.BytesIO()
+        >>> Image.new("RGB", (2, 1), (9, 8, 7)).save(data, format="PNG")
+        >>> fb = FrameBuffer.open(io.BytesIO(data.getvalue()))
+        >>> fb.size, fb.mode, fb.get_pixel(1, 0)
+        ((2, 1), 'RGB', (9, 8, 7))
         """
         with imagefile.read(file) as image:
             return cls.from_pil(image)
@@ -876,6 +1237,36 @@ class FrameBuffer:
 
         The image is encoded in memory first and a path is written atomically: on
         any failure no file is left at ``file`` and a file object is not written to.
+
+        Parameters
+        ----------
+        file : str, os.PathLike or binary file object
+            Where to write.
+        format : str, optional
+            A format name or extension; by default the file name's extension.
+        scale : int
+            Enlarge each pixel to a ``scale`` x ``scale`` block.
+        **options
+            Pillow's encoder options.
+
+        Raises
+        ------
+        ArgumentValueError
+            For an unknown format, a path that cannot be written, or an image too
+            large to write.
+        ImageFileError
+            When the format cannot hold the mode.
+        OutputError
+            When writing the file fails.
+
+        Examples
+        --------
+        >>> import io
+        >>> from PIL import Image
+        >>> out = io.BytesIO()
+        >>> FrameBuffer(2, 1, mode="L", background=50).save(out, "png", scale=3)
+        >>> Image.open(io.BytesIO(out.getvalue())).size
+        (6, 3)
         """
         if isinstance(file, (str, os.PathLike)):
             file = output_path(file)
@@ -889,7 +1280,7 @@ class FrameBuffer:
         else:
             file.write(data)
 
-    def _scaled_image(self, scale):
+    def _scaled_image(self, scale: int) -> Image.Image:
         scale = v.positive_int("scale", scale)
         check_image_size(self._width, self._height, scale,
                          f"the {self._width} x {self._height} frame buffer"
@@ -899,7 +1290,7 @@ class FrameBuffer:
             image = image.resize((self._width * scale, self._height * scale), Image.Resampling.NEAREST)
         return image
 
-    def _repr_png_(self):
+    def _repr_png_(self) -> bytes:
         """PNG bytes, so that Jupyter shows a frame buffer as an image: a small one
         is enlarged by a whole factor (each pixel a square block, at most
         16 x 16) to about 256 pixels on its longer side, so that a 16 x 16 image is
@@ -908,15 +1299,15 @@ class FrameBuffer:
         self._scaled_image(self._repr_scale()).save(out, format="PNG")
         return out.getvalue()
 
-    def _repr_scale(self):
+    def _repr_scale(self) -> int:
         """The whole factor that enlarges a small frame buffer to about
         ``_REPR_SIZE`` pixels on its longer side (at most ``_REPR_SCALE``)."""
         return max(1, min(_REPR_SCALE, _REPR_SIZE // max(self._width, self._height)))
 
 
-def _show_key(key):
+def _show_key(key: object) -> str:
     """An index as it was written between the brackets."""
-    def one(k):
+    def one(k: object) -> str:
         if isinstance(k, slice):
             return ":".join("" if p is None else repr(p) for p in (k.start, k.stop)) + (
                 "" if k.step is None else f":{k.step!r}")
@@ -924,7 +1315,7 @@ def _show_key(key):
     return ", ".join(one(k) for k in key) if isinstance(key, tuple) else one(key)
 
 
-def _nearest_entries(rgb, table):
+def _nearest_entries(rgb: NDArray[np.uint8], table: NDArray[np.uint8]) -> NDArray[np.uint8]:
     """The color-table index nearest to each pixel of the (h, w, 3) uint8 image
     ``rgb`` (squared RGB distance, the lower index on ties), as uint8 (h, w)."""
     flat = rgb.reshape(-1, 3).astype(np.int32)
@@ -938,7 +1329,7 @@ def _nearest_entries(rgb, table):
     return out.reshape(rgb.shape[:2])
 
 
-def _unit_floats(a):
+def _unit_floats(a: NDArray[np.floating[Any]]) -> NDArray[np.uint8]:
     """A float image in [0, 1] as uint8 0..255, or an error naming what is wrong."""
     finite = np.isfinite(a)
     if not finite.all():
@@ -951,13 +1342,35 @@ def _unit_floats(a):
         raise ArgumentValueError(
             f"array of dtype {a.dtype} holds values {low:g}..{high:g}; float images must be "
             f"in [0, 1], as matplotlib and scikit-image store them{hint}")
-    return np.floor(a * 255 + 0.5).astype(np.uint8)
+    out: NDArray[np.uint8] = np.floor(a * 255 + 0.5).astype(np.uint8)
+    return out
 
 
 def text_image(fb: "FrameBuffer", on: str = "#", off: str = "-") -> str:
     """The frame buffer as text, top row first: ``on`` where a pixel differs from
     the background, ``off`` elsewhere.  Handy in doctests and terminals.
 
+    Parameters
+    ----------
+    fb : FrameBuffer
+        The frame buffer.
+    on : str
+        The character of a pixel that differs from the background.
+    off : str
+        The character of a background pixel.
+
+    Returns
+    -------
+    str
+        One line per row, top row first.
+
+    Raises
+    ------
+    ArgumentTypeError
+        When ``fb`` is not a FrameBuffer.
+
+    Examples
+    --------
     >>> fb = FrameBuffer(3, 2, mode="L")
     >>> fb.set_pixel(2, 0, 200)
     >>> print(text_image(fb))

@@ -19,11 +19,14 @@ References
 """
 
 import math
-from collections import namedtuple
+from collections.abc import Sequence
+from typing import Any, NamedTuple, cast
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
+from .._typing import Angle
 from ..errors import ArgumentTypeError, ArgumentValueError
 from .arrays import direction, matrix4, points, vector
 
@@ -36,16 +39,38 @@ PLANES = ("xy", "yz", "zx")
 #: (scaled) linear part A.
 SINGULAR = 64 * np.finfo(np.float64).eps
 
-#: One step of a composite transformation: its name, its 4x4 matrix and what it does.
-Step = namedtuple("Step", "name matrix description")
+class Step(NamedTuple):
+    """One step of a composite transformation: its name, its 4x4 matrix and what it
+    does (the steps of :func:`rotation_steps`).
+
+    Parameters
+    ----------
+    name : str
+        A short name such as ``"Rx(alpha)"``.
+    matrix : ndarray of float64, shape (4, 4)
+        The step's transformation.
+    description : str
+        What the step does, in words.
+
+    Examples
+    --------
+    >>> from scanline.transform3d import Step, translation
+    >>> step = Step("T", translation(1, 0, 0), "move right")
+    >>> step.name, step.matrix[:3, 3].tolist()
+    ('T', [1.0, 0.0, 0.0])
+    """
+
+    name: str
+    matrix: NDArray[np.float64]
+    description: str
 
 
-def _tidy(m):
+def _tidy(m: ArrayLike) -> NDArray[np.float64]:
     """``m`` with negative zeros made positive (tidy printing, same values)."""
     return np.asarray(m, dtype=np.float64) + 0.0
 
 
-def _finite_matrix(m, arguments):
+def _finite_matrix(m: NDArray[np.float64], arguments: str) -> NDArray[np.float64]:
     """``m``, or an error naming ``arguments`` when an entry overflowed float64 (huge
     but finite arguments: 1e300 times 1e300)."""
     if not np.isfinite(m).all():
@@ -55,7 +80,7 @@ def _finite_matrix(m, arguments):
     return m
 
 
-def translation(tx, ty, tz):
+def translation(tx: float, ty: float, tz: float) -> NDArray[np.float64]:
     """Translation by the vector (tx, ty, tz).
 
     ::
@@ -64,6 +89,20 @@ def translation(tx, ty, tz):
                         | 0  1  0  ty |      y' = y + ty
                         | 0  0  1  tz |      z' = z + tz
                         | 0  0  0   1 |
+
+    Parameters
+    ----------
+    tx, ty, tz : float
+        The translation distances, finite.
+
+    Returns
+    -------
+    ndarray of float64, shape (4, 4)
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If a distance is not a finite real number.
 
     Notes
     -----
@@ -80,7 +119,7 @@ def translation(tx, ty, tz):
     return _tidy(m)
 
 
-def _about(m3, fixed):
+def _about(m3: NDArray[np.float64], fixed: tuple[float, ...] | None) -> NDArray[np.float64]:
     """The 4x4 matrix of the linear map ``m3`` (3x3) about the point ``fixed``
     (None: the origin): T(fixed) · M · T(-fixed)."""
     m = np.eye(4)
@@ -92,7 +131,8 @@ def _about(m3, fixed):
     return _tidy(m)
 
 
-def scaling(sx, sy=None, sz=None, fixed=None):
+def scaling(sx: float, sy: float | None = None, sz: float | None = None,
+            fixed: ArrayLike | None = None) -> NDArray[np.float64]:
     """Scaling by sx, sy, sz along the axes, about the origin or a fixed point.
 
     ::
@@ -110,6 +150,16 @@ def scaling(sx, sy=None, sz=None, fixed=None):
         The factors along y and z; give both or neither.
     fixed : (float, float, float), optional
         The fixed point; the origin when omitted.
+
+    Returns
+    -------
+    ndarray of float64, shape (4, 4)
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If a factor or the fixed point is not finite, only one of ``sy`` and ``sz`` is
+        given, or the matrix overflows.
 
     Notes
     -----
@@ -137,7 +187,7 @@ def scaling(sx, sy=None, sz=None, fixed=None):
         "the factors (sx, sy, sz) and the fixed point")
 
 
-def _axis_rotation(axis, c, s):
+def _axis_rotation(axis: str, c: float, s: float) -> NDArray[np.float64]:
     """The 3x3 rotation about a coordinate axis with cos c and sin s."""
     if axis == "x":
         return np.array([[1, 0, 0], [0, c, -s], [0, s, c]], np.float64)
@@ -146,7 +196,8 @@ def _axis_rotation(axis, c, s):
     return np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]], np.float64)
 
 
-def rotation(angle, axis="z", pivot=None):
+def rotation(angle: Angle, axis: str | ArrayLike = "z",
+             pivot: ArrayLike | None = None) -> NDArray[np.float64]:
     """Rotation by ``angle`` radians about a coordinate axis or any axis.
 
     About the coordinate axes (counterclockwise looking from the positive axis toward
@@ -181,6 +232,17 @@ def rotation(angle, axis="z", pivot=None):
     pivot : (float, float, float), optional
         For a coordinate axis: rotate about the parallel axis through ``pivot``.
 
+    Returns
+    -------
+    ndarray of float64, shape (4, 4)
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If the angle is not finite, ``axis`` is neither a coordinate axis nor two
+        distinct points, ``pivot`` is given with two axis points, or the matrix
+        overflows.
+
     Examples
     --------
     >>> import math
@@ -203,7 +265,7 @@ def rotation(angle, axis="z", pivot=None):
     return _composite(steps, "the angle and the axis points (p1, p2)")
 
 
-def _composite(steps, arguments):
+def _composite(steps: list[Step], arguments: str) -> NDArray[np.float64]:
     """The product of the steps' matrices, in the order they act; an error naming
     ``arguments`` when it overflows."""
     result = np.eye(4)
@@ -213,13 +275,14 @@ def _composite(steps, arguments):
     return _finite_matrix(result, arguments)
 
 
-def _axis_points(axis):
+def _axis_points(axis: object) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     if isinstance(axis, (str, bytes)) or not hasattr(axis, "__len__") or len(axis) != 2:
         raise ArgumentTypeError(
             f"axis must be 'x', 'y', 'z' or two points (p1, p2) of the rotation axis, got "
             f"{v._show(axis)}")
-    p1 = np.array(vector("axis[0]", axis[0]))
-    p2 = np.array(vector("axis[1]", axis[1]))
+    ends = cast(Sequence[object], axis)
+    p1 = np.array(vector("axis[0]", ends[0]))
+    p2 = np.array(vector("axis[1]", ends[1]))
     if (p1 == p2).all():
         raise ArgumentValueError(
             f"the axis points p1 and p2 must differ (both are {p1.tolist()}): two distinct "
@@ -227,10 +290,28 @@ def _axis_points(axis):
     return p1, p2
 
 
-def axis_alignment(axis):
+def axis_alignment(axis: ArrayLike) -> NDArray[np.float64]:
     """The matrix Ry(β) · Rx(α) · T(-P1) that moves the axis through ``axis`` =
     (p1, p2) onto the positive z axis (P1 to the origin, P2 onto +z), the first
     three steps of :func:`rotation` about that axis.
+
+    Parameters
+    ----------
+    axis : (p1, p2)
+        Two distinct points of the axis, each three finite numbers.
+
+    Returns
+    -------
+    ndarray of float64, shape (4, 4)
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If ``axis`` is not two distinct finite 3-D points.
+
+    Notes
+    -----
+    Hearn & Baker, section 11-2 (general three-dimensional rotations).
 
     Examples
     --------
@@ -242,9 +323,17 @@ def axis_alignment(axis):
     return _composite(steps[:3], "the axis points (p1, p2)")
 
 
-def rotation_steps(angle, axis):
+def rotation_steps(angle: Angle, axis: ArrayLike) -> list[Step]:
     """The seven steps of the rotation by ``angle`` about the axis through
     ``axis`` = (p1, p2), in the order they act (Hearn & Baker, section 11-2).
+
+    Parameters
+    ----------
+    angle : float or str
+        θ in radians (or a string with its unit, ``"30deg"``).
+    axis : (p1, p2)
+        Two distinct points of the axis; the rotation is counterclockwise looking from
+        p2 toward p1.
 
     Returns
     -------
@@ -253,6 +342,11 @@ def rotation_steps(angle, axis):
         by α into the xz plane, rotate about y by β onto z, rotate by θ about z, and
         undo the three alignment steps.  ``compose(*reversed([s.matrix for s in
         steps]))`` is :func:`rotation` about the axis.
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If the angle is not finite or ``axis`` is not two distinct finite 3-D points.
 
     Examples
     --------
@@ -281,7 +375,7 @@ def rotation_steps(angle, axis):
     ]
 
 
-def reflection(plane, normal=None):
+def reflection(plane: str | ArrayLike, normal: ArrayLike | None = None) -> NDArray[np.float64]:
     """Reflection in a coordinate plane or in any plane.
 
     ::
@@ -291,6 +385,23 @@ def reflection(plane, normal=None):
     ``reflection(point, normal)`` reflects in the plane through ``point`` with the
     normal ``normal`` (unit n after normalizing): p' = p - 2 ((p - q) · n) n, the
     matrix T(q) · (I - 2 n nᵀ) · T(-q).
+
+    Parameters
+    ----------
+    plane : {"xy", "yz", "zx"} or (float, float, float)
+        A coordinate plane, or (with ``normal``) a point q of the plane.
+    normal : (float, float, float), optional
+        The plane's normal, nonzero (any length); only with a point as ``plane``.
+
+    Returns
+    -------
+    ndarray of float64, shape (4, 4)
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If ``plane`` is not one of :data:`PLANES` (without ``normal``), the point or
+        normal is not finite, the normal is zero, or the matrix overflows.
 
     Notes
     -----
@@ -307,8 +418,7 @@ def reflection(plane, normal=None):
     [1.0, 2.0, -1.0]
     """
     if normal is None:
-        v.choice("plane", plane, PLANES)
-        k = {"xy": 2, "yz": 0, "zx": 1}[plane]
+        k = {"xy": 2, "yz": 0, "zx": 1}[v.choice("plane", cast(str, plane), PLANES)]
         d = np.ones(3)
         d[k] = -1.0
         return _about(np.diag(d), None)
@@ -317,7 +427,8 @@ def reflection(plane, normal=None):
     return _finite_matrix(_about(np.eye(3) - 2.0 * np.outer(n, n), q), "the point and the normal")
 
 
-def shear(axis="z", a=0.0, b=0.0, reference=0.0):
+def shear(axis: str = "z", a: float = 0.0, b: float = 0.0,
+          reference: float = 0.0) -> NDArray[np.float64]:
     """Shear of the two other coordinates in proportion to one coordinate.
 
     ::
@@ -337,6 +448,29 @@ def shear(axis="z", a=0.0, b=0.0, reference=0.0):
     12-3): with a = -px/pz, b = -py/pz it turns the projection vector (px, py, pz)
     parallel to z.  The plane ``axis = reference`` stays fixed; the determinant is 1.
 
+    Parameters
+    ----------
+    axis : {"x", "y", "z"}, default "z"
+        The coordinate in proportion to which the two others move.
+    a, b : float, default 0
+        The shear factors of the two other coordinates, in the order x, y, z.
+    reference : float, default 0
+        The fixed plane ``axis = reference``.
+
+    Returns
+    -------
+    ndarray of float64, shape (4, 4)
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If ``axis`` is not one of :data:`AXES`, a number is not finite, or the matrix
+        overflows.
+
+    Notes
+    -----
+    Hearn & Baker, section 11-4 (shears).
+
     Examples
     --------
     >>> from scanline.transform3d import shear, apply
@@ -354,9 +488,23 @@ def shear(axis="z", a=0.0, b=0.0, reference=0.0):
     return _finite_matrix(_tidy(m), "a, b and reference")
 
 
-def compose(*matrices):
+def compose(*matrices: ArrayLike) -> NDArray[np.float64]:
     """The product of 4x4 matrices, applied right to left: ``compose(A, B, C)`` is
     ``A @ B @ C`` (C acts first).  ``compose()`` is the identity.
+
+    Parameters
+    ----------
+    *matrices : array_like, shape (4, 4)
+        Finite 4x4 matrices (affine or projective).
+
+    Returns
+    -------
+    ndarray of float64, shape (4, 4)
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If a matrix is not a finite 4x4 array or the product overflows.
 
     Notes
     -----
@@ -379,8 +527,35 @@ def compose(*matrices):
     return result
 
 
-def is_affine(m, tolerance=1e-12):
-    """Whether a 4x4 matrix's bottom row is (0, 0, 0, 1) within ``tolerance``."""
+def is_affine(m: ArrayLike, tolerance: float = 1e-12) -> bool:
+    """Whether a 4x4 matrix's bottom row is (0, 0, 0, 1) within ``tolerance``.
+
+    Parameters
+    ----------
+    m : array_like, shape (4, 4)
+        A finite matrix.
+    tolerance : float, default 1e-12
+        The largest difference allowed in each entry of the bottom row, >= 0.
+
+    Returns
+    -------
+    bool
+        True for affine transformations (translations, rotations, scalings, ...),
+        False for projective ones (a perspective matrix).
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If ``m`` is not a finite 4x4 matrix or ``tolerance`` is negative.
+
+    Examples
+    --------
+    >>> from scanline.transform3d import is_affine, translation
+    >>> is_affine(translation(1, 2, 3))
+    True
+    >>> is_affine([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 1, 0]])
+    False
+    """
     a = matrix4("m", m)
     t = v.number("tolerance", tolerance)
     if t < 0:
@@ -389,17 +564,31 @@ def is_affine(m, tolerance=1e-12):
         return bool(np.abs(a[3] - (0.0, 0.0, 0.0, 1.0)).max() <= t)
 
 
-def inverse(m):
+def inverse(m: ArrayLike) -> NDArray[np.float64]:
     """The inverse of a 4x4 transformation matrix (affine or projective).
 
     For an affine M = [[A, t], [0, 1]] the inverse is [[A⁻¹, -A⁻¹ t], [0, 1]]; a
     projective matrix (a perspective transformation) is inverted as a whole.
+
+    Parameters
+    ----------
+    m : array_like, shape (4, 4)
+        A finite, invertible matrix.
+
+    Returns
+    -------
+    ndarray of float64, shape (4, 4)
 
     Raises
     ------
     ArgumentValueError
         If ``m`` is singular or so nearly singular that its inverse means nothing
         (a zero scale factor, a projection onto a plane): say which.
+
+    Notes
+    -----
+    Hearn & Baker, section 11-5 (the inverse of a composite is the composite of the
+    inverses in the reverse order); computed here in one step.
 
     Examples
     --------
@@ -427,7 +616,7 @@ def inverse(m):
     with np.errstate(over="ignore", invalid="ignore"):
         inv = np.linalg.inv(n) / big
         if affine:
-            out = np.eye(4)
+            out: NDArray[np.floating[Any]] = np.eye(4)
             out[:3, :3] = inv
             out[:3, 3] = -inv @ a[:3, 3]
         else:
@@ -437,13 +626,25 @@ def inverse(m):
     return _tidy(out)
 
 
-def apply(m, points_):
+def apply(m: ArrayLike, points_: ArrayLike) -> NDArray[np.float64]:
     """Transform points by a 4x4 matrix.
 
     ``points`` of shape (N, 3) (or one (3,) point) are taken as (x, y, z, 1); the
     result (x_h, y_h, z_h, h) = M · (x, y, z, 1) is divided by h (the homogeneous
     factor of a perspective matrix; 1 for affine matrices), giving (N, 3).  Points of
     shape (N, 4) (or (4,)) are homogeneous: the result is M · P, (N, 4), undivided.
+
+    Parameters
+    ----------
+    m : array_like, shape (4, 4)
+        A finite matrix.
+    points_ : array_like, shape (N, 3), (3,), (N, 4) or (4,)
+        Finite points: Cartesian (x, y, z) or homogeneous (x, y, z, h).
+
+    Returns
+    -------
+    ndarray of float64, in the shape of ``points_``
+        The transformed points.
 
     Raises
     ------
@@ -464,7 +665,7 @@ def apply(m, points_):
     p, single = points("points", points_, (3, 4))
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
         if p.shape[1] == 4:
-            out = p @ a.T
+            out: NDArray[np.float64] = p @ a.T
         else:
             h = p @ a[3, :3] + a[3, 3]
             if (h == 0.0).any():
@@ -481,4 +682,4 @@ def apply(m, points_):
             "(an overflow, or a homogeneous factor h that underflows); use smaller "
             "coordinates or a smaller transformation")
     out = out + 0.0
-    return out[0] if single else out
+    return out.reshape(-1) if single else out

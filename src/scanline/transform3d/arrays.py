@@ -9,6 +9,7 @@ convention 7).
 from collections.abc import Sequence
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from .._validate import real_array
@@ -17,7 +18,7 @@ from ..errors import ArgumentTypeError, ArgumentValueError
 __all__ = ["direction", "finite", "matrix4", "points", "real_array", "vector"]
 
 
-def finite(name, a):
+def finite(name: str, a: NDArray[np.float64]) -> NDArray[np.float64]:
     """Raise unless every entry of ``a`` is finite, naming the first bad row."""
     if not np.isfinite(a).all():
         if a.ndim == 0:
@@ -31,7 +32,7 @@ def finite(name, a):
     return a
 
 
-def vector(name, value, size=3):
+def vector(name: str, value: object, size: int = 3) -> tuple[float, ...]:
     """A point or vector of ``size`` finite real numbers -> tuple of floats."""
     if isinstance(value, (str, bytes)) or not isinstance(value, (Sequence, np.ndarray)):
         raise ArgumentTypeError(
@@ -44,7 +45,7 @@ def vector(name, value, size=3):
     return tuple(v.number(f"{name}[{i}]", c) for i, c in enumerate(value))
 
 
-def direction(name, value):
+def direction(name: str, value: object) -> NDArray[np.float64]:
     """A nonzero 3-vector as a unit float64 array."""
     d = np.array(vector(name, value))
     big = np.abs(d).max()
@@ -52,10 +53,11 @@ def direction(name, value):
         raise ArgumentValueError(f"{name} must not be the zero vector (0, 0, 0): it gives no "
                                  "direction")
     d = d / big            # no overflow or underflow in the norm
-    return d / np.sqrt(d @ d)
+    unit: NDArray[np.float64] = d / np.sqrt(d @ d)
+    return unit
 
 
-def matrix4(name, value):
+def matrix4(name: str, value: object) -> NDArray[np.float64]:
     """A finite 4x4 matrix as a float64 array."""
     a = real_array(name, value, "(4, 4)")
     if a.shape != (4, 4):
@@ -70,7 +72,8 @@ def matrix4(name, value):
     return a
 
 
-def points(name, value, columns=(3,)):
+def points(name: str, value: object,
+           columns: tuple[int, ...] = (3,)) -> tuple[NDArray[np.float64], bool]:
     """(N, c) float64 finite points with c in ``columns``, and whether one point (c,)
     was given.  ``[]`` is an empty batch of ``columns[0]`` columns."""
     shapes = " or ".join(f"(N, {c})" for c in columns)

@@ -34,10 +34,14 @@ References
 
 import math
 import numbers
+from collections.abc import Iterable, Sequence
+from typing import cast
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
+from .._typing import Angle
 from ..errors import ArgumentTypeError, ArgumentValueError
 from .arrays import direction, points, real_array
 
@@ -53,7 +57,7 @@ _AXIS = {"x": (1.0, 0.0, 0.0), "y": (0.0, 1.0, 0.0), "z": (0.0, 0.0, 1.0)}
 _TINY_ANGLE = 1e-8
 
 
-def _component(name, value):
+def _component(name: str, value: object) -> float:
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
         raise ArgumentTypeError(f"{name} must be a real number, got {v._show(value)} of type "
                                 f"{type(value).__name__}")
@@ -86,8 +90,10 @@ class Quaternion:
     """
 
     __slots__ = ("_q",)
+    _q: NDArray[np.float64]
 
-    def __init__(self, w=1.0, x=0.0, y=0.0, z=0.0):
+    def __init__(self, w: float = 1.0, x: float = 0.0, y: float = 0.0,
+                 z: float = 0.0) -> None:
         q = np.array([_component("w", w), _component("x", x), _component("y", y),
                       _component("z", z)])
         if not q.any():
@@ -98,11 +104,11 @@ class Quaternion:
         q.flags.writeable = False
         object.__setattr__(self, "_q", q)
 
-    def __setattr__(self, name, value):
+    def __setattr__(self, name: str, value: object) -> None:
         raise AttributeError("a Quaternion is immutable; its operations return new ones")
 
     @classmethod
-    def _of(cls, q, what="the result"):
+    def _of(cls, q: NDArray[np.float64], what: str = "the result") -> "Quaternion":
         """A quaternion from the array ``q`` (the result of an operation)."""
         if not np.isfinite(q).all():
             raise ArgumentValueError(f"{what} overflows float64 (components beyond about "
@@ -114,8 +120,31 @@ class Quaternion:
 
     # -- construction ---------------------------------------------------------------------
     @classmethod
-    def from_array(cls, wxyz, name="q"):
-        """The quaternion of the four numbers ``wxyz`` (scalar first)."""
+    def from_array(cls, wxyz: ArrayLike, name: str = "q") -> "Quaternion":
+        """The quaternion of the four numbers ``wxyz`` (scalar first).
+
+        Parameters
+        ----------
+        wxyz : array_like, shape (4,)
+            (w, x, y, z), finite and not all zero.
+        name : str, default "q"
+            The argument's name in error messages.
+
+        Returns
+        -------
+        Quaternion
+
+        Raises
+        ------
+        ArgumentTypeError, ArgumentValueError
+            If ``wxyz`` is not four finite real numbers or is all zero.
+
+        Examples
+        --------
+        >>> from scanline.transform3d import Quaternion
+        >>> Quaternion.from_array([1, 0, 0, 0])
+        Quaternion(w=1, x=0, y=0, z=0)
+        """
         a = real_array(name, wxyz, "(4,): w, x, y, z")
         if a.shape != (4,):
             raise ArgumentValueError(f"{name} must be four numbers (w, x, y, z), got "
@@ -128,9 +157,32 @@ class Quaternion:
         return cls(*(float(c) for c in a))
 
     @classmethod
-    def from_xyzw(cls, xyzw, name="q"):
+    def from_xyzw(cls, xyzw: ArrayLike, name: str = "q") -> "Quaternion":
         """The quaternion stored scalar last (scipy's ``as_quat()``, glTF's
-        ``rotation``): (x, y, z, w)."""
+        ``rotation``): (x, y, z, w).
+
+        Parameters
+        ----------
+        xyzw : array_like, shape (4,)
+            (x, y, z, w), finite and not all zero.
+        name : str, default "q"
+            The argument's name in error messages.
+
+        Returns
+        -------
+        Quaternion
+
+        Raises
+        ------
+        ArgumentTypeError, ArgumentValueError
+            If ``xyzw`` is not four finite real numbers or is all zero.
+
+        Examples
+        --------
+        >>> from scanline.transform3d import Quaternion
+        >>> Quaternion.from_xyzw((0, 1, 0, 0))
+        Quaternion(w=0, x=0, y=1, z=0)
+        """
         a = real_array(name, xyzw, "(4,): x, y, z, w")
         if a.shape != (4,):
             raise ArgumentValueError(f"{name} must be four numbers (x, y, z, w), got "
@@ -138,13 +190,35 @@ class Quaternion:
         return cls.from_array(a[[3, 0, 1, 2]], name)
 
     @classmethod
-    def from_axis_angle(cls, axis, angle):
+    def from_axis_angle(cls, axis: str | ArrayLike, angle: Angle) -> "Quaternion":
         """The rotation by ``angle`` about ``axis`` (through the origin,
         counterclockwise looking from the axis' tip toward the origin):
         q = (cos θ/2, u sin θ/2), u = axis / |axis| (Hearn & Baker, eq. 11-37).
 
-        ``axis`` is a nonzero 3-vector or ``"x"``, ``"y"``, ``"z"``; ``angle`` in
-        radians (or a string with its unit, ``"30deg"``).
+        Parameters
+        ----------
+        axis : {"x", "y", "z"} or (float, float, float)
+            A coordinate axis or a nonzero 3-vector (any length).
+        angle : float or str
+            θ in radians (or a string with its unit, ``"30deg"``).
+
+        Returns
+        -------
+        Quaternion
+            A unit quaternion.
+
+        Raises
+        ------
+        ArgumentTypeError, ArgumentValueError
+            If ``axis`` is neither a coordinate axis nor a finite nonzero 3-vector, or
+            ``angle`` is not a finite angle.
+
+        Examples
+        --------
+        >>> import math
+        >>> from scanline.transform3d import Quaternion
+        >>> Quaternion.from_axis_angle("x", math.pi / 2)
+        Quaternion(w=0.707106781, x=0.707106781, y=0, z=0)
         """
         if isinstance(axis, str):
             v.choice("axis", axis, tuple(_AXIS))
@@ -155,7 +229,7 @@ class Quaternion:
         return cls(math.cos(half), *(float(c) * s for c in u))
 
     @classmethod
-    def from_matrix(cls, m):
+    def from_matrix(cls, m: ArrayLike) -> "Quaternion":
         """The unit quaternion of a rotation matrix (3x3, or 4x4 with no translation
         and last row 0 0 0 1), by Shepperd's method: of 4w², 4x², 4y², 4z² (from the
         trace and the diagonal) the largest is found first, and the other components
@@ -164,6 +238,34 @@ class Quaternion:
 
         A matrix that is not a rotation (a scaling, a reflection, a shear, a
         translation) is refused: see :data:`ORTHONORMAL_TOLERANCE`.
+
+        Parameters
+        ----------
+        m : array_like, shape (3, 3) or (4, 4)
+            A finite rotation matrix.
+
+        Returns
+        -------
+        Quaternion
+            The unit quaternion with w >= 0.
+
+        Raises
+        ------
+        ArgumentTypeError, ArgumentValueError
+            If ``m`` is not a finite 3x3 or 4x4 matrix, or not a rotation about the
+            origin.
+
+        References
+        ----------
+        Shepperd 1978 (cited in full in the module docstring).
+
+        Examples
+        --------
+        The rotation by 90° about z:
+
+        >>> from scanline.transform3d import Quaternion
+        >>> Quaternion.from_matrix([[0, -1, 0], [1, 0, 0], [0, 0, 1]])
+        Quaternion(w=0.707106781, x=0, y=0, z=0.707106781)
         """
         a = real_array("m", m, "(3, 3) or (4, 4)")
         if a.shape not in ((3, 3), (4, 4)):
@@ -194,8 +296,9 @@ class Quaternion:
         k = int(np.argmax([trace, a[0, 0], a[1, 1], a[2, 2]]))
         if k == 0:
             r = math.sqrt(1 + trace)                  # r = 2|w|
-            q = (r / 2, (a[2, 1] - a[1, 2]) / (2 * r), (a[0, 2] - a[2, 0]) / (2 * r),
-                 (a[1, 0] - a[0, 1]) / (2 * r))
+            parts: tuple[float, ...] = (
+                r / 2, (a[2, 1] - a[1, 2]) / (2 * r), (a[0, 2] - a[2, 0]) / (2 * r),
+                (a[1, 0] - a[0, 1]) / (2 * r))
         else:
             i = k - 1
             j, l = (i + 1) % 3, (i + 2) % 3
@@ -205,14 +308,14 @@ class Quaternion:
             out[1 + i] = r / 2
             out[1 + j] = (a[j, i] + a[i, j]) / (2 * r)
             out[1 + l] = (a[l, i] + a[i, l]) / (2 * r)
-            q = tuple(out)
-        q = np.array(q, dtype=np.float64)
+            parts = tuple(out)
+        q = np.array(parts, dtype=np.float64)
         if q[0] < 0:
             q = -q
         return cls._of(q / np.linalg.norm(q))
 
     @classmethod
-    def from_euler(cls, seq, angles):
+    def from_euler(cls, seq: str, angles: Angle | Sequence[Angle]) -> "Quaternion":
         """The rotation of Euler angles, with scipy's names for the conventions.
 
         Parameters
@@ -224,7 +327,39 @@ class Quaternion:
             about the axes of the turning body, the first acting first (R = Rx Ry
             Rz for ``"XYZ"``).  As ``scipy.spatial.transform.Rotation.from_euler``.
         angles : sequence of float
-            One angle per letter, in radians (or strings with units, ``"30deg"``).
+            One angle per letter, in radians (or strings with units, ``"30deg"``); a
+            single angle for a single letter.
+
+        Returns
+        -------
+        Quaternion
+            A unit quaternion.
+
+        Raises
+        ------
+        ArgumentTypeError, ArgumentValueError
+            If ``seq`` is not one to three axis letters of one case without a repeat in
+            a row, or ``angles`` is not one finite angle per letter.
+
+        Notes
+        -----
+        The product of the rotations about single axes (Hearn & Baker, section 11-2),
+        composed as quaternions.
+
+        Examples
+        --------
+        Extrinsic "xz" turns about x first, then about the fixed z; intrinsic "XZ"
+        turns about the body's z after the x turn (the fixed -y), so the x axis goes
+        elsewhere:
+
+        >>> import math
+        >>> from scanline.transform3d import Quaternion
+        >>> q = Quaternion.from_euler("xz", [math.pi / 2, math.pi / 2])
+        >>> (q.rotate((1, 0, 0)).round(12) + 0.0).tolist()
+        [0.0, 1.0, 0.0]
+        >>> q = Quaternion.from_euler("XZ", [math.pi / 2, math.pi / 2])
+        >>> (q.rotate((1, 0, 0)).round(12) + 0.0).tolist()
+        [0.0, 0.0, 1.0]
         """
         if not isinstance(seq, str) or not 1 <= len(seq) <= 3 or not (
                 set(seq) <= set("xyz") or set(seq) <= set("XYZ")):
@@ -234,18 +369,17 @@ class Quaternion:
         if any(a == b for a, b in zip(seq, seq[1:])):
             raise ArgumentValueError(f"seq={seq!r} names the same axis twice in a row; "
                                      "successive axes must differ (e.g. 'zxz' or 'xyz')")
-        if isinstance(angles, numbers.Real) or isinstance(angles, str):
-            angles = [angles]
+        given: object = [angles] if isinstance(angles, (numbers.Real, str)) else angles
         try:
-            angles = list(angles)
+            values = list(cast(Iterable[object], given))
         except TypeError:
             raise ArgumentTypeError(f"angles must be {len(seq)} angle(s), got "
                                     f"{v._show(angles)}") from None
-        if len(angles) != len(seq):
+        if len(values) != len(seq):
             raise ArgumentValueError(f"angles must hold one angle per axis of seq={seq!r} "
-                                     f"({len(seq)}), got {len(angles)}")
+                                     f"({len(seq)}), got {len(values)}")
         steps = [cls.from_axis_angle(axis.lower(), v.angle(f"angles[{i}]", a))
-                 for i, (axis, a) in enumerate(zip(seq, angles))]
+                 for i, (axis, a) in enumerate(zip(seq, values))]
         q = steps[0]
         for step in steps[1:]:
             q = step * q if seq.islower() else q * step
@@ -253,49 +387,49 @@ class Quaternion:
 
     # -- components -----------------------------------------------------------------------
     @property
-    def w(self):
+    def w(self) -> float:
         """The scalar part."""
         return float(self._q[0])
 
     @property
-    def x(self):
+    def x(self) -> float:
         """The i component."""
         return float(self._q[1])
 
     @property
-    def y(self):
+    def y(self) -> float:
         """The j component."""
         return float(self._q[2])
 
     @property
-    def z(self):
+    def z(self) -> float:
         """The k component."""
         return float(self._q[3])
 
     @property
-    def wxyz(self):
+    def wxyz(self) -> NDArray[np.float64]:
         """(w, x, y, z) as a read-only float64 array."""
         return self._q
 
     @property
-    def xyzw(self):
+    def xyzw(self) -> NDArray[np.float64]:
         """(x, y, z, w): scalar last, as scipy and glTF store it."""
         return self._q[[1, 2, 3, 0]]
 
     @property
-    def norm(self):
+    def norm(self) -> float:
         """|q| = sqrt(w² + x² + y² + z²)."""
         big = np.abs(self._q).max()
         return float(big * np.linalg.norm(self._q / big))
 
     @property
-    def angle(self):
+    def angle(self) -> float:
         """The rotation angle in [0, π] (radians)."""
         q = self.normalize()._q
         return float(2 * math.atan2(np.linalg.norm(q[1:]), abs(q[0])))
 
     @property
-    def axis(self):
+    def axis(self) -> NDArray[np.float64]:
         """The unit rotation axis (for the angle in [0, π]); (1, 0, 0) for the
         identity, whose axis is any."""
         q = self.normalize()._q
@@ -304,7 +438,7 @@ class Quaternion:
         return np.array([1.0, 0.0, 0.0]) if n == 0 else u / n
 
     # -- algebra --------------------------------------------------------------------------
-    def __mul__(self, other):
+    def __mul__(self, other: object) -> "Quaternion":
         """The Hamilton product (Hearn & Baker, eq. A-51):
         (s1, v1)(s2, v2) = (s1 s2 - v1·v2, s1 v2 + s2 v1 + v1 × v2).  As rotations,
         ``q1 * q2`` turns by q2 first, then by q1."""
@@ -316,72 +450,203 @@ class Quaternion:
             out = np.concatenate([[s1 * s2 - v1 @ v2], s1 * v2 + s2 * v1 + np.cross(v1, v2)])
         return Quaternion._of(out, "the product")
 
-    def __neg__(self):
+    def __neg__(self) -> "Quaternion":
         """-q: the same rotation, the other sign."""
         return Quaternion(*(-self._q))
 
-    def dot(self, other):
-        """The four-dimensional dot product w1 w2 + x1 x2 + y1 y2 + z1 z2."""
+    def dot(self, other: "Quaternion") -> float:
+        """The four-dimensional dot product w1 w2 + x1 x2 + y1 y2 + z1 z2.
+
+        Parameters
+        ----------
+        other : Quaternion
+
+        Returns
+        -------
+        float
+            For unit quaternions, the cosine of half the angle between the rotations
+            (up to sign).
+
+        Raises
+        ------
+        ArgumentTypeError
+            If ``other`` is not a Quaternion.
+
+        Examples
+        --------
+        >>> from scanline.transform3d import Quaternion
+        >>> Quaternion(1, 2, 3, 4).dot(Quaternion(1, 0, 0, 1))
+        5.0
+        """
         if not isinstance(other, Quaternion):
             raise ArgumentTypeError(f"other must be a Quaternion, got {v._show(other)}")
         return float(self._q @ other._q)
 
-    def conjugate(self):
-        """q* = (w, -x, -y, -z)."""
+    def conjugate(self) -> "Quaternion":
+        """q* = (w, -x, -y, -z).
+
+        Returns
+        -------
+        Quaternion
+
+        Examples
+        --------
+        >>> from scanline.transform3d import Quaternion
+        >>> Quaternion(1, 2, 3, 4).conjugate()
+        Quaternion(w=1, x=-2, y=-3, z=-4)
+        """
         return Quaternion(self._q[0], *(-self._q[1:]))
 
-    def inverse(self):
-        """q⁻¹ = q* / |q|² (the inverse rotation; q* itself for a unit q)."""
+    def inverse(self) -> "Quaternion":
+        """q⁻¹ = q* / |q|² (the inverse rotation; q* itself for a unit q).
+
+        Returns
+        -------
+        Quaternion
+
+        Raises
+        ------
+        ArgumentValueError
+            If the inverse overflows or underflows float64.
+
+        Examples
+        --------
+        >>> from scanline.transform3d import Quaternion
+        >>> Quaternion(1, 1, 1, 1).inverse()          # |q| = 2
+        Quaternion(w=0.25, x=-0.25, y=-0.25, z=-0.25)
+        """
         n = self.norm
         return Quaternion._of(self.conjugate()._q / n / n, "the inverse")
 
-    def normalize(self):
-        """q / |q|: the unit quaternion of the same rotation."""
+    def normalize(self) -> "Quaternion":
+        """q / |q|: the unit quaternion of the same rotation.
+
+        Returns
+        -------
+        Quaternion
+
+        Examples
+        --------
+        >>> from scanline.transform3d import Quaternion
+        >>> Quaternion(0, 3, 0, 4).normalize()
+        Quaternion(w=0, x=0.6, y=0, z=0.8)
+        """
         big = np.abs(self._q).max()
         q = self._q / big
         return Quaternion(*(q / np.linalg.norm(q)))
 
-    def __eq__(self, other):
+    def __eq__(self, other: object) -> bool:
         if not isinstance(other, Quaternion):
             return NotImplemented
         return bool((self._q == other._q).all())
 
-    def __hash__(self):
+    def __hash__(self) -> int:
         return hash(tuple(self._q.tolist()))
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return "Quaternion(w={:.9g}, x={:.9g}, y={:.9g}, z={:.9g})".format(*self._q)
 
-    def __reduce__(self):
+    def __reduce__(self) -> tuple[type["Quaternion"], tuple[float, ...]]:
         return (Quaternion, tuple(self._q.tolist()))
 
     # -- as a rotation --------------------------------------------------------------------
-    def matrix3(self):
-        """The 3x3 rotation matrix (Hearn & Baker, eq. 11-41) of q / |q|."""
+    def matrix3(self) -> NDArray[np.float64]:
+        """The 3x3 rotation matrix (Hearn & Baker, eq. 11-41) of q / |q|.
+
+        Returns
+        -------
+        ndarray of float64, shape (3, 3)
+
+        Examples
+        --------
+        The half turn about z:
+
+        >>> from scanline.transform3d import Quaternion
+        >>> Quaternion(0, 0, 0, 1).matrix3().tolist()
+        [[-1.0, 0.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, 1.0]]
+        """
         s, a, b, c = self.normalize()._q
         return np.array([
             [1 - 2 * (b * b + c * c), 2 * (a * b - s * c), 2 * (a * c + s * b)],
             [2 * (a * b + s * c), 1 - 2 * (a * a + c * c), 2 * (b * c - s * a)],
             [2 * (a * c - s * b), 2 * (b * c + s * a), 1 - 2 * (a * a + b * b)]])
 
-    def matrix(self):
+    def matrix(self) -> NDArray[np.float64]:
         """The 4x4 homogeneous rotation matrix (the 3x3 of :meth:`matrix3` in the
-        upper left), ready for :func:`scanline.transform3d.compose`."""
+        upper left), ready for :func:`scanline.transform3d.compose`.
+
+        Returns
+        -------
+        ndarray of float64, shape (4, 4)
+
+        Examples
+        --------
+        >>> from scanline.transform3d import Quaternion
+        >>> Quaternion(0, 0, 0, 1).matrix().tolist()
+        [[-1.0, 0.0, 0.0, 0.0], [0.0, -1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0]]
+        """
         m = np.eye(4)
         m[:3, :3] = self.matrix3()
         return m
 
-    def rotate(self, vectors):
+    def rotate(self, vectors: ArrayLike) -> NDArray[np.float64]:
         """``vectors`` (one (3,) or (N, 3)) rotated: q p q⁻¹ for each p, computed
-        as the matrix product (the same rotation, fewer operations)."""
+        as the matrix product (the same rotation, fewer operations).
+
+        Parameters
+        ----------
+        vectors : array_like, shape (N, 3) or (3,)
+            Finite points or vectors.
+
+        Returns
+        -------
+        ndarray of float64, in the shape of ``vectors``
+
+        Raises
+        ------
+        ArgumentTypeError, ArgumentValueError
+            If ``vectors`` is not finite points of shape (N, 3) or (3,).
+
+        Notes
+        -----
+        Hearn & Baker, section 11-2, eq. 11-40 (p' = q p q⁻¹) and eq. 11-41.
+
+        Examples
+        --------
+        The half turn about z maps (x, y, z) to (-x, -y, z):
+
+        >>> from scanline.transform3d import Quaternion
+        >>> Quaternion(0, 0, 0, 1).rotate([(1, 2, 3), (0, 1, 0)]).tolist()
+        [[-1.0, -2.0, 3.0], [0.0, -1.0, 0.0]]
+        """
         p, single = points("vectors", vectors)
-        out = p @ self.matrix3().T
-        return out[0] if single else out
+        out: NDArray[np.float64] = p @ self.matrix3().T
+        return out.reshape(3) if single else out
 
     # -- Shoemake's curves ----------------------------------------------------------------
-    def log(self):
+    def log(self) -> NDArray[np.float64]:
         """The logarithm of the unit quaternion q / |q| = (cos θ, u sin θ):
-        (0, u θ), θ in [0, π]."""
+        (0, u θ), θ in [0, π].
+
+        Returns
+        -------
+        ndarray of float64, shape (4,)
+            The pure quaternion (0, u θ), scalar first.
+
+        References
+        ----------
+        Shoemake 1985 (cited in full in the module docstring).
+
+        Examples
+        --------
+        The quarter turn about z is (cos π/4, sin π/4 (0, 0, 1)); its log is
+        (0, 0, 0, π/4):
+
+        >>> import math
+        >>> from scanline.transform3d import Quaternion
+        >>> Quaternion.from_axis_angle("z", math.pi / 2).log().round(9).tolist()
+        [0.0, 0.0, 0.0, 0.785398163]
+        """
         q = self.normalize()._q
         n = np.linalg.norm(q[1:])
         if n == 0:
@@ -390,9 +655,32 @@ class Quaternion:
         return np.concatenate([[0.0], q[1:] * (theta / n)])
 
     @staticmethod
-    def exp(pure):
+    def exp(pure: ArrayLike) -> "Quaternion":
         """exp((0, u θ)) = (cos θ, u sin θ) for a pure quaternion ``pure`` (four
-        numbers, w = 0, or three: the vector part), the inverse of :meth:`log`."""
+        numbers, w = 0, or three: the vector part), the inverse of :meth:`log`.
+
+        Parameters
+        ----------
+        pure : array_like, shape (4,) or (3,)
+            (0, x, y, z) or (x, y, z), finite.
+
+        Returns
+        -------
+        Quaternion
+            A unit quaternion.
+
+        Raises
+        ------
+        ArgumentTypeError, ArgumentValueError
+            If ``pure`` is not three or four finite numbers, or has w != 0.
+
+        Examples
+        --------
+        >>> import math
+        >>> from scanline.transform3d import Quaternion
+        >>> Quaternion.exp((0, 0, math.pi / 4))
+        Quaternion(w=0.707106781, x=0, y=0, z=0.707106781)
+        """
         a = real_array("pure", pure, "(3,) or (4,)")
         if a.shape == (4,):
             if a[0] != 0:
@@ -406,20 +694,46 @@ class Quaternion:
             return Quaternion(1.0, 0.0, 0.0, 0.0)
         return Quaternion(math.cos(theta), *(a * (math.sin(theta) / theta)))
 
-    def slerp(self, other, t):
+    def slerp(self, other: "Quaternion", t: float) -> "Quaternion":
         """The in-between at ``t`` (0 gives this rotation, 1 ``other``) on the
-        shorter great arc; see :func:`slerp`."""
+        shorter great arc; see :func:`slerp`.
+
+        Parameters
+        ----------
+        other : Quaternion
+            The orientation at t = 1.
+        t : float
+            The parameter, finite (outside [0, 1] extrapolates).
+
+        Returns
+        -------
+        Quaternion
+            A unit quaternion.
+
+        Raises
+        ------
+        ArgumentTypeError, ArgumentValueError
+            As :func:`slerp`.
+
+        Examples
+        --------
+        >>> import math
+        >>> from scanline.transform3d import Quaternion
+        >>> b = Quaternion.from_axis_angle("z", math.pi / 2)
+        >>> round(math.degrees(Quaternion().slerp(b, 0.25).angle), 9)
+        22.5
+        """
         return slerp(self, other, t)
 
 
-def _quaternion(name, q):
+def _quaternion(name: str, q: object) -> Quaternion:
     if not isinstance(q, Quaternion):
         raise ArgumentTypeError(f"{name} must be a scanline.transform3d.Quaternion, got "
                                 f"{v._show(q)}")
     return q
 
 
-def slerp(q1, q2, t):
+def slerp(q1: Quaternion, q2: Quaternion, t: float) -> Quaternion:
     """Spherical linear interpolation (Shoemake 1985, section 3.3):
 
         slerp(q1, q2; t) = sin((1 - t) θ) / sin θ · q1 + sin(t θ) / sin θ · q2,
@@ -430,6 +744,31 @@ def slerp(q1, q2, t):
     orientation; the long way would turn by more than π).  The angular velocity is
     constant in t.  ``t`` outside [0, 1] extrapolates along the same great circle.
 
+    Parameters
+    ----------
+    q1, q2 : Quaternion
+        The orientations at t = 0 and t = 1 (any nonzero lengths).
+    t : float
+        The parameter, finite.
+
+    Returns
+    -------
+    Quaternion
+        A unit quaternion.
+
+    Raises
+    ------
+    ArgumentTypeError
+        If ``q1`` or ``q2`` is not a Quaternion.
+    ArgumentValueError
+        If ``t`` is not finite, or so far outside [0, 1] that the result overflows.
+
+    References
+    ----------
+    Shoemake 1985 (cited in full in the module docstring).
+
+    Examples
+    --------
     >>> import math
     >>> from scanline.transform3d import Quaternion, slerp
     >>> a = Quaternion(1, 0, 0, 0)
@@ -454,7 +793,7 @@ def slerp(q1, q2, t):
     return _unit(out, "slerp")
 
 
-def _unit(q, what):
+def _unit(q: NDArray[np.float64], what: str) -> Quaternion:
     """``q`` / |q| without overflow; an error naming ``what`` where q is not finite or
     zero (t far outside [0, 1] on nearly equal keys)."""
     with np.errstate(over="ignore", invalid="ignore"):
@@ -465,7 +804,8 @@ def _unit(q, what):
     return Quaternion._of(q / np.linalg.norm(q), what)
 
 
-def squad(q1, q2, a1, a2, t):
+def squad(q1: Quaternion, q2: Quaternion, a1: Quaternion, a2: Quaternion,
+          t: float) -> Quaternion:
     """Spherical cubic interpolation between key orientations q1 and q2 with inner
     control points a1 and a2 (Shoemake 1985, section 6; his "squad"):
 
@@ -475,6 +815,41 @@ def squad(q1, q2, a1, a2, t):
     the curve through the keys has a continuous tangent at each key.  Here the inner
     slerps take the arc as given (no short-arc flip: the keys are put on one
     hemisphere beforehand, as :func:`squad_controls` does).
+
+    Parameters
+    ----------
+    q1, q2 : Quaternion
+        The key orientations at t = 0 and t = 1.
+    a1, a2 : Quaternion
+        Their inner control points (:func:`squad_controls`).
+    t : float
+        The parameter, finite.
+
+    Returns
+    -------
+    Quaternion
+        A unit quaternion.
+
+    Raises
+    ------
+    ArgumentTypeError
+        If an orientation is not a Quaternion.
+    ArgumentValueError
+        If ``t`` is not finite or the result overflows.
+
+    References
+    ----------
+    Shoemake 1985 (cited in full in the module docstring).
+
+    Examples
+    --------
+    With the keys as their own controls the middle is slerp's: half of a quarter turn.
+
+    >>> import math
+    >>> from scanline.transform3d import Quaternion, squad
+    >>> a, b = Quaternion(), Quaternion.from_axis_angle("z", math.pi / 2)
+    >>> round(math.degrees(squad(a, b, a, b, 0.5).angle), 9)
+    45.0
     """
     qs = [_quaternion(n, q).normalize()._q for n, q in
           (("q1", q1), ("q2", q2), ("a1", a1), ("a2", a2))]
@@ -485,7 +860,7 @@ def squad(q1, q2, a1, a2, t):
     return Quaternion._of(out, "squad")
 
 
-def _arc(p, q, t):
+def _arc(p: NDArray[np.float64], q: NDArray[np.float64], t: float) -> NDArray[np.float64]:
     """slerp on the great arc from unit p to unit q as given (the long way round when
     p · q < 0)."""
     d = min(max(float(p @ q), -1.0), 1.0)
@@ -495,10 +870,12 @@ def _arc(p, q, t):
     else:
         s = math.sin(theta)
         out = math.sin((1 - t) * theta) / s * p + math.sin(t * theta) / s * q
-    return out / np.linalg.norm(out)
+    unit: NDArray[np.float64] = out / np.linalg.norm(out)
+    return unit
 
 
-def hemisphere(quaternions, name="quaternions"):
+def hemisphere(quaternions: Iterable[Quaternion],
+               name: str = "quaternions") -> list[Quaternion]:
     """The unit quaternions of a sequence, each negated where needed so that it lies
     on the same hemisphere as the one before (q_i · q_(i+1) >= 0): the same
     orientations, and in-betweens that take the short way round."""
@@ -509,7 +886,8 @@ def hemisphere(quaternions, name="quaternions"):
     return keys
 
 
-def squad_controls(quaternions):
+def squad_controls(quaternions: Iterable[Quaternion]
+                   ) -> tuple[list[Quaternion], list[Quaternion]]:
     """The inner control points a_i of :func:`squad` for a key sequence q_0 ... q_n
     (put on one hemisphere first by :func:`hemisphere`; Shoemake 1985, section 6):
 
@@ -517,11 +895,46 @@ def squad_controls(quaternions):
 
     with q_(-1) = q_0 and q_(n+1) = q_n at the ends.  Returns (keys, controls): the
     hemisphere-aligned keys and one control per key.
+
+    Parameters
+    ----------
+    quaternions : iterable of Quaternion
+        The key orientations, at least one.
+
+    Returns
+    -------
+    keys : list of Quaternion
+        The unit keys, each on the hemisphere of the one before.
+    controls : list of Quaternion
+        One inner control point per key.
+
+    Raises
+    ------
+    ArgumentTypeError
+        If a key is not a Quaternion.
+    ArgumentValueError
+        If there is no key.
+
+    References
+    ----------
+    Shoemake 1985 (cited in full in the module docstring).
+
+    Examples
+    --------
+    For the two keys 0 and a quarter turn about z, the controls turn by -π/8 and
+    π/2 + π/8 about z (the tangent -(log q1 + log q0) / 4 = (0, 0, 0, -π/16)):
+
+    >>> import math
+    >>> from scanline.transform3d import Quaternion, squad_controls
+    >>> keys, controls = squad_controls([Quaternion(),
+    ...                                  Quaternion.from_axis_angle("z", math.pi / 2)])
+    >>> [round(math.degrees(c.angle), 9) for c in controls]
+    [22.5, 112.5]
     """
     keys = hemisphere(quaternions)
     if not keys:
         raise ArgumentValueError("quaternions must hold at least one key orientation")
-    controls = []
+    controls: list[Quaternion] = []
     for i, q in enumerate(keys):
         before, after = keys[max(i - 1, 0)], keys[min(i + 1, len(keys) - 1)]
         inv = q.conjugate()

@@ -12,9 +12,8 @@ import html
 import os
 import shlex
 
-from ..cli import trace as cli_trace
 from ..framebuffer import write_atomically
-from .explorer import parse
+from .explorer import parse, table_of
 from .quiz import MAX_SEED, QUESTIONS, case
 
 #: Most cases one sheet takes.
@@ -73,7 +72,7 @@ def trace_text(algorithm: str, args: list[str]) -> str:
     >>> print(trace_text("bresenham", ["0", "0", "2", "1"]).splitlines()[0])
     Bresenham line (0, 0) -> (2, 1)
     """
-    return str(cli_trace.table_of(parse(algorithm, args)))
+    return str(table_of(parse(algorithm, args)))
 
 
 def sheet_html(algorithm: str, count: int, seed: int) -> str:
@@ -115,7 +114,7 @@ def sheet_html(algorithm: str, count: int, seed: int) -> str:
     for s in range(seed, seed + count):
         args = case(algorithm, s)
         text = trace_text(algorithm, args)
-        table = cli_trace.table_of(parse(algorithm, args))
+        table = table_of(parse(algorithm, args))
         command = shlex.join(["scanline", "trace", algorithm, *args])
         head = "".join(f"<th>{esc(c)}</th>" for c in table.columns)
         blank = "".join("<tr>" + "<td></td>" * len(table.columns) + "</tr>"

@@ -10,11 +10,14 @@ the page may drag, as indices into the argument list.  The page never runs an
 algorithm.
 """
 
+from __future__ import annotations
+
 import argparse
 import math
 import operator
 import re
 import shlex
+from typing import Any
 
 from .. import budget
 from ..cli import Parser, UsageError
@@ -31,6 +34,7 @@ from ..trace.shading import WIDTH as SH_WIDTH
 from ..trace.raytracing import HEIGHT as RT_HEIGHT
 from ..trace.raytracing import WIDTH as RT_WIDTH
 from ..trace.seedfill import EXAMPLE_GRID, _rows
+from ..trace.table import Table
 from ..trace.visible import SCENES as DEPTH_SORT_SCENES
 from ..trace.subdivision import HEIGHT as WA_HEIGHT
 from ..trace.subdivision import WIDTH as WA_WIDTH
@@ -87,14 +91,14 @@ def _parsers():
 _SUBS, _ROOT = _parsers()
 
 
-def catalog():
+def catalog() -> list[dict[str, Any]]:
     """The algorithms: name, description, usage line and default arguments."""
     return [{"name": name, "description": desc, "usage": _SUBS[name].format_usage().strip()
              .replace("usage: ", ""), "defaults": DEFAULTS.get(name, [])}
             for name, (desc, _, _) in cli_trace.ALGORITHMS.items()]
 
 
-def parse(algorithm, args):
+def parse(algorithm: str, args: list[str]) -> argparse.Namespace:
     """The parsed namespace of ``scanline trace ALGORITHM ARGS...``; BadArguments with
     the command line's message otherwise."""
     if algorithm not in _SUBS:
@@ -790,7 +794,7 @@ def check_memory(ns, limit_bytes=None):
                f"an ellipse of semi-axes {ns.rx} and {ns.ry}", limit_bytes)
 
 
-def explore(algorithm, args, limit_bytes=None):
+def explore(algorithm: str, args: list[str], limit_bytes: float | None = None) -> dict[str, Any]:
     """The explorer's view of ``scanline trace ALGORITHM ARGS...``: a JSON-ready dict
     with the table (title, notes, columns, rows as lists in column order), one step
     per row (``steps``; or, for the line algorithms, ``pixel_columns`` naming the
@@ -801,12 +805,12 @@ def explore(algorithm, args, limit_bytes=None):
     return view_of(parse(algorithm, args), limit_bytes)
 
 
-def view_of(ns, limit_bytes=None):
+def view_of(ns: argparse.Namespace, limit_bytes: float | None = None) -> dict[str, Any]:
     """The explorer's view of parsed arguments (see :func:`explore`)."""
     check_memory(ns, limit_bytes)
     if ns.algorithm in ("midpoint-circle", "midpoint-ellipse") and ns.center is None:
         ns.center = [0, 0]
-    table = cli_trace.table_of(ns)
+    table = table_of(ns)
     if len(table.rows) > MAX_ROWS:
         raise BadArguments(f"the table has {len(table.rows)} rows; the explorer shows at most "
                            f"{MAX_ROWS} (use scanline trace for longer ones)")
@@ -818,6 +822,13 @@ def view_of(ns, limit_bytes=None):
                  "count": len(table.rows),
                  "command": shlex.join(["scanline", "trace", ns.algorithm, *tokens])})
     return view
+
+
+def table_of(ns: argparse.Namespace) -> Table:
+    """The step table of parsed arguments: ``scanline trace``'s own
+    (:func:`scanline.cli.trace.table_of`)."""
+    table: Table = cli_trace.table_of(ns)
+    return table
 
 
 def _cells(table):

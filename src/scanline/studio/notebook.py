@@ -19,7 +19,7 @@ from .explorer import parse
 from .page import explain_html
 
 
-class Explorer(anywidget.AnyWidget):  # type: ignore[misc]
+class Explorer(anywidget.AnyWidget):
     """The explorer of one case of ``scanline trace ALGORITHM ARGS...`` as a widget.
 
     Setting ``algorithm``, ``args`` or ``quiz`` rebuilds the page (``html``);

@@ -7,9 +7,14 @@ file.  Text from the table reaches the page only as JSON data, which the script
 shows with ``textContent``.
 """
 
+from __future__ import annotations
+
+import argparse
 import json
+import os
 import re
 from importlib import resources
+from typing import Any
 
 from ..framebuffer import write_atomically
 from .explorer import view_of
@@ -18,13 +23,13 @@ from .quiz import questions
 STATIC = resources.files("scanline.studio") / "static"
 
 
-def _json_for_script(data):
+def _json_for_script(data: Any) -> str:
     """JSON that cannot end the <script> element it sits in."""
     return (json.dumps(data, separators=(",", ":"))
             .replace("<", "\\u003c").replace(">", "\\u003e").replace("&", "\\u0026"))
 
 
-def explain_html(ns, quiz=False):
+def explain_html(ns: argparse.Namespace, quiz: bool = False) -> str:
     """The self-contained explorer page of the parsed ``scanline trace`` arguments;
     ``quiz``: the page asks each step before showing it (:mod:`scanline.studio.quiz`)."""
     html = (STATIC / "explorer.html").read_text(encoding="utf-8")
@@ -48,7 +53,7 @@ def explain_html(ns, quiz=False):
     return html
 
 
-def explain(ns, path, quiz=False):
+def explain(ns: argparse.Namespace, path: str | os.PathLike[str], quiz: bool = False) -> None:
     """Write the page of ``ns`` (arguments parsed by ``scanline explain``) to ``path``,
     atomically (``quiz``: the quiz page)."""
     page = explain_html(ns, quiz)

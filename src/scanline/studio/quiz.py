@@ -242,7 +242,7 @@ def case(algorithm: str, seed: int) -> list[str]:
     return list(DEFAULTS[algorithm])
 
 
-def questions(algorithm: str, view: dict[str, Any]) -> list[dict[str, Any]]:
+def questions(algorithm: str, view: dict[str, Any]) -> list[dict[str, Any] | None]:
     """The question of each step of ``view`` (:func:`scanline.studio.explorer.view_of`),
     answered from its rows; ``None`` where the row has no value in the asked column.
 
@@ -271,7 +271,7 @@ def questions(algorithm: str, view: dict[str, Any]) -> list[dict[str, Any]]:
     index = [view["columns"].index(c) for c in question.columns]
     answers = [[row[i] for i in index] for row in view["rows"]]
     choices = sorted({str(a[0]) for a in answers if a[0] is not None} | set(question.offered))
-    asked = [None if any(v is None for v in a) else
+    asked: list[dict[str, Any] | None] = [None if any(v is None for v in a) else
              {"kind": question.kind, "columns": list(question.columns), "prompt": question.prompt,
               "answer": a, "tolerance": question.tolerance,
               **({"choices": choices} if question.kind == "choice" else {})}

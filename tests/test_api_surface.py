@@ -23,6 +23,7 @@ COMPLETE = [
     "scanline.depthbuffer",
     "scanline.lighting",
     "scanline.framebuffer",
+    "scanline.csg",
 ]
 
 

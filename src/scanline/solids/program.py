@@ -4,8 +4,10 @@ hierarchy over the triangles of every mesh primitive (Roth 1982: ray casting a C
 tree; :mod:`scanline._kernels.csg`)."""
 
 import math
+from typing import TYPE_CHECKING
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentValueError
@@ -13,6 +15,9 @@ from ..errors import ArgumentValueError
 #: Intervals one ray's list may hold at any node of the tree (Roth's lists are
 #: bounded here so that each thread's lists are allocated once).
 MAX_INTERVALS = 32
+
+if TYPE_CHECKING:
+    from .base import Solid
 
 _OPS = {"union": 1, "intersection": 2, "difference": 3}
 
@@ -57,7 +62,7 @@ class Program:
         Each primitive's.
     """
 
-    def __init__(self, solid, max_intervals=MAX_INTERVALS):
+    def __init__(self, solid: "Solid", max_intervals: int = MAX_INTERVALS) -> None:
         from ..raytrace import BVH
         from .meshsolid import MeshSolid
         from .._kernels.solids import COLUMNS, MESH
@@ -139,7 +144,7 @@ class Program:
         t, _, normal = self.cast(p, np.broadcast_to(d, p.shape).copy(), tmin=0.0)
         return np.isfinite(t) & (normal @ d > 0)
 
-    def moments(self, origins):
+    def moments(self, origins: NDArray[np.float64]) -> NDArray[np.float64]:
         """Per ray up +z from ``origins`` (R, 3), the integrals of 1, z and z^2 over
         its inside (:func:`scanline._kernels.csg.moments`), (R, 3)."""
         from .._kernels._threads import call_in_bands

@@ -28,6 +28,38 @@ def test_license_is_an_spdx_expression_with_its_files():
     assert (ROOT / "LICENSE").read_text().startswith("MIT License")
 
 
+def test_the_distribution_name_and_one_version():
+    """``scanline`` on the package index is an unrelated project: the distribution is
+    ``scanline-graphics``, its version read from ``scanline.__version__`` alone, and the
+    changelog's latest release is that version."""
+    import re
+
+    import scanline
+
+    project = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]
+    assert project["name"] == "scanline-graphics"
+    assert "version" not in project and project["dynamic"] == ["version"]
+    assert scanline.__version__ == "0.2.0"
+    releases = re.findall(r"^## \[(\d+\.\d+\.\d+)\] - ", (ROOT / "CHANGELOG.md").read_text(), re.M)
+    assert releases[:2] == ["0.2.0", "0.1.0"]
+
+
+def test_install_hints_name_the_distribution():
+    """Every ``pip install`` hint in messages and documentation names
+    ``scanline-graphics`` (``pip install 'scanline[video]'`` would fetch the wrong
+    project)."""
+    import re
+
+    wrong = re.compile(r"""(install|\(|`)\s*['"]?scanline\[""")
+    # docs/studio.md's notebook hint is the studio's to change with its notebook extra
+    files = [ROOT / "README.md", *(p for p in (ROOT / "docs").glob("*.md") if p.name != "studio.md"),
+             *(ROOT / "src" / "scanline").rglob("*.py")]
+    bad = [f"{f.relative_to(ROOT)}:{n}" for f in files
+           for n, line in enumerate(f.read_text(encoding="utf-8").splitlines(), 1)
+           if wrong.search(line)]
+    assert not bad, bad
+
+
 @pytest.fixture(scope="module")
 def dist(tmp_path_factory):
     """The sdist and the wheel, built from this checkout as a user would."""
@@ -71,6 +103,7 @@ def test_the_wheel_is_lean(dist):
     assert "scanline/data/scenes/rotation.toml" in names and "scanline/py.typed" in names
     meta = zipfile.ZipFile(wheel).read(next(n for n in names if n.endswith("METADATA"))).decode()
     assert "License-Expression: MIT AND Bitstream-Vera" in meta
+    assert "\nName: scanline-graphics\n" in meta and "\nVersion: 0.2.0\n" in meta
     # what is in it is the package's sources (3.1 MB on 2026-12-05, grown with chapters
     # 10-14) and one 0.76 MB font: the bound catches a data file or a cache swept in
     assert sum(zipfile.ZipFile(wheel).getinfo(n).file_size for n in names) < 5_000_000

@@ -16,7 +16,7 @@ import numba; the compiled kernels load on first use.
 import importlib
 from typing import TYPE_CHECKING, Any, List
 
-__version__ = "0.1.0"
+__version__ = "0.2.0"
 
 if TYPE_CHECKING:   # what the lazy attributes are, for type checkers and editors
     # ("X as X" marks each as exported; a test keeps this list equal to _LAZY)

@@ -513,7 +513,7 @@ def _mp4_available():
         import av  # noqa: F401
     except ImportError:
         raise ArgumentValueError("writing .mp4 needs PyAV (which brings FFmpeg): pip install "
-                                 "'scanline[video]', or save as .gif, .png or .webp") from None
+                                 "'scanline-graphics[video]', or save as .gif, .png or .webp") from None
 
 
 def _progress(progress, total):

@@ -118,7 +118,7 @@ def render_chunk(render, indices, compress=False, slots=None, slot=None):
 
 def _lz4():
     """The ``lz4.block`` module, or None when lz4 is not installed (it comes with
-    ``scanline[dask]``)."""
+    ``scanline-graphics[dask]``)."""
     try:
         import lz4.block
     except ImportError:
@@ -475,7 +475,7 @@ def connect(client):
         from distributed import Client
     except ImportError:
         raise ArgumentValueError("rendering on a Dask cluster needs dask.distributed: pip "
-                                 "install 'scanline[dask]'") from None
+                                 "install 'scanline-graphics[dask]'") from None
     deadline = time.monotonic() + CONNECT_TIMEOUT
     _probe(address, CONNECT_TIMEOUT)
     made, gave_up = [], threading.Event()

@@ -3,7 +3,7 @@
 table's view, the explorer's own static JavaScript and style, inlined), so that it
 works offline, with no server.
 
-``pip install 'scanline[notebook]'`` installs anywidget; the rest of the package
+``pip install 'scanline-graphics[notebook]'`` installs anywidget; the rest of the package
 does not need it.
 """
 

@@ -13,6 +13,7 @@ from tests import api_surface
 COMPLETE = [
     "scanline.errors",
     "scanline.geometry",
+    "scanline.clip",
     "scanline.budget",
     "scanline.linestyle",
     "scanline.imagefile",

@@ -2,10 +2,13 @@
 against a window, as the visible arcs; any curve through its flattened polyline."""
 
 import math
+from typing import Protocol, Sequence, Union, cast
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
+from .._typing import ClipMethod, Points
 from ..curves.flatten import MAX_POINTS
 from ..errors import ArgumentTypeError, ArgumentValueError
 from . import window as w
@@ -13,11 +16,21 @@ from .lines import _points, polyline
 
 TWO_PI = 2 * math.pi
 
+#: An angle interval (start, end) of an arc, radians.
+Interval = tuple[float, float]
 
-def _intersect(intervals, start, length):
+
+class Flattenable(Protocol):
+    """A curve that flattens itself into a polyline (the curves of
+    :mod:`scanline.curves`)."""
+
+    def flatten(self, tolerance: float = ...) -> NDArray[np.float64]: ...
+
+
+def _intersect(intervals: list[Interval], start: float, length: float) -> list[Interval]:
     """The parts of ``intervals`` (sorted, within [0, 2 pi)) inside the circular
     interval [start, start + length)."""
-    out = []
+    out: list[Interval] = []
     for s0 in (start - TWO_PI, start, start + TWO_PI):
         for a, b in intervals:
             lo, hi = max(a, s0), min(b, s0 + length)
@@ -26,7 +39,8 @@ def _intersect(intervals, start, length):
     return sorted(out)
 
 
-def ellipse(xc, yc, rx, ry, window):
+def ellipse(xc: float, yc: float, rx: float, ry: float, window: w.WindowLike
+            ) -> list[Interval]:
     """The visible arcs of the ellipse (x - xc)**2 / rx**2 + (y - yc)**2 / ry**2 = 1.
 
     Parameters
@@ -45,6 +59,12 @@ def ellipse(xc, yc, rx, ry, window):
         +x (the point is (xc + rx cos t, yc + ry sin t)); ``0 <= start < 2 pi``
         and ``start < end <= start + 2 pi``: an arc through t = 0 ends beyond
         2 pi.  The whole ellipse is ``[(0.0, 2 pi)]``.
+
+    Raises
+    ------
+    TypeError, ValueError
+        A center or semi-axis that is not a finite number, ``rx`` or ``ry`` <= 0, or
+        a window that is degenerate or not convex.
 
     Notes
     -----
@@ -69,7 +89,7 @@ def ellipse(xc, yc, rx, ry, window):
     ring = w.polygon(window, convex=True, algorithm="curve clipping")
     unit = (ring - (cx, cy)) / (ax, ay)
     normals = w.outward_normals(unit)
-    intervals = [(0.0, TWO_PI)]
+    intervals: list[Interval] = [(0.0, TWO_PI)]
     for a, n in zip(unit, normals):
         d = float(np.dot(n, -a))                 # n.(center - a), center = (0, 0)
         c = -d                                   # inside where cos(t - phi) <= c
@@ -91,9 +111,32 @@ def ellipse(xc, yc, rx, ry, window):
     return intervals
 
 
-def circle(xc, yc, r, window):
+def circle(xc: float, yc: float, r: float, window: w.WindowLike) -> list[Interval]:
     """The visible arcs of the circle of center (xc, yc) and radius r > 0, as angle
     intervals; see :func:`ellipse`.
+
+    Parameters
+    ----------
+    xc, yc : float
+        Center.
+    r : float
+        Radius, > 0.
+    window : (xmin, ymin, xmax, ymax) or convex polygon
+        Closed; arcs that only touch the boundary at a point are dropped.
+
+    Returns
+    -------
+    list of (float, float)
+        The visible arcs' angle intervals ``(start, end)``, as :func:`ellipse`.
+
+    Raises
+    ------
+    TypeError, ValueError
+        As :func:`ellipse`.
+
+    Notes
+    -----
+    Curve clipping, notes chapter 4, Q.1 (Hearn & Baker, section 6-9).
 
     Examples
     --------
@@ -105,11 +148,33 @@ def circle(xc, yc, r, window):
     return ellipse(xc, yc, r, r, window)
 
 
-def arcs(xc, yc, rx, ry, intervals, tolerance=0.25):
+def arcs(xc: float, yc: float, rx: float, ry: float,
+         intervals: Union[Sequence[Sequence[float]], ArrayLike],
+         tolerance: float = 0.25) -> list[NDArray[np.float64]]:
     """Flatten elliptical arcs into polylines within ``tolerance`` of the curve.
 
-    Returns a list of (K, 2) arrays, one per interval (as :func:`ellipse` returns
-    them), from start to end.
+    Parameters
+    ----------
+    xc, yc : float
+        Center.
+    rx, ry : float
+        Semi-axes along x and y.
+    intervals : list of (float, float)
+        Angle intervals ``(start, end)``, start <= end, as :func:`ellipse` returns
+        them.
+    tolerance : float
+        Largest distance between the arc and its polyline (> 0).
+
+    Returns
+    -------
+    list of ndarray of float64, shape (K, 2)
+        One polyline per interval, from start to end.
+
+    Raises
+    ------
+    TypeError, ValueError
+        Intervals that are not (start, end) pairs or run backwards, a tolerance
+        <= 0, or one that would need more than ``MAX_POINTS`` points.
 
     Examples
     --------
@@ -124,7 +189,7 @@ def arcs(xc, yc, rx, ry, intervals, tolerance=0.25):
         raise ArgumentValueError(f"tolerance must be > 0, got {tolerance!r}")
     r = max(abs(ax), abs(ay))
     step = 2 * math.acos(max(-1.0, 1 - tol / r)) if r > 0 else math.pi
-    spans = []
+    spans: list[Interval] = []
     for i, interval in enumerate(_intervals(intervals)):
         start = v.number(f"intervals[{i}] start", interval[0])
         end = v.number(f"intervals[{i}] end", interval[1])
@@ -137,7 +202,7 @@ def arcs(xc, yc, rx, ry, intervals, tolerance=0.25):
         raise ArgumentValueError(
             f"tolerance={tolerance!r} would flatten these arcs into about {total:.3g} points, "
             f"more than {MAX_POINTS}; use a larger tolerance")
-    out = []
+    out: list[NDArray[np.float64]] = []
     for start, end in spans:
         n = max(1, math.ceil((end - start) / step))
         t = np.linspace(start, end, n + 1)
@@ -145,7 +210,7 @@ def arcs(xc, yc, rx, ry, intervals, tolerance=0.25):
     return out
 
 
-def _intervals(value):
+def _intervals(value: object) -> list[Sequence[float]]:
     """The (start, end) pairs of ``intervals``, or raise naming it."""
     if isinstance(value, np.ndarray):
         value = value.tolist()
@@ -153,16 +218,53 @@ def _intervals(value):
             isinstance(i, (list, tuple, np.ndarray)) and len(i) == 2 for i in value):
         raise ArgumentTypeError(f"intervals must be a list of (start, end) angle pairs, as "
                                 f"ellipse() returns, got {v._show(value)}")
-    return value
+    return cast(list[Sequence[float]], list(value))
 
 
-def curve(c, window, tolerance=0.25, method="liang-barsky"):
+def curve(c: Union[Flattenable, Points], window: w.WindowLike, tolerance: float = 0.25,
+          method: ClipMethod = "liang-barsky") -> list[NDArray[np.float64]]:
     """Clip any curve by its flattened polyline: the visible pieces, (K, 2) arrays.
 
     ``c`` is an object with ``flatten(tolerance)`` (the curves of
     :mod:`scanline.curves`) or an (N, 2) array of points along a curve; the pieces
     come from :func:`scanline.clip.polyline`.
+
+    Parameters
+    ----------
+    c : curve or array_like, shape (N, 2)
+        A curve with ``flatten(tolerance)``, or points along a curve.
+    window : (xmin, ymin, xmax, ymax), or a convex polygon for ``"cyrus-beck"``
+        The closed window.
+    tolerance : float
+        The flattening tolerance passed to ``c.flatten``.
+    method : {"liang-barsky", "cohen-sutherland", "cyrus-beck"}
+        The line-clipping algorithm.
+
+    Returns
+    -------
+    list of ndarray of float64, shape (K, 2)
+        The visible pieces, in order.
+
+    Raises
+    ------
+    TypeError, ValueError
+        As :func:`scanline.clip.polyline`.
+
+    Notes
+    -----
+    Curve clipping, notes chapter 4, Q.1: the curve is approximated by a polyline
+    and its segments are line-clipped (Hearn & Baker, section 6-9).
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> [p.tolist() for p in sl.clip.curve([(0, 0), (4, 4), (8, 0)], (0, 0, 6, 6))]
+    [[[0.0, 0.0], [4.0, 4.0], [6.0, 2.0]]]
+    >>> import numpy as np
+    >>> [p.tolist() for p in sl.clip.curve(np.array([(-2.0, 1.0), (2.0, 1.0)]), (0, 0, 6, 6))]
+    [[[0.0, 1.0], [2.0, 1.0]]]
     """
-    pts = c.flatten(tolerance) if hasattr(c, "flatten") else c
-    pts = _points(pts, "curve")
-    return polyline(pts, window, method)
+    # an ndarray has a flatten method too (numpy's, not a curve's): it is points
+    pts = (cast(Flattenable, c).flatten(tolerance)
+           if hasattr(c, "flatten") and not isinstance(c, np.ndarray) else c)
+    return polyline(_points(pts, "curve"), window, method)

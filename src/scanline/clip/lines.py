@@ -1,8 +1,12 @@
 """Point, line and polyline clipping (notes, chapter 4, Q.2-Q.4)."""
 
+from typing import Optional, cast
+
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
+from .._typing import ClipMethod, Points
 from .._kernels import clip as k
 from .._kernels._jit import call
 from .._kernels.variants import token
@@ -12,7 +16,7 @@ from . import window as w
 METHODS = ("cohen-sutherland", "liang-barsky", "cyrus-beck")
 
 
-def _segments(segments, name="segments"):
+def _segments(segments: ArrayLike, name: str = "segments") -> NDArray[np.float64]:
     """(N, 4) float64 array; the values are checked by the kernels (see
     :func:`_check`)."""
     try:
@@ -32,7 +36,7 @@ def _segments(segments, name="segments"):
     return np.ascontiguousarray(a)
 
 
-def _check(bad, a, name):
+def _check(bad: int, a: NDArray[np.float64], name: str) -> None:
     """Raise for row ``bad`` of ``a`` (a kernel found a NaN or a huge value there)."""
     if bad >= 0:
         raise ArgumentValueError(
@@ -40,7 +44,7 @@ def _check(bad, a, name):
             f"supported coordinate range [-{v.COORD_LIMIT}, {v.COORD_LIMIT}]")
 
 
-def _points(pts, name):
+def _points(pts: Points, name: str) -> NDArray[np.float64]:
     """(N, 2) float64 array of finite points within +-2**30."""
     try:
         a = np.asarray(pts, dtype=np.float64)
@@ -56,22 +60,30 @@ def _points(pts, name):
     return np.ascontiguousarray(a)
 
 
-def _method(method):
-    return v.choice("method", method, METHODS)
+def _method(method: str) -> ClipMethod:
+    return cast(ClipMethod, v.choice("method", method, METHODS))
 
 
-def point(x, y, window):
+def point(x: float, y: float, window: w.WindowLike) -> bool:
     """Whether the point (x, y) survives point clipping.
 
     Parameters
     ----------
     x, y : float
+        The point.
     window : (xmin, ymin, xmax, ymax) or convex polygon
         A closed window: points on its boundary are kept.
 
     Returns
     -------
     bool
+        True when the point is kept.
+
+    Raises
+    ------
+    TypeError, ValueError
+        A coordinate that is not a finite number within +-2**30, or a window that is
+        degenerate or not convex.
 
     Notes
     -----
@@ -87,17 +99,26 @@ def point(x, y, window):
     return bool(points([(x, y)], window)[0])
 
 
-def points(pts, window):
+def points(pts: Points, window: w.WindowLike) -> NDArray[np.bool_]:
     """Point clipping for many points: a bool mask, True where a point is kept.
 
     Parameters
     ----------
     pts : array_like, shape (N, 2)
+        The points (x, y), finite and within +-2**30.
     window : (xmin, ymin, xmax, ymax) or convex polygon (counterclockwise or not)
+        A closed window: points on its boundary are kept.
 
     Returns
     -------
     ndarray of bool, shape (N,)
+        True where a point is kept.
+
+    Raises
+    ------
+    TypeError, ValueError
+        ``pts`` not an (N, 2) array of finite numbers within +-2**30, or a window
+        that is degenerate or not convex.
 
     Examples
     --------
@@ -108,11 +129,12 @@ def points(pts, window):
     p = _points(pts, "pts")
     if w._is_rectangle_spec(window):
         xmin, ymin, xmax, ymax = w.rectangle(window)
-        return ((xmin <= p[:, 0]) & (p[:, 0] <= xmax) & (ymin <= p[:, 1]) & (p[:, 1] <= ymax))
+        return (xmin <= p[:, 0]) & (p[:, 0] <= xmax) & (ymin <= p[:, 1]) & (p[:, 1] <= ymax)
     return w.contains(w.polygon(window, convex=True, algorithm="point clipping"), p)
 
 
-def lines(segments, window, method="liang-barsky"):
+def lines(segments: ArrayLike, window: w.WindowLike, method: ClipMethod = "liang-barsky"
+          ) -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
     """Clip N line segments in one compiled call.
 
     Parameters
@@ -123,6 +145,7 @@ def lines(segments, window, method="liang-barsky"):
         Closed: a segment that only touches the boundary is kept (as the touching
         part, possibly a single point).
     method : {"liang-barsky", "cohen-sutherland", "cyrus-beck"}
+        The algorithm.
 
     Returns
     -------
@@ -130,6 +153,17 @@ def lines(segments, window, method="liang-barsky"):
         The visible part of each segment, in the same direction as given.  Rows
         that are not accepted hold the segment as given.
     accepted : ndarray of bool, shape (N,)
+        True where some of the segment is visible.
+
+    Raises
+    ------
+    TypeError
+        ``segments`` is not a numeric array.
+    ValueError
+        ``segments`` not of shape (N, 4) or with a coordinate not finite or beyond
+        +-2**30; an unknown ``method``; a window that is degenerate, or not a
+        rectangle for Cohen-Sutherland and Liang-Barsky, or not convex for
+        Cyrus-Beck.
 
     Notes
     -----
@@ -171,17 +205,35 @@ def lines(segments, window, method="liang-barsky"):
         rect = np.array(w.rectangle(window))
         ring = w.rectangle_polygon(*rect)
         code = k.COHEN_SUTHERLAND if method == "cohen-sutherland" else k.LIANG_BARSKY
-    bad = call(k.clip_lines, 2 * len(seg) * len(ring), token(code), seg.reshape(-1), rect, ring,
+    bad: int = call(k.clip_lines, 2 * len(seg) * len(ring), token(code), seg.reshape(-1), rect, ring,
                w.outward_normals(ring), float(v.COORD_LIMIT), out.reshape(-1), accepted)
     _check(bad, seg, "segments")
     return out, accepted
 
 
-def line(x0, y0, x1, y1, window, method="liang-barsky"):
+def line(x0: float, y0: float, x1: float, y1: float, window: w.WindowLike,
+         method: ClipMethod = "liang-barsky") -> Optional[tuple[float, float, float, float]]:
     """Clip the segment from (x0, y0) to (x1, y1).
 
-    Returns the visible part ``(x0, y0, x1, y1)`` (same direction) or None.  See
-    :func:`lines` for ``window`` and ``method``.
+    Parameters
+    ----------
+    x0, y0, x1, y1 : float
+        The segment's ends, finite and within +-2**30.
+    window : (xmin, ymin, xmax, ymax), or a convex polygon for ``"cyrus-beck"``
+        The closed window (see :func:`lines`).
+    method : {"liang-barsky", "cohen-sutherland", "cyrus-beck"}
+        The algorithm (notes, chapter 4, Q.3 and Q.4).
+
+    Returns
+    -------
+    tuple of 4 floats or None
+        The visible part ``(x0, y0, x1, y1)`` (same direction), or None when none
+        of the segment is visible.
+
+    Raises
+    ------
+    TypeError, ValueError
+        As :func:`lines`.
 
     Examples
     --------
@@ -193,10 +245,12 @@ def line(x0, y0, x1, y1, window, method="liang-barsky"):
     """
     ends = [v.number(n, c) for n, c in (("x0", x0), ("y0", y0), ("x1", x1), ("y1", y1))]
     out, ok = lines([ends], window, method)
-    return tuple(out[0].tolist()) if ok[0] else None
+    x0_, y0_, x1_, y1_ = out[0].tolist()
+    return (x0_, y0_, x1_, y1_) if ok[0] else None
 
 
-def polyline(pts, window, method="liang-barsky"):
+def polyline(pts: Points, window: w.WindowLike, method: ClipMethod = "liang-barsky"
+             ) -> list[NDArray[np.float64]]:
     """Clip a polyline: the list of its visible pieces, each a (K, 2) array.
 
     The polyline's segments are clipped in one batch; consecutive visible segments
@@ -205,8 +259,21 @@ def polyline(pts, window, method="liang-barsky"):
     Parameters
     ----------
     pts : array_like, shape (N, 2)
+        The polyline's vertices.
     window : (xmin, ymin, xmax, ymax), or a convex polygon for ``"cyrus-beck"``
+        The closed window (see :func:`lines`).
     method : {"liang-barsky", "cohen-sutherland", "cyrus-beck"}
+        The line-clipping algorithm.
+
+    Returns
+    -------
+    list of ndarray of float64, shape (K, 2)
+        The visible pieces, in order.
+
+    Raises
+    ------
+    TypeError, ValueError
+        As :func:`lines`.
 
     Examples
     --------
@@ -219,8 +286,8 @@ def polyline(pts, window, method="liang-barsky"):
         return [p.copy()] if points(p, window)[0] else []
     seg = np.hstack([p[:-1], p[1:]])
     out, ok = lines(seg, window, method)
-    pieces = []
-    current = None
+    pieces: list[list[tuple[float, ...]]] = []
+    current: Optional[list[tuple[float, ...]]] = None
     for i in range(len(seg)):
         if not ok[i]:
             current = None

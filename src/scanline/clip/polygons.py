@@ -1,6 +1,9 @@
 """Polygon clipping: Sutherland-Hodgman and Weiler-Atherton."""
 
+from typing import Literal, Optional, Union, cast
+
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from .._kernels import clip as k
@@ -13,17 +16,17 @@ from . import window as w
 METHODS = ("sutherland-hodgman", "weiler-atherton")
 
 
-def _sutherland_hodgman(verts, counts, ring):
+def _sutherland_hodgman(verts: NDArray[np.float64], counts: ArrayLike, ring: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
     """Run the batch kernel, growing its buffers until the results fit."""
-    counts = np.ascontiguousarray(counts, np.int64)
-    longest = int(counts.max()) if len(counts) else 0
-    size = 2 * (len(verts) + len(counts) * len(ring)) + 8
+    n = np.ascontiguousarray(counts, np.int64)
+    longest = int(n.max()) if len(n) else 0
+    size = 2 * (len(verts) + len(n) * len(ring)) + 8
     width = 2 * (longest + len(ring)) + 8
     while True:
         out = np.empty((size, 2))
-        out_counts = np.zeros(len(counts), np.int64)
+        out_counts = np.zeros(len(n), np.int64)
         scratch = np.empty((2, width, 2))
-        used = call(k.sutherland_hodgman, 3 * len(verts) * len(ring), verts, counts, ring, out,
+        used: int = call(k.sutherland_hodgman, 3 * len(verts) * len(ring), verts, n, ring, out,
                     out_counts, scratch)
         if used >= 0:
             return out[:used], out_counts
@@ -31,7 +34,9 @@ def _sutherland_hodgman(verts, counts, ring):
         width *= 2
 
 
-def polygon(points, window, method="sutherland-hodgman"):
+def polygon(points: ArrayLike, window: w.WindowLike,
+            method: Literal["sutherland-hodgman", "weiler-atherton"] = "sutherland-hodgman"
+            ) -> list[NDArray[np.float64]]:
     """Clip a polygon by a window; returns the list of resulting contours.
 
     Parameters
@@ -44,6 +49,7 @@ def polygon(points, window, method="sutherland-hodgman"):
         takes any simple polygon, concave included, or a list of contours (a
         window with holes, even-odd).
     method : {"sutherland-hodgman", "weiler-atherton"}
+        The algorithm.
 
     Returns
     -------
@@ -55,6 +61,12 @@ def polygon(points, window, method="sutherland-hodgman"):
         so the filled area and the shoelace area are right, but an outline shows
         them).  Weiler-Atherton: every separate part is its own contour, outer
         boundaries counterclockwise and holes clockwise.
+
+    Raises
+    ------
+    TypeError, ValueError
+        Vertices that are not finite numbers within +-2**30, an unknown ``method``,
+        a degenerate window, or a concave one for Sutherland-Hodgman.
 
     Notes
     -----
@@ -85,11 +97,11 @@ def polygon(points, window, method="sutherland-hodgman"):
     >>> sorted(c.tolist() for c in wa)
     [[[0.0, 3.0], [2.0, 3.0], [2.0, 5.0], [0.0, 5.0]], [[4.0, 3.0], [6.0, 3.0], [6.0, 5.0], [4.0, 5.0]]]
     """
-    method = v.choice("method", method, METHODS)
+    chosen = v.choice("method", method, METHODS)
     verts, offsets = contours("points", points)
     rings = [w._ring(verts[offsets[c]:offsets[c + 1]]) for c in range(len(offsets) - 1)]
     rings = [r for r in rings if len(r) >= 3 and w.signed_area(r) != 0.0]
-    if method == "sutherland-hodgman":
+    if chosen == "sutherland-hodgman":
         ring = w.polygon(window, convex=True, algorithm="Sutherland-Hodgman")
         if not rings:
             return []
@@ -101,7 +113,8 @@ def polygon(points, window, method="sutherland-hodgman"):
     return wa.clip(rings, window_rings)
 
 
-def polygons(polys, window, counts=None):
+def polygons(polys: ArrayLike, window: w.WindowLike, counts: Optional[ArrayLike] = None
+             ) -> Union[list[NDArray[np.float64]], tuple[NDArray[np.float64], NDArray[np.int64]]]:
     """Sutherland-Hodgman on many polygons in one compiled call.
 
     Parameters
@@ -110,7 +123,9 @@ def polygons(polys, window, counts=None):
         One contour per polygon.  With ``counts``, ``polys`` is the flat array of
         all vertices and ``counts[i]`` says how many belong to polygon i.
     window : (xmin, ymin, xmax, ymax) or convex polygon
+        The closed window.
     counts : array_like of int, optional
+        The vertex count of each polygon, when ``polys`` is flat.
 
     Returns
     -------
@@ -119,6 +134,16 @@ def polygons(polys, window, counts=None):
         nothing is left).
     (vertices, counts)
         With ``counts``: the flat clipped vertices and the count of each polygon.
+
+    Raises
+    ------
+    TypeError, ValueError
+        Malformed polygons or counts, a polygon with holes, or a degenerate or
+        concave window.
+
+    Notes
+    -----
+    Sutherland-Hodgman (Hearn & Baker, section 6-8), as :func:`polygon`.
 
     Examples
     --------

@@ -3,8 +3,10 @@ all-or-none string, all-or-none character, and clipping each character's strokes
 outline or pixels."""
 
 import copy
+from typing import TYPE_CHECKING, Literal, Sequence
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError
@@ -12,26 +14,32 @@ from . import window as w
 from .lines import polyline
 from .polygons import polygon
 
+if TYPE_CHECKING:
+    from ..text.layout import PlacedGlyph
+
 MODES = ("string", "character", "stroke", "pixel")
 
 
-def _inside(box, ring):
+def _inside(box: tuple[float, float, float, float], ring: NDArray[np.float64]) -> bool:
     """Whether the rectangle ``box`` lies in the convex counterclockwise ``ring``."""
     x0, y0, x1, y1 = box
     return bool(w.contains(ring, np.array([(x0, y0), (x1, y0), (x1, y1), (x0, y1)])).all())
 
 
-def _pixel_mask(glyph, ring):
+def _pixel_mask(glyph: "PlacedGlyph", ring: NDArray[np.float64]) -> NDArray[np.bool_]:
     """The glyph's bitmap with the pixels whose centers are outside the window off."""
     mask = np.asarray(glyph.bitmap, bool)
     x0, y0 = glyph.bitmap_origin
     h, wd = mask.shape
     ys, xs = np.mgrid[0:h, 0:wd]
     centers = np.stack([x0 + xs.ravel(), y0 + (h - 1 - ys).ravel()], axis=1).astype(float)
-    return mask & w.contains(ring, centers).reshape(h, wd)
+    kept: NDArray[np.bool_] = mask & w.contains(ring, centers).reshape(h, wd)
+    return kept
 
 
-def text(glyphs, window, mode="character"):
+def text(glyphs: Sequence["PlacedGlyph"], window: w.WindowLike,
+         mode: Literal["string", "character", "stroke", "pixel"] = "character"
+         ) -> list["PlacedGlyph"]:
     """Clip placed text by a window.
 
     Parameters
@@ -39,7 +47,10 @@ def text(glyphs, window, mode="character"):
     glyphs : list of PlacedGlyph
         The characters placed by :func:`scanline.text.layout`.
     window : (xmin, ymin, xmax, ymax) or convex polygon
+        The closed window.
     mode : {"string", "character", "stroke", "pixel"}
+        The strategy:
+
         - ``"string"``: all-or-none string clipping: every glyph if the whole
           string (the union of the character bodies, ``glyph.cell``) is inside the
           window, none otherwise.
@@ -60,6 +71,13 @@ def text(glyphs, window, mode="character"):
         ``contours`` (mode ``"stroke"``), ``bitmap`` (both modes: the pixels whose
         centers are inside) and ``box`` hold the clipped geometry.
 
+    Raises
+    ------
+    TypeError
+        ``glyphs`` is not the list :func:`scanline.text.layout` returns.
+    ValueError
+        An unknown ``mode``, or a window that is degenerate or not convex.
+
     Notes
     -----
     Notes, chapter 4, Q.1 lists text clipping; the three strategies are Hearn &
@@ -79,22 +97,22 @@ def text(glyphs, window, mode="character"):
     >>> [g.char for g in sl.clip.text(glyphs, (0, -5, 15, 20), mode="stroke")]
     ['C', 'L', 'I']
     """
-    mode = v.choice("mode", mode, MODES)
+    chosen = v.choice("mode", mode, MODES)
     if not isinstance(glyphs, (list, tuple)) or not all(
             hasattr(g, "cell") and hasattr(g, "char") for g in glyphs):
         raise ArgumentTypeError(
             f"glyphs must be the list that sl.text.layout(...) returns, got {v._show(glyphs)}")
     ring = w.polygon(window, convex=True, algorithm="text clipping")
-    if mode == "string":
+    if chosen == "string":
         return list(glyphs) if all(_inside(g.cell, ring) for g in glyphs) else []
-    if mode == "character":
+    if chosen == "character":
         return [g for g in glyphs if _inside(g.cell, ring)]
-    out = []
+    out: list["PlacedGlyph"] = []
     for g in glyphs:
         if g.box is None:
             continue
         c = copy.copy(g)
-        if mode == "pixel":
+        if chosen == "pixel":
             mask = _pixel_mask(g, ring)
             if not mask.any():
                 continue

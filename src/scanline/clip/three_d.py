@@ -17,14 +17,21 @@ Methods, by name (``method=``):
 Polygons are clipped by Sutherland-Hodgman, one plane after another.
 """
 
+from typing import Optional, Sequence, Union
+
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
+from .._typing import ClipMethod
 from .._kernels import variants
 from .._kernels._jit import call
 from ..errors import ArgumentTypeError, ArgumentValueError
 from ..transform3d.arrays import finite, real_array
-from .volumes import UNIT_CUBE, volume as as_volume
+from .volumes import UNIT_CUBE, Volume, volume as as_volume
+
+#: A convex clip volume: a box (lo, hi) or a Volume.
+VolumeLike = Union[tuple[Sequence[float], Sequence[float]], Volume]
 
 METHODS = ("liang-barsky", "cohen-sutherland", "cyrus-beck")
 
@@ -32,7 +39,7 @@ METHODS = ("liang-barsky", "cohen-sutherland", "cyrus-beck")
 MAX_CODE_PLANES = 64
 
 
-def method_token(method, vol=None):
+def method_token(method: str, vol: Optional[Volume] = None) -> tuple[int, ...]:
     """The kernel token of a line-clipping method (for the volume ``vol``: a
     Cohen-Sutherland region code holds at most 64 planes)."""
     from .._kernels import clip3d as k
@@ -43,11 +50,11 @@ def method_token(method, vol=None):
             f"method='cohen-sutherland' takes a volume of at most {MAX_CODE_PLANES} planes "
             f"(one region-code bit each), got {len(vol.planes)}; use method='liang-barsky' "
             f"or 'cyrus-beck', which take any number")
-    return variants.token(k.COHEN_SUTHERLAND if method == "cohen-sutherland" else
-                          k.LIANG_BARSKY)
+    return tuple(variants.token(k.COHEN_SUTHERLAND if method == "cohen-sutherland" else
+                          k.LIANG_BARSKY))
 
 
-def _segments(name, segments, dim):
+def _segments(name: str, segments: ArrayLike, dim: int) -> NDArray[np.float64]:
     """(N, 2 dim) float64 segments (NaN and infinities are left to the kernel, which
     rejects them: see :func:`lines3d`)."""
     a = real_array(name, segments, f"(N, {2 * dim}) or (N, 2, {dim})")
@@ -63,7 +70,7 @@ def _segments(name, segments, dim):
     return np.ascontiguousarray(a)
 
 
-def _clip(segs, vol, method, dim):
+def _clip(segs: NDArray[np.float64], vol: Volume, method: str, dim: int) -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
     from .._kernels import clip3d as k
 
     out = np.empty_like(segs)
@@ -73,7 +80,8 @@ def _clip(segs, vol, method, dim):
     return out, accepted
 
 
-def lines3d(segments, volume, method="liang-barsky"):
+def lines3d(segments: ArrayLike, volume: VolumeLike, method: ClipMethod = "liang-barsky"
+            ) -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
     """Clip N 3-D segments against a convex volume in one compiled call.
 
     Parameters
@@ -103,6 +111,12 @@ def lines3d(segments, volume, method="liang-barsky"):
         Whether any part is visible.  Segments with a NaN or infinite coordinate are
         never accepted.
 
+    Raises
+    ------
+    TypeError, ValueError
+        Segments that are not real numbers of shape (N, 6) or (N, 2, 3), an unknown
+        ``method``, or a volume that is neither a box (lo, hi) nor a Volume.
+
     Notes
     -----
     Hearn & Baker, section 12-5 ("clipping": region codes with six bits, the
@@ -125,9 +139,30 @@ def lines3d(segments, volume, method="liang-barsky"):
     return _clip(_segments("segments", segments, 3), as_volume(volume), method, 3)
 
 
-def line3d(p0, p1, volume, method="liang-barsky"):
+def line3d(p0: Sequence[float], p1: Sequence[float], volume: VolumeLike,
+           method: ClipMethod = "liang-barsky"
+           ) -> Optional[tuple[tuple[float, ...], tuple[float, ...]]]:
     """Clip the segment from ``p0`` to ``p1`` (3-D points): the visible part as a pair
     of points ``((x0, y0, z0), (x1, y1, z1))``, or None.  See :func:`lines3d`.
+
+    Parameters
+    ----------
+    p0, p1 : (float, float, float)
+        The segment's ends.
+    volume : (lo, hi) or Volume
+        A box or a convex volume (see :func:`lines3d`).
+    method : {"liang-barsky", "cohen-sutherland", "cyrus-beck"}
+        The algorithm (Hearn & Baker, section 12-5).
+
+    Returns
+    -------
+    ((float, float, float), (float, float, float)) or None
+        The visible part, in the direction given, or None when nothing is visible.
+
+    Raises
+    ------
+    TypeError, ValueError
+        As :func:`lines3d`.
 
     Examples
     --------
@@ -146,7 +181,8 @@ def line3d(p0, p1, volume, method="liang-barsky"):
     return tuple(r[:3]), tuple(r[3:])
 
 
-def homogeneous(segments, volume=UNIT_CUBE, method="liang-barsky"):
+def homogeneous(segments: ArrayLike, volume: VolumeLike = UNIT_CUBE,
+                method: ClipMethod = "liang-barsky") -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
     """Clip segments given in homogeneous coordinates before the perspective divide.
 
     Each endpoint is (x, y, z, w) -- clip coordinates such as
@@ -160,9 +196,11 @@ def homogeneous(segments, volume=UNIT_CUBE, method="liang-barsky"):
     Parameters
     ----------
     segments : array_like, shape (N, 8) or (N, 2, 4)
+        Rows of two endpoints (x, y, z, w).
     volume : Volume
         Planes acting on (x, y, z, w).
     method : {"liang-barsky", "cohen-sutherland", "cyrus-beck"}
+        The algorithm.
 
     Returns
     -------
@@ -170,6 +208,12 @@ def homogeneous(segments, volume=UNIT_CUBE, method="liang-barsky"):
         Still homogeneous (divide by w for NDC; every accepted endpoint has w > 0
         for the unit cube of a perspective camera).
     accepted : ndarray of bool, shape (N,)
+        Whether any part is visible.
+
+    Raises
+    ------
+    TypeError, ValueError
+        As :func:`lines3d`.
 
     References
     ----------
@@ -194,7 +238,8 @@ def homogeneous(segments, volume=UNIT_CUBE, method="liang-barsky"):
     return out.reshape(-1, 2, 4), ok
 
 
-def _polygon_batch(name, polygons, counts, columns):
+def _polygon_batch(name: str, polygons: object, counts: Optional[ArrayLike], columns: int
+                   ) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
     """``(verts (V, C), counts (P,))`` from a list of (K_i, C) polygons or the flat
     form with ``counts``."""
     if counts is None:
@@ -205,6 +250,7 @@ def _polygon_batch(name, polygons, counts, columns):
                     f"{name} must be a list of (K, C) polygons or a (P, K, C) array, got "
                     f"shape {polys.shape}")
             polygons = list(polys)
+        assert isinstance(polygons, (list, tuple))
         parts = [real_array(f"{name}[{i}]", p, f"(K, {columns})") for i, p in enumerate(polygons)]
         for i, p in enumerate(parts):
             if p.ndim != 2 or p.shape[1] < columns or p.shape[1] != parts[0].shape[1]:
@@ -213,17 +259,18 @@ def _polygon_batch(name, polygons, counts, columns):
                     f"C for every polygon; got shape {p.shape}")
         width = parts[0].shape[1] if parts else columns
         verts = np.concatenate(parts) if parts else np.empty((0, width))
-        counts = np.array([len(p) for p in parts], np.int64)
+        n = np.array([len(p) for p in parts], np.int64)
     else:
         verts = real_array(name, polygons, f"(V, {columns}+)")
         if verts.ndim != 2 or verts.shape[1] < columns:
             raise ArgumentValueError(f"{name} must have shape (V, C), C >= {columns}, got "
                                      f"shape {verts.shape}")
-        counts, _ = v.counts("counts", counts, len(verts), name)
-    return np.ascontiguousarray(verts), np.ascontiguousarray(counts)
+        n, _ = v.counts("counts", counts, len(verts), name)
+    return np.ascontiguousarray(verts), np.ascontiguousarray(n)
 
 
-def polygons3d(polygons, volume, counts=None, homogeneous=False):
+def polygons3d(polygons: Union[ArrayLike, Sequence[ArrayLike]], volume: VolumeLike, counts: Optional[ArrayLike] = None,
+               homogeneous: bool = False) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
     """Clip P polygons against a convex volume by Sutherland-Hodgman, in one
     compiled call.
 
@@ -234,6 +281,7 @@ def polygons3d(polygons, volume, counts=None, homogeneous=False):
         by any attribute columns (colors, normals, texture coordinates, depths ...),
         which are interpolated linearly with the position at every crossing.
     volume : (lo, hi) or Volume
+        A box or a convex volume (see :func:`lines3d`).
     counts : array_like of int, optional
         Vertices per polygon, for the flat form.
     homogeneous : bool
@@ -248,6 +296,13 @@ def polygons3d(polygons, volume, counts=None, homogeneous=False):
         The vertices of each clipped polygon, one after another (0 where nothing is
         left: fewer than three vertices).
 
+    Raises
+    ------
+    TypeError, ValueError
+        Polygons that are not real arrays of at least 3 (or 4) columns, the same
+        for every polygon, attributes that are not finite, counts that do not add
+        up, or a volume that is neither a box nor a Volume.
+
     Notes
     -----
     Hearn & Baker, section 12-5, and section 6-8 for the two-dimensional algorithm:
@@ -260,6 +315,19 @@ def polygons3d(polygons, volume, counts=None, homogeneous=False):
     ----------
     I. E. Sutherland and G. W. Hodgman, "Reentrant polygon clipping",
     Communications of the ACM 17(1), 32-42, 1974.
+
+    Examples
+    --------
+    Two triangles against the unit cube: the first covers the whole square
+    0 <= x, y <= 1 of the plane z = 0.5 (its hypotenuse x + y = 2 only touches the
+    corner (1, 1)), so it is cut to that square; the second lies outside:
+
+    >>> import scanline as sl
+    >>> verts, counts = sl.clip.polygons3d(
+    ...     [[(0, 0, 0.5), (2, 0, 0.5), (0, 2, 0.5)], [(3, 3, 3), (4, 3, 3), (3, 4, 3)]],
+    ...     sl.clip.UNIT_CUBE)
+    >>> counts.tolist(), verts.tolist()
+    ([4, 0], [[0.0, 1.0, 0.5], [0.0, 0.0, 0.5], [1.0, 0.0, 0.5], [1.0, 1.0, 0.5]])
     """
     from .._kernels import clip3d as k
 
@@ -272,16 +340,36 @@ def polygons3d(polygons, volume, counts=None, homogeneous=False):
     scratch = np.empty((2, cap, verts.shape[1]))
     out = np.empty((int(counts.sum()) + len(counts) * len(vol.planes), verts.shape[1]))
     out_counts = np.zeros(len(counts), np.int64)
-    used = call(k.clip_polygons, 3 * len(verts) * len(vol.planes), k.dim_token(dim), verts,
+    used: int = call(k.clip_polygons, 3 * len(verts) * len(vol.planes), k.dim_token(dim), verts,
                 counts, vol.planes, out, out_counts, scratch)
     if used < 0:                                  # cannot happen with these sizes
         raise ArgumentValueError("polygons: internal buffer too small")
     return out[:used].copy(), out_counts
 
 
-def polygon3d(points, volume, homogeneous=False):
+def polygon3d(points: ArrayLike, volume: VolumeLike, homogeneous: bool = False) -> NDArray[np.float64]:
     """Clip one polygon (K, C): the clipped vertices (M, C), M = 0 when nothing is
     left.  See :func:`polygons3d`.
+
+    Parameters
+    ----------
+    points : array_like, shape (K, C)
+        Vertex rows (x, y, z) -- or (x, y, z, w) with ``homogeneous`` -- and any
+        attribute columns.
+    volume : (lo, hi) or Volume
+        A box or a convex volume.
+    homogeneous : bool
+        The first four columns are homogeneous clip coordinates.
+
+    Returns
+    -------
+    ndarray of float64, shape (M, C)
+        The clipped polygon (Sutherland-Hodgman, Hearn & Baker, section 12-5).
+
+    Raises
+    ------
+    TypeError, ValueError
+        As :func:`polygons3d`; an empty polygon.
 
     Examples
     --------

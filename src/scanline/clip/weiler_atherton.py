@@ -23,8 +23,15 @@ the window (kept whole), contains it (the window is the result) or misses it.
 """
 
 import math
+from typing import Optional
 
 import numpy as np
+from numpy.typing import NDArray
+
+#: A point (x, y), a directed piece of an edge, an edge's split points (param, point).
+Pt = tuple[float, float]
+Piece = tuple[Pt, Pt]
+Splits = list[tuple[float, Pt]]
 
 #: Pairs of edges (or points x edges) handled at once by the vectorized tests.
 CHUNK = 1 << 18
@@ -34,10 +41,10 @@ CHUNK = 1 << 18
 EPS = 1e-11
 
 
-def orient(rings):
+def orient(rings: list[NDArray[np.float64]]) -> list[NDArray[np.float64]]:
     """The rings of one polygon, outer contours counterclockwise and holes
     (contours inside an odd number of others) clockwise."""
-    out = []
+    out: list[NDArray[np.float64]] = []
     for i, r in enumerate(rings):
         others = [q for j, q in enumerate(rings) if j != i]
         depth = int(inside_even_odd(r[:1], others)[0]) if others else 0
@@ -47,18 +54,18 @@ def orient(rings):
     return out
 
 
-def _area(r):
+def _area(r: NDArray[np.float64]) -> float:
     x, y = r[:, 0], r[:, 1]
     return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(np.roll(x, -1), y))
 
 
-def _edges(rings):
+def _edges(rings: list[NDArray[np.float64]]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     a = np.concatenate([r for r in rings])
     b = np.concatenate([np.roll(r, -1, axis=0) for r in rings])
     return a, b
 
 
-def inside_even_odd(pts, rings):
+def inside_even_odd(pts: NDArray[np.float64], rings: list[NDArray[np.float64]]) -> NDArray[np.bool_]:
     """Even-odd inside test of the (P, 2) points against the rings (ray to +x)."""
     if not rings:
         return np.zeros(len(pts), bool)
@@ -68,10 +75,11 @@ def inside_even_odd(pts, rings):
     straddle = (ay > py) != (by > py)
     with np.errstate(divide="ignore", invalid="ignore"):
         xc = a[None, :, 0] + (py - ay) * (b[None, :, 0] - a[None, :, 0]) / (by - ay)
-    return ((straddle & (xc > px)).sum(axis=1) % 2) == 1
+    odd: NDArray[np.bool_] = ((straddle & (xc > px)).sum(axis=1) % 2) == 1
+    return odd
 
 
-def _distance_to_boundary(pts, a, b):
+def _distance_to_boundary(pts: NDArray[np.float64], a: NDArray[np.float64], b: NDArray[np.float64]) -> NDArray[np.float64]:
     """Distance from each point to the nearest of the segments a -> b."""
     d = b - a
     ll = np.einsum("ij,ij->i", d, d)
@@ -80,16 +88,18 @@ def _distance_to_boundary(pts, a, b):
         t = np.clip(np.einsum("pij,ij->pi", rel, d) / ll, 0.0, 1.0)
     t = np.where(ll > 0, t, 0.0)
     near = a[None] + t[..., None] * d[None]
-    return np.sqrt(((pts[:, None, :] - near) ** 2).sum(axis=2)).min(axis=1)
+    dist: NDArray[np.float64] = np.sqrt(((pts[:, None, :] - near) ** 2).sum(axis=2)).min(axis=1)
+    return dist
 
 
-def _splits(sa, sb, ca, cb, tol):
+def _splits(sa: NDArray[np.float64], sb: NDArray[np.float64], ca: NDArray[np.float64], cb: NDArray[np.float64], tol: float
+            ) -> tuple[list[Splits], list[Splits]]:
     """Crossing points of every subject edge with every window edge, as split lists:
     ``(subject_splits, window_splits)``, for each edge a list of (param, point).
 
     Works on blocks of subject edges so that the pairwise arrays stay small."""
-    s_splits = [[] for _ in range(len(sa))]
-    c_splits = [[] for _ in range(len(ca))]
+    s_splits: list[Splits] = [[] for _ in range(len(sa))]
+    c_splits: list[Splits] = [[] for _ in range(len(ca))]
     step = max(1, CHUNK // max(1, len(ca)))
     for lo in range(0, len(sa), step):
         _block_splits(sa[lo:lo + step], sb[lo:lo + step], ca, cb, tol,
@@ -97,7 +107,8 @@ def _splits(sa, sb, ca, cb, tol):
     return s_splits, c_splits
 
 
-def _block_splits(sa, sb, ca, cb, tol, s_splits, c_splits):
+def _block_splits(sa: NDArray[np.float64], sb: NDArray[np.float64], ca: NDArray[np.float64], cb: NDArray[np.float64], tol: float, s_splits: list[Splits],
+                  c_splits: list[Splits]) -> None:
     """:func:`_splits` for one block of subject edges (appends to the lists)."""
     r = sb - sa
     s = cb - ca
@@ -128,9 +139,9 @@ def _block_splits(sa, sb, ca, cb, tol, s_splits, c_splits):
         else:
             p = sa[i] + ti * r[i]
         uj = min(max(uj, 0.0), 1.0)
-        p = (float(p[0]), float(p[1]))
-        s_splits[i].append((ti, p))
-        c_splits[j].append((uj, p))
+        at = (float(p[0]), float(p[1]))
+        s_splits[i].append((ti, at))
+        c_splits[j].append((uj, at))
     # Collinear overlaps: each segment's endpoints that lie on the other split it.
     line_dist = np.abs(qxr) / np.maximum(rlen[:, None], tol)
     for i, j in zip(*np.nonzero(parallel & (line_dist <= tol))):
@@ -144,10 +155,11 @@ def _block_splits(sa, sb, ca, cb, tol, s_splits, c_splits):
                 c_splits[j].append((uu, (float(p[0]), float(p[1]))))
 
 
-def _pieces(a, b, splits, owners=None):
+def _pieces(a: NDArray[np.float64], b: NDArray[np.float64], splits: list[Splits], owners: Optional[list[int]] = None
+            ) -> list[Piece]:
     """The directed pieces of the edges a -> b cut at their split points (and, in
     ``owners`` when it is a list, the index of the edge each piece lies on)."""
-    out = []
+    out: list[Piece] = []
     for i in range(len(a)):
         pts = [(0.0, (float(a[i, 0]), float(a[i, 1])))]
         pts += sorted(splits[i])
@@ -162,7 +174,8 @@ def _pieces(a, b, splits, owners=None):
     return out
 
 
-def _classify(pieces, rings, a, b, tol):
+def _classify(pieces: list[Piece], rings: list[NDArray[np.float64]], a: NDArray[np.float64], b: NDArray[np.float64], tol: float
+              ) -> NDArray[np.int_]:
     """-1 outside, 0 on the boundary, 1 inside ``rings`` for each piece's midpoint."""
     if not pieces:
         return np.zeros(0, int)
@@ -185,7 +198,8 @@ BATCH_DROP = 256
 PAIRWISE = 1 << 22
 
 
-def _classify_along(pieces, owners, la, lb, a, b, tol):
+def _classify_along(pieces: list[Piece], owners: list[int], la: NDArray[np.float64], lb: NDArray[np.float64], a: NDArray[np.float64],
+                    b: NDArray[np.float64], tol: float) -> NDArray[np.int_]:
     """:func:`_classify` in O((P + E) log E) per line: piece k lies on the line
     through ``la[owners[k]]`` -> ``lb[owners[k]]``, so its midpoint's even-odd count is
     taken along a ray on that line (the parity is the same for any ray): the other
@@ -195,11 +209,11 @@ def _classify_along(pieces, owners, la, lb, a, b, tol):
     within ``tol``, or one of the crossings nearest to it, is within ``tol``."""
     p = np.array(pieces, np.float64)
     mid = 0.5 * (p[:, 0] + p[:, 1])
-    owners = np.asarray(owners)
+    owner = np.asarray(owners)
     out = np.empty(len(mid), int)
     e = b - a
-    for j in np.unique(owners):
-        sel = np.flatnonzero(owners == j)
+    for j in np.unique(owner):
+        sel = np.flatnonzero(owner == j)
         o, d = la[j], lb[j] - la[j]
         length2 = float(d @ d) or 1.0
         sa = (a[:, 0] - o[0]) * d[1] - (a[:, 1] - o[1]) * d[0]      # signed distances (x |d|)
@@ -229,21 +243,22 @@ def _classify_along(pieces, owners, la, lb, a, b, tol):
     return out
 
 
-def _point_segment_distance(pts, a, b):
+def _point_segment_distance(pts: NDArray[np.float64], a: NDArray[np.float64], b: NDArray[np.float64]) -> NDArray[np.float64]:
     """Distance from each point i to the segment a[i] -> b[i]."""
     d = b - a
     ll = np.einsum("ij,ij->i", d, d)
     with np.errstate(divide="ignore", invalid="ignore"):
         t = np.clip(np.einsum("ij,ij->i", pts - a, d) / ll, 0.0, 1.0)
     t = np.where(ll > 0, t, 0.0)
-    return np.hypot(*(pts - (a + t[:, None] * d)).T)
+    dist: NDArray[np.float64] = np.hypot(*(pts - (a + t[:, None] * d)).T)
+    return dist
 
 
-def _snap_vertices(rings, targets, tol):
+def _snap_vertices(rings: list[NDArray[np.float64]], targets: list[NDArray[np.float64]], tol: float) -> list[NDArray[np.float64]]:
     """Move window vertices lying within ``tol`` of a subject vertex onto it, so that
     shared corners are one point."""
     t = np.concatenate(targets)
-    out = []
+    out: list[NDArray[np.float64]] = []
     for r in rings:
         d = np.hypot(r[:, None, 0] - t[None, :, 0], r[:, None, 1] - t[None, :, 1])
         near = d.min(axis=1) <= tol
@@ -253,7 +268,7 @@ def _snap_vertices(rings, targets, tol):
     return out
 
 
-def _angle_cw(incoming, outgoing):
+def _angle_cw(incoming: Pt, outgoing: Pt) -> float:
     """Clockwise angle in (0, 2 pi] from the reversed incoming direction to the
     outgoing one."""
     back = math.atan2(-incoming[1], -incoming[0])
@@ -262,22 +277,22 @@ def _angle_cw(incoming, outgoing):
     return cw if cw > 0 else 2 * math.pi
 
 
-def _traverse(kept):
+def _traverse(kept: list[Piece]) -> list[NDArray[np.float64]]:
     """Link the kept directed pieces into closed contours."""
-    starts = {}
+    starts: dict[Pt, list[int]] = {}
     for idx, (p, q) in enumerate(kept):
         starts.setdefault(p, []).append(idx)
     used = [False] * len(kept)
-    contours = []
+    contours: list[NDArray[np.float64]] = []
     for first in range(len(kept)):
         if used[first]:
             continue
         used[first] = True
-        ring = [kept[first][0]]
+        chain = [kept[first][0]]
         cur = first
         for _ in range(len(kept) + 1):
             p, q = kept[cur]
-            ring.append(q)
+            chain.append(q)
             cand = [i for i in starts.get(q, []) if not used[i] or i == first]
             if not cand:
                 break
@@ -288,14 +303,14 @@ def _traverse(kept):
                 break
             used[nxt] = True
             cur = nxt
-        ring = _drop_collinear(np.array(ring[:-1] if ring[-1] == ring[0] else ring))
+        ring = _drop_collinear(np.array(chain[:-1] if chain[-1] == chain[0] else chain))
         if len(ring) >= 3:
             low = int(np.lexsort((ring[:, 0], ring[:, 1]))[0])   # start lowest, leftmost
             contours.append(np.roll(ring, -low, axis=0))
     return contours
 
 
-def _drop_collinear(r):
+def _drop_collinear(r: NDArray[np.float64]) -> NDArray[np.float64]:
     """Remove vertices that lie on the straight line through their neighbors (the
     split points that turned out not to be corners): one at a time in small rings,
     all of them at once, pass after pass, in rings of more than BATCH_DROP vertices
@@ -319,7 +334,7 @@ def _drop_collinear(r):
     return r
 
 
-def clip(subject, window):
+def clip(subject: list[NDArray[np.float64]], window: list[NDArray[np.float64]]) -> list[NDArray[np.float64]]:
     """Intersection of two polygons given as lists of (N, 2) rings (even-odd
     inside); returns a list of contours (outer CCW, holes CW)."""
     subject = orient(subject)
@@ -330,7 +345,8 @@ def clip(subject, window):
     sa, sb = _edges(subject)
     ca, cb = _edges(window)
     s_splits, c_splits = _splits(sa, sb, ca, cb, tol)
-    s_owner, c_owner = [], []
+    s_owner: list[int] = []
+    c_owner: list[int] = []
     s_pieces = _pieces(sa, sb, s_splits, s_owner)
     c_pieces = _pieces(ca, cb, c_splits, c_owner)
     # pairwise where that is small; along each edge's line where it would be quadratic

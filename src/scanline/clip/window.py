@@ -8,25 +8,40 @@ convex.  Any object with a ``bounds`` attribute (such as
 """
 
 import math
+from typing import Optional, Protocol, Sequence, Union, cast
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
 from ..geometry.contours import contours
 
 
-def _is_rectangle_spec(window):
+class HasBounds(Protocol):
+    """An object with a ``bounds`` attribute (xmin, ymin, xmax, ymax), such as
+    :class:`scanline.viewing.Window`."""
+
+    @property
+    def bounds(self) -> Sequence[float]: ...
+
+
+#: A clip window: an upright rectangle (xmin, ymin, xmax, ymax), an object with
+#: ``bounds``, or a polygon ((M, 2) vertices, or a list of contours).
+WindowLike = Union[ArrayLike, HasBounds]
+
+
+def _is_rectangle_spec(window: object) -> bool:
     if hasattr(window, "bounds"):
         return True
     if isinstance(window, np.ndarray):
-        return window.ndim == 1
+        return bool(window.ndim == 1)
     if isinstance(window, (list, tuple)) and len(window) == 4:
         return all(not isinstance(c, (list, tuple, np.ndarray)) for c in window)
     return False
 
 
-def rectangle(window, name="window"):
+def rectangle(window: object, name: str = "window") -> tuple[float, float, float, float]:
     """``(xmin, ymin, xmax, ymax)`` as floats, checked.
 
     Raises ArgumentValueError for a window of zero (or negative) width or height.
@@ -35,6 +50,7 @@ def rectangle(window, name="window"):
     if isinstance(spec, (str, bytes)) or not hasattr(spec, "__len__"):
         raise ArgumentTypeError(
             f"{name} must be (xmin, ymin, xmax, ymax), got {v._show(window)}")
+    spec = cast(Sequence[object], spec)
     if len(spec) != 4:
         raise ArgumentValueError(
             f"{name} must be a rectangle (xmin, ymin, xmax, ymax) with 4 numbers, got "
@@ -53,12 +69,12 @@ def rectangle(window, name="window"):
     return xmin, ymin, xmax, ymax
 
 
-def rectangle_polygon(xmin, ymin, xmax, ymax):
+def rectangle_polygon(xmin: float, ymin: float, xmax: float, ymax: float) -> NDArray[np.float64]:
     """The rectangle's corners, counterclockwise from the lower left."""
     return np.array([(xmin, ymin), (xmax, ymin), (xmax, ymax), (xmin, ymax)], np.float64)
 
 
-def _ring(points):
+def _ring(points: NDArray[np.float64]) -> NDArray[np.float64]:
     """Drop repeated consecutive vertices (and a repeated first vertex at the end)."""
     if len(points) == 0:
         return points
@@ -68,7 +84,7 @@ def _ring(points):
     return points[keep]
 
 
-def signed_area(points):
+def signed_area(points: NDArray[np.float64]) -> float:
     """Shoelace area: positive for a counterclockwise ring (taken about the first
     vertex: with coordinates near 2**29 and a side of 1e-6 the products about the
     origin cancel and could give the wrong sign)."""
@@ -78,7 +94,8 @@ def signed_area(points):
                        - np.dot(np.concatenate((x[ahead[0]], x[ahead[1]])), y))
 
 
-def polygon(window, name="window", convex=False, algorithm=None):
+def polygon(window: object, name: str = "window", convex: bool = False,
+            algorithm: Optional[str] = None) -> NDArray[np.float64]:
     """A polygon window as a counterclockwise (M, 2) float64 array.
 
     A rectangle spec is turned into its four corners.  With ``convex=True`` a
@@ -97,14 +114,14 @@ def polygon(window, name="window", convex=False, algorithm=None):
     return np.ascontiguousarray(ring)
 
 
-def polygon_rings(window, name="window"):
+def polygon_rings(window: object, name: str = "window") -> list[NDArray[np.float64]]:
     """A window as a list of (M, 2) rings (a rectangle's corners counterclockwise;
     a polygon's contours as given, repeated vertices dropped), each checked to have
     at least 3 distinct vertices and a nonzero area."""
     if _is_rectangle_spec(window):
         return [rectangle_polygon(*rectangle(window, name))]
     verts, offsets = contours(name, window)
-    rings = []
+    rings: list[NDArray[np.float64]] = []
     for c in range(len(offsets) - 1):
         ring = _ring(verts[offsets[c]:offsets[c + 1]])
         if len(ring) < 3 or signed_area(ring) == 0.0:
@@ -117,7 +134,7 @@ def polygon_rings(window, name="window"):
     return rings
 
 
-def check_convex(ring, name, algorithm):
+def check_convex(ring: NDArray[np.float64], name: str, algorithm: Optional[str]) -> None:
     """Raise unless the counterclockwise ``ring`` is convex (collinear vertices are
     allowed): every turn is a left turn and the turns add up to one revolution."""
     d = np.roll(ring, -1, axis=0) - ring
@@ -134,7 +151,7 @@ def check_convex(ring, name, algorithm):
             f"convex parts")
 
 
-def is_convex(ring):
+def is_convex(ring: ArrayLike) -> bool:
     """Whether the polygon ``ring`` (vertices (N, 2), N >= 3, either orientation,
     collinear vertices allowed) is convex.
 
@@ -157,7 +174,7 @@ def is_convex(ring):
     return False
 
 
-def outward_normals(ring):
+def outward_normals(ring: NDArray[np.float64]) -> NDArray[np.float64]:
     """Unit outward normals (M, 2) of the edges of the counterclockwise ``ring``
     (edge i from ring[i] to ring[i + 1]): N = (dy, -dx) / |d|."""
     d = np.roll(ring, -1, axis=0) - ring
@@ -165,10 +182,10 @@ def outward_normals(ring):
     return np.ascontiguousarray(n + 0.0)
 
 
-def contains(ring, pts):
+def contains(ring: NDArray[np.float64], pts: NDArray[np.float64]) -> NDArray[np.bool_]:
     """Which of the (N, 2) points lie in the closed convex counterclockwise ``ring``
     (left of or on every edge)."""
     d = np.roll(ring, -1, axis=0) - ring
     cross = (d[None, :, 0] * (pts[:, None, 1] - ring[None, :, 1])
              - d[None, :, 1] * (pts[:, None, 0] - ring[None, :, 0]))
-    return (cross >= 0).all(axis=1)
+    return cast(NDArray[np.bool_], (cross >= 0).all(axis=1))

@@ -9,6 +9,7 @@ faces have n vertices, else as a list.
 """
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
@@ -345,7 +346,7 @@ class Mesh:
                 f"{len(self.edges)} edges>")
 
     # -- geometry ---------------------------------------------------------------------------
-    def plane_equations(self, tolerance=PLANAR_TOLERANCE):
+    def plane_equations(self, tolerance: float = PLANAR_TOLERANCE) -> NDArray[np.float64]:
         """The plane coefficients (A, B, C, D) of each face, (F, 4).
 
         (A, B, C) is Newell's normal, Σ over the face's edges (i, j = i + 1) of

@@ -35,6 +35,7 @@ def test_answers_are_the_trace_rows(capsys, algorithm):
             assert q is None
             continue
         assert q["answer"] == values
+        assert q["given"] == [[c, row.get(c)] for c in question.given]
         if q["kind"] == "choice":
             assert str(values[0]) in q["choices"]
 

@@ -50,6 +50,10 @@ def test_studio_quiz_case_asks_write_or_keep(server, page):
     row = int(args[1])
     results = [r["result"] for r in sl.trace.z_buffer(row=row).rows]
     assert sorted(page.locator("#quiz-answer button").all_inner_texts()) == ["keep", "write"]
+    first = sl.trace.z_buffer(row=row).rows[0]
+    assert page.inner_text("#quiz-given") == (f"given: triangle = {first['triangle']}, "
+                                               f"x = {first['x']}, z = {round(first['z'], 6)}, "
+                                               f"depth = {first['depth']}")
     page.click(f"button[data-choice={results[0]}]")
     assert page.evaluate("document.body.dataset.score") == "1/1"
     assert page.inner_text("#rule") in verdict(page)

@@ -34,68 +34,84 @@ class Question:
     """What a step asks: ``kind`` "pixel" (the pixel in columns ``columns[0]``,
     ``columns[1]``, clicked on the grid), "choice" (the value of ``columns[0]``
     among the values the table's rows hold there) or "number" (the value of
-    ``columns[0]``, typed, right within ``tolerance``).  ``offered``: choices
-    always offered besides the values the table holds (so that a case whose rows
-    all say "write" still asks "write or keep")."""
+    ``columns[0]``, typed, right within ``tolerance``).  ``given``: the columns of
+    the row shown with the question (what the step starts from; never a column
+    that gives the answer away).  ``offered``: choices always offered besides the
+    values the table holds (so that a case whose rows all say "write" still asks
+    "write or keep")."""
 
     kind: str
     columns: tuple[str, ...]
     prompt: str
+    given: tuple[str, ...] = ()
     tolerance: float = 0.0
     offered: tuple[str, ...] = ()
 
 
-def _pixel(x: str, y: str, prompt: str = "Which pixel does this step plot?") -> Question:
-    return Question("pixel", (x, y), prompt)
+def _pixel(x: str, y: str, given: str = "k",
+           prompt: str = "Which pixel does this step plot?") -> Question:
+    return Question("pixel", (x, y), prompt, tuple(given.split()))
 
 
-def _choice(column: str, prompt: str, offered: tuple[str, ...] = ()) -> Question:
-    return Question("choice", (column,), prompt, offered=offered)
+def _choice(column: str, given: str, prompt: str, offered: tuple[str, ...] = ()) -> Question:
+    return Question("choice", (column,), prompt, tuple(given.split("|")), offered=offered)
 
 
-def _number(column: str, prompt: str) -> Question:
-    return Question("number", (column,), prompt, 1e-3)
+def _number(column: str, given: str, prompt: str) -> Question:
+    return Question("number", (column,), prompt, tuple(given.split("|")), 1e-3)
 
 
 _CROSSING = ("PE (entering)", "PL (leaving)")
+_POPPED = "Which seed is popped from the stack at this step?"
 
-#: The question of each algorithm's steps.
+#: The question of each algorithm's steps (given columns separated by "|").
 QUESTIONS: dict[str, Question] = {
     "bresenham": _pixel("x", "y"),
     "dda": _pixel("x", "y"),
     "midpoint-circle": _pixel("xc+x", "yc+y"),
     "midpoint-ellipse": _pixel("xc+x", "yc+y"),
-    "flood-fill": _pixel("x", "y", "Which seed is popped from the stack at this step?"),
-    "boundary-fill": _pixel("x", "y", "Which seed is popped from the stack at this step?"),
-    "scan-line-fill": _choice("spans", "Which spans does this scan line fill?"),
-    "cohen-sutherland": _choice("decision", "What do the region codes decide?"),
-    "cohen-sutherland-3d": _choice("decision", "What do the region codes decide?"),
-    "liang-barsky": _choice("kind", "Is this boundary crossed entering or leaving (the sign of p)?",
-                            _CROSSING),
-    "liang-barsky-3d": _choice("kind", "Is this plane crossed entering or leaving (the sign of p)?",
-                               _CROSSING),
-    "cyrus-beck": _choice("kind", "Is this edge crossed entering or leaving (the sign of N.D)?",
-                          _CROSSING),
-    "sutherland-hodgman": _choice("case", "Which case is the edge S -> P, and what is output?"),
-    "de-casteljau": _number("x", "What is x of this point (to 3 decimals)?"),
-    "cox-de-boor": _number("B", "What is this basis function's value (to 3 decimals)?"),
-    "z-buffer": _choice("result", "Is this pixel written to the z-buffer or kept?",
-                        ("write", "keep")),
-    "depth-sort": _choice("action", "Which action do the depth-sort tests decide?"),
-    "floating-horizon": _choice("visible", "Is this point above, below or between the horizons?",
+    "flood-fill": _pixel("x", "y", "k", _POPPED),
+    "boundary-fill": _pixel("x", "y", "k", _POPPED),
+    "scan-line-fill": _choice("spans", "y|active", "Which spans does this scan line fill?"),
+    "cohen-sutherland": _choice("decision", "step|code0|code1|and",
+                                "What do the region codes decide?"),
+    "cohen-sutherland-3d": _choice("decision", "step|code0|code1|and",
+                                   "What do the region codes decide?"),
+    "liang-barsky": _choice("kind", "k|edge", "Is this boundary crossed entering or leaving "
+                            "(the sign of p)?", _CROSSING),
+    "liang-barsky-3d": _choice("kind", "k|plane", "Is this plane crossed entering or leaving "
+                               "(the sign of p)?", _CROSSING),
+    "cyrus-beck": _choice("kind", "edge|N|PE", "Is this edge crossed entering or leaving "
+                          "(the sign of N.D)?", _CROSSING),
+    "sutherland-hodgman": _choice("case", "stage|boundary|S|P",
+                                  "Which case is the edge S -> P, and what is output?"),
+    "de-casteljau": _number("x", "r|i", "What is x of this point (to 3 decimals)?"),
+    "cox-de-boor": _number("B", "r|k|interval",
+                           "What is this basis function's value (to 3 decimals)?"),
+    "z-buffer": _choice("result", "triangle|x|z|depth",
+                        "Is this pixel written to the z-buffer or kept?", ("write", "keep")),
+    "depth-sort": _choice("action", "S|S'", "Which action do the depth-sort tests decide?"),
+    "floating-horizon": _choice("visible", "curve|column|y|upper before|lower before",
+                                "Is this point above, below or between the horizons?",
                                 ("above", "below", "hidden")),
-    "ray-tracing": _choice("kind", "Which kind of ray is cast next?"),
-    "back-face": _choice("result", "Is this face a back face or a front face (the sign of V.N)?",
-                         ("back", "front")),
-    "gouraud": _number("I", "What is the interpolated intensity I (to 3 decimals)?"),
-    "phong": _number("I", "What is the intensity I from the interpolated normal (to 3 decimals)?"),
-    "bsp-tree": _choice("side", "On which side of this node's plane is the eye?",
+    "ray-tracing": _choice("kind", "ray|parent", "Which kind of ray is cast next?"),
+    "back-face": _choice("result", "face|N|V", "Is this face a back face or a front face "
+                         "(the sign of V.N)?", ("back", "front")),
+    "gouraud": _number("I", "x|facet|l0|l1|l2|I0|I1|I2",
+                       "What is the interpolated intensity I (to 3 decimals)?"),
+    "phong": _number("I", "x|facet|l0|l1|l2|N",
+                     "What is the intensity I from the interpolated normal (to 3 decimals)?"),
+    "bsp-tree": _choice("side", "phase|node", "On which side of this node's plane is the eye?",
                         ("front", "back")),
-    "warnock": _choice("decision", "What does Warnock's test decide for this area?"),
-    "scan-line-visible": _choice("visible", "Which polygon is visible on this span?"),
-    "ray-casting": _choice("nearest", "Which triangle does this pixel's ray meet first?"),
-    "inbetween-spacing": _number("t", "At what time t is this in-between (to 3 decimals)?"),
-    "morph-equalize": _choice("added", "Was this vertex pair's vertex added to A, to B, or neither?",
+    "warnock": _choice("decision", "x0|y0|x1|y1|level|P0|P1|P2",
+                       "What does Warnock's test decide for this area?"),
+    "scan-line-visible": _choice("visible", "y|edge|x|on|depths",
+                                 "Which polygon is visible on this span?"),
+    "ray-casting": _choice("nearest", "x|hits", "Which triangle does this pixel's ray meet first?"),
+    "inbetween-spacing": _number("t", "j|j/(n+1)",
+                                 "At what time t is this in-between (to 3 decimals)?"),
+    "morph-equalize": _choice("added", "k|ax|ay|bx|by",
+                              "Was this vertex pair's vertex added to A, to B, or neither?",
                               ("-", "A", "B")),
 }
 
@@ -257,8 +273,9 @@ def questions(algorithm: str, view: dict[str, Any]) -> list[dict[str, Any] | Non
     -------
     list of dict or None
         One entry per row: ``kind``, ``columns``, ``prompt``, ``answer`` (the row's
-        cells, a list), ``choices`` (for "choice": the values the column takes in
-        the table, sorted) and ``tolerance``; an empty list when no row is asked.
+        cells, a list), ``given`` ([column, cell] pairs of the row shown with the
+        question), ``choices`` (for "choice": the values the column takes in the
+        table, sorted) and ``tolerance``; an empty list when no row is asked.
 
     Examples
     --------
@@ -269,13 +286,15 @@ def questions(algorithm: str, view: dict[str, Any]) -> list[dict[str, Any] | Non
     """
     question = QUESTIONS[_check_algorithm(algorithm)]
     index = [view["columns"].index(c) for c in question.columns]
+    shown = [(c, view["columns"].index(c)) for c in question.given if c in view["columns"]]
     answers = [[row[i] for i in index] for row in view["rows"]]
     choices = sorted({str(a[0]) for a in answers if a[0] is not None} | set(question.offered))
     asked: list[dict[str, Any] | None] = [None if any(v is None for v in a) else
              {"kind": question.kind, "columns": list(question.columns), "prompt": question.prompt,
               "answer": a, "tolerance": question.tolerance,
+              "given": [[c, row[i]] for c, i in shown],
               **({"choices": choices} if question.kind == "choice" else {})}
-             for a in answers]
+             for a, row in zip(answers, view["rows"])]
     return asked if any(asked) else []
 
 

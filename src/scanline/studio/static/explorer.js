@@ -350,7 +350,7 @@ function bind() {
 
 // The page's programmatic face, for tests and the curious: the current view, the step,
 // and where a device pixel's center is on the canvas.
-window.explorer = {state, go, load, cellCenter: (x, y) => [state.geometry.sx(x), state.geometry.sy(y)]};
+window.explorer = {state, go, load, cell, cellCenter: (x, y) => [state.geometry.sx(x), state.geometry.sy(y)]};
 
 async function start() {
   bind();

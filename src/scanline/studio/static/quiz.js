@@ -33,6 +33,7 @@ window.quiz = (() => {
     window.explorer.go(k - 1);               // the steps before this one, nothing after
     if (k >= n) {
       el("quiz-prompt").textContent = `Done: ${q.right} of ${q.asked} right.`;
+      el("quiz-given").textContent = "";
       el("quiz-answer").replaceChildren();
       el("quiz-verdict").textContent = "";
       q.waiting = false;
@@ -40,6 +41,8 @@ window.quiz = (() => {
       return;
     }
     const question = q.view.quiz[k];
+    el("quiz-given").textContent = question && question.given.length ? "given: " +
+      question.given.map(([c, v]) => `${c} = ${window.explorer.cell(v)}`).join(", ") : "";
     el("quiz-verdict").textContent = "";
     el("quiz-verdict").className = "";
     if (!question) {                         // a row this algorithm does not ask

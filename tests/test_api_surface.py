@@ -25,6 +25,7 @@ COMPLETE = [
     "scanline.lighting",
     "scanline.framebuffer",
     "scanline.csg",
+    "scanline.color",
 ]
 
 

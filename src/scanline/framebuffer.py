@@ -44,6 +44,9 @@ from .errors import (ArgumentTypeError, ArgumentValueError, OutputError, PixelIn
                      ScanlineError)
 
 MODES = ("1", "L", "RGB", "RGBA", "P")
+
+#: A color table as mode ``"P"`` takes it: colors, or an (n, 3) array of RGB rows.
+ColorTable = Union[Sequence[Union[Color, Tuple[int, ...]]], NDArray[Any]]
 _CHANNELS = {"1": 1, "L": 1, "RGB": 3, "RGBA": 4, "P": 1}
 
 #: The key of the color cache's last entry used, ``(color, name, value)``: a loop that
@@ -328,7 +331,7 @@ class FrameBuffer:
     """
 
     def __init__(self, width: int, height: int, mode: Mode = "RGB", background: Color = "black",
-                 color_table: Optional[Sequence[Color]] = None) -> None:
+                 color_table: Optional[ColorTable] = None) -> None:
         width = v.positive_int("width", width)
         height = v.positive_int("height", height)
         v.choice("mode", mode, MODES)
@@ -497,7 +500,7 @@ class FrameBuffer:
         return np.array(self._table)
 
     @color_table.setter
-    def color_table(self, colors: Sequence[Color]) -> None:
+    def color_table(self, colors: ColorTable) -> None:
         self._require_p("color_table")
         entries = in_context(list(colors))
         if not 1 <= len(entries) <= 256:
@@ -1003,7 +1006,7 @@ class FrameBuffer:
 
     @classmethod
     def from_array(cls, array: ArrayLike, mode: Optional[Mode] = None,
-                   color_table: Optional[Sequence[Color]] = None) -> "FrameBuffer":
+                   color_table: Optional[ColorTable] = None) -> "FrameBuffer":
         """Make a frame buffer from an image-order array (the inverse of :meth:`to_array`).
 
         The mode follows from the array's shape: 2-D -> ``"L"`` (bool: ``"1"``; or
@@ -1081,7 +1084,8 @@ class FrameBuffer:
         if mode == "P" and color_table is None:
             raise ArgumentValueError("mode 'P' needs a color_table for the indices in array")
         if mode == "P":
-            color_table = list(cast(Sequence[Color], color_table))
+            assert color_table is not None        # refused just above
+            color_table = list(color_table)
             top = int(a.max())
             if top >= len(color_table):
                 raise ArgumentValueError(
@@ -1178,7 +1182,7 @@ class FrameBuffer:
             # a palette shorter than the indices used: the missing entries are black, as
             # Pillow shows them
             entries = (table + [(0, 0, 0)] * used)[:used]
-            return cls.from_array(indices, mode="P", color_table=cast(List[Color], entries))
+            return cls.from_array(indices, mode="P", color_table=entries)
         if image.mode not in ("L", "RGB", "RGBA"):
             has_alpha = "A" in image.getbands() or "transparency" in image.info
             image = image.convert("RGBA" if has_alpha else "RGB")

@@ -17,7 +17,10 @@ References
    Proceedings of the Society for Information Display 17(2), 75-77, 1976.
 """
 
+from typing import TYPE_CHECKING, Any, Optional, Union
+
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentValueError
@@ -34,8 +37,11 @@ METHODS = ("floyd-steinberg", "bayer2", "bayer4", "bayer8", "none", "ordered")
 ALIASES = {"ordered": "bayer4"}
 OUTPUT_MODES = ("1", "L", "RGB", "P")
 
+if TYPE_CHECKING:
+    from ..framebuffer import FrameBuffer
 
-def bayer_matrix(n):
+
+def bayer_matrix(n: int) -> NDArray[np.int64]:
     """Bayer's ``n`` x ``n`` index matrix (n a power of two): a permutation of
     0 .. n*n - 1, built recursively from ``M(1) = [[0]]``::
 
@@ -45,6 +51,23 @@ def bayer_matrix(n):
     Pixel (row, col) of an image is set when its intensity reaches the threshold
     ``(M[row mod n, col mod n] + 1/2) / n**2``.
 
+    Parameters
+    ----------
+    n : int
+        The side, a power of two from 1 to 256.
+
+    Returns
+    -------
+    numpy.ndarray
+        int64 (n, n).
+
+    Raises
+    ------
+    ArgumentValueError
+        When ``n`` is not a power of two from 1 to 256.
+
+    Examples
+    --------
     >>> bayer_matrix(2).tolist()
     [[0, 2], [3, 1]]
     >>> bayer_matrix(4)
@@ -62,12 +85,12 @@ def bayer_matrix(n):
     return m
 
 
-def _thresholds(method):
+def _thresholds(method: str) -> NDArray[np.float32]:
     side = {"bayer2": 2, "bayer4": 4, "bayer8": 8, "none": 1}[method]
     return ((bayer_matrix(side) + 0.5) / (side * side)).astype(np.float32)
 
 
-def _output_mode(mode, levels, palette):
+def _output_mode(mode: Optional[str], levels: int, palette: object) -> str:
     if mode is not None:
         v.choice("mode", mode, OUTPUT_MODES)
     if palette is not None:
@@ -81,7 +104,7 @@ def _output_mode(mode, levels, palette):
     return mode
 
 
-def _spread(table):
+def _spread(table: NDArray[np.float32]) -> NDArray[np.float32]:
     """How far ordered dithering pushes each channel toward the neighboring table
     colors (floats in [0, 1]): per channel, the median gap between the distinct
     values the table uses (a gray table of n levels: 1 / (n - 1); the 3-3-2 table:
@@ -94,8 +117,9 @@ def _spread(table):
     return spread
 
 
-def dither(source, method="floyd-steinberg", levels=None, palette=None, *, mode=None,
-           serpentine=False):
+def dither(source: Any, method: str = "floyd-steinberg", levels: Optional[int] = None,
+           palette: Any = None, *, mode: Optional[str] = None,
+           serpentine: bool = False) -> "FrameBuffer":
     """Dither an image to fewer intensity levels or to the colors of a color table.
 
     Parameters
@@ -127,6 +151,15 @@ def dither(source, method="floyd-steinberg", levels=None, palette=None, *, mode=
     Returns
     -------
     FrameBuffer
+        The dithered image, the source's size, in the mode chosen above.
+
+    Raises
+    ------
+    ArgumentValueError
+        For an unknown method or mode, ``levels`` together with ``palette``, levels
+        outside 2 .. 256, a mode that cannot hold the levels, or a bad source.
+    ArgumentTypeError
+        For a source that is not an image.
 
     Notes
     -----
@@ -202,13 +235,35 @@ def dither(source, method="floyd-steinberg", levels=None, palette=None, *, mode=
     return FrameBuffer.from_array(out[0] if out_mode == "L" else out.transpose(1, 2, 0))
 
 
-def gray_levels(source, n=None, *, bits=None):
+def gray_levels(source: Any, n: Optional[int] = None, *,
+                bits: Optional[int] = None) -> Union["FrameBuffer", NDArray[np.uint8]]:
     """Quantize an image to ``n`` evenly spaced gray levels (or ``2**bits``), each
     pixel's luminance rounded to the nearest level, without dithering.
 
     Returns a mode ``"L"`` FrameBuffer for a FrameBuffer source, a uint8 gray array
     for an array source.
 
+    Parameters
+    ----------
+    source : FrameBuffer or array_like
+        The image (see :func:`dither`).
+    n : int, optional
+        The number of levels, 2 .. 256.
+    bits : int, optional
+        Bits per pixel, 1 .. 8 (``n = 2**bits``); give ``n`` or ``bits``, not both.
+
+    Returns
+    -------
+    FrameBuffer or numpy.ndarray
+        Mode ``"L"`` for a frame buffer source, else a uint8 (h, w) array.
+
+    Raises
+    ------
+    ArgumentValueError
+        When neither or both of ``n`` and ``bits`` are given, or they are out of range.
+
+    Examples
+    --------
     >>> gray_levels(np.array([[0, 40, 100, 128, 200, 255]], np.uint8), bits=2).tolist()
     [[0, 0, 85, 170, 170, 255]]
     """
@@ -226,11 +281,25 @@ def gray_levels(source, n=None, *, bits=None):
     return fb if isinstance(source, FrameBuffer) else fb.to_array()
 
 
-def indexed(source, table):
+def indexed(source: Any, table: Any) -> "FrameBuffer":
     """An indexed (mode ``"P"``) frame buffer of ``source`` with color table
     ``table``: each pixel stores the index of the nearest table color (no
     dithering; ``dither(source, palette=table)`` dithers).
 
+    Parameters
+    ----------
+    source : FrameBuffer or array_like
+        The image (see :func:`dither`).
+    table : array_like or sequence of colors
+        The color table (see :func:`scanline.color.color_table`).
+
+    Returns
+    -------
+    FrameBuffer
+        Mode ``"P"`` with color table ``table``.
+
+    Examples
+    --------
     >>> fb = indexed(np.array([[[250, 0, 0], [0, 0, 10]]], np.uint8), ["black", "red"])
     >>> fb.mode, fb.to_array().tolist()
     ('P', [[1, 0]])
@@ -238,12 +307,29 @@ def indexed(source, table):
     return dither(source, "none", palette=table)
 
 
-def halftone(source, size=4):
+def halftone(source: Any, size: int = 4) -> "FrameBuffer":
     """A halftone bitmap: each pixel becomes a ``size`` x ``size`` cell of dots
     (``size`` 2, 4 or 8) in which ``intensity * size**2`` dots, rounded to the nearest
     whole number (halves up), are set in the order of the Bayer matrix, so a cell
     shows ``size**2 + 1`` intensity levels.  The result is ``size`` times wider and
     taller: resolution traded for gray levels.
+
+    Parameters
+    ----------
+    source : FrameBuffer or array_like
+        The image (see :func:`dither`); its luminance is used.
+    size : {2, 4, 8}
+        The cell's side in pixels.
+
+    Returns
+    -------
+    FrameBuffer
+        Mode ``"1"``, ``size`` times the source's width and height.
+
+    Raises
+    ------
+    ArgumentValueError
+        When ``size`` is not 2, 4 or 8, or for a bad source.
 
     Notes
     -----
@@ -252,6 +338,8 @@ def halftone(source, size=4):
     dithering (:func:`dither` with ``"bayer<size>"``) of the image enlarged ``size``
     times.
 
+    Examples
+    --------
     >>> import scanline as sl
     >>> print(sl.text_image(halftone(np.array([[0.0, 0.25, 0.5, 1.0]]), 2)))
     --#-#-##

@@ -7,20 +7,24 @@ order (top row first): ``(h, w)`` gray or ``(h, w, 3)`` RGB (``(h, w, 4)`` RGBA,
 ignored), of bool, uint8 (0..255) or floats in [0, 1].
 """
 
+from typing import Any
+
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from ..errors import ArgumentTypeError, ArgumentValueError
 from .models import LUMA_WEIGHTS
 
 
-def unit_floats(name, value):
+def unit_floats(name: str, value: ArrayLike) -> NDArray[np.float32]:
     """``value`` as a float32 array in [0, 1]: uint8 / 255, bool as 0 or 1, floats
     checked to be finite and in [0, 1]."""
     a = np.asarray(value)
     if a.dtype == bool:
         return a.astype(np.float32)
     if a.dtype == np.uint8:   # one pass, the same values as astype then divide
-        return np.divide(a, np.float32(255), dtype=np.float32)
+        scaled: NDArray[np.float32] = np.divide(a, np.float32(255), dtype=np.float32)
+        return scaled
     if a.dtype.kind != "f":
         raise ArgumentTypeError(
             f"{name} must hold uint8 (0..255), bool or floats in [0, 1], got dtype {a.dtype}")
@@ -37,7 +41,8 @@ def unit_floats(name, value):
 UNIT_LUT = unit_floats("UNIT_LUT", np.arange(256, dtype=np.uint8))
 
 
-def source_pixels(source, name="source", keep_uint8=False):
+def source_pixels(source: object, name: str = "source",
+                  keep_uint8: bool = False) -> tuple[NDArray[Any], bool]:
     """``(pixels, is_gray)``: float32 ``(h, w, 1)`` gray or ``(h, w, 3)`` RGB in [0, 1]
     (with ``keep_uint8``, uint8 pixels stay uint8: read them through
     :data:`UNIT_LUT`)."""
@@ -63,17 +68,17 @@ def source_pixels(source, name="source", keep_uint8=False):
     return pixels, False
 
 
-def gray_image(source, name="source", keep_uint8=False):
+def gray_image(source: object, name: str = "source", keep_uint8: bool = False) -> NDArray[Any]:
     """The source's luminance (BT.601), float32 ``(h, w, 1)`` in [0, 1] (with
     ``keep_uint8``, a uint8 gray source stays uint8)."""
     pixels, is_gray = source_pixels(source, name, keep_uint8)
     if is_gray:
         return pixels
-    gray = unit_floats(name, pixels) @ LUMA_WEIGHTS.astype(np.float32)
+    gray: NDArray[np.float32] = unit_floats(name, pixels) @ LUMA_WEIGHTS.astype(np.float32)
     return np.clip(gray, 0, 1)[:, :, None]
 
 
-def rgb_image(source, name="source", keep_uint8=False):
+def rgb_image(source: object, name: str = "source", keep_uint8: bool = False) -> NDArray[Any]:
     """The source as float32 RGB ``(h, w, 3)`` in [0, 1] (a gray source repeated;
     with ``keep_uint8``, uint8 stays uint8)."""
     pixels, is_gray = source_pixels(source, name, keep_uint8)

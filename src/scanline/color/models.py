@@ -34,7 +34,10 @@ References
    (the YIQ matrix; 47 CFR 73.682).
 """
 
+from typing import Any, Callable
+
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from ..errors import ArgumentTypeError, ArgumentValueError
 
@@ -51,7 +54,7 @@ RGB_FROM_YIQ = np.linalg.inv(YIQ_FROM_RGB)
 LUMA_WEIGHTS = YIQ_FROM_RGB[0]
 
 
-def _components(name, value, count):
+def _components(name: str, value: ArrayLike, count: int) -> tuple[NDArray[np.float64], bool]:
     """``(float64 array in [0, 1] with last axis count, was_uint8)``."""
     a = np.asarray(value)
     if a.dtype == bool or a.dtype.kind not in "uif":
@@ -71,7 +74,7 @@ def _components(name, value, count):
     return a, False
 
 
-def _unit(name, value, count):
+def _unit(name: str, value: ArrayLike, count: int) -> tuple[NDArray[np.float64], bool]:
     """Like :func:`_components`, and check that floats lie in [0, 1]."""
     a, was_uint8 = _components(name, value, count)
     if not was_uint8 and a.size and (a.min() < 0 or a.max() > 1):
@@ -81,7 +84,7 @@ def _unit(name, value, count):
     return a, was_uint8
 
 
-def _out(a, as_uint8):
+def _out(a: NDArray[np.float64], as_uint8: bool) -> NDArray[Any]:
     if as_uint8:
         return np.floor(np.clip(a, 0.0, 1.0) * 255.0 + 0.5).astype(np.uint8)
     return a
@@ -89,7 +92,8 @@ def _out(a, as_uint8):
 
 # -- HSV and HLS ---------------------------------------------------------------------
 
-def _hue(r, g, b, maxc, delta):
+def _hue(r: NDArray[np.float64], g: NDArray[np.float64], b: NDArray[np.float64],
+         maxc: NDArray[np.float64], delta: NDArray[np.float64]) -> NDArray[np.float64]:
     """Hue in [0, 1) of RGB components with max ``maxc`` and range ``delta`` (> 0
     where the hue matters; elsewhere 0)."""
     safe = np.where(delta > 0, delta, 1.0)
@@ -99,9 +103,28 @@ def _hue(r, g, b, maxc, delta):
     return np.where((delta > 0) & (h < 1.0), h, 0.0)
 
 
-def rgb_to_hsv(rgb):
+def rgb_to_hsv(rgb: ArrayLike) -> NDArray[Any]:
     """RGB to HSV (hexcone model): hue, saturation ``(max - min) / max``, value ``max``.
 
+    Parameters
+    ----------
+    rgb : array_like
+        RGB colors, components on the last axis (3): floats in [0, 1] or uint8.
+
+    Returns
+    -------
+    numpy.ndarray
+        The HSV (h, s, v) colors, the same leading shape, 3 components; float64 for float input, uint8 for uint8 input.
+
+    Raises
+    ------
+    ArgumentTypeError
+        When the array is not numeric, or of an integer dtype other than uint8.
+    ArgumentValueError
+        When its last axis is not 3 long, or floats lie outside [0, 1].
+
+    Examples
+    --------
     >>> rgb_to_hsv([1.0, 0.5, 0.0]).round(4).tolist()
     [0.0833, 1.0, 1.0]
     >>> rgb_to_hsv(np.array([255, 0, 255], np.uint8)).tolist()
@@ -115,9 +138,28 @@ def rgb_to_hsv(rgb):
     return _out(np.stack([_hue(r, g, b, maxc, delta), s, maxc], axis=-1), as_uint8)
 
 
-def hsv_to_rgb(hsv):
+def hsv_to_rgb(hsv: ArrayLike) -> NDArray[Any]:
     """HSV to RGB, the inverse of :func:`rgb_to_hsv` (hue taken modulo 1).
 
+    Parameters
+    ----------
+    hsv : array_like
+        HSV colors, components on the last axis (3): floats in [0, 1] or uint8.
+
+    Returns
+    -------
+    numpy.ndarray
+        The RGB colors, the same leading shape, 3 components; float64 for float input, uint8 for uint8 input.
+
+    Raises
+    ------
+    ArgumentTypeError
+        When the array is not numeric, or of an integer dtype other than uint8.
+    ArgumentValueError
+        When its last axis is not 3 long, or floats lie outside [0, 1].
+
+    Examples
+    --------
     >>> hsv_to_rgb([2 / 3, 1.0, 0.5]).tolist()
     [0.0, 0.0, 0.5]
     """
@@ -132,9 +174,28 @@ def hsv_to_rgb(hsv):
     return _out(out, as_uint8)
 
 
-def rgb_to_hls(rgb):
+def rgb_to_hls(rgb: ArrayLike) -> NDArray[Any]:
     """RGB to HLS (double hexcone): hue, lightness ``(max + min) / 2``, saturation.
 
+    Parameters
+    ----------
+    rgb : array_like
+        RGB colors, components on the last axis (3): floats in [0, 1] or uint8.
+
+    Returns
+    -------
+    numpy.ndarray
+        The HLS (h, l, s) colors, the same leading shape, 3 components; float64 for float input, uint8 for uint8 input.
+
+    Raises
+    ------
+    ArgumentTypeError
+        When the array is not numeric, or of an integer dtype other than uint8.
+    ArgumentValueError
+        When its last axis is not 3 long, or floats lie outside [0, 1].
+
+    Examples
+    --------
     >>> rgb_to_hls([0.0, 0.5, 0.0]).round(4).tolist()
     [0.3333, 0.25, 1.0]
     """
@@ -148,9 +209,28 @@ def rgb_to_hls(rgb):
     return _out(np.stack([_hue(r, g, b, maxc, delta), lightness, s], axis=-1), as_uint8)
 
 
-def hls_to_rgb(hls):
+def hls_to_rgb(hls: ArrayLike) -> NDArray[Any]:
     """HLS to RGB, the inverse of :func:`rgb_to_hls` (hue taken modulo 1).
 
+    Parameters
+    ----------
+    hls : array_like
+        HLS colors, components on the last axis (3): floats in [0, 1] or uint8.
+
+    Returns
+    -------
+    numpy.ndarray
+        The RGB colors, the same leading shape, 3 components; float64 for float input, uint8 for uint8 input.
+
+    Raises
+    ------
+    ArgumentTypeError
+        When the array is not numeric, or of an integer dtype other than uint8.
+    ArgumentValueError
+        When its last axis is not 3 long, or floats lie outside [0, 1].
+
+    Examples
+    --------
     >>> hls_to_rgb([0.0, 0.75, 1.0]).tolist()
     [1.0, 0.5, 0.5]
     """
@@ -159,7 +239,7 @@ def hls_to_rgb(hls):
     m2 = np.where(lightness <= 0.5, lightness * (1.0 + s), lightness + s - lightness * s)
     m1 = 2.0 * lightness - m2
 
-    def channel(hue):
+    def channel(hue: NDArray[np.float64]) -> NDArray[np.float64]:
         hue = hue % 1.0
         return np.where(hue < 1 / 6, m1 + (m2 - m1) * hue * 6.0,
                         np.where(hue < 0.5, m2,
@@ -171,9 +251,28 @@ def hls_to_rgb(hls):
 
 # -- CMY and CMYK --------------------------------------------------------------------
 
-def rgb_to_cmy(rgb):
+def rgb_to_cmy(rgb: ArrayLike) -> NDArray[Any]:
     """RGB to the subtractive CMY: ``(c, m, y) = (1, 1, 1) - (r, g, b)``.
 
+    Parameters
+    ----------
+    rgb : array_like
+        RGB colors, components on the last axis (3): floats in [0, 1] or uint8.
+
+    Returns
+    -------
+    numpy.ndarray
+        The CMY colors, the same leading shape, 3 components; float64 for float input, uint8 for uint8 input.
+
+    Raises
+    ------
+    ArgumentTypeError
+        When the array is not numeric, or of an integer dtype other than uint8.
+    ArgumentValueError
+        When its last axis is not 3 long, or floats lie outside [0, 1].
+
+    Examples
+    --------
     >>> rgb_to_cmy([1.0, 0.0, 0.25]).tolist()
     [0.0, 1.0, 0.75]
     """
@@ -181,13 +280,38 @@ def rgb_to_cmy(rgb):
     return _out(1.0 - a, as_uint8)
 
 
-def cmy_to_rgb(cmy):
-    """CMY to RGB: ``(r, g, b) = (1, 1, 1) - (c, m, y)``."""
+def cmy_to_rgb(cmy: ArrayLike) -> NDArray[Any]:
+    """CMY to RGB: ``(r, g, b) = (1, 1, 1) - (c, m, y)``.
+
+    Parameters
+    ----------
+    cmy : array_like
+        CMY colors, components on the last axis (3): floats in [0, 1] or uint8.
+
+    Returns
+    -------
+    numpy.ndarray
+        The RGB colors, the same leading shape, 3 components; float64 for float input, uint8 for uint8 input.
+
+    Raises
+    ------
+    ArgumentTypeError
+        When the array is not numeric, or of an integer dtype other than uint8.
+    ArgumentValueError
+        When its last axis is not 3 long, or floats lie outside [0, 1].
+
+    Examples
+    --------
+    >>> cmy_to_rgb([0.0, 1.0, 0.75]).tolist()
+    [1.0, 0.0, 0.25]
+    >>> cmy_to_rgb(np.array([255, 0, 55], np.uint8)).tolist()
+    [0, 255, 200]
+    """
     a, as_uint8 = _unit("cmy", cmy, 3)
     return _out(1.0 - a, as_uint8)
 
 
-def rgb_to_cmyk(rgb, ucr=1.0):
+def rgb_to_cmyk(rgb: ArrayLike, ucr: float = 1.0) -> NDArray[Any]:
     """RGB to CMYK with under-color removal.
 
     The gray component common to the three inks, ``min(c, m, y)``, is replaced by
@@ -196,6 +320,29 @@ def rgb_to_cmyk(rgb, ucr=1.0):
     of it (the usual "full" removal), ``ucr=0`` prints no black (Pillow's RGB ->
     CMYK).  :func:`cmyk_to_rgb` inverts this for every ``ucr``.
 
+    Parameters
+    ----------
+    rgb : array_like
+        RGB colors, components on the last axis (3): floats in [0, 1] or uint8.
+    ucr : float
+        The fraction of the gray component replaced by black, in [0, 1].
+
+    Returns
+    -------
+    numpy.ndarray
+        The CMYK colors, 4 components; float64 for float input, uint8 for uint8 input.
+
+    Raises
+    ------
+    ArgumentTypeError
+        When the array is not numeric, or of an integer dtype other than uint8.
+    ArgumentValueError
+        When its last axis is not 3 long, or floats lie outside [0, 1].
+    ArgumentValueError
+        When ``ucr`` is not a number in [0, 1].
+
+    Examples
+    --------
     >>> rgb_to_cmyk([0.2, 0.4, 0.6]).round(4).tolist()
     [0.6667, 0.3333, 0.0, 0.4]
     >>> rgb_to_cmyk([0.2, 0.4, 0.6], ucr=0).round(4).tolist()
@@ -211,9 +358,28 @@ def rgb_to_cmyk(rgb, ucr=1.0):
     return _out(np.concatenate([inks, k], axis=-1), as_uint8)
 
 
-def cmyk_to_rgb(cmyk):
+def cmyk_to_rgb(cmyk: ArrayLike) -> NDArray[Any]:
     """CMYK to RGB: ``r = (1 - c)(1 - k)`` and so on, as Pillow decodes CMYK.
 
+    Parameters
+    ----------
+    cmyk : array_like
+        CMYK colors, components on the last axis (4): floats in [0, 1] or uint8.
+
+    Returns
+    -------
+    numpy.ndarray
+        The RGB colors, the same leading shape, 3 components; float64 for float input, uint8 for uint8 input.
+
+    Raises
+    ------
+    ArgumentTypeError
+        When the array is not numeric, or of an integer dtype other than uint8.
+    ArgumentValueError
+        When its last axis is not 4 long, or floats lie outside [0, 1].
+
+    Examples
+    --------
     >>> cmyk_to_rgb([0.0, 1.0, 1.0, 0.5]).tolist()
     [0.5, 0.0, 0.0]
     """
@@ -223,7 +389,7 @@ def cmyk_to_rgb(cmyk):
 
 # -- YIQ and luminance ---------------------------------------------------------------
 
-def rgb_to_yiq(rgb):
+def rgb_to_yiq(rgb: ArrayLike) -> NDArray[np.float64]:
     """RGB to NTSC YIQ: ``yiq = YIQ_FROM_RGB @ rgb`` with the FCC matrix
 
     ::
@@ -235,28 +401,94 @@ def rgb_to_yiq(rgb):
     Y is in [0, 1], I in [-0.5959, 0.5959], Q in [-0.5227, 0.5227]; the result is
     always float64 (I and Q are signed).
 
+    Parameters
+    ----------
+    rgb : array_like
+        RGB colors, components on the last axis (3): floats in [0, 1] or uint8.
+
+    Returns
+    -------
+    numpy.ndarray
+        float64 (y, i, q) colors, the same leading shape.
+
+    Raises
+    ------
+    ArgumentTypeError
+        When the array is not numeric, or of an integer dtype other than uint8.
+    ArgumentValueError
+        When its last axis is not 3 long, or floats lie outside [0, 1].
+
+    Examples
+    --------
     >>> rgb_to_yiq([1.0, 0.0, 0.0]).tolist()
     [0.299, 0.5959, 0.2115]
     """
     a, _ = _unit("rgb", rgb, 3)
-    return a @ YIQ_FROM_RGB.T
+    yiq: NDArray[np.float64] = a @ YIQ_FROM_RGB.T
+    return yiq
 
 
-def yiq_to_rgb(yiq, clip=True):
+def yiq_to_rgb(yiq: ArrayLike, clip: bool = True) -> NDArray[np.float64]:
     """NTSC YIQ to RGB with the inverse matrix.  Not every YIQ triple is an RGB color;
     with ``clip=True`` the result is clipped to [0, 1].  Float in, float out; uint8 is
-    not accepted (I and Q are signed)."""
+    not accepted (I and Q are signed).
+
+    Parameters
+    ----------
+    yiq : array_like
+        Float YIQ colors, components on the last axis (3).
+    clip : bool
+        Clip the result to [0, 1].
+
+    Returns
+    -------
+    numpy.ndarray
+        float64 RGB colors, the same leading shape.
+
+    Raises
+    ------
+    ArgumentTypeError
+        For uint8 or non-numeric input.
+    ArgumentValueError
+        When the last axis is not 3 long or a value is not finite.
+
+    Examples
+    --------
+    >>> yiq_to_rgb([0.299, 0.5959, 0.2115]).round(12).tolist()     # red's YIQ
+    [1.0, 0.0, 0.0]
+    >>> yiq_to_rgb([0.5, 0.5, 0.0]).round(4).tolist()   # B = 0.5 - 1.106 * 0.5 < 0: clipped
+    [0.978, 0.364, 0.0]
+    """
     a, as_uint8 = _components("yiq", yiq, 3)
     if as_uint8:
         raise ArgumentTypeError("yiq must be floats (I and Q are signed), not uint8")
-    out = a @ RGB_FROM_YIQ.T
+    out: NDArray[np.float64] = a @ RGB_FROM_YIQ.T
     return np.clip(out, 0.0, 1.0) if clip else out
 
 
-def luminance(rgb):
+def luminance(rgb: ArrayLike) -> NDArray[Any]:
     """The luminance Y (ITU-R BT.601 luma, the Y of YIQ) of RGB colors, shape
     ``rgb.shape[:-1]``; float in, float out; uint8 in, uint8 out (rounded).
 
+    Parameters
+    ----------
+    rgb : array_like
+        RGB colors, components on the last axis (3): floats in [0, 1] or uint8.
+
+    Returns
+    -------
+    numpy.ndarray
+        Y per color, shape ``rgb.shape[:-1]``; float64, or uint8 for uint8 input.
+
+    Raises
+    ------
+    ArgumentTypeError
+        When the array is not numeric, or of an integer dtype other than uint8.
+    ArgumentValueError
+        When its last axis is not 3 long, or floats lie outside [0, 1].
+
+    Examples
+    --------
     >>> luminance(np.array([[255, 0, 0], [255, 255, 255]], np.uint8)).tolist()
     [76, 255]
     """
@@ -265,7 +497,7 @@ def luminance(rgb):
 
 
 #: ``(source, target) -> function`` for :func:`convert`.
-_DIRECT = {
+_DIRECT: dict[tuple[str, str], Callable[[ArrayLike], NDArray[Any]]] = {
     ("rgb", "hsv"): rgb_to_hsv, ("hsv", "rgb"): hsv_to_rgb,
     ("rgb", "hls"): rgb_to_hls, ("hls", "rgb"): hls_to_rgb,
     ("rgb", "cmy"): rgb_to_cmy, ("cmy", "rgb"): cmy_to_rgb,
@@ -275,11 +507,32 @@ _DIRECT = {
 MODELS = ("rgb", "hsv", "hls", "cmy", "cmyk", "yiq")
 
 
-def convert(colors, source, target):
+def convert(colors: ArrayLike, source: str, target: str) -> NDArray[Any]:
     """Convert ``colors`` from model ``source`` to model ``target`` (each one of
     ``"rgb"``, ``"hsv"``, ``"hls"``, ``"cmy"``, ``"cmyk"``, ``"yiq"``), through RGB
     when neither is RGB.
 
+    Parameters
+    ----------
+    colors : array_like
+        Colors of model ``source``, components on the last axis.
+    source, target : {"rgb", "hsv", "hls", "cmy", "cmyk", "yiq"}
+        The models converted from and to.
+
+    Returns
+    -------
+    numpy.ndarray
+        The colors in model ``target`` (float64, or uint8 where both ends take it).
+
+    Raises
+    ------
+    ArgumentValueError
+        For an unknown model, or colors the source model's function refuses.
+    ArgumentTypeError
+        For colors that are not a numeric array.
+
+    Examples
+    --------
     >>> convert([0.5, 1.0, 1.0], "hsv", "cmy").tolist()
     [1.0, 0.0, 0.0]
     """
@@ -290,5 +543,7 @@ def convert(colors, source, target):
     if source == target:
         a, as_uint8 = _components("colors", colors, 4 if source == "cmyk" else 3)
         return _out(a, as_uint8) if source != "yiq" else a
+    if target == "rgb":
+        return _DIRECT[(source, "rgb")](colors)
     rgb = colors if source == "rgb" else _DIRECT[(source, "rgb")](colors)
-    return rgb if target == "rgb" else _DIRECT[("rgb", target)](rgb)
+    return _DIRECT[("rgb", target)](rgb)

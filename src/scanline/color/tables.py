@@ -15,16 +15,37 @@ equally spaced grays gives the gray-scale levels: with 2 bits per pixel, 4 level
 """
 
 import numbers
+from typing import Any
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from ..errors import ArgumentTypeError, ArgumentValueError
 from .spec import in_context, rgba
 
 
-def gray_table(n):
+def gray_table(n: int) -> NDArray[np.uint8]:
     """``n`` evenly spaced gray levels from black to white, ``round(255 i / (n - 1))``.
 
+    Parameters
+    ----------
+    n : int
+        The number of levels, 2 .. 256.
+
+    Returns
+    -------
+    numpy.ndarray
+        uint8 (n, 3): gray ``i`` in row ``i``.
+
+    Raises
+    ------
+    ArgumentTypeError
+        When ``n`` is not an integer.
+    ArgumentValueError
+        When ``n`` is outside 2 .. 256.
+
+    Examples
+    --------
     >>> gray_table(4)[:, 0].tolist()       # 2 bits per pixel: 4 levels
     [0, 85, 170, 255]
     """
@@ -33,10 +54,18 @@ def gray_table(n):
     return np.repeat(values[:, None], 3, axis=1)
 
 
-def rgb332_table():
+def rgb332_table() -> NDArray[np.uint8]:
     """The 256-color "3-3-2" table: index ``r << 5 | g << 2 | b`` with 8 levels of red,
     8 of green and 4 of blue (an 8-bit frame buffer read directly as RGB).
 
+    Returns
+    -------
+    numpy.ndarray
+        uint8 (256, 3): level ``k`` of red is ``round(255 k / 7)``, of blue
+        ``round(255 k / 3)``.
+
+    Examples
+    --------
     >>> rgb332_table()[0b111_000_11].tolist()
     [255, 0, 255]
     """
@@ -45,10 +74,17 @@ def rgb332_table():
     return np.floor(np.stack([r * 255 / 7, g * 255 / 7, b * 255 / 3], axis=1) + 0.5).astype(np.uint8)
 
 
-def web_safe_table():
+def web_safe_table() -> NDArray[np.uint8]:
     """The 216 "web-safe" colors: 6 levels (0, 51, ..., 255) of each primary, index
     ``36 r + 6 g + b``.
 
+    Returns
+    -------
+    numpy.ndarray
+        uint8 (216, 3).
+
+    Examples
+    --------
     >>> web_safe_table()[[0, 5, 215]].tolist()
     [[0, 0, 0], [0, 0, 255], [255, 255, 255]]
     """
@@ -56,7 +92,7 @@ def web_safe_table():
     return (np.stack([i // 36, (i // 6) % 6, i % 6], axis=1) * 51).astype(np.uint8)
 
 
-def median_cut_table(source, colors=16):
+def median_cut_table(source: Any, colors: int = 16) -> NDArray[np.uint8]:
     """A table of at most ``colors`` colors fitted to an image by Heckbert's median cut.
 
     ``source`` is a FrameBuffer or an image array (see :func:`scanline.color.dither`).
@@ -75,6 +111,29 @@ def median_cut_table(source, colors=16):
     ----------
     .. [1] P. Heckbert, "Color image quantization for frame buffer display",
        Computer Graphics (SIGGRAPH '82) 16(3), 297-307, 1982.
+
+    Examples
+    --------
+
+    Parameters
+    ----------
+    source : FrameBuffer or array_like
+        The image: a frame buffer, or an image-order array (h, w) gray or (h, w, 3|4)
+        color, of bool, uint8 or floats in [0, 1].
+    colors : int
+        The most entries the table may have, 1 .. 256.
+
+    Returns
+    -------
+    numpy.ndarray
+        uint8 (n, 3), n <= ``colors``.
+
+    Raises
+    ------
+    ArgumentTypeError
+        When ``source`` is not an image or ``colors`` not an integer.
+    ArgumentValueError
+        For an empty image, bad pixel values or ``colors`` outside 1 .. 256.
 
     Examples
     --------
@@ -107,25 +166,46 @@ def median_cut_table(source, colors=16):
     return np.array(table, np.uint8)
 
 
-def levels_argument(name, value, minimum=2):
+def levels_argument(name: str, value: object, minimum: int = 2) -> int:
     """Check a count of levels or colors: an int in ``minimum`` .. 256."""
     if isinstance(value, bool) or not isinstance(value, numbers.Integral):
         raise ArgumentTypeError(
             f"{name}={value!r} must be an integer from {minimum} to 256, "
             f"not {type(value).__name__}")
-    if not minimum <= value <= 256:
+    if not minimum <= int(value) <= 256:
         raise ArgumentValueError(
             f"{name}={value!r} must be from {minimum} to 256 "
             f"(2 levels = 1 bit per pixel, 4 = 2 bits, 256 = 8 bits)")
     return int(value)
 
 
-def color_table(colors, name="palette"):
+def color_table(colors: Any, name: str = "palette") -> NDArray[np.uint8]:
     """Return ``colors`` as a color table, a uint8 (n, 3) array with 1 <= n <= 256.
 
     ``colors`` is an (n, 3) array of uint8 (or of floats in [0, 1]), or a sequence of
     color specifications (``"red"``, ``"#ff8000"``, ``(r, g, b)``).
 
+    Parameters
+    ----------
+    colors : array_like or sequence of colors
+        An (n, 3) array of uint8 or of floats in [0, 1], or a sequence of color specs.
+    name : str
+        The argument's name, for error messages.
+
+    Returns
+    -------
+    numpy.ndarray
+        uint8 (n, 3), C-contiguous.
+
+    Raises
+    ------
+    ArgumentTypeError
+        For one string, or anything that is not a sequence of colors.
+    ArgumentValueError
+        For values out of range, or fewer than 1 or more than 256 colors.
+
+    Examples
+    --------
     >>> color_table(["black", (255, 128, 0)]).tolist()
     [[0, 0, 0], [255, 128, 0]]
     """
@@ -159,13 +239,34 @@ def color_table(colors, name="palette"):
     return np.ascontiguousarray(table)
 
 
-def nearest(colors, table):
+def nearest(colors: ArrayLike, table: Any) -> NDArray[np.uint8]:
     """Index of the nearest table color (Euclidean distance in RGB; the lowest index
     among equally near ones) for each color of ``colors``.
 
     ``colors`` has any leading shape and 3 components, uint8 or floats in [0, 1]; the
     result has shape ``colors.shape[:-1]``, dtype uint8.
 
+    Parameters
+    ----------
+    colors : array_like
+        Colors, 3 components on the last axis: uint8, bool or floats in [0, 1].
+    table : array_like or sequence of colors
+        The color table (see :func:`color_table`).
+
+    Returns
+    -------
+    numpy.ndarray
+        uint8 indices, shape ``colors.shape[:-1]``.
+
+    Raises
+    ------
+    ArgumentTypeError
+        For colors of another dtype, or a table that is not one.
+    ArgumentValueError
+        For colors without 3 components or out of range, or a bad table.
+
+    Examples
+    --------
     >>> nearest(np.array([[250, 10, 10], [20, 20, 20]], np.uint8), ["black", "red"]).tolist()
     [1, 0]
     """
@@ -184,7 +285,8 @@ def nearest(colors, table):
     return out.reshape(a.shape[:-1])
 
 
-def search_cells(palette, pixels):
+def search_cells(palette: NDArray[np.float32], pixels: int
+                 ) -> tuple[NDArray[np.int16], NDArray[np.int32], int, float, float]:
     """``(cells, counts, grid, low, span)`` for the palette kernels' nearest-color
     search: the candidate lists of :func:`scanline._kernels.dither.palette_cells` on
     a 16 x 16 x 16 grid over [-1/2, 3/2] (error diffusion pushes colors past [0, 1])

@@ -7,8 +7,11 @@ refresh cycle growing), from :mod:`scanline.display.crt`; and on the color CRTs
 and :mod:`~scanline.display.flat_panel`.  ``KINDS`` lists the devices; each takes
 its parameters from the query string (checked by the simulation's own checks)."""
 
+from __future__ import annotations
+
 import functools
 import io
+from typing import Any, Mapping
 
 import numpy as np
 
@@ -52,7 +55,7 @@ def _display_file(extra=0):
 
 
 @functools.lru_cache(maxsize=4)
-def frame_buffer(size=SIZE):
+def frame_buffer(size: int = SIZE) -> sl.FrameBuffer:
     """The demo scene on a size x size mode "P" frame buffer."""
     fb = sl.FrameBuffer(size, size, mode="P", background="midnightblue")
     _display_file().draw(fb)
@@ -120,7 +123,7 @@ def _number(query, name, default):
             from None
 
 
-def simulation(kind, query):
+def simulation(kind: str, query: Mapping[str, str]) -> Any:
     """The simulation a query string asks for (validated by the simulation's own
     checks)."""
     persistence = _number(query, "persistence", 0.02)
@@ -150,7 +153,7 @@ def simulation(kind, query):
     raise ArgumentValueError(f"no display device {kind[:40]!r}; one of {', '.join(KINDS)}")
 
 
-def info(sim):
+def info(sim: Any) -> dict[str, Any]:
     """What the page prints beside the screen."""
     img = sim.screen(0.0)
     out = {"period": sim.period, "refresh_rate": 1 / sim.period, "size": [sim.width, sim.height],
@@ -185,14 +188,14 @@ def info(sim):
     return out
 
 
-def frame(sim, t):
+def frame(sim: Any, t: float) -> tuple[bytes, Any]:
     """The screen at time ``t`` as raw RGBA bytes, and the beam."""
     rgb = sim.screen(t)
     rgba = np.concatenate([rgb, np.full(rgb.shape[:2] + (1,), 255, np.uint8)], axis=2)
     return rgba.tobytes(), sim.beam(t)
 
 
-def plane_png(k):
+def plane_png(k: int) -> bytes:
     """Bit plane ``k`` of the frame buffer as a PNG (black 0, white 1)."""
     from PIL import Image
 

@@ -11,6 +11,8 @@ with ``("ok", result)``, ``("bad", message)`` (the API refused the input),
 (JSON, PNG, raw frames) so that the server only forwards them.
 """
 
+from __future__ import annotations
+
 import os
 import re
 import signal
@@ -19,49 +21,51 @@ import threading
 import time
 import traceback
 from multiprocessing.connection import Connection
+from typing import Any, Callable, Mapping
 
 import orjson
 
 from ..errors import ScanlineError
 
 
-def explore(algorithm, args, limit_bytes):
+def explore(algorithm: str, args: list[str], limit_bytes: float | None) -> bytes:
     """The explorer's view, as JSON."""
     from . import explorer
 
     return orjson.dumps(explorer.explore(algorithm, args, limit_bytes=limit_bytes))
 
 
-def device_info(kind, query):
+def device_info(kind: str, query: Mapping[str, str]) -> bytes:
     from . import devices
 
     return orjson.dumps(devices.info(devices.simulation(kind, query)))
 
 
-def device_frame(kind, query, t):
+def device_frame(kind: str, query: Mapping[str, str], t: float) -> tuple[bytes, Any]:
     from . import devices
 
     return devices.frame(devices.simulation(kind, query), t)
 
 
-def device_plane(k):
+def device_plane(k: int) -> bytes:
     from . import devices
 
     return devices.plane_png(k)
 
 
-def quiz(algorithm, seed):
+def quiz(algorithm: str, seed: int) -> bytes:
     """Quiz case ``seed`` of ``algorithm``: the view with its questions, as JSON."""
     from . import quiz as quizzes
 
     return orjson.dumps(quizzes.quiz(algorithm, quizzes.case(algorithm, seed)))
 
 
-TASKS = {"explore": explore, "quiz": quiz, "device_info": device_info, "device_frame": device_frame,
+#: The tasks a worker runs, by name: each returns what the server forwards.
+TASKS: dict[str, Callable[..., Any]] = {"explore": explore, "quiz": quiz, "device_info": device_info, "device_frame": device_frame,
          "device_plane": device_plane}
 
 
-def warm_up():
+def warm_up() -> None:
     """Compile (or load from numba's cache) what the pages reach first."""
     from . import devices, explorer
 
@@ -71,7 +75,7 @@ def warm_up():
         explorer.explore(name, explorer.DEFAULTS[name])
 
 
-def _address_space():
+def _address_space() -> int | None:
     """This process's address space in bytes (None where /proc cannot tell)."""
     try:
         with open("/proc/self/status") as f:
@@ -81,7 +85,7 @@ def _address_space():
     return int(match.group(1)) * 1024 if match else None
 
 
-def limit_memory(extra):
+def limit_memory(extra: int) -> None:
     """Limit this process's address space to what it holds now plus ``extra`` bytes."""
     try:
         import resource
@@ -96,7 +100,7 @@ def limit_memory(extra):
         resource.setrlimit(resource.RLIMIT_AS, (soft, hard))
 
 
-def _watch(parent):
+def _watch(parent: int) -> None:
     """Exit as soon as the server that started this worker has gone."""
     while True:
         if os.getppid() != parent:
@@ -104,13 +108,13 @@ def _watch(parent):
         time.sleep(0.5)
 
 
-def _bad():
+def _bad() -> tuple[type[Exception], ...]:
     from .explorer import BadArguments
 
     return (ScanlineError, ValueError, TypeError, KeyError, BadArguments)
 
 
-def serve(conn, address_space):
+def serve(conn: Connection, address_space: int) -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     threading.Thread(target=_watch, args=(os.getppid(),), daemon=True,
                      name="scanline-worker-watch").start()
@@ -148,7 +152,7 @@ def serve(conn, address_space):
             return
 
 
-def main(argv=None):
+def main(argv: list[str] | None = None) -> None:
     argv = sys.argv[1:] if argv is None else argv
     conn = Connection(int(argv[0]))
     serve(conn, int(argv[1]) if len(argv) > 1 else 0)

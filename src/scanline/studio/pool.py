@@ -22,6 +22,8 @@ included) and a fresh one is started in its place.
   whose server has gone (killed) notices within half a second and exits.
 """
 
+from __future__ import annotations
+
 import os
 import pickle
 import signal
@@ -31,6 +33,7 @@ import sys
 import threading
 import time
 from multiprocessing.connection import Connection
+from typing import Any
 
 import anyio
 
@@ -53,7 +56,7 @@ MAX_START_FAILURES = 3
 class PoolError(Exception):
     """A request the pool could not serve; ``status`` is the HTTP status to answer."""
 
-    def __init__(self, status, message):
+    def __init__(self, status: int, message: str) -> None:
         super().__init__(message)
         self.status = status
 
@@ -62,7 +65,7 @@ class Refused(PoolError):
     """The task's own error (bad input): ``status`` 422, the API's message."""
 
 
-def _package_root():
+def _package_root() -> str:
     import scanline
 
     return os.path.dirname(os.path.dirname(os.path.abspath(scanline.__file__)))
@@ -71,7 +74,7 @@ def _package_root():
 class _Worker:
     """One worker process and its end of the socket pair."""
 
-    def __init__(self, address_space):
+    def __init__(self, address_space: int) -> None:
         ours, theirs = socket.socketpair()
         env = dict(os.environ)
         env["PYTHONPATH"] = os.pathsep.join(p for p in (_package_root(), env.get("PYTHONPATH"))
@@ -89,20 +92,21 @@ class _Worker:
         self.started = time.monotonic()
 
     @property
-    def pid(self):
+    def pid(self) -> int:
         return self.proc.pid
 
-    def ready(self):
+    def ready(self) -> bool | None:
         """Whether a starting worker has said it is ready (True), is still starting
         (False) or failed (None)."""
         try:
             if not self.conn.poll(0):
                 return None if self.proc.poll() is not None else False
-            return self.conn.recv() == ("ready", self.proc.pid) or None
+            said: object = self.conn.recv()
+            return said == ("ready", self.proc.pid) or None
         except (EOFError, OSError, pickle.UnpicklingError):
             return None
 
-    def kill(self):
+    def kill(self) -> None:
         """SIGKILL, without waiting or locking (safe in a signal handler)."""
         self.state = "dead"
         try:
@@ -110,7 +114,7 @@ class _Worker:
         except OSError:
             pass
 
-    def reap(self):
+    def reap(self) -> None:
         self.kill()
         try:
             self.proc.wait(5)
@@ -121,32 +125,33 @@ class _Worker:
         except OSError:  # pragma: no cover
             pass
 
-    def call(self, task, args, timeout):
+    def call(self, task: str, args: tuple[Any, ...], timeout: float) -> tuple[Any, ...] | None:
         """Run ``task(*args)`` in the worker; the reply, or None past ``timeout``
         seconds (the caller kills the worker)."""
         self.conn.send((task, args))
         if not self.conn.poll(max(timeout, 0.0)):
             return None
-        return self.conn.recv()
+        reply: tuple[Any, ...] = self.conn.recv()
+        return reply
 
 
 class Pool:
     """:data:`WORKERS` worker processes serving tasks by name (see
     :mod:`scanline.studio.worker`); see the module's description."""
 
-    def __init__(self, size=None, address_space=None):
+    def __init__(self, size: int | None = None, address_space: int | None = None) -> None:
         self.size = WORKERS if size is None else int(size)
         self.address_space = ADDRESS_SPACE if address_space is None else int(address_space)
         self._lock = threading.Lock()
-        self._workers = []
-        self._queue = []              # waiting requests, first come first served
+        self._workers: list[_Worker] = []
+        self._queue: list[object] = []    # waiting requests, first come first served
         self._closed = False
         self._started = False
         self._failures = 0
         self.replaced = 0             # workers killed and replaced (timeouts, crashes)
 
     # -- life cycle ---------------------------------------------------------------------
-    def start(self):
+    def start(self) -> None:
         """Start the workers (they get ready in the background)."""
         with self._lock:
             if self._started or self._closed:
@@ -155,7 +160,7 @@ class Pool:
             for _ in range(self.size):
                 self._workers.append(_Worker(self.address_space))
 
-    def close(self):
+    def close(self) -> None:
         """Kill every worker and refuse new tasks.  Takes no lock, so that a signal
         handler may call it while the interrupted thread holds one; :meth:`reap`
         collects the processes afterwards."""
@@ -163,7 +168,7 @@ class Pool:
         for w in list(self._workers):
             w.kill()
 
-    def reap(self):
+    def reap(self) -> None:
         """Close, then wait for the killed workers."""
         self.close()
         with self._lock:
@@ -172,17 +177,17 @@ class Pool:
             w.reap()
 
     @property
-    def closed(self):
+    def closed(self) -> bool:
         return self._closed
 
-    def pids(self):
+    def pids(self) -> list[int]:
         """The process ids of the live workers (for tests and the curious)."""
         return [w.pid for w in list(self._workers) if w.state != "dead"]
 
-    def busy_pids(self):
+    def busy_pids(self) -> list[int]:
         return [w.pid for w in list(self._workers) if w.state == "busy"]
 
-    def _replace(self, worker):
+    def _replace(self, worker: _Worker) -> None:
         """Kill ``worker`` (if alive) and start another in its place."""
         worker.reap()
         with self._lock:
@@ -193,10 +198,10 @@ class Pool:
                 self.replaced += 1
 
     # -- taking a worker ------------------------------------------------------------------
-    def _take(self, ticket):
+    def _take(self, ticket: object) -> tuple[_Worker | None, bool]:
         """An idle worker for the request holding ``ticket`` if it is first in line;
         starting workers that have become ready turn idle; failed ones are replaced."""
-        failed = []
+        failed: list[_Worker] = []
         with self._lock:
             for w in self._workers:
                 if w.state == "starting":
@@ -223,7 +228,7 @@ class Pool:
             w.reap()
         return taken, working
 
-    async def _acquire(self):
+    async def _acquire(self) -> _Worker:
         if self._closed:
             raise PoolError(503, "the studio is stopping")
         self.start()
@@ -256,13 +261,13 @@ class Pool:
                     self._queue.remove(ticket)
 
     # -- running a task -------------------------------------------------------------------
-    async def run(self, task, args, timeout):
+    async def run(self, task: str, args: tuple[Any, ...], timeout: float) -> Any:
         """The result of ``task(*args)`` in a worker, within ``timeout`` seconds of
         work (waiting for a worker not counted).  Raises :class:`Refused` (the task's
         own error: 422), or :class:`PoolError` 503 (past the time limit: the worker is
         killed; busy; stopping) or 500 (a bug, printed by the worker)."""
         worker = await self._acquire()
-        reply = None
+        reply: tuple[Any, ...] | None = None
         try:
             reply = await anyio.to_thread.run_sync(worker.call, task, args, timeout,
                                                    abandon_on_cancel=True)

@@ -26,6 +26,7 @@ COMPLETE = [
     "scanline.framebuffer",
     "scanline.csg",
     "scanline.color",
+    "scanline.fractals",
 ]
 
 

@@ -25,8 +25,10 @@ References
 """
 
 import math
+from typing import Optional, Sequence
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentValueError
@@ -41,17 +43,19 @@ DRAGON = np.array([(0.0, 0.0), (0.5, 0.5), (1.0, 0.0)])
 DRAGON_SIDES = (1, -1)
 
 
-def _polyline(name, value, minimum=2):
+def _polyline(name: str, value: ArrayLike, minimum: int = 2) -> NDArray[np.float64]:
     from ..transform3d.arrays import finite
 
     a = v.real_array(name, value, "(N, 2)")
     if a.ndim != 2 or a.shape[1] != 2 or len(a) < minimum:
         raise ArgumentValueError(f"{name} must be a polyline of at least {minimum} points, "
                                  f"shape (N, 2), got {v._show(value)}")
-    return finite(name, np.ascontiguousarray(a, np.float64))
+    checked: NDArray[np.float64] = finite(name, np.ascontiguousarray(a, np.float64))
+    return checked
 
 
-def self_similar(initiator, generator, depth, sides=None):
+def self_similar(initiator: ArrayLike, generator: ArrayLike, depth: int,
+                 sides: Optional[Sequence[int]] = None) -> NDArray[np.float64]:
     """The curve after ``depth`` replacement steps.
 
     Parameters
@@ -71,6 +75,21 @@ def self_similar(initiator, generator, depth, sides=None):
     -------
     ndarray, shape ((M - 1) G^depth + 1, 2)
         The polyline's points.
+
+    Raises
+    ------
+    ArgumentValueError
+        A polyline of fewer than 2 points, a generator not from (0, 0) to (1, 0),
+        sides other than +1 / -1, or more points than the limits allow.
+
+    Examples
+    --------
+    One step on a segment of length 3: the generator scaled by 3, the bump's apex at
+    height 3 sqrt(3) / 6 = 0.866025.
+
+    >>> import scanline as sl
+    >>> sl.fractals.self_similar([(0, 0), (3, 0)], sl.fractals.KOCH, 1).round(6).tolist()
+    [[0.0, 0.0], [1.0, 0.0], [1.5, 0.866025], [2.0, 0.0], [3.0, 0.0]]
     """
     start = _polyline("initiator", initiator)
     gen = _polyline("generator", generator)
@@ -79,10 +98,10 @@ def self_similar(initiator, generator, depth, sides=None):
                                  f"{gen[0].tolist()} to {gen[-1].tolist()}")
     depth = v.positive_int("depth", depth, minimum=0)
     g = len(gen) - 1
-    sides = np.ones(1) if sides is None else np.asarray(sides, np.float64)
-    if sides.ndim != 1 or not len(sides) or not np.isin(sides, (-1, 1)).all():
+    side_of = np.ones(1) if sides is None else np.asarray(sides, np.float64)
+    if side_of.ndim != 1 or not len(side_of) or not np.isin(side_of, (-1, 1)).all():
         raise ArgumentValueError(f"sides must be a sequence of +1 and -1 (left, right), got "
-                                 f"{v._show(sides.tolist())}")
+                                 f"{v._show(side_of.tolist())}")
     segments = len(start) - 1
     limits.points("depth", segments * limits.power(g, depth) + 1,
                   f"depth={depth} of a {g}-segment generator on {segments} segment(s)",
@@ -91,7 +110,7 @@ def self_similar(initiator, generator, depth, sides=None):
     for _ in range(depth):
         p, q = points[:-1], points[1:]
         d = q - p
-        side = np.resize(sides, len(d))
+        side = np.resize(side_of, len(d))
         normal = np.stack([-d[:, 1], d[:, 0]], axis=1) * side[:, None]
         pieces = (p[:, None, :] + gen[None, :-1, 0, None] * d[:, None, :]
                   + gen[None, :-1, 1, None] * normal[:, None, :])
@@ -99,10 +118,31 @@ def self_similar(initiator, generator, depth, sides=None):
     return points
 
 
-def koch(depth, closed=False):
+def koch(depth: int, closed: bool = False) -> NDArray[np.float64]:
     """Koch's curve on the segment (0, 0)-(1, 0) after ``depth`` steps, or, with
     ``closed``, the snowflake (the generator on the three sides of an equilateral
     triangle, outward).
+
+    Parameters
+    ----------
+    depth : int
+        Replacement steps (Hearn & Baker 10-18).
+    closed : bool
+        The snowflake instead of the curve.
+
+    Returns
+    -------
+    ndarray (4^depth + 1, 2), or (3 4^depth + 1, 2) closed
+        The polyline's points.
+
+    Raises
+    ------
+    ArgumentValueError
+        A negative depth, or one past the limits.
+
+    Examples
+    --------
+    Two steps: 4^2 = 16 segments, 17 points.
 
     >>> import scanline as sl
     >>> len(sl.fractals.koch(2))
@@ -115,7 +155,31 @@ def koch(depth, closed=False):
     return self_similar(initiator, KOCH, depth)
 
 
-def dragon(depth):
+def dragon(depth: int) -> NDArray[np.float64]:
     """Heighway's dragon curve on (0, 0)-(1, 0) after ``depth`` steps: 2^depth segments
-    of length 2^(-depth/2), each turning a right angle from the one before."""
+    of length 2^(-depth/2), each turning a right angle from the one before.
+
+    Parameters
+    ----------
+    depth : int
+        Folding steps.
+
+    Returns
+    -------
+    ndarray (2^depth + 1, 2)
+        The polyline's points.
+
+    Raises
+    ------
+    ArgumentValueError
+        A negative depth, or one past the limits.
+
+    Examples
+    --------
+    One fold: the segment bent a right angle at its middle, raised to (1/2, 1/2).
+
+    >>> import scanline as sl
+    >>> sl.fractals.dragon(1).tolist()
+    [[0.0, 0.0], [0.5, 0.5], [1.0, 0.0]]
+    """
     return self_similar([(0.0, 0.0), (1.0, 0.0)], DRAGON, depth, sides=DRAGON_SIDES)

@@ -4,6 +4,8 @@ would make pass :data:`MAX_POINTS` (time) or the memory budget
 (:mod:`scanline.budget`), or when the escape-time work passes :data:`MAX_ITERATIONS`
 (pixel iterations).  The errors name the argument and the limit."""
 
+from typing import Optional
+
 from .. import budget
 from ..errors import ArgumentValueError
 
@@ -17,17 +19,18 @@ MAX_POINTS = 1 << 26
 MAX_ITERATIONS = 10_000_000_000
 
 
-def power(base, exponent):
+def power(base: int, exponent: int) -> int:
     """base ** exponent for counting points, capped at 2 ** 80 (far past every limit)
     without computing a huge integer."""
     import math
 
     if base <= 1 or exponent * math.log2(base) <= 80:
-        return base ** exponent
+        return int(base ** exponent)
     return 1 << 80
 
 
-def points(argument, count, what, bytes_per_point=16, hint=None):
+def points(argument: str, count: int, what: str, bytes_per_point: int = 16,
+           hint: Optional[str] = None) -> None:
     """Refuse ``count`` points (a Python int, exact at any size) past
     :data:`MAX_POINTS` or the memory budget, naming ``argument``."""
     count = int(count)
@@ -39,7 +42,7 @@ def points(argument, count, what, bytes_per_point=16, hint=None):
     budget.check(count * bytes_per_point, argument, f"{what} ({count:,} points)", hint=hint)
 
 
-def iterations(argument, pixels, max_iterations):
+def iterations(argument: str, pixels: int, max_iterations: int) -> None:
     """Refuse escape-time work of ``pixels`` x ``max_iterations`` past
     :data:`MAX_ITERATIONS`, naming ``argument``."""
     work = int(pixels) * int(max_iterations)

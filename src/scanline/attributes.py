@@ -27,12 +27,23 @@ the style's value at its device position.  Creating a style does not load numba.
 import math
 import numbers
 from types import MappingProxyType
+from typing import TYPE_CHECKING, Any, Callable, Optional, Sequence, Tuple, Union, cast
 
 import numpy as np
+from numpy.typing import NDArray
 
 from . import _validate as v
 from .color.spec import Channels, rgba
 from .errors import ArgumentTypeError, ArgumentValueError
+
+if TYPE_CHECKING:
+    from ._typing import Angle, Color, Point
+    from .framebuffer import FrameBuffer
+
+#: A normalized tile cell or hatch background: the fill color marker, an int or RGBA.
+Spec = Union[str, int, Tuple[int, int, int, int]]
+#: What a style builder returns: parameters, tile cells, palette and where each entry is.
+Built = Tuple[dict[str, Any], Optional[NDArray[np.int32]], Tuple[Any, ...], Tuple[Any, ...]]
 
 KINDS = ("solid", "hollow", "pattern", "hatch")
 ANCHORS = ("origin", "shape")
@@ -41,7 +52,7 @@ ANCHORS = ("origin", "shape")
 _FILL = "fill color"
 
 
-def _tile(*rows):
+def _tile(*rows: str) -> NDArray[np.bool_]:
     """A read-only boolean tile from text rows in image order ('#' = True)."""
     a = np.array([[c == "#" for c in row] for row in rows], bool)
     a.flags.writeable = False
@@ -63,17 +74,17 @@ TILES = MappingProxyType({
 
 # -- validation of the kind-specific arguments ----------------------------------------
 
-def _color_spec(name, value):
+def _color_spec(name: str, value: object) -> Spec:
     """A color spec normalized at construction: an int (gray level, bit or color-table
     index, decided by the frame buffer's mode) or an (r, g, b, a) tuple."""
     if isinstance(value, numbers.Integral) and not isinstance(value, bool):
-        if 0 <= value <= 255:
+        if 0 <= int(value) <= 255:
             return int(value)
         raise ArgumentValueError(f"{name}={value!r}: an integer color must be in 0..255")
     return rgba(value, name)
 
 
-def _cell(name, value):
+def _cell(name: str, value: object) -> Optional[Spec]:
     """One tile cell: True -> the fill color, False/None -> transparent, else a color."""
     if value is None or value is False or value is np.False_:
         return None
@@ -84,7 +95,7 @@ def _cell(name, value):
     return _color_spec(name, value)
 
 
-def _grid(tile):
+def _grid(tile: Any) -> list[list[Any]]:
     """The cells of a tile given as a sequence of rows; returns a list of row lists."""
     if isinstance(tile, (str, bytes)) or not hasattr(tile, "__len__"):
         raise ArgumentTypeError(
@@ -97,14 +108,14 @@ def _grid(tile):
         raise ArgumentValueError(
             f"tile must be a non-empty 2-D array-like (a list of rows), got {v._show(tile)}"
         )
-    if any(len(r) != len(rows[0]) for r in rows):
+    if any(len(r or ()) != len(rows[0]) for r in rows):
         raise ArgumentValueError(
-            f"tile rows must all have the same length, got lengths {[len(r) for r in rows]}"
+            f"tile rows must all have the same length, got lengths {[len(r or ()) for r in rows]}"
         )
-    return rows
+    return cast(list[list[Any]], rows)
 
 
-def _palette(tile):
+def _palette(tile: Any) -> tuple[NDArray[np.int32], tuple[Spec, ...], tuple[tuple[int, int], ...]]:
     """Normalize a tile to ``(cells, palette)``: ``cells`` a read-only int32 (th, tw)
     array in image order indexing ``palette`` (-1: transparent), ``palette`` a tuple
     of color specs (``_FILL`` for the fill color) and ``where`` the first cell of each
@@ -130,6 +141,7 @@ def _palette(tile):
             raise ArgumentValueError("tile array values must be in 0..255")
         flat = a.reshape(a.shape[0] * a.shape[1], -1)
         colors, first, inverse = np.unique(flat, axis=0, return_index=True, return_inverse=True)
+        palette: tuple[Spec, ...]
         if a.ndim == 2:
             palette = tuple(int(c[0]) for c in colors)
         else:
@@ -137,7 +149,8 @@ def _palette(tile):
         where = tuple(divmod(int(i), a.shape[1]) for i in first)
         return inverse.reshape(a.shape[:2]).astype(np.int32), palette, where
     rows = _grid(tile)
-    index, where = {}, []
+    index: dict[Spec, int] = {}
+    found: list[tuple[int, int]] = []
     cells = np.empty((len(rows), len(rows[0])), np.int32)
     for r, row in enumerate(rows):
         for c, value in enumerate(row):
@@ -146,13 +159,13 @@ def _palette(tile):
                 cells[r, c] = -1
                 continue
             if spec not in index:
-                index[spec] = len(where)
-                where.append((r, c))
+                index[spec] = len(found)
+                found.append((r, c))
             cells[r, c] = index[spec]
-    return cells, tuple(index), tuple(where)
+    return cells, tuple(index), tuple(found)
 
 
-def _anchor(anchor, reference):
+def _anchor(anchor: str, reference: Any) -> tuple[str, Optional[tuple[int, int]]]:
     v.choice("anchor", anchor, ANCHORS)
     if reference is None:
         return anchor, None
@@ -168,14 +181,14 @@ def _anchor(anchor, reference):
     return anchor, (v.coordinate("reference x", reference[0]), v.coordinate("reference y", reference[1]))
 
 
-def _positive(name, value):
-    value = v.number(name, value)
-    if value <= 0:
-        raise ArgumentValueError(f"{name} must be > 0 (pixels), got {value:g}")
-    return value
+def _positive(name: str, value: object) -> float:
+    number = v.number(name, value)
+    if number <= 0:
+        raise ArgumentValueError(f"{name} must be > 0 (pixels), got {number:g}")
+    return number
 
 
-def _direction(angle):
+def _direction(angle: float) -> tuple[float, float]:
     """(cos, sin) of ``angle``, exact (0 and +-1) at multiples of pi/2."""
     c, s = math.cos(angle), math.sin(angle)
     if abs(c) < 1e-12:
@@ -187,7 +200,7 @@ def _direction(angle):
 
 # -- painting --------------------------------------------------------------------------
 
-def _clip(fb, bbox):
+def _clip(fb: "FrameBuffer", bbox: Sequence[float]) -> tuple[int, int, int, int, int, int]:
     """``bbox`` (inclusive device pixels; fractions widen it outward) as ints, and
     its part inside ``fb``: ``(xmin, ymin, x0, y0, x1, y1)``; x0 > x1 or y0 > y1 when
     nothing is visible."""
@@ -206,6 +219,21 @@ class FillStyle:
     and :meth:`hatch` (or ``FillStyle(kind, **arguments)``, which calls them) and pass
     them to any area primitive as ``style=``.  Styles are immutable, hashable and
     compare by value; the fill color is the primitive's ``color``.
+
+    Parameters
+    ----------
+    kind : {"solid", "hollow", "pattern", "hatch"}
+        The fill style.
+    **arguments
+        The arguments of the constructor of that kind (:meth:`pattern`,
+        :meth:`hatch`; none for the other two).
+
+    Raises
+    ------
+    ArgumentValueError
+        For an unknown kind or a bad argument of it.
+    ArgumentTypeError
+        For an argument the kind does not take, or one of the wrong type.
 
     Attributes
     ----------
@@ -250,23 +278,54 @@ class FillStyle:
     #: ``diagonal``, ``grid``, ``bricks``.  ``FillStyle.pattern("bricks")`` uses one.
     TILES = TILES
 
-    def __init__(self, kind="solid", **arguments):
+    def __init__(self, kind: str = "solid", **arguments: Any) -> None:
         v.choice("kind", kind, KINDS)
         _fields(self, kind, *_BUILDERS[kind](**arguments))
 
     # -- constructors --------------------------------------------------------------------
     @classmethod
-    def solid(cls):
-        """Every pixel of the area takes the fill color (same as ``style=None``)."""
+    def solid(cls) -> "FillStyle":
+        """Every pixel of the area takes the fill color (same as ``style=None``).
+
+        Returns
+        -------
+        FillStyle
+            A ``"solid"`` style.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> sl.FillStyle.solid() == sl.FillStyle()
+        True
+        """
         return cls("solid")
 
     @classmethod
-    def hollow(cls):
-        """Only the boundary of the area is drawn, in the fill color."""
+    def hollow(cls) -> "FillStyle":
+        """Only the boundary of the area is drawn, in the fill color.
+
+        Returns
+        -------
+        FillStyle
+            A ``"hollow"`` style.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> fb = sl.FrameBuffer(5, 4, mode="1")
+        >>> box = [(0, 0), (4, 0), (4, 3), (0, 3)]
+        >>> sl.draw.polygon(fb, box, color=1, style=sl.FillStyle.hollow())
+        >>> print(sl.text_image(fb))
+        #####
+        #---#
+        #---#
+        #####
+        """
         return cls("hollow")
 
     @classmethod
-    def pattern(cls, tile, anchor="origin", reference=None):
+    def pattern(cls, tile: Any, anchor: str = "origin",
+                reference: Optional["Point"] = None) -> "FillStyle":
         """Fill with a rectangular tile repeated over the area.
 
         Parameters
@@ -294,6 +353,19 @@ class FillStyle:
         mod tw]`` where (ax, ay) is the anchor point.  In mode ``"P"`` the tile's colors
         are looked up in (or appended to) the color table when the area is painted.
 
+        Returns
+        -------
+        FillStyle
+            A ``"pattern"`` style.
+
+        Raises
+        ------
+        ArgumentValueError
+            For a tile that is empty, ragged, paints nothing or holds bad colors, an
+            unknown tile name or anchor, or a reference without ``anchor="shape"``.
+        ArgumentTypeError
+            For a tile that is not rows of cells.
+
         Examples
         --------
         >>> import scanline as sl
@@ -310,8 +382,9 @@ class FillStyle:
         return cls("pattern", tile=tile, anchor=anchor, reference=reference)
 
     @classmethod
-    def hatch(cls, angle=0.0, spacing=8, cross=False, line_width=1, background=None,
-              anchor="origin", reference=None):
+    def hatch(cls, angle: "Angle" = 0.0, spacing: float = 8, cross: bool = False,
+              line_width: float = 1, background: Optional["Color"] = None,
+              anchor: str = "origin", reference: Optional["Point"] = None) -> "FillStyle":
         """Fill with parallel lines (hatching), or two perpendicular families.
 
         Parameters
@@ -347,6 +420,18 @@ class FillStyle:
         pixels in a large area is ``line_width * max(|c|, |s|) / spacing`` per family.
         Angles that are multiples of pi/2 are exact (cos and sin snapped to 0 and +-1).
 
+        Returns
+        -------
+        FillStyle
+            A ``"hatch"`` style.
+
+        Raises
+        ------
+        ArgumentValueError
+            For a spacing or line width <= 0, a bad angle, background or anchor.
+        ArgumentTypeError
+            When ``cross`` is not a bool.
+
         Examples
         --------
         >>> import scanline as sl
@@ -365,13 +450,32 @@ class FillStyle:
                    background=background, anchor=anchor, reference=reference)
 
     @classmethod
-    def parse(cls, text):
+    def parse(cls, text: str) -> "FillStyle":
         """A style from one word, as the command line and scene files spell it.
 
         ``solid``, ``hollow``, ``pattern:NAME[:shape]`` (NAME one of :attr:`TILES`;
         ``:shape`` anchors it to the shape), ``hatch:DEGREES[:SPACING[:WIDTH]]`` and
         ``crosshatch:DEGREES[:SPACING[:WIDTH]]`` (the angle in degrees here).
 
+        Parameters
+        ----------
+        text : str
+            The style's spelling.
+
+        Returns
+        -------
+        FillStyle
+            The style.
+
+        Raises
+        ------
+        ArgumentTypeError
+            When ``text`` is not a str.
+        ArgumentValueError
+            When it spells no style, or bad arguments of one.
+
+        Examples
+        --------
         >>> FillStyle.parse("crosshatch:45:6")
         FillStyle.hatch(angle=0.7853981633974483, spacing=6, cross=True, line_width=1, background=None, anchor='origin')
         >>> FillStyle.parse("pattern:bricks:shape") == FillStyle.pattern("bricks", anchor="shape")
@@ -387,7 +491,7 @@ class FillStyle:
                 return cls.pattern(args[0], anchor="shape" if args[1:] else "origin")
             if word in ("hatch", "crosshatch") and 1 <= len(args) <= 3:
                 values = [float(a) for a in args]
-                kw = dict(zip(("spacing", "line_width"), values[1:]))
+                kw: dict[str, Any] = dict(zip(("spacing", "line_width"), values[1:]))
                 return cls.hatch(math.radians(values[0]), cross=word == "crosshatch", **kw)
         except (ValueError, TypeError) as error:
             raise ArgumentValueError(f"style={text!r}: {error}") from None
@@ -398,26 +502,27 @@ class FillStyle:
         )
 
     # -- value semantics -------------------------------------------------------------------
-    def __setattr__(self, name, value):
+    def __setattr__(self, name: str, value: object) -> None:
         raise AttributeError(f"FillStyle is immutable; make a new one with FillStyle.{self._kind}(...)")
 
-    def __getattr__(self, name):
+    def __getattr__(self, name: str) -> Any:
         params = object.__getattribute__(self, "_params")
         if name in params:
             return params[name]
         raise AttributeError(f"a {self._kind!r} FillStyle has no attribute {name!r}")
 
     @property
-    def kind(self):
+    def kind(self) -> str:
         """``"solid"``, ``"hollow"``, ``"pattern"`` or ``"hatch"``."""
-        return self._kind
+        return cast(str, self._kind)
 
     @property
-    def tile(self):
+    def tile(self) -> NDArray[Any]:
         """Pattern styles: the tile in image order (a read-only bool array when its cells
         only say fill / leave, else an object array of normalized cells)."""
         if self._kind != "pattern":
             raise AttributeError(f"a {self._kind!r} FillStyle has no attribute 'tile'")
+        out: NDArray[Any]
         if self._palette == (_FILL,):
             out = self._cells >= 0
         else:
@@ -428,20 +533,20 @@ class FillStyle:
         out.flags.writeable = False
         return out
 
-    def _key(self):
+    def _key(self) -> tuple[Any, ...]:
         cells = None if self._cells is None else (self._cells.shape, self._cells.tobytes())
         return (self._kind, tuple(sorted(self._params.items())), cells, self._palette)
 
-    def __reduce__(self):
+    def __reduce__(self) -> tuple[Callable[..., "FillStyle"], tuple[Any, ...]]:
         return (_restore, (self._kind, dict(self._params), self._cells, self._palette, self._where))
 
-    def __eq__(self, other):
+    def __eq__(self, other: object) -> bool:
         return isinstance(other, FillStyle) and self._key() == other._key()
 
-    def __hash__(self):
+    def __hash__(self) -> int:
         return hash(self._key())
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         args = []
         if self._kind == "pattern":
             th, tw = self._cells.shape
@@ -452,12 +557,14 @@ class FillStyle:
         return f"FillStyle.{self._kind}({', '.join(args)})"
 
     # -- painting ----------------------------------------------------------------------------
-    def paint(self, fb, color, bbox, draw, outline):
+    def paint(self, fb: "FrameBuffer", color: Optional["Color"], bbox: Sequence[float],
+              draw: Callable[..., object], outline: Callable[[], object]) -> None:
         """Paint an area of ``fb`` in this style (called by ``draw._area.fill_area``).
 
         Parameters
         ----------
         fb : FrameBuffer
+            The frame buffer painted.
         color : color
             The fill color.
         bbox : (xmin, ymin, xmax, ymax)
@@ -468,6 +575,16 @@ class FillStyle:
             raster whose pixel (0, 0) is device pixel (ox, oy).
         outline : callable
             ``outline()`` draws the boundary (the hollow style).
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> fb = sl.FrameBuffer(3, 1, mode="L")
+        >>> def draw(buf, packed, width, height, ox, oy, value):
+        ...     buf[0, 1] = value                    # the area: pixel (1, 0)
+        >>> sl.FillStyle.solid().paint(fb, 200, (1, 0, 1, 0), draw, outline=lambda: None)
+        >>> fb.to_array().tolist()
+        [[0, 200, 0]]
         """
         if self._kind == "hollow":
             outline()
@@ -505,7 +622,7 @@ class FillStyle:
              fb.width, fb.height, mask, x0, y0, ax, ay, cells, families, spacing, other, lut)
 
 
-def _families(angle, line_width, cross):
+def _families(angle: float, line_width: float, cross: bool) -> NDArray[np.float64]:
     """Rows (c, s, w') of the hatch line families: direction (c, s) = (cos, sin) of
     the angle (and of angle + pi/2 for cross-hatch), minor-axis width w'."""
     c, s = _direction(angle)
@@ -513,13 +630,16 @@ def _families(angle, line_width, cross):
     return np.array([(c, s, line_width * max(abs(c), abs(s))) for c, s in directions])
 
 
-def _fields(style, kind, params, cells, palette, where):
+def _fields(style: "FillStyle", kind: str, params: dict[str, Any],
+            cells: Optional[NDArray[np.int32]], palette: tuple[Any, ...],
+            where: tuple[Any, ...]) -> None:
     for name, value in (("_kind", kind), ("_params", MappingProxyType(params)),
                         ("_cells", cells), ("_palette", palette), ("_where", where)):
         object.__setattr__(style, name, value)
 
 
-def _restore(kind, params, cells, palette, where):
+def _restore(kind: str, params: dict[str, Any], cells: Optional[NDArray[np.int32]],
+             palette: tuple[Any, ...], where: tuple[Any, ...]) -> "FillStyle":
     """Unpickle a FillStyle (its fields are already validated)."""
     style = object.__new__(FillStyle)
     _fields(style, kind, params, cells, palette, where)
@@ -528,13 +648,13 @@ def _restore(kind, params, cells, palette, where):
 
 # -- builders: validate the arguments of each kind -------------------------------------
 
-def _no_arguments(**arguments):
+def _no_arguments(**arguments: Any) -> Built:
     if arguments:
         raise ArgumentTypeError(f"this fill style takes no arguments, got {sorted(arguments)}")
     return {}, None, (), ()
 
 
-def _pattern_arguments(tile, anchor="origin", reference=None):
+def _pattern_arguments(tile: Any, anchor: str = "origin", reference: Any = None) -> Built:
     anchor, reference = _anchor(anchor, reference)
     cells, palette, where = _palette(tile)
     if not (cells >= 0).any():
@@ -543,8 +663,9 @@ def _pattern_arguments(tile, anchor="origin", reference=None):
     return {"anchor": anchor, "reference": reference}, cells, palette, where
 
 
-def _hatch_arguments(angle=0.0, spacing=8, cross=False, line_width=1, background=None,
-                     anchor="origin", reference=None):
+def _hatch_arguments(angle: Any = 0.0, spacing: Any = 8, cross: Any = False,
+                     line_width: Any = 1, background: Any = None, anchor: str = "origin",
+                     reference: Any = None) -> Built:
     angle = v.angle("angle", angle)
     spacing = _positive("spacing", spacing)
     line_width = _positive("line_width", line_width)
@@ -560,12 +681,12 @@ def _hatch_arguments(angle=0.0, spacing=8, cross=False, line_width=1, background
     return params, None, (), ()
 
 
-def _plain(value):
+def _plain(value: float) -> float:
     """An integral float as an int (for a readable repr)."""
     return int(value) if value == int(value) else value
 
 
-_BUILDERS = {"solid": _no_arguments, "hollow": _no_arguments,
+_BUILDERS: dict[str, Callable[..., Built]] = {"solid": _no_arguments, "hollow": _no_arguments,
              "pattern": _pattern_arguments, "hatch": _hatch_arguments}
 
 

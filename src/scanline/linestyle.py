@@ -226,7 +226,32 @@ class LineStyle:
         object.__setattr__(self, "_fields", fields)
 
     def replace(self, **changes: Any) -> "LineStyle":
-        """A copy with some attributes changed (None keeps the current value)."""
+        """A copy with some attributes changed (None keeps the current value).
+
+        Parameters
+        ----------
+        **changes
+            New values of ``width``, ``cap``, ``join``, ``miter_limit``, ``dash``,
+            ``dash_phase`` or ``pen``, checked as the constructor checks them.
+
+        Returns
+        -------
+        LineStyle
+            The new style.
+
+        Raises
+        ------
+        ArgumentTypeError
+            For a name that is not an attribute.
+        ArgumentValueError
+            For a value the constructor refuses.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> sl.LineStyle(width=3).replace(cap="round", dash=None)
+        LineStyle(width=3, cap='round')
+        """
         fields = dict(self._fields)
         for name, value in changes.items():
             if name not in fields:
@@ -279,7 +304,21 @@ class LineStyle:
         return self.dash is None
 
     def mask(self) -> int | None:
-        """The 16-bit pixel mask of a mask or named line type, else None."""
+        """The 16-bit pixel mask of a mask or named line type, else None.
+
+        Returns
+        -------
+        int or None
+            The mask (bit 15 for the first pixel), or None for solid and length dashes.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> sl.LineStyle(dash="dashed").mask() == 0b1111111100000000
+        True
+        >>> sl.LineStyle(dash=(6, 3)).mask() is None
+        True
+        """
         dash = self.dash
         if isinstance(dash, str):
             return LINE_TYPES[dash]
@@ -287,7 +326,27 @@ class LineStyle:
 
     def lengths(self, unit: float | None = None) -> tuple[tuple[float, ...] | None, float]:
         """The line type as ``(on/off lengths, phase)`` in device units (None, phase
-        for a solid line).  A mask bit stands for ``unit`` units (default: the width)."""
+        for a solid line).  A mask bit stands for ``unit`` units (default: the width).
+
+        Parameters
+        ----------
+        unit : float, optional
+            Device units per mask bit (default: the line width).
+
+        Returns
+        -------
+        tuple
+            ``(lengths, phase)``: the on/off lengths (None when solid) and where the
+            pattern starts along the path.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> sl.LineStyle(width=2, dash="dashed").lengths()   # 8 bits on, 8 off, 2 units each
+        ((16, 16), 0.0)
+        >>> sl.LineStyle(dash=(6, 3), dash_phase=1).lengths()
+        ((6.0, 3.0), 1.0)
+        """
         mask = self.mask()
         if mask is None:
             return self.dash, self.dash_phase
@@ -299,7 +358,21 @@ class LineStyle:
 
     def footprint(self) -> NDArray[np.int64]:
         """The pen as (K, 2) int64 pixel offsets (dx, dy), y up; ``[(0, 0)]`` for
-        no pen."""
+        no pen.
+
+        Returns
+        -------
+        numpy.ndarray
+            int64 (K, 2): the offsets of the pen's pixels from the path pixel.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> sl.LineStyle().footprint().tolist()
+        [[0, 0]]
+        >>> sl.LineStyle(width=3, pen="square").footprint().tolist()
+        [[-1, -1], [0, -1], [1, -1], [-1, 0], [0, 0], [1, 0], [-1, 1], [0, 1], [1, 1]]
+        """
         pen = self.pen
         if pen is None:
             return np.zeros((1, 2), np.int64)
@@ -323,6 +396,23 @@ class LineStyle:
         ``dotted``, ``dash-dot``, an integer mask (``0b1111000011110000``,
         ``0xF0F0`` or decimal) or comma-separated lengths (``6,3``).
 
+        Parameters
+        ----------
+        text : str
+            The spelling.
+
+        Returns
+        -------
+        str, int or tuple of float
+            The line type name, the mask, or the lengths.
+
+        Raises
+        ------
+        ArgumentValueError
+            When ``text`` spells none of them.
+
+        Examples
+        --------
         >>> LineStyle.parse_dash("0b1111000011110000") == 0xF0F0
         True
         >>> LineStyle.parse_dash("6,3")

@@ -12,7 +12,7 @@ import math
 import numpy as np
 
 from ._jit import helper, inline, kernel
-from .raster import band_sorted, put, store
+from .raster import put, store
 from .spans import strip
 from .variants import BYTES
 
@@ -187,8 +187,6 @@ def draw_circles(band, step, buf, layout, width, height, circles, colors):
         return
     view = buf[top:top + rows]
     one = colors.shape[0] == 1
-    if one:  # one color: any order gives the same image
-        circles = band_sorted(circles, height)
     for i in range(circles.shape[0]):
         yc = circles[i, 1] - top
         r = circles[i, 2]
@@ -345,8 +343,6 @@ def draw_ellipses(band, step, buf, layout, width, height, ellipses, colors):
         return
     view = buf[top:top + rows]
     one = colors.shape[0] == 1
-    if one:  # one color: any order gives the same image
-        ellipses = band_sorted(ellipses, height)
     for i in range(ellipses.shape[0]):
         yc = ellipses[i, 1] - top
         ry = ellipses[i, 3]

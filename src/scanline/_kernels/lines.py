@@ -9,10 +9,9 @@ clipping harmless.
 
 import math
 
-import numpy as np
-
 from ._jit import helper, inline, kernel
-from .raster import BAND_SHIFT, put, store
+from .raster import put, store
+from .spans import strip
 from .variants import BYTES, PACKED
 
 #: Methods (token lengths, :mod:`scanline._kernels.variants`).
@@ -258,48 +257,30 @@ def draw_lines(band, step, buf, layout, width, height, segments, colors, method)
     """Draw N lines, ``segments[i] = (x0, y0, x1, y1)``, with ``colors[i]`` (or
     ``colors[0]`` for all when ``colors`` has one row), in order.
 
-    Bresenham's lines are drawn in the bands of 2**BAND_SHIFT rows numbered ``band``,
-    ``band + step``, ... only (one call per thread,
-    :func:`scanline._kernels._threads.call_in_bands`): a line within one band is drawn
-    whole by the call owning that band; a line that crosses bands is drawn in each
-    band it meets, clipped exactly to the band's rows -- a view of ``buf`` whose row
-    0 is the band's first row, the line moved up by as many rows: Bresenham's pixels
-    move with the endpoints, so the pixels kept are the line's own.  Every pixel is
-    written by one call, in the batch's order.  The DDA is one call (``step`` 1):
-    its round-off depends on the absolute coordinates."""
+    Bresenham's lines are drawn into strip ``band`` of ``step`` of the rows only
+    (:func:`scanline._kernels.spans.strip`; one call per thread,
+    :func:`scanline._kernels._threads.call_in_bands`): each line that reaches the
+    strip is drawn into a view of ``buf`` whose row 0 is the strip's first row, the
+    line moved up by as many rows and clipped exactly to the strip -- Bresenham's
+    pixels move with the endpoints, so the pixels kept are the line's own.  Every
+    pixel is written by one call, in the batch's order.  The DDA is one call
+    (``step`` 1): its round-off depends on the absolute coordinates."""
     one = colors.shape[0] == 1
     if len(method) == DDA:
         for i in range(segments.shape[0]):
             dda_line(buf, layout, width, height, segments[i, 0], segments[i, 1],
                      segments[i, 2], segments[i, 3], colors[0 if one else i])
         return
-    size = 1 << BAND_SHIFT
-    bands = ((height - 1) >> BAND_SHIFT) + 1
-    mine = np.zeros(bands + 1, np.bool_)    # (no integer division per line)
-    for b in range(band, bands, step):
-        mine[b] = True
+    top, rows = strip(band, step, height)
+    if rows <= 0:
+        return
+    view = buf[top:top + rows]
     for i in range(segments.shape[0]):
-        x0 = segments[i, 0]
-        y0 = segments[i, 1]
-        x1 = segments[i, 2]
-        y1 = segments[i, 3]
-        lo = max(min(y0, y1), 0)
-        hi = min(max(y0, y1), height - 1)
-        if lo > hi:
-            continue
-        color = colors[0 if one else i]
-        b = lo >> BAND_SHIFT
-        last = hi >> BAND_SHIFT
-        if b == last:
-            if mine[b]:
-                bresenham_line(buf, layout, width, height, x0, y0, x1, y1, color)
-            continue
-        for b in range(b, last + 1):
-            if mine[b]:
-                top = b << BAND_SHIFT
-                rows = min(height - top, size)
-                bresenham_line(buf[top:top + rows], layout, width, rows, x0, y0 - top, x1,
-                               y1 - top, color)
+        y0 = segments[i, 1] - top
+        y1 = segments[i, 3] - top
+        if max(y0, y1) >= 0 and min(y0, y1) < rows:
+            bresenham_line(view, layout, width, rows, segments[i, 0], y0, segments[i, 2], y1,
+                           colors[0 if one else i])
 
 
 @kernel

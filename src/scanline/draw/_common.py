@@ -78,3 +78,16 @@ def area_work(width, height, points, count=1, margin=0):
     hi = np.minimum(np.ceil(points[:, :2].max(axis=0)) + margin, (width - 1, height - 1))
     area = float(np.prod(np.maximum(hi - lo + 1, 0)))
     return count * area + len(points)
+
+
+def band_order(rows, values, height):
+    """The (N, k) int64 primitive ``rows`` (y in column 1) in order of bands of
+    scan lines (:func:`scanline._kernels.raster.band_sorted`, a counting sort, O(N))
+    when ``values`` holds one color for all, which makes any drawing order give the
+    same image; else ``rows`` as they are.  Drawn band by band, the rows being
+    written stay in the cache; sorted once here, not by each thread's kernel."""
+    if len(values) != 1 or len(rows) < 2:
+        return rows
+    from .._kernels._jit import call
+    from .._kernels.raster import band_sorted
+    return call(band_sorted, len(rows), rows, height)

@@ -13,7 +13,7 @@ from ..errors import ArgumentValueError
 from ..geometry import guard
 from . import _far_conics as far
 from . import strokes
-from ._common import colors, target
+from ._common import band_order, colors, target
 from .._typing import Cap, Color, Join
 
 if TYPE_CHECKING:
@@ -177,9 +177,10 @@ def circles(fb, circles, color=None, *, style=None, antialias=False, width=None,
     buf, packed, width, height = target(fb)
 
     def near(arr, c):
-        arr = np.ascontiguousarray(arr[:, :3])
+        values = colors(fb, c, len(arr))
+        arr = band_order(np.ascontiguousarray(arr[:, :3]), values, height)
         call_in_bands(k.draw_circles, conic_work(arr[:, 2], arr[:, 2], width, height), buf,
-             layout(packed), width, height, arr, colors(fb, c, len(arr)))
+                      layout(packed), width, height, arr, values)
 
     far.batch(fb, rows, color, _exact_rows(rows, True), near,
               lambda *row: _far(fb, *row, None, False, True))
@@ -297,7 +298,9 @@ def ellipses(fb, ellipses, color=None, *, style=None, antialias=False, width=Non
     buf, packed, width, height = target(fb)
 
     def near(arr, c):
+        values = colors(fb, c, len(arr))
+        arr = band_order(arr, values, height)
         call_in_bands(k.draw_ellipses, conic_work(arr[:, 2], arr[:, 3], width, height), buf,
-             layout(packed), width, height, arr, colors(fb, c, len(arr)))
+                      layout(packed), width, height, arr, values)
 
     far.batch(fb, rows, color, ok, near, lambda *row: _far(fb, *row, None, False, False))

@@ -11,7 +11,7 @@ from .._kernels._threads import call_in_bands
 from .._kernels.variants import layout, token
 from ..errors import ArgumentValueError
 from . import strokes
-from ._common import colors, target
+from ._common import band_order, colors, target
 from .._typing import ArrayLike, Cap, Color, Join, LineMethod
 
 if TYPE_CHECKING:
@@ -173,8 +173,10 @@ def lines(fb: "FrameBuffer", segments: ArrayLike, color: Any = None,
         return
     buf, packed, width, height = target(fb)
     segs = v.coordinate_array("segments", segments, 4, guard=True)
-    args = (buf, layout(packed), width, height, segs, colors(fb, color, len(segs)), code)
+    values = colors(fb, color, len(segs))
     if len(code) == k.DDA:
-        call(k.draw_lines, lambda: 2 * line_work(segs, width, height), 0, 1, *args)
+        call(k.draw_lines, lambda: 2 * line_work(segs, width, height), 0, 1, buf,
+             layout(packed), width, height, segs, values, code)
     else:
-        call_in_bands(k.draw_lines, 2 * line_work(segs, width, height), *args)
+        call_in_bands(k.draw_lines, 2 * line_work(segs, width, height), buf, layout(packed),
+                      width, height, band_order(segs, values, height), values, code)

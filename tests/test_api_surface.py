@@ -21,6 +21,7 @@ COMPLETE = [
     "scanline.texture",
     "scanline.viewing",
     "scanline.transform",
+    "scanline.projection",
     "scanline.depthbuffer",
     "scanline.lighting",
     "scanline.framebuffer",

@@ -16,8 +16,11 @@ viewport's z range (default 0 at the front plane, 1 at the back plane).
 """
 
 import math
+from collections.abc import Sequence
+from typing import Any, cast
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from .. import transform3d as t3
@@ -30,7 +33,8 @@ from .projections import VIEWS, Projection, frame, perspective
 FULL_VIEWPORT = (0.0, 0.0, 0.0, 1.0, 1.0, 1.0)
 
 
-def viewing_matrix(view_reference_point, view_plane_normal, view_up):
+def viewing_matrix(view_reference_point: ArrayLike, view_plane_normal: ArrayLike,
+                   view_up: ArrayLike) -> NDArray[np.float64]:
     """The world -> viewing-coordinates matrix M_wc,vc = R · T (Hearn & Baker,
     section 12-2).
 
@@ -47,6 +51,19 @@ def viewing_matrix(view_reference_point, view_plane_normal, view_up):
     so that the view-plane normal N becomes z_v and the projection of the view-up
     vector V onto the view plane becomes y_v (right-handed; the viewer looks along
     -z_v).
+
+    Parameters
+    ----------
+    view_reference_point : (float, float, float)
+        P0, the origin of viewing coordinates, in world coordinates.
+    view_plane_normal : (float, float, float)
+        N, nonzero (any length): the z_v axis, pointing toward the viewer.
+    view_up : (float, float, float)
+        V, nonzero and not parallel to N.
+
+    Returns
+    -------
+    ndarray of float64, shape (4, 4)
 
     Raises
     ------
@@ -65,16 +82,43 @@ def viewing_matrix(view_reference_point, view_plane_normal, view_up):
     return t3.compose(r, t3.translation(*(-p0)))
 
 
-def look_at(eye, target, up=(0.0, 1.0, 0.0)):
+def look_at(eye: ArrayLike, target: ArrayLike, up: ArrayLike = (0.0, 1.0, 0.0)) -> NDArray[np.float64]:
     """The viewing matrix of an eye at ``eye`` looking at ``target``: the view
     reference point is the eye and N = eye - target (Hearn & Baker's N points from
     the scene toward the viewer).
+
+    Parameters
+    ----------
+    eye : (float, float, float)
+        The eye, in world coordinates.
+    target : (float, float, float)
+        The point looked at.
+    up : (float, float, float), default (0, 1, 0)
+        The view-up vector, not parallel to the view direction.
+
+    Returns
+    -------
+    ndarray of float64, shape (4, 4)
 
     Raises
     ------
     ArgumentValueError
         If eye = target (no view direction) or ``up`` is parallel to the view
         direction.
+
+    Notes
+    -----
+    :func:`viewing_matrix` with P0 = eye, N = eye - target, V = up (Hearn & Baker,
+    section 12-2).
+
+    Examples
+    --------
+    The target lands on the -z_v axis, 5 units in front of the eye:
+
+    >>> from scanline.projection import look_at
+    >>> from scanline.transform3d import apply
+    >>> apply(look_at((0, 0, 5), (0, 0, 0)), (0, 0, 0)).tolist()
+    [0.0, 0.0, -5.0]
     """
     e = np.array(vector("eye", eye))
     t = np.array(vector("target", target))
@@ -88,22 +132,25 @@ def look_at(eye, target, up=(0.0, 1.0, 0.0)):
     return t3.compose(r, t3.translation(*(-e)))
 
 
-def _corners(clip, projection):
+def _corners(clip: NDArray[np.float64], projection: Projection) -> NDArray[np.float64]:
     """The view volume's corners (8, 3) in the space that ``clip`` maps to clip
     coordinates."""
     back = 0.9 if projection.kind == "perspective" and projection.back is None else 1.0
     cube = np.array([[x, y, z, 1.0] for z in (0.0, back)
                      for x, y in ((0, 0), (1, 0), (1, 1), (0, 1))])
     h = cube @ t3.inverse(clip).T
-    return h[:, :3] / h[:, 3:]
+    corners: NDArray[np.float64] = h[:, :3] / h[:, 3:]
+    return corners
 
 
-def _viewport(value):
+def _viewport(value: object) -> tuple[float, float, float, float, float, float]:
     if isinstance(value, (str, bytes)) or not hasattr(value, "__len__") or len(value) != 6:
         raise ArgumentTypeError(
             "viewport must be (xmin, ymin, zmin, xmax, ymax, zmax) within the unit cube, "
             f"got {v._show(value)}")
-    b = tuple(v.number(f"viewport[{i}]", c) for i, c in enumerate(value))
+    b = cast(tuple[float, float, float, float, float, float],
+             tuple(v.number(f"viewport[{i}]", c)
+                   for i, c in enumerate(cast(Sequence[object], value))))
     if not (0.0 <= b[0] < b[3] <= 1.0 and 0.0 <= b[1] < b[4] <= 1.0
             and 0.0 <= b[2] < b[5] <= 1.0):
         raise ArgumentValueError(
@@ -148,9 +195,16 @@ class Camera:
     [[50.0, 50.0, 0.9], [60.0, 60.0, 0.9]]
     """
 
-    def __init__(self, eye=None, target=None, up=None, projection=None, *,
-                 view_reference_point=None, view_plane_normal=None, view_up=None,
-                 viewport=FULL_VIEWPORT, keep_aspect=True):
+    view_matrix: NDArray[np.float64]
+    _eye: tuple[float, ...] | None
+    target: tuple[float, ...] | None
+    up: tuple[float, ...] | None
+
+    def __init__(self, eye: ArrayLike | None = None, target: ArrayLike | None = None,
+                 up: ArrayLike | None = None, projection: Projection | None = None, *,
+                 view_reference_point: ArrayLike | None = None,
+                 view_plane_normal: ArrayLike | None = None, view_up: ArrayLike | None = None,
+                 viewport: ArrayLike = FULL_VIEWPORT, keep_aspect: bool = True) -> None:
         usual = eye is not None or target is not None or up is not None
         textbook = (view_reference_point is not None or view_plane_normal is not None
                     or view_up is not None)
@@ -214,11 +268,50 @@ class Camera:
                 "move the camera and the scene nearer the origin, or use a larger view volume")
 
     @classmethod
-    def standard(cls, view, target=(0.0, 0.0, 0.0), distance=10.0, projection=None, **kw):
+    def standard(cls, view: str, target: ArrayLike = (0.0, 0.0, 0.0), distance: float = 10.0,
+                 projection: Projection | None = None, **kw: Any) -> "Camera":
         """A camera ``distance`` from ``target`` in one of the standard views of
         :data:`scanline.projection.VIEWS` (front, rear, right, left, top, bottom;
         "side" is "right"), looking at the target with that view's up vector.
-        Default projection: orthographic with the window (-1, -1, 1, 1)."""
+        Default projection: orthographic with the window (-1, -1, 1, 1).
+
+        Parameters
+        ----------
+        view : str
+            One of :data:`scanline.projection.VIEW_NAMES`.
+        target : (float, float, float), default (0, 0, 0)
+            The point looked at.
+        distance : float, default 10
+            The eye's distance from the target, > 0.
+        projection : Projection, optional
+            Default: :func:`~scanline.projection.orthographic`.
+        **kw
+            ``viewport`` and ``keep_aspect``, as :class:`Camera`.
+
+        Returns
+        -------
+        Camera
+
+        Raises
+        ------
+        ArgumentTypeError, ArgumentValueError
+            If ``view`` is unknown, ``distance`` is not > 0 or another argument is
+            invalid.
+
+        Notes
+        -----
+        The standard views: Hearn & Baker, section 12-3 (orthographic projections).
+
+        Examples
+        --------
+        Seen from the top (+y) with -z up on the drawing, the world point (0, 0, -1)
+        is one unit up and 5 units in front of the eye:
+
+        >>> import scanline as sl
+        >>> cam = sl.Camera.standard("top", distance=5)
+        >>> cam.to_viewing((0, 0, -1)).tolist()
+        [0.0, 1.0, -5.0]
+        """
         from .projections import VIEW_NAMES, orthographic
 
         v.choice("view", view, VIEW_NAMES)
@@ -230,8 +323,29 @@ class Camera:
         return cls(eye=t + d * np.array(direction), target=t, up=up,
                    projection=orthographic() if projection is None else projection, **kw)
 
-    def replace(self, **changes):
-        """A copy with ``projection``, ``viewport`` or ``keep_aspect`` changed."""
+    def replace(self, **changes: Any) -> "Camera":
+        """A copy with ``projection``, ``viewport`` or ``keep_aspect`` changed.
+
+        Parameters
+        ----------
+        **changes
+            New values of ``projection``, ``viewport`` or ``keep_aspect``.
+
+        Returns
+        -------
+        Camera
+
+        Raises
+        ------
+        ArgumentTypeError, ArgumentValueError
+            If another keyword is given or a value is invalid.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> sl.Camera().replace(keep_aspect=False).keep_aspect
+        False
+        """
         new = object.__new__(Camera)
         new.__dict__.update(self.__dict__)
         for key, value in changes.items():
@@ -253,14 +367,14 @@ class Camera:
 
     # -- matrices -------------------------------------------------------------------------
     @property
-    def eye(self):
+    def eye(self) -> tuple[float, ...] | None:
         """The world position of the center of projection (perspective), or None."""
         if self.projection.prp is None:
             return None
         p = t3.apply(t3.inverse(self.view_matrix), self.projection.prp)
         return tuple(float(c) for c in p)
 
-    def _fit(self, aspect):
+    def _fit(self, aspect: float | None) -> NDArray[np.float64]:
         """The aspect correction (4x4, on clip coordinates) for a device viewport
         whose width / height is ``aspect`` (None: none)."""
         if not self.keep_aspect or aspect is None:
@@ -271,7 +385,8 @@ class Camera:
         return np.array([[sx, 0, 0, 0.5 * (1 - sx)], [0, sy, 0, 0.5 * (1 - sy)],
                          [0, 0, 1, 0], [0, 0, 0, 1]], np.float64)
 
-    def mapping(self, box, aspect=None):
+    def mapping(self, box: ArrayLike,
+                aspect: float | None = None) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
         """How the camera projects into the rectangle ``box`` = (x0, y0, x1, y1) of
         some 2-D coordinates (a frame buffer's pixels, a display file's NDC):
         ``(matrix, scale, offset)``, the world -> clip matrix (the window widened to
@@ -281,18 +396,54 @@ class Camera:
         3-D viewport is a part of ``box``.
 
         ``box`` needs x0 < x1 and y0 < y1 (finite); a device one pixel wide or high
-        gets the box (-0.5, 0.5) on that axis (see :meth:`device`)."""
-        if isinstance(box, (str, bytes)) or not hasattr(box, "__len__") or len(box) != 4:
+        gets the box (-0.5, 0.5) on that axis (see :meth:`device`).
+
+        Parameters
+        ----------
+        box : (x0, y0, x1, y1)
+            The target rectangle, x0 < x1 and y0 < y1, finite.
+        aspect : float, optional
+            Width / height of ``box`` as displayed, > 0; the box's own by default.
+
+        Returns
+        -------
+        matrix : ndarray of float64, shape (4, 4)
+            World -> homogeneous clip coordinates.
+        scale, offset : ndarray of float64, shape (3,)
+            NDC -> box coordinates and depth: ``ndc * scale + offset``.
+
+        Raises
+        ------
+        ArgumentTypeError, ArgumentValueError
+            If ``box`` is not a rectangle, ``aspect`` is not > 0, or the mapping
+            overflows.
+
+        Notes
+        -----
+        The 3-D viewport transformation: Hearn & Baker, section 12-3 (normalized view
+        volumes and the workstation transformation).
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> cam = sl.Camera(projection=sl.projection.orthographic(
+        ...     window=(0, 0, 1, 1), front=1, back=-1), keep_aspect=False)
+        >>> clip, scale, offset = cam.mapping((0, 0, 100, 50))
+        >>> scale.tolist(), offset.tolist()
+        ([100.0, 50.0, 1.0], [0.0, 0.0, 0.0])
+        """
+        corners = cast(Sequence[object], box)
+        if isinstance(corners, (str, bytes)) or not hasattr(corners, "__len__") or len(corners) != 4:
             raise ArgumentTypeError(f"box must be (x0, y0, x1, y1), four numbers, got "
                                     f"{v._show(box)}")
-        x0, y0, x1, y1 = (v.number(f"box[{i}]", c) for i, c in enumerate(box))
+        x0, y0, x1, y1 = (v.number(f"box[{i}]", c) for i, c in enumerate(corners))
         with np.errstate(over="ignore"):
-            dx, dy = np.float64(x1) - x0, np.float64(y1) - y0
-        if not (x0 < x1 and y0 < y1 and math.isfinite(dx) and math.isfinite(dy)):
+            wide, high = np.float64(x1) - x0, np.float64(y1) - y0
+        if not (x0 < x1 and y0 < y1 and math.isfinite(wide) and math.isfinite(high)):
             raise ArgumentValueError(
                 f"box={(x0, y0, x1, y1)} must have x0 < x1 and y0 < y1 (a rectangle with an "
                 "area, its sides within float64), e.g. (0, 0, 639, 479)")
-        dx, dy = float(dx), float(dy)
+        dx, dy = float(wide), float(high)
         vx0, vy0, vz0, vx1, vy1, vz1 = self.viewport
         scale = np.array([(vx1 - vx0) * dx, (vy1 - vy0) * dy, vz1 - vz0])
         offset = np.array([x0 + vx0 * dx, y0 + vy0 * dy, vz0])
@@ -314,7 +465,8 @@ class Camera:
                 "proportions")
         return clip, scale, offset
 
-    def _device_box(self, width, height):
+    def _device_box(self, width: object,
+                    height: object) -> tuple[float, float, float, float]:
         """The box of pixel centers of a ``width`` x ``height`` device: (0, 0) to
         (width - 1, height - 1); an axis one pixel long gets (-0.5, 0.5), the pixel's
         own extent about its center, so that NDC 0.5 -- the middle of the window --
@@ -325,37 +477,139 @@ class Camera:
         y0, y1 = (0.0, float(h - 1)) if h > 1 else (-0.5, 0.5)
         return (x0, y0, x1, y1)
 
-    def matrix(self, width=None, height=None):
+    def matrix(self, width: int | None = None, height: int | None = None) -> NDArray[np.float64]:
         """The world -> homogeneous clip matrix: N · V, with the window widened to a
-        ``width`` x ``height`` device when given (and ``keep_aspect``)."""
+        ``width`` x ``height`` device when given (and ``keep_aspect``).
+
+        Parameters
+        ----------
+        width, height : int, optional
+            The device's size in pixels; none: the window as it is.
+
+        Returns
+        -------
+        ndarray of float64, shape (4, 4)
+
+        Raises
+        ------
+        ArgumentTypeError, ArgumentValueError
+            If the size is not two positive integers.
+
+        Notes
+        -----
+        Hearn & Baker, sections 12-2 and 12-3: the viewing transformation followed by
+        the normalization of the view volume.
+
+        Examples
+        --------
+        The window (0, 0)-(1, 1) is NDC already; z from front 1 to back -1 becomes
+        the depth (1 - z) / 2:
+
+        >>> import scanline as sl
+        >>> cam = sl.Camera(projection=sl.projection.orthographic(
+        ...     window=(0, 0, 1, 1), front=1, back=-1), keep_aspect=False)
+        >>> cam.matrix().tolist()
+        [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, -0.5, 0.5], [0.0, 0.0, 0.0, 1.0]]
+        """
         if width is None:
-            return self.projection.normalization @ self.view_matrix
+            m: NDArray[np.float64] = self.projection.normalization @ self.view_matrix
+            return m
         return self.mapping(self._device_box(width, height))[0]
 
-    def device(self, width, height):
+    def device(self, width: int, height: int) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
         """``(scale, offset)``: device = NDC * scale + offset per axis (x, y, depth)
         for a ``width`` x ``height`` frame buffer and this camera's 3-D viewport.
 
         NDC 0 and 1 fall on the centers of the first and last pixels; on an axis one
-        pixel long, on -0.5 and 0.5, the pixel's edges (its center is NDC 0.5)."""
+        pixel long, on -0.5 and 0.5, the pixel's edges (its center is NDC 0.5).
+
+        Parameters
+        ----------
+        width, height : int
+            The frame buffer's size in pixels.
+
+        Returns
+        -------
+        scale, offset : ndarray of float64, shape (3,)
+
+        Raises
+        ------
+        ArgumentTypeError, ArgumentValueError
+            If the size is not two positive integers.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> cam = sl.Camera(projection=sl.projection.orthographic(
+        ...     window=(0, 0, 1, 1), front=1, back=-1), keep_aspect=False)
+        >>> [a.tolist() for a in cam.device(101, 51)]
+        [[100.0, 50.0, 1.0], [0.0, 0.0, 0.0]]
+        """
         return self.mapping(self._device_box(width, height))[1:]
 
     # -- points ---------------------------------------------------------------------------
-    def to_viewing(self, points):
-        """Points (N, 3) in viewing coordinates."""
+    def to_viewing(self, points: ArrayLike) -> NDArray[np.float64]:
+        """Points (N, 3) in viewing coordinates.
+
+        Parameters
+        ----------
+        points : array_like, shape (N, 3) or (3,)
+            World points.
+
+        Returns
+        -------
+        ndarray of float64, in the shape of ``points``
+
+        Raises
+        ------
+        ArgumentTypeError, ArgumentValueError
+            If ``points`` is not finite points.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> sl.Camera(eye=(0, 0, 5), target=(0, 0, 0)).to_viewing((0, 0, 0)).tolist()
+        [0.0, 0.0, -5.0]
+        """
         return t3.apply(self.view_matrix, points)
 
-    def to_clip(self, points, width=None, height=None):
-        """Points (N, 3) as homogeneous clip coordinates (N, 4)."""
+    def to_clip(self, points: ArrayLike, width: int | None = None,
+                height: int | None = None) -> NDArray[np.float64]:
+        """Points (N, 3) as homogeneous clip coordinates (N, 4).
+
+        Parameters
+        ----------
+        points : array_like, shape (N, 3) or (3,)
+            World points.
+        width, height : int, optional
+            The device, as :meth:`matrix`.
+
+        Returns
+        -------
+        ndarray of float64, shape (N, 4) or (4,)
+
+        Raises
+        ------
+        ArgumentTypeError, ArgumentValueError
+            If ``points`` is not finite points or the size is invalid.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> cam = sl.Camera(projection=sl.projection.orthographic(
+        ...     window=(0, 0, 1, 1), front=1, back=-1), keep_aspect=False)
+        >>> cam.to_clip((0.5, 0.5, 0)).tolist()
+        [0.5, 0.5, 0.5, 1.0]
+        """
         from .._kernels import project3d as k
         from .._kernels._jit import call
 
         p, single = point_array("points", points)
         out = np.empty((len(p), 4))
         call(k.to_clip, 4 * len(p), np.ascontiguousarray(self.matrix(width, height)), p, out)
-        return out[0] if single else out
+        return out.reshape(4) if single else out
 
-    def project(self, points, width, height):
+    def project(self, points: ArrayLike, width: int, height: int) -> NDArray[np.float64]:
         """Device x, y and depth of world points, (N, 3) (or (3,) for one point).
 
         x and y are device coordinates of a ``width`` x ``height`` frame buffer, the
@@ -365,6 +619,36 @@ class Camera:
         NaN rather than a mirrored position.  Use :meth:`visible` to know which
         points are inside, and the clippers (:func:`scanline.clip.homogeneous`,
         :func:`scanline.draw3d.wireframe`) for lines and polygons.
+
+        Parameters
+        ----------
+        points : array_like, shape (N, 3) or (3,)
+            World points.
+        width, height : int
+            The frame buffer's size in pixels.
+
+        Returns
+        -------
+        ndarray of float64, shape (N, 3) or (3,)
+            Device x, y and depth.
+
+        Raises
+        ------
+        ArgumentTypeError, ArgumentValueError
+            If ``points`` is not finite points or the size is invalid.
+
+        Notes
+        -----
+        Hearn & Baker, sections 12-2 to 12-4: viewing, projection, normalization and
+        the 3-D viewport.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> cam = sl.Camera(projection=sl.projection.orthographic(
+        ...     window=(0, 0, 1, 1), front=1, back=-1), keep_aspect=False)
+        >>> cam.project([(1, 1, 1), (0, 0, -1)], 101, 51).tolist()
+        [[100.0, 50.0, 0.0], [0.0, 0.0, 1.0]]
         """
         from .._kernels import project3d as k
         from .._kernels._jit import call
@@ -374,13 +658,38 @@ class Camera:
         out = np.empty((len(p), 3))
         call(k.project_points, 6 * len(p), np.ascontiguousarray(self.matrix(width, height)),
              scale, offset, p, out)
-        return out[0] if single else out
+        return out.reshape(3) if single else out
 
-    def linear_depth(self, depth):
+    def linear_depth(self, depth: ArrayLike) -> NDArray[np.float64]:
         """Device depths (as :meth:`project` gives them) turned into distances beyond
         the front plane along the viewing direction, linear in viewing coordinates
         (the NDC depth of a perspective view is a pseudo-depth, 1 - u_f / u scaled:
-        the same order, not the same spacing)."""
+        the same order, not the same spacing).
+
+        Parameters
+        ----------
+        depth : float or array_like
+            Depths in the viewport's z range.
+
+        Returns
+        -------
+        ndarray of float64, in the shape of ``depth``
+
+        Raises
+        ------
+        ArgumentTypeError
+            If ``depth`` is not real numbers.
+
+        Examples
+        --------
+        The parallel volume from front 1 to back -1 is 2 deep:
+
+        >>> import scanline as sl
+        >>> cam = sl.Camera(projection=sl.projection.orthographic(
+        ...     window=(0, 0, 1, 1), front=1, back=-1), keep_aspect=False)
+        >>> cam.linear_depth([0.0, 0.5, 1.0]).tolist()
+        [0.0, 1.0, 2.0]
+        """
         from .._validate import real_array
 
         d = real_array("depth", depth, "a number or an array of depths")
@@ -389,27 +698,96 @@ class Camera:
         with np.errstate(all="ignore"):       # NaN depths (points behind the eye) stay NaN
             zn = (d - z0) / (z1 - z0)
             if p.kind == "parallel":
-                return zn * (p.front - p.back)
+                assert p.back is not None        # a parallel volume always has one
+                out: NDArray[np.float64] = zn * (p.front - p.back)
+                return out
+            assert p.prp is not None             # a perspective projection has one
             uf = p.prp[2] - p.front
             if p.back is None:
-                return uf / (1.0 - zn) - uf
+                out = uf / (1.0 - zn) - uf
+                return out
             ub = p.prp[2] - p.back
-            return uf * ub / (ub - zn * (ub - uf)) - uf
+            out = uf * ub / (ub - zn * (ub - uf)) - uf
+            return out
 
-    def visible(self, points, width=None, height=None):
-        """Whether each point lies inside the view volume (boundary included)."""
+    def visible(self, points: ArrayLike, width: int | None = None,
+                height: int | None = None) -> NDArray[np.bool_]:
+        """Whether each point lies inside the view volume (boundary included).
+
+        Parameters
+        ----------
+        points : array_like, shape (N, 3) or (3,)
+            World points.
+        width, height : int, optional
+            The device, as :meth:`matrix`.
+
+        Returns
+        -------
+        ndarray of bool, shape (N,)
+
+        Raises
+        ------
+        ArgumentTypeError, ArgumentValueError
+            If ``points`` is not finite points or the size is invalid.
+
+        Notes
+        -----
+        The test of homogeneous clipping, 0 <= x_h, y_h, z_h <= w (Blinn & Newell
+        1978; Hearn & Baker, section 12-5).
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> cam = sl.Camera(projection=sl.projection.orthographic(
+        ...     window=(0, 0, 1, 1), front=1, back=-1), keep_aspect=False)
+        >>> cam.visible([(0.5, 0.5, 0), (2, 0, 0)]).tolist()
+        [True, False]
+        """
         h = np.atleast_2d(self.to_clip(points, width, height))
         w = h[:, 3:]
-        return ((h[:, :3] >= 0) & (h[:, :3] <= w)).all(axis=1) & (w[:, 0] > 0)
+        inside: NDArray[np.bool_] = (((h[:, :3] >= 0) & (h[:, :3] <= w)).all(axis=1)
+                                     & (w[:, 0] > 0))
+        return inside
 
-    def vanishing_point(self, direction, width, height):
+    def vanishing_point(self, direction: ArrayLike, width: int,
+                        height: int) -> tuple[float, float] | None:
         """The device position (x, y) where lines along ``direction`` (world
         coordinates) converge, or None when they stay parallel (the direction is
         parallel to the view plane, or the projection is parallel).
 
         The vanishing point is the image of the point at infinity (d, 0): the clip
         coordinates M · (dx, dy, dz, 0), divided by their w (Hearn & Baker, section
-        12-3: "principal vanishing points" for lines parallel to the axes)."""
+        12-3: "principal vanishing points" for lines parallel to the axes).
+
+        Parameters
+        ----------
+        direction : (float, float, float)
+            A nonzero world direction.
+        width, height : int
+            The frame buffer's size in pixels.
+
+        Returns
+        -------
+        (float, float) or None
+
+        Raises
+        ------
+        ArgumentTypeError, ArgumentValueError
+            If ``direction`` is not a finite nonzero 3-vector or the size is invalid.
+
+        Examples
+        --------
+        Lines along the view direction meet in the middle; lines across it stay
+        parallel:
+
+        >>> import math, scanline as sl
+        >>> cam = sl.Camera(eye=(0, 0, 5), target=(0, 0, 0),
+        ...                 projection=sl.projection.perspective(fov=math.pi / 2, near=1))
+        >>> cam.vanishing_point((0, 0, -1), 101, 101)
+        (50.0, 50.0)
+        >>> cam.vanishing_point((1, 0, 0), 101, 101) is None
+        True
+        """
         from ..transform3d.arrays import direction as unit
 
         d = unit("direction", direction)
@@ -420,14 +798,37 @@ class Camera:
         ndc = h[:3] / h[3]
         return (float(ndc[0] * scale[0] + offset[0]), float(ndc[1] * scale[1] + offset[1]))
 
-    def volume_corners(self, width=None, height=None):
+    def volume_corners(self, width: int | None = None, height: int | None = None) -> NDArray[np.float64]:
         """The corners of the view volume in world coordinates, (8, 3): the front face
         counterclockwise from the lower left, then the back face (for a volume
         without a back plane, drawn at ten times the front plane's distance).  With
-        ``width`` and ``height``, the window widened to that device."""
+        ``width`` and ``height``, the window widened to that device.
+
+        Parameters
+        ----------
+        width, height : int, optional
+            The device, as :meth:`matrix`.
+
+        Returns
+        -------
+        ndarray of float64, shape (8, 3)
+
+        Raises
+        ------
+        ArgumentTypeError, ArgumentValueError
+            If the size is invalid.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> cam = sl.Camera(projection=sl.projection.orthographic(
+        ...     window=(0, 0, 1, 1), front=1, back=-1), keep_aspect=False)
+        >>> cam.volume_corners()[:4].tolist()          # the front face, z = 1
+        [[0.0, 0.0, 1.0], [1.0, 0.0, 1.0], [1.0, 1.0, 1.0], [0.0, 1.0, 1.0]]
+        """
         return _corners(self.matrix(width, height), self.projection)
 
-    def stereo(self, eye_separation):
+    def stereo(self, eye_separation: float) -> tuple["Camera", "Camera"]:
         """Left-eye and right-eye cameras for a stereoscopic view (Hearn & Baker,
         section 9-1): the eye moved by -``eye_separation`` / 2 and +``eye_separation``
         / 2 along the camera's x_v (u) axis, both looking at the target (the two views
@@ -436,6 +837,23 @@ class Camera:
         camera's.  Needs a camera made with eye and target.  Show the pair with
         :func:`scanline.draw3d.anaglyph` or :func:`scanline.draw3d.side_by_side`.
 
+        Parameters
+        ----------
+        eye_separation : float
+            The distance between the eyes in world units, >= 0.
+
+        Returns
+        -------
+        left, right : Camera
+
+        Raises
+        ------
+        ArgumentValueError
+            If ``eye_separation`` is negative or huge, or the camera was not made with
+            eye and target.
+
+        Examples
+        --------
         >>> import scanline as sl
         >>> left, right = sl.Camera(eye=(0, 0, 5), target=(0, 0, 0)).stereo(0.5)
         >>> [round(c, 6) for c in left.eye], [round(c, 6) for c in right.eye]
@@ -452,10 +870,11 @@ class Camera:
                 "the target)")
         eye = np.array(self._eye)
         u = t3.inverse(self.view_matrix)[:3, 0]
-        return tuple(Camera(eye=eye + sign * s / 2 * u, target=self.target, up=self.up,
-                            projection=self.projection, viewport=self.viewport,
-                            keep_aspect=self.keep_aspect) for sign in (-1.0, 1.0))
+        left, right = (Camera(eye=eye + sign * s / 2 * u, target=self.target, up=self.up,
+                              projection=self.projection, viewport=self.viewport,
+                              keep_aspect=self.keep_aspect) for sign in (-1.0, 1.0))
+        return left, right
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return (f"<Camera {self.projection.name} ({self.projection.kind}), viewport="
                 f"{self.viewport}, keep_aspect={self.keep_aspect}>")

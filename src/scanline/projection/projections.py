@@ -36,11 +36,15 @@ References
 """
 
 import math
+from collections.abc import Iterable, Sequence
+from typing import Any, cast
 
 import numpy as np
+from numpy.typing import ArrayLike, DTypeLike, NDArray
 
 from .. import _validate as v
 from .. import transform3d as t3
+from .._typing import Angle
 from ..errors import ArgumentTypeError, ArgumentValueError
 
 KINDS = ("parallel", "perspective")
@@ -71,11 +75,13 @@ DEFAULT_WINDOW = (-1.0, -1.0, 1.0, 1.0)
 DEFAULT_DEPTH = 1000.0
 
 
-def _window(window):
+def _window(window: object) -> tuple[float, float, float, float]:
     if isinstance(window, (str, bytes)) or not hasattr(window, "__len__") or len(window) != 4:
         raise ArgumentTypeError(
             f"window must be (xmin, ymin, xmax, ymax) on the view plane, got {v._show(window)}")
-    w = tuple(v.number(f"window[{i}]", c) for i, c in enumerate(window))
+    w = cast(tuple[float, float, float, float],
+             tuple(v.number(f"window[{i}]", c)
+                   for i, c in enumerate(cast(Sequence[object], window))))
     if not (w[0] < w[2] and w[1] < w[3]) or not all(
             math.isfinite(d) and d > 0 for d in (w[2] - w[0], w[3] - w[1])):
         raise ArgumentValueError(
@@ -84,7 +90,8 @@ def _window(window):
     return w
 
 
-def frame(direction, up, name="direction", up_name="up"):
+def frame(direction: ArrayLike, up: ArrayLike, name: str = "direction",
+          up_name: str = "up") -> NDArray[np.float64]:
     """The rotation (4x4) whose rows are the unit vectors u, v, n of a viewing frame
     with n along ``direction`` and v the part of ``up`` perpendicular to n (Hearn &
     Baker, section 12-2: n = N / |N|, u = V x n / |V x n|, v = n x u)."""
@@ -96,7 +103,7 @@ def frame(direction, up, name="direction", up_name="up"):
     length = float(np.sqrt(u @ u))
     if not length > 1e-9:
         raise ArgumentValueError(
-            f"{up_name}={v._show(tuple(up))} is parallel to the view direction "
+            f"{up_name}={v._show(tuple(cast(Iterable[object], up)))} is parallel to the view direction "
             f"{v._show(tuple(n.tolist()))}: it gives no up direction on the view plane; "
             "use a view-up vector that is not parallel to it")
     u = u / length
@@ -137,10 +144,58 @@ class Projection:
     prp : (float, float, float) or None
         Perspective projections: the projection reference point (center of
         projection).
+
+    Parameters
+    ----------
+    kind : {"parallel", "perspective"}
+        The kind of projection.
+    name : str
+        What builds it, shown in messages and ``repr``.
+    window : (xmin, ymin, xmax, ymax), default (-1, -1, 1, 1)
+        The window on the view plane.
+    z_vp : float, default 0
+        The view plane z_v = z_vp.
+    front, back : float, optional
+        The clipping planes (front > back).  Parallel: default a slab 1000 window
+        diagonals deep on each side of the view plane; perspective: front defaults
+        to the view plane and ``back`` to none.
+    shear : (float, float), default (0, 0)
+        Parallel projections: the shear (a, b).
+    prp : (float, float, float), optional
+        Perspective projections (needed): the center of projection, z_prp > z_vp.
+    orientation : array_like, shape (4, 4), optional
+        A rotation applied before projecting; the identity when omitted.
+    given : str, optional
+        How the caller's arguments read, for the message when the matrices overflow.
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If an argument is not of its kind, the window is degenerate, the planes are out
+        of order (back >= front, front at or behind the prp), or the matrices overflow.
+
+    Notes
+    -----
+    Hearn & Baker, section 12-3 (view volumes and general projection
+    transformations).
+
+    Examples
+    --------
+    A parallel view volume with the window (0, 0)-(2, 2): its center maps to the
+    center of the unit cube of normalized device coordinates.
+
+    >>> import scanline as sl
+    >>> p = sl.projection.Projection("parallel", "mine", window=(0, 0, 2, 2))
+    >>> sl.transform3d.apply(p.normalization, (1, 1, 0)).tolist()
+    [0.5, 0.5, 0.5]
     """
 
-    def __init__(self, kind, name, window=DEFAULT_WINDOW, z_vp=0.0, front=None, back=None,
-                 shear=(0.0, 0.0), prp=None, orientation=None, *, given=None):
+    prp: tuple[float, ...] | None
+
+    def __init__(self, kind: str, name: str, window: ArrayLike = DEFAULT_WINDOW,
+                 z_vp: float = 0.0, front: float | None = None, back: float | None = None,
+                 shear: ArrayLike = (0.0, 0.0), prp: ArrayLike | None = None,
+                 orientation: ArrayLike | None = None, *, given: str | None = None) -> None:
         v.choice("kind", kind, KINDS)
         if not isinstance(name, str):
             raise ArgumentTypeError(f"name must be a string, got {v._show(name)}")
@@ -154,9 +209,10 @@ class Projection:
             from ..transform3d.arrays import matrix4
 
             self.orientation = matrix4("orientation", orientation)
-        if isinstance(shear, (str, bytes)) or not hasattr(shear, "__len__") or len(shear) != 2:
+        pair = cast(Sequence[object], shear)
+        if isinstance(pair, (str, bytes)) or not hasattr(pair, "__len__") or len(pair) != 2:
             raise ArgumentTypeError(f"shear must be a pair (a, b), got {v._show(shear)}")
-        self.shear = (v.number("shear[0]", shear[0]), v.number("shear[1]", shear[1]))
+        self.shear = (v.number("shear[0]", pair[0]), v.number("shear[1]", pair[1]))
         if kind == "perspective":
             from ..transform3d.arrays import vector
 
@@ -171,13 +227,14 @@ class Projection:
         self.front, self.back = self._planes(front, back)
         self._check_finite(given)
 
-    def _check_finite(self, given):
+    def _check_finite(self, given: str | None) -> None:
         """Refuse a view volume whose matrices overflow or underflow float64 (huge but
         finite arguments such as z_prp=1e300, z_vp=-1e300, or tiny ones such as
         near=5e-324): ``given`` names the arguments that built it."""
         try:
             with np.errstate(all="ignore"):
-                ok = np.isfinite(self.matrix).all() and np.isfinite(self.normalization).all()
+                ok = bool(np.isfinite(self.matrix).all()
+                          and np.isfinite(self.normalization).all())
         except (ZeroDivisionError, OverflowError):
             ok = False
         if ok:
@@ -191,7 +248,8 @@ class Projection:
             "infinite or NaN: the distances are too large, too small or too unequal); use "
             "values nearer 1, e.g. a view volume a few units across")
 
-    def _planes(self, front, back):
+    def _planes(self, front: float | None,
+                back: float | None) -> tuple[float, float | None]:
         if self.kind == "parallel":
             xmin, ymin, xmax, ymax = self.window
             reach = DEFAULT_DEPTH * math.hypot(xmax - xmin, ymax - ymin)
@@ -200,6 +258,7 @@ class Projection:
         else:
             front = self.z_vp if front is None else v.number("front", front)
             back = None if back is None else v.number("back", back)
+            assert self.prp is not None          # a perspective projection has one
             if not front < self.prp[2]:
                 raise ArgumentValueError(
                     f"front={front:g} must be in front of the center of projection, "
@@ -214,28 +273,31 @@ class Projection:
 
     # -- the textbook matrix -------------------------------------------------------------
     @property
-    def matrix(self):
+    def matrix(self) -> NDArray[np.float64]:
         """The projection matrix (4x4), orientation included (see :func:`orthographic`,
         :func:`oblique`, :func:`perspective` for each formula)."""
         if self.kind == "parallel":
             a, b = self.shear
             m = t3.shear("z", a, b, self.z_vp)
         else:
+            assert self.prp is not None
             px, py, pz = self.prp
             d = pz - self.z_vp
             m = np.array([[1.0, 0.0, -px / d, px * self.z_vp / d],
                           [0.0, 1.0, -py / d, py * self.z_vp / d],
                           [0.0, 0.0, -self.z_vp / d, self.z_vp * pz / d],
                           [0.0, 0.0, -1.0 / d, pz / d]])
-        return m @ self.orientation + 0.0
+        out: NDArray[np.float64] = m @ self.orientation + 0.0
+        return out
 
-    def __array__(self, dtype=None, copy=None):
+    def __array__(self, dtype: DTypeLike | None = None,
+                  copy: bool | None = None) -> NDArray[Any]:
         m = self.matrix
         return m if dtype is None else m.astype(dtype)
 
     # -- the view volume -----------------------------------------------------------------
     @property
-    def normalization(self):
+    def normalization(self) -> NDArray[np.float64]:
         """The 4x4 matrix from viewing coordinates to homogeneous clip coordinates,
         mapping the view volume onto the unit cube 0 <= x_h, y_h, z_h <= w.
 
@@ -259,13 +321,16 @@ class Projection:
         """
         xmin, ymin, xmax, ymax = self.window
         if self.kind == "parallel":
+            assert self.back is not None         # a parallel volume always has one
             a, b = self.shear
             n = np.array([[1.0 / (xmax - xmin), 0.0, 0.0, -xmin / (xmax - xmin)],
                           [0.0, 1.0 / (ymax - ymin), 0.0, -ymin / (ymax - ymin)],
                           [0.0, 0.0, -1.0 / (self.front - self.back),
                            self.front / (self.front - self.back)],
                           [0.0, 0.0, 0.0, 1.0]])
-            return n @ t3.shear("z", a, b, self.z_vp) @ self.orientation + 0.0
+            box: NDArray[np.float64] = n @ t3.shear("z", a, b, self.z_vp) @ self.orientation + 0.0
+            return box
+        assert self.prp is not None
         px, py, pz = self.prp
         d = pz - self.z_vp
         cx, cy = (xmin + xmax) / 2, (ymin + ymax) / 2
@@ -283,31 +348,71 @@ class Projection:
             k = ub / (d * (ub - uf))   # z_h = k (u - uf)
             z_row = np.array([0.0, 0.0, -k, k * (pz - uf)])
         n = np.stack([x_row, y_row, z_row, w_row])
-        return n @ shear @ self.orientation + 0.0
+        out: NDArray[np.float64] = n @ shear @ self.orientation + 0.0
+        return out
 
-    def replace(self, **changes):
-        """A copy with some of ``window``, ``z_vp``, ``front``, ``back`` changed."""
+    def replace(self, **changes: Any) -> "Projection":
+        """A copy with some of ``window``, ``z_vp``, ``front``, ``back`` changed.
+
+        Parameters
+        ----------
+        **changes
+            New values of ``window``, ``z_vp``, ``front`` or ``back``.
+
+        Returns
+        -------
+        Projection
+
+        Raises
+        ------
+        ArgumentTypeError
+            If another keyword is given.
+        ArgumentValueError
+            If the new view volume is invalid (see :class:`Projection`).
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> p = sl.projection.orthographic().replace(front=1, back=-1)
+        >>> p.front, p.back
+        (1.0, -1.0)
+        """
         allowed = {"window", "z_vp", "front", "back"}
         for key in changes:
             if key not in allowed:
                 raise ArgumentTypeError(
                     f"replace() takes {', '.join(sorted(allowed))}; got {key!r}")
-        args = dict(window=self.window, z_vp=self.z_vp, front=self.front, back=self.back,
+        args: dict[str, Any] = dict(window=self.window, z_vp=self.z_vp, front=self.front, back=self.back,
                     shear=self.shear, prp=self.prp, orientation=self.orientation)
         args.update(changes)
         given = ", ".join(f"{k}={x!r}" for k, x in changes.items()) or None
         return Projection(self.kind, self.name, **args, given=given)
 
-    def volume_corners(self):
+    def volume_corners(self) -> NDArray[np.float64]:
         """The corners of the view volume in viewing coordinates, (8, 3): the front
         face (counterclockwise from the lower left), then the back face (for a
         perspective volume without a back plane, drawn at ten times the front
-        plane's distance from the eye)."""
+        plane's distance from the eye).
+
+        Returns
+        -------
+        ndarray of float64, shape (8, 3)
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> p = sl.projection.orthographic(window=(0, 0, 2, 1), front=1, back=-1)
+        >>> corners = p.volume_corners()
+        >>> corners[:4].tolist()                         # the front face, z_v = 1
+        [[0.0, 0.0, 1.0], [2.0, 0.0, 1.0], [2.0, 1.0, 1.0], [0.0, 1.0, 1.0]]
+        >>> corners[4:].tolist()                         # the back face, z_v = -1
+        [[0.0, 0.0, -1.0], [2.0, 0.0, -1.0], [2.0, 1.0, -1.0], [0.0, 1.0, -1.0]]
+        """
         from .camera import _corners
 
         return _corners(self.normalization, self)
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         extra = (f", prp={self.prp}" if self.prp is not None else
                  f", shear=({self.shear[0]:g}, {self.shear[1]:g})")
         return (f"<Projection {self.name!r} ({self.kind}), window={self.window}, "
@@ -315,7 +420,7 @@ class Projection:
                 f"{'none' if self.back is None else format(self.back, 'g')}{extra}>")
 
 
-def _angle(name, value, low, high):
+def _angle(name: str, value: object, low: float, high: float) -> float:
     a = v.angle(name, value)
     if not low < a < high:
         raise ArgumentValueError(
@@ -325,7 +430,9 @@ def _angle(name, value, low, high):
 
 
 # -- parallel projections ----------------------------------------------------------------
-def orthographic(view=None, window=DEFAULT_WINDOW, front=None, back=None, z_vp=0.0):
+def orthographic(view: str | None = None, window: ArrayLike = DEFAULT_WINDOW,
+                 front: float | None = None, back: float | None = None,
+                 z_vp: float = 0.0) -> Projection:
     """Orthographic parallel projection: onto the view plane along -z_v.
 
     ::
@@ -346,6 +453,15 @@ def orthographic(view=None, window=DEFAULT_WINDOW, front=None, back=None, z_vp=0
         The view volume: the window on the view plane z_v = z_vp and the front and
         back clipping planes (default: a slab 1000 window diagonals deep on each
         side of the view plane).
+
+    Returns
+    -------
+    Projection
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If ``view`` is not one of :data:`VIEW_NAMES` or the view volume is invalid.
 
     Notes
     -----
@@ -371,7 +487,9 @@ def orthographic(view=None, window=DEFAULT_WINDOW, front=None, back=None, z_vp=0
                       given=f"window={window!r}, front={front!r}, back={back!r}, z_vp={z_vp!r}")
 
 
-def axonometric(phi, theta, window=DEFAULT_WINDOW, front=None, back=None, name="trimetric"):
+def axonometric(phi: Angle, theta: Angle, window: ArrayLike = DEFAULT_WINDOW,
+                front: float | None = None, back: float | None = None,
+                name: str = "trimetric") -> Projection:
     """Axonometric projection: rotate about y by φ, then about x by θ, then project
     orthographically onto the xy plane (Rogers & Adams's trimetric projection).
 
@@ -382,6 +500,29 @@ def axonometric(phi, theta, window=DEFAULT_WINDOW, front=None, back=None, name="
     The unit vectors along x, y, z are drawn with the lengths (foreshortening
     factors, :func:`foreshortening`) f_x² = cos²φ + sin²φ sin²θ, f_y² = cos²θ,
     f_z² = sin²φ + cos²φ sin²θ.
+
+    Parameters
+    ----------
+    phi : float or str
+        The rotation about y (radians, or a string with its unit).
+    theta : float or str
+        The rotation about x that follows.
+    window : (xmin, ymin, xmax, ymax), default (-1, -1, 1, 1)
+        The window on the view plane.
+    front, back : float, optional
+        The front and back clipping planes z_v = front > z_v = back (default: a slab
+        1000 window diagonals deep on each side of the view plane).
+    name : str, default "trimetric"
+        The projection's name.
+
+    Returns
+    -------
+    Projection
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If an angle is not finite or the view volume is invalid.
 
     Notes
     -----
@@ -403,13 +544,46 @@ def axonometric(phi, theta, window=DEFAULT_WINDOW, front=None, back=None, name="
                       given=f"window={window!r}, front={front!r}, back={back!r}")
 
 
-def trimetric(phi, theta, window=DEFAULT_WINDOW, front=None, back=None):
+def trimetric(phi: Angle, theta: Angle, window: ArrayLike = DEFAULT_WINDOW,
+              front: float | None = None, back: float | None = None) -> Projection:
     """A trimetric projection: :func:`axonometric` with any angles (three different
-    foreshortening factors in general)."""
+    foreshortening factors in general).
+
+    Parameters
+    ----------
+    phi, theta : float or str
+        The rotations about y and then about x, as :func:`axonometric`.
+    window : (xmin, ymin, xmax, ymax), default (-1, -1, 1, 1)
+        The window on the view plane.
+    front, back : float, optional
+        The front and back clipping planes z_v = front > z_v = back (default: a slab
+        1000 window diagonals deep on each side of the view plane).
+
+    Returns
+    -------
+    Projection
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If an angle is not finite or the view volume is invalid.
+
+    Notes
+    -----
+    Rogers & Adams, section 3-9.
+
+    Examples
+    --------
+    >>> import math, scanline as sl
+    >>> p = sl.projection.trimetric(math.radians(-30), math.radians(20))
+    >>> [round(f, 4) for f in sl.projection.foreshortening(p)]
+    [0.8827, 0.9397, 0.5811]
+    """
     return axonometric(phi, theta, window, front, back, "trimetric")
 
 
-def isometric(window=DEFAULT_WINDOW, front=None, back=None):
+def isometric(window: ArrayLike = DEFAULT_WINDOW, front: float | None = None,
+              back: float | None = None) -> Projection:
     """The isometric projection: the view-plane normal along (1, 1, 1), so the three
     axes are foreshortened equally (by sqrt(2/3) = 0.8165) and drawn 120 degrees
     apart.
@@ -417,6 +591,23 @@ def isometric(window=DEFAULT_WINDOW, front=None, back=None):
     ::
 
         M = Rx(θ) · Ry(φ),  φ = -45°,  θ = asin(1 / sqrt(3)) = 35.26°
+
+    Parameters
+    ----------
+    window : (xmin, ymin, xmax, ymax), default (-1, -1, 1, 1)
+        The window on the view plane.
+    front, back : float, optional
+        The front and back clipping planes z_v = front > z_v = back (default: a slab
+        1000 window diagonals deep on each side of the view plane).
+
+    Returns
+    -------
+    Projection
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If the view volume is invalid.
 
     Notes
     -----
@@ -434,13 +625,33 @@ def isometric(window=DEFAULT_WINDOW, front=None, back=None):
                        "isometric")
 
 
-def dimetric(fz, window=DEFAULT_WINDOW, front=None, back=None):
+def dimetric(fz: float, window: ArrayLike = DEFAULT_WINDOW, front: float | None = None,
+             back: float | None = None) -> Projection:
     """A dimetric projection: x and y foreshortened equally, z by the factor ``fz``
     (0 < fz < 1).
 
     ::
 
         θ = asin(fz / sqrt(2)),  φ = -asin(fz / sqrt(2 - fz²)),  f_x = f_y = sqrt(1 - fz²/2)
+
+    Parameters
+    ----------
+    fz : float
+        The foreshortening factor of z, 0 < fz < 1.
+    window : (xmin, ymin, xmax, ymax), default (-1, -1, 1, 1)
+        The window on the view plane.
+    front, back : float, optional
+        The front and back clipping planes z_v = front > z_v = back (default: a slab
+        1000 window diagonals deep on each side of the view plane).
+
+    Returns
+    -------
+    Projection
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If ``fz`` is not between 0 and 1 or the view volume is invalid.
 
     Notes
     -----
@@ -462,18 +673,48 @@ def dimetric(fz, window=DEFAULT_WINDOW, front=None, back=None):
     return axonometric(phi, theta, window, front, back, "dimetric")
 
 
-def foreshortening(projection):
+def foreshortening(projection: Projection | ArrayLike) -> tuple[float, float, float]:
     """The lengths (f_x, f_y, f_z) on the view plane of the unit vectors along the
-    world axes under a parallel ``projection`` (a Projection or a 4x4 matrix)."""
+    world axes under a parallel ``projection`` (a Projection or a 4x4 matrix).
+
+    Parameters
+    ----------
+    projection : Projection or array_like, shape (4, 4)
+        A parallel projection or its matrix.
+
+    Returns
+    -------
+    (float, float, float)
+        The foreshortening factors f_x, f_y, f_z.
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If ``projection`` is neither a Projection nor a finite 4x4 matrix.
+
+    Notes
+    -----
+    Rogers & Adams, section 3-9 (foreshortening factors of axonometric projections).
+
+    Examples
+    --------
+    The plain orthographic projection keeps x and y and flattens z:
+
+    >>> import scanline as sl
+    >>> sl.projection.foreshortening(sl.projection.orthographic())
+    (1.0, 1.0, 0.0)
+    """
     from ..transform3d.arrays import matrix4
 
     m = projection.matrix if isinstance(projection, Projection) else matrix4(
         "projection", projection)
-    return tuple(float(math.hypot(m[0, k], m[1, k])) for k in range(3))
+    fx, fy, fz = (float(math.hypot(m[0, k], m[1, k])) for k in range(3))
+    return fx, fy, fz
 
 
-def oblique(kind=None, phi=math.pi / 4, alpha=None, window=DEFAULT_WINDOW, front=None,
-            back=None, z_vp=0.0):
+def oblique(kind: str | None = None, phi: Angle = math.pi / 4, alpha: Angle | None = None,
+            window: ArrayLike = DEFAULT_WINDOW, front: float | None = None,
+            back: float | None = None, z_vp: float = 0.0) -> Projection:
     """Oblique parallel projection: projectors at the angle α to the view plane.
 
     A point (x, y, z) projects to (Hearn & Baker, section 12-3)::
@@ -498,6 +739,20 @@ def oblique(kind=None, phi=math.pi / 4, alpha=None, window=DEFAULT_WINDOW, front
         projection: use :func:`orthographic`).
     window, front, back, z_vp
         The view volume, as :func:`orthographic`.
+
+    Returns
+    -------
+    Projection
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If both or neither of ``kind`` and ``alpha`` are given, ``kind`` is unknown,
+        ``alpha`` is not in (0, pi/2), or the view volume is invalid.
+
+    Notes
+    -----
+    Hearn & Baker, section 12-3, "oblique projections".
 
     Examples
     --------
@@ -524,7 +779,9 @@ def oblique(kind=None, phi=math.pi / 4, alpha=None, window=DEFAULT_WINDOW, front
                             f"front={front!r}, back={back!r}, z_vp={z_vp!r}")
 
 
-def parallel(direction, window=DEFAULT_WINDOW, front=None, back=None, z_vp=0.0):
+def parallel(direction: ArrayLike, window: ArrayLike = DEFAULT_WINDOW,
+             front: float | None = None, back: float | None = None,
+             z_vp: float = 0.0) -> Projection:
     """The general parallel projection along the projection vector
     V_p = (px, py, pz) (pz != 0), by the shear (Hearn & Baker, section 12-3)::
 
@@ -533,6 +790,28 @@ def parallel(direction, window=DEFAULT_WINDOW, front=None, back=None, z_vp=0.0):
     which makes V_p parallel to z_v; then an orthographic projection.  V_p = (0, 0, 1)
     is the orthographic projection; :func:`oblique` is the case
     V_p = (-L1 cos φ, -L1 sin φ, 1).
+
+    Parameters
+    ----------
+    direction : (float, float, float)
+        The projection vector V_p, finite, with pz != 0.
+    window : (xmin, ymin, xmax, ymax), default (-1, -1, 1, 1)
+        The window on the view plane.
+    front, back : float, optional
+        The front and back clipping planes z_v = front > z_v = back (default: a slab
+        1000 window diagonals deep on each side of the view plane).
+    z_vp : float, default 0
+        The view plane z_v = z_vp.
+
+    Returns
+    -------
+    Projection
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If ``direction`` is not three finite numbers or is parallel to the view plane,
+        or the view volume is invalid.
 
     Examples
     --------
@@ -543,19 +822,22 @@ def parallel(direction, window=DEFAULT_WINDOW, front=None, back=None, z_vp=0.0):
     from ..transform3d.arrays import vector
 
     px, py, pz = vector("direction", direction)
+    shown = v._show(tuple(cast(Iterable[object], direction)))
     if pz == 0.0 or not math.isfinite(px / pz) or not math.isfinite(py / pz):
         raise ArgumentValueError(
-            f"direction={v._show(tuple(direction))} is parallel (or nearly) to the view "
+            f"direction={shown} is parallel (or nearly) to the view "
             "plane (pz = 0): its projectors never reach the plane; use a vector with "
             "pz != 0")
     return Projection("parallel", "parallel", window, z_vp, front, back, (-px / pz, -py / pz),
-                      given=f"direction={v._show(tuple(direction))}, window={window!r}, "
+                      given=f"direction={shown}, window={window!r}, "
                             f"front={front!r}, back={back!r}, z_vp={z_vp!r}")
 
 
 # -- perspective projections -------------------------------------------------------------
-def perspective(z_prp=None, z_vp=None, window=DEFAULT_WINDOW, front=None, back=None, *,
-                fov=None, aspect=1.0, near=None, far=None):
+def perspective(z_prp: float | None = None, z_vp: float | None = None,
+                window: ArrayLike = DEFAULT_WINDOW, front: float | None = None,
+                back: float | None = None, *, fov: Angle | None = None, aspect: float = 1.0,
+                near: float | None = None, far: float | None = None) -> Projection:
     """Perspective projection, in Hearn & Baker's form or by field of view.
 
     *Hearn & Baker's form* (section 12-3): the center of projection on the z_v axis at
@@ -590,6 +872,17 @@ def perspective(z_prp=None, z_vp=None, window=DEFAULT_WINDOW, front=None, back=N
     near, far : float
         Distances of the front and back planes from the eye, 0 < near < far.
 
+    Returns
+    -------
+    Projection
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If the two forms are mixed or incomplete, a number is out of range (fov not
+        in (0, pi), aspect or near not > 0, far not > near, z_prp not > z_vp) or the
+        matrices overflow.
+
     See Also
     --------
     frustum : the general (oblique) frustum, with the center of projection anywhere.
@@ -609,7 +902,7 @@ def perspective(z_prp=None, z_vp=None, window=DEFAULT_WINDOW, front=None, back=N
             raise ArgumentValueError(
                 "give either z_prp and z_vp (Hearn & Baker's form) or fov, near and far, "
                 "not both")
-        fov = _angle("fov", fov, 0.0, math.pi)
+        fov_radians = _angle("fov", fov, 0.0, math.pi)
         aspect = v.number("aspect", aspect)
         if not aspect > 0:
             raise ArgumentValueError(f"aspect must be > 0 (width / height), got {aspect!r}")
@@ -626,10 +919,11 @@ def perspective(z_prp=None, z_vp=None, window=DEFAULT_WINDOW, front=None, back=N
                 raise ArgumentValueError(
                     f"far must be greater than near (got near={near:g}, far={far:g}): the "
                     "back plane lies beyond the front plane")
-        half = near * math.tan(fov / 2)
-        given = f"fov={fov!r}, aspect={aspect!r}, near={near!r}, far={far!r}"
+        half = near * math.tan(fov_radians / 2)
+        given = f"fov={fov_radians!r}, aspect={aspect!r}, near={near!r}, far={far!r}"
         if not half > 0:
-            raise ArgumentValueError(f"fov={fov!r} with near={near!r} gives an empty window")
+            raise ArgumentValueError(f"fov={fov_radians!r} with near={near!r} gives an empty "
+                                     "window")
         if not (math.isfinite(half * aspect) and half * aspect > 0):
             raise ArgumentValueError(
                 f"{given}: the window (±near tan(fov / 2), aspect times as wide) overflows or "
@@ -652,7 +946,8 @@ def perspective(z_prp=None, z_vp=None, window=DEFAULT_WINDOW, front=None, back=N
                             f"front={front!r}, back={back!r}")
 
 
-def frustum(prp, window=DEFAULT_WINDOW, z_vp=0.0, front=None, back=None):
+def frustum(prp: ArrayLike, window: ArrayLike = DEFAULT_WINDOW, z_vp: float = 0.0,
+            front: float | None = None, back: float | None = None) -> Projection:
     """The general perspective projection: the center of projection at any point
     ``prp`` = (x_prp, y_prp, z_prp) in front of the view plane (z_prp > z_vp), so the
     frustum through the window may be oblique.  Points project along lines through
@@ -663,6 +958,27 @@ def frustum(prp, window=DEFAULT_WINDOW, z_vp=0.0, front=None, back=None):
     and the normalization shears the frustum's center line parallel to z_v before
     the perspective scaling (Hearn & Baker, section 12-3, "general perspective-
     projection transformations").
+
+    Parameters
+    ----------
+    prp : (float, float, float)
+        The center of projection (x_prp, y_prp, z_prp), z_prp > z_vp.
+    window : (xmin, ymin, xmax, ymax), default (-1, -1, 1, 1)
+        The window on the view plane.
+    z_vp : float, default 0
+        The view plane z_v = z_vp.
+    front, back : float, optional
+        The clipping planes (front > back); the view plane and none by default.
+
+    Returns
+    -------
+    Projection
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If ``prp`` is not three finite numbers, is not in front of the view plane, or
+        the view volume is invalid.
 
     Examples
     --------

@@ -364,7 +364,8 @@ def tile(rows: int, columns: int, bounds: ArrayLike = (0.0, 0.0, 1.0, 1.0),
     ch = (ymax - ymin - (r - 1) * g) / r
     if g < 0 or cw <= 0 or ch <= 0:
         raise ArgumentValueError(
-            f"gap={gap!r} must be >= 0 and leave room for {r} x {c} viewports in {v._show(bounds)}")
+            f"gap={gap!r} must be >= 0 and leave room for {r} x {c} viewports in "
+            f"{v._show(bounds)}")
     out: list[Viewport] = []
     for i in range(r):
         top = ymax - i * (ch + g)

@@ -92,15 +92,50 @@ _SUBS, _ROOT = _parsers()
 
 
 def catalog() -> list[dict[str, Any]]:
-    """The algorithms: name, description, usage line and default arguments."""
+    """The explorer's algorithms: every one of ``scanline trace``.
+
+    Returns
+    -------
+    list of dict
+        Per algorithm: ``name``, ``description``, ``usage`` (the command line's
+        usage line) and ``defaults`` (the first case shown, :data:`DEFAULTS`).
+
+    Examples
+    --------
+    >>> [a["defaults"] for a in catalog() if a["name"] == "bresenham"]
+    [['20', '10', '30', '18']]
+    """
     return [{"name": name, "description": desc, "usage": _SUBS[name].format_usage().strip()
              .replace("usage: ", ""), "defaults": DEFAULTS.get(name, [])}
             for name, (desc, _, _) in cli_trace.ALGORITHMS.items()]
 
 
 def parse(algorithm: str, args: list[str]) -> argparse.Namespace:
-    """The parsed namespace of ``scanline trace ALGORITHM ARGS...``; BadArguments with
-    the command line's message otherwise."""
+    """The parsed arguments of ``scanline trace ALGORITHM ARGS...``.
+
+    Parameters
+    ----------
+    algorithm : str
+        An algorithm of :func:`catalog`.
+    args : list of str
+        Its arguments, as on the command line (at most 10000).
+
+    Returns
+    -------
+    argparse.Namespace
+        What ``scanline trace`` parses.
+
+    Raises
+    ------
+    BadArguments
+        (a ValueError) with the command line's message: an unknown algorithm, bad
+        arguments, ``--help``.
+
+    Examples
+    --------
+    >>> parse("dda", ["0", "0", "4", "2"]).x1
+    4
+    """
     if algorithm not in _SUBS:
         raise BadArguments(f"unknown algorithm {algorithm!r}; choose one of "
                            + ", ".join(_SUBS))
@@ -795,18 +830,69 @@ def check_memory(ns, limit_bytes=None):
 
 
 def explore(algorithm: str, args: list[str], limit_bytes: float | None = None) -> dict[str, Any]:
-    """The explorer's view of ``scanline trace ALGORITHM ARGS...``: a JSON-ready dict
-    with the table (title, notes, columns, rows as lists in column order), one step
-    per row (``steps``; or, for the line algorithms, ``pixel_columns`` naming the
-    columns that hold each row's pixel and ``rules``, rule templates filled from
-    each row's columns and the template each row used), the static shapes, the
-    grid bounds and the handles.  A case whose view would take more than
-    ``limit_bytes`` is refused first (:func:`check_memory`)."""
+    """The explorer's view of ``scanline trace ALGORITHM ARGS...``.
+
+    Parameters
+    ----------
+    algorithm : str
+        An algorithm of :func:`catalog`.
+    args : list of str
+        Its arguments, as on the command line.
+    limit_bytes : float or None
+        Refuse a case whose view would take more (:func:`check_memory`); None: the
+        package's memory budget.
+
+    Returns
+    -------
+    dict
+        JSON-ready: the table (``title``, ``notes``, ``columns``, ``rows`` as lists in
+        column order, ``count``), one step per row (``steps``; or, for the line
+        algorithms, ``pixel_columns`` naming the columns that hold each row's pixel
+        and ``rules``, rule templates filled from each row's columns and the template
+        each row used), the static ``shapes``, the grid ``bounds``, the ``handles``
+        and the ``command`` line.
+
+    Raises
+    ------
+    BadArguments
+        Arguments the command line refuses, a table over :data:`MAX_ROWS` rows.
+    scanline.errors.MemoryBudgetError
+        A case over ``limit_bytes``.
+
+    Examples
+    --------
+    >>> view = explore("bresenham", ["0", "0", "3", "1"])
+    >>> view["command"], view["count"]
+    ('scanline trace bresenham 0 0 3 1', 3)
+    """
     return view_of(parse(algorithm, args), limit_bytes)
 
 
 def view_of(ns: argparse.Namespace, limit_bytes: float | None = None) -> dict[str, Any]:
-    """The explorer's view of parsed arguments (see :func:`explore`)."""
+    """The explorer's view of parsed arguments.
+
+    Parameters
+    ----------
+    ns : argparse.Namespace
+        Arguments as :func:`parse` returns them.
+    limit_bytes : float or None
+        As for :func:`explore`.
+
+    Returns
+    -------
+    dict
+        The view (see :func:`explore`).
+
+    Raises
+    ------
+    BadArguments, scanline.errors.MemoryBudgetError
+        As :func:`explore`.
+
+    Examples
+    --------
+    >>> view_of(parse("dda", ["0", "0", "4", "2"]))["columns"]
+    ['k', 'x_real', 'y_real', 'x', 'y']
+    """
     check_memory(ns, limit_bytes)
     if ns.algorithm in ("midpoint-circle", "midpoint-ellipse") and ns.center is None:
         ns.center = [0, 0]
@@ -825,8 +911,24 @@ def view_of(ns: argparse.Namespace, limit_bytes: float | None = None) -> dict[st
 
 
 def table_of(ns: argparse.Namespace) -> Table:
-    """The step table of parsed arguments: ``scanline trace``'s own
-    (:func:`scanline.cli.trace.table_of`)."""
+    """The step table of parsed arguments: ``scanline trace``'s own.
+
+    Parameters
+    ----------
+    ns : argparse.Namespace
+        Arguments as :func:`parse` returns them.
+
+    Returns
+    -------
+    scanline.trace.table.Table
+        The table :func:`scanline.cli.trace.table_of` builds (printed by
+        ``scanline trace``).
+
+    Examples
+    --------
+    >>> len(table_of(parse("dda", ["0", "0", "4", "2"])).rows)
+    5
+    """
     table: Table = cli_trace.table_of(ns)
     return table
 

@@ -30,8 +30,34 @@ def _json_for_script(data: Any) -> str:
 
 
 def explain_html(ns: argparse.Namespace, quiz: bool = False) -> str:
-    """The self-contained explorer page of the parsed ``scanline trace`` arguments;
-    ``quiz``: the page asks each step before showing it (:mod:`scanline.studio.quiz`)."""
+    """The self-contained explorer page of parsed ``scanline trace`` arguments.
+
+    Parameters
+    ----------
+    ns : argparse.Namespace
+        The arguments, as :func:`scanline.studio.explorer.parse` returns them.
+    quiz : bool
+        Quiz mode: the page asks each step before showing it
+        (:mod:`scanline.studio.quiz`) and keeps the score.
+
+    Returns
+    -------
+    str
+        One HTML page: the explorer's page, style and scripts (``quiz.js``,
+        ``explorer.js``) inlined and the view embedded as JSON; it loads nothing.
+
+    Raises
+    ------
+    ValueError
+        A case the explorer refuses (too many rows, too much memory).
+
+    Examples
+    --------
+    >>> from scanline.studio.explorer import parse
+    >>> page = explain_html(parse("bresenham", ["0", "0", "3", "1"]), quiz=True)
+    >>> '<script src=' in page, '"quiz":[' in page
+    (False, True)
+    """
     html = (STATIC / "explorer.html").read_text(encoding="utf-8")
     css = (STATIC / "studio.css").read_text(encoding="utf-8")
     js = "\n".join((STATIC / name).read_text(encoding="utf-8")
@@ -54,7 +80,36 @@ def explain_html(ns: argparse.Namespace, quiz: bool = False) -> str:
 
 
 def explain(ns: argparse.Namespace, path: str | os.PathLike[str], quiz: bool = False) -> None:
-    """Write the page of ``ns`` (arguments parsed by ``scanline explain``) to ``path``,
-    atomically (``quiz``: the quiz page)."""
+    """Write :func:`explain_html` of ``ns`` to ``path``, atomically.
+
+    Parameters
+    ----------
+    ns : argparse.Namespace
+        Arguments parsed by ``scanline explain`` (or :func:`scanline.studio.explorer.parse`).
+    path : str or os.PathLike
+        The HTML file to write; a failure leaves no file there.
+    quiz : bool
+        Write the quiz page.
+
+    Returns
+    -------
+    None
+
+    Raises
+    ------
+    ValueError
+        A case the explorer refuses.
+    OSError
+        ``path`` cannot be written.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> from scanline.studio.explorer import parse
+    >>> path = os.path.join(tempfile.mkdtemp(), "dda.html")
+    >>> explain(parse("dda", ["0", "0", "4", "2"]), path)
+    >>> os.path.getsize(path) > 10_000
+    True
+    """
     page = explain_html(ns, quiz)
     write_atomically(path, lambda f: f.write(page.encode("utf-8")))

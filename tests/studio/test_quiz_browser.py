@@ -62,3 +62,22 @@ def test_studio_quiz_case_asks_write_or_keep(server, page):
     page.click(f"button[data-choice={wrong}]")
     assert page.evaluate("document.body.dataset.score") == "1/2"
     assert verdict(page).startswith(f"Not quite: the answer is {results[1]}.")
+
+
+def test_the_index_and_the_quiz_me_button_start_quizzes(server, page):
+    page.goto(f"{server}/")
+    page.click("text=Quiz")
+    wait_ready(page)
+    assert page.evaluate("window.explorer.state.view.args") == case("bresenham", 1)
+    assert page.evaluate("document.body.dataset.quiz") == "asking 0"
+    before = page.evaluate("document.body.dataset.ready")
+    page.select_option("#algorithm", "dda")
+    wait_ready(page, before)                       # the explorer shows dda's default case
+    assert page.is_hidden("#quiz") and page.is_visible("#stepper")
+    before = page.evaluate("document.body.dataset.ready")
+    page.fill("#case", "5")
+    page.click("#quiz-me")
+    wait_ready(page, before)
+    assert page.evaluate("window.explorer.state.view.args") == case("dda", 5)
+    assert page.is_visible("#quiz") and page.is_hidden("#stepper")
+    assert page.inner_text("#quiz-score") == "score: 0 of 0"

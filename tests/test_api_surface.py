@@ -28,6 +28,7 @@ COMPLETE = [
     "scanline.csg",
     "scanline.color",
     "scanline.fractals",
+    "scanline.raytrace",
 ]
 
 

@@ -69,3 +69,17 @@ def test_bad_seeds(seed, error):
 def test_unknown_algorithm():
     with pytest.raises(ValueError, match="unknown algorithm 'bresenhm'"):
         quiz.case("bresenhm", 1)
+
+
+def test_the_quiz_endpoint(client):
+    r = client.post("/api/quiz", json={"algorithm": "back-face", "seed": 17})
+    assert r.status_code == 200
+    view = r.json()
+    assert view["args"] == quiz.case("back-face", 17)
+    assert [q["answer"] for q in view["quiz"]] == [[r[-1]] for r in view["rows"]]
+    assert client.post("/api/quiz", json={"algorithm": "back-face"}).status_code == 400
+    assert client.post("/api/quiz", json={"algorithm": "back-face", "seed": "1"}).status_code == 400
+    r = client.post("/api/quiz", json={"algorithm": "back-face", "seed": -1})
+    assert r.status_code == 422 and "seed must be 0.." in r.json()["error"]
+    r = client.post("/api/quiz", json={"algorithm": "nope", "seed": 1})
+    assert r.status_code == 422 and "unknown algorithm 'nope'" in r.json()["error"]

@@ -8,8 +8,10 @@ the rest: argument checking, shapes, higher derivatives and flattening.
 """
 
 import numbers
+from typing import Callable, Optional
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from ..errors import ArgumentTypeError, ArgumentValueError
 from .._validate import _show, choice
@@ -26,15 +28,29 @@ class Curve:
         ``(u_min, u_max)``, the parameter interval on which the curve is defined.
     dimension : int
         Number of coordinates of each point (2 for plane curves, 3 for space curves).
+
+    Notes
+    -----
+    Notes, chapter 5 (Hearn & Baker, chapter 10): the parametric representation
+    P(u) of curves, used by every subclass.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> c = sl.curves.Bezier([(0, 0), (2, 2), (4, 0)])
+    >>> isinstance(c, sl.curves.Curve), c.domain, c.dimension
+    (True, (0.0, 1.0), 2)
+    >>> c(0.5).tolist()
+    [2.0, 1.0]
     """
 
     #: set by subclasses
-    domain = (0.0, 1.0)
-    dimension = 2
+    domain: tuple[float, float] = (0.0, 1.0)
+    dimension: int = 2
     #: names of the evaluation algorithms a subclass offers (``method=``)
-    METHODS = ()
+    METHODS: tuple[str, ...] = ()
 
-    def evaluate(self, u, method=None):
+    def evaluate(self, u: ArrayLike, method: Optional[str] = None) -> NDArray[np.float64]:
         """Points on the curve.
 
         Parameters
@@ -52,51 +68,109 @@ class Curve:
         Raises
         ------
         ArgumentValueError
-            If a parameter is NaN or outside ``domain``.
+            If a parameter is NaN or outside ``domain``, or ``method`` is not one of
+            ``METHODS``.
+
+        Examples
+        --------
+        A quadratic Bezier curve at u = 1/2: (P0 + 2 P1 + P2) / 4:
+
+        >>> import scanline as sl
+        >>> sl.curves.Bezier([(0, 0), (2, 2), (4, 0)]).evaluate([0.0, 0.5]).tolist()
+        [[0.0, 0.0], [2.0, 1.0]]
         """
         if method is not None:
             choice("method", method, self.METHODS)
-        u = parameters("u", u, self.domain)
-        flat = u.ravel()
-        out = self._evaluate(flat) if method is None else self._evaluate(flat, method)
-        return out.reshape(u.shape + (self.dimension,))
+        params = parameters("u", u, self.domain)
+        flat = params.ravel()
+        with_method: Callable[..., NDArray[np.float64]] = self._evaluate
+        out = self._evaluate(flat) if method is None else with_method(flat, method)
+        return out.reshape(params.shape + (self.dimension,))
 
     __call__ = evaluate
 
-    def derivative(self, k=1):
+    def derivative(self, k: int = 1) -> "Curve":
         """The k-th derivative dᵏP/duᵏ as a curve with the same ``domain``.
 
         ``k = 0`` returns the curve itself.
+
+        Parameters
+        ----------
+        k : int
+            The order of the derivative, >= 0.
+
+        Returns
+        -------
+        Curve
+            The derivative, a curve on the same domain.
+
+        Raises
+        ------
+        ArgumentValueError
+            ``k`` is not an integer >= 0.
+
+        Examples
+        --------
+        P(u) = (4u, 4u(1 - u)) (control points (0, 0), (2, 2), (4, 0)) has
+        P'(u) = (4, 4 - 8u) and P'' = (0, -8):
+
+        >>> import scanline as sl
+        >>> c = sl.curves.Bezier([(0, 0), (2, 2), (4, 0)])
+        >>> c.derivative().evaluate(0.0).tolist(), c.derivative(2).evaluate(0.5).tolist()
+        ([4.0, 4.0], [0.0, -8.0])
         """
         if isinstance(k, bool) or not isinstance(k, numbers.Integral) or k < 0:
             raise ArgumentValueError(
                 f"k must be an integer >= 0 (the order of the derivative), got {_show(k)}"
             )
-        curve = self
+        curve: Curve = self
         for _ in range(int(k)):
             curve = curve._derivative()
         return curve
 
-    def flatten(self, tolerance=0.25):
+    def flatten(self, tolerance: float = 0.25) -> NDArray[np.float64]:
         """A polyline within ``tolerance`` of the curve: a (K, dimension) array.
 
         See :func:`scanline.curves.flatten.flatten`.
+
+        Parameters
+        ----------
+        tolerance : float
+            Largest distance between the curve and the polyline (> 0).
+
+        Returns
+        -------
+        ndarray of float64, shape (K, dimension)
+            The polyline, from ``domain[0]`` to ``domain[1]``.
+
+        Raises
+        ------
+        ArgumentValueError
+            ``tolerance`` is not a number > 0.
+
+        Examples
+        --------
+        A straight Bezier curve flattens to its two ends:
+
+        >>> import scanline as sl
+        >>> sl.curves.Bezier([(0, 0), (1, 1), (2, 2)]).flatten(0.1).tolist()
+        [[0.0, 0.0], [2.0, 2.0]]
         """
         from .flatten import flatten
 
         return flatten(self, tolerance)
 
-    def _evaluate(self, u):  # pragma: no cover - abstract
+    def _evaluate(self, u: NDArray[np.float64]) -> NDArray[np.float64]:  # pragma: no cover - abstract
         raise NotImplementedError
 
-    def _derivative(self):  # pragma: no cover - abstract
+    def _derivative(self) -> "Curve":  # pragma: no cover - abstract
         raise NotImplementedError
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"<{type(self).__name__} {self.dimension}-D on [{self.domain[0]:g}, {self.domain[1]:g}]>"
 
 
-def control_points(name, value, minimum=1):
+def control_points(name: str, value: ArrayLike, minimum: int = 1) -> NDArray[np.float64]:
     """Return ``value`` as a float64 (n + 1, dim) array of finite points, dim >= 1.
 
     Raises an error naming ``name`` if it is not a 2-D array of at least ``minimum``
@@ -131,7 +205,7 @@ def control_points(name, value, minimum=1):
     return a
 
 
-def weights_array(name, value, count):
+def weights_array(name: str, value: ArrayLike, count: int) -> NDArray[np.float64]:
     """Return ``value`` as ``count`` finite positive float64 weights."""
     try:
         w = np.array(value, dtype=np.float64)
@@ -148,7 +222,7 @@ def weights_array(name, value, count):
     return w
 
 
-def parameters(name, value, domain):
+def parameters(name: str, value: ArrayLike, domain: tuple[float, float]) -> NDArray[np.float64]:
     """Return ``value`` as a float64 array of parameters inside ``domain``.
 
     Out-of-range parameters are an error: a curve is not defined there (the B-spline's

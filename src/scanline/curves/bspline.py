@@ -10,8 +10,10 @@
 
 import numbers
 from math import factorial
+from typing import Optional, TypeVar, Union
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from .._kernels import curves as _k
@@ -31,14 +33,39 @@ MATRIX_ORDER = 6
 #: Most control points of a knot vector made by :func:`open_uniform_knots` (32 MiB).
 MAX_CONTROL_POINTS = 1 << 22
 
+_Spline = TypeVar("_Spline", bound="BSpline")
 
-def open_uniform_knots(count, order):
+
+def open_uniform_knots(count: int, order: int) -> NDArray[np.float64]:
     """The open uniform knot vector for ``count`` = n + 1 control points of order d.
 
     uⱼ = 0 for j < d, j − d + 1 for d ≤ j ≤ n, n − d + 2 for j > n (Hearn & Baker,
     §10-9): the notes' [0 0 1 2 3 3] (d = 2, n = 3) and [0 0 0 0 1 2 2 2 2] (d = 4, n = 4).
 
     ``count`` is at most :data:`MAX_CONTROL_POINTS`.
+
+    Parameters
+    ----------
+    count : int
+        n + 1, the number of control points (1 … ``MAX_CONTROL_POINTS``).
+    order : int
+        d, 1 ≤ d ≤ n + 1.
+
+    Returns
+    -------
+    ndarray of float64, shape (n + d + 1,)
+        The knots u₀ … u_{n+d}.
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        ``count`` or ``order`` is not an integer in its range.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> sl.curves.open_uniform_knots(4, 2).tolist()
+    [0.0, 0.0, 1.0, 2.0, 3.0, 3.0]
     """
     count = v.positive_int("count", count, minimum=1)
     if count > MAX_CONTROL_POINTS:
@@ -51,10 +78,10 @@ def open_uniform_knots(count, order):
     return np.clip(j - d + 1, 0, n - d + 2).astype(np.float64)
 
 
-def _order(order, count):
+def _order(order: object, count: int) -> int:
     if isinstance(order, bool) or not isinstance(order, numbers.Integral):
         raise ArgumentTypeError(f"order must be an integer, got {_show(order)}")
-    if not 1 <= order <= count:
+    if not 1 <= int(order) <= count:
         raise ArgumentValueError(
             f"order must satisfy 1 <= order <= number of control points ({count}) "
             f"(the notes: 2 <= d <= n + 1), got order={order}; use more control points "
@@ -63,7 +90,7 @@ def _order(order, count):
     return int(order)
 
 
-def check_knots(knots, count, order):
+def check_knots(knots: ArrayLike, count: int, order: int) -> NDArray[np.float64]:
     """Validate an explicit knot vector: n + d + 1 finite non-decreasing values with
     u_{d−1} < u_{n+1}.  Returns it as float64."""
     try:
@@ -95,48 +122,51 @@ def check_knots(knots, count, order):
     return u
 
 
-def knot_span(knots, u, last=None):
+def knot_span(knots: ArrayLike, u: ArrayLike, last: Optional[int] = None) -> NDArray[np.intp]:
     """Index ℓ ≤ ``last`` of the knot span [u_ℓ, u_ℓ₊₁) holding each u.
 
     ``last`` (default: the last span of the knot vector; a curve passes n, so that
     its domain ends at u_{n+1}) is stepped down to a non-empty span, which is closed on
     the right: a u at its end belongs to it.
     """
-    knots = np.asarray(knots, dtype=np.float64)
-    u = np.asarray(u, dtype=np.float64)
-    last = len(knots) - 2 if last is None else last
-    while knots[last] >= knots[last + 1]:
-        last -= 1
-    return np.minimum(np.searchsorted(knots, u, side="right") - 1, last)
+    k = np.asarray(knots, dtype=np.float64)
+    t = np.asarray(u, dtype=np.float64)
+    end = len(k) - 2 if last is None else last
+    while k[end] >= k[end + 1]:
+        end -= 1
+    span: NDArray[np.intp] = np.minimum(np.searchsorted(k, t, side="right") - 1, end)
+    return span
 
 
-def _basis_arguments(knots, order, u, last):
+def _basis_arguments(knots: ArrayLike, order: object, u: ArrayLike, last: Optional[int]
+                     ) -> tuple[NDArray[np.float64], int, NDArray[np.float64], Optional[int]]:
     """Check :func:`basis`'s arguments (it is public): a finite non-decreasing knot
     vector of at least d + 1 values spanning a non-empty range, an integer order
     d >= 1, parameters inside [u_0, u_{n+d}], and ``last`` a span ending after u_0."""
     if isinstance(order, bool) or not isinstance(order, numbers.Integral):
         raise ArgumentTypeError(f"order must be an integer >= 1, got {_show(order)}")
-    if order < 1:
+    d = int(order)
+    if d < 1:
         raise ArgumentValueError(f"order must be an integer >= 1, got {order}")
     try:
-        knots = np.asarray(knots, dtype=np.float64)
+        k = np.asarray(knots, dtype=np.float64)
     except (TypeError, ValueError):
         raise ArgumentTypeError(f"knots must be an array of numbers, got {_show(knots)}") from None
-    if (knots.ndim != 1 or len(knots) < order + 1 or not np.isfinite(knots).all()
-            or (np.diff(knots) < 0).any() or not knots[0] < knots[-1]):
+    if (k.ndim != 1 or len(k) < d + 1 or not np.isfinite(k).all()
+            or (np.diff(k) < 0).any() or not k[0] < k[-1]):
         raise ArgumentValueError(
-            f"knots must be at least order + 1 = {order + 1} finite non-decreasing numbers, "
-            f"not all equal, got {_show(knots.tolist())}")
-    u = parameters("u", u, (float(knots[0]), float(knots[-1])))
-    if last is not None and not (isinstance(last, numbers.Integral) and 0 <= last <= len(knots) - 2
-                                 and knots[last + 1] > knots[0]):
+            f"knots must be at least order + 1 = {d + 1} finite non-decreasing numbers, "
+            f"not all equal, got {_show(k.tolist())}")
+    t = parameters("u", u, (float(k[0]), float(k[-1])))
+    if last is not None and not (isinstance(last, numbers.Integral) and 0 <= last <= len(k) - 2
+                                 and k[last + 1] > k[0]):
         raise ArgumentValueError(
-            f"last must be the index of a knot span, 0 to {len(knots) - 2}, ending after "
+            f"last must be the index of a knot span, 0 to {len(k) - 2}, ending after "
             f"knots[0]; got {_show(last)}")
-    return knots, int(order), u, last
+    return k, d, t, last
 
 
-def basis(knots, order, u, last=None):
+def basis(knots: ArrayLike, order: int, u: ArrayLike, last: Optional[int] = None) -> NDArray[np.float64]:
     """All blending functions B_{k,d}(u), k = 0 … n, by the Cox–de Boor recursion.
 
     Parameters
@@ -167,23 +197,32 @@ def basis(knots, order, u, last=None):
     ----------
     M. G. Cox, "The numerical evaluation of B-splines", *J. Inst. Maths Applics* 10, 1972.
     C. de Boor, "On calculating with B-splines", *J. Approx. Theory* 6, 1972.
+
+    Examples
+    --------
+    The linear (d = 2) functions on the knots [0 0 1 1] at u = 1/4: 1 − u and u:
+
+    >>> import scanline as sl
+    >>> sl.curves.basis([0, 0, 1, 1], 2, 0.25).tolist()
+    [0.75, 0.25]
     """
-    knots, d, u, last = _basis_arguments(knots, order, u, last)
-    flat = u.ravel()
-    count = len(knots) - 1  # number of order-1 functions
+    k_, d, t, last = _basis_arguments(knots, order, u, last)
+    knots_ = k_
+    flat = t.ravel()
+    count = len(knots_) - 1  # number of order-1 functions
     b = np.zeros((flat.size, count))
-    b[np.arange(flat.size), knot_span(knots, flat, last)] = 1.0
+    b[np.arange(flat.size), knot_span(knots_, flat, last)] = 1.0
     with np.errstate(all="ignore"):
         for r in range(2, d + 1):
             k = np.arange(count - r + 1)
-            left = knots[k + r - 1] - knots[k]
-            right = knots[k + r] - knots[k + 1]
+            left = knots_[k + r - 1] - knots_[k]
+            right = knots_[k + r] - knots_[k + 1]
             # where B_k,r-1 (resp. B_k+1,r-1) is non-zero these ratios lie in [0, 1];
             # clipping them changes no product and keeps inf * 0 out (tiny knot gaps)
-            a = np.clip(np.where(left > 0, (flat[:, None] - knots[k]) / left, 0.0), 0, 1)
-            c = np.clip(np.where(right > 0, (knots[k + r] - flat[:, None]) / right, 0.0), 0, 1)
+            a = np.clip(np.where(left > 0, (flat[:, None] - knots_[k]) / left, 0.0), 0, 1)
+            c = np.clip(np.where(right > 0, (knots_[k + r] - flat[:, None]) / right, 0.0), 0, 1)
             b = a * b[:, :-1] + c * b[:, 1:]
-    return b.reshape(u.shape + (b.shape[1],))
+    return b.reshape(t.shape + (b.shape[1],))
 
 
 class BSpline(Weighted, Curve):
@@ -223,11 +262,26 @@ class BSpline(Weighted, Curve):
     C. de Boor, "On calculating with B-splines", *J. Approx. Theory* 6, 1972.
     W. Boehm, "Inserting new knots into B-spline curves", *CAD* 12(4), 1980.
     L. Piegl and W. Tiller, *The NURBS Book*, 2nd ed., Springer, 1997.
+
+    Examples
+    --------
+    The quadratic open B-spline of (0, 0), (2, 2), (4, 0) is their Bezier curve:
+
+    >>> import scanline as sl
+    >>> c = sl.curves.BSpline([(0, 0), (2, 2), (4, 0)], order=3)
+    >>> c.knots.tolist(), c(0.5).tolist()
+    ([0.0, 0.0, 0.0, 1.0, 1.0, 1.0], [2.0, 1.0])
     """
 
     METHODS = METHODS
+    closed: bool
+    order: int
+    degree: int
+    knots: NDArray[np.float64]
 
-    def __init__(self, points, order=4, knots="open", weights=None):
+    def __init__(self, points: ArrayLike, order: int = 4,
+                 knots: Union[str, ArrayLike, None] = "open",
+                 weights: Optional[ArrayLike] = None) -> None:
         pts = control_points("points", points)
         d = _order(order, len(pts))
         w = None if weights is None else weights_array("weights", weights, len(pts))
@@ -236,6 +290,7 @@ class BSpline(Weighted, Curve):
             knots = "open"
         if isinstance(knots, str):
             v.choice("knots", knots, KNOT_KINDS)
+            u: NDArray[np.float64]
             if self.closed:
                 pts = np.vstack([pts, pts[: d - 1]])
                 w = None if w is None else np.concatenate([w, w[: d - 1]])
@@ -248,7 +303,7 @@ class BSpline(Weighted, Curve):
             u = check_knots(knots, len(pts), d)
         self._set(pts, d, u, w)
 
-    def _set(self, points, order, knots, weights):
+    def _set(self, points: NDArray[np.float64], order: int, knots: NDArray[np.float64], weights: Optional[NDArray[np.float64]]) -> None:
         self.points = points
         self.order = order
         self.degree = order - 1
@@ -259,16 +314,17 @@ class BSpline(Weighted, Curve):
         for a in (points, knots, weights):
             if a is not None:
                 a.flags.writeable = False
-        self._power = None
+        self._power: Optional[Union[tuple[NDArray[np.float64], NDArray[np.float64]], tuple[()]]] = None
 
     @classmethod
-    def _raw(cls, points, order, knots, weights=None):
+    def _raw(cls: type[_Spline], points: NDArray[np.float64], order: int, knots: NDArray[np.float64],
+             weights: Optional[NDArray[np.float64]] = None) -> _Spline:
         curve = cls.__new__(cls)
         curve.closed = False
         curve._set(points, order, knots, weights)
         return curve
 
-    def _evaluate(self, u, method=None):
+    def _evaluate(self, u: NDArray[np.float64], method: Optional[str] = None) -> NDArray[np.float64]:
         if method is None:
             fits = self.order <= MATRIX_ORDER and self._power_form() is not None
             method = "matrix" if fits else "de-boor"
@@ -282,15 +338,17 @@ class BSpline(Weighted, Curve):
             out = self._basis(u) @ pts
         else:
             out = np.empty((len(u), pts.shape[1]))
-            u = v.kernel_array(u)
+            t = v.kernel_array(u)
             if method == "de-boor":
-                call(_k.de_boor, len(u) * self.order ** 2, v.kernel_array(pts),
-                     v.kernel_array(self.knots), self.order, u, out)
+                call(_k.de_boor, len(t) * self.order ** 2, v.kernel_array(pts),
+                     v.kernel_array(self.knots), self.order, t, out)
             else:
-                call(_k.piecewise_horner, len(u) * self.order, *self._power_form(), u, out)
+                power = self._power_form()
+                assert power is not None            # "matrix" only where it exists (above)
+                call(_k.piecewise_horner, len(t) * self.order, *power, t, out)
         return project(out) if self.rational else out
 
-    def _power_form(self):
+    def _power_form(self) -> Optional[tuple[NDArray[np.float64], NDArray[np.float64]]]:
         """(breaks, coefficients) of the non-empty knot spans in the power form, or
         None if a coefficient or a span's 1/h is not finite (spans too narrow:
         D^j P ~ 1/h^j)."""
@@ -300,10 +358,11 @@ class BSpline(Weighted, Curve):
             start, h = breaks[:-1], np.diff(breaks)
             spline = BSpline._raw(self.homogeneous() if self.rational else self.points,
                                   self.order, self.knots)
-            rows = []
+            rows: list[NDArray[np.float64]] = []
             with np.errstate(all="ignore"):
                 for j in range(self.order - 1, -1, -1):  # highest power first
                     d = spline.derivative(j)
+                    assert isinstance(d, BSpline)   # a plain spline's derivatives are splines
                     value = np.empty((len(start), d.dimension))
                     call(_k.de_boor, len(start) * d.order ** 2, v.kernel_array(d.points),
                          v.kernel_array(d.knots), d.order, v.kernel_array(start), value)
@@ -311,16 +370,41 @@ class BSpline(Weighted, Curve):
                 coefficients = np.ascontiguousarray(np.stack(rows, axis=1))
                 finite = np.isfinite(coefficients).all() and np.isfinite(1 / h).all()
             self._power = (breaks, coefficients) if finite else ()
-        return self._power or None
+        return self._power if len(self._power) == 2 else None
 
-    def basis(self, u):
-        """The blending functions B_{k,d}(u) of this curve, shape np.shape(u) + (n + 1,)."""
+    def basis(self, u: ArrayLike) -> NDArray[np.float64]:
+        """The blending functions B_{k,d}(u) of this curve, shape np.shape(u) + (n + 1,).
+
+        Parameters
+        ----------
+        u : float or array_like of float
+            Parameters in the curve's ``domain``.
+
+        Returns
+        -------
+        ndarray of float64, shape ``np.shape(u) + (n + 1,)``
+            B_{0,d}(u) … B_{n,d}(u) (:func:`basis`).
+
+        Raises
+        ------
+        ArgumentValueError
+            A parameter outside the domain.
+
+        Examples
+        --------
+        The quadratic open B-spline on 3 points is a Bezier curve: its blending
+        functions at u = 1/2 are (1/4, 1/2, 1/4):
+
+        >>> import scanline as sl
+        >>> sl.curves.BSpline([(0, 0), (2, 2), (4, 0)], order=3).basis(0.5).tolist()
+        [0.25, 0.5, 0.25]
+        """
         return self._basis(parameters("u", u, self.domain))
 
-    def _basis(self, u):
+    def _basis(self, u: NDArray[np.float64]) -> NDArray[np.float64]:
         return basis(self.knots, self.order, u, last=len(self.points) - 1)
 
-    def _derivative(self):
+    def _derivative(self) -> Curve:
         if self.rational:
             return RationalDerivative(BSpline._raw(self.homogeneous(), self.order, self.knots), 1)
         if self.order == 1:
@@ -332,13 +416,40 @@ class BSpline(Weighted, Curve):
         q = np.divide((d - 1) * diff, gap, out=np.zeros_like(diff), where=gap > 0)
         return BSpline._raw(q, d - 1, u[1:-1])
 
-    def insert_knot(self, u, times=1):
+    def insert_knot(self, u: float, times: int = 1) -> "BSpline":
         """The same curve with the knot u inserted ``times`` times (Boehm 1980).
 
         The control points P_{ℓ−d+2} … P_ℓ of u's span ℓ are replaced by
         Qᵢ = (1 − aᵢ) Pᵢ₋₁ + aᵢ Pᵢ, aᵢ = (u − uᵢ)/(u_{i+d−1} − uᵢ); the others are kept.
         u must lie in [u_{d−1}, u_{n+1}) and no knot may end up repeated more than d
         times.
+
+        Parameters
+        ----------
+        u : float
+            The new knot, in [u_{d−1}, u_{n+1}).
+        times : int
+            How many times to insert it, >= 0.
+
+        Returns
+        -------
+        BSpline
+            The same curve (same class) with ``times`` more knots and control points.
+
+        Raises
+        ------
+        ArgumentValueError
+            ``u`` outside the domain, or a knot repeated more than d times.
+
+        Examples
+        --------
+        Inserting u = 1/2 into the quadratic on (0, 0), (2, 2), (4, 0):
+        Q₁ = ½ P₀ + ½ P₁ and Q₂ = ½ P₁ + ½ P₂:
+
+        >>> import scanline as sl
+        >>> c = sl.curves.BSpline([(0, 0), (2, 2), (4, 0)], order=3).insert_knot(0.5)
+        >>> c.points.tolist(), c(0.5).tolist()
+        ([[0.0, 0.0], [1.0, 1.0], [3.0, 1.0], [4.0, 0.0]], [2.0, 1.0])
         """
         lo, hi = self.domain
         u = v.number("u", u)
@@ -375,20 +486,78 @@ class NURBS(BSpline):
     -----
     The curve is Σ wₖPₖB_{k,d}(u) / Σ wₖB_{k,d}(u): a B-spline in homogeneous
     coordinates, projected.  Conic sections are exact, e.g. :func:`nurbs_circle`.
+
+    Parameters
+    ----------
+    points : array_like, shape (n + 1, dim)
+        Control points P₀ … Pₙ, finite.
+    order : int
+        d, 1 ≤ d ≤ n + 1.
+    knots : {"open", "uniform", "periodic"} or array_like, default "open"
+        The knot vector (see :class:`BSpline`).
+    weights : array_like, shape (n + 1,), optional
+        Positive weights; all 1 by default.
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        As :class:`BSpline`.
+
+    Examples
+    --------
+    The quadratic with weights (1, 2, 1) at u = 1/2:
+    (¼·(0, 0) + 2·½·(2, 2) + ¼·(4, 0)) / (¼ + 1 + ¼) = (2, 4/3):
+
+    >>> import scanline as sl
+    >>> c = sl.curves.NURBS([(0, 0), (2, 2), (4, 0)], order=3, weights=[1, 2, 1])
+    >>> c(0.5).round(12).tolist()
+    [2.0, 1.333333333333]
     """
 
-    def __init__(self, points, order=4, knots="open", weights=None):
+    def __init__(self, points: ArrayLike, order: int = 4,
+                 knots: Union[str, ArrayLike, None] = "open",
+                 weights: Optional[ArrayLike] = None) -> None:
         if weights is None:
             weights = np.ones(len(control_points("points", points)))
         super().__init__(points, order, knots, weights)
 
 
-def nurbs_circle(center=(0.0, 0.0), radius=1.0):
+def nurbs_circle(center: tuple[float, float] = (0.0, 0.0), radius: float = 1.0) -> NURBS:
     """An exact circle: a quadratic NURBS with 9 control points (a square's corners and
     edge midpoints), corner weights √2/2 and knots [0 0 0 ¼ ¼ ½ ½ ¾ ¾ 1 1 1].
 
     Counterclockwise, starting and ending at (xc + r, yc).  Every point lies at distance
     ``radius`` from ``center`` (the parameterization is not by arc length).
+
+    Parameters
+    ----------
+    center : (float, float)
+        (xc, yc).
+    radius : float
+        r > 0.
+
+    Returns
+    -------
+    NURBS
+        The circle, on the domain [0, 1].
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        A center or radius that is not a finite number, or r <= 0.
+
+    Notes
+    -----
+    Piegl & Tiller, *The NURBS Book*, section 7.5 (the nine-point circle).
+
+    Examples
+    --------
+    >>> import numpy as np, scanline as sl
+    >>> c = sl.curves.nurbs_circle((1, 1), 2)
+    >>> c(0.25).round(12).tolist(), c(0.5).round(12).tolist()
+    ([1.0, 3.0], [-1.0, 1.0])
+    >>> bool(np.allclose(np.hypot(*(c(np.linspace(0, 1, 9)) - (1, 1)).T), 2))
+    True
     """
     xc, yc = (v.number("center[0]", center[0]), v.number("center[1]", center[1]))
     r = v.number("radius", radius)

@@ -13,6 +13,7 @@ Join(C=0, G=1)
 from typing import NamedTuple
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
@@ -20,28 +21,47 @@ from .base import Curve
 
 
 class Join(NamedTuple):
-    """Order of parametric (C) and geometric (G) continuity at a join; −1: no join."""
+    """Order of parametric (C) and geometric (G) continuity at a join; −1: no join.
+
+    Parameters
+    ----------
+    C : int
+        The order of parametric continuity (up to 2), −1 when not joined.
+    G : int
+        The order of geometric continuity (up to 2), −1 when not joined.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> j = sl.curves.Join(C=0, G=1)
+    >>> str(j), j.G
+    ('C0 G1', 1)
+    >>> str(sl.curves.Join(-1, -1))
+    'not joined'
+    """
 
     C: int
     G: int
 
-    def __str__(self):
+    def __str__(self) -> str:
         return f"C{self.C} G{self.G}" if self.C >= 0 else "not joined"
 
 
-def _close(p, q, tol):
-    return bool(np.linalg.norm(p - q) <= tol * max(1.0, np.linalg.norm(p), np.linalg.norm(q)))
+def _close(p: NDArray[np.float64], q: NDArray[np.float64], tol: float) -> bool:
+    return bool(np.linalg.norm(p - q)
+                <= tol * max(1.0, float(np.linalg.norm(p)), float(np.linalg.norm(q))))
 
 
-def _curvature_vector(d1, d2):
+def _curvature_vector(d1: NDArray[np.float64], d2: NDArray[np.float64]) -> NDArray[np.float64]:
     """κN = (P'' − (P''·T)T) / |P'|², T = P'/|P'|: the same for any regular
     reparameterization, so it is what G2 matches."""
     speed2 = float(d1 @ d1)
     tangent = d1 / np.sqrt(speed2)
-    return (d2 - (d2 @ tangent) * tangent) / speed2
+    kn: NDArray[np.float64] = (d2 - (d2 @ tangent) * tangent) / speed2
+    return kn
 
 
-def continuity(a, b, tol=1e-9):
+def continuity(a: Curve, b: Curve, tol: float = 1e-9) -> Join:
     """Classify the join of the end of curve ``a`` with the start of curve ``b``.
 
     Parameters
@@ -58,6 +78,13 @@ def continuity(a, b, tol=1e-9):
         ``Join(C, G)``: the highest orders (up to 2) of parametric and geometric
         continuity; −1 when the sections do not meet.
 
+    Raises
+    ------
+    ArgumentTypeError
+        ``a`` or ``b`` is not a Curve.
+    ArgumentValueError
+        The curves' dimensions differ, or ``tol`` < 0.
+
     Notes
     -----
     Notes, ch. 5, Q.5.  Cⁿ: the derivatives of orders 0 … n are equal.  G1: the first
@@ -71,6 +98,18 @@ def continuity(a, b, tol=1e-9):
     B. A. Barsky and T. D. DeRose, "Geometric continuity of parametric curves: three
     equivalent characterizations", *IEEE Computer Graphics and Applications* 9(6),
     60-68, 1989.
+
+    Examples
+    --------
+    Two quadratic Bezier sections meeting at (2, 0): the end tangent 2 (P2 - P1) =
+    (2, -2) of the first and the start tangent (2, -2) of the second agree, the
+    second derivatives 2 (P0 - 2 P1 + P2) = (0, -4) and (0, 4) do not:
+
+    >>> import scanline as sl
+    >>> a = sl.curves.Bezier([(0, 0), (1, 1), (2, 0)])
+    >>> b = sl.curves.Bezier([(2, 0), (3, -1), (4, 0)])
+    >>> sl.curves.continuity(a, b)
+    Join(C=1, G=1)
     """
     for name, curve in (("a", a), ("b", b)):
         if not isinstance(curve, Curve):
@@ -90,7 +129,7 @@ def continuity(a, b, tol=1e-9):
     while c < 2 and _close(da[c + 1], db[c + 1], tol):
         c += 1
     g = 0
-    na, nb = np.linalg.norm(da[1]), np.linalg.norm(db[1])
+    na, nb = float(np.linalg.norm(da[1])), float(np.linalg.norm(db[1]))
     scale = tol * max(1.0, na, nb)
     if na <= scale or nb <= scale:
         g = 1 if (na <= scale and nb <= scale) else 0

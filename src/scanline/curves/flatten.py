@@ -37,8 +37,10 @@ W. Boehm, "Inserting new knots into B-spline curves", Computer-Aided Design 12(4
 """
 
 import math
+from typing import Callable, Iterable, Literal, NoReturn, Optional, cast
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
@@ -66,7 +68,7 @@ _START = 16
 _SAMPLES = np.arange(1, 8) / 8.0
 
 
-def tolerance_value(tolerance):
+def tolerance_value(tolerance: float) -> float:
     """Check a flattening tolerance: a finite number > 0."""
     t = v.number("tolerance", tolerance)
     if t <= 0:
@@ -77,7 +79,8 @@ def tolerance_value(tolerance):
     return t
 
 
-def flatten(curve, tolerance=0.25, method="subdivision"):
+def flatten(curve: Curve, tolerance: float = 0.25,
+            method: Literal["subdivision", "wang"] = "subdivision") -> NDArray[np.float64]:
     """A polyline within ``tolerance`` of ``curve``.
 
     Parameters
@@ -116,7 +119,8 @@ def flatten(curve, tolerance=0.25, method="subdivision"):
     return _flatten([curve], tolerance, method, lambda i: "curve")[0]
 
 
-def flatten_all(curves, tolerance=0.25, method="subdivision"):
+def flatten_all(curves: Iterable[Curve], tolerance: float = 0.25,
+                method: Literal["subdivision", "wang"] = "subdivision") -> list[NDArray[np.float64]]:
     """Flatten many curves at once: a list of polylines, as :func:`flatten` gives them.
 
     The Bezier pieces of all curves of one degree and dimension go through one
@@ -137,11 +141,12 @@ def flatten_all(curves, tolerance=0.25, method="subdivision"):
     return _flatten(list(curves), tolerance, method, lambda i: f"curves[{i}]")
 
 
-def _flatten(curves, tolerance, method, name):
+def _flatten(curves: list[Curve], tolerance: float, method: str, name: Callable[[int], str]
+             ) -> list[NDArray[np.float64]]:
     tol = tolerance_value(tolerance)
     v.choice("method", method, METHODS)
-    out = [None] * len(curves)
-    groups = {}
+    out: list[Optional[NDArray[np.float64]]] = [None] * len(curves)
+    groups: dict[tuple[int, ...], list[tuple[int, NDArray[np.float64]]]] = {}
     for i, curve in enumerate(curves):
         if not isinstance(curve, Curve):
             raise ArgumentTypeError(
@@ -150,7 +155,7 @@ def _flatten(curves, tolerance, method, name):
             )
         pieces, homogeneous = _pieces(curve)
         if pieces is not None:
-            groups.setdefault(pieces.shape[1:] + (homogeneous,), []).append((i, pieces))
+            groups.setdefault(pieces.shape[1:] + (int(homogeneous),), []).append((i, pieces))
         elif method == "wang":
             raise ArgumentValueError(
                 f"method='wang' needs a curve in Bezier form (Bezier, BSpline); "
@@ -161,17 +166,17 @@ def _flatten(curves, tolerance, method, name):
     for key, members in groups.items():
         segments = np.concatenate([pieces for _, pieces in members])
         if method == "wang":
-            points, firsts = _wang(segments, key[-1], tol)
+            points, firsts = _wang(segments, bool(key[-1]), tol)
         else:
-            points, firsts = subdivide(segments, tol, weighted=key[-1])
+            points, firsts = subdivide(segments, tol, weighted=bool(key[-1]))
         sizes = np.array([len(pieces) for _, pieces in members])
         polylines = _per_curve(points, firsts[np.cumsum(sizes) - sizes])
         for (i, _), poly in zip(members, polylines):
             out[i] = poly
-    return out
+    return cast(list[NDArray[np.float64]], out)
 
 
-def _per_curve(points, starts):
+def _per_curve(points: NDArray[np.float64], starts: NDArray[np.int64]) -> list[NDArray[np.float64]]:
     """Cut the points of several curves (curve k starts at ``starts[k]``) into one
     polyline each, without repeated consecutive points (the joins of a curve's
     pieces), each at least two points."""
@@ -188,7 +193,8 @@ def _per_curve(points, starts):
     return polylines
 
 
-def subdivide(segments, tolerance, weighted=True):
+def subdivide(segments: ArrayLike, tolerance: float, weighted: bool = True
+              ) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
     """Flatten Bezier segments by recursive subdivision: (S, n + 1, dim + 1) arrays of
     homogeneous control points [w x, w] with w > 0, or (S, n + 1, dim) Cartesian
     control points if not ``weighted``.
@@ -200,12 +206,12 @@ def subdivide(segments, tolerance, weighted=True):
     from .._kernels._jit import call
     from .._kernels.variants import token
 
-    segments = np.ascontiguousarray(segments, dtype=np.float64)
-    if segments.shape[1] < 2:  # degree 0: a point
-        start = segments[:, 0, :-1] / segments[:, 0, -1:] if weighted else segments[:, 0]
-        return start, np.arange(len(segments))
+    segs = np.ascontiguousarray(segments, dtype=np.float64)
+    if segs.shape[1] < 2:  # degree 0: a point
+        start = segs[:, 0, :-1] / segs[:, 0, -1:] if weighted else segs[:, 0]
+        return start, np.arange(len(segs))
     kind = token(k.WEIGHTED if weighted else k.PLAIN)
-    degree = segments.shape[1] - 1
+    degree = segs.shape[1] - 1
     budget = point_budget(degree)
     if budget < 64:
         raise ArgumentValueError(
@@ -214,24 +220,24 @@ def subdivide(segments, tolerance, weighted=True):
             f"{math.isqrt(MAX_WORK // 64) - 1}); split the curve into pieces of lower degree")
     # Wang's bound on the Cartesian points (an estimate for rational segments):
     # refuse at once what is far beyond the budget, rather than after the work
-    cartesian = segments[..., :-1] / segments[..., -1:] if weighted else segments
+    cartesian = segs[..., :-1] / segs[..., -1:] if weighted else segs
     if _wang_estimate(cartesian, tolerance) > 64 * budget:
         _too_many(tolerance, budget)
     # each segment flattens to a few dozen pieces at the usual tolerances
-    points, firsts, truncated = call(k.subdivide, 100 * segments.size, segments, kind,
+    points, firsts, truncated = call(k.subdivide, 100 * segs.size, segs, kind,
                                      tolerance * tolerance, MAX_DEPTH, budget)
     if truncated:
         _too_many(tolerance, budget)
-    return points, firsts
+    return cast(NDArray[np.float64], points), cast(NDArray[np.int64], firsts)
 
 
-def point_budget(degree):
+def point_budget(degree: int) -> int:
     """Most points :func:`subdivide` makes of segments of ``degree``: MAX_POINTS,
     or fewer for high degrees (:data:`MAX_WORK`)."""
     return int(min(MAX_POINTS, MAX_WORK // (degree + 1) ** 2))
 
 
-def _wang_estimate(controls, tolerance):
+def _wang_estimate(controls: NDArray[np.float64], tolerance: float) -> float:
     """Wang's number of equal steps for all the (S, n + 1, dim) segments together,
     unclipped (inf for non-finite values)."""
     n = controls.shape[1] - 1
@@ -245,13 +251,13 @@ def _wang_estimate(controls, tolerance):
     return total if total == total else math.inf
 
 
-def _too_many(tolerance, budget):
+def _too_many(tolerance: float, budget: int) -> NoReturn:
     raise ArgumentValueError(
         f"tolerance={tolerance!r} is too small for a curve this large: flattening "
         f"would take more than {budget} points; use a larger tolerance")
 
 
-def _wang(segments, weighted, tolerance):
+def _wang(segments: NDArray[np.float64], weighted: bool, tolerance: float) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
     """Wang's equal steps for each plain segment: (points, firsts) as :func:`subdivide`."""
     from ..geometry.flatten import MAX_STEPS, steps
     from .bezier import bernstein
@@ -274,10 +280,11 @@ def _wang(segments, weighted, tolerance):
     firsts = np.cumsum(m + 1) - (m + 1)
     seg = np.repeat(np.arange(len(ctrl)), m + 1)
     u = (np.arange(int((m + 1).sum())) - firsts[seg]) / m[seg]
-    return np.einsum("ak,akc->ac", bernstein(n, u), ctrl[seg]), firsts
+    points: NDArray[np.float64] = np.einsum("ak,akc->ac", bernstein(n, u), ctrl[seg])
+    return points, firsts
 
 
-def _distinct(points):
+def _distinct(points: NDArray[np.float64]) -> NDArray[np.float64]:
     """Drop points equal to their predecessor (segment joins); keep at least two."""
     if len(points) < 2:
         return np.vstack([points, points])[:2] if len(points) else points
@@ -290,7 +297,7 @@ def _distinct(points):
 # -- Bezier form of the known curve types ---------------------------------------------
 
 
-def _pieces(curve):
+def _pieces(curve: Curve) -> tuple[Optional[NDArray[np.float64]], bool]:
     """(pieces, homogeneous): the Bezier segments of ``curve``, as Cartesian control
     points (S, n + 1, dim) when it is not rational, else homogeneous; (None, False)
     for a curve without a Bezier form here.
@@ -315,7 +322,8 @@ def _pieces(curve):
     return None, False
 
 
-def spline_pieces(homogeneous, knots, order, domain):
+def spline_pieces(homogeneous: NDArray[np.float64], knots: NDArray[np.float64], order: int, domain: tuple[float, float]
+                  ) -> NDArray[np.float64]:
     """Bezier control points of each polynomial piece of the B-spline with control
     points ``homogeneous`` (n + 1, c) (Cartesian or [w P, w]), knot vector ``knots``
     and ``order`` d, on the non-empty knot spans inside ``domain``: (S, d, c)."""
@@ -336,14 +344,14 @@ def spline_pieces(homogeneous, knots, order, domain):
     values = np.empty((len(u), homogeneous.shape[1]))
     call(_k.de_boor, len(u) * order ** 2, v.kernel_array(homogeneous), v.kernel_array(knots),
          order, v.kernel_array(u), values)
-    values = values.reshape(len(a), order, -1)
-    return np.linalg.solve(collocation[None], values)
+    return cast(NDArray[np.float64],
+                np.linalg.solve(collocation[None], values.reshape(len(a), order, -1)))
 
 
 # -- any other curve: sampled -----------------------------------------------------------
 
 
-def _segment_distance(p, a, b):
+def _segment_distance(p: NDArray[np.float64], a: NDArray[np.float64], b: NDArray[np.float64]) -> NDArray[np.float64]:
     """Distance from points p (I, k, dim) to the segments a-b (I, dim) each."""
     ab = (b - a)[:, None, :]
     ap = p - a[:, None, :]
@@ -351,12 +359,12 @@ def _segment_distance(p, a, b):
     with np.errstate(invalid="ignore", divide="ignore"):
         t = np.where(len2 > 0, (ap * ab).sum(axis=2) / np.where(len2 > 0, len2, 1), 0.0)
     t = np.clip(t, 0.0, 1.0)
-    return np.linalg.norm(ap - t[..., None] * ab, axis=2)
+    return cast(NDArray[np.float64], np.linalg.norm(ap - t[..., None] * ab, axis=2))
 
 
-def _sampled(curve, tolerance):
+def _sampled(curve: Curve, tolerance: float) -> NDArray[np.float64]:
     lo, hi = curve.domain
-    done = []
+    done: list[NDArray[np.float64]] = []
     edges = np.linspace(lo, hi, _START + 1)
     left, right = edges[:-1], edges[1:]
     for _ in range(MAX_DEPTH):
@@ -375,5 +383,5 @@ def _sampled(curve, tolerance):
                 f"take more than {MAX_POINTS} points; use a larger tolerance"
             )
     done.append(left)
-    breaks = np.sort(np.concatenate(done + [[hi]]))
+    breaks = np.sort(np.concatenate(done + [np.array([hi])]))
     return curve.evaluate(breaks)

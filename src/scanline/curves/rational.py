@@ -6,8 +6,10 @@ C⁽ᵏ⁾ = (A⁽ᵏ⁾ − Σᵢ₌₁ᵏ C(k, i) w⁽ⁱ⁾ C⁽ᵏ⁻ⁱ⁾)
 """
 
 from math import comb
+from typing import Optional
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .base import Curve
 
@@ -15,18 +17,21 @@ from .base import Curve
 class Weighted:
     """Mixin of curves with control ``points`` and optional ``weights``."""
 
+    points: NDArray[np.float64]
+    weights: Optional[NDArray[np.float64]]
+
     @property
-    def rational(self):
+    def rational(self) -> bool:
         """True if the curve has weights (a rational curve)."""
         return self.weights is not None
 
-    def homogeneous(self):
+    def homogeneous(self) -> NDArray[np.float64]:
         """Control points [wₖPₖ, wₖ] (plain curves: [Pₖ, 1]), shape (n + 1, dim + 1)."""
         w = np.ones(len(self.points)) if self.weights is None else self.weights
         return np.hstack([self.points * w[:, None], w[:, None]])
 
 
-def project(homogeneous):
+def project(homogeneous: NDArray[np.float64]) -> NDArray[np.float64]:
     """Points (..., dim + 1) in homogeneous coordinates -> (..., dim) Cartesian points."""
     return homogeneous[..., :-1] / homogeneous[..., -1:]
 
@@ -34,13 +39,13 @@ def project(homogeneous):
 class RationalDerivative(Curve):
     """The k-th derivative of the rational curve whose homogeneous form is ``homogeneous``."""
 
-    def __init__(self, homogeneous, k):
+    def __init__(self, homogeneous: Curve, k: int) -> None:
         self.homogeneous = homogeneous
         self.k = k
         self.domain = homogeneous.domain
         self.dimension = homogeneous.dimension - 1
 
-    def _evaluate(self, u):
+    def _evaluate(self, u: NDArray[np.float64]) -> NDArray[np.float64]:
         h = [self.homogeneous.derivative(j)._evaluate(u) for j in range(self.k + 1)]
         w = h[0][:, -1:]
         c = [h[0][:, :-1] / w]
@@ -51,5 +56,5 @@ class RationalDerivative(Curve):
             c.append(a / w)
         return np.ascontiguousarray(c[self.k])
 
-    def _derivative(self):
+    def _derivative(self) -> Curve:
         return RationalDerivative(self.homogeneous, self.k + 1)

@@ -40,7 +40,8 @@ def test_the_distribution_name_and_one_version():
     assert project["name"] == "scanline-graphics"
     assert "version" not in project and project["dynamic"] == ["version"]
     assert scanline.__version__ == "0.2.0"
-    releases = re.findall(r"^## \[(\d+\.\d+\.\d+)\] - ", (ROOT / "CHANGELOG.md").read_text(), re.M)
+    changelog = (ROOT / "CHANGELOG.md").read_text()
+    releases = re.findall(r"^## \[(\d+\.\d+\.\d+)\] - ", changelog, re.M)
     assert releases[:2] == ["0.2.0", "0.1.0"]
 
 

@@ -29,6 +29,7 @@ COMPLETE = [
     "scanline.color",
     "scanline.fractals",
     "scanline.raytrace",
+    "scanline.raster",
 ]
 
 

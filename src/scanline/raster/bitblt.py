@@ -38,11 +38,19 @@ code  name                result             code  name                result
 """
 
 import numbers
+from typing import TYPE_CHECKING, Any, Callable, Optional, Sequence, Tuple, Union
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
+
+if TYPE_CHECKING:
+    from ..framebuffer import FrameBuffer
+
+#: A raster operation: a name of OPS, an alias or the X11 code 0..15.
+Op = Union[str, int]
 
 #: The 16 raster operations by name, in X11 code order.
 OPS = ("clear", "and", "and-reverse", "copy", "and-inverted", "noop", "xor", "or", "nor",
@@ -51,7 +59,7 @@ OPS = ("clear", "and", "and-reverse", "copy", "and-inverted", "noop", "xor", "or
 ALIASES = {"not": "copy-inverted", "xnor": "equiv", "src": "copy", "dst": "noop",
            "zero": "clear", "one": "set"}
 
-_FUNCTIONS = (
+_FUNCTIONS: Tuple[Callable[[NDArray[np.uint8], NDArray[np.uint8]], NDArray[np.uint8]], ...] = (
     lambda s, d: np.zeros_like(d),
     lambda s, d: s & d,
     lambda s, d: s & ~d,
@@ -71,9 +79,31 @@ _FUNCTIONS = (
 )
 
 
-def op_code(op):
-    """The X11 code 0..15 of ``op`` (a name of :data:`OPS`, an alias, or the code)."""
-    if isinstance(op, numbers.Integral) and not isinstance(op, bool) and 0 <= op <= 15:
+def op_code(op: object) -> int:
+    """The X11 code 0..15 of ``op`` (a name of :data:`OPS`, an alias, or the code).
+
+    Parameters
+    ----------
+    op : str or int
+        A name of :data:`OPS`, an alias of :data:`ALIASES`, or a code 0..15.
+
+    Returns
+    -------
+    int
+        The X11 code.
+
+    Raises
+    ------
+    ArgumentValueError
+        For anything else.
+
+    Examples
+    --------
+    >>> from scanline.raster import op_code
+    >>> op_code("xor"), op_code("not"), op_code(7)
+    (6, 12, 7)
+    """
+    if isinstance(op, numbers.Integral) and not isinstance(op, bool) and 0 <= int(op) <= 15:
         return int(op)
     if isinstance(op, str):
         name = ALIASES.get(op, op)
@@ -83,12 +113,38 @@ def op_code(op):
                              f"code 0..15); got {v._show(op)}")
 
 
-def apply_op(op, s, d):
-    """The raster operation ``op`` on uint8 arrays of source and destination values."""
+def apply_op(op: Op, s: NDArray[np.uint8], d: NDArray[np.uint8]) -> NDArray[np.uint8]:
+    """The raster operation ``op`` on uint8 arrays of source and destination values.
+
+    Parameters
+    ----------
+    op : str or int
+        The operation (see :func:`op_code`).
+    s, d : numpy.ndarray
+        uint8 source and destination values, of one shape.
+
+    Returns
+    -------
+    numpy.ndarray
+        uint8, the result bitwise.
+
+    Raises
+    ------
+    ArgumentValueError
+        For an unknown op.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from scanline.raster import apply_op
+    >>> s, d = np.array([0b1010], np.uint8), np.array([0b1100], np.uint8)
+    >>> [int(apply_op(op, s, d)[0]) for op in ("and", "or", "xor", "nand")]
+    [8, 14, 6, 247]
+    """
     return _FUNCTIONS[op_code(op)](s, d)
 
 
-def _rect(name, value):
+def _rect(name: str, value: Any) -> Tuple[int, int, int, int]:
     try:
         x, y, w, h = (v.coordinate(f"{name}[{i}]", c) for i, c in enumerate(value))
     except (TypeError, ValueError) as error:
@@ -100,7 +156,7 @@ def _rect(name, value):
     return x, y, w, h
 
 
-def _point(name, value):
+def _point(name: str, value: Any) -> Tuple[int, int]:
     try:
         x, y = (v.coordinate(f"{name}[{i}]", c) for i, c in enumerate(value))
     except (TypeError, ValueError) as error:
@@ -110,7 +166,9 @@ def _point(name, value):
     return x, y
 
 
-def clip_transfer(src_size, dst_size, rect, at):
+def clip_transfer(src_size: Tuple[int, int], dst_size: Tuple[int, int],
+                  rect: Tuple[int, int, int, int],
+                  at: Tuple[int, int]) -> Tuple[int, int, int, int, int, int]:
     """The part of a transfer inside both rasters: (sx, sy, dx, dy, w, h), w or h 0
     when nothing is left."""
     sw, sh = src_size
@@ -130,7 +188,8 @@ def clip_transfer(src_size, dst_size, rect, at):
     return x, y, dx, dy, max(w, 0), max(h, 0)
 
 
-def bitblt(dst, src, rect, at, op="copy"):
+def bitblt(dst: "FrameBuffer", src: "FrameBuffer", rect: Sequence[int], at: Sequence[int],
+           op: Op = "copy") -> None:
     """Transfer the block ``rect`` of ``src`` to ``at`` in ``dst``, combining by ``op``.
 
     Parameters
@@ -150,6 +209,26 @@ def bitblt(dst, src, rect, at, op="copy"):
     Parts of the block outside either frame buffer are clipped.  In mode "1" the
     operation works on bits; in mode "P" on color-table indices (an index the table
     does not hold raises, the frame buffer is then left unchanged).
+
+    Hearn & Baker, section 16-3, "Raster animations" (block transfers, Fig. 16-3).
+
+    Raises
+    ------
+    ArgumentTypeError
+        When ``dst`` or ``src`` is not a FrameBuffer, or ``rect`` / ``at`` not a
+        rectangle / point.
+    ArgumentValueError
+        For frame buffers of two modes, an unknown op, a negative size, or (mode "P")
+        a result index the color table lacks.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> dst = sl.FrameBuffer(4, 1, mode="L", background=0b1100)
+    >>> src = sl.FrameBuffer(2, 1, mode="L", background=0b1010)
+    >>> sl.raster.bitblt(dst, src, (0, 0, 2, 1), (1, 0), op="and")   # 1100 & 1010 = 1000
+    >>> dst.to_array().tolist()
+    [[12, 8, 8, 12]]
     """
     from ..framebuffer import FrameBuffer
 
@@ -188,6 +267,18 @@ class XorSprite:
     shows it, drawing it again at the same place restores what was under it, so no
     copy of the background is needed (Hearn & Baker §16-3).
 
+    Parameters
+    ----------
+    sprite : FrameBuffer
+        The sprite's pixels, xor-ed onto the frame buffer (of its mode).
+
+    Raises
+    ------
+    ArgumentTypeError
+        When ``sprite`` is not a FrameBuffer.
+
+    Examples
+    --------
     >>> import scanline as sl
     >>> fb = sl.FrameBuffer(5, 1, mode="L", background=10)
     >>> ball = XorSprite(sl.FrameBuffer(1, 1, mode="L", background=255))
@@ -198,32 +289,96 @@ class XorSprite:
     [[10, 10, 10, 10, 10]]
     """
 
-    def __init__(self, sprite):
+    def __init__(self, sprite: "FrameBuffer") -> None:
         from ..framebuffer import FrameBuffer
 
         if not isinstance(sprite, FrameBuffer):
             raise ArgumentTypeError(f"sprite must be a FrameBuffer, got {type(sprite).__name__}")
         self.sprite = sprite
-        self.at = None
+        self.at: Optional[Tuple[int, int]] = None
 
-    def _blit(self, fb, at):
+    def _blit(self, fb: "FrameBuffer", at: Tuple[int, int]) -> None:
         bitblt(fb, self.sprite, (0, 0, self.sprite.width, self.sprite.height), at, op="xor")
 
-    def show(self, fb, at):
-        """Draw the sprite at ``at`` (its bottom-left pixel)."""
+    def show(self, fb: "FrameBuffer", at: Sequence[int]) -> None:
+        """Draw the sprite at ``at`` (its bottom-left pixel).
+
+        Parameters
+        ----------
+        fb : FrameBuffer
+            The frame buffer drawn on.
+        at : (x, y)
+            Where the sprite's bottom-left pixel goes.
+
+        Raises
+        ------
+        ArgumentValueError
+            When the sprite is already shown.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> fb = sl.FrameBuffer(3, 1, mode="1")
+        >>> sl.raster.XorSprite(sl.FrameBuffer(1, 1, mode="1", background=1)).show(fb, (2, 0))
+        >>> print(sl.text_image(fb))
+        --#
+        """
         if self.at is not None:
             raise ArgumentValueError("the sprite is already shown; use move() or hide() first")
         self.at = _point("at", at)
         self._blit(fb, self.at)
 
-    def hide(self, fb):
-        """Remove the sprite: the pixels under it come back."""
+    def hide(self, fb: "FrameBuffer") -> None:
+        """Remove the sprite: the pixels under it come back.
+
+        Parameters
+        ----------
+        fb : FrameBuffer
+            The frame buffer it is shown on.
+
+        Raises
+        ------
+        ArgumentValueError
+            When the sprite is not shown.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> fb = sl.FrameBuffer(2, 1, mode="L", background=7)
+        >>> dot = sl.raster.XorSprite(sl.FrameBuffer(1, 1, mode="L", background=1))
+        >>> dot.show(fb, (0, 0)); fb.to_array().tolist()      # 7 ^ 1 = 6
+        [[6, 7]]
+        >>> dot.hide(fb); fb.to_array().tolist()
+        [[7, 7]]
+        """
         if self.at is None:
             raise ArgumentValueError("the sprite is not shown")
         self._blit(fb, self.at)
         self.at = None
 
-    def move(self, fb, at):
-        """Hide the sprite where it is and show it at ``at``."""
+    def move(self, fb: "FrameBuffer", at: Sequence[int]) -> None:
+        """Hide the sprite where it is and show it at ``at``.
+
+        Parameters
+        ----------
+        fb : FrameBuffer
+            The frame buffer it is shown on.
+        at : (x, y)
+            The new place of its bottom-left pixel.
+
+        Raises
+        ------
+        ArgumentValueError
+            When the sprite is not shown.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> fb = sl.FrameBuffer(3, 1, mode="1")
+        >>> dot = sl.raster.XorSprite(sl.FrameBuffer(1, 1, mode="1", background=1))
+        >>> dot.show(fb, (0, 0)); dot.move(fb, (2, 0))
+        >>> print(sl.text_image(fb))
+        --#
+        """
         self.hide(fb)
         self.show(fb, at)

@@ -9,6 +9,7 @@
 """
 
 import math
+from typing import TYPE_CHECKING, Any, Optional, Sequence, Tuple
 
 import numpy as np
 
@@ -16,10 +17,16 @@ from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
 from .bitblt import _rect
 
+if TYPE_CHECKING:
+    from .._typing import Angle
+    from ..framebuffer import FrameBuffer
+
 METHODS = ("area", "nearest")
 
 
-def rotate_block(dst, src, rect, angle, center=None, method=None):
+def rotate_block(dst: "FrameBuffer", src: "FrameBuffer", rect: Sequence[int], angle: "Angle",
+                 center: Optional[Tuple[float, float]] = None,
+                 method: Optional[str] = None) -> None:
     """Rotate the block ``rect`` of ``src`` by ``angle`` and draw it into ``dst``.
 
     Parameters
@@ -47,6 +54,26 @@ def rotate_block(dst, src, rect, angle, center=None, method=None):
     square is clipped against the destination pixels its bounding box meets
     (Sutherland–Hodgman) and the clipped area measured (shoelace formula).  Results
     are rounded half up.
+
+    Raises
+    ------
+    ArgumentTypeError
+        When ``dst`` or ``src`` is not a FrameBuffer, or ``center`` not a point.
+    ArgumentValueError
+        For frame buffers of two modes, an unknown method, ``"area"`` in mode "1" or
+        "P", a bad angle or a center outside the coordinate range.
+
+    Examples
+    --------
+    >>> import math
+    >>> import scanline as sl
+    >>> src = sl.FrameBuffer(3, 1, mode="1", background=1)
+    >>> dst = sl.FrameBuffer(3, 3, mode="1")
+    >>> sl.raster.rotate_block(dst, src, (0, 0, 3, 1), math.pi / 2, center=(1, 1))
+    >>> print(sl.text_image(dst))
+    -#-
+    -#-
+    -#-
     """
     from ..framebuffer import FrameBuffer
 
@@ -83,7 +110,7 @@ def rotate_block(dst, src, rect, angle, center=None, method=None):
         _nearest(dst, src, (x0, y0, x1 - x0, y1 - y0), (cx, cy), (px, py), cos_a, sin_a)
 
 
-def _pair(value):
+def _pair(value: Any) -> Tuple[Any, Any]:
     try:
         a, b = value
     except (TypeError, ValueError):
@@ -91,7 +118,8 @@ def _pair(value):
     return a, b
 
 
-def _area(dst, src, block, c, p, cos_a, sin_a):
+def _area(dst: "FrameBuffer", src: "FrameBuffer", block: Tuple[int, int, int, int],
+          c: Tuple[float, float], p: Tuple[float, float], cos_a: float, sin_a: float) -> None:
     from .._kernels._jit import call
     from .._kernels.rotate import rotate_area
 
@@ -110,7 +138,9 @@ def _area(dst, src, block, c, p, cos_a, sin_a):
     dbuf[touched] = np.floor(mixed[touched] + 0.5).clip(0, 255).astype(np.uint8)
 
 
-def _nearest(dst, src, block, c, p, cos_a, sin_a):
+def _nearest(dst: "FrameBuffer", src: "FrameBuffer", block: Tuple[int, int, int, int],
+             c: Tuple[float, float], p: Tuple[float, float], cos_a: float,
+             sin_a: float) -> None:
     x0, y0, w, h = block
     half = math.hypot(w, h) / 2 + 1
     gx = np.arange(max(0, math.floor(p[0] - half)), min(dst.width, math.ceil(p[0] + half) + 1))

@@ -49,6 +49,7 @@ html_title = f"scanline {release}"
 html_static_path = []
 html_theme_options = {
     "navigation_with_keys": False,
+    "header_links_before_dropdown": 3,
     "show_toc_level": 2,
 }
 

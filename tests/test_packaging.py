@@ -53,8 +53,8 @@ def test_install_hints_name_the_distribution():
 
     wrong = re.compile(r"""(install|\(|`)\s*['"]?scanline\[""")
     # docs/studio.md's notebook hint is the studio's to change with its notebook extra
-    files = [ROOT / "README.md", *(p for p in (ROOT / "docs").glob("*.md") if p.name != "studio.md"),
-             *(ROOT / "src" / "scanline").rglob("*.py")]
+    pages = [p for p in (ROOT / "docs").glob("*.md") if p.name != "studio.md"]
+    files = [ROOT / "README.md", *pages, *(ROOT / "src" / "scanline").rglob("*.py")]
     bad = [f"{f.relative_to(ROOT)}:{n}" for f in files
            for n, line in enumerate(f.read_text(encoding="utf-8").splitlines(), 1)
            if wrong.search(line)]

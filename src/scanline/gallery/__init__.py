@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import textwrap
 from collections.abc import Callable, Sequence
 from typing import Any
 
@@ -52,6 +53,7 @@ def main(figures: Sequence[Callable[[], Any]],
         if index is None:
             print(f"{item}.gif: an animation\n")
         else:
-            print(f"{item.name}.png: {item.title}.\n{item.caption}\n({item.source}.)\n")
+            print(textwrap.fill(f"{item.name}.png: {item.title}. {item.caption} "
+                                f"({item.source}.)", 88) + "\n")
 
     write(figures, animations, out, show)

@@ -30,6 +30,7 @@ COMPLETE = [
     "scanline.fractals",
     "scanline.raytrace",
     "scanline.raster",
+    "scanline.rendering",
 ]
 
 

@@ -13,7 +13,7 @@ pipeline and does nothing else (``docs/architecture.md``):
 
 import math
 from dataclasses import replace
-from typing import Any, Iterable, Optional, Sequence, Tuple, Union
+from typing import TYPE_CHECKING, Any, Iterable, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -27,13 +27,38 @@ from ..projection import Camera
 from .options import RenderOptions
 from .result import Rendering
 
+if TYPE_CHECKING:
+    from ..lighting import AmbientLight, DirectionalLight
+
 #: The modes :func:`render` draws lit surfaces into ("none" shading: every mode).
 MODES = ("L", "RGB", "RGBA")
 
 
-def default_lights(camera):
+def default_lights(camera: Camera) -> Tuple["AmbientLight", "DirectionalLight"]:
     """Ambient light and one white directional light coming from above the viewer's
-    left shoulder (the direction fixed in viewing coordinates)."""
+    left shoulder (the direction fixed in viewing coordinates).
+
+    Parameters
+    ----------
+    camera : Camera
+        The viewer.
+
+    Returns
+    -------
+    (AmbientLight, DirectionalLight)
+        I_a = 0.2, and I_l = 0.9 traveling along (0.45, -0.55, -1) in viewing
+        coordinates (Hearn & Baker 14-1, 14-2).
+
+    Examples
+    --------
+    A camera on +z looking at the origin views along the world's axes, so the light
+    travels along (0.45, -0.55, -1) / |(0.45, -0.55, -1)| = / 1.22678:
+
+    >>> import scanline as sl
+    >>> ambient, sun = sl.rendering.default_lights(sl.Camera(eye=(0, 0, 5), target=(0, 0, 0)))
+    >>> ambient.intensity.tolist(), sun.direction.round(4).tolist()
+    ([0.2, 0.2, 0.2], [0.3668, -0.4483, -0.8151])
+    """
     from ..lighting import AmbientLight, DirectionalLight
 
     m = camera.projection.orientation @ camera.view_matrix
@@ -190,9 +215,48 @@ def render(fb: FrameBuffer, meshes: Union[Mesh, Iterable[Mesh]], camera: Camera,
                crease_angle=crease_angle)
 
 
-def run(fb, meshes, camera, options, materials=None, colors=None, crease_angle=math.radians(30)):
+def run(fb: FrameBuffer, meshes: Any, camera: Camera, options: RenderOptions,
+        materials: Any = None, colors: Any = None,
+        crease_angle: Optional[float] = math.radians(30)) -> Rendering:
     """The passes of :func:`render` with its options already made
-    (:class:`RenderOptions`)."""
+    (:class:`RenderOptions`).
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+        Drawn into.
+    meshes : Mesh, solid, or a list of them
+        As :func:`scanline.render` takes them.
+    camera : Camera
+        The viewer.
+    options : RenderOptions
+        The method, its options, the shading, culling, shadows and antialiasing.
+    materials, colors : optional
+        As :func:`scanline.render` takes them.
+    crease_angle : float or None
+        As :func:`scanline.render` takes it.
+
+    Returns
+    -------
+    Rendering
+        What was drawn.
+
+    Raises
+    ------
+    ArgumentValueError
+        A method that cannot draw the scene (solids need a ray-casting method), or a
+        supersampled render past the memory budget.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> fb = sl.FrameBuffer(4, 4, mode="L")
+    >>> cam = sl.Camera(eye=(0, 0, 5), target=(0, 0, 0),
+    ...                 projection=sl.projection.orthographic(window=(-2, -2, 2, 2)))
+    >>> options = sl.rendering.RenderOptions(method="painter")
+    >>> sl.rendering.run(fb, sl.mesh.cube(2), cam, options)
+    <Rendering method='painter' 4x4: 1 mesh(es), 6 faces, 4 of 16 pixels covered>
+    """
     from ..screen import prepare
     from ..shading import composite, shade
     from ..visible import METHODS, Fragments

@@ -16,13 +16,14 @@ from ..visible.methods import METHODS, MethodOptions
 class RenderOptions:
     """Everything :func:`scanline.render` decides with besides the scene.
 
-    Attributes
+    Parameters
     ----------
     method : str
         A name in :data:`scanline.visible.METHODS`.
     visible : MethodOptions
         The method's options (only those the method reads may be set).
     shading : ShadingOptions
+        The shading stage's options.
     cull_back_faces : bool
         Drop the facets turned away from the viewer before any method runs.
     shadows : bool
@@ -31,6 +32,21 @@ class RenderOptions:
         The method to draw with when ``method`` gives up on a scene.
     antialias : int
         Samples per pixel side of supersampling (1: none).
+
+    Raises
+    ------
+    ArgumentValueError
+        An unknown method or fallback, antialias outside 1..8, or a method option
+        the method does not read.
+    ArgumentTypeError
+        ``cull_back_faces`` or ``shadows`` not a bool.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> options = sl.rendering.RenderOptions(method="painter", antialias=2)
+    >>> options.method, options.antialias, options.shading.model
+    ('painter', 2, 'gouraud')
     """
     method: str = "z-buffer"
     visible: MethodOptions = field(default_factory=MethodOptions)
@@ -40,7 +56,7 @@ class RenderOptions:
     fallback: Optional[str] = None
     antialias: int = 1
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         a = self.antialias
         if not isinstance(a, (int, np.integer)) or isinstance(a, bool) or not 1 <= a <= 8:
             raise ArgumentValueError(f"antialias must be an integer in 1..8 (samples per pixel "

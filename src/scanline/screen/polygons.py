@@ -22,8 +22,10 @@ that face's plane and keeps its face index.
 """
 
 from dataclasses import dataclass
+from typing import Any, Optional, Sequence
 
 import numpy as np
+from numpy.typing import ArrayLike, DTypeLike, NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
@@ -50,42 +52,109 @@ class ScreenPolygons:
         (A, B, C, D) of each polygon's face in device space, C > 0.
     width, height : int
         The device the coordinates belong to.
+
+    Parameters
+    ----------
+    vertices, offsets, face, planes, width, height
+        The attributes above (checked by the methods that take the polygons; build
+        checked ones with :meth:`from_device`).
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> sp = sl.screen.ScreenPolygons.from_device(
+    ...     [[(0, 0, 0.5), (4, 0, 0.5), (0, 4, 0.5)]], 8, 8)
+    >>> len(sp), sp.counts.tolist(), sp.face.tolist()
+    (1, [3], [0])
     """
 
-    vertices: np.ndarray
-    offsets: np.ndarray
-    face: np.ndarray
-    planes: np.ndarray
+    vertices: NDArray[np.float64]
+    offsets: NDArray[np.int64]
+    face: NDArray[np.int64]
+    planes: NDArray[np.float64]
     width: int
     height: int
 
-    def __len__(self):
+    def __len__(self) -> int:
         return len(self.offsets) - 1
 
-    def polygon(self, p):
-        """The (K, 3) vertices of polygon ``p``."""
+    def polygon(self, p: int) -> NDArray[np.float64]:
+        """The (K, 3) vertices of polygon ``p``.
+
+        Parameters
+        ----------
+        p : int
+            The polygon's number.
+
+        Returns
+        -------
+        numpy.ndarray
+            A view of its (K, 3) device vertices.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> sp = sl.screen.ScreenPolygons.from_device([[(0, 0, 1), (2, 0, 1), (0, 2, 1)]], 4, 4)
+        >>> sp.polygon(0).tolist()
+        [[0.0, 0.0, 1.0], [2.0, 0.0, 1.0], [0.0, 2.0, 1.0]]
+        """
         return self.vertices[self.offsets[p]:self.offsets[p + 1]]
 
     @property
-    def counts(self):
+    def counts(self) -> NDArray[np.int64]:
+        """The number of vertices of each polygon, (P,) int64."""
         return np.diff(self.offsets)
 
-    def depth_at(self, p, x, y):
-        """Depth of polygon ``p``'s plane above the device point (x, y)."""
+    def depth_at(self, p: int, x: ArrayLike, y: ArrayLike) -> Any:
+        """Depth of polygon ``p``'s plane above the device point (x, y).
+
+        Parameters
+        ----------
+        p : int
+            The polygon's number.
+        x, y : float or array_like
+            Device points.
+
+        Returns
+        -------
+        float or numpy.ndarray
+            ``-(A x + B y + D) / C``.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> tri = [(0, 0, 0.0), (4, 0, 1.0), (0, 4, 0.0)]     # depth x / 4
+        >>> sp = sl.screen.ScreenPolygons.from_device([tri], 8, 8)
+        >>> float(sp.depth_at(0, 2, 1))
+        0.5
+        """
         a, b, c, d = self.planes[p]
         return -(a * np.asarray(x) + b * np.asarray(y) + d) / c
 
-    def extents(self):
-        """(P, 6) rows xmin, xmax, ymin, ymax, zmin, zmax of each polygon."""
+    def extents(self) -> NDArray[np.float64]:
+        """(P, 6) rows xmin, xmax, ymin, ymax, zmin, zmax of each polygon.
+
+        Returns
+        -------
+        numpy.ndarray
+            float64 (P, 6).
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> sp = sl.screen.ScreenPolygons.from_device([[(1, 0, 0.5), (4, 2, 0.25), (0, 3, 0.75)]], 8, 8)
+        >>> sp.extents().tolist()
+        [[0.0, 4.0, 0.0, 3.0, 0.25, 0.75]]
+        """
         if not len(self):
             return np.empty((0, 6))
         k = self.offsets[1] - self.offsets[0]
         if len(self.vertices) == k * len(self) and (np.diff(self.offsets) == k).all():
-            v = self.vertices.reshape(len(self), k, 3)      # all of k vertices
-            lo, hi = v[:, 0].copy(), v[:, 0].copy()         # (elementwise: numpy's
+            corners = self.vertices.reshape(len(self), k, 3)  # all of k vertices
+            lo, hi = corners[:, 0].copy(), corners[:, 0].copy()  # (elementwise: numpy's
             for j in range(1, k):                           # reductions over a short
-                np.minimum(lo, v[:, j], out=lo)             # axis are slow)
-                np.maximum(hi, v[:, j], out=hi)
+                np.minimum(lo, corners[:, j], out=lo)       # axis are slow)
+                np.maximum(hi, corners[:, j], out=hi)
             return np.stack([lo[:, 0], hi[:, 0], lo[:, 1], hi[:, 1], lo[:, 2], hi[:, 2]], 1)
         starts = self.offsets[:-1]
         out = np.empty((len(self), 6))
@@ -95,25 +164,88 @@ class ScreenPolygons:
             out[:, 2 * axis + 1] = np.maximum.reduceat(col, starts)
         return out
 
-    def subset(self, order):
-        """The polygons ``order`` (indices), in that order."""
-        order = np.asarray(order, np.int64)
-        counts = self.counts[order]
-        offsets = np.concatenate([[0], np.cumsum(counts)]).astype(np.int64)
-        idx = (np.repeat(self.offsets[order] - offsets[:-1], counts)
-               + np.arange(offsets[-1])) if len(order) else np.empty(0, np.int64)
-        return ScreenPolygons(self.vertices[idx], offsets, self.face[order],
-                              self.planes[order], self.width, self.height)
+    def subset(self, order: ArrayLike) -> "ScreenPolygons":
+        """The polygons ``order`` (indices), in that order.
 
-    def pieces(self):
-        """A list of ``(vertices (K, 3), face)`` pairs, in order."""
+        Parameters
+        ----------
+        order : array_like of int
+            Polygon numbers (repeats allowed).
+
+        Returns
+        -------
+        ScreenPolygons
+            Those polygons, with their faces and planes.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> a = [(0, 0, 0.5), (2, 0, 0.5), (0, 2, 0.5)]
+        >>> b = [(4, 4, 0.5), (6, 4, 0.5), (4, 6, 0.5)]
+        >>> sp = sl.screen.ScreenPolygons.from_device([a, b], 8, 8, faces=[7, 9])
+        >>> sp.subset([1, 0]).face.tolist()
+        [9, 7]
+        """
+        chosen = np.asarray(order, np.int64)
+        counts = self.counts[chosen]
+        offsets = np.concatenate([[0], np.cumsum(counts)]).astype(np.int64)
+        idx = (np.repeat(self.offsets[chosen] - offsets[:-1], counts)
+               + np.arange(offsets[-1])) if len(chosen) else np.empty(0, np.int64)
+        return ScreenPolygons(self.vertices[idx], offsets, self.face[chosen],
+                              self.planes[chosen], self.width, self.height)
+
+    def pieces(self) -> list[tuple[NDArray[np.float64], int]]:
+        """A list of ``(vertices (K, 3), face)`` pairs, in order.
+
+        Returns
+        -------
+        list of (numpy.ndarray, int)
+            Each polygon's vertices and face.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> sp = sl.screen.ScreenPolygons.from_device([[(0, 0, 0), (2, 0, 0), (0, 2, 0)]], 4, 4, faces=[5])
+        >>> [(len(vertices), face) for vertices, face in sp.pieces()]
+        [(3, 5)]
+        """
         return [(self.polygon(p), int(self.face[p])) for p in range(len(self))]
 
     @classmethod
-    def from_device(cls, polygons, width, height, faces=None):
+    def from_device(cls, polygons: Any, width: int, height: int,
+                    faces: Optional[ArrayLike] = None) -> "ScreenPolygons":
         """Screen polygons from a list of (K, 3) device-space polygons (x, y, depth
         per vertex), each convex and planar; ``faces`` their face indices (default
-        0, 1, 2 ...).  Polygons seen edge-on (no area) are dropped."""
+        0, 1, 2 ...).  Polygons seen edge-on (no area) are dropped.
+
+        Parameters
+        ----------
+        polygons : sequence of (K, 3) array_like, or (P, K, 3) array_like
+            The polygons: device x, y and depth per vertex.
+        width, height : int
+            The device's size.
+        faces : array_like of int, optional
+            One face number per polygon.
+
+        Returns
+        -------
+        ScreenPolygons
+            The polygons with area, their planes oriented with C > 0.
+
+        Raises
+        ------
+        ArgumentValueError
+            For a polygon that is not (K, 3) with K >= 3, not finite, not planar or not
+            convex, or faces that are not one integer per polygon.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> sp = sl.screen.ScreenPolygons.from_device(
+        ...     [[(0, 0, 0.5), (4, 0, 0.5), (0, 4, 0.5)], [(0, 0, 0), (1, 1, 0), (2, 2, 0)]], 8, 8)
+        >>> len(sp), sp.planes[0].tolist()         # the edge-on one dropped; plane z = 0.5
+        (1, [0.0, 0.0, 16.0, -8.0])
+        """
         w = v.positive_int("width", width)
         h = v.positive_int("height", height)
         if isinstance(polygons, (list, tuple)):
@@ -145,17 +277,17 @@ class ScreenPolygons:
                 raise ArgumentValueError(
                     f"polygons[{i}] is not planar: {v._show(arrays[i].tolist())}; give "
                     "planar polygons (split a bent one into triangles)")
-        if faces is None:
-            faces = np.arange(len(counts), dtype=np.int64)
-        faces = np.asarray(faces)
-        if faces.shape != (len(counts),) or (len(counts) and faces.dtype.kind not in "iu"):
+        numbers = (np.arange(len(counts), dtype=np.int64) if faces is None
+                   else np.asarray(faces))
+        if numbers.shape != (len(counts),) or (len(counts) and numbers.dtype.kind not in "iu"):
             raise ArgumentValueError(
                 f"faces must hold one integer per polygon ({len(counts)}), got "
-                f"{v._show(faces.tolist())}")
-        return _assemble(verts, counts, faces.astype(np.int64), w, h)
+                f"{v._show(numbers.tolist())}")
+        return _assemble(verts, counts, numbers.astype(np.int64), w, h)
 
 
-def flat_polygons(vertices, counts, faces, width, height):
+def flat_polygons(vertices: ArrayLike, counts: ArrayLike, faces: ArrayLike, width: int,
+                  height: int) -> ScreenPolygons:
     """:class:`ScreenPolygons` from device polygons given flat -- ``vertices`` (V, 3),
     ``counts`` (P,), ``faces`` (P,) -- that are planar by construction (clipped
     triangles): checked convex, those without area dropped, their planes found, all at
@@ -165,9 +297,27 @@ def flat_polygons(vertices, counts, faces, width, height):
                      v.positive_int("width", width), v.positive_int("height", height))
 
 
-def newell_plane(points):
+def newell_plane(points: NDArray[np.float64]) -> NDArray[np.float64]:
     """Newell's plane (A, B, C, D) of the (K, 3) ``points`` (Hearn & Baker, section
-    10-1; exact for planar polygons)."""
+    10-1; exact for planar polygons).
+
+    Parameters
+    ----------
+    points : numpy.ndarray
+        (K, 3) vertices of a polygon.
+
+    Returns
+    -------
+    numpy.ndarray
+        (A, B, C, D), (A, B, C) twice the polygon's vector area.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from scanline.screen import newell_plane
+    >>> newell_plane(np.array([(0, 0, 2), (1, 0, 2), (0, 1, 2)], float)).tolist()   # z = 2
+    [0.0, 0.0, 1.0, -2.0]
+    """
     x, y, z = points[:, 0], points[:, 1], points[:, 2]
     xn, yn, zn = np.roll(x, -1), np.roll(y, -1), np.roll(z, -1)
     a = np.sum((y - yn) * (z + zn))
@@ -177,7 +327,8 @@ def newell_plane(points):
     return np.array([a, b, c, -(a * centroid[0] + b * centroid[1] + c * centroid[2])])
 
 
-def _bent(verts, offsets, counts):
+def _bent(verts: NDArray[np.float64], offsets: NDArray[np.int64],
+          counts: NDArray[np.int64]) -> NDArray[np.bool_]:
     """Whether each flat polygon leaves its Newell plane by more than 1e-9 of its size."""
     plane = newell_planes(verts, offsets)
     norm = np.linalg.norm(plane[:, :3], axis=1)
@@ -188,7 +339,7 @@ def _bent(verts, offsets, counts):
     return (norm > 0) & (np.maximum.reduceat(dist, offsets[:-1]) > 1e-9 * norm * (size + 1.0))
 
 
-def _following(offsets):
+def _following(offsets: NDArray[np.int64]) -> NDArray[np.int64]:
     """For each vertex of the flat polygons ``offsets``, the index of the next vertex
     of its polygon (the last wraps to the first)."""
     nxt = np.arange(1, offsets[-1] + 1)
@@ -196,9 +347,30 @@ def _following(offsets):
     return nxt
 
 
-def newell_planes(verts, offsets):
+def newell_planes(verts: NDArray[np.float64], offsets: NDArray[np.int64]) -> NDArray[np.float64]:
     """Newell's planes (P, 4) of the flat polygons ``verts[offsets[p]:offsets[p + 1]]``
-    (:func:`newell_plane` for all at once)."""
+    (:func:`newell_plane` for all at once).
+
+    Parameters
+    ----------
+    verts : numpy.ndarray
+        (V, 3) vertices of every polygon, one after another.
+    offsets : numpy.ndarray
+        (P + 1,) int64: polygon ``p`` is ``verts[offsets[p]:offsets[p + 1]]``.
+
+    Returns
+    -------
+    numpy.ndarray
+        (P, 4) planes.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from scanline.screen import newell_planes
+    >>> verts = np.array([(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 0), (0, 0, 1), (0, 1, 0)], float)
+    >>> (newell_planes(verts, np.array([0, 3, 6])) + 0.0).tolist()   # z = 0, then x = 0
+    [[0.0, 0.0, 1.0, 0.0], [-1.0, 0.0, 0.0, 0.0]]
+    """
     p, q = verts, verts[_following(offsets)]
     starts = offsets[:-1]
     n = np.add.reduceat(np.stack([(p[:, 1] - q[:, 1]) * (p[:, 2] + q[:, 2]),
@@ -209,13 +381,13 @@ def newell_planes(verts, offsets):
     return np.concatenate([n, -np.einsum("ij,ij->i", n, centroid)[:, None]], axis=1)
 
 
-def signed_areas(verts, offsets):
+def signed_areas(verts: NDArray[np.float64], offsets: NDArray[np.int64]) -> NDArray[np.float64]:
     """Signed (x, y) areas of the flat polygons (> 0 counterclockwise)."""
     q = verts[_following(offsets)]
     return 0.5 * np.add.reduceat(verts[:, 0] * q[:, 1] - q[:, 0] * verts[:, 1], offsets[:-1])
 
 
-def convex(verts, offsets):
+def convex(verts: NDArray[np.float64], offsets: NDArray[np.int64]) -> NDArray[np.bool_]:
     """Whether each flat polygon's (x, y) projection is convex (collinear vertices
     allowed): the turn of every pair of consecutive edges has
     one sign, within a tolerance relative to the longest edge."""
@@ -229,7 +401,8 @@ def convex(verts, offsets):
             | (np.maximum.reduceat(cross, starts) <= tol))
 
 
-def _assemble(verts, counts, faces, width, height, front_only=False):
+def _assemble(verts: NDArray[np.float64], counts: NDArray[np.int64], faces: NDArray[np.int64],
+              width: int, height: int, front_only: bool = False) -> ScreenPolygons:
     """Screen polygons from flat device polygons: those without area (and with
     ``front_only`` the clockwise ones) dropped, each checked convex, its plane oriented
     with C > 0."""
@@ -255,7 +428,8 @@ def _assemble(verts, counts, faces, width, height, front_only=False):
     return sp if keep.all() else sp.subset(np.flatnonzero(keep))
 
 
-def _array(name, value, dtype, shape):
+def _array(name: str, value: ArrayLike, dtype: DTypeLike,
+           shape: Sequence[Optional[int]]) -> NDArray[Any]:
     """``value`` as a C-contiguous array of ``dtype`` and ``shape`` (None: any
     length), or a clear error."""
     a = np.asarray(value)
@@ -269,7 +443,7 @@ def _array(name, value, dtype, shape):
     return np.ascontiguousarray(a, dtype)
 
 
-def as_screen(polygons):
+def as_screen(polygons: object) -> ScreenPolygons:
     """``polygons`` checked to be :class:`ScreenPolygons` that the kernels can read
     safely -- a hand-built one too: its arrays of the right shapes and types (copied
     to float64 and int64 where they are not), the offsets starting at 0, ending at the

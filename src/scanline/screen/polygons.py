@@ -336,7 +336,9 @@ def _bent(verts: NDArray[np.float64], offsets: NDArray[np.int64],
     dist = np.abs(np.einsum("ij,ij->i", verts, plane[owner, :3]) + plane[owner, 3])
     size = (np.maximum.reduceat(verts, offsets[:-1], axis=0)
             - np.minimum.reduceat(verts, offsets[:-1], axis=0)).max(axis=1)
-    return (norm > 0) & (np.maximum.reduceat(dist, offsets[:-1]) > 1e-9 * norm * (size + 1.0))
+    bent: NDArray[np.bool_] = (norm > 0) & (np.maximum.reduceat(dist, offsets[:-1])
+                                            > 1e-9 * norm * (size + 1.0))
+    return bent
 
 
 def _following(offsets: NDArray[np.int64]) -> NDArray[np.int64]:

@@ -4,6 +4,7 @@ lost, within a bounded time."""
 
 import os
 import threading
+import time
 
 import numpy as np
 import pytest
@@ -77,3 +78,45 @@ def test_frame_runs_in_messages():
     assert render_module._spans([3, 4, 5, 7, 9, 10]) == "3-5, 7, 9-10"
     assert render_module._span(range(8, 16)) == "8-15"
     assert render_module._span([7]) == "7"
+
+
+def test_chunks_are_sized_to_the_workers_threads(monkeypatch):
+    """One worker of three threads runs three chunks at once: the frames are cut for
+    three, as for three one-thread workers."""
+    distributed = peer("distributed")
+    asked = []
+    cut = render_module.iter_chunks
+
+    def recorded(indices, parts):
+        asked.append(parts)
+        return cut(indices, parts)
+
+    monkeypatch.setattr(render_module, "iter_chunks", recorded)
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=3, processes=False,
+                                  dashboard_address=None) as cluster, \
+            distributed.Client(cluster) as client:
+        images = list(Animation(lambda i: np.full((2, 2), i, np.uint8), frames=9,
+                                fps=3).images(client=client))
+    assert asked == [3]
+    assert [int(np.asarray(im)[0, 0]) for im in images] == list(range(9))
+
+
+def _slow(i):
+    time.sleep(0.2)
+    return np.full((2, 2), i, np.uint8)
+
+
+def test_a_cluster_that_loses_its_workers_names_the_frames_still_out():
+    """Every worker gone and none coming back (no nanny): the render function went
+    with them, the tasks are cancelled, and the frames still out are named (not
+    waited for for ever)."""
+    distributed = peer("distributed")
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=False,
+                                  dashboard_address=None) as cluster, \
+            distributed.Client(cluster) as client:
+        images = Animation(_slow, frames=40, fps=3).images(client=client)
+        assert int(np.asarray(next(images))[0, 0]) == 0
+        cluster.scale(0)
+        with pytest.raises(render_module.WorkerLost,
+                           match=r"frames [0-9, -]+ were lost: their tasks were cancelled"):
+            list(images)

@@ -591,12 +591,8 @@ def _probe(address, timeout):
 
 class WorkerLost(ScanlineError):
     """Frames a Dask cluster could not render: the worker rendering them died (as often
-    as the scheduler allows, ``distributed.scheduler.allowed-failures``), or the cluster
-    had no worker for :data:`NO_WORKER_TIMEOUT` seconds."""
-
-
-#: Seconds a render waits for a cluster without workers before it gives up.
-NO_WORKER_TIMEOUT = 30.0
+    as the scheduler allows, ``distributed.scheduler.allowed-failures``), or their
+    tasks were cancelled because every worker holding the render function left."""
 
 
 def _span(part):
@@ -607,20 +603,24 @@ def _span(part):
 def _dask(render, indices, client, owned):
     """The frames ``indices`` rendered on the Dask ``client``'s workers, in order.
 
-    Chunks are sized to the workers (:func:`iter_chunks`) and a new one is sent as
-    soon as any chunk comes back (``distributed.as_completed``), not only the oldest:
-    a worker that finishes first gets more work at once, so no worker waits for a slow
-    neighbour's chunk.  The frames that come back early wait here, unpacked, until
-    their turn; at most four chunks per worker are in flight, and eight in flight or
-    waiting, which bounds the memory.  A chunk whose worker died (``KilledWorker``), or a cluster left
-    without workers for :data:`NO_WORKER_TIMEOUT` seconds, raises
-    :class:`WorkerLost` naming the frames lost, and the other chunks are cancelled."""
+    Chunks are sized to the workers' threads (:func:`iter_chunks`) and a new one is
+    sent as soon as any chunk comes back (``distributed.as_completed``), not only the
+    oldest: a worker that finishes first gets more work at once, so no worker waits
+    for a slow neighbour's chunk.  The frames that come back early wait here,
+    unpacked, until their turn; at most four chunks per thread are in flight, and
+    eight in flight or waiting, which bounds the memory.  A chunk whose worker died
+    (``KilledWorker``), or whose task was cancelled because no worker holds the
+    render function any more, raises :class:`WorkerLost` naming the frames lost,
+    and the other chunks are cancelled; the wait is in steps of 0.1 s, so Ctrl-C
+    stops it at once (and cancels them)."""
     from concurrent.futures import CancelledError
 
     from distributed import as_completed
 
     try:
-        workers = max(1, len(client.scheduler_info().get("workers", {})))
+        # the chunks sized to the threads that run tasks at once (a worker with four
+        # threads takes four chunks), counted when the render starts
+        workers = max(1, sum(client.nthreads().values()))
         parts = iter_chunks(indices, workers)
         # a fresh key each time (hash=False): a repeated render must not reuse the key of
         # a scatter the client is just releasing
@@ -655,8 +655,7 @@ def _dask(render, indices, client, owned):
         try:
             refill()
             while pending:
-                _await(arrived, client, pending)
-                for future in arrived.next_batch(block=False):
+                for future in arrived.next_batch():     # waits in steps of 0.1 s
                     number, slot, part = pending.pop(future)
                     try:
                         packed = future.result() if future.status == "finished" else None
@@ -680,30 +679,6 @@ def _dask(render, indices, client, owned):
     finally:
         if owned:
             client.close()
-
-
-def _await(arrived, client, pending):
-    """Wait until a chunk of ``arrived`` is back; raise :class:`WorkerLost` when the
-    cluster has had no worker for :data:`NO_WORKER_TIMEOUT` seconds (its tasks would
-    wait for ever)."""
-    since, asked = None, time.monotonic()
-    while not arrived.has_ready():
-        with arrived.thread_condition:
-            arrived.thread_condition.wait(timeout=0.1)
-        now = time.monotonic()
-        if arrived.has_ready() or now - asked < 1.0:     # ask the scheduler once a second
-            continue
-        asked = now
-        if client.scheduler_info().get("workers"):
-            since = None
-        elif since is None:
-            since = now
-        elif now - since > NO_WORKER_TIMEOUT:
-            frames = sorted(i for _, _, part in pending.values() for i in part)
-            raise WorkerLost(
-                f"frames {_spans(frames)} were lost: the Dask cluster has had no worker for "
-                f"{NO_WORKER_TIMEOUT:g} s; start workers (or a cluster with a nanny, which "
-                "restarts them) and render again")
 
 
 def _spans(frames):

@@ -24,8 +24,19 @@ def _folder() -> Path:
 
 def examples() -> Dict[str, str]:
     """{name: summary} of the bundled scene files, by name; the summary is the first
-    sentence of the file's opening comment."""
-    out = {}
+    sentence of the file's opening comment.
+
+    Returns
+    -------
+    dict of str to str
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> sl.scene.examples()["rotation"].split()[0]
+    'Rotation'
+    """
+    out: Dict[str, str] = {}
     for path in sorted(_folder().glob("*.toml")):
         lines = path.read_text(encoding="utf-8").splitlines()
         comment = " ".join(line.lstrip("# ").strip() for line in
@@ -46,7 +57,28 @@ def _first_clause(text: str) -> str:
 
 def example(name: str) -> Path:
     """The path of the bundled scene file ``name`` (``"rotation"`` or
-    ``"rotation.toml"``); a name that is none of them is refused, listing them."""
+    ``"rotation.toml"``); a name that is none of them is refused, listing them.
+
+    Parameters
+    ----------
+    name : str
+        An example's name, with or without ``.toml``.
+
+    Returns
+    -------
+    pathlib.Path
+
+    Raises
+    ------
+    ArgumentValueError
+        If ``name`` is not a bundled scene.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> sl.scene.example("rotation.toml").name
+    'rotation.toml'
+    """
     if not isinstance(name, str):
         raise ArgumentValueError(f"example must be a name such as 'rotation', got {v._show(name)}")
     stem = name[:-5] if name.endswith(".toml") else name
@@ -60,7 +92,31 @@ def example(name: str) -> Path:
 
 def copy_examples(folder: Union[str, "os.PathLike[str]"]) -> List[Path]:
     """Copy every bundled scene file into ``folder`` (created if needed); files that
-    exist there already are refused, and nothing is copied.  Returns the new paths."""
+    exist there already are refused, and nothing is copied.  Returns the new paths.
+
+    Parameters
+    ----------
+    folder : str or os.PathLike
+        The destination folder (created if needed).
+
+    Returns
+    -------
+    list of pathlib.Path
+        The copied files.
+
+    Raises
+    ------
+    ArgumentValueError
+        If ``folder`` is a file, or already holds a file of the same name as an
+        example.
+
+    Examples
+    --------
+    >>> import tempfile, scanline as sl
+    >>> copied = sl.scene.copy_examples(tempfile.mkdtemp())
+    >>> sorted(p.stem for p in copied) == sorted(sl.scene.examples())
+    True
+    """
     folder = Path(folder)
     if folder.exists() and not folder.is_dir():
         raise ArgumentValueError(f"folder={str(folder)!r} exists and is not a folder")

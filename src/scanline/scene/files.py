@@ -12,6 +12,7 @@ import math
 import os
 import re
 import sys
+from typing import Any
 
 from ..errors import ArgumentValueError
 
@@ -39,9 +40,21 @@ class SceneError(ArgumentValueError):
         The line, when known (parse errors).
     path : str or None
         The key path, e.g. ``segments[2].primitives[0].points``.
+
+    Parameters
+    ----------
+    message : str
+        What is wrong.
+    file : str, optional
+        The file name.
+    line : int, optional
+        The line, when known.
+    path : str, optional
+        The key path of the bad value.
     """
 
-    def __init__(self, message, file=None, line=None, path=None):
+    def __init__(self, message: str, file: str | None = None, line: int | None = None,
+                 path: str | None = None) -> None:
         self.file, self.line, self.path, self.message = file, line, path, message
         where = ":".join(str(x) for x in (file, line) if x is not None)
         if file is None and line is not None:
@@ -49,7 +62,7 @@ class SceneError(ArgumentValueError):
         super().__init__(f"{where}: {message}" if where else message)
 
 
-def format_of(path, format=None):
+def format_of(path: "str | os.PathLike[str]", format: str | None = None) -> str:
     """The format of a file: ``format`` if given, else from the extension."""
     if format is not None:
         if format not in ("toml", "json"):
@@ -62,8 +75,34 @@ def format_of(path, format=None):
     return FORMATS[ext]
 
 
-def loads(text, format="toml", file=None):
-    """Parse scene text into a dict; errors name ``file`` and the line."""
+def loads(text: str, format: str = "toml", file: str | None = None) -> dict[str, Any]:
+    """Parse scene text into a dict; errors name ``file`` and the line.
+
+    Parameters
+    ----------
+    text : str
+        TOML or JSON text.
+    format : {"toml", "json"}, default "toml"
+    file : str, optional
+        The file it came from, named in error messages.
+
+    Returns
+    -------
+    dict
+        The parsed data, not yet checked as a scene (:class:`~scanline.scene.Scene`
+        checks it).
+
+    Raises
+    ------
+    SceneError
+        If the text does not parse (with the line) or is not a table at the top.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> sl.scene.parse('{"version": 1, "canvas": {"width": 7, "height": 5}}', "json")
+    {'version': 1, 'canvas': {'width': 7, 'height': 5}}
+    """
     try:
         data = _parse(text, format, file)
     except RecursionError:
@@ -74,7 +113,7 @@ def loads(text, format="toml", file=None):
     return data
 
 
-def _parse(text, format, file):
+def _parse(text: str, format: str, file: str | None) -> Any:
     if format == "json":
         try:
             data = json.loads(text, parse_constant=_no_constant)
@@ -101,7 +140,7 @@ def _parse(text, format, file):
     return data
 
 
-def _long_number(text, format, error, file):
+def _long_number(text: str, format: str, error: ValueError, file: str | None) -> SceneError:
     """The error for a number too long to convert (Python refuses integer strings of
     more than ``sys.get_int_max_str_digits()`` digits), with the line it is on."""
     limit = sys.get_int_max_str_digits() if hasattr(sys, "get_int_max_str_digits") else 4300
@@ -113,11 +152,11 @@ def _long_number(text, format, error, file):
                       "Python converts", file=file, line=line)
 
 
-def _no_constant(name):
+def _no_constant(name: str) -> None:
     raise ValueError(f"{name} is not a number a scene can use")
 
 
-def read_text(path):
+def read_text(path: "str | os.PathLike[str]") -> str:
     """The text of a scene file (UTF-8, a byte-order mark allowed), errors naming
     the file.  Only regular files of at most :data:`MAX_FILE_BYTES` are read (a
     FIFO or a device such as /dev/zero is refused before reading)."""
@@ -132,21 +171,74 @@ def read_text(path):
         raise SceneError("the file is not UTF-8 text", file=name, line=line) from None
 
 
-def read(path, format=None):
-    """Read and parse a scene file into a dict."""
+def read(path: "str | os.PathLike[str]", format: str | None = None) -> dict[str, Any]:
+    """Read and parse a scene file into a dict.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        A ``.toml`` or ``.json`` file.
+    format : {"toml", "json"}, optional
+        The format; by default from the extension.
+
+    Returns
+    -------
+    dict
+        The parsed data, not yet checked as a scene.
+
+    Raises
+    ------
+    SceneError
+        If the file cannot be read or does not parse (with the file and line).
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> sl.scene.read(sl.scene.example("rotation"))["version"]
+    1
+    """
     name = os.fspath(path)
     fmt = format_of(name, format)
     return loads(read_text(name), fmt, name)
 
 
 # -- writing ---------------------------------------------------------------------------------
-def dumps(data, format="toml"):
-    """Scene data (a dict) as TOML or JSON text."""
+def dumps(data: dict[str, Any], format: str = "toml") -> str:
+    """Scene data (a dict) as TOML or JSON text.
+
+    Parameters
+    ----------
+    data : dict
+        Scene data: tables, arrays of tables, strings, finite numbers, booleans and
+        arrays.
+    format : {"toml", "json"}, default "toml"
+
+    Returns
+    -------
+    str
+
+    Raises
+    ------
+    ArgumentValueError
+        If ``format`` is neither, or a value cannot be written (a non-finite number,
+        another type).
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> print(sl.scene.dumps({"version": 1, "canvas": {"width": 7, "height": 5}}))
+    version = 1
+    <BLANKLINE>
+    [canvas]
+    width = 7
+    height = 5
+    <BLANKLINE>
+    """
     if format == "json":
         return json.dumps(data, indent=2, allow_nan=False) + "\n"
     if format != "toml":
         raise ArgumentValueError(f"format must be 'toml' or 'json', got {format!r}")
-    lines = []
+    lines: list[str] = []
     _table(data, [], lines)
     return "\n".join(lines).strip("\n") + "\n"
 
@@ -154,11 +246,11 @@ def dumps(data, format="toml"):
 _BARE = re.compile(r"^[A-Za-z0-9_-]+$")
 
 
-def _key(k):
+def _key(k: str) -> str:
     return k if _BARE.match(k) else json.dumps(k)
 
 
-def _value(x):
+def _value(x: object) -> str:
     if isinstance(x, bool):
         return "true" if x else "false"
     if isinstance(x, int):
@@ -176,11 +268,11 @@ def _value(x):
     raise ArgumentValueError(f"cannot write a {type(x).__name__} in a scene")
 
 
-def _is_tables(x):
-    return isinstance(x, list) and x and all(isinstance(i, dict) for i in x)
+def _is_tables(x: object) -> bool:
+    return isinstance(x, list) and bool(x) and all(isinstance(i, dict) for i in x)
 
 
-def _table(d, path, lines):
+def _table(d: dict[str, Any], path: list[str], lines: list[str]) -> None:
     """Key/value lines of table ``d``, then its sub-tables and arrays of tables."""
     for k, x in d.items():
         if not isinstance(x, dict) and not _is_tables(x):

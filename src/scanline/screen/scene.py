@@ -16,25 +16,54 @@ Three kinds of things are numbered in it:
 import functools
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Any, Optional, Tuple, Union, overload
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .polygons import ScreenPolygons, flat_polygons
 
+F64 = NDArray[np.float64]
+I64 = NDArray[np.int64]
+Bools = NDArray[np.bool_]
 
-class DevicePolygons(Sequence):
+
+class DevicePolygons(Sequence[F64]):
     """The clipped device polygons (k, 3) of a scene's facets, made on demand: the
     facets left whole are rows of one (W, 3, 3) array (no list of W arrays is built
-    unless asked for), followed by the polygons of the facets the volume cut."""
+    unless asked for), followed by the polygons of the facets the volume cut.
 
-    def __init__(self, whole, cut):
+    Parameters
+    ----------
+    whole : numpy.ndarray
+        (W, 3, 3): the device triangles (x, y, depth) of the facets left whole.
+    cut : sequence of numpy.ndarray
+        The (k, 3) device polygons of the facets the view volume cut.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from scanline.screen import DevicePolygons
+    >>> whole = np.zeros((2, 3, 3))
+    >>> polygons = DevicePolygons(whole, [np.ones((4, 3))])
+    >>> len(polygons), polygons[-1].shape, [p.shape for p in polygons[:2]]
+    (3, (4, 3), [(3, 3), (3, 3)])
+    """
+
+    def __init__(self, whole: F64, cut: Sequence[F64]) -> None:
         self._whole = whole
         self._cut = cut
 
-    def __len__(self):
+    def __len__(self) -> int:
         return len(self._whole) + len(self._cut)
 
-    def __getitem__(self, i):
+    @overload
+    def __getitem__(self, i: int) -> F64: ...
+
+    @overload
+    def __getitem__(self, i: slice) -> list[F64]: ...
+
+    def __getitem__(self, i: Union[int, slice]) -> Union[F64, list[F64]]:
         if isinstance(i, slice):
             return [self[j] for j in range(*i.indices(len(self)))]
         n = len(self)
@@ -43,8 +72,22 @@ class DevicePolygons(Sequence):
         i %= n
         return self._whole[i] if i < len(self._whole) else self._cut[i - len(self._whole)]
 
-    def flat(self):
-        """All the polygons at once: ``(vertices (V, 3), counts (P,))``, in order."""
+    def flat(self) -> Tuple[F64, I64]:
+        """All the polygons at once: ``(vertices (V, 3), counts (P,))``, in order.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            float64 (V, 3) vertices, polygon after polygon, and int64 (P,) counts.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from scanline.screen import DevicePolygons
+        >>> vertices, counts = DevicePolygons(np.zeros((2, 3, 3)), [np.ones((4, 3))]).flat()
+        >>> vertices.shape, counts.tolist()
+        ((10, 3), [3, 3, 4])
+        """
         whole = np.asarray(self._whole, np.float64).reshape(-1, 3)
         cut = [np.asarray(p, np.float64) for p in self._cut]
         counts = np.concatenate([np.full(len(self._whole), 3, np.int64),
@@ -123,58 +166,78 @@ class ScreenScene:
     The per-mesh arrays (``world``, ``normals``, ``vertex_normals`` ...) may be
     shared with the meshes' kept arrays and with other scenes: read them, do not
     write them.
+
+    Parameters
+    ----------
+    width, height, camera, mapping, eye, materials, face_mesh, face_normals
+        The attributes above, in this order (:func:`scanline.screen.prepare` makes
+        the scene; a hand-made one is not checked).
+    face_centroids, face_colors, face_planar, facet_face, whole, world, normals
+        The attributes above.
+    vertex_normals, vertex_colors, front, culled, planes, triangles, inv_w, bary
+        The attributes above.
+    facet, polygons, polygon_facet, uv
+        The attributes above.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> cam = sl.Camera(eye=(0, 0, 5), target=(0, 0, 0))
+    >>> scene = sl.screen.prepare(sl.mesh.cube(), cam, 16, 16)
+    >>> scene.face_count, scene.facet_count, int(scene.front.sum())   # one face seen
+    (6, 12, 2)
     """
     width: int
     height: int
     camera: object
-    mapping: tuple
+    mapping: Tuple[F64, F64, F64]
     eye: object
-    materials: tuple
-    face_mesh: np.ndarray
-    face_normals: np.ndarray
-    face_centroids: np.ndarray
-    face_colors: np.ndarray
-    face_planar: np.ndarray
-    facet_face: np.ndarray
-    whole: np.ndarray
-    world: np.ndarray
-    normals: np.ndarray
-    vertex_normals: np.ndarray
-    vertex_colors: np.ndarray
-    front: np.ndarray
-    culled: np.ndarray
-    planes: np.ndarray
-    triangles: np.ndarray
-    inv_w: np.ndarray
-    bary: np.ndarray
-    facet: np.ndarray
+    materials: Tuple[Any, ...]
+    face_mesh: I64
+    face_normals: F64
+    face_centroids: F64
+    face_colors: F64
+    face_planar: Bools
+    facet_face: I64
+    whole: Bools
+    world: F64
+    normals: F64
+    vertex_normals: F64
+    vertex_colors: F64
+    front: Bools
+    culled: Bools
+    planes: F64
+    triangles: F64
+    inv_w: F64
+    bary: F64
+    facet: I64
     polygons: DevicePolygons
-    polygon_facet: np.ndarray
-    uv: object = None
+    polygon_facet: I64
+    uv: Optional[F64] = None
 
     @property
-    def face_count(self):
+    def face_count(self) -> int:
         """F, the number of faces."""
         return len(self.face_mesh)
 
     @property
-    def facet_count(self):
+    def facet_count(self) -> int:
         """G, the number of facets."""
         return len(self.facet_face)
 
     @functools.cached_property
-    def facet_mesh(self):
+    def facet_mesh(self) -> I64:
         """The mesh of each facet (G,)."""
         return np.ascontiguousarray(self.face_mesh[self.facet_face])
 
     @functools.cached_property
-    def face_first(self):
+    def face_first(self) -> Tuple[I64, I64]:
         """The first facet of each face (F,) and the number of its facets (F,)."""
         counts = np.bincount(self.facet_face, minlength=self.face_count)
         return (np.cumsum(counts) - counts).astype(np.int64), counts
 
     @functools.cached_property
-    def joined(self):
+    def joined(self) -> Bools:
         """Per facet: True where its face is taken whole as one polygon by the polygon
         methods (:attr:`units`): a planar convex face whose facets were all kept and none
         cut (so it lies in front of the eye and projects to a convex polygon).  Such a
@@ -183,10 +246,10 @@ class ScreenScene:
         if not self.face_count:
             return np.zeros(self.facet_count, bool)
         first, _ = self.face_first
-        out = np.logical_and.reduceat(self.whole, first) & self.face_planar
+        out: Bools = np.logical_and.reduceat(self.whole, first) & self.face_planar
         return out[self.facet_face]
 
-    def _face_vertices(self, faces, points, rows):
+    def _face_vertices(self, faces: I64, points: F64, rows: I64) -> Tuple[F64, I64]:
         """The vertices of ``faces`` (whole ones) from their facets' corners: the first
         facet's corners 0 and 1, then corner 1 of each next facet, then corner 2 of the
         last (the fan's order).  ``points[rows[g]]`` holds facet g's corners (device
@@ -203,7 +266,7 @@ class ScreenScene:
         return points[rows[facet], corner], offsets
 
     @functools.cached_property
-    def units(self):
+    def units(self) -> Tuple[F64, F64, I64, I64, I64]:
         """The polygons the polygon methods work on: ``(device (V, 3), world (V', 3),
         counts (P,), world counts (P,), labels (P,))``.  A face taken whole
         (:attr:`joined`) is one polygon labeled with its first facet; every other
@@ -215,7 +278,7 @@ class ScreenScene:
         dev, off = self._face_vertices(faces, self.triangles, self.facet_triangle)
         world, _ = self._face_vertices(faces, self.world, np.arange(self.facet_count))
         rest = np.flatnonzero(~self.joined[self.polygon_facet])
-        polys = [self.polygons[i] for i in rest] if len(rest) < len(self.polygon_facet) \
+        polys = [self.polygons[int(i)] for i in rest] if len(rest) < len(self.polygon_facet) \
             else list(self.polygons)
         counts_rest = np.array([len(p) for p in polys], np.int64)
         facets = self.polygon_facet[rest]
@@ -227,14 +290,14 @@ class ScreenScene:
                 np.concatenate([first[faces], facets]).astype(np.int64))
 
     @functools.cached_property
-    def screen_polygons(self):
+    def screen_polygons(self) -> ScreenPolygons:
         """The polygon methods' :attr:`units` as :class:`ScreenPolygons` whose
         ``face`` is the label (a facet, or the first facet of a face taken whole)."""
         device, _, counts, _, labels = self.units
         return flat_polygons(device, counts, labels, self.width, self.height)
 
     @functools.cached_property
-    def fans(self):
+    def fans(self) -> I64:
         """Per facet: the number of facets of its face when it is the first facet of a
         face taken whole (:attr:`joined`), else 1 (G,): how many facets a polygon
         labeled with it covers (the fan :func:`scanline._kernels.visible.resolve_labels`
@@ -246,13 +309,14 @@ class ScreenScene:
         return out
 
     @functools.cached_property
-    def transparent(self):
+    def transparent(self) -> Bools:
         """Per facet: True when its material lets light through (k_t > 0)."""
         kt = np.array([m.transparency for m in self.materials], np.float64)
-        return kt[self.facet_mesh] > 0 if self.facet_count else np.zeros(0, bool)
+        out: Bools = kt[self.facet_mesh] > 0 if self.facet_count else np.zeros(0, bool)
+        return out
 
     @functools.cached_property
-    def facet_triangle(self):
+    def facet_triangle(self) -> I64:
         """Per facet, the device triangle of largest screen area among its own (-1:
         none): the one whose screen-space interpolation functions stand for the
         facet's (all of a facet's triangles lie in its plane and share them)."""
@@ -268,9 +332,29 @@ class ScreenScene:
             out[self.facet[n:][order]] = n + order
         return out
 
-    def with_triangles(self, select):
+    def with_triangles(self, select: Bools) -> "ScreenScene":
         """The scene with only the device triangles and polygons of the facets where
-        ``select`` (G,) holds (the facets keep their numbers)."""
+        ``select`` (G,) holds (the facets keep their numbers).
+
+        Parameters
+        ----------
+        select : numpy.ndarray
+            bool (G,): the facets whose triangles stay.
+
+        Returns
+        -------
+        ScreenScene
+            A new scene; every per-facet array is shared.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import scanline as sl
+        >>> cam = sl.Camera(eye=(0, 0, 5), target=(0, 0, 0))
+        >>> scene = sl.screen.prepare(sl.mesh.cube(), cam, 16, 16)
+        >>> len(scene.with_triangles(np.zeros(scene.facet_count, bool)).triangles)
+        0
+        """
         keep_t = select[self.facet]
         keep_p = select[self.polygon_facet]
         polys = [p for p, k in zip(self.polygons, keep_p) if k]
@@ -284,14 +368,34 @@ class ScreenScene:
                       polygon_facet=self.polygon_facet[keep_p])
         return ScreenScene(**fields)
 
-    def supersampled(self, n):
+    def supersampled(self, n: int) -> "ScreenScene":
         """The scene on a device ``n`` times finer in x and y: sample (i, j) of pixel (x,
         y) at x' = n x + (n - 1) / 2 + ..., so that the n x n samples of a pixel lie
         evenly around its center (as the A-buffer places them); device polygons, planes
-        and the device's size follow."""
+        and the device's size follow.
+
+        Parameters
+        ----------
+        n : int
+            Samples per pixel along x and along y.
+
+        Returns
+        -------
+        ScreenScene
+            The scene on an ``n * width`` x ``n * height`` device.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> cam = sl.Camera(eye=(0, 0, 5), target=(0, 0, 0))
+        >>> scene = sl.screen.prepare(sl.mesh.cube(), cam, 16, 16)
+        >>> fine = scene.supersampled(2)
+        >>> (fine.width, fine.height), bool((fine.triangles[..., :2] == scene.triangles[..., :2] * 2 + 0.5).all())
+        ((32, 32), True)
+        """
         c = (n - 1) / 2.0
 
-        def scaled(points):
+        def scaled(points: Any) -> F64:
             out = np.array(points, np.float64, copy=True)
             out[..., :2] = out[..., :2] * n + c
             return out
@@ -308,7 +412,7 @@ class ScreenScene:
                                               [scaled(p) for p in self.polygons._cut]))
         return ScreenScene(**fields)
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return (f"<ScreenScene {self.width}x{self.height}: {len(self.materials)} mesh(es), "
                 f"{self.face_count} faces, {self.facet_count} facets, "
                 f"{len(self.triangles)} device triangles>")

@@ -31,6 +31,7 @@ COMPLETE = [
     "scanline.raytrace",
     "scanline.raster",
     "scanline.rendering",
+    "scanline.radiosity",
 ]
 
 

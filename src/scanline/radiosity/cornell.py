@@ -103,6 +103,11 @@ def _oriented(quads, inside):
 def cornell_box(scale: float = 1e-3) -> Dict[str, Any]:
     """The Cornell box as meshes, its reflectances, emission and camera.
 
+    Parameters
+    ----------
+    scale : float
+        The factor of the published millimetre coordinates (default: metres).
+
     Returns
     -------
     dict

@@ -31,7 +31,7 @@ J. R. Wallace, K. A. Elmquist and E. A. Haines, "A ray tracing algorithm for
 progressive radiosity", SIGGRAPH '89, 315-324.
 """
 
-from typing import Any, Optional
+from typing import Any, Optional, Tuple
 
 import numpy as np
 
@@ -59,12 +59,35 @@ def as_patches(meshes: Any, subdivisions: int = 8) -> Patches:
     return meshes
 
 
-def delta_form_factors(resolution: int):
+def delta_form_factors(resolution: int) -> Tuple[np.ndarray, np.ndarray]:
     """The hemicube's delta form factors (Cohen and Greenberg 1985, section 4): the top
     face (res, res), rows from y = -1 up, and a side face (res / 2, res), rows from the
     patch's plane (z = 0) up; a cell of side 2 / res at (x, y) on the top holds
     dA / (pi (x**2 + y**2 + 1)**2), at (y, z) on a side z dA / (pi (y**2 + z**2 + 1)**2).
-    Together they add up to 1 (less the cells' discretization error)."""
+    Together they add up to 1 (less the cells' discretization error).
+
+    Parameters
+    ----------
+    resolution : int
+        Cells per side of the top face (even).
+
+    Returns
+    -------
+    top : ndarray (resolution, resolution)
+        The top face's delta form factors.
+    side : ndarray (resolution / 2, resolution)
+        One side face's.
+
+    Examples
+    --------
+    Two cells a side: each top cell, centred at (+-1/2, +-1/2), holds 1 / (pi 1.5^2)
+    = 0.141471; a side cell at height 1/2 half that.
+
+    >>> import scanline as sl
+    >>> top, side = sl.radiosity.delta_form_factors(2)
+    >>> top.round(6).tolist(), side.round(6).tolist()
+    ([[0.141471, 0.141471], [0.141471, 0.141471]], [[0.070736, 0.070736]])
+    """
     res = resolution
     c = (np.arange(res) + 0.5) / (res / 2) - 1.0
     da = (2.0 / res) ** 2

@@ -43,7 +43,14 @@ DEGENERATE = 1e-12
 
 @dataclass(frozen=True)
 class Patches:
-    """The patches of a scene.
+    """The patches of a scene (Hearn & Baker 14-7): made by :func:`patches`.
+
+    Parameters
+    ----------
+    vertices, corners, area, centre, normal, emission, reflectance, mesh, face, cell
+        The arrays listed under Attributes.
+    subdivisions : int
+        Patches per side of each face.
 
     Attributes
     ----------
@@ -61,6 +68,17 @@ class Patches:
         The patch's place in its face's grid: row x subdivisions + column for a
         quadrilateral face, -1 for the triangles of other faces.
     subdivisions : int
+        Patches per side of each face.
+
+    Examples
+    --------
+    A 2 x 2 square cut 2 x 2: four unit patches sharing 9 nodes.
+
+    >>> import scanline as sl
+    >>> square = sl.mesh.Mesh([(0, 0, 0), (2, 0, 0), (2, 2, 0), (0, 2, 0)], [[0, 1, 2, 3]])
+    >>> p = sl.radiosity.patches(square, subdivisions=2)
+    >>> p, p.area.tolist()
+    (<Patches: 4 patches, 9 nodes>, [1.0, 1.0, 1.0, 1.0])
     """
     vertices: np.ndarray
     corners: np.ndarray
@@ -84,12 +102,50 @@ class Patches:
 
     def triangles(self) -> np.ndarray:
         """Two triangles per patch, (2P, 3, 3) (a triangle patch's second one is
-        degenerate, which a ray never hits)."""
+        degenerate, which a ray never hits).
+
+        Returns
+        -------
+        ndarray (2P, 3, 3)
+            Corners 0 1 2 of every patch, then corners 0 2 3.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> square = sl.mesh.Mesh([(0, 0, 0), (2, 0, 0), (2, 2, 0), (0, 2, 0)], [[0, 1, 2, 3]])
+        >>> p = sl.radiosity.patches(square, subdivisions=2)
+        >>> p.triangles().shape
+        (8, 3, 3)
+        """
         q = self.quads
         return np.concatenate([q[:, [0, 1, 2]], q[:, [0, 2, 3]]])
 
     def with_values(self, emission: Any = None, reflectance: Any = None) -> "Patches":
-        """The same patches with other emission or reflectance (see :func:`patches`)."""
+        """The same patches with other emission or reflectance (see :func:`patches`).
+
+        Parameters
+        ----------
+        emission, reflectance : optional
+            As :func:`patches` takes them (None: kept).
+
+        Returns
+        -------
+        Patches
+            A new set of the same patches.
+
+        Raises
+        ------
+        ArgumentValueError
+            Values of the wrong shape, negative, or a reflectance of 1 or more.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> square = sl.mesh.Mesh([(0, 0, 0), (2, 0, 0), (2, 2, 0), (0, 2, 0)], [[0, 1, 2, 3]])
+        >>> p = sl.radiosity.patches(square, subdivisions=2)
+        >>> p.with_values(emission=(1, 0, 0)).emission[0].tolist()
+        [1.0, 0.0, 0.0]
+        """
         n_meshes = int(self.mesh.max()) + 1
         e = self.emission if emission is None else _per_patch(
             "emission", emission, self.mesh, n_meshes, upper=None)
@@ -102,7 +158,26 @@ class Patches:
         """A group number per patch: the patches of a quadrilateral face in blocks of
         ``size`` x ``size`` of its grid (the *patches* that shoot, of Cohen, Greenberg,
         Immel and Brock 1986, these patches being their *elements*); each triangle on
-        its own."""
+        its own.
+
+        Parameters
+        ----------
+        size : int
+            Patches per side of a block.
+
+        Returns
+        -------
+        ndarray of int64 (P,)
+            The group of each patch, numbered from 0.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> square = sl.mesh.Mesh([(0, 0, 0), (2, 0, 0), (2, 2, 0), (0, 2, 0)], [[0, 1, 2, 3]])
+        >>> p = sl.radiosity.patches(square, subdivisions=2)
+        >>> p.groups(2).tolist(), p.groups(1).tolist()
+        ([0, 0, 0, 0], [0, 1, 2, 3])
+        """
         size = v.positive_int("size", size)
         n = self.subdivisions
         quad = self.cell >= 0
@@ -114,7 +189,26 @@ class Patches:
 
     def check(self) -> None:
         """Refuse patches made by hand whose arrays disagree (the kernels index them
-        by one another): shapes, corner indices in range, finite values."""
+        by one another): shapes, corner indices in range, finite values.
+
+        Raises
+        ------
+        ArgumentValueError
+            Arrays of disagreeing shapes, values not finite, corners out of range, or
+            areas not > 0.
+
+        Examples
+        --------
+        >>> from dataclasses import replace
+        >>> import scanline as sl
+        >>> square = sl.mesh.Mesh([(0, 0, 0), (2, 0, 0), (2, 2, 0), (0, 2, 0)], [[0, 1, 2, 3]])
+        >>> p = sl.radiosity.patches(square, subdivisions=2)
+        >>> p.check()
+        >>> replace(p, area=-p.area).check()
+        Traceback (most recent call last):
+        ...
+        scanline.errors.ArgumentValueError: meshes: the Patches' corners must be vertex numbers, their meshes numbered from 0 and their areas > 0
+        """
         p = len(self.corners)
         shapes = {"vertices": (len(self.vertices), 3), "corners": (p, 4), "area": (p,),
                   "centre": (p, 3), "normal": (p, 3), "emission": (p, 3),
@@ -177,6 +271,22 @@ def patches(meshes: Any, subdivisions: int = 8, emission: Any = None,
     Returns
     -------
     Patches
+        The patches, each face's sharing its nodes.
+
+    Raises
+    ------
+    ArgumentTypeError
+        ``meshes`` not meshes.
+    ArgumentValueError
+        Too many patches, a subdivision outside 1..256, or bad values.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> square = sl.mesh.Mesh([(0, 0, 0), (2, 0, 0), (2, 2, 0), (0, 2, 0)], [[0, 1, 2, 3]])
+    >>> p = sl.radiosity.patches(square, subdivisions=2)
+    >>> p.centre.tolist()                 # patches row by row from the bottom
+    [[0.5, 0.5, 0.0], [1.5, 0.5, 0.0], [0.5, 1.5, 0.0], [1.5, 1.5, 0.0]]
     """
     items = mesh_list(meshes)
     n = v.positive_int("subdivisions", subdivisions)

@@ -54,7 +54,13 @@ SHOTS_PER_PATCH = 20
 
 @dataclass(frozen=True)
 class Radiosity:
-    """The solution of the radiosity equations.
+    """The solution of the radiosity equations (Hearn & Baker 14-7): made by
+    :func:`solve`.
+
+    Parameters
+    ----------
+    patches, radiosity, vertex_radiosity, ambient, method, history, power, converged, form_factors
+        The values listed under Attributes.
 
     Attributes
     ----------
@@ -78,6 +84,16 @@ class Radiosity:
     form_factors : ndarray (P, P) or None
         The matrix (Gauss-Seidel), None for the progressive solution (whose rows are
         made as patches shoot and not kept).
+
+    Examples
+    --------
+    >>> import numpy as np, scanline as sl
+    >>> cube = sl.mesh.cube(2.0)
+    >>> room = sl.mesh.Mesh(cube.vertices, cube.faces[:, ::-1])     # faces turned inward
+    >>> e = np.zeros((6, 3)); e[5] = 1.0                            # the ceiling glows
+    >>> s = sl.radiosity.solve(room, emission=e, reflectance=0.5, subdivisions=1)
+    >>> s
+    <Radiosity gauss-seidel: 6 patches, 9 iterations, converged>
     """
     patches: Patches
     radiosity: np.ndarray
@@ -91,13 +107,42 @@ class Radiosity:
 
     @property
     def iterations(self) -> int:
+        """The iterations made: Gauss-Seidel sweeps or progressive shots."""
         return len(self.history)
 
     def mesh(self, exposure: Optional[float] = None, gamma: float = 2.2) -> Any:
         """The patches as one :class:`~scanline.mesh.Mesh` with the node radiosities as
         vertex colors: B x ``exposure`` clipped to 0..1 and encoded with ``gamma``
         (the render decodes them back to linear light).  Default exposure: the
-        brightest patch that emits nothing shows white."""
+        brightest patch that emits nothing shows white.
+
+        Parameters
+        ----------
+        exposure : float, optional
+            The factor of B, positive and finite.
+        gamma : float
+            The display gamma the colors are encoded with.
+
+        Returns
+        -------
+        Mesh
+            One face per patch, colored at its nodes.
+
+        Raises
+        ------
+        ArgumentValueError
+            An exposure that is not positive and finite.
+
+        Examples
+        --------
+        >>> import numpy as np, scanline as sl
+        >>> cube = sl.mesh.cube(2.0)
+        >>> room = sl.mesh.Mesh(cube.vertices, cube.faces[:, ::-1])     # faces turned inward
+        >>> e = np.zeros((6, 3)); e[5] = 1.0                            # the ceiling glows
+        >>> s = sl.radiosity.solve(room, emission=e, reflectance=0.5, subdivisions=1)
+        >>> s.mesh()
+        <Mesh 'radiosity': 24 vertices, 6 faces, 24 edges>
+        """
         from ..mesh import Mesh
         from ..mesh.mesh import Flat
         from ..shading import encode
@@ -124,7 +169,44 @@ class Radiosity:
         """Draw the solution into ``fb`` through :func:`scanline.render` with Gouraud
         shading of the node radiosities (lit by an ambient light of 1 and a material
         that reflects only it: each surface shows its radiosity); ``options`` go to
-        :func:`scanline.render` (``method=``, ``antialias=`` ...)."""
+        :func:`scanline.render` (``method=``, ``antialias=`` ...).
+
+        Parameters
+        ----------
+        fb : FrameBuffer
+            Drawn into.
+        camera : Camera
+            The viewer.
+        exposure : float, optional
+            As :meth:`mesh` takes it.
+        gamma : float
+            The display gamma.
+        **options
+            Further keywords of :func:`scanline.render`.
+
+        Returns
+        -------
+        Rendering
+            What :func:`scanline.render` drew.
+
+        Raises
+        ------
+        ArgumentTypeError
+            ``shading``, ``lights``, ``materials`` or ``colors`` among ``options``.
+
+        Examples
+        --------
+        From inside the room every pixel sees a wall:
+
+        >>> import numpy as np, scanline as sl
+        >>> cube = sl.mesh.cube(2.0)
+        >>> room = sl.mesh.Mesh(cube.vertices, cube.faces[:, ::-1])     # faces turned inward
+        >>> e = np.zeros((6, 3)); e[5] = 1.0                            # the ceiling glows
+        >>> s = sl.radiosity.solve(room, emission=e, reflectance=0.5, subdivisions=1)
+        >>> fb = sl.FrameBuffer(4, 4)
+        >>> s.render(fb, sl.Camera(eye=(0, 0, 0.5), target=(0, 0, -1)))
+        <Rendering method='z-buffer' 4x4: 1 mesh(es), 6 faces, 16 of 16 pixels covered>
+        """
         from ..lighting import AmbientLight, Material
         from ..rendering import render
 
@@ -144,7 +226,33 @@ class Radiosity:
 
 
 def vertex_radiosity(patches: Patches, radiosity: np.ndarray) -> np.ndarray:
-    """The radiosity of each node: the mean of the patches it is a corner of."""
+    """The radiosity of each node: the mean of the patches it is a corner of.
+
+    Parameters
+    ----------
+    patches : Patches
+        The patches and their nodes.
+    radiosity : ndarray (P, 3)
+        B per patch.
+
+    Returns
+    -------
+    ndarray (V, 3)
+        B per node (Cohen and Greenberg 1985, section 5: what Gouraud shading
+        interpolates).
+
+    Examples
+    --------
+    Four patches with B = 1, 2, 3, 4 (row by row from the bottom): the middle node
+    gets their mean 2.5, an edge's middle node the mean of its two.
+
+    >>> import numpy as np, scanline as sl
+    >>> square = sl.mesh.Mesh([(0, 0, 0), (2, 0, 0), (2, 2, 0), (0, 2, 0)], [[0, 1, 2, 3]])
+    >>> p = sl.radiosity.patches(square, subdivisions=2)
+    >>> b = np.array([1.0, 2.0, 3.0, 4.0])[:, None] * np.ones(3)
+    >>> sl.radiosity.vertex_radiosity(p, b)[:, 0].tolist()
+    [1.0, 1.5, 2.0, 2.0, 2.5, 3.0, 3.0, 3.5, 4.0]
+    """
     corners = patches.corners
     distinct = np.ones(corners.shape, bool)
     distinct[:, 3] = corners[:, 3] != corners[:, 2]

@@ -14,6 +14,7 @@ COMPLETE = [
     "scanline.errors",
     "scanline.geometry",
     "scanline.clip",
+    "scanline.curves",
     "scanline.budget",
     "scanline.linestyle",
     "scanline.imagefile",

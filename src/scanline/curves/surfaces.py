@@ -25,9 +25,12 @@ merges the coincident vertices of several meshes and :func:`obj_text` /
 ([0.25, 0.5, 0.0], [0.0, 0.0, 1.0])
 """
 
+import os
 from math import comb, factorial
+from typing import Iterable, Optional, Union
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
@@ -51,8 +54,13 @@ NUDGE = 1e-6
 #: MemoryError half-way.
 MAX_VERTICES = 1 << 24
 
+#: A triangle mesh: vertices (K, 3), triangles (T, 3) int64, normals (K, 3).
+MeshArrays = tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.float64]]
+#: Mixed partials by (order in u, order in v).
+Partials = dict[tuple[int, int], NDArray[np.float64]]
 
-def _net(name, value, dims=(2, 3)):
+
+def _net(name: str, value: ArrayLike, dims: tuple[int, ...] = (2, 3)) -> NDArray[np.float64]:
     """A control net as a float64 (m + 1, n + 1, dim) array of finite points."""
     try:
         a = np.array(value, dtype=np.float64)
@@ -73,7 +81,7 @@ def _net(name, value, dims=(2, 3)):
     return a
 
 
-def _weights(name, value, shape):
+def _weights(name: str, value: Optional[ArrayLike], shape: tuple[int, ...]) -> Optional[NDArray[np.float64]]:
     if value is None:
         return None
     try:
@@ -89,7 +97,7 @@ def _weights(name, value, shape):
     return w
 
 
-def _order(name, value):
+def _order(name: str, value: object) -> int:
     if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:
         raise ArgumentValueError(f"{name} must be an integer >= 0, got {v._show(value)}")
     return int(value)
@@ -104,44 +112,50 @@ class Surface:
     the 1-D parameters ``t``, shape (len(t), m + 1 or n + 1).
     """
 
-    net = None
-    weights = None
-    domain = ((0.0, 1.0), (0.0, 1.0))
+    net: NDArray[np.float64]
+    weights: Optional[NDArray[np.float64]] = None
+    domain: tuple[tuple[float, float], tuple[float, float]] = ((0.0, 1.0), (0.0, 1.0))
 
     @property
-    def dimension(self):
-        return self.net.shape[2]
+    def dimension(self) -> int:
+        """Number of coordinates of each point (3, or 2 for a plane net)."""
+        return int(self.net.shape[2])
 
     @property
-    def rational(self):
+    def rational(self) -> bool:
+        """True if the surface has weights."""
         return self.weights is not None
 
-    def homogeneous(self):
+    def _basis(self, axis: int, t: NDArray[np.float64], k: int) -> NDArray[np.float64]:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    def homogeneous(self) -> NDArray[np.float64]:
         """The net [w P, w] (plain surfaces: [P, 1]) as an (m + 1, n + 1, dim + 1) array."""
         w = np.ones(self.net.shape[:2]) if self.weights is None else self.weights
         return np.concatenate([self.net * w[..., None], w[..., None]], axis=2)
 
     # -- evaluation ---------------------------------------------------------------
 
-    def _uv(self, u, v):
-        u = parameters("u", u, self.domain[0])
-        v = parameters("v", v, self.domain[1])
+    def _uv(self, u: ArrayLike, v: ArrayLike) -> tuple[tuple[int, ...], NDArray[np.float64], NDArray[np.float64]]:
+        pu = parameters("u", u, self.domain[0])
+        pv = parameters("v", v, self.domain[1])
         try:
-            u, v = np.broadcast_arrays(u, v)
+            bu, bv = np.broadcast_arrays(pu, pv)
         except ValueError:
             raise ArgumentValueError(
-                f"u and v must broadcast to one shape, got shapes {u.shape} and {v.shape}"
+                f"u and v must broadcast to one shape, got shapes {pu.shape} and {pv.shape}"
             ) from None
-        return u.shape, u.ravel(), v.ravel()
+        return bu.shape, bu.ravel(), bv.ravel()
 
-    def _raw(self, u, v, k, l, grid):
+    def _raw(self, u: NDArray[np.float64], v: NDArray[np.float64], k: int, l: int, grid: bool) -> NDArray[np.float64]:
         """The (k, l) mixed partial of the numerator net (homogeneous if rational)."""
         h = self.homogeneous() if self.rational else self.net
         bu = self._basis(0, u, k)
         bv = self._basis(1, v, l)
-        return np.einsum("ai,ijc,bj->abc" if grid else "ai,ijc,aj->ac", bu, h, bv)
+        raw: NDArray[np.float64] = np.einsum("ai,ijc,bj->abc" if grid else "ai,ijc,aj->ac", bu, h, bv)
+        return raw
 
-    def _partials(self, u, v, k, l, grid=False):
+    def _partials(self, u: NDArray[np.float64], v: NDArray[np.float64], k: int, l: int, grid: bool = False) -> Partials:
         """Every mixed partial (i, j) with i <= k, j <= l, as a dict.
 
         Rational surfaces: Leibniz's rule on A = w S (Piegl & Tiller, eq. 4.20),
@@ -151,7 +165,7 @@ class Surface:
         if not self.rational:
             return raw
         w = {key: a[..., -1:] for key, a in raw.items()}
-        out = {}
+        out: Partials = {}
         for i in range(k + 1):
             for j in range(l + 1):
                 a = raw[i, j][..., :-1].copy()
@@ -162,7 +176,7 @@ class Surface:
                 out[i, j] = a / w[0, 0]
         return out
 
-    def evaluate(self, u, v):
+    def evaluate(self, u: ArrayLike, v: ArrayLike) -> NDArray[np.float64]:
         """Points on the surface.
 
         Parameters
@@ -179,24 +193,24 @@ class Surface:
 
     __call__ = evaluate
 
-    def derivative(self, u, v, du=1, dv=0):
+    def derivative(self, u: ArrayLike, v: ArrayLike, du: int = 1, dv: int = 0) -> NDArray[np.float64]:
         """The mixed partial derivative d^(du+dv) P / du^du dv^dv at (u, v).
 
         ``derivative(u, v, 0, 0)`` is the point, ``(1, 0)`` is S_u, ``(0, 1)`` is S_v.
         Shapes as :meth:`evaluate`.
         """
-        du, dv = _order("du", du), _order("dv", dv)
-        shape, u, v = self._uv(u, v)
-        out = self._partials(u, v, du, dv)[du, dv]
+        k, l = _order("du", du), _order("dv", dv)
+        shape, pu, pv = self._uv(u, v)
+        out = self._partials(pu, pv, k, l)[k, l]
         return out.reshape(shape + (self.dimension,))
 
-    def partials(self, u, v):
+    def partials(self, u: ArrayLike, v: ArrayLike) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
         """(S_u, S_v), the first partial derivatives at (u, v); shapes as :meth:`evaluate`."""
-        shape, u, v = self._uv(u, v)
-        d = self._partials(u, v, 1, 1)
+        shape, pu, pv = self._uv(u, v)
+        d = self._partials(pu, pv, 1, 1)
         return d[1, 0].reshape(shape + (self.dimension,)), d[0, 1].reshape(shape + (self.dimension,))
 
-    def normal(self, u, v):
+    def normal(self, u: ArrayLike, v: ArrayLike) -> NDArray[np.float64]:
         """Unit normals (S_u x S_v) / |S_u x S_v| at (u, v); 3-D surfaces only.
 
         Where the cross product vanishes -- a collapsed edge (all the control points of
@@ -204,10 +218,10 @@ class Surface:
         partials -- the normal is taken a step of ``NUDGE`` times the domain toward the
         center of the patch, the limit normal up to O(NUDGE).
         """
-        shape, u, v = self._uv(u, v)
-        return self._normals(u, v, grid=False).reshape(shape + (3,))
+        shape, pu, pv = self._uv(u, v)
+        return self._normals(pu, pv, grid=False).reshape(shape + (3,))
 
-    def _normals(self, u, v, grid):
+    def _normals(self, u: NDArray[np.float64], v: NDArray[np.float64], grid: bool) -> NDArray[np.float64]:
         if self.dimension != 3:
             raise ArgumentValueError(
                 f"normals need a 3-D surface; this one has {self.dimension}-D control points"
@@ -225,15 +239,15 @@ class Surface:
             n[bad] = _unit_normals(e[1, 0], e[0, 1])
         return n
 
-    def grid(self, us, vs):
+    def grid(self, us: ArrayLike, vs: ArrayLike) -> NDArray[np.float64]:
         """Points at every (us[a], vs[b]): shape (len(us), len(vs), dimension)."""
-        us = parameters("us", np.ravel(us), self.domain[0])
-        vs = parameters("vs", np.ravel(vs), self.domain[1])
-        return self._partials(us, vs, 0, 0, grid=True)[0, 0]
+        pu = parameters("us", np.ravel(us), self.domain[0])
+        pv = parameters("vs", np.ravel(vs), self.domain[1])
+        return self._partials(pu, pv, 0, 0, grid=True)[0, 0]
 
     # -- meshes -------------------------------------------------------------------
 
-    def tessellate(self, nu=16, nv=16):
+    def tessellate(self, nu: int = 16, nv: int = 16) -> MeshArrays:
         """A triangle mesh of the surface on a uniform (nu x nv) grid of parameters.
 
         Parameters
@@ -275,17 +289,18 @@ class Surface:
         return points, grid_triangles(nu, nv), normals
 
 
-def _unit_normals(su, sv):
+def _unit_normals(su: NDArray[np.float64], sv: NDArray[np.float64]) -> NDArray[np.float64]:
     """(S_u x S_v) / |S_u x S_v|, NaN rows where it is degenerate."""
     c = np.cross(su, sv)
     length = np.linalg.norm(c, axis=-1)
     scale = np.linalg.norm(su, axis=-1) * np.linalg.norm(sv, axis=-1)
     ok = length > DEGENERATE * scale
     with np.errstate(invalid="ignore", divide="ignore"):
-        return np.where(ok[..., None], c / np.where(ok, length, 1.0)[..., None], np.nan)
+        unit: NDArray[np.float64] = np.where(ok[..., None], c / np.where(ok, length, 1.0)[..., None], np.nan)
+    return unit
 
 
-def grid_triangles(nu, nv):
+def grid_triangles(nu: int, nv: int) -> NDArray[np.int64]:
     """The 2 nu nv triangles of an (nu + 1) x (nv + 1) vertex grid (see
     :meth:`Surface.tessellate`), int64 (T, 3)."""
     a, b = np.meshgrid(np.arange(nu), np.arange(nv), indexing="ij")
@@ -338,13 +353,13 @@ class BezierSurface(Surface):
     (2, 2)
     """
 
-    def __init__(self, control_net, weights=None):
+    def __init__(self, control_net: ArrayLike, weights: Optional[ArrayLike] = None) -> None:
         self.net = _net("control_net", control_net)
         self.weights = _weights("weights", weights, self.net.shape[:2])
         self.degree = (self.net.shape[0] - 1, self.net.shape[1] - 1)
         self.domain = ((0.0, 1.0), (0.0, 1.0))
 
-    def _basis(self, axis, t, k):
+    def _basis(self, axis: int, t: NDArray[np.float64], k: int) -> NDArray[np.float64]:
         n = self.degree[axis]
         if k > n:
             return np.zeros((len(t), n + 1))
@@ -354,19 +369,45 @@ class BezierSurface(Surface):
             b = np.hstack([pad, b]) - np.hstack([b, pad])
         return b * (factorial(n) // factorial(n - k))
 
-    def boundary(self, which):
+    def boundary(self, which: str) -> NDArray[np.float64]:
         """The control points of a boundary curve: ``"u0"``, ``"u1"`` (u fixed, v
-        running) or ``"v0"``, ``"v1"`` -- an (n + 1, dim) or (m + 1, dim) array."""
-        rows = {"u0": self.net[0], "u1": self.net[-1], "v0": self.net[:, 0], "v1": self.net[:, -1]}
+        running) or ``"v0"``, ``"v1"`` -- an (n + 1, dim) or (m + 1, dim) array.
+
+        Parameters
+        ----------
+        which : {"u0", "u1", "v0", "v1"}
+            The boundary: u = 0, u = 1, v = 0 or v = 1.
+
+        Returns
+        -------
+        ndarray of float64, shape (n + 1, dim) or (m + 1, dim)
+            The control points of that boundary's Bezier curve (notes, chapter 5,
+            Q.1: the boundary curves are the Bezier curves of the net's boundary
+            rows).
+
+        Raises
+        ------
+        ArgumentValueError
+            An unknown ``which``.
+
+        Examples
+        --------
+        >>> import numpy as np, scanline as sl
+        >>> net = np.zeros((2, 2, 3)); net[1, :, 0] = 1; net[:, 1, 1] = 1
+        >>> sl.curves.BezierSurface(net).boundary("v1").tolist()
+        [[0.0, 1.0, 0.0], [1.0, 1.0, 0.0]]
+        """
+        rows: dict[str, NDArray[np.float64]] = {"u0": self.net[0], "u1": self.net[-1],
+                                                "v0": self.net[:, 0], "v1": self.net[:, -1]}
         v.choice("which", which, tuple(rows))
         return rows[which]
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         kind = "rational " if self.rational else ""
         return f"<{kind}BezierSurface of degree {self.degree}, {self.dimension}-D>"
 
 
-def _knots(name, value, count, order):
+def _knots(name: str, value: Optional[ArrayLike], count: int, order: int) -> NDArray[np.float64]:
     """The open uniform knot vector by default, else a checked explicit one."""
     if value is None:
         return open_uniform_knots(count, order)
@@ -378,7 +419,7 @@ def _knots(name, value, count, order):
         raise ArgumentTypeError(f"{name}: {e}") from None
 
 
-def bspline_basis(knots, order, t, k=0):
+def bspline_basis(knots: ArrayLike, order: int, t: ArrayLike, k: int = 0) -> NDArray[np.float64]:
     """The k-th derivatives of the B-spline blending functions B_(i,d)(t), i = 0 .. n.
 
     The Cox-de Boor values of order d - k (:func:`scanline.curves.basis`), then k
@@ -386,23 +427,24 @@ def bspline_basis(knots, order, t, k=0):
     - B_(i+1,d-1)/(u_(i+d) - u_(i+1))), a term with a zero denominator being 0.
     Returns shape (len(t), len(knots) - order).
     """
-    knots = np.asarray(knots, np.float64)
-    t = np.asarray(t, np.float64).reshape(-1)
+    kn = np.asarray(knots, np.float64)
+    ts = np.asarray(t, np.float64).reshape(-1)
     if k >= order:
-        return np.zeros((len(t), len(knots) - order))
-    b = basis(knots, order - k, t)
+        return np.zeros((len(ts), len(kn) - order))
+    b = basis(kn, order - k, ts)
     for d in range(order - k + 1, order + 1):
-        i = np.arange(len(knots) - d)
-        b = (d - 1) * (_ratio(b[:, :-1], knots[i + d - 1] - knots[i])
-                       - _ratio(b[:, 1:], knots[i + d] - knots[i + 1]))
+        i = np.arange(len(kn) - d)
+        b = (d - 1) * (_ratio(b[:, :-1], kn[i + d - 1] - kn[i])
+                       - _ratio(b[:, 1:], kn[i + d] - kn[i + 1]))
     return b
 
 
-def _ratio(num, den):
+def _ratio(num: NDArray[np.float64], den: NDArray[np.float64]) -> NDArray[np.float64]:
     """num / den with x / 0 = 0 (the Cox-de Boor convention for repeated knots)."""
-    den = np.broadcast_to(den, np.broadcast(num, den).shape)
+    d = np.broadcast_to(den, np.broadcast(num, den).shape)
     with np.errstate(divide="ignore", invalid="ignore"):
-        return np.where(den != 0, num / np.where(den != 0, den, 1.0), 0.0)
+        q: NDArray[np.float64] = np.where(d != 0, num / np.where(d != 0, d, 1.0), 0.0)
+    return q
 
 
 class BSplineSurface(Surface):
@@ -448,7 +490,9 @@ class BSplineSurface(Surface):
     True
     """
 
-    def __init__(self, control_net, order_u, order_v, knots_u=None, knots_v=None, weights=None):
+    def __init__(self, control_net: ArrayLike, order_u: int, order_v: int,
+                 knots_u: Optional[ArrayLike] = None, knots_v: Optional[ArrayLike] = None,
+                 weights: Optional[ArrayLike] = None) -> None:
         self.net = _net("control_net", control_net)
         m, n = self.net.shape[:2]
         self.order = (v.positive_int("order_u", order_u, minimum=2),
@@ -462,13 +506,13 @@ class BSplineSurface(Surface):
         self.knots = (_knots("knots_u", knots_u, m, self.order[0]),
                       _knots("knots_v", knots_v, n, self.order[1]))
         self.weights = _weights("weights", weights, self.net.shape[:2])
-        self.domain = tuple((float(t[d - 1]), float(t[c]))
-                            for t, d, c in zip(self.knots, self.order, (m, n)))
+        (ku, kv), (du, dv) = self.knots, self.order
+        self.domain = ((float(ku[du - 1]), float(ku[m])), (float(kv[dv - 1]), float(kv[n])))
 
-    def _basis(self, axis, t, k):
+    def _basis(self, axis: int, t: NDArray[np.float64], k: int) -> NDArray[np.float64]:
         return bspline_basis(self.knots[axis], self.order[axis], t, k)
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         kind = "rational " if self.rational else ""
         return f"<{kind}BSplineSurface of order {self.order}, {self.dimension}-D>"
 
@@ -476,7 +520,8 @@ class BSplineSurface(Surface):
 # -- meshes ---------------------------------------------------------------------------
 
 
-def weld(vertices, triangles, normals=None, tolerance=1e-9):
+def weld(vertices: ArrayLike, triangles: ArrayLike, normals: Optional[ArrayLike] = None,
+         tolerance: float = 1e-9) -> tuple[NDArray[np.float64], NDArray[np.int64], Optional[NDArray[np.float64]]]:
     """Merge vertices closer than ``tolerance`` and drop the triangles that collapse.
 
     Parameters
@@ -498,14 +543,14 @@ def weld(vertices, triangles, normals=None, tolerance=1e-9):
     tolerance = v.number("tolerance", tolerance)
     if tolerance <= 0:
         raise ArgumentValueError(f"tolerance must be > 0, got {tolerance}")
-    vertices = np.asarray(vertices, np.float64)
-    keys = np.floor(vertices / tolerance + 0.5).astype(np.int64)
+    verts = np.asarray(vertices, np.float64)
+    keys = np.floor(verts / tolerance + 0.5).astype(np.int64)
     _, first, inverse = np.unique(keys, axis=0, return_index=True, return_inverse=True)
     inverse = inverse.ravel()
-    out_v = vertices[first]
+    out_v = verts[first]
     tri = inverse[np.asarray(triangles, np.int64)]
     keep = (tri[:, 0] != tri[:, 1]) & (tri[:, 1] != tri[:, 2]) & (tri[:, 0] != tri[:, 2])
-    out_n = None
+    out_n: Optional[NDArray[np.float64]] = None
     if normals is not None:
         out_n = np.zeros_like(out_v)
         np.add.at(out_n, inverse, np.asarray(normals, np.float64))
@@ -513,9 +558,12 @@ def weld(vertices, triangles, normals=None, tolerance=1e-9):
     return out_v, tri[keep], out_n
 
 
-def merge(meshes):
+def merge(meshes: Iterable[MeshArrays]) -> MeshArrays:
     """Concatenate meshes (vertices, triangles, normals) into one, indices offset."""
-    verts, tris, norms, offset = [], [], [], 0
+    verts: list[NDArray[np.float64]] = []
+    tris: list[NDArray[np.int64]] = []
+    norms: list[NDArray[np.float64]] = []
+    offset = 0
     for vs, ts, ns in meshes:
         verts.append(vs)
         tris.append(np.asarray(ts, np.int64) + offset)
@@ -524,7 +572,7 @@ def merge(meshes):
     return np.concatenate(verts), np.concatenate(tris), np.concatenate(norms)
 
 
-def obj_text(vertices, triangles, normals=None):
+def obj_text(vertices: ArrayLike, triangles: ArrayLike, normals: Optional[ArrayLike] = None) -> str:
     """A mesh as Wavefront OBJ text (``v``, ``vn`` and 1-based ``f`` lines).
 
     >>> print(obj_text([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]]), end="")
@@ -533,18 +581,18 @@ def obj_text(vertices, triangles, normals=None):
     v 0 1 0
     f 1 2 3
     """
-    vertices = np.asarray(vertices, np.float64)
-    triangles = np.asarray(triangles, np.int64)
-    if vertices.ndim != 2 or vertices.shape[1] != 3:
-        raise ArgumentValueError(f"vertices must have shape (K, 3), got {vertices.shape}")
-    if triangles.ndim != 2 or triangles.shape[1] != 3:
-        raise ArgumentValueError(f"triangles must have shape (T, 3), got {triangles.shape}")
-    if triangles.size and (triangles.min() < 0 or triangles.max() >= len(vertices)):
+    vs = np.asarray(vertices, np.float64)
+    ts = np.asarray(triangles, np.int64)
+    if vs.ndim != 2 or vs.shape[1] != 3:
+        raise ArgumentValueError(f"vertices must have shape (K, 3), got {vs.shape}")
+    if ts.ndim != 2 or ts.shape[1] != 3:
+        raise ArgumentValueError(f"triangles must have shape (T, 3), got {ts.shape}")
+    if ts.size and (ts.min() < 0 or ts.max() >= len(vs)):
         raise ArgumentValueError(
-            f"triangles must index the {len(vertices)} vertices (0 .. {len(vertices) - 1})"
+            f"triangles must index the {len(vs)} vertices (0 .. {len(vs) - 1})"
         )
-    lines = ["v %.9g %.9g %.9g" % tuple(p) for p in vertices]
-    f = triangles + 1
+    lines = ["v %.9g %.9g %.9g" % tuple(p) for p in vs]
+    f = ts + 1
     if normals is not None:
         lines += ["vn %.6g %.6g %.6g" % tuple(n) for n in np.asarray(normals, np.float64)]
         lines += ["f %d//%d %d//%d %d//%d" % (a, a, b, b, c, c) for a, b, c in f]
@@ -553,7 +601,8 @@ def obj_text(vertices, triangles, normals=None):
     return "\n".join(lines) + "\n"
 
 
-def write_obj(path, vertices, triangles, normals=None):
+def write_obj(path: Union[str, "os.PathLike[str]"], vertices: ArrayLike, triangles: ArrayLike,
+              normals: Optional[ArrayLike] = None) -> None:
     """Write a mesh to ``path`` as Wavefront OBJ, atomically (a failure leaves no file)."""
     text = obj_text(vertices, triangles, normals).encode("ascii")
     write_atomically(path, lambda f: f.write(text))

@@ -19,20 +19,28 @@ import math
 
 import weakref
 from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any, Optional
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .polygons import convex, newell_planes
 
+if TYPE_CHECKING:
+    from ..mesh import Mesh
 
-def unit_rows(a):
+F64 = NDArray[np.float64]
+
+
+def unit_rows(a: F64) -> F64:
     """Rows of ``a`` (..., 3) divided by their length (zero rows stay zero)."""
     n = np.sqrt((a * a).sum(axis=-1, keepdims=True))
     with np.errstate(invalid="ignore", divide="ignore"):
-        return np.where(n > 0, a / n, 0.0)
+        out: F64 = np.where(n > 0, a / n, 0.0)
+    return out
 
 
-def meshes_list(meshes, empty=False):
+def meshes_list(meshes: Any, empty: bool = False) -> list["Mesh"]:
     """``meshes`` (one mesh or several: :class:`~scanline.mesh.Mesh` or any object
     :meth:`~scanline.mesh.Mesh.from_any` takes, a trimesh mesh say) as a list of Mesh
     (``empty``: whether none is allowed)."""
@@ -46,7 +54,7 @@ def meshes_list(meshes, empty=False):
 CREASE_ANGLE = math.radians(30.0)
 
 
-def corner_normals(mesh, crease_angle=CREASE_ANGLE):
+def corner_normals(mesh: "Mesh", crease_angle: Optional[float] = CREASE_ANGLE) -> F64:
     """The unit normal at each face corner, (C, 3) in the order of
     ``mesh.face_indices``: the mesh's own vertex normals where it has them, else the
     normals of the faces around the vertex within ``crease_angle`` (radians, 0..pi) of
@@ -56,7 +64,8 @@ def corner_normals(mesh, crease_angle=CREASE_ANGLE):
     if mesh.normals is not None:
         return unit_rows(mesh.normals[idx])
     if crease_angle is None:
-        return averaged_normals(mesh)[idx]
+        averaged: F64 = averaged_normals(mesh)[idx]
+        return averaged
     from .._kernels._jit import call
     from .._kernels.normals import crease_normals
 
@@ -80,9 +89,27 @@ def corner_normals(mesh, crease_angle=CREASE_ANGLE):
     return out
 
 
-def averaged_normals(mesh):
+def averaged_normals(mesh: "Mesh") -> F64:
     """Vertex normals (V, 3) averaged from the unit normals of the faces sharing each
-    vertex (Hearn & Baker, section 14-5, Gouraud shading: N_v = sum N_k / |sum N_k|)."""
+    vertex (Hearn & Baker, section 14-5, Gouraud shading: N_v = sum N_k / |sum N_k|).
+
+    Parameters
+    ----------
+    mesh : Mesh
+        The mesh.
+
+    Returns
+    -------
+    numpy.ndarray
+        float64 (V, 3) unit vertex normals.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> n = sl.screen.averaged_normals(sl.mesh.cube())   # a corner meets 3 faces
+    >>> bool(abs(abs(n).round(6) - round(3 ** -0.5, 6)).max() == 0)
+    True
+    """
     idx, off = mesh.face_indices, mesh.face_offsets
     owner = np.repeat(np.arange(mesh.face_count), np.diff(off))
     fn = unit_rows(newell_planes(mesh.vertices[idx], off)[:, :3])
@@ -105,42 +132,63 @@ class MeshArrays:
     convex (F,): a polygon method may then take it whole, since a planar convex
     polygon in front of the eye projects to a convex polygon.  The texture
     coordinates at each facet's vertices (G, 3, 2; None: the mesh has none)."""
-    world: np.ndarray
-    vertex_normals: np.ndarray
-    normals: np.ndarray
-    colors: object
-    degenerate: np.ndarray
-    facet_face: np.ndarray
-    face_normals: np.ndarray
-    face_centroids: np.ndarray
-    face_colors: object
-    face_planar: np.ndarray
-    uv: object = None
+    world: F64
+    vertex_normals: F64
+    normals: F64
+    colors: Optional[F64]
+    degenerate: NDArray[np.bool_]
+    facet_face: NDArray[np.int64]
+    face_normals: F64
+    face_centroids: F64
+    face_colors: Optional[F64]
+    face_planar: NDArray[np.bool_]
+    uv: Optional[F64] = None
 
 
 #: mesh -> (copies of the arrays it was made from, MeshArrays)
-_KEPT = weakref.WeakKeyDictionary()
+_KEPT: "weakref.WeakKeyDictionary[Mesh, tuple[tuple[Any, ...], MeshArrays]]" = (
+    weakref.WeakKeyDictionary())
 
 
-def _key(mesh):
+def _key(mesh: "Mesh") -> tuple[Any, ...]:
     return (mesh.vertices, mesh.face_indices, mesh.face_offsets, mesh.normals, mesh.colors,
             mesh.color_on, mesh.uv)
 
 
-def _same(a, b):
+def _same(a: object, b: object) -> bool:
     if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
         return (isinstance(a, np.ndarray) and isinstance(b, np.ndarray) and a.shape == b.shape
                 and a.dtype == b.dtype and np.array_equal(a, b))
-    return a == b
+    return bool(a == b)
 
 
-def mesh_arrays(mesh, crease_angle=CREASE_ANGLE):
+def mesh_arrays(mesh: "Mesh", crease_angle: Optional[float] = CREASE_ANGLE) -> MeshArrays:
     """The :class:`MeshArrays` of ``mesh`` (its vertex normals split at
     ``crease_angle``, :func:`corner_normals`), computed once and kept while the mesh's
     vertices, faces, normals and colors are equal to what they were (they are public
     arrays: a change in place is noticed by comparing them with copies) and the crease
     angle is the same.  Its arrays are read-only in effect: several scenes share
-    them."""
+    them.
+
+    Parameters
+    ----------
+    mesh : Mesh
+        The mesh.
+    crease_angle : float or None
+        Radians, 0..pi; None averages every face around a vertex.
+
+    Returns
+    -------
+    MeshArrays
+        Its arrays (shared: do not write to them).
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> arrays = sl.screen.mesh_arrays(sl.mesh.cube())
+    >>> arrays.world.shape, arrays.face_normals.shape, bool(arrays.face_planar.all())
+    ((12, 3, 3), (6, 3), True)
+    """
     key = _key(mesh) + (crease_angle,)
     kept = _KEPT.get(mesh)
     if kept is not None and all(_same(a, b) for a, b in zip(kept[0], key)):

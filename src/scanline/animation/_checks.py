@@ -11,12 +11,14 @@ import numbers
 import warnings
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
 
 
-def floats(name, value, what="a number or an array of numbers"):
+def floats(name: str, value: object,
+           what: str = "a number or an array of numbers") -> NDArray[np.float64]:
     """``value`` as a float64 array (a copy), or ArgumentTypeError naming ``name``.
 
     Refused: strings and bytes (numpy would read ``"5"`` as 5.0), complex numbers,
@@ -27,13 +29,14 @@ def floats(name, value, what="a number or an array of numbers"):
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")      # (a ComplexWarning inside an object array)
-            out = np.array(value, dtype=np.float64)
+            out: NDArray[np.float64] = np.array(value, dtype=np.float64)
     except (TypeError, ValueError, OverflowError):
         raise ArgumentTypeError(f"{name} must be {what}, got {v._show(value)}") from None
     return out
 
 
-def finite(name, value, what="a number or an array of numbers"):
+def finite(name: str, value: object,
+           what: str = "a number or an array of numbers") -> NDArray[np.float64]:
     """:func:`floats`, and every element finite."""
     out = floats(name, value, what)
     if not np.isfinite(out).all():
@@ -41,7 +44,7 @@ def finite(name, value, what="a number or an array of numbers"):
     return out
 
 
-def flag(name, value):
+def flag(name: str, value: object) -> bool:
     """``value`` as a bool: True, False (or numpy's), or the integers 1 and 0."""
     if isinstance(value, (bool, np.bool_)):
         return bool(value)
@@ -50,6 +53,6 @@ def flag(name, value):
     raise ArgumentTypeError(f"{name} must be True or False, got {v._show(value)}")
 
 
-def progress_flag(value):
+def progress_flag(value: object) -> bool | None:
     """``progress``: None (automatic), True or False."""
     return None if value is None else flag("progress", value)

@@ -15,14 +15,15 @@ and key frames of a sequence of given duration; :func:`duration_of` is its inver
 """
 
 import math
-from typing import NamedTuple
+from typing import NamedTuple, Union
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from ..budget import check as budget
 from ..errors import ArgumentValueError
-from .easing import SPACINGS, apply, resolve
+from .easing import SPACINGS, Easing, apply, resolve
 
 
 #: The most frames a sequence may have.
@@ -53,6 +54,15 @@ class FramePlan(NamedTuple):
         most ``inbetweens`` frames lie between two key frames:
         ``ceil((frames - 1) / (inbetweens + 1)) + 1`` (every frame when there are no
         in-betweens).
+
+    Examples
+    --------
+    Two seconds at 24 fps are 48 frames; blocks of a key frame and 3 in-betweens
+    cover 47 of them in 12 blocks, and a 13th key frame closes the sequence:
+
+    >>> from scanline.animation import frames_needed
+    >>> frames_needed(2, 24, inbetweens=3)
+    FramePlan(duration=2.0, fps=24.0, frames=48, inbetweens=3, key_frames=13)
     """
 
     duration: float
@@ -62,7 +72,7 @@ class FramePlan(NamedTuple):
     key_frames: int
 
 
-def _fps(fps, name="fps"):
+def _fps(fps: object, name: str = "fps") -> float:
     fps = v.number(name, fps)
     if fps <= 0:
         raise ArgumentValueError(f"{name} must be > 0 (frames per second), got {fps}")
@@ -73,15 +83,38 @@ def _fps(fps, name="fps"):
     return fps
 
 
-def _count(name, value, minimum):
+def _count(name: str, value: object, minimum: int) -> int:
     return v.positive_int(name, value, minimum=minimum)
 
 
-def frame_count(duration, fps):
+def frame_count(duration: float, fps: float) -> int:
     """Frames of a sequence of ``duration`` seconds at ``fps``: ``ceil(duration * fps)``,
     at least 1 (a product within 1e-9 of an integer counts as that integer, so that
     ``frame_count(1.0, 29.97)`` is 30 and not 31 for a rounding error).
 
+    Parameters
+    ----------
+    duration : float
+        Seconds, > 0.
+    fps : float
+        Frames per second, within 0.001 to 1e6.
+
+    Returns
+    -------
+    int
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If ``duration`` is not > 0, ``fps`` is out of range, or the count exceeds
+        :data:`MAX_FRAMES`.
+
+    Notes
+    -----
+    Notes, chapter 6, Q1 (frames per second of film and terminals).
+
+    Examples
+    --------
     >>> frame_count(60, 24), frame_count(2.5, 25), frame_count(0.1, 30)
     (1440, 63, 3)
     """
@@ -98,7 +131,7 @@ def frame_count(duration, fps):
                else math.ceil(product))
 
 
-def frames_needed(duration, fps, inbetweens=0):
+def frames_needed(duration: float, fps: float, inbetweens: int = 0) -> FramePlan:
     """How many frames, and how many key frames, a sequence needs.
 
     Parameters
@@ -113,6 +146,11 @@ def frames_needed(duration, fps, inbetweens=0):
     Returns
     -------
     FramePlan
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        As :func:`frame_count`, or if ``inbetweens`` is not an integer >= 0.
 
     Notes
     -----
@@ -136,12 +174,37 @@ def frames_needed(duration, fps, inbetweens=0):
     return FramePlan(float(duration), float(fps), frames, n, max(keys, 1))
 
 
-def duration_of(key_frames, fps, inbetweens=0):
+def duration_of(key_frames: int, fps: float, inbetweens: int = 0) -> FramePlan:
     """The inverse of :func:`frames_needed`: the sequence that ``key_frames`` key
     frames with ``inbetweens`` in-betweens per pair make at ``fps``.
 
     Its frames are K + (K - 1) n and its duration frames / fps.
 
+    Parameters
+    ----------
+    key_frames : int
+        K, at least 1.
+    fps : float
+        Frames per second, within 0.001 to 1e6.
+    inbetweens : int, default 0
+        n, in-betweens between each pair of key frames, >= 0.
+
+    Returns
+    -------
+    FramePlan
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If a count is not an integer in range, ``fps`` is out of range, or the frames
+        exceed :data:`MAX_FRAMES`.
+
+    Notes
+    -----
+    Notes, chapter 6, Q1; Hearn & Baker, section 16-1.  See docs/errata.md, E60.
+
+    Examples
+    --------
     >>> plan = duration_of(288, 24, inbetweens=5)   # the notes' 288 key frames
     >>> plan.frames, round(plan.duration, 2)
     (1723, 71.79)
@@ -159,7 +222,8 @@ def duration_of(key_frames, fps, inbetweens=0):
     return FramePlan(frames / fps, fps, frames, n, k)
 
 
-def inbetween_times(t1, t2, n, spacing="constant"):
+def inbetween_times(t1: float, t2: float, n: int,
+                    spacing: Union[str, Easing] = "constant") -> NDArray[np.float64]:
     """The times of the ``n`` in-betweens between key frames at ``t1`` and ``t2``.
 
     Hearn & Baker, §16-5, with Δt = t2 - t1 and j = 1 ... n:
@@ -178,12 +242,19 @@ def inbetween_times(t1, t2, n, spacing="constant"):
         The key frames' times, t1 < t2.
     n : int
         The number of in-betweens, >= 0.
-    spacing : str or callable
+    spacing : str or callable, default "constant"
+        A spacing law, an easing name or an easing function.
 
     Returns
     -------
     numpy.ndarray
         ``n`` times, strictly between t1 and t2 for the four laws.
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If t1 >= t2, ``n`` is not an integer >= 0, ``spacing`` is unknown, or the
+        times would not fit the memory budget.
 
     Examples
     --------
@@ -201,7 +272,8 @@ def inbetween_times(t1, t2, n, spacing="constant"):
     budget(n * 8 * 6, "n", f"{n} in-between times",
           hint="ask for fewer in-betweens, or compute them in pieces (t1 and t2 of each piece)")
     j = np.arange(1, n + 1, dtype=np.float64)
-    return t1 + (t2 - t1) * apply(function, j / (n + 1))
+    times: NDArray[np.float64] = t1 + (t2 - t1) * apply(function, j / (n + 1))
+    return times
 
 
 __all__ = ["FramePlan", "frame_count", "frames_needed", "duration_of", "inbetween_times",

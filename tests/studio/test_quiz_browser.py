@@ -3,6 +3,8 @@
 click on the grid; the studio's quiz case answered by its choice buttons.  The
 expected answers are ``sl.trace``'s rows, read here, not the page's."""
 
+import json
+
 import scanline as sl
 from scanline.cli import main
 from scanline.studio.quiz import case
@@ -81,3 +83,36 @@ def test_the_index_and_the_quiz_me_button_start_quizzes(server, page):
     assert page.evaluate("window.explorer.state.view.args") == case("dda", 5)
     assert page.is_visible("#quiz") and page.is_hidden("#stepper")
     assert page.inner_text("#quiz-score") == "score: 0 of 0"
+
+
+def answer_right(page, question):
+    """Answer ``question`` (from the quiz's data) the right way for its kind."""
+    if question["kind"] == "pixel":
+        page.mouse.click(*canvas_point(page, *question["answer"]))
+    elif question["kind"] == "choice":
+        page.click(f"#quiz-answer button[data-choice={json.dumps(str(question['answer'][0]))}]")
+    else:
+        page.fill("#quiz-number", repr(question["answer"][0]))
+        page.click("#quiz-answer button")
+
+
+def test_every_algorithm_s_offline_quiz_takes_a_right_answer(browser, page, tmp_path):
+    from scanline.studio.explorer import parse
+    from scanline.studio.page import explain_html
+    from scanline.studio.quiz import algorithms
+
+    for name in algorithms():
+        args = case(name, 2)
+        out = tmp_path / f"{name}.html"
+        out.write_text(explain_html(parse(name, args), quiz=True), encoding="utf-8")
+        page.goto(out.as_uri())
+        wait_ready(page)
+        asked = page.evaluate("window.explorer.state.view.quiz")
+        k = next(i for i, q in enumerate(asked) if q)
+        for _ in range(k):                                   # steps that ask nothing
+            page.click("button[data-choice=show]")
+            page.click("button[data-choice=next]")
+        answer_right(page, asked[k])
+        assert page.evaluate("document.body.dataset.score") == "1/1", name
+        assert page.evaluate("document.body.dataset.quiz") == f"revealed {k}", name
+        assert page.locator("tr.current").get_attribute("data-step") == str(k), name

@@ -5,14 +5,19 @@ functions of time or position.
 10.0
 """
 
+from typing import Union
+
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentValueError
 from ._checks import finite, floats
 
 
-def bouncing_ball(x, amplitude=1.0, omega=1.0, theta0=0.0, damping=0.0):
+def bouncing_ball(x: ArrayLike, amplitude: float = 1.0, omega: float = 1.0,
+                  theta0: float = 0.0,
+                  damping: float = 0.0) -> Union[float, NDArray[np.float64]]:
     """The damped bounce of Hearn & Baker's direct-motion example:
     y(x) = A · |sin(ωx + θ₀)| · e^(−kx).
 
@@ -34,9 +39,27 @@ def bouncing_ball(x, amplitude=1.0, omega=1.0, theta0=0.0, damping=0.0):
     float or numpy.ndarray
         y, >= 0, of x's shape.
 
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If a parameter is out of range, ``x`` is not finite numbers, or y overflows.
+
     Notes
     -----
     Hearn & Baker, §16-6, "Direct motion specification", eq. 16-6 and Fig. 16-12.
+
+    Examples
+    --------
+    The arches touch the ground at x = 0, π/ω, 2π/ω ... and peak at A half way;
+    with damping k = ln 2 the second peak (x = 3π/2) is e^(-3π ln 2 / 2) of A:
+
+    >>> import math
+    >>> from scanline.animation import bouncing_ball
+    >>> bouncing_ball([0, math.pi / 2, math.pi], amplitude=2).round(12).tolist()
+    [0.0, 2.0, 0.0]
+    >>> k = math.log(2)
+    >>> math.isclose(bouncing_ball(3 * math.pi / 2, damping=k), math.exp(-3 * math.pi * k / 2))
+    True
     """
     a = v.number("amplitude", amplitude)
     w = v.number("omega", omega)
@@ -48,19 +71,47 @@ def bouncing_ball(x, amplitude=1.0, omega=1.0, theta0=0.0, damping=0.0):
             f"damping={k}")
     xs = finite("x", x)
     with np.errstate(all="ignore"):
-        y = a * np.abs(np.sin(w * xs + theta0)) * np.exp(-k * xs)
+        y: NDArray[np.float64] = a * np.abs(np.sin(w * xs + theta0)) * np.exp(-k * xs)
     if not np.isfinite(y).all():
         raise ArgumentValueError(f"x: the bounce overflows at x = {v._show(x)} (e^(-kx) "
                                  f"beyond 1e308 with damping={k}); give x of a sane size")
     return float(y) if y.ndim == 0 else y
 
 
-def ballistic(t, position, velocity, gravity=(0.0, -9.81)):
+def ballistic(t: ArrayLike, position: ArrayLike, velocity: ArrayLike,
+              gravity: ArrayLike = (0.0, -9.81)) -> NDArray[np.float64]:
     """Closed-form projectile motion: p(t) = p₀ + v₀ t + g t² / 2 (no drag).
 
     ``position``, ``velocity`` and ``gravity`` are vectors of one dimension; ``t`` a
     time or an array of times; returns shape ``np.shape(t) + (dim,)``.
 
+    Parameters
+    ----------
+    t : float or array_like
+        Times.
+    position, velocity : array_like, shape (dim,)
+        p₀ and v₀ at t = 0, finite.
+    gravity : array_like, shape (dim,), default (0, -9.81)
+        The constant acceleration g.
+
+    Returns
+    -------
+    numpy.ndarray, shape ``np.shape(t) + (dim,)``
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        If the vectors differ in shape or are not finite, or the positions overflow.
+
+    Notes
+    -----
+    Direct motion specification, Hearn & Baker, §16-6.
+
+    Examples
+    --------
+    p(2) = (0 + 3·2, 0 + 10·2 - 10·4/2) = (6, 0):
+
+    >>> from scanline.animation import ballistic
     >>> ballistic(2.0, (0, 0), (3, 10), (0, -10)).tolist()
     [6.0, 0.0]
     """
@@ -76,7 +127,7 @@ def ballistic(t, position, velocity, gravity=(0.0, -9.81)):
             raise ArgumentValueError(f"{name} must be finite, got {a.tolist()}")
     ts = finite("t", t)[..., None]
     with np.errstate(over="ignore", invalid="ignore"):
-        out = p0 + v0 * ts + 0.5 * g * ts * ts
+        out: NDArray[np.float64] = p0 + v0 * ts + 0.5 * g * ts * ts
     if not np.isfinite(out).all():
         raise ArgumentValueError("t: the position overflows at these times (beyond 1e308); "
                                  "give times, position, velocity and gravity of sane sizes")

@@ -33,6 +33,7 @@ COMPLETE = [
     "scanline.raster",
     "scanline.rendering",
     "scanline.radiosity",
+    "scanline.screen",
 ]
 
 

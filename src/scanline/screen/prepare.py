@@ -21,15 +21,28 @@ pieces of a BSP tree): :func:`device_polygons`.
 """
 
 import math
+from typing import TYPE_CHECKING, Any, Optional, Sequence, cast
 
 import numpy as np
+from numpy.typing import ArrayLike, DTypeLike, NDArray
 
 from .. import _validate as v
 from ..clip.volumes import Volume
 from ..errors import ArgumentTypeError, ArgumentValueError
 from .meshes import CREASE_ANGLE, mesh_arrays, meshes_list
 from .polygons import flat_polygons
+from .polygons import ScreenPolygons
 from .scene import DevicePolygons, ScreenScene
+
+if TYPE_CHECKING:
+    from .._typing import Color
+    from ..lighting.material import Material
+    from ..mesh import Mesh
+    from ..projection import Camera
+
+F64 = NDArray[np.float64]
+#: ``(clip (4, 4), scale (3,), offset (3,))``: world to clip, NDC to device.
+Mapping = tuple[F64, F64, F64]
 
 #: Bytes the pipeline holds per facet (its world, normal, color, device and clipping
 #: arrays in the scene) and per pixel (the buffers of triangles, depths, facets and
@@ -50,7 +63,7 @@ CLIP_VOLUME = Volume(
     "render clip volume")
 
 
-def _materials(materials, meshes):
+def _materials(materials: Any, meshes: Sequence["Mesh"]) -> tuple["Material", ...]:
     """One Material per mesh: ``materials`` (one, or one per mesh), else each mesh's
     own ``material``, else the default Material."""
     from ..lighting.material import Material
@@ -79,29 +92,31 @@ def _materials(materials, meshes):
     return items
 
 
-def _from_record(record):
+def _from_record(record: Any) -> "Material":
     """The Material of a mesh file's material record: the diffuse reflectance Kd as
     k_d = max(Kd) times the color Kd / max(Kd), the specular Ks likewise (k_s and the
     highlight color), Ns as the exponent, 1 - d as the transparency (Hearn & Baker,
     sections 14-2, 14-5); what the file leaves out, the Material's defaults."""
     from ..lighting.material import Material
 
-    def split(rgb):
+    def split(rgb: ArrayLike) -> tuple[float, F64]:
         rgb = np.clip(np.asarray(rgb, np.float64), 0.0, 1.0)
         top = float(rgb.max())
         return top, (rgb / top if top > 0 else np.ones(3))
 
     kd, color = split(record.kd)
-    extra = {}
+    extra: dict[str, Any] = {}
     if record.ks is not None:
         extra["ks"], extra["specular_color"] = split(record.ks)
     if record.ns is not None:
         extra["shininess"] = record.ns
-    return Material(kd=kd, color=color, transparency=min(max(1.0 - record.d, 0.0), 1.0),
-                    **extra)
+    # Material takes linear reals (3,) as color (linear_color), though its annotation
+    # says Color only: the array goes through as it is
+    return Material(kd=kd, color=cast("Color", color),
+                    transparency=min(max(1.0 - record.d, 0.0), 1.0), **extra)
 
 
-def _given_colors(colors, sizes):
+def _given_colors(colors: Any, sizes: Sequence[int]) -> F64:
     """``colors`` (one color, one per mesh, or one per face of all the meshes) as
     stored values / 255 per face (F, 3)."""
     from ..color.spec import rgba
@@ -117,7 +132,7 @@ def _given_colors(colors, sizes):
         raise ArgumentValueError(
             f"colors holds {len(items)} colors; give one color, one per mesh ({len(sizes)}) "
             f"or one per face ({total})")
-    unique = {}
+    unique: dict[tuple[Any, ...], F64] = {}
     rows = np.empty((len(items), 3))
     for i, c in enumerate(items):
         key = (type(c), c) if isinstance(c, (str, int)) else \
@@ -128,7 +143,7 @@ def _given_colors(colors, sizes):
     return np.repeat(rows, sizes, axis=0) if per_mesh else rows
 
 
-def _viewer(camera):
+def _viewer(camera: "Camera") -> Any:
     from ..lighting.model import at_infinity
 
     eye = camera.eye
@@ -139,7 +154,7 @@ def _viewer(camera):
     return at_infinity(-(inv @ toward))
 
 
-def _view_direction(camera):
+def _view_direction(camera: "Camera") -> F64:
     """The viewing direction of a parallel projection in viewing coordinates: along
     -z_v, sheared by the projection's (a, b)."""
     a, b = camera.projection.shear
@@ -151,7 +166,7 @@ def _view_direction(camera):
 _VERTEX_BARY = [np.zeros((0, 3, 2))]
 
 
-def _vertex_bary(n):
+def _vertex_bary(n: int) -> F64:
     """(n, 3, 2) rows of (0, 0), (1, 0), (0, 1), C-contiguous (a view of a kept array:
     read it, do not write it)."""
     kept = _VERTEX_BARY[0]
@@ -162,7 +177,8 @@ def _vertex_bary(n):
     return kept[:n]
 
 
-def _joined(parts, shape, dtype=np.float64):
+def _joined(parts: Sequence[NDArray[Any]], shape: tuple[int, ...],
+            dtype: DTypeLike = np.float64) -> NDArray[Any]:
     """One array of ``parts`` (the part itself when there is one: no copy; an empty
     one of ``shape`` and ``dtype`` when there is none)."""
     if len(parts) == 1:
@@ -170,7 +186,7 @@ def _joined(parts, shape, dtype=np.float64):
     return np.concatenate(parts) if parts else np.zeros(shape, dtype)
 
 
-def camera_mapping(camera, width, height):
+def camera_mapping(camera: "Camera", width: int, height: int) -> Mapping:
     """``(clip, scale, offset)``: the world -> homogeneous clip matrix and the NDC ->
     device mapping of ``camera`` on a ``width`` x ``height`` device."""
     from ..projection import Camera
@@ -180,7 +196,8 @@ def camera_mapping(camera, width, height):
     return camera.mapping(camera._device_box(width, height))
 
 
-def _clipped(rows, counts, scale, offset):
+def _clipped(rows: F64, counts: NDArray[np.int64], scale: F64,
+             offset: F64) -> tuple[F64, F64, NDArray[np.int64]]:
     """Homogeneous polygons (V, 4 + attributes) clipped against :data:`CLIP_VOLUME`,
     divided and mapped to the device: ``(device (V', 3 + attributes), inverse w (V',),
     counts (P,))``, polygons with nothing left given count 0."""
@@ -193,15 +210,48 @@ def _clipped(rows, counts, scale, offset):
     return dev, q, counts
 
 
-def device_polygons(vertices, counts, labels, camera, width, height, mapping=None):
+def device_polygons(vertices: ArrayLike, counts: ArrayLike, labels: ArrayLike, camera: "Camera",
+                    width: int, height: int,
+                    mapping: Optional[Mapping] = None) -> ScreenPolygons:
     """World polygons (flat form: ``vertices`` (V, 3), ``counts`` (P,)) through
     ``camera`` onto a ``width`` x ``height`` device, clipped as the scene's facets are
     (:data:`CLIP_VOLUME`, before the divide), as :class:`ScreenPolygons` whose face is
     each polygon's entry of ``labels`` (P,), in the given order; those nothing is left
     of, or seen edge-on, are dropped.  ``mapping``: a scene's own ``(clip, scale,
-    offset)`` (:attr:`ScreenScene.mapping`) instead of the camera's on this device."""
+    offset)`` (:attr:`ScreenScene.mapping`) instead of the camera's on this device.
+
+    Parameters
+    ----------
+    vertices : array_like
+        (V, 3) world vertices, polygon after polygon.
+    counts : array_like of int
+        (P,) vertices per polygon.
+    labels : array_like of int
+        (P,) the ``face`` each polygon gets.
+    camera : Camera
+        The camera.
+    width, height : int
+        The device's size in pixels.
+    mapping : tuple, optional
+        A scene's ``(clip, scale, offset)``.
+
+    Returns
+    -------
+    ScreenPolygons
+        The clipped device polygons left.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> cam = sl.Camera(eye=(0, 0, 5), target=(0, 0, 0))
+    >>> square = [(-1, -1, 0), (1, -1, 0), (1, 1, 0), (-1, 1, 0)]
+    >>> sp = sl.screen.device_polygons(square, [4], [7], cam, 16, 16)
+    >>> len(sp), sp.face.tolist(), sp.counts.tolist()
+    (1, [7], [4])
+    """
     clip, scale, offset = camera_mapping(camera, width, height) if mapping is None else mapping
-    hom = np.hstack([vertices, np.ones((len(vertices), 1))]) @ clip.T
+    points = np.asarray(vertices, np.float64)
+    hom = np.hstack([points, np.ones((len(points), 1))]) @ clip.T
     dev, _, out = _clipped(np.ascontiguousarray(hom), np.asarray(counts, np.int64), scale,
                            offset)
     whole = out >= 3
@@ -209,8 +259,9 @@ def device_polygons(vertices, counts, labels, camera, width, height, mapping=Non
                          np.asarray(labels, np.int64)[whole], width, height)
 
 
-def prepare(meshes, camera, width, height, materials=None, colors=None, cull_back_faces=False,
-            crease_angle=CREASE_ANGLE):
+def prepare(meshes: Any, camera: "Camera", width: int, height: int, materials: Any = None,
+            colors: Any = None, cull_back_faces: bool = False,
+            crease_angle: Optional[float] = CREASE_ANGLE) -> ScreenScene:
     """The :class:`ScreenScene` of ``meshes`` seen by ``camera`` on a ``width`` x
     ``height`` device.
 
@@ -219,7 +270,9 @@ def prepare(meshes, camera, width, height, materials=None, colors=None, cull_bac
     meshes : Mesh or list of Mesh
         Or any mesh object :meth:`~scanline.mesh.Mesh.from_any` takes.
     camera : Camera
+        The camera (viewing coordinates, projection and viewport).
     width, height : int
+        The device's size in pixels.
     materials : Material or list of Material (one per mesh), optional
         Else each mesh's own material (a mesh file's material record is converted:
         :func:`_from_record`), else the default Material.
@@ -232,6 +285,28 @@ def prepare(meshes, camera, width, height, materials=None, colors=None, cull_bac
         Where a mesh gives no vertex normals, faces meeting at a sharper angle
         (radians) keep their own normals at the shared vertex (default 30 degrees);
         None: the plain average of every face around the vertex (Hearn & Baker 14-5).
+
+    Returns
+    -------
+    ScreenScene
+        The screen-space scene.
+
+    Raises
+    ------
+    ArgumentTypeError
+        For a camera that is not one, meshes or materials of the wrong type.
+    ArgumentValueError
+        For a bad size, colors, materials count or crease angle.
+    MemoryBudgetError
+        When the facets or the per-pixel buffers pass the memory budget.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> cam = sl.Camera(eye=(0, 0, 5), target=(0, 0, 0))
+    >>> scene = sl.screen.prepare(sl.mesh.cube(), cam, 16, 16, cull_back_faces=True)
+    >>> int(scene.culled.sum()), int(scene.whole.sum())   # 10 facets turned away or edge-on
+    (10, 2)
     """
     from .._kernels._threads import call_in_bands
     from .._kernels.screen import project_faces
@@ -350,11 +425,37 @@ def prepare(meshes, camera, width, height, materials=None, colors=None, cull_bac
             (0, 3, 2)))
 
 
-def screen_polygons(meshes, camera, width, height, cull_back_faces=False):
+def screen_polygons(meshes: Any, camera: "Camera", width: int, height: int,
+                    cull_back_faces: bool = False) -> ScreenPolygons:
     """The faces of ``meshes`` seen through ``camera`` on a ``width`` x ``height``
     device as :class:`ScreenPolygons`, ready for the methods of
     :mod:`scanline.visible`: the prepared scene's clipped facets (:func:`prepare`),
-    each labeled with its face (``face``: faces numbered mesh after mesh)."""
+    each labeled with its face (``face``: faces numbered mesh after mesh).
+
+    Parameters
+    ----------
+    meshes : Mesh or list of Mesh
+        The meshes (see :func:`prepare`).
+    camera : Camera
+        The camera.
+    width, height : int
+        The device's size in pixels.
+    cull_back_faces : bool
+        Drop the facets turned away from the viewer.
+
+    Returns
+    -------
+    ScreenPolygons
+        One polygon per face taken whole, else per clipped facet, labeled with its face.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> cam = sl.Camera(eye=(0, 0, 5), target=(0, 0, 0))
+    >>> sp = sl.screen.screen_polygons(sl.mesh.cube(), cam, 16, 16, cull_back_faces=True)
+    >>> len(sp), sp.counts.tolist()            # the front face, whole: one quadrilateral
+    (1, [4])
+    """
     import dataclasses
 
     scene = prepare(meshes, camera, width, height, cull_back_faces=cull_back_faces)
@@ -362,7 +463,7 @@ def screen_polygons(meshes, camera, width, height, cull_back_faces=False):
     return dataclasses.replace(sp, face=scene.facet_face[sp.face])
 
 
-def _device_plane(poly):
+def _device_plane(poly: F64) -> F64:
     """A, B, C, D of the plane of device polygons (..., k, 3) by Newell's method, the
     normal toward +depth for a counterclockwise (front) polygon, i.e. C > 0 when the
     polygon runs counterclockwise in device x, y."""

@@ -34,6 +34,7 @@ COMPLETE = [
     "scanline.rendering",
     "scanline.radiosity",
     "scanline.screen",
+    "scanline.shading",
 ]
 
 

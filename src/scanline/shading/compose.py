@@ -11,13 +11,22 @@ front to back over what the frame buffer holds (Hearn & Baker 14-5, transparency
 coverage), averaging the samples of each pixel.
 """
 
+from typing import TYPE_CHECKING, Iterable, Sequence, Tuple
+
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from ..errors import ArgumentValueError
 from ..lighting.model import depth_cue as cue_blend
 from .buffer import drawable, shade_buffer, shade_textured, texturable
 from .models import decode, encode, intensities
+from .options import ShadingOptions
 from .surface import any_maps, check_maps, texture_coordinates
+
+if TYPE_CHECKING:
+    from ..framebuffer import FrameBuffer
+    from ..screen.scene import ScreenScene
+    from ..visible.visibility import Layer
 
 
 def triangle_functions(scene, triangles, perspective=True):
@@ -56,10 +65,51 @@ def surface_coordinates(scene, triangles, xs, ys, perspective=True):
     return lam, d
 
 
-def barycentrics(scene, triangles, xs, ys):
+def barycentrics(scene: "ScreenScene", triangles: NDArray[np.int64], xs: NDArray[np.float64],
+                 ys: NDArray[np.float64]) -> NDArray[np.float64]:
     """The perspective-correct barycentric coordinates (lambda_1, lambda_2), (M, 2),
-    in their facets of the device points (``xs``, ``ys``) seen on ``triangles`` (M,)."""
-    return surface_coordinates(scene, triangles, xs, ys)[0][:, 1:]
+    in their facets of the device points (``xs``, ``ys``) seen on ``triangles`` (M,).
+
+    Parameters
+    ----------
+    scene : ScreenScene
+        The prepared scene.
+    triangles : ndarray of int (M,)
+        Device triangles of the scene (a visible-surface method's ``ids``).
+    xs, ys : ndarray (M,)
+        Device points.
+
+    Returns
+    -------
+    ndarray (M, 2)
+        (lambda_1, lambda_2); lambda_0 = 1 - lambda_1 - lambda_2.
+
+    Notes
+    -----
+    lambda / w and 1 / w are linear in screen space; their ratio is the
+    perspective-correct coordinate (Hearn & Baker 14-5, 14-9).
+
+    Examples
+    --------
+    The coordinates found at pixel (2, 1) weight the triangle's device vertices back
+    to that pixel:
+
+    >>> import numpy as np, scanline as sl
+    >>> from scanline.screen import prepare
+    >>> from scanline.shading import ShadingOptions
+    >>> from scanline.visible.zbuffer import nearest
+    >>> cam = sl.Camera(eye=(0, 0, 5), target=(0, 0, 0),
+    ...                 projection=sl.projection.orthographic(window=(-2, -2, 2, 2)))
+    >>> scene = prepare(sl.mesh.cube(2), cam, 4, 4)
+    >>> layer = nearest(scene)                  # the z-buffer's triangle at each pixel
+    >>> t = layer.ids[1, 2]                     # rows bottom-up: y = 1, x = 2
+    >>> l1, l2 = sl.shading.barycentrics(scene, np.array([t]), np.array([2.0]), np.array([1.0]))[0]
+    >>> v0, v1, v2 = scene.triangles[t][:, :2]
+    >>> ((1 - l1 - l2) * v0 + l1 * v1 + l2 * v2).round(12).tolist()
+    [2.0, 1.0]
+    """
+    lam: NDArray[np.float64] = surface_coordinates(scene, triangles, xs, ys)[0][:, 1:]
+    return lam
 
 
 def background_linear(fb, gamma):
@@ -137,12 +187,37 @@ def _paint(fb, ids, values, facets=None):
                   np.zeros(0, np.int64) if facets is None else facets)
 
 
-def paint(fb, ids, values):
+def paint(fb: "FrameBuffer", ids: ArrayLike, values: ArrayLike) -> None:
     """Each pixel of ``fb`` whose number in ``ids`` (H, W integers, rows bottom-up as
     the frame buffer stores them; e.g. the piece numbers of
     :func:`scanline.visible.painted_depth_sort`) is p >= 0 takes the pixel value
     ``values[p]`` (rows of the frame buffer's channels, integers 0-255: ``fb.pixel(color)``
-    gives one); the others keep theirs.  Any mode, on every core in bands."""
+    gives one); the others keep theirs.  Any mode, on every core in bands.
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+        Painted in place.
+    ids : array_like of int (H, W)
+        A number per pixel (-1: keep), rows bottom-up.
+    values : array_like of int (n, channels)
+        The pixel value of each number.
+
+    Raises
+    ------
+    ArgumentValueError
+        Values not (n, channels) integers 0..255, ids not the frame buffer's shape or
+        not integers, or a number without a row.
+
+    Examples
+    --------
+    >>> import numpy as np, scanline as sl
+    >>> fb = sl.FrameBuffer(3, 2, mode="L")
+    >>> ids = np.array([[0, -1, 1], [-1, -1, -1]])           # row y = 0 first
+    >>> sl.shading.paint(fb, ids, [[200], [50]])
+    >>> fb.to_array().tolist()                               # top row first
+    [[0, 0, 0], [200, 0, 50]]
+    """
     from .. import _validate as v
     from ..draw._common import target
 
@@ -186,11 +261,52 @@ def facets_of(scene, ids):
     return np.where(ids >= 0, scene.facet[np.maximum(ids, 0)], -1).astype(np.int32)
 
 
-def shade(fb, scene, layer, options):
+def shade(fb: "FrameBuffer", scene: "ScreenScene", layer: "Layer",
+          options: ShadingOptions) -> NDArray[np.int32]:
     """Color the pixels of ``layer`` (a :class:`~scanline.visible.visibility.Layer`)
     into ``fb`` with ``options`` (:class:`~scanline.shading.ShadingOptions`); the
     others keep their values.  Returns the facet seen at each pixel (H, W; -1 none):
-    ``layer.ids`` itself, overwritten, where a compiled path shades."""
+    ``layer.ids`` itself, overwritten, where a compiled path shades.
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+        Drawn into.
+    scene : ScreenScene
+        The prepared scene.
+    layer : Layer
+        The device triangle and depth at each pixel.
+    options : ShadingOptions
+        How to color.
+
+    Returns
+    -------
+    ndarray of int32 (H, W)
+        The facet at each pixel, rows bottom-up.
+
+    Raises
+    ------
+    ArgumentValueError
+        A lit model into a mode other than L, RGB, RGBA.
+
+    Examples
+    --------
+    Flat shading under ambient light 1: ka Ia = 0.2, stored round(255 x 0.2) = 51.
+
+    >>> import numpy as np, scanline as sl
+    >>> from scanline.screen import prepare
+    >>> from scanline.shading import ShadingOptions
+    >>> from scanline.visible.zbuffer import nearest
+    >>> cam = sl.Camera(eye=(0, 0, 5), target=(0, 0, 0),
+    ...                 projection=sl.projection.orthographic(window=(-2, -2, 2, 2)))
+    >>> scene = prepare(sl.mesh.cube(2), cam, 4, 4)
+    >>> layer = nearest(scene)                  # the z-buffer's triangle at each pixel
+    >>> ambient = ShadingOptions(model="flat", lights=sl.lighting.AmbientLight(1.0), gamma=1)
+    >>> fb = sl.FrameBuffer(4, 4, mode="L")
+    >>> facets = sl.shading.shade(fb, scene, layer, ambient)
+    >>> fb.to_array().tolist()
+    [[0, 0, 0, 0], [0, 51, 51, 0], [0, 51, 51, 0], [0, 0, 0, 0]]
+    """
     ids = layer.ids
     maps = any_maps(scene)
     if options.model == "none" and options.depth_cue is None and not maps:
@@ -219,7 +335,9 @@ def shade(fb, scene, layer, options):
     return out
 
 
-def composite(fb, scene, bands, samples, options):
+def composite(fb: "FrameBuffer", scene: "ScreenScene",
+              bands: Iterable[Tuple[int, int, Sequence["Layer"]]], samples: int,
+              options: ShadingOptions) -> Tuple[NDArray[np.int32], NDArray[np.float64]]:
     """Resolve layers of fragments over the frame buffer's pixels, band of rows after
     band of rows: ``bands`` yields ``(y0, rows, layers)``, ``layers`` the Layers of
     the band's rows at ``samples`` x ``samples`` points per pixel, front to back.  At
@@ -227,7 +345,55 @@ def composite(fb, scene, bands, samples, options):
     transparencies k_t in front of fragment k and I_behind the pixel's present color;
     each pixel averages its samples, and is written where any sample met a surface.
     Returns the facet and the depth of the first layer at each pixel's central
-    sample, (H, W) each."""
+    sample, (H, W) each.
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+        Blended into (modes L, RGB, RGBA).
+    scene : ScreenScene
+        The prepared scene.
+    bands : iterable of (y0, rows, layers)
+        The layers of fragments of each band of rows, front to back.
+    samples : int
+        Samples per pixel side.
+    options : ShadingOptions
+        How to color.
+
+    Returns
+    -------
+    facets : ndarray of int32 (H, W)
+        The first layer's facet at each pixel (-1: none).
+    depth : ndarray (H, W)
+        Its depth (inf: none).
+
+    Raises
+    ------
+    ArgumentValueError
+        A mode other than L, RGB, RGBA.
+
+    Notes
+    -----
+    Hearn & Baker 14-5 (transparency) and 13-4 (the A-buffer's coverage).
+
+    Examples
+    --------
+    One opaque layer, one sample a pixel: the same pixels as :func:`shade`.
+
+    >>> import numpy as np, scanline as sl
+    >>> from scanline.screen import prepare
+    >>> from scanline.shading import ShadingOptions
+    >>> from scanline.visible.zbuffer import nearest
+    >>> cam = sl.Camera(eye=(0, 0, 5), target=(0, 0, 0),
+    ...                 projection=sl.projection.orthographic(window=(-2, -2, 2, 2)))
+    >>> scene = prepare(sl.mesh.cube(2), cam, 4, 4)
+    >>> layer = nearest(scene)                  # the z-buffer's triangle at each pixel
+    >>> ambient = ShadingOptions(model="flat", lights=sl.lighting.AmbientLight(1.0), gamma=1)
+    >>> fb = sl.FrameBuffer(4, 4, mode="L")
+    >>> facets, depth = sl.shading.composite(fb, scene, [(0, 4, [layer])], 1, ambient)
+    >>> fb.to_array().tolist(), int((facets >= 0).sum())
+    ([[0, 0, 0, 0], [0, 51, 51, 0], [0, 51, 51, 0], [0, 0, 0, 0]], 4)
+    """
     if fb.mode not in ("L", "RGB", "RGBA"):
         raise ArgumentValueError(f"layers of fragments are blended in modes L, RGB and RGBA; "
                                  f"the frame buffer is mode {fb.mode!r}")

@@ -1,7 +1,7 @@
 """The options of the shading stage, one typed, frozen object."""
 
 from dataclasses import dataclass
-from typing import Callable, Optional
+from typing import Any, Callable, Optional, Tuple
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
@@ -12,7 +12,30 @@ SPECULAR = ("phong", "blinn")
 GAMMA = 2.2
 
 
-def gamma_value(gamma):
+def gamma_value(gamma: float) -> float:
+    """``gamma`` checked: a display gamma in 0.1..10.
+
+    Parameters
+    ----------
+    gamma : float
+        The exponent (1: linear; 2.2: a typical display, Hearn & Baker 14-2).
+
+    Returns
+    -------
+    float
+        The gamma.
+
+    Raises
+    ------
+    ArgumentValueError
+        A gamma outside 0.1..10.
+
+    Examples
+    --------
+    >>> from scanline.shading import gamma_value
+    >>> gamma_value(2)
+    2.0
+    """
     g = v.number("gamma", gamma)
     if not 0.1 <= g <= 10:
         raise ArgumentValueError(f"gamma must be in 0.1..10 (1: linear, 2.2: a typical "
@@ -23,6 +46,26 @@ def gamma_value(gamma):
 @dataclass(frozen=True)
 class ShadingOptions:
     """How the shading colors what a visible-surface method found.
+
+    Parameters
+    ----------
+    model, lights, specular, gamma, depth_cue, shadows, texture_mapping
+        As listed under Attributes (``lights``: one light or several).
+
+    Raises
+    ------
+    ArgumentValueError
+        An unknown model, specular term or texture mapping, or a gamma outside
+        0.1..10.
+    ArgumentTypeError
+        A light that is not one, or ``shadows`` not callable.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> options = sl.shading.ShadingOptions(model="phong", lights=sl.lighting.AmbientLight())
+    >>> options.model, len(options.lights), options.gamma
+    ('phong', 1, 2.2)
 
     Attributes
     ----------
@@ -46,14 +89,14 @@ class ShadingOptions:
         in screen space: wrong under perspective, shown for comparison).
     """
     model: str = "gouraud"
-    lights: tuple = ()
+    lights: Any = ()
     specular: str = "phong"
     gamma: float = GAMMA
-    depth_cue: Optional[tuple] = None
-    shadows: Optional[Callable] = None
+    depth_cue: Optional[Tuple[float, float]] = None
+    shadows: Optional[Callable[..., Any]] = None
     texture_mapping: str = "perspective"
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         from ..lighting.lights import light_list
 
         v.choice("shading", self.model, MODELS)

@@ -109,7 +109,8 @@ def sheet_html(algorithm: str, count: int, seed: int) -> str:
     """
     algorithm, count, seed = _check(algorithm, count, seed)
     esc = html.escape
-    question = QUESTIONS[algorithm]
+    prompt = QUESTIONS[algorithm].prompt
+    ask = prompt[0].lower() + prompt[1:]
     parts, key = [], []
     for s in range(seed, seed + count):
         args = case(algorithm, s)
@@ -121,7 +122,7 @@ def sheet_html(algorithm: str, count: int, seed: int) -> str:
                         for _ in table.rows)
         parts.append(f'<section class="exercise"><h2>Case {s}: {esc(table.title)}</h2>'
                      f"<p>Run the algorithm by hand on <code>{esc(command)}</code> and fill in "
-                     f"its step table, one line per step. At each step: {esc(question.prompt)}"
+                     f"its step table, one line per step. At each step: {esc(ask)}"
                      f'</p><table class="blank"><tr>{head}</tr>{blank}</table></section>')
         key.append(f"<h2>Case {s}</h2><pre>{esc(text)}</pre>")
     title = f"scanline exercises: {algorithm}, cases {seed}..{seed + count - 1}"

@@ -13,6 +13,7 @@ so a teacher can hand out "case 17".
 
 from __future__ import annotations
 
+import math
 import random
 from dataclasses import dataclass
 from typing import Any, Callable
@@ -131,8 +132,6 @@ def _segment(rng: random.Random) -> list[str]:
 
 def _star(rng: random.Random, n: int, center: float, radius: tuple[int, int]) -> list[str]:
     """A simple polygon: ``n`` vertices at increasing angles around ``center``."""
-    import math
-
     angles = sorted(rng.uniform(0, 2 * math.pi) for _ in range(n))
     points = []
     for a in angles:

@@ -38,7 +38,7 @@ class SchedulerUnreachable(ScanlineError):
     """A Dask scheduler address that does not answer."""
 
 
-def to_image(frame, index=None):
+def to_image(frame: object, index: int | None = None) -> Image.Image:
     """A frame as a Pillow image of mode "L", "RGB", "RGBA" or "P".
 
     Accepts a :class:`~scanline.FrameBuffer` (mode "1" becomes "L" 0/255), a Pillow

@@ -35,6 +35,7 @@ COMPLETE = [
     "scanline.radiosity",
     "scanline.screen",
     "scanline.shading",
+    "scanline.octree",
 ]
 
 

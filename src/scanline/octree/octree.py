@@ -3,12 +3,18 @@ recursively, each node empty, full or split, made from a solid, a closed mesh or
 grid of voxels, combined by set operations node by node, and turned back into voxels
 or into the mesh of its boundary faces."""
 
+from typing import TYPE_CHECKING, Any, Optional, Sequence, Tuple
+
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from ..budget import check
 from ..errors import ArgumentTypeError, ArgumentValueError
 from .tree import FULL, SPLIT, Tree, build, check_depth
+
+if TYPE_CHECKING:
+    from ..mesh import Mesh
 
 #: Samples per cell of :meth:`Octree.from_solid`: the eight corners and the center.
 _SAMPLES = np.array([[(j >> a) & 1 for a in range(3)] for j in range(8)] + [[0.5] * 3])
@@ -77,10 +83,40 @@ class Octree(Tree):
     noun = "octree"
 
     @classmethod
-    def from_voxels(cls, voxels, origin=(0.0, 0.0, 0.0), voxel_size=1.0):
+    def from_voxels(cls, voxels: ArrayLike, origin: Sequence[float] = (0.0, 0.0, 0.0),
+                    voxel_size: float = 1.0) -> "Octree":
         """The octree of a boolean array indexed [x, y, z] (nonzero: inside), padded
         with empty voxels to a cube of 2**depth a side; voxel (i, j, k) is the cube
-        ``origin + voxel_size * ([i, i + 1] x [j, j + 1] x [k, k + 1])``."""
+        ``origin + voxel_size * ([i, i + 1] x [j, j + 1] x [k, k + 1])``.
+
+        Parameters
+        ----------
+        voxels : array_like (X, Y, Z)
+            Nonzero or True: inside.
+        origin : 3-vector
+            The low corner of voxel (0, 0, 0).
+        voxel_size : float
+            A voxel's side, > 0.
+
+        Returns
+        -------
+        Octree
+            The merged tree (Hearn & Baker 10-17).
+
+        Raises
+        ------
+        ArgumentValueError
+            An array that is not 3-D, a size not > 0, or a tree too large.
+
+        Examples
+        --------
+        Eight full voxels of side 0.5 merge into one full root of volume 1:
+
+        >>> import numpy as np, scanline as sl
+        >>> block = sl.octree.Octree.from_voxels(np.ones((2, 2, 2), bool), voxel_size=0.5)
+        >>> block, block.volume()
+        (<Octree depth 1: 1 nodes, 1 full leaves>, 1.0)
+        """
         grid, depth = cls._padded(voxels, "voxels")
         size = v.number("voxel_size", voxel_size)
         if not size > 0:
@@ -89,7 +125,8 @@ class Octree(Tree):
         return cls._grid_tree(grid, origin, size * (1 << depth))
 
     @classmethod
-    def from_solid(cls, solid, depth, bounds=None):
+    def from_solid(cls, solid: Any, depth: int,
+                   bounds: Optional[Tuple[ArrayLike, ArrayLike]] = None) -> "Octree":
         """The octree of a solid: anything with ``contains(points) -> bool array`` and
         ``bounds() -> (low, high)`` (the primitives and CSG trees of
         :mod:`scanline.solids` and :mod:`scanline.csg`).
@@ -105,12 +142,34 @@ class Octree(Tree):
         Parameters
         ----------
         solid : solid
+            Anything with ``contains`` and ``bounds``.
         depth : int
             Levels below the root, 1..20; refused up front where a full tree that deep
             would not fit in the memory budget.
         bounds : (low, high), optional
             The region (its cube: the low corner and the largest extent); default the
             solid's ``bounds()``.
+
+        Returns
+        -------
+        Octree
+            The tree.
+
+        Raises
+        ------
+        ArgumentTypeError
+            ``solid`` without ``contains`` and ``bounds``.
+        ArgumentValueError
+            An unbounded solid without ``bounds``, or a depth too large.
+
+        Examples
+        --------
+        A box is its own bounds: every sample inside, the root full.
+
+        >>> import scanline as sl
+        >>> tree = sl.octree.Octree.from_solid(sl.solids.Box((0, 0, 0), (1, 1, 1)), 2)
+        >>> tree, tree.volume()
+        (<Octree depth 2: 1 nodes, 1 full leaves>, 1.0)
         """
         if not (callable(getattr(solid, "contains", None))
                 and callable(getattr(solid, "bounds", None))):
@@ -147,7 +206,8 @@ class Octree(Tree):
         return cls(kind, child, depth, origin, side)
 
     @classmethod
-    def from_mesh(cls, mesh, depth, bounds=None):
+    def from_mesh(cls, mesh: Any, depth: int,
+                  bounds: Optional[Tuple[ArrayLike, ArrayLike]] = None) -> "Octree":
         """The octree of the solid a closed mesh bounds, voxelized at ``depth``
         (2**depth voxels a side over ``bounds``, default the mesh's bounding box).
 
@@ -161,11 +221,33 @@ class Octree(Tree):
         all -- and each column's crossings, sorted, fill its voxels.  The voxels then
         merge bottom-up into the octree.
 
+        Parameters
+        ----------
+        mesh : Mesh
+            A closed mesh.
+        depth : int
+            Voxels per side: 2**depth.
+        bounds : (low, high), optional
+            The region (default: the mesh's bounding box).
+
+        Returns
+        -------
+        Octree
+            The voxelized solid.
+
         Raises
         ------
         ArgumentValueError
             For a mesh that is not closed (``scanline.solids.meshsolid.check_closed``),
             or a depth beyond the memory budget.
+
+        Examples
+        --------
+        A cube fills its own bounding box: every voxel center is inside.
+
+        >>> import scanline as sl
+        >>> sl.octree.Octree.from_mesh(sl.mesh.cube(2), 2).volume()
+        8.0
         """
         from .._kernels import octree as k
         from .._kernels._jit import call
@@ -197,20 +279,70 @@ class Octree(Tree):
         call(k.fill_columns, n ** 3 + len(zs), offsets, zs, grid)
         return cls._grid_tree(grid, origin, side)
 
-    def volume(self):
-        """The full cells' total volume."""
+    def volume(self) -> float:
+        """The full cells' total volume.
+
+        Returns
+        -------
+        float
+            Sum of the full leaves' side**3.
+
+        Examples
+        --------
+        >>> import numpy as np, scanline as sl
+        >>> block = sl.octree.Octree.from_voxels(np.ones((2, 2, 2), bool), voxel_size=0.5)
+        >>> block.volume()
+        1.0
+        """
         return self._measure()
 
-    def to_voxels(self):
-        """The full cells as a boolean array (2**depth a side, indexed [x, y, z])."""
+    def to_voxels(self) -> NDArray[np.bool_]:
+        """The full cells as a boolean array (2**depth a side, indexed [x, y, z]).
+
+        Returns
+        -------
+        ndarray of bool (n, n, n)
+            n = 2**depth.
+
+        Examples
+        --------
+        >>> import numpy as np, scanline as sl
+        >>> v = np.zeros((4, 4, 4), bool); v[:2, :2, :2] = True; v[3, 3, 3] = True
+        >>> bool((sl.octree.Octree.from_voxels(v).to_voxels() == v).all())
+        True
+        """
         return self._grid().astype(bool)
 
-    def cells(self, direction=None):
+    def cells(self, direction: Optional[ArrayLike] = None
+              ) -> Tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.bool_]]:
         """The leaves as (low corners (M, 3), sides (M,), full (M,) bool) in world
         coordinates, depth first; with ``direction`` (the viewing direction, a
         3-vector) front to back for a parallel view along it (Hearn & Baker 13-10):
         each node's octants in the order of their centers' distances along the
-        direction, so a cell comes before every cell it can hide."""
+        direction, so a cell comes before every cell it can hide.
+
+        Parameters
+        ----------
+        direction : 3-vector, optional
+            The viewing direction (None: depth-first order).
+
+        Returns
+        -------
+        corners : ndarray (M, 3)
+            The leaves' low corners.
+        sides : ndarray (M,)
+            Their sides.
+        full : ndarray of bool (M,)
+            Whether each is full.
+
+        Examples
+        --------
+        >>> import numpy as np, scanline as sl
+        >>> block = sl.octree.Octree.from_voxels(np.ones((2, 2, 2), bool), voxel_size=0.5)
+        >>> corners, sides, full = block.cells()
+        >>> corners.tolist(), sides.tolist(), full.tolist()
+        ([[0.0, 0.0, 0.0]], [1.0], [True])
+        """
         order = None
         if direction is not None:
             d = v.real_array("direction", direction, "a 3-vector").reshape(-1)
@@ -224,10 +356,25 @@ class Octree(Tree):
         return (self.origin + h * rows[:, :3], h * rows[:, 3].astype(float),
                 rows[:, 4] == FULL)
 
-    def to_mesh(self):
+    def to_mesh(self) -> "Mesh":
         """The boundary of the full cells: one square face, outward, for each side of
         a full cell on empty space (or outside the region), or for each side of a
-        finer empty neighbor's leaves along it.  A :class:`~scanline.mesh.Mesh`."""
+        finer empty neighbor's leaves along it.  A :class:`~scanline.mesh.Mesh`.
+
+        Returns
+        -------
+        Mesh
+            The boundary faces (quadrilaterals).
+
+        Examples
+        --------
+        One full root: a cube's six faces on its eight corners.
+
+        >>> import numpy as np, scanline as sl
+        >>> block = sl.octree.Octree.from_voxels(np.ones((2, 2, 2), bool), voxel_size=0.5)
+        >>> block.to_mesh()
+        <Mesh: 8 vertices, 6 faces, 12 edges>
+        """
         from ..mesh import Mesh
 
         vertices, faces = self._boundary
@@ -237,12 +384,12 @@ class Octree(Tree):
         return Mesh(vertices, faces)
 
     @property
-    def vertices(self):
+    def vertices(self) -> NDArray[np.float64]:
         """The vertices of :meth:`to_mesh` (an octree is a mesh-like object)."""
         return self._boundary[0]
 
     @property
-    def faces(self):
+    def faces(self) -> NDArray[np.int64]:
         """The faces of :meth:`to_mesh` (F, 4)."""
         return self._boundary[1]
 

@@ -3,11 +3,18 @@ pixels divided into quadrants recursively, each empty, full or split, made from 
 binary image or a polygon filled by scanline's own scan-line fill, combined by set
 operations node by node, and drawn with its cell boundaries."""
 
+from typing import TYPE_CHECKING, Optional, Sequence, Tuple
+
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
+from .._typing import Color, Points, Rule
 from ..errors import ArgumentValueError
 from .tree import FULL, Tree, check_depth
+
+if TYPE_CHECKING:
+    from ..framebuffer import FrameBuffer
 
 
 class Quadtree(Tree):
@@ -18,6 +25,26 @@ class Quadtree(Tree):
     (x, y) of size s covers pixels x .. x + s - 1, y .. y + s - 1.
     :meth:`from_image` and :meth:`to_image` take and give arrays in image order (top
     row first), as :meth:`scanline.FrameBuffer.to_array` does.
+
+    Parameters
+    ----------
+    kind : array_like of int8 (nodes,)
+        Per node: 0 empty, 1 full, 2 split, the root first.
+    child : array_like of int64 (nodes,)
+        Per node: the first of its 4 consecutive children, -1 for a leaf.
+    depth : int
+        Levels below the root.
+    origin : ndarray (2,)
+        The region's lower-left corner.
+    side : float
+        The region's side.
+    shape : (int, int), optional
+        The (height, width) of the image it was made from (default: the square).
+
+    Raises
+    ------
+    ArgumentValueError
+        ``kind`` and ``child`` not 1-D arrays of one length.
 
     Examples
     --------
@@ -30,16 +57,42 @@ class Quadtree(Tree):
     dims = 2
     noun = "quadtree"
 
-    def __init__(self, kind, child, depth, origin, side, shape=None):
+    def __init__(self, kind: ArrayLike, child: ArrayLike, depth: int,
+                 origin: NDArray[np.float64], side: float,
+                 shape: Optional[Tuple[int, int]] = None) -> None:
         super().__init__(kind, child, depth, origin, side)
         n = 1 << depth
         self.shape = (n, n) if shape is None else shape
 
     @classmethod
-    def from_image(cls, image):
+    def from_image(cls, image: ArrayLike) -> "Quadtree":
         """The quadtree of a 2-D array in image order (top row first; nonzero or True:
         inside), padded with empty pixels above and to the right to 2**depth a
-        side."""
+        side.
+
+        Parameters
+        ----------
+        image : array_like (H, W)
+            Nonzero or True: inside.
+
+        Returns
+        -------
+        Quadtree
+            Its tree (Hearn & Baker 10-17).
+
+        Raises
+        ------
+        ArgumentValueError
+            An array that is not 2-D, or one too large.
+
+        Examples
+        --------
+        The top-left pixel of a 2 x 2 image: one full leaf of the four quadrants.
+
+        >>> import scanline as sl
+        >>> sl.octree.Quadtree.from_image([[True, False], [False, False]])
+        <Quadtree depth 1: 5 nodes, 1 full leaves>
+        """
         a = np.asarray(image)
         if a.ndim != 2:
             raise ArgumentValueError(f"image must be a 2-D array (height, width), got "
@@ -50,11 +103,40 @@ class Quadtree(Tree):
         return tree
 
     @classmethod
-    def from_polygon(cls, points, depth, rule="even-odd"):
+    def from_polygon(cls, points: Points, depth: int, rule: Rule = "even-odd") -> "Quadtree":
         """The quadtree of a polygon (device coordinates, pixels) over the square of
         pixels 0 .. 2**depth - 1: the pixels whose centers the polygon fill
         (:func:`scanline.draw.polygon`, Hearn & Baker 3-11, with its fill ``rule``)
-        sets."""
+        sets.
+
+        Parameters
+        ----------
+        points : (N, 2) points
+            The polygon's vertices.
+        depth : int
+            Levels: the square is 2**depth pixels a side.
+        rule : {"even-odd", "nonzero"}
+            The fill's inside-outside rule.
+
+        Returns
+        -------
+        Quadtree
+            The tree of the filled pixels.
+
+        Raises
+        ------
+        ArgumentValueError
+            A depth whose tree would be too large, or a bad polygon.
+
+        Examples
+        --------
+        A square around the pixel centers 0..1 x 0..1 fills the lower-left quadrant:
+
+        >>> import scanline as sl
+        >>> q = sl.octree.Quadtree.from_polygon([(-0.5, -0.5), (1.5, -0.5), (1.5, 1.5), (-0.5, 1.5)], 2)
+        >>> q
+        <Quadtree depth 2: 5 nodes, 1 full leaves>
+        """
         from ..draw import polygon
         from ..framebuffer import FrameBuffer
 
@@ -64,28 +146,93 @@ class Quadtree(Tree):
         polygon(fb, points, color=255, rule=rule)
         return cls.from_image(fb.to_array() > 0)
 
-    def area(self):
-        """The number of pixels in the full cells."""
+    def area(self) -> float:
+        """The number of pixels in the full cells.
+
+        Returns
+        -------
+        float
+            The full cells' area, in pixels.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> q = sl.octree.Quadtree.from_polygon([(-0.5, -0.5), (1.5, -0.5), (1.5, 1.5), (-0.5, 1.5)], 2)
+        >>> q.area()
+        4.0
+        """
         return self._measure()
 
-    def to_image(self):
+    def to_image(self) -> NDArray[np.bool_]:
         """The full pixels, boolean, in image order, of the shape the tree was made
-        from (padding cropped)."""
+        from (padding cropped).
+
+        Returns
+        -------
+        ndarray of bool (H, W)
+            Top row first.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> q = sl.octree.Quadtree.from_polygon([(-0.5, -0.5), (1.5, -0.5), (1.5, 1.5), (-0.5, 1.5)], 2)
+        >>> q.to_image().astype(int).tolist()
+        [[0, 0, 0, 0], [0, 0, 0, 0], [1, 1, 0, 0], [1, 1, 0, 0]]
+        """
         grid = self._grid()                        # [x, y], y up
         h, w = self.shape
         return np.ascontiguousarray(grid[:w, :h].T[::-1]).astype(bool)
 
-    def cells(self):
+    def cells(self) -> NDArray[np.int64]:
         """The leaves as rows (x, y, size, full): their lower-left pixel, side in
-        pixels, and whether full; depth first."""
+        pixels, and whether full; depth first.
+
+        Returns
+        -------
+        ndarray (leaves, 4)
+            x, y, size, full (1 or 0).
+
+        Examples
+        --------
+        The quadrants in order: x's upper half is bit 0 of a child's number, y's bit 1.
+
+        >>> import scanline as sl
+        >>> q = sl.octree.Quadtree.from_polygon([(-0.5, -0.5), (1.5, -0.5), (1.5, 1.5), (-0.5, 1.5)], 2)
+        >>> q.cells().tolist()
+        [[0, 0, 2, 1], [2, 0, 2, 0], [0, 2, 2, 0], [2, 2, 2, 0]]
+        """
         rows = self._cells()
         return np.column_stack([rows[:, 0], rows[:, 1], rows[:, 3], rows[:, 4] == FULL])
 
-    def draw(self, fb, color="black", boundary="gray", scale=1, at=(0, 0)):
+    def draw(self, fb: "FrameBuffer", color: Color = "black", boundary: Optional[Color] = "gray",
+             scale: int = 1, at: Sequence[int] = (0, 0)) -> None:
         """Draw the tree on a frame buffer: the full pixels in ``color`` and, unless
         ``boundary`` is None, each leaf's boundary in that color, every pixel
         ``scale`` x ``scale`` frame-buffer pixels with the tree's pixel (0, 0) at
-        device point ``at``."""
+        device point ``at``.
+
+        Parameters
+        ----------
+        fb : FrameBuffer
+            Drawn into.
+        color : color
+            Of the full pixels.
+        boundary : color or None
+            Of the leaves' boundaries (None: not drawn).
+        scale : int
+            Frame-buffer pixels per tree pixel, per side.
+        at : (int, int)
+            Where the tree's pixel (0, 0) goes.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> q = sl.octree.Quadtree.from_polygon([(-0.5, -0.5), (1.5, -0.5), (1.5, 1.5), (-0.5, 1.5)], 2)
+        >>> fb = sl.FrameBuffer(4, 4, mode="L")
+        >>> q.draw(fb, color=255, boundary=None)
+        >>> fb.to_array().tolist()
+        [[0, 0, 0, 0], [0, 0, 0, 0], [255, 255, 0, 0], [255, 255, 0, 0]]
+        """
         from ..draw import lines, points
 
         s = v.positive_int("scale", scale)

@@ -8,7 +8,10 @@ retained picture).  ``save()`` / ``restore()`` (or ``with ctx:``) keep and bring
 the whole state.
 """
 
+from typing import TYPE_CHECKING, Any, Literal, Optional, Protocol, Union
+
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from . import _validate as v
 from . import transform as tf
@@ -19,6 +22,26 @@ from .display.interpreter import draw_primitive
 from .clip.window import rectangle
 from .errors import ArgumentValueError
 from .framebuffer import FrameBuffer
+
+if TYPE_CHECKING:
+    from ._typing import Angle, Color, Point, Points
+    from .attributes import FillStyle
+
+
+class _Device(Protocol):
+    """What a Context draws on besides a frame buffer: a display device (see
+    :mod:`scanline.display`)."""
+
+    width: int
+    height: int
+
+    def stroke(self, pieces: Any, closed: bool, attributes: dict[str, Any]) -> Any: ...
+
+    def fill(self, contours: Any, attributes: dict[str, Any]) -> Any: ...
+
+
+#: A clip region: a rectangle (xmin, ymin, xmax, ymax) or a convex polygon (M, 2).
+Region = Union[tuple[float, float, float, float], NDArray[np.float64]]
 
 #: A clip window that the CTM maps to less device area than this (square pixels) is
 #: an empty clip region: it holds no pixel center.
@@ -31,7 +54,13 @@ class _State:
 
     __slots__ = ("ctm", "line", "fill", "text", "clip")
 
-    def copy(self):
+    ctm: NDArray[np.float64]
+    line: dict[str, Any]
+    fill: dict[str, Any]
+    text: dict[str, Any]
+    clip: Region
+
+    def copy(self) -> "_State":
         new = _State()
         new.ctm = self.ctm.copy()
         new.line, new.fill, new.text = dict(self.line), dict(self.fill), dict(self.text)
@@ -86,10 +115,9 @@ class Context:
     ###-#----
     """
 
-    def __init__(self, target, antialias=False):
-        if isinstance(target, FrameBuffer):
-            target = RasterDevice(target, antialias)
-        self._device = target
+    def __init__(self, target: Union[FrameBuffer, _Device], antialias: bool = False) -> None:
+        self._device: _Device = (RasterDevice(target, antialias) if isinstance(target, FrameBuffer)
+                                else target)
         for attr in ("width", "height", "stroke", "fill"):
             if not hasattr(self._device, attr):
                 raise ArgumentValueError(
@@ -105,49 +133,104 @@ class Context:
                   "path": "right", "clip": "stroke"}
         s.clip = (-0.5, -0.5, self._device.width - 0.5, self._device.height - 0.5)
         self._state = s
-        self._stack = []
+        self._stack: list[_State] = []
 
     # -- state stack ------------------------------------------------------------------------
-    def save(self):
-        """Push a copy of the whole state (CTM, attributes, clip window)."""
+    def save(self) -> None:
+        """Push a copy of the whole state (CTM, attributes, clip window).
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> ctx = sl.Context(sl.FrameBuffer(4, 4))
+        >>> ctx.save(); ctx.translate(1, 2)
+        >>> ctx.depth, ctx.matrix[:2, 2].tolist()
+        (1, [1.0, 2.0])
+        >>> ctx.restore(); ctx.depth, ctx.matrix[:2, 2].tolist()
+        (0, [0.0, 0.0])
+        """
         self._stack.append(self._state.copy())
 
-    def restore(self):
-        """Pop the state pushed by the matching :meth:`save`."""
+    def restore(self) -> None:
+        """Pop the state pushed by the matching :meth:`save`.
+
+        Raises
+        ------
+        ArgumentValueError
+            When nothing was saved.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> ctx = sl.Context(sl.FrameBuffer(4, 4))
+        >>> ctx.save(); ctx.set_line(color="red"); ctx.restore()
+        >>> ctx.line_attributes["color"] is None
+        True
+        """
         if not self._stack:
             raise ArgumentValueError("restore() without a matching save(): the stack is empty")
         self._state = self._stack.pop()
 
-    def __enter__(self):
+    def __enter__(self) -> "Context":
         self.save()
         return self
 
-    def __exit__(self, *exc):
+    def __exit__(self, *exc: object) -> Literal[False]:
         self.restore()
         return False
 
     @property
-    def depth(self):
+    def depth(self) -> int:
         """How many states :meth:`save` has pushed."""
         return len(self._stack)
 
     # -- current transformation -------------------------------------------------------------
     @property
-    def matrix(self):
-        return self._state.ctm.copy()
+    def matrix(self) -> NDArray[np.float64]:
+        """A copy of the CTM (3, 3), user -> device coordinates; assigning a matrix (or
+        anything :func:`scanline.transform.compose` takes) replaces it."""
+        return np.array(self._state.ctm)
 
     @matrix.setter
-    def matrix(self, m):
+    def matrix(self, m: Any) -> None:
         m = tf.compose(m)
         tf.apply(m, (0.0, 0.0))  # refuses a non-affine matrix, saying why
         self._state.ctm = m
 
-    def identity(self):
-        """Reset the CTM to the identity (device coordinates)."""
+    def identity(self) -> None:
+        """Reset the CTM to the identity (device coordinates).
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> ctx = sl.Context(sl.FrameBuffer(4, 4))
+        >>> ctx.scale(2); ctx.identity()
+        >>> ctx.matrix.tolist()
+        [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
+        """
         self._state.ctm = np.eye(3)
 
-    def transform(self, m):
-        """Compose ``m`` onto the CTM: CTM := CTM · m (``m`` acts first)."""
+    def transform(self, m: Any) -> None:
+        """Compose ``m`` onto the CTM: CTM := CTM · m (``m`` acts first).
+
+        Parameters
+        ----------
+        m : array_like or sequence of matrices
+            A 3 x 3 affine matrix, or what :func:`scanline.transform.compose` takes.
+
+        Raises
+        ------
+        ArgumentValueError
+            For a matrix that is not affine, or a CTM that would overflow.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> ctx = sl.Context(sl.FrameBuffer(4, 4))
+        >>> ctx.transform(sl.transform.translation(2, 0)); ctx.transform(sl.transform.scaling(3))
+        >>> ctx.matrix[:2].tolist()                 # T(2, 0) S(3): x' = 3 x + 2
+        [[3.0, 0.0, 2.0], [0.0, 3.0, 0.0]]
+        """
         t = tf.compose(m)
         tf.apply(t, (0.0, 0.0))
         with np.errstate(all="ignore"):
@@ -158,31 +241,135 @@ class Context:
                 f"times {t.tolist()}); use smaller factors or distances")
         self._state.ctm = ctm
 
-    def translate(self, tx, ty):
-        """CTM := CTM · T(tx, ty)."""
+    def translate(self, tx: float, ty: float) -> None:
+        """CTM := CTM · T(tx, ty).
+
+        Parameters
+        ----------
+        tx, ty : float
+            The translation.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> fb = sl.FrameBuffer(4, 2, mode="1")
+        >>> ctx = sl.Context(fb)
+        >>> ctx.translate(2, 1); ctx.line(0, 0, 1, 0)
+        >>> print(sl.text_image(fb))
+        --##
+        ----
+        """
         self.transform(tf.translation(tx, ty))
 
-    def rotate(self, angle, pivot=None):
-        """CTM := CTM · R(angle) (about ``pivot``, in user coordinates)."""
+    def rotate(self, angle: "Angle", pivot: Optional["Point"] = None) -> None:
+        """CTM := CTM · R(angle) (about ``pivot``, in user coordinates).
+
+        Parameters
+        ----------
+        angle : float or str
+            Radians counterclockwise (or a string with its unit, "90deg").
+        pivot : (x, y), optional
+            The fixed point, in user coordinates (default the origin).
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> ctx = sl.Context(sl.FrameBuffer(4, 4))
+        >>> ctx.rotate("90deg")
+        >>> ctx.matrix[:2, :2].round(12).tolist()
+        [[0.0, -1.0], [1.0, 0.0]]
+        """
         self.transform(tf.rotation(angle, pivot))
 
-    def scale(self, sx, sy=None, fixed=None):
-        """CTM := CTM · S(sx, sy) (about ``fixed``)."""
+    def scale(self, sx: float, sy: Optional[float] = None,
+              fixed: Optional["Point"] = None) -> None:
+        """CTM := CTM · S(sx, sy) (about ``fixed``).
+
+        Parameters
+        ----------
+        sx : float
+            The x factor.
+        sy : float, optional
+            The y factor (default ``sx``).
+        fixed : (x, y), optional
+            The fixed point, in user coordinates (default the origin).
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> fb = sl.FrameBuffer(5, 1, mode="1")
+        >>> ctx = sl.Context(fb)
+        >>> ctx.scale(2); ctx.line(0, 0, 2, 0)       # drawn from x = 0 to 4
+        >>> print(sl.text_image(fb))
+        #####
+        """
         self.transform(tf.scaling(sx, sy, fixed))
 
-    def reflect(self, axis):
-        """CTM := CTM · reflection(axis)."""
+    def reflect(self, axis: Any) -> None:
+        """CTM := CTM · reflection(axis).
+
+        Parameters
+        ----------
+        axis : str or line
+            The axis of :func:`scanline.transform.reflection` (``"x"``, ``"y"``, ...).
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> ctx = sl.Context(sl.FrameBuffer(4, 4))
+        >>> ctx.reflect("x")                        # about the x axis: y -> -y
+        >>> ctx.matrix[:2, :2].tolist()
+        [[1.0, 0.0], [0.0, -1.0]]
+        """
         self.transform(tf.reflection(axis))
 
-    def shear(self, shx=0.0, shy=0.0, reference=None):
-        """CTM := CTM · shear(shx, shy, reference)."""
+    def shear(self, shx: float = 0.0, shy: float = 0.0,
+              reference: Optional[float] = None) -> None:
+        """CTM := CTM · shear(shx, shy, reference).
+
+        Parameters
+        ----------
+        shx, shy : float
+            The x and y shear factors.
+        reference : float, optional
+            The reference line of :func:`scanline.transform.shear`.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> ctx = sl.Context(sl.FrameBuffer(4, 4))
+        >>> ctx.shear(shx=0.5)                      # x' = x + 0.5 y
+        >>> ctx.matrix[0].tolist()
+        [1.0, 0.5, 0.0]
+        """
         self.transform(tf.shear(shx, shy, reference))
 
     # -- attributes ---------------------------------------------------------------------------
-    def set_line(self, **attributes):
+    def set_line(self, **attributes: Any) -> None:
         """Change line attributes: ``color``, ``width``, ``cap``, ``join``,
         ``miter_limit``, ``dash`` (``"solid"`` for none), ``dash_phase`` (those of
-        ``sl.draw.polyline``)."""
+        ``sl.draw.polyline``).
+
+        Parameters
+        ----------
+        **attributes
+            ``color`` and the :class:`~scanline.LineStyle` attributes.
+
+        Raises
+        ------
+        ArgumentTypeError
+            For an attribute a LineStyle does not have.
+        ArgumentValueError
+            For a bad value, or a pen (not drawn through a Context).
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> ctx = sl.Context(sl.FrameBuffer(4, 4))
+        >>> ctx.set_line(width=3, cap="round")
+        >>> ctx.line_attributes["style"]
+        LineStyle(width=3, cap='round')
+        """
         line = dict(self._state.line)
         if "color" in attributes:
             line["color"] = p.color("color", attributes.pop("color"))
@@ -191,10 +378,41 @@ class Context:
         line["style"] = line["style"].replace(**attributes)
         self._state.line = line
 
-    def set_fill(self, color=None, style=None, rule=None, edge=None):
+    def set_fill(self, color: Optional["Color"] = None,
+                 style: Union["FillStyle", str, None] = None, rule: Optional[str] = None,
+                 edge: Union["Color", Literal[False], None] = None) -> None:
         """Change fill attributes: ``color``, ``style`` (FillStyle or its word),
         ``rule`` and ``edge`` (an outline color, drawn with the line attributes, or
-        ``False`` for none)."""
+        ``False`` for none).
+
+        Parameters
+        ----------
+        color : Color, optional
+            The fill color.
+        style : FillStyle or str, optional
+            The fill style, or its word (``"hatch:45:4"``).
+        rule : {"even-odd", "nonzero"}, optional
+            The inside rule.
+        edge : Color or False, optional
+            An outline color, or False for none.
+
+        Raises
+        ------
+        ArgumentValueError
+            For a bad color, style or rule.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> fb = sl.FrameBuffer(4, 3, mode="1")
+        >>> ctx = sl.Context(fb)
+        >>> ctx.set_fill(color=1, style="hollow")
+        >>> ctx.rectangle(0, 0, 3, 2)
+        >>> print(sl.text_image(fb))
+        ####
+        #--#
+        ####
+        """
         f = dict(self._state.fill)
         if color is not None:
             f["color"] = p.color("color", color)
@@ -206,9 +424,29 @@ class Context:
             f["edge"] = None if edge is False else p.color("edge", edge)
         self._state.fill = f
 
-    def set_text(self, **attributes):
+    def set_text(self, **attributes: Any) -> None:
         """Change text attributes: ``color``, ``font``, ``height``, ``angle``,
-        ``align``, ``expansion``, ``spacing``, ``path``, ``clip``."""
+        ``align``, ``expansion``, ``spacing``, ``path``, ``clip``.
+
+        Parameters
+        ----------
+        **attributes
+            ``color``, ``font``, ``height``, ``angle``, ``align``, ``expansion``,
+            ``spacing``, ``path`` or ``clip``, as :func:`scanline.draw.text` takes them.
+
+        Raises
+        ------
+        ArgumentValueError
+            For an unknown attribute or a bad value.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> ctx = sl.Context(sl.FrameBuffer(4, 4))
+        >>> ctx.set_text(height=14, angle="90deg")
+        >>> ctx.text_attributes["height"], round(ctx.text_attributes["angle"], 6)
+        (14.0, 1.570796)
+        """
         t = dict(self._state.text)
         for name, value in attributes.items():
             if name not in t:
@@ -221,21 +459,47 @@ class Context:
         self._state.text = t
 
     @property
-    def line_attributes(self):
+    def line_attributes(self) -> dict[str, Any]:
+        """A copy of the current line attributes: ``color`` and ``style`` (a
+        :class:`~scanline.LineStyle`)."""
         return dict(self._state.line)
 
     @property
-    def fill_attributes(self):
+    def fill_attributes(self) -> dict[str, Any]:
+        """A copy of the current fill attributes: ``color``, ``rule``, ``style``,
+        ``edge``."""
         return dict(self._state.fill)
 
     @property
-    def text_attributes(self):
+    def text_attributes(self) -> dict[str, Any]:
+        """A copy of the current text attributes."""
         return dict(self._state.text)
 
     # -- clipping --------------------------------------------------------------------------
-    def clip(self, window):
+    def clip(self, window: tuple[float, float, float, float]) -> None:
         """Intersect the clip region with ``window`` = (xmin, ymin, xmax, ymax) in
-        user coordinates (mapped by the CTM: a rotated CTM gives a turned window)."""
+        user coordinates (mapped by the CTM: a rotated CTM gives a turned window).
+
+        Parameters
+        ----------
+        window : (xmin, ymin, xmax, ymax)
+            The window in user coordinates.
+
+        Raises
+        ------
+        ArgumentValueError
+            For a window that is not one, or one mapped beyond the coordinate range.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> fb = sl.FrameBuffer(6, 1, mode="1")
+        >>> ctx = sl.Context(fb)
+        >>> ctx.clip((1.6, -1, 3.4, 1))             # pixel centers 2 and 3
+        >>> ctx.line(0, 0, 5, 0)
+        >>> print(sl.text_image(fb))
+        --##--
+        """
         r = rectangle(window, "window")
         with np.errstate(all="ignore"):
             corners = tf.apply(self._state.ctm, np.array(
@@ -262,42 +526,139 @@ class Context:
         self._state.clip = new if new is not None else (0.0, 0.0, -1.0, -1.0)
 
     @property
-    def clip_region(self):
+    def clip_region(self) -> Region:
         """The clip region in device coordinates: a rectangle tuple or a convex
         polygon (M, 2)."""
         c = self._state.clip
         return c if isinstance(c, tuple) else c.copy()
 
     # -- drawing ------------------------------------------------------------------------------
-    def _draw(self, kind, geometry, attributes):
+    def _draw(self, kind: str, geometry: dict[str, Any], attributes: dict[str, Any]) -> None:
         clip = self._state.clip
         if isinstance(clip, tuple) and not (clip[0] <= clip[2] and clip[1] <= clip[3]):
             return  # empty clip region
         prim = p.Primitive(kind, geometry, attributes, None).transformed(self._state.ctm)
         draw_primitive(prim, clip, self._device)
 
-    def line(self, x0, y0, x1, y1):
-        """Stroke the segment (x0, y0)-(x1, y1) with the line attributes."""
+    def line(self, x0: float, y0: float, x1: float, y1: float) -> None:
+        """Stroke the segment (x0, y0)-(x1, y1) with the line attributes.
+
+        Parameters
+        ----------
+        x0, y0, x1, y1 : float
+            The endpoints, in user coordinates.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> fb = sl.FrameBuffer(4, 2, mode="1")
+        >>> sl.Context(fb).line(0, 0, 3, 1)
+        >>> print(sl.text_image(fb))
+        --##
+        ##--
+        """
         self.polyline([(x0, y0), (x1, y1)])
 
-    def polyline(self, points, closed=False):
-        """Stroke a polyline (``closed``: a polygon outline)."""
+    def polyline(self, points: "Points", closed: bool = False) -> None:
+        """Stroke a polyline (``closed``: a polygon outline).
+
+        Parameters
+        ----------
+        points : (N, 2) array_like
+            The vertices, in user coordinates.
+        closed : bool
+            Join the last vertex to the first.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> fb = sl.FrameBuffer(3, 3, mode="1")
+        >>> sl.Context(fb).polyline([(0, 0), (2, 0), (2, 2)])
+        >>> print(sl.text_image(fb))
+        --#
+        --#
+        ###
+        """
         pts = p.points("points", points, 1)
         self._draw("polyline", {"points": pts}, {**self._state.line, "closed": bool(closed)})
 
-    def polygon(self, contours):
-        """Fill an area (one contour or several) with the fill attributes."""
+    def polygon(self, contours: Any) -> None:
+        """Fill an area (one contour or several) with the fill attributes.
+
+        Parameters
+        ----------
+        contours : (N, 2) array_like or list of them
+            One contour or several, in user coordinates.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> fb = sl.FrameBuffer(4, 4, mode="1")
+        >>> ctx = sl.Context(fb)
+        >>> ctx.set_fill(color=1)
+        >>> ctx.polygon([(-0.5, -0.5), (3.5, -0.5), (-0.5, 3.5)])   # centers with x + y < 3
+        >>> print(sl.text_image(fb))
+        ----
+        #---
+        ##--
+        ###-
+        """
         cs = p.contours("points", contours)
         self._draw("polygon", {"contours": cs}, self._fill_attributes())
 
-    def rectangle(self, x, y, width, height):
-        """Fill the rectangle with corner (x, y) and the given size."""
+    def rectangle(self, x: float, y: float, width: float, height: float) -> None:
+        """Fill the rectangle with corner (x, y) and the given size.
+
+        Parameters
+        ----------
+        x, y : float
+            A corner, in user coordinates.
+        width, height : float
+            The size (negative: the other way).
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> fb = sl.FrameBuffer(4, 3, mode="1")
+        >>> ctx = sl.Context(fb)
+        >>> ctx.set_fill(color=1)
+        >>> ctx.rectangle(0.5, -0.5, 2, 2)          # centers x = 1, 2 and y = 0, 1
+        >>> print(sl.text_image(fb))
+        ----
+        -##-
+        -##-
+        """
         x, y = v.number("x", x), v.number("y", y)
         w, h = v.number("width", width), v.number("height", height)
         self.polygon([(x, y), (x + w, y), (x + w, y + h), (x, y + h)])
 
-    def ellipse(self, xc, yc, rx, ry, angle=0.0, fill=False):
-        """An ellipse: stroked with the line attributes, or filled (``fill=True``)."""
+    def ellipse(self, xc: float, yc: float, rx: float, ry: float, angle: "Angle" = 0.0,
+                fill: bool = False) -> None:
+        """An ellipse: stroked with the line attributes, or filled (``fill=True``).
+
+        Parameters
+        ----------
+        xc, yc : float
+            The center, in user coordinates.
+        rx, ry : float
+            The semi-axes, >= 0.
+        angle : float or str
+            The turn of the rx axis from +x.
+        fill : bool
+            Fill with the fill attributes instead of stroking.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> fb = sl.FrameBuffer(7, 3, mode="1")
+        >>> ctx = sl.Context(fb)
+        >>> ctx.set_fill(color=1)
+        >>> ctx.ellipse(3, 1, 3.2, 1.2, fill=True)    # rows y = 0, 2: |x - 3| < 1.77
+        >>> print(sl.text_image(fb))
+        --###--
+        #######
+        --###--
+        """
         c = p.points("center", [(xc, yc)])[0]
         axes = tf.rotation(v.angle("angle", angle))[:2, :2] @ np.diag(
             [p._nonnegative("rx", rx), p._nonnegative("ry", ry)])
@@ -305,13 +666,57 @@ class Context:
             **self._state.line, "fill": False, "closed": True}
         self._draw("ellipse", {"center": c, "axes": axes}, attrs)
 
-    def circle(self, xc, yc, r, fill=False):
-        """A circle: :meth:`ellipse` with equal semi-axes."""
+    def circle(self, xc: float, yc: float, r: float, fill: bool = False) -> None:
+        """A circle: :meth:`ellipse` with equal semi-axes.
+
+        Parameters
+        ----------
+        xc, yc : float
+            The center, in user coordinates.
+        r : float
+            The radius, >= 0.
+        fill : bool
+            Fill with the fill attributes instead of stroking.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> fb = sl.FrameBuffer(3, 3, mode="1")
+        >>> ctx = sl.Context(fb)
+        >>> ctx.set_fill(color=1)
+        >>> ctx.circle(1, 1, 1.2, fill=True)         # centers within 1.2 of (1, 1)
+        >>> print(sl.text_image(fb))
+        -#-
+        ###
+        -#-
+        """
         self.ellipse(xc, yc, r, r, 0.0, fill)
 
-    def text(self, x, y, string):
+    def text(self, x: float, y: float, string: str) -> None:
         """Draw ``string`` at (x, y) with the text attributes (the CTM scales, turns
-        and moves it)."""
+        and moves it).
+
+        Parameters
+        ----------
+        x, y : float
+            The anchor point, in user coordinates.
+        string : str
+            The text.
+
+        Raises
+        ------
+        ArgumentValueError
+            When ``string`` is not a str.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> fb = sl.FrameBuffer(20, 12, mode="1")
+        >>> ctx = sl.Context(fb)
+        >>> ctx.text(1, 1, "T")
+        >>> fb.to_array().any()
+        np.True_
+        """
         if not isinstance(string, str):
             raise ArgumentValueError(f"string must be a str, got {v._show(string)}")
         t = self._state.text
@@ -319,20 +724,42 @@ class Context:
                     "frame": p.text_frame(t["height"], t["angle"]), "string": string}
         self._draw("text", geometry, t)
 
-    def markers(self, points, kind="plus", size=7.0):
-        """Polymarkers at ``points`` in the line color (``size`` in device units)."""
+    def markers(self, points: "Points", kind: str = "plus", size: float = 7.0) -> None:
+        """Polymarkers at ``points`` in the line color (``size`` in device units).
+
+        Parameters
+        ----------
+        points : (N, 2) array_like
+            The marker positions, in user coordinates.
+        kind : str
+            The marker shape (``"plus"``, ``"cross"``, ...).
+        size : float
+            Its size in device units.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> fb = sl.FrameBuffer(5, 5, mode="1")
+        >>> sl.Context(fb).markers([(2, 2)], size=5)
+        >>> print(sl.text_image(fb))
+        --#--
+        --#--
+        #####
+        --#--
+        --#--
+        """
         pts = p.points("points", points, 1)
         attrs = p.marker_attributes(kind, size, self._state.line["color"])
         self._draw("markers", {"points": pts}, attrs)
 
-    def _fill_attributes(self):
+    def _fill_attributes(self) -> dict[str, Any]:
         f = dict(self._state.fill)
         if f["edge"] is not None:
             f["edge"] = {**self._state.line, "color": f["edge"]}
         return f
 
 
-def _upright(corners):
+def _upright(corners: NDArray[np.float64]) -> bool:
     """Whether four corners form an axis-aligned rectangle."""
     xs, ys = corners[:, 0], corners[:, 1]
     return (np.isclose(xs[0], xs[3]) and np.isclose(xs[1], xs[2]) and np.isclose(ys[0], ys[1])

@@ -762,6 +762,7 @@ class Context:
 def _upright(corners: NDArray[np.float64]) -> bool:
     """Whether four corners form an axis-aligned rectangle."""
     xs, ys = corners[:, 0], corners[:, 1]
-    return (np.isclose(xs[0], xs[3]) and np.isclose(xs[1], xs[2]) and np.isclose(ys[0], ys[1])
-            and np.isclose(ys[2], ys[3])) or (np.isclose(ys[0], ys[3]) and np.isclose(
-                ys[1], ys[2]) and np.isclose(xs[0], xs[1]) and np.isclose(xs[2], xs[3]))
+    return bool((np.isclose(xs[0], xs[3]) and np.isclose(xs[1], xs[2])
+                 and np.isclose(ys[0], ys[1]) and np.isclose(ys[2], ys[3]))
+                or (np.isclose(ys[0], ys[3]) and np.isclose(ys[1], ys[2])
+                    and np.isclose(xs[0], xs[1]) and np.isclose(xs[2], xs[3])))

@@ -36,6 +36,7 @@ COMPLETE = [
     "scanline.screen",
     "scanline.shading",
     "scanline.octree",
+    "scanline.solids",
 ]
 
 

@@ -2,13 +2,20 @@
 as CSG primitives).  Its inside along a ray comes from the sorted crossings of the ray
 with its triangles (:func:`scanline._kernels.solids.mesh_intervals`)."""
 
+from typing import TYPE_CHECKING, Optional
+
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from ..errors import ArgumentTypeError, ArgumentValueError
-from .base import Solid, material_of
+from .base import Bounds, Solid, material_of
+
+if TYPE_CHECKING:
+    from ..lighting import Material
+    from ..mesh import Mesh
 
 
-def check_closed(mesh, argument="mesh"):
+def check_closed(mesh: "Mesh", argument: str = "mesh") -> None:
     """Refuse a mesh that does not bound a solid: every edge must be shared by exactly
     two faces that run along it in opposite directions (an oriented 2-manifold
     without boundary), so a ray going in also comes out."""
@@ -42,13 +49,22 @@ class MeshSolid(Solid):
     material : Material, optional
         Else the mesh's own material, else the default.
 
+    Raises
+    ------
+    ArgumentTypeError
+        ``mesh`` not a Mesh.
+    ArgumentValueError
+        A mesh that is not closed and consistently oriented.
+
+    Examples
+    --------
     >>> import scanline as sl
     >>> cube = sl.solids.MeshSolid(sl.mesh.cube(2.0))
     >>> cube.volume(), cube.contains([(0, 0, 0), (2, 0, 0)]).tolist()
     (8.0, [True, False])
     """
 
-    def __init__(self, mesh, *, material=None):
+    def __init__(self, mesh: "Mesh", *, material: Optional["Material"] = None) -> None:
         from ..lighting import Material
         from ..mesh import Mesh
 
@@ -60,8 +76,20 @@ class MeshSolid(Solid):
         own = mesh.material if isinstance(mesh.material, Material) else None
         self.material = material_of(material if material is not None else own)
 
-    def triangles(self):
-        """The faces as triangle fans, (T, 3, 3) world coordinates."""
+    def triangles(self) -> NDArray[np.float64]:
+        """The faces as triangle fans, (T, 3, 3) world coordinates.
+
+        Returns
+        -------
+        ndarray (T, 3, 3)
+            Each face of k vertices as k - 2 triangles from its first vertex.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> sl.solids.MeshSolid(sl.mesh.cube(2.0)).triangles().shape     # 6 squares
+        (12, 3, 3)
+        """
         idx, off = self.mesh.face_indices, self.mesh.face_offsets
         sizes = np.diff(off)
         first = np.repeat(idx[off[:-1]], sizes - 2)
@@ -70,20 +98,64 @@ class MeshSolid(Solid):
         tri = np.stack([first, idx[start + k + 1], idx[start + k + 2]], axis=1)
         return self.mesh.vertices[tri]
 
-    def contains(self, points):
+    def contains(self, points: ArrayLike) -> NDArray[np.bool_]:
+        """Whether each point is inside, by ray parity through the same kernels that
+        cast the solid's rays.
+
+        Parameters
+        ----------
+        points : array_like (N, 3) or (3,)
+            World points.
+
+        Returns
+        -------
+        ndarray (N,) bool
+            True inside.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> sl.solids.MeshSolid(sl.mesh.cube(2.0)).contains([(0.5, 0.5, 0.9), (0, 0, 1.5)]).tolist()
+        [True, False]
+        """
         from .program import Program
 
         return Program(self).inside(points)
 
-    def bounds(self):
+    def bounds(self) -> Bounds:
+        """The mesh's bounding box.
+
+        Returns
+        -------
+        lo, hi : ndarray (3,)
+            Copies of the mesh's bounds.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> [c.tolist() for c in sl.solids.MeshSolid(sl.mesh.cube(2.0)).bounds()]
+        [[-1.0, -1.0, -1.0], [1.0, 1.0, 1.0]]
+        """
         lo, hi = self.mesh.bounds
         return lo.copy(), hi.copy()
 
-    def volume(self):
+    def volume(self) -> float:
         """Exact for the polyhedron: the divergence theorem over its triangles,
-        V = sum of v0 . (v1 x v2) / 6."""
+        V = sum of v0 . (v1 x v2) / 6.
+
+        Returns
+        -------
+        float
+            The volume.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> sl.solids.MeshSolid(sl.mesh.cube(3.0)).volume()
+        27.0
+        """
         t = self.triangles()
         return float(np.einsum("ij,ij->i", t[:, 0], np.cross(t[:, 1], t[:, 2])).sum() / 6.0)
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"<MeshSolid: {self.mesh!r}>"

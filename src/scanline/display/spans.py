@@ -9,11 +9,15 @@ parallel lines at any angle and spacing through the area.
 """
 
 import math
+from typing import Callable, Sequence
 
 import numpy as np
+from numpy.typing import NDArray
+
+F64 = NDArray[np.float64]
 
 
-def _edges(contours):
+def _edges(contours: Sequence[F64]) -> F64:
     """(E, 5) rows xlo, ylo, xhi, yhi, direction (+1 up, -1 down), non-horizontal only."""
     rows = []
     for c in contours:
@@ -26,7 +30,7 @@ def _edges(contours):
     return np.vstack(rows) if rows else np.zeros((0, 5))
 
 
-def _chords(edges, spacing, rule, keys):
+def _chords(edges: F64, spacing: float, rule: str, keys: Callable[[F64], F64]) -> F64:
     """The inside runs of the lines y = k * spacing: rows (x0, y, x1, y).
 
     Every edge crosses the lines with ylo < y <= yhi at
@@ -56,10 +60,11 @@ def _chords(edges, spacing, rule, keys):
         total = np.cumsum(d)
         inside = total - np.concatenate([[0.0], total])[start[group]] != 0
     run = same & inside[:-1] & (x[:-1] < x[1:])
-    return np.column_stack([x[:-1][run], y[:-1][run], x[1:][run], y[1:][run]])
+    out: F64 = np.column_stack([x[:-1][run], y[:-1][run], x[1:][run], y[1:][run]])
+    return out
 
 
-def spans(contours, rule):
+def spans(contours: Sequence[F64], rule: str) -> F64:
     """Horizontal strokes (N, 4) rows (x0, y, x1, y), x0 <= x1, covering the pixel
     centers the scan-line fill covers."""
     e = _edges(contours)
@@ -68,11 +73,12 @@ def spans(contours, rule):
     return out
 
 
-def hatch(contours, rule, angle, spacing):
+def hatch(contours: Sequence[F64], rule: str, angle: float, spacing: float) -> F64:
     """Strokes (N, 4) at ``angle`` radians, ``spacing`` apart (the family of lines
     through the origin), clipped to the inside of the area: exact chords, not pixels."""
     c, s = math.cos(angle), math.sin(angle)
     to_local = np.array([[c, s], [-s, c]])  # rotate by -angle: hatch lines horizontal
     seg = _chords(_edges([p @ to_local.T for p in contours]), float(spacing), rule,
                   lambda x: x)
-    return np.hstack([seg[:, :2] @ to_local, seg[:, 2:] @ to_local])
+    out: F64 = np.hstack([seg[:, :2] @ to_local, seg[:, 2:] @ to_local])
+    return out

@@ -9,7 +9,7 @@ from scanline.gallery import blobby as F
 
 
 def test_the_gallery_shows_it():
-    assert "figures_blobby" in demo.FIGURE_MODULES
+    assert "blobby" in demo.FIGURE_MODULES
     assert F.ANIMATIONS
 
 

@@ -7,7 +7,7 @@ from scanline.gallery import csg as F
 
 
 def test_the_gallery_shows_it():
-    assert "figures_csg" in demo.FIGURE_MODULES
+    assert "csg" in demo.FIGURE_MODULES
 
 
 def test_figure_draws_the_tree_and_its_nodes():

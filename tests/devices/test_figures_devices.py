@@ -10,7 +10,7 @@ from scanline.display.color_crt import PENETRATION_COLORS
 
 
 def test_the_gallery_shows_them():
-    assert "figures_devices" in demo.FIGURE_MODULES
+    assert "devices" in demo.FIGURE_MODULES
     assert all(make in demo.all_figures() for make in F.FIGURES)
 
 

@@ -9,7 +9,7 @@ from scanline.gallery import fractals as F
 
 
 def test_the_gallery_shows_them():
-    assert "figures_fractals" in demo.FIGURE_MODULES
+    assert "fractals" in demo.FIGURE_MODULES
 
 
 @pytest.mark.parametrize("make", F.FIGURES, ids=lambda f: f.__name__)

@@ -11,7 +11,7 @@ from scanline.gallery import octree as F
 
 
 def test_the_gallery_shows_them():
-    assert "figures_octree" in demo.FIGURE_MODULES
+    assert "octree" in demo.FIGURE_MODULES
 
 
 def test_the_figure_draws_a_quadtree_and_a_rendered_octree():

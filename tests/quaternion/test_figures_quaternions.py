@@ -10,7 +10,7 @@ from scanline.gallery import quaternions as F
 
 
 def test_the_gallery_shows_it():
-    assert "figures_quaternions" in demo.FIGURE_MODULES
+    assert "quaternions" in demo.FIGURE_MODULES
 
 
 def test_figure_draws_a_picture():

@@ -9,7 +9,7 @@ from scanline.gallery import surface_rendering as F
 
 
 def test_the_gallery_shows_them():
-    assert "figures_surface_rendering" in demo.FIGURE_MODULES
+    assert "surface_rendering" in demo.FIGURE_MODULES
 
 
 @pytest.mark.parametrize("make", F.FIGURES, ids=lambda f: f.__name__)

@@ -43,14 +43,30 @@ class Segment:
         The segment transformation, applied to the NDC geometry when drawing.
     detectable : bool
         Only detectable segments can be picked (:meth:`DisplayFile.pick`).
+
+    Parameters
+    ----------
+    name : str
+        The segment's name.
+    order : int
+        Its rank of creation (breaks ties of priority).
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> df = sl.DisplayFile()
+    >>> df.create_segment("wheel")
+    >>> df.close_segment()
+    >>> df.segment("wheel")
+    <Segment 'wheel': 0 primitives, priority 0>
     """
 
     __slots__ = ("name", "primitives", "visible", "highlighted", "priority",
                  "transformation", "detectable", "_order")
 
-    def __init__(self, name, order):
+    def __init__(self, name: str, order: int) -> None:
         self.name = name
-        self.primitives = []
+        self.primitives: list[p.Primitive] = []
         self.visible = True
         self.highlighted = False
         self.priority = 0.0
@@ -58,7 +74,7 @@ class Segment:
         self.detectable = True
         self._order = order
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         flags = [f for f, on in (("invisible", not self.visible),
                                  ("highlighted", self.highlighted)) if on]
         return (f"<Segment {self.name!r}: {len(self.primitives)} primitives, priority "

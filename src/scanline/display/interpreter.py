@@ -15,7 +15,10 @@ color) are mapped, clipped and drawn in batches (:mod:`scanline.display.batch`).
 A highlighted segment gets a frame in the highlight color around what it drew.
 """
 
+from typing import TYPE_CHECKING, Any, Optional, Sequence
+
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError, ScanlineError
@@ -23,6 +26,10 @@ from ..geometry import guard
 from . import batch, pipeline, text, three_d
 from .primitives import THIN, Primitive
 from .viewing import device_rectangle, workstation
+
+if TYPE_CHECKING:
+    from .._typing import Color
+    from .file import DisplayFile
 
 _UNIT = (0.0, 0.0, 1.0, 1.0)
 
@@ -84,10 +91,42 @@ def _area(prim, rect, device):
     return clipped
 
 
-def draw_primitive(prim, rect, device):
+def draw_primitive(prim: Primitive, rect: Any, device: Any) -> list[NDArray[np.float64]]:
     """Draw one primitive (already in device coordinates) clipped to ``rect`` (a
     rectangle or a convex polygon, see :func:`pipeline.inside`); return the point
-    arrays drawn, for the highlight frame."""
+    arrays drawn, for the highlight frame.
+
+    Parameters
+    ----------
+    prim : Primitive
+        The primitive, its geometry in device coordinates.
+    rect : tuple or numpy.ndarray
+        The clip region: (xmin, ymin, xmax, ymax), or a convex (M, 2) polygon.
+    device : RasterDevice, VectorDevice or SVGDevice
+        Or any object with ``stroke`` and ``fill``.
+
+    Returns
+    -------
+    list of numpy.ndarray
+        The (K, 2) point arrays sent to the device.
+
+    Raises
+    ------
+    ArgumentValueError
+        When the geometry's device coordinates overflow.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import scanline as sl
+    >>> from scanline.display.primitives import Primitive, line_attributes
+    >>> from scanline.display.interpreter import draw_primitive
+    >>> beam = sl.display.VectorDevice(10, 10)
+    >>> prim = Primitive("polyline", {"points": np.array([[0.0, 5.0], [20.0, 5.0]])},
+    ...                  {**line_attributes(), "closed": False}, None)
+    >>> [piece.tolist() for piece in draw_primitive(prim, (0, 0, 9, 9), beam)]   # clipped at x = 9
+    [[[0.0, 5.0], [9.0, 5.0]]]
+    """
     kind, g, a = prim.kind, prim.geometry, prim.attributes
     if kind == "ellipse":
         ring = pipeline.ellipse_points(g["center"], g["axes"])
@@ -114,12 +153,13 @@ def draw_primitive(prim, rect, device):
     return text.draw(prim, rect, device)
 
 
-def interpret(display_file, device, highlight="magenta"):
+def interpret(display_file: "DisplayFile", device: Any, highlight: "Color" = "magenta") -> None:
     """Draw ``display_file`` on ``device``.
 
     Parameters
     ----------
     display_file : DisplayFile
+        The picture.
     device : RasterDevice, VectorDevice or SVGDevice
         Or any object with ``width``, ``height``, ``stroke`` and ``fill`` (see
         :mod:`scanline.display.devices`), and optionally ``begin_segment(name)`` and
@@ -133,6 +173,28 @@ def interpret(display_file, device, highlight="magenta"):
     of a random-scan display (chapter 1, Q.3): the picture is regenerated from the
     stored commands, so changing a segment's attributes and interpreting again
     redraws it.  The order of segments by priority follows GKS (ISO 7942, 4.7.6).
+
+    Raises
+    ------
+    ArgumentTypeError
+        When ``display_file`` is not a DisplayFile or ``device`` not a device.
+    ArgumentValueError
+        For a bad highlight color, or geometry that overflows the device coordinates.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> df = sl.DisplayFile()
+    >>> df.set_viewing(window=(0, 0, 4, 2))
+    >>> df.create_segment("base")
+    >>> df.polyline([(0, 0), (4, 0)])
+    >>> df.close_segment()
+    >>> fb = sl.FrameBuffer(5, 3, mode="1")
+    >>> sl.display.interpret(df, sl.display.RasterDevice(fb))
+    >>> print(sl.text_image(fb))
+    -----
+    -----
+    #####
     """
     from .file import DisplayFile
     from .primitives import color

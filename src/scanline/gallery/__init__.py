@@ -23,9 +23,32 @@ MODULES = ("primitives", "attributes", "antialias", "color", "text", "clip", "sc
 
 def write(figures: Sequence[Callable[[], Any]], animations: Sequence[Callable[[], Any]],
           out: str, report: Callable[[int | None, Any], None]) -> None:
-    """Draw ``figures`` into ``out`` as ``NAME.png``, each written as soon as it is drawn
-    and reported as ``(index, figure without its image)``, then ``animations`` as
-    ``NAME.gif``, each reported as ``(None, name)``."""
+    """Draw figures into a folder, each PNG file written as soon as it is drawn.
+
+    Parameters
+    ----------
+    figures : sequence of callables
+        Each returns a :class:`scanline.gallery.primitives.Figure` (a module's
+        ``FIGURES``).
+    animations : sequence of callables
+        Each returns ``(name, Animation)`` (a module's ``ANIMATIONS``), saved as
+        ``NAME.gif`` after the figures.
+    out : str
+        An existing folder; ``NAME.png`` and ``NAME.gif`` are written into it atomically.
+    report : callable
+        Called as ``report(index, figure)`` after each figure (its image left out, so
+        that it can cross a process boundary cheaply) and ``report(None, name)`` after
+        each animation.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> from scanline.gallery import curves
+    >>> out, seen = tempfile.mkdtemp(), []
+    >>> write(curves.FIGURES[:1], (), out, lambda index, fig: seen.append((index, fig.name)))
+    >>> seen, os.listdir(out)
+    ([(0, 'de-casteljau')], ['de-casteljau.png'])
+    """
     from ..framebuffer import write_atomically
 
     for index, make in enumerate(figures):
@@ -41,8 +64,30 @@ def write(figures: Sequence[Callable[[], Any]], animations: Sequence[Callable[[]
 
 def main(figures: Sequence[Callable[[], Any]],
          animations: Sequence[Callable[[], Any]] = (), argv: list[str] | None = None) -> None:
-    """Run one module of figures alone: ``-o DIR`` (default: the current folder) receives
-    its PNG files and GIFs; each figure's title, caption and source are printed."""
+    """Run one module of figures alone, as ``python -m scanline.gallery.NAME -o DIR``.
+
+    Parameters
+    ----------
+    figures, animations : sequence of callables
+        The module's ``FIGURES`` and ``ANIMATIONS``, as for :func:`write`.
+    argv : list of str, optional
+        The command line after the program's name (default: ``sys.argv[1:]``);
+        ``-o DIR`` (default: the current folder) receives the PNG files and GIFs,
+        created if needed.
+
+    Notes
+    -----
+    Each figure's file name, title, caption and source in the notes are printed,
+    wrapped to 88 columns: the documentation's gallery shows them under each page.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from scanline.gallery import curves
+    >>> main(curves.FIGURES[:1], argv=["-o", tempfile.mkdtemp()])  # doctest: +ELLIPSIS
+    de-casteljau.png: de Casteljau's construction at u = 0.5. The control polygon P0..P3
+    ...
+    """
     parser = argparse.ArgumentParser(description="Draw one chapter's demo figures.")
     parser.add_argument("-o", "--out", metavar="DIR", default=".",
                         help="folder to write into, created if needed (default: .)")

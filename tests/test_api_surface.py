@@ -37,6 +37,7 @@ COMPLETE = [
     "scanline.shading",
     "scanline.octree",
     "scanline.solids",
+    "scanline.draw3d",
 ]
 
 

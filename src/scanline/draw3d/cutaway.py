@@ -21,7 +21,7 @@ part of the cut face itself) and removed where it faces the kept side.
 """
 
 from dataclasses import dataclass
-from typing import List
+from typing import Any, List, Optional
 
 import numpy as np
 
@@ -39,6 +39,21 @@ EPS = 1e-12
 @dataclass(frozen=True)
 class Cutaway:
     """What :func:`cutaway` returns.
+
+    Parameters
+    ----------
+    meshes, caps, loops, closed : list
+        As listed under Attributes, one entry per input mesh.
+
+    Examples
+    --------
+    A plane that cuts nothing away (x + 5 >= 0 on the whole cube): the mesh whole
+    (its squares as triangles), no cap.
+
+    >>> import scanline as sl
+    >>> cut = sl.draw3d.cutaway(sl.mesh.cube(2.0), (1, 0, 0, 5))
+    >>> cut.meshes, cut.caps
+    ([<Mesh: 8 vertices, 12 faces, 18 edges>], [None])
 
     Attributes
     ----------
@@ -58,13 +73,27 @@ class Cutaway:
         two faces).
     """
 
-    meshes: List[Mesh]
-    caps: list
-    loops: list
-    closed: List[Mesh]
+    meshes: List[Optional[Mesh]]
+    caps: List[Optional[Mesh]]
+    loops: List[List[Any]]
+    closed: List[Optional[Mesh]]
 
-    def drawable(self):
-        """The clipped meshes and the caps there are: the list to render."""
+    def drawable(self) -> List[Mesh]:
+        """The clipped meshes and the caps there are: the list to render.
+
+        Returns
+        -------
+        list of Mesh
+            The meshes, then the caps, without the Nones.
+
+        Examples
+        --------
+        Half the cube and its cap at x = 0:
+
+        >>> import scanline as sl
+        >>> sl.draw3d.cutaway(sl.mesh.cube(2.0), (1, 0, 0, 0)).drawable()
+        [<Mesh: 12 vertices, 14 faces, 25 edges>, <Mesh: 18 vertices, 6 faces, 18 edges>]
+        """
         return [m for m in list(self.meshes) + list(self.caps) if m is not None]
 
 
@@ -335,13 +364,14 @@ def _compact(verts, tris, attrs, parts, colors=None):
     return Mesh(verts[used], remap[tris], **kw)
 
 
-def cutaway(meshes, planes, cap_color=None):
+def cutaway(meshes: Any, planes: Any, cap_color: Any = None) -> Cutaway:
     """Meshes cut by clipping planes, with the cut faces capped (Hearn & Baker, section
     9-1).
 
     Parameters
     ----------
     meshes : Mesh or list of Mesh
+        The surfaces to cut (closed ones get caps).
     planes : (A, B, C, D) or (N, 4) array_like
         Each keeps where A x + B y + C z + D >= 0; several cut one after another
         (what is kept lies on the positive side of every plane).

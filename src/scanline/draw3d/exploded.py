@@ -10,14 +10,17 @@ face's triangles weighted by their area), which does not depend on how finely a 
 is tessellated; the default center is the same centroid of all the parts together.
 """
 
+from typing import Any, List, Optional, Sequence, Tuple
+
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
 from ..mesh import Mesh
 
 
-def _parts(meshes):
+def _parts(meshes: Any) -> List[Mesh]:
     if isinstance(meshes, Mesh):
         return [meshes]
     if isinstance(meshes, (str, bytes)) or not hasattr(meshes, "__iter__"):
@@ -29,7 +32,7 @@ def _parts(meshes):
     return parts
 
 
-def surface_moments(mesh):
+def surface_moments(mesh: Mesh) -> Tuple[float, NDArray[np.float64]]:
     """The surface area of ``mesh`` and its first moment (area times the area-weighted
     centroid), from the triangles of its faces' fans."""
     tri = mesh.triangulated()
@@ -38,9 +41,28 @@ def surface_moments(mesh):
     return float(area.sum()), (area[:, None] * p.mean(axis=1)).sum(axis=0)
 
 
-def centroid(mesh):
+def centroid(mesh: Mesh) -> NDArray[np.float64]:
     """The area-weighted centroid of the surface of ``mesh`` (the vertex mean where
     its faces have no area).
+
+    Parameters
+    ----------
+    mesh : Mesh
+        Any mesh.
+
+    Returns
+    -------
+    ndarray (3,)
+        The centroid.
+
+    Raises
+    ------
+    ArgumentTypeError
+        ``mesh`` not a Mesh.
+
+    Examples
+    --------
+    A box's surface is symmetric about its center:
 
     >>> import scanline as sl
     >>> centroid(sl.mesh.box((0, 0, 0), (2, 4, 6))).tolist()
@@ -52,7 +74,8 @@ def centroid(mesh):
     return moment / area if area > 0 else mesh.vertices.mean(axis=0)
 
 
-def exploded(meshes, factor, center=None):
+def exploded(meshes: Any, factor: float,
+             center: Optional[Sequence[float]] = None) -> List[Mesh]:
     """The parts of an assembly moved apart along the lines from its center through
     their centroids (Hearn & Baker, section 9-1).
 
@@ -72,6 +95,13 @@ def exploded(meshes, factor, center=None):
     -------
     list of Mesh
         The parts translated, in the order given.
+
+    Raises
+    ------
+    ArgumentTypeError
+        ``meshes`` not meshes.
+    ArgumentValueError
+        A factor outside 0..1e6, or moves past float64.
 
     Examples
     --------

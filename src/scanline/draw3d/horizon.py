@@ -7,12 +7,23 @@
 
 import math
 from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any, Callable, Optional, Sequence, Tuple, Union
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from .. import _validate as v
 from ..draw._common import target
 from ..errors import ArgumentTypeError, ArgumentValueError
+
+if TYPE_CHECKING:
+    from ..framebuffer import FrameBuffer
+    from ..projection import Camera
+
+#: Heights on a grid, or a function f(x, y).
+Surface = Union[ArrayLike, Callable[..., Any]]
+#: A camera, or (azimuth, elevation) in radians.
+View = Union["Camera", Tuple[float, float]]
 
 #: Default view of ``camera_or_angles``: azimuth and elevation, radians.
 ANGLES = (math.radians(30.0), math.radians(30.0))
@@ -23,6 +34,21 @@ SAMPLES = 41
 @dataclass
 class Horizon:
     """What :func:`floating_horizon` computed.
+
+    Parameters
+    ----------
+    segments, upper, lower, states, curves, points : ndarray
+        As listed under Attributes.
+
+    Examples
+    --------
+    A flat plane seen from above: each farther row lies higher on the screen, so
+    every curve is visible (1) wherever it has samples (2: none), nearest row first.
+
+    >>> import numpy as np, scanline as sl
+    >>> h = sl.draw3d.horizon(np.zeros((3, 3)), camera_or_angles=(0.0, 0.5), width=20, height=20)
+    >>> np.unique(h.states).tolist(), h.curves.tolist()
+    ([1, 2], [0, 1, 2])
 
     Attributes
     ----------
@@ -174,14 +200,17 @@ def horizon_runs(points, curves="rows", side_edges=True):
             order)
 
 
-def floating_horizon(fb, z, x=None, y=None, camera_or_angles=ANGLES, color="white",
-                     curves="rows", side_edges=True, **line):
+def floating_horizon(fb: "FrameBuffer", z: Surface, x: Optional[ArrayLike] = None,
+                     y: Optional[ArrayLike] = None, camera_or_angles: View = ANGLES,
+                     color: Any = "white", curves: str = "rows", side_edges: bool = True,
+                     **line: Any) -> Horizon:
     """Plot the surface z = f(x, y) as curves with hidden parts removed by the
     floating-horizon method.
 
     Parameters
     ----------
     fb : FrameBuffer
+        Drawn into.
     z : (ny, nx) array_like or callable
         The heights on the grid (row i at y[i], column j at x[j]), or f(x, y)
         (vectorized over numpy arrays, or called point by point).
@@ -191,6 +220,7 @@ def floating_horizon(fb, z, x=None, y=None, camera_or_angles=ANGLES, color="whit
         A camera, or an orthographic view from azimuth (about z, from -y toward
         +x) and elevation (radians), fitted to the frame buffer.
     color : color
+        The curves' color.
     curves : {"rows", "columns"}
         Plot the curves of constant y (rows) or of constant x.
     side_edges : bool
@@ -198,11 +228,13 @@ def floating_horizon(fb, z, x=None, y=None, camera_or_angles=ANGLES, color="whit
         effect: without it a curve that reaches beyond the previous ones at the sides
         is compared with an undefined horizon there and drawn where the surface's
         edge hides it).
-    line : attributes of :func:`scanline.draw.lines` (width, antialias, ...)
+    **line
+        Attributes of :func:`scanline.draw.lines` (width, antialias, ...).
 
     Returns
     -------
     Horizon
+        The segments drawn, the horizons and each curve's states.
 
     Notes
     -----
@@ -244,10 +276,44 @@ def floating_horizon(fb, z, x=None, y=None, camera_or_angles=ANGLES, color="whit
     return h
 
 
-def horizon(z, x=None, y=None, camera_or_angles=ANGLES, width=640, height=480,
-            curves="rows", side_edges=True):
+def horizon(z: Surface, x: Optional[ArrayLike] = None, y: Optional[ArrayLike] = None,
+            camera_or_angles: View = ANGLES, width: int = 640, height: int = 480,
+            curves: str = "rows", side_edges: bool = True) -> Horizon:
     """The floating horizon of :func:`floating_horizon` on a ``width`` x ``height``
-    device without drawing: a :class:`Horizon`."""
+    device without drawing: a :class:`Horizon`.
+
+    Parameters
+    ----------
+    z : (ny, nx) array_like or callable
+        The heights, or f(x, y).
+    x, y : array_like, optional
+        Increasing grid coordinates.
+    camera_or_angles : Camera or (azimuth, elevation)
+        The view.
+    width, height : int
+        The device's size, at least 2.
+    curves : {"rows", "columns"}
+        Which curves.
+    side_edges : bool
+        Join the curves' ends (Rogers' edge fix).
+
+    Returns
+    -------
+    Horizon
+        What the method found (Hearn & Baker 13-10; Wright 1973).
+
+    Raises
+    ------
+    ArgumentValueError
+        A bad grid, size or curve choice.
+
+    Examples
+    --------
+    >>> import numpy as np, scanline as sl
+    >>> h = sl.draw3d.horizon(np.zeros((3, 3)), camera_or_angles=(0.0, 0.5), width=20, height=20)
+    >>> h.states.shape, h.upper.shape
+    ((3, 20), (20,))
+    """
     from .._kernels import horizon as k
     from .._kernels._jit import call
 

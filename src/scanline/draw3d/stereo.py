@@ -20,14 +20,18 @@ right eye's (the luminance of ITU-R BT.601, :func:`scanline.color.luminance`).
 ('RGB', 84)
 """
 
+from typing import List
+
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
+from .._typing import Color
 from ..errors import ArgumentTypeError, ArgumentValueError
 from ..framebuffer import FrameBuffer
 
 
-def _pair(left, right):
+def _pair(left: FrameBuffer, right: FrameBuffer) -> List[NDArray[np.uint8]]:
     for name, fb in (("left", left), ("right", right)):
         if not isinstance(fb, FrameBuffer):
             raise ArgumentTypeError(f"{name} must be a scanline.FrameBuffer, got {v._show(fb)}")
@@ -38,7 +42,7 @@ def _pair(left, right):
     return [np.asarray(fb.to_pil().convert("RGB"), np.uint8) for fb in (left, right)]
 
 
-def anaglyph(left, right):
+def anaglyph(left: FrameBuffer, right: FrameBuffer) -> FrameBuffer:
     """A red-cyan anaglyph of a stereo pair: an RGB frame buffer whose red channel is
     the left view's luminance and whose green and blue channels are the right
     view's.
@@ -47,6 +51,28 @@ def anaglyph(left, right):
     ----------
     left, right : FrameBuffer
         The views of the left and right eye, the same size, any mode.
+
+    Returns
+    -------
+    FrameBuffer
+        Mode RGB.
+
+    Raises
+    ------
+    ArgumentTypeError
+        A view that is not a FrameBuffer.
+    ArgumentValueError
+        Views of different sizes.
+
+    Examples
+    --------
+    A white left view and a black right one: red alone.
+
+    >>> import scanline as sl
+    >>> left = sl.FrameBuffer(1, 1, background="white")
+    >>> right = sl.FrameBuffer(1, 1, background="black")
+    >>> sl.draw3d.anaglyph(left, right).to_array().tolist()
+    [[[255, 0, 0]]]
     """
     from ..color import luminance
 
@@ -57,10 +83,45 @@ def anaglyph(left, right):
     return FrameBuffer.from_array(out)
 
 
-def side_by_side(left, right, gap=0, crossed=False, background="white"):
+def side_by_side(left: FrameBuffer, right: FrameBuffer, gap: int = 0, crossed: bool = False,
+                 background: Color = "white") -> FrameBuffer:
     """A stereo pair side by side, ``gap`` pixels of ``background`` between them: the
     left view on the left (parallel viewing, a stereoscope), or with ``crossed`` the
-    right view on the left (cross-eyed viewing).  An RGB frame buffer."""
+    right view on the left (cross-eyed viewing).  An RGB frame buffer.
+
+    Parameters
+    ----------
+    left, right : FrameBuffer
+        The two views, the same size.
+    gap : int
+        Pixels between them, 0..4096.
+    crossed : bool
+        The right view on the left.
+    background : color
+        The gap's color.
+
+    Returns
+    -------
+    FrameBuffer
+        Mode RGB, 2 width + gap wide.
+
+    Raises
+    ------
+    ArgumentTypeError
+        A view that is not a FrameBuffer, or ``crossed`` not a bool.
+    ArgumentValueError
+        Views of different sizes, or a gap past 4096.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> left = sl.FrameBuffer(1, 1, background="red")
+    >>> right = sl.FrameBuffer(1, 1, background="blue")
+    >>> sl.draw3d.side_by_side(left, right, gap=1, background="black").to_array().tolist()
+    [[[255, 0, 0], [0, 0, 0], [0, 0, 255]]]
+    >>> sl.draw3d.side_by_side(left, right, crossed=True).to_array().tolist()
+    [[[0, 0, 255], [255, 0, 0]]]
+    """
     a, b = _pair(left, right)
     gap = v.positive_int("gap", gap, minimum=0)
     if gap > 4096:

@@ -9,9 +9,13 @@ device coordinates, and is then drawn by the 2-D batch kernels
 attribute (width, caps, joins, dashes, pens) and antialiasing apply.
 """
 
+from typing import TYPE_CHECKING, Any, List, Optional, Sequence, Tuple, Union
+
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
+from .._typing import Color
 from ..clip.volumes import UNIT_CUBE
 from ..color.spec import Channels
 from ..draw import lines as draw_lines
@@ -22,25 +26,72 @@ from ..mesh.convert import as_meshes
 from ..projection import Camera
 from ..transform3d.arrays import real_array
 
+if TYPE_CHECKING:
+    from ..framebuffer import FrameBuffer
+
+Floats = NDArray[np.float64]
+
 #: Intensities at the nearest and the farthest drawn depth for ``depth_cue=True``.
 DEPTH_CUE = (1.0, 0.25)
 
 
-def _camera(camera):
+def _camera(camera: object) -> Camera:
     if not isinstance(camera, Camera):
         raise ArgumentTypeError(f"camera must be a scanline.Camera, got {v._show(camera)}")
     return camera
 
 
-def project_edges(vertices, edges, camera, width, height):
+def project_edges(vertices: ArrayLike, edges: ArrayLike, camera: Camera, width: int,
+                  height: int) -> Tuple[Floats, Floats, NDArray[np.int64]]:
     """Project and clip the line segments ``edges`` (E, 2), index pairs into the
     world-coordinate ``vertices`` (V, 3), onto a ``width`` x ``height`` device:
     :func:`project_edges_into` the whole device.  Returns ``(segments, depth,
-    which)``."""
+    which)``.
+
+    Parameters
+    ----------
+    vertices : array_like (V, 3)
+        World coordinates.
+    edges : array_like of int (E, 2)
+        Vertex index pairs.
+    camera : Camera
+        The viewer.
+    width, height : int
+        The device's size.
+
+    Returns
+    -------
+    segments : ndarray (K, 4)
+        The visible parts in device coordinates.
+    depth : ndarray (K, 2)
+        Their endpoints' device depths.
+    which : ndarray of int64 (K,)
+        The edge of each row.
+
+    Raises
+    ------
+    ArgumentTypeError
+        ``camera`` not a Camera.
+    ArgumentValueError
+        Vertices not (V, 3), or edges not (E, 2) indices of them.
+
+    Examples
+    --------
+    World x, y in -1..1 land on device 0..8 of a 9 x 9 frame buffer: x_d = 4 (x + 1).
+
+    >>> import numpy as np, scanline as sl
+    >>> cam = sl.Camera(projection=sl.projection.orthographic(window=(-1, -1, 1, 1)))
+    >>> segments, depth, which = sl.draw3d.project_edges([(-1, -1, 0), (1, 1, 0)], [(0, 1)],
+    ...                                                  cam, 9, 9)
+    >>> segments.tolist(), which.tolist()
+    ([[0.0, 0.0, 8.0, 8.0]], [0])
+    """
     return project_edges_into(vertices, edges, camera, _camera(camera)._device_box(width, height))
 
 
-def project_edges_into(vertices, edges, camera, box, aspect=None, details=True):
+def project_edges_into(vertices: ArrayLike, edges: ArrayLike, camera: Camera,
+                       box: Sequence[float], aspect: Optional[float] = None,
+                       details: bool = True) -> Tuple[Any, Any, Any]:
     """Project and clip line segments given as vertex pairs into the rectangle
     ``box`` (see :meth:`scanline.Camera.mapping`).
 
@@ -146,17 +197,21 @@ def depth_cue_intensities(depth_cue):
         f"{v._show(depth_cue)}")
 
 
-def wireframe(fb, meshes, camera, color=None, *, depth_cue=None, background=None,
-              method="bresenham", **line):
+def wireframe(fb: "FrameBuffer", meshes: Any, camera: Camera, color: Any = None, *,
+              depth_cue: Union[None, bool, Tuple[float, float]] = None,
+              background: Optional[Color] = None, method: str = "bresenham",
+              **line: Any) -> Floats:
     """Draw the edges of one mesh or several through ``camera``.
 
     Parameters
     ----------
     fb : FrameBuffer
+        Drawn into.
     meshes : Mesh or list of Mesh
         Or any mesh object :meth:`~scanline.mesh.Mesh.from_any` takes (a trimesh,
         meshio or Open3D mesh).
     camera : Camera
+        The viewer.
     color : color, list of colors (one per mesh), or None
         None: each mesh's own colors (an edge takes the color of its first face, or
         the mean of its vertices' colors), white for a mesh without colors.
@@ -168,6 +223,7 @@ def wireframe(fb, meshes, camera, color=None, *, depth_cue=None, background=None
     background : color, optional
         The color depth cueing fades to (default: the frame buffer's background).
     method : {"bresenham", "dda"}
+        The line algorithm.
     style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen
         Line attributes, as :func:`scanline.draw.lines` takes them.
 
@@ -260,10 +316,45 @@ def _segments3d(name, segments):
     return a
 
 
-def lines(fb, segments, camera, color="white", **line):
+def lines(fb: "FrameBuffer", segments: ArrayLike, camera: Camera, color: Any = "white",
+          **line: Any) -> Floats:
     """Draw 3-D line segments (N, 6) -- rows (x0, y0, z0, x1, y1, z1) -- through
     ``camera``, clipped in homogeneous coordinates, with any line attributes of
-    :func:`scanline.draw.lines`.  Returns the device segments drawn."""
+    :func:`scanline.draw.lines`.  Returns the device segments drawn.
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+        Drawn into.
+    segments : array_like (N, 6) or (N, 2, 3)
+        World segments.
+    camera : Camera
+        The viewer.
+    color : color, or one per segment
+        The lines' color.
+    **line
+        Line attributes of :func:`scanline.draw.lines`.
+
+    Returns
+    -------
+    ndarray (K, 4)
+        The device segments drawn (after clipping).
+
+    Raises
+    ------
+    ArgumentValueError
+        Segments of another shape.
+
+    Examples
+    --------
+    World x, y in -1..1 land on device 0..8 of a 9 x 9 frame buffer: x_d = 4 (x + 1).
+
+    >>> import numpy as np, scanline as sl
+    >>> cam = sl.Camera(projection=sl.projection.orthographic(window=(-1, -1, 1, 1)))
+    >>> fb = sl.FrameBuffer(9, 9, mode="1")
+    >>> sl.draw3d.lines(fb, [(-0.5, 0, 0, 0.5, 0, 0)], cam).tolist()
+    [[2.0, 4.0, 6.0, 4.0]]
+    """
     target(fb)
     a = _segments3d("segments", segments)
     verts = a.reshape(-1, 3)
@@ -276,14 +367,43 @@ def lines(fb, segments, camera, color="white", **line):
     return segs
 
 
-def polyline_pieces(points, camera, width, height, closed=False):
+def polyline_pieces(points: ArrayLike, camera: Camera, width: int, height: int,
+                    closed: bool = False) -> List[Floats]:
     """The visible pieces of a 3-D polyline on a ``width`` x ``height`` device: a list
     of (K, 2) arrays (consecutive visible segments that were not cut at their shared
-    vertex stay one piece, so joins and dash patterns run on)."""
+    vertex stay one piece, so joins and dash patterns run on).
+
+    Parameters
+    ----------
+    points : array_like (N, 3)
+        The polyline's world points.
+    camera : Camera
+        The viewer.
+    width, height : int
+        The device's size.
+    closed : bool
+        Join the last point to the first.
+
+    Returns
+    -------
+    list of ndarray (K, 2)
+        Device points of each visible piece.
+
+    Examples
+    --------
+    World x, y in -1..1 land on device 0..8 of a 9 x 9 frame buffer: x_d = 4 (x + 1).
+
+    >>> import numpy as np, scanline as sl
+    >>> cam = sl.Camera(projection=sl.projection.orthographic(window=(-1, -1, 1, 1)))
+    >>> pts = [(-0.5, -0.5, 0), (0.5, -0.5, 0), (0.5, 0.5, 0)]
+    >>> [piece.tolist() for piece in sl.draw3d.polyline_pieces(pts, cam, 9, 9)]
+    [[[2.0, 2.0], [6.0, 2.0], [6.0, 6.0]]]
+    """
     return pieces_into(points, camera, _camera(camera)._device_box(width, height), closed)
 
 
-def pieces_into(points, camera, box, closed=False, aspect=None):
+def pieces_into(points: ArrayLike, camera: Camera, box: Sequence[float], closed: bool = False,
+                aspect: Optional[float] = None) -> List[Floats]:
     """:func:`polyline_pieces` into the rectangle ``box`` (see
     :func:`project_edges_into`)."""
     from ..transform3d.arrays import points as point_array
@@ -295,8 +415,8 @@ def pieces_into(points, camera, box, closed=False, aspect=None):
         return []
     edges = np.stack([np.arange(len(p) - 1), np.arange(1, len(p))], axis=1)
     segs, _, which = project_edges_into(p, edges, camera, box, aspect)
-    pieces = []
-    last = None
+    pieces: List[List[Floats]] = []
+    last: Optional[Tuple[int, Floats]] = None
     for s, i in zip(segs, which.tolist()):
         a, b = s[:2], s[2:]
         if last is not None and last[0] == i - 1 and np.array_equal(last[1], a):
@@ -307,15 +427,58 @@ def pieces_into(points, camera, box, closed=False, aspect=None):
     return [np.array(piece) for piece in pieces]
 
 
-def polylines(fb, polylines_, camera, color="white", closed=False, **line):
+def polylines(fb: "FrameBuffer", polylines_: Any, camera: Camera, color: Any = "white",
+              closed: bool = False, **line: Any) -> List[Floats]:
     """Draw 3-D polylines (a list of (N_i, 3) arrays) through ``camera``, clipped in
     homogeneous coordinates, with the attributes of :func:`scanline.draw.polylines`
-    (joins and dashes run on along each visible piece)."""
+    (joins and dashes run on along each visible piece).
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+        Drawn into.
+    polylines_ : list of array_like (N_i, 3), or array_like (M, N, 3)
+        World polylines.
+    camera : Camera
+        The viewer.
+    color : color, or one per polyline
+        Their color.
+    closed : bool
+        Close each polyline.
+    **line
+        Line attributes of :func:`scanline.draw.polylines`.
+
+    Returns
+    -------
+    list of ndarray (K, 2)
+        The visible pieces drawn, in device coordinates.
+
+    Examples
+    --------
+    World x, y in -1..1 land on device 0..8 of a 9 x 9 frame buffer: x_d = 4 (x + 1).
+
+    >>> import numpy as np, scanline as sl
+    >>> cam = sl.Camera(projection=sl.projection.orthographic(window=(-1, -1, 1, 1)))
+    >>> fb = sl.FrameBuffer(9, 9, mode="1")
+    >>> pts = np.array([(-0.5, -0.5, 0), (0.5, -0.5, 0), (0.5, 0.5, 0)])
+    >>> _ = sl.draw3d.polylines(fb, [pts], cam)
+    >>> print(sl.text_image(fb))
+    ---------
+    ---------
+    ------#--
+    ------#--
+    ------#--
+    ------#--
+    --#####--
+    ---------
+    ---------
+    """
     target(fb)
     _camera(camera)
     if not isinstance(polylines_, (list, tuple)):
         polylines_ = list(real_array("polylines", polylines_, "(M, N, 3)"))
-    pieces, owner = [], []
+    pieces: List[Floats] = []
+    owner: List[int] = []
     for i, pl in enumerate(polylines_):
         got = polyline_pieces(pl, camera, fb.width, fb.height, closed)
         pieces += got
@@ -327,10 +490,53 @@ def polylines(fb, polylines_, camera, color="white", closed=False, **line):
     return pieces
 
 
-def view_volume(fb, volume_camera, camera, color="white", size=None, **line):
+def view_volume(fb: "FrameBuffer", volume_camera: Camera, camera: Camera, color: Color = "white",
+                size: Optional[Tuple[int, int]] = None, **line: Any) -> Floats:
     """Draw the 12 edges of ``volume_camera``'s view volume as ``camera`` sees it;
     ``size`` = (width, height) of the device ``volume_camera`` widens its window for
-    (default: the window as it is)."""
+    (default: the window as it is).
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+        Drawn into.
+    volume_camera : Camera
+        Whose view volume (Hearn & Baker 12-3) is drawn.
+    camera : Camera
+        The viewer.
+    color : color
+        The edges' color.
+    size : (int, int), optional
+        The device ``volume_camera`` is fitted to.
+    **line
+        Line attributes.
+
+    Returns
+    -------
+    ndarray (K, 4)
+        The device segments drawn.
+
+    Examples
+    --------
+    A parallel view volume seen by its own camera: its front and back rectangles
+    fall on the window's border, its four side edges on its corners.
+
+    >>> import numpy as np, scanline as sl
+    >>> cam = sl.Camera(projection=sl.projection.orthographic(window=(-1, -1, 1, 1)))
+    >>> fb = sl.FrameBuffer(9, 9, mode="1")
+    >>> len(sl.draw3d.view_volume(fb, cam, cam))
+    12
+    >>> print(sl.text_image(fb))
+    #########
+    #-------#
+    #-------#
+    #-------#
+    #-------#
+    #-------#
+    #-------#
+    #-------#
+    #########
+    """
     corners = _camera(volume_camera).volume_corners(*(size or (None, None)))
     ring = [(0, 1), (1, 2), (2, 3), (3, 0)]
     edges = np.array(ring + [(a + 4, b + 4) for a, b in ring] + [(k, k + 4) for k in range(4)])
@@ -340,9 +546,41 @@ def view_volume(fb, volume_camera, camera, color="white", size=None, **line):
     return segs
 
 
-def axes(fb, camera, length=1.0, origin=(0.0, 0.0, 0.0), colors=("red", "green", "blue"),
-         **line):
-    """Draw the x, y and z axes from ``origin``, ``length`` long, in ``colors``."""
+def axes(fb: "FrameBuffer", camera: Camera, length: float = 1.0,
+         origin: Sequence[float] = (0.0, 0.0, 0.0),
+         colors: Sequence[Color] = ("red", "green", "blue"), **line: Any) -> Floats:
+    """Draw the x, y and z axes from ``origin``, ``length`` long, in ``colors``.
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+        Drawn into.
+    camera : Camera
+        The viewer.
+    length : float
+        Of each axis.
+    origin : 3-vector
+        Where they start.
+    colors : three colors
+        Of x, y and z.
+    **line
+        Line attributes.
+
+    Returns
+    -------
+    ndarray (3, 4)
+        The device segments of x, y and z.
+
+    Examples
+    --------
+    Looking down z, the z axis is a point at the origin's pixel:
+
+    >>> import numpy as np, scanline as sl
+    >>> cam = sl.Camera(projection=sl.projection.orthographic(window=(-1, -1, 1, 1)))
+    >>> fb = sl.FrameBuffer(9, 9, mode="RGB")
+    >>> sl.draw3d.axes(fb, cam, length=0.5).tolist()
+    [[4.0, 4.0, 6.0, 4.0], [4.0, 4.0, 4.0, 6.0], [4.0, 4.0, 4.0, 4.0]]
+    """
     from ..transform3d.arrays import vector
 
     o = np.array(vector("origin", origin))

@@ -38,6 +38,7 @@ COMPLETE = [
     "scanline.octree",
     "scanline.solids",
     "scanline.draw3d",
+    "scanline.display",
 ]
 
 

@@ -13,7 +13,7 @@ Precision (Hearn & Baker, section 13-1): "image" methods decide visibility per p
 """
 
 from dataclasses import dataclass, fields
-from typing import Callable, Optional
+from typing import Any, Callable, Optional, Tuple
 
 import numpy as np
 
@@ -58,6 +58,24 @@ class MethodOptions:
     seed : int, optional
         Ray tracing: the seed of the distributed rays' random numbers, 0..2**63 - 1
         (default 0; the image is the same for the same seed).
+
+    Parameters
+    ----------
+    samples, layers, key, split_cycles, max_pieces, max_work, max_depth, seed
+        As listed under Attributes (None: the method's default).
+
+    Raises
+    ------
+    ArgumentValueError
+        A number outside its range, or an unknown key.
+    ArgumentTypeError
+        ``split_cycles`` not a bool.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> sl.visible.MethodOptions(samples=4, key="mean").samples
+    4
     """
     samples: Optional[int] = None
     layers: Optional[int] = None
@@ -68,8 +86,8 @@ class MethodOptions:
     max_depth: Optional[int] = None
     seed: Optional[int] = None
 
-    def __post_init__(self):
-        def whole(name, low, high):
+    def __post_init__(self) -> None:
+        def whole(name: str, low: int, high: int) -> None:
             value = getattr(self, name)
             if value is not None and (not isinstance(value, (int, np.integer))
                                       or isinstance(value, bool) or not low <= value <= high):
@@ -87,8 +105,20 @@ class MethodOptions:
             raise ArgumentTypeError(f"split_cycles must be True or False, got "
                                     f"{v._show(self.split_cycles)}")
 
-    def given(self):
-        """The names of the options that are set (not None)."""
+    def given(self) -> Tuple[str, ...]:
+        """The names of the options that are set (not None).
+
+        Returns
+        -------
+        tuple of str
+            In the order of the fields.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> sl.visible.MethodOptions(key="mean", samples=4).given()
+        ('samples', 'key')
+        """
         return tuple(f.name for f in fields(self) if getattr(self, f.name) is not None)
 
 
@@ -98,11 +128,34 @@ class Method:
     precision ("image" or "object"), the options of :class:`MethodOptions` it reads,
     whether it resolves transparency itself (else the renderer adds the nearest
     transparent surface over its result), and whether its hits are colored by the
-    recursive ray tracer (:mod:`scanline.raytrace`) instead of the local shading."""
+    recursive ray tracer (:mod:`scanline.raytrace`) instead of the local shading.
+
+    Parameters
+    ----------
+    name : str
+        The name :func:`scanline.render` knows it by.
+    find : callable
+        ``find(scene, options)`` -> Layer or Fragments.
+    precision : {"image", "object"}
+        Hearn & Baker 13-1.
+    options : tuple of str
+        The :class:`MethodOptions` it reads.
+    transparency : bool
+        Whether it resolves transparency itself.
+    traced : bool
+        Whether the ray tracer colors its hits.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> m = sl.visible.METHODS["z-buffer"]
+    >>> m.name, m.precision, m.transparency
+    ('z-buffer', 'image', False)
+    """
     name: str
-    find: Callable
+    find: Callable[..., Any]
     precision: str
-    options: tuple = ()
+    options: Tuple[str, ...] = ()
     transparency: bool = False
     traced: bool = False
 
@@ -165,8 +218,30 @@ METHODS = {m.name: m for m in (
 PRECISION = {name: m.precision for name, m in METHODS.items()}
 
 
-def register(method):
-    """Add a :class:`Method` to :data:`METHODS` (replacing one of the same name)."""
+def register(method: Method) -> None:
+    """Add a :class:`Method` to :data:`METHODS` (replacing one of the same name).
+
+    Parameters
+    ----------
+    method : Method
+        The method.
+
+    Raises
+    ------
+    ArgumentTypeError
+        ``method`` not a Method.
+    ArgumentValueError
+        A precision other than "image" or "object".
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> copy = sl.visible.Method("z-buffer copy", sl.visible.METHODS["z-buffer"].find, "image")
+    >>> sl.visible.register(copy)
+    >>> sl.visible.PRECISION["z-buffer copy"]
+    'image'
+    >>> del sl.visible.METHODS["z-buffer copy"], sl.visible.PRECISION["z-buffer copy"]
+    """
     if not isinstance(method, Method):
         raise ArgumentTypeError(f"method must be a scanline.visible.Method, got "
                                 f"{v._show(method)}")

@@ -13,9 +13,10 @@
 import functools
 from collections.abc import Iterator
 from dataclasses import dataclass
-from typing import Optional
+from typing import Any, Optional, Tuple
 
 import numpy as np
+from numpy.typing import NDArray
 
 from ..screen.polygons import ScreenPolygons
 
@@ -33,15 +34,32 @@ class VisibleFaces:
         The source face of that polygon (-1 for the background).
     depth : ndarray, shape (height, width)
         Its depth (inf for the background).
+
+    Parameters
+    ----------
+    polygon : ndarray of int64 (height, width)
+        The polygon at each pixel (-1: none).
+    depth : ndarray (height, width)
+        Its depth.
+    faces : ndarray of int64
+        The source face of each polygon (empty: the polygons are the faces).
+
+    Examples
+    --------
+    >>> import numpy as np, scanline as sl
+    >>> seen = sl.visible.VisibleFaces(np.array([[0, -1, 1]]), np.zeros((1, 3)), np.array([7, 9]))
+    >>> seen.face.tolist()
+    [[7, -1, 9]]
     """
 
-    def __init__(self, polygon, depth, faces):
+    def __init__(self, polygon: NDArray[np.int64], depth: NDArray[np.float64],
+                 faces: NDArray[np.int64]) -> None:
         self.polygon = polygon
         self.depth = depth
         self._faces = faces
 
     @functools.cached_property
-    def face(self):
+    def face(self) -> NDArray[np.int64]:
         if not len(self._faces):
             return self.polygon
         return np.where(self.polygon >= 0, self._faces[np.maximum(self.polygon, 0)], -1)
@@ -61,9 +79,28 @@ class Layer:
     pieces : ScreenPolygons or None
         For an object-order method, the pieces in drawing order (``face`` holds the
         facet of each): what the method decided, before it was painted.
+
+    Parameters
+    ----------
+    ids, depth, pieces
+        As listed under Attributes.
+
+    Examples
+    --------
+    The z-buffer's layer of a 2-cube seen head on: the front face's two device
+    triangles (face 5's, numbers 10 and 11: two per face) cover the middle pixels.
+
+    >>> import numpy as np, scanline as sl
+    >>> from scanline.screen import prepare
+    >>> from scanline.visible.zbuffer import nearest
+    >>> cam = sl.Camera(eye=(0, 0, 5), target=(0, 0, 0),
+    ...                 projection=sl.projection.orthographic(window=(-2, -2, 2, 2)))
+    >>> layer = nearest(prepare(sl.mesh.cube(2), cam, 4, 4))
+    >>> np.unique(layer.ids).tolist(), int(np.isfinite(layer.depth).sum())
+    ([-1, 10, 11], 4)
     """
-    ids: np.ndarray
-    depth: np.ndarray
+    ids: NDArray[np.int32]
+    depth: NDArray[np.float64]
     pieces: Optional[ScreenPolygons] = None
 
 
@@ -74,9 +111,24 @@ class Fragments:
     ``layers`` yields :class:`Layer` objects of the band's supersampled size (rows s,
     W s), each holding at every sample the nearest fragment behind the previous
     layer's, until no sample has one left or an opaque fragment has been found at
-    every sample."""
+    every sample.
+
+    Parameters
+    ----------
+    samples : int
+        Samples per pixel side.
+    bands : iterator of (y0, rows, layers)
+        The bands, made as they are read.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> empty = sl.visible.Fragments(3, iter([]))
+    >>> empty.samples, list(empty.bands)
+    (3, [])
+    """
     samples: int
-    bands: Iterator[tuple]
+    bands: Iterator[Tuple[int, int, Any]]
 
 
 def facet_layer(scene, polygons, table, depth=None):

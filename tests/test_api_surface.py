@@ -39,6 +39,7 @@ COMPLETE = [
     "scanline.solids",
     "scanline.draw3d",
     "scanline.display",
+    "scanline.attributes",
 ]
 
 

@@ -6,8 +6,10 @@ space), painted at image precision.
 """
 
 import threading
+from typing import Any, Callable, Dict, List, Optional, Tuple
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from .._kernels import depthsort as k
@@ -112,14 +114,17 @@ def default_work(n):
     return 2_000_000 + 100 * n
 
 
-def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None, drawn=None,
-               max_work=None):
+def depth_sort(polygons: ScreenPolygons, split_cycles: bool = True,
+               log: Optional[List[Dict[str, Any]]] = None, max_pieces: Optional[int] = None,
+               drawn: Optional[Callable[..., Any]] = None,
+               max_work: Optional[int] = None) -> ScreenPolygons:
     """Order (and split where needed) polygons back to front by the depth-sorting
     method.
 
     Parameters
     ----------
     polygons : ScreenPolygons
+        The polygons (:func:`scanline.screen.screen_polygons`).
     split_cycles : bool
         Split a polygon by another's plane when the loop flag shows that no order
         exists (cyclic overlap, intersecting polygons).  False: raise
@@ -179,6 +184,17 @@ def depth_sort(polygons, split_cycles=True, log=None, max_pieces=None, drawn=Non
     ----------
     M. E. Newell, R. G. Newell and T. L. Sancha, "A solution to the hidden surface
     problem", Proceedings of the ACM Annual Conference, 1972, 443-450.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> cam = sl.Camera(eye=(0, 0, 5), target=(0, 0, 0),
+    ...                 projection=sl.projection.orthographic(window=(-2, -2, 2, 2)))
+    >>> sp = sl.screen.screen_polygons(sl.mesh.cube(2), cam, 4, 4)
+    >>> sp.face.tolist()                  # the back and front faces; the sides are edge-on
+    [4, 5]
+    >>> sl.visible.depth_sort(sp).face.tolist()       # no overlap in depth: back, front
+    [4, 5]
     """
     sp = as_screen(polygons)
     if not isinstance(split_cycles, bool):
@@ -296,7 +312,9 @@ def tolerance(sp):
     return TOLERANCE * max(sp.width, sp.height, 1.0)
 
 
-def painted_depth_sort(polygons, split_cycles=True, max_pieces=None, max_work=None):
+def painted_depth_sort(polygons: ScreenPolygons, split_cycles: bool = True,
+                       max_pieces: Optional[int] = None, max_work: Optional[int] = None
+                       ) -> Tuple[ScreenPolygons, NDArray[np.int32]]:
     """:func:`depth_sort` with the pieces painted as the sort goes:
     ``(pieces, numbers)``, ``numbers`` (int32, height x width of the polygons' device)
     the number of the piece seen at each pixel (-1: none), the pieces painted in
@@ -305,7 +323,39 @@ def painted_depth_sort(polygons, split_cycles=True, max_pieces=None, max_work=No
     The sort hands over each run of pieces as soon as their order is fixed (its
     ``drawn``); a second thread paints the runs' piece numbers while the sort orders
     the next pieces.  Painting numbers, not colors, the result says what is seen
-    (the shading colors it)."""
+    (the shading colors it).
+
+    Parameters
+    ----------
+    polygons : ScreenPolygons
+        The polygons.
+    split_cycles, max_pieces, max_work
+        As :func:`depth_sort` takes them.
+
+    Returns
+    -------
+    pieces : ScreenPolygons
+        The pieces in drawing order.
+    numbers : ndarray of int32 (height, width)
+        The piece seen at each pixel (-1: none), rows bottom-up.
+
+    Raises
+    ------
+    DepthSortLoopError
+        As :func:`depth_sort`.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> cam = sl.Camera(eye=(0, 0, 5), target=(0, 0, 0),
+    ...                 projection=sl.projection.orthographic(window=(-2, -2, 2, 2)))
+    >>> sp = sl.screen.screen_polygons(sl.mesh.cube(2), cam, 4, 4)
+    >>> sp.face.tolist()                  # the back and front faces; the sides are edge-on
+    [4, 5]
+    >>> pieces, numbers = sl.visible.painted_depth_sort(sp)
+    >>> numbers.tolist()                  # piece 1, the front face, painted last
+    [[-1, -1, -1, -1], [-1, 1, 1, -1], [-1, 1, 1, -1], [-1, -1, -1, -1]]
+    """
     import queue
 
     from .._kernels._jit import call

@@ -6,18 +6,19 @@
 import numpy as np
 
 from .. import _validate as v
-from ..screen.polygons import as_screen
+from ..screen.polygons import ScreenPolygons, as_screen
 
 KEYS = ("farthest", "mean")
 
 
-def painter(polygons, key="farthest"):
+def painter(polygons: ScreenPolygons, key: str = "farthest") -> ScreenPolygons:
     """Order the polygons back to front by one depth key each, as matplotlib's
     ``Poly3DCollection`` and manim do, and nothing else.
 
     Parameters
     ----------
     polygons : ScreenPolygons
+        The polygons (:func:`scanline.screen.screen_polygons`).
     key : {"farthest", "mean"}
         Each polygon's greatest vertex depth, or the mean of its vertex depths.
 
@@ -39,6 +40,17 @@ def painter(polygons, key="farthest"):
     adds the tests, reordering and splitting that fix those cases.  The ordering is
     computed at object precision (whole polygons); their pixels are painted at image
     precision.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> cam = sl.Camera(eye=(0, 0, 5), target=(0, 0, 0),
+    ...                 projection=sl.projection.orthographic(window=(-2, -2, 2, 2)))
+    >>> sp = sl.screen.screen_polygons(sl.mesh.cube(2), cam, 4, 4)
+    >>> sp.face.tolist()                  # the back and front faces; the sides are edge-on
+    [4, 5]
+    >>> sl.visible.painter(sp).face.tolist()          # the back face first
+    [4, 5]
     """
     sp = as_screen(polygons)
     v.choice("key", key, KEYS)

@@ -5,16 +5,17 @@
 
 import numpy as np
 
-from ..screen.polygons import as_screen
+from ..screen.polygons import ScreenPolygons, as_screen
 from .visibility import VisibleFaces
 
 
-def scan_line(polygons):
+def scan_line(polygons: ScreenPolygons) -> VisibleFaces:
     """Visible faces by the scan-line method.
 
     Parameters
     ----------
     polygons : ScreenPolygons
+        The polygons (:func:`scanline.screen.screen_polygons`).
 
     Returns
     -------
@@ -47,6 +48,17 @@ def scan_line(polygons):
     three-dimensional half-toned computer graphics presentations", CACM 13(9), 1970.
     G. S. Watkins, "A real-time visible surface algorithm", University of Utah,
     UTEC-CSc-70-101, 1970.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> cam = sl.Camera(eye=(0, 0, 5), target=(0, 0, 0),
+    ...                 projection=sl.projection.orthographic(window=(-2, -2, 2, 2)))
+    >>> sp = sl.screen.screen_polygons(sl.mesh.cube(2), cam, 4, 4)
+    >>> sp.face.tolist()                  # the back and front faces; the sides are edge-on
+    [4, 5]
+    >>> sl.visible.scan_line(sp).face.tolist()       # rows bottom-up
+    [[-1, -1, -1, -1], [-1, 5, 5, -1], [-1, 5, 5, -1], [-1, -1, -1, -1]]
     """
     from .._kernels import visible as k
     from .._kernels._jit import call

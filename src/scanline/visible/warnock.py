@@ -6,19 +6,20 @@ section 13-8).
 
 import numpy as np
 
-from ..screen.polygons import as_screen
+from ..screen.polygons import ScreenPolygons, as_screen
 from .visibility import VisibleFaces
 
 #: The cases an area is decided by, as :attr:`VisibleFaces.regions` records them.
 CASES = ("background", "one polygon", "surrounding in front", "pixel")
 
 
-def area_subdivision(polygons, record=0):
+def area_subdivision(polygons: ScreenPolygons, record: int = 0) -> VisibleFaces:
     """Visible faces by Warnock's area subdivision.
 
     Parameters
     ----------
     polygons : ScreenPolygons
+        The polygons (:func:`scanline.screen.screen_polygons`).
     record : int
         Keep up to this many decided areas in ``result.regions`` (rows x0, y0, x1,
         y1, case; ``CASES[case]`` names it), e.g. to draw the subdivision.
@@ -48,6 +49,17 @@ def area_subdivision(polygons, record=0):
     ----------
     J. E. Warnock, "A hidden-surface algorithm for computer generated half-tone
     pictures", University of Utah, TR 4-15, 1969.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> cam = sl.Camera(eye=(0, 0, 5), target=(0, 0, 0),
+    ...                 projection=sl.projection.orthographic(window=(-2, -2, 2, 2)))
+    >>> sp = sl.screen.screen_polygons(sl.mesh.cube(2), cam, 4, 4)
+    >>> sp.face.tolist()                  # the back and front faces; the sides are edge-on
+    [4, 5]
+    >>> sl.visible.area_subdivision(sp).face.tolist()
+    [[-1, -1, -1, -1], [-1, 5, 5, -1], [-1, 5, 5, -1], [-1, -1, -1, -1]]
     """
     from .._kernels import visible as k
     from .._kernels._jit import call

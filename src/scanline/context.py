@@ -517,6 +517,7 @@ class Context:
         if np.linalg.det(self._state.ctm[:2, :2]) < 0:
             corners = corners[::-1]  # keep the polygon counterclockwise
         old = self._state.clip
+        new: Optional[Region]
         if isinstance(old, tuple) and _upright(corners):
             new = pipeline.intersect(old, (corners[:, 0].min(), corners[:, 1].min(),
                                            corners[:, 0].max(), corners[:, 1].max()))

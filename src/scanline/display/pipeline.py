@@ -8,8 +8,10 @@ contours to fill -- so the raster and the vector output of one display file agre
 
 import functools
 import math
+from typing import Any, Optional, Sequence
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import clip as clipping
 
@@ -89,7 +91,7 @@ def polylines(pts, closed, window):
     return clipping.polyline(ring, window, method=method), False
 
 
-def contours(cs, window):
+def contours(cs: Any, window: Any) -> list[NDArray[np.float64]]:
     """Clip a fill area (contours combined by a fill rule) to ``window``.
 
     Sutherland-Hodgman clips each contour; inside a convex window that keeps every
@@ -100,7 +102,8 @@ def contours(cs, window):
             if len(c) >= 3]
 
 
-def intersect(a, b):
+def intersect(a: Sequence[float], b: Sequence[float]
+              ) -> Optional[tuple[float, float, float, float]]:
     """The intersection of two rectangles, or None when it is empty."""
     r = (max(a[0], b[0]), max(a[1], b[1]), min(a[2], b[2]), min(a[3], b[3]))
     return r if r[0] <= r[2] and r[1] <= r[3] else None

@@ -19,8 +19,10 @@ where it was given (the scene loader adds the key path), not when the file is dr
 
 import math
 import numbers
+from typing import Any, Optional
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from ..attributes import FillStyle
@@ -47,7 +49,7 @@ MAX_MARKER = 4096.0
 TEXT_CLIPS = ("string", "character", "stroke")
 
 
-def color(name, value):
+def color(name: str, value: Any) -> Any:
     """Check a color spec (anything ``FrameBuffer.pixel`` takes); return it, a list or
     array as a tuple (so that colors compare and hash).  None stays None: the
     device's foreground (``FrameBuffer.foreground`` on a raster device)."""
@@ -61,21 +63,21 @@ def color(name, value):
     return value
 
 
-def _nonnegative(name, value):
+def _nonnegative(name: str, value: object) -> float:
     x = v.number(name, value)
     if x < 0:
         raise ArgumentValueError(f"{name} must be >= 0, got {x}")
     return x
 
 
-def _positive(name, value):
+def _positive(name: str, value: object) -> float:
     x = v.number(name, value)
     if x <= 0:
         raise ArgumentValueError(f"{name} must be > 0, got {x}")
     return x
 
 
-def line_attributes(color_=None, color_name="color", **style):
+def line_attributes(color_: Any = None, color_name: str = "color", **style: Any) -> dict[str, Any]:
     """Line attributes as a dict: ``color`` and ``style``, a :class:`scanline.LineStyle`
     made from ``style`` (width, cap, join, miter_limit, dash, dash_phase);
     ``color_name`` is the color's name in messages."""
@@ -95,7 +97,8 @@ def line_attributes(color_=None, color_name="color", **style):
 THIN = LineStyle()
 
 
-def marker_attributes(kind="plus", size=7.0, color_=None):
+def marker_attributes(kind: str = "plus", size: float = 7.0,
+                      color_: Any = None) -> dict[str, Any]:
     """The validated polymarker attributes as a dict."""
     size = _positive("size", size)
     if size > MAX_MARKER:
@@ -104,8 +107,10 @@ def marker_attributes(kind="plus", size=7.0, color_=None):
             "size": size}
 
 
-def text_attributes(color_=None, font="stroke", align=("left", "base"), expansion=1.0,
-                    spacing=0.0, path="right", clip="character"):
+def text_attributes(color_: Any = None, font: Any = "stroke",
+                    align: Any = ("left", "base"), expansion: float = 1.0,
+                    spacing: float = 0.0, path: str = "right",
+                    clip: str = "character") -> dict[str, Any]:
     """The validated text attributes (besides height and angle) as a dict."""
     if not (isinstance(align, (tuple, list)) and len(align) == 2):
         raise ArgumentValueError(
@@ -124,7 +129,7 @@ def text_attributes(color_=None, font="stroke", align=("left", "base"), expansio
     }
 
 
-def fill_style(name, value):
+def fill_style(name: str, value: Any) -> Optional[FillStyle]:
     """None, a :class:`FillStyle` or its one-word spelling (``"hatch:45:8"``)."""
     if value is None or isinstance(value, FillStyle):
         return value
@@ -137,7 +142,7 @@ def fill_style(name, value):
     )
 
 
-def points(name, value, minimum=1):
+def points(name: str, value: Any, minimum: int = 1) -> NDArray[np.float64]:
     """An (N, 2) float64 array of finite points, N >= minimum (booleans are not
     numbers here, though numpy would convert them)."""
     if isinstance(value, np.ndarray) and value.dtype == bool:
@@ -169,7 +174,7 @@ def points(name, value, minimum=1):
     return a
 
 
-def _bad_point(name, value):
+def _bad_point(name: str, value: object) -> Exception:
     """Name the first element of a list that is not a point [x, y] of two numbers."""
     if isinstance(value, (list, tuple)):
         for i, pt in enumerate(value):
@@ -180,12 +185,12 @@ def _bad_point(name, value):
                     f"{name}[{i}] must be a point [x, y] of two numbers, got {v._show(pt)}")
 
 
-def _is_point(value):
+def _is_point(value: object) -> bool:
     return (isinstance(value, (list, tuple, np.ndarray)) and len(value) > 0
             and isinstance(value[0], numbers.Real))
 
 
-def contours(name, value):
+def contours(name: str, value: Any) -> list[NDArray[np.float64]]:
     """A fill area: one list of points or a list of such lists -> list of (K, 2) arrays."""
     try:
         flat = np.asarray(value, dtype=np.float64).ndim == 2
@@ -223,14 +228,15 @@ class Primitive:
 
     __slots__ = ("kind", "geometry", "attributes", "clip", "pick_id")
 
-    def __init__(self, kind, geometry, attributes, clip, pick_id=0):
+    def __init__(self, kind: str, geometry: dict[str, Any], attributes: dict[str, Any],
+                 clip: Optional[tuple[float, float, float, float]], pick_id: int = 0) -> None:
         self.kind = kind
         self.geometry = geometry
         self.attributes = attributes
         self.clip = clip
         self.pick_id = pick_id
 
-    def transformed(self, m):
+    def transformed(self, m: NDArray[np.float64]) -> "Primitive":
         """This primitive with its geometry mapped by the affine 3x3 matrix ``m``
         (the clipping rectangle is not moved: GKS clips after the segment
         transformation)."""
@@ -238,10 +244,10 @@ class Primitive:
             return Primitive(self.kind, self._moved(m[:2, :2], m[:2, 2]), self.attributes,
                              self.clip, self.pick_id)
 
-    def _moved(self, lin, t):
+    def _moved(self, lin: NDArray[np.float64], t: NDArray[np.float64]) -> dict[str, Any]:
         g = self.geometry
 
-        def move(p):
+        def move(p: NDArray[np.float64]) -> NDArray[np.float64]:
             return p @ lin.T + t
 
         if self.kind in ("polyline3d", "mesh"):   # projected when interpreted
@@ -256,11 +262,11 @@ class Primitive:
             geometry = {**g, "anchor": move(g["anchor"]), "frame": lin @ g["frame"]}
         return geometry
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"<{self.kind} primitive>"
 
 
-def text_frame(height, angle):
+def text_frame(height: float, angle: float) -> NDArray[np.float64]:
     """The 2x2 text frame: columns baseline (cos, sin) and up (-sin, cos), times height."""
     c, s = math.cos(angle), math.sin(angle)
     return height * np.array([[c, -s], [s, c]])

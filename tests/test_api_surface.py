@@ -40,6 +40,7 @@ COMPLETE = [
     "scanline.draw3d",
     "scanline.display",
     "scanline.attributes",
+    "scanline.context",
 ]
 
 

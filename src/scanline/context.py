@@ -43,6 +43,8 @@ class _Device(Protocol):
 #: A clip region: a rectangle (xmin, ymin, xmax, ymax) or a convex polygon (M, 2).
 Region = Union[tuple[float, float, float, float], NDArray[np.float64]]
 
+__all__ = ["Context", "MIN_CLIP_AREA"]
+
 #: A clip window that the CTM maps to less device area than this (square pixels) is
 #: an empty clip region: it holds no pixel center.
 MIN_CLIP_AREA = 1e-9

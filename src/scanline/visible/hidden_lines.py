@@ -5,13 +5,21 @@ of a mesh with the parts hidden by its faces removed, or drawn dashed.
 hidden parameter intervals are computed exactly (up to rounding).
 """
 
+from typing import TYPE_CHECKING, Any, Sequence, Tuple
+
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from ..draw._common import target
 from ..screen.meshes import meshes_list
 from ..screen.polygons import as_screen
 from ..screen.prepare import screen_polygons
+
+if TYPE_CHECKING:
+    from ..framebuffer import FrameBuffer
+    from ..projection import Camera
+    from ..screen.polygons import ScreenPolygons
 
 #: Depth tolerance: an edge lying in a face's plane (its own faces) is not hidden
 #: by it.
@@ -21,7 +29,9 @@ DEPTH_TOLERANCE = 1e-7
 MIN_PIECE = 1e-3
 
 
-def hidden_lines(segments, depth, polygons):
+def hidden_lines(segments: ArrayLike, depth: ArrayLike, polygons: "ScreenPolygons"
+                 ) -> Tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.int64],
+                            NDArray[np.int64]]:
     """Split device-space segments into visible and hidden parts.
 
     Parameters
@@ -53,6 +63,23 @@ def hidden_lines(segments, depth, polygons):
     not hidden by it (:data:`DEPTH_TOLERANCE`).  The segment-face pairs run in a
     compiled kernel (:func:`scanline._kernels.visible.hidden_intervals`).  Object
     precision.
+
+    Examples
+    --------
+    A segment across a cube seen head on: behind it (depth 1) the part over the
+    faces' projection, x from 0.75 to 2.25, is hidden; in front (depth 0) none is.
+
+    >>> import scanline as sl
+    >>> cam = sl.Camera(eye=(0, 0, 5), target=(0, 0, 0),
+    ...                 projection=sl.projection.orthographic(window=(-2, -2, 2, 2)))
+    >>> sp = sl.screen.screen_polygons(sl.mesh.cube(2), cam, 4, 4)
+    >>> sorted(set(sp.vertices[:, 0].tolist()))
+    [0.75, 2.25]
+    >>> visible, hidden, _, _ = sl.visible.hidden_lines([(0, 1.5, 3, 1.5)], [(1.0, 1.0)], sp)
+    >>> visible.tolist(), hidden.tolist()
+    ([[0.0, 1.5, 0.75, 1.5], [2.25, 1.5, 3.0, 1.5]], [[0.75, 1.5, 2.25, 1.5]])
+    >>> len(sl.visible.hidden_lines([(0, 1.5, 3, 1.5)], [(0.0, 0.0)], sp)[1])
+    0
     """
     from .._kernels import visible as k
     from .._kernels._jit import call
@@ -108,21 +135,31 @@ def hidden_lines(segments, depth, polygons):
     return as4(vis), as4(hid), np.array(vis_of, np.int64), np.array(hid_of, np.int64)
 
 
-def visible_lines(fb, meshes, camera, color="white", hidden="remove", hidden_color=None,
-                  dash=(4, 4), **line):
+def visible_lines(fb: "FrameBuffer", meshes: Any, camera: "Camera", color: Any = "white",
+                  hidden: str = "remove", hidden_color: Any = None,
+                  dash: Sequence[int] = (4, 4),
+                  **line: Any) -> Tuple[NDArray[np.float64], NDArray[np.float64]]:
     """Draw the wireframe of ``meshes`` with hidden lines removed or dashed.
 
     Parameters
     ----------
     fb : FrameBuffer
+        Drawn into.
     meshes : Mesh or list of Mesh
+        The scene.
     camera : Camera
+        The viewer.
     color : color
         The visible lines.
     hidden : {"remove", "dash"}
         Leave the hidden parts out, or draw them dashed (``dash`` pattern, in
         ``hidden_color``, default ``color``).
-    line : line attributes of :func:`scanline.draw.lines` (width, antialias ...)
+    hidden_color : color, optional
+        Of the dashed hidden parts.
+    dash : sequence of int
+        The hidden parts' dash pattern.
+    **line
+        Line attributes of :func:`scanline.draw.lines` (width, antialias ...).
 
     Returns
     -------
@@ -135,6 +172,18 @@ def visible_lines(fb, meshes, camera, color="white", hidden="remove", hidden_col
     the faces as the visible-surface methods see them
     (:func:`~scanline.visible.screen_polygons`), and each edge is split by
     :func:`hidden_lines`.  Object precision.
+
+    Examples
+    --------
+    A cube seen in perspective from the front: its front square's 4 edges are
+    visible; the back square and the 4 edges running back lie behind the front face.
+
+    >>> import scanline as sl
+    >>> fb = sl.FrameBuffer(32, 32)
+    >>> cam = sl.Camera(eye=(0, 0, 5), target=(0, 0, 0))
+    >>> visible, hidden = sl.visible.visible_lines(fb, sl.mesh.cube(2), cam, hidden="dash")
+    >>> len(visible), len(hidden)
+    (4, 8)
     """
     from ..draw import lines as draw_lines
     from ..draw3d.wireframe import project_edges

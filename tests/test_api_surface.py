@@ -41,6 +41,7 @@ COMPLETE = [
     "scanline.display",
     "scanline.attributes",
     "scanline.context",
+    "scanline.visible",
 ]
 
 

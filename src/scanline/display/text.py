@@ -11,13 +11,16 @@ stroke and outline to the window.
 
 import math
 
+from typing import Any
+
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import clip
-from .primitives import THIN
+from .primitives import THIN, Primitive
 
 
-def placement(prim):
+def placement(prim: Primitive) -> Any:
     """The characters of a text primitive placed in device coordinates
     (:func:`scanline.text.layout.place`), as arrays."""
     from ..text.layout import place
@@ -33,14 +36,14 @@ def placement(prim):
     return place(g["string"], float(x), float(y), style)
 
 
-def glyphs(prim):
+def glyphs(prim: Primitive) -> list[Any]:
     """All the placed glyphs of a text primitive in device coordinates."""
     from ..text.layout import glyphs as placed_glyphs
 
     return placed_glyphs(prim.geometry["string"], placement(prim))
 
 
-def visible(prim, window):
+def visible(prim: Primitive, window: Any) -> list[Any]:
     """The placed glyphs of a text primitive that its clip mode can keep in
     ``window``: the character bodies are tested all at once (arrays), and glyph
     objects are made only for the characters that can be drawn, so a long string
@@ -74,7 +77,7 @@ def visible(prim, window):
     return glyphs(prim.geometry["string"], p, select)
 
 
-def draw(prim, window, device):
+def draw(prim: Primitive, window: Any, device: Any) -> list[NDArray[np.float64]]:
     """Draw a text primitive clipped to ``window`` by :func:`scanline.clip.text`;
     return the point arrays drawn."""
     placed = clip.text(visible(prim, window), window, prim.attributes["clip"])

@@ -2,7 +2,10 @@
 (the normalization transformation) and NDC -> device (the workstation
 transformation, :func:`scanline.viewing.ndc_to_device`)."""
 
+from typing import Any, Sequence
+
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from .. import transform as tf
@@ -11,7 +14,7 @@ from ..clip.window import rectangle
 from ..errors import ArgumentTypeError, ArgumentValueError
 
 
-def ndc_rectangle(name, value):
+def ndc_rectangle(name: str, value: Any) -> tuple[float, float, float, float]:
     """A rectangle (xmin, ymin, xmax, ymax) inside the NDC unit square."""
     r = rectangle(value, name)
     if min(r) < 0.0 or max(r) > 1.0:
@@ -22,7 +25,8 @@ def ndc_rectangle(name, value):
     return r
 
 
-def normalization(window, viewport, view_up=(0.0, 1.0), keep_aspect=False, aspect=1.0):
+def normalization(window: Any, viewport: Any, view_up: Sequence[float] = (0.0, 1.0),
+                  keep_aspect: bool = False, aspect: float = 1.0) -> NDArray[np.float64]:
     """The world -> NDC matrix of a window, an NDC viewport and a view-up vector.
 
     The viewing frame has its origin at the window's center and its y axis along
@@ -44,18 +48,20 @@ def normalization(window, viewport, view_up=(0.0, 1.0), keep_aspect=False, aspec
     return tf.compose(tf.scaling(1.0, 1.0 / aspect), fit, to_viewing)
 
 
-def workstation(width, height):
+def workstation(width: int, height: int) -> NDArray[np.float64]:
     """NDC -> device: (0, 0) to the center of pixel (0, 0), (1, 1) to the center of
     pixel (width - 1, height - 1)."""
     return viewing.ndc_to_device(width, height)
 
 
-def aspect(width, height):
+def aspect(width: int, height: int) -> float:
     """How much higher than wide the NDC unit square is on a width x height device."""
     return (v.positive_int("height", height, 2) - 1) / (v.positive_int("width", width, 2) - 1)
 
 
-def device_rectangle(m, rect):
+def device_rectangle(m: NDArray[np.float64], rect: Sequence[float]
+                     ) -> tuple[float, float, float, float]:
     """The NDC rectangle ``rect`` mapped by the (axis-aligned) workstation matrix."""
     corners = tf.apply(m, np.array([[rect[0], rect[1]], [rect[2], rect[3]]]))
-    return (corners[0, 0], corners[0, 1], corners[1, 0], corners[1, 1])
+    return (float(corners[0, 0]), float(corners[0, 1]), float(corners[1, 0]),
+            float(corners[1, 1]))

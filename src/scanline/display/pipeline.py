@@ -8,7 +8,7 @@ contours to fill -- so the raster and the vector output of one display file agre
 
 import functools
 import math
-from typing import Any, Optional, Sequence
+from typing import Any, Literal, Optional, Sequence
 
 import numpy as np
 from numpy.typing import NDArray
@@ -32,24 +32,25 @@ _MARKER_STROKES = {
 }
 
 
-def ellipse_points(center, axes):
+def ellipse_points(center: NDArray[np.float64], axes: NDArray[np.float64]) -> NDArray[np.float64]:
     """The ellipse ``center + axes @ (cos t, sin t)`` as a closed polygon (first point
     not repeated) within :data:`FLATNESS` of the curve."""
     with np.errstate(all="ignore"):  # overflow -> inf, refused when drawn
         return _ellipse_points(center, axes)
 
 
-def _ellipse_points(center, axes):
+def _ellipse_points(center: NDArray[np.float64], axes: NDArray[np.float64]) -> NDArray[np.float64]:
     r = float(np.sqrt((axes * axes).sum(axis=0)).max())
     # a chord of the angle 2 pi / n stays within r (1 - cos(pi / n)) of the circle
     step = math.acos(1.0 - FLATNESS / r) if r > FLATNESS else math.pi / 2
     n = MAX_SEGMENTS if step == 0.0 else int(min(MAX_SEGMENTS, max(
         4 if r <= FLATNESS else 16, math.ceil(math.pi / step))))
-    return center + _unit_ring(n) @ axes.T
+    points: NDArray[np.float64] = center + _unit_ring(n) @ axes.T
+    return points
 
 
 @functools.lru_cache(maxsize=64)
-def _unit_ring(n):
+def _unit_ring(n: int) -> NDArray[np.float64]:
     """(cos t, sin t) at n angles t = 2 pi k / n (read-only; an animation flattens the
     same ellipses on every frame)."""
     t = np.linspace(0.0, 2.0 * math.pi, n, endpoint=False)
@@ -58,7 +59,7 @@ def _unit_ring(n):
     return ring
 
 
-def marker_segments(points, kind, size):
+def marker_segments(points: NDArray[np.float64], kind: str, size: float) -> NDArray[np.float64]:
     """Device-space line segments (N, 4) drawing ``kind`` markers at ``points``."""
     if kind == "circle":
         unit = ellipse_points(np.zeros(2), np.eye(2) * 0.5)
@@ -66,28 +67,33 @@ def marker_segments(points, kind, size):
     else:
         ring = _MARKER_STROKES[kind]
     offsets = np.hstack([points, points])
-    return (offsets[:, None, :] + size * ring[None, :, :]).reshape(-1, 4)
+    segments: NDArray[np.float64] = (offsets[:, None, :] + size * ring[None, :, :]).reshape(-1, 4)
+    return segments
 
 
-def inside(pts, window):
+def inside(pts: NDArray[np.float64], window: Any) -> NDArray[np.bool_]:
     """Which points lie in the window: a rectangle (xmin, ymin, xmax, ymax) or a
     convex polygon (M, 2), counterclockwise; the boundary counts as inside."""
     if isinstance(window, tuple):
-        return ((pts[:, 0] >= window[0]) & (pts[:, 0] <= window[2])
-                & (pts[:, 1] >= window[1]) & (pts[:, 1] <= window[3]))
+        box: NDArray[np.bool_] = ((pts[:, 0] >= window[0]) & (pts[:, 0] <= window[2])
+                                  & (pts[:, 1] >= window[1]) & (pts[:, 1] <= window[3]))
+        return box
     a, b = window, np.roll(window, -1, axis=0)
     cross = ((b[:, 0] - a[:, 0]) * (pts[:, 1, None] - a[:, 1])
              - (b[:, 1] - a[:, 1]) * (pts[:, 0, None] - a[:, 0]))
-    return (cross >= 0).all(axis=1)
+    within: NDArray[np.bool_] = (cross >= 0).all(axis=1)
+    return within
 
 
-def polylines(pts, closed, window):
+def polylines(pts: NDArray[np.float64], closed: bool,
+              window: Any) -> tuple[list[NDArray[np.float64]], bool]:
     """Clip one polyline to ``window`` (see :func:`inside`): a list of (K, 2) pieces
     and whether the result is still one closed ring."""
     ring = np.vstack([pts, pts[:1]]) if closed and len(pts) > 1 else pts
     if len(pts) and inside(ring, window).all():
         return [pts], closed
-    method = "liang-barsky" if isinstance(window, tuple) else "cyrus-beck"
+    method: Literal["liang-barsky", "cyrus-beck"] = (
+        "liang-barsky" if isinstance(window, tuple) else "cyrus-beck")
     return clipping.polyline(ring, window, method=method), False
 
 

@@ -10,7 +10,6 @@ stroke and outline to the window.
 """
 
 import math
-
 from typing import Any
 
 import numpy as np

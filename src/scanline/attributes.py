@@ -412,7 +412,7 @@ class FillStyle:
         -----
         The exact rule.  Let (c, s) = (cos angle, sin angle) and d = c y - s x the
         signed distance of pixel center (x, y) (relative to the anchor) from the line
-        through the anchor.  With the *minor-axis width* w' = line_width * max(|c|, |s|),
+        through the anchor.  With the *minor-axis width* ``w' = line_width * max(|c|, |s|)``,
         the pixel is a hatch pixel iff ``(d + w'/2) mod spacing < w'``.  So a line of
         width 1 has exactly one pixel per column when it is nearer horizontal (one per
         row when steeper), like a Bresenham line; at 0 and pi/2 it is exactly every

@@ -401,7 +401,7 @@ class DisplayFile:
         Returns
         -------
         Segment
-            The segment (its attributes may be read; change them with the set_ methods).
+            The segment (its attributes may be read; change them with the ``set_*`` methods).
 
         Raises
         ------

@@ -12,7 +12,7 @@ at a crease angle (a face's corner takes only the faces within that angle of its
 so a cube stays flat-faced and a cylinder keeps its rims) and weighted by each face's
 angle at the vertex (Thurmer & Wuthrich 1998, so that a face cut into more triangles
 weighs no more); ``crease_angle=None`` gives the book's plain average over every face
-sharing the vertex (Hearn & Baker, section 14-5: N_v = sum N_k / |sum N_k|).
+sharing the vertex (Hearn & Baker, section 14-5: ``N_v = sum N_k / |sum N_k|``).
 """
 
 import math
@@ -91,7 +91,7 @@ def corner_normals(mesh: "Mesh", crease_angle: Optional[float] = CREASE_ANGLE) -
 
 def averaged_normals(mesh: "Mesh") -> F64:
     """Vertex normals (V, 3) averaged from the unit normals of the faces sharing each
-    vertex (Hearn & Baker, section 14-5, Gouraud shading: N_v = sum N_k / |sum N_k|).
+    vertex (Hearn & Baker, section 14-5, Gouraud shading: ``N_v = sum N_k / |sum N_k|``).
 
     Parameters
     ----------

@@ -73,7 +73,7 @@ COLORS = {"floor": WHITE, "ceiling": WHITE, "back wall": WHITE, "right wall": GR
           "left wall": RED, "short block": WHITE, "tall block": WHITE, "light": WHITE}
 
 
-def _ceiling():
+def _ceiling() -> List[List[Tuple[float, float, float]]]:
     """The page's ceiling (556 x 559.2 mm at y = 548.8) less the light: four
     quadrilaterals around the light's rectangle (x 213-343, z 227-332)."""
     y = 548.8
@@ -84,7 +84,7 @@ def _ceiling():
             [(x0, y, z0), (x0, y, z1), (0.0, y, z1), (0.0, y, z0)]]
 
 
-def _oriented(quads, inside):
+def _oriented(quads: Any, inside: bool) -> Any:
     """``quads`` (mm) turned so that each normal points toward ``inside`` (True: the
     room's centre) or away from its block's centre (False)."""
     from ..mesh import Mesh

@@ -183,14 +183,17 @@ class RowSource:
         from .._kernels import formfactors as k
 
         if self.method == "ray-casting":
-            return self.rows(np.flatnonzero(self.group == g), columns=True).sum(axis=0)
+            summed: np.ndarray = self.rows(np.flatnonzero(self.group == g),
+                                           columns=True).sum(axis=0)
+            return summed
         p = len(self.patches)
         row = np.zeros((1, p))
         res = self.resolution
         call(k.hemicube_rows, 60 * p + 4 * res * res, 0, 1, np.array([g], np.int64),
              self.group_centre, self.group_normal, self.group_edge, self.group, self.quads,
              self.centre, self.normal, self.near, res, self.top, self.side, row)
-        return row[0] * self.group_area[g] / self.patches.area
+        received: np.ndarray = row[0] * self.group_area[g] / self.patches.area
+        return received
 
 
 def check_matrix_budget(n: int, copies: int = 1) -> None:

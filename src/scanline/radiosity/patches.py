@@ -15,7 +15,7 @@ share nodes, so a corner of the room keeps both walls' colors apart.
 
 import numbers
 from dataclasses import dataclass
-from typing import Any, List, Sequence
+from typing import Any, List, Optional, Sequence, Tuple
 
 import numpy as np
 
@@ -98,7 +98,8 @@ class Patches:
     @property
     def quads(self) -> np.ndarray:
         """The patches' corner positions, (P, 4, 3)."""
-        return self.vertices[self.corners]
+        positions: np.ndarray = self.vertices[self.corners]
+        return positions
 
     def triangles(self) -> np.ndarray:
         """Two triangles per patch, (2P, 3, 3) (a triangle patch's second one is
@@ -328,7 +329,7 @@ def patches(meshes: Any, subdivisions: int = 8, emission: Any = None,
     return Patches(verts, corners, area, centre, normal, e, r, owner, face, cell, n)
 
 
-def _subdivide(mesh, n):
+def _subdivide(mesh: Any, n: int) -> Tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """(nodes (V, 3), corners (P, 4), face of each patch (P,), its cell (P,)) of one
     mesh."""
     idx, off, sizes = mesh.face_indices, mesh.face_offsets, mesh.face_sizes
@@ -384,7 +385,7 @@ def _subdivide(mesh, n):
             np.concatenate(out_k)[order].astype(np.int64))
 
 
-def _geometry(q):
+def _geometry(q: np.ndarray) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Area, area centroid and unit normal of quadrilaterals ``q`` (P, 4, 3) (as the
     triangles (0, 1, 2) and (0, 2, 3))."""
     c1 = np.cross(q[:, 1] - q[:, 0], q[:, 2] - q[:, 0])
@@ -400,7 +401,8 @@ def _geometry(q):
     return area, centre, normal
 
 
-def _per_patch(name, value, owner, n_meshes, upper):
+def _per_patch(name: str, value: Any, owner: np.ndarray, n_meshes: int,
+               upper: Optional[float]) -> np.ndarray:
     """(P, 3) values of ``name`` given per mesh or per patch, checked: finite, >= 0 and
     below ``upper`` where there is one."""
     p = len(owner)
@@ -440,7 +442,8 @@ def _per_patch(name, value, owner, n_meshes, upper):
     return np.array(out, np.float64)
 
 
-def _default_reflectance(items: Sequence[Any], owner, face):
+def _default_reflectance(items: Sequence[Any], owner: np.ndarray,
+                         face: np.ndarray) -> np.ndarray:
     """kd x S_d per patch: each mesh's material (default ``Material()``) and its
     colors (per face, or the mean of a face's vertex colors), linear."""
     from ..lighting import Material

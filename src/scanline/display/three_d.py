@@ -10,22 +10,28 @@ polyline primitives in NDC; the segment transformation, the viewport clip and th
 device follow as for 2-D primitives.
 """
 
+from typing import TYPE_CHECKING, Any, Sequence
+
 import numpy as np
+from numpy.typing import NDArray
 
 from ..draw3d.wireframe import (cue_factor, depth_cue_intensities, edge_colors,
                                 pieces_into, project_edges_into)
 from ..color.spec import Channels
 from .primitives import Primitive
 
+if TYPE_CHECKING:
+    from .file import DisplayFile
+
 KINDS = ("polyline3d", "mesh")
 
 
-def _aspect(rect, width, height):
+def _aspect(rect: Sequence[float], width: int, height: int) -> float:
     """The displayed width / height of the NDC rectangle ``rect`` on the device."""
     return ((rect[2] - rect[0]) * (width - 1)) / ((rect[3] - rect[1]) * (height - 1))
 
 
-def _blend(rgba, background, f):
+def _blend(rgba: NDArray[np.uint8], background: Any, f: NDArray[np.float64]) -> NDArray[np.uint8]:
     """Colors faded toward ``background`` by the factors ``f`` (depth cueing)."""
     from ..color.spec import rgba as to_rgba
 
@@ -34,10 +40,11 @@ def _blend(rgba, background, f):
     return np.clip(out, 0, 255).astype(np.uint8)
 
 
-def expand(primitives, display_file, width, height):
+def expand(primitives: Sequence[Primitive], display_file: "DisplayFile", width: int,
+           height: int) -> list[Primitive]:
     """``primitives`` with each 3-D primitive replaced by the 2-D polylines (in NDC)
     of its visible parts for a ``width`` x ``height`` device."""
-    out = []
+    out: list[Primitive] = []
     for prim in primitives:
         if prim.kind not in KINDS:
             out.append(prim)

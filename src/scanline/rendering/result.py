@@ -1,7 +1,7 @@
 """What :func:`scanline.render` hands back: :class:`Rendering`."""
 
 import functools
-from typing import TYPE_CHECKING, Optional
+from typing import TYPE_CHECKING, Any, Optional
 
 import numpy as np
 from numpy.typing import NDArray
@@ -24,7 +24,7 @@ class Rendering:
         The frame buffer drawn into.
     depth : DepthBuffer
         The depth at each pixel.
-    facets : ndarray of int64 (H, W)
+    facets : ndarray of int32 (H, W)
         The facet seen at each pixel (-1: none), rows bottom-up.
     scene : ScreenScene
         The prepared scene.
@@ -42,7 +42,7 @@ class Rendering:
     depth : DepthBuffer
         The depth of the visible surface at each pixel (inf where none; the front
         layer's at each pixel's central sample for the A-buffer).
-    facets : ndarray of int64 (H, W)
+    facets : ndarray of int32 (H, W)
         The facet (a triangle of a face's fan, numbered in ``scene``) seen at each
         pixel, -1 for the background; rows bottom-up like the depth buffer's array.
     scene : ScreenScene
@@ -50,10 +50,10 @@ class Rendering:
     pieces : ScreenPolygons or None
         For an object-order method, the pieces in drawing order (``face`` holds
         their facets).
-    faces : ndarray of int64 (H, W)
+    faces : ndarray of int (H, W)
         The face seen at each pixel (the meshes' faces numbered mesh after mesh;
         -1: none), ``faces[y, x]``.
-    meshes : ndarray of int64 (H, W)
+    meshes : ndarray of int (H, W)
         The mesh (its index in the list given) seen at each pixel (-1: none).
     solids : ndarray of int64 (H, W)
         The solid (:mod:`scanline.solids`, its index among the solids given) seen at
@@ -76,7 +76,7 @@ class Rendering:
     """
 
     def __init__(self, method: str, image: "FrameBuffer", depth: "DepthBuffer",
-                 facets: NDArray[np.int64], scene: "ScreenScene",
+                 facets: NDArray[np.int32], scene: "ScreenScene",
                  pieces: Optional["ScreenPolygons"] = None,
                  solids: Optional[NDArray[np.int64]] = None) -> None:
         if solids is not None:
@@ -93,24 +93,24 @@ class Rendering:
         return np.full(self.facets.shape, -1, np.int64)
 
     @functools.cached_property
-    def faces(self) -> NDArray[np.int64]:
+    def faces(self) -> NDArray[np.signedinteger[Any]]:
         f = self.scene.facet_face
         if len(f) == self.scene.face_count:         # every face is one triangle
             return self.facets
         return np.where(self.facets >= 0, f[np.maximum(self.facets, 0)], -1)
 
     @functools.cached_property
-    def meshes(self) -> NDArray[np.int64]:
+    def meshes(self) -> NDArray[np.signedinteger[Any]]:
         m = self.scene.face_mesh
         return np.where(self.faces >= 0, m[np.maximum(self.faces, 0)], -1) if len(m) \
             else self.faces
 
-    def face_image(self) -> NDArray[np.int64]:
+    def face_image(self) -> NDArray[np.signedinteger[Any]]:
         """``faces`` in image order (top row first).
 
         Returns
         -------
-        ndarray of int64 (H, W)
+        ndarray of int (H, W)
             The face seen at each pixel (-1: none), a copy, top row first.
 
         Examples
@@ -125,7 +125,8 @@ class Rendering:
         >>> sl.render(fb, sl.mesh.cube(2), cam, shading="none").face_image().tolist()
         [[-1, -1, -1, -1], [-1, 5, 5, -1], [-1, 5, 5, -1], [-1, -1, -1, -1]]
         """
-        return self.faces[::-1].copy()
+        image: NDArray[np.signedinteger[Any]] = self.faces[::-1].copy()
+        return image
 
     def __repr__(self) -> str:
         covered = int(((self.facets >= 0) | (self.solids >= 0)).sum())

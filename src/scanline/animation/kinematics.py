@@ -24,8 +24,10 @@ False
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
+from numpy.typing import ArrayLike, DTypeLike, NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
@@ -49,7 +51,7 @@ class Reach:
 
     ``numpy.asarray(reach)`` is the angles, so a Reach can be passed wherever angles go.
 
-    Attributes
+    Parameters
     ----------
     angles : numpy.ndarray
         The joint angles found (radians, within the joint limits).
@@ -65,6 +67,13 @@ class Reach:
         The method that produced the angles.
     reason : str
         Why the target was not reached ("" when it was).
+
+    Examples
+    --------
+    >>> import numpy as np, scanline as sl
+    >>> r = sl.animation.Chain([1.0, 1.0]).inverse((1, 1))
+    >>> r.reached, r.method, np.asarray(r).shape
+    (True, 'analytic', (2,))
     """
 
     angles: np.ndarray
@@ -75,20 +84,22 @@ class Reach:
     method: str
     reason: str = ""
 
-    def __array__(self, dtype=None, copy=None):
+    def __array__(self, dtype: DTypeLike | None = None,
+                  copy: bool | None = None) -> NDArray[Any]:
         return np.asarray(self.angles, dtype=dtype)
 
 
-def _rotation(axis, angle):
+def _rotation(axis: NDArray[np.float64], angle: ArrayLike) -> NDArray[np.float64]:
     """Rotation matrices about unit ``axis`` by ``angle`` (arrays: angle (...,) ->
     (..., 3, 3)), Rodrigues' formula."""
     x, y, z = axis
     c, s = np.cos(angle), np.sin(angle)
     t = 1 - c
-    return np.stack([
+    out: NDArray[np.float64] = np.stack([
         np.stack([t * x * x + c, t * x * y - s * z, t * x * z + s * y], -1),
         np.stack([t * x * y + s * z, t * y * y + c, t * y * z - s * x], -1),
         np.stack([t * x * z - s * y, t * y * z + s * x, t * z * z + c], -1)], -2)
+    return out
 
 
 class Chain:
@@ -116,7 +127,10 @@ class Chain:
     [1.0, 0.0, 2.0]
     """
 
-    def __init__(self, lengths, base=None, axes=None, limits=None):
+    axes: NDArray[np.float64] | None
+
+    def __init__(self, lengths: ArrayLike, base: ArrayLike | None = None,
+                 axes: ArrayLike | None = None, limits: ArrayLike | None = None) -> None:
         lengths = floats("lengths", lengths, "a sequence of numbers")
         if lengths.ndim != 1 or len(lengths) < 1:
             raise ArgumentValueError(f"lengths must be a 1-D sequence of at least one length, "
@@ -139,11 +153,11 @@ class Chain:
                                          "an axis needs a direction")
             self.axes = a / norms[:, None]
             self.dimension = 3
-        base = np.zeros(self.dimension) if base is None else floats("base", base, "a point")
-        if base.shape != (self.dimension,) or not np.isfinite(base).all():
+        at = np.zeros(self.dimension) if base is None else floats("base", base, "a point")
+        if at.shape != (self.dimension,) or not np.isfinite(at).all():
             raise ArgumentValueError(f"base must be a finite {self.dimension}-D point, got "
                                      f"{v._show(base)}")
-        self.base = base
+        self.base = at
         if limits is None:
             self.limits = np.tile([-np.inf, np.inf], (n, 1))
         else:
@@ -154,23 +168,23 @@ class Chain:
             self.limits = lim
 
     @property
-    def joints(self):
+    def joints(self) -> int:
         """The number of joints (= links)."""
         return len(self.lengths)
 
     @property
-    def reach(self):
+    def reach(self) -> float:
         """The largest distance from the base the end can be: the sum of the lengths."""
         return float(self.lengths.sum())
 
     @property
-    def inner_reach(self):
+    def inner_reach(self) -> float:
         """The smallest distance from the base a free chain can reach:
         max(0, L_max - (sum of the others))."""
         longest = float(self.lengths.max())
         return max(0.0, 2 * longest - self.reach)
 
-    def _angles(self, angles, name="angles"):
+    def _angles(self, angles: ArrayLike, name: str = "angles") -> NDArray[np.float64]:
         a = floats(name, angles, "numbers")
         if a.ndim < 1 or a.shape[-1] != self.joints:
             raise ArgumentValueError(f"{name} must have one angle per joint ({self.joints}) in "
@@ -179,7 +193,7 @@ class Chain:
             raise ArgumentValueError(f"{name} must be finite, got {v._show(a.tolist())}")
         return a
 
-    def forward(self, angles):
+    def forward(self, angles: ArrayLike) -> NDArray[np.float64]:
         """Forward kinematics: the positions of the base, each joint and the end.
 
         Parameters
@@ -196,11 +210,26 @@ class Chain:
         -----
         Planar: φᵢ = θ₀ + … + θᵢ and pᵢ₊₁ = pᵢ + Lᵢ (cos φᵢ, sin φᵢ).  Spatial:
         Rᵢ = Rᵢ₋₁ · Rot(aᵢ, θᵢ) and pᵢ₊₁ = pᵢ + Rᵢ (Lᵢ, 0, 0)ᵀ.
+
+        Raises
+        ------
+        ArgumentTypeError, ArgumentValueError
+            If ``angles`` is not finite numbers, one per joint in the last axis.
+
+        Examples
+        --------
+        The elbow bent by a right angle:
+
+        >>> import math, scanline as sl
+        >>> arm = sl.animation.Chain([1.0, 1.0])                 # planar, two links
+        >>> (arm.forward([0, math.pi / 2]).round(12) + 0.0).tolist()
+        [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0]]
         """
         a = self._angles(angles)
         return self._positions(a)[0]
 
-    def _positions(self, a):
+    def _positions(self, a: NDArray[np.float64]
+                   ) -> tuple[NDArray[np.float64], NDArray[np.float64] | None]:
         """(positions, world axes of the joints) for angle array ``a``."""
         n = self.joints
         if self.axes is None:
@@ -211,32 +240,84 @@ class Chain:
             return out, None
         frame = np.broadcast_to(np.eye(3), a.shape[:-1] + (3, 3))
         points = [np.broadcast_to(self.base, a.shape[:-1] + (3,))]
-        world_axes = []
+        world_axes: list[NDArray[np.float64]] = []
         for i in range(n):
             world_axes.append(frame @ self.axes[i])
             frame = frame @ _rotation(self.axes[i], a[..., i])
             points.append(points[-1] + self.lengths[i] * frame[..., :, 0])
         return np.stack(points, axis=-2), np.stack(world_axes, axis=-2)
 
-    def end(self, angles):
-        """The end effector's position for ``angles``."""
-        return self.forward(angles)[..., -1, :]
+    def end(self, angles: ArrayLike) -> NDArray[np.float64]:
+        """The end effector's position for ``angles``.
 
-    def jacobian(self, angles):
+        Parameters
+        ----------
+        angles : array_like (..., n)
+            Joint angles in radians.
+
+        Returns
+        -------
+        numpy.ndarray (..., dim)
+
+        Raises
+        ------
+        ArgumentTypeError, ArgumentValueError
+            As :meth:`forward`.
+
+        Examples
+        --------
+        >>> import math, scanline as sl
+        >>> arm = sl.animation.Chain([1.0, 1.0])                 # planar, two links
+        >>> arm.end([0, 0]).tolist()
+        [2.0, 0.0]
+        """
+        out: NDArray[np.float64] = self.forward(angles)[..., -1, :]
+        return out
+
+    def jacobian(self, angles: ArrayLike) -> NDArray[np.float64]:
         """∂(end position)/∂θ, shape (dim, n): column i is the joint's axis crossed
-        with the vector from the joint to the end."""
+        with the vector from the joint to the end.
+
+        Parameters
+        ----------
+        angles : array_like (n,)
+            One pose.
+
+        Returns
+        -------
+        numpy.ndarray (dim, n)
+
+        Raises
+        ------
+        ArgumentTypeError, ArgumentValueError
+            If ``angles`` is not one finite pose.
+
+        Examples
+        --------
+        With the elbow at (1, 0) and the end at (1, 1), the arms from the joints to
+        the end are (1, 1) and (0, 1); turned by 90 degrees, (-1, 1) and (-1, 0):
+
+        >>> import math, scanline as sl
+        >>> arm = sl.animation.Chain([1.0, 1.0])                 # planar, two links
+        >>> arm.jacobian([0, math.pi / 2]).tolist()
+        [[-1.0, -1.0], [1.0, 0.0]]
+        """
         a = self._angles(angles)
         if a.ndim != 1:
             raise ArgumentValueError("jacobian takes one pose (a 1-D array of angles)")
         points, axes = self._positions(a)
         arm = points[-1] - points[:-1]
         if axes is None:
-            return np.stack([-arm[:, 1], arm[:, 0]])
-        return np.cross(axes, arm).T
+            planar: NDArray[np.float64] = np.stack([-arm[:, 1], arm[:, 0]])
+            return planar
+        spatial: NDArray[np.float64] = np.cross(axes, arm).T
+        return spatial
 
     # -- inverse kinematics ---------------------------------------------------------------
-    def inverse(self, target, method=None, initial=None, tolerance=None, max_iterations=500,
-                elbow="up", damping=None, strict=False):
+    def inverse(self, target: ArrayLike, method: str | None = None,
+                initial: ArrayLike | None = None, tolerance: float | None = None,
+                max_iterations: int = 500, elbow: str = "up", damping: float | None = None,
+                strict: bool = False) -> Reach:
         """Inverse kinematics: joint angles that put the end effector at ``target``.
 
         Parameters
@@ -270,6 +351,23 @@ class Chain:
             The angles and whether (and how closely) the target is reached.  An
             unreachable target is *reported*: the angles then bring the end as close
             as the method gets (the arm stretched toward it).
+
+        Raises
+        ------
+        ArgumentTypeError, ArgumentValueError
+            If an argument is out of range or ``method`` does not fit the chain.
+        UnreachableTarget
+            With ``strict``, when the target is not reached.
+
+        Examples
+        --------
+        >>> import math, scanline as sl
+        >>> arm = sl.animation.Chain([1.0, 1.0])                 # planar, two links
+        >>> r = arm.inverse((1, 1))
+        >>> r.reached, r.method, (r.position.round(12) + 0.0).tolist()
+        (True, 'analytic', [1.0, 1.0])
+        >>> arm.inverse((3, 0)).reached                   # beyond the reach of 2
+        False
         """
         try:
             p = floats("target", target, f"a {self.dimension}-D point")
@@ -297,15 +395,19 @@ class Chain:
             raise ArgumentValueError(
                 f"method='analytic' solves planar two-link chains; this chain has "
                 f"{self.joints} links in {self.dimension}-D; use method='ccd' or 'dls'")
+        angles: NDArray[np.float64] | None = None
+        iterations = 0
         if method == "analytic":
-            angles, iterations = self._two_link(p, elbow), 0
+            angles = self._two_link(p, elbow)
             if angles is None:       # neither branch within the limits: iterate instead
                 method = "dls"
         if method != "analytic":
             start = self._start(initial)
-            solve = self._ccd if method == "ccd" else self._dls
-            extra = () if method == "ccd" else (damping,)
-            angles, iterations = solve(p, start, tolerance, max_iterations, *extra)
+            if method == "ccd":
+                angles, iterations = self._ccd(p, start, tolerance, max_iterations)
+            else:
+                angles, iterations = self._dls(p, start, tolerance, max_iterations, damping)
+        assert angles is not None
         position = self.end(angles)
         error = float(np.linalg.norm(position - p))
         reached = error <= tolerance * (1 + 1e-6)
@@ -314,7 +416,7 @@ class Chain:
             raise UnreachableTarget(f"target={p.tolist()} cannot be reached: {reason}")
         return Reach(angles, position, reached, error, iterations, method, reason)
 
-    def _why(self, p, error):
+    def _why(self, p: NDArray[np.float64], error: float) -> str:
         d = float(np.linalg.norm(p - self.base))
         if d > self.reach:
             return (f"it is {d:g} from the base, beyond the chain's reach of {self.reach:g} "
@@ -326,7 +428,7 @@ class Chain:
                 "joints can reach, or joint limits block it, or the method did not converge "
                 "within max_iterations")
 
-    def _start(self, initial):
+    def _start(self, initial: ArrayLike | None) -> NDArray[np.float64]:
         if initial is None:
             lo, hi = self.limits[:, 0], self.limits[:, 1]
             finite = np.isfinite(lo) & np.isfinite(hi)
@@ -338,10 +440,10 @@ class Chain:
             raise ArgumentValueError("initial must be one pose (a 1-D array of angles)")
         return np.clip(a, self.limits[:, 0], self.limits[:, 1])
 
-    def _within(self, a):
+    def _within(self, a: NDArray[np.float64]) -> bool:
         return bool(((a >= self.limits[:, 0] - 1e-12) & (a <= self.limits[:, 1] + 1e-12)).all())
 
-    def _two_link(self, p, elbow):
+    def _two_link(self, p: NDArray[np.float64], elbow: str) -> NDArray[np.float64] | None:
         """The law of cosines; None when neither elbow branch fits the limits."""
         l1, l2 = self.lengths
         x, y = p - self.base
@@ -357,12 +459,13 @@ class Chain:
             t1 = math.remainder(t1, 2 * math.pi)
             candidate = np.array([t1, t2])
             for turn in (0.0, 2 * math.pi, -2 * math.pi):
-                shifted = candidate + np.array([turn, 0.0])
+                shifted: NDArray[np.float64] = candidate + np.array([turn, 0.0])
                 if self._within(shifted):
                     return shifted
         return None
 
-    def _ccd(self, p, angles, tolerance, max_iterations):
+    def _ccd(self, p: NDArray[np.float64], angles: NDArray[np.float64], tolerance: float,
+             max_iterations: int) -> tuple[NDArray[np.float64], int]:
         angles = angles.copy()
         lo, hi = self.limits[:, 0], self.limits[:, 1]
         for sweep in range(1, max_iterations + 1):
@@ -382,7 +485,8 @@ class Chain:
                 return angles, sweep
         return angles, max_iterations
 
-    def _dls(self, p, angles, tolerance, max_iterations, damping):
+    def _dls(self, p: NDArray[np.float64], angles: NDArray[np.float64], tolerance: float,
+             max_iterations: int, damping: float | None) -> tuple[NDArray[np.float64], int]:
         """Damped least squares with Levenberg–Marquardt control of λ: a step that
         brings the end closer is taken and λ halved, one that does not is refused
         and λ quadrupled (so the method neither oscillates nor stalls)."""
@@ -413,24 +517,59 @@ class Chain:
                     return angles, step
         return angles, max_iterations
 
-    def follow(self, targets, initial=None, method=None, **options):
+    def follow(self, targets: ArrayLike, initial: ArrayLike | None = None,
+               method: str | None = None,
+               **options: Any) -> tuple[NDArray[np.float64], list[Reach]]:
         """Solve a target per frame, each from the previous frame's angles: the end
         effector follows the path ``targets`` (m points) smoothly.
 
         Returns an (m, n) array of angles and the list of :class:`Reach` results.
+
+        Parameters
+        ----------
+        targets : array_like (m, dim)
+            One target per frame.
+        initial : angles, optional
+            The first frame's starting angles.
+        method : {"analytic", "ccd", "dls"}, optional
+            As :meth:`inverse`.
+        **options
+            Further options of :meth:`inverse`.
+
+        Returns
+        -------
+        angles : numpy.ndarray (m, n)
+        results : list of Reach
+
+        Raises
+        ------
+        ArgumentTypeError, ArgumentValueError
+            If ``targets`` is not (m, dim) points, or as :meth:`inverse`.
+
+        Notes
+        -----
+        Goal-directed motion by inverse kinematics (Hearn & Baker, §16-6).
+
+        Examples
+        --------
+        >>> import math, scanline as sl
+        >>> arm = sl.animation.Chain([1.0, 1.0])                 # planar, two links
+        >>> angles, results = arm.follow([(1, 1), (0, 1.5)])
+        >>> angles.shape, [r.reached for r in results]
+        ((2, 2), [True, True])
         """
         pts = floats("targets", targets, f"(m, {self.dimension}) points")
         if pts.ndim != 2 or pts.shape[1] != self.dimension:
             raise ArgumentValueError(f"targets must have shape (m, {self.dimension}), got "
                                      f"{pts.shape}")
         current = self._start(initial)
-        results = []
+        results: list[Reach] = []
         for point in pts:
             r = self.inverse(point, method=method, initial=current, **options)
             results.append(r)
             current = r.angles
         return np.array([r.angles for r in results]).reshape(len(pts), self.joints), results
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         kind = "planar" if self.axes is None else "spatial"
         return f"Chain({self.joints} links, {kind}, reach {self.reach:g})"

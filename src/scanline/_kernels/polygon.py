@@ -53,7 +53,7 @@ import numpy as np
 from ._jit import helper, inline, kernel
 from .raster import BAND_SHIFT
 from .sort import insertion_budget, sort_keys
-from .spans import span, strip
+from .spans import span
 
 EVEN_ODD = 0
 NONZERO = 1
@@ -325,22 +325,6 @@ def fill_polygons(buf, layout, width, height, ox, oy, verts, contours, polys, co
         fill_polygon(buf, layout, width, height, ox, oy, verts, contours, polys[p],
                      polys[p + 1], colors[0 if one else p], rule, et, ef, counts, order,
                      active, keys, dirs, fkeys, tkeys, titems)
-
-
-@kernel
-def fill_polygons_in_strip(band, step, buf, layout, width, height, ox, oy, verts, contours,
-                           polys, colors, rule, max_edges):
-    """:func:`fill_polygons` into strip ``band`` of ``step`` of the raster's rows
-    (:func:`scanline._kernels.spans.strip`; one call per thread,
-    :func:`scanline._kernels._threads.call_in_bands`): the polygons are filled into a
-    view of the strip's rows whose row 0 is device row ``oy + top``.  The edge
-    table keeps the edges' absolute device coordinates (the crossing keys do not
-    depend on ``oy``), so every scan line's spans are the whole raster's, and each
-    pixel is written by one call, by the polygons in order."""
-    top, rows = strip(band, step, height)
-    if rows > 0:
-        fill_polygons(buf[top:top + rows], layout, width, rows, ox, oy + top, verts, contours,
-                      polys, colors, rule, max_edges)
 
 
 #: The vertex coordinates :func:`fill_ring` takes (+-2**30, as the API checks).

@@ -8,7 +8,7 @@ import numpy as np
 from .. import _validate as v
 from .._kernels import polygon as k
 from .._kernels._jit import call, call_typed
-from .._kernels._threads import call_in_bands
+from .._kernels._threads import call_in_chunks
 from .._kernels.variants import layout
 from ..errors import ArgumentValueError
 from ..geometry import contours as parse
@@ -288,5 +288,9 @@ def polygons(fb, polygons, color=None, rule="even-odd", counts=None, antialias=F
     if len(values) == 1 and n > 1:   # one color: the order cannot change the image
         verts, offsets, polys = call(k.band_reordered, len(verts), verts, offsets, polys, 0,
                                      height)
-    call_in_bands(k.fill_polygons_in_strip, work, buf, layout(packed), width, height, 0, 0,
-                  verts, offsets, polys, values, code, most)
+    # one call per thread, each filling a strip of rows (a view of them whose row 0 is
+    # device row lo): the crossings come from the edges' device coordinates, so each
+    # strip gets the whole raster's spans, every pixel from one thread, in order
+    call_in_chunks(k.fill_polygons, work, height, lambda lo, hi: (
+        buf[lo:hi], layout(packed), width, hi - lo, 0, lo, verts, offsets, polys, values, code,
+        most))

@@ -14,7 +14,7 @@ Workloads (fixed seeds; the same scenes as the topic benchmarks):
 * ``texture``: a textured grid of 100k triangles, bilinear marble (as ``texture.py``).
 * ``ray tracing``: primary rays of 640 x 480 into a 100k-triangle torus through the
   BVH (``BVH.intersect``; as ``raytrace.py``).
-* ``frames jobs=N`` / ``frames Dask N``: 200 frames of a 640 x 480 scene of 240
+* ``frames jobs=N`` / ``frames Dask N``: 100 frames of a 640 x 480 scene of 240
   segments (``animation.py``'s scene, four times the segments), gathered in order
   by ``Animation.images``: ``jobs=N`` worker processes, and a
   ``distributed.LocalCluster`` of N one-thread worker processes (started before the
@@ -22,9 +22,10 @@ Workloads (fixed seeds; the same scenes as the topic benchmarks):
 
 Threads are set with ``numba.set_num_threads(n)`` (the kernels' bands follow it);
 the processes and workers render with one thread each.  Each cell is the best of
-``--repeats`` runs (at most 2 for the frames) after a first call (which compiles); the speed-up is the time
-at 1 over the time at n.  Counts are 1, 2, 4, ... and the machine's core count
-(``os.cpu_count()``); figures for more cores than the machine has are never made.
+``--repeats`` runs (one for the frames) after a first call (which compiles); the
+speed-up is the time at 1 over the time at n.  Counts are 1, 2, 4, ... and the
+machine's core count (``os.cpu_count()``); figures for more cores than the machine
+has are never made.
 
 Run under the benchmark lock: ``flock /tmp/bench.lock python benchmarks/scaling.py
 [--quick] [--only NAME ...]`` (``--quick``: a tenth of the triangles and rays, 40
@@ -142,7 +143,7 @@ def frames_workloads(quick):
     from scanline.scene import AnimatedScene
 
     scene = AnimatedScene(scene_data(np.random.default_rng(1), segments=240))
-    return sl.animation.Animation(scene, fps=scene.fps), (0, 40 if quick else 200)
+    return sl.animation.Animation(scene, fps=scene.fps), (0, 40 if quick else 100)
 
 
 def main():
@@ -182,7 +183,7 @@ def main():
         from distributed import Client, LocalCluster
 
         anim, selection = frames_workloads(args.quick)
-        repeats = min(repeats, 2)           # a render of 200 frames takes seconds
+        repeats = 1                         # a render of 100 frames takes seconds
         name, times = "frames jobs=N", {}
         for n in steps:
             times[n] = report.add(name, "scanline", f"Animation.images(jobs={n})",

@@ -15,6 +15,7 @@ COMPLETE = [
     "scanline.geometry",
     "scanline.clip",
     "scanline.curves",
+    "scanline.text",
     "scanline.budget",
     "scanline.linestyle",
     "scanline.imagefile",

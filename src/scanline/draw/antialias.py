@@ -22,9 +22,13 @@ primitive.  Anything outside the frame buffer is clipped.
 =============================== ==========================================
 """
 
+from typing import TYPE_CHECKING, Optional
+
 import numpy as np
+from numpy.typing import ArrayLike
 
 from .. import _validate as v
+from .._typing import Color, Rule
 from ..errors import ArgumentTypeError, ArgumentValueError
 from .._kernels import antialias as wu
 from .._kernels import coverage as cov
@@ -39,6 +43,9 @@ from .conics import conic_work
 from .curved import region_work
 from .lines import line_work
 from .polygon import _rule
+
+if TYPE_CHECKING:
+    from ..framebuffer import FrameBuffer
 
 
 def _reals(name, value, columns, radius_columns=(), guard=False, far=False):
@@ -286,7 +293,8 @@ def fills_flat(fb, vertices, contour_offsets, shape_offsets, color=None, rule="n
     _fill_parsed(fb, verts, offsets, shapes, color, rule)
 
 
-def fill(fb, contours, color=None, rule="nonzero"):
+def fill(fb: "FrameBuffer", contours: ArrayLike, color: Optional[Color] = None,
+         rule: Rule = "nonzero") -> None:
     """Fill ONE shape made of several contours with antialiased edges.
 
     Parameters

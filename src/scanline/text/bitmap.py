@@ -13,7 +13,11 @@ as one rectangle) of the scaled size, filled by the scan-line polygon fill, so a
 dot-matrix character can take any size and direction.
 """
 
+import os
+from typing import Any, Optional, Union
+
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentValueError
@@ -22,9 +26,10 @@ from .catalog import Font
 _KEYS = ("name", "width", "rows", "above", "advance", "x-height")
 
 
-def _parse(text, source):
+def _parse(text: str, source: str) -> tuple[dict[str, Any], dict[str, NDArray[np.bool_]]]:
     """``(properties, {char: bool array rows x width, top row first})``."""
-    props, glyphs = {}, {}
+    props: dict[str, Any] = {}
+    glyphs: dict[str, NDArray[np.bool_]] = {}
     lines = [ln.rstrip("\n") for ln in text.splitlines()]
     i = 0
     while i < len(lines):
@@ -55,11 +60,11 @@ def _parse(text, source):
     return props, glyphs
 
 
-def _runs(dots, above):
+def _runs(dots: NDArray[np.bool_], above: int) -> list[NDArray[np.float64]]:
     """Each horizontal run of dots as a rectangle [c0, c1] x [r, r + 1] in font units
     (counterclockwise contours; runs that touch share edges, which the nonzero
     rule fills once)."""
-    out = []
+    out: list[NDArray[np.float64]] = []
     for row, line in enumerate(dots):
         r = above - 1 - row
         c = 0
@@ -85,7 +90,8 @@ class BitmapFont(Font):
 
     kind = "bitmap"
 
-    def __init__(self, props, glyphs, source):
+    def __init__(self, props: dict[str, Any], glyphs: dict[str, NDArray[np.bool_]],
+                 source: str) -> None:
         super().__init__(props["name"], source, "MIT (designed for scanline)")
         self.glyphs = glyphs
         self.above = props["above"]
@@ -106,7 +112,7 @@ class BitmapFont(Font):
         self._shapes.append(self._replacement_box(0.0, float(props["width"]), 1.0))
 
     @classmethod
-    def read(cls, path):
+    def read(cls, path: Union[str, "os.PathLike[str]"]) -> "BitmapFont":
         """Read a dot-matrix font file (see ``data/fonts/dotmatrix-5x7.txt``)."""
         try:
             with open(path, encoding="utf-8") as f:
@@ -115,6 +121,6 @@ class BitmapFont(Font):
             raise ArgumentValueError(f"bitmap font file {v._show(str(path))}: {exc}") from None
         return cls(props, glyphs, str(path))
 
-    def _ink(self, gid, tolerance=None):
+    def _ink(self, gid: int, tolerance: Optional[float] = None) -> list[NDArray[np.float64]]:
         """The dots of glyph ``gid`` as rectangles (runs of dots), font units."""
         return self._shapes[gid]

@@ -16,8 +16,14 @@ proportion to what is visible.
 """
 
 from collections import OrderedDict
+from typing import TYPE_CHECKING, Optional
 
 import numpy as np
+from numpy.typing import NDArray
+
+if TYPE_CHECKING:
+    from ..errors import ArgumentValueError
+    from .catalog import Font
 
 #: Tallest glyph image (pixels, the scaled em size) kept in the cache.
 MAX_CACHED = 256
@@ -35,24 +41,27 @@ MAX_ATLAS_PIXELS = 1 << 26
 #: reused by another font while the entry lives.
 MAX_SIZES = 64
 
-_CACHES = OrderedDict()
+_CACHES: "OrderedDict[tuple[int, bytes, bool], tuple[Font, Optional[GlyphImages]]]" = OrderedDict()
 
 
-def device_contours(font, gid, matrix, tolerance):
+def device_contours(font: "Font", gid: int, matrix: NDArray[np.float64], tolerance: float) -> list[NDArray[np.float64]]:
     """Glyph ``gid``'s contours in device units relative to its origin."""
     return [c @ matrix.T for c in font._ink(gid, tolerance)]
 
 
-def _too_large(font, gid, pixels, limit, what):
+def _too_large(font: Optional["Font"], gid: Optional[int], pixels: int, limit: int,
+               what: str) -> "ArgumentValueError":
     from ..errors import ArgumentValueError
-    name = font._names[gid] if hasattr(font, "_names") and gid < len(font._names) else gid
+    names = getattr(font, "_names", None)
+    name = names[gid] if names is not None and gid is not None and gid < len(names) else gid
     return ArgumentValueError(
-        f"font {font.source!r}: glyph {name!r} would make {what} of {pixels:,} pixels, more "
+        f"font {getattr(font, 'source', None)!r}: glyph {name!r} would make {what} of {pixels:,} pixels, more "
         f"than the {limit:,} scanline allocates (its outline lies far outside its em "
         "square); use another font or a smaller height")
 
 
-def _render(contours, antialias, font=None, gid=None):
+def _render(contours: list[NDArray[np.float64]], antialias: bool, font: Optional["Font"] = None,
+            gid: Optional[int] = None) -> tuple[int, int, int, int, NDArray[np.uint8]]:
     """``(x0, y0, w, h, mask)``: the glyph's pixels as a bottom-up uint8 mask whose
     bottom-left pixel is ``(x0, y0)`` relative to the origin; a mask larger than
     MAX_GLYPH_PIXELS is refused before it is allocated."""
@@ -79,19 +88,21 @@ def _render(contours, antialias, font=None, gid=None):
     else:
         from ..draw.polygon import polygon
         polygon(fb, shifted, 255, rule="nonzero")
-    return x0, y0, w, h, fb._raster()[0][:, :, 0].ravel().copy()
+    mask: NDArray[np.uint8] = fb._raster()[0][:, :, 0].ravel().copy()
+    return x0, y0, w, h, mask
 
 
-def _runs(mask):
+def _runs(mask: NDArray[np.uint8]) -> NDArray[np.int64]:
     """The runs of nonzero pixels of a (h, w) mask, one row (row, start, stop) each,
     so that stamping touches only the glyph's pixels."""
     on = np.zeros((mask.shape[0], mask.shape[1] + 2), np.int8)
     on[:, 1:-1] = mask != 0
     rows, cols = np.nonzero(np.diff(on, axis=1))
-    return np.column_stack([rows[0::2], cols[0::2], cols[1::2]]).reshape(-1, 3)
+    runs: NDArray[np.int64] = np.column_stack([rows[0::2], cols[0::2], cols[1::2]]).reshape(-1, 3)
+    return runs
 
 
-def stroke_bitmap(strokes):
+def stroke_bitmap(strokes: list[NDArray[np.float64]]) -> tuple[NDArray[np.bool_], tuple[int, int]]:
     """``(mask, (x0, y0))``: the pixels :func:`scanline.draw.lines` sets for the
     polylines ``strokes`` (device coordinates), a bool array in image order whose
     bottom-left pixel is ``(x0, y0)``."""
@@ -105,18 +116,21 @@ def stroke_bitmap(strokes):
     fb = FrameBuffer(int(hi[0] - lo[0] + 1), int(hi[1] - lo[1] + 1), mode="1")
     segs = np.vstack([np.hstack([s[:-1], s[1:]]) for s in strokes])
     lines(fb, segs - np.tile(lo, 2), color=1)
-    return fb.to_array(), (int(lo[0]), int(lo[1]))
+    bits: NDArray[np.bool_] = fb.to_array()
+    return bits, (int(lo[0]), int(lo[1]))
 
 
 class GlyphImages:
     """The glyph images of one font at one matrix (size, expansion, angle)."""
 
-    def __init__(self, font, matrix, antialias, tolerance):
+    def __init__(self, font: "Font", matrix: NDArray[np.float64], antialias: bool, tolerance: float) -> None:
         self.font, self.matrix, self.antialias = font, matrix, antialias
         self.tolerance = tolerance
         self.pixels = 0
         self.mask_of = np.full(len(font.advances), -1, np.int64)
-        self._parts, self._meta, self._runs = [], [], []
+        self._parts: list[NDArray[np.uint8]] = []
+        self._meta: list[tuple[int, int, int, int]] = []
+        self._runs: list[NDArray[np.int64]] = []
         self.atlas = np.zeros(0, np.uint8)
         #: one row per mask: offset in ``atlas``, width, height, x0, y0, first run in
         #: ``runs``, number of runs
@@ -124,9 +138,9 @@ class GlyphImages:
         #: runs of nonzero pixels: (row, first column, last column + 1)
         self.runs = np.zeros((0, 3), np.int64)
 
-    def ensure(self, gids):
+    def ensure(self, gids: NDArray[np.int64]) -> NDArray[np.int64]:
         """Render the glyphs among ``gids`` not yet cached; return their mask ids."""
-        ids = self.mask_of[gids]
+        ids: NDArray[np.int64] = self.mask_of[gids]
         if len(ids) == 0 or ids.min() >= 0:
             return ids
         for g in np.unique(gids[ids < 0]):
@@ -149,18 +163,21 @@ class GlyphImages:
                                       counts]).astype(np.int64)
         self.atlas = np.concatenate(self._parts)
         self.runs = np.concatenate(self._runs).astype(np.int64)
-        return self.mask_of[gids]
+        found: NDArray[np.int64] = self.mask_of[gids]
+        return found
 
-    def bitmap(self, gid):
+    def bitmap(self, gid: int) -> tuple[int, int, NDArray[np.bool_]]:
         """``(x0, y0, mask)`` of one glyph: ``mask`` a bool array in image order (top
         row first), its bottom-left pixel at ``(x0, y0)`` from the origin."""
         m = int(self.ensure(np.array([gid]))[0])
         off, w, h, x0, y0 = self.masks[m, :5].tolist()
         mask = self.atlas[off:off + w * h].reshape(h, w)
-        return x0, y0, mask[::-1] > (127 if self.antialias else 0)
+        bits: NDArray[np.bool_] = mask[::-1] > (127 if self.antialias else 0)
+        return x0, y0, bits
 
 
-def images(font, matrix, antialias, tolerance):
+def images(font: "Font", matrix: NDArray[np.float64], antialias: bool, tolerance: float
+           ) -> Optional[GlyphImages]:
     """The cache for ``font`` at ``matrix`` (2 x 2 font units -> pixels), or None
     when its glyphs are too large to cache."""
     key = (id(font), matrix.tobytes(), antialias)

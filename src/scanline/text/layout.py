@@ -29,14 +29,23 @@ horizontal one to the block.
 """
 
 import math
+from typing import Any, Iterable, Optional, Sequence, Union
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
+from .._typing import Angle
 from ..errors import ArgumentTypeError, ArgumentValueError
 from .catalog import font as resolve_font
 from .catalog import NEWLINE
-from .style import resolve
+from .catalog import Font
+from .style import Align, FontSpec, TextStyle, resolve
+
+#: A bounding box (xmin, ymin, xmax, ymax).
+Box = tuple[float, float, float, float]
+#: Text-space origins of a placement: per glyph, or one number for all (one line).
+Coordinate = Any
 
 #: Flattening tolerance of outline glyphs, device pixels.
 TOLERANCE = 0.2
@@ -56,21 +65,36 @@ class Placement:
 
     __slots__ = ("font", "style", "sx", "sy", "matrix", "gids", "index", "ox", "oy",
                  "reference", "extent", "end", "tolerance")
+    font: Font
+    style: TextStyle
+    sx: float
+    sy: float
+    matrix: NDArray[np.float64]
+    gids: NDArray[np.int64]
+    index: NDArray[np.int64]
+    ox: NDArray[np.int64]
+    oy: NDArray[np.int64]
+    reference: tuple[float, float]
+    extent: Box
+    end: tuple[float, float]
+    tolerance: float
 
     @property
-    def rotation(self):
+    def rotation(self) -> NDArray[np.float64]:
         c, s = math.cos(self.style.angle), math.sin(self.style.angle)
         return np.array([[c, -s], [s, c]])
 
-    def corners(self):
+    def corners(self) -> NDArray[np.float64]:
         """The block's text extent rectangle, (4, 2) device corners."""
         u0, v0, u1, v1 = self.extent
         local = np.array([(u0, v0), (u1, v0), (u1, v1), (u0, v1)])
-        return local @ self.rotation.T + self.reference
+        corners: NDArray[np.float64] = local @ self.rotation.T + self.reference
+        return corners
 
-    def concatenation_point(self):
+    def concatenation_point(self) -> tuple[float, float]:
         """Where the next text along the path would start, device coordinates."""
-        return tuple((self.rotation @ np.array(self.end) + self.reference).tolist())
+        x, y = (self.rotation @ np.array(self.end) + self.reference).tolist()
+        return (x, y)
 
 
 #: Longest string drawn, placed or measured: 2**20 characters (a few hundred pages;
@@ -81,7 +105,7 @@ MAX_CHARACTERS = 1 << 20
 MAX_LAYOUT = 100_000
 
 
-def check_length(text, limit=MAX_CHARACTERS, what="drawn or measured"):
+def check_length(text: object, limit: int = MAX_CHARACTERS, what: str = "drawn or measured") -> str:
     """Refuse a string longer than ``limit`` characters before anything is allocated."""
     if not isinstance(text, str):
         raise ArgumentTypeError(f"text must be a str, got {v._show(text)}")
@@ -93,14 +117,14 @@ def check_length(text, limit=MAX_CHARACTERS, what="drawn or measured"):
     return text
 
 
-def codes_of(text):
+def codes_of(text: str) -> NDArray[np.uint32]:
     """Code points of a string as a uint32 array (writable, as kernels take arrays:
     a read-only one would compile a second specialization)."""
     check_length(text)
     return np.frombuffer(bytearray(text.encode("utf-32-le", "surrogatepass")), np.uint32)
 
 
-def _segments(line):
+def _segments(line: NDArray[np.int64]) -> tuple[NDArray[np.int64], NDArray[np.int64]]:
     """Start and end (exclusive) of each run of equal ``line`` ids."""
     if len(line) == 0:
         return np.zeros(0, np.int64), np.zeros(0, np.int64)
@@ -108,7 +132,7 @@ def _segments(line):
     return np.concatenate([[0], cut]), np.concatenate([cut, [len(line)]])
 
 
-def _per_line_sum(values, starts, ends):
+def _per_line_sum(values: NDArray[np.float64], starts: NDArray[np.int64], ends: NDArray[np.int64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """Inclusive running sum restarting at each line, and each line's total."""
     run = np.cumsum(values)
     before = np.where(starts > 0, run[starts - 1], 0.0) if len(run) else np.zeros(0)
@@ -116,12 +140,13 @@ def _per_line_sum(values, starts, ends):
     return run - np.repeat(before, ends - starts), total
 
 
-def _align_span(lo, hi, key):
+def _align_span(lo: Coordinate, hi: Coordinate, key: str) -> Coordinate:
     """Offset that puts the ``key`` end (left/center/right) of [lo, hi] at 0."""
     return -lo if key == "left" else -hi if key == "right" else -(lo + hi) / 2
 
 
-def _levels(font, style, sy, nlines):
+def _levels(font: Font, style: TextStyle, sy: float, nlines: int
+            ) -> tuple[float, float, float, float, float]:
     """Vertical alignment for paths right and left, text space: the first
     baseline's v (``dv``), the last baseline's v, the bottom and top lines of the
     block and the baseline-to-baseline step."""
@@ -134,13 +159,15 @@ def _levels(font, style, sy, nlines):
     return dv, base_last + dv, base_last + font.descent * sy + dv, font.ascent * sy + dv, step
 
 
-def _horizontal(font, gids, line, nlines, style, sx, sy, gap):
+def _horizontal(font: Font, gids: NDArray[np.int64], line: NDArray[np.int64], nlines: int, style: TextStyle, sx: float,
+                sy: float, gap: float) -> tuple[NDArray[np.float64], Coordinate, Box, tuple[float, float]]:
     """Text-space origins for paths right and left; the block's extent.  (One line
     of upright text is drawn by the compiled ``stamp_line``, which repeats this
     arithmetic operation for operation, see :func:`line_setup`.)"""
     adv = font.advances[gids] * sx
     if gap:
         adv += gap
+    width: Coordinate   # one line: a number; several: one per line
     if nlines == 1:  # the common case: scalars instead of per-line arrays
         run = np.add.accumulate(adv)  # (np.cumsum: the same, with 1-2 us more overhead)
         width = float(run[-1]) - gap if len(run) else 0.0
@@ -150,6 +177,8 @@ def _horizontal(font, gids, line, nlines, style, sx, sy, gap):
         width = np.zeros(nlines)
         width[line[starts]] = total - gap
     right = style.path == "right"
+    lo: Coordinate
+    hi: Coordinate
     lo, hi = (0.0 * width, width) if right else (-width, 0.0 * width)
     shift = _align_span(lo, hi, style.align[0])
     u = run - adv if right else gap - run
@@ -166,7 +195,8 @@ def _horizontal(font, gids, line, nlines, style, sx, sy, gap):
     return u, v_, extent, (end_u, base_last)
 
 
-def _vertical(font, gids, line, nlines, style, sx, sy, gap):
+def _vertical(font: Font, gids: NDArray[np.int64], line: NDArray[np.int64], nlines: int, style: TextStyle, sx: float,
+              sy: float, gap: float) -> tuple[NDArray[np.float64], Coordinate, Box, tuple[float, float]]:
     """Text-space origins for paths up and down; the block's extent."""
     adv = font.advances[gids] * sx
     step = font.line_height * sy + gap
@@ -196,10 +226,12 @@ def _vertical(font, gids, line, nlines, style, sx, sy, gap):
     return u, v_, (lo + du, vmin, hi + du, vmax), (last * column + du, end_v)
 
 
-def place(text, x, y, style):
+def place(text: str, x: float, y: float, style: TextStyle) -> Placement:
     """Place ``text`` at reference point ``(x, y)`` with a resolved ``style``."""
     x = v.number("x", x)          # any finite reference point (origins far away are
     y = v.number("y", y)          # kept at the range's edge below: nothing is drawn)
+    fx: Coordinate
+    fy: Coordinate
     font = resolve_font(style.font)
     codes = codes_of(text)
     if "\n" in text:
@@ -244,7 +276,7 @@ def place(text, x, y, style):
     return p
 
 
-def _scale(font, style):
+def _scale(font: Font, style: TextStyle) -> tuple[float, float, float]:
     """``(sx, sy, gap)``: font units -> pixels along and across the baseline, and
     the extra space between characters (pixels)."""
     height = font.native_height if style.height is None else style.height
@@ -252,7 +284,7 @@ def _scale(font, style):
     return sy * style.expansion, sy, style.spacing * height
 
 
-def _matrix(c, s, sx, sy):
+def _matrix(c: float, s: float, sx: float, sy: float) -> NDArray[np.float64]:
     """Font units -> device units: the rotation (cosine ``c``, sine ``s``) @
     diag(sx, sy)."""
     return np.array([[c * sx, -s * sy], [s * sx, c * sy]])
@@ -268,9 +300,13 @@ class LineSetup:
     |top|)``, for the coordinate-range check) and the coordinate limit."""
 
     __slots__ = ("font", "matrix", "tolerance", "params")
+    font: Font
+    matrix: NDArray[np.float64]
+    tolerance: float
+    params: NDArray[np.float64]
 
 
-def line_setup(style):
+def line_setup(style: TextStyle) -> Optional[LineSetup]:
     """The :class:`LineSetup` of a resolved ``style``, or None when its text is not
     upright along path right or left (those strings are placed by :func:`place`)."""
     c, s = math.cos(style.angle), math.sin(style.angle)
@@ -288,8 +324,9 @@ def line_setup(style):
     return setup
 
 
-def _box(points):
-    return tuple(np.concatenate([points.min(0), points.max(0)]).tolist())
+def _box(points: NDArray[np.float64]) -> Box:
+    x0, y0, x1, y1 = np.concatenate([points.min(0), points.max(0)]).tolist()
+    return (x0, y0, x1, y1)
 
 
 class PlacedGlyph:
@@ -328,15 +365,37 @@ class PlacedGlyph:
         antialiasing; for the stroke font, the pixels of its lines), image order
         (top row first); ``bitmap_origin`` is the device (x, y) of its bottom-left
         pixel.
+
+    Examples
+    --------
+    The bitmap font's "I" at (0, 0): its cell is the advance, 6 dots, wide and runs
+    from the bottom line (2 dots below the baseline) to the top line (7 above):
+
+    >>> import scanline as sl
+    >>> g = sl.text.layout("I", font="bitmap")[0]
+    >>> g.char, g.origin, g.cell
+    ('I', (0, 0), (0.0, -2.0, 6.0, 7.0))
     """
 
     __slots__ = ("char", "index", "glyph", "font", "origin", "matrix", "box", "cell",
                  "contours", "strokes", "_tolerance", "_bitmap")
+    char: str
+    index: int
+    glyph: int
+    font: Font
+    origin: tuple[int, int]
+    matrix: NDArray[np.float64]
+    box: Optional[Box]
+    cell: Box
+    contours: Optional[list[NDArray[np.float64]]]
+    strokes: Optional[list[NDArray[np.float64]]]
+    _tolerance: float
+    _bitmap: Optional[tuple[NDArray[np.bool_], tuple[int, int]]]
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"PlacedGlyph({self.char!r}, origin={self.origin}, box={self.box})"
 
-    def _raster(self):
+    def _raster(self) -> tuple[NDArray[np.bool_], tuple[int, int]]:
         if self._bitmap is None:
             from .glyphcache import GlyphImages, images, stroke_bitmap
             if self.strokes is not None:
@@ -349,38 +408,42 @@ class PlacedGlyph:
         return self._bitmap
 
     @property
-    def bitmap(self):
+    def bitmap(self) -> NDArray[np.bool_]:
+        """The pixels this glyph sets, image order (top row first), computed once."""
         return self._raster()[0]
 
     @property
-    def bitmap_origin(self):
+    def bitmap_origin(self) -> tuple[int, int]:
+        """The device (x, y) of the bitmap's bottom-left pixel."""
         return self._raster()[1]
 
 
-def cells(p):
+def cells(p: Placement) -> NDArray[np.float64]:
     """The device bounding boxes of the character bodies of a placement, (n, 4):
     xmin, ymin, xmax, ymax of the cell (advance x bottom line .. top line), turned
     by the placement's matrix and moved to each origin."""
     font = p.font
     a = font.advances[p.gids]
     m = p.matrix
-    xs, ys = [], []
+    xs: list[NDArray[np.float64]] = []
+    ys: list[NDArray[np.float64]] = []
     for u, w in ((0.0, font.descent), (1.0, font.descent), (1.0, font.ascent),
                  (0.0, font.ascent)):
         xs.append(m[0, 0] * a * u + m[0, 1] * w + p.ox)
         ys.append(m[1, 0] * a * u + m[1, 1] * w + p.oy)
-    xs, ys = np.stack(xs, axis=1), np.stack(ys, axis=1)
-    return np.stack([xs.min(1), ys.min(1), xs.max(1), ys.max(1)], axis=1)
+    x, y = np.stack(xs, axis=1), np.stack(ys, axis=1)
+    boxes: NDArray[np.float64] = np.stack([x.min(1), y.min(1), x.max(1), y.max(1)], axis=1)
+    return boxes
 
 
-def glyphs(text, p, select=None):
+def glyphs(text: str, p: Placement, select: Optional[Iterable[int]] = None) -> list[PlacedGlyph]:
     """PlacedGlyph objects for the characters ``select`` (indices into the placement
     ``p``; default all) of ``text``."""
-    out = []
+    out: list[PlacedGlyph] = []
     outline = p.font.kind != "stroke"
     boxes = cells(p)
-    for k in (range(len(p.gids)) if select is None else select):
-        k = int(k)
+    for j in (range(len(p.gids)) if select is None else select):
+        k = int(j)
         g = PlacedGlyph()
         gid = int(p.gids[k])
         g.char = text[p.index[k]]
@@ -391,15 +454,19 @@ def glyphs(text, p, select=None):
         g.contours = ink if outline else None
         g.strokes = None if outline else ink
         g.box = _box(np.vstack(ink)) if ink else None
-        g.cell = tuple(boxes[k].tolist())
+        x0, y0, x1, y1 = boxes[k].tolist()
+        g.cell = (x0, y0, x1, y1)
         g._tolerance = p.tolerance
         g._bitmap = None
         out.append(g)
     return out
 
 
-def layout(text, x=0.0, y=0.0, *, font=None, height=None, expansion=None, spacing=None,
-           angle=None, up=None, path=None, align=None, style=None):
+def layout(text: str, x: float = 0.0, y: float = 0.0, *, font: Optional[FontSpec] = None,
+           height: Optional[float] = None, expansion: Optional[float] = None,
+           spacing: Optional[float] = None, angle: Optional[Angle] = None,
+           up: Optional[tuple[float, float]] = None, path: Optional[str] = None,
+           align: Optional[Align] = None, style: Optional[TextStyle] = None) -> list[PlacedGlyph]:
     """Place the characters of ``text`` as :func:`scanline.draw.text` would draw
     them, without drawing.
 
@@ -413,6 +480,7 @@ def layout(text, x=0.0, y=0.0, *, font=None, height=None, expansion=None, spacin
     font, height, expansion, spacing, angle, up, path, align
         Text attributes, see :class:`scanline.TextStyle`; they override ``style``.
     style : TextStyle, optional
+        The base style (default: the default style).
 
     Returns
     -------
@@ -420,6 +488,17 @@ def layout(text, x=0.0, y=0.0, *, font=None, height=None, expansion=None, spacin
         One per character (newlines left out), in string order, each with its
         ``char``, device ``box`` and geometry (``contours``, ``strokes`` or the
         lazily rasterized ``bitmap`` + ``bitmap_origin``): what text clipping needs.
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        ``text`` not a str or longer than :data:`MAX_LAYOUT`, a reference point that
+        is not finite, or an attribute :class:`scanline.TextStyle` refuses.
+
+    Notes
+    -----
+    Hearn & Baker, section 4-5 (text attributes: height, expansion, spacing, up
+    vector, path, alignment); the origins are rounded to pixel centers.
 
     Examples
     --------
@@ -452,24 +531,56 @@ class Extents:
         Bounding box of the glyphs' geometry (None when every character is blank).
     advance : (float, float)
         The concatenation point: where text drawn next along the path would start.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> e = sl.text.extents("A", font="bitmap")
+    >>> isinstance(e, sl.text.Extents), e.advance
+    (True, (6.0, 0.0))
     """
 
     __slots__ = ("box", "corners", "width", "height", "ink", "advance")
+    box: Box
+    corners: NDArray[np.float64]
+    width: float
+    height: float
+    ink: Optional[Box]
+    advance: tuple[float, float]
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return (f"Extents(box={self.box}, width={self.width:g}, height={self.height:g}, "
                 f"advance={self.advance})")
 
 
-def extents(text, x=0.0, y=0.0, *, font=None, height=None, expansion=None, spacing=None,
-            angle=None, up=None, path=None, align=None, style=None):
+def extents(text: str, x: float = 0.0, y: float = 0.0, *, font: Optional[FontSpec] = None,
+            height: Optional[float] = None, expansion: Optional[float] = None,
+            spacing: Optional[float] = None, angle: Optional[Angle] = None,
+            up: Optional[tuple[float, float]] = None, path: Optional[str] = None,
+            align: Optional[Align] = None, style: Optional[TextStyle] = None) -> Extents:
     """The text-extent query: where :func:`scanline.draw.text` would put ``text``.
 
-    Parameters are those of :func:`layout`.
+    Parameters
+    ----------
+    text : str
+        The string; newlines start new lines or columns.
+    x, y : float
+        Reference point, device coordinates.
+    font, height, expansion, spacing, angle, up, path, align
+        Text attributes, see :class:`scanline.TextStyle`; they override ``style``.
+    style : TextStyle, optional
+        The base style.
 
     Returns
     -------
     Extents
+        The text extent rectangle, its bounding box, the ink box and the
+        concatenation point.
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        As :func:`layout` (up to ``MAX_CHARACTERS`` characters).
 
     Examples
     --------
@@ -490,7 +601,7 @@ def extents(text, x=0.0, y=0.0, *, font=None, height=None, expansion=None, spaci
     e.width = p.extent[2] - p.extent[0]
     e.height = p.extent[3] - p.extent[1]
     e.advance = p.concatenation_point()
-    boxes = []
+    boxes: list[Box] = []
     for gid in np.unique(p.gids):
         b = p.font.bounds(int(gid))
         if b is None:
@@ -499,7 +610,7 @@ def extents(text, x=0.0, y=0.0, *, font=None, height=None, expansion=None, spaci
         corners = np.array([(b[0], b[1]), (b[2], b[1]), (b[2], b[3]), (b[0], b[3])]) @ p.matrix.T
         origins = np.column_stack([p.ox[sel], p.oy[sel]]).astype(float)
         boxes.append(_box((corners[None] + origins[:, None]).reshape(-1, 2)))
-    b = np.array(boxes)
-    e.ink = (float(b[:, 0].min()), float(b[:, 1].min()), float(b[:, 2].max()),
-             float(b[:, 3].max())) if boxes else None
+    ink = np.array(boxes)
+    e.ink = (float(ink[:, 0].min()), float(ink[:, 1].min()), float(ink[:, 2].max()),
+             float(ink[:, 3].max())) if boxes else None
     return e

@@ -14,8 +14,10 @@ import contextlib
 import logging
 import math
 import os
+from typing import Any, Iterator, Optional, Union
 
 import numpy as np
+from numpy.typing import NDArray
 from fontTools.pens.basePen import BasePen
 from fontTools.ttLib import TTFont
 
@@ -37,48 +39,54 @@ MAX_COMPOSITE_DEPTH = 16
 #: Largest font file read.
 MAX_FONT_BYTES = 256 << 20
 
+#: A pen point, segment (kind, points...) and contour (start, segments).
+Pt = tuple[float, float]
+Segment = tuple[Any, ...]
+Contour = tuple[Pt, list[Segment]]
+
 
 class _TooComplex(Exception):
     """A glyph with more than MAX_GLYPH_SEGMENTS segments."""
 
 
-class _SegmentPen(BasePen):
+class _SegmentPen(BasePen):  # type: ignore[misc]  # fontTools has no type information
     """Collect a glyph's contours as segments: ('L', p), ('Q', p1, p2) and
     ('C', p1, p2, p3), each continuing from the previous point.  fontTools'
     BasePen resolves TrueType's implied on-curve points and components.  More than
     MAX_GLYPH_SEGMENTS segments raise :class:`_TooComplex` at once, so a glyph that
     multiplies its outlines costs bounded time and memory."""
 
-    def __init__(self, glyph_set):
+    def __init__(self, glyph_set: Any) -> None:
         super().__init__(glyph_set)
-        self.contours = []
+        self.contours: list[Contour] = []
         self.count = 0
 
-    def _add(self, item):
+    def _add(self, item: Segment) -> None:
         self.count += 1
         if self.count > MAX_GLYPH_SEGMENTS:
             raise _TooComplex()
         self.contours[-1][1].append(item)
 
-    def _moveTo(self, p):
+    def _moveTo(self, p: Pt) -> None:
         self.count += 1
         self.contours.append((p, []))
 
-    def _lineTo(self, p):
+    def _lineTo(self, p: Pt) -> None:
         self._add(("L", p))
 
-    def _qCurveToOne(self, p1, p2):
+    def _qCurveToOne(self, p1: Pt, p2: Pt) -> None:
         self._add(("Q", p1, p2))
 
-    def _curveToOne(self, p1, p2, p3):
+    def _curveToOne(self, p1: Pt, p2: Pt, p3: Pt) -> None:
         self._add(("C", p1, p2, p3))
 
 
-def flatten_contours(contours, tolerance):
+def flatten_contours(contours: list[Contour], tolerance: float) -> list[NDArray[np.float64]]:
     """Flatten pen contours ``[(start, segments), ...]`` into (K, 2) float arrays
     (closed implicitly), all quadratic and all cubic segments in one vectorized
     call each."""
-    quads, cubics = [], []
+    quads: list[tuple[Pt, ...]] = []
+    cubics: list[tuple[Pt, ...]] = []
     for start, segs in contours:
         cur = start
         for s in segs:
@@ -87,13 +95,13 @@ def flatten_contours(contours, tolerance):
             elif s[0] == "C":
                 cubics.append((cur, s[1], s[2], s[3]))
             cur = s[-1]
-    flat = {}
+    flat: dict[str, tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.int64]]] = {}
     for kind, items, degree in (("Q", quads, 3), ("C", cubics, 4)):
         if items:
             pts, counts = flatten._flatten("controls", np.array(items, float), degree, tolerance)
             ends = np.cumsum(counts)
             flat[kind] = (pts, ends - counts, ends)
-    out = []
+    out: list[NDArray[np.float64]] = []
     used = {"Q": 0, "C": 0}
     for start, segs in contours:
         pieces = [np.array([start], float)]
@@ -114,7 +122,7 @@ def flatten_contours(contours, tolerance):
 
 
 @contextlib.contextmanager
-def _quiet():
+def _quiet() -> Iterator[None]:
     """Silence fontTools' log warnings about damaged data while it reads: scanline
     either raises one clear error or draws the replacement box."""
     log = logging.getLogger("fontTools")
@@ -126,7 +134,7 @@ def _quiet():
         log.setLevel(level)
 
 
-def _check_tables(path, font):
+def _check_tables(path: str, font: Any) -> None:
     """Every table must lie inside the file (a truncated file fails here, not when
     a glyph is first drawn) and the tables scanline needs must be present."""
     size = os.path.getsize(path)
@@ -151,6 +159,7 @@ class OutlineFont(Font):
     name : str, optional
         The font's name in scanline (default: the file name).
     license : str, optional
+        Its license.
 
     Raises
     ------
@@ -160,11 +169,12 @@ class OutlineFont(Font):
 
     kind = "outline"
 
-    def __init__(self, path, name=None, license="see the font file"):
+    def __init__(self, path: str, name: Optional[str] = None,
+                 license: str = "see the font file") -> None:
         super().__init__(name or os.path.basename(path), path, license)
         input_path(path, "font file", MAX_FONT_BYTES)
-        self._flat = {}
-        self._depth = {}
+        self._flat: dict[tuple[int, int], list[NDArray[np.float64]]] = {}
+        self._depth: dict[str, int] = {}
         try:
             with _quiet():
                 font = TTFont(path, fontNumber=0, lazy=False)
@@ -177,7 +187,7 @@ class OutlineFont(Font):
                 f"font file {path!r} is not a readable TrueType/OpenType font "
                 f"({type(exc).__name__}: {exc})") from None
 
-    def _read(self, font):
+    def _read(self, font: Any) -> None:
         self._font = font
         self._glyphs = font.getGlyphSet()
         order = font.getGlyphOrder()
@@ -210,7 +220,7 @@ class OutlineFont(Font):
         self._ink_reach = float(max(abs(head.xMin), abs(head.yMin), abs(head.xMax),
                                     abs(head.yMax)))
 
-    def _metric(self, os2, field, char, fraction):
+    def _metric(self, os2: Any, field: str, char: str, fraction: float) -> float:
         value = getattr(os2, field, 0) if os2 is not None else 0
         if value > 0:
             return float(value)
@@ -221,7 +231,7 @@ class OutlineFont(Font):
                 return float(b[3])
         return fraction * self.units_per_em
 
-    def _composite_depth(self, name, active=()):
+    def _composite_depth(self, name: str, active: tuple[str, ...] = ()) -> int:
         """How deeply the ``glyf`` glyph ``name`` nests composites (0: a simple
         glyph), or raise once it passes MAX_COMPOSITE_DEPTH or contains itself."""
         if name in self._depth:
@@ -238,7 +248,7 @@ class OutlineFont(Font):
         self._depth[name] = depth
         return depth
 
-    def _contours(self, gid):
+    def _contours(self, gid: int) -> Optional[list[Contour]]:
         """The pen contours of glyph ``gid``; a glyph fontTools cannot decode is
         drawn as the replacement box rather than raising mid-string.  A glyph that
         nests composites more than MAX_COMPOSITE_DEPTH deep or has more than
@@ -260,7 +270,7 @@ class OutlineFont(Font):
             return None    # RecursionError on a composite glyph that contains itself)
         return pen.contours
 
-    def _ink(self, gid, tolerance):
+    def _ink(self, gid: int, tolerance: float) -> list[NDArray[np.float64]]:
         """Flattened contours of glyph ``gid`` in font units, within ``tolerance``
         font units (cached per power-of-two tolerance)."""
         if gid == self.replacement:

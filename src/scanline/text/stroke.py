@@ -13,21 +13,25 @@ A. V. Hershey, "Calligraphy for computer display", NWL Report 2101, U.S. Naval
 Weapons Laboratory, 1967.
 """
 
+import os
 import re
+from typing import Any, Callable, Optional, Union
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentValueError
 from .catalog import Font
 
 _GLYPH = re.compile(r'^U\+([0-9A-Fa-f]{4,6}) "(.)"\s*(.*)$')
-_KEYS = {"name": str, "cap-height": float, "x-height": float, "ascent": float,
+_KEYS: dict[str, Callable[[str], Any]] = {"name": str, "cap-height": float, "x-height": float, "ascent": float,
          "descent": float, "advance": float, "line-gap": float}
 
 
-def _parse(text):
-    props, glyphs = {}, {}
+def _parse(text: str) -> tuple[dict[str, Any], dict[int, list[NDArray[np.float64]]]]:
+    props: dict[str, Any] = {}
+    glyphs: dict[int, list[NDArray[np.float64]]] = {}
     for n, line in enumerate(text.splitlines(), 1):
         line = line.strip()
         if not line or line.startswith("#"):
@@ -37,7 +41,7 @@ def _parse(text):
             code = int(m.group(1), 16)
             if chr(code) != m.group(2):
                 raise ValueError(f"line {n}: U+{m.group(1)} is not {m.group(2)!r}")
-            strokes = []
+            strokes: list[NDArray[np.float64]] = []
             for part in m.group(3).split("|"):
                 if part.strip():
                     pts = [tuple(float(c) for c in p.split(",")) for p in part.split()]
@@ -62,7 +66,7 @@ class StrokeFont(Font):
     kind = "stroke"
     native_height = 12.0
 
-    def __init__(self, props, glyphs, source):
+    def __init__(self, props: dict[str, Any], glyphs: dict[int, list[NDArray[np.float64]]], source: str) -> None:
         super().__init__(props["name"], source, "MIT (designed for scanline)")
         self.cap_height = props["cap-height"]
         self.x_height = props["x-height"]
@@ -92,7 +96,7 @@ class StrokeFont(Font):
         self._ink_reach = float(np.abs(self.segments).max())
 
     @classmethod
-    def read(cls, path):
+    def read(cls, path: Union[str, "os.PathLike[str]"]) -> "StrokeFont":
         """Read a stroke font file (see ``data/fonts/stroke.txt``)."""
         try:
             with open(path, encoding="utf-8") as f:
@@ -101,6 +105,6 @@ class StrokeFont(Font):
             raise ArgumentValueError(f"stroke font file {v._show(str(path))}: {exc}") from None
         return cls(props, glyphs, str(path))
 
-    def _ink(self, gid, tolerance=None):
+    def _ink(self, gid: int, tolerance: Optional[float] = None) -> list[NDArray[np.float64]]:
         """The polylines of glyph ``gid``, font units."""
         return self._strokes[gid]

@@ -6,8 +6,11 @@ which override the style's values.
 """
 
 import math
+import os
+from typing import TYPE_CHECKING, Any, Callable, Optional, Sequence, Union, cast
 
 from .. import _validate as v
+from .._typing import Angle, Color
 from ..errors import ArgumentTypeError, ArgumentValueError
 
 PATHS = ("right", "left", "up", "down")
@@ -17,8 +20,16 @@ VERTICAL = ("top", "cap", "half", "base", "bottom")
 #: Largest character height accepted (device units).
 MAX_HEIGHT = 2.0 ** 20
 
+if TYPE_CHECKING:
+    from .catalog import Font
 
-def _align(value):
+#: A font as the text functions take it: a name, a path or a loaded Font.
+FontSpec = Union[str, "os.PathLike[str]", "Font"]
+#: An alignment: (horizontal, vertical), or a string such as "center half".
+Align = Union[str, Sequence[str]]
+
+
+def _align(value: object) -> tuple[str, str]:
     if isinstance(value, str):
         parts = value.replace(",", " ").split()
         value = tuple(parts) if len(parts) == 2 else (parts[0], "base") if parts else value
@@ -31,7 +42,7 @@ def _align(value):
     return (h, vert)
 
 
-def _height(value):
+def _height(value: object) -> Optional[float]:
     if value is None:
         return None
     h = v.number("height", value)
@@ -42,9 +53,9 @@ def _height(value):
     return h
 
 
-def _angle_from_up(up):
+def _angle_from_up(up: object) -> float:
     try:
-        ux, uy = up
+        ux, uy = cast(tuple[object, object], up)    # a non-pair raises, caught below
     except (TypeError, ValueError):
         raise ArgumentTypeError(f"up must be a vector (ux, uy), got {v._show(up)}") from None
     ux = v.number("up[0]", ux)
@@ -105,15 +116,26 @@ class TextStyle:
 
     __slots__ = ("font", "height", "expansion", "spacing", "angle", "path", "align",
                  "color", "antialias")
+    font: FontSpec
+    height: Optional[float]
+    expansion: float
+    spacing: float
+    angle: float
+    path: str
+    align: tuple[str, str]
+    color: Optional[Color]
+    antialias: bool
 
-    def __init__(self, font="sans", height=None, expansion=1.0, spacing=0.0, angle=0.0,
-                 up=None, path="right", align=("left", "base"), color=None,
-                 antialias=False):
+    def __init__(self, font: FontSpec = "sans", height: Optional[float] = None,
+                 expansion: float = 1.0, spacing: float = 0.0, angle: Angle = 0.0,
+                 up: Optional[tuple[float, float]] = None, path: str = "right",
+                 align: Align = ("left", "base"), color: Optional[Color] = None,
+                 antialias: bool = False) -> None:
         self._set(font=font, height=height, expansion=expansion, spacing=spacing,
                   angle=angle, up=up, path=path, align=align, color=color,
                   antialias=antialias)
 
-    def _set(self, **values):
+    def _set(self, **values: Any) -> None:
         """Validate and store the given attributes (only those)."""
         for key, value in values.items():
             if key == "up":
@@ -127,43 +149,71 @@ class TextStyle:
             object.__setattr__(self, key, _CHECKS[key](value))
 
     @property
-    def up(self):
+    def up(self) -> tuple[float, float]:
         """The character up vector (unit length) of ``angle``."""
         return (-math.sin(self.angle), math.cos(self.angle))
 
-    def replace(self, **changes):
+    def replace(self, **changes: Any) -> "TextStyle":
         """A copy with some attributes changed (``None`` values are ignored); only
-        the changed values are validated again."""
+        the changed values are validated again.
+
+        Parameters
+        ----------
+        **changes
+            Attributes by name, as :class:`TextStyle` takes them (``font``,
+            ``height``, ``expansion``, ``spacing``, ``angle`` or ``up``, ``path``,
+            ``align``, ``color``, ``antialias``).
+
+        Returns
+        -------
+        TextStyle
+            The changed copy (this style is unchanged).
+
+        Raises
+        ------
+        ArgumentTypeError, ArgumentValueError
+            A changed value that :class:`TextStyle` would refuse.
+
+        Examples
+        --------
+        >>> import math
+        >>> from scanline.text import TextStyle
+        >>> s = TextStyle(height=10).replace(up=(-1, 0))     # the baseline points up
+        >>> s.height, round(s.angle / math.pi, 6)
+        (10.0, 0.5)
+        """
         out = object.__new__(TextStyle)
         for k in self.__slots__:
             object.__setattr__(out, k, getattr(self, k))
         out._set(**{k: val for k, val in changes.items() if val is not None})
         return out
 
-    def __setattr__(self, name, value):
+    def __setattr__(self, name: str, value: object) -> None:
         raise AttributeError(f"TextStyle is immutable; use style.replace({name}=...)")
 
-    def __copy__(self):
+    def __copy__(self) -> "TextStyle":
         return self
 
-    def __deepcopy__(self, memo):
+    def __deepcopy__(self, memo: object) -> "TextStyle":
         return self
 
-    def __reduce__(self):
+    def __reduce__(self) -> tuple[Callable[[tuple[Any, ...]], "TextStyle"], tuple[tuple[Any, ...]]]:
         return _restore, (tuple(getattr(self, k) for k in self.__slots__),)
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         fields = ", ".join(f"{k}={getattr(self, k)!r}" for k in self.__slots__)
         return f"TextStyle({fields})"
 
-    def __eq__(self, other):
+    def __eq__(self, other: object) -> bool:
         return isinstance(other, TextStyle) and all(
             getattr(self, k) == getattr(other, k) for k in self.__slots__)
 
-    __hash__ = None
+    # unhashable on purpose, as before (resolve() memoizes styles by id); mypy wants a
+    # method here, None is what disables hashing
+    __hash__ = None  # type: ignore[assignment]
 
 
-def _restore(values):
+def _restore(values: tuple[Any, ...]) -> TextStyle:
     """Unpickle a :class:`TextStyle` (its values were checked when it was made)."""
     out = object.__new__(TextStyle)
     for key, value in zip(TextStyle.__slots__, values):
@@ -171,7 +221,7 @@ def _restore(values):
     return out
 
 
-def _font(value):
+def _font(value: object) -> object:
     from .catalog import Font
     if not isinstance(value, (str, Font)) and not hasattr(value, "__fspath__"):
         raise ArgumentTypeError(
@@ -179,14 +229,14 @@ def _font(value):
     return value
 
 
-def _expansion(value):
+def _expansion(value: object) -> float:
     e = v.number("expansion", value)
     if not 0 < e <= 1000:
         raise ArgumentValueError(f"expansion must be in (0, 1000], got {v._show(value)}")
     return e
 
 
-def _spacing(value):
+def _spacing(value: object) -> float:
     s = v.number("spacing", value)
     if abs(s) > 1000:
         raise ArgumentValueError(
@@ -194,13 +244,13 @@ def _spacing(value):
     return s
 
 
-def _antialias(value):
+def _antialias(value: object) -> bool:
     if not isinstance(value, bool):
         raise ArgumentTypeError(f"antialias must be True or False, got {v._show(value)}")
     return value
 
 
-_CHECKS = {"font": _font, "height": _height, "expansion": _expansion,
+_CHECKS: dict[str, Callable[[Any], Any]] = {"font": _font, "height": _height, "expansion": _expansion,
            "spacing": _spacing, "angle": lambda a: v.angle("angle", a),
            "path": lambda p: v.choice("path", p, PATHS), "align": _align,
            "color": lambda c: c, "antialias": _antialias}
@@ -209,13 +259,40 @@ _CHECKS = {"font": _font, "height": _height, "expansion": _expansion,
 DEFAULT = TextStyle()
 
 
-_RESOLVED = {}
+_RESOLVED: dict[tuple[Any, ...], tuple[TextStyle, TextStyle]] = {}
 
 
-def resolve(style, **attributes):
+def resolve(style: Optional[TextStyle], **attributes: Any) -> TextStyle:
     """The style to use: ``style`` (or the defaults) with the non-None keyword
     attributes applied.  Results are memoized (styles are immutable), so a loop
-    drawing with the same keywords validates them once."""
+    drawing with the same keywords validates them once.
+
+    Parameters
+    ----------
+    style : TextStyle or None
+        The base style; None is the default style.
+    **attributes
+        Attributes by name (None: keep the style's value).
+
+    Returns
+    -------
+    TextStyle
+        ``style`` itself when nothing changes, else the changed copy.
+
+    Raises
+    ------
+    ArgumentTypeError
+        ``style`` is not a TextStyle.
+    ArgumentValueError
+        An attribute value :class:`TextStyle` would refuse.
+
+    Examples
+    --------
+    >>> from scanline.text import TextStyle, style
+    >>> s = TextStyle(font="bitmap")
+    >>> style.resolve(s, height=None) is s, style.resolve(s, height=14).height
+    (True, 14.0)
+    """
     if style is None:
         style = DEFAULT
     elif not isinstance(style, TextStyle):

@@ -153,6 +153,13 @@ def families() -> Dict[str, str]:
     is installed too, and ``font=`` still takes the bundled one
     (:func:`scanline.text.fonts` lists those).
 
+    Returns
+    -------
+    dict of str to str
+        Family name -> font file.
+
+    Examples
+    --------
     >>> import scanline as sl
     >>> all(f.lower().endswith((".ttf", ".otf", ".ttc", ".otc"))
     ...     for f in sl.text.families().values())
@@ -174,6 +181,16 @@ def find_font(family: str) -> str:
     """The font file of the family named ``family``: the bundled DejaVu Sans for
     ``"DejaVu Sans"``, else the installed face that fontconfig (``fc-list``) or
     matplotlib finds (see the module docstring).
+
+    Parameters
+    ----------
+    family : str
+        A family name, compared case-insensitively.
+
+    Returns
+    -------
+    str
+        The font file's path.
 
     Raises
     ------

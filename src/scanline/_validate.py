@@ -240,7 +240,7 @@ def coordinate_array(name: str, value: object, columns: int,
             )
         if guard:
             from .geometry.guard import segments
-            a = segments(np.ascontiguousarray(a, np.float64))  # type: ignore[no-untyped-call]
+            a = segments(np.ascontiguousarray(a, np.float64))
         if not far and np.abs(a).max() > COORD_LIMIT:
             row = int(np.argwhere(np.abs(a) > COORD_LIMIT)[0][0])
             raise ArgumentValueError(

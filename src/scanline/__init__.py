@@ -30,7 +30,7 @@ if TYPE_CHECKING:   # what the lazy attributes are, for type checkers and editor
     from . import budget as budget, mpl as mpl, texture as texture
     from . import raytrace as raytrace, radiosity as radiosity
     from . import solids as solids, csg as csg, octree as octree
-    from . import fractals as fractals
+    from . import fractals as fractals, studio as studio
     from .texture import Texture as Texture
     from .rendering import render as render
     from .depthbuffer import DepthBuffer as DepthBuffer
@@ -93,6 +93,7 @@ _LAZY = {
     "csg": ("scanline.csg", None),
     "octree": ("scanline.octree", None),
     "fractals": ("scanline.fractals", None),
+    "studio": ("scanline.studio", None),
     "screen": ("scanline.screen", None),
     "budget": ("scanline.budget", None),
     "mpl": ("scanline.mpl", None),

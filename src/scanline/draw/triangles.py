@@ -39,9 +39,10 @@ def _far(tri, q, att):
     they are, in their order."""
     from ..geometry import guard
 
-    far = np.abs(tri[:, :, :2]).max(axis=(1, 2)) > v.COORD_LIMIT
-    if not far.any():
-        return tri, q, att
+    xy = tri[:, :, :2]
+    if len(tri) == 0 or max(xy.max(), -xy.min()) <= v.COORD_LIMIT:
+        return tri, q, att    # the common case: two reductions, no (N, 3, 2) temporary
+    far = np.abs(xy).max(axis=(1, 2)) > v.COORD_LIMIT
     rows = np.concatenate([tri, q[:, :, None], att * q[:, :, None]], axis=2)
     pieces, owner = guard.triangles(rows[far])
     keep = np.flatnonzero(~far)

@@ -22,12 +22,36 @@ def _endpoints(x0, y0, x1, y1):
     return pts, steps
 
 
-def bresenham(x0, y0, x1, y1):
+def bresenham(x0: float, y0: float, x1: float, y1: float) -> Table:
     """Bresenham's line algorithm step by step: the notes' table of k, p_k and the
     pixel (x_k+1, y_k+1), plus the increment added to p_k.
 
     The start pixel is plotted before step k = 0.  Lines with |slope| > 1 step along
     y from the lower endpoint (x and y swap roles); the table still shows device x, y.
+
+    Parameters
+    ----------
+    x0, y0 : float
+        The first endpoint in device pixels, rounded to the nearest pixel (halves up).
+    x1, y1 : float
+        The second endpoint, rounded likewise.
+
+    Returns
+    -------
+    Table
+        Columns k, p, x, y, increment, one row per step; ``pixels()`` includes
+        the start pixel.
+
+    Raises
+    ------
+    TypeError
+        If a coordinate is not a real number.
+    ValueError
+        If a coordinate is outside the supported range, or the line has more than
+        `MAX_STEPS` steps.
+
+    Examples
+    --------
 
     >>> t = bresenham(20, 10, 30, 18)
     >>> [(r["k"], r["p"], r["x"], r["y"]) for r in t.rows[:3]]
@@ -55,10 +79,33 @@ def bresenham(x0, y0, x1, y1):
                  ["k", "p", "x", "y", "increment"], rows, notes, pixels)
 
 
-def dda(x0, y0, x1, y1):
+def dda(x0: float, y0: float, x1: float, y1: float) -> Table:
     """The DDA step by step: at each k the real x and y (x_k+1 = x_k + dx/steps,
     y_k+1 = y_k + dy/steps, accumulated in floating point) and the pixel they round
     to.  Row k = 0 is the first endpoint.
+
+    Parameters
+    ----------
+    x0, y0 : float
+        The first endpoint in device pixels, rounded to the nearest pixel (halves up).
+    x1, y1 : float
+        The second endpoint, rounded likewise.
+
+    Returns
+    -------
+    Table
+        Columns k, x_real, y_real, x, y, one row per step and k = 0.
+
+    Raises
+    ------
+    TypeError
+        If a coordinate is not a real number.
+    ValueError
+        If a coordinate is outside the supported range, or the line has more than
+        `MAX_STEPS` steps.
+
+    Examples
+    --------
 
     >>> t = dda(0, 0, 4, 2)
     >>> [(r["x_real"], r["y_real"], r["x"], r["y"]) for r in t.rows]

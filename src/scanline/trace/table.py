@@ -29,6 +29,19 @@ def _cell(value: object) -> str:
 class Table:
     """Rows of an algorithm's steps.
 
+    Parameters
+    ----------
+    title : str
+        What was traced.
+    columns : iterable of str
+        Column names, in order.
+    rows : iterable of dict
+        One dict per step, keyed by column names.
+    notes : iterable of str, optional
+        Set-up lines printed above the table.
+    pixels : iterable of (int, int), optional
+        The (x, y) pixels the algorithm plots.
+
     Attributes
     ----------
     title : str
@@ -39,6 +52,19 @@ class Table:
         Column names, in order; the keys of each row.
     rows : list of dict
         One dict per step.
+
+    Examples
+    --------
+    >>> t = Table("demo", ["k", "x"], [{"k": 0, "x": 0.5}], ["x0 = 0.5"], [(0, 0)])
+    >>> len(t), t.columns
+    (1, ['k', 'x'])
+    >>> print(t)
+    demo
+    x0 = 0.5
+    <BLANKLINE>
+    k    x
+    -  ---
+    0  0.5
     """
 
     def __init__(self, title: str, columns: Iterable[str], rows: Iterable[Dict[str, Any]],
@@ -50,7 +76,18 @@ class Table:
         self._pixels = frozenset(pixels)
 
     def pixels(self) -> Set[Tuple[int, int]]:
-        """The set of (x, y) pixels that the algorithm plots, symmetry included."""
+        """The set of (x, y) pixels that the algorithm plots, symmetry included.
+
+        Returns
+        -------
+        set of (int, int)
+            A fresh set; changing it leaves the table as it was.
+
+        Examples
+        --------
+        >>> Table("t", ["k"], [], pixels=[(1, 2), (1, 2), (3, 4)]).pixels() == {(1, 2), (3, 4)}
+        True
+        """
         return set(self._pixels)
 
     def __len__(self) -> int:
@@ -68,11 +105,41 @@ class Table:
         return "\n".join(out)
 
     def to_json(self, indent: Optional[int] = None) -> str:
-        """The rows as a JSON list of objects keyed by the column names."""
+        """The rows as a JSON list of objects keyed by the column names.
+
+        Parameters
+        ----------
+        indent : int, optional
+            Indentation of the JSON text, as `json.dumps` takes it; None (the
+            default) writes one line.
+
+        Returns
+        -------
+        str
+            The JSON text.
+
+        Examples
+        --------
+        >>> Table("t", ["k", "p"], [{"k": 0, "p": -3}]).to_json()
+        '[{"k": 0, "p": -3}]'
+        """
         return json.dumps(self.rows, indent=indent)
 
     def to_csv(self) -> str:
-        """The rows as CSV text with a header line."""
+        """The rows as CSV text with a header line.
+
+        Returns
+        -------
+        str
+            The header line and one line per row, cells printed as the table prints
+            them (floats to 6 decimals).
+
+        Examples
+        --------
+        >>> print(Table("t", ["k", "x"], [{"k": 0, "x": 1 / 3}]).to_csv(), end="")
+        k,x
+        0,0.333333
+        """
         out = io.StringIO()
         writer = csv.DictWriter(out, fieldnames=self.columns, lineterminator="\n")
         writer.writeheader()

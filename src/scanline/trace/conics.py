@@ -1,11 +1,14 @@
 """Step tables of the midpoint circle and ellipse (notes, chapter 2, Q.4-Q.6)."""
 
+from typing import Optional
+
 import numpy as np
 
 from .. import _validate as v
 from .._kernels import conics as k
 from .._kernels._jit import python
 from ..draw.conics import _check_ellipse
+from .._typing import Point
 from .table import Table
 
 MAX_RADIUS = 100_000
@@ -47,13 +50,36 @@ def _quarters(value):
     return value // 4 if value % 4 == 0 else value / 4
 
 
-def midpoint_circle(r, center=None):
+def midpoint_circle(r: float, center: Optional[Point] = None) -> Table:
     """The midpoint circle algorithm step by step: k, p_k, the point
     (x_k+1, y_k+1) of the octant from (0, r) to the diagonal, and 2x_k+1, 2y_k+1.
 
     ``center=(xc, yc)`` adds the plotted pixel (xc + x, yc + y) to each row; the
     other seven octants follow by symmetry.
 
+    Parameters
+    ----------
+    r : float
+        The radius in pixels, rounded to an int in [0, `MAX_RADIUS`].
+    center : (float, float), optional
+        The center (xc, yc) in device pixels, rounded to pixels; None (the default)
+        traces about (0, 0) without the screen columns.
+
+    Returns
+    -------
+    Table
+        Columns k, p, x, y, 2x, 2y (and xc+x, yc+y with a center), one row per step;
+        ``pixels()`` holds all eight octants.
+
+    Raises
+    ------
+    TypeError
+        If `r` is not a real number or `center` is not a pair of them.
+    ValueError
+        If `r` is negative or above `MAX_RADIUS`, or the center is out of range.
+
+    Examples
+    --------
     >>> t = midpoint_circle(10)
     >>> [(r["p"], r["x"], r["y"]) for r in t.rows]
     [(-9, 1, 10), (-6, 2, 10), (-1, 3, 10), (6, 4, 9), (-3, 5, 9), (8, 6, 8), (5, 7, 7)]
@@ -77,13 +103,38 @@ def midpoint_circle(r, center=None):
     return Table(f"Midpoint circle r = {r}, center ({xc}, {yc})", columns, rows, notes, pixels)
 
 
-def midpoint_ellipse(rx, ry, center=None):
+def midpoint_ellipse(rx: float, ry: float, center: Optional[Point] = None) -> Table:
     """The midpoint ellipse algorithm step by step, both regions: region, k, p1_k or
     p2_k, the point (x_k+1, y_k+1), 2 r_y^2 x_k+1 and 2 r_x^2 y_k+1.
 
     ``k`` restarts at 0 in region 2, as in the notes.  Rows of region ``"tip"``
     complete a very flat ellipse along y = 0 (see :func:`scanline.draw.ellipse`).
 
+    Parameters
+    ----------
+    rx, ry : float
+        The semi-axes along x and y in pixels, each rounded to an int in
+        [0, `MAX_RADIUS`].
+    center : (float, float), optional
+        The center (xc, yc) in device pixels, rounded to pixels; None (the default)
+        traces about (0, 0) without the screen columns.
+
+    Returns
+    -------
+    Table
+        Columns region, k, p, x, y, 2ry2x, 2rx2y (and xc+x, yc+y with a center);
+        ``pixels()`` holds all four quadrants.
+
+    Raises
+    ------
+    TypeError
+        If a radius is not a real number or `center` is not a pair of them.
+    ValueError
+        If a radius is negative or too large for exact 64-bit decision parameters,
+        or the center is out of range.
+
+    Examples
+    --------
     >>> t = midpoint_ellipse(8, 6)
     >>> [(r["region"], r["p"], r["x"], r["y"]) for r in t.rows]  # doctest: +NORMALIZE_WHITESPACE
     [('1', -332, 1, 6), ('1', -224, 2, 6), ('1', -44, 3, 6), ('1', 208, 4, 5),

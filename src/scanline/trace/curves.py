@@ -19,6 +19,7 @@ r  i  x  y
 """
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from .. import _validate as v
 from ..curves.bezier import Bezier
@@ -38,7 +39,7 @@ def _largest_triangle():
     return n
 
 
-def de_casteljau(points, u=0.5):
+def de_casteljau(points: ArrayLike, u: float = 0.5) -> Table:
     """de Casteljau's triangle at u: every intermediate point Pᵢʳ, level by level.
 
     Row ``r``, ``i``, ``x``, ``y`` (``z`` for 3-D points): Pᵢʳ = (1 − u)Pᵢʳ⁻¹ + uPᵢ₊₁ʳ⁻¹,
@@ -46,6 +47,33 @@ def de_casteljau(points, u=0.5):
     :meth:`scanline.curves.Bezier.evaluate` returns.  The first points of each level
     are the control points of the left half of the subdivided curve, the last points
     those of the right half.
+
+    Parameters
+    ----------
+    points : array_like
+        The n + 1 control points of a degree-n Bézier curve, an (n + 1, 2) or
+        (n + 1, 3) array of numbers.
+    u : float, optional
+        The parameter in [0, 1] (default 0.5, the midpoint subdivision).
+
+    Returns
+    -------
+    Table
+        Columns r, i, x, y (and z for 3-D points), one row per point Pᵢʳ.
+
+    Raises
+    ------
+    TypeError
+        If `points` or `u` is not numeric.
+    ValueError
+        If the points are not 2-D or 3-D, their triangle would have more than
+        `MAX_STEPS` rows, or `u` is outside [0, 1].
+
+    Examples
+    --------
+    >>> t = de_casteljau([(0, 0), (2, 2)])
+    >>> [(r["r"], r["i"], r["x"], r["y"]) for r in t.rows]
+    [(0, 0, 0.0, 0.0), (0, 1, 2.0, 2.0), (1, 0, 1.0, 1.0)]
     """
     curve = Bezier(points)
     if curve.dimension > 3:
@@ -67,7 +95,7 @@ def de_casteljau(points, u=0.5):
                  ["r", "i", *axes], rows, notes=notes)
 
 
-def cox_de_boor(knots, order, u):
+def cox_de_boor(knots: ArrayLike, order: int, u: float) -> Table:
     """The Cox–de Boor recursion at u: B_{k,r}(u) for r = 1 … d on u's knot span.
 
     Rows ``r``, ``k``, ``interval`` (the support [u_k, u_{k+r})) and ``B`` = B_{k,r}(u),
@@ -84,6 +112,28 @@ def cox_de_boor(knots, order, u):
         d ≥ 1.
     u : float
         A parameter in [u₀, u_last].
+
+    Returns
+    -------
+    Table
+        Columns r, k, interval, B, one row per blending function of the triangle.
+
+    Raises
+    ------
+    TypeError
+        If `knots`, `order` or `u` is not numeric.
+    ValueError
+        If `order` < 1, the knots are too few, not finite, decreasing or all equal,
+        or `u` is outside [u₀, u_last].
+
+    Examples
+    --------
+    Order d = 2 (linear pieces) on uniform knots; u = 1.5 lies in span 1, where both
+    blending functions weigh 1/2:
+
+    >>> t = cox_de_boor([0, 1, 2, 3], 2, 1.5)
+    >>> [(r["r"], r["k"], r["interval"], r["B"]) for r in t.rows]
+    [(1, 1, '[1, 2)', 1.0), (2, 0, '[0, 2)', 0.5), (2, 1, '[1, 3)', 0.5)]
     """
     order = v.positive_int("order", order, minimum=1)
     try:

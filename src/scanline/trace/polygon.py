@@ -8,11 +8,14 @@ edge table, ``step_active`` moves the active edge list up one scan line and
 ``fill_row`` paints the row's spans, exactly as :func:`scanline.draw.polygon` does.
 """
 
+from typing import Sequence, Union
+
 import numpy as np
 
 from ..draw.polygon import _rule
 from ..errors import ArgumentValueError
 from ..geometry.contours import contours
+from .._typing import Points, Rule
 from .table import Table, _cell
 
 #: Largest bounding box traced, in pixels (the table lists every scan line and the
@@ -37,7 +40,7 @@ def _point(x, y):
     return f"({_cell(float(x))}, {_cell(float(y))})"
 
 
-def scan_line_fill(points, rule="even-odd"):
+def scan_line_fill(points: Union[Points, Sequence[Points]], rule: Rule = "even-odd") -> Table:
     """The scan-line polygon fill step by step.
 
     ``table.edges`` is the sorted edge table: one row per non-horizontal edge, in
@@ -54,6 +57,21 @@ def scan_line_fill(points, rule="even-odd"):
     points : array_like, shape (N, 2), or a list of contours
         The polygon, device coordinates (as :func:`scanline.draw.polygon`).
     rule : {"even-odd", "nonzero"}
+        The inside-outside rule (default "even-odd").
+
+    Returns
+    -------
+    Table
+        One row per scan line (columns y, active, winding, spans), with the sorted
+        edge table in ``table.edges``.
+
+    Raises
+    ------
+    TypeError
+        If `points` is not an array of numbers.
+    ValueError
+        If `rule` is not one of the two rules, or the polygon's bounding box has
+        more than `MAX_PIXELS` pixels.
 
     Notes
     -----

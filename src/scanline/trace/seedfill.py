@@ -1,8 +1,11 @@
 """Step table of the scan-line seed fill (notes, chapter 2, Q.8)."""
 
+from typing import Sequence, Union
+
 import numpy as np
 
 from .. import _validate as v
+from .._typing import Connectivity
 from ..errors import ArgumentTypeError, ArgumentValueError
 from .table import Table
 
@@ -107,7 +110,8 @@ def _push_note(connectivity):
                                               if connectivity == 8 else ""))
 
 
-def flood_fill(x, y, grid=EXAMPLE_GRID, connectivity=4):
+def flood_fill(x: int, y: int, grid: Union[str, Sequence[str]] = EXAMPLE_GRID,
+               connectivity: Connectivity = 4) -> Table:
     """The scan-line seed fill step by step, flood-filling the region of ``grid``
     that holds the seed's character.
 
@@ -127,6 +131,21 @@ def flood_fill(x, y, grid=EXAMPLE_GRID, connectivity=4):
         Rows of characters, top row first; a string separates rows with newlines or
         '/'.  Each character is a color.  Default: :data:`EXAMPLE_GRID`.
     connectivity : {4, 8}
+        4 (the default) fills through edges only, 8 through corners too.
+
+    Returns
+    -------
+    Table
+        Columns k, x, y, span, pushed, stack, one row per seed popped; ``pixels()``
+        is the set of pixels filled.
+
+    Raises
+    ------
+    TypeError
+        If the seed is not numeric, `grid` is not text.
+    ValueError
+        If the seed lies outside the grid, the grid's rows differ in length or it has
+        more than `MAX_CELLS` cells, or `connectivity` is not 4 or 8.
 
     Examples
     --------
@@ -155,7 +174,8 @@ def flood_fill(x, y, grid=EXAMPLE_GRID, connectivity=4):
     return Table(f"Scan-line seed fill from ({x}, {y})", _COLUMNS, rows, notes, pixels)
 
 
-def boundary_fill(x, y, grid=EXAMPLE_GRID, boundary="#", connectivity=4):
+def boundary_fill(x: int, y: int, grid: Union[str, Sequence[str]] = EXAMPLE_GRID,
+                  boundary: str = "#", connectivity: Connectivity = 4) -> Table:
     """The scan-line boundary fill step by step: the region around the seed bounded
     by the characters of ``boundary`` (each character of the grid is a color).
 
@@ -174,6 +194,21 @@ def boundary_fill(x, y, grid=EXAMPLE_GRID, boundary="#", connectivity=4):
     boundary : str
         The boundary color(s): one or more characters of the grid.
     connectivity : {4, 8}
+        4 (the default) fills through edges only, 8 through corners too.
+
+    Returns
+    -------
+    Table
+        Columns k, x, y, span, pushed, stack, one row per seed popped; ``pixels()``
+        is the set of pixels filled.
+
+    Raises
+    ------
+    TypeError
+        If the seed is not numeric, `grid` is not text, or `boundary` is not a non-empty string.
+    ValueError
+        If the seed lies outside the grid, the grid's rows differ in length or it has
+        more than `MAX_CELLS` cells, or `connectivity` is not 4 or 8, or no character of `boundary` occurs in the grid.
 
     Notes
     -----

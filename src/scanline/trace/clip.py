@@ -5,6 +5,8 @@ runs (:mod:`scanline._kernels.clip`), so the table and the clipped segment canno
 disagree.
 """
 
+from typing import Optional, Sequence, Tuple, Union
+
 import numpy as np
 
 from .. import _validate as v
@@ -12,9 +14,12 @@ from .._kernels import clip as k
 from .._kernels._jit import python
 from .._kernels.variants import token
 from ..clip import window as w
+from .._typing import Points
 from .table import Table, _cell
 
 DEFAULT_WINDOW = (0.0, 0.0, 10.0, 10.0)
+#: A clip window: a rectangle (xmin, ymin, xmax, ymax) or a polygon's vertices.
+_Window = Union[Tuple[float, float, float, float], Points]
 
 _BITS = {k.LEFT: "left", k.RIGHT: "right", k.BELOW: "below", k.ABOVE: "above"}
 _KINDS = {k.KIND_PARALLEL_INSIDE: "parallel, inside", k.KIND_PARALLEL_OUTSIDE:
@@ -70,13 +75,39 @@ def _result(ok, out):
     return r, f"result: visible from ({_cell(r[0])}, {_cell(r[1])}) to ({_cell(r[2])}, {_cell(r[3])})"
 
 
-def cohen_sutherland(x0, y0, x1, y1, window=DEFAULT_WINDOW):
+def cohen_sutherland(x0: float, y0: float, x1: float, y1: float,
+                     window: _Window = DEFAULT_WINDOW) -> Table:
     """Cohen-Sutherland step by step: the region codes of both endpoints, their
     AND, and at each step the trivial accept, the trivial reject or the boundary
     an outside endpoint is moved to.
 
     Region codes are written bit 4 to bit 1: above, below, right, left (notes,
     chapter 4, Q.3).  ``table.result`` is the clipped (x0, y0, x1, y1) or None.
+
+    Parameters
+    ----------
+    x0, y0 : float
+        The segment's first endpoint (world coordinates).
+    x1, y1 : float
+        Its second endpoint.
+    window : (xmin, ymin, xmax, ymax), optional
+        The clip rectangle (default `DEFAULT_WINDOW`, 0..10 on both axes).
+
+    Returns
+    -------
+    Table
+        One row per step of the algorithm; ``table.result`` is the clipped segment (x0, y0, x1, y1) as floats, or
+        None when nothing is visible.
+
+    Raises
+    ------
+    TypeError
+        If a coordinate is not a real number or the window is not numeric.
+    ValueError
+        If a coordinate is beyond the supported range or the window is degenerate.
+
+    Examples
+    --------
 
     >>> t = cohen_sutherland(-5, 2, 15, 22, window=(0, 0, 10, 10))
     >>> for r in t.rows:
@@ -129,13 +160,39 @@ def _parametric_rows(log, names):
     return rows
 
 
-def liang_barsky(x0, y0, x1, y1, window=DEFAULT_WINDOW):
+def liang_barsky(x0: float, y0: float, x1: float, y1: float,
+                 window: _Window = DEFAULT_WINDOW) -> Table:
     """Liang-Barsky step by step: for k = 1..4 (left, right, bottom, top) the
     p_k and q_k, t = q_k / p_k, whether the line enters (p_k < 0) or leaves
     (p_k > 0), and u1 = max(0, entering t), u2 = min(1, leaving t) so far.
 
     p1 = -dx, q1 = x0 - xmin; p2 = dx, q2 = xmax - x0; p3 = -dy, q3 = y0 - ymin;
     p4 = dy, q4 = ymax - y0.  The segment is visible from u1 to u2 if u1 <= u2.
+
+    Parameters
+    ----------
+    x0, y0 : float
+        The segment's first endpoint (world coordinates).
+    x1, y1 : float
+        Its second endpoint.
+    window : (xmin, ymin, xmax, ymax), optional
+        The clip rectangle (default `DEFAULT_WINDOW`, 0..10 on both axes).
+
+    Returns
+    -------
+    Table
+        Columns k, edge, p, q, t, kind, u1, u2, one row per boundary; ``table.result`` is the clipped segment (x0, y0, x1, y1) as floats, or
+        None when nothing is visible.
+
+    Raises
+    ------
+    TypeError
+        If a coordinate is not a real number or the window is not numeric.
+    ValueError
+        If a coordinate is beyond the supported range or the window is degenerate.
+
+    Examples
+    --------
 
     >>> t = liang_barsky(-5, 2, 15, 12, window=(0, 0, 10, 10))
     >>> [(r["k"], r["p"], r["q"], r["t"], r["u1"], r["u2"]) for r in t.rows]
@@ -161,7 +218,9 @@ def liang_barsky(x0, y0, x1, y1, window=DEFAULT_WINDOW):
     return t
 
 
-def cyrus_beck(x0, y0, x1, y1, window=DEFAULT_WINDOW, window_polygon=None):
+def cyrus_beck(x0: float, y0: float, x1: float, y1: float,
+               window: _Window = DEFAULT_WINDOW,
+               window_polygon: Optional[Sequence[float]] = None) -> Table:
     """Cyrus-Beck step by step, as the notes' Table 1: for each clip edge i its
     outward normal N_i, the point PE_i (the edge's first vertex), P0 - PE_i,
     N_i.D, t = N_i.(P0 - PE_i) / -N_i.D, and whether the crossing is potentially
@@ -170,6 +229,33 @@ def cyrus_beck(x0, y0, x1, y1, window=DEFAULT_WINDOW, window_polygon=None):
     ``window`` is a rectangle or a convex polygon (either orientation; it is
     walked counterclockwise); ``window_polygon``, if given, is the polygon as a
     flat list x0, y0, x1, y1, ... (the command line's ``--window-polygon``).
+
+    Parameters
+    ----------
+    x0, y0 : float
+        The segment's first endpoint (world coordinates).
+    x1, y1 : float
+        Its second endpoint.
+    window : (xmin, ymin, xmax, ymax) or convex polygon (M, 2), optional
+        The clip window (default `DEFAULT_WINDOW`).
+    window_polygon : sequence of float, optional
+        The convex window as a flat list x0, y0, x1, y1, ...; it replaces `window`.
+
+    Returns
+    -------
+    Table
+        One row per clip edge; ``table.result`` is the clipped segment (x0, y0, x1, y1) as floats, or
+        None when nothing is visible.
+
+    Raises
+    ------
+    TypeError
+        If a coordinate is not a real number or the window is not numeric.
+    ValueError
+        If a coordinate is beyond the supported range or the window is degenerate, not convex, or `window_polygon` lists an odd count of numbers.
+
+    Examples
+    --------
 
     >>> t = cyrus_beck(-5, 2, 15, 12, window=(0, 0, 10, 10))
     >>> [(r["edge"], r["N"], r["t"], r["kind"]) for r in t.rows]
@@ -213,7 +299,8 @@ _SH_CASES = {(False, True): "out -> in: output I and P", (True, True): "in -> in
              (True, False): "in -> out: output I", (False, False): "out -> out: no output"}
 
 
-def sutherland_hodgman(points, window=DEFAULT_WINDOW, window_polygon=None):
+def sutherland_hodgman(points: Points, window: _Window = DEFAULT_WINDOW,
+                       window_polygon: Optional[Sequence[float]] = None) -> Table:
     """Sutherland-Hodgman polygon clipping step by step: the polygon is clipped by
     one window boundary after another, and for each boundary every edge S -> P of
     the polygon so far falls in one of the four cases of Hearn & Baker (section 6-8):
@@ -233,9 +320,24 @@ def sutherland_hodgman(points, window=DEFAULT_WINDOW, window_polygon=None):
     ----------
     points : array_like, shape (N, 2)
         The subject polygon (one contour, either orientation).
-    window : (xmin, ymin, xmax, ymax) or convex polygon (M, 2)
+    window : (xmin, ymin, xmax, ymax) or convex polygon (M, 2), optional
+        The clip window (default `DEFAULT_WINDOW`).
     window_polygon : list of numbers, optional
         The convex window as a flat list x0, y0, x1, y1, ... (as :func:`cyrus_beck`).
+
+    Returns
+    -------
+    Table
+        One row per polygon edge per stage; ``table.stages`` lists the polygon after
+        each stage and ``table.result`` the clipped polygon as a list of (x, y).
+
+    Raises
+    ------
+    TypeError
+        If `points` or the window is not numeric.
+    ValueError
+        If the window is degenerate or not convex, or `window_polygon` lists an odd
+        count of numbers.
 
     Examples
     --------

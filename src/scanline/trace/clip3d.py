@@ -6,16 +6,21 @@ as plain Python (:func:`scanline._kernels._jit.python`), so the table and the
 clipped segment come from the same code and no compilation is waited for.
 """
 
+from typing import Optional, Sequence, Tuple, Union
+
 import numpy as np
 
 from .. import _validate as v
 from .._kernels import clip3d as k
 from ..clip import three_d
-from ..clip.volumes import UNIT_CUBE, volume as as_volume
+from ..clip.volumes import UNIT_CUBE, Volume, volume as as_volume
 from .clip import _KINDS
 from .table import Table, _cell
 
 DEFAULT_VOLUME = ((0.0, 0.0, 0.0), (10.0, 10.0, 10.0))
+#: A 3-D point, and a clip volume: a Volume or a box given as its corners (lo, hi).
+_Point3 = Sequence[float]
+_VolumeArg = Union[Volume, Tuple[_Point3, _Point3]]
 
 
 def code_string(code, planes=6):
@@ -79,7 +84,8 @@ def _title(name, start, w):
     return f"{name} clip {_point(start[0, :n])} -> {_point(start[1, :n])}"
 
 
-def cohen_sutherland_3d(p0, p1, volume=None, w=None):
+def cohen_sutherland_3d(p0: _Point3, p1: _Point3, volume: Optional[_VolumeArg] = None,
+                        w: Optional[Tuple[float, float]] = None) -> Table:
     """3-D Cohen-Sutherland step by step: the six-bit region codes of both
     endpoints, their AND, and at each step the trivial accept or reject or the
     plane an outside endpoint is moved to.
@@ -95,6 +101,34 @@ def cohen_sutherland_3d(p0, p1, volume=None, w=None):
     0 <= x, y, z <= w, clipped before the divide.  ``table.result`` is the clipped
     pair of points or None.
 
+    Parameters
+    ----------
+    p0, p1 : (float, float, float)
+        The segment's endpoints (x, y, z).
+    volume : Volume or (lo, hi), optional
+        The clip volume: a :class:`scanline.clip.volumes.Volume` or a box given by
+        its corners ((xmin, ymin, zmin), (xmax, ymax, zmax)); default
+        `DEFAULT_VOLUME` (0..10 on each axis), or the unit cube when `w` is given.
+    w : (float, float), optional
+        Homogeneous coordinates (w0, w1) of the endpoints; None (the default) clips
+        the points as they are.
+
+    Returns
+    -------
+    Table
+        Columns step, code0, code1, and, decision, point, one row per step; ``table.result`` is the clipped pair of points (x, y, z, with w when `w`
+        is given) or None when nothing is visible.
+
+    Raises
+    ------
+    TypeError
+        If a coordinate is not a real number or `volume` is neither a Volume nor a
+        pair of corners.
+    ValueError
+        If the volume is degenerate.
+
+    Examples
+    --------
     >>> t = cohen_sutherland_3d((-5, 2, 5), (15, 22, 5))
     >>> for r in t.rows:
     ...     print(r["code0"], r["code1"], r["decision"], r["point"])
@@ -136,7 +170,8 @@ def cohen_sutherland_3d(p0, p1, volume=None, w=None):
     return t
 
 
-def liang_barsky_3d(p0, p1, volume=None, w=None):
+def liang_barsky_3d(p0: _Point3, p1: _Point3, volume: Optional[_VolumeArg] = None,
+                    w: Optional[Tuple[float, float]] = None) -> Table:
     """3-D Liang-Barsky step by step: for each plane k the p_k and q_k (for a box
     p1 = -dx, q1 = x0 - xmin, p2 = dx, q2 = xmax - x0, ..., p5 = -dz,
     q5 = z0 - zmin, p6 = dz, q6 = zmax - z0), t = q_k / p_k, entering (p_k < 0)
@@ -144,6 +179,34 @@ def liang_barsky_3d(p0, p1, volume=None, w=None):
     :func:`cohen_sutherland_3d` (then p_k and q_k are those of the homogeneous
     planes, e.g. q = w0 - x0 for x <= w).
 
+    Parameters
+    ----------
+    p0, p1 : (float, float, float)
+        The segment's endpoints (x, y, z).
+    volume : Volume or (lo, hi), optional
+        The clip volume: a :class:`scanline.clip.volumes.Volume` or a box given by
+        its corners ((xmin, ymin, zmin), (xmax, ymax, zmax)); default
+        `DEFAULT_VOLUME` (0..10 on each axis), or the unit cube when `w` is given.
+    w : (float, float), optional
+        Homogeneous coordinates (w0, w1) of the endpoints; None (the default) clips
+        the points as they are.
+
+    Returns
+    -------
+    Table
+        Columns k, plane, p, q, t, kind, u1, u2, one row per plane; ``table.result`` is the clipped pair of points (x, y, z, with w when `w`
+        is given) or None when nothing is visible.
+
+    Raises
+    ------
+    TypeError
+        If a coordinate is not a real number or `volume` is neither a Volume nor a
+        pair of corners.
+    ValueError
+        If the volume is degenerate.
+
+    Examples
+    --------
     >>> t = liang_barsky_3d((-5, 2, 5), (15, 12, 5))
     >>> [(r["k"], r["p"], r["q"], r["u1"], r["u2"]) for r in t.rows][:2]
     [(1, -20.0, -5.0, 0.25, 1.0), (2, 20.0, 15.0, 0.25, 0.75)]

@@ -8,12 +8,20 @@ faces stay arrays; :attr:`Mesh.faces` gives them back as an (F, n) array when al
 faces have n vertices, else as a list.
 """
 
+import os
+from typing import TYPE_CHECKING, Any, Iterable, List, Optional, Tuple, Union
+
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
+
+from .._typing import Color
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
 from ..transform3d.arrays import finite, real_array
+
+if TYPE_CHECKING:
+    from .tables import PolygonTables
 
 #: Default tolerance of the planarity test, relative to a face's size.
 PLANAR_TOLERANCE = 1e-9
@@ -215,8 +223,10 @@ class Mesh:
     [[0.0, 0.0, 2.0, 0.0]]
     """
 
-    def __init__(self, vertices, faces, colors=None, normals=None, color_on=None, name=None,
-                 uv=None, material=None):
+    def __init__(self, vertices: ArrayLike, faces: Union[ArrayLike, "Flat"],
+                 colors: Union[Color, ArrayLike, None] = None, normals: Optional[ArrayLike] = None,
+                 color_on: Optional[str] = None, name: Optional[str] = None,
+                 uv: Optional[ArrayLike] = None, material: Any = None) -> None:
         verts = real_array("vertices", vertices, "(V, 3)")
         if verts.ndim == 1 and verts.size == 0:
             verts = verts.reshape(0, 3)
@@ -276,15 +286,66 @@ class Mesh:
 
     # -- structure ------------------------------------------------------------------------
     @property
-    def face_count(self):
+    def face_count(self) -> int:
+        """The number of faces, F.
+
+        Returns
+        -------
+        int
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> square = sl.mesh.Mesh([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)], [[0, 1, 2, 3]])
+        >>> square.face_count
+        1
+        """
         return len(self.face_offsets) - 1
 
     @property
-    def face_sizes(self):
+    def face_sizes(self) -> NDArray[np.int64]:
+        """The number of vertices of each face, (F,) int64.
+
+        Returns
+        -------
+        numpy.ndarray
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> square = sl.mesh.Mesh([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)], [[0, 1, 2, 3]])
+        >>> square.face_sizes.tolist()
+        [4]
+        """
         return np.diff(self.face_offsets)
 
-    def face(self, i):
-        """The vertex indices of face ``i`` (negative: counted from the end)."""
+    def face(self, i: int) -> NDArray[np.int64]:
+        """The vertex indices of face ``i`` (negative: counted from the end).
+
+        Parameters
+        ----------
+        i : int
+            A face number, 0 to F - 1, or -F to -1 counted from the end.
+
+        Returns
+        -------
+        numpy.ndarray
+            The face's vertex indices, (n,) int64, in their counterclockwise order.
+
+        Raises
+        ------
+        ArgumentTypeError
+            If ``i`` is not an integer.
+        ArgumentValueError
+            If ``i`` is not a face number of this mesh.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> square = sl.mesh.Mesh([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)], [[0, 1, 2, 3]])
+        >>> square.face(-1).tolist()
+        [0, 1, 2, 3]
+        """
         n = self.face_count
         if isinstance(i, (bool, np.bool_)) or not isinstance(i, (int, np.integer)):
             raise ArgumentTypeError(f"i must be an integer face number, got {v._show(i)}")
@@ -295,9 +356,21 @@ class Mesh:
         return self.face_indices[self.face_offsets[i]:self.face_offsets[i + 1]]
 
     @property
-    def faces(self):
+    def faces(self) -> Union[NDArray[np.int64], List[NDArray[np.int64]]]:
         """The faces: an (F, n) int64 array when every face has n vertices, else a
-        list of index arrays."""
+        list of index arrays.
+
+        Returns
+        -------
+        numpy.ndarray or list of numpy.ndarray
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> square = sl.mesh.Mesh([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)], [[0, 1, 2, 3]])
+        >>> square.faces.tolist()
+        [[0, 1, 2, 3]]
+        """
         sizes = self.face_sizes
         if (sizes == sizes[0]).all():
             return self.face_indices.reshape(-1, int(sizes[0]))
@@ -312,17 +385,45 @@ class Mesh:
         return np.stack([idx, idx[nxt]], axis=1), owner
 
     @property
-    def edges(self):
+    def edges(self) -> NDArray[np.int64]:
         """The distinct edges, (E, 2) int64, each (i, j) with i < j, sorted.  Computed
-        once (the edge table of :meth:`polygon_tables`)."""
+        once (the edge table of :meth:`polygon_tables`).
+
+        Returns
+        -------
+        numpy.ndarray
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> square = sl.mesh.Mesh([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)], [[0, 1, 2, 3]])
+        >>> square.edges.tolist()
+        [[0, 1], [0, 3], [1, 2], [2, 3]]
+        """
         if self._edges is None:
             half, _ = self._half_edges()
             self._edges = np.unique(np.sort(half, axis=1), axis=0)
         return self._edges
 
-    def edge_faces(self):
+    def edge_faces(self) -> Tuple[NDArray[np.int64], NDArray[np.int64]]:
         """For each edge of :attr:`edges`, the faces it borders: an (E, 2) array, -1
-        where an edge borders one face only, and the count of faces per edge."""
+        where an edge borders one face only, and the count of faces per edge.
+
+        Returns
+        -------
+        faces : numpy.ndarray
+            (E, 2) int64: the first two faces bordering each edge, -1 where none.
+        count : numpy.ndarray
+            (E,) int64: how many faces border each edge.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> square = sl.mesh.Mesh([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)], [[0, 1, 2, 3]])
+        >>> pairs, count = square.edge_faces()
+        >>> pairs.tolist(), count.tolist()
+        ([[0, -1], [0, -1], [0, -1], [0, -1]], [1, 1, 1, 1])
+        """
         half, owner = self._half_edges()
         key = np.sort(half, axis=1)
         edges = self.edges
@@ -360,6 +461,17 @@ class Mesh:
         (x, y, z) is inside (behind) the plane when A x + B y + C z + D < 0 and in
         front when > 0.
 
+        Parameters
+        ----------
+        tolerance : float, optional
+            The largest distance of a vertex from its face's plane, relative to the
+            face's size (>= 0).
+
+        Returns
+        -------
+        numpy.ndarray
+            (F, 4) float64: (A, B, C, D) of each face.
+
         Raises
         ------
         ArgumentValueError
@@ -372,6 +484,13 @@ class Mesh:
         Hearn & Baker, section 10-1, "plane equations" (eqs. 10-1 to 10-5).  Newell's
         method is Sutherland, Sproull and Schumacker's (1974) for polygons with more
         than three vertices.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> square = sl.mesh.Mesh([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)], [[0, 1, 2, 3]])
+        >>> square.plane_equations().tolist()
+        [[0.0, 0.0, 2.0, 0.0]]
         """
         t = v.number("tolerance", tolerance)
         if t < 0:
@@ -403,8 +522,26 @@ class Mesh:
                 "triangles (Mesh.triangulated()) or pass a larger tolerance")
         return planes + 0.0
 
-    def planarity(self, planes=None):
-        """Each face's largest vertex distance from its (Newell) plane, (F,)."""
+    def planarity(self, planes: Optional[NDArray[np.float64]] = None) -> NDArray[np.float64]:
+        """Each face's largest vertex distance from its (Newell) plane, (F,).
+
+        Parameters
+        ----------
+        planes : numpy.ndarray, shape (F, 4), optional
+            The faces' planes (A, B, C, D); Newell's planes when None.
+
+        Returns
+        -------
+        numpy.ndarray
+            (F,) float64 distances (0 for a degenerate face).
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> square = sl.mesh.Mesh([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)], [[0, 1, 2, 3]])
+        >>> square.planarity().tolist()
+        [0.0]
+        """
         if planes is None:
             planes = _newell(self.vertices, self.face_indices, self.face_offsets)
         length = np.sqrt((planes[:, :3] ** 2).sum(axis=1))
@@ -416,14 +553,63 @@ class Mesh:
         np.maximum.at(out, owner, np.nan_to_num(d, nan=0.0))
         return out
 
-    def face_normals(self):
-        """Unit outward normals of the faces, (F, 3)."""
+    def face_normals(self) -> NDArray[np.float64]:
+        """Unit outward normals of the faces, (F, 3).
+
+        Returns
+        -------
+        numpy.ndarray
+            (F, 3) float64: each face's plane normal (A, B, C) scaled to length 1.
+
+        Raises
+        ------
+        ArgumentValueError
+            If a face is degenerate or not planar (see :meth:`plane_equations`).
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> square = sl.mesh.Mesh([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)], [[0, 1, 2, 3]])
+        >>> square.face_normals().tolist()
+        [[0.0, 0.0, 1.0]]
+        """
         p = self.plane_equations()[:, :3]
         return p / np.sqrt((p * p).sum(axis=1))[:, None]
 
-    def inside(self, points):
+    def inside(self, points: ArrayLike) -> Union[bool, NDArray[np.bool_]]:
         """Whether each point is inside the mesh, by Hearn & Baker's test: behind
-        every face plane (A x + B y + C z + D < 0).  Exact for closed convex meshes."""
+        every face plane (A x + B y + C z + D < 0).  Exact for closed convex meshes.
+
+        Parameters
+        ----------
+        points : array_like, shape (3,) or (N, 3)
+            One point (x, y, z) or N of them.
+
+        Returns
+        -------
+        bool or numpy.ndarray
+            A bool for one point, else an (N,) bool array.
+
+        Raises
+        ------
+        ArgumentValueError
+            If a face is degenerate or not planar (see :meth:`plane_equations`).
+
+        Notes
+        -----
+        Hearn & Baker, section 10-1, "plane equations".
+
+        Examples
+        --------
+        The square's plane is 2 z = 0, its normal +z: below it is behind.
+
+        >>> import scanline as sl
+        >>> square = sl.mesh.Mesh([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)], [[0, 1, 2, 3]])
+        >>> square.inside((0.5, 0.5, -1))
+        True
+        >>> square.inside([(0, 0, -1), (0, 0, 1)]).tolist()
+        [True, False]
+        """
         from ..transform3d.arrays import points as point_array
 
         p, single = point_array("points", points)
@@ -432,12 +618,40 @@ class Mesh:
         return bool(inside[0]) if single else inside
 
     @property
-    def bounds(self):
-        """``(lo, hi)``: the corners of the bounding box, two (3,) arrays."""
+    def bounds(self) -> Tuple[NDArray[np.float64], NDArray[np.float64]]:
+        """``(lo, hi)``: the corners of the bounding box, two (3,) arrays.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> square = sl.mesh.Mesh([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)], [[0, 1, 2, 3]])
+        >>> [corner.tolist() for corner in square.bounds]
+        [[0.0, 0.0, 0.0], [1.0, 1.0, 0.0]]
+        """
         return self.vertices.min(axis=0), self.vertices.max(axis=0)
 
-    def polygon_tables(self):
-        """Hearn & Baker's polygon tables of this mesh (:class:`PolygonTables`)."""
+    def polygon_tables(self) -> "PolygonTables":
+        """Hearn & Baker's polygon tables of this mesh (:class:`PolygonTables`).
+
+        Returns
+        -------
+        PolygonTables
+
+        Notes
+        -----
+        Hearn & Baker, section 10-1, "polygon tables".
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> square = sl.mesh.Mesh([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)], [[0, 1, 2, 3]])
+        >>> square.polygon_tables()
+        <PolygonTables: 4 vertices, 4 edges, 1 surfaces>
+        """
         from .tables import PolygonTables
 
         return PolygonTables.from_mesh(self)
@@ -450,11 +664,31 @@ class Mesh:
         new.normals = normals
         return new
 
-    def transformed(self, matrix):
+    def transformed(self, matrix: ArrayLike) -> "Mesh":
         """This mesh moved by a 4x4 transformation (:mod:`scanline.transform3d`);
         normals follow by the inverse transpose of its linear part.  A reflection
         turns the faces inside out, so their order is reversed to stay
-        counterclockwise from outside."""
+        counterclockwise from outside.
+
+        Parameters
+        ----------
+        matrix : array_like, shape (4, 4)
+            A homogeneous transformation (or what :func:`scanline.transform3d.compose`
+            takes).
+
+        Returns
+        -------
+        Mesh
+            A new mesh; this one is unchanged.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> square = sl.mesh.Mesh([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)], [[0, 1, 2, 3]])
+        >>> up = square.transformed(sl.transform3d.translation(0, 0, 5))
+        >>> up.vertices[:, 2].tolist()
+        [5.0, 5.0, 5.0, 5.0]
+        """
         from .. import transform3d as t3
 
         m = t3.compose(matrix)
@@ -479,22 +713,80 @@ class Mesh:
             new.face_indices = _reversed_faces(self.face_indices, self.face_offsets)
         return new
 
-    def translated(self, offset):
-        """This mesh moved by ``offset`` (dx, dy, dz)."""
+    def translated(self, offset: ArrayLike) -> "Mesh":
+        """This mesh moved by ``offset`` (dx, dy, dz).
+
+        Parameters
+        ----------
+        offset : array_like, shape (3,)
+            The displacement (dx, dy, dz).
+
+        Returns
+        -------
+        Mesh
+            A new mesh; this one is unchanged.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> square = sl.mesh.Mesh([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)], [[0, 1, 2, 3]])
+        >>> square.translated((1, 2, 3)).bounds[0].tolist()
+        [1.0, 2.0, 3.0]
+        """
         from .. import transform3d as t3
         from ..transform3d.arrays import vector
 
         return self.transformed(t3.translation(*vector("offset", offset)))
 
-    def colored(self, colors, color_on=None):
-        """A copy with other colors (see the constructor)."""
+    def colored(self, colors: Union[Color, ArrayLike],
+                color_on: Optional[str] = None) -> "Mesh":
+        """A copy with other colors (see the constructor).
+
+        Parameters
+        ----------
+        colors : color or sequence of colors or array_like
+            One color for every face, or one per face or per vertex.
+        color_on : {"face", "vertex"}, optional
+            Which elements the colors belong to, when F == V.
+
+        Returns
+        -------
+        Mesh
+            A new mesh; this one is unchanged.
+
+        Raises
+        ------
+        ArgumentValueError
+            If the number of colors is neither F nor V.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> square = sl.mesh.Mesh([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)], [[0, 1, 2, 3]])
+        >>> red = square.colored("red")
+        >>> red.colors.tolist(), red.color_on
+        ([[255, 0, 0, 255]], 'face')
+        """
         new = self._like(self.vertices, self.normals)
         new._set_colors(colors, color_on)
         return new
 
-    def triangulated(self):
+    def triangulated(self) -> "Mesh":
         """The mesh with every face split into a fan of triangles from its first
-        vertex (exact for convex faces); face colors go to each face's triangles."""
+        vertex (exact for convex faces); face colors go to each face's triangles.
+
+        Returns
+        -------
+        Mesh
+            A new mesh of triangles; this one is unchanged.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> square = sl.mesh.Mesh([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)], [[0, 1, 2, 3]])
+        >>> square.triangulated().faces.tolist()
+        [[0, 1, 2], [0, 2, 3]]
+        """
         idx, off = self.face_indices, self.face_offsets
         sizes = self.face_sizes
         tri_per = sizes - 2
@@ -511,12 +803,23 @@ class Mesh:
         return new
 
     @staticmethod
-    def from_any(obj, name=None):
+    def from_any(obj: Any, name: Optional[str] = None) -> "Mesh":
         """A mesh of ``obj``: a trimesh ``Trimesh`` or ``Scene``, a meshio ``Mesh``, an
         Open3D ``TriangleMesh`` or any object with ``vertices`` and ``faces`` arrays
         (their normals, colors and uv where they have them); a Mesh as it is.  The
         packages are not imported unless ``obj`` is theirs
         (:func:`scanline.mesh.convert.from_any`).
+
+        Parameters
+        ----------
+        obj : object
+            The mesh-like object.
+        name : str, optional
+            The new mesh's name.
+
+        Returns
+        -------
+        Mesh
 
         Examples
         --------
@@ -529,9 +832,29 @@ class Mesh:
 
         return from_any(obj, name)
 
-    def save(self, path):
+    def save(self, path: Union[str, "os.PathLike[str]"]) -> None:
         """Write the mesh to an OBJ, PLY, STL, glTF or GLB file (see
-        :func:`scanline.mesh.save`)."""
+        :func:`scanline.mesh.save`).
+
+        Parameters
+        ----------
+        path : str or os.PathLike
+            The file; its extension chooses the format.
+
+        Returns
+        -------
+        None
+
+        Examples
+        --------
+        >>> import os, tempfile
+        >>> import scanline as sl
+        >>> square = sl.mesh.Mesh([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)], [[0, 1, 2, 3]])
+        >>> path = os.path.join(tempfile.mkdtemp(), "square.obj")
+        >>> square.save(path)
+        >>> sl.mesh.load(path).faces.tolist()
+        [[0, 1, 2, 3]]
+        """
         from .files import save
 
         save(self, path)
@@ -587,9 +910,34 @@ def _face_sizes(vertices, indices, offsets):
     return (hi - lo).max(axis=1)
 
 
-def merge(meshes, name=None):
+def merge(meshes: Union[Mesh, Iterable[Mesh]], name: Optional[str] = None) -> Mesh:
     """One mesh holding all of ``meshes`` (their vertices renumbered); colors are
-    kept when every mesh has them on the same kind of element."""
+    kept when every mesh has them on the same kind of element.
+
+    Parameters
+    ----------
+    meshes : Mesh or iterable of Mesh
+        The meshes, at least one.
+    name : str, optional
+        The merged mesh's name.
+
+    Returns
+    -------
+    Mesh
+
+    Raises
+    ------
+    ArgumentTypeError
+        If ``meshes`` is not a non-empty list of meshes.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> tri = sl.mesh.Mesh([(0, 0, 0), (1, 0, 0), (0, 1, 0)], [[0, 1, 2]])
+    >>> both = sl.mesh.merge([tri, tri.translated((0, 0, 1))])
+    >>> both.faces.tolist()
+    [[0, 1, 2], [3, 4, 5]]
+    """
     if isinstance(meshes, Mesh):
         meshes = [meshes]
     if isinstance(meshes, (str, bytes)) or not hasattr(meshes, "__iter__"):

@@ -66,9 +66,15 @@ def dist(tmp_path_factory):
     if not (ROOT / "pyproject.toml").is_file() or not (ROOT / "MANIFEST.in").is_file():
         pytest.skip("not a source checkout")
     peer("build")
+    import fcntl
     out = tmp_path_factory.mktemp("dist")
-    proc = subprocess.run([sys.executable, "-m", "build", "--sdist", "--wheel", "-o", str(out),
-                           str(ROOT)], capture_output=True, text=True, timeout=900)
+    # pytest-xdist's workers each build (a module fixture per worker); the builds share the
+    # checkout's build/ and egg-info folders, so they take turns (a lock beside the
+    # workers' temporary folders)
+    with open(tmp_path_factory.getbasetemp().parent / "build.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        proc = subprocess.run([sys.executable, "-m", "build", "--sdist", "--wheel", "-o",
+                               str(out), str(ROOT)], capture_output=True, text=True, timeout=900)
     assert proc.returncode == 0, proc.stderr[-3000:]
     return next(out.glob("*.tar.gz")), next(out.glob("*.whl"))
 

@@ -69,9 +69,37 @@ def test_pixels_clipped(font):
         if not want:
             assert k.index not in clipped
             continue
-        m = clipped[k.index].bitmap
-        got = {(x0 + c, y0 + h - 1 - r) for r, c in zip(*np.nonzero(m))}
+        m = clipped[k.index].bitmap          # in the clipped glyph's own image
+        cx0, cy0 = clipped[k.index].bitmap_origin
+        got = {(cx0 + c, cy0 + m.shape[0] - 1 - r) for r, c in zip(*np.nonzero(m))}
         assert got == want
+
+
+def test_a_stroke_glyph_far_larger_than_the_window_is_clipped_in_bounded_memory():
+    """A stroke glyph scaled 3000 times (an image of 6e8 pixels) clipped to a 21 x 16
+    window: rasterized only where the window is (the pixels the whole glyph sets there,
+    compared on a 200-times glyph whose whole image is small), and one scaled beyond
+    any image is refused with an error naming the text, never allocated."""
+    def placed(scale):
+        return sl.text.layout("A", 0, 0, font="stroke", height=7 * scale)
+
+    window = (0, 0, 20, 15)
+    for scale in (200, 3000):
+        (g,) = placed(scale)
+        (c,) = sl.clip.text([g], window, mode="stroke")
+        m = c.bitmap
+        assert m.shape[0] * m.shape[1] <= 22 * 17
+        cx0, cy0 = c.bitmap_origin
+        got = {(cx0 + col, cy0 + m.shape[0] - 1 - row) for row, col in zip(*np.nonzero(m))}
+        if scale == 200:     # the whole glyph's image (1400 px high) is small enough
+            full, (x0, y0) = g.bitmap, g.bitmap_origin
+            want = {(x0 + col, y0 + full.shape[0] - 1 - row)
+                    for row, col in zip(*np.nonzero(full))
+                    if 0 <= x0 + col <= 20 and 0 <= y0 + full.shape[0] - 1 - row <= 15}
+            assert got == want and want
+    from scanline.text.glyphcache import stroke_bitmap
+    with pytest.raises(sl.ArgumentValueError, match="text: a stroke glyph's image"):
+        stroke_bitmap([np.array([[0.0, 0.0], [1e5, 1e5]])])
 
 
 def test_bad_text_input():

@@ -26,15 +26,24 @@ def _inside(box: tuple[float, float, float, float], ring: NDArray[np.float64]) -
     return bool(w.contains(ring, np.array([(x0, y0), (x1, y0), (x1, y1), (x0, y1)])).all())
 
 
-def _pixel_mask(glyph: "PlacedGlyph", ring: NDArray[np.float64]) -> NDArray[np.bool_]:
-    """The glyph's bitmap with the pixels whose centers are outside the window off."""
-    mask = np.asarray(glyph.bitmap, bool)
-    x0, y0 = glyph.bitmap_origin
-    h, wd = mask.shape
-    ys, xs = np.mgrid[0:h, 0:wd]
-    centers = np.stack([x0 + xs.ravel(), y0 + (h - 1 - ys).ravel()], axis=1).astype(float)
-    kept: NDArray[np.bool_] = mask & w.contains(ring, centers).reshape(h, wd)
-    return kept
+def _pixel_mask(glyph: "PlacedGlyph", ring: NDArray[np.float64]
+                ) -> tuple[NDArray[np.bool_], tuple[int, int]]:
+    """``(mask, (x0, y0))``: the glyph's pixels whose centers are inside the window, in
+    an image whose bottom-left pixel is (x0, y0).  A stroke glyph is rasterized only
+    where the window's bounding box meets it (a glyph scaled far beyond the window
+    costs no more than the window); only its set pixels' centers are tested."""
+    if glyph.strokes is not None:
+        from ..text.glyphcache import stroke_bitmap
+        box = (*ring.min(0).tolist(), *ring.max(0).tolist())
+        mask, (x0, y0) = stroke_bitmap(glyph.strokes, within=box)
+    else:
+        mask = np.asarray(glyph.bitmap, bool)
+        x0, y0 = glyph.bitmap_origin
+    rows, cols = np.nonzero(mask)
+    centers = np.column_stack([x0 + cols, y0 + (mask.shape[0] - 1 - rows)]).astype(float)
+    kept = np.zeros_like(mask)
+    kept[rows, cols] = w.contains(ring, centers)
+    return kept, (x0, y0)
 
 
 def text(glyphs: Sequence["PlacedGlyph"], window: w.WindowLike,
@@ -113,12 +122,11 @@ def text(glyphs: Sequence["PlacedGlyph"], window: w.WindowLike,
             continue
         c = copy.copy(g)
         if chosen == "pixel":
-            mask = _pixel_mask(g, ring)
+            mask, (x0, y0) = _pixel_mask(g, ring)
             if not mask.any():
                 continue
-            c._bitmap = (mask, g.bitmap_origin)
+            c._bitmap = (mask, (x0, y0))
             rows, cols = np.nonzero(mask)
-            x0, y0 = g.bitmap_origin
             top = y0 + mask.shape[0] - 1
             c.box = (float(x0 + cols.min()), float(top - rows.max()),
                      float(x0 + cols.max()), float(top - rows.min()))
@@ -134,6 +142,6 @@ def text(glyphs: Sequence["PlacedGlyph"], window: w.WindowLike,
             continue
         allpts = np.vstack(parts)
         c.box = tuple(np.concatenate([allpts.min(0), allpts.max(0)]).tolist())
-        c._bitmap = (_pixel_mask(g, ring), g.bitmap_origin)
+        c._bitmap = _pixel_mask(g, ring)
         out.append(c)
     return out

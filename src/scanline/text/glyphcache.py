@@ -52,6 +52,10 @@ def device_contours(font: "Font", gid: int, matrix: NDArray[np.float64], toleran
 def _too_large(font: Optional["Font"], gid: Optional[int], pixels: int, limit: int,
                what: str) -> "ArgumentValueError":
     from ..errors import ArgumentValueError
+    if font is None:
+        return ArgumentValueError(
+            f"text: {what} would take {pixels:,} pixels, more than the {limit:,} scanline "
+            "allocates for one glyph; draw the text smaller (a smaller height or scale)")
     names = getattr(font, "_names", None)
     name = names[gid] if names is not None and gid is not None and gid < len(names) else gid
     return ArgumentValueError(
@@ -102,18 +106,33 @@ def _runs(mask: NDArray[np.uint8]) -> NDArray[np.int64]:
     return runs
 
 
-def stroke_bitmap(strokes: list[NDArray[np.float64]]) -> tuple[NDArray[np.bool_], tuple[int, int]]:
+def stroke_bitmap(strokes: list[NDArray[np.float64]],
+                  within: Optional[tuple[float, float, float, float]] = None
+                  ) -> tuple[NDArray[np.bool_], tuple[int, int]]:
     """``(mask, (x0, y0))``: the pixels :func:`scanline.draw.lines` sets for the
     polylines ``strokes`` (device coordinates), a bool array in image order whose
-    bottom-left pixel is ``(x0, y0)``."""
+    bottom-left pixel is ``(x0, y0)``; with ``within`` (xmin, ymin, xmax, ymax), only
+    the part of it in that box (the lines clip themselves to the smaller image, so its
+    pixels are the whole image's there).  An image over MAX_GLYPH_PIXELS is refused
+    before it is allocated."""
     from ..draw.lines import lines
     from ..framebuffer import FrameBuffer
     pts = np.vstack(strokes) if strokes else np.zeros((0, 2))
     if len(pts) == 0:
         return np.zeros((0, 0), bool), (0, 0)
-    lo = np.floor(pts.min(0) + 0.5).astype(int)
-    hi = np.floor(pts.max(0) + 0.5).astype(int)
-    fb = FrameBuffer(int(hi[0] - lo[0] + 1), int(hi[1] - lo[1] + 1), mode="1")
+    lo = np.floor(pts.min(0) + 0.5)
+    hi = np.floor(pts.max(0) + 0.5)
+    if within is not None:
+        lo = np.maximum(lo, np.floor(np.asarray(within[:2], float)))
+        hi = np.minimum(hi, np.ceil(np.asarray(within[2:], float)))
+    w, h = (hi - lo + 1).tolist()
+    if w <= 0 or h <= 0:
+        return np.zeros((0, 0), bool), (0, 0)
+    if w * h > MAX_GLYPH_PIXELS:     # a huge transform: refused like an outline's image
+        raise _too_large(None, None, int(min(w * h, 2.0**62)), MAX_GLYPH_PIXELS,
+                         "a stroke glyph's image")
+    lo, hi = lo.astype(int), hi.astype(int)
+    fb = FrameBuffer(int(w), int(h), mode="1")
     segs = np.vstack([np.hstack([s[:-1], s[1:]]) for s in strokes])
     lines(fb, segs - np.tile(lo, 2), color=1)
     bits: NDArray[np.bool_] = fb.to_array()

@@ -162,6 +162,13 @@ def test_errors_leave_no_file(tmp_path):
         Animation(sizes, fps=2).save(tmp_path / "y.mp4")
     with pytest.raises(sl.ScanlineError, match="must be a FrameBuffer"):
         Animation(lambda i: 3.5, frames=2, fps=2).save(tmp_path / "z.webp")
+    # an empty frame (no rows, or no columns) is named, in every format (the fuzz found
+    # Pillow's bare "cannot write empty image" escaping from a (0, 3) array)
+    for k, empty in enumerate([np.zeros((0, 3), np.uint8), np.zeros((4, 0, 3), np.uint8),
+                               Image.new("L", (0, 5))]):
+        for ext in (".png", ".gif", ".webp"):
+            with pytest.raises(sl.ScanlineError, match=r"frame 1 is empty \(\d x \d pixels\)"):
+                Animation([np.zeros((4, 3), np.uint8), empty], fps=2).save(tmp_path / f"e{k}{ext}")
     assert os.listdir(tmp_path) == []
 
 

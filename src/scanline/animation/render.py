@@ -43,7 +43,8 @@ def to_image(frame: object, index: int | None = None) -> Image.Image:
 
     Accepts a :class:`~scanline.FrameBuffer` (mode "1" becomes "L" 0/255), a Pillow
     image, a numpy array in image order (bool, or uint8 (h, w), (h, w, 3), (h, w, 4))
-    or the path of an image file.
+    or the path of an image file.  An empty frame (no rows or no columns) is an
+    ArgumentValueError naming the frame.
     """
     from ..framebuffer import FrameBuffer
 
@@ -70,6 +71,9 @@ def to_image(frame: object, index: int | None = None) -> Image.Image:
     else:
         raise ArgumentTypeError(f"{what} must be a FrameBuffer, a PIL image, a numpy array "
                                 f"or an image file path, got {type(frame).__name__}")
+    if image.width == 0 or image.height == 0:
+        raise ArgumentValueError(f"{what} is empty ({image.width} x {image.height} pixels); "
+                                 "a frame needs at least one pixel")
     if image.mode == "1":
         image = image.convert("L")
     elif image.mode not in ("L", "RGB", "RGBA", "P"):

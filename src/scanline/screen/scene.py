@@ -16,12 +16,17 @@ Three kinds of things are numbered in it:
 import functools
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any, Optional, Tuple, Union, overload
+from typing import TYPE_CHECKING, Any, Optional, Tuple, Union, overload
 
 import numpy as np
 from numpy.typing import NDArray
 
 from .polygons import ScreenPolygons, flat_polygons
+
+if TYPE_CHECKING:
+    from ..lighting.material import Material
+    from ..lighting.model import ViewerAtInfinity
+    from ..projection.camera import Camera
 
 F64 = NDArray[np.float64]
 I64 = NDArray[np.int64]
@@ -189,10 +194,10 @@ class ScreenScene:
     """
     width: int
     height: int
-    camera: object
+    camera: "Camera"
     mapping: Tuple[F64, F64, F64]
-    eye: object
-    materials: Tuple[Any, ...]
+    eye: Union[NDArray[np.float64], "ViewerAtInfinity"]
+    materials: Tuple["Material", ...]
     face_mesh: I64
     face_normals: F64
     face_centroids: F64

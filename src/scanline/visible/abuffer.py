@@ -15,10 +15,17 @@ so memory stays that of a few supersampled buffers of one band whatever the fram
 size and its depth complexity.
 """
 
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
 import numpy as np
 
 from .visibility import Fragments, Layer
 from .zbuffer import nearest
+
+if TYPE_CHECKING:
+    from ..screen.scene import ScreenScene
+    from .methods import MethodOptions
 
 #: Default samples per pixel side, and most layers peeled.
 SAMPLES = 3
@@ -32,13 +39,14 @@ BAND_BYTES = 64 << 20
 SAMPLE_BYTES = 96
 
 
-def band_rows(width, samples):
+def band_rows(width: int, samples: int) -> int:
     """Rows of pixels a band holds: as many as :data:`BAND_BYTES` allows, at least
     one."""
     return max(1, BAND_BYTES // (SAMPLE_BYTES * width * samples * samples))
 
 
-def _layers(scene, samples, limit, y0, rows):
+def _layers(scene: "ScreenScene", samples: int, limit: int, y0: int,
+            rows: int) -> Iterator[Layer]:
     """The layers of fragments of the band of pixel rows ``y0 .. y0 + rows - 1``."""
     s = samples
     hs, ws = rows * s, scene.width * s
@@ -64,7 +72,7 @@ def _layers(scene, samples, limit, y0, rows):
         floor = np.where(live, depth, np.inf)       # peel behind this layer
 
 
-def abuffer(scene, options):
+def abuffer(scene: "ScreenScene", options: "MethodOptions") -> Fragments:
     """The fragments at every sample, front to back (``options.samples`` per pixel
     side, at most ``options.layers`` layers), band after band of rows
     (:func:`band_rows`)."""

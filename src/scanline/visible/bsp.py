@@ -6,7 +6,7 @@ from any eye.
 are painted at image precision.
 """
 
-from typing import TYPE_CHECKING, Any, Optional, Tuple
+from typing import TYPE_CHECKING, Any, Optional, Tuple, TypeVar
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -14,7 +14,7 @@ from numpy.typing import ArrayLike, NDArray
 from .. import _validate as v
 from .._kernels import bsp as k
 from .._kernels._jit import call
-from ..errors import BSPTooLargeError
+from ..errors import ArgumentValueError, BSPTooLargeError
 from ..screen.meshes import meshes_list
 from ..screen.polygons import newell_planes
 
@@ -25,14 +25,19 @@ if TYPE_CHECKING:
 #: Relative tolerance of "on the plane" (times the scene's size).
 TOLERANCE = 1e-9
 
+_S = TypeVar("_S", bound=np.generic)
 
-def world_polygons(meshes):
+
+def world_polygons(meshes: Any
+                   ) -> Tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.int64]]:
     """The faces of ``meshes`` as world polygons: ``(vertices (V, 3), counts (P,),
     face (P,))``, faces numbered across the meshes in order.  Convex faces that are
     not planar (a teapot's bilinear patches) are split into a fan of triangles, each
     keeping its face index.  Vectorized over the faces (a million faces take about a
     second)."""
-    verts, counts, faces = [], [], []
+    verts: list[NDArray[np.float64]] = []
+    counts: list[NDArray[np.int64]] = []
+    faces: list[NDArray[np.int64]] = []
     base = 0
     for mesh in meshes_list(meshes):
         idx, off = mesh.face_indices, mesh.face_offsets
@@ -172,7 +177,8 @@ class BSPTree:
                     np.asarray(faces, np.int64), max_pieces)
         return tree
 
-    def _build(self, verts, counts, faces, max_pieces):
+    def _build(self, verts: NDArray[np.float64], counts: NDArray[np.int64],
+               faces: NDArray[np.int64], max_pieces: Optional[int]) -> None:
         n = len(counts)
         self.limit = 8 * n + 10_000 if max_pieces is None else v.positive_int(
             "max_pieces", max_pieces)
@@ -228,10 +234,10 @@ class BSPTree:
         self._nodes = nodes[:count].copy()
         self.pieces = [self._members[a:a + c] for a, c in self._nodes[:, 2:4].tolist()]
 
-    def __len__(self):
+    def __len__(self) -> int:
         return len(self.planes)
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return (f"<BSPTree: {len(self)} nodes, {len(self._pieces)} pieces, "
                 f"{self.splits} splits>")
 
@@ -268,7 +274,7 @@ class BSPTree:
         if e.shape == (3,):
             e = np.append(e, 1.0)
         if e.shape != (4,) or not np.isfinite(e).all():
-            raise v.ArgumentValueError(
+            raise ArgumentValueError(
                 f"eye must be a finite point (x, y, z) or (x, y, z, w), got {v._show(eye)}")
         if e[3] < 0:
             e = -e
@@ -312,9 +318,9 @@ class BSPTree:
         return self._verts[idx], counts, faces
 
 
-def _doubled(a):
+def _doubled(a: NDArray[_S]) -> NDArray[_S]:
     """``a`` with twice the rows, the rows kept."""
-    out = np.empty((2 * len(a),) + a.shape[1:], a.dtype)
+    out: NDArray[_S] = np.empty((2 * len(a),) + a.shape[1:], a.dtype)
     out[:len(a)] = a
     return out
 
@@ -353,7 +359,7 @@ def camera_eye(camera: "Camera", width: int, height: int) -> NDArray[np.float64]
     except np.linalg.LinAlgError:
         e = np.full(4, np.nan)
     if not np.isfinite(e).all():
-        raise v.ArgumentValueError(
+        raise ArgumentValueError(
             f"camera: its projection cannot be inverted in floating point (eye "
             f"{v._show(camera.eye)}), so the viewer's position is unknown to the BSP "
             "traversal; place the eye and the target at distances a float can resolve")

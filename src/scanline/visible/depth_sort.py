@@ -6,10 +6,11 @@ space), painted at image precision.
 """
 
 import threading
-from typing import Any, Callable, Dict, List, Optional, Tuple
+from collections.abc import Iterator
+from typing import Any, Callable, Dict, List, Optional, Tuple, TypeVar, Union
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import DTypeLike, NDArray
 
 from .. import _validate as v
 from .._kernels import depthsort as k
@@ -25,8 +26,13 @@ TESTS = ("x extents apart", "y extents apart", "S behind plane of S'",
 #: Relative tolerance of the plane and separation tests.
 TOLERANCE = 1e-9
 
+#: What ``drawn`` of :func:`depth_sort` is called with: a run's vertices, offsets, faces.
+Drawn = Callable[[NDArray[np.float64], NDArray[np.int64], NDArray[np.int64]], object]
 
-def _bucket_room(entries):
+_S = TypeVar("_S", bound=np.generic)
+
+
+def _bucket_room(entries: int) -> int:
     """Rows of the grid's buckets allocated for ``entries`` entries (the kernel asks
     for more when they are too few)."""
     return entries
@@ -38,14 +44,14 @@ KEEP = 64 << 20
 _KEPT = threading.local()
 
 
-def _work(name, shape, dtype=np.float64):
+def _work(name: str, shape: Tuple[int, ...], dtype: DTypeLike = np.float64) -> NDArray[Any]:
     """An uninitialized working array of ``shape``: the first rows of the array
     ``name`` the calling thread kept from an earlier sort when it has enough of them
     (megabytes of new memory cost the sort of 10,000 polygons more in page faults
     than the sort itself, as the kept buffers of :mod:`scanline._pool`),
     else a new one, kept while the thread keeps at most :data:`KEEP` bytes in all.
     The arrays seen by the kernels have the rows asked for, kept or not."""
-    kept = getattr(_KEPT, "arrays", None)
+    kept: Optional[Dict[str, NDArray[Any]]] = getattr(_KEPT, "arrays", None)
     if kept is None:
         kept = _KEPT.arrays = {}
     a = kept.get(name)
@@ -59,22 +65,23 @@ def _work(name, shape, dtype=np.float64):
     return a
 
 
-def _grown(a, rows, name=None):
+def _grown(a: NDArray[_S], rows: int, name: Optional[str] = None) -> NDArray[_S]:
     """``a`` with room for at least ``rows`` rows (doubling), the rows kept (a
     working array ``name`` of :func:`_work`, or a new array)."""
     shape = (max(rows, 2 * len(a)),) + a.shape[1:]
-    out = np.empty(shape, a.dtype) if name is None else _work(name, shape, a.dtype)
+    out: NDArray[_S] = np.empty(shape, a.dtype) if name is None else _work(name, shape, a.dtype)
     out[:len(a)] = a
     return out
 
 
-def _describe(log, rows, byz):
+def _describe(log: NDArray[np.int64], rows: int,
+              byz: NDArray[np.int64]) -> Iterator[Dict[str, Union[int, str]]]:
     """The kernel's log rows as the dicts of :func:`depth_sort`'s ``log``, the pieces
     numbered as given (the kernel numbers the pieces given by rank: ``byz``)."""
     n = len(byz)
     for s, t, decided, action, piece, by, new in log[:rows].tolist():
         s, t, piece, by = (int(byz[x]) if 0 <= x < n else x for x in (s, t, piece, by))
-        row = {"S": s, "S'": t}
+        row: Dict[str, Union[int, str]] = {"S": s, "S'": t}
         outcomes = ("no",) * (decided - 1) + ("yes",) if decided else ("no",) * 5
         row.update(zip(TESTS, outcomes))
         if action == k.MOVE:
@@ -91,7 +98,8 @@ def _describe(log, rows, byz):
 RUN = 1024
 
 
-def _hand(drawn, out, doff, dface, lo, hi):
+def _hand(drawn: Optional[Drawn], out: NDArray[np.float64], doff: NDArray[np.int64],
+          dface: NDArray[np.int64], lo: int, hi: int) -> int:
     """``drawn`` called with the pieces ``lo .. hi - 1`` in drawing order (views of
     the sort's arrays); returns ``hi``."""
     if hi > lo and drawn is not None:
@@ -104,7 +112,7 @@ def _hand(drawn, out, doff, dface, lo, hi):
 LOG_ROWS = 200_000
 
 
-def default_work(n):
+def default_work(n: int) -> int:
     """The default bound of a sort's work, in surfaces gathered to compare with the
     heads (one more per step), for ``n`` polygons: 2,000,000 + 100 n.  Scenes of
     whole objects need a few times n (the 10k random triangles of the benchmark
@@ -116,7 +124,7 @@ def default_work(n):
 
 def depth_sort(polygons: ScreenPolygons, split_cycles: bool = True,
                log: Optional[List[Dict[str, Any]]] = None, max_pieces: Optional[int] = None,
-               drawn: Optional[Callable[..., Any]] = None,
+               drawn: Optional[Drawn] = None,
                max_work: Optional[int] = None) -> ScreenPolygons:
     """Order (and split where needed) polygons back to front by the depth-sorting
     method.
@@ -307,7 +315,7 @@ def depth_sort(polygons: ScreenPolygons, split_cycles: bool = True,
                           dface[:count].copy(), dplane[:count].copy(), sp.width, sp.height)
 
 
-def tolerance(sp):
+def tolerance(sp: ScreenPolygons) -> float:
     """The absolute tolerance of the plane and separation tests on ``sp``'s device."""
     return TOLERANCE * max(sp.width, sp.height, 1.0)
 
@@ -367,10 +375,11 @@ def painted_depth_sort(polygons: ScreenPolygons, split_cycles: bool = True,
     sp = as_screen(polygons)
     w, h = sp.width, sp.height
     numbers = recycled("piece numbers", (h, w), np.int32)
-    runs = queue.SimpleQueue()
+    runs: "queue.SimpleQueue[Optional[Tuple[NDArray[np.float64], NDArray[np.int64], int]]]" = (
+        queue.SimpleQueue())
     count = [0]
 
-    def painter():
+    def painter() -> None:
         numbers.fill(-1)
         while (run := runs.get()) is not None:
             verts, offsets, first = run
@@ -378,7 +387,8 @@ def painted_depth_sort(polygons: ScreenPolygons, split_cycles: bool = True,
             call(paint_numbers, h + 10 * len(verts) + len(offsets), 0, 1, w, h, verts,
                  offsets, first, numbers)
 
-    def drawn(verts, offsets, face):
+    def drawn(verts: NDArray[np.float64], offsets: NDArray[np.int64],
+              face: NDArray[np.int64]) -> None:
         runs.put((verts, offsets, count[0]))
         count[0] += len(face)
 

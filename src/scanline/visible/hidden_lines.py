@@ -5,12 +5,14 @@ of a mesh with the parts hidden by its faces removed, or drawn dashed.
 hidden parameter intervals are computed exactly (up to rounding).
 """
 
-from typing import TYPE_CHECKING, Any, Sequence, Tuple
+from typing import TYPE_CHECKING, Any, Literal, Optional, Sequence, Tuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
+from .._typing import Color
+from ..errors import ArgumentValueError
 from ..draw._common import target
 from ..screen.meshes import meshes_list
 from ..screen.polygons import as_screen
@@ -88,10 +90,10 @@ def hidden_lines(segments: ArrayLike, depth: ArrayLike, polygons: "ScreenPolygon
     segs = v.real_array("segments", segments, "(N, 4)").reshape(-1, 4)
     dep = v.real_array("depth", depth, "(N, 2)").reshape(-1, 2)
     if len(dep) != len(segs):
-        raise v.ArgumentValueError(
+        raise ArgumentValueError(
             f"depth must have one row per segment ({len(segs)}), got {len(dep)}")
     if not (np.isfinite(segs).all() and np.isfinite(dep).all()):
-        raise v.ArgumentValueError("segments and depth must be finite (no NaN or inf)")
+        raise ArgumentValueError("segments and depth must be finite (no NaN or inf)")
     segs = np.ascontiguousarray(segs)
     dep = np.ascontiguousarray(dep)
     ext = np.ascontiguousarray(sp.extents())
@@ -103,13 +105,16 @@ def hidden_lines(segments: ArrayLike, depth: ArrayLike, polygons: "ScreenPolygon
             break
         out = np.empty((n, 3))
     rows = out[:n]
-    vis, hid, vis_of, hid_of = [], [], [], []
+    vis: list[NDArray[np.float64]] = []
+    hid: list[NDArray[np.float64]] = []
+    vis_of: list[int] = []
+    hid_of: list[int] = []
     order = np.lexsort((rows[:, 1], rows[:, 0]))
     rows = rows[order]
     bounds = np.searchsorted(rows[:, 0], np.arange(len(segs) + 1))
     for e in range(len(segs)):
         t = 0.0
-        pieces = []
+        pieces: list[Tuple[float, float, bool]] = []
         for a, b in rows[bounds[e]:bounds[e + 1], 1:]:      # sorted by start
             if b <= t:
                 continue
@@ -131,12 +136,16 @@ def hidden_lines(segments: ArrayLike, depth: ArrayLike, polygons: "ScreenPolygon
             row = np.concatenate([p0 + a * d, p0 + b * d])
             (vis if seen else hid).append(row)
             (vis_of if seen else hid_of).append(e)
-    as4 = lambda rows: np.array(rows).reshape(-1, 4)  # noqa: E731
-    return as4(vis), as4(hid), np.array(vis_of, np.int64), np.array(hid_of, np.int64)
+    return _rows4(vis), _rows4(hid), np.array(vis_of, np.int64), np.array(hid_of, np.int64)
 
 
-def visible_lines(fb: "FrameBuffer", meshes: Any, camera: "Camera", color: Any = "white",
-                  hidden: str = "remove", hidden_color: Any = None,
+def _rows4(rows: list[NDArray[np.float64]]) -> NDArray[np.float64]:
+    return np.array(rows, np.float64).reshape(-1, 4)
+
+
+def visible_lines(fb: "FrameBuffer", meshes: Any, camera: "Camera", color: Color = "white",
+                  hidden: Literal["remove", "dash"] = "remove",
+                  hidden_color: Optional[Color] = None,
                   dash: Sequence[int] = (4, 4),
                   **line: Any) -> Tuple[NDArray[np.float64], NDArray[np.float64]]:
     """Draw the wireframe of ``meshes`` with hidden lines removed or dashed.
@@ -192,7 +201,8 @@ def visible_lines(fb: "FrameBuffer", meshes: Any, camera: "Camera", color: Any =
     v.choice("hidden", hidden, ("remove", "dash"))
     group = meshes_list(meshes)
     sp = screen_polygons(group, camera, fb.width, fb.height)
-    segs, deps = [], []
+    segs: list[NDArray[np.float64]] = []
+    deps: list[NDArray[np.float64]] = []
     for m in group:
         s, d, _ = project_edges(m.vertices, m.edges, camera, fb.width, fb.height)
         segs.append(s)

@@ -13,7 +13,7 @@ Precision (Hearn & Baker, section 13-1): "image" methods decide visibility per p
 """
 
 from dataclasses import dataclass, fields
-from typing import Any, Callable, Optional, Tuple
+from typing import TYPE_CHECKING, Callable, Optional, Tuple, Union
 
 import numpy as np
 
@@ -23,12 +23,16 @@ from .abuffer import abuffer
 from .bsp import BSPTree, camera_eye
 from .depth_sort import painted_depth_sort
 from .octree import octree
+from ..screen.polygons import ScreenPolygons
 from .painter import KEYS, painter
 from .raycast import raycast
 from .scanline_method import scan_line
-from .visibility import facet_layer, painted
+from .visibility import Fragments, Layer, VisibleFaces, facet_layer, painted
 from .warnock import area_subdivision
 from .zbuffer import zbuffer
+
+if TYPE_CHECKING:
+    from ..screen.scene import ScreenScene
 
 
 @dataclass(frozen=True)
@@ -153,15 +157,16 @@ class Method:
     ('z-buffer', 'image', False)
     """
     name: str
-    find: Callable[..., Any]
+    find: Callable[["ScreenScene", MethodOptions], Union[Layer, Fragments]]
     precision: str
     options: Tuple[str, ...] = ()
     transparency: bool = False
     traced: bool = False
 
 
-def _image_space(method):
-    def find(scene, options):
+def _image_space(method: Callable[[ScreenPolygons], VisibleFaces]
+                 ) -> Callable[["ScreenScene", MethodOptions], Layer]:
+    def find(scene: "ScreenScene", options: MethodOptions) -> Layer:
         sp = scene.screen_polygons
         seen = method(sp)
         return facet_layer(scene, seen.polygon, sp.face, seen.depth)
@@ -169,12 +174,12 @@ def _image_space(method):
     return find
 
 
-def _painter(scene, options):
+def _painter(scene: "ScreenScene", options: MethodOptions) -> Layer:
     """The facets painted back to front by one depth key each (the counter-example)."""
     return painted(scene, painter(scene.screen_polygons, options.key or "farthest"))
 
 
-def _depth_sort(scene, options):
+def _depth_sort(scene: "ScreenScene", options: MethodOptions) -> Layer:
     """The pieces of the depth-sorting method, painted beside the sort."""
     split = True if options.split_cycles is None else options.split_cycles
     pieces, numbers = painted_depth_sort(scene.screen_polygons, split, options.max_pieces,
@@ -182,7 +187,7 @@ def _depth_sort(scene, options):
     return painted(scene, pieces, numbers)
 
 
-def _bsp(scene, options):
+def _bsp(scene: "ScreenScene", options: MethodOptions) -> Layer:
     """The scene's polygons back to front by a BSP tree built in world coordinates
     (Fuchs, Kedem and Naylor 1980) from its faces (those taken whole) and facets, and
     traversed from the camera's eye; the pieces clipped and projected as the

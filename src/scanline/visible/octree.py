@@ -30,10 +30,17 @@ mesh at a chosen depth, of voxels): it is a mesh-like object whose faces are its
 boundary, rendered by this method or any other.
 """
 
+from typing import TYPE_CHECKING, Optional, cast
+
 import numpy as np
+from numpy.typing import NDArray
 
 from ..budget import check
 from .visibility import Layer
+
+if TYPE_CHECKING:
+    from ..screen.scene import ScreenScene
+    from .methods import MethodOptions
 
 #: Most triangles a leaf lists before it is split.
 LEAF = 16
@@ -50,7 +57,7 @@ NODE_BYTES = 88
 ENTRY_BYTES = 8
 
 
-def octree(scene, options=None):
+def octree(scene: "ScreenScene", options: Optional["MethodOptions"] = None) -> Layer:
     """The visible triangle at each pixel by the octree method (module docstring);
     ``options.max_depth`` (1..64, default :data:`DEPTH`) bounds the octree's
     depth."""
@@ -70,7 +77,8 @@ def octree(scene, options=None):
     depth = np.full((h, w), np.inf)
     if n == 0:
         return Layer(ids, depth)
-    finite = np.isfinite(tri).all(axis=(1, 2))
+    # numpy's stub: all(axis=) may be a scalar; here always (n,)
+    finite = cast(NDArray[np.bool_], np.isfinite(tri).all(axis=(1, 2)))
     lo = np.where(finite[:, None], tri.min(axis=1), np.inf)
     hi = np.where(finite[:, None], tri.max(axis=1), -np.inf)
     # a hair wider, so that a fragment's depth rounded past its triangle's box still

@@ -3,12 +3,18 @@
 intersected with every surface whose bounding rectangle contains the pixel; the
 nearest intersection is visible.  The kernel is :mod:`scanline._kernels.raycast`."""
 
+from typing import TYPE_CHECKING, Optional
+
 import numpy as np
 
 from .visibility import Layer
 
+if TYPE_CHECKING:
+    from ..screen.scene import ScreenScene
+    from .methods import MethodOptions
 
-def raycast(scene, options=None):
+
+def raycast(scene: "ScreenScene", options: Optional["MethodOptions"] = None) -> Layer:
     """The :class:`Layer` of the nearest triangle along each pixel's ray."""
     from .._kernels import raycast as k
     from .._kernels._jit import call

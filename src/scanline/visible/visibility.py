@@ -13,12 +13,15 @@
 import functools
 from collections.abc import Iterator
 from dataclasses import dataclass
-from typing import Any, Optional, Tuple
+from typing import TYPE_CHECKING, Any, Optional, Tuple
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 
 from ..screen.polygons import ScreenPolygons
+
+if TYPE_CHECKING:
+    from ..screen.scene import ScreenScene
 
 
 class VisibleFaces:
@@ -26,18 +29,24 @@ class VisibleFaces:
 
     Attributes
     ----------
-    polygon : ndarray of int64, shape (height, width)
+    polygon : ndarray of int32 or int64, shape (height, width)
         ``polygon[y, x]`` is the number of the polygon visible at pixel (x, y) (row y
         is scan line y, bottom-up like the frame buffer's storage), -1 for the
         background.
-    face : ndarray of int64, shape (height, width)
+    face : ndarray of int, shape (height, width)
         The source face of that polygon (-1 for the background).
     depth : ndarray, shape (height, width)
         Its depth (inf for the background).
+    areas : int
+        :func:`~scanline.visible.area_subdivision` only: the areas it decided.
+    regions : ndarray of int64 (n, 5)
+        :func:`~scanline.visible.area_subdivision` only: the regions it recorded.
+    compared : int
+        :func:`~scanline.visible.scan_line` only: the surfaces it compared.
 
     Parameters
     ----------
-    polygon : ndarray of int64 (height, width)
+    polygon : ndarray of int32 or int64 (height, width)
         The polygon at each pixel (-1: none).
     depth : ndarray (height, width)
         Its depth.
@@ -52,14 +61,18 @@ class VisibleFaces:
     [[7, -1, 9]]
     """
 
-    def __init__(self, polygon: NDArray[np.int64], depth: NDArray[np.float64],
+    areas: int
+    regions: NDArray[np.int64]
+    compared: int
+
+    def __init__(self, polygon: NDArray[np.signedinteger[Any]], depth: NDArray[np.float64],
                  faces: NDArray[np.int64]) -> None:
         self.polygon = polygon
         self.depth = depth
         self._faces = faces
 
     @functools.cached_property
-    def face(self) -> NDArray[np.int64]:
+    def face(self) -> NDArray[np.signedinteger[Any]]:
         if not len(self._faces):
             return self.polygon
         return np.where(self.polygon >= 0, self._faces[np.maximum(self.polygon, 0)], -1)
@@ -131,7 +144,8 @@ class Fragments:
     bands: Iterator[Tuple[int, int, Any]]
 
 
-def facet_layer(scene, polygons, table, depth=None):
+def facet_layer(scene: "ScreenScene", polygons: NDArray[np.signedinteger[Any]],
+                table: ArrayLike, depth: Optional[NDArray[np.float64]] = None) -> Layer:
     """A :class:`Layer` from a buffer of polygon numbers (H, W int32; -1 none) whose
     labels are ``table`` (the ``face`` of polygons of the scene's
     :attr:`~scanline.screen.ScreenScene.screen_polygons`, or of pieces of them): the
@@ -152,7 +166,8 @@ def facet_layer(scene, polygons, table, depth=None):
     return Layer(ids, out)
 
 
-def piece_numbers(pieces, numbers=None, first=0):
+def piece_numbers(pieces: ScreenPolygons, numbers: Optional[NDArray[np.int32]] = None,
+                  first: int = 0) -> NDArray[np.int32]:
     """The number of the piece seen at each pixel when ``pieces`` (convex
     :class:`ScreenPolygons`, numbered ``first``, ``first + 1`` ...) are painted one
     after the other, later over earlier, by the spans of the 2-D polygon fill (Hearn
@@ -173,7 +188,8 @@ def piece_numbers(pieces, numbers=None, first=0):
     return numbers
 
 
-def painted(scene, pieces, numbers=None):
+def painted(scene: "ScreenScene", pieces: ScreenPolygons,
+            numbers: Optional[NDArray[np.int32]] = None) -> Layer:
     """The :class:`Layer` of ``pieces`` (:class:`ScreenPolygons` in drawing order,
     ``face`` the label of each, as in the scene's polygons) painted in order
     (:func:`piece_numbers`, unless ``numbers`` holds them already: the depth sort

@@ -9,14 +9,25 @@ index of the device triangle (a visibility buffer): the shading lights each pixe
 once afterwards, so a covered-over fragment costs no lighting.
 """
 
+from typing import TYPE_CHECKING, Any, Optional, Tuple
+
 import numpy as np
+from numpy.typing import NDArray
 
 from .._pool import recycled
 from ..draw.triangles import rasterize
 from .visibility import Layer
 
+if TYPE_CHECKING:
+    from ..screen.scene import ScreenScene
+    from .methods import MethodOptions
 
-def nearest(scene, zbuf=None, floor=None, triangles=None, size=None, select=None):
+
+def nearest(scene: "ScreenScene", zbuf: Optional[NDArray[np.float64]] = None,
+            floor: Optional[NDArray[np.float64]] = None,
+            triangles: Optional[NDArray[np.float64]] = None,
+            size: Optional[Tuple[int, int]] = None,
+            select: Optional[NDArray[np.integer[Any]]] = None) -> Layer:
     """The z-buffer pass over the scene's device triangles: the :class:`Layer` of the
     nearest triangle at each pixel center (its ``ids`` number the scene's triangles).
 
@@ -34,7 +45,7 @@ def nearest(scene, zbuf=None, floor=None, triangles=None, size=None, select=None
         tri, q, ids = tri[select], q[select], np.ascontiguousarray(select, np.int64)
     n = len(tri)
     clear = zbuf is None
-    if clear:
+    if zbuf is None:
         out = recycled("faces", (h, w), np.int32)
         depth = recycled("depth", (h, w))
     else:
@@ -50,6 +61,6 @@ def nearest(scene, zbuf=None, floor=None, triangles=None, size=None, select=None
     return Layer(out, depth)
 
 
-def zbuffer(scene, options=None):
+def zbuffer(scene: "ScreenScene", options: Optional["MethodOptions"] = None) -> Layer:
     """The visible triangle at each pixel by the depth-buffer method."""
     return nearest(scene)

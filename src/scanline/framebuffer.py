@@ -409,7 +409,8 @@ class FrameBuffer:
         return "white" if dark else "black"
 
     # -- colors -----------------------------------------------------------------------
-    def pixel(self, color: Optional[Color], name: str = "color") -> NDArray[np.uint8]:
+    def pixel(self, color: Optional[Union[Color, Channels]],
+              name: str = "color") -> NDArray[np.uint8]:
         """Return the stored channel values of ``color`` as a uint8 array.
 
         In mode ``"P"`` an integer is a color-table index; any other color is looked
@@ -418,9 +419,10 @@ class FrameBuffer:
 
         Parameters
         ----------
-        color : Color or None
-            The color (see :func:`scanline.color.spec.rgba`); None for
-            :attr:`foreground`.
+        color : Color, Channels or None
+            The color (see :func:`scanline.color.spec.rgba`; the package passes
+            channel values it read as :class:`~scanline.color.spec.Channels`); None
+            for :attr:`foreground`.
         name : str
             The argument's name, for error messages.
 
@@ -469,7 +471,7 @@ class FrameBuffer:
             self._cache[_LAST] = (color, name, out)
         return out
 
-    def _table_index(self, color: Color, name: str) -> int:
+    def _table_index(self, color: Union[Color, Channels], name: str) -> int:
         if isinstance(color, int) and not isinstance(color, bool):
             if 0 <= color < len(self._table):
                 return color

@@ -1,20 +1,24 @@
 """Argument handling shared by the drawing functions."""
 
-import numpy as np
+from typing import Any, Optional, Sequence, Tuple, Union, cast
 
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from .._typing import Color, Colors
 from ..color.spec import Channels, in_context
 from ..errors import ArgumentTypeError, ArgumentValueError
 from ..framebuffer import FrameBuffer
 
 
-def target(fb):
+def target(fb: FrameBuffer) -> Tuple[NDArray[np.uint8], bool, int, int]:
     """Check that ``fb`` is a FrameBuffer; return ``(buf, packed, width, height)``."""
     if type(fb) is not FrameBuffer and not isinstance(fb, FrameBuffer):
         raise ArgumentTypeError(f"fb must be a scanline.FrameBuffer, got {type(fb).__name__}")
     return fb._buf, fb._mode == "1", fb._width, fb._height     # (FrameBuffer._raster)
 
 
-def _direct(fb, a, name):
+def _direct(fb: FrameBuffer, a: NDArray[Any], name: str) -> Optional[NDArray[np.uint8]]:
     """Per-primitive values given as an integer array: (N,) bits / gray levels /
     indices, or (N, 3|4) RGB(A) for an RGB or RGBA frame buffer.  None if the array
     needs per-color conversion."""
@@ -37,7 +41,8 @@ def _direct(fb, a, name):
     return None
 
 
-def colors(fb, color, n, name="color"):
+def colors(fb: FrameBuffer, color: Optional[Colors], n: int,
+           name: str = "color") -> NDArray[np.uint8]:
     """Pixel values for N primitives, shape (1, channels) or (n, channels).
 
     A string, tuple or integer is one color for all.  A list holds one color spec per
@@ -57,15 +62,19 @@ def colors(fb, color, n, name="color"):
         direct = _direct(fb, color, name)
         if direct is not None:
             return direct
-        color = [Channels(row.tolist()) if color.ndim == 2 else int(row) for row in color]
+        specs: Sequence[Union[Color, Channels]] = [
+            Channels(row.tolist()) if color.ndim == 2 else int(row) for row in color]
+    else:
+        specs = color
     channels = fb._raster()[0].shape[2]
     out = np.empty((n, channels), np.uint8)
-    for i, spec in enumerate(in_context(color)):
+    for i, spec in enumerate(in_context(specs)):
         out[i] = fb.pixel(spec, f"{name}[{i}]")
     return out
 
 
-def area_work(width, height, points, count=1, margin=0):
+def area_work(width: int, height: int, points: ArrayLike, count: int = 1,
+              margin: float = 0) -> float:
     """Work units of drawing ``count`` primitives within the box of ``points`` (an
     (N, 2+) array of device coordinates, any columns past x and y ignored), grown by
     ``margin``, clipped to a ``width`` x ``height`` raster: an upper bound of the
@@ -80,7 +89,8 @@ def area_work(width, height, points, count=1, margin=0):
     return count * area + len(points)
 
 
-def band_order(rows, values, height):
+def band_order(rows: NDArray[np.int64], values: NDArray[np.uint8],
+               height: int) -> NDArray[np.int64]:
     """The (N, k) int64 primitive ``rows`` (y in column 1) in order of bands of
     scan lines (:func:`scanline._kernels.raster.band_sorted`, a counting sort, O(N))
     when ``values`` holds one color for all, which makes any drawing order give the
@@ -90,4 +100,4 @@ def band_order(rows, values, height):
         return rows
     from .._kernels._jit import call
     from .._kernels.raster import band_sorted
-    return call(band_sorted, len(rows), rows, height)
+    return cast(NDArray[np.int64], call(band_sorted, len(rows), rows, height))

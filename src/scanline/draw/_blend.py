@@ -33,32 +33,47 @@ primitive however often the primitive's algorithm visits it.  This is the
 hand over the one they already have.
 """
 
+from __future__ import annotations
+
 import numbers
+from typing import TYPE_CHECKING, Callable, Optional, Sequence, Tuple, Union, cast
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .._kernels import blend as k
 from .._kernels._jit import call
 from .._kernels.variants import MODE
 from ..color.spec import Channels, in_context, rgba
-from ._area import fill_area
+from ._area import Draw, Outline, fill_area
 from ._common import colors, target
+
+if TYPE_CHECKING:
+    from .._typing import Color, Colors
+    from ..attributes import FillStyle
+    from ..framebuffer import FrameBuffer
+
+#: ``draw(i, buf, packed, width, height, ox, oy, value)``: :func:`paint_each`'s
+#: ``draw``, painting primitive ``i`` as a :data:`~scanline.draw._area.Draw` does.
+DrawEach = Callable[[int, NDArray[np.uint8], bool, int, int, int, int, NDArray[np.uint8]], None]
+#: One source row ``(c0, c1, c2, alpha)`` of the blend kernels.
+Source = Tuple[float, float, float, float]
 
 _NO_TABLE = np.zeros((1, 3), np.uint8)
 _FULL = np.full(1, 255, np.uint8)
 
 
-def mode_code(fb):
+def mode_code(fb: FrameBuffer) -> Tuple[int, ...]:
     """The blend kernels' mode token of ``fb`` (:mod:`scanline._kernels.variants`)."""
-    return MODE[fb.mode]
+    return cast(Tuple[int, ...], MODE[fb.mode])
 
 
-def table(fb):
+def table(fb: FrameBuffer) -> NDArray[np.uint8]:
     """The color table the blend kernels need (a dummy outside mode "P")."""
     return fb._table if fb.mode == "P" else _NO_TABLE
 
 
-def _alpha(spec):
+def _alpha(spec: object) -> int:
     """The alpha (0..255) of one color spec without converting it fully."""
     if isinstance(spec, str):
         return rgba(spec)[3] if len(spec) in (5, 9) or not spec.startswith("#") else 255
@@ -68,7 +83,7 @@ def _alpha(spec):
     return 255
 
 
-def translucent(color, one=False):
+def translucent(color: Optional[Colors], one: bool = False) -> bool:
     """Does ``color`` have an alpha below 255 anywhere?  Integers (gray levels,
     bits, table indices) are opaque.
 
@@ -89,7 +104,7 @@ def translucent(color, one=False):
     return _alpha(color) < 255
 
 
-def _source(fb, spec, name):
+def _source(fb: FrameBuffer, spec: Optional[Union[Color, Channels]], name: str) -> Source:
     """One source row (c0, c1, c2, alpha 0..1) for the blend kernels."""
     value = fb.pixel(spec, name)      # validates; in "P" adds the color to the table
     integer = spec is None or isinstance(spec, numbers.Integral)   # None: the opaque foreground
@@ -103,7 +118,8 @@ def _source(fb, spec, name):
     return (float(c[0]), float(c[1]), float(c[2]), alpha)
 
 
-def sources(fb, color, n, name="color"):
+def sources(fb: FrameBuffer, color: Optional[Colors], n: int,
+            name: str = "color") -> NDArray[np.float64]:
     """Source rows for N primitives: a float64 array of shape (1, 4) (one color) or
     (n, 4) holding ``(c0, c1, c2, alpha)`` as :mod:`scanline._kernels.blend` takes
     them.
@@ -141,12 +157,13 @@ def sources(fb, color, n, name="color"):
     return out
 
 
-def _clip(fb, bbox):
+def _clip(fb: FrameBuffer, bbox: Sequence[float]) -> Tuple[int, int, int, int]:
     x0, y0, x1, y1 = (int(v) for v in bbox)
     return max(x0, 0), max(y0, 0), min(x1, fb.width - 1), min(y1, fb.height - 1)
 
 
-def composite(fb, mask, ox, oy, source):
+def composite(fb: FrameBuffer, mask: NDArray[np.uint8], ox: int, oy: int,
+              source: NDArray[np.float64]) -> None:
     """Composite ``source`` (one row of :func:`sources`) through ``mask`` (uint8
     (h, w, 1), 255 = fully covered) whose pixel (0, 0) is device pixel (ox, oy).
     Mask pixels outside ``fb`` are ignored."""
@@ -155,7 +172,8 @@ def composite(fb, mask, ox, oy, source):
          mask, int(ox), int(oy), np.ascontiguousarray(source, np.float64))
 
 
-def _masked(fb, source, bbox, draw):
+def _masked(fb: FrameBuffer, source: NDArray[np.float64], bbox: Sequence[float],
+            draw: Draw) -> None:
     x0, y0, x1, y1 = _clip(fb, bbox)
     if x0 > x1 or y0 > y1 or source[3] <= 0.0:
         return
@@ -164,7 +182,7 @@ def _masked(fb, source, bbox, draw):
     composite(fb, mask, x0, y0, source)
 
 
-def paint(fb, color, bbox, draw):
+def paint(fb: FrameBuffer, color: Optional[Color], bbox: Sequence[float], draw: Draw) -> None:
     """Draw one primitive in ``color``, composited over ``fb`` when translucent.
 
     Parameters
@@ -202,10 +220,12 @@ def paint(fb, color, bbox, draw):
         buf, packed, width, height = target(fb)
         draw(buf, packed, width, height, 0, 0, fb.pixel(color))
         return
+    assert color is not None        # None is the foreground, opaque
     _masked(fb, sources(fb, [color], 1)[0], bbox, draw)
 
 
-def paint_each(fb, color, n, bboxes, draw):
+def paint_each(fb: FrameBuffer, color: Optional[Colors], n: int,
+               bboxes: Sequence[Sequence[float]], draw: DrawEach) -> None:
     """Draw a batch of ``n`` primitives in turn, each composited with its own color.
 
     For batches whose colors include a translucent one (check with
@@ -226,14 +246,15 @@ def paint_each(fb, color, n, bboxes, draw):
             _masked(fb, s, bboxes[i], lambda *a, i=i: draw(i, *a))
 
 
-def _opaque_spec(fb, s):
+def _opaque_spec(fb: FrameBuffer, s: NDArray[np.float64]) -> Union[Channels, int]:
     """The color spec of an opaque source row (the inverse of :func:`_source`)."""
     if fb.mode in ("RGB", "RGBA", "P"):
         return Channels((int(s[0]), int(s[1]), int(s[2])))
     return int(s[0])  # the gray level ("L") or the bit ("1")
 
 
-def fill(fb, color, style, bbox, draw, outline):
+def fill(fb: FrameBuffer, color: Optional[Color], style: Optional[FillStyle],
+         bbox: Sequence[float], draw: Draw, outline: Outline) -> None:
     """:func:`scanline.draw._area.fill_area` with translucent solid fills
     composited (:func:`paint`).  Styled fills (hollow, patterns, hatches) are
     painted by the style, which stores ``color`` opaque."""

@@ -12,10 +12,28 @@ module two callables, so that a style can be applied without knowing the shape:
     draws the area's boundary into the frame buffer (the hollow style).
 """
 
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Callable, Optional, Sequence
+
+import numpy as np
+from numpy.typing import NDArray
+
 from ._common import target
 
+if TYPE_CHECKING:
+    from .._typing import Color
+    from ..attributes import FillStyle
+    from ..framebuffer import FrameBuffer
 
-def fill_area(fb, color, style, bbox, draw, outline):
+#: ``draw(buf, packed, width, height, ox, oy, color)`` (see the module notes).
+Draw = Callable[[NDArray[np.uint8], bool, int, int, int, int, NDArray[np.uint8]], None]
+#: ``outline()`` (see the module notes).
+Outline = Callable[[], None]
+
+
+def fill_area(fb: FrameBuffer, color: Optional[Color], style: Optional[FillStyle],
+              bbox: Sequence[float], draw: Draw, outline: Outline) -> None:
     """Fill an area of ``fb`` with ``color`` in ``style``.
 
     ``style`` None (or a solid style) fills directly; any other style object must

@@ -8,14 +8,42 @@ and then drawn as a polyline with every line attribute
 (:func:`scanline.clip.polyline`) or the outline (:func:`scanline.clip.polygon`) first.
 """
 
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Callable, Iterable, Literal, Optional, Sequence, TypedDict
+
 import numpy as np
+from numpy.typing import NDArray
 
 from ..curves.base import Curve
 from ..curves.flatten import flatten_all
 from ..errors import ArgumentTypeError, ArgumentValueError
 
+if TYPE_CHECKING:
+    from .._typing import Cap, Color, Colors, Dash, Join, PenLike, Rule
+    from ..clip.window import WindowLike
+    from ..framebuffer import FrameBuffer
+    from ..linestyle import LineStyle
 
-def _outlines(curves, tolerance, method, name):
+#: Flattening methods (:func:`scanline.curves.flatten.flatten`).
+Flattening = Literal["subdivision", "wang"]
+
+
+class _LineAttributes(TypedDict):
+    """The line attributes a stroke passes on to :func:`scanline.draw.polyline`."""
+    style: Optional[LineStyle]
+    antialias: bool
+    width: Optional[float]
+    cap: Optional[Cap]
+    join: Optional[Join]
+    miter_limit: Optional[float]
+    dash: Optional[Dash]
+    dash_phase: Optional[float]
+    pen: Optional[PenLike]
+
+
+def _outlines(curves: Sequence[Curve], tolerance: float, method: Flattening,
+              name: Callable[[int], str]) -> list[NDArray[np.float64]]:
     """The flattened polylines of 2-D curves (``name(i)`` names curve i in errors)."""
     for i, c in enumerate(curves):
         if not isinstance(c, Curve):
@@ -31,7 +59,7 @@ def _outlines(curves, tolerance, method, name):
     return flatten_all(curves, tolerance, method)
 
 
-def _is_closed(curve, points, closed):
+def _is_closed(curve: Curve, points: NDArray[np.float64], closed: Optional[bool]) -> bool:
     """``closed`` if given, else: the curve says so (periodic B-splines, closed
     Hermite-family splines) or its two ends coincide."""
     if closed is not None:
@@ -44,17 +72,21 @@ def _is_closed(curve, points, closed):
     return bool(np.abs(points[-1] - points[0]).max() <= 1e-9 * (1.0 + extent))
 
 
-def _ring(points):
+def _ring(points: NDArray[np.float64]) -> NDArray[np.float64]:
     """A closed polyline without its repeated end point."""
     if len(points) > 2 and np.array_equal(points[0], points[-1]):
         return points[:-1]
     return points
 
 
-def curve(fb, curve, color=None, tolerance=0.25, fill=False, closed=None, *,
-          rule="nonzero", window=None, antialias=False, method="subdivision", style=None,
-          width=None, cap=None, join=None, miter_limit=None, dash=None, dash_phase=None,
-          pen=None):
+def curve(fb: FrameBuffer, curve: Curve, color: Optional[Color] = None,
+          tolerance: float = 0.25, fill: bool = False, closed: Optional[bool] = None, *,
+          rule: Rule = "nonzero", window: Optional[WindowLike] = None,
+          antialias: bool = False, method: Flattening = "subdivision",
+          style: Optional[LineStyle] = None, width: Optional[float] = None,
+          cap: Optional[Cap] = None, join: Optional[Join] = None,
+          miter_limit: Optional[float] = None, dash: Optional[Dash] = None,
+          dash_phase: Optional[float] = None, pen: Optional[PenLike] = None) -> None:
     """Draw a curve: flattened within ``tolerance`` device units, then stroked or filled.
 
     Parameters
@@ -89,6 +121,15 @@ def curve(fb, curve, color=None, tolerance=0.25, fill=False, closed=None, *,
     style, width, cap, join, miter_limit, dash, dash_phase, pen
         Line attributes of the stroke, as :func:`scanline.draw.polyline` takes them
         (:class:`scanline.LineStyle`).
+
+    Raises
+    ------
+    ArgumentTypeError
+        If ``fb`` is not a FrameBuffer, ``curve`` not a :class:`scanline.curves.Curve`,
+        or ``closed`` not a bool or None.
+    ArgumentValueError
+        For a curve that is not 2-D, a ``tolerance`` that is not > 0, an unknown
+        ``rule`` or ``method``, a bad window, color or line attribute.
 
     Notes
     -----
@@ -130,7 +171,7 @@ def curve(fb, curve, color=None, tolerance=0.25, fill=False, closed=None, *,
         else:
             polygon(fb, contours, color, rule=rule)
         return
-    attributes = dict(style=style, antialias=antialias, width=width, cap=cap, join=join,
+    attributes = _LineAttributes(style=style, antialias=antialias, width=width, cap=cap, join=join,
                       miter_limit=miter_limit, dash=dash, dash_phase=dash_phase, pen=pen)
     if window is None:
         polyline(fb, _ring(points) if is_closed else points, color, closed=is_closed,
@@ -146,15 +187,40 @@ def curve(fb, curve, color=None, tolerance=0.25, fill=False, closed=None, *,
         polylines(fb, pieces, color, closed=False, **attributes)
 
 
-def curves(fb, curves, color=None, tolerance=0.25, closed=None, *, antialias=False,
-           method="subdivision", style=None, width=None, cap=None, join=None,
-           miter_limit=None, dash=None, dash_phase=None, pen=None):
+def curves(fb: FrameBuffer, curves: Iterable[Curve], color: Optional[Colors] = None,
+           tolerance: float = 0.25, closed: Optional[bool] = None, *,
+           antialias: bool = False, method: Flattening = "subdivision",
+           style: Optional[LineStyle] = None, width: Optional[float] = None,
+           cap: Optional[Cap] = None, join: Optional[Join] = None,
+           miter_limit: Optional[float] = None, dash: Optional[Dash] = None,
+           dash_phase: Optional[float] = None, pen: Optional[PenLike] = None) -> None:
     """Stroke many curves in one call of :func:`scanline.draw.polylines`.
 
-    Parameters as :func:`curve`; ``color`` may be one color or one per curve;
-    ``closed`` one value for all (None: decided per curve).  The curves are
-    flattened together (:func:`scanline.curves.flatten.flatten_all`: one compiled
-    call per degree).
+    The curves are flattened together (:func:`scanline.curves.flatten.flatten_all`:
+    one compiled call per degree).
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+    curves : iterable of scanline.curves.Curve
+        2-D curves in device coordinates, as :func:`curve` takes one.
+    color : color, list of colors or integer array, optional
+        One color for all, or one per curve (see :func:`scanline.draw.lines`).
+    tolerance : float
+        Largest distance between a curve and its polyline, in pixels; > 0.
+    closed : bool, optional
+        One value for all curves; None: decided per curve, as by :func:`curve`.
+    antialias, method, style, width, cap, join, miter_limit, dash, dash_phase, pen
+        As for :func:`curve`, for every curve.
+
+    Raises
+    ------
+    ArgumentTypeError
+        If ``fb`` is not a FrameBuffer, ``curves`` is one curve or not iterable, or
+        an item is not a :class:`scanline.curves.Curve`.
+    ArgumentValueError
+        As for :func:`curve`; also for a list of colors whose length is not the
+        number of curves.
 
     Examples
     --------
@@ -175,9 +241,10 @@ def curves(fb, curves, color=None, tolerance=0.25, closed=None, *, antialias=Fal
             f"curves must be a list of scanline.curves.Curve, got {type(curves).__name__}; "
             "use sl.draw.curve for one curve"
         )
-    curves = list(curves)
-    pieces, flags = [], []
-    for c, points in zip(curves, _outlines(curves, tolerance, method, lambda i: f"curves[{i}]")):
+    items = list(curves)
+    pieces: list[NDArray[np.float64]] = []
+    flags: list[bool] = []
+    for c, points in zip(items, _outlines(items, tolerance, method, lambda i: f"curves[{i}]")):
         is_closed = _is_closed(c, points, closed)
         pieces.append(_ring(points) if is_closed else points)
         flags.append(is_closed)

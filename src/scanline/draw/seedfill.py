@@ -4,9 +4,13 @@ Both start from an interior pixel (the seed) and paint outward, span by span, wi
 the scan-line seed fill of :mod:`scanline._kernels.seedfill`.
 """
 
+from __future__ import annotations
+
 import numbers
+from typing import TYPE_CHECKING, Any, Callable, Literal, Optional, Union, cast
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from .._kernels._jit import call
@@ -14,11 +18,20 @@ from .._kernels.variants import layout, token
 from ..errors import ArgumentTypeError, ArgumentValueError
 from ._common import colors, target
 
+if TYPE_CHECKING:
+    from .._typing import Color, Colors, Connectivity
+    from ..framebuffer import FrameBuffer
+
+#: The seed fills of the kernel.
+Kind = Literal["flood", "boundary", "soft"]
+#: The kernel's reference colors, or a function of (buf, packed, x, y) giving them.
+Reference = Union[NDArray[np.integer[Any]],
+                  Callable[[NDArray[np.uint8], bool, int, int], NDArray[np.int64]]]
 #: Allowed values of ``connectivity``.
 CONNECTIVITIES = (4, 8)
 
 
-def seed(fb, x, y):
+def seed(fb: FrameBuffer, x: object, y: object) -> tuple[int, int]:
     """The seed (x, y) rounded to a pixel, which must lie in ``fb``."""
     x = v.coordinate("x", x)
     y = v.coordinate("y", y)
@@ -31,7 +44,7 @@ def seed(fb, x, y):
     return x, y
 
 
-def eight_connected(connectivity):
+def eight_connected(connectivity: object) -> int:
     """1 for ``connectivity=8``, 0 for 4; anything else is an error."""
     if isinstance(connectivity, numbers.Integral) and not isinstance(connectivity, bool) \
             and connectivity in CONNECTIVITIES:
@@ -42,7 +55,9 @@ def eight_connected(connectivity):
     )
 
 
-def fill(fb, x, y, kind, connectivity, ref, color, buf=None):
+def fill(fb: FrameBuffer, x: object, y: object, kind: Kind, connectivity: object,
+         ref: Reference, color: NDArray[np.uint8], buf: Optional[NDArray[np.uint8]] = None
+         ) -> int:
     """Run the seed fill ``kind`` ("flood", "boundary" or "soft") from (x, y); return
     the number of pixels filled.  ``ref`` is the kernel's reference colors (see
     :mod:`scanline._kernels.seedfill`) or a function of (buf, packed, x, y) giving them.
@@ -51,23 +66,23 @@ def fill(fb, x, y, kind, connectivity, ref, color, buf=None):
 
     own, packed, width, height = target(fb)
     buf = own if buf is None else buf
-    x, y = seed(fb, x, y)
+    sx, sy = seed(fb, x, y)
     eight = eight_connected(connectivity)
-    ref = ref(buf, packed, x, y) if callable(ref) else ref
-    ref = np.ascontiguousarray(ref, np.int64)
+    table = np.ascontiguousarray(ref(buf, packed, sx, sy) if callable(ref) else ref, np.int64)
     code = {"flood": k.FLOOD, "boundary": k.BOUNDARY, "soft": k.SOFT}[kind]
     # the region is unknown before the fill: the raster bounds it (each pixel is
     # classified once and painted at most once)
     return int(call(k.seed_fill, 3 * width * height, buf, layout(packed), token(code), width,
-                    height, x, y, eight, ref, color))
+                    height, sx, sy, eight, table, color))
 
 
-def _region(buf, packed, width):
+def _region(buf: NDArray[np.uint8], packed: bool, width: int) -> NDArray[np.uint8]:
     """The storage as one comparable value per pixel: bits, or channel rows."""
     return np.unpackbits(buf[:, :, 0], axis=1, count=width)[..., None] if packed else buf
 
 
-def over_region(fb, x, y, kind, connectivity, ref, color):
+def over_region(fb: FrameBuffer, x: object, y: object, kind: Kind, connectivity: object,
+                ref: Reference, color: Color) -> int:
     """A seed fill in a translucent ``color``: the region is found on two copies of
     the storage, filled with two different values (a pixel of the region changes in
     at least one of them, any other pixel in neither), then ``color`` is composited
@@ -86,37 +101,42 @@ def over_region(fb, x, y, kind, connectivity, ref, color):
     return count
 
 
-def _fill_color(fb, x, y, kind, connectivity, ref, color):
+def _fill_color(fb: FrameBuffer, x: object, y: object, kind: Kind, connectivity: object,
+                ref: Reference, color: Optional[Color]) -> int:
     """Fill opaque, or composite a translucent color over the region."""
     from ._blend import translucent
 
-    if translucent(color, one=True):
+    if color is not None and translucent(color, one=True):
         return over_region(fb, x, y, kind, connectivity, ref, color)
     return fill(fb, x, y, kind, connectivity, ref, fb.pixel(color))
 
 
-def seed_value(buf, packed, x, y):
+def seed_value(buf: NDArray[np.uint8], packed: bool, x: int, y: int) -> NDArray[np.int64]:
     """The stored value of pixel (x, y): its bit in packed storage, else its channels."""
     if packed:
         return np.array([(int(buf[y, x >> 3, 0]) >> (7 - (x & 7))) & 1], np.int64)
-    return buf[y, x].astype(np.int64)
+    return np.asarray(buf[y, x], np.int64)
 
 
-def _tolerance(fb, tolerance):
+def _tolerance(fb: FrameBuffer, tolerance: object) -> int:
     if isinstance(tolerance, bool) or not isinstance(tolerance, numbers.Real):
         raise ArgumentTypeError(
             f"tolerance must be a number of levels >= 0, got {v._show(tolerance)}")
-    if not tolerance >= 0:  # also NaN
+    # a numbers.Real (an int of any size, a Fraction, a numpy scalar ...): typeshed's
+    # numbers.Real has no >= and does not suit min(), hence the float view
+    level = cast(float, tolerance)
+    if not level >= 0:  # also NaN
         raise ArgumentValueError(f"tolerance must be a number of levels >= 0, got {tolerance!r}")
-    if tolerance and fb.mode == "P":
+    if level and fb.mode == "P":
         raise ArgumentValueError(
             f"tolerance={tolerance!r}: mode 'P' stores color-table indices, which have no "
             "distance; use tolerance=0"
         )
-    return int(min(tolerance, 255))
+    return int(min(level, 255))
 
 
-def flood_fill(fb, x, y, color=None, connectivity=4, tolerance=0):
+def flood_fill(fb: FrameBuffer, x: float, y: float, color: Optional[Color] = None,
+               connectivity: Connectivity = 4, tolerance: float = 0) -> int:
     """Recolor the connected region of pixels that have the seed's value.
 
     Parameters
@@ -142,6 +162,15 @@ def flood_fill(fb, x, y, color=None, connectivity=4, tolerance=0):
     int
         The number of pixels in the region, all now ``color`` (also when ``color``
         is the old value and nothing visibly changes).
+
+    Raises
+    ------
+    ArgumentTypeError
+        If ``fb`` is not a FrameBuffer, or ``tolerance`` is not a number.
+    ArgumentValueError
+        For a seed outside the frame buffer, a connectivity other than 4 or 8, a
+        negative or NaN ``tolerance`` (or a nonzero one in mode ``"P"``), or a bad
+        color.
 
     Notes
     -----
@@ -181,14 +210,15 @@ def flood_fill(fb, x, y, color=None, connectivity=4, tolerance=0):
     target(fb)  # type check
     tol = _tolerance(fb, tolerance)
 
-    def ref(buf, packed, sx, sy):
+    def ref(buf: NDArray[np.uint8], packed: bool, sx: int, sy: int) -> NDArray[np.int64]:
         value = seed_value(buf, packed, sx, sy)
         return np.stack([value - tol, value + tol])
 
     return _fill_color(fb, x, y, "flood", connectivity, ref, color)
 
 
-def boundary_fill(fb, x, y, color=None, boundary=None, connectivity=4):
+def boundary_fill(fb: FrameBuffer, x: float, y: float, color: Optional[Color] = None,
+                  boundary: Optional[Colors] = None, connectivity: Connectivity = 4) -> int:
     """Paint outward from the seed until pixels of the boundary color(s).
 
     Parameters
@@ -211,6 +241,14 @@ def boundary_fill(fb, x, y, color=None, boundary=None, connectivity=4):
     -------
     int
         The number of pixels filled: the region bounded by the boundary colors.
+
+    Raises
+    ------
+    ArgumentTypeError
+        If ``fb`` is not a FrameBuffer.
+    ArgumentValueError
+        For a seed outside the frame buffer, a connectivity other than 4 or 8, an
+        empty list of boundary colors, or a bad color.
 
     Notes
     -----
@@ -239,6 +277,19 @@ def boundary_fill(fb, x, y, color=None, boundary=None, connectivity=4):
     References
     ----------
     See :func:`flood_fill`.
+
+    Examples
+    --------
+    A wall in the boundary color holds the fill on its left (the wall's own pixels
+    are not filled, but they are not background either):
+
+    >>> import scanline as sl
+    >>> fb = sl.FrameBuffer(7, 3, mode="L")
+    >>> sl.draw.line(fb, 3, 0, 3, 2, color=255)         # the boundary
+    >>> sl.draw.boundary_fill(fb, 0, 0, color=128, boundary=255)
+    9
+    >>> fb.to_array()[0].tolist()
+    [128, 128, 128, 255, 0, 0, 0]
     """
     target(fb)  # type check
     if isinstance(boundary, (list, np.ndarray)):

@@ -1,14 +1,23 @@
 """Soft fill, or tint fill: recolor an antialiased area and keep its soft edges
 (notes, syllabus: "Area-Fill Attributes - Soft fill")."""
 
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
 import numpy as np
 
 from ..errors import ArgumentValueError
 from ._common import target
 from .seedfill import fill
 
+if TYPE_CHECKING:
+    from .._typing import Color, Connectivity
+    from ..framebuffer import FrameBuffer
 
-def soft_fill(fb, x, y, color, foreground, background, connectivity=4):
+
+def soft_fill(fb: FrameBuffer, x: float, y: float, color: Color, foreground: Color,
+              background: Color, connectivity: Connectivity = 4) -> int:
     """Replace the foreground of a soft-edged area, blend by blend.
 
     From the seed, the connected region of pixels P that are blends
@@ -29,11 +38,21 @@ def soft_fill(fb, x, y, color, foreground, background, connectivity=4):
         The old foreground F and the background B the area was blended with; they
         must differ.
     connectivity : {4, 8}
+        4: the region spreads to the edge neighbors; 8: also to the corner
+        neighbors.
 
     Returns
     -------
     int
         The number of pixels repainted.
+
+    Raises
+    ------
+    ArgumentTypeError
+        If ``fb`` is not a FrameBuffer.
+    ArgumentValueError
+        For mode ``"1"`` or ``"P"``, equal ``foreground`` and ``background``, a seed
+        outside the frame buffer, a connectivity other than 4 or 8, or a bad color.
 
     Notes
     -----

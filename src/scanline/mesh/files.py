@@ -52,12 +52,23 @@ import re
 import stat
 import tempfile
 import warnings
+from dataclasses import dataclass
+from typing import (TYPE_CHECKING, Any, BinaryIO, Dict, List, Literal, Mapping, NoReturn,
+                    Optional, Sequence, Tuple, TypedDict, Union)
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError, ScanlineWarning
+from .materials import MaterialRecord
 from .mesh import Flat, Mesh, merge
+
+if TYPE_CHECKING:
+    from meshio import Mesh as MeshioMesh
+
+#: A file name as the functions take it.
+Path = Union[str, "os.PathLike[str]"]
 
 #: File types by extension.
 FORMATS = {".obj": "obj", ".ply": "ply", ".stl": "stl", ".gltf": "gltf", ".glb": "glb"}
@@ -77,9 +88,27 @@ MAX_PLY_HEADER = 64 << 10
 
 
 class MeshFileError(ArgumentValueError):
-    """A mesh file that cannot be read or written; ``file`` names it."""
+    """A mesh file that cannot be read or written; ``file`` names it.
 
-    def __init__(self, message, file=None):
+    Parameters
+    ----------
+    message : str
+        What is wrong.
+    file : str, optional
+        The file's name; the error's text is ``"FILE: MESSAGE"`` when given.
+
+    Examples
+    --------
+    >>> from scanline.mesh import MeshFileError
+    >>> error = MeshFileError("the file holds no faces", file="empty.obj")
+    >>> str(error), error.file
+    ('empty.obj: the file holds no faces', 'empty.obj')
+    """
+
+    file: Optional[str]
+    message: str
+
+    def __init__(self, message: str, file: Optional[str] = None) -> None:
         self.file = file
         self.message = message
         super().__init__(f"{file}: {message}" if file else message)
@@ -90,7 +119,7 @@ class MeshFileWarning(ScanlineWarning):
     glTF primitives that are not triangles)."""
 
 
-def _format(name, path, what):
+def _format(name: str, path: object, what: str) -> str:
     ext = os.path.splitext(name)[1].lower()
     if ext not in FORMATS:
         raise MeshFileError(f"cannot {what} {ext or 'a file without extension'}: use one of "
@@ -98,7 +127,7 @@ def _format(name, path, what):
     return FORMATS[ext]
 
 
-def _file_name(path, what="path"):
+def _file_name(path: object, what: str = "path") -> str:
     if not isinstance(path, (str, os.PathLike)):
         raise ArgumentTypeError(f"{what} must be a file name (str or os.PathLike), got "
                                 f"{v._show(path)} of type {type(path).__name__}")
@@ -110,7 +139,7 @@ def _file_name(path, what="path"):
     return name
 
 
-def _max_bytes(value):
+def _max_bytes(value: object) -> int:
     if value is None:
         return MAX_FILE_BYTES
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
@@ -121,7 +150,8 @@ def _max_bytes(value):
     return int(value)
 
 
-def read_regular_file(filename, limit, limit_name="max_bytes", budget_name="path"):
+def read_regular_file(filename: str, limit: int, limit_name: str = "max_bytes",
+                      budget_name: str = "path") -> bytes:
     """The bytes of the regular file ``filename``, read safely: opened without
     blocking, checked after opening (a regular file: no FIFO, device, socket or
     folder, whatever a symbolic link points to; at most ``limit`` bytes; within the
@@ -165,7 +195,8 @@ def read_regular_file(filename, limit, limit_name="max_bytes", budget_name="path
         try:
             # one byte more than the size: a file that grew shows; in pieces, since
             # one read() returns at most about 2 GiB
-            chunks, left = [], size + 1
+            chunks: List[bytes] = []
+            left = size + 1
             while left > 0:
                 chunk = f.read(min(left, 1 << 30))
                 if not chunk:
@@ -189,13 +220,22 @@ PLY_TYPES = {"char": 1, "uchar": 1, "int8": 1, "uint8": 1, "short": 2, "ushort":
              "float": 4, "float32": 4, "double": 8, "float64": 8, "int64": 8, "uint64": 8}
 
 
-def _ply_header(data, filename):
+@dataclass
+class _PlyElement:
+    """An element line of a PLY header, and what its properties take at least."""
+    name: str
+    count: int
+    nbytes: int = 0        # bytes of one element in a binary file
+    values: int = 0        # values of one element
+
+
+def _ply_header(data: bytes, filename: str) -> None:
     """Check a PLY header before meshio reads it: the magic line, ``end_header``
     within :data:`MAX_PLY_HEADER` bytes, the format, known property types, and
     element counts that the bytes after the header can hold (each element takes at
     least its fixed properties' bytes, or two characters per value in ASCII; a face
     at least three indices)."""
-    def fail(message):
+    def fail(message: str) -> NoReturn:
         raise MeshFileError(message, file=filename)
 
     if not re.match(rb"ply\r?\n", data[:5]):
@@ -207,7 +247,7 @@ def _ply_header(data, filename):
              "bytes: the file is truncated or not PLY")
     body = len(data) - match.end()
     ascii_ = None
-    elements = []
+    elements: List[_PlyElement] = []
     for raw in head[:match.start()].split(b"\n")[1:]:
         words = raw.decode("ascii", errors="replace").split()
         if not words or words[0] in ("comment", "obj_info"):
@@ -222,14 +262,15 @@ def _ply_header(data, filename):
             if len(words) != 3 or not (words[2].isascii() and words[2].isdigit()):
                 fail(f"the PLY header's element line {' '.join(words)!r} does not give a "
                      "count (element NAME COUNT, COUNT a whole number)")
-            elements.append([words[1], int(words[2]), 0, 0])   # name, count, bytes, values
+            elements.append(_PlyElement(words[1], int(words[2])))
         elif words[0] == "property":
             if not elements:
                 fail("the PLY header has a property before any element")
             element = elements[-1]
+            least: Optional[int]
             if len(words) == 5 and words[1] == "list":
                 types = words[2:4]
-                least = 3 if element[0] == "face" else 0
+                least = 3 if element.name == "face" else 0
             elif len(words) == 3:
                 types, least = words[1:2], None
             else:
@@ -239,27 +280,27 @@ def _ply_header(data, filename):
                     fail(f"the PLY property type {t!r} is not one of "
                          + ", ".join(sorted(PLY_TYPES)))
             if least is None:
-                element[2] += PLY_TYPES[types[0]]
-                element[3] += 1
+                element.nbytes += PLY_TYPES[types[0]]
+                element.values += 1
             else:
-                element[2] += PLY_TYPES[types[0]] + least * PLY_TYPES[types[1]]
-                element[3] += 1 + least
+                element.nbytes += PLY_TYPES[types[0]] + least * PLY_TYPES[types[1]]
+                element.values += 1 + least
         elif words[0] != "ply":
             fail(f"the PLY header has an unknown line {' '.join(words)[:60]!r}")
     if ascii_ is None:
         fail("the PLY header has no format line")
     need = 0
-    for name, count, nbytes, values in elements:
-        if values == 0 and count:
-            fail(f"the PLY element {name!r} has no properties but a count of {count}")
-        need += count * (2 * values if ascii_ else nbytes)
+    for e in elements:
+        if e.values == 0 and e.count:
+            fail(f"the PLY element {e.name!r} has no properties but a count of {e.count}")
+        need += e.count * (2 * e.values if ascii_ else e.nbytes)
         # (ASCII: a value and its separator, but the last line may lack its newline)
         if need - bool(ascii_) > body:
-            fail(f"the PLY header announces {count:,} {name} elements, more than the file's "
+            fail(f"the PLY header announces {e.count:,} {e.name} elements, more than the file's "
                  f"{body:,} bytes after the header can hold: the file is truncated or broken")
 
 
-def _read_stl(meshio, data):
+def _read_stl(meshio: Any, data: bytes) -> "MeshioMesh":
     """meshio's STL reading, on bytes: binary when the triangle count in the header
     matches the size (84 + 50 bytes per triangle), else ASCII."""
     from meshio.stl import _stl
@@ -272,21 +313,24 @@ def _read_stl(meshio, data):
                                                    ("attr count", "<i2")]),
                                    count=count, offset=84)["facet"]
             points, cells = _stl.data_from_facets(facets)
-            return meshio.Mesh(points, cells)
+            mesh: MeshioMesh = meshio.Mesh(points, cells)
+            return mesh
     f = io.BytesIO(data)
     if len(data) >= 80:
         f.readline()                 # the 'solid NAME' line
-    return _stl._read_ascii(f)
+    read: MeshioMesh = _stl._read_ascii(f)
+    return read
 
 
-def _arguments(path, name, max_bytes):
+def _arguments(path: object, name: object, max_bytes: object) -> Tuple[str, int, str]:
     filename = _file_name(path)
     if name is not None and not isinstance(name, str):
         raise ArgumentTypeError(f"name must be a string or None, got {v._show(name)}")
     return filename, _max_bytes(max_bytes), _format(filename, path, "read")
 
 
-def load_all(path, name=None, max_bytes=None):
+def load_all(path: Path, name: Optional[str] = None,
+             max_bytes: Optional[int] = None) -> List[Mesh]:
     """Read the parts of a mesh file: a list of meshes.
 
     An OBJ file gives one mesh per material (in the order its ``usemtl`` statements
@@ -296,6 +340,48 @@ def load_all(path, name=None, max_bytes=None):
     the default scene, moved by its node's transformation, with its material; PLY
     and STL one mesh.  ``sl.render(fb, sl.mesh.load_all(path), camera)`` draws each
     part in its material.  Parameters and errors as :func:`load`.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        A regular file (or a symbolic link to one) named ``.obj``, ``.ply``, ``.stl``,
+        ``.gltf`` or ``.glb``.
+    name : str, optional
+        The meshes' name (default: the file's).
+    max_bytes : int, optional
+        The largest file read (default :data:`MAX_FILE_BYTES`, 2 GiB); the memory
+        budget (:mod:`scanline.budget`) applies as well.
+
+    Returns
+    -------
+    list of Mesh
+        The file's parts, at least one.
+
+    Raises
+    ------
+    MeshFileError
+        As :func:`load`: naming the file, for a file that cannot be read as a mesh.
+    MemoryBudgetError
+        When reading the file would take more memory than the budget allows.
+
+    Examples
+    --------
+    An OBJ file of two materials gives two parts, each with its material and the
+    vertices its faces use, renumbered in their order (the blue face 2 4 3 uses
+    vertices 2, 3, 4: it becomes 0 2 1).
+
+    >>> import os, tempfile, scanline as sl
+    >>> folder = tempfile.mkdtemp()
+    >>> with open(os.path.join(folder, "two.mtl"), "w") as f:
+    ...     _ = f.write("newmtl red\\nKd 1 0 0\\nnewmtl blue\\nKd 0 0 1\\n")
+    >>> with open(os.path.join(folder, "two.obj"), "w") as f:
+    ...     _ = f.write("mtllib two.mtl\\nv 0 0 0\\nv 1 0 0\\nv 0 1 0\\nv 1 1 0\\n"
+    ...                 "usemtl red\\nf 1 2 3\\nusemtl blue\\nf 2 4 3\\n")
+    >>> parts = sl.mesh.load_all(os.path.join(folder, "two.obj"))
+    >>> [(part.material.name, part.material.kd) for part in parts]
+    [('red', (1.0, 0.0, 0.0)), ('blue', (0.0, 0.0, 1.0))]
+    >>> [part.faces.tolist() for part in parts]      # each part keeps its own vertices
+    [[[0, 1, 2]], [[0, 2, 1]]]
     """
     filename, limit, fmt = _arguments(path, name, max_bytes)
     data = read_regular_file(filename, limit)
@@ -311,7 +397,7 @@ def load_all(path, name=None, max_bytes=None):
     return [_read_meshio(data, fmt, filename, mesh_name)]
 
 
-def joined(parts, name):
+def joined(parts: List[Mesh], name: str) -> Mesh:
     """One mesh of ``parts`` (:func:`load_all`'s): the parts merged, keeping their
     material when they share one; parts of different materials get their faces
     colored by each material's diffuse color (a part without a material: the
@@ -321,15 +407,14 @@ def joined(parts, name):
         return parts[0]
     records = [p.material for p in parts]
     if len({id(r) for r in records}) > 1 and all(p.colors is None for p in parts) \
-            and all(r is None or hasattr(r, "diffuse_rgb255") for r in records):
-        from .materials import MaterialRecord
-
-        parts = [p.colored([(r or MaterialRecord("")).diffuse_rgb255] * p.face_count,
-                           color_on="face") for p, r in zip(parts, records)]
+            and all(r is None or isinstance(r, MaterialRecord) for r in records):
+        default = MaterialRecord("")
+        parts = [p.colored([(r if isinstance(r, MaterialRecord) else default).diffuse_rgb255]
+                           * p.face_count, color_on="face") for p, r in zip(parts, records)]
     return merge(parts, name=name)
 
 
-def load(path, name=None, max_bytes=None):
+def load(path: Path, name: Optional[str] = None, max_bytes: Optional[int] = None) -> Mesh:
     """Read a mesh from an OBJ, PLY, STL or glTF (``.gltf``, ``.glb``) file: one mesh.
 
     Faces of every polygon type in the file are kept (triangles, quadrilaterals,
@@ -351,6 +436,11 @@ def load(path, name=None, max_bytes=None):
     max_bytes : int, optional
         The largest file read (default :data:`MAX_FILE_BYTES`, 2 GiB); the memory
         budget (:mod:`scanline.budget`) applies as well.
+
+    Returns
+    -------
+    Mesh
+        The file's mesh (its parts merged).
 
     Raises
     ------
@@ -377,7 +467,7 @@ def load(path, name=None, max_bytes=None):
     return joined(parts, name or os.path.basename(_file_name(path)))
 
 
-def _read_meshio(data, fmt, filename, mesh_name):
+def _read_meshio(data: bytes, fmt: str, filename: str, mesh_name: str) -> Mesh:
     """A PLY or STL file's mesh, read by meshio."""
     import meshio
     from meshio.ply import _ply
@@ -406,19 +496,29 @@ def _read_meshio(data, fmt, filename, mesh_name):
 
 #: PLY vertex properties carried into the mesh: normals, colors, texture coordinates
 #: (the names exporters use, first match wins).
-PLY_NORMALS = ("nx", "ny", "nz")
-PLY_COLORS = (("red", "green", "blue", "alpha"), ("diffuse_red", "diffuse_green",
+PLY_NORMALS: Tuple[str, ...] = ("nx", "ny", "nz")
+PLY_COLORS: Tuple[Tuple[str, ...], ...] = (("red", "green", "blue", "alpha"), ("diffuse_red", "diffuse_green",
                                                   "diffuse_blue", "diffuse_alpha"),
               ("r", "g", "b", "a"))
-PLY_UV = (("s", "t"), ("u", "v"), ("texture_u", "texture_v"), ("texture_s", "texture_t"))
+PLY_UV: Tuple[Tuple[str, ...], ...] = (("s", "t"), ("u", "v"), ("texture_u", "texture_v"), ("texture_s", "texture_t"))
 
 
-def ply_attributes(data, count, face_data, face_count):
+class MeshKeywords(TypedDict, total=False):
+    """The keywords of :class:`Mesh` that a file's attributes give."""
+    normals: NDArray[np.float64]
+    colors: NDArray[np.uint8]
+    color_on: Literal["face", "vertex"]
+    uv: NDArray[np.float64]
+
+
+def ply_attributes(data: Mapping[str, Any], count: int, face_data: Mapping[str, Any],
+                   face_count: int) -> MeshKeywords:
     """The mesh keywords (normals, colors, color_on, uv) of meshio's PLY point data
     (and cell data: face colors)."""
-    out = {}
+    out: MeshKeywords = {}
 
-    def columns(table, names, n):
+    def columns(table: Mapping[str, Any], names: Sequence[str], n: int
+                ) -> Optional[NDArray[Any]]:
         if not all(k in table for k in names[:3 if len(names) > 2 else 2]):
             return None
         cols = [np.asarray(table[k]).reshape(-1) for k in names if k in table]
@@ -427,7 +527,9 @@ def ply_attributes(data, count, face_data, face_count):
     normals = columns(data, PLY_NORMALS, count)
     if normals is not None and np.isfinite(normals).all():
         out["normals"] = normals.astype(np.float64)
-    for table, n, on in ((data, count, "vertex"), (face_data, face_count, "face")):
+    places: Tuple[Tuple[Mapping[str, Any], int, Literal["face", "vertex"]], ...] = (
+        (data, count, "vertex"), (face_data, face_count, "face"))
+    for table, n, on in places:
         for names in PLY_COLORS:
             c = columns(table, names, n)
             if c is not None:
@@ -449,11 +551,12 @@ def ply_attributes(data, count, face_data, face_count):
     return out
 
 
-def meshio_faces(data):
+def meshio_faces(data: "MeshioMesh") -> Tuple[NDArray[np.int64], NDArray[np.int64], bool]:
     """(indices, sizes, whether every cell block was taken) of a meshio mesh's
     surface cells (triangle, quad, polygon and other 2-D cells); points, lines and
     volume cells are skipped."""
-    indices, sizes = [], []
+    indices: List[NDArray[Any]] = []
+    sizes: List[ArrayLike] = []
     kept_all = True
     for block in data.cells:
         if not (block.dim == 2 or block.type in ("triangle", "quad", "polygon")):
@@ -475,7 +578,7 @@ def meshio_faces(data):
     return np.concatenate(indices), np.concatenate(sizes).astype(np.int64), kept_all
 
 
-def _from_meshio(data, fmt, filename, mesh_name):
+def _from_meshio(data: "MeshioMesh", fmt: str, filename: str, mesh_name: str) -> Mesh:
     """A Mesh from what meshio read."""
     try:
         with np.errstate(all="ignore"):
@@ -494,6 +597,7 @@ def _from_meshio(data, fmt, filename, mesh_name):
         points = np.hstack([points, np.zeros((len(points), 1))])
     if not len(sizes):
         raise MeshFileError(f"the file holds no faces ({len(points)} vertices)", file=filename)
+    extra: MeshKeywords
     try:
         face_data = {k: np.concatenate([np.asarray(c).reshape(-1) for c in blocks])
                      for k, blocks in data.cell_data.items()} if kept_all else {}
@@ -512,7 +616,7 @@ def _from_meshio(data, fmt, filename, mesh_name):
                             file=filename) from None
 
 
-def _cells(mesh, fmt):
+def _cells(mesh: Mesh, fmt: str) -> List[Tuple[str, NDArray[np.int32]]]:
     """meshio cell blocks: triangles for STL, else one block per run of faces of one
     size (so the faces keep their order)."""
     if fmt == "stl":
@@ -533,7 +637,7 @@ def _cells(mesh, fmt):
 TEXT_ROWS = 1 << 16
 
 
-def _text_rows(out, fmt, rows):
+def _text_rows(out: io.StringIO, fmt: str, rows: NDArray[Any]) -> None:
     """Write ``rows`` (N, k) as lines of ``fmt`` (k fields), many rows per call of
     Python's formatting (numpy's savetxt formats one row a call: about twice as slow)."""
     for start in range(0, len(rows), TEXT_ROWS):
@@ -541,7 +645,7 @@ def _text_rows(out, fmt, rows):
         out.write((fmt * len(part)) % tuple(part.ravel().tolist()))
 
 
-def _obj_text(mesh):
+def _obj_text(mesh: Mesh) -> bytes:
     """Wavefront OBJ text of ``mesh``: ``v``, ``vt`` and ``vn`` lines (17 significant
     digits: the floats exactly) and faces ``f v/vt/vn`` (one index for all three, as
     the uv and normals are per vertex)."""
@@ -564,10 +668,10 @@ def _obj_text(mesh):
     return out.getvalue().encode("utf-8")
 
 
-def _ply_point_data(mesh):
+def _ply_point_data(mesh: Mesh) -> Dict[str, NDArray[Any]]:
     """meshio point data of the mesh's normals, uv and vertex colors (PLY properties
     nx ny nz, s t, red green blue alpha)."""
-    data = {}
+    data: Dict[str, NDArray[Any]] = {}
     if mesh.normals is not None:
         data.update(zip(PLY_NORMALS, mesh.normals.astype(np.float32).T))
     if mesh.uv is not None:
@@ -577,13 +681,40 @@ def _ply_point_data(mesh):
     return data
 
 
-def save(mesh, path):
+def save(mesh: Mesh, path: Path) -> None:
     """Write ``mesh`` to an OBJ, PLY, STL, glTF or GLB file (by extension), atomically.
 
     OBJ and PLY keep every face as it is, with the uv and normals (and in PLY the
     vertex colors); STL (triangles only) and glTF (triangles, with normals, uv,
     vertex colors and the material's diffuse color) get the faces split into
-    triangle fans.  A ``.gltf`` file holds its buffer as a data URI (one file)."""
+    triangle fans.  A ``.gltf`` file holds its buffer as a data URI (one file).
+
+    Parameters
+    ----------
+    mesh : Mesh
+        The mesh.
+    path : str or os.PathLike
+        The file, named ``.obj``, ``.ply``, ``.stl``, ``.gltf`` or ``.glb``; a file
+        there is replaced.
+
+    Raises
+    ------
+    ArgumentTypeError
+        If ``mesh`` is not a :class:`Mesh` or ``path`` not a file name.
+    MeshFileError
+        Naming the file, for an unknown extension, a folder, or a file that cannot
+        be written (nothing is left of it then).
+
+    Examples
+    --------
+    >>> import os, tempfile, scanline as sl
+    >>> path = os.path.join(tempfile.mkdtemp(), "tetrahedron.stl")
+    >>> tetrahedron = sl.mesh.Mesh([(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)],
+    ...                            [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]])
+    >>> sl.mesh.save(tetrahedron, path)
+    >>> os.path.getsize(path)             # binary STL: 84 bytes + 50 per triangle
+    284
+    """
     import meshio
 
     from ..framebuffer import write_atomically
@@ -595,7 +726,7 @@ def save(mesh, path):
         raise MeshFileError("it is a folder; give a file name", file=filename)
     fmt = _format(filename, path, "write")
 
-    def write(f):
+    def write(f: BinaryIO) -> None:
         if fmt == "obj":
             f.write(_obj_text(mesh))
             return

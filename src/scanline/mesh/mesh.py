@@ -9,7 +9,8 @@ faces have n vertices, else as a list.
 """
 
 import os
-from typing import TYPE_CHECKING, Any, Iterable, List, Optional, Tuple, Union
+from collections.abc import Iterable, Sized
+from typing import TYPE_CHECKING, List, Literal, Optional, Tuple, TypeVar, Union
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -21,6 +22,8 @@ from ..errors import ArgumentTypeError, ArgumentValueError
 from ..transform3d.arrays import finite, real_array
 
 if TYPE_CHECKING:
+    from ..lighting.material import Material
+    from .materials import MaterialRecord
     from .tables import PolygonTables
 
 #: Default tolerance of the planarity test, relative to a face's size.
@@ -35,7 +38,7 @@ class Flat:
 
     __slots__ = ("indices", "sizes")
 
-    def __init__(self, indices, sizes):
+    def __init__(self, indices: ArrayLike, sizes: ArrayLike) -> None:
         self.indices = np.ascontiguousarray(indices, np.int64).reshape(-1)
         self.sizes = np.ascontiguousarray(sizes, np.int64).reshape(-1)
 
@@ -50,7 +53,7 @@ BYTES_PER_FACE = 64
 BYTES_PER_INDEX = 80
 
 
-def mesh_bytes(n_vertices, n_faces, n_indices):
+def mesh_bytes(n_vertices: int, n_faces: int, n_indices: int) -> int:
     """The estimated peak bytes of making a mesh of ``n_vertices`` vertices and
     ``n_faces`` faces holding ``n_indices`` vertex indices together (Python ints:
     exact at any size)."""
@@ -58,7 +61,8 @@ def mesh_bytes(n_vertices, n_faces, n_indices):
             + int(n_indices) * BYTES_PER_INDEX)
 
 
-def check_mesh_budget(argument, n_vertices, n_faces, n_indices, what, hint=None):
+def check_mesh_budget(argument: str, n_vertices: int, n_faces: int, n_indices: int, what: str,
+                      hint: Optional[str] = None) -> None:
     """Refuse, before anything is allocated, a mesh whose :func:`mesh_bytes` passes
     the memory budget: a :class:`~scanline.errors.MemoryBudgetError` naming
     ``argument`` (the argument that sets the size)."""
@@ -69,7 +73,8 @@ def check_mesh_budget(argument, n_vertices, n_faces, n_indices, what, hint=None)
                  hint=hint or f"give a smaller {argument}")
 
 
-def _flat_faces(faces, n_vertices):
+def _flat_faces(faces: object, n_vertices: int
+                ) -> Tuple[NDArray[np.int64], NDArray[np.int64]]:
     """``(indices, offsets)`` of faces given as an (F, n) array, a list of index
     sequences or a :class:`Flat`, checked: integers in range, at least three per
     face, none repeated within a face."""
@@ -128,7 +133,8 @@ def _flat_faces(faces, n_vertices):
 PAIRWISE_CHECK = 8
 
 
-def _repeated_vertex(indices, sizes, offsets, n_vertices):
+def _repeated_vertex(indices: NDArray[np.int64], sizes: NDArray[np.int64],
+                     offsets: NDArray[np.int64], n_vertices: int) -> int:
     """The first face that visits a vertex twice, or -1."""
     most = int(sizes.max())
     if most <= PAIRWISE_CHECK and int(sizes.min()) == most:     # all of one size: columns
@@ -158,7 +164,7 @@ def _repeated_vertex(indices, sizes, offsets, n_vertices):
     return int(keys[1:][np.argmax(dup)] // max(n_vertices, 1)) if dup.any() else -1
 
 
-def _colors(name, colors, count):
+def _colors(name: str, colors: Iterable[object], count: int) -> NDArray[np.uint8]:
     """(count, 4) uint8 RGBA from one color spec per item (or an (count, 3|4) array)."""
     from ..color.spec import rgba
 
@@ -173,7 +179,10 @@ def _colors(name, colors, count):
                           f"{name}[{i}]") for i, c in enumerate(colors)], np.uint8).reshape(-1, 4)
 
 
-def _material(material):
+_M = TypeVar("_M")
+
+
+def _material(material: _M) -> _M:
     """``material`` checked: None, a :class:`scanline.lighting.Material` (recognized
     by its coefficients: geometry does not import the lighting, docs/architecture.md)
     or a mesh file's :class:`~scanline.mesh.materials.MaterialRecord`."""
@@ -223,10 +232,22 @@ class Mesh:
     [[0.0, 0.0, 2.0, 0.0]]
     """
 
+    vertices: NDArray[np.float64]
+    face_indices: NDArray[np.int64]
+    face_offsets: NDArray[np.int64]
+    normals: Optional[NDArray[np.float64]]
+    colors: Optional[NDArray[np.uint8]]
+    color_on: Optional[Literal["face", "vertex"]]
+    uv: Optional[NDArray[np.float64]]
+    material: Union["Material", "MaterialRecord", None]
+    name: Optional[str]
+    _edges: Optional[NDArray[np.int64]]
+
     def __init__(self, vertices: ArrayLike, faces: Union[ArrayLike, "Flat"],
                  colors: Union[Color, ArrayLike, None] = None, normals: Optional[ArrayLike] = None,
-                 color_on: Optional[str] = None, name: Optional[str] = None,
-                 uv: Optional[ArrayLike] = None, material: Any = None) -> None:
+                 color_on: Optional[Literal["face", "vertex"]] = None, name: Optional[str] = None,
+                 uv: Optional[ArrayLike] = None,
+                 material: Union["Material", "MaterialRecord", None] = None) -> None:
         verts = real_array("vertices", vertices, "(V, 3)")
         if verts.ndim == 1 and verts.size == 0:
             verts = verts.reshape(0, 3)
@@ -258,15 +279,15 @@ class Mesh:
         self.name = name
         self._edges = None
 
-    def _set_colors(self, colors, color_on):
+    def _set_colors(self, colors: object, color_on: Optional[str]) -> None:
         nf, nv = self.face_count, len(self.vertices)
         if isinstance(colors, (str, tuple)) or (isinstance(colors, int)
                                                 and not isinstance(colors, bool)):
             colors = [colors] * nf
             color_on = "face"
-        if isinstance(colors, (bytes, dict)) or not hasattr(colors, "__len__") \
-                or not hasattr(colors, "__iter__") or (isinstance(colors, np.ndarray)
-                                                       and colors.ndim == 0):
+        if isinstance(colors, (bytes, dict)) or not isinstance(colors, Sized) \
+                or not isinstance(colors, Iterable) or (isinstance(colors, np.ndarray)
+                                                        and colors.ndim == 0):
             raise ArgumentTypeError(
                 f"colors must be one color (a name or (r, g, b)) or one color per face or per "
                 f"vertex, got {v._show(colors)}")
@@ -282,7 +303,7 @@ class Mesh:
             raise ArgumentValueError(
                 f"colors holds {n} colors; give one per face ({nf}) or one per vertex ({nv})")
         self.colors = _colors("colors", colors, n)
-        self.color_on = color_on
+        self.color_on = "face" if color_on == "face" else "vertex"
 
     # -- structure ------------------------------------------------------------------------
     @property
@@ -376,7 +397,7 @@ class Mesh:
             return self.face_indices.reshape(-1, int(sizes[0]))
         return [self.face(i) for i in range(self.face_count)]
 
-    def _half_edges(self):
+    def _half_edges(self) -> Tuple[NDArray[np.int64], NDArray[np.int64]]:
         """Every face edge (a, b) in face order, (K, 2), and the face of each."""
         idx, off = self.face_indices, self.face_offsets
         nxt = np.arange(1, len(idx) + 1)
@@ -438,10 +459,10 @@ class Mesh:
         second[has2] = owner[order[starts[has2] + 1]]
         return np.stack([first, second], axis=1), count
 
-    def __len__(self):
+    def __len__(self) -> int:
         return self.face_count
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         name = f" {self.name!r}" if self.name else ""
         return (f"<Mesh{name}: {len(self.vertices)} vertices, {self.face_count} faces, "
                 f"{len(self.edges)} edges>")
@@ -574,7 +595,8 @@ class Mesh:
         [[0.0, 0.0, 1.0]]
         """
         p = self.plane_equations()[:, :3]
-        return p / np.sqrt((p * p).sum(axis=1))[:, None]
+        unit: NDArray[np.float64] = p / np.sqrt((p * p).sum(axis=1))[:, None]
+        return unit
 
     def inside(self, points: ArrayLike) -> Union[bool, NDArray[np.bool_]]:
         """Whether each point is inside the mesh, by Hearn & Baker's test: behind
@@ -657,7 +679,8 @@ class Mesh:
         return PolygonTables.from_mesh(self)
 
     # -- new meshes -------------------------------------------------------------------------
-    def _like(self, vertices, normals=None):
+    def _like(self, vertices: NDArray[np.float64],
+              normals: Optional[NDArray[np.float64]] = None) -> "Mesh":
         new = object.__new__(Mesh)
         new.__dict__.update(self.__dict__)
         new.vertices = np.ascontiguousarray(vertices)
@@ -739,7 +762,7 @@ class Mesh:
         return self.transformed(t3.translation(*vector("offset", offset)))
 
     def colored(self, colors: Union[Color, ArrayLike],
-                color_on: Optional[str] = None) -> "Mesh":
+                color_on: Optional[Literal["face", "vertex"]] = None) -> "Mesh":
         """A copy with other colors (see the constructor).
 
         Parameters
@@ -803,7 +826,7 @@ class Mesh:
         return new
 
     @staticmethod
-    def from_any(obj: Any, name: Optional[str] = None) -> "Mesh":
+    def from_any(obj: object, name: Optional[str] = None) -> "Mesh":
         """A mesh of ``obj``: a trimesh ``Trimesh`` or ``Scene``, a meshio ``Mesh``, an
         Open3D ``TriangleMesh`` or any object with ``vertices`` and ``faces`` arrays
         (their normals, colors and uv where they have them); a Mesh as it is.  The
@@ -860,24 +883,27 @@ class Mesh:
         save(self, path)
 
 
-def _rows_in(table, rows):
+def _rows_in(table: NDArray[np.int64], rows: NDArray[np.int64]) -> NDArray[np.intp]:
     """For each row of ``rows`` (K, 2), its index in the sorted unique ``table``."""
     big = max(int(table.max()) + 1, 1) if len(table) else 1
     keys = table[:, 0] * big + table[:, 1]
     return np.searchsorted(keys, rows[:, 0] * big + rows[:, 1])
 
 
-def _reversed_faces(indices, offsets):
+def _reversed_faces(indices: NDArray[np.int64], offsets: NDArray[np.int64]
+                    ) -> NDArray[np.int64]:
     """The flat face indices with every face's vertices in reverse order."""
     sizes = np.diff(offsets)
     owner = np.repeat(np.arange(len(sizes)), sizes)
     # position q of face f (offsets[f] <= q < offsets[f + 1]) takes the vertex at
     # offsets[f] + offsets[f + 1] - 1 - q
     q = np.arange(len(indices))
-    return indices[offsets[owner] + offsets[owner + 1] - 1 - q]
+    out: NDArray[np.int64] = indices[offsets[owner] + offsets[owner + 1] - 1 - q]
+    return out
 
 
-def _newell(vertices, indices, offsets):
+def _newell(vertices: NDArray[np.float64], indices: NDArray[np.int64],
+            offsets: NDArray[np.int64]) -> NDArray[np.float64]:
     """Newell's plane (A, B, C, D) of each face, (F, 4)."""
     n = len(offsets) - 1
     sizes = np.diff(offsets)
@@ -898,7 +924,8 @@ def _newell(vertices, indices, offsets):
     return np.hstack([normal, d[:, None]])
 
 
-def _face_sizes(vertices, indices, offsets):
+def _face_sizes(vertices: NDArray[np.float64], indices: NDArray[np.int64],
+                offsets: NDArray[np.int64]) -> NDArray[np.float64]:
     """The largest extent of each face's bounding box, (F,)."""
     n = len(offsets) - 1
     owner = np.repeat(np.arange(n), np.diff(offsets))
@@ -907,7 +934,8 @@ def _face_sizes(vertices, indices, offsets):
     hi = np.full((n, 3), -np.inf)
     np.minimum.at(lo, owner, p)
     np.maximum.at(hi, owner, p)
-    return (hi - lo).max(axis=1)
+    extent: NDArray[np.float64] = (hi - lo).max(axis=1)
+    return extent
 
 
 def merge(meshes: Union[Mesh, Iterable[Mesh]], name: Optional[str] = None) -> Mesh:

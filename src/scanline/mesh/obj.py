@@ -24,10 +24,13 @@ fast path (Clinger 1990) where it is exact, numpy's conversion of the few others
 import os
 import re
 import warnings
+from typing import Dict, List, NoReturn, Optional, Tuple
 
 import numpy as np
+from numpy.typing import NDArray
 
 from ..errors import ArgumentValueError
+from .materials import MaterialRecord
 from .mesh import Flat, Mesh, check_mesh_budget
 
 _WHAT = ("vertex", "texture coordinate", "normal")
@@ -48,8 +51,18 @@ class ObjContent:
     __slots__ = ("vertices", "uv", "normals", "colors", "indices", "sizes", "face_line",
                  "face_material", "materials")
 
+    vertices: NDArray[np.float64]
+    uv: Optional[NDArray[np.float64]]
+    normals: Optional[NDArray[np.float64]]
+    colors: Optional[NDArray[np.uint8]]
+    indices: NDArray[np.int64]
+    sizes: NDArray[np.int64]
+    face_line: NDArray[np.int64]
+    face_material: NDArray[np.int64]
+    materials: List[Optional[MaterialRecord]]
 
-def _message(code, err, data, totals):
+
+def _message(code: int, err: NDArray[np.int64], data: bytes, totals: NDArray[np.int64]) -> str:
     from .._kernels import objtext as k
 
     token = data[err[2]:err[3]].decode("utf-8", errors="replace")
@@ -76,14 +89,14 @@ def _message(code, err, data, totals):
             f"has {int(totals[kind])} {_ELEMENTS[kind]}")
 
 
-def read_obj(data, filename):
+def read_obj(data: bytes, filename: str) -> ObjContent:
     """The :class:`ObjContent` of the OBJ bytes ``data`` (read from ``filename``,
     which names errors and locates ``mtllib`` files)."""
     from .._kernels._jit import call
     from .._kernels import objtext as k
     from .files import MeshFileError, MeshFileWarning
 
-    def fail(line, message):
+    def fail(line: int, message: str) -> NoReturn:
         raise MeshFileError(f"line {line}: {message}", file=filename)
 
     buf = np.frombuffer(bytearray(data), np.uint8)
@@ -130,7 +143,8 @@ def read_obj(data, filename):
 TOKEN_BYTES = 32
 
 
-def _exactly(buf, data, rows, arrays):
+def _exactly(buf: NDArray[np.uint8], data: bytes, rows: NDArray[np.int64],
+             arrays: Tuple[NDArray[np.float64], ...]) -> None:
     """Convert again, correctly rounded, the numbers of the v/vt/vn ``rows`` that the
     kernel's fast path could not round exactly (more than 15 digits, or powers of
     ten beyond 22): their bytes gathered by a kernel, converted by numpy's
@@ -145,7 +159,7 @@ def _exactly(buf, data, rows, arrays):
     tokens = np.zeros((most, TOKEN_BYTES), np.uint8)
     where = np.zeros((most, 3), np.int64)
     long_rows = np.zeros(len(rows), bool)
-    m = call(obj_tokens, 8 * most, buf, rows, widths, tokens, where, long_rows)
+    m: int = call(obj_tokens, 8 * most, buf, rows, widths, tokens, where, long_rows)
     values = tokens[:m].view(f"S{TOKEN_BYTES}").reshape(-1).astype(np.float64)
     for kind, target in enumerate(arrays):
         pick = where[:m, 0] == kind
@@ -159,7 +173,8 @@ def _exactly(buf, data, rows, arrays):
                 break
 
 
-def _split(out, uvs, nrm, corners, nv):
+def _split(out: ObjContent, uvs: NDArray[np.float64], nrm: NDArray[np.float64],
+           corners: NDArray[np.int64], nv: int) -> Optional[NDArray[np.int64]]:
     """Mesh vertices from the corners' (v, vt, vn) triples (module docstring): sets
     the faces' indices, uv and normals, and returns the position row of each mesh
     vertex (None: the positions as they are)."""
@@ -184,7 +199,7 @@ def _split(out, uvs, nrm, corners, nv):
     table = np.full(size, -1, np.int64)
     vertex = np.zeros(len(corners), np.int64)
     unique = np.zeros((len(corners), 3), np.int64)
-    count = call(obj_split, 3 * len(corners), corners, table, vertex, unique)
+    count: int = call(obj_split, 3 * len(corners), corners, table, vertex, unique)
     unique = unique[:count]
     out.indices = vertex
     out.uv = uvs[unique[:, 1]] if has_t and (unique[:, 1] >= 0).all() else None
@@ -192,7 +207,7 @@ def _split(out, uvs, nrm, corners, nv):
     return unique[:, 0]
 
 
-def _materials(out, events, data, filename):
+def _materials(out: ObjContent, events: NDArray[np.int64], data: bytes, filename: str) -> None:
     """Each face's material from the ``usemtl`` statements, the records from the
     ``mtllib`` files (a missing file or material: a warning, and no material)."""
     from .._kernels.objtext import EVENT_MTLLIB
@@ -200,7 +215,9 @@ def _materials(out, events, data, filename):
     from .materials import read_mtl
 
     nf = len(out.sizes)
-    library, names, starts = {}, [], []
+    library: Dict[str, MaterialRecord] = {}
+    names: List[str] = []
+    starts: List[int] = []
     folder = os.path.dirname(os.path.abspath(filename))
     for kind, a, b, face, line in events.tolist():
         text = data[a:b].decode("utf-8", errors="replace")
@@ -221,7 +238,8 @@ def _materials(out, events, data, filename):
         else:
             names.append(text)
             starts.append(face)
-    order, numbers = [], {}
+    order: List[str] = []
+    numbers: Dict[str, int] = {}
     face_material = np.full(nf, -1, np.int64)
     bounds = starts + [nf]
     for i, name in enumerate(names):
@@ -237,7 +255,8 @@ def _materials(out, events, data, filename):
     out.materials = [library.get(n) for n in order]
 
 
-def _mesh(content, filename, name, faces=None):
+def _mesh(content: ObjContent, filename: str, name: str,
+          faces: Optional[NDArray[np.bool_]] = None) -> Mesh:
     """The Mesh of ``content`` (of its faces ``faces``, a boolean mask, with only the
     vertices they use), errors naming the file and the face's line."""
     from .files import MeshFileError
@@ -263,13 +282,13 @@ def _mesh(content, filename, name, faces=None):
         raise MeshFileError(f"{where}the file's mesh is broken: {text}", file=filename) from None
 
 
-def obj_meshes(data, filename, name):
+def obj_meshes(data: bytes, filename: str, name: str) -> List[Mesh]:
     """One Mesh per material (in the order first used; faces before any ``usemtl``
     first), each with its material and only the vertices its faces use (one
     material: the file's vertex list as it is)."""
     content = read_obj(data, filename)
     groups = np.unique(content.face_material)
-    out = []
+    out: List[Mesh] = []
     for m in groups:
         mesh = _mesh(content, filename, name,
                      content.face_material == m if len(groups) > 1 else None)

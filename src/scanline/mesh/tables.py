@@ -14,16 +14,22 @@ polygon has a reciprocal pointer back to the polygon in the edge table.  Tables 
 numbered from 1 when printed, as in the book, and from 0 in the arrays.
 """
 
+from typing import TYPE_CHECKING, List, Optional, Sequence
+
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
 from ..transform3d.arrays import finite, real_array
 
+if TYPE_CHECKING:
+    from .mesh import Mesh
+
 _LOWEST = -v.INT64_MAX - 1
 
 
-def _index_table(name, value, columns=None):
+def _index_table(name: str, value: object, columns: Optional[int] = None) -> NDArray[np.int64]:
     try:
         a = np.asarray(value)
     except (TypeError, ValueError, OverflowError):
@@ -36,7 +42,7 @@ def _index_table(name, value, columns=None):
     return v.index_array(name, a, shape=(None, a.shape[1]), low=_LOWEST)
 
 
-def _index_lists(name, value):
+def _index_lists(name: str, value: object) -> List[NDArray[np.int64]]:
     """A list of 1-D int64 arrays (each table entry's indices, in range or not:
     :meth:`PolygonTables.check` reports those out of range)."""
     if isinstance(value, (str, bytes, dict)) or not hasattr(value, "__iter__") or (
@@ -59,6 +65,7 @@ class PolygonTables:
     Parameters
     ----------
     vertices : array_like, shape (V, 3)
+        The vertex table: each vertex's (x, y, z).
     edges : array_like of int, shape (E, 2)
         Vertex indices (0-based) of each edge.
     surfaces : list of sequences of int
@@ -69,9 +76,47 @@ class PolygonTables:
 
     Build them from a mesh with :meth:`scanline.mesh.Mesh.polygon_tables`, or give
     the tables directly (also broken ones: :meth:`check` says what is wrong).
+
+    Raises
+    ------
+    ArgumentValueError
+        If ``vertices`` is not a finite (V, 3) array or ``edges`` not an (E, 2)
+        integer array.
+    ArgumentTypeError
+        If ``surfaces`` or ``edge_surfaces`` is not a list of index lists.
+
+    Notes
+    -----
+    Hearn & Baker, section 10-1, "polygon tables".
+
+    Examples
+    --------
+    One triangle: three vertices, three edges, one surface S1: E1, E2, E3.
+
+    >>> from scanline.mesh import PolygonTables
+    >>> tables = PolygonTables([(0, 0, 0), (1, 0, 0), (0, 1, 0)],
+    ...                        [(0, 1), (1, 2), (2, 0)], [[0, 1, 2]])
+    >>> print(tables)
+    vertex table
+      V1: 0, 0, 0
+      V2: 1, 0, 0
+      V3: 0, 1, 0
+    edge table
+      E1: V1, V2   (S1)
+      E2: V2, V3   (S1)
+      E3: V3, V1   (S1)
+    polygon-surface table
+      S1: E1, E2, E3
     """
 
-    def __init__(self, vertices, edges, surfaces, edge_surfaces=None):
+    vertices: NDArray[np.float64]
+    edges: NDArray[np.int64]
+    surfaces: List[NDArray[np.int64]]
+    edge_surfaces: List[List[int]]
+
+    def __init__(self, vertices: ArrayLike, edges: ArrayLike,
+                 surfaces: Sequence[Sequence[int]],
+                 edge_surfaces: Optional[Sequence[Sequence[int]]] = None) -> None:
         verts = finite("vertices", real_array("vertices", vertices, "(V, 3)"))
         if verts.ndim == 1 and verts.size == 0:
             verts = verts.reshape(0, 3)
@@ -81,7 +126,7 @@ class PolygonTables:
         self.edges = _index_table("edges", edges, 2)
         self.surfaces = _index_lists("surfaces", surfaces)
         if edge_surfaces is None:
-            pointers = [[] for _ in range(len(self.edges))]
+            pointers: List[List[int]] = [[] for _ in range(len(self.edges))]
             for s, ring in enumerate(self.surfaces):
                 for e in ring.tolist():
                     if 0 <= e < len(pointers) and s not in pointers[e]:
@@ -90,9 +135,31 @@ class PolygonTables:
         self.edge_surfaces = [p.tolist() for p in _index_lists("edge_surfaces", edge_surfaces)]
 
     @classmethod
-    def from_mesh(cls, mesh):
+    def from_mesh(cls, mesh: "Mesh") -> "PolygonTables":
         """The tables of a :class:`~scanline.mesh.Mesh`: its distinct edges and, for
-        each face, its edges in order (face i's edge k joins its vertices k and k + 1)."""
+        each face, its edges in order (face i's edge k joins its vertices k and k + 1).
+
+        Parameters
+        ----------
+        mesh : Mesh
+            The polygon mesh.
+
+        Returns
+        -------
+        PolygonTables
+            Its tables (:meth:`scanline.mesh.Mesh.polygon_tables` gives the same).
+
+        Examples
+        --------
+        A square's four edges, numbered in the sorted order of their vertex pairs:
+        (0, 1), (0, 3), (1, 2), (2, 3); the face walks them as E1, E3, E4, E2.
+
+        >>> import scanline as sl
+        >>> square = sl.mesh.Mesh([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)], [[0, 1, 2, 3]])
+        >>> tables = sl.mesh.PolygonTables.from_mesh(square)
+        >>> [ring.tolist() for ring in tables.surfaces]
+        [[0, 2, 3, 1]]
+        """
         from .mesh import _rows_in
 
         half, owner = mesh._half_edges()
@@ -103,17 +170,37 @@ class PolygonTables:
         tables.vertices = mesh.vertices
         tables.edges = mesh.edges
         tables.surfaces = surfaces
-        pointers = [[] for _ in range(len(mesh.edges))]
+        pointers: List[List[int]] = [[] for _ in range(len(mesh.edges))]
         for e, s in zip(which.tolist(), owner.tolist()):
             pointers[e].append(s)
         tables.edge_surfaces = pointers
         return tables
 
-    def check(self):
+    def check(self) -> List[str]:
         """Hearn & Baker's consistency checks: a list of problems, empty when the
         tables are consistent.  Each problem is a sentence naming the table entry
-        (numbered from 1, as printed)."""
-        problems = []
+        (numbered from 1, as printed).
+
+        Returns
+        -------
+        list of str
+            The problems found, in the order of the checks; empty when none.
+
+        Examples
+        --------
+        Two edges of a triangle without the third: the surface is not closed,
+        and V1 and V3 end one edge each.
+
+        >>> from scanline.mesh import PolygonTables
+        >>> tables = PolygonTables([(0, 0, 0), (1, 0, 0), (0, 1, 0)],
+        ...                        [(0, 1), (1, 2)], [[0, 1]])
+        >>> for problem in tables.check():
+        ...     print(problem)
+        vertex V1 is an endpoint of 1 edge(s); every vertex must be an endpoint of at least two
+        vertex V3 is an endpoint of 1 edge(s); every vertex must be an endpoint of at least two
+        surface S1 has 2 edges; a polygon needs at least three
+        """
+        problems: List[str] = []
         nv, ne = len(self.vertices), len(self.edges)
         for e, (a, b) in enumerate(self.edges.tolist()):
             for end in (a, b):
@@ -160,20 +247,52 @@ class PolygonTables:
         return problems
 
     @property
-    def consistent(self):
-        """Whether :meth:`check` finds nothing."""
+    def consistent(self) -> bool:
+        """Whether :meth:`check` finds nothing.
+
+        Returns
+        -------
+        bool
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> sl.mesh.cube().polygon_tables().consistent
+        True
+        """
         return not self.check()
 
-    def validate(self):
+    def validate(self) -> None:
         """Raise ArgumentValueError with the first problems if the tables are not
-        consistent."""
+        consistent.
+
+        Returns
+        -------
+        None
+
+        Raises
+        ------
+        ArgumentValueError
+            If :meth:`check` finds a problem; the message gives the first three.
+
+        Examples
+        --------
+        >>> from scanline.mesh import PolygonTables
+        >>> PolygonTables([(0, 0, 0), (1, 0, 0), (0, 1, 0)],
+        ...               [(0, 1), (1, 2), (2, 0)], [[0, 1, 2]]).validate()
+        >>> PolygonTables([(0, 0, 0), (1, 0, 0), (0, 1, 0)],
+        ...               [(0, 1), (1, 2), (2, 0)], [[0, 1]]).validate()
+        Traceback (most recent call last):
+        ...
+        scanline.errors.ArgumentValueError: the polygon tables are not consistent: surface S1 has 2 edges; a polygon needs at least three; edge E3 is not part of any polygon
+        """
         problems = self.check()
         if problems:
             more = f" (and {len(problems) - 3} more)" if len(problems) > 3 else ""
             raise ArgumentValueError("the polygon tables are not consistent: "
                                      + "; ".join(problems[:3]) + more)
 
-    def __str__(self):
+    def __str__(self) -> str:
         lines = ["vertex table"]
         lines += [f"  V{i + 1}: {x:g}, {y:g}, {z:g}" for i, (x, y, z) in
                   enumerate(self.vertices.tolist())]
@@ -187,12 +306,12 @@ class PolygonTables:
                   for s, ring in enumerate(self.surfaces)]
         return "\n".join(lines)
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return (f"<PolygonTables: {len(self.vertices)} vertices, {len(self.edges)} edges, "
                 f"{len(self.surfaces)} surfaces>")
 
 
-def _closed(edges, ring):
+def _closed(edges: NDArray[np.int64], ring: NDArray[np.int64]) -> bool:
     """Whether the edges ``ring`` (in order) form one closed loop."""
     pairs = [tuple(edges[e]) for e in ring]
     shared = set(pairs[0]) & set(pairs[-1])

@@ -73,12 +73,12 @@ def _materials(materials: Any, meshes: Sequence["Mesh"]) -> tuple["Material", ..
     if materials is None:
         default = Material()
         own = tuple(m.material if m.material is not None else default for m in meshes)
-        own = tuple(_from_record(m) if isinstance(m, MaterialRecord) else m for m in own)
-        for i, m in enumerate(own):
+        mats = tuple(_from_record(m) if isinstance(m, MaterialRecord) else m for m in own)
+        for i, m in enumerate(mats):
             if not isinstance(m, Material):
                 raise ArgumentTypeError(f"meshes[{i}].material must be a sl.lighting.Material, "
                                         f"got {v._show(m)}")
-        return own
+        return mats
     if isinstance(materials, Material):
         return (materials,) * n
     if isinstance(materials, (str, bytes)) or not hasattr(materials, "__iter__"):

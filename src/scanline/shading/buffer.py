@@ -11,24 +11,37 @@ does not do: fast Phong, shadow maps, depth cueing, layers of fragments.
 """
 
 import functools
+from collections.abc import Iterable, Sequence
+from typing import TYPE_CHECKING, Any, Callable, Dict, Tuple, Union
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 
 from ..lighting import AmbientLight, DirectionalLight, SpotLight
+from ..lighting.lights import Light
 from ..lighting.model import ViewerAtInfinity
+
+if TYPE_CHECKING:
+    from ..framebuffer import FrameBuffer
+    from ..lighting.material import Material
+    from ..screen.scene import ScreenScene
+    from .options import ShadingOptions
+
+#: What :func:`texture_rows` gives: the materials' texture rows, texels and levels.
+TextureRows = Tuple[NDArray[np.int64], NDArray[np.float32], NDArray[np.int64]]
 
 #: Shading models the kernel draws (the rest go through the numpy path).
 MODELS = ("none", "flat", "gouraud", "phong")
 
 
-def source_rows(lights):
+def source_rows(lights: Iterable[Light]) -> Tuple[NDArray[np.float64], NDArray[np.float64]]:
     """The non-ambient lights as rows (S, 16) of the kernel's source table:
     homogeneous position, attenuation a0 a1 a2, spot cos(angle), exponent, spot flag,
     spot axis, RGB intensity; and the summed ambient intensity (3,)."""
     ambient = np.zeros(3)
-    rows = []
+    rows: list[NDArray[np.float64]] = []
     for light in lights:
         if isinstance(light, AmbientLight):
             ambient = ambient + light.intensity
@@ -51,7 +64,7 @@ def source_rows(lights):
     return np.array(rows).reshape(-1, 16), np.ascontiguousarray(ambient, np.float64)
 
 
-def material_rows(materials, gamma=2.2):
+def material_rows(materials: Sequence["Material"], gamma: float = 2.2) -> NDArray[np.float64]:
     """ka, kd, ks, n_s, S_s of each material, the least s = V . R (or N . H) whose
     s^n_s reaches :data:`scanline._kernels.shade.SHINE_FLOOR` (0 for n_s = 0), and
     its color S_d decoded with ``gamma`` (linear), (M, 11)."""
@@ -67,7 +80,7 @@ def material_rows(materials, gamma=2.2):
     return np.array(rows, np.float64).reshape(-1, 11)
 
 
-def homogeneous_eye(eye):
+def homogeneous_eye(eye: Union[ArrayLike, ViewerAtInfinity]) -> NDArray[np.float64]:
     """The viewer as (x, y, z, w): w = 1 at a point, 0 at infinity."""
     if isinstance(eye, ViewerAtInfinity):
         return np.append(np.asarray(eye.toward, np.float64), 0.0)
@@ -75,7 +88,7 @@ def homogeneous_eye(eye):
 
 
 @functools.lru_cache(maxsize=8)
-def gamma_tables(gamma):
+def gamma_tables(gamma: float) -> Tuple[NDArray[np.int64], NDArray[np.float64]]:
     """The gamma encoding as the kernel's tables: the stored value v of each of
     ``GAMMA_STEPS`` evenly spaced intensities (-2 - v where the next one is more than
     one value higher: :func:`scanline._kernels.shade.encode` climbs there), and the
@@ -93,14 +106,14 @@ def gamma_tables(gamma):
     return table, thresholds
 
 
-def drawable(fb, options):
+def drawable(fb: "FrameBuffer", options: "ShadingOptions") -> bool:
     """True when the kernel can shade for these ``options`` (a
     :class:`~scanline.shading.options.ShadingOptions`) into ``fb``."""
     return (options.model in MODELS and options.shadows is None
             and options.depth_cue is None and fb.mode in ("L", "RGB", "RGBA"))
 
 
-def _material_colored(scene):
+def _material_colored(scene: "ScreenScene") -> bool:
     """True when every facet takes its material's color (the scene's vertex colors are
     the one material's color broadcast): the kernel then reads it from the material
     rows instead of an (G, 3, 3) array."""
@@ -109,9 +122,10 @@ def _material_colored(scene):
             and np.array_equal(c[0, 0], scene.materials[0].color))
 
 
-def shade_buffer(scene, fb, ids, options):
+def shade_buffer(scene: "ScreenScene", fb: "FrameBuffer", ids: NDArray[np.int32],
+                 options: "ShadingOptions") -> None:
     """Shade the pixels of ``ids`` (H, W; the scene's device triangle seen at each
-    pixel, -1 none; int64, C order) into ``fb`` (:func:`drawable` must hold).  Each
+    pixel, -1 none; int32, C order) into ``fb`` (:func:`drawable` must hold).  Each
     triangle's attributes are found from the triangle itself
     (:func:`scanline._kernels.shade.triangle_attributes`), once per triangle; ``ids``
     is changed in place to hold the facet at each pixel."""
@@ -162,10 +176,10 @@ def shade_buffer(scene, fb, ids, options):
 #: The last few results of :func:`texture_rows`, by their textures, filters, wraps
 #: and gamma: the joined texels are a copy (writable, as the kernels take arrays)
 #: that a frame after frame of the same textures need not make again.
-_TEXTURE_ROWS = {}
+_TEXTURE_ROWS: Dict[Tuple[object, ...], TextureRows] = {}
 
 
-def texture_rows(materials, gamma):
+def texture_rows(materials: Sequence["Material"], gamma: float) -> TextureRows:
     """Every material's texture for :mod:`scanline._kernels.surface`: ``(mat_tex (M,
     4) int64: first level, level count, filter, wrap (first -1: none), texels (3 N,)
     float32, levels (L, 3) int64)``, the textures' levels one after the other,
@@ -181,12 +195,13 @@ def texture_rows(materials, gamma):
     return kept
 
 
-def _joined_textures(materials, gamma):
+def _joined_textures(materials: Sequence["Material"], gamma: float) -> TextureRows:
     """:func:`texture_rows` computed."""
     from ..texture.texture import FILTER_CODES, WRAP_CODES
 
     rows = np.full((len(materials), 4), -1, np.int64)
-    texels, levels = [], []
+    texels: list[NDArray[np.float32]] = []
+    levels: list[NDArray[np.int64]] = []
     at_texel = at_level = 0
     for i, m in enumerate(materials):
         if m.texture is None:
@@ -205,7 +220,7 @@ def _joined_textures(materials, gamma):
             v.kernel_array(np.concatenate(levels), np.int64))
 
 
-def texturable(fb, scene, options):
+def texturable(fb: "FrameBuffer", scene: "ScreenScene", options: "ShadingOptions") -> bool:
     """True when :func:`shade_textured` can shade ``scene`` (textures only: no bump or
     environment map; perspective-correct) into ``fb``."""
     return (drawable(fb, options) and options.texture_mapping == "perspective"
@@ -213,13 +228,14 @@ def texturable(fb, scene, options):
             and all(m.bump is None and m.environment is None for m in scene.materials))
 
 
-def _shines(scene, sources):
+def _shines(scene: "ScreenScene", sources: NDArray[np.float64]) -> bool:
     """Whether any surface of ``scene`` has a highlight: a material with ks > 0 and a
     light source that is not ambient (``sources``: :func:`source_rows`)."""
     return any(m.ks > 0 for m in scene.materials) and len(sources) > 0
 
 
-def vertex_light(scene, facets, options):
+def vertex_light(scene: "ScreenScene", facets: NDArray[np.int64],
+                 options: "ShadingOptions") -> NDArray[np.float64]:
     """Gouraud's vertex intensities of ``facets`` in the two parts of
     :func:`scanline.shading.models.vertex_parts`, (U, 3, 6): A then S (U, 3, 3: A
     alone where nothing shines, S = 0), compiled
@@ -232,7 +248,8 @@ def vertex_light(scene, facets, options):
 
     sources, ambient = source_rows(options.lights)
     every = len(facets) == scene.facet_count
-    pick = (lambda a: a) if every else (lambda a: a[facets])
+    pick: Callable[[NDArray[Any]], NDArray[Any]] = ((lambda a: a) if every
+                                                    else (lambda a: a[facets]))
     normals = pick(scene.vertex_normals)
     back = ~pick(scene.front)
     if back.any():
@@ -255,7 +272,8 @@ def vertex_light(scene, facets, options):
     return out.reshape(len(facets), 3, -1)
 
 
-def shade_textured(scene, fb, ids, options):
+def shade_textured(scene: "ScreenScene", fb: "FrameBuffer", ids: NDArray[np.int32],
+                   options: "ShadingOptions") -> None:
     """:func:`shade_buffer` for scenes with textured materials (:func:`texturable`):
     the kernel :func:`scanline._kernels.surface.textured_pixels`."""
     from .._kernels import surface as k

@@ -11,7 +11,7 @@ front to back over what the frame buffer holds (Hearn & Baker 14-5, transparency
 coverage), averaging the samples of each pixel.
 """
 
-from typing import TYPE_CHECKING, Iterable, Sequence, Tuple
+from typing import TYPE_CHECKING, Any, Iterable, Optional, Tuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -29,7 +29,8 @@ if TYPE_CHECKING:
     from ..visible.visibility import Layer
 
 
-def triangle_functions(scene, triangles, perspective=True):
+def triangle_functions(scene: "ScreenScene", triangles: NDArray[np.signedinteger[Any]],
+                       perspective: bool = True) -> NDArray[np.float64]:
     """Per device triangle of ``triangles`` (U,): the screen-space linear functions
     (value at the origin, d/dx, d/dy) of 1/w, lambda_1/w and lambda_2/w, (U, 3, 3);
     NaN for a triangle with no area on the screen.  ``perspective=False``: of 1,
@@ -47,7 +48,10 @@ def triangle_functions(scene, triangles, perspective=True):
     return out
 
 
-def surface_coordinates(scene, triangles, xs, ys, perspective=True):
+def surface_coordinates(scene: "ScreenScene", triangles: NDArray[np.signedinteger[Any]],
+                        xs: NDArray[np.float64], ys: NDArray[np.float64],
+                        perspective: bool = True
+                        ) -> Tuple[NDArray[np.float64], NDArray[np.float64]]:
     """The barycentric coordinates (lambda_0, lambda_1, lambda_2) (M, 3) in their
     facets of the device points (``xs``, ``ys``) seen on ``triangles`` (M,), and their
     screen derivatives (M, 3, 2) (d/dx, d/dy): perspective-correct, lambda = (lambda /
@@ -112,14 +116,16 @@ def barycentrics(scene: "ScreenScene", triangles: NDArray[np.int64], xs: NDArray
     return lam
 
 
-def background_linear(fb, gamma):
+def background_linear(fb: "FrameBuffer", gamma: float) -> NDArray[np.float64]:
     """The frame buffer's background as linear RGB."""
     value = np.asarray(fb._background, np.float64)
     c = np.repeat(value[:1], 3) if len(value) == 1 else value[:3]
     return decode(c / 255.0, gamma)
 
 
-def _cue(scene, linear, depth, options, background):
+def _cue(scene: "ScreenScene", linear: NDArray[np.float64], depth: NDArray[np.float64],
+         options: ShadingOptions,
+         background: NDArray[np.float64]) -> NDArray[np.float64]:
     """Depth cueing of linear colors at device depths ``depth`` (M,), between the
     nearest and the farthest distance of the scene's device triangles (Hearn & Baker
     9-1: d_min and d_max of the scene), the same for every pixel, layer and band."""
@@ -130,21 +136,24 @@ def _cue(scene, linear, depth, options, background):
                      background)
 
 
-def _depth_range(scene):
+def _depth_range(scene: "ScreenScene") -> Tuple[float, float]:
     """The nearest and farthest distances of the scene's device triangles' vertices."""
     d = scene.camera.linear_depth(scene.triangles[..., 2].reshape(-1))
     d = d[np.isfinite(d)]
     return (float(d.min()), float(d.max())) if len(d) else (0.0, 0.0)
 
 
-def _points(scene, ids, depth, ys, xs, px, py, options, background):
+def _points(scene: "ScreenScene", ids: NDArray[np.signedinteger[Any]], depth: NDArray[np.float64],
+            ys: NDArray[np.int64], xs: NDArray[np.int64], px: NDArray[np.float64],
+            py: NDArray[np.float64], options: ShadingOptions,
+            background: NDArray[np.float64]) -> Tuple[NDArray[np.int64], NDArray[np.float64]]:
     """Linear colors of the samples (``ys``, ``xs``) of a layer, at device points
     (``px``, ``py``): ``(facets, colors)``."""
     t = ids[ys, xs]
     facets = scene.facet[t]
     bary = barycentrics(scene, t, px, py) if options.model not in ("flat", "none") else \
         np.zeros((len(t), 2))
-    at = None
+    at: Optional[Tuple[NDArray[np.float64], NDArray[np.float64]]] = None
     if any_maps(scene):
         check_maps(scene, options)
         if scene.uv is not None:
@@ -155,7 +164,8 @@ def _points(scene, ids, depth, ys, xs, px, py, options, background):
     return facets, _cue(scene, linear, depth[ys, xs], options, background)
 
 
-def store(fb, ys, xs, linear, gamma):
+def store(fb: "FrameBuffer", ys: NDArray[np.int64], xs: NDArray[np.int64],
+          linear: NDArray[np.float64], gamma: float) -> None:
     """Write linear RGB (M, 3) at pixels (xs, ys), encoded with ``gamma``."""
     buf = fb._raster()[0]
     if fb.mode == "L":
@@ -166,7 +176,8 @@ def store(fb, ys, xs, linear, gamma):
             buf[ys, xs, 3] = 255
 
 
-def stored_linear(fb, ys, xs, gamma):
+def stored_linear(fb: "FrameBuffer", ys: NDArray[np.int64], xs: NDArray[np.int64],
+                  gamma: float) -> NDArray[np.float64]:
     """The frame buffer's pixels (xs, ys) as linear RGB (M, 3)."""
     stored = fb._raster()[0][ys, xs].astype(np.float64) / 255.0
     if stored.shape[1] == 1:
@@ -174,7 +185,8 @@ def stored_linear(fb, ys, xs, gamma):
     return decode(stored[:, :3], gamma)
 
 
-def _paint(fb, ids, values, facets=None):
+def _paint(fb: "FrameBuffer", ids: NDArray[np.int32], values: ArrayLike,
+           facets: Optional[NDArray[np.int64]] = None) -> None:
     """:func:`paint` without its checks (``ids`` int32, C order); ``facets``: each
     number's replacement in ``ids``."""
     from .._kernels._threads import call_in_bands
@@ -243,18 +255,18 @@ def paint(fb: "FrameBuffer", ids: ArrayLike, values: ArrayLike) -> None:
     _paint(fb, np.ascontiguousarray(n, np.int32), np.ascontiguousarray(a, np.uint8))
 
 
-def face_values(fb, scene):
+def face_values(fb: "FrameBuffer", scene: "ScreenScene") -> NDArray[np.uint8]:
     """The pixel value of each face's color in ``fb``'s mode, (F, channels) uint8."""
     channels = fb._raster()[0].shape[2]
     rgb = np.rint(scene.face_colors * 255.0).astype(np.uint8)
     if not len(rgb):
         return np.zeros((0, channels), np.uint8)
     unique, inverse = np.unique(rgb, axis=0, return_inverse=True)
-    values = np.array([fb.pixel(tuple(int(c) for c in row)) for row in unique], np.uint8)
+    values = np.array([fb.pixel((int(r), int(g), int(b))) for r, g, b in unique], np.uint8)
     return values.reshape(len(unique), channels)[inverse.reshape(-1)]
 
 
-def facets_of(scene, ids):
+def facets_of(scene: "ScreenScene", ids: NDArray[np.signedinteger[Any]]) -> NDArray[np.int32]:
     """The facet of each entry of a buffer of device triangles ``ids`` (-1 stays -1)."""
     if not len(scene.facet):
         return np.full(ids.shape, -1, np.int32)
@@ -336,7 +348,7 @@ def shade(fb: "FrameBuffer", scene: "ScreenScene", layer: "Layer",
 
 
 def composite(fb: "FrameBuffer", scene: "ScreenScene",
-              bands: Iterable[Tuple[int, int, Sequence["Layer"]]], samples: int,
+              bands: Iterable[Tuple[int, int, Iterable["Layer"]]], samples: int,
               options: ShadingOptions) -> Tuple[NDArray[np.int32], NDArray[np.float64]]:
     """Resolve layers of fragments over the frame buffer's pixels, band of rows after
     band of rows: ``bands`` yields ``(y0, rows, layers)``, ``layers`` the Layers of

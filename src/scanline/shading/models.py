@@ -391,12 +391,13 @@ def intensities(scene: "ScreenScene", facets: ArrayLike, bary: Floats,
         u, inverse = np.unique(facets, return_inverse=True)
         per = _textured(inverse.reshape(-1), colors[u], texels,
                         lambda c: _gouraud_colored(scene, u, c, options))
-        return np.einsum("mi,mic->mc", lam, per)
+        gouraud: NDArray[np.float64] = np.einsum("mi,mic->mc", lam, per)
+        return gouraud
     if model == "phong":
         p = np.einsum("mi,mic->mc", lam, scene.world[facets])
         n = _facing(scene, facets, np.einsum("mi,mic->mc", lam, scene.vertex_normals[facets]))
         c = np.einsum("mi,mic->mc", lam, colors[facets])
-        if texels is not None:
+        if texture is not None:                  # texels too
             c = c * texels
             n = surface.bumped(scene, facets, n, texture[0])
         out = _lit(scene, scene.facet_mesh[facets], p, n, c, options)

@@ -29,21 +29,30 @@ visible-surface method found.
 Bump and environment maps need a normal at each pixel: Phong shading.
 """
 
+from typing import TYPE_CHECKING, Tuple, Union
+
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from ..errors import ArgumentValueError
+
+if TYPE_CHECKING:
+    from ..lighting.model import ViewerAtInfinity
+    from ..screen.scene import ScreenScene
+    from ..texture.texture import Texture
+    from .options import ShadingOptions
 
 #: How texture coordinates are interpolated across the screen.
 TEXTURE_MAPPINGS = ("perspective", "affine")
 
 
-def any_maps(scene):
+def any_maps(scene: "ScreenScene") -> bool:
     """True when some material of ``scene`` has a texture, bump or environment map."""
     return any(m.texture is not None or m.bump is not None or m.environment is not None
                for m in scene.materials)
 
 
-def _has_uv(scene, mesh):
+def _has_uv(scene: "ScreenScene", mesh: int) -> bool:
     """Whether mesh ``mesh`` of ``scene`` has texture coordinates: the scene's are NaN
     for every facet of a mesh without them and finite for the others (``Mesh``
     refuses coordinates that are not), so its first facet tells (a mesh with no
@@ -55,7 +64,7 @@ def _has_uv(scene, mesh):
     return not (mine[first] and np.isnan(scene.uv[first]).any()) if len(mine) else True
 
 
-def check_maps(scene, options):
+def check_maps(scene: "ScreenScene", options: "ShadingOptions") -> None:
     """Refuse maps the shading cannot apply: a textured mesh without texture
     coordinates, bump or environment maps without per-pixel normals."""
     for i, m in enumerate(scene.materials):
@@ -71,7 +80,8 @@ def check_maps(scene, options):
                 f"pixel: use shading='phong', not {options.model!r}")
 
 
-def _sample(texture, uv, derivatives, gamma):
+def _sample(texture: "Texture", uv: NDArray[np.float64], derivatives: NDArray[np.float64],
+            gamma: float) -> NDArray[np.float64]:
     """``texture``'s linear colors at ``uv`` (M, 2) (the kernel: no argument checks)."""
     from .._kernels import texture as k
     from .._kernels._jit import call
@@ -86,17 +96,22 @@ def _sample(texture, uv, derivatives, gamma):
     return out
 
 
-def texture_coordinates(scene, facets, lam, dlam):
+def texture_coordinates(scene: "ScreenScene", facets: NDArray[np.int64], lam: NDArray[np.float64],
+                        dlam: NDArray[np.float64]
+                        ) -> Tuple[NDArray[np.float64], NDArray[np.float64]]:
     """(u, v) at points of ``facets`` (M,) with barycentric coordinates ``lam`` (M, 3)
     and their screen derivatives ``dlam`` (M, 3, 2) (d/dx, d/dy): ``(uv (M, 2),
     derivatives (M, 4): du/dx, dv/dx, du/dy, dv/dy)``."""
+    assert scene.uv is not None
     t = scene.uv[facets]                                               # (M, 3, 2)
     uv = np.einsum("mi,mic->mc", lam, t)
     d = np.einsum("mik,mic->mkc", dlam, t).reshape(-1, 4)
     return uv, d
 
 
-def texel_factors(scene, facets, uv, derivatives, gamma):
+def texel_factors(scene: "ScreenScene", facets: NDArray[np.int64], uv: NDArray[np.float64],
+                  derivatives: NDArray[np.float64],
+                  gamma: float) -> NDArray[np.float64]:
     """The texel T (M, 3, linear) scaling S_d at each point: its material's texture
     there, 1 on untextured surfaces."""
     out = np.ones((len(facets), 3))
@@ -110,10 +125,12 @@ def texel_factors(scene, facets, uv, derivatives, gamma):
     return out
 
 
-def facet_tangents(scene, facets):
+def facet_tangents(scene: "ScreenScene", facets: NDArray[np.int64]) -> Tuple[NDArray[np.float64],
+                   NDArray[np.float64]]:
     """P_u and P_v (M, 3) each, of ``facets``: the world tangents along u and v, from
     P_1 - P_0 = P_u du_1 + P_v dv_1 and P_2 - P_0 = P_u du_2 + P_v dv_2 (zero for a
     facet whose texture coordinates are degenerate)."""
+    assert scene.uv is not None
     p = scene.world[facets]
     t = scene.uv[facets]
     e1, e2 = p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]
@@ -126,7 +143,9 @@ def facet_tangents(scene, facets):
     return pu, pv
 
 
-def bumped_normals(normals, pu, pv, bu, bv):
+def bumped_normals(normals: NDArray[np.float64], pu: NDArray[np.float64], pv: NDArray[np.float64],
+                   bu: NDArray[np.float64],
+                   bv: NDArray[np.float64]) -> NDArray[np.float64]:
     """Blinn's perturbed unit normals (M, 3): N' = (N . n) n + B_u (n x P_v) - B_v (n x
     P_u) with n the unit shading normal and N = P_u x P_v, turned to n's side."""
     n = normals / np.maximum(np.linalg.norm(normals, axis=1, keepdims=True), 1e-300)
@@ -135,10 +154,12 @@ def bumped_normals(normals, pu, pv, bu, bv):
     out = s * n + bu[:, None] * np.cross(n, pv) - bv[:, None] * np.cross(n, pu)
     out = np.where(s < 0, -out, out)
     length = np.linalg.norm(out, axis=1, keepdims=True)
-    return np.where(length > 0, out / np.where(length > 0, length, 1.0), n)
+    unit: NDArray[np.float64] = np.where(length > 0, out / np.where(length > 0, length, 1.0), n)
+    return unit
 
 
-def height_slopes(bump, uv, scale):
+def height_slopes(bump: "Texture", uv: NDArray[np.float64],
+                  scale: float) -> Tuple[NDArray[np.float64], NDArray[np.float64]]:
     """B_u and B_v (M,) of the height map ``bump`` (its first channel, stored values
     0..1, times ``scale``) at ``uv``: central differences one texel apart."""
     du, dv = 1.0 / bump.width, 1.0 / bump.height
@@ -149,7 +170,8 @@ def height_slopes(bump, uv, scale):
     return (h[0] - h[1]) / (2 * du), (h[2] - h[3]) / (2 * dv)
 
 
-def bumped(scene, facets, normals, uv):
+def bumped(scene: "ScreenScene", facets: NDArray[np.int64], normals: NDArray[np.float64],
+           uv: NDArray[np.float64]) -> NDArray[np.float64]:
     """``normals`` (M, 3) of points of ``facets`` at ``uv`` perturbed by their
     materials' bump maps (:func:`bumped_normals`)."""
     mesh = scene.facet_mesh[facets]
@@ -168,7 +190,8 @@ def bumped(scene, facets, normals, uv):
     return out
 
 
-def reflected_views(points, normals, eye):
+def reflected_views(points: NDArray[np.float64], normals: NDArray[np.float64],
+                    eye: Union[ArrayLike, "ViewerAtInfinity"]) -> NDArray[np.float64]:
     """R = 2 (N . V) N - V (M, 3) for unit normals and V the unit direction to the
     viewer (a point, or a viewer at infinity)."""
     from ..lighting.model import ViewerAtInfinity
@@ -179,10 +202,13 @@ def reflected_views(points, normals, eye):
         view = np.asarray(eye, np.float64) - points
     view = view / np.maximum(np.linalg.norm(view, axis=1, keepdims=True), 1e-300)
     n = normals / np.maximum(np.linalg.norm(normals, axis=1, keepdims=True), 1e-300)
-    return 2 * (n * view).sum(axis=1, keepdims=True) * n - view
+    reflected: NDArray[np.float64] = 2 * (n * view).sum(axis=1, keepdims=True) * n - view
+    return reflected
 
 
-def environment_light(scene, facets, points, normals, gamma):
+def environment_light(scene: "ScreenScene", facets: NDArray[np.int64],
+                      points: NDArray[np.float64], normals: NDArray[np.float64],
+                      gamma: float) -> NDArray[np.float64]:
     """k_r S_s env(R) (M, 3, linear) at the points: each material's environment map
     (cube or latitude-longitude) in the reflected view direction, tinted by its
     specular color, 0 where it has none."""

@@ -141,7 +141,7 @@ class Fragments:
     (3, [])
     """
     samples: int
-    bands: Iterator[Tuple[int, int, Any]]
+    bands: Iterator[Tuple[int, int, Iterator[Layer]]]
 
 
 def facet_layer(scene: "ScreenScene", polygons: NDArray[np.signedinteger[Any]],

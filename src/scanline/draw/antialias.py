@@ -22,13 +22,13 @@ primitive.  Anything outside the frame buffer is clipped.
 =============================== ==========================================
 """
 
-from typing import TYPE_CHECKING, Optional
+from typing import TYPE_CHECKING, Iterable, Optional, Sequence, Tuple, Union, cast
 
 import numpy as np
-from numpy.typing import ArrayLike
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
-from .._typing import Color, Rule
+from .._typing import Color, Colors, Rule
 from ..errors import ArgumentTypeError, ArgumentValueError
 from .._kernels import antialias as wu
 from .._kernels import coverage as cov
@@ -48,7 +48,8 @@ if TYPE_CHECKING:
     from ..framebuffer import FrameBuffer
 
 
-def _reals(name, value, columns, radius_columns=(), guard=False, far=False):
+def _reals(name: str, value: ArrayLike, columns: int, radius_columns: Iterable[int] = (),
+           guard: bool = False, far: bool = False) -> NDArray[np.float64]:
     """An (N, columns) float64 array, validated as
     :func:`scanline._validate.coordinate_array` validates (finite, within +-2**30,
     radii >= 0; ``far``: any finite value) but not rounded.  A well-formed numeric
@@ -70,13 +71,15 @@ def _reals(name, value, columns, radius_columns=(), guard=False, far=False):
     return guard_segments(a) if guard else a
 
 
-def _setup(fb, color, n):
+def _setup(fb: "FrameBuffer", color: Optional[Colors], n: int) -> Tuple[
+        NDArray[np.uint8], Tuple[int, ...], int, int, NDArray[np.uint8], NDArray[np.float64]]:
+    """The blend kernels' arguments: ``(buf, mode, width, height, table, sources)``."""
     buf, _, width, height = target(fb)
     srcs = _blend.sources(fb, color, n)     # first: in mode "P" it may extend the table
     return buf, _blend.mode_code(fb), width, height, _blend.table(fb), srcs
 
 
-def lines(fb, segments, color=None):
+def lines(fb: "FrameBuffer", segments: ArrayLike, color: Optional[Colors] = None) -> None:
     """Draw N antialiased lines of width 1 with Wu's algorithm.
 
     Parameters
@@ -117,7 +120,7 @@ def lines(fb, segments, color=None):
          table, segs, srcs)
 
 
-def ellipses(fb, ellipses, color=None):
+def ellipses(fb: "FrameBuffer", ellipses: ArrayLike, color: Optional[Colors] = None) -> None:
     """Draw N antialiased ellipse outlines (Wu-style conics).
 
     Parameters
@@ -143,7 +146,7 @@ def ellipses(fb, ellipses, color=None):
     """
     arr = _reals("ellipses", ellipses, 4, radius_columns=(2, 3), far=True)
 
-    def near(rows, c):
+    def near(rows: NDArray[np.float64], c: Optional[Colors]) -> None:
         buf, mode, width, height, table, srcs = _setup(fb, c, len(rows))
         call(wu.draw_ellipses, lambda: 12 * conic_work(rows[:, 2], rows[:, 3], width, height),
              buf, mode, width, height, table, rows, srcs)
@@ -152,7 +155,7 @@ def ellipses(fb, ellipses, color=None):
               lambda *row: far.antialiased_outline(fb, *row), rounded=False)
 
 
-def circles(fb, circles, color=None):
+def circles(fb: "FrameBuffer", circles: ArrayLike, color: Optional[Colors] = None) -> None:
     """Draw N antialiased circles, rows (xc, yc, r) of ``circles`` (real); see
     :func:`ellipses`.
 
@@ -174,7 +177,8 @@ def circles(fb, circles, color=None):
     ellipses(fb, arr[:, [0, 1, 2, 2]], color)
 
 
-def filled_ellipses(fb, ellipses, color=None):
+def filled_ellipses(fb: "FrameBuffer", ellipses: ArrayLike,
+                    color: Optional[Colors] = None) -> None:
     """Fill N ellipses (rows (xc, yc, rx, ry), real; rx = ry: disks) with
     antialiased edges: each pixel's coverage, measured on 16 sub-scan-lines (see
     :mod:`scanline._kernels.coverage`).  Any finite values: a row beyond +-2**30
@@ -182,7 +186,7 @@ def filled_ellipses(fb, ellipses, color=None):
     (:func:`scanline.draw._far_conics.antialiased_fill`)."""
     arr = _reals("ellipses", ellipses, 4, radius_columns=(2, 3), far=True)
 
-    def near(rows, c):
+    def near(rows: NDArray[np.float64], c: Optional[Colors]) -> None:
         buf, mode, width, height, table, srcs = _setup(fb, c, len(rows))
         call(cov.fill_ellipses, lambda: 20 * region_work(rows[:, 2], rows[:, 3], width, height)
              + cov.SUB * float(np.minimum(2 * rows[:, 3] + 2, height).sum()), buf, mode, width,
@@ -192,9 +196,9 @@ def filled_ellipses(fb, ellipses, color=None):
               lambda *row: far.antialiased_fill(fb, *row), fill=True, rounded=False)
 
 
-def _in_range(arr):
+def _in_range(arr: NDArray[np.float64]) -> NDArray[np.bool_]:
     """The rows the antialiasing kernels take: every value within +-2**30."""
-    return np.abs(arr).max(axis=1, initial=0) <= v.COORD_LIMIT
+    return cast(NDArray[np.bool_], np.abs(arr).max(axis=1, initial=0) <= v.COORD_LIMIT)
 
 
 #: The largest vertex magnitude :func:`fills_flat` takes: the coverage arithmetic is
@@ -203,7 +207,7 @@ def _in_range(arr):
 OUTLINE_LIMIT = 2.0**40
 
 
-def _vertices(value):
+def _vertices(value: ArrayLike) -> NDArray[np.float64]:
     """``value`` as a contiguous float64 (V, 2) array of finite vertices (no copy if
     it already is one; what lies beyond +-OUTLINE_LIMIT is clipped to the guard
     square, :mod:`scanline.geometry.guard`)."""
@@ -221,14 +225,15 @@ def _vertices(value):
     return a
 
 
-def _offsets(name, value, end):
+def _offsets(name: str, value: ArrayLike, end: int) -> NDArray[np.int64]:
     """``value`` as a contiguous int64 array that rises from 0 to ``end``."""
     return v.index_array(name, value, high=end, rising=True, first=0, last=end,
                          what="a non-empty 1-D array of integers (where each part starts, "
                               "then the end)")
 
 
-def _fill_parsed(fb, verts, offsets, shapes, color, rule):
+def _fill_parsed(fb: "FrameBuffer", verts: NDArray[np.float64], offsets: NDArray[np.int64],
+                 shapes: NDArray[np.int64], color: Optional[Colors], rule: Rule) -> None:
     """:func:`fills_flat` for arrays already validated (by
     :mod:`scanline.geometry.contours`)."""
     code = _rule(rule)
@@ -241,7 +246,9 @@ def _fill_parsed(fb, verts, offsets, shapes, color, rule):
          offsets, shapes, srcs, code, most)
 
 
-def fills_flat(fb, vertices, contour_offsets, shape_offsets, color=None, rule="nonzero"):
+def fills_flat(fb: "FrameBuffer", vertices: ArrayLike, contour_offsets: ArrayLike,
+               shape_offsets: ArrayLike, color: Optional[Colors] = None,
+               rule: Rule = "nonzero") -> None:
     """Fill a batch of shapes made of several contours each, given as flat arrays,
     with antialiased edges in one compiled call (as :func:`fills`).
 
@@ -335,10 +342,13 @@ def fill(fb: "FrameBuffer", contours: ArrayLike, color: Optional[Color] = None,
            [  0, 128, 255, 128,   0]], dtype=uint8)
     """
     verts, offsets = parse.contours("contours", contours, far=True)
-    _fill_parsed(fb, verts, offsets, np.array([0, len(offsets) - 1], np.int64), [color], rule)
+    _fill_parsed(fb, verts, offsets, np.array([0, len(offsets) - 1], np.int64),
+                 [color] if color is not None else None, rule)
 
 
-def fills(fb, shapes, color=None, rule="nonzero", counts=None):
+def fills(fb: "FrameBuffer", shapes: Union[Sequence[ArrayLike], ArrayLike],
+          color: Optional[Colors] = None, rule: Rule = "nonzero",
+          counts: Optional[ArrayLike] = None) -> None:
     """Fill a batch of shapes with antialiased edges in one compiled call.
 
     Parameters

@@ -16,7 +16,12 @@ How a stroke is drawn:
 * a translucent color is composited once per stroke (:mod:`scanline.draw._blend`).
 """
 
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any, Callable, Optional, Sequence, Tuple, Union, cast
+
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from .._kernels import linetype as kl
@@ -33,6 +38,16 @@ from . import _blend
 from . import _far_conics as far
 from ._common import area_work, colors, target
 
+if TYPE_CHECKING:
+    from .._typing import Cap, Colors, Dash, Join, PenLike, Points
+    from ..framebuffer import FrameBuffer
+
+#: ``draw(buf, packed, width, height, ox, oy, values, a, b)`` of :func:`_painter`.
+Painter = Callable[[NDArray[np.uint8], bool, int, int, int, int, NDArray[np.uint8], int, int],
+                   None]
+#: An inclusive device box ``(xmin, ymin, xmax, ymax)``.
+Box = Tuple[int, int, int, int]
+
 CAPS = {"butt": ks.CAP_BUTT, "round": ks.CAP_ROUND, "square": ks.CAP_SQUARE}
 JOINS = {"miter": ks.JOIN_MITER, "round": ks.JOIN_ROUND, "bevel": ks.JOIN_BEVEL}
 
@@ -40,8 +55,10 @@ _DEFAULT = LineStyle()
 _NO_DASHES = np.zeros(0, np.float64)
 
 
-def resolve(style, width=None, cap=None, join=None, miter_limit=None, dash=None,
-            dash_phase=None, pen=None):
+def resolve(style: Optional[LineStyle], width: Optional[float] = None,
+            cap: Optional[Cap] = None, join: Optional[Join] = None,
+            miter_limit: Optional[float] = None, dash: Optional[Dash] = None,
+            dash_phase: Optional[float] = None, pen: Optional[PenLike] = None) -> LineStyle:
     """The LineStyle of a drawing call: ``style`` (default: a plain width-1 line)
     with the keywords that are not None replacing its attributes."""
     if style is None:
@@ -54,8 +71,11 @@ def resolve(style, width=None, cap=None, join=None, miter_limit=None, dash=None,
     return style.replace(**changes) if changes else style
 
 
-def styled(style, antialias, width=None, cap=None, join=None, miter_limit=None, dash=None,
-           dash_phase=None, pen=None):
+def styled(style: Optional[LineStyle], antialias: bool, width: Optional[float] = None,
+           cap: Optional[Cap] = None, join: Optional[Join] = None,
+           miter_limit: Optional[float] = None, dash: Optional[Dash] = None,
+           dash_phase: Optional[float] = None,
+           pen: Optional[PenLike] = None) -> Optional[LineStyle]:
     """The LineStyle of a drawing call, or None when the call draws a plain width-1
     solid line, which the classic kernels draw.  A call that names no attribute
     returns at once: it is the common case, and single-primitive loops pay for every
@@ -69,7 +89,7 @@ def styled(style, antialias, width=None, cap=None, join=None, miter_limit=None, 
     return style
 
 
-def _closed_flags(closed, n):
+def _closed_flags(closed: Union[bool, ArrayLike], n: int) -> NDArray[np.bool_]:
     if isinstance(closed, (bool, np.bool_)):
         return np.full(n, bool(closed))
     a = np.asarray(closed)
@@ -79,7 +99,7 @@ def _closed_flags(closed, n):
     return np.ascontiguousarray(a)
 
 
-def _points(name, points):
+def _points(name: str, points: Points) -> NDArray[np.float64]:
     """One polyline as a float64 (N, 2) array."""
     try:
         a = np.asarray(points)
@@ -95,7 +115,8 @@ def _points(name, points):
     return a
 
 
-def batch(name, polylines, counts):
+def batch(name: str, polylines: object,
+          counts: Optional[ArrayLike]) -> Tuple[NDArray[np.float64], NDArray[np.int64]]:
     """A batch of polylines as ``(verts, offsets)``."""
     if counts is None:
         verts, offsets, polys = parse.batch(name, polylines, far=True)
@@ -107,7 +128,7 @@ def batch(name, polylines, counts):
     return verts, offsets
 
 
-def _bbox(verts, margin):
+def _bbox(verts: NDArray[np.float64], margin: float) -> Box:
     if len(verts) == 0:
         return (0, 0, -1, -1)
     lo = np.floor(verts.min(axis=0) - margin) - 1
@@ -115,11 +136,11 @@ def _bbox(verts, margin):
     return (int(lo[0]), int(lo[1]), int(hi[0]), int(hi[1]))
 
 
-def _margin(style):
+def _margin(style: LineStyle) -> float:
     """How far (pixels) the stroke can reach beyond its vertices."""
     if style.width == 1 or style.pen is not None:
         return int(np.abs(style.footprint()).max())
-    reach = 0.5 * style.width
+    reach: float = 0.5 * style.width
     if style.join == "miter":
         reach *= style.miter_limit
     if style.cap == "square":
@@ -127,7 +148,7 @@ def _margin(style):
     return reach + 1
 
 
-def _line_type(style):
+def _line_type(style: LineStyle) -> Tuple[int, int, NDArray[np.float64], float]:
     """``(kind, mask, dashes, phase)`` of the pixel-sequence kernels for a width-1 or
     pen line."""
     mask = style.mask()
@@ -138,7 +159,7 @@ def _line_type(style):
     return kl.LENGTHS, 0, np.array(style.dash, np.float64), float(style.dash_phase)
 
 
-def path_work(points, width, height):
+def path_work(points: NDArray[Any], width: int, height: int) -> float:
     """Work units of drawing the width-1 path through ``points``: its steps, each
     segment's at most width + height once clipped (:func:`scanline._kernels._jit.call`)."""
     if len(points) < 2:
@@ -147,7 +168,7 @@ def path_work(points, width, height):
     return float(np.minimum(d, width + height).sum()) + len(points)
 
 
-def dash_work(points, lengths):
+def dash_work(points: NDArray[np.float64], lengths: Sequence[float]) -> float:
     """Work units of cutting the path through ``points`` into dashes of ``lengths``:
     a few per vertex and per dash."""
     if len(points) < 2:
@@ -156,14 +177,15 @@ def dash_work(points, lengths):
     return 2 * len(points) + length / max(sum(lengths), 1e-9) * len(lengths)
 
 
-def outline_work(points, r):
+def outline_work(points: NDArray[np.float64], r: float) -> float:
     """Work units of the stroke outline of half-width ``r`` along ``points``: a join
     (at most half a turn of arc) and a few corners per vertex."""
     arc = np.pi / np.arccos(1 - min(ks.TOLERANCE / max(r, ks.TOLERANCE), 1.0))
     return len(points) * (2 + float(arc) / 5)
 
 
-def _painter(style, verts, offsets, closed, one=False):
+def _painter(style: LineStyle, verts: NDArray[np.float64], offsets: NDArray[np.int64],
+             closed: NDArray[np.bool_], one: bool = False) -> Painter:
     """``draw(buf, packed, width, height, ox, oy, values, a, b)``: draws polylines
     a .. b-1 with the (1 or b-a rows of) channel values (``one``: solid thick
     polylines as one shape, each pixel once)."""
@@ -173,7 +195,8 @@ def _painter(style, verts, offsets, closed, one=False):
         pen = style.footprint()
         margin = int(np.abs(pen).max())
 
-        def draw(buf, packed, width, height, ox, oy, values, a, b):
+        def draw(buf: NDArray[np.uint8], packed: bool, width: int, height: int, ox: int,
+                 oy: int, values: NDArray[np.uint8], a: int, b: int) -> None:
             o = offsets[a:b + 1]
             pts = iverts[o[0]:o[-1]] - np.array([ox, oy], np.int64)
             call(kl.draw_patterned, lambda: 2 * path_work(pts, width, height) * len(pen), buf,
@@ -184,7 +207,8 @@ def _painter(style, verts, offsets, closed, one=False):
     cap, join = CAPS[style.cap], JOINS[style.join]
     r = 0.5 * style.width
 
-    def draw(buf, packed, width, height, ox, oy, values, a, b):
+    def thick(buf: NDArray[np.uint8], packed: bool, width: int, height: int, ox: int, oy: int,
+              values: NDArray[np.uint8], a: int, b: int) -> None:
         o = offsets[a:b + 1]
         pieces = verts[o[0]:o[-1]], o - o[0], closed[a:b]
         if lengths is None:
@@ -204,10 +228,12 @@ def _painter(style, verts, offsets, closed, one=False):
                                         height)
         call(kp.fill_polygons, work, buf, layout(packed), width, height, ox, oy, out, contours,
              polys, values, NONZERO, most)
-    return draw
+    return thick
 
 
-def stroke(fb, verts, offsets, closed, color, style, antialias=False, one=False):
+def stroke(fb: FrameBuffer, verts: NDArray[np.float64], offsets: NDArray[np.int64],
+           closed: NDArray[np.bool_], color: Optional[Colors], style: LineStyle,
+           antialias: bool = False, one: bool = False) -> None:
     """Draw polylines ``verts[offsets[i]:offsets[i + 1]]`` (``closed[i]``) in
     ``style`` with ``color`` (one, or one per polyline); ``one``: the polylines
     are the dashes of one path, cut already (solid ``style``, one color, within
@@ -232,6 +258,7 @@ def stroke(fb, verts, offsets, closed, color, style, antialias=False, one=False)
     # crosses itself), later ones over earlier ones
     margin = _margin(style)
     if one:
+        assert not isinstance(color, (list, np.ndarray))    # ``one``: one color
         _blend.paint(fb, color, _bbox(verts, margin),
                      lambda b, p, w, h, ox, oy, value: draw(b, p, w, h, ox, oy, value[None, :], 0, n))
         return
@@ -241,7 +268,7 @@ def stroke(fb, verts, offsets, closed, color, style, antialias=False, one=False)
                                                                 value[None, :], i, i + 1))
 
 
-def _per_piece(color, owner):
+def _per_piece(color: Optional[Colors], owner: NDArray[np.int64]) -> Optional[Colors]:
     """One color per piece when ``color`` gives one per polyline."""
     if isinstance(color, np.ndarray):
         return color[owner]
@@ -250,13 +277,15 @@ def _per_piece(color, owner):
     return color
 
 
-def _view(fb, margin):
+def _view(fb: FrameBuffer, margin: float) -> NDArray[np.float64]:
     """The frame buffer's area widened by ``margin`` pixels, as a float box."""
     return np.array([-margin, -margin, fb.width - 1 + margin, fb.height - 1 + margin],
                     np.float64)
 
 
-def _antialiased(fb, verts, offsets, closed, color, style, one=False):
+def _antialiased(fb: FrameBuffer, verts: NDArray[np.float64], offsets: NDArray[np.int64],
+                 closed: NDArray[np.bool_], color: Optional[Colors], style: LineStyle,
+                 one: bool = False) -> None:
     from . import antialias as aa
 
     if style.pen is not None:
@@ -302,9 +331,12 @@ def _antialiased(fb, verts, offsets, closed, color, style, one=False):
     aa.fills_flat(fb, out, contours, polys, color, "nonzero")
 
 
-def polyline(fb, points, color=None, closed=False, *, style=None, antialias=False,
-             width=None, cap=None, join=None, miter_limit=None, dash=None, dash_phase=None,
-             pen=None):
+def polyline(fb: FrameBuffer, points: Points, color: Optional[Colors] = None,
+             closed: bool = False, *, style: Optional[LineStyle] = None,
+             antialias: bool = False, width: Optional[float] = None, cap: Optional[Cap] = None,
+             join: Optional[Join] = None, miter_limit: Optional[float] = None,
+             dash: Optional[Dash] = None, dash_phase: Optional[float] = None,
+             pen: Optional[PenLike] = None) -> None:
     """Draw a polyline (open, or closed: a polygon outline) with line attributes.
 
     Parameters
@@ -378,9 +410,13 @@ def polyline(fb, points, color=None, closed=False, *, style=None, antialias=Fals
     stroke(fb, verts, offsets, _closed_flags(closed, 1), color, style, antialias)
 
 
-def polylines(fb, polylines, color=None, closed=False, *, counts=None, style=None,
-              antialias=False, width=None, cap=None, join=None, miter_limit=None,
-              dash=None, dash_phase=None, pen=None):
+def polylines(fb: FrameBuffer, polylines: Union[Sequence[Points], ArrayLike],
+              color: Optional[Colors] = None, closed: Union[bool, ArrayLike] = False, *,
+              counts: Optional[ArrayLike] = None, style: Optional[LineStyle] = None,
+              antialias: bool = False, width: Optional[float] = None,
+              cap: Optional[Cap] = None, join: Optional[Join] = None,
+              miter_limit: Optional[float] = None, dash: Optional[Dash] = None,
+              dash_phase: Optional[float] = None, pen: Optional[PenLike] = None) -> None:
     """Draw M polylines with line attributes in one compiled call.
 
     Parameters
@@ -413,7 +449,7 @@ def polylines(fb, polylines, color=None, closed=False, *, counts=None, style=Non
     stroke(fb, verts, offsets, _closed_flags(closed, n), color, style, antialias)
 
 
-def segment_array(name, segments):
+def segment_array(name: str, segments: ArrayLike) -> NDArray[np.float64]:
     """(N, 4) float64 segments, finite and within +-2**30 (not rounded)."""
     try:
         if np.asarray(segments).dtype.kind in "cbSUV":    # complex, bool, text
@@ -440,7 +476,7 @@ def segment_array(name, segments):
 SEQUENCE_LIMIT = 1 << 16
 
 
-def _quadrant(rx, ry):
+def _quadrant(rx: int, ry: int) -> NDArray[np.int64]:
     """The midpoint pixels of the first quadrant in order, from (0, ry) clockwise to
     (rx, 0), as offsets from the center."""
     from .._kernels import conics as kc
@@ -458,7 +494,7 @@ def _quadrant(rx, ry):
     return quadrant
 
 
-def conic_pixels(xc, yc, rx, ry):
+def conic_pixels(xc: int, yc: int, rx: int, ry: int) -> NDArray[np.int64]:
     """The pixels of the midpoint circle (rx == ry) or ellipse in path order:
     counterclockwise from (xc + rx, yc), each once -- the pixel sequence a line type
     numbers (radii up to SEQUENCE_LIMIT)."""
@@ -472,7 +508,7 @@ def conic_pixels(xc, yc, rx, ry):
     return np.ascontiguousarray(loop + [xc, yc], dtype=np.int64)
 
 
-def conic_polyline(xc, yc, rx, ry):
+def conic_polyline(xc: float, yc: float, rx: float, ry: float) -> NDArray[np.float64]:
     """A closed polygon following the ellipse (xc, yc, rx, ry), counterclockwise
     from (xc + rx, yc), with chords within ``TOLERANCE`` of it and the area of the
     ellipse (its vertices at sqrt(t / sin t) times the radii, t the angular step)."""
@@ -484,7 +520,8 @@ def conic_polyline(xc, yc, rx, ry):
     return np.stack([xc + scale * rx * np.cos(a), yc + scale * ry * np.sin(a)], axis=1)
 
 
-def conics(fb, rows, color, style, antialias):
+def conics(fb: FrameBuffer, rows: NDArray[np.int64], color: Optional[Colors], style: LineStyle,
+           antialias: bool) -> None:
     """Draw conics ``rows`` (N, 4) int: (xc, yc, rx, ry) with line attributes."""
     n = len(rows)
     if n == 0:
@@ -513,7 +550,8 @@ def conics(fb, rows, color, style, antialias):
             continue
         pixels = conic_pixels(xc, yc, rx, ry)
 
-        def draw(buf, packed, width, height, ox, oy, value, pixels=pixels):
+        def draw(buf: NDArray[np.uint8], packed: bool, width: int, height: int, ox: int,
+                 oy: int, value: NDArray[np.uint8], pixels: NDArray[np.int64] = pixels) -> None:
             call(kl.draw_sequence, len(pixels) * len(pen), buf, layout(packed), width, height,
                  pixels - np.array([ox, oy], np.int64), kind, mask, dashes, phase, pen, value)
         if values is not None:

@@ -118,6 +118,13 @@ def test_scan_line_fill_refuses_huge_boxes_and_bad_points():
         sl.trace.scan_line_fill([(0, 0), (4, 0), (0, 4)], rule="odd")
 
 
+def test_scan_line_fill_of_no_vertices_has_an_empty_edge_table():
+    # every table of scan_line_fill carries .edges (the explorer reads it), the
+    # empty polygon's too (it had none before issue 32 item 3 typed the table)
+    t = sl.trace.scan_line_fill(np.zeros((0, 2)))
+    assert len(t) == 0 and t.edges == [] and t.pixels() == set()
+
+
 # -- Sutherland-Hodgman ---------------------------------------------------------------------
 def test_sutherland_hodgman_by_hand():
     t = sl.trace.sutherland_hodgman([(-2, 2), (6, 2), (6, 12)], window=(0, 0, 10, 10))

@@ -3,7 +3,10 @@
 (:func:`scanline.animation.inbetween_times`), and the equalization of two key-frame
 shapes before a morph (:func:`scanline.animation.equalize`)."""
 
+from typing import List, Optional
+
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentValueError
@@ -23,7 +26,8 @@ MAX_VERTICES = 1000
 MAX_INBETWEENS = 200
 
 
-def inbetweens(n=7, spacing="accelerate", t1=0.0, t2=1.0):
+def inbetweens(n: int = 7, spacing: str = "accelerate", t1: float = 0.0,
+               t2: float = 1.0) -> Table:
     """The ``n`` in-betweens between key frames at times ``t1`` and ``t2`` spaced by
     ``spacing`` (Hearn & Baker's ``constant``, ``accelerate``, ``decelerate``,
     ``accelerate-decelerate``, or any easing name): one row per in-between ``j``:
@@ -46,7 +50,7 @@ def inbetweens(n=7, spacing="accelerate", t1=0.0, t2=1.0):
     if not np.isfinite(t2 - t1):
         raise ArgumentValueError(f"t2 - t1 must be finite, got t1={t1:g}, t2={t2:g}: bring the "
                                  "key frames' times closer together")
-    times = inbetween_times(t1, t2, n, spacing)
+    times = inbetween_times(t1, t2, int(n), spacing)
     u = np.arange(1, n + 1) / (n + 1)
     eased = np.atleast_1d(ease(spacing, u))
     rows, before = [], float(t1)
@@ -65,7 +69,14 @@ def inbetweens(n=7, spacing="accelerate", t1=0.0, t2=1.0):
                  rows, notes)
 
 
-def _vertices(name, flat):
+class MorphTable(Table):
+    """The table of :func:`morph_equalize`, with the two key-frame shapes."""
+
+    #: The key frames A and B as given, [x, y] per vertex (before equalizing).
+    shapes: List[List[List[float]]]
+
+
+def _vertices(name: str, flat: ArrayLike) -> NDArray[np.float64]:
     a = v.real_array(name, flat, "(2 V,)")
     if a.ndim != 1 or len(a) % 2 or not 6 <= len(a) <= 2 * MAX_VERTICES \
             or not np.isfinite(a).all():
@@ -79,7 +90,8 @@ def _vertices(name, flat):
     return a.reshape(-1, 2)
 
 
-def morph_equalize(a=None, b=None, t=0.5):
+def morph_equalize(a: Optional[ArrayLike] = None, b: Optional[ArrayLike] = None,
+                   t: float = 0.5) -> "MorphTable":
     """Hearn & Baker's equalization of two key-frame polygons (section 16-5): the
     shape with fewer edges (L_min) gets N_e = L_max mod L_min of its edges divided
     into N_s + 1 sections and the others into N_s (N_s = int(L_max / L_min)), then
@@ -113,7 +125,7 @@ def morph_equalize(a=None, b=None, t=0.5):
              f"edge(s) divided into N_s + 1 = {c.n_s + 1} sections, the other "
              f"{c.edges_min - c.n_e} into N_s = {c.n_s} (the longest edges take the extra)",
              f"in-between at t = {t:g}: (1 - t) A + t B per vertex pair"]
-    table = Table(f"morph: equalizing {len(sa)} and {len(sb)} vertices",
+    table = MorphTable(f"morph: equalizing {len(sa)} and {len(sb)} vertices",
                   ["k", "ax", "ay", "bx", "by", "added", "x", "y"], rows, notes)
     table.shapes = [sa.tolist(), sb.tolist()]
     return table

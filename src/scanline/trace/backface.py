@@ -4,17 +4,30 @@ vertices, V . N, and the verdict that the drawing pipeline itself reached
 (:func:`scanline.screen.prepare`, whose kernel tests each facet in viewing
 coordinates: a back face where V . N > 0)."""
 
+from typing import TYPE_CHECKING, Any, Dict, List, Sequence, Tuple, Union
+
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentValueError
 from .table import Table, _cell
 
+if TYPE_CHECKING:
+    from ..screen import ScreenScene
+
+
+class BackFaceTable(Table):
+    """The table of :func:`back_face`, with the device outline of each face."""
+
+    #: Per face, its device triangles, [x, y] per vertex.
+    outlines: List[List[List[List[float]]]]
+
 #: The device the cube is drawn on.
 WIDTH, HEIGHT = 40, 30
 
 
-def scene(eye):
+def scene(eye: Union[Sequence[float], NDArray[np.float64]]) -> "ScreenScene":
     """The cube of edge 2 about the origin seen from ``eye`` looking at the origin,
     prepared for a :data:`WIDTH` x :data:`HEIGHT` device."""
     import scanline as sl
@@ -26,11 +39,11 @@ def scene(eye):
     return sl.screen.prepare(sl.mesh.cube(), camera, WIDTH, HEIGHT)
 
 
-def _vector(p):
+def _vector(p: Union[Sequence[float], NDArray[np.float64]]) -> str:
     return "(" + ", ".join(_cell(float(c)) for c in p) + ")"
 
 
-def back_face(eye=(3.0, 2.0, 4.0)):
+def back_face(eye: Tuple[float, float, float] = (3.0, 2.0, 4.0)) -> BackFaceTable:
     """The back-face test of each face of the cube (edge 2, about the origin) seen
     from ``eye`` (looking at the origin): ``N`` the unit outward normal, ``P`` the
     face's first vertex, ``V = P - eye``, ``V.N`` and ``result`` ("front": V . N < 0,
@@ -49,7 +62,7 @@ def back_face(eye=(3.0, 2.0, 4.0)):
         raise ArgumentValueError(f"eye {_vector(e)} is inside the cube (|x|, |y|, |z| <= 1): "
                                  "put it outside, e.g. 3 2 4")
     s = scene(e)
-    rows = []
+    rows: List[Dict[str, Any]] = []
     for face in range(s.face_count):
         facets = np.flatnonzero(s.facet_face == face)
         n = s.face_normals[face]
@@ -64,7 +77,7 @@ def back_face(eye=(3.0, 2.0, 4.0)):
              "V = P - eye (P: a vertex of the face), N: the outward normal; "
              "V.N < 0: front face (drawn), V.N > 0: back face (culled)",
              f"{sum(r['result'] == 'back' for r in rows)} of {len(rows)} faces are back faces"]
-    t = Table(f"back-face test, eye {_vector(e)}", ["face", "N", "P", "V", "V.N", "result"],
+    t = BackFaceTable(f"back-face test, eye {_vector(e)}", ["face", "N", "P", "V", "V.N", "result"],
               rows, notes)
     faces = s.facet_face[s.facet]
     t.outlines = [[s.triangles[k, :, :2].tolist() for k in np.flatnonzero(faces == f)]

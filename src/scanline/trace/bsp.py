@@ -4,9 +4,13 @@ seen in plan -- each node's splitting plane, the polygons in it, in front of it 
 behind it, the polygons it splits -- then the order its traversal paints the pieces
 from an eye, back to front."""
 
+from typing import Dict, List, Sequence, Tuple
+
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
+from .._typing import Point
 from ..errors import ArgumentValueError
 from .table import Table
 
@@ -22,7 +26,18 @@ WALLS = [(4, 12, 28, 12), (10, 4, 10, 20), (16, 16, 26, 20), (14, 6, 24, 3),
 EYE_Z = 0.5
 
 
-def walls():
+class BSPTable(Table):
+    """The table of :func:`bsp_tree`, with the plan geometry of its tree."""
+
+    #: Each piece's plan segment [[x0, y0], [x1, y1]] by its name ("1a", "2" ...).
+    pieces: Dict[str, List[List[float]]]
+    #: Each node's splitting plane [A, B, C, D].
+    planes: List[List[float]]
+    #: Each node's pieces by name.
+    node_pieces: List[List[str]]
+
+
+def walls() -> Tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.int64]]:
     """The walls as world quadrilaterals: ``(vertices (4 W, 3), counts, faces)``."""
     quads = [[(x0, y0, 0.0), (x1, y1, 0.0), (x1, y1, 1.0), (x0, y0, 1.0)]
              for x0, y0, x1, y1 in WALLS]
@@ -30,18 +45,18 @@ def walls():
             np.arange(len(WALLS), dtype=np.int64))
 
 
-def _plane(p):
+def _plane(p: NDArray[np.float64]) -> str:
     a, b, c, d = (float(np.round(x, 6)) + 0.0 for x in p)
     terms = [f"{k:g} {n}" for k, n in ((a, "x"), (b, "y"), (c, "z")) if k]
     return " + ".join(terms).replace("+ -", "- ") + (f" {'-' if d < 0 else '+'} {abs(d):g}"
                                                       if d else "") + " = 0"
 
 
-def _names(pieces, label):
+def _names(pieces: Sequence[int], label: Dict[int, str]) -> str:
     return " ".join(label[p] for p in pieces) or "-"
 
 
-def bsp_tree(eye=(6.0, 22.0)):
+def bsp_tree(eye: Point = (6.0, 22.0)) -> BSPTable:
     """The BSP tree of the walls :data:`WALLS` (upright quadrilaterals, seen in plan)
     and its traversal from the eye at plan point ``eye`` (height :data:`EYE_Z`).
 
@@ -70,22 +85,23 @@ def bsp_tree(eye=(6.0, 22.0)):
     verts, counts, faces = tree.world_pieces(e)
     starts = np.cumsum(counts) - counts
     face = dict(zip(order.tolist(), faces.tolist()))
-    pieces = {}
+    pieces: Dict[int, List[List[float]]] = {}
     for p, s, c in zip(order.tolist(), starts.tolist(), counts.tolist()):
         plan = verts[s:s + c, :2]
         far = np.linalg.norm(plan[:, None] - plan[None], axis=2)
         i, j = np.unravel_index(int(far.argmax()), far.shape)
         pieces[p] = [plan[i].tolist(), plan[j].tolist()]
 
-    label = {}                  # piece -> its wall, lettered when the wall was split
+    label: Dict[int, str] = {}                  # piece -> its wall, lettered when the wall was split
     for w in set(face.values()):
         mine = sorted(p for p in face if face[p] == w)
         label.update({p: str(w) if len(mine) == 1 else f"{w}{chr(97 + i)}"
                       for i, p in enumerate(mine)})
 
-    def below(node):
+    def below(node: int) -> List[int]:
         """The pieces of the subtree under ``node``, -1: none."""
-        out, todo = [], [node]
+        out: List[int] = []
+        todo = [node]
         while todo:
             n = todo.pop()
             if n >= 0:
@@ -115,7 +131,7 @@ def bsp_tree(eye=(6.0, 22.0)):
               "node the subtree away from the eye, the node, the subtree on the eye's side"]
     columns = ["phase", "node", "plane", "on", "in front", "behind", "splits", "side",
                "piece", "wall"]
-    t = Table(f"BSP tree of {len(WALLS)} walls, eye ({ex:g}, {ey:g})", columns,
+    t = BSPTable(f"BSP tree of {len(WALLS)} walls, eye ({ex:g}, {ey:g})", columns,
               [{c: r.get(c) for c in columns} for r in rows], notes)
     t.pieces = {label[p]: seg for p, seg in pieces.items()}
     t.planes = tree.planes.tolist()

@@ -5,11 +5,13 @@ runs (:mod:`scanline._kernels.clip`), so the table and the clipped segment canno
 disagree.
 """
 
-from typing import Optional, Sequence, Tuple, Union
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
+from ..errors import ArgumentValueError
 from .._kernels import clip as k
 from .._kernels._jit import python
 from .._kernels.variants import token
@@ -27,23 +29,41 @@ _KINDS = {k.KIND_PARALLEL_INSIDE: "parallel, inside", k.KIND_PARALLEL_OUTSIDE:
           k.KIND_LEAVING: "PL (leaving)"}
 
 
-def code_string(code):
+class LineClipTable(Table):
+    """The table of a line clipper's trace, with the clipped segment."""
+
+    #: The visible part (x0, y0, x1, y1), or None when nothing is visible.
+    result: Optional[Tuple[float, float, float, float]]
+
+
+class PolygonClipTable(Table):
+    """The table of :func:`sutherland_hodgman`, with the polygon after each stage."""
+
+    #: The polygon after each stage, a list of (x, y).
+    stages: List[List[Tuple[float, ...]]]
+    #: The clipped polygon, a list of (x, y), empty when nothing is left.
+    result: List[Tuple[float, ...]]
+
+
+def code_string(code: float) -> str:
     """A region code as the notes write it: bits 4 3 2 1 = above below right left."""
     return format(int(code), "04b")
 
 
-def _vector(x, y):
+def _vector(x: float, y: float) -> str:
     return f"({_cell(float(x))}, {_cell(float(y))})"
 
 
-def _run(method, x0, y0, x1, y1, ring, rows, columns):
+def _run(method: int, x0: float, y0: float, x1: float, y1: float, ring: NDArray[np.float64],
+         rows: int, columns: int
+         ) -> Tuple[NDArray[np.float64], bool, NDArray[np.float64], NDArray[np.float64]]:
     """Run clipper ``method`` on one segment against the window ``ring`` (corners,
     counterclockwise) with a log of ``rows`` x ``columns``."""
     seg = np.array([v.number(n, c) for n, c in
                     (("x0", x0), ("y0", y0), ("x1", x1), ("y1", y1))])
     bad = ~(np.abs(seg) <= v.COORD_LIMIT)
     if bad.any():
-        raise v.ArgumentValueError(
+        raise ArgumentValueError(
             f"{('x0', 'y0', 'x1', 'y1')[int(np.argmax(bad))]} must be within "
             f"+-{v.COORD_LIMIT}")
     out = np.empty((1, 4))
@@ -55,28 +75,29 @@ def _run(method, x0, y0, x1, y1, ring, rows, columns):
     return seg, bool(ok), out[0], log[:used]
 
 
-def _window(window, window_polygon):
+def _window(window: _Window, window_polygon: Optional[Sequence[float]]) -> _Window:
     """``window``, or the polygon of the flat list x0, y0, x1, y1, ...
     ``window_polygon`` (the command line's ``--window-polygon``) when it is given."""
     if window_polygon is None:
         return window
     flat = list(window_polygon)
     if len(flat) % 2:
-        raise v.ArgumentValueError(
+        raise ArgumentValueError(
             f"window_polygon must list x, y pairs (an even count of numbers), got "
             f"{len(flat)} numbers")
     return [flat[i:i + 2] for i in range(0, len(flat), 2)]
 
 
-def _result(ok, out):
+def _result(ok: bool, out: NDArray[np.float64]
+            ) -> Tuple[Optional[Tuple[float, float, float, float]], str]:
     if not ok:
         return None, "result: rejected, nothing is visible"
-    r = tuple(float(c) for c in out)
+    r = (float(out[0]), float(out[1]), float(out[2]), float(out[3]))
     return r, f"result: visible from ({_cell(r[0])}, {_cell(r[1])}) to ({_cell(r[2])}, {_cell(r[3])})"
 
 
 def cohen_sutherland(x0: float, y0: float, x1: float, y1: float,
-                     window: _Window = DEFAULT_WINDOW) -> Table:
+                     window: _Window = DEFAULT_WINDOW) -> LineClipTable:
     """Cohen-Sutherland step by step: the region codes of both endpoints, their
     AND, and at each step the trivial accept, the trivial reject or the boundary
     an outside endpoint is moved to.
@@ -143,14 +164,14 @@ def cohen_sutherland(x0: float, y0: float, x1: float, y1: float,
              f"ymax = {_cell(ymax)}",
              "region code bits 4 3 2 1 = above below right left; x, y: the new endpoint",
              line]
-    t = Table(f"Cohen-Sutherland clip ({_cell(seg[0])}, {_cell(seg[1])}) -> "
+    t = LineClipTable(f"Cohen-Sutherland clip ({_cell(seg[0])}, {_cell(seg[1])}) -> "
               f"({_cell(seg[2])}, {_cell(seg[3])})",
               ["step", "code0", "code1", "and", "decision", "x", "y"], rows, notes)
     t.result = result
     return t
 
 
-def _parametric_rows(log, names):
+def _parametric_rows(log: NDArray[np.float64], names: Sequence[str]) -> List[Dict[str, Any]]:
     rows = []
     for kk, p, q, r, kind, u1, u2 in log.tolist():
         i = int(kk) - 1
@@ -161,7 +182,7 @@ def _parametric_rows(log, names):
 
 
 def liang_barsky(x0: float, y0: float, x1: float, y1: float,
-                 window: _Window = DEFAULT_WINDOW) -> Table:
+                 window: _Window = DEFAULT_WINDOW) -> LineClipTable:
     """Liang-Barsky step by step: for k = 1..4 (left, right, bottom, top) the
     p_k and q_k, t = q_k / p_k, whether the line enters (p_k < 0) or leaves
     (p_k > 0), and u1 = max(0, entering t), u2 = min(1, leaving t) so far.
@@ -211,7 +232,7 @@ def liang_barsky(x0: float, y0: float, x1: float, y1: float,
              "p_k < 0: entering, u1 = max(u1, q/p); p_k > 0: leaving, u2 = min(u2, q/p); "
              "p_k = 0 and q_k < 0: parallel and outside",
              line]
-    t = Table(f"Liang-Barsky clip ({_cell(seg[0])}, {_cell(seg[1])}) -> "
+    t = LineClipTable(f"Liang-Barsky clip ({_cell(seg[0])}, {_cell(seg[1])}) -> "
               f"({_cell(seg[2])}, {_cell(seg[3])})",
               ["k", "edge", "p", "q", "t", "kind", "u1", "u2"], rows, notes)
     t.result = result
@@ -220,7 +241,7 @@ def liang_barsky(x0: float, y0: float, x1: float, y1: float,
 
 def cyrus_beck(x0: float, y0: float, x1: float, y1: float,
                window: _Window = DEFAULT_WINDOW,
-               window_polygon: Optional[Sequence[float]] = None) -> Table:
+               window_polygon: Optional[Sequence[float]] = None) -> LineClipTable:
     """Cyrus-Beck step by step, as the notes' Table 1: for each clip edge i its
     outward normal N_i, the point PE_i (the edge's first vertex), P0 - PE_i,
     N_i.D, t = N_i.(P0 - PE_i) / -N_i.D, and whether the crossing is potentially
@@ -285,7 +306,7 @@ def cyrus_beck(x0: float, y0: float, x1: float, y1: float,
              "N.D < 0: PE, t_E = max(t_E, t); N.D > 0: PL, t_L = min(t_L, t); "
              "visible from t_E to t_L if t_E <= t_L",
              line]
-    t = Table(f"Cyrus-Beck clip ({_cell(seg[0])}, {_cell(seg[1])}) -> "
+    t = LineClipTable(f"Cyrus-Beck clip ({_cell(seg[0])}, {_cell(seg[1])}) -> "
               f"({_cell(seg[2])}, {_cell(seg[3])})",
               ["edge", "N", "PE", "P0 - PE", "N.D", "t", "kind", "t_E", "t_L"], rows, notes)
     t.result = result
@@ -300,7 +321,7 @@ _SH_CASES = {(False, True): "out -> in: output I and P", (True, True): "in -> in
 
 
 def sutherland_hodgman(points: Points, window: _Window = DEFAULT_WINDOW,
-                       window_polygon: Optional[Sequence[float]] = None) -> Table:
+                       window_polygon: Optional[Sequence[float]] = None) -> PolygonClipTable:
     """Sutherland-Hodgman polygon clipping step by step: the polygon is clipped by
     one window boundary after another, and for each boundary every edge S -> P of
     the polygon so far falls in one of the four cases of Hearn & Baker (section 6-8):
@@ -352,10 +373,10 @@ def sutherland_hodgman(points: Points, window: _Window = DEFAULT_WINDOW,
 
     verts, offsets = contours("points", points)
     if len(offsets) != 2:
-        raise v.ArgumentValueError(
+        raise ArgumentValueError(
             f"points must be one contour for a trace, got {len(offsets) - 1} contours")
     if len(verts) > SH_MAX_VERTICES:
-        raise v.ArgumentValueError(
+        raise ArgumentValueError(
             f"points has {len(verts)} vertices; a trace takes at most {SH_MAX_VERTICES}")
     ring = w.polygon(_window(window, window_polygon), convex=True,
                      algorithm="Sutherland-Hodgman")
@@ -386,7 +407,7 @@ def sutherland_hodgman(points: Points, window: _Window = DEFAULT_WINDOW,
              *(f"after stage {i + 1}: " + (" ".join(_vector(*q) for q in s) or "nothing")
                for i, s in enumerate(stages)),
              "result: " + (" ".join(_vector(*q) for q in result) or "nothing is visible")]
-    t = Table(f"Sutherland-Hodgman clip of a {len(verts)}-vertex polygon",
+    t = PolygonClipTable(f"Sutherland-Hodgman clip of a {len(verts)}-vertex polygon",
               ["stage", "boundary", "S", "P", "case", "output"], rows, notes)
     t.stages = stages
     t.result = result

@@ -6,9 +6,10 @@ as plain Python (:func:`scanline._kernels._jit.python`), so the table and the
 clipped segment come from the same code and no compilation is waited for.
 """
 
-from typing import Optional, Sequence, Tuple, Union
+from typing import Optional, Sequence, Tuple, Union, cast
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from .._kernels import clip3d as k
@@ -23,17 +24,27 @@ _Point3 = Sequence[float]
 _VolumeArg = Union[Volume, Tuple[_Point3, _Point3]]
 
 
-def code_string(code, planes=6):
+class Clip3DTable(Table):
+    """The table of a 3-D line clipper's trace, with the clipped segment."""
+
+    #: The visible part: its two end points (x, y, z, and w when homogeneous), or
+    #: None when nothing is visible.
+    result: Optional[Tuple[Tuple[float, ...], Tuple[float, ...]]]
+
+
+def code_string(code: float, planes: int = 6) -> str:
     """A region code as Hearn & Baker write it: bit 6 first (back front above below
     right left for a box)."""
     return format(int(code), f"0{planes}b")
 
 
-def _point(p):
+def _point(p: Union[Sequence[float], NDArray[np.float64]]) -> str:
     return "(" + ", ".join(_cell(float(c)) for c in p) + ")"
 
 
-def _run(method, p0, p1, vol, w, rows, columns):
+def _run(method: str, p0: _Point3, p1: _Point3, vol: Volume,
+         w: Optional[Tuple[float, float]], rows: int, columns: int
+         ) -> Tuple[NDArray[np.float64], bool, NDArray[np.float64], NDArray[np.float64]]:
     """The segment through ``method``; ``w`` = (w0, w1) makes it homogeneous."""
     coords = [v.number(n, c) for n, c in zip(("x0", "y0", "z0"), p0)]
     coords += [v.number(n, c) for n, c in zip(("x1", "y1", "z1"), p1)]
@@ -44,16 +55,16 @@ def _run(method, p0, p1, vol, w, rows, columns):
     log = np.full((rows, columns), np.nan)
     ok, ends = k.trace_segment(three_d.method_token(method, vol), start, vol.planes, log)
     used = int(np.sum(~np.isnan(log[:, 0])))
-    return start, ok, ends, log[:used]
+    return start, bool(ok), cast(NDArray[np.float64], ends), log[:used]
 
 
-def _volume(volume, w):
+def _volume(volume: Optional[_VolumeArg], w: Optional[Tuple[float, float]]) -> Volume:
     if w is not None and volume is None:
         return UNIT_CUBE
     return as_volume(DEFAULT_VOLUME if volume is None else volume)
 
 
-def _describe(vol, w):
+def _describe(vol: Volume, w: Optional[Tuple[float, float]]) -> str:
     if w is not None:
         what = "homogeneous unit cube: 0 <= x, y, z <= w"
     elif vol.kind == "box":
@@ -67,7 +78,8 @@ def _describe(vol, w):
     return what
 
 
-def _result(ok, ends, w):
+def _result(ok: bool, ends: NDArray[np.float64], w: Optional[Tuple[float, float]]
+            ) -> Tuple[Optional[Tuple[Tuple[float, ...], Tuple[float, ...]]], str]:
     if not ok:
         return None, "result: rejected, nothing is visible"
     n = 4 if w is not None else 3
@@ -79,13 +91,13 @@ def _result(ok, ends, w):
     return (a, b), line
 
 
-def _title(name, start, w):
+def _title(name: str, start: NDArray[np.float64], w: Optional[Tuple[float, float]]) -> str:
     n = 4 if w is not None else 3
     return f"{name} clip {_point(start[0, :n])} -> {_point(start[1, :n])}"
 
 
 def cohen_sutherland_3d(p0: _Point3, p1: _Point3, volume: Optional[_VolumeArg] = None,
-                        w: Optional[Tuple[float, float]] = None) -> Table:
+                        w: Optional[Tuple[float, float]] = None) -> Clip3DTable:
     """3-D Cohen-Sutherland step by step: the six-bit region codes of both
     endpoints, their AND, and at each step the trivial accept or reject or the
     plane an outside endpoint is moved to.
@@ -164,14 +176,14 @@ def cohen_sutherland_3d(p0: _Point3, p1: _Point3, volume: Optional[_VolumeArg] =
              "crossing, and the bits of the planes it was moved onto stay 0 (at most one "
              "clip per plane and endpoint)",
              line]
-    t = Table(_title("Cohen-Sutherland 3-D", start, w),
+    t = Clip3DTable(_title("Cohen-Sutherland 3-D", start, w),
               ["step", "code0", "code1", "and", "decision", "point"], rows, notes)
     t.result = result
     return t
 
 
 def liang_barsky_3d(p0: _Point3, p1: _Point3, volume: Optional[_VolumeArg] = None,
-                    w: Optional[Tuple[float, float]] = None) -> Table:
+                    w: Optional[Tuple[float, float]] = None) -> Clip3DTable:
     """3-D Liang-Barsky step by step: for each plane k the p_k and q_k (for a box
     p1 = -dx, q1 = x0 - xmin, p2 = dx, q2 = xmax - x0, ..., p5 = -dz,
     q5 = z0 - zmin, p6 = dz, q6 = zmax - z0), t = q_k / p_k, entering (p_k < 0)
@@ -227,7 +239,7 @@ def liang_barsky_3d(p0: _Point3, p1: _Point3, volume: Optional[_VolumeArg] = Non
              "inside); p_k < 0: entering, u1 = max(u1, q/p); p_k > 0: leaving, "
              "u2 = min(u2, q/p)",
              line]
-    t = Table(_title("Liang-Barsky 3-D", start, w),
+    t = Clip3DTable(_title("Liang-Barsky 3-D", start, w),
               ["k", "plane", "p", "q", "t", "kind", "u1", "u2"], rows, notes)
     t.result = result
     return t

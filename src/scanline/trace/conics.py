@@ -1,10 +1,11 @@
 """Step tables of the midpoint circle and ellipse (notes, chapter 2, Q.4-Q.6)."""
 
-from typing import Optional
+from typing import Any, Dict, List, Optional, Set, Tuple, Union
 
 import numpy as np
 
 from .. import _validate as v
+from ..errors import ArgumentTypeError, ArgumentValueError
 from .._kernels import conics as k
 from .._kernels._jit import python
 from ..draw.conics import _check_ellipse
@@ -15,17 +16,18 @@ MAX_RADIUS = 100_000
 _REGIONS = {k.REGION_1: "1", k.REGION_2: "2", k.TIP: "tip"}
 
 
-def _center(center):
+def _center(center: Optional[Point]) -> Tuple[int, int]:
     if center is None:
         return 0, 0
     try:
         xc, yc = center
     except (TypeError, ValueError):
-        raise v.ArgumentTypeError(f"center must be a pair (xc, yc), got {center!r}") from None
+        raise ArgumentTypeError(f"center must be a pair (xc, yc), got {center!r}") from None
     return v.coordinate("center x", xc), v.coordinate("center y", yc)
 
 
-def _add_screen_columns(columns, rows, center, xc, yc):
+def _add_screen_columns(columns: List[str], rows: List[Dict[str, Any]],
+                        center: Optional[Point], xc: int, yc: int) -> List[str]:
     """With an explicit center, add the plotted pixel (xc + x, yc + y) to each row."""
     if center is None:
         return columns
@@ -34,18 +36,18 @@ def _add_screen_columns(columns, rows, center, xc, yc):
     return columns + ["xc+x", "yc+y"]
 
 
-def _mirror4(xc, yc, a, b):
+def _mirror4(xc: int, yc: int, a: int, b: int) -> Set[Tuple[int, int]]:
     return {(xc + a, yc + b), (xc - a, yc + b), (xc + a, yc - b), (xc - a, yc - b)}
 
 
-def _radius(name, r):
-    r = v.radius(name, r)
-    if r > MAX_RADIUS:
-        raise v.ArgumentValueError(f"{name}={r}: a trace lists every step; use {name} <= {MAX_RADIUS}")
-    return r
+def _radius(name: str, r: float) -> int:
+    radius = v.radius(name, r)
+    if radius > MAX_RADIUS:
+        raise ArgumentValueError(f"{name}={radius}: a trace lists every step; use {name} <= {MAX_RADIUS}")
+    return radius
 
 
-def _quarters(value):
+def _quarters(value: int) -> Union[int, float]:
     """A decision parameter kept times 4, as the notes' exact value."""
     return value // 4 if value % 4 == 0 else value / 4
 
@@ -86,7 +88,7 @@ def midpoint_circle(r: float, center: Optional[Point] = None) -> Table:
     """
     r = _radius("r", r)
     xc, yc = _center(center)
-    out = np.zeros((r + 1, 3), np.int64)
+    out = np.zeros((int(r) + 1, 3), np.int64)
     n = python(k.circle_trace)(r, out)
     rows = [{"k": i, "p": p, "x": x, "y": y, "2x": 2 * x, "2y": 2 * y}
             for i, (p, x, y) in enumerate(out[:n].tolist())]
@@ -145,11 +147,11 @@ def midpoint_ellipse(rx: float, ry: float, center: Optional[Point] = None) -> Ta
     ry = _radius("ry", ry)
     _check_ellipse(rx, ry)
     xc, yc = _center(center)
-    out = np.zeros((rx + ry + 1, 6), np.int64)
+    out = np.zeros((int(rx + ry) + 1, 6), np.int64)
     n = python(k.ellipse_trace)(rx, ry, out)
     columns = ["region", "k", "p", "x", "y", "2ry2x", "2rx2y"]
     rows = []
-    counter = {}
+    counter: Dict[str, int] = {}
     for region, p4, x, y, px, py in out[:n].tolist():
         name = _REGIONS[region]
         i = counter.get(name, 0)

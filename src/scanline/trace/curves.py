@@ -24,14 +24,14 @@ from numpy.typing import ArrayLike
 from .. import _validate as v
 from ..curves.bezier import Bezier
 from ..curves.bspline import basis, knot_span
-from ..errors import ArgumentValueError
+from ..errors import ArgumentTypeError, ArgumentValueError
 from .lines import MAX_STEPS
 from .table import Table
 
 _AXES = ("x", "y", "z")
 
 
-def _largest_triangle():
+def _largest_triangle() -> int:
     """Most control points whose de Casteljau triangle fits in MAX_STEPS rows."""
     n = 1
     while (n + 1) * (n + 2) // 2 <= MAX_STEPS:
@@ -78,11 +78,11 @@ def de_casteljau(points: ArrayLike, u: float = 0.5) -> Table:
     curve = Bezier(points)
     if curve.dimension > 3:
         raise ArgumentValueError(f"points must be 2-D or 3-D, got {curve.dimension}-D points")
-    rows = (curve.degree + 1) * (curve.degree + 2) // 2
-    if rows > MAX_STEPS:
+    count = (curve.degree + 1) * (curve.degree + 2) // 2
+    if count > MAX_STEPS:
         raise ArgumentValueError(
             f"points: de Casteljau's triangle of {curve.degree + 1} control points has "
-            f"{rows:,} rows; a trace lists at most {MAX_STEPS:,} (at most "
+            f"{count:,} rows; a trace lists at most {MAX_STEPS:,} (at most "
             f"{_largest_triangle()} control points)")
     triangle = curve.de_casteljau(u)
     u = v.number("u", u)
@@ -139,7 +139,7 @@ def cox_de_boor(knots: ArrayLike, order: int, u: float) -> Table:
     try:
         t = np.array(knots, dtype=np.float64)
     except (TypeError, ValueError):
-        raise v.ArgumentTypeError(f"knots must be an array of numbers, got {knots!r}") from None
+        raise ArgumentTypeError(f"knots must be an array of numbers, got {knots!r}") from None
     if t.ndim != 1 or len(t) < order + 1 or not np.isfinite(t).all():
         raise ArgumentValueError(
             f"knots must be at least order + 1 = {order + 1} finite numbers, got {knots!r}"
@@ -151,7 +151,7 @@ def cox_de_boor(knots: ArrayLike, order: int, u: float) -> Table:
         raise ArgumentValueError(f"u must lie in [{t[0]:g}, {t[-1]:g}], got {u!r}")
     span = int(knot_span(t, u))
 
-    def interval(lo, hi):
+    def interval(lo: float, hi: float) -> str:
         # the last span is closed, [u_m-1, u_m]: u at the end belongs to it
         return f"[{lo:g}, {hi:g}" + ("]" if hi == t[-1] == u else ")")
 

@@ -1,8 +1,11 @@
 """Step tables of the line algorithms (notes, chapter 2, Q.1-Q.3)."""
 
+from typing import Any, Dict, List, Tuple
+
 import numpy as np
 
 from .. import _validate as v
+from ..errors import ArgumentValueError
 from .._kernels import lines as k
 from .._kernels._jit import python
 from .table import Table
@@ -11,11 +14,11 @@ from .table import Table
 MAX_STEPS = 100_000
 
 
-def _endpoints(x0, y0, x1, y1):
+def _endpoints(x0: float, y0: float, x1: float, y1: float) -> Tuple[List[int], int]:
     pts = [v.coordinate(n, c) for n, c in (("x0", x0), ("y0", y0), ("x1", x1), ("y1", y1))]
     steps = max(abs(pts[2] - pts[0]), abs(pts[3] - pts[1]))
     if steps > MAX_STEPS:
-        raise v.ArgumentValueError(
+        raise ArgumentValueError(
             f"the line from ({pts[0]}, {pts[1]}) to ({pts[2]}, {pts[3]}) has {steps} steps; "
             f"a trace lists at most {MAX_STEPS}"
         )
@@ -114,7 +117,7 @@ def dda(x0: float, y0: float, x1: float, y1: float) -> Table:
     (x0, y0, x1, y1), steps = _endpoints(x0, y0, x1, y1)
     out = np.zeros((steps + 1, 4), np.float64)
     steps, xinc, yinc = python(k.dda_trace)(x0, y0, x1, y1, out)
-    rows = [
+    rows: List[Dict[str, Any]] = [
         {"k": i, "x_real": xr, "y_real": yr, "x": int(px), "y": int(py)}
         for i, (xr, yr, px, py) in enumerate(out.tolist())
     ]

@@ -8,9 +8,10 @@ edge table, ``step_active`` moves the active edge list up one scan line and
 ``fill_row`` paints the row's spans, exactly as :func:`scanline.draw.polygon` does.
 """
 
-from typing import Sequence, Union
+from typing import Any, Dict, List, Sequence, Tuple, Union
 
 import numpy as np
+from numpy.typing import NDArray
 
 from ..draw.polygon import _rule
 from ..errors import ArgumentValueError
@@ -25,7 +26,15 @@ MAX_PIXELS = 1 << 22
 _SIGN = {1: "up", -1: "down"}
 
 
-def _box(verts):
+class FillTable(Table):
+    """The table of :func:`scan_line_fill`, with the sorted edge table."""
+
+    #: One dict per non-horizontal edge, in the order edges enter the active list:
+    #: ``edge``, ``lower``, ``upper``, ``scan lines``, ``direction``, ``dx/dy``.
+    edges: List[Dict[str, Any]]
+
+
+def _box(verts: NDArray[np.float64]) -> Tuple[int, int, int, int]:
     lo = np.floor(verts.min(axis=0)).astype(np.int64)
     hi = np.ceil(verts.max(axis=0)).astype(np.int64)
     width, height = int(hi[0] - lo[0] + 1), int(hi[1] - lo[1] + 1)
@@ -36,11 +45,11 @@ def _box(verts):
     return int(lo[0]), int(lo[1]), width, height
 
 
-def _point(x, y):
+def _point(x: float, y: float) -> str:
     return f"({_cell(float(x))}, {_cell(float(y))})"
 
 
-def scan_line_fill(points: Union[Points, Sequence[Points]], rule: Rule = "even-odd") -> Table:
+def scan_line_fill(points: Union[Points, Sequence[Points]], rule: Rule = "even-odd") -> FillTable:
     """The scan-line polygon fill step by step.
 
     ``table.edges`` is the sorted edge table: one row per non-horizontal edge, in
@@ -96,19 +105,23 @@ def scan_line_fill(points: Union[Points, Sequence[Points]], rule: Rule = "even-o
     verts, offsets = contours("points", points)
     code = _rule(rule)
     if len(verts) == 0:
-        return Table("Scan-line polygon fill (no vertices)", ["y"], [], ["nothing to fill"])
+        empty = FillTable("Scan-line polygon fill (no vertices)", ["y"], [], ["nothing to fill"])
+        empty.edges = []
+        return empty
     ox, oy, width, height = _box(verts)
     n_edges = len(verts)
     et = np.zeros((n_edges, 9), np.int64)
     ef = np.zeros((n_edges, 4), np.float64)
     n = python(k.build_edges)(verts, offsets, 0, len(offsets) - 1, ox, oy, height, et, ef)
-    edges, rows, pixels = [], [], []
+    edges: List[Dict[str, Any]] = []
+    rows: List[Dict[str, Any]] = []
+    pixels: List[Tuple[int, int]] = []
     if n:
         counts = np.zeros(height + 2, np.int64)
         order = np.zeros(n, np.int64)
         rmin, rmax = python(k.sort_by_row)(et, n, counts, order)
         # the edge table, as built (before the steps move the keys)
-        names = {}
+        names: Dict[int, int] = {}
         for e in order.tolist():
             names[e] = len(names) + 1
             xlo, ylo, dx, dy = ef[e].tolist()
@@ -154,7 +167,7 @@ def scan_line_fill(points: Union[Points, Sequence[Points]], rule: Rule = "even-o
         "a span runs from one key (inclusive) to the next (exclusive) where the winding "
         "number between them is " + ("odd" if code == k.EVEN_ODD else "not zero"),
     ]
-    t = Table(title, ["y", "active", "winding", "spans"], rows, notes, pixels)
+    t = FillTable(title, ["y", "active", "winding", "spans"], rows, notes, pixels)
     t.edges = edges
     return t
 

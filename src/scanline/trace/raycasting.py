@@ -7,7 +7,10 @@ The rows come from the ray-casting kernel (:mod:`scanline._kernels.raycast`) run
 Python: once with each triangle alone (the depths where its ray meets it) and once
 with all (the nearest), so the hits and the winner are the kernel's own."""
 
+from typing import Any, Dict, List, Tuple
+
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentValueError
@@ -15,7 +18,14 @@ from .table import Table
 from .zbuffer import HEIGHT, SCENE, WIDTH
 
 
-def _cast(tri):
+class RayCastingTable(Table):
+    """The table of :func:`ray_casting`, with the scene's triangles."""
+
+    #: The triangles of :data:`SCENE` in device (x, y).
+    triangles: List[List[List[float]]]
+
+
+def _cast(tri: NDArray[np.float64]) -> Tuple[NDArray[np.float64], NDArray[np.int32]]:
     """The kernel's depth and triangle per pixel for the triangles ``tri`` (N, 3, 3)
     alone, on the :data:`WIDTH` x :data:`HEIGHT` device."""
     from .._kernels import raycast as k
@@ -38,7 +48,7 @@ def _cast(tri):
     return depth, ids
 
 
-def ray_casting(row=4):
+def ray_casting(row: int = 4) -> RayCastingTable:
     """Ray casting along scan line ``row`` of the z-buffer's three triangles (device
     x, y, depth on 16 x 10; the rays run along the depth axis, as after the
     projection normalization): one row per pixel ``x``: ``hits``, each triangle the
@@ -54,7 +64,7 @@ def ray_casting(row=4):
     tri = v.kernel_array(SCENE)
     alone = [_cast(tri[t:t + 1]) for t in range(len(tri))]
     depth, ids = _cast(tri)
-    rows = []
+    rows: List[Dict[str, Any]] = []
     for x in range(WIDTH):
         hits = [(t, float(d[row, x])) for t, (d, i) in enumerate(alone) if i[row, x] >= 0]
         near = int(ids[row, x])
@@ -66,7 +76,7 @@ def ray_casting(row=4):
     notes += [f"{WIDTH} x {HEIGHT} device; the ray through pixel (x, {row}) runs along the "
               "depth axis and meets a triangle whose scan conversion covers the pixel, at "
               "z = -(A x + B y + D) / C; the smallest z is nearest"]
-    t = Table(f"ray casting, scan line y = {row}", ["x", "hits", "nearest", "depth"], rows,
+    t = RayCastingTable(f"ray casting, scan line y = {row}", ["x", "hits", "nearest", "depth"], rows,
               notes)
     t.triangles = SCENE[:, :, :2].tolist()
     return t

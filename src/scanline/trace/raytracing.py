@@ -5,12 +5,24 @@ are the log of the tracer kernel itself (:mod:`scanline._kernels.raytrace`), run
 Python on the one sample."""
 
 import math
+from typing import TYPE_CHECKING, Any, Dict, List, Optional, Sequence, Tuple, Union, cast
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentValueError
+from .._typing import Color
 from .table import Table
+
+if TYPE_CHECKING:
+    from ..lighting.lights import Light
+    from ..lighting.material import Material
+    from ..mesh.mesh import Mesh
+    from ..projection.camera import Camera
+    from ..raytrace.bvh import BVH
+    from ..raytrace.render import Traced
+    from ..screen import ScreenScene
 
 #: The built-in scene's device size.
 WIDTH, HEIGHT = 32, 24
@@ -18,7 +30,7 @@ WIDTH, HEIGHT = 32, 24
 KINDS = ("primary", "reflected", "refracted", "shadow")
 
 
-def scene():
+def scene() -> Tuple[List["Mesh"], List["Material"], List["Light"], "Camera"]:
     """The built-in scene: a gray floor, a mirror sphere and a glass sphere (index
     1.5) under a point light, seen from above the floor: ``(meshes, materials,
     lights, camera)``."""
@@ -26,20 +38,23 @@ def scene():
 
     lit = sl.lighting
     floor = sl.mesh.Mesh([(-4, -1, -4), (4, -1, -4), (4, -1, 4), (-4, -1, 4)], [(3, 2, 1, 0)])
-    meshes = [floor, sl.mesh.sphere(1.0, center=(-1.2, 0, 0), resolution=12),
+    meshes: List["Mesh"] = [floor, sl.mesh.sphere(1.0, center=(-1.2, 0, 0), resolution=12),
               sl.mesh.sphere(0.8, center=(1.2, -0.2, 0.8), resolution=12)]
     materials = [lit.Material(color=(200, 200, 200)),
                  lit.Material(color=(255, 80, 80), kd=0.2, reflectivity=0.8),
                  lit.Material(kd=0.1, ks=0.5, shininess=60, transparency=0.9,
                               refractive_index=1.5)]
-    lights = [lit.AmbientLight(0.15), lit.PointLight((3, 5, 4), intensity=0.9)]
+    lights: List["Light"] = [lit.AmbientLight(0.15), lit.PointLight((3, 5, 4), intensity=0.9)]
     camera = sl.Camera(eye=(0, 1.5, 6), target=(0, 0, 0))
     return meshes, materials, lights, camera
 
 
-def ray_tracing(x=20, y=11, meshes=None, materials=None, lights=None, camera=None,
-                width=WIDTH, height=HEIGHT, max_depth=5, seed=0, gamma=2.2,
-                background=(40, 60, 90)):
+def ray_tracing(x: int = 20, y: int = 11,
+                meshes: Union["Mesh", Sequence["Mesh"], None] = None,
+                materials: Union["Material", Sequence["Material"], None] = None,
+                lights: Optional[Sequence["Light"]] = None, camera: Optional["Camera"] = None,
+                width: int = WIDTH, height: int = HEIGHT, max_depth: int = 5, seed: int = 0,
+                gamma: float = 2.2, background: Color = (40, 60, 90)) -> Table:
     """The ray tree of the primary ray through pixel (``x``, ``y``), as
     ``sl.render(fb, meshes, camera, method="ray-tracing", shading="phong", ...)``
     follows it on a ``width`` x ``height`` frame buffer of color ``background``
@@ -123,10 +138,11 @@ def ray_tracing(x=20, y=11, meshes=None, materials=None, lights=None, camera=Non
                                                       fraction[0]]
         log = np.concatenate([extra, log[:count]])     # (put after the primary below)
         count += len(extra)
-    rows = []
+    rows: List[Dict[str, Any]] = []
     total = np.zeros(3)
     # the kernel logs a point's shadow rays before the ray that found the point
-    ordered, waiting = [], []
+    ordered: List[NDArray[np.float64]] = []
+    waiting: List[NDArray[np.float64]] = []
     for r in log[:count]:
         if int(r[2]) == k.SHADOW:
             waiting.append(r)
@@ -164,18 +180,20 @@ def ray_tracing(x=20, y=11, meshes=None, materials=None, lights=None, camera=Non
                   "I_r", "I_g", "I_b", "sum_r", "sum_g", "sum_b"], rows, notes=notes)
 
 
-def _crossings(prepared, screen, origin, direction):
+def _crossings(prepared: "Traced", screen: "ScreenScene", origin: NDArray[np.float64],
+               direction: NDArray[np.float64]) -> List[Tuple[float, int]]:
     """Every facet the ray crosses, (t, face) nearest first, by the tracer's own
     Moller-Trumbore test run on each triangle of its table."""
     from .._kernels._jit import python
     from .._kernels.bvh import inside, moller_trumbore
 
     test, hit = python(moller_trumbore), python(inside)
-    table = prepared.tree.table
-    out = []
+    tree = cast("BVH", prepared.tree)      # Traced declares its tree an object
+    table = tree.table
+    out: List[Tuple[float, int]] = []
     with np.errstate(all="ignore"):
         for row in range(len(table)):
             t, a, b = test(*origin, *direction, table, row)
             if hit(t, a, b, 0.0, math.inf):
-                out.append((float(t), int(screen.facet_face[prepared.tree.order[row]])))
+                out.append((float(t), int(screen.facet_face[tree.order[row]])))
     return sorted(out)

@@ -9,15 +9,33 @@ scan line wrapped so that their inputs and results are recorded."""
 
 import math
 import types
+from typing import Any, Callable, Dict, List, Literal, Tuple
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from .subdivision import HEIGHT, SCENES, WIDTH
 from .table import Table
 
+#: A recorded edge: its floats (x, y, dx, dy) and ints (first, last scan line, polygon).
+_Edge = Tuple[List[float], List[int]]
+#: A recorded scan line: y, its active edges, their crossings x, the polygon shown
+#: per pixel of the row, the pixels where depths were compared.
+_Line = Tuple[int, List[int], List[float], List[int], int]
 
-def _recorded(edges, lines):
+
+class ScanLineTable(Table):
+    """The table of :func:`scan_line_method`, with the scene and the visible faces."""
+
+    #: The scene's polygons, [x, y] per vertex.
+    polygons: List[List[List[float]]]
+    #: The polygon each pixel shows, ``face[y, x]`` (-1: the background).
+    face: NDArray[np.int32]
+
+
+def _recorded(edges: List[_Edge], lines: List[_Line]
+              ) -> Tuple[Callable[..., Any], Callable[..., Any]]:
     """The kernel as Python; its edge table is appended to ``edges``, each scan
     line's active edges, crossings and polygon flags to ``lines``."""
     from .._kernels import visible as k
@@ -27,12 +45,16 @@ def _recorded(edges, lines):
     scope = dict(loop.__globals__)
     table, walk = scope["scan_edges"], scope["scan_spans"]
 
-    def scan_edges(verts, offsets, height, ef, ei):
+    def scan_edges(verts: NDArray[np.float64], offsets: NDArray[np.int64], height: int,
+                   ef: NDArray[np.float64], ei: NDArray[np.int64]) -> Any:
         n = table(verts, offsets, height, ef, ei)
         edges.extend(zip(ef[:n].tolist(), ei[:n].tolist()))
         return n
 
-    def scan_spans(y, width, planes, ei, nact, active, xs, inside, on, onpos, face, depth):
+    def scan_spans(y: int, width: int, planes: NDArray[np.float64], ei: NDArray[np.int64],
+                   nact: int, active: NDArray[np.int64], xs: NDArray[np.float64],
+                   inside: NDArray[np.bool_], on: NDArray[np.int64], onpos: NDArray[np.int64],
+                   face: NDArray[np.int32], depth: NDArray[np.float64]) -> Any:
         compared = walk(y, width, planes, ei, nact, active, xs, inside, on, onpos, face, depth)
         lines.append((y, active[:nact].tolist(), xs[:nact].tolist(), face[y].tolist(),
                       int(compared)))
@@ -42,7 +64,7 @@ def _recorded(edges, lines):
     return types.FunctionType(loop.__code__, scope, loop.__name__), python(k.plane_depth)
 
 
-def scan_line_method(scene="overlap"):
+def scan_line_method(scene: Literal["overlap", "surrounding"] = "overlap") -> ScanLineTable:
     """The scan-line method on a built-in scene (:data:`scanline.trace.subdivision.SCENES`,
     a 16 x 12 device): one row per crossing of each scan line ``y``, left to right:
     the ``edge`` crossed and its polygon, the crossing ``x``, the polygons whose
@@ -60,7 +82,8 @@ def scan_line_method(scene="overlap"):
     sp = ScreenPolygons.from_device(polys, WIDTH, HEIGHT)
     ne, npoly = len(sp.vertices), len(sp)
     face = np.full((HEIGHT, WIDTH), -1, np.int32)
-    edges, lines = [], []
+    edges: List[_Edge] = []
+    lines: List[_Line] = []
     run, plane_depth = _recorded(edges, lines)
     compared = run(sp.vertices, sp.offsets, sp.planes, WIDTH, HEIGHT, face,
                    np.full((HEIGHT, WIDTH), np.inf), np.empty((ne, 4)),
@@ -69,13 +92,13 @@ def scan_line_method(scene="overlap"):
                    np.zeros(npoly, np.bool_), np.empty(npoly, np.int64),
                    np.empty(npoly, np.int64))
     polygon_of = [int(ei[2]) for _, ei in edges]
-    rows = []
+    rows: List[Dict[str, Any]] = []
     for y, active, xs, shown, _ in lines:
-        on = []
+        on: List[int] = []
         for k, (e, x) in enumerate(zip(active, xs)):
             p = polygon_of[e]
             on = [q for q in on if q != p] if p in on else on + [p]
-            row = {"y": y, "active edges": " ".join(f"e{a}" for a in active) if k == 0 else None,
+            row: Dict[str, Any] = {"y": y, "active edges": " ".join(f"e{a}" for a in active) if k == 0 else None,
                    "edge": f"e{e} (P{p})", "x": x, "on": " ".join(f"P{q}" for q in sorted(on))
                    or "-", "span": None, "depths": None, "visible": None}
             if on and k + 1 < len(xs):
@@ -96,7 +119,7 @@ def scan_line_method(scene="overlap"):
     notes += [f"{WIDTH} x {HEIGHT} device; pixel x is in a span when ceil(x left) <= x < "
               "ceil(x right); depth: smaller is nearer",
               f"depths compared at {compared} pixels (only where spans overlap)"]
-    t = Table(f"scan-line method on the {scene!r} scene",
+    t = ScanLineTable(f"scan-line method on the {scene!r} scene",
               ["y", "active edges", "edge", "x", "on", "span", "depths", "visible"], rows, notes)
     t.polygons = [p[:, :2].tolist() for p in polys]
     t.face = face

@@ -1,13 +1,23 @@
 """Step table of the scan-line seed fill (notes, chapter 2, Q.8)."""
 
-from typing import Sequence, Union
+from typing import TYPE_CHECKING, Any, Callable, Dict, List, Sequence, Tuple, Union
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from .._typing import Connectivity
 from ..errors import ArgumentTypeError, ArgumentValueError
 from .table import Table
+
+if TYPE_CHECKING:
+    from ..framebuffer import FrameBuffer
+
+#: A grid: rows of characters, top row first (a string with rows separated by
+#: newlines or '/', or a sequence of strings).
+_Grid = Union[str, Sequence[str]]
+#: ``ref_of(buf, packed, x, y, chars)``: the seed fill's reference colors.
+_RefOf = Callable[[NDArray[np.uint8], bool, int, int, List[str]], NDArray[Any]]
 
 #: The grid traced when none is given, rows top first: '#' walls, a room with a
 #: pillar (left), a second room (right) and a gap that joins them only diagonally,
@@ -25,7 +35,7 @@ EXAMPLE_GRID = (
 MAX_CELLS = 10_000
 
 
-def _rows(grid):
+def _rows(grid: object) -> List[str]:
     """The grid's rows, top first: a string (rows separated by newlines or '/') or
     a sequence of strings, all of one length."""
     if isinstance(grid, str):
@@ -50,7 +60,7 @@ def _rows(grid):
     return rows
 
 
-def grid_frame(grid):
+def grid_frame(grid: _Grid) -> Tuple["FrameBuffer", List[str]]:
     """A mode "L" frame buffer holding ``grid``: each distinct character becomes one
     gray level (in order of first appearance), row 0 of the text is the top scan line.
     Returns the frame buffer and the list of characters, indexed by level."""
@@ -65,7 +75,10 @@ def grid_frame(grid):
     return FrameBuffer.from_array(image, mode="L"), chars
 
 
-def _seed_table(kind, x, y, grid, connectivity, ref_of):
+def _seed_table(kind: int, x: int, y: int, grid: _Grid, connectivity: Connectivity,
+                ref_of: _RefOf
+                ) -> Tuple[List[Dict[str, Any]], List[Tuple[int, int]], Tuple[int, int],
+                           "FrameBuffer"]:
     """Run the seed fill ``kind`` (a kernel constant) from (x, y) on ``grid`` with the
     kernel's own step loop as Python (no compilation); ``ref_of(buf, packed, x, y,
     chars)`` gives the kernel's reference colors.  Returns the rows, the pixels filled,
@@ -84,7 +97,9 @@ def _seed_table(kind, x, y, grid, connectivity, ref_of):
     _, steps, pushed = python(k.seed_loop)(buf, layout(packed), token(kind), fb.width,
                                            fb.height, x, y, eight, ref,
                                            np.array([255], np.uint8), token(k.TRACING))
-    rows, pixels, stack, j = [], [], [(x, y)], 0
+    rows: List[Dict[str, Any]] = []
+    pixels: List[Tuple[int, int]] = []
+    stack, j = [(x, y)], 0
     for i, (sx, sy, xl, xr, n) in enumerate(np.asarray(steps).tolist()):
         stack.pop()
         new = [tuple(p) for p in np.asarray(pushed[j:j + n]).tolist()]
@@ -104,7 +119,7 @@ def _seed_table(kind, x, y, grid, connectivity, ref_of):
 _COLUMNS = ["k", "x", "y", "span", "pushed", "stack"]
 
 
-def _push_note(connectivity):
+def _push_note(connectivity: Connectivity) -> str:
     return ("pop a seed, fill its span x_left..x_right, push the rightmost pixel of each "
             "unfilled run above and below" + (" (one pixel wider each way)"
                                               if connectivity == 8 else ""))
@@ -158,7 +173,8 @@ def flood_fill(x: int, y: int, grid: Union[str, Sequence[str]] = EXAMPLE_GRID,
     from .._kernels._jit import python
     from .._kernels.variants import layout, token
 
-    def ref_of(buf, packed, x, y, chars):
+    def ref_of(buf: NDArray[np.uint8], packed: bool, x: int, y: int,
+               chars: List[str]) -> NDArray[Any]:
         value = seed_value(buf, packed, x, y)
         return np.stack([value, value])
 
@@ -233,7 +249,8 @@ def boundary_fill(x: int, y: int, grid: Union[str, Sequence[str]] = EXAMPLE_GRID
             f"boundary={boundary!r}: none of its characters occurs in the grid, which uses "
             f"{''.join(chars)!r}")
 
-    def ref_of(buf, packed, x, y, chars):
+    def ref_of(buf: NDArray[np.uint8], packed: bool, x: int, y: int,
+               chars: List[str]) -> NDArray[Any]:
         return np.array([[chars.index(c)] for c in dict.fromkeys(boundary) if c in chars])
 
     rows, pixels, (x, y), fb = _seed_table(k.BOUNDARY, x, y, grid, connectivity,

@@ -8,17 +8,33 @@ depth buffer (:func:`scanline.visible.zbuffer.nearest`) and the shading
 (:mod:`scanline.shading.models`, gamma 1: linear intensities, as the book's
 formulas give them)."""
 
+from typing import TYPE_CHECKING, Any, Dict, List, Literal, Tuple
+
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentValueError
 from .table import Table, _cell
 
+if TYPE_CHECKING:
+    from ..lighting.lights import Light
+    from ..screen import ScreenScene
+
+
+class ShadingTable(Table):
+    """The table of :func:`gouraud` and :func:`phong`, with the triangles drawn."""
+
+    #: Per row, the index of the device triangle its pixel lies in.
+    triangle_of: List[int]
+    #: The device triangles the scan line crosses, [x, y] per vertex, by index.
+    triangles: Dict[int, List[List[float]]]
+
 #: The device the sphere is drawn on.
 WIDTH, HEIGHT = 32, 24
 
 
-def scene():
+def scene() -> Tuple["ScreenScene", Tuple["Light", ...]]:
     """The built-in case: a gray sphere (resolution 8, so its facets show) lit by an
     ambient light and a point light up and to the left, on a :data:`WIDTH` x
     :data:`HEIGHT` device: ``(screen scene, lights)``."""
@@ -33,11 +49,11 @@ def scene():
     return prepared, lights
 
 
-def _vector(p):
+def _vector(p: NDArray[np.float64]) -> str:
     return "(" + ", ".join(_cell(round(float(c), 6)) for c in p) + ")"
 
 
-def _shading(model, row):
+def _shading(model: Literal["gouraud", "phong"], row: int) -> ShadingTable:
     from ..shading.compose import surface_coordinates
     from ..shading.models import intensities, vertex_intensities
     from ..shading.options import ShadingOptions
@@ -53,7 +69,7 @@ def _shading(model, row):
     facets = s.facet[t]
     lam = surface_coordinates(s, t, xs.astype(np.float64), np.full(len(xs), float(row)))[0]
     shade = intensities(s, facets, lam[:, 1:], options)[:, 0]
-    rows = []
+    rows: List[Dict[str, Any]] = []
     if model == "gouraud":
         corner = vertex_intensities(s, facets, options)[:, :, 0]              # (M, 3)
         for x, f, l, c, i in zip(xs.tolist(), facets.tolist(), lam, corner, shade):
@@ -78,7 +94,7 @@ def _shading(model, row):
              "gamma 1 (linear intensities)",
              "l0, l1, l2: the pixel's barycentric coordinates in its facet (perspective-"
              "correct: l/w and 1/w are linear along the scan line)", rule]
-    table = Table(f"{model.capitalize()} shading, scan line y = {row}", columns, rows, notes)
+    table = ShadingTable(f"{model.capitalize()} shading, scan line y = {row}", columns, rows, notes)
     # for the explorer: each pixel's device triangle, and the triangles the row crosses
     table.triangle_of = t.tolist()
     crossing = (s.triangles[:, :, 1].min(axis=1) <= row) & (s.triangles[:, :, 1].max(axis=1) >= row)
@@ -86,7 +102,7 @@ def _shading(model, row):
     return table
 
 
-def gouraud(row=12):
+def gouraud(row: int = 12) -> ShadingTable:
     """Gouraud shading along scan line ``row`` of the built-in sphere (:func:`scene`):
     per pixel, its facet, barycentric coordinates l0..l2, the intensities I0..I2
     the model gives at the facet's vertices (with the averaged vertex normals) and
@@ -101,7 +117,7 @@ def gouraud(row=12):
     return _shading("gouraud", row)
 
 
-def phong(row=12):
+def phong(row: int = 12) -> ShadingTable:
     """Phong shading along scan line ``row`` of the built-in sphere (:func:`scene`):
     per pixel, its facet, barycentric coordinates l0..l2, the interpolated and
     normalized normal N and the intensity I the model gives with it at the pixel's

@@ -8,11 +8,30 @@ The rows come from the kernel itself: its loop runs as Python
 their classes that the loop found, and the case the test returned."""
 
 import types
+from typing import Any, Callable, Dict, List, Literal, Optional, Tuple
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from .table import Table
+
+
+class WarnockTable(Table):
+    """The table of :func:`warnock`, with the scene and what each area painted."""
+
+    #: The scene's polygons, [x, y] per vertex.
+    polygons: List[List[List[float]]]
+    #: Per row, the pixels (x, y) its area painted.
+    written: List[List[Tuple[int, int]]]
+    #: The polygon each pixel shows, ``face[y, x]`` (-1: the background).
+    face: NDArray[np.int32]
+
+
+#: A recorded test of an area: x0, y0, x1, y1, level, the relevant polygons, their
+#: classes, the case, the pixels painted and the polygons painted.
+_Area = Tuple[int, int, int, int, int, List[int], List[int], int, List[Tuple[int, int]],
+              List[int]]
 
 #: The device of the built-in scenes.
 WIDTH, HEIGHT = 16, 12
@@ -32,7 +51,7 @@ SCENES = {
 CLASSES = {0: "outside", 1: "surrounding", 2: "inside", 3: "overlapping"}
 
 
-def _recorded(record):
+def _recorded(record: List[_Area]) -> Callable[..., Any]:
     """The kernel's loop as Python, its area test appending to ``record``."""
     from .._kernels import visible as k
     from .._kernels._jit import python
@@ -41,7 +60,10 @@ def _recorded(record):
     scope = dict(loop.__globals__)
     decide = scope["decide_area"]
 
-    def decide_area(verts, offsets, planes, ext, cand, level, n, x0, y0, x1, y1, face, depth):
+    def decide_area(verts: NDArray[np.float64], offsets: NDArray[np.int64],
+                    planes: NDArray[np.float64], ext: NDArray[np.float64],
+                    cand: NDArray[np.int64], level: int, n: int, x0: int, y0: int, x1: int,
+                    y1: int, face: NDArray[np.int32], depth: NDArray[np.float64]) -> Any:
         before = face.copy()
         case = decide(verts, offsets, planes, ext, cand, level, n, x0, y0, x1, y1, face, depth)
         ys, xs = np.nonzero(face != before)
@@ -54,7 +76,7 @@ def _recorded(record):
     return types.FunctionType(loop.__code__, scope, loop.__name__)
 
 
-def warnock(scene="overlap"):
+def warnock(scene: Literal["overlap", "surrounding"] = "overlap") -> WarnockTable:
     """Warnock's area subdivision of a built-in scene (:data:`SCENES`, on a
     :data:`WIDTH` x :data:`HEIGHT` device): one row per area examined, in the order
     the method takes them (depth first, from the whole screen): the area ``x0, y0,
@@ -72,16 +94,17 @@ def warnock(scene="overlap"):
     levels = int(np.ceil(np.log2(max(WIDTH, HEIGHT)))) + 2
     npoly = len(sp)
     face = np.full((HEIGHT, WIDTH), -1, np.int32)
-    record = []
+    record: List[_Area] = []
     _recorded(record)(sp.vertices, sp.offsets, sp.planes, np.ascontiguousarray(sp.extents()),
                       WIDTH, HEIGHT, face, np.full((HEIGHT, WIDTH), np.inf),
                       np.empty((2 * levels, max(npoly, 1)), np.int64),
                       np.zeros(levels, np.int64), np.empty((3 * levels + 4, 5), np.int64),
                       np.zeros((0, 5), np.int64))
     names = [f"P{i}" for i in range(npoly)]
-    rows, written = [], []
+    rows: List[Dict[str, Any]] = []
+    written: List[List[Tuple[int, int]]] = []
     for x0, y0, x1, y1, level, cand, classes, case, pixels, painted in record:
-        row = {"x0": x0, "y0": y0, "x1": x1, "y1": y1, "level": level}
+        row: Dict[str, Any] = {"x0": x0, "y0": y0, "x1": x1, "y1": y1, "level": level}
         of = dict(zip(cand, classes))
         row.update({n: CLASSES[of.get(p, 0)] for p, n in enumerate(names)})
         row["decision"] = CASES[case] if case >= 0 else "subdivide"
@@ -96,7 +119,7 @@ def warnock(scene="overlap"):
               "center); otherwise subdivide into four quadrants",
               f"{sum(r['decision'] != 'subdivide' for r in rows)} areas decided, "
               f"{sum(r['decision'] == 'subdivide' for r in rows)} subdivided"]
-    t = Table(f"Warnock area subdivision of the {scene!r} scene",
+    t = WarnockTable(f"Warnock area subdivision of the {scene!r} scene",
               ["x0", "y0", "x1", "y1", "level"] + names + ["decision", "painted"], rows, notes)
     t.polygons = [p[:, :2].tolist() for p in polys]
     t.written = written

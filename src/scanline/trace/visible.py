@@ -2,6 +2,8 @@
 that draws (the depth sort's own log; the horizon kernel's helpers run as Python
 through :func:`scanline._kernels._jit.python`)."""
 
+from typing import Any, Dict, List, Literal, Optional
+
 import numpy as np
 
 from .. import _validate as v
@@ -22,7 +24,8 @@ SCENES = {
 }
 
 
-def depth_sort(scene="cyclic", split_cycles=True):
+def depth_sort(scene: Literal["painter", "cyclic", "intersecting"] = "cyclic",
+               split_cycles: bool = True) -> Table:
     """The depth sort of a built-in scene (:data:`SCENES`): one row per pair
     examined, the outcome of each of the five tests tried, and the action taken
     (Hearn & Baker, section 13-6)."""
@@ -32,7 +35,7 @@ def depth_sort(scene="cyclic", split_cycles=True):
     v.choice("scene", scene, tuple(SCENES))
     polys = [np.array(p, float) for p in SCENES[scene]]
     sp = ScreenPolygons.from_device(polys, 40, 30)
-    log = []
+    log: List[Dict[str, Any]] = []
     out = sort(sp, split_cycles=split_cycles, log=log)
     notes = [f"polygon {i}: " + " ".join(f"({x:g}, {y:g}, {z:g})" for x, y, z in p.tolist())
              for i, p in enumerate(polys)]
@@ -44,7 +47,7 @@ def depth_sort(scene="cyclic", split_cycles=True):
     return Table(f"depth sort of the {scene!r} scene", columns, rows, notes)
 
 
-def floating_horizon(nx=6, ny=4, width=24, height=16):
+def floating_horizon(nx: int = 6, ny: int = 4, width: int = 24, height: int = 16) -> Table:
     """The floating horizon of z = sin(2x) cos(2y) on an ``nx`` x ``ny`` grid drawn
     on a ``width`` x ``height`` device: per curve (nearest first) and column, the
     curve's y, the horizons before, the visibility and the horizons after (Rogers,
@@ -91,5 +94,5 @@ def floating_horizon(nx=6, ny=4, width=24, height=16):
                                       "visible", "upper after", "lower after"], rows, notes)
 
 
-def _finite(x):
+def _finite(x: float) -> Optional[float]:
     return None if not np.isfinite(x) else float(x)

@@ -2,7 +2,10 @@
 line of a small scene, each triangle's depth at each pixel it covers, the depth
 stored there before, and whether the triangle wins."""
 
+from typing import Any, Dict, List, Optional
+
 import numpy as np
+from numpy.typing import ArrayLike
 
 from .. import _validate as v
 from ..errors import ArgumentValueError
@@ -18,7 +21,8 @@ SCENE = np.array([
 WIDTH, HEIGHT = 16, 10
 
 
-def z_buffer(row=4, triangles=None, width=WIDTH, height=HEIGHT):
+def z_buffer(row: int = 4, triangles: Optional[ArrayLike] = None, width: int = WIDTH,
+             height: int = HEIGHT) -> Table:
     """The z-buffer steps on scan line ``row``: per triangle in drawing order, per
     pixel it covers on that row, ``z`` (from the drawing kernel, incrementally z' = z
     - A/C), the stored ``depth`` before, and ``result`` ("write": z < depth, the
@@ -54,7 +58,7 @@ def z_buffer(row=4, triangles=None, width=WIDTH, height=HEIGHT):
     out, test = token(k.ATTRIBUTES), token(k.TEST)
     dummy_b, dummy_a, dummy_f = np.empty((1, 1, 1), np.uint8), np.empty((height, width, 0)), \
         np.empty((1, 1))
-    rows = []
+    rows: List[Dict[str, Any]] = []
     for t in range(n):
         if not spans[t, 0] <= row <= spans[t, 1]:
             continue                              # the triangle's rows miss this one

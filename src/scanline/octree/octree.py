@@ -30,7 +30,7 @@ SAMPLED_LEVELS = 3
 _CHUNK = 1 << 15
 
 
-def _region(bounds, name):
+def _region(bounds: Any, name: str) -> Tuple[NDArray[np.float64], float]:
     """(origin, side) of the cube with its low corner at ``bounds``' low corner and the
     side of its largest extent."""
     try:
@@ -121,8 +121,8 @@ class Octree(Tree):
         size = v.number("voxel_size", voxel_size)
         if not size > 0:
             raise ArgumentValueError(f"voxel_size must be positive, got {v._show(voxel_size)}")
-        origin, _ = _region((origin, np.asarray(origin, float) + size), "origin")
-        return cls._grid_tree(grid, origin, size * (1 << depth))
+        corner, _ = _region((origin, np.asarray(origin, float) + size), "origin")
+        return cls._grid_tree(grid, corner, size * (1 << depth))
 
     @classmethod
     def from_solid(cls, solid: Any, depth: int,
@@ -182,7 +182,7 @@ class Octree(Tree):
         else:
             origin, side = _region(bounds, "bounds")
 
-        def classify(level, coords):
+        def classify(level: int, coords: NDArray[np.int64]) -> NDArray[np.int8]:
             size = side / (1 << level)
             samples = _SAMPLES[8:] if level == depth else _SAMPLES
             kinds = np.empty(len(coords), np.int8)
@@ -394,13 +394,13 @@ class Octree(Tree):
         return self._boundary[1]
 
     @property
-    def _boundary(self):
-        cached = self.__dict__.get("_boundary_cache")
+    def _boundary(self) -> Tuple[NDArray[np.float64], NDArray[np.int64]]:
+        cached: Optional[Tuple[NDArray[np.float64], NDArray[np.int64]]] = self.__dict__.get("_boundary_cache")
         if cached is None:
             cached = self.__dict__["_boundary_cache"] = self._faces()
         return cached
 
-    def _faces(self):
+    def _faces(self) -> Tuple[NDArray[np.float64], NDArray[np.int64]]:
         from .._kernels import octree as k
         from .._kernels._jit import call
 

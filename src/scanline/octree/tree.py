@@ -12,8 +12,10 @@ trees of the same set have the same arrays.
 """
 
 import math
+from typing import Any, Callable, Optional, Tuple, Type, TypeVar
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from ..budget import check
@@ -29,27 +31,30 @@ MAX_DEPTH = 20
 #: solid's cells (evaluated in chunks).  The memory budget's estimate.
 NODE_BYTES = 64
 
+_T = TypeVar("_T", bound="Tree")
 
-def worst_nodes(depth, nchild):
+
+def worst_nodes(depth: int, nchild: int) -> int:
     """The most nodes a tree ``depth`` levels deep can have: a full tree."""
-    return (nchild ** (depth + 1) - 1) // (nchild - 1)
+    leaves: int = nchild ** (depth + 1)       # int ** int is Any to the checker
+    return (leaves - 1) // (nchild - 1)
 
 
-def check_depth(depth, nchild, what):
+def check_depth(depth: Any, nchild: int, what: str) -> int:
     """``depth`` as an int 1..MAX_DEPTH, refused up front (the memory budget) when a
     tree that deep could hold more nodes than fit (``worst_nodes``)."""
     if isinstance(depth, bool) or not isinstance(depth, (int, np.integer)) \
             or not 1 <= depth <= MAX_DEPTH:
         raise ArgumentValueError(f"depth must be an integer 1..{MAX_DEPTH} (the levels below "
                                  f"the root), got {v._show(depth)}")
-    depth = int(depth)
-    check(NODE_BYTES * worst_nodes(depth, nchild), "depth",
-          f"{what} of depth {depth} (up to {worst_nodes(depth, nchild):,} nodes)",
+    levels = int(depth)
+    check(NODE_BYTES * worst_nodes(levels, nchild), "depth",
+          f"{what} of depth {levels} (up to {worst_nodes(levels, nchild):,} nodes)",
           f"use a depth of {_deepest(nchild)} or less")
-    return depth
+    return levels
 
 
-def _deepest(nchild):
+def _deepest(nchild: int) -> int:
     """The deepest level whose worst case fits the budget."""
     from ..budget import limit
 
@@ -59,7 +64,7 @@ def _deepest(nchild):
     return d
 
 
-def pyramid_kinds(grid, dims):
+def pyramid_kinds(grid: ArrayLike, dims: int) -> list[NDArray[np.int8]]:
     """The kind of every cell of every level, finest (the 0/1 ``grid``, 2**depth a
     side) to the root: a cell is full or empty where its children all are, else
     split (the bottom-up merge of Hearn & Baker 10-17)."""
@@ -74,7 +79,8 @@ def pyramid_kinds(grid, dims):
     return levels[::-1]
 
 
-def build(classify, depth, dims):
+def build(classify: Callable[[int, NDArray[np.int64]], ArrayLike], depth: int,
+          dims: int) -> Tuple[NDArray[np.int8], NDArray[np.int64]]:
     """A canonical tree made level by level, breadth first: ``classify(level,
     coords)`` gives the kinds (int8) of the cells at integer ``coords`` (M, dims) of
     ``level`` (2**level a side); the children of the split ones are classified next
@@ -82,7 +88,9 @@ def build(classify, depth, dims):
     nchild = 1 << dims
     bits = np.array([[(j >> a) & 1 for a in range(dims)] for j in range(nchild)], np.int64)
     coords = np.zeros((1, dims), np.int64)
-    kinds, children, start = [], [], 0
+    kinds: list[NDArray[np.int8]] = []
+    children: list[NDArray[np.int64]] = []
+    start = 0
     for level in range(depth + 1):
         kind = np.asarray(classify(level, coords), np.int8)
         if level == depth:
@@ -99,7 +107,8 @@ def build(classify, depth, dims):
     return canonical(np.concatenate(kinds), np.concatenate(children), nchild)
 
 
-def canonical(kind, child, nchild):
+def canonical(kind: ArrayLike, child: ArrayLike, nchild: int) -> Tuple[NDArray[np.int8],
+              NDArray[np.int64]]:
     """The canonical form (:func:`scanline._kernels.octree.compact`)."""
     from .._kernels import octree as k
     from .._kernels._jit import call
@@ -119,7 +128,8 @@ class Tree:
     dims = 3
     noun = "tree"
 
-    def __init__(self, kind, child, depth, origin, side):
+    def __init__(self, kind: ArrayLike, child: ArrayLike, depth: int, origin: NDArray[np.float64],
+                 side: float) -> None:
         kind = np.ascontiguousarray(kind, np.int8)
         child = np.ascontiguousarray(child, np.int64)
         if kind.ndim != 1 or not len(kind) or child.shape != kind.shape:
@@ -133,21 +143,22 @@ class Tree:
         self.side = side
 
     @property
-    def nchild(self):
+    def nchild(self) -> int:
         return 1 << self.dims
 
     @property
-    def node_count(self):
+    def node_count(self) -> int:
         """The number of nodes."""
         return len(self.kind)
 
     @property
-    def cell_size(self):
+    def cell_size(self) -> float:
         """The side of the finest cells (``side / 2**depth``)."""
         return self.side / (1 << self.depth)
 
     @classmethod
-    def _grid_tree(cls, grid, origin, side):
+    def _grid_tree(cls: Type[_T], grid: NDArray[np.uint8], origin: NDArray[np.float64],
+                   side: float) -> _T:
         """The canonical tree of a 0/1 ``grid`` (2**depth a side, indexed by axis)."""
         depth = int(round(math.log2(grid.shape[0])))
         levels = pyramid_kinds(grid, cls.dims)
@@ -155,7 +166,7 @@ class Tree:
         return cls(kind, child, depth, origin, side)
 
     @classmethod
-    def _padded(cls, array, name):
+    def _padded(cls, array: ArrayLike, name: str) -> Tuple[NDArray[np.uint8], int]:
         """A boolean array (any shape of ``dims`` axes, each at least 1) padded with
         empty cells to a cube of 2**depth, depth >= 1: (grid uint8, depth)."""
         a = np.asarray(array)
@@ -173,7 +184,7 @@ class Tree:
         grid[tuple(slice(0, s) for s in a.shape)] = a != 0
         return grid, depth
 
-    def _same_region(self, other, name):
+    def _same_region(self, other: object, name: str) -> None:
         if not isinstance(other, type(self)):
             raise ArgumentTypeError(f"{name} must be a {type(self).__name__}, got "
                                     f"{v._show(other)}")
@@ -183,7 +194,7 @@ class Tree:
                 f"{other.side}) than this {self.noun} (origin {tuple(self.origin)}, side "
                 f"{self.side}): build both over the same bounds")
 
-    def _combined(self, other, op, name):
+    def _combined(self: _T, other: _T, op: int, name: str) -> _T:
         from .._kernels import octree as k
         from .._kernels._jit import call
 
@@ -196,18 +207,18 @@ class Tree:
         kind, child = canonical(out_kind[:count], out_child[:count], self.nchild)
         return type(self)(kind, child, max(self.depth, other.depth), self.origin, self.side)
 
-    def union(self, other):
+    def union(self: _T, other: _T) -> _T:
         """The cells in either tree (Hearn & Baker 10-17: node by node, a full node
         decides, an empty one takes the other's subtree)."""
         from .._kernels.octree import UNION
         return self._combined(other, UNION, "other")
 
-    def intersection(self, other):
+    def intersection(self: _T, other: _T) -> _T:
         """The cells in both trees."""
         from .._kernels.octree import INTERSECTION
         return self._combined(other, INTERSECTION, "other")
 
-    def difference(self, other):
+    def difference(self: _T, other: _T) -> _T:
         """The cells of this tree not in ``other``."""
         from .._kernels.octree import DIFFERENCE
         return self._combined(other, DIFFERENCE, "other")
@@ -216,14 +227,14 @@ class Tree:
     __and__ = intersection
     __sub__ = difference
 
-    def __eq__(self, other):
+    def __eq__(self, other: object) -> bool:
         return (isinstance(other, type(self)) and np.array_equal(self.kind, other.kind)
                 and np.array_equal(self.child, other.child)
                 and np.array_equal(self.origin, other.origin) and self.side == other.side)
 
     __hash__ = None      # type: ignore[assignment]
 
-    def _cells(self, order=None):
+    def _cells(self, order: Optional[NDArray[np.int64]] = None) -> NDArray[np.int64]:
         """Leaf rows (x, y, z, size, kind) in finest-level units, depth first with the
         children in ``order`` (default 0, 1, ...)."""
         from .._kernels import octree as k
@@ -236,13 +247,13 @@ class Tree:
                      self.depth, out)
         return out[:count]
 
-    def _measure(self):
+    def _measure(self) -> float:
         """The full cells' total length**dims: volume or area."""
         cells = self._cells()
         full = cells[cells[:, 4] == FULL, 3].astype(np.float64)
         return float((full ** self.dims).sum()) * self.cell_size ** self.dims
 
-    def _grid(self):
+    def _grid(self) -> NDArray[np.uint8]:
         """The 0/1 grid (2**depth a side, indexed by axis) of the full cells."""
         from .._kernels import octree as k
         from .._kernels._jit import call
@@ -255,7 +266,7 @@ class Tree:
         call(k.fill_cells, n ** self.dims, cells, grid)
         return grid if self.dims == 3 else grid[:, :, 0]
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         full = int((self.kind == FULL).sum())
         return (f"<{type(self).__name__} depth {self.depth}: {self.node_count} nodes, "
                 f"{full} full leaves>")

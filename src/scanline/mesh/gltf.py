@@ -23,15 +23,23 @@ import base64
 import math
 import os
 import warnings
+from typing import TYPE_CHECKING, Any, Dict, List, NoReturn, Optional, Sequence, Set, Tuple
 
 import numpy as np
+from numpy.typing import NDArray
 
 from ..errors import ArgumentValueError
 from ..transform3d.quaternion import Quaternion
+from .materials import MaterialRecord
 from .mesh import Mesh, check_mesh_budget
 
+if TYPE_CHECKING:
+    from pygltflib import GLTF2, Node, Primitive
+
+    from .files import MeshKeywords
+
 #: numpy dtypes of glTF's component types (section 3.6.2.2).
-COMPONENTS = {5120: np.int8, 5121: np.uint8, 5122: np.int16, 5123: np.uint16,
+COMPONENTS: Dict[int, type[np.number[Any]]] = {5120: np.int8, 5121: np.uint8, 5122: np.int16, 5123: np.uint16,
               5125: np.uint32, 5126: np.float32}
 
 #: Components of each accessor type.
@@ -46,13 +54,13 @@ SUPPORTED_EXTENSIONS = ("KHR_materials_unlit", "KHR_materials_emissive_strength"
 MAX_DEPTH = 256
 
 
-def _parse(data, filename):
+def _parse(data: bytes, filename: str) -> Tuple["GLTF2", Optional[bytes]]:
     """The pygltflib document of ``data`` and its binary chunk (None for .gltf)."""
     import pygltflib
 
     from .files import MeshFileError
 
-    def fail(message):
+    def fail(message: str) -> NoReturn:
         raise MeshFileError(message, file=filename)
 
     try:
@@ -90,14 +98,15 @@ class _Buffers:
     """The document's buffers, read on first use: the GLB binary chunk, a data URI,
     or a file beside the document (read with the mesh-file guards)."""
 
-    def __init__(self, doc, blob, filename, max_bytes):
+    def __init__(self, doc: "GLTF2", blob: Optional[bytes], filename: str,
+                 max_bytes: int) -> None:
         self.doc, self.blob, self.filename, self.max_bytes = doc, blob, filename, max_bytes
-        self.cache = {}
+        self.cache: Dict[int, bytes] = {}
 
-    def __call__(self, index, where):
+    def __call__(self, index: object, where: str) -> bytes:
         from .files import MeshFileError, read_regular_file
 
-        if index in self.cache:
+        if isinstance(index, int) and index in self.cache:
             return self.cache[index]
         buffers = self.doc.buffers or []
         if not isinstance(index, int) or not 0 <= index < len(buffers):
@@ -108,7 +117,7 @@ class _Buffers:
             if self.blob is None or index != 0:
                 raise MeshFileError(f"buffer {index} has no data (no uri and no GLB binary "
                                     "chunk)", file=self.filename)
-            data = self.blob
+            data: bytes = self.blob
         elif uri.startswith("data:"):
             try:
                 data = base64.b64decode(uri.split(",", 1)[1], validate=False)
@@ -128,14 +137,15 @@ class _Buffers:
         return data
 
 
-def _accessor(doc, buffers, index, filename, kinds=None):
+def _accessor(doc: "GLTF2", buffers: _Buffers, index: object, filename: str,
+              kinds: Optional[Sequence[str]] = None) -> NDArray[np.float64]:
     """Accessor ``index`` as a (count, components) array (normalized integers scaled
     to 0..1), every offset checked against its view and buffer."""
     from .files import MeshFileError
 
     where = f"accessor {index}"
 
-    def fail(message):
+    def fail(message: str) -> NoReturn:
         raise MeshFileError(f"{where}: {message}", file=filename)
 
     accessors = doc.accessors or []
@@ -182,14 +192,15 @@ def _accessor(doc, buffers, index, filename, kinds=None):
                       f"{where} of the mesh file {filename!r}", hint="use a smaller mesh file")
     raw = np.ndarray((count, width), np.dtype(dtype).newbyteorder("<"), buffer=data,
                      offset=v_off + a_off, strides=(stride, itemsize))
-    out = raw.astype(np.float64) if dtype is np.float32 or not acc.normalized else \
-        np.maximum(raw / float(np.iinfo(dtype).max), -1.0)
+    out: NDArray[np.float64] = raw.astype(np.float64) \
+        if dtype is np.float32 or not acc.normalized else \
+        np.maximum(raw / float(np.iinfo(raw.dtype).max), -1.0)
     if dtype is np.float32 and not np.isfinite(out).all():
         fail("holds values that are not finite numbers (NaN or infinity)")
     return out
 
 
-def _indices(doc, buffers, index, filename):
+def _indices(doc: "GLTF2", buffers: _Buffers, index: int, filename: str) -> NDArray[np.int64]:
     from .files import MeshFileError
 
     acc = _accessor(doc, buffers, index, filename, ("SCALAR",))
@@ -199,7 +210,7 @@ def _indices(doc, buffers, index, filename):
     return acc[:, 0].astype(np.int64)
 
 
-def _local(node, i, filename):
+def _local(node: "Node", i: int, filename: str) -> NDArray[np.float64]:
     """A node's local 4 x 4 transformation: its matrix (column-major) or T R S."""
     from .files import MeshFileError
 
@@ -233,7 +244,8 @@ def _local(node, i, filename):
     return m
 
 
-def _instances(doc, filename):
+def _instances(doc: "GLTF2", filename: str
+               ) -> List[Tuple[object, NDArray[np.float64], Optional[int]]]:
     """(mesh index, world matrix, node) of every node with a mesh in the default scene
     (or, without scenes, under every root node), parents before children."""
     from .files import MeshFileError
@@ -246,8 +258,10 @@ def _instances(doc, filename):
     else:
         children = {c for n in nodes for c in (n.children or [])}
         roots = [i for i in range(len(nodes)) if i not in children]
-    out, seen = [], set()
-    stack = [(r, np.eye(4), 0) for r in reversed(roots)]
+    out: List[Tuple[object, NDArray[np.float64], Optional[int]]] = []
+    seen: Set[int] = set()
+    stack: List[Tuple[object, NDArray[np.float64], int]] = \
+        [(r, np.eye(4), 0) for r in reversed(roots)]
     while stack:
         i, parent, depth = stack.pop()
         if not isinstance(i, int) or not 0 <= i < len(nodes):
@@ -266,9 +280,7 @@ def _instances(doc, filename):
     return out
 
 
-def _material(doc, index, filename):
-    from .materials import MaterialRecord
-
+def _material(doc: "GLTF2", index: object, filename: str) -> Optional[MaterialRecord]:
     materials = doc.materials or []
     if index is None or not isinstance(index, int) or not 0 <= index < len(materials):
         return None
@@ -291,11 +303,11 @@ def _material(doc, index, filename):
             uri = images[source].uri
             texture = (os.path.join(os.path.dirname(os.path.abspath(filename)), uri)
                        if uri and not uri.startswith("data:") else f"image {source}")
-    return MaterialRecord(mat.name or f"material {index}", kd=tuple(rgba[:3]), d=rgba[3],
-                          map_kd=texture)
+    return MaterialRecord(mat.name or f"material {index}", kd=(rgba[0], rgba[1], rgba[2]),
+                          d=rgba[3], map_kd=texture)
 
 
-def gltf_meshes(data, filename, name, max_bytes):
+def gltf_meshes(data: bytes, filename: str, name: str, max_bytes: int) -> List[Mesh]:
     """One Mesh per triangle primitive of every mesh node of the default scene, in
     world coordinates, with its material (module docstring)."""
     from .files import MeshFileError, MeshFileWarning
@@ -303,7 +315,8 @@ def gltf_meshes(data, filename, name, max_bytes):
     doc, blob = _parse(data, filename)
     buffers = _Buffers(doc, blob, filename, max_bytes)
     meshes = doc.meshes or []
-    out, skipped = [], set()
+    out: List[Mesh] = []
+    skipped: Set[int] = set()
     for m, world, node in _instances(doc, filename):
         if not isinstance(m, int) or not 0 <= m < len(meshes):
             raise MeshFileError(f"node {node} refers to mesh {m!r}; the file has "
@@ -324,7 +337,8 @@ def gltf_meshes(data, filename, name, max_bytes):
     return out
 
 
-def _primitive(doc, buffers, prim, filename, name):
+def _primitive(doc: "GLTF2", buffers: _Buffers, prim: "Primitive", filename: str,
+               name: str) -> Mesh:
     from ..errors import ArgumentValueError
     from .files import MeshFileError
 
@@ -358,7 +372,7 @@ def _primitive(doc, buffers, prim, filename, name):
         warnings.warn(f"{filename}: {where}: {int(flat.sum())} degenerate triangle(s) (a "
                       "vertex repeated) skipped", MeshFileWarning, stacklevel=5)
         triangles = triangles[~flat]
-    extra = {}
+    extra: "MeshKeywords" = {}
     normal = getattr(attributes, "NORMAL", None)
     if normal is not None:
         extra["normals"] = _sized(_accessor(doc, buffers, normal, filename, ("VEC3",)), nv,
@@ -382,7 +396,8 @@ def _primitive(doc, buffers, prim, filename, name):
     return mesh
 
 
-def _sized(values, count, index, filename):
+def _sized(values: NDArray[np.float64], count: int, index: int, filename: str
+           ) -> NDArray[np.float64]:
     from .files import MeshFileError
 
     if len(values) != count:
@@ -391,13 +406,14 @@ def _sized(values, count, index, filename):
     return values
 
 
-def gltf_bytes(mesh, binary):
+def gltf_bytes(mesh: Mesh, binary: bool) -> bytes:
     """The glTF document of ``mesh`` (triangulated): a GLB's bytes, or a .gltf's JSON
     with the buffer as a data URI (one self-contained file)."""
     import pygltflib as g
 
     tri = mesh.triangulated()
-    arrays = [("POSITION", tri.vertices.astype(np.float32), "VEC3")]
+    arrays: List[Tuple[Optional[str], NDArray[Any], str]] = [
+        ("POSITION", tri.vertices.astype(np.float32), "VEC3")]
     if tri.normals is not None:
         arrays.append(("NORMAL", tri.normals.astype(np.float32), "VEC3"))
     if tri.uv is not None:
@@ -406,7 +422,10 @@ def gltf_bytes(mesh, binary):
     if tri.colors is not None and tri.color_on == "vertex":
         arrays.append(("COLOR_0", tri.colors.astype(np.float32) / 255.0, "VEC4"))
     indices = tri.face_indices.astype(np.uint32)
-    blob, views, accessors, attributes = b"", [], [], {}
+    blob = b""
+    views: List["g.BufferView"] = []
+    accessors: List["g.Accessor"] = []
+    attributes: Dict[str, int] = {}
     for key, a, kind in arrays + [(None, indices, "SCALAR")]:
         data = np.ascontiguousarray(a).tobytes()
         views.append(g.BufferView(buffer=0, byteOffset=len(blob), byteLength=len(data),
@@ -419,7 +438,8 @@ def gltf_bytes(mesh, binary):
             min=a.min(axis=0).tolist() if key == "POSITION" else None))
         if key is not None:
             attributes[key] = len(accessors) - 1
-    materials, material = [], None
+    materials: List["g.Material"] = []
+    material: Optional[int] = None
     record = mesh.material
     if record is not None:
         kd = getattr(record, "kd", None)
@@ -442,4 +462,5 @@ def gltf_bytes(mesh, binary):
         return b"".join(doc.save_to_bytes())
     doc.buffers[0].uri = ("data:application/octet-stream;base64,"
                           + base64.b64encode(blob).decode("ascii"))
-    return doc.to_json(indent=1).encode("utf-8")
+    text: str = doc.to_json(indent=1)
+    return text.encode("utf-8")

@@ -11,6 +11,8 @@ numbered frame files for long films; a Jupyter display.
 (16, 2.0)
 """
 
+from __future__ import annotations
+
 import base64
 import hashlib
 import io
@@ -19,9 +21,12 @@ import numbers
 import os
 import re
 import string
+from collections.abc import Sized
 from fractions import Fraction
+from typing import IO, TYPE_CHECKING, Any, Callable, Iterable, Iterator, Literal, Sequence, Union
 
 import numpy as np
+from PIL import Image
 
 from .. import _validate as v
 from ..budget import check
@@ -29,16 +34,28 @@ from ._checks import progress_flag
 from ..errors import ArgumentTypeError, ArgumentValueError, OutputError
 from ..framebuffer import write_atomically
 from . import render as _render
+from .render import Frame, RenderFunction, Stream
+
+if TYPE_CHECKING:
+    from distributed import Client
+    from tqdm import tqdm
+
+#: A file or folder argument.
+PathArgument = Union[str, "os.PathLike[str]"]
+#: Frames to save: (start, stop) or a slice of the frame numbers; None: all.
+FrameSelection = Union[tuple[int, int], slice, None]
+#: Output formats' names (the values of :data:`FORMATS`).
+Kind = Literal["GIF", "APNG", "WebP", "MP4"]
 
 #: Output formats by extension.
-FORMATS = {".gif": "GIF", ".png": "APNG", ".apng": "APNG", ".webp": "WebP", ".mp4": "MP4"}
+FORMATS: dict[str, Kind] = {".gif": "GIF", ".png": "APNG", ".apng": "APNG", ".webp": "WebP", ".mp4": "MP4"}
 
 #: GIF stores delays in hundredths of a second and players show delays under 2/100 s
 #: as 1/10 s, so a GIF cannot play faster than this.
 GIF_MAX_FPS = 50.0
 
 
-def frame_durations(count, fps, unit):
+def frame_durations(count: int, fps: float, unit: int) -> list[int]:
     """Per-frame display times in multiples of ``unit`` milliseconds whose running
     sums stay within half a unit of the exact times i / fps, so that a GIF (10 ms
     units) or WebP (1 ms) keeps frame-exact timing over its whole length.
@@ -68,7 +85,7 @@ FRAME_FILES = {".png": "PNG", ".gif": "GIF", ".bmp": "BMP", ".webp": "WEBP", ".t
                ".tiff": "TIFF"}
 
 
-def _path(name, value):
+def _path(name: str, value: PathArgument) -> str:
     """A file or folder argument as a string (refused: NUL bytes, non-paths)."""
     try:
         text = os.fspath(value)
@@ -82,7 +99,8 @@ def _path(name, value):
     return text
 
 
-def check_frames_memory(count, width, height, mode, kind, argument="frames", hint=None):
+def check_frames_memory(count: int, width: int, height: int, mode: str, kind: str,
+                        argument: str = "frames", hint: str | None = None) -> None:
     """Refuse (MemoryBudgetError naming ``argument``) an animation of ``count``
     frames of ``width`` x ``height`` pixels in Pillow ``mode`` that a writer holding
     every frame (``kind``: GIF, APNG, WebP) could not hold: each frame's pixels, the
@@ -97,7 +115,7 @@ def check_frames_memory(count, width, height, mode, kind, argument="frames", hin
                        "(frames=(start, stop))")
 
 
-def check_pattern(pattern):
+def check_pattern(pattern: object) -> str:
     """A frame-file ``pattern`` of :meth:`Animation.write_frames`: one field, the
     frame number (``{}``, ``{:05d}``, ``{0:6}``: digits, optionally zero-padded to a
     width), in a plain file name with an image extension.  Refused: a pattern
@@ -155,13 +173,34 @@ class Animation:
     loop : int
         GIF, APNG and WebP: how many times to play; 0 (default) = forever.
 
+    Raises
+    ------
+    ArgumentTypeError
+        For a ``source`` that is neither a sequence nor a function, or a ``fps``,
+        ``frames`` or ``loop`` that is not a number.
+    ArgumentValueError
+        For an empty ``source``, ``frames`` that disagrees with ``len(source)``, a render
+        function without ``frames`` (and without ``len``), ``fps`` <= 0 or out of
+        range, more than 2**31 - 1 frames, or ``loop`` over 65535.
+
     Examples
     --------
     ``Animation(render, frames=200, fps=25).save("out.gif", jobs=2)``;
-    ``Animation([fb0, fb1, fb2], fps=2).save("out.png")``.
+    ``Animation([fb0, fb1, fb2], fps=2).save("out.png")``.  Two seconds of a render
+    function at 12 frames a second:
+
+    >>> import scanline as sl
+    >>> def render(i):
+    ...     fb = sl.FrameBuffer(8, 8, mode="L")
+    ...     sl.draw.line(fb, 0, 0, 7, i % 8, color=255)
+    ...     return fb
+    >>> anim = sl.animation.Animation(render, frames=24, fps=12)
+    >>> anim
+    Animation(24 frames at 12 fps, 2 s)
     """
 
-    def __init__(self, source, fps=24, frames=None, loop=0):
+    def __init__(self, source: Sequence[Frame] | Callable[[int], Frame], fps: float = 24,
+                 frames: int | None = None, loop: int = 0) -> None:
         from .timing import MAX_FRAMES, _fps
 
         self.fps = _fps(fps)
@@ -174,20 +213,10 @@ class Animation:
             if frames > MAX_FRAMES:
                 raise ArgumentValueError(f"frames={frames:,} is more than the {MAX_FRAMES:,} "
                                          "frames a sequence may have")
-        if callable(source) and not isinstance(source, (list, tuple)):
-            self.render = source
-            if frames is None:
-                try:
-                    frames = v.positive_int("len(source)", len(source))
-                except TypeError:
-                    raise ArgumentValueError(
-                        "a render function needs the number of frames: "
-                        "Animation(render, frames=N, fps=...)") from None
-                if frames > MAX_FRAMES:
-                    raise ArgumentValueError(f"len(source) = {frames:,} is more than the "
-                                             f"{MAX_FRAMES:,} frames a sequence may have")
-            self.count = frames
-        else:
+        self.render: RenderFunction
+        #: The number of frames.
+        self.count: int
+        if isinstance(source, (list, tuple)) or not callable(source):
             if isinstance(source, (str, bytes)) or not hasattr(source, "__len__"):
                 raise ArgumentTypeError(f"source must be a sequence of frames or a render "
                                         f"function, got {v._show(source)}")
@@ -198,23 +227,64 @@ class Animation:
                 raise ArgumentValueError(f"source holds {len(items)} frames but frames={frames}")
             self.render = _Sequence(items)
             self.count = len(items)
+        else:
+            self.render = source
+            if frames is None:
+                if not isinstance(source, Sized):
+                    raise ArgumentValueError(
+                        "a render function needs the number of frames: "
+                        "Animation(render, frames=N, fps=...)")
+                frames = v.positive_int("len(source)", len(source))
+                if frames > MAX_FRAMES:
+                    raise ArgumentValueError(f"len(source) = {frames:,} is more than the "
+                                             f"{MAX_FRAMES:,} frames a sequence may have")
+            self.count = frames
 
-    def __len__(self):
+    def __len__(self) -> int:
         return self.count
 
     @property
-    def duration(self):
+    def duration(self) -> float:
         """Seconds: frames / fps."""
         return self.count / self.fps
 
-    def frame(self, index):
-        """Frame ``index`` as a Pillow image."""
+    def frame(self, index: int) -> Image.Image:
+        """Frame ``index`` as a Pillow image.
+
+        Parameters
+        ----------
+        index : int
+            The frame number, 0 to ``len(self) - 1``.
+
+        Returns
+        -------
+        PIL.Image.Image
+            Of mode "L", "RGB", "RGBA" or "P" (a frame buffer of mode "1" gives "L",
+            0 and 255).
+
+        Raises
+        ------
+        ArgumentTypeError
+            For an ``index`` that is not an integer.
+        ArgumentValueError
+            For an ``index`` out of range, or a frame that is not an image (see
+            :class:`Animation`).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import scanline as sl
+        >>> frames = [np.full((2, 3), 60 * i, np.uint8) for i in range(3)]
+        >>> image = sl.animation.Animation(frames, fps=10).frame(2)
+        >>> image.mode, image.size, image.getpixel((0, 0))
+        ('L', (3, 2), 120)
+        """
         index = v.positive_int("index", index, minimum=0)
         if index >= self.count:
             raise ArgumentValueError(f"index={index}: the animation has {self.count} frames")
         return _render.to_image(self.render(index), index)
 
-    def _range(self, frames):
+    def _range(self, frames: FrameSelection) -> range:
         if frames is None:
             return range(self.count)
         if isinstance(frames, slice):
@@ -239,12 +309,52 @@ class Animation:
                                      f"stop <= {self.count} (the frame count)")
         return range(start, stop)
 
-    def images(self, frames=None, jobs=1, client=None, progress=None):
+    def images(self, frames: FrameSelection = None, jobs: int = 1,
+               client: Client | str | None = None, progress: bool | None = None
+               ) -> Stream[Image.Image]:
         """Yield the frames as Pillow images in order (rendered here, in ``jobs``
-        processes, or on the Dask ``client``)."""
+        processes, or on the Dask ``client``).
+
+        Parameters
+        ----------
+        frames : (start, stop) or slice, optional
+            Only these frames (default all).
+        jobs : int
+            Render in this many processes.
+        client : distributed.Client or str, optional
+            Render on a Dask cluster (a client or a scheduler address).
+        progress : bool, optional
+            Show a progress bar (tqdm) on stderr; default: when stderr is a terminal
+            and the render takes more than a moment.
+
+        Yields
+        ------
+        PIL.Image.Image
+            Each frame, in order.  The stream's ``close()`` stops the workers (also
+            when it is closed before its first frame).
+
+        Raises
+        ------
+        ArgumentTypeError, ArgumentValueError
+            For bad ``frames``, ``jobs``, ``client`` or ``progress``, or a frame that is
+            not an image.
+        SchedulerUnreachable
+            For a scheduler address that does not answer.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import scanline as sl
+        >>> frames = [np.full((2, 3), 60 * i, np.uint8) for i in range(4)]
+        >>> anim = sl.animation.Animation(frames, fps=10)
+        >>> [image.getpixel((0, 0)) for image in anim.images(frames=(1, 3))]
+        [60, 120]
+        """
         return _stream(self.render, self._range(frames), jobs, client, progress)
 
-    def save(self, path, jobs=1, client=None, progress=None, frames=None, quality=None):
+    def save(self, path: PathArgument, jobs: int = 1, client: Client | str | None = None,
+             progress: bool | None = None, frames: FrameSelection = None,
+             quality: int | None = None) -> None:
         """Write the animation to ``path``, the format chosen by the extension.
 
         Parameters
@@ -267,6 +377,21 @@ class Animation:
             WebP: 0-100 lossy quality (default lossless).  MP4: the x264 CRF, 0-51
             (default 18, visually lossless; 0 is lossless).
 
+        Raises
+        ------
+        ArgumentTypeError, ArgumentValueError
+            For a path without a known extension, an ``fps`` the format cannot play
+            (GIF: 1/600 to 50), a ``quality`` out of range, bad ``frames``, ``jobs`` or
+            ``client``, frames of different sizes, a frame that is not an image, or
+            MP4 without PyAV.
+        MemoryBudgetError
+            For a GIF, APNG or WebP whose frames would not fit in memory (the writers
+            hold every frame).
+        OutputError
+            When the file cannot be written.
+        SchedulerUnreachable, WorkerLost
+            For a Dask scheduler that does not answer, or frames whose workers died.
+
         Notes
         -----
         The write is atomic: an error or an interruption (Ctrl-C) leaves no file at
@@ -275,6 +400,23 @@ class Animation:
         (1 ms) durations are chosen so that frame i starts within half a unit of
         i / fps; APNG stores each delay as the exact fraction 1 / fps.  GIF, APNG and
         WebP store identical consecutive frames once, with their durations added.
+
+        Examples
+        --------
+        Three frames at 10 fps: a GIF of three frames of 100 ms (ten hundredths) each.
+
+        >>> import os, tempfile
+        >>> import numpy as np
+        >>> from PIL import Image
+        >>> import scanline as sl
+        >>> frames = [np.full((2, 3), 60 * i, np.uint8) for i in range(3)]
+        >>> anim = sl.animation.Animation(frames, fps=10)
+        >>> with tempfile.TemporaryDirectory() as folder:
+        ...     path = os.path.join(folder, "fade.gif")
+        ...     anim.save(path)
+        ...     with Image.open(path) as gif:
+        ...         print(gif.n_frames, gif.info["duration"])
+        3 100
         """
         name = _path("path", path)
         ext = os.path.splitext(name)[1].lower()
@@ -311,7 +453,8 @@ class Animation:
         finally:
             images.close()
 
-    def _pillow(self, f, images, count, kind, quality):
+    def _pillow(self, f: IO[bytes], images: Iterator[Image.Image], count: int, kind: Kind,
+                quality: int | None) -> None:
         first = next(images)
         # Pillow's GIF, APNG and WebP writers hold every frame (GIF and APNG compare
         # each with the one before, WebP's encoder keeps them), and read them twice
@@ -319,7 +462,7 @@ class Animation:
         # pass the memory budget (MP4 and numbered files stream any length)
         check_frames_memory(count, first.width, first.height, first.mode, kind)
         rest = list(_Checked(images, first.size))
-        options = {"save_all": True, "append_images": rest, "loop": self.loop}
+        options: dict[str, Any] = {"save_all": True, "append_images": rest, "loop": self.loop}
         if kind == "GIF":
             options["duration"] = frame_durations(count, self.fps, 10)
             options["disposal"] = 1
@@ -337,7 +480,8 @@ class Animation:
                                   else "RGB")
         first.save(f, format=fmt, **options)
 
-    def _mp4(self, f, images, count, kind, quality):
+    def _mp4(self, f: IO[bytes], images: Iterator[Image.Image], count: int, kind: Kind,
+             quality: int | None) -> None:
         import av
 
         rate = Fraction(self.fps).limit_denominator(1_000_000)
@@ -369,8 +513,9 @@ class Animation:
             for packet in stream.encode():
                 container.mux(packet)
 
-    def write_frames(self, folder, pattern="frame-{:05d}.png", jobs=1, client=None,
-                     progress=None, frames=None):
+    def write_frames(self, folder: PathArgument, pattern: str = "frame-{:05d}.png",
+                     jobs: int = 1, client: Client | str | None = None,
+                     progress: bool | None = None, frames: FrameSelection = None) -> list[str]:
         """Write each frame to its own image file in ``folder`` (created if needed),
         rendered and encoded by the workers themselves.
 
@@ -379,7 +524,53 @@ class Animation:
         (atomically) and sends back only the file's name and checksum; then
         ``Animation(sorted(paths), fps=...).save("film.mp4")`` encodes them.
 
-        Returns the list of paths written, in frame order.
+        Parameters
+        ----------
+        folder : str or os.PathLike
+            Where the files go (made if it does not exist).
+        pattern : str
+            The file name of frame i, ``pattern.format(i)``: one field, the frame
+            number (``{}``, ``{:05d}``), and an image extension (.png, .gif, .bmp,
+            .webp (lossless), .tif); no folder part.
+        jobs : int
+            Render and write in this many processes.
+        client : distributed.Client or str, optional
+            Render and write on a Dask cluster whose workers see ``folder``.
+        progress : bool, optional
+            Show a progress bar (tqdm) on stderr; default: when stderr is a terminal
+            and the render takes more than a moment.
+        frames : (start, stop) or slice, optional
+            Write only these frames.
+
+        Returns
+        -------
+        list of str
+            The paths written, in frame order.
+
+        Raises
+        ------
+        ArgumentTypeError, ArgumentValueError
+            For a ``pattern`` without exactly one frame-number field, with a folder part
+            or without an image extension, bad ``frames``, ``jobs`` or ``client``, or a
+            frame that is not an image.
+        MemoryBudgetError
+            When the list of names alone would pass the memory budget.
+        OutputError
+            When the folder or a file cannot be written.
+        SchedulerUnreachable, WorkerLost
+            For a Dask scheduler that does not answer, or frames whose workers died.
+
+        Examples
+        --------
+        >>> import os, tempfile
+        >>> import numpy as np
+        >>> import scanline as sl
+        >>> frames = [np.full((2, 3), 60 * i, np.uint8) for i in range(3)]
+        >>> anim = sl.animation.Animation(frames, fps=10)
+        >>> with tempfile.TemporaryDirectory() as folder:
+        ...     paths = anim.write_frames(folder, pattern="f{:02d}.png")
+        ...     [os.path.basename(path) for path in paths]
+        ['f00.png', 'f01.png', 'f02.png']
         """
         folder = _path("folder", folder)
         check_pattern(pattern)
@@ -400,7 +591,7 @@ class Animation:
         finally:
             receipts.close()
 
-    def _repr_html_(self):
+    def _repr_html_(self) -> str:
         """Jupyter: the animation as an animated PNG in an <img> tag (the first 250
         frames when longer)."""
         buffer = io.BytesIO()
@@ -414,20 +605,20 @@ class Animation:
         note = "" if count == self.count else f"<br><small>first {count} of {self.count} frames</small>"
         return f'<img src="data:image/png;base64,{data}" alt="animation">{note}'
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"Animation({self.count} frames at {self.fps:g} fps, {self.duration:g} s)"
 
 
 class _Sequence:
     """A list of frames as a render function (picklable for workers)."""
 
-    def __init__(self, items):
+    def __init__(self, items: list[Frame]) -> None:
         self.items = items
 
-    def __call__(self, index):
+    def __call__(self, index: int) -> Frame:
         return self.items[index]
 
-    def __len__(self):
+    def __len__(self) -> int:
         return len(self.items)
 
 
@@ -435,12 +626,10 @@ class _FrameWriter:
     """Render a frame, write it to ``folder`` atomically, return a 1x1 receipt image
     carrying the file name (so the worker sends back a few bytes, not the frame)."""
 
-    def __init__(self, render, folder, pattern):
+    def __init__(self, render: RenderFunction, folder: str, pattern: str) -> None:
         self.render, self.folder, self.pattern = render, folder, pattern
 
-    def __call__(self, index):
-        from PIL import Image
-
+    def __call__(self, index: int) -> Image.Image:
         image = _render.to_image(self.render(index), index)
         name = self.pattern.format(index)
         if os.path.basename(name) != name or name in (".", ".."):    # (check_pattern)
@@ -460,10 +649,10 @@ class _FrameWriter:
 class _Checked:
     """Iterate images, checking that each has the first frame's size."""
 
-    def __init__(self, images, size):
+    def __init__(self, images: Iterable[Image.Image], size: tuple[int, int]) -> None:
         self.images, self.size, self.index = images, size, 0
 
-    def __iter__(self):
+    def __iter__(self) -> Iterator[Image.Image]:
         for image in self.images:
             self.index += 1
             if image.size != self.size:
@@ -473,7 +662,8 @@ class _Checked:
             yield image
 
 
-def _stream(render, indices, jobs, client, progress):
+def _stream(render: RenderFunction, indices: range, jobs: int, client: Client | str | None,
+            progress: bool | None) -> Stream[Image.Image]:
     """The rendered frames ``indices`` in order, with a progress bar; closing the
     stream (started or not), or an error, stops the workers."""
     if not indices:
@@ -485,7 +675,7 @@ def _stream(render, indices, jobs, client, progress):
         stream.close()
         raise
 
-    def run():
+    def run() -> Iterator[Image.Image]:
         try:
             for image in stream:
                 yield image
@@ -494,21 +684,21 @@ def _stream(render, indices, jobs, client, progress):
         finally:
             release()
 
-    def release():
+    def release() -> None:
         close = getattr(stream, "close", None)
         if close is not None:
             close()
         if bar is not None:
             bar.close()
-    return _render.Stream(run(), release)
+    return Stream(run(), release)
 
 
-def _prepend(first, rest):
+def _prepend(first: Image.Image, rest: Iterable[Image.Image]) -> Iterator[Image.Image]:
     yield first
     yield from rest
 
 
-def _mp4_available():
+def _mp4_available() -> None:
     try:
         import av  # noqa: F401
     except ImportError:
@@ -516,7 +706,7 @@ def _mp4_available():
                                  "'scanline-graphics[video]', or save as .gif, .png or .webp") from None
 
 
-def _progress(progress, total):
+def _progress(progress: object, total: int) -> tqdm[Any] | None:
     """A tqdm bar (shown after half a second, on a terminal unless forced), or None."""
     progress = progress_flag(progress)
     if progress is False:
@@ -528,7 +718,8 @@ def _progress(progress, total):
             raise ArgumentValueError("progress=True needs tqdm: pip install tqdm") from None
         return None
 
-    class Bar(tqdm):
+    # tqdm ships no type information (and no stubs are installed): its class is Any here
+    class Bar(tqdm):  # type: ignore[misc]
         monitor_interval = 0       # no monitor thread: worker processes can still fork
 
     return Bar(total=total, unit="frame", desc="scanline", delay=0.5 if progress is None else 0,

@@ -14,7 +14,12 @@ Interrupting (Ctrl-C) or any error stops the workers: the process pool is
 terminated, the cluster's pending tasks are cancelled.
 """
 
+from __future__ import annotations
+
 import collections
+import mmap
+import multiprocessing.context
+import multiprocessing.pool
 import os
 import pickle
 import re
@@ -22,13 +27,28 @@ import signal
 import threading
 import time
 import typing
+from types import ModuleType
+from typing import Any, Callable, Generator, Generic, Iterable, Iterator, NoReturn, Sequence, TypeVar
 
 import numpy as np
+from numpy.typing import NDArray
 from PIL import Image
 
 from .. import _validate as v
 from .._kernels._threads import one_thread
 from ..errors import ArgumentTypeError, ArgumentValueError, ScanlineError
+
+if typing.TYPE_CHECKING:
+    from distributed import Client, Future
+
+    from ..framebuffer import FrameBuffer
+
+#: A frame: a frame buffer, a Pillow image, a uint8 (h, w), (h, w, 3) or (h, w, 4) or a
+#: bool (h, w) array in image order, or the path of an image file.
+Frame = typing.Union["FrameBuffer", Image.Image, NDArray[np.uint8], NDArray[np.bool_], str,
+                     "os.PathLike[str]"]
+#: A render function: frame index -> frame (anything :func:`to_image` takes).
+RenderFunction = Callable[[int], object]
 
 #: Seconds to wait for a Dask scheduler given by address.
 CONNECT_TIMEOUT = 10.0
@@ -83,7 +103,8 @@ def to_image(frame: object, index: int | None = None) -> Image.Image:
     return image
 
 
-def render_chunk(render, indices, compress=False, slots=None, slot=None):
+def render_chunk(render: RenderFunction, indices: Iterable[int], compress: bool = False,
+                 slots: _Slots | str | None = None, slot: int | None = None) -> list[Packed]:
     """Render the frames ``indices`` with ``render`` (what one worker does with one
     chunk): a list of packed frames, see :func:`pack`.  Each frame's pixels are taken
     away before the next frame is rendered (a render function may draw every frame
@@ -99,41 +120,46 @@ def render_chunk(render, indices, compress=False, slots=None, slot=None):
     opened = None
     if isinstance(slots, str):
         opened = slots = _Slots.attach(slots)
-    out, offset = [], None if slots is None else slot * SLOT_BYTES
+    out: list[Packed] = []
+    # (a slot comes with slots)
+    offset = None if slots is None or slot is None else slot * SLOT_BYTES
     try:
         with one_thread():
             for i in indices:
-                pixels, *rest = pack(render(int(i)), int(i))
+                array, mode, palette, info = pack(render(int(i)), int(i))
                 placed = None
-                if slots is not None and slots.fits(pixels, offset, slot):
-                    placed = slots.put(pixels, offset)
-                if placed is not None:
-                    pixels, offset = placed, offset + pixels.nbytes
+                if slots is not None and offset is not None and slot is not None \
+                        and slots.fits(array, offset, slot):
+                    placed = slots.put(array, offset)
+                pixels: FramePixels
+                if placed is not None and offset is not None:
+                    pixels, offset = placed, offset + array.nbytes
                 elif lz4 is not None:
-                    pixels = Compressed.of(lz4, pixels)
+                    pixels = Compressed.of(lz4, array)
                 else:
-                    pixels = np.array(pixels)
-                out.append((pixels, *rest))
+                    pixels = np.array(array)
+                out.append((pixels, mode, palette, info))
     finally:
         if opened is not None:
             opened.close()
     return out
 
 
-def _lz4():
+def _lz4() -> ModuleType | None:
     """The ``lz4.block`` module, or None when lz4 is not installed (it comes with
     ``scanline-graphics[dask]``)."""
     try:
         import lz4.block
     except ImportError:
         return None
-    return lz4.block
+    module: ModuleType = lz4.block
+    return module
 
 
 class InMemory(typing.NamedTuple):
     """Where a worker put a frame's pixels in the shared memory of :class:`_Slots`."""
     offset: int
-    shape: tuple
+    shape: tuple[int, ...]
     dtype: str
 
 
@@ -146,12 +172,12 @@ class Compressed(typing.NamedTuple):
     them (compressed from its storage without a copy; Pillow's raw decoder turns
     them over as it reads them)."""
     data: bytes
-    shape: tuple
+    shape: tuple[int, ...]
     dtype: str
     bottom_up: bool = False
 
     @classmethod
-    def of(cls, lz4, pixels):
+    def of(cls, lz4: ModuleType, pixels: NDArray[np.uint8]) -> Compressed:
         """``pixels`` (an image-order array) compressed with the ``lz4.block``
         module, from the bottom-up storage they view where they are one."""
         flipped = pixels[::-1]
@@ -164,8 +190,17 @@ class Compressed(typing.NamedTuple):
 #: Frame buffer modes whose pixels (``FrameBuffer.to_array``) are their Pillow image's.
 _DIRECT = ("L", "RGB", "RGBA")
 
+#: A frame's pixels on their way from a worker: an array, where they are in shared
+#: memory, or compressed.
+FramePixels = typing.Union[NDArray[np.uint8], InMemory, Compressed]
+#: Pillow's ``Image.info``.
+ImageInfo = dict[typing.Union[str, tuple[int, int]], Any]
+#: A packed frame: (pixels, mode, palette, info), see :func:`pack`.
+Packed = tuple[FramePixels, str, typing.Optional[list[int]], ImageInfo]
 
-def pack(frame, index=None):
+
+def pack(frame: object, index: int | None = None
+         ) -> tuple[NDArray[np.uint8], str, list[int] | None, ImageInfo]:
     """A frame (anything :func:`to_image` takes) as (pixels, mode, palette, info): a
     numpy array travels between processes without the copies a pickled image takes
     (and Dask sends it as one buffer).  A frame buffer of mode "L", "RGB" or "RGBA"
@@ -181,13 +216,16 @@ def pack(frame, index=None):
     return np.asarray(image), image.mode, palette, dict(image.info)
 
 
-def unpack(packed, memory=None):
+def unpack(packed: Packed, memory: mmap.mmap | None = None) -> Image.Image:
     """The Pillow image of a :func:`pack` (whose pixels may have been put in the
     shared ``memory`` of :class:`_Slots`: they are copied out)."""
     pixels, mode, palette, info = packed
     h, w = pixels.shape[:2]
+    data: bytes | memoryview
     if isinstance(pixels, Compressed):
-        data, orientation = _lz4().decompress(pixels.data), -1 if pixels.bottom_up else 1
+        lz4 = _lz4()
+        assert lz4 is not None      # (frames are compressed for a client that has lz4)
+        data, orientation = lz4.decompress(pixels.data), -1 if pixels.bottom_up else 1
     else:
         if isinstance(pixels, InMemory):
             pixels = np.ndarray(pixels.shape, pixels.dtype, buffer=memory, offset=pixels.offset)
@@ -199,7 +237,7 @@ def unpack(packed, memory=None):
     return image
 
 
-def chunks(indices, parts):
+def chunks(indices: Iterable[int], parts: int) -> list[Sequence[int]]:
     """``indices`` cut into consecutive chunks for ``parts`` workers, largest first
     (guided self-scheduling, Polychronopoulos & Kuck 1987): each chunk takes about a
     quarter of the frames left per worker, at most 16, so that the overhead per task stays small while most frames
@@ -209,35 +247,37 @@ def chunks(indices, parts):
     return list(iter_chunks(indices, parts))
 
 
-def iter_chunks(indices, parts):
+def iter_chunks(indices: Iterable[int], parts: int) -> Iterator[Sequence[int]]:
     """The chunks of :func:`chunks`, made as they are asked for: a film of 10**9
     frames is a ``range`` and its chunks are ranges, so no list of frames or chunks
     is ever made."""
-    if not isinstance(indices, range):
-        indices = list(indices)
-    start, total = 0, len(indices)
+    frames = indices if isinstance(indices, range) else list(indices)
+    start, total = 0, len(frames)
     while start < total:
         size = max(1, min(16, (total - start) // (4 * parts)))
-        yield indices[start:start + size]
+        yield frames[start:start + size]
         start += size
 
 
-class Stream:
+_T = TypeVar("_T")
+
+
+class Stream(Generic[_T]):
     """The frames of a render, one by one, with a ``close()`` that releases what the
     render holds (worker processes, shared memory, a cluster connection) whether or
     not the frames have started coming (closing a generator that never started runs
     none of its ``finally`` clauses)."""
 
-    def __init__(self, frames, release=None):
+    def __init__(self, frames: Iterator[_T], release: Callable[[], None] | None = None) -> None:
         self._frames, self._release = frames, release
 
-    def __iter__(self):
+    def __iter__(self) -> Stream[_T]:
         return self
 
-    def __next__(self):
+    def __next__(self) -> _T:
         return next(self._frames)
 
-    def close(self):
+    def close(self) -> None:
         try:
             close = getattr(self._frames, "close", None)
             if close is not None:
@@ -249,15 +289,16 @@ class Stream:
 
 
 # -- worker processes --------------------------------------------------------------------------
-_WORKER_RENDER = None
+_WORKER_RENDER: RenderFunction | None = None
 
 
-def _dumps(render):
+def _dumps(render: RenderFunction) -> bytes:
     """``render`` serialized for worker processes: cloudpickle when it is installed
     (it ships with Dask; lambdas and closures then work), else pickle."""
     try:
         import cloudpickle
-        return cloudpickle.dumps(render)
+        data: bytes = cloudpickle.dumps(render)
+        return data
     except ImportError:
         pass
     try:
@@ -269,7 +310,7 @@ def _dumps(render):
             "cloudpickle") from None
 
 
-_WORKER_ERROR = None
+_WORKER_ERROR: str | None = None
 
 
 class _Slots:
@@ -288,19 +329,17 @@ class _Slots:
     worker sees (the frame then goes another way), not a crash on the write.  Pixels
     that do not fit in the slot go another way too."""
 
-    def __init__(self, count, memory=None, fd=None, path=None):
-        import mmap
-
+    def __init__(self, count: int, memory: mmap.mmap | None = None, fd: int | None = None,
+                 path: str | None = None) -> None:
         self.count = count
         self.memory = mmap.mmap(-1, count * SLOT_BYTES) if memory is None else memory
         self.fd = fd
         self.path = path
 
     @classmethod
-    def in_shared_file(cls, count):
+    def in_shared_file(cls, count: int) -> _Slots | None:
         """Slots in a new file of /dev/shm (readable by this user only), or None where
         there is none (not Linux) or it cannot be made."""
-        import mmap
         import secrets
 
         folder = "/dev/shm"
@@ -320,12 +359,10 @@ class _Slots:
             return None
 
     @classmethod
-    def attach(cls, path):
+    def attach(cls, path: str) -> _Slots | None:
         """The slots of the file ``path`` that :meth:`in_shared_file` made (worker
         side), or None when this process cannot open it (another machine, or another
         /dev/shm)."""
-        import mmap
-
         try:
             fd = os.open(path, os.O_RDWR)
         except OSError:
@@ -337,11 +374,11 @@ class _Slots:
             os.close(fd)
             return None
 
-    def fits(self, pixels, offset, slot):
+    def fits(self, pixels: NDArray[np.uint8], offset: int, slot: int) -> bool:
         """Whether ``pixels`` fit in ``slot`` from ``offset`` on."""
         return slot < self.count and offset + pixels.nbytes <= (slot + 1) * SLOT_BYTES
 
-    def put(self, pixels, offset):
+    def put(self, pixels: NDArray[np.uint8], offset: int) -> InMemory | None:
         """``pixels`` copied to ``offset`` (worker side): where they are now, or None
         when a file's pages cannot be reserved (/dev/shm full)."""
         if self.fd is not None:
@@ -352,7 +389,7 @@ class _Slots:
         np.ndarray(pixels.shape, pixels.dtype, buffer=self.memory, offset=offset)[...] = pixels
         return InMemory(offset, pixels.shape, pixels.dtype.str)
 
-    def close(self):
+    def close(self) -> None:
         """Unmap (and close a file; the one that made it removes it).  A view still
         held (by a traceback) keeps the mapping, which goes with it."""
         try:
@@ -374,10 +411,11 @@ class _Slots:
 #: frames of 1280 x 720 RGBA; the pages are only made when written).
 SLOT_BYTES = 1 << 26
 
-_WORKER_SLOTS = None
+_WORKER_SLOTS: _Slots | None = None
 
 
-def _worker_start(render, payload, slots=None):
+def _worker_start(render: RenderFunction | None, payload: bytes | None,
+                  slots: _Slots | None = None) -> None:
     """Each worker: ignore Ctrl-C (the parent stops the pool) and take the render
     function: ``render`` itself in a forked worker (it has a copy of the parent's
     memory, with what the render function has made ready, such as a scene's frame
@@ -393,14 +431,15 @@ def _worker_start(render, payload, slots=None):
         _WORKER_ERROR = f"{type(error).__name__}: {error}"
 
 
-def _worker_chunk(indices, slot=None):
+def _worker_chunk(indices: Sequence[int], slot: int | None = None) -> list[Packed]:
     if _WORKER_ERROR is not None:
         raise ArgumentValueError(f"the render function could not be loaded in a worker "
                                  f"process ({_WORKER_ERROR}); render with jobs=1")
+    assert _WORKER_RENDER is not None           # (set by _worker_start, or an error)
     return render_chunk(_WORKER_RENDER, indices, slots=_WORKER_SLOTS, slot=slot)
 
 
-def _context():
+def _context() -> multiprocessing.context.BaseContext:
     """fork where it is safe (a POSIX process with one thread: the workers start at
     once and inherit the compiled kernels); forkserver or spawn elsewhere."""
     import multiprocessing as mp
@@ -411,26 +450,30 @@ def _context():
     return mp.get_context("forkserver" if "forkserver" in methods else "spawn")
 
 
-def _processes(render, parts, jobs):
+def _processes(render: RenderFunction, parts: Iterator[Sequence[int]],
+               jobs: int) -> Stream[Image.Image]:
     """Start ``jobs`` worker processes now (before any progress bar or other thread
     exists, so that fork can be used) and return the generator of their frames."""
     context = _context()
     window = 2 * jobs                      # chunks in flight
+    slots: _Slots | None
+    args: tuple[RenderFunction | None, bytes | None, _Slots | None]
     if context.get_start_method() == "fork":
         # a forked worker inherits its arguments: the render function is not
         # pickled, and the frames come back through shared memory
         slots = _Slots(window)
         args = (render, None, slots)
     else:
-        slots, args = None, (None, _dumps(render))
+        slots, args = None, (None, _dumps(render), None)
     pool = context.Pool(jobs, initializer=_worker_start, initargs=args)
 
-    def gather():
-        pending = collections.deque()
+    def gather() -> Iterator[Image.Image]:
+        pending: collections.deque[
+            tuple[multiprocessing.pool.AsyncResult[list[Packed]], int | None]] = collections.deque()
         free = list(range(window))
         queue = iter(parts)
 
-        def submit():
+        def submit() -> None:
             for part in queue:
                 slot = free.pop() if slots is not None else None
                 pending.append((pool.apply_async(_worker_chunk, (part, slot)), slot))
@@ -441,7 +484,7 @@ def _processes(render, parts, jobs):
                 submit()
             while pending:
                 result, slot = pending.popleft()
-                images = [unpack(p, slots and slots.memory) for p in result.get()]
+                images = [unpack(p, None if slots is None else slots.memory) for p in result.get()]
                 if slot is not None:
                     free.append(slot)               # the pixels are copied out
                 submit()
@@ -451,7 +494,7 @@ def _processes(render, parts, jobs):
         finally:
             stop()
 
-    def stop():
+    def stop() -> None:
         pool.terminate()
         pool.join()
         if slots is not None:
@@ -460,7 +503,7 @@ def _processes(render, parts, jobs):
 
 
 # -- Dask ----------------------------------------------------------------------------------------
-def connect(client):
+def connect(client: Client | str) -> tuple[Client, bool]:
     """``(client, owned)``: a ``distributed.Client`` as given, or one connected to the
     scheduler address ``client`` (then ``owned``: the caller closes it).
 
@@ -482,9 +525,10 @@ def connect(client):
                                  "install 'scanline-graphics[dask]'") from None
     deadline = time.monotonic() + CONNECT_TIMEOUT
     _probe(address, CONNECT_TIMEOUT)
-    made, gave_up = [], threading.Event()
+    made: list[Client | BaseException] = []
+    gave_up = threading.Event()
 
-    def start():
+    def start() -> None:
         try:
             new = Client(address, timeout=max(0.1, deadline - time.monotonic()),
                          set_as_default=False)
@@ -505,22 +549,22 @@ def connect(client):
         raise SchedulerUnreachable(
             f"scheduler={client!r} answered once, then did not complete the connection "
             f"within {CONNECT_TIMEOUT:g} s; check that it is a running Dask scheduler")
-    if isinstance(made[0], BaseException):
-        error = made[0]
-        if not isinstance(error, Exception):
-            raise error
+    connected = made[0]
+    if isinstance(connected, BaseException):
+        if not isinstance(connected, Exception):
+            raise connected
         raise SchedulerUnreachable(
             f"scheduler={client!r} cannot be reached within {CONNECT_TIMEOUT:g} s "
-            f"({type(error).__name__}: {error}); check the address (tcp://HOST:PORT) and "
-            "that the scheduler is running") from None
-    return made[0], True
+            f"({type(connected).__name__}: {connected}); check the address (tcp://HOST:PORT) "
+            "and that the scheduler is running") from None
+    return connected, True
 
 
 _HOST = re.compile(r"[A-Za-z0-9](?:[A-Za-z0-9._-]{0,252})")
 _IPV6 = re.compile(r"\[[0-9A-Fa-f:.]{2,45}\]")
 
 
-def scheduler_address(text, name="scheduler"):
+def scheduler_address(text: object, name: str = "scheduler") -> str:
     """The Dask scheduler address ``text`` checked and written out in full:
     ``tcp://HOST:PORT`` (``HOST:PORT`` means tcp), HOST a name, an IPv4 address or
     an IPv6 address in brackets, PORT 1 to 65535.  Other schemes (tls, ws, ucx ...)
@@ -548,29 +592,29 @@ def scheduler_address(text, name="scheduler"):
     return f"tcp://{host}:{int(port)}"
 
 
-def _probe(address, timeout):
+def _probe(address: str, timeout: float) -> dict[str, Any]:
     """Connect to ``address`` and ask the scheduler's identity, all within ``timeout``
     seconds (in a thread of its own with its own event loop, so that it works where
     an event loop is already running, as in Jupyter); raise SchedulerUnreachable
     otherwise."""
     import asyncio
 
-    from distributed.comm import connect as comm_connect
+    from distributed.comm.core import connect as comm_connect
     from distributed.core import send_recv
 
-    async def ask():
+    async def ask() -> object:
         comm = await comm_connect(address, timeout=timeout)
         try:
             return await send_recv(comm, op="identity")
         finally:
             comm.abort()
 
-    async def bounded():
+    async def bounded() -> object:
         return await asyncio.wait_for(ask(), timeout)
 
-    outcome = []
+    outcome: list[object] = []
 
-    def run():
+    def run() -> None:
         try:
             outcome.append(asyncio.run(bounded()))
         except BaseException as error:  # noqa: BLE001 - handed to the waiting thread
@@ -599,12 +643,13 @@ class WorkerLost(ScanlineError):
     tasks were cancelled because every worker holding the render function left."""
 
 
-def _span(part):
+def _span(part: Sequence[int]) -> str:
     """Frames ``part`` written out for a message: ``7`` or ``8-15``."""
     return f"{part[0]}" if len(part) == 1 else f"{part[0]}-{part[-1]}"
 
 
-def _dask(render, indices, client, owned):
+def _dask(render: RenderFunction, indices: Sequence[int], client: Client,
+          owned: bool) -> Iterator[Image.Image]:
     """The frames ``indices`` rendered on the Dask ``client``'s workers, in order.
 
     Chunks are sized to the workers' threads (:func:`iter_chunks`) and a new one is
@@ -636,14 +681,15 @@ def _dask(render, indices, client, owned):
         slots = _Slots.in_shared_file(window)
         path = None if slots is None else slots.path
         memory = None if slots is None else slots.memory
-        pending = {}                 # future -> (chunk number, slot, frames)
-        done = {}                    # chunk number -> its images, waiting for their turn
+        # future -> (chunk number, slot, frames)
+        pending: dict[Future[list[Packed]], tuple[int, int, Sequence[int]]] = {}
+        done: dict[int, list[Image.Image]] = {}   # chunk number -> its images, waiting for their turn
         free = list(range(window))
         queue = iter(parts)
         arrived = as_completed(loop=client.loop, raise_errors=False)
         sent, turn = 0, 0
 
-        def refill():
+        def refill() -> None:
             nonlocal sent
             while len(pending) < window and len(pending) + len(done) < 2 * window:
                 part = next(queue, None)
@@ -685,7 +731,7 @@ def _dask(render, indices, client, owned):
             client.close()
 
 
-def _spans(frames):
+def _spans(frames: Sequence[int]) -> str:
     """Sorted frame numbers as runs: ``3-7, 12, 20-23``."""
     runs, start = [], 0
     for k in range(1, len(frames) + 1):
@@ -695,7 +741,8 @@ def _spans(frames):
     return ", ".join(runs)
 
 
-def _lost(future, part, pending):
+def _lost(future: Future[list[Packed]], part: Sequence[int],
+          pending: dict[Future[list[Packed]], tuple[int, int, Sequence[int]]]) -> NoReturn:
     """Raise the error of the chunk ``part`` (its ``future`` failed): the render
     function's own error, or :class:`WorkerLost` naming the frames lost (those of this
     chunk and of every ``pending`` chunk that failed too) when the worker rendering
@@ -724,7 +771,7 @@ def _lost(future, part, pending):
 JOBS_PER_CORE = 4
 
 
-def cores():
+def cores() -> int:
     """The cores this process may run on."""
     try:
         return max(1, len(os.sched_getaffinity(0)))
@@ -732,12 +779,12 @@ def cores():
         return max(1, os.cpu_count() or 1)
 
 
-def max_jobs():
+def max_jobs() -> int:
     """The most worker processes ``jobs`` may ask for: :data:`JOBS_PER_CORE` per core."""
     return JOBS_PER_CORE * cores()
 
 
-def check_jobs(jobs, name="jobs"):
+def check_jobs(jobs: object, name: str = "jobs") -> int:
     """``jobs`` checked: an integer from 1 to :func:`max_jobs`."""
     jobs = v.positive_int(name, jobs)
     most = max_jobs()
@@ -749,7 +796,9 @@ def check_jobs(jobs, name="jobs"):
     return jobs
 
 
-def frames(render, indices, jobs=1, client=None):
+def frames(render: RenderFunction, indices: Iterable[int], jobs: int = 1,
+           client: Client | str | None = None
+           ) -> Generator[Image.Image, None, None] | Stream[Image.Image]:
     """Yield the rendered frames ``indices`` as Pillow images, in order.
 
     Parameters
@@ -770,12 +819,12 @@ def frames(render, indices, jobs=1, client=None):
     if client is not None and jobs != 1:
         raise ArgumentValueError(f"give jobs (processes here) or client (a Dask cluster), not "
                                  f"both; got jobs={jobs} and client={v._show(client)}")
-    if not isinstance(indices, range):       # a range stays one: a film of 10**9 frames
-        indices = list(indices)
+    # a range stays one: a film of 10**9 frames
+    selected = indices if isinstance(indices, range) else list(indices)
     if client is not None:
-        client, owned = connect(client)
-        return Stream(_dask(render, indices, client, owned),
-                      client.close if owned else None)
-    if jobs == 1 or len(indices) <= 1:
-        return (to_image(render(i), i) for i in indices)
-    return _processes(render, iter_chunks(indices, jobs), min(jobs, len(indices)))
+        connected, owned = connect(client)
+        return Stream(_dask(render, selected, connected, owned),
+                      connected.close if owned else None)
+    if jobs == 1 or len(selected) <= 1:
+        return (to_image(render(i), i) for i in selected)
+    return _processes(render, iter_chunks(selected, jobs), min(jobs, len(selected)))

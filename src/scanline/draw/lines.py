@@ -1,6 +1,6 @@
 """Straight lines: ``line`` and ``lines`` (notes, chapter 2, Q.1-Q.3, Q.7)."""
 
-from typing import TYPE_CHECKING, Any, Optional
+from typing import TYPE_CHECKING, Any, Dict, Optional, Tuple
 
 import numpy as np
 
@@ -12,20 +12,20 @@ from .._kernels.variants import layout, token
 from ..errors import ArgumentValueError
 from . import strokes
 from ._common import band_order, colors, target
-from .._typing import ArrayLike, Cap, Color, Join, LineMethod
+from .._typing import ArrayLike, Cap, Color, Colors, Dash, Join, LineMethod, NDArray, PenLike
 
 if TYPE_CHECKING:
     from ..framebuffer import FrameBuffer
     from ..linestyle import LineStyle
 
-METHODS = {"bresenham": token(k.BRESENHAM), "dda": token(k.DDA)}
+METHODS: Dict[str, Tuple[int, ...]] = {"bresenham": token(k.BRESENHAM), "dda": token(k.DDA)}
 
 
 #: Segments from which :func:`line_work` estimates from an evenly spaced sample.
 WORK_SAMPLE = 1 << 12
 
 
-def line_work(segments, width, height):
+def line_work(segments: NDArray[np.number[Any]], width: int, height: int) -> float:
     """Work units of drawing the (N, 4) ``segments``: their steps, each at most the
     raster's width + height once clipped (:func:`scanline._kernels._jit.call`) -- over
     every segment up to 2 * WORK_SAMPLE of them, else estimated from WORK_SAMPLE
@@ -38,14 +38,12 @@ def line_work(segments, width, height):
     return float(np.minimum(d, width + height).sum()) * n / max(len(rows), 1) + n
 
 
-def _method(method):
+def _method(method: LineMethod) -> Tuple[int, ...]:
     code = METHODS.get(method) if isinstance(method, str) else None
-    if code is None:
-        v.choice("method", method, tuple(METHODS))
-    return code
+    return code if code is not None else METHODS[v.choice("method", method, tuple(METHODS))]
 
 
-def _attributes_need_bresenham(code):
+def _attributes_need_bresenham(code: Tuple[int, ...]) -> None:
     if len(code) != k.BRESENHAM:
         raise ArgumentValueError(
             "method='dda' draws plain width-1 solid lines; lines with attributes (width, "
@@ -57,7 +55,8 @@ def line(fb: "FrameBuffer", x0: float, y0: float, x1: float, y1: float,
          color: Optional[Color] = None, method: LineMethod = "bresenham",
          *, style: Optional["LineStyle"] = None, antialias: bool = False, width: Optional[float] = None,
          cap: Optional[Cap] = None, join: Optional[Join] = None, miter_limit: Optional[float] = None,
-         dash: Any = None, dash_phase: Optional[float] = None, pen: Any = None) -> None:
+         dash: Optional[Dash] = None, dash_phase: Optional[float] = None,
+         pen: Optional[PenLike] = None) -> None:
     """Draw the line segment from (x0, y0) to (x1, y1), both endpoints included.
 
     Parameters
@@ -128,16 +127,19 @@ def line(fb: "FrameBuffer", x0: float, y0: float, x1: float, y1: float,
                buf, layout(packed), width, height, x0, y0, x1, y1, fb.pixel(color), code)
 
 
-def _line_work(buf, layout, width, height, x0, y0, x1, y1, color, code):
+def _line_work(buf: NDArray[np.uint8], layout: Tuple[int, ...], width: int, height: int,
+               x0: int, y0: int, x1: int, y1: int, color: NDArray[np.uint8],
+               code: Tuple[int, ...]) -> int:
     """Work units of one line (its pixels, at most the frame buffer's perimeter)."""
     return 2 * min(max(abs(x1 - x0), abs(y1 - y0)), width + height)
 
 
-def lines(fb: "FrameBuffer", segments: ArrayLike, color: Any = None,
+def lines(fb: "FrameBuffer", segments: ArrayLike, color: Optional[Colors] = None,
           method: LineMethod = "bresenham",
           *, style: Optional["LineStyle"] = None, antialias: bool = False, width: Optional[float] = None,
           cap: Optional[Cap] = None, join: Optional[Join] = None, miter_limit: Optional[float] = None,
-          dash: Any = None, dash_phase: Optional[float] = None, pen: Any = None) -> None:
+          dash: Optional[Dash] = None, dash_phase: Optional[float] = None,
+          pen: Optional[PenLike] = None) -> None:
     """Draw N line segments in one compiled call.
 
     Parameters
@@ -167,8 +169,8 @@ def lines(fb: "FrameBuffer", segments: ArrayLike, color: Any = None,
     attrs = strokes.styled(style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen)
     if attrs is not None:
         _attributes_need_bresenham(code)
-        segs = strokes.segment_array("segments", segments)
-        strokes.polylines(fb, segs.reshape(-1, 2), color, counts=np.full(len(segs), 2),
+        ends = strokes.segment_array("segments", segments)
+        strokes.polylines(fb, ends.reshape(-1, 2), color, counts=np.full(len(ends), 2),
                           style=attrs, antialias=antialias)
         return
     buf, packed, width, height = target(fb)

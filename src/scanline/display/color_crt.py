@@ -25,12 +25,18 @@ only, magenta with blue and red, cyan with blue and green.  The three beams are
 offset from the others, and every edge shows color fringes (``misconvergence``).
 """
 
+from typing import TYPE_CHECKING, Any, Literal, Union
+
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
 from ..framebuffer import FrameBuffer
 from .crt import RandomScan, RasterScan, glow, last_visit
+
+if TYPE_CHECKING:
+    from .file import DisplayFile
 
 #: The four colors of a beam-penetration screen, slowest beam first, and the beam
 #: accelerating voltage (kilovolts) of each: only the outer red layer, red with a
@@ -57,7 +63,7 @@ _CHOICES = np.array([OFF] + list(PENETRATION_COLORS.values()), np.float64)
 _NAMES = np.array(["off"] + list(PENETRATION_COLORS), dtype=object)
 
 
-def _nearest(rgb):
+def _nearest(rgb: ArrayLike) -> NDArray[np.int64]:
     """Index into _CHOICES of the choice nearest (in RGB) to each of ``rgb``."""
     a = np.asarray(rgb, np.float64)
     if a.shape[-1:] != (3,) or not np.isfinite(a).all():
@@ -71,7 +77,7 @@ def _nearest(rgb):
     return best
 
 
-def penetration_color(rgb):
+def penetration_color(rgb: ArrayLike) -> NDArray[np.object_]:
     """The beam-penetration color nearest (in RGB) to each of ``rgb`` (..., 3), the
     beam off (black) where that is nearer: an array of names, ``"off"`` included.
 
@@ -81,7 +87,7 @@ def penetration_color(rgb):
     return _NAMES[_nearest(rgb)]
 
 
-def penetration_colors(fb):
+def penetration_colors(fb: FrameBuffer) -> FrameBuffer:
     """``fb`` as a beam-penetration screen shows it: every pixel in the nearest of
     red, orange, yellow and green, or dark.  An RGB frame buffer."""
     if not isinstance(fb, FrameBuffer):
@@ -114,17 +120,18 @@ class BeamPenetration(RandomScan):
     [(10.0, 'yellow'), (0.0, 'off')]
     """
 
-    def __init__(self, display_file, width, height, **kw):
-        self.voltages = []
+    def __init__(self, display_file: "DisplayFile", width: int, height: int,
+                 **kw: float) -> None:
+        self.voltages: list[tuple[float, str]] = []
         super().__init__(display_file, width, height, **kw)
 
-    def _beam_color(self, rgb):
+    def _beam_color(self, rgb: tuple[int, int, int]) -> tuple[int, int, int]:
         name = str(penetration_color(rgb[:3]))
         self.voltages.append((PENETRATION_VOLTAGES.get(name, 0.0), name))
         return PENETRATION_COLORS.get(name, OFF)
 
 
-def _offsets(misconvergence):
+def _offsets(misconvergence: Union[float, ArrayLike]) -> NDArray[np.float64]:
     """(3, 2) beam offsets in pixels from a number m (red (-m, 0), blue (+m, 0)) or
     three (dx, dy) pairs."""
     if isinstance(misconvergence, (int, float)) and not isinstance(misconvergence, bool):
@@ -179,7 +186,9 @@ class ShadowMask(RasterScan):
     [[255, 0, 0], [0, 255, 0], [0, 0, 0]]
     """
 
-    def __init__(self, fb, arrangement="delta", dots=6, misconvergence=0.0, **raster):
+    def __init__(self, fb: FrameBuffer, arrangement: Literal["delta", "in-line"] = "delta",
+                 dots: int = 6, misconvergence: Union[float, ArrayLike] = 0.0,
+                 **raster: Any) -> None:
         super().__init__(fb, **raster)
         self.arrangement = v.choice("arrangement", arrangement, tuple(TRIADS))
         self.dots = v.positive_int("dots", dots, minimum=3)
@@ -212,7 +221,7 @@ class ShadowMask(RasterScan):
         value[ok] = self.pixels[src_row[ok], src_x[ok], channel[ok]]
         self._dot_value = value
 
-    def screen(self, t):
+    def screen(self, t: float) -> NDArray[np.uint8]:
         """The screen at time ``t``: (height * dots, width * dots, 3) uint8, each dot
         glowing in its own color with its beam's intensity."""
         t = v.number("t", t)
@@ -224,7 +233,7 @@ class ShadowMask(RasterScan):
         out[rr, cc, self._channel[lit]] = self._dot_value[lit] * g[lit]
         return np.clip(np.rint(out), 0, 255).astype(np.uint8)
 
-    def triad_centers(self):
+    def triad_centers(self) -> NDArray[np.float64]:
         """The centers of a cell's red, green and blue dots, (3, 2), in screen pixels
         (x right, y down) from the cell's top left corner, measured from the mask."""
         out = []

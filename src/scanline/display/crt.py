@@ -32,12 +32,21 @@ down, ``frames_per_refresh`` frames per refresh cycle.
 """
 
 import math
+import os
+from typing import IO, TYPE_CHECKING, Any, Union
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
 from ..framebuffer import FrameBuffer, write_atomically
+
+if TYPE_CHECKING:
+    from .file import DisplayFile
+
+#: Where the beam is: ``(x, y, state)`` in device units.
+Beam = tuple[float, float, str]
 
 #: Largest screen simulated, in pixels (before ``scale``).
 MAX_PIXELS = 1024 * 1024
@@ -50,28 +59,28 @@ BEAM = (255, 255, 255)
 RETRACE = (255, 64, 64)
 
 
-def _fraction(name, value, low=0.0, high=1.0):
+def _fraction(name: str, value: object, low: float = 0.0, high: float = 1.0) -> float:
     x = v.number(name, value)
     if not low < x < high:
         raise ArgumentValueError(f"{name}={x} must be between {low} and {high} (exclusive)")
     return x
 
 
-def _positive(name, value):
+def _positive(name: str, value: object) -> float:
     x = v.number(name, value)
     if not 0 < x < 1e12:
         raise ArgumentValueError(f"{name}={x} must be a positive number of seconds or hertz")
     return x
 
 
-def _count(name, value, high):
+def _count(name: str, value: object, high: int) -> int:
     n = v.positive_int(name, value)
     if n > high:
         raise ArgumentValueError(f"{name}={n} is too many; at most {high}")
     return n
 
 
-def glow(elapsed, persistence):
+def glow(elapsed: ArrayLike, persistence: float) -> NDArray[np.float64]:
     """The fraction of its full intensity a phosphor spot shows ``elapsed`` seconds
     after the beam excited it (``inf``: never, 0)."""
     with np.errstate(over="ignore", invalid="ignore"):
@@ -79,7 +88,7 @@ def glow(elapsed, persistence):
     return np.where(np.isfinite(elapsed), g, 0.0)
 
 
-def last_visit(hit, period, t):
+def last_visit(hit: NDArray[np.floating[Any]], period: float, t: float) -> NDArray[np.float64]:
     """The last time <= t at which the beam, passing at ``hit`` (seconds into every
     cycle of length ``period``), excited a spot; ``-inf`` before its first visit."""
     n = np.floor((t - hit) / period)
@@ -96,8 +105,18 @@ class _Simulation:
     flat panel draws each pixel as several)."""
 
     dots = 1
+    period: float
 
-    def frames(self, frames_per_refresh=24, refreshes=1, scale=1, beam=True):
+    def screen(self, t: float) -> NDArray[np.uint8]:
+        """The screen at time ``t``: an image-order uint8 RGB array (each subclass's)."""
+        raise NotImplementedError
+
+    def beam(self, t: float) -> Beam:
+        """Where the beam is at time ``t`` (each subclass's)."""
+        raise NotImplementedError
+
+    def frames(self, frames_per_refresh: int = 24, refreshes: int = 1, scale: int = 1,
+               beam: bool = True) -> list[NDArray[np.uint8]]:
         """The screen at ``frames_per_refresh`` evenly spaced times per refresh cycle,
         for ``refreshes`` cycles: a list of (height * scale, width * scale, 3) uint8
         arrays in image order, the beam's spot (and, on a retrace, its path) drawn
@@ -112,7 +131,7 @@ class _Simulation:
             raise ArgumentTypeError(f"beam must be True or False, got {v._show(beam)}")
         return [self.image(k * self.period / per, scale, beam) for k in range(per * cycles)]
 
-    def image(self, t, scale=1, beam=True):
+    def image(self, t: float, scale: int = 1, beam: bool = True) -> NDArray[np.uint8]:
         """The screen at time ``t`` as an image-order RGB array, enlarged ``scale``
         times, with the beam drawn when ``beam``."""
         img = self.screen(t)
@@ -128,7 +147,8 @@ class _Simulation:
             img[max(cy - r, 0):max(cy + r + 1, 0), max(cx - r, 0):max(cx + r + 1, 0)] = color
         return img
 
-    def save(self, path, frames_per_refresh=24, refreshes=1, scale=1, fps=12):
+    def save(self, path: Union[str, "os.PathLike[str]"], frames_per_refresh: int = 24,
+             refreshes: int = 1, scale: int = 1, fps: float = 12) -> None:
         """Write the frames as an animated GIF (Pillow), atomically; ``fps`` frames
         per second of playback."""
         from PIL import Image
@@ -138,7 +158,7 @@ class _Simulation:
             raise ArgumentValueError(f"fps={fps} must be > 0 and at most 100")
         images = [Image.fromarray(f) for f in self.frames(frames_per_refresh, refreshes, scale)]
 
-        def write(f):
+        def write(f: IO[bytes]) -> None:
             images[0].save(f, format="GIF", save_all=True, append_images=images[1:],
                            duration=int(round(1000 / fps)), loop=0)
 
@@ -185,8 +205,9 @@ class RasterScan(_Simulation):
     ('horizontal retrace', 'vertical retrace')
     """
 
-    def __init__(self, fb, refresh_rate=60.0, interlaced=False, persistence=0.02,
-                 horizontal_retrace=0.2, vertical_retrace=0.05):
+    def __init__(self, fb: FrameBuffer, refresh_rate: float = 60.0, interlaced: bool = False,
+                 persistence: float = 0.02, horizontal_retrace: float = 0.2,
+                 vertical_retrace: float = 0.05) -> None:
         if not isinstance(fb, FrameBuffer):
             raise ArgumentTypeError(f"fb must be a scanline.FrameBuffer, got {v._show(fb)}")
         if fb.width * fb.height > MAX_PIXELS:
@@ -213,13 +234,13 @@ class RasterScan(_Simulation):
         active = self.line_time * (1 - self.horizontal_retrace)
         self.hits = start[:, None] + (np.arange(self.width)[None, :] + 0.5) / self.width * active
 
-    def screen(self, t):
+    def screen(self, t: float) -> NDArray[np.uint8]:
         """The glow of every pixel at time ``t``: an image-order uint8 RGB array."""
         t = v.number("t", t)
         g = glow(t - last_visit(self.hits, self.period, t), self.persistence)
         return np.clip(np.rint(self.pixels * g[..., None]), 0, 255).astype(np.uint8)
 
-    def beam(self, t):
+    def beam(self, t: float) -> Beam:
         """Where the beam is at time ``t``: ``(x, y, state)`` in device coordinates (y up;
         y may lie between scan lines on a retrace), ``state`` one of ``"drawing"``,
         ``"horizontal retrace"``, ``"vertical retrace"``."""
@@ -250,7 +271,7 @@ class RasterScan(_Simulation):
                 "horizontal retrace")
 
 
-def bit_planes(fb):
+def bit_planes(fb: FrameBuffer) -> NDArray[np.bool_]:
     """The stored values of ``fb`` (mode ``"1"``, ``"L"`` or ``"P"``) split into bit
     planes: a (bits, height, width) bool array, plane k = bit k (image order).
 
@@ -317,8 +338,9 @@ class RandomScan(_Simulation):
     (0.00205, 60.0)
     """
 
-    def __init__(self, display_file, width, height, writing_speed=2e5, jump_speed=2e6,
-                 settle_time=2e-6, max_rate=60.0, persistence=0.02):
+    def __init__(self, display_file: "DisplayFile", width: int, height: int,
+                 writing_speed: float = 2e5, jump_speed: float = 2e6, settle_time: float = 2e-6,
+                 max_rate: float = 60.0, persistence: float = 0.02) -> None:
         from .devices import VectorDevice
         from .interpreter import interpret
         from .pick import device_size
@@ -342,7 +364,7 @@ class RandomScan(_Simulation):
         self.commands = device.commands
         self._trace()
 
-    def _trace(self):
+    def _trace(self) -> None:
         """The beam's path: for each command its start time, end time, start and end
         point and color; and sample points along every line with their hit times."""
         t, beam, color = 0.0, (0.0, float(self.height - 1)), (255, 255, 255)
@@ -380,11 +402,11 @@ class RandomScan(_Simulation):
             self._times = np.zeros(0)
             self._colors = np.zeros((0, 3))
 
-    def _beam_color(self, rgb):
+    def _beam_color(self, rgb: tuple[int, int, int]) -> tuple[int, int, int]:
         """The color the phosphor shows for a COLOR command's (r, g, b)."""
         return rgb
 
-    def screen(self, t):
+    def screen(self, t: float) -> NDArray[np.uint8]:
         """The glow of the screen at time ``t``: an image-order uint8 RGB array (each
         spot the brightest of the line samples on it)."""
         t = v.number("t", t)
@@ -396,7 +418,7 @@ class RandomScan(_Simulation):
             np.maximum.at(img[:, :, c], (rows, self._spots[:, 0]), value[:, c])
         return np.clip(np.rint(img), 0, 255).astype(np.uint8)
 
-    def beam(self, t):
+    def beam(self, t: float) -> Beam:
         """``(x, y, state)``: the beam at time ``t``, ``state`` ``"drawing"`` (a LINE),
         ``"moving"`` (a blanked MOVE) or ``"waiting"`` (the delay that holds the
         refresh rate at ``max_rate``, or settling)."""
@@ -416,7 +438,7 @@ _MORE = {"BeamPenetration": "color_crt", "ShadowMask": "color_crt", "StorageTube
          "PlasmaPanel": "flat_panel", "LCD": "flat_panel"}
 
 
-def __getattr__(name):
+def __getattr__(name: str) -> Any:
     """The other devices' simulations, from their modules (which import this one)."""
     if name in _MORE:
         import importlib

@@ -808,7 +808,7 @@ class DisplayFile:
         a = v.angle("angle", angle)
         axes = np.array([[math.cos(a), -math.sin(a)], [math.sin(a), math.cos(a)]]) @ np.diag([rx, ry])
         lin = self._normalization[:2, :2]
-        attrs = {"fill": _flag("fill", fill)}
+        attrs: dict[str, Any] = {"fill": _flag("fill", fill)}
         outline = p.line_attributes(color, **line)
         if attrs["fill"]:
             attrs.update(color=p.color("color", color), rule=v.choice("rule", rule, p.RULES),

@@ -24,12 +24,15 @@ value with the time constant ``response_time``.  Given a ``previous`` picture, t
 panel shows the change sweeping down one row at a time.
 """
 
+from typing import Optional
+
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError
 from ..framebuffer import FrameBuffer
-from .crt import MAX_PIXELS, _positive, _Simulation, glow, last_visit
+from .crt import MAX_PIXELS, Beam, _positive, _Simulation, glow, last_visit
 
 #: The orange glow of a neon plasma cell.
 NEON = (255, 110, 30)
@@ -37,7 +40,7 @@ NEON = (255, 110, 30)
 MAX_DOTS = 16
 
 
-def _rgb(name, fb):
+def _rgb(name: str, fb: object) -> NDArray[np.float64]:
     if not isinstance(fb, FrameBuffer):
         raise ArgumentTypeError(f"{name} must be a scanline.FrameBuffer, got {v._show(fb)}")
     return np.asarray(fb.to_pil().convert("RGB"), np.float64)
@@ -47,7 +50,10 @@ class _Matrix(_Simulation):
     """An addressed matrix of cells, each ``dots`` x ``dots`` screen pixels with a
     dark line between cells (the conductors' gaps)."""
 
-    def __init__(self, fb, refresh_rate, dots):
+    width: int
+    height: int
+
+    def __init__(self, fb: FrameBuffer, refresh_rate: float, dots: int) -> None:
         self.pixels = _rgb("fb", fb)
         self.height, self.width = self.pixels.shape[:2]
         if self.width * self.height > MAX_PIXELS:
@@ -60,7 +66,7 @@ class _Matrix(_Simulation):
             raise ArgumentValueError(
                 f"dots={self.dots}: at most {MAX_DOTS} and 4 million screen pixels in all")
 
-    def _cells(self, values):
+    def _cells(self, values: NDArray[np.float64]) -> NDArray[np.uint8]:
         """(H, W, 3) cell values as the screen shows them: blocks with gaps."""
         img = np.repeat(np.repeat(values, self.dots, axis=0), self.dots, axis=1)
         if self.dots >= 3:
@@ -106,7 +112,8 @@ class PlasmaPanel(_Matrix):
     [(0, 0), (0, 3), (1, 0)]
     """
 
-    def __init__(self, fb, refresh_rate=60.0, persistence=0.02, threshold=128, dots=4):
+    def __init__(self, fb: FrameBuffer, refresh_rate: float = 60.0, persistence: float = 0.02,
+                 threshold: float = 128, dots: int = 4) -> None:
         super().__init__(fb, refresh_rate, dots)
         self.persistence = _positive("persistence", persistence)
         threshold = v.number("threshold", threshold)
@@ -119,21 +126,21 @@ class PlasmaPanel(_Matrix):
         order = np.arange(self.width * self.height).reshape(self.height, self.width)
         self.hits = order * self.cell_time
 
-    def conductors(self, t):
+    def conductors(self, t: float) -> tuple[int, int]:
         """The horizontal conductor (row, from the top) and vertical conductor
         (column, from the left) energized at time ``t``."""
         k = int((v.number("t", t) % self.period) // self.cell_time)
         k = min(k, self.width * self.height - 1)
         return divmod(k, self.width)
 
-    def screen(self, t):
+    def screen(self, t: float) -> NDArray[np.uint8]:
         """The panel at time ``t``: each fired cell glowing in neon orange, fading
         since its last firing."""
         t = v.number("t", t)
         g = glow(t - last_visit(self.hits, self.period, t), self.persistence) * self.on
         return self._cells(g[..., None] * np.array(NEON, np.float64))
 
-    def beam(self, t):
+    def beam(self, t: float) -> Beam:
         """The cell being fired: ``(x, y, "firing")`` in device coordinates (y up)."""
         row, col = self.conductors(t)
         return float(col), float(self.height - 1 - row), "firing"
@@ -176,8 +183,9 @@ class LCD(_Matrix):
     [255, 255, 255, 0]
     """
 
-    def __init__(self, fb, previous=None, refresh_rate=60.0, response_time=0.004,
-                 alternate=False, dots=4):
+    def __init__(self, fb: FrameBuffer, previous: Optional[FrameBuffer] = None,
+                 refresh_rate: float = 60.0, response_time: float = 0.004,
+                 alternate: bool = False, dots: int = 4) -> None:
         super().__init__(fb, refresh_rate, dots)
         before = np.zeros_like(self.pixels) if previous is None else _rgb("previous", previous)
         if before.shape != self.pixels.shape:
@@ -192,17 +200,17 @@ class LCD(_Matrix):
         self.line_time = self.period / self.height
         self.row_starts = np.arange(self.height) * self.line_time
 
-    def selected_row(self, t):
+    def selected_row(self, t: float) -> int:
         """The row (from the top) whose select line is on at time ``t``."""
         return min(int((v.number("t", t) % self.period) // self.line_time), self.height - 1)
 
-    def _picture(self, n):
+    def _picture(self, n: int) -> NDArray[np.float64]:
         """The picture written in refresh cycle ``n`` (-1: before the first)."""
         if n < 0 or (self.alternate and n % 2 == 1):
             return self.previous
         return self.pixels
 
-    def screen(self, t):
+    def screen(self, t: float) -> NDArray[np.uint8]:
         """The panel at time ``t``: each row turning from the value it held toward
         the value written at its last selection."""
         t = v.number("t", t)
@@ -218,7 +226,7 @@ class LCD(_Matrix):
             out[r] = target + (held - target) * np.exp(-elapsed / self.response_time)
         return self._cells(out)
 
-    def beam(self, t):
+    def beam(self, t: float) -> Beam:
         """The selected row: ``(-0.5, y, "row select")``, at the row drivers on the
         left edge."""
         return -0.5, float(self.height - 1 - self.selected_row(t)), "row select"

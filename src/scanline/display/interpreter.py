@@ -24,12 +24,16 @@ from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError, ScanlineError
 from ..geometry import guard
 from . import batch, pipeline, text, three_d
+from .batch import Key
+from .pipeline import Rect, Window
 from .primitives import THIN, Primitive
 from .viewing import device_rectangle, workstation
 
 if TYPE_CHECKING:
     from .._typing import Color
-    from .file import DisplayFile
+    from .file import DisplayFile, Segment
+
+F64 = NDArray[np.float64]
 
 _UNIT = (0.0, 0.0, 1.0, 1.0)
 
@@ -41,7 +45,7 @@ CLIP_TOLERANCE = 1e-9
 HIGHLIGHT_MARGIN = 2.0
 
 
-def _finite(points):
+def _finite(points: F64) -> F64:
     """``points`` (device coordinates) when finite; a mapping that overflowed is
     refused by name."""
     if points.size and not np.isfinite(points).all():
@@ -52,14 +56,14 @@ def _finite(points):
     return points
 
 
-def _guarded_contour(c):
+def _guarded_contour(c: F64) -> F64:
     """A fill contour reaching beyond the kernels' exact range (+-2**30) clipped to
     the guard square first (:func:`scanline.geometry.guard.ring`: exact crossings,
     windings kept inside it), so that any finite device coordinate is drawn."""
     return guard.ring(c) if guard.far(_finite(c)) else c
 
 
-def _clip_polyline(points, closed, rect):
+def _clip_polyline(points: F64, closed: bool, rect: Window) -> tuple[list[F64], bool]:
     """:func:`pipeline.polylines` of a polyline, whose far parts are cut at the guard
     square first (:func:`scanline.geometry.guard.paths`)."""
     if not guard.far(_finite(points)):
@@ -71,11 +75,11 @@ def _clip_polyline(points, closed, rect):
     return pieces, False
 
 
-def _line(color):
+def _line(color: Optional["Color"]) -> dict[str, Any]:
     return {"color": color, "style": THIN}
 
 
-def _area(prim, rect, device):
+def _area(prim: Primitive, rect: Window, device: Any) -> list[F64]:
     """Fill (and edge) an area given as contours; return the pieces drawn."""
     a = prim.attributes
     cs = prim.geometry["contours"]
@@ -91,7 +95,7 @@ def _area(prim, rect, device):
     return clipped
 
 
-def draw_primitive(prim: Primitive, rect: Any, device: Any) -> list[NDArray[np.float64]]:
+def draw_primitive(prim: Primitive, rect: Window, device: Any) -> list[F64]:
     """Draw one primitive (already in device coordinates) clipped to ``rect`` (a
     rectangle or a convex polygon, see :func:`pipeline.inside`); return the point
     arrays drawn, for the highlight frame.
@@ -214,12 +218,13 @@ def interpret(display_file: "DisplayFile", device: Any, highlight: "Color" = "ma
         draw_segment(seg, display_file, ws, frame, device, highlight)
 
 
-def draw_segment(seg, display_file, ws, frame, device, highlight):
+def draw_segment(seg: "Segment", display_file: "DisplayFile", ws: F64, frame: Rect, device: Any,
+                 highlight: "Color") -> None:
     """Draw one segment (with its highlight frame) as :func:`interpret` does: ``ws``
     is the workstation matrix, ``frame`` the device frame (:func:`device_frame`)."""
     groups = hasattr(device, "begin_segment")
     m = ws @ seg.transformation
-    drawn = []
+    drawn: list[F64] = []
     if groups:
         device.begin_segment(seg.name)
     prims = seg.primitives
@@ -235,11 +240,13 @@ def draw_segment(seg, display_file, ws, frame, device, highlight):
         device.end_segment()
 
 
-def draw_run(seg, start, run, same, m, rect, device):
+def draw_run(seg: "Segment", start: int, run: Sequence[Primitive], same: Key, m: F64,
+             rect: Window, device: Any) -> list[F64]:
     """Draw one run of :func:`batch.runs` (``run`` starts at primitive ``start`` of
     ``seg``), mapped by ``m`` and clipped to ``rect``; return the point arrays drawn."""
-    drawn = []
+    drawn: list[F64] = []
     if len(run) > 1:
+        assert same is not None  # a run of several shares a key
         pts, far = (batch.lines if same[0] == "lines" else batch.areas)(run, m, rect, device)
         if far is None:
             return pts
@@ -256,19 +263,19 @@ def draw_run(seg, start, run, same, m, rect, device):
     return drawn
 
 
-def drawing_order(display_file):
+def drawing_order(display_file: "DisplayFile") -> list["Segment"]:
     """The visible segments in the order they are drawn: increasing priority, ties
     in order of creation (GKS, ISO 7942, 4.7.6)."""
     return sorted((s for s in display_file.segments if s.visible),
                   key=lambda s: (s.priority, s._order))
 
 
-def device_frame(ws):
+def device_frame(ws: F64) -> Rect:
     """The device's frame under the workstation matrix ``ws``, as a clip rectangle."""
     return _padded(device_rectangle(ws, _UNIT))
 
 
-def clip_rectangle(prim, ws, frame):
+def clip_rectangle(prim: Primitive, ws: F64, frame: Rect) -> Optional[Rect]:
     """The device rectangle a primitive is clipped to: its viewport mapped by ``ws``
     and intersected with ``frame``, or None when that is empty."""
     if prim.clip is None:
@@ -276,14 +283,14 @@ def clip_rectangle(prim, ws, frame):
     return pipeline.intersect(_padded(device_rectangle(ws, prim.clip)), frame)
 
 
-def _padded(rect):
+def _padded(rect: Sequence[float]) -> Rect:
     """``rect`` grown by :data:`CLIP_TOLERANCE`: a point on a viewport's edge stays
     inside although mapping it and the edge may round differently."""
     return (rect[0] - CLIP_TOLERANCE, rect[1] - CLIP_TOLERANCE,
             rect[2] + CLIP_TOLERANCE, rect[3] + CLIP_TOLERANCE)
 
 
-def _frame(points, frame, device, color):
+def _frame(points: F64, frame: Rect, device: Any, color: "Color") -> None:
     """The highlight frame around ``points``, clipped to the device frame."""
     x0, y0 = points.min(axis=0) - HIGHLIGHT_MARGIN
     x1, y1 = points.max(axis=0) + HIGHLIGHT_MARGIN

@@ -19,24 +19,35 @@ instead of drawing: a pick sees exactly the geometry the raster and vector devic
 draw, after the segment transformation and the viewport clip.
 """
 
-from collections import namedtuple
+from typing import TYPE_CHECKING, Any, NamedTuple, Optional, Sequence
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from .. import transform as tf
 from ..errors import ArgumentTypeError, ArgumentValueError
 from .interpreter import clip_rectangle, device_frame, draw_primitive, drawing_order
+from .pipeline import Rect
 from .viewing import workstation
 
-#: What a pick reports: the segment's name and the primitive's pick identifier.
-Pick = namedtuple("Pick", ["segment", "pick_id"])
+if TYPE_CHECKING:
+    from .file import DisplayFile
+
+F64 = NDArray[np.float64]
+
+
+class Pick(NamedTuple):
+    """What a pick reports: the segment's name and the primitive's pick identifier."""
+
+    segment: str
+    pick_id: int
 
 #: Largest pick aperture, in device units.
 MAX_APERTURE = 1 << 16
 
 
-def device_size(device):
+def device_size(device: Any) -> tuple[int, int]:
     """(width, height) of a device: a FrameBuffer, a device object or a pair."""
     if hasattr(device, "width") and hasattr(device, "height"):
         size = (device.width, device.height)
@@ -50,15 +61,15 @@ def device_size(device):
             v.positive_int("device height", size[1], 2))
 
 
-def _position(x, y):
-    x, y = v.number("x", x), v.number("y", y)
-    for name, c in (("x", x), ("y", y)):
+def _position(x: object, y: object) -> tuple[float, float]:
+    px, py = v.number("x", x), v.number("y", y)
+    for name, c in (("x", px), ("y", py)):
         if not abs(c) <= v.COORD_LIMIT:
             raise ArgumentValueError(f"{name}={c} must be finite and within +-{v.COORD_LIMIT}")
-    return x, y
+    return px, py
 
 
-def locate(display_file, x, y, device):
+def locate(display_file: "DisplayFile", x: float, y: float, device: Any) -> tuple[float, float]:
     """The world coordinates of the device position (x, y): the locator's inverse
     mapping W⁻¹ then N⁻¹ (workstation, then normalization transformation).
 
@@ -95,7 +106,7 @@ def locate(display_file, x, y, device):
 PY_SEGMENTS = 512
 
 
-def _visible(segments, window):
+def _visible(segments: F64, window: Rect) -> bool:
     """Whether Liang-Barsky keeps some part of any of the (N, 4) ``segments`` in the
     rectangle ``window``."""
     from .. import clip
@@ -119,17 +130,17 @@ class _Probe:
     """A device that draws nothing and records whether anything it is given meets
     the pick window (xmin, ymin, xmax, ymax)."""
 
-    def __init__(self, width, height, x, y, aperture):
+    def __init__(self, width: int, height: int, x: float, y: float, aperture: float) -> None:
         self.width, self.height = width, height
         self.x, self.y, self.aperture = x, y, aperture
         self.hit = False
 
-    def _window(self, grow):
+    def _window(self, grow: float) -> Rect:
         a = self.aperture + grow
         return (self.x - a, self.y - a, self.x + a, self.y + a)
 
-    def _meets(self, pieces, closed, grow):
-        segments = []
+    def _meets(self, pieces: Sequence[F64], closed: bool, grow: float) -> bool:
+        segments: list[F64] = []
         for p in pieces:
             q = np.vstack([p, p[:1]]) if closed and len(p) > 2 else p
             q = np.vstack([q, q]) if len(q) == 1 else q
@@ -138,11 +149,11 @@ class _Probe:
             return False
         return _visible(np.vstack(segments), self._window(grow))
 
-    def stroke(self, pieces, closed, attributes):
+    def stroke(self, pieces: Sequence[F64], closed: bool, attributes: dict[str, Any]) -> None:
         # a wide line is hit within half its width of its path
         self.hit |= self._meets(pieces, closed, attributes["style"].width / 2)
 
-    def fill(self, contours, attributes):
+    def fill(self, contours: Sequence[F64], attributes: dict[str, Any]) -> None:
         from ..geometry import inside
 
         style = attributes["style"]
@@ -152,7 +163,8 @@ class _Probe:
             inside([(self.x, self.y)], list(contours), rule=attributes["rule"])[0])
 
 
-def pick(display_file, x, y, aperture, device):
+def pick(display_file: "DisplayFile", x: float, y: float, aperture: float, device: Any
+         ) -> Optional[Pick]:
     """The segment under the device position (x, y), as a pick device reports it.
 
     Parameters

@@ -8,12 +8,17 @@ contours to fill -- so the raster and the vector output of one display file agre
 
 import functools
 import math
-from typing import Any, Literal, Optional, Sequence
+from typing import Any, Literal, Optional, Sequence, Union
 
 import numpy as np
 from numpy.typing import NDArray
 
 from .. import clip as clipping
+
+#: A device rectangle (xmin, ymin, xmax, ymax).
+Rect = tuple[float, float, float, float]
+#: A clip region: a rectangle, or a convex (M, 2) polygon (see :func:`inside`).
+Window = Union[Rect, NDArray[np.float64]]
 
 #: Largest distance (device units) between a flattened ellipse and the true curve.
 FLATNESS = 0.25

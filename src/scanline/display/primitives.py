@@ -174,8 +174,9 @@ def points(name: str, value: Any, minimum: int = 1) -> NDArray[np.float64]:
     return a
 
 
-def _bad_point(name: str, value: object) -> Exception:
-    """Name the first element of a list that is not a point [x, y] of two numbers."""
+def _bad_point(name: str, value: object) -> None:
+    """Raise an error naming the first element of a list that is not a point [x, y] of
+    two numbers; return when there is none."""
     if isinstance(value, (list, tuple)):
         for i, pt in enumerate(value):
             ok = isinstance(pt, (list, tuple)) and len(pt) == 2 and all(
@@ -248,7 +249,8 @@ class Primitive:
         g = self.geometry
 
         def move(p: NDArray[np.float64]) -> NDArray[np.float64]:
-            return p @ lin.T + t
+            moved: NDArray[np.float64] = p @ lin.T + t
+            return moved
 
         if self.kind in ("polyline3d", "mesh"):   # projected when interpreted
             return g

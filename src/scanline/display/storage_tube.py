@@ -19,11 +19,17 @@ erase one segment by itself (:meth:`StorageTube.erase_segment`) is an error that
 says so.
 """
 
+from typing import TYPE_CHECKING, Optional
+
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentValueError
-from .crt import MAX_PIXELS, RandomScan, _Simulation
+from .crt import MAX_PIXELS, Beam, RandomScan, _Simulation
+
+if TYPE_CHECKING:
+    from .file import DisplayFile
 
 #: The green of a storage tube's P1 phosphor.
 STORED = (90, 255, 120)
@@ -80,8 +86,9 @@ class StorageTube(_Simulation):
     scanline.display.storage_tube.SelectiveEraseError: a direct-view storage tube cannot erase segment 'b' by itself: its picture is one stored charge pattern, so erasing clears the whole screen (with a flash); give StorageTube(..., remove='b') to erase everything and write the picture again without it
     """
 
-    def __init__(self, display_file, width, height, writing_speed=2e5, jump_speed=2e6,
-                 settle_time=2e-6, hold=0.5, remove=None, erase_time=0.3):
+    def __init__(self, display_file: "DisplayFile", width: int, height: int,
+                 writing_speed: float = 2e5, jump_speed: float = 2e6, settle_time: float = 2e-6,
+                 hold: float = 0.5, remove: Optional[str] = None, erase_time: float = 0.3) -> None:
         import copy
 
         beam = dict(writing_speed=writing_speed, jump_speed=jump_speed, settle_time=settle_time)
@@ -94,7 +101,7 @@ class StorageTube(_Simulation):
                 raise ArgumentValueError(f"{name}={x} must be a positive number of seconds")
         d1 = self._first.drawing_time
         self.phases = [("writing", 0.0, d1), ("holding", d1, d1 + self.hold)]
-        self._second = None
+        self._second: Optional[RandomScan] = None
         self.remove = remove
         if remove is not None:
             display_file.segment(remove)          # a clear error if there is none
@@ -112,7 +119,7 @@ class StorageTube(_Simulation):
             raise ArgumentValueError(f"the screen is {self.width} x {self.height}; at most "
                                      f"{MAX_PIXELS} pixels")
 
-    def erase_segment(self, name):
+    def erase_segment(self, name: str) -> None:
         """Always an error: a storage tube has no selective erase (the notes' chapter
         1; Hearn & Baker 2-1)."""
         raise SelectiveEraseError(
@@ -121,7 +128,7 @@ class StorageTube(_Simulation):
             f"give StorageTube(..., remove={name!r}) to erase everything and write the picture "
             "again without it")
 
-    def phase(self, t):
+    def phase(self, t: float) -> tuple[str, float]:
         """The phase at time ``t`` (``t`` taken within the sequence, repeating)."""
         t = v.number("t", t) % self.period
         for name, start, end in self.phases:
@@ -130,7 +137,7 @@ class StorageTube(_Simulation):
         return self.phases[-1][0], self.phases[-1][1]
 
     @staticmethod
-    def _written(scan, elapsed):
+    def _written(scan: RandomScan, elapsed: float) -> NDArray[np.uint8]:
         """The stored pattern after ``elapsed`` seconds of writing: every spot the
         beam has passed, at full intensity (no decay: the flood gun holds it)."""
         img = np.zeros((scan.height, scan.width, 3), np.uint8)
@@ -139,21 +146,23 @@ class StorageTube(_Simulation):
         img[scan.height - 1 - spots[:, 1], spots[:, 0]] = STORED
         return img
 
-    def screen(self, t):
+    def screen(self, t: float) -> NDArray[np.uint8]:
         """The screen at time ``t``: the stored pattern written so far, or the erase
         flash (the whole screen bright, fading out)."""
         name, start = self.phase(t)
         t = v.number("t", t) % self.period
         if name == "erasing":
             level = 1.0 - (t - start) / self.erase_time
-            return np.broadcast_to(np.rint(np.array(STORED) * level).astype(np.uint8),
-                                   (self.height, self.width, 3)).copy()
+            flash: NDArray[np.uint8] = np.broadcast_to(
+                np.rint(np.array(STORED) * level).astype(np.uint8),
+                (self.height, self.width, 3)).copy()
+            return flash
         after = any(p[0] == "erasing" and p[2] <= t for p in self.phases)
-        scan = self._second if after else self._first
+        scan = self._second if after and self._second is not None else self._first
         first = self.phases[3][1] if after else 0.0
         return self._written(scan, t - first)
 
-    def beam(self, t):
+    def beam(self, t: float) -> Beam:
         """The writing beam: where it is while writing (``"drawing"`` or
         ``"moving"``); ``"off"`` while the picture is held (the flood gun alone) and
         during the erase."""
@@ -161,6 +170,6 @@ class StorageTube(_Simulation):
         t = v.number("t", t) % self.period
         if name == "writing":
             return self._first.beam(t)
-        if name == "rewriting":
+        if name == "rewriting" and self._second is not None:
             return self._second.beam(t - start)
         return (0.0, 0.0, "off")

@@ -19,18 +19,32 @@ anything with ``vertices`` and  the two arrays (and ``normals``, ``colors``, ``u
 ==============================  ==============================================================
 """
 
+from collections.abc import Iterable
+from typing import TYPE_CHECKING, Any, Callable, List, Literal, Optional, Sequence, Union
+
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentTypeError
+from .materials import MaterialRecord
 from .mesh import Flat, Mesh, check_mesh_budget
+
+if TYPE_CHECKING:
+    from .files import MeshKeywords
+
+#: The kinds of mesh objects :func:`kind` tells apart.
+Kind = Literal["scanline", "trimesh", "trimesh scene", "meshio", "open3d", "arrays"]
+
+# The objects of trimesh, meshio and Open3D are typed Any below: those libraries are
+# untyped (and not imported here), their attributes read by name.
 
 #: What :func:`from_any` takes, for its error message.
 TAKES = ("a scanline.mesh.Mesh, a trimesh.Trimesh or trimesh.Scene, a meshio.Mesh, an "
          "Open3D TriangleMesh, or an object with vertices (V, 3) and faces arrays")
 
 
-def kind(obj):
+def kind(obj: object) -> Optional[Kind]:
     """Which kind of mesh object ``obj`` is: "scanline", "trimesh", "trimesh scene",
     "meshio", "open3d", "arrays", or None."""
     if isinstance(obj, Mesh):
@@ -53,22 +67,23 @@ def kind(obj):
     return None
 
 
-def _sized(argument, vertices, faces):
+def _sized(argument: str, vertices: NDArray[Any],
+           faces: Union[NDArray[Any], Sequence[Any]]) -> None:
     check_mesh_budget(argument, len(vertices), len(faces), int(np.size(faces)),
                       "a mesh converted from another library")
 
 
-def _trimesh(obj, name):
+def _trimesh(obj: Any, name: Optional[str]) -> Mesh:
     vertices = np.asarray(obj.vertices, np.float64)
     faces = np.asarray(obj.faces, np.int64)
     _sized("mesh", vertices, faces)
-    extra = {}
+    extra: "MeshKeywords" = {}
     # normals only where trimesh holds them (read from a file or computed before):
     # asking for them would compute the plain average, which the render does better
     cache = getattr(obj, "_cache", None)
     if cache is not None and "vertex_normals" in cache:
         extra["normals"] = np.asarray(obj.vertex_normals, np.float64)
-    visual = getattr(obj, "visual", None)
+    visual: Any = getattr(obj, "visual", None)
     visual_kind = getattr(visual, "kind", None)
     material = None
     if visual_kind == "vertex":
@@ -85,11 +100,9 @@ def _trimesh(obj, name):
     return mesh
 
 
-def _trimesh_material(material):
+def _trimesh_material(material: Any) -> Optional[MaterialRecord]:
     """A MaterialRecord of a trimesh SimpleMaterial (diffuse, specular, glossiness) or
     PBRMaterial (baseColorFactor)."""
-    from .materials import MaterialRecord
-
     if material is None:
         return None
     color = getattr(material, "baseColorFactor", None)
@@ -103,15 +116,15 @@ def _trimesh_material(material):
     if rgba.max() > 1:                  # trimesh keeps uint8 colors
         rgba = rgba / 255.0
     rgba = np.clip(rgba, 0, 1)
-    return MaterialRecord(getattr(material, "name", None) or "material",
-                          kd=tuple(rgba[:3].tolist()),
+    r, g, b = rgba[:3].tolist()
+    return MaterialRecord(getattr(material, "name", None) or "material", kd=(r, g, b),
                           d=float(rgba[3]) if rgba.size > 3 else 1.0)
 
 
-def _trimesh_scene(obj, name):
+def _trimesh_scene(obj: Any, name: Optional[str]) -> Mesh:
     from .files import joined
 
-    parts = []
+    parts: List[Mesh] = []
     for node in obj.graph.nodes_geometry:
         transform, geometry = obj.graph[node]
         part = obj.geometry.get(geometry)
@@ -125,7 +138,7 @@ def _trimesh_scene(obj, name):
     return joined(parts, name)
 
 
-def _meshio(obj, name):
+def _meshio(obj: Any, name: Optional[str]) -> Mesh:
     from .files import ply_attributes, meshio_faces
 
     points = np.asarray(obj.points, np.float64)
@@ -140,11 +153,11 @@ def _meshio(obj, name):
     return Mesh(points, Flat(indices, sizes), name=name, **extra)
 
 
-def _open3d(obj, name):
+def _open3d(obj: Any, name: Optional[str]) -> Mesh:
     vertices = np.asarray(obj.vertices, np.float64)
     faces = np.asarray(obj.triangles, np.int64)
     _sized("mesh", vertices, faces)
-    extra = {}
+    extra: "MeshKeywords" = {}
     if getattr(obj, "has_vertex_normals", lambda: False)():
         extra["normals"] = np.asarray(obj.vertex_normals, np.float64)
     if getattr(obj, "has_vertex_colors", lambda: False)():
@@ -154,7 +167,7 @@ def _open3d(obj, name):
     return Mesh(vertices, faces, name=name, **extra)
 
 
-def _arrays(obj, name):
+def _arrays(obj: Any, name: Optional[str]) -> Mesh:
     vertices = np.asarray(obj.vertices)
     faces = obj.faces
     if isinstance(faces, np.ndarray) or not isinstance(faces, (list, tuple)):
@@ -165,40 +178,59 @@ def _arrays(obj, name):
     return Mesh(vertices, faces, name=name, **extra)
 
 
-def from_any(obj, name=None):
+def from_any(obj: object, name: Optional[str] = None) -> Mesh:
     """A :class:`~scanline.mesh.Mesh` of ``obj`` (the module docstring lists what is
     taken); a Mesh is returned as it is.
+
+    Parameters
+    ----------
+    obj : object
+        The mesh-like object.
+    name : str, optional
+        The new mesh's name.
+
+    Returns
+    -------
+    Mesh
 
     Raises
     ------
     ArgumentTypeError
         For anything else, naming what works.
+
+    Examples
+    --------
+    >>> import types
+    >>> from scanline.mesh.convert import from_any
+    >>> from_any(types.SimpleNamespace(vertices=[(0, 0, 0), (1, 0, 0), (0, 1, 0)],
+    ...                                faces=[(0, 1, 2)]), name="triangle")
+    <Mesh 'triangle': 3 vertices, 1 faces, 3 edges>
     """
-    what = kind(obj)
-    if what == "scanline":
+    if isinstance(obj, Mesh):
         return obj
+    what = kind(obj)
     if what is None:
         raise ArgumentTypeError(f"cannot make a mesh of {v._show(obj)} (type "
                                 f"{type(obj).__module__}.{type(obj).__name__}): give {TAKES}")
     if name is not None and not isinstance(name, str):
         raise ArgumentTypeError(f"name must be a string or None, got {v._show(name)}")
-    make = {"trimesh": _trimesh, "trimesh scene": _trimesh_scene, "meshio": _meshio,
+    make: Callable[[Any, Optional[str]], Mesh] = {"trimesh": _trimesh, "trimesh scene": _trimesh_scene, "meshio": _meshio,
             "open3d": _open3d, "arrays": _arrays}[what]
     return make(obj, name)
 
 
-def as_meshes(value, argument="meshes", empty=False):
+def as_meshes(value: object, argument: str = "meshes", empty: bool = False) -> List[Mesh]:
     """``value`` -- one mesh object of any kind :func:`from_any` takes, or a list of
     them -- as a list of :class:`~scanline.mesh.Mesh` (``empty``: whether none is
     allowed).  Errors name ``argument``."""
     items = [value] if kind(value) is not None else None
-    if items is None and hasattr(value, "__iter__") \
+    if items is None and isinstance(value, Iterable) \
             and not isinstance(value, (str, bytes, dict, np.ndarray)):
         items = list(value)
     if items is None or (not items and not empty):
         raise ArgumentTypeError(f"{argument} must be a mesh or a{'' if empty else ' non-empty'} "
                                 f"list of meshes ({TAKES}), got {v._show(value)}")
-    out = []
+    out: List[Mesh] = []
     for i, item in enumerate(items):
         if kind(item) is None:
             raise ArgumentTypeError(f"{argument}[{i}] is {v._show(item)}, not a mesh: give "

@@ -397,7 +397,7 @@ def load_all(path: Path, name: Optional[str] = None,
     return [_read_meshio(data, fmt, filename, mesh_name)]
 
 
-def joined(parts: List[Mesh], name: str) -> Mesh:
+def joined(parts: List[Mesh], name: Optional[str]) -> Mesh:
     """One mesh of ``parts`` (:func:`load_all`'s): the parts merged, keeping their
     material when they share one; parts of different materials get their faces
     colored by each material's diffuse color (a part without a material: the

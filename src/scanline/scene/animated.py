@@ -25,7 +25,8 @@ import copy
 import math
 import os
 import re
-from typing import TYPE_CHECKING, Any
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, Any, Callable, TypeVar, Union, cast, overload
 
 import numpy as np
 
@@ -39,8 +40,16 @@ from .schema import _fail, _real, _table
 if TYPE_CHECKING:
     from PIL import Image
 
-    from ..animation import Animation
+    from ..animation import Animation, MotionPath, Timeline
+    from ..color.spec import RGBA
+    from ..curves import Curve
     from ..framebuffer import FrameBuffer
+    from ..transform3d.quaternion import Quaternion
+    from .plan import FramePlan
+
+_T = TypeVar("_T")
+#: A token of a parsed target: a key, an index, or ("name", NAME) for ``[NAME]``.
+_Token = Union[str, int, tuple[str, str]]
 
 _ANIMATION = {"fps", "duration", "start", "title", "storyboard", "tracks", "paths", "morphs",
               "rotations"}
@@ -63,13 +72,13 @@ class _UNPLANNED:
 _TOKEN = re.compile(r"([A-Za-z_][A-Za-z0-9_-]*)|\[([^\]]+)\]|(\.)")
 
 
-def _list(value, path, minimum=0):
+def _list(value: object, path: str, minimum: int = 0) -> list[Any]:
     if not isinstance(value, list) or len(value) < minimum:
         _fail(path, f"must be an array of at least {minimum} entries, got {value!r}"[:200])
     return value
 
 
-def _wrap(path, call, *args, **kwargs):
+def _wrap(path: str, call: Callable[..., _T], *args: Any, **kwargs: Any) -> _T:
     """Call a package function; its error becomes a SceneError at ``path``."""
     try:
         return call(*args, **kwargs)
@@ -80,12 +89,13 @@ def _wrap(path, call, *args, **kwargs):
 
 
 # -- targets --------------------------------------------------------------------------------
-def parse_target(text, path):
+def parse_target(text: object, path: str) -> list[_Token]:
     """``segments[ball].transform[0].translate`` -> ["segments", "ball", "transform", 0,
     "translate"] (a bracketed name picks the array entry whose ``name`` it is)."""
     if not isinstance(text, str) or not text:
         _fail(path, f"must be a key path such as 'segments[ball].transform[0].translate', got {text!r}")
-    tokens, pos, expect_name = [], 0, True
+    tokens: list[_Token] = []
+    pos, expect_name = 0, True
     while pos < len(text):
         m = _TOKEN.match(text, pos)
         if m is None:
@@ -106,7 +116,7 @@ def parse_target(text, path):
     return tokens
 
 
-def _step(node, token, text, path):
+def _step(node: Any, token: _Token, text: str, path: str) -> Any:
     if isinstance(token, tuple):                 # [name]
         if not isinstance(node, list):
             _fail(path, f"{text!r}: [{token[1]}] needs an array here")
@@ -125,9 +135,10 @@ def _step(node, token, text, path):
     return node[token]
 
 
-def locate(data, tokens, text, path):
+def locate(data: dict[str, Any], tokens: list[_Token], text: str,
+           path: str) -> tuple[Any, str | int]:
     """(container, key) of the value at ``tokens`` in ``data``."""
-    node = data
+    node: Any = data
     for token in tokens[:-1]:
         node = _step(node, token, text, path)
     last = tokens[-1]
@@ -137,7 +148,7 @@ def locate(data, tokens, text, path):
     return node, last
 
 
-def _numeric_shape(value, path, text):
+def _numeric_shape(value: object, path: str, text: str) -> tuple[int, ...] | str:
     if isinstance(value, str):
         return "color"
     try:
@@ -152,7 +163,7 @@ def _numeric_shape(value, path, text):
 _NAMES = {"name", "type", "viewport", "camera", "version"}
 
 
-def _animatable(tokens, current, path, text):
+def _animatable(tokens: list[_Token], current: object, path: str, text: str) -> None:
     """Refuse a target that holds something other than numbers or a color: a name or
     a kind (animating ``segments[ball].name`` would lose the segment that
     ``segments[ball]`` finds), or a string that is not a color."""
@@ -177,17 +188,17 @@ class _Color:
     """Colors interpolated as RGBA, written back as [r, g, b, a] integers."""
 
     @staticmethod
-    def encode(value, path):
+    def encode(value: object, path: str) -> "RGBA":
         from ..color.spec import rgba
 
         return _wrap(path, rgba, value, path)
 
     @staticmethod
-    def decode(value):
+    def decode(value: Any) -> list[int]:
         return [int(c) for c in np.clip(np.floor(np.asarray(value) + 0.5), 0, 255)]
 
 
-def _plain(value):
+def _plain(value: Any) -> float | list[Any]:
     a = np.asarray(value, dtype=np.float64)
     return float(a) if a.ndim == 0 else a.tolist()
 
@@ -195,26 +206,27 @@ def _plain(value):
 class _Writer:
     """Writes one track's value into frame data."""
 
-    def __init__(self, target, tokens, decode):
+    def __init__(self, target: str, tokens: list[_Token], decode: Callable[[Any], Any]) -> None:
         self.target, self.tokens, self.decode = target, tokens, decode
-        self._indices = None      # the tokens with [name] resolved, found on first write
+        self._indices: list[str | int] | None = None      # the tokens with [name] resolved, found on first write
 
-    def write(self, data, value, copied):
+    def write(self, data: dict[str, Any], value: Any, copied: set[int]) -> None:
         """Write ``value`` into ``data`` (a shallow copy of the base scene), copying
         each container on the way that is not yet in ``copied`` (ids of copies), so
         that the base scene is never changed and untouched parts are shared."""
-        node = data
+        node: Any = data
         if self._indices is None:     # every frame starts from the same base: the
-            indices = []              # entry of a name is found once
+            indices: list[str | int] = []     # entry of a name is found once
             for token in self.tokens[:-1]:
                 if isinstance(token, tuple):
-                    token = next((k for k, item in enumerate(node)
+                    found = next((k for k, item in enumerate(node)
                                   if isinstance(item, dict) and item.get("name") == token[1]),
                                  None)
-                    if token is None:          # (_animatable keeps names unchanged)
+                    if found is None:          # (_animatable keeps names unchanged)
                         raise SceneError(f"{self.target!r}: no entry named "
-                                         f"{self.tokens[len(indices)][1]!r} in this frame",
+                                         f"{token[1]!r} in this frame",
                                          path=self.target)
+                    token = found
                 indices.append(token)
                 node = node[token]
             self._indices, node = indices, data
@@ -273,7 +285,7 @@ class AnimatedScene:
         self.scene = Scene(data, file, text, format)       # the static scene, checked
         self.canvas = self.scene.canvas
         self.file = file
-        self._plan = _UNPLANNED
+        self._plan: FramePlan | None | type[_UNPLANNED] = _UNPLANNED
         try:
             self._build(copy.deepcopy(data))
             self.frame(0)                                 # the first and last frames check
@@ -285,7 +297,7 @@ class AnimatedScene:
             raise SceneError(error.message, file=file, line=line, path=error.path) from None
 
     # -- reading the animation table ------------------------------------------------------
-    def _build(self, data):
+    def _build(self, data: dict[str, Any]) -> None:
         from .. import animation as an
 
         if data.get("version") != 2 or "animation" not in data:
@@ -302,7 +314,7 @@ class AnimatedScene:
         timeline = _wrap("animation", an.Timeline, fps=_real(fps, "animation.fps"),
                          duration=None if duration is None else _real(duration, "animation.duration"),
                          start=_real(a.get("start", 0.0), "animation.start"))
-        self.writers = {}
+        self.writers: dict[str, _Writer] = {}
         for i, t in enumerate(_list(a.get("tracks", []), "animation.tracks")):
             self._track(t, f"animation.tracks[{i}]", timeline, data)
         for i, p in enumerate(_list(a.get("paths", []), "animation.paths")):
@@ -314,7 +326,7 @@ class AnimatedScene:
         if not timeline.tracks:
             _fail("animation", "animates nothing: give tracks, paths, morphs or rotations")
         self.timeline = timeline
-        self.storyboard = []
+        self.storyboard: list[tuple[float, str]] = []
         for i, s in enumerate(_list(a.get("storyboard", []), "animation.storyboard")):
             here = f"animation.storyboard[{i}]"
             s = _table(s, here, _STORY, ("time",))
@@ -323,7 +335,8 @@ class AnimatedScene:
                 _fail(f"{here}.caption", f"must be a string, got {caption!r}")
             self.storyboard.append((_real(s["time"], f"{here}.time"), caption))
 
-    def _target(self, value, path, data):
+    def _target(self, value: Any, path: str,
+                data: dict[str, Any]) -> tuple[list[_Token], Any]:
         tokens = parse_target(value, f"{path}.target")
         node, key = locate(data, tokens, value, f"{path}.target")
         if value in self.writers:
@@ -331,12 +344,13 @@ class AnimatedScene:
         _animatable(tokens, node[key], f"{path}.target", value)
         return tokens, node[key]
 
-    def _add(self, timeline, target, tokens, track, decode, path):
+    def _add(self, timeline: "Timeline", target: str, tokens: list[_Token], track: Any,
+             decode: Callable[[Any], Any], path: str) -> None:
         self.writers[target] = _Writer(target, tokens, decode)
         timeline.add(target, track)
 
-    def _keys_times(self, keys, path):
-        times = []
+    def _keys_times(self, keys: list[dict[str, Any]], path: str) -> list[float]:
+        times: list[float] = []
         for k, key in enumerate(keys):
             t = _real(key["time"], f"{path}.keys[{k}].time")
             if times and t <= times[-1]:
@@ -345,7 +359,7 @@ class AnimatedScene:
             times.append(t)
         return times
 
-    def _eases(self, keys, default, path):
+    def _eases(self, keys: list[dict[str, Any]], default: Any, path: str) -> Any:
         eases = []
         from ..animation.easing import resolve
 
@@ -355,7 +369,7 @@ class AnimatedScene:
             eases.append(name)
         return eases or default
 
-    def _track(self, t, path, timeline, data):
+    def _track(self, t: object, path: str, timeline: "Timeline", data: dict[str, Any]) -> None:
         from .. import animation as an
 
         t = _table(t, path, _TRACK, ("target", "keys"))
@@ -365,8 +379,9 @@ class AnimatedScene:
         times = self._keys_times(keys, path)
         shape = _numeric_shape(current, f"{path}.target", t["target"])
         if shape == "color" or any(isinstance(k["value"], str) for k in keys):
-            values = [_Color.encode(k["value"], f"{path}.keys[{i}].value") for i, k in enumerate(keys)]
-            decode = _Color.decode
+            values: list[Any] = [_Color.encode(k["value"], f"{path}.keys[{i}].value")
+                                 for i, k in enumerate(keys)]
+            decode: Callable[[Any], Any] = _Color.decode
         else:
             values = []
             for i, k in enumerate(keys):
@@ -384,14 +399,14 @@ class AnimatedScene:
                       bias=t.get("bias", 0.0))
         self._add(timeline, t["target"], tokens, track, decode, path)
 
-    def _curve(self, c, path):
+    def _curve(self, c: object, path: str) -> "list[Any] | Curve":
         from .. import curves
 
         c = _table(c, path, _CURVE, ("type", "points"))
         kind = c["type"]
         if kind not in CURVES:
             _fail(f"{path}.type", f"must be one of {', '.join(CURVES)}; got {kind!r}")
-        points = c["points"]
+        points: list[Any] = c["points"]
         if kind == "polyline":
             return points
         if kind == "bezier":
@@ -405,7 +420,7 @@ class AnimatedScene:
         return _wrap(path, curves.CardinalSpline, points, tension=c.get("tension", 0.0),
                      closed=closed)
 
-    def _path(self, p, path, timeline, data):
+    def _path(self, p: object, path: str, timeline: "Timeline", data: dict[str, Any]) -> None:
         from .. import animation as an
 
         p = _table(p, path, _PATH, ("target", "curve"))
@@ -432,7 +447,7 @@ class AnimatedScene:
             self._add(timeline, p["orient"], tokens,
                       _Heading(motion, start, end, ease, radians), _plain, f"{path}.orient")
 
-    def _morph(self, m, path, timeline, data):
+    def _morph(self, m: object, path: str, timeline: "Timeline", data: dict[str, Any]) -> None:
         from .. import animation as an
 
         m = _table(m, path, _MORPH, ("target", "keys"))
@@ -450,7 +465,8 @@ class AnimatedScene:
                       ease=self._eases(keys, m.get("ease", "linear"), path))
         self._add(timeline, m["target"], tokens, track, _plain, path)
 
-    def _rotation(self, r, path, timeline, data):
+    def _rotation(self, r: object, path: str, timeline: "Timeline",
+                  data: dict[str, Any]) -> None:
         from .. import animation as an
 
         r = _table(r, path, _ROTATION, ("target", "keys"))
@@ -469,7 +485,7 @@ class AnimatedScene:
         self._add(timeline, r["target"], tokens, track, _quaternion, path)
 
     # -- frames ---------------------------------------------------------------------------
-    def __getstate__(self):
+    def __getstate__(self) -> dict[str, Any]:
         """Pickled for worker processes without the static scene's display file (the
         frames are rebuilt from the data)."""
         state = dict(self.__dict__)
@@ -477,7 +493,7 @@ class AnimatedScene:
         state["_plan"] = _UNPLANNED
         return state
 
-    def __len__(self):
+    def __len__(self) -> int:
         return len(self.timeline)
 
     @property
@@ -541,15 +557,17 @@ class AnimatedScene:
             self.writers[name].write(data, value, copied)
         return data
 
-    def _frame_plan(self) -> Any:
+    def _frame_plan(self) -> "FramePlan | None":
         """The :class:`~scanline.scene.plan.FramePlan` of the frames, or None when each
         frame is built in full (made on first use, in each process)."""
-        if self._plan is _UNPLANNED:
+        made = self._plan
+        if isinstance(made, type):                        # _UNPLANNED
             from .plan import plan
 
             folder = None if self.file is None else os.path.dirname(os.path.abspath(self.file))
-            self._plan = plan(self.base, [w.tokens for w in self.writers.values()], folder)
-        return self._plan
+            made = self._plan = plan(self.base, [w.tokens for w in self.writers.values()],
+                                     folder)
+        return made
 
     def frame(self, index: int) -> "FrameBuffer":
         """Frame ``index`` drawn: a :class:`~scanline.FrameBuffer`.
@@ -684,48 +702,57 @@ class AnimatedScene:
                              [p[2] for p in panels], columns=columns, panel=panel, title=title)
 
 
-class _Frames:
+class _Frames(Sequence["FrameBuffer"]):
     """Frames of a scene drawn when the contact sheet asks for them, one at a time (a
     storyboard of many panels never holds every frame)."""
 
-    def __init__(self, scene, numbers):
+    def __init__(self, scene: AnimatedScene, numbers: list[int]) -> None:
         self.scene, self.numbers = scene, numbers
 
-    def __len__(self):
+    def __len__(self) -> int:
         return len(self.numbers)
 
-    def __getitem__(self, k):
+    @overload
+    def __getitem__(self, k: int) -> "FrameBuffer": ...
+
+    @overload
+    def __getitem__(self, k: slice) -> "_Frames": ...
+
+    def __getitem__(self, k: int | slice) -> "FrameBuffer | _Frames":
+        if isinstance(k, slice):
+            return _Frames(self.scene, self.numbers[k])
         return self.scene.frame(self.numbers[k])
 
 
 class _Along:
     """A motion path's point at time t."""
 
-    def __init__(self, motion, start, end, ease):
+    def __init__(self, motion: "MotionPath", start: float, end: float, ease: Any) -> None:
         self.motion, self.start, self.end, self.ease = motion, start, end, ease
 
-    def __call__(self, t):
+    def __call__(self, t: float) -> Any:
         return self.motion.at(t, self.start, self.end, self.ease)
 
 
 class _Heading(_Along):
     """A motion path's heading at time t, in degrees or radians."""
 
-    def __init__(self, motion, start, end, ease, radians):
+    def __init__(self, motion: "MotionPath", start: float, end: float, ease: Any,
+                 radians: bool) -> None:
         super().__init__(motion, start, end, ease)
         self.radians = radians
 
-    def __call__(self, t):
+    def __call__(self, t: float) -> Any:
         angle = self.motion.heading(self.motion.progress(t, self.start, self.end, self.ease))
         return angle if self.radians else math.degrees(angle)
 
 
-def _quaternion(q):
+def _quaternion(q: "Quaternion") -> list[float]:
     """A rotation track's value as the scene writes it: [w, x, y, z]."""
-    return q.wxyz.tolist()
+    return cast("list[float]", q.wxyz.tolist())
 
 
-def _orientation(key, path):
+def _orientation(key: dict[str, Any], path: str) -> "Quaternion":
     """A rotation key's orientation: ``quaternion = [w, x, y, z]``, ``axis = [x, y, z]``
     with ``degrees`` or ``radians``, or ``euler = {seq = "xyz", degrees = [...]}``."""
     from ..transform3d.quaternion import Quaternion

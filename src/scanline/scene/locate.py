@@ -9,6 +9,12 @@ it cannot follow gives None (the message then has the key path only).
 
 import json
 import re
+from typing import Iterator, Union
+
+#: A token: (kind, text, line).
+_Token = tuple[str, str, int]
+#: A parsed key path: names and indices.
+_Path = tuple[Union[str, int], ...]
 
 _TOKEN = re.compile(r"""
     (?P<newline>\n)
@@ -28,7 +34,7 @@ class _Unknown(Exception):
     """The text holds something the tokenizer does not follow."""
 
 
-def _tokens(text):
+def _tokens(text: str) -> Iterator[_Token]:
     """(kind, text, line) tuples, one at a time, then ("end", "", line); raises
     :class:`_Unknown` at anything else (such as a multi-line string)."""
     line, pos = 1, 0
@@ -37,7 +43,7 @@ def _tokens(text):
         m = match(text, pos)
         if m is None:
             raise _Unknown()
-        kind = m.lastgroup
+        kind = m.lastgroup or ""
         if kind == "newline":
             yield ("newline", "\n", line)
             line += 1
@@ -47,10 +53,10 @@ def _tokens(text):
     yield ("end", "", line)
 
 
-def _key(token):
+def _key(token: _Token) -> str:
     kind, value, _ = token
     if kind == "string":
-        return json.loads(value) if value.startswith('"') else value[1:-1]
+        return str(json.loads(value)) if value.startswith('"') else value[1:-1]
     return value
 
 
@@ -60,30 +66,31 @@ class _Reader:
     memory stays proportional to the depth of the path, not to the size of the
     text."""
 
-    def __init__(self, tokens, target):
-        self.tokens, self.target, self.lines = tokens, target, {}
+    def __init__(self, tokens: Iterator[_Token], target: _Path) -> None:
+        self.tokens, self.target = tokens, target
+        self.lines: dict[_Path, int] = {}
         self.ahead = next(self.tokens)
 
-    def _next(self):
+    def _next(self) -> _Token:
         token = self.ahead
         if token[0] != "end":
             self.ahead = next(self.tokens)
         return token
 
-    def note(self, path, line):
+    def note(self, path: _Path, line: int) -> None:
         if path == self.target[:len(path)]:
             self.lines.setdefault(path, line)
 
-    def peek(self, skip_newlines=True):
+    def peek(self, skip_newlines: bool = True) -> _Token:
         while skip_newlines and self.ahead[0] == "newline":
             self._next()
         return self.ahead
 
-    def take(self, skip_newlines=True):
+    def take(self, skip_newlines: bool = True) -> _Token:
         self.peek(skip_newlines)
         return self._next()
 
-    def value(self, path):
+    def value(self, path: _Path) -> None:
         """Read one value, recording the line where it starts under ``path``."""
         kind, text, line = self.take()
         self.note(path, line)
@@ -108,7 +115,7 @@ class _Reader:
         elif kind not in ("string", "bare"):
             raise _Unknown()
 
-    def keys(self, path):
+    def keys(self, path: _Path) -> _Path:
         """Read ``key.key = `` (TOML) or ``"key":`` (JSON); return the value's path."""
         while True:
             token = self.take()
@@ -123,9 +130,9 @@ class _Reader:
                 return path
 
 
-def _toml(r):
-    counts = {}
-    table = ()
+def _toml(r: _Reader) -> dict[_Path, int]:
+    counts: dict[_Path, int] = {}
+    table: _Path = ()
     while r.peek()[0] != "end":
         token = r.peek()
         if token[1] == "[":
@@ -133,7 +140,7 @@ def _toml(r):
             double = r.peek(False)[1] == "["
             if double:
                 r.take()
-            names = []
+            names: list[str] = []
             while r.peek(False)[1] != "]":
                 tok = r.take(False)
                 if tok[0] in ("end", "newline"):
@@ -151,10 +158,10 @@ def _toml(r):
     return r.lines
 
 
-def _table_path(names, counts, array):
+def _table_path(names: list[str], counts: dict[_Path, int], array: bool) -> _Path:
     """The path of a ``[a.b]`` or ``[[a.b]]`` header: each prefix that is an array
     of tables stands for its last element (counted per parent element)."""
-    path = ()
+    path: _Path = ()
     for k, name in enumerate(names):
         path = path + (name,)
         if array and k == len(names) - 1:
@@ -164,15 +171,15 @@ def _table_path(names, counts, array):
     return path
 
 
-def parse_path(path):
+def parse_path(path: str) -> _Path:
     """``"segments[2].primitives[0].points"`` -> ``("segments", 2, "primitives", 0, "points")``."""
-    out = []
+    out: list[str | int] = []
     for name, index in re.findall(r"([^.\[\]]+)|\[(\d+)\]", path):
         out.append(int(index) if index else name)
     return tuple(out)
 
 
-def line_of(text, format, path):
+def line_of(text: str, format: str, path: str) -> int | None:
     """The line where the value at ``path`` (a key-path string) starts, or where its
     nearest enclosing value starts; None if unknown.  One pass over the text, in
     memory proportional to the path's depth."""
@@ -189,6 +196,6 @@ def line_of(text, format, path):
     return None
 
 
-def _json(r):
+def _json(r: _Reader) -> dict[_Path, int]:
     r.value(())
     return r.lines

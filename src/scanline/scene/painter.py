@@ -26,8 +26,11 @@ drawing order) are drawn by the interpreter's own functions, in their place.
 """
 
 import math
+from collections.abc import Callable, Hashable, Iterable, Sequence
+from typing import TYPE_CHECKING, Any, Union, cast
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from .. import draw
@@ -38,9 +41,25 @@ from ..display.interpreter import clip_rectangle, device_frame, draw_run, draw_s
 from ..display.viewing import workstation
 from ..draw._blend import translucent
 
+if TYPE_CHECKING:
+    from .._typing import Color
+    from ..display.file import DisplayFile, Segment
+    from ..display.primitives import Primitive
+    from ..framebuffer import FrameBuffer
+    from ..linestyle import LineStyle
+
+#: An item's box: (x0, y0, x1, y1).
+_Box = tuple[float, float, float, float]
+#: (lo, hi) corners of points, as [x, y] lists.
+_Extent = tuple[list[float], list[float]]
+#: A primitive's item, None (drawn by the interpreter) or () (nothing to draw).
+_MaybeItem = Union["_Item", tuple[()], None]
+#: The attributes of a call item (none).
+_NO_ATTRIBUTES: dict[str, Any] = {}
+
 _LIMIT = v.COORD_LIMIT
 #: Everything: the box of an item that may touch any pixel.
-_ANYWHERE = (-math.inf, -math.inf, math.inf, math.inf)
+_ANYWHERE: _Box = (-math.inf, -math.inf, math.inf, math.inf)
 
 
 class _Item:
@@ -55,16 +74,24 @@ class _Item:
 
     __slots__ = ("kind", "key", "box", "geometry", "closed", "attributes")
 
-    def __init__(self, kind, key, box, geometry, closed=False, attributes=None):
+    kind: str
+    key: Hashable | None
+    box: _Box
+    geometry: Any
+    closed: bool
+    attributes: dict[str, Any]
+
+    def __init__(self, kind: str, key: Hashable | None, box: _Box, geometry: Any,
+                 closed: bool = False, attributes: dict[str, Any] = _NO_ATTRIBUTES) -> None:
         self.kind, self.key, self.box = kind, key, box
         self.geometry, self.closed, self.attributes = geometry, closed, attributes
 
 
-def _box(lo, hi, margin):
+def _box(lo: Sequence[float], hi: Sequence[float], margin: float) -> _Box:
     return (lo[0] - margin, lo[1] - margin, hi[0] + margin, hi[1] + margin)
 
 
-def _extent(arrays):
+def _extent(arrays: Sequence[NDArray[np.float64]]) -> _Extent | None:
     """(lo, hi) of the points of ``arrays`` as [x, y] lists, or None when one is
     beyond the coordinate limit or not finite (the interpreter then reports it)."""
     if len(arrays) == 1:
@@ -77,11 +104,11 @@ def _extent(arrays):
     return lo, hi
 
 
-def _inside(lo, hi, rect):
+def _inside(lo: Sequence[float], hi: Sequence[float], rect: Sequence[float]) -> bool:
     return rect[0] <= lo[0] and rect[1] <= lo[1] and hi[0] <= rect[2] and hi[1] <= rect[3]
 
 
-def _reach(style, pieces, closed):
+def _reach(style: "LineStyle", pieces: Sequence[NDArray[np.float64]], closed: bool) -> float:
     """How far (device units) a stroke of ``style`` along ``pieces`` can paint from
     its path: the half width, times the miter limit where mitered joins can reach
     (a miter's tip is at most miter_limit half widths from its vertex), or times
@@ -90,14 +117,15 @@ def _reach(style, pieces, closed):
     joins = closed or any(len(p) > 2 for p in pieces)
     if joins and style.join == "miter":
         factor = max(factor, style.miter_limit)
-    return 0.5 * style.width * factor + 2.0
+    reach: float = 0.5 * style.width * factor + 2.0
+    return reach
 
 
-def _opaque(color, fb):
+def _opaque(color: Any, fb: "FrameBuffer") -> bool:
     return fb.mode != "P" and not translucent(color, one=True)
 
 
-def _number(style, styles):
+def _number(style: "LineStyle", styles: dict[object, int]) -> int:
     """A number for ``style``, the same for equal styles (cheap to compare);
     ``styles`` holds the numbers given, by identity and by value."""
     number = styles.get(id(style))
@@ -106,7 +134,8 @@ def _number(style, styles):
     return number
 
 
-def _stroke_item(points, closed, attributes, rect, fb, styles):
+def _stroke_item(points: NDArray[np.float64], closed: bool, attributes: dict[str, Any],
+                 rect: Sequence[float], fb: "FrameBuffer", styles: dict[object, int]) -> _MaybeItem:
     """The item of a polyline in device coordinates (None: out of range, ``()``:
     clipped away)."""
     extent = _extent([points])
@@ -119,7 +148,7 @@ def _stroke_item(points, closed, attributes, rect, fb, styles):
         pieces, closed = pipeline.polylines(points, closed, rect)
         if not pieces:
             return ()
-        lo, hi = _extent(pieces)
+        lo, hi = cast(_Extent, _extent(pieces))    # clipped to rect: in range
     color, style = attributes["color"], attributes["style"]
     simple = _simple(style)
     kind = "lines" if simple else "stroke"
@@ -128,7 +157,8 @@ def _stroke_item(points, closed, attributes, rect, fb, styles):
     return _Item(kind, key, _box(lo, hi, margin), pieces, closed, attributes)
 
 
-def _area_item(contours, attributes, rect, fb):
+def _area_item(contours: Sequence[NDArray[np.float64]], attributes: dict[str, Any],
+               rect: Sequence[float], fb: "FrameBuffer") -> _MaybeItem:
     """The item of a fill area in device coordinates (None: out of range, ``()``:
     nothing to fill)."""
     extent = _extent(contours)
@@ -143,7 +173,7 @@ def _area_item(contours, attributes, rect, fb):
     else:
         clipped = pipeline.contours(contours, rect)
         if clipped:
-            lo, hi = _extent(clipped)
+            lo, hi = cast(_Extent, _extent(clipped))    # clipped to rect: in range
     if not clipped:
         return ()
     color = attributes["color"]
@@ -151,7 +181,8 @@ def _area_item(contours, attributes, rect, fb):
     return _Item("area", key, _box(lo, hi, 1.0), clipped, attributes=attributes)
 
 
-def _item(prim, lin, t, rect, fb, styles):
+def _item(prim: "Primitive", lin: NDArray[np.float64], t: NDArray[np.float64],
+          rect: Sequence[float], fb: "FrameBuffer", styles: dict[object, int]) -> _MaybeItem:
     """The item of one primitive (mapped by the linear part ``lin`` and the
     translation ``t`` of the device matrix, as ``Primitive.transformed`` maps it):
     None when the interpreter's own function has to draw it, ``()`` when nothing is
@@ -174,24 +205,26 @@ def _item(prim, lin, t, rect, fb, styles):
     return _stroke_item(ring, True, a, rect, fb, styles)
 
 
-def _call(function, *args, **kwargs):
+def _call(function: Callable[..., object], *args: Any, **kwargs: Any) -> _Item:
     """An item that ``function(*args, device=device, **kwargs)`` draws."""
     return _Item("call", None, _ANYWHERE,
                  lambda device: function(*args, device=device, **kwargs))
 
 
-def items(segments, display_file, fb, device, highlight):
+def items(segments: Iterable["Segment"], display_file: "DisplayFile", fb: "FrameBuffer",
+          device: RasterDevice, highlight: "Color") -> list[_Item]:
     """The items of ``segments`` (in drawing order), in drawing order."""
     with np.errstate(all="ignore"):      # overflow -> inf, refused by _extent
         return _items(segments, display_file, fb, device, highlight)
 
 
-def _items(segments, display_file, fb, device, highlight):
+def _items(segments: Iterable["Segment"], display_file: "DisplayFile", fb: "FrameBuffer",
+           device: RasterDevice, highlight: "Color") -> list[_Item]:
     ws = workstation(device.width, device.height)
     frame = device_frame(ws)
-    rects = {}                                   # clip rectangle of each viewport
-    styles = {}                                  # line style -> its number
-    out = []
+    rects: dict[object, Any] = {}                # clip rectangle of each viewport
+    styles: dict[object, int] = {}               # line style -> its number
+    out: list[_Item] = []
     for seg in segments:
         prims = seg.primitives
         if seg.highlighted or device.antialias or any(q.kind in three_d.KINDS for q in prims):
@@ -210,7 +243,7 @@ def _items(segments, display_file, fb, device, highlight):
             item = _item(run[0], lin, t, rect, fb, styles) if len(run) == 1 else None
             if item is None:
                 out.append(_call(draw_run, seg, start, run, same, m, rect))
-            elif item != ():
+            elif isinstance(item, _Item):          # not (): nothing to draw
                 out.append(item)
     return out
 
@@ -219,7 +252,7 @@ def _items(segments, display_file, fb, device, highlight):
 CELL = 8
 
 
-def batches(todo, width, height):
+def batches(todo: Iterable[_Item], width: int, height: int) -> list[list[_Item]]:
     """``todo`` (items in drawing order) gathered into batches that draw the same
     pixels on a ``width`` x ``height`` frame buffer: a list of lists of items, drawn
     one after the other.
@@ -228,7 +261,8 @@ def batches(todo, width, height):
     cell; an item must be drawn after the last batch in the cells its box covers,
     and joins the first batch of its kind from there on (or starts one).
     """
-    out, keys = [], []
+    out: list[list[_Item]] = []
+    keys: list[Hashable | None] = []
     cols, rows = -(-width // CELL), -(-height // CELL)
     latest = np.full((rows, cols), -1, np.int64)
     right, bottom = width - 1.0, height - 1.0
@@ -250,8 +284,8 @@ def batches(todo, width, height):
     return out
 
 
-def _colors(fb, group):
-    """One color spec for the batch, or one pixel value per item."""
+def _colors(fb: "FrameBuffer", group: Sequence[_Item]) -> tuple[Any, NDArray[Any] | None]:
+    """(one color spec for the batch, None), or (None, one pixel value per item)."""
     first = group[0].attributes["color"]
     if all(it.attributes["color"] == first and type(it.attributes["color"]) is type(first)
            for it in group):
@@ -260,7 +294,7 @@ def _colors(fb, group):
     return None, values if values.shape[1] > 1 else values[:, 0]
 
 
-def _draw(fb, device, group):
+def _draw(fb: "FrameBuffer", device: RasterDevice, group: Sequence[_Item]) -> None:
     """Draw one batch."""
     item = group[0]
     if item.kind == "call":
@@ -271,25 +305,26 @@ def _draw(fb, device, group):
         device.stroke(item.geometry, item.closed, item.attributes)
     elif item.kind == "area":
         one, values = _colors(fb, group)
-        draw.polygons(fb, [it.geometry[0] for it in group], color=values if one is None else one,
+        draw.polygons(fb, [it.geometry[0] for it in group], color=one if values is None else values,
                       rule=item.attributes["rule"])
     elif item.kind == "lines":
         segs = [_segments(it.geometry, it.closed) for it in group]
         one, values = _colors(fb, group)
-        if one is None:
+        if values is not None:
             values = np.repeat(values, [len(s) for s in segs], axis=0)
-        draw.lines(fb, np.vstack(segs), color=values if one is None else one)
+        draw.lines(fb, np.vstack(segs), color=one if values is None else values)
     else:
         pieces = [p for it in group for p in it.geometry]
         closed = np.array([it.closed for it in group for _ in it.geometry])
         one, values = _colors(fb, group)
-        if one is None:
+        if values is not None:
             values = np.repeat(values, [len(it.geometry) for it in group], axis=0)
-        draw.polylines(fb, pieces, color=values if one is None else one, closed=closed,
+        draw.polylines(fb, pieces, color=one if values is None else values, closed=closed,
                        style=item.attributes["style"])
 
 
-def paint(fb, segments, display_file, antialias=False, highlight="magenta"):
+def paint(fb: "FrameBuffer", segments: Iterable["Segment"], display_file: "DisplayFile",
+          antialias: bool = False, highlight: "Color" = "magenta") -> None:
     """Draw ``segments`` (a display file's segments in drawing order, or a frame's
     from :class:`~scanline.scene.plan.FramePlan`) on ``fb`` as
     :func:`scanline.display.interpret` draws them on a ``RasterDevice(fb,

@@ -18,11 +18,19 @@ segment's priority or visibility, cameras, lights) have no plan: their frames ar
 built in full.
 """
 
+from typing import TYPE_CHECKING, Any, Iterable, Sequence
+
+import numpy as np
+from numpy.typing import NDArray
+
 from .. import transform as tf
 from ..display.file import DisplayFile, Segment
 from ..display.interpreter import drawing_order
 from ..display.viewing import aspect
 from .schema import V2_KEYS, _call, _primitive, _viewports, build, transformation
+
+if TYPE_CHECKING:
+    from .animated import _Token
 
 
 class FramePlan:
@@ -32,50 +40,51 @@ class FramePlan:
     Use :func:`plan` to make one: it returns None for scenes it cannot patch.
     """
 
-    def __init__(self, data, targets, base=None):
+    def __init__(self, data: dict[str, Any], targets: "Iterable[Sequence[_Token]]",
+                 base: str | None = None) -> None:
         self.canvas, self.display_file = build(data, base)
         width, height = self.canvas.width, self.canvas.height
         default_window = data.get("window", (0, 0, width - 1, height - 1))
         viewports = _viewports(data.get("viewports"), default_window,
                                DisplayFile(aspect(width, height)))
         names = list(viewports)
-        self.segments = data.get("segments", [])
+        self.segments: list[dict[str, Any]] = data.get("segments", [])
         # one scratch display file per viewport, its viewing set, holding an open
         # segment: transformations and primitives are made there as build makes them
-        self._scratch = {}
-        self._normalization = {}
+        self._scratch: dict[str, DisplayFile] = {}
+        self._normalization: dict[str, tuple[NDArray[np.float64], NDArray[np.float64]]] = {}
         for name, viewport in viewports.items():
             df = DisplayFile(aspect(width, height))
             df.set_viewing(**viewport["viewing"])
             df.create_segment("frame")
             self._scratch[name] = df
             self._normalization[name] = (df.normalization, tf.inverse(df.normalization))
-        self._context = {"version": data["version"], "cameras": [], "base": base,
+        self._context: dict[str, Any] = {"version": data["version"], "cameras": [], "base": base,
                          "background": self.canvas.background, "shading": None,
                          "segment_transform": None}
         # data segment index -> [(display-file segment name, viewport name)]
-        self._shown = {}
+        self._shown: dict[int, list[tuple[str, str]]] = {}
         for i, seg in enumerate(self.segments):
             shown = seg.get("viewport", names[0])
             several = isinstance(shown, list)
             self._shown[i] = [(f"{seg['name']}@{vp}" if several else seg["name"], vp)
                               for vp in (shown if several else [shown])]
-        self.moved = set()       # data segment indices whose transform is animated
-        self.changed = {}        # data segment index -> primitive indices animated
+        self.moved: set[int] = set()      # data segment indices whose transform is animated
+        self.changed: dict[int, set[int]] = {}  # data segment index -> primitive indices animated
         for tokens in targets:
-            i, what, j = _where(tokens, self.segments)
-            if what == "transform":
+            i, j = _where(tokens, self.segments)
+            if j is None:
                 self.moved.add(i)
             else:
                 self.changed.setdefault(i, set()).add(j)
         self.order = drawing_order(self.display_file)
 
-    def segments_at(self, data):
+    def segments_at(self, data: dict[str, Any]) -> list[Segment]:
         """The segments of the frame whose scene data is ``data`` (the base data with
         the animated values written in), in drawing order: display-file
         :class:`~scanline.display.file.Segment` objects, shared with the base where
         nothing changed."""
-        replaced = {}
+        replaced: dict[str, Segment] = {}
         for i in sorted(self.moved | set(self.changed)):
             seg = data["segments"][i]
             path = f"segments[{i}]"
@@ -106,24 +115,29 @@ class FramePlan:
         return [replaced.get(s.name, s) for s in self.order]
 
 
-def _where(tokens, segments):
-    """(data segment index, "transform" or "primitive", primitive index) of a track's
-    key path; raises _NoPlan for a path elsewhere."""
+def _where(tokens: "Sequence[_Token]",
+           segments: list[dict[str, Any]]) -> tuple[int, int | None]:
+    """(data segment index, primitive index) of a track's key path, the primitive
+    index None for the segment's transform; raises _NoPlan for a path elsewhere."""
     if len(tokens) < 3 or tokens[0] != "segments" or tokens[2] not in ("transform",
                                                                          "primitives"):
         raise _NoPlan()
-    index = tokens[1]
-    if isinstance(index, tuple):
-        index = next((k for k, s in enumerate(segments) if s.get("name") == index[1]), None)
+    token = tokens[1]
+    if isinstance(token, tuple):
+        index = next((k for k, s in enumerate(segments) if s.get("name") == token[1]), None)
         if index is None:            # (the full build finds, or refuses, the name)
             raise _NoPlan()
+    elif isinstance(token, int):
+        index = token
+    else:                            # (the scene's check refuses a key here)
+        raise _NoPlan()
     i = index % len(segments)
     if tokens[2] == "transform":
-        return i, "transform", None
+        return i, None
     if len(tokens) < 5 or not isinstance(tokens[3], int):
         raise _NoPlan()
     prims = segments[i]["primitives"]
-    return i, "primitive", tokens[3] % len(prims)
+    return i, tokens[3] % len(prims)
 
 
 class _NoPlan(Exception):
@@ -134,7 +148,8 @@ class _NoPlan(Exception):
 _FLAT = ("polyline", "polygon", "circle", "ellipse", "text", "markers")
 
 
-def plan(data, targets, base=None):
+def plan(data: dict[str, Any], targets: "Iterable[Sequence[_Token]]",
+         base: str | None = None) -> FramePlan | None:
     """A :class:`FramePlan` of ``data`` (already checked) for the tracks ``targets``
     (parsed key paths), or None when a frame has to be built in full: a scene with
     cameras, lights or shading, or tracks that reach other values than segment

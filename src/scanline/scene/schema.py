@@ -10,6 +10,10 @@ message starts with the key path of the offending value
 import math
 import numbers
 import re
+from typing import TYPE_CHECKING, Any, Callable, Collection, Iterable, NoReturn, TypeVar
+
+import numpy as np
+from numpy.typing import NDArray
 
 from .. import transform as tf
 from ..display import DisplayFile
@@ -17,6 +21,11 @@ from ..display.viewing import aspect
 from ..errors import ScanlineError
 from ..framebuffer import check_image_size
 from .files import SceneError
+
+if TYPE_CHECKING:
+    from .shaded import Shading
+
+_T = TypeVar("_T")
 
 #: The schema versions this module reads.
 VERSIONS = (1, 2)
@@ -60,11 +69,12 @@ REQUIRED = {"polyline": ("points",), "polygon": ("points",), "circle": ("center"
 _STEPS = ("translate", "rotate", "scale", "reflect", "shear", "matrix")
 
 
-def _fail(path, message):
+def _fail(path: str, message: str) -> NoReturn:
     raise SceneError(f"{path} {message}", path=path)
 
 
-def _table(value, path, known, required=()):
+def _table(value: object, path: str, known: Collection[str],
+           required: Iterable[str] = ()) -> dict[str, Any]:
     if not isinstance(value, dict):
         _fail(path, f"must be a table (an object), got {_kind(value)}")
     for k in value:
@@ -77,22 +87,22 @@ def _table(value, path, known, required=()):
     return value
 
 
-def _kind(value):
+def _kind(value: object) -> str:
     return {dict: "a table", list: "an array", str: "a string", bool: "a boolean",
             int: "an integer", float: "a number"}.get(type(value), f"a {type(value).__name__}")
 
 
-def _list(value, path):
+def _list(value: object, path: str) -> list[Any]:
     if not isinstance(value, list):
         _fail(path, f"must be an array, got {_kind(value)}")
     return value
 
 
-def _join(path, key):
+def _join(path: str, key: str) -> str:
     return f"{path}.{key}" if path else key
 
 
-def _call(where, function, /, *args, **kwargs):
+def _call(where: str, function: Callable[..., _T], /, *args: Any, **kwargs: Any) -> _T:
     """Call a display-file function; its errors name the argument, which is the scene
     key, so the message gets the key path ``where`` in front.  (Positional-only: a
     text primitive passes its own ``path`` keyword, the text path, through.)"""
@@ -104,7 +114,7 @@ def _call(where, function, /, *args, **kwargs):
         raise SceneError(message, path=named.group() if named else where) from None
 
 
-def angle(value, path):
+def angle(value: object, path: str) -> float:
     """An angle given as ``{degrees = x}`` or ``{radians = x}`` -> radians."""
     if isinstance(value, dict) and len(value) == 1 and set(value) <= {"degrees", "radians"}:
         (unit, x), = value.items()
@@ -114,13 +124,13 @@ def angle(value, path):
     _fail(path, f"must say its unit: {{degrees = 30}} or {{radians = 0.5}}, got {value!r}")
 
 
-def _real(value, path):
+def _real(value: object, path: str) -> float:
     if isinstance(value, numbers.Real) and not isinstance(value, bool) and math.isfinite(value):
         return float(value)
     _fail(path, f"must be a finite number, got {value!r}")
 
 
-def _step(step, path):
+def _step(step: object, path: str) -> NDArray[np.float64]:
     """One transformation step -> its 3x3 matrix (in world coordinates)."""
     if not isinstance(step, dict) or len(step) != 1:
         _fail(path, "must be a table with one key: " + ", ".join(_STEPS)
@@ -163,7 +173,7 @@ def _step(step, path):
     _fail(path, f"has an unknown transformation {name!r}; use one of {', '.join(_STEPS)}")
 
 
-def transformation(steps, path):
+def transformation(steps: object, path: str) -> NDArray[np.float64]:
     """A list of steps, applied in the order listed (the first acts first)."""
     m = tf.compose()
     for i, step in enumerate(_list(steps, path)):
@@ -171,7 +181,7 @@ def transformation(steps, path):
     return m
 
 
-def _flag(value, path):
+def _flag(value: object, path: str) -> bool:
     if isinstance(value, bool):
         return value
     _fail(path, f"must be true or false, got {value!r}")
@@ -180,7 +190,7 @@ def _flag(value, path):
 class Canvas:
     """The device: size, background, raster mode, highlight color."""
 
-    def __init__(self, data, path="canvas"):
+    def __init__(self, data: object, path: str = "canvas") -> None:
         from ..display.primitives import color
 
         d = _table(data, path, _CANVAS)
@@ -199,14 +209,15 @@ class Canvas:
         self.mode = mode
         self.antialias = _flag(d.get("antialias", False), f"{path}.antialias")
         self.path = path
+        self.shading: "Shading | None" = None
 
-    def nbytes(self, three_d=False):
+    def nbytes(self, three_d: bool = False) -> int:
         """The bytes drawing this canvas takes: its frame buffer, and with
         ``three_d`` what 3-D surfaces need per pixel (:data:`SURFACE_BYTES_PER_PIXEL`)."""
         per_pixel = _PIXEL_BYTES[self.mode] + (SURFACE_BYTES_PER_PIXEL if three_d else 0)
         return self.width * self.height * per_pixel
 
-    def check_budget(self, three_d=False):
+    def check_budget(self, three_d: bool = False) -> None:
         """Refuse, before anything is drawn, a canvas whose :meth:`nbytes` passes the
         memory budget (:mod:`scanline.budget`): a SceneError naming
         ``canvas.width x canvas.height``."""
@@ -223,13 +234,13 @@ class Canvas:
             raise SceneError(str(error), path=f"{path}.width") from None
 
 
-def _size(value, path):
+def _size(value: object, path: str) -> int:
     if isinstance(value, int) and not isinstance(value, bool) and 2 <= value <= MAX_SIZE:
         return value
     _fail(path, f"must be an integer from 2 to {MAX_SIZE}, got {value!r}")
 
 
-def build(data, base=None):
+def build(data: object, base: str | None = None) -> tuple[Canvas, DisplayFile]:
     """Check scene data (a dict) and build it: returns (Canvas, DisplayFile).  ``base``
     is the folder that mesh files are named relative to (the scene file's)."""
     from . import schema3d
@@ -269,7 +280,8 @@ def build(data, base=None):
     return canvas, df
 
 
-def _viewports(data, default_window, df):
+def _viewports(data: object, default_window: object,
+               df: DisplayFile) -> dict[str, dict[str, Any]]:
     if data is None:
         data = [{"name": "main"}]
     out = {}
@@ -299,7 +311,8 @@ def _viewports(data, default_window, df):
     return out
 
 
-def _segment(data, path, df, viewports, default, context):
+def _segment(data: object, path: str, df: DisplayFile, viewports: dict[str, dict[str, Any]],
+             default: str, context: dict[str, Any]) -> None:
     """Build one scene segment: one display-file segment per viewport it is shown in
     (``name`` alone, or ``name@viewport`` when ``viewport`` lists several)."""
     s = _table(data, path, _SEGMENT, ("name",))
@@ -319,7 +332,8 @@ def _segment(data, path, df, viewports, default, context):
                       context)
 
 
-def _fill_segment(s, name, path, df, viewport, context):
+def _fill_segment(s: dict[str, Any], name: str, path: str, df: DisplayFile,
+                  viewport: dict[str, Any], context: dict[str, Any]) -> None:
     if name in df:
         _fail(f"{path}.name", f"repeats the segment name {name!r}")
     for where, owner in ((f"{path}.camera", s), (f"{viewport['path']}.camera", viewport)):
@@ -349,7 +363,7 @@ def _fill_segment(s, name, path, df, viewport, context):
         df.close_segment()
 
 
-def _primitive(data, path, df, context):
+def _primitive(data: object, path: str, df: DisplayFile, context: dict[str, Any]) -> None:
     from . import schema3d
 
     if not isinstance(data, dict):
@@ -377,12 +391,13 @@ def _primitive(data, path, df, context):
         args["closed"] = _flag(args["closed"], f"{path}.closed")
     if "align" in args and isinstance(args["align"], list):
         args["align"] = tuple(args["align"])
-    method = {"polyline": df.polyline, "polygon": df.polygon, "circle": df.circle,
-              "ellipse": df.ellipse, "text": df.text, "markers": df.markers}[kind]
-    _call(path, method, **args)
+    methods: dict[str, Callable[..., object]] = {
+        "polyline": df.polyline, "polygon": df.polygon, "circle": df.circle,
+        "ellipse": df.ellipse, "text": df.text, "markers": df.markers}
+    _call(path, methods[kind], **args)
 
 
-def _border(df, name, viewport, priority):
+def _border(df: DisplayFile, name: str, viewport: dict[str, Any], priority: float) -> None:
     """A segment with the viewport's outline, drawn under everything else."""
     seg = f"viewport:{name}"
     if seg in df:

@@ -7,12 +7,21 @@ offending value (``cameras[0].projection.fov must ...``).
 
 import numbers
 import os
+from typing import TYPE_CHECKING, Any, Callable, Collection
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import transform3d as t3
 from ..errors import ScanlineError
 from .files import SceneError
+from . import schema
+
+if TYPE_CHECKING:
+    from ..display import DisplayFile
+    from ..mesh import Mesh
+    from ..projection import Projection
+    from .shaded import Shading
 
 #: Keys of a camera.
 CAMERA = {"name", "eye", "target", "up", "view_reference_point", "view_plane_normal",
@@ -67,12 +76,12 @@ KEPT_BYTES_PER_FACE = 16
 KEPT_BYTES_PER_INDEX = 24
 
 
-def _kept_bytes(n_vertices, n_faces, n_indices):
+def _kept_bytes(n_vertices: int, n_faces: int, n_indices: int) -> int:
     return (n_vertices * KEPT_BYTES_PER_VERTEX + n_faces * KEPT_BYTES_PER_FACE
             + n_indices * KEPT_BYTES_PER_INDEX)
 
 
-def _expected_size(gen, args):
+def _expected_size(gen: str, args: dict[str, Any]) -> tuple[int, int, int] | None:
     """(vertices, faces, face indices) the generator ``gen`` will make from
     ``args`` (the scene's keys as arguments), or None where it cannot say before
     making it; a bad resolution raises the generator's own error."""
@@ -80,9 +89,11 @@ def _expected_size(gen, args):
 
     from ..mesh import shapes
 
-    function = {"sphere": shapes.sphere, "ellipsoid": shapes.ellipsoid,
-                "superellipsoid": shapes.superellipsoid, "torus": shapes.torus,
-                "supertoroid": shapes.supertoroid}.get(gen)
+    functions: dict[str, Callable[..., Mesh]] = {
+        "sphere": shapes.sphere, "ellipsoid": shapes.ellipsoid,
+        "superellipsoid": shapes.superellipsoid, "torus": shapes.torus,
+        "supertoroid": shapes.supertoroid}
+    function = functions.get(gen)
     if gen in ("cube", "box"):
         return 8, 6, 24
     if function is not None:
@@ -99,8 +110,9 @@ def _expected_size(gen, args):
         return None
     if gen == "teapot":
         n = args.get("n", 6)
-        if isinstance(n, numbers.Integral) and not isinstance(n, bool) and n > 0:
-            return 32 * (n + 1) ** 2, 64 * n * n, 192 * n * n
+        k = int(n) if isinstance(n, numbers.Integral) and not isinstance(n, bool) else 0
+        if k > 0:
+            return 32 * (k + 1) ** 2, 64 * k * k, 192 * k * k
         return None
     profile = args.get("profile")
     n = len(profile) if isinstance(profile, (list, tuple)) else None
@@ -109,12 +121,14 @@ def _expected_size(gen, args):
     if args.get("kind", "rotational") == "translational":
         return 2 * n, n + 2, 6 * n
     steps = args.get("steps", 32)
-    if isinstance(steps, numbers.Integral) and not isinstance(steps, bool) and steps > 0:
-        return (steps + 1) * n, steps * n, 4 * steps * n
+    k = int(steps) if isinstance(steps, numbers.Integral) and not isinstance(steps, bool) else 0
+    if k > 0:
+        return (k + 1) * n, k * n, 4 * k * n
     return None
 
 
-def _count(totals, path, size, kept=False):
+def _count(totals: dict[str, int] | None, path: str, size: tuple[int, int, int] | None,
+           kept: bool = False) -> None:
     """Add a mesh of ``size`` = (vertices, faces, face indices) to the scene's
     ``totals`` after checking that the scene's memory -- what it keeps so far, and
     this mesh's making (its peak, or with ``kept`` only what it keeps) -- fits the
@@ -144,30 +158,25 @@ def _count(totals, path, size, kept=False):
     totals["faces"] += nf
 
 
-def _schema():
-    from . import schema
-
-    return schema
+def _real(value: object, path: str) -> float:
+    return schema._real(value, path)
 
 
-def _real(value, path):
-    return _schema()._real(value, path)
-
-
-def _vector(value, path, size=3):
+def _vector(value: object, path: str, size: int = 3) -> list[float]:
     if not isinstance(value, list) or len(value) != size:
-        _schema()._fail(path, f"must be [{', '.join('xyzw'[:size])}], {size} numbers, got "
+        schema._fail(path, f"must be [{', '.join('xyzw'[:size])}], {size} numbers, got "
                         f"{value!r}")
     return [_real(c, f"{path}[{i}]") for i, c in enumerate(value)]
 
 
-def _arguments(data, path, angles=ANGLES):
+def _arguments(data: dict[str, Any], path: str,
+               angles: Collection[str] = ANGLES) -> dict[str, Any]:
     """``data`` with angles turned into radians and lists into tuples."""
-    out = {}
+    out: dict[str, Any] = {}
     for key, value in data.items():
         here = f"{path}.{key}"
         if key in angles:
-            out[key] = _schema().angle(value, here)
+            out[key] = schema.angle(value, here)
         elif isinstance(value, list) and value and all(isinstance(x, list) for x in value):
             out[key] = [tuple(x) for x in value]
         elif isinstance(value, list):
@@ -177,118 +186,115 @@ def _arguments(data, path, angles=ANGLES):
     return out
 
 
-def projection(data, path):
+def projection(data: object, path: str) -> "Projection":
     """A projection table -> a Projection."""
     from .. import projection as pj
 
-    s = _schema()
-    t = s._table(data, path, set().union(*PROJECTIONS.values()) | {"type"}, ("type",))
+    t = schema._table(data, path, set().union(*PROJECTIONS.values()) | {"type"}, ("type",))
     kind = t["type"]
     if not isinstance(kind, str) or kind not in PROJECTIONS:
-        s._fail(f"{path}.type", f"must be one of {', '.join(PROJECTIONS)}; got {kind!r}")
-    s._table(data, path, PROJECTIONS[kind] | {"type"})
+        schema._fail(f"{path}.type", f"must be one of {', '.join(PROJECTIONS)}; got {kind!r}")
+    schema._table(data, path, PROJECTIONS[kind] | {"type"})
     args = _arguments({k: x for k, x in t.items() if k != "type"}, path)
-    function = {"perspective": pj.perspective, "frustum": pj.frustum,
-                "orthographic": pj.orthographic, "isometric": pj.isometric,
-                "dimetric": pj.dimetric, "trimetric": pj.trimetric, "oblique": pj.oblique,
-                "parallel": pj.parallel}[kind]
-    return s._call(path, function, **args)
+    functions: dict[str, Callable[..., Projection]] = {
+        "perspective": pj.perspective, "frustum": pj.frustum,
+        "orthographic": pj.orthographic, "isometric": pj.isometric,
+        "dimetric": pj.dimetric, "trimetric": pj.trimetric, "oblique": pj.oblique,
+        "parallel": pj.parallel}
+    return schema._call(path, functions[kind], **args)
 
 
-def cameras(data, df):
+def cameras(data: object, df: "DisplayFile") -> list[str]:
     """Build the scene's cameras into the display file; returns their names."""
     from ..projection import Camera
 
-    s = _schema()
-    names = []
-    for i, c in enumerate(s._list(data, "cameras")):
+    names: list[str] = []
+    for i, c in enumerate(schema._list(data, "cameras")):
         path = f"cameras[{i}]"
-        t = s._table(c, path, CAMERA)
+        t = schema._table(c, path, CAMERA)
         name = t.get("name", f"camera{i}")
         if not isinstance(name, str) or not name:
-            s._fail(f"{path}.name", f"must be a non-empty string, got {name!r}")
+            schema._fail(f"{path}.name", f"must be a non-empty string, got {name!r}")
         if name in names:
-            s._fail(f"{path}.name", f"repeats the camera name {name!r}")
+            schema._fail(f"{path}.name", f"repeats the camera name {name!r}")
         args = {k: (tuple(_vector(x, f"{path}.{k}", 6 if k == "viewport" else 3))
                     if k not in ("name", "projection", "keep_aspect") else x)
                 for k, x in t.items() if k not in ("name",)}
         if "projection" in args:
             args["projection"] = projection(args["projection"], f"{path}.projection")
         if "keep_aspect" in args:
-            args["keep_aspect"] = s._flag(args["keep_aspect"], f"{path}.keep_aspect")
-        camera = s._call(path, Camera, **args)
+            args["keep_aspect"] = schema._flag(args["keep_aspect"], f"{path}.keep_aspect")
+        camera = schema._call(path, Camera, **args)
         df.set_camera(camera, name)
         names.append(name)
     if not names:
-        s._fail("cameras", "must hold at least one camera")
+        schema._fail("cameras", "must hold at least one camera")
     return names
 
 
-def step(step_, path):
+def step(step_: object, path: str) -> NDArray[np.float64]:
     """One 3-D transformation step -> its 4x4 matrix."""
-    s = _schema()
     if not isinstance(step_, dict) or len(step_) != 1:
-        s._fail(path, "must be a table with one key: " + ", ".join(_STEPS)
+        schema._fail(path, "must be a table with one key: " + ", ".join(_STEPS)
                 + " (e.g. {translate = [1, 0, 2]})")
     (name, arg), = step_.items()
     here = f"{path}.{name}"
     if name == "translate":
         return t3.translation(*_vector(arg, here))
     if name == "rotate":
-        a = s._table(arg, here, {"degrees", "radians", "axis", "pivot", "quaternion"})
+        a = schema._table(arg, here, {"degrees", "radians", "axis", "pivot", "quaternion"})
         if "quaternion" in a:
             return _quaternion_step(a, here)
         unit = {k: a[k] for k in a if k in ("degrees", "radians")}
         axis = a.get("axis", "z")
         if isinstance(axis, list):
             if len(axis) != 2:
-                s._fail(f"{here}.axis", f"must be 'x', 'y', 'z' or two points [[x, y, z], "
+                schema._fail(f"{here}.axis", f"must be 'x', 'y', 'z' or two points [[x, y, z], "
                         f"[x, y, z]], got {axis!r}")
             axis = (_vector(axis[0], f"{here}.axis[0]"), _vector(axis[1], f"{here}.axis[1]"))
         pivot = a.get("pivot")
-        return s._call(here, t3.rotation, s.angle(unit, here), axis,
+        return schema._call(here, t3.rotation, schema.angle(unit, here), axis,
                        None if pivot is None else _vector(pivot, f"{here}.pivot"))
     if name == "scale":
         if isinstance(arg, dict):
-            a = s._table(arg, here, {"factors", "fixed"}, ("factors",))
+            a = schema._table(arg, here, {"factors", "fixed"}, ("factors",))
             factors, fixed = a["factors"], a.get("fixed")
         else:
             factors, fixed = arg, None
         f = [factors] if isinstance(factors, numbers.Real) else factors
         if not isinstance(f, list) or len(f) not in (1, 3):
-            s._fail(here, f"must be a factor or [sx, sy, sz], got {factors!r}")
-        return s._call(here, t3.scaling, *f, fixed=None if fixed is None
+            schema._fail(here, f"must be a factor or [sx, sy, sz], got {factors!r}")
+        return schema._call(here, t3.scaling, *f, fixed=None if fixed is None
                        else _vector(fixed, f"{here}.fixed"))
     if name == "reflect":
         if isinstance(arg, dict):
-            a = s._table(arg, here, {"point", "normal"}, ("point", "normal"))
-            return s._call(here, t3.reflection, _vector(a["point"], f"{here}.point"),
+            a = schema._table(arg, here, {"point", "normal"}, ("point", "normal"))
+            return schema._call(here, t3.reflection, _vector(a["point"], f"{here}.point"),
                            _vector(a["normal"], f"{here}.normal"))
-        return s._call(here, t3.reflection, arg)
+        return schema._call(here, t3.reflection, arg)
     if name == "shear":
-        a = s._table(arg, here, {"axis", "a", "b", "reference"})
-        return s._call(here, t3.shear, a.get("axis", "z"), a.get("a", 0.0), a.get("b", 0.0),
+        a = schema._table(arg, here, {"axis", "a", "b", "reference"})
+        return schema._call(here, t3.shear, a.get("axis", "z"), a.get("a", 0.0), a.get("b", 0.0),
                        a.get("reference", 0.0))
     if name == "matrix":
-        return s._call(here, t3.compose, arg)
-    s._fail(path, f"has an unknown transformation {name!r}; use one of {', '.join(_STEPS)}")
+        return schema._call(here, t3.compose, arg)
+    schema._fail(path, f"has an unknown transformation {name!r}; use one of {', '.join(_STEPS)}")
 
 
-def _quaternion_step(a, here):
+def _quaternion_step(a: dict[str, Any], here: str) -> NDArray[np.float64]:
     """``{rotate = {quaternion = [w, x, y, z], pivot = [x, y, z]}}``: the rotation of a
     unit quaternion (Hearn & Baker 11-2; any nonzero multiple is the same rotation),
     about the origin or the pivot."""
     from ..transform3d.quaternion import Quaternion
 
-    s = _schema()
     extra = sorted(set(a) - {"quaternion", "pivot"})
     if extra:
-        s._fail(f"{here}.{extra[0]}", "cannot go with a quaternion (it holds the axis and "
+        schema._fail(f"{here}.{extra[0]}", "cannot go with a quaternion (it holds the axis and "
                 "the angle); give one or the other")
     q = a["quaternion"]
     if not isinstance(q, list) or len(q) != 4:
-        s._fail(f"{here}.quaternion", f"must be four numbers [w, x, y, z], got {q!r}")
-    q = s._call(here, Quaternion.from_array,
+        schema._fail(f"{here}.quaternion", f"must be four numbers [w, x, y, z], got {q!r}")
+    q = schema._call(here, Quaternion.from_array,
                 [_real(c, f"{here}.quaternion[{i}]") for i, c in enumerate(q)], "quaternion")
     m = q.matrix()
     pivot = a.get("pivot")
@@ -298,24 +304,24 @@ def _quaternion_step(a, here):
     return t3.compose(t3.translation(*p), m, t3.translation(*(-c for c in p)))
 
 
-def transformation(steps, path):
+def transformation(steps: object, path: str) -> NDArray[np.float64]:
     """A list of 3-D steps, applied in the order listed (the first acts first)."""
     m = t3.compose()
-    for i, st in enumerate(_schema()._list(steps, path)):
+    for i, st in enumerate(schema._list(steps, path)):
         m = t3.compose(step(st, f"{path}[{i}]"), m)
     return m
 
 
-def _mesh(data, path, base, totals=None):
+def _mesh(data: dict[str, Any], path: str, base: str | None,
+          totals: dict[str, int] | None = None) -> "Mesh":
     from .. import mesh as ms
 
-    s = _schema()
     if ("file" in data) == ("generator" in data):
-        s._fail(path, "needs either file (a mesh file) or generator (cube, sphere, ...)")
+        schema._fail(path, "needs either file (a mesh file) or generator (cube, sphere, ...)")
     if "file" in data:
         name = data["file"]
         if not isinstance(name, str) or not name:
-            s._fail(f"{path}.file", f"must be a file name, got {name!r}")
+            schema._fail(f"{path}.file", f"must be a file name, got {name!r}")
         full = name if os.path.isabs(name) or base is None else os.path.join(base, name)
         try:
             # ms.load reads only a regular file (no FIFO, device or folder, whatever a
@@ -328,34 +334,34 @@ def _mesh(data, path, base, totals=None):
         return mesh
     gen = data["generator"]
     if not isinstance(gen, str) or gen not in GENERATORS:
-        s._fail(f"{path}.generator", f"must be one of {', '.join(GENERATORS)}; got {gen!r}")
+        schema._fail(f"{path}.generator", f"must be one of {', '.join(GENERATORS)}; got {gen!r}")
     allowed = GENERATORS[gen]
     given = {k: x for k, x in data.items() if k in set().union(*GENERATORS.values())}
     for k in given:
         if k not in allowed:
-            s._fail(f"{path}.{k}", f"is not a key of the {gen} generator; its keys: "
+            schema._fail(f"{path}.{k}", f"is not a key of the {gen} generator; its keys: "
                     + ", ".join(sorted(allowed)))
     for key, top in LIMITS.items():
         value = given.get(key)
         for i, x in enumerate(value if isinstance(value, list) else [value]):
-            if isinstance(x, numbers.Real) and not isinstance(x, bool) and x > top:
+            if isinstance(x, numbers.Real) and not isinstance(x, bool) and float(x) > top:
                 where = f"{path}.{key}" + (f"[{i}]" if isinstance(value, list) else "")
-                s._fail(where, f"is {x!r}; a scene's meshes allow at most {top}")
+                schema._fail(where, f"is {x!r}; a scene's meshes allow at most {top}")
     for key in ("profile", "vertices", "faces"):
         if isinstance(given.get(key), list) and len(given[key]) > 100_000:
-            s._fail(f"{path}.{key}", "holds more than 100000 items")
+            schema._fail(f"{path}.{key}", "holds more than 100000 items")
     args = _arguments(given, path)
-    _count(totals, path, s._call(path, _expected_size, gen, args))
+    _count(totals, path, schema._call(path, _expected_size, gen, args))
     if gen == "polygons":
         for key in ("vertices", "faces"):
             if key not in args:
-                s._fail(path, f"needs the key '{key}' (vertices: a list of [x, y, z]; faces: "
+                schema._fail(path, f"needs the key '{key}' (vertices: a list of [x, y, z]; faces: "
                         "a list of vertex-number lists, from 0)")
-        return s._call(path, ms.Mesh, args["vertices"], args["faces"])
+        return schema._call(path, ms.Mesh, args["vertices"], args["faces"])
     if gen == "sweep":
         if "profile" not in args:
-            s._fail(path, "needs the key 'profile' (a list of points [x, y])")
-        return s._call(path, ms.sweep, args.pop("profile"), **args)
+            schema._fail(path, "needs the key 'profile' (a list of points [x, y])")
+        return schema._call(path, ms.sweep, args.pop("profile"), **args)
     if "resolution" in args and isinstance(args["resolution"], tuple):
         args["resolution"] = tuple(args["resolution"])
     if gen == "teapot" and "parts" in args:
@@ -363,30 +369,33 @@ def _mesh(data, path, base, totals=None):
         if isinstance(parts, str):
             parts = [parts]
         if not isinstance(parts, tuple | list) or not all(isinstance(p, str) for p in parts):
-            s._fail(f"{path}.parts", f"must be a part name or a list of them (rim, body, "
+            schema._fail(f"{path}.parts", f"must be a part name or a list of them (rim, body, "
                     f"handle, spout, lid, bottom), got {data['parts']!r}")
         args["parts"] = list(parts)
-    function = {"cube": ms.cube, "box": ms.box, "sphere": ms.sphere, "ellipsoid": ms.ellipsoid,
-                "torus": ms.torus, "superellipsoid": ms.superellipsoid,
-                "supertoroid": ms.supertoroid, "teapot": ms.teapot}[gen]
+    functions: dict[str, Callable[..., Mesh]] = {
+        "cube": ms.cube, "box": ms.box, "sphere": ms.sphere, "ellipsoid": ms.ellipsoid,
+        "torus": ms.torus, "superellipsoid": ms.superellipsoid,
+        "supertoroid": ms.supertoroid, "teapot": ms.teapot}
+    function = functions[gen]
     if gen == "ellipsoid" and "radii" in args:
         radii = args.pop("radii")
         if not isinstance(radii, tuple) or len(radii) != 3:
-            s._fail(f"{path}.radii", f"must be [rx, ry, rz], got {radii!r}")
+            schema._fail(f"{path}.radii", f"must be [rx, ry, rz], got {radii!r}")
         args.update(rx=radii[0], ry=radii[1], rz=radii[2])
-    return s._call(path, function, **args)
+    return schema._call(path, function, **args)
 
 
-def primitive(kind, data, path, df, background, base, shading=None, segment=None, *,
-              totals=None):
+def primitive(kind: str, data: dict[str, Any], path: str, df: "DisplayFile", background: Any,
+              base: str | None, shading: "Shading | None" = None,
+              segment: NDArray[np.float64] | None = None, *,
+              totals: dict[str, int] | None = None) -> None:
     """Build one 3-D primitive into the open segment of ``df``; a mesh with a
     ``material`` becomes a surface of ``shading`` (:mod:`scanline.scene.shaded`),
     transformed by its own 3-D transformation (``segment``, the segment's 2-D one,
     must be the identity).  ``totals`` (the scene's memory so far, see
     :func:`scanline.scene.schema.build`) gets each mesh added, checked against the
     memory budget."""
-    s = _schema()
-    s._table(data, path, PRIMITIVES[kind] | {"type"},
+    schema._table(data, path, PRIMITIVES[kind] | {"type"},
              ("points",) if kind == "polyline3d" else ())
     line = {k: x for k, x in data.items() if k in _LINE and k != "color"}
     if isinstance(line.get("dash"), list):
@@ -394,35 +403,37 @@ def primitive(kind, data, path, df, background, base, shading=None, segment=None
     m = transformation(data.get("transform", []), f"{path}.transform")
     if kind == "polyline3d":
         pts = [_vector(p, f"{path}.points[{i}]") for i, p in
-               enumerate(s._list(data["points"], f"{path}.points"))]
+               enumerate(schema._list(data["points"], f"{path}.points"))]
         if not pts:
-            s._fail(f"{path}.points", "needs at least one point")
-        pts = t3.apply(m, pts)
-        closed = s._flag(data.get("closed", False), f"{path}.closed")
-        s._call(path, df.polyline3d, pts, data.get("color", "white"), closed, **line)
+            schema._fail(f"{path}.points", "needs at least one point")
+        closed = schema._flag(data.get("closed", False), f"{path}.closed")
+        schema._call(path, df.polyline3d, t3.apply(m, pts), data.get("color", "white"), closed, **line)
         return
     mesh = _mesh(data, path, base, totals)
     for key in ("emission", "reflectance"):
         if key in data and (shading is None or shading.radiosity is None):
-            s._fail(f"{path}.{key}", "is a radiosity value: it needs the scene's radiosity "
+            schema._fail(f"{path}.{key}", "is a radiosity value: it needs the scene's radiosity "
                     "table (radiosity = {subdivisions = 8})")
         if key in data and "material" not in data:
-            s._fail(f"{path}.{key}", "needs the mesh's material (a radiosity surface is a "
+            schema._fail(f"{path}.{key}", "needs the mesh's material (a radiosity surface is a "
                     "shaded surface)")
     if "material" in data:
         if shading is None:
-            s._fail(f"{path}.material", "needs the scene's lights, materials or shading keys "
+            schema._fail(f"{path}.material", "needs the scene's lights, materials or shading keys "
                     "(add [materials.NAME])")
         if segment is not None and not (segment == np.eye(3)).all():
-            s._fail(f"{path}.material", "makes a shaded surface, which the segment's 2-D "
+            schema._fail(f"{path}.material", "makes a shaded surface, which the segment's 2-D "
                     "transform cannot move: give the mesh its own (3-D) transform")
     if not (m == t3.compose()).all():
-        mesh = s._call(f"{path}.transform", mesh.transformed, m)
+        mesh = schema._call(f"{path}.transform", mesh.transformed, m)
     if "material" in data:
-        shading.surface(mesh, data["material"], path, df.camera(df._current_camera),
+        # checked above: a material needs the shading keys; a 3-D primitive, a camera
+        camera = df._current_camera
+        assert shading is not None and camera is not None
+        shading.surface(mesh, data["material"], path, df.camera(camera),
                         data.get("emission"), data.get("reflectance"))
         return
     cue = data.get("depth_cue")
     if isinstance(cue, list):
         cue = tuple(cue)
-    s._call(path, df.mesh, mesh, data.get("color"), cue, background, **line)
+    schema._call(path, df.mesh, mesh, data.get("color"), cue, background, **line)

@@ -11,9 +11,19 @@ surfaces share one depth test), on the whole canvas; the display file (wireframe
 lines, text) is drawn over them.
 """
 
+from typing import TYPE_CHECKING, Any, Callable
+
 import numpy as np
 
 from .. import lighting
+from . import schema
+
+if TYPE_CHECKING:
+    from ..framebuffer import FrameBuffer
+    from ..lighting.lights import Light
+    from ..mesh import Mesh
+    from ..projection import Camera
+    from ..texture import CubeMap, Texture
 
 #: Top-level keys this module reads.
 KEYS = {"lights", "materials", "method", "shading", "radiosity"}
@@ -46,35 +56,28 @@ RADIOSITY = {"subdivisions", "method", "form_factors", "resolution", "tolerance"
              "max_iterations", "shooting_group", "exposure", "antialias"}
 
 
-def _schema():
-    from . import schema
-
-    return schema
-
-
-def _tuples(value):
+def _tuples(value: Any) -> Any:
     if isinstance(value, list):
         return tuple(_tuples(x) for x in value)
     return value
 
 
-def light(data, path):
+def light(data: object, path: str) -> "Light":
     """A light table -> a light of :mod:`scanline.lighting`."""
-    s = _schema()
-    t = s._table(data, path, set().union(*LIGHTS.values()) | {"type"}, ("type",))
+    t = schema._table(data, path, set().union(*LIGHTS.values()) | {"type"}, ("type",))
     kind = t["type"]
     if not isinstance(kind, str) or kind not in LIGHTS:
-        s._fail(f"{path}.type", f"must be one of {', '.join(LIGHTS)}; got {kind!r}")
-    s._table(data, path, LIGHTS[kind] | {"type"}, REQUIRED.get(kind, ()))
-    args = {k: (s.angle(x, f"{path}.{k}") if k == "angle" else _tuples(x))
+        schema._fail(f"{path}.type", f"must be one of {', '.join(LIGHTS)}; got {kind!r}")
+    schema._table(data, path, LIGHTS[kind] | {"type"}, REQUIRED.get(kind, ()))
+    args = {k: (schema.angle(x, f"{path}.{k}") if k == "angle" else _tuples(x))
             for k, x in t.items() if k != "type"}
-    make = {"ambient": lighting.AmbientLight, "directional": lighting.DirectionalLight,
+    make: Callable[..., Light] = {"ambient": lighting.AmbientLight, "directional": lighting.DirectionalLight,
             "point": lighting.PointLight, "spot": lighting.SpotLight,
             "area": lighting.AreaLight}[kind]
-    return s._call(path, make, **args)
+    return schema._call(path, make, **args)
 
 
-def texture(value, path, base=None):
+def texture(value: object, path: str, base: str | None = None) -> "Texture":
     """A material's texture key -> a :class:`scanline.Texture`: an image file's name
     (relative to the scene file's folder ``base``), or a table naming a procedural
     texture of :mod:`scanline.texture` and its keywords (``size``, ``seed``,
@@ -84,21 +87,21 @@ def texture(value, path, base=None):
 
     from .. import texture as tx
 
-    s = _schema()
     if isinstance(value, str) and value:
         full = value if os.path.isabs(value) or base is None else os.path.join(base, value)
-        return s._call(path, tx.Texture, full)
+        return schema._call(path, tx.Texture, full)
     if not isinstance(value, dict) or value.get("procedural") not in PROCEDURAL:
-        s._fail(path, "must be an image file's name or a table {procedural = "
+        schema._fail(path, "must be an image file's name or a table {procedural = "
                       f"{' | '.join(repr(p) for p in PROCEDURAL)}, ...}}, got {value!r}")
-    make = getattr(tx, value["procedural"])
+    make: Callable[..., Texture] = getattr(tx, value["procedural"])
     known = (set(inspect.signature(make).parameters) - {"texture"}) | {"filter", "wrap"}
-    s._table(value, path, known | {"procedural"})
-    return s._call(path, make, **{k: _tuples(x) for k, x in value.items()
+    schema._table(value, path, known | {"procedural"})
+    return schema._call(path, make, **{k: _tuples(x) for k, x in value.items()
                                   if k != "procedural"})
 
 
-def environment(value, path, base=None):
+def environment(value: object, path: str,
+                base: str | None = None) -> "CubeMap | Texture":
     """A material's ``environment`` key -> a :class:`scanline.texture.CubeMap` for a
     table ``{cube = [+x, -x, +y, -y, +z, -z files] | "cross file", filter = ...}``
     (files relative to the scene file's folder ``base``), else a latitude-longitude
@@ -109,23 +112,22 @@ def environment(value, path, base=None):
 
     if not (isinstance(value, dict) and "cube" in value):
         return texture(value, path, base)
-    s = _schema()
-    t = s._table(value, path, CUBE, ("cube",))
+    t = schema._table(value, path, CUBE, ("cube",))
     faces = t["cube"]
 
-    def place(name, where):
+    def place(name: object, where: str) -> str:
         if not isinstance(name, str) or not name:
-            s._fail(where, f"must be an image file's name, got {name!r}")
+            schema._fail(where, f"must be an image file's name, got {name!r}")
         return name if os.path.isabs(name) or base is None else os.path.join(base, name)
 
     if isinstance(faces, list):
         if len(faces) != 6:
-            s._fail(f"{path}.cube", f"must be six image files (+x, -x, +y, -y, +z, -z) or "
+            schema._fail(f"{path}.cube", f"must be six image files (+x, -x, +y, -y, +z, -z) or "
                                     f"one cross image, got {len(faces)}")
         faces = [place(f, f"{path}.cube[{i}]") for i, f in enumerate(faces)]
     else:
         faces = place(faces, f"{path}.cube")
-    return s._call(path, CubeMap, faces, **{k: x for k, x in t.items() if k != "cube"})
+    return schema._call(path, CubeMap, faces, **{k: x for k, x in t.items() if k != "cube"})
 
 
 class Shading:
@@ -134,48 +136,47 @@ class Shading:
     :func:`scanline.render`, and the ``surfaces`` the mesh primitives add.  ``base``:
     the scene file's folder, where texture files are found."""
 
-    def __init__(self, data, base=None):
-        s = _schema()
-        self.lights = None
+    def __init__(self, data: dict[str, Any], base: str | None = None) -> None:
+        self.lights: list[Light] | None = None
         if "lights" in data:
             self.lights = [light(x, f"lights[{i}]")
-                           for i, x in enumerate(s._list(data["lights"], "lights"))]
-        self.materials = {}
+                           for i, x in enumerate(schema._list(data["lights"], "lights"))]
+        self.materials: dict[str, lighting.Material] = {}
         mats = data.get("materials", {})
         if not isinstance(mats, dict):
-            s._fail("materials", "must be a table of named materials ([materials.NAME])")
+            schema._fail("materials", "must be a table of named materials ([materials.NAME])")
         for name, m in mats.items():
-            t = s._table(m, f"materials.{name}", MATERIAL)
+            t = schema._table(m, f"materials.{name}", MATERIAL)
             args = {k: (environment if k == "environment" else texture)(
                         x, f"materials.{name}.{k}", base) if k in MAPS else _tuples(x)
                     for k, x in t.items()}
-            self.materials[name] = s._call(f"materials.{name}", lighting.Material, **args)
+            self.materials[name] = schema._call(f"materials.{name}", lighting.Material, **args)
         from ..visible import METHODS
         from ..shading import MODELS
 
         method = data.get("method", "z-buffer")
         if not isinstance(method, str) or method not in METHODS:
-            s._fail("method", f"must be one of {', '.join(sorted(METHODS))}; got {method!r}")
+            schema._fail("method", f"must be one of {', '.join(sorted(METHODS))}; got {method!r}")
         shading = data.get("shading", {})
         if isinstance(shading, str):
             shading = {"model": shading}
-        t = s._table(shading, "shading", SHADING)
+        t = schema._table(shading, "shading", SHADING)
         model = t.get("model", "gouraud")
         if not isinstance(model, str) or model not in MODELS:
-            s._fail("shading.model" if isinstance(data.get("shading"), dict) else "shading",
+            schema._fail("shading.model" if isinstance(data.get("shading"), dict) else "shading",
                     f"must be one of {', '.join(MODELS)}; got {model!r}")
-        self.options = {"method": method, "shading": model}
+        self.options: dict[str, Any] = {"method": method, "shading": model}
         if "specular" in t:
             if t["specular"] not in ("phong", "blinn"):
-                s._fail("shading.specular", f"must be 'phong' or 'blinn'; got {t['specular']!r}")
+                schema._fail("shading.specular", f"must be 'phong' or 'blinn'; got {t['specular']!r}")
             self.options["specular"] = t["specular"]
         if "gamma" in t:
             from ..shading import gamma_value
 
-            self.options["gamma"] = s._call("shading.gamma", gamma_value,
-                                            s._real(t["gamma"], "shading.gamma"))
+            self.options["gamma"] = schema._call("shading.gamma", gamma_value,
+                                            schema._real(t["gamma"], "shading.gamma"))
         if "cull_back_faces" in t:
-            self.options["cull_back_faces"] = s._flag(t["cull_back_faces"],
+            self.options["cull_back_faces"] = schema._flag(t["cull_back_faces"],
                                                       "shading.cull_back_faces")
         for key in ("max_depth", "seed"):          # ray tracing's, checked by render
             if key in t:
@@ -184,30 +185,31 @@ class Shading:
             from ..draw3d.wireframe import depth_cue_intensities
 
             cue = _tuples(t["depth_cue"])
-            s._call("shading.depth_cue", depth_cue_intensities, cue)
+            schema._call("shading.depth_cue", depth_cue_intensities, cue)
             self.options["depth_cue"] = cue
-        self.radiosity = None
+        self.radiosity: dict[str, Any] | None = None
         if "radiosity" in data:
-            self.radiosity = _tuples(s._table(data["radiosity"], "radiosity", RADIOSITY))
-        self.surfaces = []
-        self.values = []
+            self.radiosity = _tuples(schema._table(data["radiosity"], "radiosity", RADIOSITY))
+        self.surfaces: list[tuple[Mesh, lighting.Material, Camera]] = []
+        self.values: list[tuple[str, Any, Any]] = []
 
-    def surface(self, mesh, material, path, camera, emission=None, reflectance=None):
+    def surface(self, mesh: "Mesh", material: object, path: str, camera: "Camera",
+                emission: object = None, reflectance: object = None) -> None:
         """Add ``mesh`` as a surface of the named ``material`` seen by ``camera``
         (``emission``, ``reflectance``: its radiosity values, None: no light, the
         material's kd x color)."""
         if not isinstance(material, str) or material not in self.materials:
-            _schema()._fail(f"{path}.material", f"names no material: {material!r}; materials: "
+            schema._fail(f"{path}.material", f"names no material: {material!r}; materials: "
                             + (", ".join(repr(k) for k in self.materials) or
                                "none (add [materials.NAME])"))
         self.surfaces.append((mesh, self.materials[material], camera))
         self.values.append((path, _tuples(emission), _tuples(reflectance)))
 
-    def draw(self, fb):
+    def draw(self, fb: "FrameBuffer") -> None:
         """Render the surfaces into ``fb``, camera by camera."""
         from ..rendering import render
 
-        by_camera = {}
+        by_camera: dict[int, tuple[Camera, list[Mesh], list[lighting.Material]]] = {}
         for mesh, material, camera in self.surfaces:
             by_camera.setdefault(id(camera), (camera, [], []))
             by_camera[id(camera)][1].append(mesh)
@@ -216,9 +218,9 @@ class Shading:
             if self.radiosity is None:
                 render(fb, meshes, camera, lights=self.lights, materials=mats, **self.options)
         if self.radiosity is not None:
-            self._radiosity(fb)
+            self._radiosity(fb, self.radiosity)
 
-    def _radiosity(self, fb):
+    def _radiosity(self, fb: "FrameBuffer", table: dict[str, Any]) -> None:
         """Solve the radiosity of every surface together (the light goes from surface
         to surface whatever camera sees them) and draw the solution through each
         camera."""
@@ -226,40 +228,40 @@ class Shading:
 
         from .. import radiosity
 
-        s = _schema()
-        options = dict(self.radiosity)
+        options = dict(table)
         draw = {k: options.pop(k) for k in ("exposure", "antialias") if k in options}
         meshes = []
         for mesh, material, _ in self.surfaces:
             mesh = copy.copy(mesh)
             mesh.material = material           # the default reflectance: kd x color
             meshes.append(mesh)
-        pts = s._call("radiosity", radiosity.patches, meshes, options.pop("subdivisions", 8))
+        pts = schema._call("radiosity", radiosity.patches, meshes, options.pop("subdivisions", 8))
         emission = np.zeros((len(pts), 3))
         reflectance = pts.reflectance.copy()
         for k, (path, e, r) in enumerate(self.values):
             on = pts.mesh == k
             if e is not None:
-                emission[on] = s._call(f"{path}.emission", _triple, "emission", e)
+                emission[on] = schema._call(f"{path}.emission", _triple, "emission", e)
             if r is not None:
-                reflectance[on] = s._call(f"{path}.reflectance", _triple, "reflectance", r)
-        pts = s._call("radiosity", pts.with_values, emission, reflectance)
-        solution = s._call("radiosity", radiosity.solve, pts, **options)
+                reflectance[on] = schema._call(f"{path}.reflectance", _triple, "reflectance", r)
+        pts = schema._call("radiosity", pts.with_values, emission, reflectance)
+        solution = schema._call("radiosity", radiosity.solve, pts, **options)
         cameras = {id(camera): camera for _, _, camera in self.surfaces}
         for camera in cameras.values():
-            s._call("radiosity", solution.render, fb, camera, **draw)
+            schema._call("radiosity", solution.render, fb, camera, **draw)
 
 
-def _triple(name, value):
+def _triple(name: str, value: object) -> tuple[float, float, float]:
     """A radiosity value: one number or (r, g, b), as three floats."""
     from .. import _validate as v
 
     if isinstance(value, tuple) and len(value) == 3:
-        return tuple(v.number(f"{name}[{i}]", x) for i, x in enumerate(value))
+        r, g, b = value
+        return v.number(f"{name}[0]", r), v.number(f"{name}[1]", g), v.number(f"{name}[2]", b)
     return (v.number(name, value),) * 3
 
 
-def shading(data, base=None):
+def shading(data: dict[str, Any], base: str | None = None) -> Shading | None:
     """The :class:`Shading` of scene data (a dict), or None when it has no shading
     key and so no surfaces can be asked for (``base``: the scene file's folder)."""
     if not any(k in data for k in KEYS):

@@ -43,6 +43,7 @@ COMPLETE = [
     "scanline.attributes",
     "scanline.context",
     "scanline.visible",
+    "scanline.scene",
 ]
 
 

@@ -17,10 +17,14 @@ that can touch the frame buffer is drawn here (one that cannot is dropped first 
 Everything here costs O(width + height) per conic, whatever its radius.
 """
 
+from __future__ import annotations
+
 import math
 from fractions import Fraction
+from typing import TYPE_CHECKING, Any, Callable, Literal, Optional, Sequence, Union, cast, overload
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .._kernels import curved as kcurved
 from .._kernels import linetype as kl
@@ -32,12 +36,28 @@ from ..geometry.guard import conics_outside
 from . import _blend
 from ._common import colors, target
 
+if TYPE_CHECKING:
+    from .._typing import Color, Colors
+    from ..attributes import FillStyle
+    from ..framebuffer import FrameBuffer
+    from ..linestyle import LineStyle
+    from ._area import Outline
 
-def _frame(fb, margin=0):
+#: One primitive's color spec taken from a batch's colors (:func:`spec`).
+Spec = Optional["Color"]
+#: A region of the curved-area kernels: two half-planes (nx, ny, c, tie) and how they
+#: combine (``BOTH`` or ``EITHER``); integers of any size for a far conic.
+Region = tuple[Union[NDArray[np.int64], Sequence[tuple[int, int, int, int]]], int]
+#: A run of the ideal conic near the frame: (polyline, closed, start point or None).
+Run = tuple[NDArray[np.float64], bool, Optional[tuple[Fraction, Fraction]]]
+
+
+def _frame(fb: FrameBuffer, margin: int = 0) -> fc.Window:
     return (-margin, -margin, fb.width - 1 + margin, fb.height - 1 + margin)
 
 
-def _put(buf, packed, width, height, rows, value, ox=0, oy=0):
+def _put(buf: NDArray[np.uint8], packed: bool, width: int, height: int, rows: NDArray[np.int64],
+         value: NDArray[np.uint8], ox: int = 0, oy: int = 0) -> None:
     """Write rows (x, y, half, 0): the spans x - half .. x + half of row y (a
     degenerate ellipse each), shifted by (-ox, -oy)."""
     if len(rows) == 0:
@@ -48,14 +68,16 @@ def _put(buf, packed, width, height, rows, value, ox=0, oy=0):
          np.ascontiguousarray(value, np.uint8).reshape(1, -1))
 
 
-def pixels(xc, yc, rx, ry, circle, window):
+def pixels(xc: int, yc: int, rx: int, ry: int, circle: bool, window: fc.Window
+           ) -> NDArray[np.int64]:
     """The midpoint outline's pixels inside ``window`` (an (N, 2) int64 array)."""
     if circle:
         return fc.circle_pixels(xc, yc, rx, window)
     return fc.ellipse_pixels(xc, yc, rx, ry, window)
 
 
-def outline(fb, xc, yc, rx, ry, value, circle):
+def outline(fb: FrameBuffer, xc: int, yc: int, rx: int, ry: int, value: NDArray[np.uint8],
+            circle: bool) -> None:
     """Draw the width-1 midpoint outline with the pixel value ``value``."""
     buf, packed, width, height = target(fb)
     p = pixels(xc, yc, rx, ry, circle, _frame(fb))
@@ -64,30 +86,35 @@ def outline(fb, xc, yc, rx, ry, value, circle):
     _put(buf, packed, width, height, rows, value)
 
 
-def fill(fb, xc, yc, rx, ry, color, style, circle, hollow, region=None):
+def fill(fb: FrameBuffer, xc: int, yc: int, rx: int, ry: int, color: Optional[Color],
+         style: Optional[FillStyle], circle: bool, hollow: Outline,
+         region: Optional[Region] = None) -> None:
     """Fill the area bounded by the midpoint outline (spans from its left-most to
     its right-most pixel on each visible row) in ``style``, within the half-planes
     ``region`` (a pie or a chord: ``(hp, combine)`` as the curved-area kernels take
     them, their integers of any size);
     ``hollow`` draws the outline (the hollow style)."""
-    s = []
+    s: list[tuple[int, int, int]] = []
     for row, y, w in fc.half_widths(yc, rx, ry, fb.height, circle):
         for lo, hi in _cut([(-w, w)], region, y):
-            s += fc.clipped(row, xc + lo, xc + hi, fb.width)
+            s += fc.clipped(row, xc + int(lo), xc + int(hi), fb.width)   # finite: ints
     if not s:
         return
-    s = np.array(s, np.int64)
-    rows = np.stack([(s[:, 1] + s[:, 2]) // 2, s[:, 0], (s[:, 2] - s[:, 1]) // 2,
-                     np.zeros(len(s), np.int64)], axis=1)
-    bbox = (int(s[:, 1].min()), int(s[:, 0].min()), int(s[:, 2].max()), int(s[:, 0].max()))
+    spans = np.array(s, np.int64)
+    rows = np.stack([(spans[:, 1] + spans[:, 2]) // 2, spans[:, 0],
+                     (spans[:, 2] - spans[:, 1]) // 2, np.zeros(len(spans), np.int64)], axis=1)
+    bbox = (int(spans[:, 1].min()), int(spans[:, 0].min()), int(spans[:, 2].max()),
+            int(spans[:, 0].max()))
 
-    def draw(buf, packed, width, height, ox, oy, value):
+    def draw(buf: NDArray[np.uint8], packed: bool, width: int, height: int, ox: int, oy: int,
+             value: NDArray[np.uint8]) -> None:
         _put(buf, packed, width, height, rows, value, ox, oy)
 
     _blend.fill(fb, color, style, bbox, draw, hollow)
 
 
-def arc(fb, xc, yc, rx, ry, region, color, circle):
+def arc(fb: FrameBuffer, xc: int, yc: int, rx: int, ry: int, region: Region,
+        color: Optional[Color], circle: bool) -> None:
     """The midpoint outline's pixels whose polar angle is in the sector ``region``
     (``(hp, combine)``: the half-planes of the curved-area kernels)."""
     p = [(x, y) for x, y in pixels(xc, yc, rx, ry, circle, _frame(fb)).tolist()
@@ -98,13 +125,14 @@ def arc(fb, xc, yc, rx, ry, region, color, circle):
     rows[:, :2] = p
     lo, hi = rows[:, :2].min(axis=0), rows[:, :2].max(axis=0)
 
-    def draw(buf, packed, width, height, ox, oy, value):
+    def draw(buf: NDArray[np.uint8], packed: bool, width: int, height: int, ox: int, oy: int,
+             value: NDArray[np.uint8]) -> None:
         _put(buf, packed, width, height, rows, value, ox, oy)
 
     _blend.paint(fb, color, (int(lo[0]), int(lo[1]), int(hi[0]), int(hi[1])), draw)
 
 
-def _half_plane(nx, ny, c, tie, y):
+def _half_plane(nx: int, ny: int, c: int, tie: bool, y: int) -> tuple[float, float]:
     """The x-interval of row y where nx x + ny y + c > 0 (>= 0 with ``tie``), in
     integers of any size with unbounded ends (the kernels' ``half_plane`` rule,
     whose open end 2**62 would be too near for a far conic)."""
@@ -118,13 +146,14 @@ def _half_plane(nx, ny, c, tie, y):
     return math.inf, -math.inf
 
 
-def _cut(runs, region, y):
+def _cut(runs: Sequence[tuple[int, int]], region: Optional[Region], y: int
+         ) -> Sequence[tuple[float, float]]:
     """The parts of the runs (x-intervals of row y, relative to the center) inside
     ``region`` (None: everything), combined as ``region_spans`` combines them."""
     if region is None:
         return runs
     hp, combine = region
-    (s0, e0), (s1, e1) = (_half_plane(*(int(c) for c in h[:3]), h[3] != 0, y) for h in hp)
+    (s0, e0), (s1, e1) = (_half_plane(int(h[0]), int(h[1]), int(h[2]), h[3] != 0, y) for h in hp)
     if combine == kcurved.BOTH:
         parts = [(max(s0, s1), min(e0, e1))]
     elif s0 > e0:
@@ -136,7 +165,7 @@ def _cut(runs, region, y):
     return [(max(a, s), min(b, e)) for a, b in runs for s, e in parts if max(a, s) <= min(b, e)]
 
 
-def _runs(fb, xc, yc, rx, ry, margin):
+def _runs(fb: FrameBuffer, xc: int, yc: int, rx: int, ry: int, margin: int) -> Sequence[Run]:
     """The ideal conic within ``margin`` pixels of the frame: a list of
     (polyline, closed, start) (:func:`scanline.geometry.far_conics.local_runs`;
     a degenerate conic is its segment, clipped by the guard, start None)."""
@@ -145,7 +174,8 @@ def _runs(fb, xc, yc, rx, ry, margin):
     return fc.local_runs(xc, yc, rx, ry, _frame(fb, margin))
 
 
-def _packed(runs):
+def _packed(runs: Sequence[Union[Run, tuple[NDArray[np.float64], bool]]]
+            ) -> tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.bool_]]:
     """Polylines ``(verts, offsets, closed)`` for :func:`scanline.draw.strokes.stroke`."""
     offsets = np.zeros(len(runs) + 1, np.int64)
     offsets[1:] = np.cumsum([len(r[0]) for r in runs])
@@ -154,11 +184,11 @@ def _packed(runs):
             np.array([r[1] for r in runs], bool))
 
 
-def _split_at_start(runs, x, y):
+def _split_at_start(runs: Sequence[Run], x: int, y: int) -> list[Run]:
     """Open runs passing through the conic's start point (x, y) (where the dash
     pattern starts again, as on the kernels' closed polygon) cut in two there, the
     second starting at arc length 0 (start None)."""
-    out = []
+    out: list[Run] = []
     for xy, closed, start in runs:
         hit = np.flatnonzero((xy[1:] == (float(x), float(y))).all(axis=1)) + 1
         if closed or len(hit) == 0:
@@ -169,7 +199,8 @@ def _split_at_start(runs, x, y):
     return [r for r in out if len(r[0]) > 1]
 
 
-def _dashed_runs(fb, xc, yc, rx, ry, color, style, antialias, runs):
+def _dashed_runs(fb: FrameBuffer, xc: int, yc: int, rx: int, ry: int, color: Spec,
+                 style: LineStyle, antialias: bool, runs: Sequence[Run]) -> None:
     """Stroke each run with the dash pattern's phase at its first vertex: the
     given phase plus the ideal conic's arc length from (xc + rx, yc), where the
     pattern starts (a run through that point is cut there: a dash across it is two
@@ -183,6 +214,7 @@ def _dashed_runs(fb, xc, yc, rx, ry, color, style, antialias, runs):
     from . import strokes
 
     lengths, phase = style.lengths()
+    assert lengths is not None                   # a dashed style (the caller's test)
     period = _period(lengths)
     for xy, closed, start in _split_at_start(runs, xc + rx, yc):
         s = fc.arc_length(rx, ry, *start) if start is not None else Fraction(0)
@@ -192,7 +224,8 @@ def _dashed_runs(fb, xc, yc, rx, ry, color, style, antialias, runs):
                        style.replace(dash=tuple(lengths), dash_phase=at), antialias)
 
 
-def _dashed_segment(fb, xc, yc, rx, ry, color, style, antialias, margin):
+def _dashed_segment(fb: FrameBuffer, xc: int, yc: int, rx: int, ry: int, color: Spec,
+                    style: LineStyle, antialias: bool, margin: int) -> None:
     """A wide or antialiased dashed degenerate ellipse: the dashes of the path the
     kernels stroke it along (:func:`scanline.geometry.far_conics.degenerate_path`,
     there and back), cut exactly within ``margin`` pixels of the frame
@@ -204,6 +237,7 @@ def _dashed_segment(fb, xc, yc, rx, ry, color, style, antialias, margin):
     from . import strokes
 
     lengths, phase = style.lengths()
+    assert lengths is not None                   # a dashed style (the caller's test)
     dashes = fc.path_dashes(fc.degenerate_path(xc, yc, rx, ry), lengths, _period(lengths),
                             phase, _frame(fb, margin), ks.EPSILON_DASH)
     if dashes:
@@ -212,7 +246,8 @@ def _dashed_segment(fb, xc, yc, rx, ry, color, style, antialias, margin):
                        antialias, one=True)
 
 
-def stroke(fb, xc, yc, rx, ry, color, style, antialias, circle):
+def stroke(fb: FrameBuffer, xc: int, yc: int, rx: int, ry: int, color: Spec,
+           style: LineStyle, antialias: bool, circle: bool) -> None:
     """A far conic with line attributes: thick or antialiased ones stroked along the
     ideal conic near the frame; width-1 and pen lines are the midpoint pixels within
     the pen's reach of the frame, in the order of the conic's pixel sequence, each
@@ -245,20 +280,21 @@ def stroke(fb, xc, yc, rx, ry, color, style, antialias, circle):
     kind, mask, dashes, phase = strokes._line_type(style)
     window = _frame(fb, margin)
     if kind == kl.SOLID:
-        runs = [(pixels(xc, yc, rx, ry, circle, window), 0, 0, 0)]
+        found = [(pixels(xc, yc, rx, ry, circle, window), 0, 0, 0)]
     else:
-        runs = fc.sequence_runs(xc, yc, rx, ry, circle, window)
-    runs = [(p, _phase(kind, dashes, phase, k, a, d)) for p, k, a, d in runs if len(p)]
-    if not runs:
+        found = fc.sequence_runs(xc, yc, rx, ry, circle, window)
+    sequences = [(p, _phase(kind, dashes, phase, k, a, d)) for p, k, a, d in found if len(p)]
+    if not sequences:
         return
 
-    def draw(buf, packed, width, height, ox, oy, value):
-        for p, start in runs:
+    def draw(buf: NDArray[np.uint8], packed: bool, width: int, height: int, ox: int, oy: int,
+             value: NDArray[np.uint8]) -> None:
+        for p, start in sequences:
             call(kl.draw_sequence, len(p) * len(pen), buf, layout(packed), width, height,
                  p - np.array([ox, oy], np.int64), kind, mask, dashes, start, pen, value)
 
     if _blend.translucent(color, one=True):
-        every = np.concatenate([p for p, _ in runs])
+        every = np.concatenate([p for p, _ in sequences])
         lo, hi = every.min(axis=0) - margin, every.max(axis=0) + margin
         _blend.paint(fb, color, (int(lo[0]), int(lo[1]), int(hi[0]), int(hi[1])), draw)
     else:
@@ -270,7 +306,8 @@ def stroke(fb, xc, yc, rx, ry, color, style, antialias, circle):
 _PHASE_BITS = 96
 
 
-def _phase(kind, dashes, phase, k, axial, diagonal):
+def _phase(kind: int, dashes: NDArray[np.float64], phase: float, k: int, axial: int,
+           diagonal: int) -> float:
     """The line type's phase at pixel k of the sequence, reached by ``axial`` unit
     and ``diagonal`` diagonal steps: for a mask, the bit index (k more than the
     first pixel's), for dash lengths the arc length axial + diagonal sqrt 2 past
@@ -285,7 +322,7 @@ def _phase(kind, dashes, phase, k, axial, diagonal):
     return (s % round(_period(dashes.tolist()) * one)) / one
 
 
-def _period(lengths):
+def _period(lengths: Sequence[float]) -> Fraction:
     """The dash pattern's period as the kernels take it: the float sum of its
     lengths (exactly, as a Fraction)."""
     period = 0.0
@@ -294,7 +331,8 @@ def _period(lengths):
     return Fraction(period)
 
 
-def _band(xy, closed, half=0.5):
+def _band(xy: NDArray[np.float64], closed: bool, half: float = 0.5
+          ) -> list[NDArray[np.float64]]:
     """The band within ``half`` pixel of the polyline ``xy`` (dense along a smooth
     curve): its contours for a nonzero fill, offset along the vertex normals."""
     if closed:
@@ -309,23 +347,25 @@ def _band(xy, closed, half=0.5):
     return [outer, inner] if closed else [np.vstack([outer, inner])]
 
 
-def antialiased_outline(fb, xc, yc, rx, ry, color):
+def antialiased_outline(fb: FrameBuffer, xc: float, yc: float, rx: float, ry: float,
+                        color: Spec) -> None:
     """The width-1 antialiased outline of a far conic (reals): the coverage of the
     band within half a pixel of the ideal conic near the frame, so that, as for
     Wu's conics, a column's intensities add up to the outline's length in it."""
     from . import antialias as aa
 
     if rx == 0 or ry == 0:                          # a segment, clipped by the guard
-        aa.lines(fb, [[xc - rx, yc - ry, xc + rx, yc + ry]], [color])
+        aa.lines(fb, [[xc - rx, yc - ry, xc + rx, yc + ry]], None if color is None else [color])
         return
-    contours = []
+    contours: list[NDArray[np.float64]] = []
     for xy, closed, _ in fc.local_runs(xc, yc, rx, ry, _frame(fb, 3)):
         contours += _band(xy, closed)
     if contours:
         aa.fill(fb, contours, color)
 
 
-def antialiased_fill(fb, xc, yc, rx, ry, color):
+def antialiased_fill(fb: FrameBuffer, xc: float, yc: float, rx: float, ry: float,
+                     color: Spec) -> None:
     """The ideal ellipse's area near the frame, filled by coverage: the conic's
     pieces inside the window two pixels beyond the frame joined by the window's
     corners inside the ellipse (the intersection of two convex sets, in angular
@@ -337,9 +377,9 @@ def antialiased_fill(fb, xc, yc, rx, ry, color):
         return
     runs = fc.local_runs(xc, yc, rx, ry, window)
     pts = [r[0] for r in runs]
-    xc, yc, rx, ry = (Fraction(c) for c in (xc, yc, rx, ry))
+    fx, fy, frx, fry = (Fraction(c) for c in (xc, yc, rx, ry))
     corners = [(x, y) for x in (x0, x1) for y in (y0, y1)
-               if ((x - xc) * ry) ** 2 + ((y - yc) * rx) ** 2 <= (rx * ry) ** 2]
+               if ((x - fx) * fry) ** 2 + ((y - fy) * frx) ** 2 <= (frx * fry) ** 2]
     if corners:
         pts.append(np.array(corners, np.float64))
     if not pts:
@@ -352,16 +392,18 @@ def antialiased_fill(fb, xc, yc, rx, ry, color):
     aa.fill(fb, [poly], color)
 
 
-def spec(color, i):
+def spec(color: Optional[Colors], i: int) -> Spec:
     """The color spec of primitive i of a batch (one spec, a list, or an array)."""
     if isinstance(color, np.ndarray):
-        return Channels(int(c) for c in color[i]) if color.ndim == 2 else int(color[i])
+        # a row of an (N, 3|4) array: an RGB(A) tuple, of a length mypy cannot see
+        return cast("Color", Channels(int(c) for c in color[i])) if color.ndim == 2 \
+            else int(color[i])
     if isinstance(color, list):
         return color[i]
     return color
 
 
-def _subset(color, idx):
+def _subset(color: Optional[Colors], idx: NDArray[np.intp]) -> Optional[Colors]:
     if isinstance(color, np.ndarray):
         return color[idx]
     if isinstance(color, list):
@@ -369,7 +411,25 @@ def _subset(color, idx):
     return color
 
 
-def batch(fb, rows, color, exact, near, far, reach=1.0, fill=False, rounded=True):
+@overload
+def batch(fb: FrameBuffer, rows: NDArray[np.float64], color: Optional[Colors],
+          exact: NDArray[np.bool_], near: Callable[[NDArray[np.int64], Optional[Colors]], None],
+          far: Callable[[int, int, int, int, Spec], None], reach: float = ...,
+          fill: bool = ..., rounded: Literal[True] = ...) -> None: ...
+
+
+@overload
+def batch(fb: FrameBuffer, rows: NDArray[np.float64], color: Optional[Colors],
+          exact: NDArray[np.bool_],
+          near: Callable[[NDArray[np.float64], Optional[Colors]], None],
+          far: Callable[[float, float, float, float, Spec], None], reach: float = ...,
+          fill: bool = ..., *, rounded: Literal[False]) -> None: ...
+
+
+def batch(fb: FrameBuffer, rows: NDArray[np.float64], color: Optional[Colors],
+          exact: NDArray[np.bool_], near: Callable[[NDArray[Any], Optional[Colors]], None],
+          far: Callable[..., None], reach: float = 1.0, fill: bool = False,
+          rounded: bool = True) -> None:
     """Draw a batch of conics ``rows`` (N, 4) float64 (xc, yc, rx, ry), finite, in
     order: the rows ``exact`` (a bool array) by ``near(int64 rows, colors)`` (the
     compiled batch, as before), the others one by one by ``far(xc, yc, rx, ry,
@@ -381,7 +441,7 @@ def batch(fb, rows, color, exact, near, far, reach=1.0, fill=False, rounded=True
     n = len(rows)
     colors(fb, color, n)                          # checks the count and the specs
 
-    def pixels(a):
+    def pixels(a: NDArray[np.float64]) -> NDArray[Any]:
         return np.ascontiguousarray(np.floor(a + 0.5).astype(np.int64)) if rounded else a
 
     if exact.all():

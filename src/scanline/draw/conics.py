@@ -1,8 +1,9 @@
 """Circles and ellipses by the midpoint method (notes, chapter 2, Q.4-Q.6)."""
 
-from typing import TYPE_CHECKING, Any, Optional
+from typing import TYPE_CHECKING, Optional, Tuple, Union, cast
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from .._kernels import conics as k
@@ -14,7 +15,7 @@ from ..geometry import guard
 from . import _far_conics as far
 from . import strokes
 from ._common import band_order, colors, target
-from .._typing import Cap, Color, Join
+from .._typing import Cap, Color, Colors, Dash, Join, PenLike
 
 if TYPE_CHECKING:
     from ..framebuffer import FrameBuffer
@@ -27,7 +28,7 @@ ELLIPSE_AXIS_LIMIT = 2**24
 ELLIPSE_PRODUCT_LIMIT = 2**29
 
 
-def _big(xc, yc, rx, ry):
+def _big(xc: float, yc: float, rx: float, ry: float) -> bool:
     """Whether a conic's parameters may be beyond the exact limits (not all ints of
     at most 2**14), so that :func:`scanline.geometry.guard.conic_outside` is asked
     first.  (Written out: a generator costs more than a short circle's kernel.)"""
@@ -37,7 +38,8 @@ def _big(xc, yc, rx, ry):
                 and -small <= rx <= small and -small <= ry <= small)
 
 
-def _outside(fb, xc, yc, rx, ry, attrs):
+def _outside(fb: "FrameBuffer", xc: float, yc: float, rx: float, ry: float,
+             attrs: Optional["LineStyle"]) -> bool:
     """Whether a conic beyond the exact limits (far center, huge radii) misses the
     frame buffer and so draws nothing (:func:`scanline.geometry.guard.conic_outside`,
     reach: the stroke's margin)."""
@@ -47,7 +49,7 @@ def _outside(fb, xc, yc, rx, ry, attrs):
     return guard.conic_outside(fb, xc, yc, rx, ry, reach)
 
 
-def exact(xc, yc, rx, ry, circle):
+def exact(xc: int, yc: int, rx: int, ry: int, circle: bool) -> bool:
     """Whether the kernels take this conic (integers): center within +-2**30 and
     radius <= 2**30 (a circle) or the midpoint ellipse's limits (an ellipse).
     Anything else is drawn by :mod:`scanline.draw._far_conics`."""
@@ -58,18 +60,20 @@ def exact(xc, yc, rx, ry, circle):
     return max(rx, ry) <= ELLIPSE_AXIS_LIMIT and rx * ry <= ELLIPSE_PRODUCT_LIMIT
 
 
-def _exact_rows(arr, circle):
+def _exact_rows(arr: NDArray[np.float64], circle: bool) -> NDArray[np.bool_]:
     """:func:`exact` for the float rows (xc, yc, rx, ry) of a batch, rounded."""
     a = np.floor(arr + 0.5)
-    ok = np.abs(a[:, :2]).max(axis=1, initial=0) <= v.COORD_LIMIT
+    ok: NDArray[np.bool_] = np.abs(a[:, :2]).max(axis=1, initial=0) <= v.COORD_LIMIT
     if circle:
         return ok & (a[:, 2] <= v.COORD_LIMIT)
     with np.errstate(over="ignore"):                   # inf is beyond the limit too
-        return ok & (a[:, 2:].max(axis=1, initial=0) <= ELLIPSE_AXIS_LIMIT) & (
-            a[:, 2] * a[:, 3] <= ELLIPSE_PRODUCT_LIMIT)
+        # (ndarray.max(axis=...) is Any to numpy's stubs)
+        return cast(NDArray[np.bool_], ok & (a[:, 2:].max(axis=1, initial=0) <= ELLIPSE_AXIS_LIMIT)
+                    & (a[:, 2] * a[:, 3] <= ELLIPSE_PRODUCT_LIMIT))
 
 
-def _far(fb, xc, yc, rx, ry, color, attrs, antialias, circle):
+def _far(fb: "FrameBuffer", xc: int, yc: int, rx: int, ry: int, color: far.Spec,
+         attrs: Optional["LineStyle"], antialias: bool, circle: bool) -> None:
     """A conic beyond the kernels' limits (:mod:`scanline.draw._far_conics`)."""
     if attrs is None:
         target(fb)
@@ -81,7 +85,8 @@ def _far(fb, xc, yc, rx, ry, color, attrs, antialias, circle):
 def circle(fb: "FrameBuffer", xc: float, yc: float, r: float, color: Optional[Color] = None,
            *, style: Optional["LineStyle"] = None, antialias: bool = False, width: Optional[float] = None,
            cap: Optional[Cap] = None, join: Optional[Join] = None, miter_limit: Optional[float] = None,
-           dash: Any = None, dash_phase: Optional[float] = None, pen: Any = None) -> None:
+           dash: Optional[Dash] = None, dash_phase: Optional[float] = None,
+           pen: Optional[PenLike] = None) -> None:
     """Draw the circle of radius ``r`` about ``(xc, yc)`` by the midpoint algorithm.
 
     Parameters
@@ -100,6 +105,14 @@ def circle(fb: "FrameBuffer", xc: float, yc: float, r: float, color: Optional[Co
         midpoint pixels, numbered counterclockwise from (xc + r, yc) for a line type,
         each stamping the pen.  Thicker: the stroke of a closed polygon within 0.1
         pixel of the circle, filled by the scan-line fill.
+
+    Raises
+    ------
+    ArgumentTypeError
+        If ``fb`` is not a FrameBuffer, or a coordinate is not a number.
+    ArgumentValueError
+        For a negative radius, a value that is not finite, or a bad color or line
+        attribute.
 
     Notes
     -----
@@ -150,20 +163,56 @@ def circle(fb: "FrameBuffer", xc: float, yc: float, r: float, color: Optional[Co
                width, height, xc, yc, r, fb.pixel(color))
 
 
-def _circle_work(buf, layout, width, height, xc, yc, r, color):
+def _circle_work(buf: NDArray[np.uint8], layout: Tuple[int, ...], width: int, height: int, xc: int, yc: int,
+                 r: int, color: NDArray[np.uint8]) -> int:
     """Work units of one circle (its pixels, at most twice the frame buffer's
     perimeter)."""
     return min(8 * r, 4 * (width + height))
 
 
-def circles(fb, circles, color=None, *, style=None, antialias=False, width=None, cap=None,
-            join=None, miter_limit=None, dash=None, dash_phase=None, pen=None):
+def circles(fb: "FrameBuffer", circles: ArrayLike, color: Optional[Colors] = None, *,
+            style: Optional["LineStyle"] = None, antialias: bool = False,
+            width: Optional[float] = None, cap: Optional[Cap] = None,
+            join: Optional[Join] = None, miter_limit: Optional[float] = None,
+            dash: Optional[Dash] = None, dash_phase: Optional[float] = None,
+            pen: Optional[PenLike] = None) -> None:
     """Draw N circles in one compiled call; ``circles`` has rows ``(xc, yc, r)``.
 
-    ``color`` is one color or one per circle (see :func:`line` and :func:`lines`);
-    the line attributes are those of :func:`circle`, for every circle.  Any finite
-    centers and radii: rows within the kernel's limits are drawn in one compiled
-    call, the others as :func:`circle` draws them (colors stay with their rows).
+    Any finite centers and radii: rows within the kernel's limits are drawn in one
+    compiled call, the others as :func:`circle` draws them (colors stay with their
+    rows).
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+    circles : array_like, shape (N, 3)
+        Rows ``(xc, yc, r)``, rounded as :func:`circle` rounds them; radii >= 0.
+    color : color, list of colors or integer array, optional
+        One color for all, or one per circle (see :func:`scanline.draw.line` and
+        :func:`scanline.draw.lines`).
+    style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen
+        Line attributes, those of :func:`circle`, for every circle.
+
+    Raises
+    ------
+    ArgumentTypeError
+        If ``fb`` is not a FrameBuffer, or ``circles`` does not hold numbers.
+    ArgumentValueError
+        For rows that are not (N, 3), a negative radius, a value that is not
+        finite, a list of colors whose length is not N, or a bad color or line
+        attribute.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> fb = sl.FrameBuffer(9, 5, mode="1")
+    >>> sl.draw.circles(fb, [(2, 2, 2), (7, 2, 1)])
+    >>> print(sl.text_image(fb))
+    -###-----
+    #---#--#-
+    #---#-#-#
+    #---#--#-
+    -###-----
     """
     attrs = strokes.styled(style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen)
     rows = v.coordinate_array("circles", circles, 3, radius_columns=(2,), far=True)
@@ -171,29 +220,30 @@ def circles(fb, circles, color=None, *, style=None, antialias=False, width=None,
     if attrs is not None:
         far.batch(fb, rows, color, _exact_rows(rows, True),
                   lambda arr, c: strokes.conics(fb, arr, c, attrs, antialias),
-                  lambda *row: _far(fb, *row, attrs, antialias, True),
+                  lambda x, y, a, b, c: _far(fb, x, y, a, b, c, attrs, antialias, True),
                   float(strokes._margin(attrs)))
         return
     buf, packed, width, height = target(fb)
 
-    def near(arr, c):
+    def near(arr: NDArray[np.int64], c: Optional[Colors]) -> None:
         values = colors(fb, c, len(arr))
         arr = band_order(np.ascontiguousarray(arr[:, :3]), values, height)
         call_in_bands(k.draw_circles, conic_work(arr[:, 2], arr[:, 2], width, height), buf,
                       layout(packed), width, height, arr, values)
 
     far.batch(fb, rows, color, _exact_rows(rows, True), near,
-              lambda *row: _far(fb, *row, None, False, True))
+              lambda x, y, a, b, c: _far(fb, x, y, a, b, c, None, False, True))
 
 
-def conic_work(rx, ry, width, height):
+def conic_work(rx: NDArray[Union[np.int64, np.float64]], ry: NDArray[Union[np.int64, np.float64]],
+               width: int, height: int) -> float:
     """Work units of drawing conic outlines of semi-axes ``rx``, ``ry`` (arrays): about
     4 (rx + ry) pixels each, at most 4 (width + height) on the raster
     (:func:`scanline._kernels._jit.call`)."""
     return float(np.minimum(4 * (rx + ry), 4 * (width + height)).sum()) + len(rx)
 
 
-def _check_ellipse(rx, ry, name="rx * ry"):
+def _check_ellipse(rx: int, ry: int, name: str = "rx * ry") -> None:
     if max(rx, ry) > ELLIPSE_AXIS_LIMIT or rx * ry > ELLIPSE_PRODUCT_LIMIT:
         raise ArgumentValueError(
             f"ellipse radii rx={rx}, ry={ry} are too large: the midpoint ellipse needs "
@@ -206,7 +256,8 @@ def ellipse(fb: "FrameBuffer", xc: float, yc: float, rx: float, ry: float,
             color: Optional[Color] = None,
             *, style: Optional["LineStyle"] = None, antialias: bool = False, width: Optional[float] = None,
             cap: Optional[Cap] = None, join: Optional[Join] = None, miter_limit: Optional[float] = None,
-            dash: Any = None, dash_phase: Optional[float] = None, pen: Any = None) -> None:
+            dash: Optional[Dash] = None, dash_phase: Optional[float] = None,
+            pen: Optional[PenLike] = None) -> None:
     """Draw the axis-aligned ellipse with semi-axes ``rx``, ``ry`` about ``(xc, yc)``
     by the midpoint algorithm.
 
@@ -225,6 +276,14 @@ def ellipse(fb: "FrameBuffer", xc: float, yc: float, rx: float, ry: float,
     color : color
     style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen
         Line attributes, as for :func:`circle`.
+
+    Raises
+    ------
+    ArgumentTypeError
+        If ``fb`` is not a FrameBuffer, or a coordinate is not a number.
+    ArgumentValueError
+        For a negative semi-axis, a value that is not finite, or a bad color or
+        line attribute.
 
     Notes
     -----
@@ -272,19 +331,57 @@ def ellipse(fb: "FrameBuffer", xc: float, yc: float, rx: float, ry: float,
                width, height, xc, yc, rx, ry, fb.pixel(color))
 
 
-def _ellipse_work(buf, layout, width, height, xc, yc, rx, ry, color):
+def _ellipse_work(buf: NDArray[np.uint8], layout: Tuple[int, ...], width: int, height: int, xc: int,
+                  yc: int, rx: int, ry: int, color: NDArray[np.uint8]) -> int:
     """Work units of one ellipse (its pixels, at most twice the frame buffer's
     perimeter)."""
     return min(4 * (rx + ry), 4 * (width + height))
 
 
-def ellipses(fb, ellipses, color=None, *, style=None, antialias=False, width=None, cap=None,
-             join=None, miter_limit=None, dash=None, dash_phase=None, pen=None):
+def ellipses(fb: "FrameBuffer", ellipses: ArrayLike, color: Optional[Colors] = None, *,
+             style: Optional["LineStyle"] = None, antialias: bool = False,
+             width: Optional[float] = None, cap: Optional[Cap] = None,
+             join: Optional[Join] = None, miter_limit: Optional[float] = None,
+             dash: Optional[Dash] = None, dash_phase: Optional[float] = None,
+             pen: Optional[PenLike] = None) -> None:
     """Draw N ellipses in one compiled call; ``ellipses`` has rows ``(xc, yc, rx, ry)``.
 
-    ``color`` is one color or one per ellipse; the line attributes are those of
-    :func:`circle`, for every ellipse.  Any finite centers and radii, as for
-    :func:`circles`.
+    Any finite centers and radii, as for :func:`circles`.
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+    ellipses : array_like, shape (N, 4)
+        Rows ``(xc, yc, rx, ry)``, rounded as :func:`ellipse` rounds them; semi-axes
+        >= 0.
+    color : color, list of colors or integer array, optional
+        One color for all, or one per ellipse.
+    style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen
+        Line attributes, those of :func:`circle`, for every ellipse.
+
+    Raises
+    ------
+    ArgumentTypeError
+        If ``fb`` is not a FrameBuffer, or ``ellipses`` does not hold numbers.
+    ArgumentValueError
+        For rows that are not (N, 4), a negative semi-axis, a value that is not
+        finite, a list of colors whose length is not N, or a bad color or line
+        attribute.
+
+    Examples
+    --------
+    A wide and a tall ellipse (the midpoint ellipse of semi-axes 1 and 2 has its
+    side pixels at x = xc +- 1 on three rows):
+
+    >>> import scanline as sl
+    >>> fb = sl.FrameBuffer(9, 5, mode="1")
+    >>> sl.draw.ellipses(fb, [(2, 2, 2, 1), (7, 2, 1, 2)])
+    >>> print(sl.text_image(fb))
+    -------#-
+    -###--#-#
+    #---#-#-#
+    -###--#-#
+    -------#-
     """
     attrs = strokes.styled(style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen)
     rows = v.coordinate_array("ellipses", ellipses, 4, radius_columns=(2, 3), far=True)
@@ -292,15 +389,16 @@ def ellipses(fb, ellipses, color=None, *, style=None, antialias=False, width=Non
     if attrs is not None:
         far.batch(fb, rows, color, ok,
                   lambda arr, c: strokes.conics(fb, arr, c, attrs, antialias),
-                  lambda *row: _far(fb, *row, attrs, antialias, False),
+                  lambda x, y, a, b, c: _far(fb, x, y, a, b, c, attrs, antialias, False),
                   float(strokes._margin(attrs)))
         return
     buf, packed, width, height = target(fb)
 
-    def near(arr, c):
+    def near(arr: NDArray[np.int64], c: Optional[Colors]) -> None:
         values = colors(fb, c, len(arr))
         arr = band_order(arr, values, height)
         call_in_bands(k.draw_ellipses, conic_work(arr[:, 2], arr[:, 3], width, height), buf,
                       layout(packed), width, height, arr, values)
 
-    far.batch(fb, rows, color, ok, near, lambda *row: _far(fb, *row, None, False, False))
+    far.batch(fb, rows, color, ok, near,
+              lambda x, y, a, b, c: _far(fb, x, y, a, b, c, None, False, False))

@@ -36,6 +36,42 @@ def inbetweens(n: int = 7, spacing: str = "accelerate", t1: float = 0.0,
     (what :func:`~scanline.animation.inbetween_times` returns) and ``dt``, the gap
     from the frame before (the key frame at t1 for j = 1).
 
+    Parameters
+    ----------
+    n : int
+        The in-betweens, 1 .. :data:`MAX_INBETWEENS` (default 7).
+    spacing : str
+        The law of motion: "constant", "accelerate" (the default), "decelerate",
+        "accelerate-decelerate", or an easing name of
+        :mod:`scanline.animation.easing`.
+    t1, t2 : float
+        The key frames' times (default 0 and 1).
+
+    Returns
+    -------
+    Table
+        Columns j, j/(n+1), eased, t, dt, one row per in-between; the notes give the
+        last gap, to the key frame at t2.
+
+    Raises
+    ------
+    ArgumentTypeError
+        ``t1`` or ``t2`` is not a number.
+    ArgumentValueError
+        ``n`` is not a count 1 .. :data:`MAX_INBETWEENS`, ``t2 - t1`` is not finite,
+        or ``spacing`` names no law or easing.
+
+    Examples
+    --------
+    Accelerating (1 - cos(u pi/2)): 1 - cos(22.5 deg) = 0.07612, 1 - cos(45 deg) =
+    0.292893, 1 - cos(67.5 deg) = 0.617317, the gaps growing; constant spacing
+    splits the interval evenly:
+
+    >>> for r in inbetweens(3, "accelerate").rows:
+    ...     print(r["j"], r["j/(n+1)"], r["t"], r["dt"])
+    1 0.25 0.07612 0.07612
+    2 0.5 0.292893 0.216773
+    3 0.75 0.617317 0.324423
     >>> [r["t"] for r in inbetweens(3, "constant").rows]
     [0.25, 0.5, 0.75]
     """
@@ -101,8 +137,42 @@ def morph_equalize(a: Optional[ArrayLike] = None, b: Optional[ArrayLike] = None,
     fraction ``t`` (``x, y``: :func:`~scanline.animation.morph`).  ``a`` and ``b``:
     flat x, y lists (default a triangle and a pentagon).
 
-    >>> [r["added"] for r in morph_equalize().rows]
-    ['-', '-', 'A', '-', 'A']
+    Parameters
+    ----------
+    a, b : array_like, optional
+        The key frames as flat lists x0, y0, x1, y1, ... of 3 .. :data:`MAX_VERTICES`
+        vertices (default :data:`TRIANGLE` and :data:`PENTAGON`).
+    t : float
+        The fraction of the in-between shown, 0 .. 1 (default 0.5).
+
+    Returns
+    -------
+    MorphTable
+        Columns k, ax, ay, bx, by, added, x, y, one row per vertex pair; its
+        ``shapes`` attribute holds the two key frames as given.
+
+    Raises
+    ------
+    ArgumentTypeError
+        ``a``, ``b`` or ``t`` is not numeric.
+    ArgumentValueError
+        A key frame is not finite x, y pairs of 3 .. :data:`MAX_VERTICES` vertices,
+        or ``t`` is outside 0 .. 1.
+
+    Examples
+    --------
+    The triangle (2, 2), (18, 2), (10, 16) and the pentagon: L_max = 5, L_min = 3,
+    N_s = 1 and N_e = 2, so the triangle's two longest edges (the slanted ones, of
+    length sqrt(260) against 16) get their midpoints (14, 9) and (6, 9); half way,
+    the added vertex (14, 9) and the pentagon's (38, 11) meet at (26, 10):
+
+    >>> for r in morph_equalize().rows:
+    ...     print(r["k"], (r["ax"], r["ay"]), (r["bx"], r["by"]), r["added"], (r["x"], r["y"]))
+    0 (2.0, 2.0) (26.5, 2.5) - (14.25, 2.25)
+    1 (18.0, 2.0) (35.5, 2.5) - (26.75, 2.25)
+    2 (14.0, 9.0) (38.0, 11.0) A (26.0, 10.0)
+    3 (10.0, 16.0) (31.0, 16.0) - (20.5, 16.0)
+    4 (6.0, 9.0) (24.0, 11.0) A (15.0, 10.0)
     """
     from ..animation import equalization, equalize, morph
 

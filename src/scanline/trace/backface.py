@@ -51,9 +51,40 @@ def back_face(eye: Tuple[float, float, float] = (3.0, 2.0, 4.0)) -> BackFaceTabl
     ``result`` is the pipeline's own verdict for the face's facets;
     ``table.outlines`` holds each face's device triangles, (x, y) per vertex.
 
+    Parameters
+    ----------
+    eye : (float, float, float)
+        The eye, outside the cube (|x|, |y| or |z| > 1); default (3, 2, 4).
+
+    Returns
+    -------
+    BackFaceTable
+        Columns face, N, P, V, V.N, result: one row per face of the cube; its
+        ``outlines`` attribute holds each face's device triangles.
+
+    Raises
+    ------
+    ArgumentTypeError
+        A coordinate of ``eye`` is not a number.
+    ArgumentValueError
+        ``eye`` is not three numbers, not finite, or inside the cube.
+
+    Examples
+    --------
+    Seen from (3, 2, 4), the faces x = +1, y = +1 and z = +1 turn toward the eye:
+    for x = -1, N = (-1, 0, 0), P = (-1, -1, -1), V = P - eye = (-4, -3, -5) and
+    V . N = 4 > 0, a back face; for x = +1, V = (1, -1, -1) - eye = (-2, -3, -5) and
+    V . N = -2 < 0, a front face.
+
     >>> t = back_face((3, 2, 4))
-    >>> [(r["face"], r["result"]) for r in t.rows]
-    [(0, 'back'), (1, 'front'), (2, 'back'), (3, 'front'), (4, 'back'), (5, 'front')]
+    >>> for r in t.rows:
+    ...     print(r["face"], r["N"], r["V"], r["V.N"], r["result"])
+    0 (-1, 0, 0) (-4, -3, -5) 4.0 back
+    1 (1, 0, 0) (-2, -3, -5) -2.0 front
+    2 (0, -1, 0) (-4, -3, -5) 3.0 back
+    3 (0, 1, 0) (-4, -1, -5) -1.0 front
+    4 (0, 0, -1) (-4, -3, -5) 5.0 back
+    5 (0, 0, 1) (-4, -3, -3) -3.0 front
     """
     if not (isinstance(eye, (list, tuple, np.ndarray)) and len(eye) == 3):
         raise ArgumentValueError(f"eye must be 3 numbers x, y, z, got {eye!r}")

@@ -70,9 +70,45 @@ def bsp_tree(eye: Point = (6.0, 22.0)) -> BSPTable:
     holds each piece's plan segment by name, ``table.node_pieces`` each node's pieces;
     ``table.planes`` each node's plane (A, B, C, D).
 
+    Parameters
+    ----------
+    eye : (float, float)
+        The eye's plan point (x, y) (default (6, 22)).
+
+    Returns
+    -------
+    BSPTable
+        Columns phase, node, plane, on, in front, behind, splits, side, piece, wall;
+        ``pieces``, ``planes`` and ``node_pieces`` hold the tree's geometry.
+
+    Raises
+    ------
+    ArgumentTypeError
+        A coordinate of ``eye`` is not a number.
+    ArgumentValueError
+        ``eye`` is not two numbers, or not finite.
+
+    References
+    ----------
+    H. Fuchs, Z. M. Kedem and B. F. Naylor, "On visible surface generation by a
+    priori tree structures", SIGGRAPH 1980.
+
+    Examples
+    --------
+    The root's plane is wall 0's, y = 12 (-y + 12 = 0: in front where y < 12); it
+    cuts wall 1 (x = 10, y 4..20) and wall 4 ((22, 16) to (28, 7)) in two.  Node 1
+    is wall 2's plane, from (16, 16) along (10, 4): its normal (4, -10) / sqrt(116)
+    = (0.371391, -0.928477) and D = -(0.371391 x 16 - 0.928477 x 16) = 8.91338.
+    The eye (6, 22) is behind the root, so the front subtree is painted first:
+
     >>> t = bsp_tree((6, 22))
-    >>> [r["splits"] for r in t.rows if r["phase"] == "build"][0]
-    '1 4'
+    >>> for r in t.rows[:2]:
+    ...     print(r["node"], r["plane"], "|", r["on"], "|", r["in front"], "|", r["behind"],
+    ...           "|", r["splits"])
+    0 -1 y + 12 = 0 | 0 | 3 4a 1c 1d | 2 4b 1a 1b | 1 4
+    1 0.371391 x - 0.928477 y + 8.91338 = 0 | 2 | 4b 1a | 1b | 1
+    >>> " ".join(r["piece"] for r in t.rows if r["phase"] == "draw")
+    '1c 3 4a 1d 0 4b 1a 2 1b'
     """
     from ..visible import BSPTree
 

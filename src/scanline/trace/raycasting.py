@@ -55,8 +55,38 @@ def ray_casting(row: int = 4) -> RayCastingTable:
     ray meets with its depth (``T1 0.3``, in triangle order), and the ``nearest``
     with its ``depth`` (none: the background).
 
-    >>> [r["nearest"] for r in ray_casting(4).rows][:4]
-    ['none', 'T2', 'T2', 'T2']
+    Parameters
+    ----------
+    row : int
+        The scan line, 0 .. 9 (default 4).
+
+    Returns
+    -------
+    RayCastingTable
+        Columns x, hits, nearest, depth: one row per pixel of the row; its
+        ``triangles`` attribute holds the triangles in device (x, y).
+
+    Raises
+    ------
+    ArgumentValueError
+        ``row`` is not an integer scan line of the device.
+
+    References
+    ----------
+    A. Appel, "Some techniques for shading machine renderings of solids", AFIPS
+    Spring Joint Computer Conference, 1968.
+
+    Examples
+    --------
+    The pixels of the z-buffer's example (:func:`scanline.trace.z_buffer`): at
+    x = 5 the ray meets T0 at 0.6 and T2 at 0.354545 (T2's plane, z = 0.1 +
+    4.5 x 0.8/13.2 - 0.24/13.2); at x = 6 T1 at 0.3 is nearer than both:
+
+    >>> for r in ray_casting(4).rows[4:7]:
+    ...     print(r["x"], "|", r["hits"], "|", r["nearest"], r["depth"])
+    4 | T0 0.6, T2 0.293939 | T2 0.293939
+    5 | T0 0.6, T2 0.354545 | T2 0.354545
+    6 | T0 0.6, T1 0.3, T2 0.415152 | T1 0.3
     """
     if isinstance(row, bool) or not isinstance(row, (int, np.integer)) \
             or not 0 <= row < HEIGHT:

@@ -72,9 +72,69 @@ def ray_tracing(x: int = 20, y: int = 11,
     (the weighted intensities summed so far).  The notes list every intersection
     of the primary ray and the pixel's stored value.
 
+    Parameters
+    ----------
+    x, y : int
+        The pixel whose primary ray is traced (default (20, 11): through the glass
+        sphere of the built-in scene).
+    meshes : Mesh or sequence of Mesh, optional
+        The scene (default: :func:`scene`'s floor, mirror sphere and glass sphere,
+        with its materials, lights and camera where those are not given).
+    materials : Material or sequence of Material, optional
+        One material, or one per mesh (as :func:`scanline.render` takes them).
+    lights : sequence of lights, optional
+        The lights (default: the built-in scene's, or where ``meshes`` is given
+        :func:`scanline.rendering.api.default_lights`: ambient light and a white
+        light from above the viewer's left shoulder).
+    camera : Camera, optional
+        The camera; required when ``meshes`` is given.
+    width, height : int
+        The frame buffer (default :data:`WIDTH` x :data:`HEIGHT`, 32 x 24).
+    max_depth : int
+        The deepest ray followed (the primary ray is depth 1; default 5).
+    seed : int
+        The seed of the distributed rays' random numbers (default 0; the same seed
+        gives the same table).
+    gamma : float
+        The display gamma the stored value is encoded with (default 2.2).
+    background : color
+        The frame buffer's background, which rays that meet nothing bring.
+
+    Returns
+    -------
+    Table
+        The columns above, one row per ray (shadow rays included), in the order the
+        tracer follows them; empty when the primary ray meets nothing.
+
+    Raises
+    ------
+    ArgumentTypeError
+        ``width`` or ``height`` is not an integer, or an argument of the scene is
+        of the wrong kind.
+    ArgumentValueError
+        (x, y) is not a pixel of the device; ``meshes`` given without ``camera``;
+        an option out of range.
+
+    References
+    ----------
+    T. Whitted, "An improved illumination model for shaded display",
+    Communications of the ACM 23(6), 1980.
+
+    Examples
+    --------
+    The primary ray through pixel (20, 11) meets the glass sphere; its shadow ray
+    reaches the light unblocked (``through`` 1), and each ray adds its weight x I to
+    the sums (0.007893 + 0.038366 x 0.016988 = 0.008545 for the reflected ray):
+
     >>> t = ray_tracing(20, 11)
-    >>> t.rows[0]["kind"], t.rows[0]["depth"]
-    ('primary', 1)
+    >>> for r in t.rows[:3]:
+    ...     print(r["ray"], r["parent"], r["kind"], r["depth"], r["face"], r["through"],
+    ...           round(r["sum_r"], 6))
+    0 None primary 1 131 None 0.007893
+    None 0 shadow 2 -1 1.0 0.007893
+    1 0 reflected 2 -1 None 0.008545
+    >>> len(ray_tracing(0, 23).rows)        # the top-left corner sees the sky only
+    0
     """
     import scanline as sl
 

@@ -74,7 +74,45 @@ def scan_line_method(scene: Literal["overlap", "surrounding"] = "overlap") -> Sc
     ``visible`` there (each one that wins some pixel of the span).  The first row
     of each scan line lists its ``active edges`` (sorted by x).
     ``table.polygons``: the polygons in (x, y); ``table.face``: the visible polygon
-    per pixel (row y, -1: background)."""
+    per pixel (row y, -1: background).
+
+    Parameters
+    ----------
+    scene : {"overlap", "surrounding"}
+        The scene (default "overlap"; the scenes of :func:`warnock`).
+
+    Returns
+    -------
+    ScanLineTable
+        Columns y, active edges, edge, x, on, span, depths, visible: one row per
+        crossing of each scan line; ``polygons`` and ``face`` as well.
+
+    Raises
+    ------
+    ArgumentValueError
+        ``scene`` is not one of :data:`SCENES`.
+
+    References
+    ----------
+    W. J. Bouknight, "A procedure for generation of three-dimensional half-toned
+    computer graphics presentations", Communications of the ACM 13(9), 1970.
+
+    Examples
+    --------
+    Scan line 4 of the "surrounding" scene: P0's left edge turns P0 on at x = 0;
+    P1's left edge (x = 4) turns P1 on too, so the span 4..11 compares the depths,
+    P0 0.2 against P1 0.7, and shows the nearer P0; P1's right edge (x = 12) and
+    P0's (x = 15) turn them off again:
+
+    >>> t = scan_line_method("surrounding")
+    >>> for r in t.rows:
+    ...     if r["y"] == 4:
+    ...         print(r["edge"], r["x"], r["on"], r["span"], r["depths"], r["visible"])
+    e1 (P0) 0.0 P0 0..3 None P0
+    e3 (P1) 4.0 P0 P1 4..11 P0 0.2, P1 0.7 P0
+    e2 (P1) 12.0 P0 12..14 None P0
+    e0 (P0) 15.0 - None None None
+    """
     from ..visible import ScreenPolygons
 
     v.choice("scene", scene, tuple(SCENES))

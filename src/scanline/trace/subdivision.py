@@ -84,7 +84,50 @@ def warnock(scene: Literal["overlap", "surrounding"] = "overlap") -> WarnockTabl
     polygon's class (``P0``, ``P1`` ...: surrounding, overlapping, inside or
     outside) and the ``decision`` (background, one polygon painted, a surrounding
     polygon in front painted, one pixel resolved by depth, or subdivide).
-    ``table.polygons`` holds the scene's polygons in (x, y)."""
+    ``table.polygons`` holds the scene's polygons in (x, y).
+
+    Parameters
+    ----------
+    scene : {"overlap", "surrounding"}
+        The scene (default "overlap": a far rectangle, a near triangle over it and a
+        tilted quadrilateral piercing it).
+
+    Returns
+    -------
+    WarnockTable
+        Columns x0, y0, x1, y1, level, P0, P1 ... (each polygon's class), decision
+        and painted, one row per area examined; ``polygons``, ``written`` (the
+        pixels each area painted) and ``face`` (the polygon per pixel) as well.
+
+    Raises
+    ------
+    ArgumentValueError
+        ``scene`` is not one of :data:`SCENES`.
+
+    References
+    ----------
+    J. E. Warnock, "A hidden-surface algorithm for computer generated half-tone
+    pictures", University of Utah, 1969.
+
+    Examples
+    --------
+    The "surrounding" scene: a near rectangle P0 (depth 0.2) over the whole
+    screen, a far one P1 (depth 0.7, x 4..12, y 3..9) behind it.  The screen holds
+    both (inside), so it is divided, its top-right quadrant first, and again;
+    the top-right corner area (14..15, 11) meets P0 only (P1 ends at y = 9), and
+    the quadrant (8..11, 6..8), surrounded by both, is decided by P0's greatest
+    depth (0.2) below P1's least (0.7):
+
+    >>> t = warnock("surrounding")
+    >>> for r in t.rows[:4] + t.rows[13:14]:
+    ...     print(r["x0"], r["y0"], r["x1"], r["y1"], r["level"], r["P0"], r["P1"],
+    ...           "|", r["decision"], r["painted"])
+    0 0 15 11 0 inside inside | subdivide None
+    8 6 15 11 1 overlapping overlapping | subdivide None
+    12 9 15 11 2 overlapping overlapping | subdivide None
+    14 11 15 11 3 overlapping outside | one polygon P0
+    8 6 11 8 2 surrounding surrounding | surrounding in front P0
+    """
     from ..visible import ScreenPolygons
     from ..visible.warnock import CASES
 

@@ -28,7 +28,48 @@ def depth_sort(scene: Literal["painter", "cyclic", "intersecting"] = "cyclic",
                split_cycles: bool = True) -> Table:
     """The depth sort of a built-in scene (:data:`SCENES`): one row per pair
     examined, the outcome of each of the five tests tried, and the action taken
-    (Hearn & Baker, section 13-6)."""
+    (Hearn & Baker, section 13-6).
+
+    Parameters
+    ----------
+    scene : {"painter", "cyclic", "intersecting"}
+        The scene (default "cyclic": three sticks, each over the next).
+    split_cycles : bool
+        Split a polygon where the tests find a cycle (default True), as
+        :func:`scanline.visible.depth_sort` does.
+
+    Returns
+    -------
+    Table
+        Columns S, S', test 1 .. test 5 ("yes" where a test settles the pair, "no",
+        or empty where it was not tried) and action; the notes give the polygons,
+        the tests and the drawing order.
+
+    Raises
+    ------
+    ArgumentValueError
+        ``scene`` is not one of :data:`SCENES`.
+
+    References
+    ----------
+    M. E. Newell, R. G. Newell and T. L. Sancha, "A solution to the hidden surface
+    problem", Proceedings of the ACM Annual Conference, 1972.
+
+    Examples
+    --------
+    The painter scene: polygon 0, tilted from depth 0.1 to 0.9, has the greatest
+    depth and comes first; polygon 1 (depth 0.5, inside its x and y extents) lies
+    behind its plane at every vertex, so no test passes and 1 moves ahead; then
+    test 3 finds 1 behind 0's plane, and 1 is drawn first:
+
+    >>> t = depth_sort("painter")
+    >>> for r in t.rows:
+    ...     print(r["S"], r["S'"], [r[f"test {k}"] for k in range(1, 6)], r["action"])
+    0 1 ['no', 'no', 'no', 'no', 'no'] move 1 to the head (flag it)
+    1 0 ['no', 'no', 'yes', None, None] none
+    >>> t.notes[-1]
+    'drawing order (faces): 1 0'
+    """
     from ..visible import TESTS, ScreenPolygons
     from ..visible import depth_sort as sort
 
@@ -51,7 +92,47 @@ def floating_horizon(nx: int = 6, ny: int = 4, width: int = 24, height: int = 16
     """The floating horizon of z = sin(2x) cos(2y) on an ``nx`` x ``ny`` grid drawn
     on a ``width`` x ``height`` device: per curve (nearest first) and column, the
     curve's y, the horizons before, the visibility and the horizons after (Rogers,
-    section 4-2)."""
+    section 4-2).
+
+    Parameters
+    ----------
+    nx, ny : int
+        Grid points along x and y (at least 2; default 6 x 4); the curves are the
+        grid's rows.
+    width, height : int
+        The device in pixels (at least 4; default 24 x 16).
+
+    Returns
+    -------
+    Table
+        Columns curve, column, y, upper before, lower before, visible ("above",
+        "below" or "hidden"), upper after, lower after: one row per column each
+        curve spans, curves nearest first; an empty horizon reads None.
+
+    Raises
+    ------
+    ArgumentTypeError
+        A size is not an integer.
+    ArgumentValueError
+        ``nx`` or ``ny`` below 2, ``width`` or ``height`` below 4.
+
+    References
+    ----------
+    D. F. Rogers, "Procedural Elements for Computer Graphics", section 4-2 (the
+    floating horizon); Hearn & Baker, section 13-10 (curved surfaces).
+
+    Examples
+    --------
+    The nearest curve is seen everywhere and becomes both horizons; the next one,
+    above the upper horizon at column 3, is seen and raises it:
+
+    >>> t = floating_horizon(2, 2, 8, 8)
+    >>> [(r["curve"], r["column"], r["visible"]) for r in t.rows[:5]]
+    [(0, 1, 'above'), (0, 2, 'above'), (0, 3, 'above'), (0, 4, 'above'), (1, 3, 'above')]
+    >>> r = t.rows[4]
+    >>> r["upper before"] < r["y"] == r["upper after"], r["lower after"] == r["lower before"]
+    (True, True)
+    """
     from .._kernels import horizon as k
     from .._kernels._jit import python
     from ..draw3d.horizon import _camera, _grid, horizon_runs

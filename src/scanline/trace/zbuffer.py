@@ -28,9 +28,51 @@ def z_buffer(row: int = 4, triangles: Optional[ArrayLike] = None, width: int = W
     - A/C), the stored ``depth`` before, and ``result`` ("write": z < depth, the
     pixel and depth take the triangle's; "keep": hidden).
 
+    Parameters
+    ----------
+    row : int
+        The scan line traced, 0 .. ``height - 1`` (default 4).
+    triangles : array_like, shape (N, 3, 3), optional
+        Device-space triangles, (x, y, depth) per vertex, drawn in this order;
+        default :data:`SCENE`, three overlapping triangles, the third passing
+        through the others.
+    width, height : int
+        The device (default :data:`WIDTH` x :data:`HEIGHT`, 16 x 10).
+
+    Returns
+    -------
+    Table
+        Columns triangle, x, z, depth, result: one row per pixel of the row that a
+        triangle covers, triangles in drawing order.  The notes give the visible
+        triangle per pixel after the row.
+
+    Raises
+    ------
+    ArgumentTypeError
+        ``triangles`` is not numeric.
+    ArgumentValueError
+        ``triangles`` not finite or not of shape (N, 3, 3); ``row`` not a scan line
+        of the device.
+
+    Notes
+    -----
+    Hearn & Baker, section 13-3; E. Catmull, "A subdivision algorithm for computer
+    display of curved surfaces", PhD thesis, University of Utah, 1974.
+
+    Examples
+    --------
+    Triangle 2's depth plane through (0.5, 3, 0.1), (14, 4, 0.9) and (2, 8, 0.1) is
+    z = 0.1 + (x - 0.5) 0.8/13.2 - (y - 3) 0.24/13.2, so z rises by 0.060606 per
+    pixel; it is nearer than triangle 0 (0.6) at x = 5 and farther than triangle 1
+    (0.3, drawn before it) from x = 6:
+
     >>> t = z_buffer(4)
-    >>> [r["result"] for r in t.rows][:3]
-    ['write', 'write', 'write']
+    >>> for r in t.rows:
+    ...     if r["triangle"] == 2 and 4 <= r["x"] <= 6:
+    ...         print(r["x"], r["z"], r["depth"], r["result"])
+    4 0.293939 0.6 write
+    5 0.354545 0.6 write
+    6 0.415152 0.3 keep
     """
     from .._kernels import raster3d as k
     from .._kernels._jit import python

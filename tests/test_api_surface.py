@@ -44,6 +44,7 @@ COMPLETE = [
     "scanline.context",
     "scanline.visible",
     "scanline.scene",
+    "scanline.trace",
 ]
 
 

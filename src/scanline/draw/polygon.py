@@ -1,7 +1,7 @@
 """Filled polygons by the scan-line algorithm: ``polygon`` and ``polygons`` (notes,
 chapter 2, Q.8; Hearn & Baker, section 3-11)."""
 
-from typing import TYPE_CHECKING, Any, Optional
+from typing import TYPE_CHECKING, Any, Dict, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -15,29 +15,27 @@ from ..geometry import contours as parse
 from ..geometry import guard
 from . import _blend
 from ._common import area_work, colors, target
-from .._typing import Color, Rule
+from .._typing import ArrayLike, Color, Colors, NDArray, Rule
 
 if TYPE_CHECKING:
     from ..framebuffer import FrameBuffer
     from ..attributes import FillStyle
 
-RULES = {"even-odd": k.EVEN_ODD, "nonzero": k.NONZERO}
+RULES: Dict[str, int] = {"even-odd": k.EVEN_ODD, "nonzero": k.NONZERO}
 
 
-def _rule(rule):
+def _rule(rule: Rule) -> int:
     code = RULES.get(rule) if isinstance(rule, str) else None
-    if code is None:
-        v.choice("rule", rule, tuple(RULES))
-    return code
+    return code if code is not None else RULES[v.choice("rule", rule, tuple(RULES))]
 
 
-def _max_edges(offsets, polys):
+def _max_edges(offsets: NDArray[np.int64], polys: NDArray[np.int64]) -> int:
     if len(polys) < 2:
         return 0
     return int((offsets[polys[1:]] - offsets[polys[:-1]]).max())
 
 
-def _bbox(verts):
+def _bbox(verts: NDArray[np.float64]) -> Tuple[int, int, int, int]:
     """Device pixels (inclusive) whose centers can be inside: x in
     [ceil(xmin), ceil(xmax) - 1], y in [floor(ymin) + 1, floor(ymax)]."""
     if len(verts) == 0:
@@ -48,7 +46,8 @@ def _bbox(verts):
             int(np.ceil(hi[0])) - 1, int(np.floor(hi[1])))
 
 
-def _outline(fb, verts, offsets, color):
+def _outline(fb: "FrameBuffer", verts: NDArray[np.float64], offsets: NDArray[np.int64],
+             color: Optional[Color]) -> None:
     """Draw the closed contours with :func:`scanline.draw.lines`."""
     from .lines import lines
     segs = []
@@ -60,7 +59,7 @@ def _outline(fb, verts, offsets, color):
         lines(fb, np.concatenate(segs), color=color)
 
 
-def _solid_only(style):
+def _solid_only(style: Optional["FillStyle"]) -> None:
     """antialias=True fills solid areas only."""
     if style is not None and getattr(style, "kind", None) != "solid":
         raise ArgumentValueError(
@@ -69,7 +68,7 @@ def _solid_only(style):
         )
 
 
-def polygon(fb: "FrameBuffer", points: Any, color: Optional[Color] = None,
+def polygon(fb: "FrameBuffer", points: ArrayLike, color: Optional[Color] = None,
             rule: Rule = "even-odd", style: Optional["FillStyle"] = None,
             antialias: bool = False) -> None:
     """Fill a polygon by the scan-line algorithm.
@@ -182,18 +181,19 @@ def polygon(fb: "FrameBuffer", points: Any, color: Optional[Color] = None,
                                                                  np.int64))
     max_edges = _max_edges(offsets, polys)
 
-    def draw(buf, packed, width, height, ox, oy, pixel):
+    def draw(buf: NDArray[np.uint8], packed: bool, width: int, height: int, ox: int, oy: int,
+             pixel: NDArray[np.uint8]) -> None:
         call(k.fill_polygons, lambda: area_work(width, height, verts - (ox, oy)) / 4, buf,
              layout(packed), width, height, ox, oy, verts, offsets, polys,
              np.asarray(pixel, np.uint8).reshape(1, -1), code, max_edges)
 
-    def outline():
+    def outline() -> None:
         _outline(fb, verts, offsets, color)
 
     _blend.fill(fb, color, style, _bbox(verts), draw, outline)
 
 
-def _one_ring(points):
+def _one_ring(points: object) -> Optional[NDArray[Any]]:
     """``points`` as an (N, 2) array of numbers when it is one contour (an array, or
     a list or tuple of vertices), else None (several contours, or something for the
     general path to refuse by name)."""
@@ -208,12 +208,15 @@ def _one_ring(points):
     return None
 
 
-def _ring_work(buf, layout, width, height, verts, color, rule):
+def _ring_work(buf: NDArray[np.uint8], layout: Tuple[int, ...], width: int, height: int,
+               verts: NDArray[np.float64], color: NDArray[np.uint8], rule: int) -> float:
     """Work units of :func:`scanline._kernels.polygon.fill_ring`."""
     return area_work(width, height, verts) / 4
 
 
-def polygons(fb, polygons, color=None, rule="even-odd", counts=None, antialias=False):
+def polygons(fb: "FrameBuffer", polygons: Union[Sequence[ArrayLike], ArrayLike],
+             color: Optional[Colors] = None, rule: Rule = "even-odd",
+             counts: Optional[ArrayLike] = None, antialias: bool = False) -> None:
     """Fill M polygons in one compiled call.
 
     Parameters
@@ -274,7 +277,8 @@ def polygons(fb, polygons, color=None, rule="even-odd", counts=None, antialias=F
     n = len(polys) - 1
     most = _max_edges(offsets, polys)
     if _blend.translucent(color):
-        def draw(i, buf, packed, width, height, ox, oy, value):
+        def draw(i: int, buf: NDArray[np.uint8], packed: bool, width: int, height: int, ox: int,
+                 oy: int, value: NDArray[np.uint8]) -> None:
             one = verts[offsets[polys[i]]:offsets[polys[i + 1]]]
             call(k.fill_polygons, lambda: area_work(width, height, one - (ox, oy)) / 4, buf,
                  layout(packed), width, height, ox, oy, verts, offsets, polys[i:i + 2],

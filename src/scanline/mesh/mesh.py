@@ -10,7 +10,7 @@ faces have n vertices, else as a list.
 
 import os
 from collections.abc import Iterable, Sized
-from typing import TYPE_CHECKING, List, Literal, Optional, Tuple, TypeVar, Union
+from typing import TYPE_CHECKING, List, Literal, Optional, Tuple, TypedDict, TypeVar, Union
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -41,6 +41,16 @@ class Flat:
     def __init__(self, indices: ArrayLike, sizes: ArrayLike) -> None:
         self.indices = np.ascontiguousarray(indices, np.int64).reshape(-1)
         self.sizes = np.ascontiguousarray(sizes, np.int64).reshape(-1)
+
+
+class MeshOptions(TypedDict, total=False):
+    """The keywords of :class:`Mesh` that the generators (:func:`~scanline.mesh.sphere`,
+    :func:`~scanline.mesh.sweep` ...) pass on to it."""
+    colors: Union[Color, ArrayLike, None]
+    color_on: Optional[Literal["face", "vertex"]]
+    name: Optional[str]
+    uv: Optional[ArrayLike]
+    material: Union["Material", "MaterialRecord", None]
 
 
 #: Bytes of memory a mesh takes per vertex, per face and per face index while it

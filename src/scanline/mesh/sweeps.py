@@ -7,20 +7,35 @@ A profile is a polyline ((N, 2) points in the xy plane, or (N, 3)) or a curve of
 :mod:`scanline.curves` (sampled at ``samples`` parameters).
 """
 
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any, List, Literal, Optional, Sequence, Tuple, Union
+
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from .. import transform3d as t3
+from .._typing import Angle, Points
 from ..errors import ArgumentTypeError, ArgumentValueError
 from ..transform3d.arrays import points as point_array
-from .mesh import Flat, Mesh, _reversed_faces, check_mesh_budget
+from .mesh import Flat, Mesh, MeshOptions, _reversed_faces, check_mesh_budget
+
+if TYPE_CHECKING:
+    from typing_extensions import Unpack
+
+    from ..curves.base import Curve
+    from ..curves.surfaces import Surface
+
+#: A profile: a polyline ((N, 2) or (N, 3) points) or a curve of :mod:`scanline.curves`.
+Profile = Union[Points, "Curve"]
 
 #: Bytes a curve profile takes per sample while it is evaluated (the parameters,
 #: the points and the evaluation's temporaries), for the memory budget.
 BYTES_PER_SAMPLE = 256
 
 
-def profile_points(profile, samples=32):
+def profile_points(profile: Profile, samples: int = 32) -> NDArray[np.float64]:
     """The profile as (N, 3) points: a polyline (z = 0 added to 2-D points) or a
     curve sampled at ``samples`` equally spaced parameters."""
     if hasattr(profile, "evaluate") and hasattr(profile, "domain"):
@@ -29,7 +44,8 @@ def profile_points(profile, samples=32):
         n = v.positive_int("samples", samples, 2)
         budget.check(n * BYTES_PER_SAMPLE, "samples", f"{n:,} samples of the profile curve",
                      hint="give fewer samples")
-        pts = np.asarray(profile.evaluate(np.linspace(*profile.domain, n)), np.float64)
+        start, stop = profile.domain
+        pts: object = np.asarray(profile.evaluate(np.linspace(start, stop, n)), np.float64)
     else:
         pts = profile
     p, _ = point_array("profile", pts, (2, 3))
@@ -40,7 +56,7 @@ def profile_points(profile, samples=32):
     return p
 
 
-def _closed(p, closed):
+def _closed(p: NDArray[np.float64], closed: object) -> Tuple[NDArray[np.float64], bool]:
     if closed is not None and not isinstance(closed, (bool, np.bool_)):
         raise ArgumentTypeError(f"closed must be True, False or None (None: when the "
                                 f"profile's ends coincide), got {v._show(closed)}")
@@ -48,10 +64,12 @@ def _closed(p, closed):
         closed = bool(np.allclose(p[0], p[-1]))
     if closed and np.allclose(p[0], p[-1]):
         p = p[:-1]
-    return p, closed
+    return p, bool(closed)
 
 
-def translational_sweep(profile, vector, closed=None, caps=True, samples=32, **kw):
+def translational_sweep(profile: Profile, vector: ArrayLike, closed: Optional[bool] = None,
+                        caps: bool = True, samples: int = 32,
+                        **kw: Unpack[MeshOptions]) -> Mesh:
     """The surface traced by moving ``profile`` along ``vector`` (dx, dy, dz): one
     quadrilateral per profile segment, and, for a closed profile with ``caps``, the
     two end faces (the profile itself and its moved copy), oriented outward when the
@@ -60,11 +78,38 @@ def translational_sweep(profile, vector, closed=None, caps=True, samples=32, **k
     Parameters
     ----------
     profile : (N, 2|3) polyline or a curve
+        The profile: points (2-D points get z = 0) or a curve of
+        :mod:`scanline.curves`.
     vector : (dx, dy, dz)
+        The sweep's path, not (0, 0, 0).
     closed : bool, optional
         Whether the profile is a closed loop (default: when its ends coincide).
     caps : bool
         Close the ends of a closed profile.
+    samples : int, optional
+        Parameters a curve profile is sampled at (>= 2).
+    **kw
+        ``colors``, ``color_on``, ``name``, ``uv``, ``material``: as :class:`Mesh`
+        takes them.
+
+    Returns
+    -------
+    Mesh
+        2 N vertices; a quadrilateral per profile segment, and the two caps.
+
+    Raises
+    ------
+    ArgumentValueError
+        If the profile has fewer than 2 points (3 when closed and capped),
+        ``vector`` is (0, 0, 0) or moves it beyond float64's range.
+    ArgumentTypeError
+        If ``closed`` or ``caps`` is not a bool.
+    MemoryBudgetError
+        If the mesh would take more memory than the budget allows.
+
+    Notes
+    -----
+    Hearn & Baker, section 10-13, "sweep representations".
 
     Examples
     --------
@@ -78,13 +123,14 @@ def translational_sweep(profile, vector, closed=None, caps=True, samples=32, **k
     p, closed = _closed(profile_points(profile, samples), closed)
     if not isinstance(caps, (bool, np.bool_)):
         raise ArgumentTypeError(f"caps must be True or False, got {v._show(caps)}")
-    d = np.array(vec("vector", vector))
+    given = vec("vector", vector)
+    d = np.array(given)
     if not np.abs(d).max() > 0:
         raise ArgumentValueError("vector must not be (0, 0, 0): the sweep would be flat")
     with np.errstate(over="ignore"):
         moved = p + d
     if not np.isfinite(moved).all():
-        raise ArgumentValueError(f"vector={v._show(tuple(vector))} moves the profile beyond "
+        raise ArgumentValueError(f"vector={v._show(given)} moves the profile beyond "
                                  "the range of float64; use a shorter vector")
     n = len(p)
     count = n if closed else n - 1
@@ -98,7 +144,7 @@ def translational_sweep(profile, vector, closed=None, caps=True, samples=32, **k
     i = np.arange(count)
     j = (i + 1) % n
     parts = [np.stack([i, j, j + n, i + n], axis=1).ravel()]
-    sizes = [np.full(count, 4)]
+    sizes: List[ArrayLike] = [np.full(count, 4)]
     if capped:
         parts += [np.arange(n)[::-1], np.arange(n, 2 * n)]
         sizes += [[n, n]]
@@ -110,7 +156,7 @@ def translational_sweep(profile, vector, closed=None, caps=True, samples=32, **k
     return mesh
 
 
-def _newell_sign(mesh):
+def _newell_sign(mesh: Mesh) -> int:
     """+1 when the faces point outward (positive enclosed volume) or the mesh is
     open, -1 when they point inward."""
     from .mesh import _newell
@@ -125,8 +171,9 @@ def _newell_sign(mesh):
     return 1 if volume >= 0 else -1
 
 
-def rotational_sweep(profile, axis="y", angle=2 * np.pi, steps=32, closed=False,
-                     samples=32, **kw):
+def rotational_sweep(profile: Profile, axis: Union[str, ArrayLike] = "y",
+                     angle: Angle = 2 * np.pi, steps: int = 32, closed: Optional[bool] = False,
+                     samples: int = 32, **kw: Unpack[MeshOptions]) -> Mesh:
     """The surface of revolution of ``profile`` turned by ``angle`` about ``axis``
     in ``steps`` equal rotations (Hearn & Baker's rotational sweep).
 
@@ -138,6 +185,8 @@ def rotational_sweep(profile, axis="y", angle=2 * np.pi, steps=32, closed=False,
     Parameters
     ----------
     profile : (N, 2|3) polyline or a curve
+        The profile: points (2-D points get z = 0) or a curve of
+        :mod:`scanline.curves`.
     axis : {"x", "y", "z"} or (p1, p2)
         As :func:`scanline.transform3d.rotation`.
     angle : float
@@ -145,7 +194,33 @@ def rotational_sweep(profile, axis="y", angle=2 * np.pi, steps=32, closed=False,
     steps : int
         Rotations (faces around), >= 3 for a full turn.
     closed : bool
-        The profile is a closed loop (a torus-like surface).
+        The profile is a closed loop (a torus-like surface); None: when its ends
+        coincide.
+    samples : int, optional
+        Parameters a curve profile is sampled at (>= 2).
+    **kw
+        ``colors``, ``color_on``, ``name``, ``uv``, ``material``: as :class:`Mesh`
+        takes them.
+
+    Returns
+    -------
+    Mesh
+        Faces counterclockwise seen from outside: quadrilaterals, and triangles
+        where a profile point lies on the axis.
+
+    Raises
+    ------
+    ArgumentValueError
+        If ``angle`` is not in (0, 2π], ``steps`` is too small, the profile lies on
+        the axis, or the swept points overflow float64.
+    ArgumentTypeError
+        If ``axis`` is neither a coordinate axis nor two points.
+    MemoryBudgetError
+        If the mesh would take more memory than the budget allows.
+
+    Notes
+    -----
+    Hearn & Baker, section 10-13, "sweep representations".
 
     Examples
     --------
@@ -170,9 +245,10 @@ def rotational_sweep(profile, axis="y", angle=2 * np.pi, steps=32, closed=False,
     if isinstance(axis, str):
         origin, direction = np.zeros(3), np.eye(3)["xyz".index(axis)]
     else:
+        from ..transform3d.affine3d import _axis_points
         from ..transform3d.arrays import direction as unit
 
-        p1, p2 = (np.asarray(q, np.float64) for q in axis)
+        p1, p2 = _axis_points(axis)      # (checked already by _rotated_copies)
         origin = p1
         with np.errstate(over="ignore"):
             direction = unit("axis[1] - axis[0]", p2 - p1)
@@ -213,7 +289,8 @@ def rotational_sweep(profile, axis="y", angle=2 * np.pi, steps=32, closed=False,
     return mesh
 
 
-def _rotated_copies(p, axis, angles):
+def _rotated_copies(p: NDArray[np.float64], axis: Union[str, ArrayLike],
+                    angles: List[float]) -> NDArray[np.float64]:
     """``p`` (n, 3) turned by each of ``angles`` about ``axis``, (len(angles), n, 3):
     the points :func:`scanline.transform3d.rotation` and
     :func:`~scanline.transform3d.apply` give, computed for all the angles at once
@@ -250,13 +327,50 @@ def _rotated_copies(p, axis, angles):
     if not np.isfinite(out).all():
         raise ArgumentValueError("the swept points overflow float64 (the profile or the axis "
                                  "lies too far from the origin); move them closer")
-    return out + 0.0
+    copies: NDArray[np.float64] = out + 0.0
+    return copies
 
 
-def sweep(profile, kind="rotational", **kw):
+def sweep(profile: Profile, kind: Literal["rotational", "translational"] = "rotational",
+          **kw: Any) -> Mesh:
     """A sweep by name: ``"rotational"`` (:func:`rotational_sweep`, keywords
     ``axis``, ``angle``, ``steps``) or ``"translational"``
-    (:func:`translational_sweep`, keyword ``vector``)."""
+    (:func:`translational_sweep`, keyword ``vector``).
+
+    Parameters
+    ----------
+    profile : (N, 2|3) polyline or a curve
+        The profile.
+    kind : {"rotational", "translational"}, optional
+        Which sweep.
+    **kw
+        The keywords of that sweep (``axis``, ``angle``, ``steps``, ``closed``,
+        ``samples``; or ``vector``, ``closed``, ``caps``, ``samples``), and
+        ``colors``, ``color_on``, ``name``.
+
+    Returns
+    -------
+    Mesh
+
+    Raises
+    ------
+    ArgumentValueError
+        If ``kind`` is neither, or as the sweep it names.
+    ArgumentTypeError
+        If a keyword is not one of that sweep's.
+
+    Notes
+    -----
+    Hearn & Baker, section 10-13, "sweep representations".
+
+    Examples
+    --------
+    A triangle swept 3 along z: a prism of three sides and two caps.
+
+    >>> import scanline as sl
+    >>> sl.mesh.sweep([(0, 0), (2, 0), (1, 1)], "translational", vector=(0, 0, 3), closed=True)
+    <Mesh: 6 vertices, 5 faces, 9 edges>
+    """
     v.choice("kind", kind, ("rotational", "translational"))
     own = ({"axis", "angle", "steps", "closed", "samples"} if kind == "rotational"
            else {"vector", "closed", "caps", "samples"}) | {"colors", "color_on", "name"}
@@ -267,10 +381,50 @@ def sweep(profile, kind="rotational", **kw):
     return (rotational_sweep if kind == "rotational" else translational_sweep)(profile, **kw)
 
 
-def from_surface(surface, nu=16, nv=16, **kw):
+def from_surface(surface: Surface, nu: int = 16, nv: int = 16,
+                 **kw: Unpack[MeshOptions]) -> Mesh:
     """A tensor-product surface (:class:`scanline.curves.BezierSurface`,
     :class:`~scanline.curves.BSplineSurface`) tessellated into a triangle mesh with
-    its exact normals (:meth:`~scanline.curves.surfaces.Surface.tessellate`)."""
+    its exact normals (:meth:`~scanline.curves.surfaces.Surface.tessellate`).
+
+    Parameters
+    ----------
+    surface : scanline.curves.BezierSurface or scanline.curves.BSplineSurface
+        The surface.
+    nu, nv : int, optional
+        Intervals of the parameter grid in u and v (>= 1).
+    **kw
+        ``colors``, ``color_on``, ``name``, ``uv``, ``material``: as :class:`Mesh`
+        takes them.
+
+    Returns
+    -------
+    Mesh
+        (nu + 1)(nv + 1) vertices (fewer where the surface meets itself: welded)
+        and 2 nu nv triangles (fewer where they collapse).
+
+    Raises
+    ------
+    ArgumentTypeError
+        If ``surface`` is not a surface of :mod:`scanline.curves`.
+    ArgumentValueError
+        If ``nu`` or ``nv`` is not >= 1.
+    MemoryBudgetError
+        If the mesh would take more memory than the budget allows.
+
+    Examples
+    --------
+    The bilinear patch P(u, v) = (u, v, 0): a 3 x 3 grid of vertices, 8 triangles,
+    normals ∂P/∂u × ∂P/∂v = +z.
+
+    >>> import scanline as sl
+    >>> patch = sl.curves.BezierSurface([[(0, 0, 0), (0, 1, 0)], [(1, 0, 0), (1, 1, 0)]])
+    >>> square = sl.mesh.from_surface(patch, 2, 2)
+    >>> square
+    <Mesh: 9 vertices, 8 faces, 16 edges>
+    >>> square.normals[0].tolist()
+    [0.0, 0.0, 1.0]
+    """
     from ..curves.surfaces import Surface, weld
 
     if not isinstance(surface, Surface):
@@ -285,9 +439,40 @@ def from_surface(surface, nu=16, nv=16, **kw):
     return Mesh(verts, tris, normals=normals, **kw)
 
 
-def teapot(n=6, parts=None, **kw):
+def teapot(n: int = 6, parts: Union[str, Sequence[str], None] = None,
+           **kw: Unpack[MeshOptions]) -> Mesh:
     """The Utah teapot (:func:`scanline.curves.teapot_mesh`) as a :class:`Mesh`: its
     patches tessellated n x n, welded, with exact normals; z up, spout toward +x.
+
+    Parameters
+    ----------
+    n : int, optional
+        Intervals per patch side (>= 1).
+    parts : str or list of str, optional
+        The parts to include (``"rim"``, ``"body"``, ``"handle"`` ...; see
+        :data:`scanline.curves.teapot.PARTS`); all by default.
+    **kw
+        ``colors``, ``color_on``, ``name``, ``uv``, ``material``: as :class:`Mesh`
+        takes them.
+
+    Returns
+    -------
+    Mesh
+        A triangle mesh.
+
+    Raises
+    ------
+    ArgumentValueError
+        If ``n`` is not >= 1 or a part name is unknown.
+    ArgumentTypeError
+        If ``parts`` is not a name or a non-empty list of names.
+    MemoryBudgetError
+        If the mesh would take more memory than the budget allows.
+
+    Notes
+    -----
+    Newell's teapot (1975) of 32 bicubic Bezier patches; Hearn & Baker, section
+    10-8 (Bezier surfaces).
 
     Examples
     --------

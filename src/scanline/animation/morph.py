@@ -28,15 +28,26 @@ edges get the extra sections), :func:`morph` interpolates.
 [[0.0, 0.0], [4.0, 0.0], [3.0, 2.75], [0.0, 3.5]]
 """
 
+from __future__ import annotations
+
 import math
-from typing import NamedTuple
+from typing import TYPE_CHECKING, Literal, NamedTuple, Union, overload
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from ..errors import ArgumentValueError
 from ._checks import flag, floats
 from .easing import fractions
+
+if TYPE_CHECKING:
+    from .._typing import Mode
+    from ..framebuffer import FrameBuffer
+
+#: An image to morph: a frame buffer of mode "L", "RGB" or "RGBA", or a uint8 array in
+#: image order (h, w) or (h, w, 1|3|4).
+MorphImage = Union["FrameBuffer", NDArray[np.uint8]]
 
 
 class Equalization(NamedTuple):
@@ -47,6 +58,16 @@ class Equalization(NamedTuple):
     into N_s.  ``vertices_max``, ``vertices_min``: V_max, V_min; ``n_ls``, ``n_p``:
     N_p points are added to N_ls = (V_max - 1) mod (V_min - 1) line sections and N_p - 1
     to the rest (the vertex form, which counts an open polyline's vertices).
+
+    Examples
+    --------
+    A quadrilateral to a hexagon: 6 mod 4 = 2 of the quadrilateral's edges are divided
+    into int(6 / 4) + 1 = 2 sections, the other 2 stay whole (2 · 2 + 2 · 1 = 6).
+
+    >>> import scanline as sl
+    >>> counts = sl.animation.equalization(4, 6)
+    >>> counts.n_e, counts.n_s
+    (2, 1)
     """
 
     edges_max: int
@@ -59,11 +80,35 @@ class Equalization(NamedTuple):
     n_p: int
 
 
-def equalization(count_a, count_b, closed=True):
+def equalization(count_a: int, count_b: int, closed: bool = True) -> Equalization:
     """The counts of :class:`Equalization` for shapes of ``count_a`` and ``count_b``
     vertices (closed polygons: as many edges as vertices; open polylines: one fewer).
 
-    >>> equalization(3, 4, closed=False)          # the triangle -> quadrilateral case
+    Parameters
+    ----------
+    count_a, count_b : int
+        Vertex counts: >= 3 for closed polygons, >= 2 for open polylines.
+    closed : bool
+        Closed polygons (default) or open polylines.
+
+    Returns
+    -------
+    Equalization
+        L_max, L_min, N_e, N_s, V_max, V_min, N_ls, N_p.
+
+    Raises
+    ------
+    ArgumentTypeError
+        For counts that are not integers, or a ``closed`` that is not a bool.
+    ArgumentValueError
+        For counts below the minimum.
+
+    Examples
+    --------
+    Open polylines of 3 and 4 vertices (Hearn & Baker's triangle -> quadrilateral
+    case): L_max = 3, L_min = 2, N_e = 3 mod 2 = 1, N_s = 1; N_ls = 3 mod 2 = 1, N_p = 1.
+
+    >>> equalization(3, 4, closed=False)
     Equalization(edges_max=3, edges_min=2, n_e=1, n_s=1, vertices_max=4, vertices_min=3, n_ls=1, n_p=1)
     """
     closed = flag("closed", closed)
@@ -76,7 +121,7 @@ def equalization(count_a, count_b, closed=True):
                         (vmax - 1) % (vmin - 1), (vmax - 1) // (vmin - 1))
 
 
-def _shape(name, value, closed):
+def _shape(name: str, value: object, closed: bool) -> NDArray[np.float64]:
     a = floats(name, value, "an array of vertices")
     minimum = 3 if closed else 2
     if a.ndim != 2 or len(a) < minimum or a.shape[1] < 1:
@@ -88,7 +133,8 @@ def _shape(name, value, closed):
     return a
 
 
-def _subdivide(points, edges, closed):
+def _subdivide(points: NDArray[np.float64], edges: int,
+               closed: bool) -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
     """``points`` with its edges divided: edge i into ``sections[i]`` equal parts.
     Returns (vertices, added mask)."""
     lengths = np.linalg.norm(np.roll(points, -1, axis=0) - points, axis=1)
@@ -99,7 +145,8 @@ def _subdivide(points, edges, closed):
     sections = np.full(lmin, n_s)
     longest = np.argsort(-lengths, kind="stable")[:n_e]
     sections[longest] += 1
-    out, added = [], []
+    out: list[NDArray[np.float64]] = []
+    added: list[bool] = []
     for i in range(lmin):
         p, q = points[i], points[(i + 1) % len(points)]
         for k in range(sections[i]):
@@ -111,19 +158,31 @@ def _subdivide(points, edges, closed):
     return np.array(out), np.array(added)
 
 
-def _align(reference, shape, added):
+def _align(reference: NDArray[np.float64], shape: NDArray[np.float64], added: NDArray[np.bool_]
+           ) -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
     """The cyclic shift (and direction) of closed ``shape`` closest to ``reference``."""
-    best = None
+    best: tuple[float, NDArray[np.float64], NDArray[np.bool_]] | None = None
     for candidate, mask in ((shape, added), (shape[::-1], added[::-1])):
         for shift in range(len(shape)):
             rolled = np.roll(candidate, -shift, axis=0)
             cost = float(((rolled - reference) ** 2).sum())
             if best is None or cost < best[0] - 1e-12:
                 best = (cost, rolled, np.roll(mask, -shift))
+    assert best is not None                     # (a shape has vertices)
     return best[1], best[2]
 
 
-def equalize(shape_a, shape_b, *more, closed=True, align=False, return_added=False):
+@overload
+def equalize(shape_a: ArrayLike, shape_b: ArrayLike, *more: ArrayLike, closed: bool = ...,
+             align: bool = ..., return_added: Literal[False] = ...
+             ) -> tuple[NDArray[np.float64], ...]: ...
+@overload
+def equalize(shape_a: ArrayLike, shape_b: ArrayLike, *more: ArrayLike, closed: bool = ...,
+             align: bool = ..., return_added: bool
+             ) -> tuple[NDArray[np.float64] | NDArray[np.bool_], ...]: ...
+def equalize(shape_a: ArrayLike, shape_b: ArrayLike, *more: ArrayLike, closed: bool = True,
+             align: bool = False, return_added: bool = False
+             ) -> tuple[NDArray[np.float64] | NDArray[np.bool_], ...]:
     """Give key-frame shapes equal vertex counts (Hearn & Baker, §16-5).
 
     Parameters
@@ -143,13 +202,33 @@ def equalize(shape_a, shape_b, *more, closed=True, align=False, return_added=Fal
     Returns
     -------
     tuple of numpy.ndarray
-        The shapes with equal vertex counts (and the masks).
+        The shapes with equal vertex counts, float (V, dim) (and, with
+        ``return_added``, after them the masks, bool (V,)).
+
+    Raises
+    ------
+    ArgumentTypeError
+        For shapes that are not numbers, or flags that are not bools.
+    ArgumentValueError
+        For shapes that are not (V, dim) arrays of finite numbers with V >= 3 (closed)
+        or V >= 2 (open), or shapes of different dimensions.
 
     Notes
     -----
     Of the smaller shape's L_min edges, the N_e = L_max mod L_min longest are divided
     into N_s + 1 sections and the others into N_s (N_s = int(L_max / L_min)); Hearn &
     Baker leave open which edges take the extra sections.
+
+    Examples
+    --------
+    A segment against a two-segment tent: the segment's one edge is divided in two at
+    its midpoint, the added vertex.
+
+    >>> import scanline as sl
+    >>> a, b, added_a, added_b = sl.animation.equalize(
+    ...     [(0, 0), (2, 0)], [(0, 0), (1, 1), (2, 0)], closed=False, return_added=True)
+    >>> a.tolist(), added_a.tolist(), added_b.tolist()
+    ([[0.0, 0.0], [1.0, 0.0], [2.0, 0.0]], [False, True, False], [False, False, False])
     """
     closed, align = flag("closed", closed), flag("align", align)
     return_added = flag("return_added", return_added)
@@ -160,7 +239,8 @@ def equalize(shape_a, shape_b, *more, closed=True, align=False, return_added=Fal
     if len(dims) != 1:
         raise ArgumentValueError(f"the shapes must have one dimension, got {sorted(dims)}")
     edges = max(len(s) if closed else len(s) - 1 for s in shapes)
-    out, masks = [], []
+    out: list[NDArray[np.float64]] = []
+    masks: list[NDArray[np.bool_]] = []
     for s in shapes:
         own = len(s) if closed else len(s) - 1
         if own == edges:
@@ -176,12 +256,44 @@ def equalize(shape_a, shape_b, *more, closed=True, align=False, return_added=Fal
     return tuple(out) + tuple(masks) if return_added else tuple(out)
 
 
-def morph(shape_a, shape_b, t, closed=True, align=False):
+def morph(shape_a: ArrayLike, shape_b: ArrayLike, t: ArrayLike, closed: bool = True,
+          align: bool = False) -> NDArray[np.float64]:
     """The in-between shape at fraction ``t`` of the way from ``shape_a`` to
     ``shape_b``: the two are equalized (:func:`equalize`), then each vertex moves
     linearly, P(t) = A + t (B - A).
 
     ``t`` may be an array: the result is then (len(t), V, dim).
+
+    Parameters
+    ----------
+    shape_a, shape_b : array_like (V, dim)
+        The key frames (polygons or polylines in 2-D or 3-D).
+    t : float or array_like
+        Fractions in [0, 1]: 0 gives ``shape_a``, 1 ``shape_b`` (equalized).
+    closed, align : bool
+        As :func:`equalize`.
+
+    Returns
+    -------
+    numpy.ndarray
+        (V, dim), or (len(t), V, dim) for an array ``t``.
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        As :func:`equalize`, and for fractions outside [0, 1].
+
+    Examples
+    --------
+    Halfway from a segment to a tent, the segment's added midpoint (1, 0) has risen
+    halfway to the apex (1, 1):
+
+    >>> import scanline as sl
+    >>> line, tent = [(0, 0), (2, 0)], [(0, 0), (1, 1), (2, 0)]
+    >>> sl.animation.morph(line, tent, 0.5, closed=False).tolist()
+    [[0.0, 0.0], [1.0, 0.5], [2.0, 0.0]]
+    >>> sl.animation.morph(line, tent, [0, 0.25, 1], closed=False).shape
+    (3, 3, 2)
     """
     a, b = equalize(shape_a, shape_b, closed=closed, align=align)
     ts = fractions(t)
@@ -191,15 +303,16 @@ def morph(shape_a, shape_b, t, closed=True, align=False):
 
 
 # -- Beier–Neely ----------------------------------------------------------------------------
-def _image(name, image):
-    """(bottom-up uint8 storage (h, w, c), how to give the result back)."""
+def _image(name: str, image: object) -> tuple[NDArray[np.uint8], Mode | int]:
+    """(bottom-up uint8 storage (h, w, c), how to give the result back: the frame
+    buffer's mode, or the array's number of dimensions)."""
     from ..framebuffer import FrameBuffer
 
     if isinstance(image, FrameBuffer):
         if image.mode not in ("L", "RGB", "RGBA"):
             raise ArgumentValueError(f"{name} is a mode {image.mode!r} frame buffer; morphing "
                                      "blends levels, so use mode 'L', 'RGB' or 'RGBA'")
-        return image._raster()[0], ("fb", image.mode)
+        return image._raster()[0], image.mode
     try:
         a = np.asarray(image)
     except (TypeError, ValueError, OverflowError):
@@ -208,7 +321,7 @@ def _image(name, image):
         raise ArgumentValueError(f"{name} must be a FrameBuffer or a uint8 image array (h, w) or "
                                  f"(h, w, 1|3|4), got dtype {a.dtype}, shape {a.shape}")
     storage = a[::-1] if a.ndim == 3 else a[::-1, :, None]
-    return np.ascontiguousarray(storage), ("array", a.ndim)
+    return np.ascontiguousarray(storage), a.ndim
 
 
 #: Feature lines: end points within +-COORD_LIMIT (as every device coordinate), and
@@ -222,7 +335,7 @@ MIN_LENGTH = 1e-6
 WEIGHT_EXPONENT = 250
 
 
-def _lines(name, value, count=None):
+def _lines(name: str, value: object, count: int | None = None) -> NDArray[np.float64]:
     a = floats(name, value, "an (n, 4) array of lines x0, y0, x1, y1")
     if a.ndim == 3 and a.shape[1:] == (2, 2):
         a = a.reshape(-1, 4)
@@ -254,7 +367,7 @@ def _lines(name, value, count=None):
     return np.ascontiguousarray(a)
 
 
-def _between(lines, t):
+def _between(lines: NDArray[np.float64], t: float) -> None:
     """Check that the interpolated lines L(t) keep a length (a pair of lines turning
     through a point, such as a line and its reverse, collapses halfway)."""
     length = np.hypot(lines[:, 2] - lines[:, 0], lines[:, 3] - lines[:, 1])
@@ -268,15 +381,16 @@ def _between(lines, t):
             "another t")
 
 
-def _weights(a, b, p):
-    a, b, p = v.number("a", a), v.number("b", b), v.number("p", p)
-    if a <= 0 or b < 0 or p < 0:
+def _weights(a: object, b: object, p: object) -> tuple[float, float, float]:
+    fa, fb, fp = v.number("a", a), v.number("b", b), v.number("p", p)
+    if fa <= 0 or fb < 0 or fp < 0:
         raise ArgumentValueError(f"need a > 0, b >= 0 and p >= 0 (the weight (length^p / "
-                                 f"(a + dist))^b), got a={a}, b={b}, p={p}")
-    return a, b, p
+                                 f"(a + dist))^b), got a={fa}, b={fb}, p={fp}")
+    return fa, fb, fp
 
 
-def _weight_range(lines, size, a, b, p):
+def _weight_range(lines: NDArray[np.float64], size: tuple[int, ...], a: float, b: float,
+                  p: float) -> None:
     """Refuse weights (|d|^p / (a + dist))^b that overflow at a line or underflow far
     from every line, over an image of ``size`` (h, w) pixels: both would make the
     kernel's weighted mean 0 / 0 or inf / inf."""
@@ -300,7 +414,7 @@ def _weight_range(lines, size, a, b, p):
     if not (all(math.isfinite(x) and abs(x) <= limit for x in bounds[:2])
             and all(math.isfinite(x) and x >= -limit for x in bounds[2:3] + bounds[4:])
             and highest <= limit):
-        def power(x):
+        def power(x: float) -> str:
             e = x / math.log(10)
             if not math.isfinite(e) or abs(e) > 1e6:
                 return "0" if e < 0 else "infinity"
@@ -313,27 +427,37 @@ def _weight_range(lines, size, a, b, p):
             "[0.5, 2] and p in [0, 1])")
 
 
-def _segment_distance(lines, x, y):
+def _segment_distance(lines: NDArray[np.float64], x: float, y: float) -> NDArray[np.float64]:
     """Distance from the point (x, y) to each segment of ``lines``."""
     px, py, qx, qy = lines.T
     dx, dy = qx - px, qy - py
     u = np.clip(((x - px) * dx + (y - py) * dy) / (dx * dx + dy * dy), 0.0, 1.0)
-    return np.hypot(px + u * dx - x, py + u * dy - y)
+    out: NDArray[np.float64] = np.hypot(px + u * dx - x, py + u * dy - y)
+    return out
 
 
-def _result(storage, how):
+def _result(storage: NDArray[np.uint8], how: Mode | int) -> MorphImage:
     from ..framebuffer import FrameBuffer
 
-    kind, detail = how
-    if kind == "fb":
-        fb = FrameBuffer(storage.shape[1], storage.shape[0], mode=detail)
+    if isinstance(how, str):
+        fb = FrameBuffer(storage.shape[1], storage.shape[0], mode=how)
         fb._buf[...] = storage
         return fb
     image = storage[::-1]
-    return np.ascontiguousarray(image if detail == 3 else image[:, :, 0])
+    return np.ascontiguousarray(image if how == 3 else image[:, :, 0])
 
 
-def beier_neely(image_a, image_b, lines_a, lines_b, t, a=1.0, b=2.0, p=0.5):
+@overload
+def beier_neely(image_a: FrameBuffer, image_b: MorphImage, lines_a: ArrayLike,
+                lines_b: ArrayLike, t: float, a: float = ..., b: float = ...,
+                p: float = ...) -> FrameBuffer: ...
+@overload
+def beier_neely(image_a: NDArray[np.uint8], image_b: MorphImage, lines_a: ArrayLike,
+                lines_b: ArrayLike, t: float, a: float = ..., b: float = ...,
+                p: float = ...) -> NDArray[np.uint8]: ...
+def beier_neely(image_a: MorphImage, image_b: MorphImage, lines_a: ArrayLike,
+                lines_b: ArrayLike, t: float, a: float = 1.0, b: float = 2.0,
+                p: float = 0.5) -> MorphImage:
     """Beier–Neely feature-based morph of two images at fraction ``t``.
 
     The feature lines are interpolated, L(t) = L_A + t (L_B - L_A) (end points);
@@ -361,6 +485,16 @@ def beier_neely(image_a, image_b, lines_a, lines_b, t, a=1.0, b=2.0, p=0.5):
     FrameBuffer or numpy.ndarray
         Of image_a's kind, size and mode.
 
+    Raises
+    ------
+    ArgumentTypeError
+        For lines, ``t``, ``a``, ``b`` or ``p`` that are not numbers.
+    ArgumentValueError
+        For images of another kind, mode or size, line sets that are not (n, 4) of one
+        n, lines of zero (or under 1e-6) length or beyond the device coordinate range,
+        in-between lines that collapse, ``t`` outside [0, 1], or weights that would
+        overflow or underflow over the image.
+
     Notes
     -----
     Compiled kernel :func:`scanline._kernels.morph.field_morph`; the source images
@@ -370,6 +504,18 @@ def beier_neely(image_a, image_b, lines_a, lines_b, t, a=1.0, b=2.0, p=0.5):
     ----------
     T. Beier and S. Neely, "Feature-based image metamorphosis", *SIGGRAPH '92*,
     Computer Graphics 26(2), 1992, pp. 35-42.
+
+    Examples
+    --------
+    With one line set for both images the warps are the identity: a quarter of the
+    way from black to 200 is a cross-dissolve, 0.75 · 0 + 0.25 · 200 = 50.
+
+    >>> import numpy as np
+    >>> import scanline as sl
+    >>> black, gray = np.zeros((2, 3), np.uint8), np.full((2, 3), 200, np.uint8)
+    >>> lines = [(0, 0, 2, 0)]
+    >>> sl.animation.beier_neely(black, gray, lines, lines, 0.25).tolist()
+    [[50, 50, 50], [50, 50, 50]]
     """
     sa, how = _image("image_a", image_a)
     sb, _ = _image("image_b", image_b)
@@ -378,21 +524,59 @@ def beier_neely(image_a, image_b, lines_a, lines_b, t, a=1.0, b=2.0, p=0.5):
                                  f"storage {sa.shape} and {sb.shape}")
     la = _lines("lines_a", lines_a)
     lb = _lines("lines_b", lines_b, len(la))
-    t = fractions(t)
-    if t.ndim != 0:
+    ts = fractions(t)
+    if ts.ndim != 0:
         raise ArgumentValueError(f"t must be one fraction in [0, 1], got an array of shape "
-                                 f"{t.shape}")
-    t = float(t)
-    lines = np.ascontiguousarray(la + t * (lb - la))
-    _between(lines, t)
+                                 f"{ts.shape}")
+    fraction = float(ts)
+    lines = np.ascontiguousarray(la + fraction * (lb - la))
+    _between(lines, fraction)
     weights = _weights(a, b, p)
     _weight_range(lines, sa.shape[:2], *weights)
-    return _result(_morph(sa, sb, lines, la, lb, t, *weights), how)
+    return _result(_morph(sa, sb, lines, la, lb, fraction, *weights), how)
 
 
-def warp(image, lines_from, lines_to, a=1.0, b=2.0, p=0.5):
+@overload
+def warp(image: FrameBuffer, lines_from: ArrayLike, lines_to: ArrayLike, a: float = ...,
+         b: float = ..., p: float = ...) -> FrameBuffer: ...
+@overload
+def warp(image: NDArray[np.uint8], lines_from: ArrayLike, lines_to: ArrayLike,
+         a: float = ..., b: float = ..., p: float = ...) -> NDArray[np.uint8]: ...
+def warp(image: MorphImage, lines_from: ArrayLike, lines_to: ArrayLike, a: float = 1.0,
+         b: float = 2.0, p: float = 0.5) -> MorphImage:
     """Beier–Neely's field warp of one image: the features on ``lines_from`` move to
-    ``lines_to`` (same conventions as :func:`beier_neely`)."""
+    ``lines_to`` (same conventions as :func:`beier_neely`).
+
+    Parameters
+    ----------
+    image : FrameBuffer or numpy.ndarray
+        A frame buffer of mode "L", "RGB" or "RGBA", or a uint8 array in image order.
+    lines_from, lines_to : array_like (n, 4)
+        Corresponding feature lines (x0, y0, x1, y1) in device coordinates (y up).
+    a, b, p : float
+        The line weights, as :func:`beier_neely`.
+
+    Returns
+    -------
+    FrameBuffer or numpy.ndarray
+        Of the image's kind, size and mode.
+
+    Raises
+    ------
+    ArgumentTypeError, ArgumentValueError
+        As :func:`beier_neely`.
+
+    Examples
+    --------
+    One line moved one pixel to the right moves the whole image with it (one line
+    gives a rigid motion); the left column repeats the clamped edge.
+
+    >>> import numpy as np
+    >>> import scanline as sl
+    >>> row = np.array([[10, 20, 30]], np.uint8)
+    >>> sl.animation.warp(row, [(0, 0, 0, 1)], [(1, 0, 1, 1)]).tolist()
+    [[10, 10, 20]]
+    """
     storage, how = _image("image", image)
     src = _lines("lines_from", lines_from)
     dst = _lines("lines_to", lines_to, len(src))
@@ -401,7 +585,9 @@ def warp(image, lines_from, lines_to, a=1.0, b=2.0, p=0.5):
     return _result(_morph(storage, storage, dst, src, src, 0.0, *weights), how)
 
 
-def _morph(sa, sb, lines, la, lb, t, a, b, p):
+def _morph(sa: NDArray[np.uint8], sb: NDArray[np.uint8], lines: NDArray[np.float64],
+           la: NDArray[np.float64], lb: NDArray[np.float64], t: float, a: float, b: float,
+           p: float) -> NDArray[np.uint8]:
     from .._kernels._jit import call
     from .._kernels.morph import field_morph
 
@@ -411,7 +597,8 @@ def _morph(sa, sb, lines, la, lb, t, a, b, p):
     return out
 
 
-def line_table(lines, lines_a, lines_b, p):
+def line_table(lines: NDArray[np.float64], lines_a: NDArray[np.float64],
+               lines_b: NDArray[np.float64], p: float) -> NDArray[np.float64]:
     """The per-line constants that :func:`scanline._kernels.morph.field_morph` reads:
     the destination line, its direction, 1/|d|², 1/|d|, |d|^p and unit normal, and for
     each image the differences P' - P, d' - d, n' - n."""

@@ -105,6 +105,8 @@ class _Simulation:
     flat panel draws each pixel as several)."""
 
     dots = 1
+    width: int
+    height: int
     period: float
 
     def screen(self, t: float) -> NDArray[np.uint8]:

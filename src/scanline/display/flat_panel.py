@@ -50,9 +50,6 @@ class _Matrix(_Simulation):
     """An addressed matrix of cells, each ``dots`` x ``dots`` screen pixels with a
     dark line between cells (the conductors' gaps)."""
 
-    width: int
-    height: int
-
     def __init__(self, fb: FrameBuffer, refresh_rate: float, dots: int) -> None:
         self.pixels = _rgb("fb", fb)
         self.height, self.width = self.pixels.shape[:2]

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import functools
 import io
-from typing import Any, Mapping
+from typing import Any, Literal, Mapping, Optional
 
 import numpy as np
 
@@ -19,7 +19,7 @@ import scanline as sl
 
 from .. import _validate as v
 from ..display.color_crt import BeamPenetration, ShadowMask
-from ..display.crt import RandomScan, RasterScan, bit_planes
+from ..display.crt import Beam, RandomScan, RasterScan, _Simulation, bit_planes
 from ..display.flat_panel import LCD, PlasmaPanel
 from ..display.storage_tube import StorageTube
 from ..errors import ArgumentValueError
@@ -35,7 +35,7 @@ SMALL, DOTS = 64, 4
 MASK_DOTS = 6
 
 
-def _display_file(extra=0):
+def _display_file(extra: int = 0) -> sl.DisplayFile:
     df = sl.DisplayFile()
     df.set_viewing(window=(0, -5, 40, 35), keep_aspect=True)
     _scene(df)
@@ -62,7 +62,7 @@ def frame_buffer(size: int = SIZE) -> sl.FrameBuffer:
     return fb
 
 
-def _flag(name, text):
+def _flag(name: str, text: Optional[str]) -> bool:
     if text in ("1", "true", "yes", "on"):
         return True
     if text in ("0", "false", "no", "off", "", None):
@@ -71,49 +71,52 @@ def _flag(name, text):
 
 
 @functools.lru_cache(maxsize=16)
-def raster(rate=60.0, interlaced=False, persistence=0.02):
+def raster(rate: float = 60.0, interlaced: bool = False, persistence: float = 0.02
+           ) -> RasterScan:
     return RasterScan(frame_buffer(), refresh_rate=rate, interlaced=interlaced,
                       persistence=persistence)
 
 
 @functools.lru_cache(maxsize=16)
-def random(lines=0, speed=2e5, persistence=0.02):
+def random(lines: int = 0, speed: float = 2e5, persistence: float = 0.02) -> RandomScan:
     return RandomScan(_display_file(lines), SIZE, SIZE, writing_speed=speed,
                       persistence=persistence)
 
 
 @functools.lru_cache(maxsize=16)
-def penetration(lines=0, speed=2e5, persistence=0.02):
+def penetration(lines: int = 0, speed: float = 2e5, persistence: float = 0.02
+                ) -> BeamPenetration:
     return BeamPenetration(_display_file(lines), SIZE, SIZE, writing_speed=speed,
                            persistence=persistence)
 
 
 @functools.lru_cache(maxsize=16)
-def shadow_mask(arrangement="delta", misconvergence=0.0, rate=60.0, persistence=0.02):
+def shadow_mask(arrangement: Literal["delta", "in-line"] = "delta", misconvergence: float = 0.0,
+                rate: float = 60.0, persistence: float = 0.02) -> ShadowMask:
     return ShadowMask(frame_buffer(SIZE // MASK_DOTS), arrangement=arrangement,
                       dots=MASK_DOTS, misconvergence=misconvergence, refresh_rate=rate,
                       persistence=persistence)
 
 
 @functools.lru_cache(maxsize=16)
-def storage(remove=None, speed=1e5):
+def storage(remove: Optional[str] = None, speed: float = 1e5) -> StorageTube:
     return StorageTube(_display_file(), SIZE, SIZE, writing_speed=speed, hold=0.05,
                        remove=remove, erase_time=0.02)
 
 
 @functools.lru_cache(maxsize=16)
-def plasma(rate=60.0, persistence=0.02):
+def plasma(rate: float = 60.0, persistence: float = 0.02) -> PlasmaPanel:
     return PlasmaPanel(frame_buffer(SMALL), refresh_rate=rate, persistence=persistence,
                        threshold=60, dots=DOTS)
 
 
 @functools.lru_cache(maxsize=16)
-def lcd(rate=60.0, response=0.004):
+def lcd(rate: float = 60.0, response: float = 0.004) -> LCD:
     return LCD(frame_buffer(SMALL), refresh_rate=rate, response_time=response,
                alternate=True, dots=DOTS)
 
 
-def _number(query, name, default):
+def _number(query: Mapping[str, str], name: str, default: float) -> float:
     try:
         return v.number(name, float(query.get(name, default)))
     except ValueError as e:
@@ -123,7 +126,7 @@ def _number(query, name, default):
             from None
 
 
-def simulation(kind: str, query: Mapping[str, str]) -> Any:
+def simulation(kind: str, query: Mapping[str, str]) -> _Simulation:
     """The simulation a query string asks for (validated by the simulation's own
     checks)."""
     persistence = _number(query, "persistence", 0.02)
@@ -153,10 +156,10 @@ def simulation(kind: str, query: Mapping[str, str]) -> Any:
     raise ArgumentValueError(f"no display device {kind[:40]!r}; one of {', '.join(KINDS)}")
 
 
-def info(sim: Any) -> dict[str, Any]:
+def info(sim: _Simulation) -> dict[str, Any]:
     """What the page prints beside the screen."""
     img = sim.screen(0.0)
-    out = {"period": sim.period, "refresh_rate": 1 / sim.period, "size": [sim.width, sim.height],
+    out: dict[str, Any] = {"period": sim.period, "refresh_rate": 1 / sim.period, "size": [sim.width, sim.height],
            "screen": [img.shape[1], img.shape[0]]}
     if isinstance(sim, ShadowMask):
         out.update(arrangement=sim.arrangement, dots=sim.dots, offsets=sim.offsets.tolist(),
@@ -188,7 +191,7 @@ def info(sim: Any) -> dict[str, Any]:
     return out
 
 
-def frame(sim: Any, t: float) -> tuple[bytes, Any]:
+def frame(sim: _Simulation, t: float) -> tuple[bytes, Beam]:
     """The screen at time ``t`` as raw RGBA bytes, and the beam."""
     rgb = sim.screen(t)
     rgba = np.concatenate([rgb, np.full(rgb.shape[:2] + (1,), 255, np.uint8)], axis=2)

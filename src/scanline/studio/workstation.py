@@ -19,11 +19,15 @@ lines and rectangles (the page shows the band; the positions come from
 :meth:`Workstation.position`), and dragging a segment (its translation).
 """
 
+from __future__ import annotations
+
 import collections
 import io
 import math
+from typing import Any, Optional, Sequence
 
 import numpy as np
+from numpy.typing import NDArray
 
 import scanline as sl
 
@@ -48,7 +52,7 @@ MAX_TEXT = 200
 MAX_POINTS = 20_000
 
 
-def _scene(df):
+def _scene(df: sl.DisplayFile) -> None:
     df.create_segment("house", priority=1)
     df.set_pick_identifier(1)
     df.polygon([(6, 4), (18, 4), (18, 13), (6, 13)], color="tan", edge="saddlebrown", width=2)
@@ -73,7 +77,7 @@ def _scene(df):
     df.close_segment()
 
 
-def _point(name, value):
+def _point(name: str, value: object) -> tuple[float, float]:
     if not isinstance(value, (list, tuple)) or len(value) != 2:
         raise ArgumentTypeError(f"{name} must be a pair [x, y], got {v._show(value)}")
     x, y = v.number(f"{name}[0]", value[0]), v.number(f"{name}[1]", value[1])
@@ -86,55 +90,56 @@ def _point(name, value):
 class Workstation:
     """One display file on a WIDTH x HEIGHT raster, with its input state."""
 
-    def __init__(self):
+    def __init__(self) -> None:
         self.df = sl.DisplayFile(aspect=(HEIGHT - 1) / (WIDTH - 1))
         self.df.set_viewing(window=WINDOW)
         _scene(self.df)
         self.mode = "sample"
-        self.requested = None
-        self.events = collections.deque()
+        self.requested: Optional[str] = None
+        self.events: collections.deque[tuple[str, dict[str, Any]]] = collections.deque()
         self.tool = "line"
         self.grid = 1.0
         self.snap = False
         self.gravity = 0.0
         self.constraint = "none"
-        self.selected = None
-        self.log = collections.deque(maxlen=12)
+        self.selected: Optional[str] = None
+        self.log: collections.deque[str] = collections.deque(maxlen=12)
         self.version = 0
         self._count = 0
-        self._moves = {}     # segment -> (tx, ty) world translation
-        self._turns = {}     # segment -> degrees
-        self._sizes = {}     # segment -> positions it holds (MAX_POINTS)
+        self._moves: dict[str, tuple[float, float]] = {}     # segment -> (tx, ty) world translation
+        self._turns: dict[str, float] = {}     # segment -> degrees
+        self._sizes: dict[str, int] = {}     # segment -> positions it holds (MAX_POINTS)
 
     # -- geometry -------------------------------------------------------------------
     @property
-    def size(self):
+    def size(self) -> tuple[int, int]:
         return (WIDTH, HEIGHT)
 
-    def world(self, x, y):
+    def world(self, x: float, y: float) -> tuple[float, float]:
         """Device -> world: the locator's inverse mapping."""
         return self.df.locate(x, y, self.size)
 
-    def device(self, wx, wy):
+    def device(self, wx: float, wy: float) -> tuple[float, float]:
         """World -> device (the forward mapping), for the page's echo."""
         x, y = sl.transform.apply(self._forward(), [(wx, wy)])[0]
         return float(x), float(y)
 
-    def _forward(self):
-        return sl.viewing.ndc_to_device(WIDTH, HEIGHT) @ self.df.normalization
+    def _forward(self) -> NDArray[np.float64]:
+        m: NDArray[np.float64] = sl.viewing.ndc_to_device(WIDTH, HEIGHT) @ self.df.normalization
+        return m
 
-    def _worlds(self, points):
+    def _worlds(self, points: Sequence[tuple[float, float]]) -> list[tuple[float, ...]]:
         """Device -> world for an (N, 2) array at once (the locator's inverse mapping,
         as :meth:`world`)."""
         m = sl.transform.compose(sl.transform.inverse(self.df.normalization),
                                  sl.transform.inverse(sl.viewing.ndc_to_device(WIDTH, HEIGHT)))
         return [tuple(p) for p in sl.transform.apply(m, np.asarray(points, float)).tolist()]
 
-    def _lines(self):
+    def _lines(self) -> NDArray[np.float64]:
         """Every polyline and polygon edge of the visible segments, in world
         coordinates after the segment transformations (for the gravity field)."""
         n_inv = sl.transform.inverse(self.df.normalization)
-        out = []
+        out: list[NDArray[np.float64]] = []
         for seg in self.df.segments:
             if not seg.visible:
                 continue
@@ -149,14 +154,14 @@ class Workstation:
                     out += [np.hstack([q[:-1], q[1:]])]
         return np.vstack(out) if out else np.zeros((0, 4))
 
-    def position(self, x, y, anchor=None):
+    def position(self, x: float, y: float, anchor: object = None) -> dict[str, Any]:
         """The position an input at device (x, y) gives after the techniques: the
         gravity field (onto the nearest line within ``gravity`` device units), else
         grid snapping, then the constraint relative to ``anchor`` (device).  Returns
         the world and device positions and what was applied."""
         x, y = _point("position", (x, y))
         wx, wy = self.world(x, y)
-        applied = []
+        applied: list[str] = []
         pulled = False
         if self.gravity > 0:
             segs = self._lines()
@@ -192,8 +197,9 @@ class Workstation:
         return {"world": [wx, wy], "device": [dx, dy], "applied": applied}
 
     # -- settings -------------------------------------------------------------------
-    def settings(self, mode=None, grid=None, snap=None, gravity=None, constraint=None,
-                 tool=None):
+    def settings(self, mode: Optional[str] = None, grid: Optional[float] = None,
+                 snap: Optional[bool] = None, gravity: Optional[float] = None,
+                 constraint: Optional[str] = None, tool: Optional[str] = None) -> None:
         if mode is not None:
             self.mode = v.choice("mode", mode, MODES)
             self.requested = None
@@ -218,13 +224,13 @@ class Workstation:
         self.version += 1
 
     # -- input ----------------------------------------------------------------------
-    def request(self, device):
+    def request(self, device: str) -> None:
         """REQUEST a device (request mode): the next input of it is taken."""
         if self.mode != "request":
             raise ArgumentValueError(f"request needs the request mode; the mode is {self.mode!r}")
         self.requested = v.choice("device", device, DEVICES)
 
-    def input(self, device, value):
+    def input(self, device: str, value: dict[str, Any]) -> dict[str, Any]:
         """An operator's input: taken at once (sample mode, or request mode when that
         device was requested) or queued (event mode).  Returns what happened."""
         device = v.choice("device", device, DEVICES)
@@ -245,30 +251,30 @@ class Workstation:
             self.requested = None
         return {"queued": False, "result": self._apply(device, value)}
 
-    def await_event(self):
+    def await_event(self) -> Optional[dict[str, Any]]:
         """AWAIT EVENT: take the oldest queued input and apply it (None if empty)."""
         if not self.events:
             return None
         device, value = self.events.popleft()
         return {"device": device, "result": self._apply(device, value)}
 
-    def _check(self, device, value):
+    def _check(self, device: str, value: dict[str, Any]) -> None:
         """Validate an input before it is queued (so a bad one is refused at once)."""
         getattr(self, "_" + device)(value, dry=True)
 
-    def _apply(self, device, value):
-        result = getattr(self, "_" + device)(value, dry=False)
+    def _apply(self, device: str, value: dict[str, Any]) -> dict[str, Any]:
+        result: dict[str, Any] = getattr(self, "_" + device)(value, dry=False)
         self.log.appendleft(f"{device}: {result['text']}")
         self.version += 1
         return result
 
-    def _new_name(self, kind):
+    def _new_name(self, kind: str) -> str:
         if len(self.df) >= MAX_SEGMENTS:
             raise ArgumentValueError(f"the display file holds {MAX_SEGMENTS} segments; delete some")
         self._count += 1
         return f"{kind}-{self._count}"
 
-    def _room(self, n, argument):
+    def _room(self, n: int, argument: str) -> None:
         """Refuse ``n`` more positions past MAX_POINTS."""
         held = sum(self._sizes.values())
         if held + n > MAX_POINTS:
@@ -276,10 +282,10 @@ class Workstation:
                 f"{argument}: {n} more positions would make {held + n}; a workstation holds "
                 f"at most {MAX_POINTS}: delete some segments")
 
-    def _color(self):
+    def _color(self) -> str:
         return COLORS[self._count % len(COLORS)]
 
-    def _locator(self, value, dry):
+    def _locator(self, value: dict[str, Any], dry: bool) -> dict[str, Any]:
         p = self.position(*_point("value.position", value.get("position")),
                           anchor=value.get("anchor"))
         tool = value.get("tool", "point")
@@ -301,7 +307,7 @@ class Workstation:
         return {"segment": name, "world": b,
                 "text": f"{tool} {name} from ({a[0]:.2f}, {a[1]:.2f}) to ({b[0]:.2f}, {b[1]:.2f})"}
 
-    def _stroke(self, value, dry):
+    def _stroke(self, value: dict[str, Any], dry: bool) -> dict[str, Any]:
         pts = value.get("points")
         if not isinstance(pts, list) or not 2 <= len(pts) <= MAX_STROKE:
             raise ArgumentValueError(
@@ -317,8 +323,8 @@ class Workstation:
         self.df.close_segment()
         return {"segment": name, "points": len(world), "text": f"{name}, {len(world)} positions"}
 
-    def _valuator(self, value, dry):
-        name = value.get("segment")
+    def _valuator(self, value: dict[str, Any], dry: bool) -> dict[str, Any]:
+        name: Any = value.get("segment")    # JSON: DisplayFile.segment checks it
         seg = self.df.segment(name)
         angle = v.number("value.angle", value.get("angle"))
         if not -360 <= angle <= 360:
@@ -330,7 +336,7 @@ class Workstation:
         return {"segment": seg.name, "angle": angle,
                 "matrix": seg.transformation.tolist(), "text": f"{seg.name} turned {angle:g} degrees"}
 
-    def _choice(self, value, dry):
+    def _choice(self, value: dict[str, Any], dry: bool) -> dict[str, Any]:
         item = value.get("item")
         if isinstance(item, bool) or not isinstance(item, int) or not 1 <= item <= len(MENU):
             raise ArgumentValueError(
@@ -341,13 +347,13 @@ class Workstation:
         self.tool = MENU[item - 1]
         return {"item": item, "tool": self.tool, "text": f"item {item}: {self.tool}"}
 
-    def _pick(self, value, dry):
+    def _pick(self, value: dict[str, Any], dry: bool) -> dict[str, Any]:
         x, y = _point("value.position", value.get("position"))
         aperture = v.number("value.aperture", value.get("aperture", 3))
         got = self.df.pick(x, y, aperture, self.size)
         if dry:
             return {}
-        if self.selected in self.df:
+        if self.selected is not None and self.selected in self.df:
             self.df.set_highlighting(self.selected, False)
         self.selected = got.segment if got else None
         if got:
@@ -355,7 +361,7 @@ class Workstation:
         return {"segment": got.segment if got else None, "pick_id": got.pick_id if got else None,
                 "text": f"segment {got.segment!r}, pick id {got.pick_id}" if got else "nothing"}
 
-    def _string(self, value, dry):
+    def _string(self, value: dict[str, Any], dry: bool) -> dict[str, Any]:
         text = value.get("text")
         if not isinstance(text, str) or not 0 < len(text) <= MAX_TEXT:
             raise ArgumentValueError(f"value.text must be a string of 1 to {MAX_TEXT} characters")
@@ -371,7 +377,7 @@ class Workstation:
         return {"segment": name, "world": w, "text": f"{name} {text!r} at ({w[0]:.2f}, {w[1]:.2f})"}
 
     # -- dragging ---------------------------------------------------------------------
-    def drag(self, segment, dx, dy):
+    def drag(self, segment: str, dx: float, dy: float) -> dict[str, Any]:
         """Move a segment by the device displacement (dx, dy) (dragging, 8-4)."""
         seg = self.df.segment(segment)
         dx, dy = _point("delta", (dx, dy))
@@ -382,10 +388,10 @@ class Workstation:
         self.version += 1
         return {"segment": seg.name, "matrix": seg.transformation.tolist()}
 
-    def _center(self, name):
+    def _center(self, name: str) -> tuple[float, ...]:
         """The world center of a segment's untransformed geometry (its pivot)."""
         n_inv = sl.transform.inverse(self.df.normalization)
-        pts = []
+        pts: list[NDArray[np.float64]] = []
         for prim in self.df.segment(name).primitives:
             g = prim.geometry
             for key in ("points", "center", "anchor"):
@@ -396,7 +402,7 @@ class Workstation:
         lo, hi = w.min(axis=0), w.max(axis=0)
         return tuple(((lo + hi) / 2).tolist())
 
-    def _transform(self, name):
+    def _transform(self, name: str) -> None:
         """The segment transformation: rotation about its center, then the drag."""
         turn = sl.transform.rotation(math.radians(self._turns.get(name, 0.0)),
                                      pivot=self._center(name))
@@ -404,7 +410,7 @@ class Workstation:
         self.df.set_transformation(name, self.df.world_transformation(
             sl.transform.compose(move, turn)))
 
-    def delete(self, segment):
+    def delete(self, segment: str) -> None:
         name = self.df.segment(segment).name
         self.df.delete_segment(name)
         self._sizes.pop(name, None)
@@ -413,7 +419,7 @@ class Workstation:
         self.version += 1
 
     # -- output ---------------------------------------------------------------------
-    def state(self):
+    def state(self) -> dict[str, Any]:
         return {
             "size": [WIDTH, HEIGHT], "window": list(WINDOW), "mode": self.mode,
             "requested": self.requested, "events": [d for d, _ in self.events],
@@ -427,7 +433,7 @@ class Workstation:
                           "primitives": len(s.primitives)} for s in self.df.segments],
         }
 
-    def png(self):
+    def png(self) -> bytes:
         """The display file drawn on the workstation's raster, with the grid's points
         when snapping is on, as PNG bytes."""
         fb = sl.FrameBuffer(WIDTH, HEIGHT, mode="RGB", background="white")

@@ -21,11 +21,13 @@ part of the cut face itself) and removed where it faces the kept side.
 """
 
 from dataclasses import dataclass
-from typing import Any, List, Optional
+from typing import Any, Dict, List, Optional, Set, Tuple
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
+from .._typing import Color
 from ..errors import ArgumentTypeError, ArgumentValueError
 from ..mesh import Mesh
 from ..mesh.mesh import check_mesh_budget
@@ -75,7 +77,7 @@ class Cutaway:
 
     meshes: List[Optional[Mesh]]
     caps: List[Optional[Mesh]]
-    loops: List[List[Any]]
+    loops: List[List[NDArray[np.float64]]]
     closed: List[Optional[Mesh]]
 
     def drawable(self) -> List[Mesh]:
@@ -97,7 +99,7 @@ class Cutaway:
         return [m for m in list(self.meshes) + list(self.caps) if m is not None]
 
 
-def _planes(planes):
+def _planes(planes: ArrayLike) -> NDArray[np.float64]:
     p = v.real_array("planes", planes, "(A, B, C, D) or (N, 4)")
     if p.ndim == 1:
         p = p[None, :]
@@ -114,12 +116,15 @@ def _planes(planes):
         raise ArgumentValueError(
             "each plane's normal (A, B, C) must be a nonzero vector, e.g. (1, 0, 0, -0.5) for "
             "the plane x = 0.5 keeping x >= 0.5")
-    return p / n[:, None]
+    unit: NDArray[np.float64] = p / n[:, None]
+    return unit
 
 
-def _attributes(mesh):
+def _attributes(mesh: Mesh) -> Tuple[NDArray[np.float64], Dict[str, slice]]:
     """Per-vertex arrays interpolated at the cuts: (V, k) and their column slices."""
-    cols, parts, k = [], {}, 0
+    cols: List[NDArray[np.float64]] = []
+    parts: Dict[str, slice] = {}
+    k = 0
     for name in ("normals", "uv"):
         a = getattr(mesh, name)
         if a is not None:
@@ -134,7 +139,10 @@ def _attributes(mesh):
     return attrs, parts
 
 
-def _clip(verts, attrs, tris, labels, plane, eps):
+def _clip(verts: NDArray[np.float64], attrs: NDArray[np.float64], tris: NDArray[np.int64],
+          labels: NDArray[np.int64], plane: NDArray[np.float64],
+           eps: float) -> Tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.int64],
+                                NDArray[np.int64], NDArray[np.bool_]]:
     """Clip the triangles by one plane, keeping distance >= 0: new vertices (with
     their attributes) on the crossing edges, the kept pieces as triangles."""
     d = verts @ plane[:3] + plane[3]
@@ -170,7 +178,7 @@ def _clip(verts, attrs, tris, labels, plane, eps):
     return verts, attrs, tris, labels, on
 
 
-def _loops(tris, on):
+def _loops(tris: NDArray[np.int64], on: NDArray[np.bool_]) -> List[NDArray[np.int64]]:
     """The closed loops of the clipped surface's border edges lying in the plane,
     each reversed (the cap's orientation); the open chains are dropped."""
     half = np.stack([tris, np.roll(tris, -1, axis=1)], axis=2).reshape(-1, 2)
@@ -178,10 +186,10 @@ def _loops(tris, on):
     fwd = half[:, 0] * n + half[:, 1]
     twin = half[:, 1] * n + half[:, 0]
     border = half[~np.isin(twin, fwd) & on[half[:, 0]] & on[half[:, 1]]]
-    nxt = {}
+    nxt: Dict[int, List[int]] = {}
     for a, b in border[:, ::-1].tolist():                 # reversed: the cap's edges
         nxt.setdefault(a, []).append(b)
-    loops = []
+    loops: List[NDArray[np.int64]] = []
     while nxt:
         start = next(iter(nxt))
         loop, p = [start], start
@@ -199,7 +207,7 @@ def _loops(tris, on):
     return loops
 
 
-def _inside(point, poly):
+def _inside(point: NDArray[np.float64], poly: NDArray[np.float64]) -> bool:
     """Even-odd point-in-polygon test in 2-D."""
     x, y = point
     a, b = poly, np.roll(poly, -1, axis=0)
@@ -209,12 +217,13 @@ def _inside(point, poly):
     return bool(np.count_nonzero(crosses & (x < xs)) % 2)
 
 
-def _area(poly):
+def _area(poly: NDArray[np.float64]) -> float:
     x, y = poly[:, 0], poly[:, 1]
     return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(np.roll(x, -1), y))
 
 
-def _cap(verts, loops, normal):
+def _cap(verts: NDArray[np.float64], loops: List[NDArray[np.int64]],
+         normal: NDArray[np.float64]) -> NDArray[np.int64]:
     """Triangles (indices into ``verts``) filling the loops: outer loops with the holes
     they contain, by earcut; counterclockwise about ``normal``."""
     import mapbox_earcut
@@ -225,13 +234,13 @@ def _cap(verts, loops, normal):
     flat = [np.stack([verts[lp] @ e1, verts[lp] @ e2], axis=1) for lp in loops]
     areas = [_area(f) for f in flat]
     outer = [i for i, s in enumerate(areas) if s > 0]
-    holes = {i: [] for i in outer}
+    holes: Dict[int, List[int]] = {i: [] for i in outer}
     for j, s in enumerate(areas):
         if s < 0:
             owners = [i for i in outer if _inside(flat[j][0], flat[i])]
             if owners:
                 holes[min(owners, key=lambda i: areas[i])].append(j)
-    out = []
+    out: List[NDArray[np.int64]] = []
     for i in outer:
         rings = [i] + holes[i]
         ids = np.concatenate([loops[r] for r in rings])
@@ -248,46 +257,48 @@ def _cap(verts, loops, normal):
     return tris
 
 
-def _with_every_vertex(tris, ids, verts, e1, e2):
+def _with_every_vertex(tris: NDArray[np.int64], ids: NDArray[np.int64],
+                       verts: NDArray[np.float64], e1: NDArray[np.float64],
+                       e2: NDArray[np.float64]) -> NDArray[np.int64]:
     """Earcut may skip a loop vertex on a straight stretch of its loop, or fill a
     straight stretch with a triangle of no area; either leaves a T-junction (an edge
     of the cap passing through a vertex of the clipped surface).  Remove the slivers
     and split the triangle whose edge passes through such a vertex, so that the cap
     meets the clipped surface edge for edge and the capped mesh stays closed."""
     flat = np.stack([verts @ e1, verts @ e2], axis=1)
-    tris = [list(t) for t in tris.tolist()]
-    pending = set(ids.tolist()) - {i for t in tris for i in t}
+    rows: List[List[int]] = [list(t) for t in tris.tolist()]
+    pending = set(ids.tolist()) - {i for t in rows for i in t}
     for _ in range(4 * len(ids) + 4):
-        pending |= _slivers(tris, flat)
+        pending |= _slivers(rows, flat)
         if not pending:
             break
         b = pending.pop()
-        for t in tris:
+        for t in rows:
             for k in range(3):
                 p, q = flat[t[k]], flat[t[(k + 1) % 3]]
                 if _between(flat[b], p, q):
                     r = t[(k + 2) % 3]
-                    tris.append([b, t[(k + 1) % 3], r])
+                    rows.append([b, t[(k + 1) % 3], r])
                     t[:] = [t[k], b, r]
                     break
             else:
                 continue
             break
-    return np.array(tris, np.int64).reshape(-1, 3)
+    return np.array(rows, np.int64).reshape(-1, 3)
 
 
-def _between(b, p, q):
+def _between(b: NDArray[np.float64], p: NDArray[np.float64], q: NDArray[np.float64]) -> bool:
     """Whether 2-D point ``b`` lies strictly inside the segment pq."""
     d = q - p
     length2 = float(d @ d)
     s = float((b - p) @ d) / max(length2, 1e-300)
     off = (b - p)[0] * d[1] - (b - p)[1] * d[0]
-    return 0 < s < 1 and off * off <= 1e-20 * length2 * length2
+    return 0 < s < 1 and bool(off * off <= 1e-20 * length2 * length2)
 
 
-def _slivers(tris, flat):
+def _slivers(tris: List[List[int]], flat: NDArray[np.float64]) -> Set[int]:
     """Remove the triangles of no area; their middle vertices."""
-    middle = set()
+    middle: Set[int] = set()
     for t in list(tris):
         for k in range(3):
             if _between(flat[t[k]], flat[t[(k + 1) % 3]], flat[t[(k + 2) % 3]]):
@@ -297,23 +308,24 @@ def _slivers(tris, flat):
     return middle
 
 
-def _cut(mesh, planes, cap_color):
+def _cut(mesh: Mesh, planes: NDArray[np.float64], cap_color: Optional[Tuple[int, ...]]
+         ) -> Tuple[Optional[Mesh], Optional[Mesh], List[NDArray[np.float64]], Optional[Mesh]]:
     tri = mesh.triangulated()
     verts = mesh.vertices.copy()
     attrs, parts = _attributes(mesh)
-    tris = tri.faces.reshape(-1, 3).astype(np.int64)
+    tris = np.asarray(tri.faces).reshape(-1, 3).astype(np.int64)
     face_colors = tri.colors if tri.color_on == "face" else None
     labels = np.arange(len(tris))                          # >= 0: a face; -1 - k: plane k's cap
     size = float(np.abs(verts).max(initial=0.0)) + float(np.ptp(verts, axis=0).max(initial=0.0))
     eps = EPS * max(size, 1e-300)
-    loops_all = []
+    loops_all: List[NDArray[np.int64]] = []
     for k, plane in enumerate(planes):
         if not len(tris):
             break
         check_mesh_budget("meshes", len(verts) + 3 * len(tris), 2 * len(tris), 6 * len(tris),
                           "the cutaway of the mesh")
         verts, attrs, tris, labels, on = _clip(verts, attrs, tris, labels, plane, eps)
-        loops = _loops(tris, on) if len(tris) else []
+        loops: List[NDArray[np.int64]] = _loops(tris, on) if len(tris) else []
         # the loops run across the earlier planes' caps where this plane cuts them
         cap = _cap(verts, loops, -plane[:3]) if loops else np.zeros((0, 3), np.int64)
         tris = np.vstack([tris, cap])
@@ -324,7 +336,7 @@ def _cut(mesh, planes, cap_color):
     used = np.zeros(len(verts), bool)
     used[tris.reshape(-1)] = True
     # a later plane may have cut an earlier plane's loop away
-    loops = [verts[lp] for lp in loops_all if used[lp].all()]
+    outlines = [verts[lp] for lp in loops_all if used[lp].all()]
     clipped = _compact(verts, tris[body], attrs, parts,
                        None if face_colors is None else face_colors[labels[body]])
     if clipped is not None:
@@ -338,16 +350,18 @@ def _cut(mesh, planes, cap_color):
                         colors=None if cap_color is None else [cap_color] * len(t),
                         name=None if mesh.name is None else f"{mesh.name} cap")
         cap_mesh.material = mesh.material
-    return clipped, cap_mesh, loops, closed
+    return clipped, cap_mesh, outlines, closed
 
 
-def _compact(verts, tris, attrs, parts, colors=None):
+def _compact(verts: NDArray[np.float64], tris: NDArray[np.int64],
+             attrs: Optional[NDArray[np.float64]], parts: Optional[Dict[str, slice]],
+             colors: Optional[NDArray[Any]] = None) -> Optional[Mesh]:
     """A Mesh of the triangles, keeping only the vertices they use."""
     used = np.unique(tris.reshape(-1))
     remap = np.full(len(verts), -1, np.int64)
     remap[used] = np.arange(len(used))
-    kw = {}
-    if attrs is not None:
+    kw: Dict[str, Any] = {}     # Mesh's keyword arguments
+    if attrs is not None and parts is not None:
         a = attrs[used]
         if "normals" in parts:
             n = a[:, parts["normals"]]
@@ -364,7 +378,7 @@ def _compact(verts, tris, attrs, parts, colors=None):
     return Mesh(verts[used], remap[tris], **kw)
 
 
-def cutaway(meshes: Any, planes: Any, cap_color: Any = None) -> Cutaway:
+def cutaway(meshes: Any, planes: ArrayLike, cap_color: Optional[Color] = None) -> Cutaway:
     """Meshes cut by clipping planes, with the cut faces capped (Hearn & Baker, section
     9-1).
 
@@ -400,7 +414,9 @@ def cutaway(meshes: Any, planes: Any, cap_color: Any = None) -> Cutaway:
     if cap_color is not None:
         from ..color.spec import rgba
 
-        cap_color = tuple(int(c) for c in rgba(cap_color, "cap_color"))
-    results = [_cut(m, p, cap_color) for m in parts]
+        cap_rgba: Optional[Tuple[int, ...]] = tuple(int(c) for c in rgba(cap_color, "cap_color"))
+    else:
+        cap_rgba = None
+    results = [_cut(m, p, cap_rgba) for m in parts]
     return Cutaway([r[0] for r in results], [r[1] for r in results],
                    [r[2] for r in results], [r[3] for r in results])

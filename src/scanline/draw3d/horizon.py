@@ -7,12 +7,13 @@
 
 import math
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, Callable, Optional, Sequence, Tuple, Union
+from typing import TYPE_CHECKING, Any, Callable, Literal, Optional, Sequence, Tuple, Union
 
 import numpy as np
-from numpy.typing import ArrayLike
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
+from .._typing import Color
 from ..draw._common import target
 from ..errors import ArgumentTypeError, ArgumentValueError
 
@@ -24,6 +25,8 @@ if TYPE_CHECKING:
 Surface = Union[ArrayLike, Callable[..., Any]]
 #: A camera, or (azimuth, elevation) in radians.
 View = Union["Camera", Tuple[float, float]]
+#: The grid's lines drawn as curves.
+Curves = Literal["rows", "columns"]
 
 #: Default view of ``camera_or_angles``: azimuth and elevation, radians.
 ANGLES = (math.radians(30.0), math.radians(30.0))
@@ -65,15 +68,16 @@ class Horizon:
         The device x, y and depth of every grid point.
     """
 
-    segments: np.ndarray
-    upper: np.ndarray
-    lower: np.ndarray
-    states: np.ndarray
-    curves: np.ndarray
-    points: np.ndarray
+    segments: NDArray[np.float64]
+    upper: NDArray[np.float64]
+    lower: NDArray[np.float64]
+    states: NDArray[np.int8]
+    curves: NDArray[np.int64]
+    points: NDArray[np.float64]
 
 
-def _grid(z, x, y):
+def _grid(z: Surface, x: Optional[ArrayLike], y: Optional[ArrayLike]
+          ) -> Tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
     if callable(z):
         xs = np.linspace(-1.0, 1.0, SAMPLES) if x is None else _axis("x", x)
         ys = np.linspace(-1.0, 1.0, SAMPLES) if y is None else _axis("y", y)
@@ -103,7 +107,7 @@ def _grid(z, x, y):
     return xs, ys, zz
 
 
-def _axis(name, value):
+def _axis(name: str, value: ArrayLike) -> NDArray[np.float64]:
     a = v.real_array(name, value, "(n,)")
     if a.ndim != 1 or len(a) < 2 or not np.isfinite(a).all() or not (np.diff(a) > 0).all():
         raise ArgumentValueError(f"{name} must be at least two finite, increasing values, "
@@ -111,7 +115,8 @@ def _axis(name, value):
     return a
 
 
-def _camera(camera_or_angles, xs, ys, zz):
+def _camera(camera_or_angles: View, xs: NDArray[np.float64], ys: NDArray[np.float64],
+            zz: NDArray[np.float64]) -> "Camera":
     from ..projection import Camera, orthographic
 
     if isinstance(camera_or_angles, Camera):
@@ -143,7 +148,8 @@ def _camera(camera_or_angles, xs, ys, zz):
                                           front=zmax + size, back=zmin - size))
 
 
-def _run(xs, ys, single=False):
+def _run(xs: NDArray[np.float64], ys: NDArray[np.float64], single: bool = False) -> Tuple[int,
+         int, NDArray[np.float64], NDArray[np.float64]]:
     """One run: (c0, count, ylo, yhi) of the polyline (xs increasing) sampled at
     integer columns, or a vertical stroke when it spans no column or ``single``."""
     c0 = math.ceil(xs[0])
@@ -156,7 +162,10 @@ def _run(xs, ys, single=False):
     return c, 1, np.array([float(np.min(ys))]), np.array([float(np.max(ys))])
 
 
-def horizon_runs(points, curves="rows", side_edges=True):
+def horizon_runs(points: NDArray[np.float64], curves: Curves = "rows",
+                 side_edges: bool = True
+                 ) -> Tuple[NDArray[np.int64], NDArray[np.int64], NDArray[np.float64],
+                         NDArray[np.float64], NDArray[np.int64]]:
     """The groups and runs the kernel processes, from device ``points`` (ny, nx, 3):
     ``(groups, runs, ylo, yhi, order)`` (see :mod:`scanline._kernels.horizon`).
     Curves go nearest first (by mean depth); each group holds the side edges
@@ -164,9 +173,12 @@ def horizon_runs(points, curves="rows", side_edges=True):
     v.choice("curves", curves, ("rows", "columns"))
     p = points if curves == "rows" else points.transpose(1, 0, 2)
     order = np.argsort(p[:, :, 2].mean(axis=1), kind="stable")
-    groups, runs, lo, hi = [0], [], [], []
+    groups = [0]
+    runs: list[Tuple[int, int, int]] = []
+    lo: list[NDArray[np.float64]] = []
+    hi: list[NDArray[np.float64]] = []
     start = 0
-    prev = None
+    prev: Optional[Tuple[Tuple[float, float], Tuple[float, float]]] = None
     for i in order.tolist():
         cx, cy = p[i, :, 0], p[i, :, 1]
         if not (np.isfinite(cx).all() and np.isfinite(cy).all()):
@@ -181,7 +193,7 @@ def horizon_runs(points, curves="rows", side_edges=True):
                 "folds back on itself in this view); the floating horizon needs curves "
                 f"that do: use curves={'columns' if curves == 'rows' else 'rows'!r} or "
                 "another azimuth")
-        pieces = []
+        pieces: list[Tuple[int, int, NDArray[np.float64], NDArray[np.float64]]] = []
         if side_edges and prev is not None:
             for a, b in ((prev[0], (cx[0], cy[0])), (prev[1], (cx[-1], cy[-1]))):
                 (xa, ya), (xb, yb) = sorted([a, b])
@@ -202,7 +214,7 @@ def horizon_runs(points, curves="rows", side_edges=True):
 
 def floating_horizon(fb: "FrameBuffer", z: Surface, x: Optional[ArrayLike] = None,
                      y: Optional[ArrayLike] = None, camera_or_angles: View = ANGLES,
-                     color: Any = "white", curves: str = "rows", side_edges: bool = True,
+                     color: Color = "white", curves: Curves = "rows", side_edges: bool = True,
                      **line: Any) -> Horizon:
     """Plot the surface z = f(x, y) as curves with hidden parts removed by the
     floating-horizon method.
@@ -278,7 +290,7 @@ def floating_horizon(fb: "FrameBuffer", z: Surface, x: Optional[ArrayLike] = Non
 
 def horizon(z: Surface, x: Optional[ArrayLike] = None, y: Optional[ArrayLike] = None,
             camera_or_angles: View = ANGLES, width: int = 640, height: int = 480,
-            curves: str = "rows", side_edges: bool = True) -> Horizon:
+            curves: Curves = "rows", side_edges: bool = True) -> Horizon:
     """The floating horizon of :func:`floating_horizon` on a ``width`` x ``height``
     device without drawing: a :class:`Horizon`.
 

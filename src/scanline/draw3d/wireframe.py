@@ -9,13 +9,14 @@ device coordinates, and is then drawn by the 2-D batch kernels
 attribute (width, caps, joins, dashes, pens) and antialiasing apply.
 """
 
-from typing import TYPE_CHECKING, Any, List, Optional, Sequence, Tuple, Union
+from typing import (TYPE_CHECKING, Any, List, Literal, Optional, Sequence, Tuple, TypeVar, Union,
+                    overload)
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
-from .._typing import Color
+from .._typing import Color, Colors, LineMethod
 from ..clip.volumes import UNIT_CUBE
 from ..color.spec import Channels
 from ..draw import lines as draw_lines
@@ -28,11 +29,14 @@ from ..transform3d.arrays import real_array
 
 if TYPE_CHECKING:
     from ..framebuffer import FrameBuffer
+    from ..mesh import Mesh
 
 Floats = NDArray[np.float64]
 
 #: Intensities at the nearest and the farthest drawn depth for ``depth_cue=True``.
 DEPTH_CUE = (1.0, 0.25)
+
+_S = TypeVar("_S", bound=np.generic)
 
 
 def _camera(camera: object) -> Camera:
@@ -89,9 +93,24 @@ def project_edges(vertices: ArrayLike, edges: ArrayLike, camera: Camera, width: 
     return project_edges_into(vertices, edges, camera, _camera(camera)._device_box(width, height))
 
 
+@overload
 def project_edges_into(vertices: ArrayLike, edges: ArrayLike, camera: Camera,
                        box: Sequence[float], aspect: Optional[float] = None,
-                       details: bool = True) -> Tuple[Any, Any, Any]:
+                       details: Literal[True] = True
+                       ) -> Tuple[Floats, Floats, NDArray[np.int64]]: ...
+
+
+@overload
+def project_edges_into(vertices: ArrayLike, edges: ArrayLike, camera: Camera,
+                       box: Sequence[float], aspect: Optional[float] = None,
+                       details: bool = True
+                       ) -> Tuple[Floats, Optional[Floats], Optional[NDArray[np.int64]]]: ...
+
+
+def project_edges_into(vertices: ArrayLike, edges: ArrayLike, camera: Camera,
+                       box: Sequence[float], aspect: Optional[float] = None,
+                       details: bool = True
+                       ) -> Tuple[Floats, Optional[Floats], Optional[NDArray[np.int64]]]:
     """Project and clip line segments given as vertex pairs into the rectangle
     ``box`` (see :meth:`scanline.Camera.mapping`).
 
@@ -145,25 +164,29 @@ def project_edges_into(vertices: ArrayLike, edges: ArrayLike, camera: Camera,
     if details:
         for lo, rows in parts:
             which[lo:lo + rows] += lo
-    keep = tuple(a[:parts[0][1]] if len(parts) == 1 else
-                 np.concatenate([a[lo:lo + rows] for lo, rows in parts])
-                 for a in (out, depth, which))
+
+    def keep(a: NDArray[_S]) -> NDArray[_S]:
+        return (a[:parts[0][1]] if len(parts) == 1 else
+                np.concatenate([a[lo:lo + rows] for lo, rows in parts]))
+
     if not details:
-        return keep[0], None, None
-    return keep
+        return keep(out), None, None
+    return keep(out), keep(depth), keep(which)
 
 
-def edge_colors(mesh, edges):
+def edge_colors(mesh: "Mesh", edges: NDArray[np.int64]) -> NDArray[np.uint8]:
     """RGBA (E, 4) colors of a mesh's edges from its face or vertex colors: an edge
     takes the color of the first face it borders, or the mean of its two vertices'."""
+    colors = mesh.colors
+    assert colors is not None
     if mesh.color_on == "vertex":
-        return ((mesh.colors[edges[:, 0]].astype(np.int64)
-                 + mesh.colors[edges[:, 1]]) // 2).astype(np.uint8)
+        return ((colors[edges[:, 0]].astype(np.int64)
+                 + colors[edges[:, 1]]) // 2).astype(np.uint8)
     faces, _ = mesh.edge_faces()
-    return mesh.colors[faces[:, 0]]
+    return colors[faces[:, 0]]
 
 
-def _channel_values(fb, rgba):
+def _channel_values(fb: "FrameBuffer", rgba: NDArray[np.uint8]) -> NDArray[np.uint8]:
     """Pixel values (N, channels) of RGBA rows for ``fb``: one ``fb.pixel`` per
     distinct color."""
     uniq, inverse = np.unique(rgba, axis=0, return_inverse=True)
@@ -171,7 +194,7 @@ def _channel_values(fb, rgba):
     return values[inverse.reshape(-1)]
 
 
-def cue_factor(camera, depth, cue):
+def cue_factor(camera: Camera, depth: Floats, cue: Tuple[float, float]) -> Floats:
     """Hearn & Baker's depth-cueing factor per segment: f = (d_max - d) / (d_max -
     d_min) of the midpoints' distances (linear in viewing coordinates), mapped to
     the intensities ``cue`` = (near, far)."""
@@ -182,7 +205,8 @@ def cue_factor(camera, depth, cue):
     return far + (near - far) * f
 
 
-def depth_cue_intensities(depth_cue):
+def depth_cue_intensities(depth_cue: Union[None, bool, Tuple[float, float]]
+                          ) -> Optional[Tuple[float, float]]:
     """(near, far) intensities of a ``depth_cue`` argument, or None."""
     if depth_cue is None or depth_cue is False:
         return None
@@ -197,9 +221,10 @@ def depth_cue_intensities(depth_cue):
         f"{v._show(depth_cue)}")
 
 
-def wireframe(fb: "FrameBuffer", meshes: Any, camera: Camera, color: Any = None, *,
+def wireframe(fb: "FrameBuffer", meshes: Any, camera: Camera,
+              color: Union[None, Color, List[Optional[Color]]] = None, *,
               depth_cue: Union[None, bool, Tuple[float, float]] = None,
-              background: Optional[Color] = None, method: str = "bresenham",
+              background: Optional[Color] = None, method: LineMethod = "bresenham",
               **line: Any) -> Floats:
     """Draw the edges of one mesh or several through ``camera``.
 
@@ -273,14 +298,17 @@ def wireframe(fb: "FrameBuffer", meshes: Any, camera: Camera, color: Any = None,
     specs = [color[i] if isinstance(color, list) else color for i in range(len(group))]
     shared = cue is None and len(set(map(repr, specs))) == 1 and (
         specs[0] is not None or all(m.colors is None for m in group))
-    segs, depths, values = [], [], []
+    segs: List[Floats] = []
+    depths: List[Floats] = []
+    values: List[NDArray[np.uint8]] = []
     for mesh, spec in zip(group, specs):
         s, d, which = project_edges_into(mesh.vertices, mesh.edges, camera,
                                          camera._device_box(fb.width, fb.height),
                                          details=not shared)
         segs.append(s)
-        depths.append(d)
-        if not shared:
+        if not shared:                       # details: depth and which
+            assert d is not None and which is not None
+            depths.append(d)
             if spec is None and mesh.colors is not None:
                 values.append(_channel_values(fb, edge_colors(mesh, mesh.edges)[which]))
             else:
@@ -303,7 +331,7 @@ def wireframe(fb: "FrameBuffer", meshes: Any, camera: Camera, color: Any = None,
     return segments
 
 
-def _segments3d(name, segments):
+def _segments3d(name: str, segments: ArrayLike) -> Floats:
     a = real_array(name, segments, "(N, 6) or (N, 2, 3)")
     if a.size == 0:
         a = a.reshape(0, 6)
@@ -316,7 +344,7 @@ def _segments3d(name, segments):
     return a
 
 
-def lines(fb: "FrameBuffer", segments: ArrayLike, camera: Camera, color: Any = "white",
+def lines(fb: "FrameBuffer", segments: ArrayLike, camera: Camera, color: Colors = "white",
           **line: Any) -> Floats:
     """Draw 3-D line segments (N, 6) -- rows (x0, y0, z0, x1, y1, z1) -- through
     ``camera``, clipped in homogeneous coordinates, with any line attributes of
@@ -427,7 +455,7 @@ def pieces_into(points: ArrayLike, camera: Camera, box: Sequence[float], closed:
     return [np.array(piece) for piece in pieces]
 
 
-def polylines(fb: "FrameBuffer", polylines_: Any, camera: Camera, color: Any = "white",
+def polylines(fb: "FrameBuffer", polylines_: Any, camera: Camera, color: Colors = "white",
               closed: bool = False, **line: Any) -> List[Floats]:
     """Draw 3-D polylines (a list of (N_i, 3) arrays) through ``camera``, clipped in
     homogeneous coordinates, with the attributes of :func:`scanline.draw.polylines`

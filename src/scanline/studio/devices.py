@@ -159,8 +159,8 @@ def simulation(kind: str, query: Mapping[str, str]) -> _Simulation:
 def info(sim: _Simulation) -> dict[str, Any]:
     """What the page prints beside the screen."""
     img = sim.screen(0.0)
-    out: dict[str, Any] = {"period": sim.period, "refresh_rate": 1 / sim.period, "size": [sim.width, sim.height],
-           "screen": [img.shape[1], img.shape[0]]}
+    out: dict[str, Any] = {"period": sim.period, "refresh_rate": 1 / sim.period,
+                           "size": [sim.width, sim.height], "screen": [img.shape[1], img.shape[0]]}
     if isinstance(sim, ShadowMask):
         out.update(arrangement=sim.arrangement, dots=sim.dots, offsets=sim.offsets.tolist(),
                    triad=sim.triad_centers().tolist(), line_time=sim.line_time)

@@ -45,16 +45,19 @@ import gc
 import math
 import re
 import secrets
+import socket
 import threading
 import time
 from importlib import resources
+from types import FrameType
+from typing import Any, AsyncIterator, Awaitable, Callable, Mapping, Optional, Sequence, TypeVar
 
 import anyio
 import orjson
 from starlette.applications import Starlette
 from starlette.middleware import Middleware
 from starlette.middleware.trustedhost import TrustedHostMiddleware
-from starlette.requests import ClientDisconnect
+from starlette.requests import ClientDisconnect, Request
 from starlette.responses import FileResponse, Response
 from starlette.routing import Mount, Route
 from starlette.staticfiles import StaticFiles
@@ -87,6 +90,10 @@ SESSION_COOKIE = "scanline_studio"
 STATIC = resources.files("scanline.studio") / "static"
 BAD = (ScanlineError, ValueError, TypeError, KeyError, explorer.BadArguments)
 
+#: A route's handler.
+Endpoint = Callable[[Request], Awaitable[Response]]
+T = TypeVar("T")
+
 
 class JSONResponse(Response):
     """JSON encoded by orjson: a 10,000-row table encodes in about a millisecond
@@ -94,11 +101,11 @@ class JSONResponse(Response):
 
     media_type = "application/json"
 
-    def render(self, content):
+    def render(self, content: Any) -> bytes:
         return orjson.dumps(content)
 
 
-def _error(status, message):
+def _error(status: int, message: object) -> JSONResponse:
     return JSONResponse({"error": " ".join(str(message).split())}, status_code=status)
 
 
@@ -106,7 +113,7 @@ def _error(status, message):
 _WARM = threading.Event()
 
 
-def warm_up():
+def warm_up() -> None:
     """Compile (or load from numba's cache) what the workstation draws with; the
     explorer and the device pages warm up in their worker processes.  Workstation
     requests wait for it."""
@@ -117,17 +124,17 @@ def warm_up():
 
 
 class _Fail(Exception):
-    def __init__(self, status, message):
+    def __init__(self, status: int, message: object) -> None:
         super().__init__(message)
         self.status = status
 
 
 # -- what a request must be ------------------------------------------------------------
-def _origin(request):
+def _origin(request: Request) -> str:
     return f"{request.url.scheme}://{request.headers.get('host', '')}".lower()
 
 
-def _check_site(request):
+def _check_site(request: Request) -> None:
     """Refuse an API request that a browser says comes from another site's page."""
     site = request.headers.get("sec-fetch-site")
     if site is not None and site not in ("same-origin", "none"):
@@ -135,7 +142,7 @@ def _check_site(request):
                          f"the studio's own pages ({_origin(request)}) may use its API")
 
 
-def _check_post(request):
+def _check_post(request: Request) -> None:
     """A POST must carry JSON and come from one of the studio's own pages."""
     media = request.headers.get("content-type", "").split(";")[0].strip().lower()
     if media != "application/json":
@@ -150,8 +157,8 @@ def _check_post(request):
                          f"pages ({expected}) may post")
 
 
-def _too_deep(data, limit):
-    stack = [(data, 1)]
+def _too_deep(data: object, limit: int) -> bool:
+    stack: list[tuple[object, int]] = [(data, 1)]
     while stack:
         item, depth = stack.pop()
         if isinstance(item, (dict, list)):
@@ -162,7 +169,7 @@ def _too_deep(data, limit):
     return False
 
 
-async def _body(request):
+async def _body(request: Request) -> dict[str, Any]:
     """The request's JSON object, read in chunks and refused as soon as it passes
     MAX_BODY (400: not a JSON object; 413: too large)."""
     declared = request.headers.get("content-length")
@@ -190,15 +197,17 @@ async def _body(request):
         raise _Fail(400, f"the body must be a JSON object, not a {type(data).__name__}")
     if _too_deep(data, MAX_DEPTH):
         raise _Fail(400, f"the body nests lists and objects more than {MAX_DEPTH} deep")
-    return data
+    body: dict[str, Any] = data
+    return body
 
 
-def _kind_of(value):
-    return {bool: "true or false", str: "a string", list: "a list", dict: "an object",
-            float: "a number"}.get(value, value.__name__)
+def _kind_of(value: type) -> str:
+    names: dict[type, str] = {bool: "true or false", str: "a string", list: "a list",
+                              dict: "an object", float: "a number"}
+    return names.get(value, value.__name__)
 
 
-def _fields(data, spec):
+def _fields(data: dict[str, Any], spec: Mapping[str, type]) -> dict[str, Any]:
     """Check the types of the body's fields that ``spec`` names ({name: type}; a
     number is ``float``); None stands for a field not given.  400 names the field."""
     for name, kind in spec.items():
@@ -213,8 +222,8 @@ def _fields(data, spec):
     return data
 
 
-def _endpoint(fn, post=False):
-    async def wrapped(request):
+def _endpoint(fn: Endpoint, post: bool = False) -> Endpoint:
+    async def wrapped(request: Request) -> Response:
         try:
             _check_site(request)
             if post:
@@ -227,8 +236,8 @@ def _endpoint(fn, post=False):
     return wrapped
 
 
-def _page(name):
-    async def page(request):
+def _page(name: str) -> Endpoint:
+    async def page(request: Request) -> Response:
         return FileResponse(str(STATIC / name), media_type="text/html")
     return page
 
@@ -238,29 +247,29 @@ class _Entry:
     """A workstation, its owner (a session), its own lock, when it was last used, and
     its last picture (version, PNG)."""
 
-    def __init__(self, ws, owner):
+    def __init__(self, ws: Workstation, owner: str) -> None:
         self.ws, self.owner = ws, owner
         self.lock = threading.Lock()
         self.used = time.monotonic()
-        self.png = (None, b"")
+        self.png: tuple[Optional[int], bytes] = (None, b"")
 
 
 class Workstations:
     """The workstations, by id; each belongs to the session that created it."""
 
-    def __init__(self):
-        self._items = {}
+    def __init__(self) -> None:
+        self._items: dict[str, _Entry] = {}
         self._lock = threading.Lock()
 
-    def __len__(self):
+    def __len__(self) -> int:
         return len(self._items)
 
-    def _expire(self, now):
+    def _expire(self, now: float) -> None:
         for key, entry in list(self._items.items()):
             if now - entry.used > WORKSTATION_IDLE and not entry.lock.locked():
                 del self._items[key]
 
-    def new(self, owner):
+    def new(self, owner: str) -> tuple[str, _Entry]:
         ws = Workstation()
         now = time.monotonic()
         with self._lock:
@@ -277,7 +286,7 @@ class Workstations:
             entry = self._items[key] = _Entry(ws, owner)
         return key, entry
 
-    def get(self, key, owner):
+    def get(self, key: str, owner: Optional[str]) -> _Entry:
         with self._lock:
             entry = self._items.get(key)
             if entry is None or owner is None or not secrets.compare_digest(entry.owner, owner):
@@ -286,7 +295,7 @@ class Workstations:
             entry.used = time.monotonic()
             return entry
 
-    def close(self, key, owner):
+    def close(self, key: str, owner: Optional[str]) -> None:
         entry = self.get(key, owner)
         with self._lock:
             if self._items.get(key) is entry:
@@ -296,7 +305,7 @@ class Workstations:
 _SESSION = re.compile(r"[0-9a-f]{32}")
 
 
-def _session(request):
+def _session(request: Request) -> Optional[str]:
     value = request.cookies.get(SESSION_COOKIE, "")
     return value if _SESSION.fullmatch(value) else None
 
@@ -305,7 +314,7 @@ def _session(request):
 #: name to 127.0.0.1 (DNS rebinding) is refused.
 LOOPBACK = ("127.0.0.1", "localhost", "::1", "[::1]")
 
-_WS_FIELDS = {
+_WS_FIELDS: dict[str, dict[str, type]] = {
     "settings": {"mode": str, "grid": float, "snap": bool, "gravity": float,
                  "constraint": str, "tool": str},
     "position": {"position": list, "anchor": list},
@@ -318,16 +327,23 @@ _WS_FIELDS = {
 }
 
 
-def create_app(allowed_hosts=LOOPBACK, workers=None, address_space=None):
+def _given(data: dict[str, Any], name: str) -> Any:
+    """A body field as given, None when absent (a JSON value the workstation checks and
+    names when it is wrong)."""
+    return data.get(name)
+
+
+def create_app(allowed_hosts: Sequence[str] = LOOPBACK, workers: Optional[int] = None,
+               address_space: Optional[int] = None) -> Starlette:
     """The studio's Starlette application, answering requests whose Host is one of
     ``allowed_hosts`` (``("*",)``: any); ``workers`` and ``address_space`` size its
     worker pool (default: :data:`scanline.studio.pool.WORKERS`, ``ADDRESS_SPACE``).
     The pool is ``app.state.pool``, the workstations ``app.state.workstations``."""
     sessions = Workstations()
     pool = Pool(workers, address_space)
-    limiter = []
+    limiter: list[anyio.CapacityLimiter] = []
 
-    async def on_workstation(entry, fn):
+    async def on_workstation(entry: _Entry, fn: Callable[[Workstation], T]) -> T:
         """``fn(ws)`` in a thread, holding the workstation's own lock; bad input: 400
         (a wrong type) or 422."""
         if not _WARM.is_set():
@@ -335,7 +351,7 @@ def create_app(allowed_hosts=LOOPBACK, workers=None, address_space=None):
         if not limiter:
             limiter.append(anyio.CapacityLimiter(WORKSTATION_THREADS))
 
-        def locked():
+        def locked() -> T:
             if not entry.lock.acquire(timeout=TIME_LIMIT):
                 raise _Fail(503, "the workstation is busy with another request; try again")
             try:
@@ -353,13 +369,13 @@ def create_app(allowed_hosts=LOOPBACK, workers=None, address_space=None):
             message = error.args[0] if isinstance(error, KeyError) and error.args else error
             raise _Fail(422, message) from None
 
-    async def in_worker(task, *args):
+    async def in_worker(task: str, *args: Any) -> Any:
         return await pool.run(task, args, TIME_LIMIT)
 
-    async def algorithms(request):
+    async def algorithms(request: Request) -> Response:
         return JSONResponse(explorer.catalog())
 
-    async def explore(request):
+    async def explore(request: Request) -> Response:
         data = _fields(await _body(request), {"algorithm": str, "args": list})
         algorithm, args = data.get("algorithm"), data.get("args", [])
         if algorithm is None:
@@ -369,7 +385,7 @@ def create_app(allowed_hosts=LOOPBACK, workers=None, address_space=None):
         body = await in_worker("explore", algorithm, args, REQUEST_MEMORY)
         return Response(body, media_type="application/json")
 
-    async def quiz(request):
+    async def quiz(request: Request) -> Response:
         data = _fields(await _body(request), {"algorithm": str, "seed": int})
         algorithm, seed = data.get("algorithm"), data.get("seed")
         if algorithm is None or seed is None:
@@ -377,41 +393,41 @@ def create_app(allowed_hosts=LOOPBACK, workers=None, address_space=None):
                         "are both needed")
         return Response(await in_worker("quiz", algorithm, seed), media_type="application/json")
 
-    def _kind(request):
-        kind = request.path_params["kind"]
+    def _kind(request: Request) -> str:
+        kind: str = request.path_params["kind"]
         from .devices import KINDS
 
         if kind not in KINDS:
             raise _Fail(404, f"no display device {kind[:40]!r}: one of {', '.join(KINDS)}")
         return kind
 
-    async def device_info(request):
+    async def device_info(request: Request) -> Response:
         kind = _kind(request)
         return Response(await in_worker("device_info", kind, dict(request.query_params)),
                         media_type="application/json")
 
-    async def device_frame(request):
+    async def device_frame(request: Request) -> Response:
         kind = _kind(request)
         q = dict(request.query_params)
         try:
             t = float(q.get("t", 0))
         except ValueError:
-            raise _Fail(422, f"t={q.get('t')[:40]!r} must be a number of seconds") from None
+            raise _Fail(422, f"t={q['t'][:40]!r} must be a number of seconds") from None
         if not math.isfinite(t):
             raise _Fail(422, f"t={t} must be finite")
         data, (x, y, state) = await in_worker("device_frame", kind, q, t)
         return Response(data, media_type="application/octet-stream",
                         headers={"X-Beam": f"{x:.3f},{y:.3f},{state}", "Cache-Control": "no-store"})
 
-    async def device_plane(request):
+    async def device_plane(request: Request) -> Response:
         png = await in_worker("device_plane", int(request.path_params["k"]))
         return Response(png, media_type="image/png")
 
-    async def ws_new(request):
+    async def ws_new(request: Request) -> Response:
         await _body(request)
         owner = _session(request)
         fresh = owner is None
-        if fresh:
+        if owner is None:
             owner = secrets.token_hex(16)
         key, entry = sessions.new(owner)
         state = await on_workstation(entry, lambda ws: ws.state())
@@ -420,14 +436,14 @@ def create_app(allowed_hosts=LOOPBACK, workers=None, address_space=None):
             response.set_cookie(SESSION_COOKIE, owner, httponly=True, samesite="strict", path="/")
         return response
 
-    async def ws_state(request):
+    async def ws_state(request: Request) -> Response:
         entry = sessions.get(request.path_params["id"], _session(request))
         return JSONResponse(await on_workstation(entry, lambda ws: ws.state()))
 
-    async def ws_image(request):
+    async def ws_image(request: Request) -> Response:
         entry = sessions.get(request.path_params["id"], _session(request))
 
-        def picture(ws):
+        def picture(ws: Workstation) -> bytes:
             version, png = entry.png
             if version != ws.version:
                 png = ws.png()
@@ -437,8 +453,9 @@ def create_app(allowed_hosts=LOOPBACK, workers=None, address_space=None):
         return Response(await on_workstation(entry, picture), media_type="image/png",
                         headers={"Cache-Control": "no-store"})
 
-    async def ws_action(request):
-        key, action = request.path_params["id"], request.path_params["action"]
+    async def ws_action(request: Request) -> Response:
+        key: str = request.path_params["id"]
+        action: str = request.path_params["action"]
         owner = _session(request)
         entry = sessions.get(key, owner)
         if action not in _WS_FIELDS:
@@ -448,7 +465,8 @@ def create_app(allowed_hosts=LOOPBACK, workers=None, address_space=None):
             sessions.close(key, owner)
             return JSONResponse({"closed": key})
 
-        def act(ws):
+        def act(ws: Workstation) -> dict[str, Any]:
+            out: dict[str, Any]
             if action == "settings":
                 ws.settings(**{k: data[k] for k in ("mode", "grid", "snap", "gravity",
                                                      "constraint", "tool") if k in data})
@@ -457,21 +475,21 @@ def create_app(allowed_hosts=LOOPBACK, workers=None, address_space=None):
                 position = data.get("position") or (None, None)
                 if len(position) != 2:
                     raise TypeError(f"position must be a pair [x, y], got {len(position)} numbers")
-                out = ws.position(*position, anchor=data.get("anchor"))
+                out = ws.position(position[0], position[1], anchor=data.get("anchor"))
             elif action == "request":
-                ws.request(data.get("device"))
+                ws.request(_given(data, "device"))
                 out = {}
             elif action == "input":
-                out = ws.input(data.get("device"), data.get("value"))
+                out = ws.input(_given(data, "device"), _given(data, "value"))
             elif action == "await":
                 out = {"event": ws.await_event()}
             elif action == "drag":
                 delta = data.get("delta")
                 if not isinstance(delta, list) or len(delta) != 2:
                     raise TypeError(f"delta must be a pair [dx, dy], got {delta!r}"[:120])
-                out = ws.drag(data.get("segment"), *delta)
+                out = ws.drag(_given(data, "segment"), *delta)
             else:   # delete
-                ws.delete(data.get("segment"))
+                ws.delete(_given(data, "segment"))
                 out = {}
             return {**out, "state": ws.state()}
 
@@ -496,7 +514,7 @@ def create_app(allowed_hosts=LOOPBACK, workers=None, address_space=None):
     ]
 
     @contextlib.asynccontextmanager
-    async def lifespan(app):
+    async def lifespan(app: Starlette) -> AsyncIterator[None]:
         pool.start()
         try:
             yield
@@ -518,12 +536,12 @@ def create_app(allowed_hosts=LOOPBACK, workers=None, address_space=None):
     return app
 
 
-def serve(host="127.0.0.1", port=8765):
+def serve(host: str = "127.0.0.1", port: int = 8765) -> None:
     """Serve the studio with uvicorn until interrupted, printing its address.  Ctrl-C
     (or SIGTERM) kills the worker processes at once, busy or not, and stops."""
     import uvicorn
 
-    hosts = LOOPBACK
+    hosts: Sequence[str] = LOOPBACK
     if host not in LOOPBACK:
         print(f"scanline studio: listening on {host}, not only this machine: anyone who can "
               "reach this address can use the studio")
@@ -532,26 +550,21 @@ def serve(host="127.0.0.1", port=8765):
     pool = app.state.pool
     config = uvicorn.Config(app, host=host, port=port, log_level="warning",
                             timeout_graceful_shutdown=2)
-    server = uvicorn.Server(config)
 
-    original = server.startup
+    class Server(uvicorn.Server):
+        async def startup(self, sockets: Optional[list[socket.socket]] = None) -> None:
+            await super().startup(sockets)
+            for s in self.servers:
+                for sock in s.sockets:
+                    h, p = sock.getsockname()[:2]
+                    print(f"scanline studio: http://{'[' + h + ']' if ':' in h else h}:{p}/ "
+                          "(Ctrl-C stops it)", flush=True)
 
-    async def startup(sockets=None):
-        await original(sockets)
-        for s in server.servers:
-            for sock in s.sockets:
-                h, p = sock.getsockname()[:2]
-                print(f"scanline studio: http://{'[' + h + ']' if ':' in h else h}:{p}/ "
-                      "(Ctrl-C stops it)", flush=True)
+        def handle_exit(self, sig: int, frame: Optional[FrameType]) -> None:
+            pool.close()          # no locks: safe in a signal handler
+            super().handle_exit(sig, frame)
 
-    handle_exit = server.handle_exit
-
-    def stop(sig, frame):
-        pool.close()          # no locks: safe in a signal handler
-        handle_exit(sig, frame)
-
-    server.startup = startup
-    server.handle_exit = stop
+    server = Server(config)
     try:
         server.run()
     finally:

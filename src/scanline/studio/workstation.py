@@ -154,7 +154,7 @@ class Workstation:
                     out += [np.hstack([q[:-1], q[1:]])]
         return np.vstack(out) if out else np.zeros((0, 4))
 
-    def position(self, x: float, y: float, anchor: object = None) -> dict[str, Any]:
+    def position(self, x: object, y: object, anchor: object = None) -> dict[str, Any]:
         """The position an input at device (x, y) gives after the techniques: the
         gravity field (onto the nearest line within ``gravity`` device units), else
         grid snapping, then the constraint relative to ``anchor`` (device).  Returns

@@ -17,7 +17,7 @@ import math
 import operator
 import re
 import shlex
-from typing import Any
+from typing import TYPE_CHECKING, Any, Callable, Sequence, Union
 
 from .. import budget
 from ..cli import Parser, UsageError
@@ -41,6 +41,22 @@ from ..trace.subdivision import WIDTH as WA_WIDTH
 from ..trace.zbuffer import HEIGHT as ZB_HEIGHT
 from ..trace.zbuffer import SCENE as ZB_SCENE
 from ..trace.zbuffer import WIDTH as ZB_WIDTH
+
+if TYPE_CHECKING:
+    from ..trace.animation import MorphTable
+    from ..trace.backface import BackFaceTable
+    from ..trace.bsp import BSPTable
+    from ..trace.clip import LineClipTable, PolygonClipTable
+    from ..trace.polygon import FillTable
+    from ..trace.raycasting import RayCastingTable
+    from ..trace.scanline_method import ScanLineTable
+    from ..trace.shading import ShadingTable
+    from ..trace.subdivision import WarnockTable
+
+#: Where each coordinate of the arguments sits: ``(dest, i)`` -> token index.
+Where = dict[tuple[str, int], int]
+#: A view, JSON-ready (see :func:`explore`).
+View = dict[str, Any]
 
 #: The first case the explorer shows for each algorithm (command-line arguments).
 DEFAULTS = {
@@ -83,7 +99,7 @@ class BadArguments(ValueError):
     """Arguments the command line would refuse; the message is the command line's."""
 
 
-def _parsers():
+def _parsers() -> tuple[dict[str, argparse.ArgumentParser], Parser]:
     root = Parser(prog="scanline trace")
     return cli_trace.add_algorithms(root, None), root
 
@@ -149,19 +165,21 @@ def parse(algorithm: str, args: list[str]) -> argparse.Namespace:
         raise BadArguments(f"use the usage line: {_SUBS[algorithm].format_usage().strip()}") from None
 
 
-def _number(x):
+def _number(x: object) -> str:
     if isinstance(x, float) and x.is_integer() and abs(x) < 1e15:
         return str(int(x))
     return repr(x) if isinstance(x, float) else str(x)
 
 
-def canonical(ns):
+def canonical(ns: argparse.Namespace) -> tuple[list[str], Where]:
     """The arguments of ``ns`` spelled out (options first, then the positionals,
     after ``--`` when one starts with '-' and is not a number) and where each coordinate sits: ``(tokens, where)`` with
     ``where[(dest, i)]`` the token index of element i of argument ``dest`` (for a
     list of points, ``(dest, i)`` is the token 'x,y' of point i)."""
     sub = _SUBS[ns.algorithm]
-    options, positionals, where = [], [], {}
+    options: list[str] = []
+    positionals: list[str] = []
+    at: dict[tuple[str, int], Union[int, tuple[str, int]]] = {}
     for action in sub._actions:
         if action.dest in ("help",) or isinstance(action, argparse._HelpAction):
             continue
@@ -178,27 +196,28 @@ def canonical(ns):
             if action.type is cli_trace.numbers and action.nargs is None:
                 items = [",".join(_number(c) for c in value)]   # one token: 'x,y,x,y,...'
             for i, item in enumerate(items):
-                where[(action.dest, i)] = len(options)
+                at[(action.dest, i)] = len(options)
                 options.append(_number(item))
         else:
             items = value if isinstance(value, list) else [value]
             for i, item in enumerate(items):
-                where[(action.dest, i)] = ("p", len(positionals))
+                at[(action.dest, i)] = ("p", len(positionals))
                 positionals.append(",".join(_number(c) for c in item) if isinstance(item, list)
                                    else _number(item))
     dash = any(t.startswith("-") and not _ROOT._negative_number_matcher.match(t)
                for t in positionals)
     tokens = options + (["--"] if dash else []) + positionals
     base = len(options) + (1 if dash else 0)
-    where = {k: (base + i[1] if isinstance(i, tuple) else i) for k, i in where.items()}
+    where = {k: (base + i[1] if isinstance(i, tuple) else i) for k, i in at.items()}
     return tokens, where
 
 
-def _handle(where, label, x, y, xkey, ykey=None, kind="point"):
+def _handle(where: Where, label: str, x: float, y: float, xkey: tuple[str, int],
+            ykey: tuple[str, int] | None = None, kind: str = "point") -> dict[str, Any]:
     """A draggable handle at (x, y) bound to tokens: two tokens (x, y) or one token
     'x,y' (``ykey`` None); ``kind`` "radius-x" / "radius-y" binds one token to the
     distance from the center."""
-    h = {"label": label, "x": x, "y": y, "kind": kind}
+    h: dict[str, Any] = {"label": label, "x": x, "y": y, "kind": kind}
     if ykey is None:
         h["token"] = where[xkey]
     else:
@@ -206,11 +225,11 @@ def _handle(where, label, x, y, xkey, ykey=None, kind="point"):
     return h
 
 
-def _pixels(points):
+def _pixels(points: Any) -> list[list[int]]:
     return [[int(x), int(y)] for x, y in points]
 
 
-def _bounds(points, margin=2):
+def _bounds(points: Sequence[Sequence[float]], margin: int = 2) -> list[int]:
     xs = [p[0] for p in points] or [0]
     ys = [p[1] for p in points] or [0]
     return [math.floor(min(xs)) - margin, math.floor(min(ys)) - margin,
@@ -226,7 +245,7 @@ _BRESENHAM_RULES = [
 _DDA_RULES = ["x = {x_real} -> {x}, y = {y_real} -> {y} (round: floor(v + 0.5))"]
 
 
-def _lines(table, ns, where):
+def _lines(table: Table, ns: argparse.Namespace, where: Where) -> View:
     rows = table.rows
     if ns.algorithm == "bresenham":
         # the start pixel, plotted before step 0, is the endpoint the last row is not
@@ -246,11 +265,11 @@ def _lines(table, ns, where):
                         _handle(where, "P1", ns.x1, ns.y1, ("x1", 0), ("y1", 0))]}
 
 
-def _conics(table, ns, where):
+def _conics(table: Table, ns: argparse.Namespace, where: Where) -> View:
     xc, yc = ns.center
     circle = ns.algorithm == "midpoint-circle"
     rx, ry = (ns.r, ns.r) if circle else (ns.rx, ns.ry)
-    steps = []
+    steps: list[dict[str, Any]] = []
     for i, r in enumerate(table.rows):
         pts = _mirror4(xc, yc, r["x"], r["y"])
         if circle:
@@ -280,11 +299,11 @@ def _conics(table, ns, where):
             "shapes": [], "handles": handles, "center": [xc, yc]}
 
 
-def _fills(table, ns, where):
+def _fills(table: Table, ns: argparse.Namespace, where: Where) -> View:
     rows = _rows(ns.grid if ns.grid is not None else EXAMPLE_GRID)
     h = len(rows)
     cells = [[x, h - 1 - j, c] for j, line in enumerate(rows) for x, c in enumerate(line)]
-    steps = []
+    steps: list[dict[str, Any]] = []
     for r in table.rows:
         if r["span"] == "already filled":
             steps.append({"pixels": [], "mark": [[r["x"], r["y"]]],
@@ -299,12 +318,13 @@ def _fills(table, ns, where):
             "handles": [_handle(where, "seed", ns.x, ns.y, ("x", 0), ("y", 0))]}
 
 
-def _point_handles(where, dest, points):
+def _point_handles(where: Where, dest: str, points: Sequence[Sequence[float]]
+                   ) -> list[dict[str, Any]]:
     return [_handle(where, f"P{i}", p[0], p[1], (dest, i)) for i, p in enumerate(points)]
 
 
-def _scan_fill(table, ns, where):
-    steps = []
+def _scan_fill(table: FillTable, ns: argparse.Namespace, where: Where) -> View:
+    steps: list[dict[str, Any]] = []
     for r in table.rows:
         spans = [tuple(int(t) for t in s.split("..")) for s in r["spans"].split()]
         keys = [[int(e.split(":")[1]), r["y"]] for e in r["active"].split()]
@@ -318,7 +338,7 @@ def _scan_fill(table, ns, where):
             "handles": _point_handles(where, "points", pts), "edges": table.edges}
 
 
-def _clip_window(ns):
+def _clip_window(ns: argparse.Namespace) -> list[list[float]]:
     if getattr(ns, "window_polygon", None):
         f = ns.window_polygon
         return [[f[i], f[i + 1]] for i in range(0, len(f) - 1, 2)]
@@ -326,9 +346,9 @@ def _clip_window(ns):
     return [[x0, y0], [x1, y0], [x1, y1], [x0, y1]]
 
 
-def _line_clip(table, ns, where):
+def _line_clip(table: LineClipTable, ns: argparse.Namespace, where: Where) -> View:
     p0, p1 = [ns.x0, ns.y0], [ns.x1, ns.y1]
-    steps = []
+    steps: list[dict[str, Any]] = []
     if ns.algorithm == "cohen-sutherland":
         cur = [list(p0), list(p1)]
         for r in table.rows:
@@ -355,19 +375,21 @@ def _line_clip(table, ns, where):
             "result": getattr(table, "result", None)}
 
 
-def _vertex(text):
+def _vertex(text: str) -> list[float]:
     return [float(c) for c in text.strip("()").split(", ")]
 
 
-def _polygon_clip(table, ns, where):
-    steps, stage, out = [], None, []
+def _polygon_clip(table: PolygonClipTable, ns: argparse.Namespace, where: Where) -> View:
+    steps: list[dict[str, Any]] = []
+    stage = None
+    out: list[list[float]] = []
     inputs = [ns.points] + table.stages
     for r in table.rows:
         if r["stage"] != stage:
             stage, out = r["stage"], []
         out = out + [_vertex("(" + v) for v in r["output"].strip("(").split(" (") if r["output"]]
         a, b = r["boundary"].split(" -> ")
-        steps.append({"polygon": inputs[stage - 1], "output": out,
+        steps.append({"polygon": inputs[r["stage"] - 1], "output": out,
                       "boundary": [_vertex(a), _vertex(b)], "edge": [_vertex(r["S"]), _vertex(r["P"])],
                       "rule": f"stage {stage}, edge S {r['S']} -> P {r['P']}: {r['case']}"})
     win = _clip_window(ns)
@@ -377,7 +399,7 @@ def _polygon_clip(table, ns, where):
             "handles": _point_handles(where, "points", ns.points), "result": table.result}
 
 
-def _casteljau(table, ns, where):
+def _casteljau(table: Table, ns: argparse.Namespace, where: Where) -> View:
     steps = [{"points": [[r["x"], r["y"]]], "level": r["r"],
               "rule": f"P_{r['i']}^{r['r']} = (1 - u) P_{r['i']}^{r['r'] - 1} + u P_{r['i'] + 1}^{r['r'] - 1}"
               if r["r"] else f"P_{r['i']}^0 = control point {r['i']}"} for r in table.rows]
@@ -387,7 +409,7 @@ def _casteljau(table, ns, where):
             "handles": _point_handles(where, "points", pts)}
 
 
-def _cox_de_boor(table, ns, where):
+def _cox_de_boor(table: Table, ns: argparse.Namespace, where: Where) -> View:
     steps = [{"bar": [r["k"], r["r"], r["B"]],
               "rule": f"B_{r['k']},{r['r']}({ns.u:g}) = {r['B']:.6g} on {r['interval']}"}
              for r in table.rows]
@@ -400,14 +422,15 @@ def _cox_de_boor(table, ns, where):
 _OBLIQUE = (0.5 * math.cos(math.pi / 6), 0.5 * math.sin(math.pi / 6))
 
 
-def _volume_corners(ns):
+def _volume_corners(ns: argparse.Namespace) -> list[list[float]]:
     """The clip volume's 8 corners (front face first) in the coordinates the segment
     is drawn in: the box, the canonical frustum, or the unit cube of ``--w``."""
     if ns.w is not None:
         lo, hi = [0.0] * 3, [1.0] * 3
     elif ns.frustum is not None:     # z <= x, y <= -z between z = ZMIN and z = -1
-        lo, hi = [[z, z, z] for z in (ns.frustum, -1.0)], [[-z, -z, z] for z in (ns.frustum, -1.0)]
-        return [c for a, b in zip(lo, hi) for c in ([a[0], a[1], a[2]], [b[0], a[1], a[2]],
+        los = [[z, z, z] for z in (ns.frustum, -1.0)]
+        his = [[-z, -z, z] for z in (ns.frustum, -1.0)]
+        return [c for a, b in zip(los, his) for c in ([a[0], a[1], a[2]], [b[0], a[1], a[2]],
                                                   [b[0], b[1], a[2]], [a[0], b[1], a[2]])]
     else:
         b = ns.volume or [0, 0, 0, 10, 10, 10]
@@ -417,30 +440,35 @@ def _volume_corners(ns):
             [hi[0], hi[1], hi[2]], [lo[0], hi[1], hi[2]]]
 
 
-def _clip3d(table, ns, where):
+def _clip3d(table: Table, ns: argparse.Namespace, where: Where) -> View:
     """The 3-D clippers on the grid: the volume and the segment in an oblique
     projection scaled to about 20 cells, the piece kept so far drawn at each step."""
     corners = _volume_corners(ns)
-    p0, p1 = [ns.x0, ns.y0, ns.z0], [ns.x1, ns.y1, ns.z1]
+    start: list[float] = [ns.x0, ns.y0, ns.z0]
+    end: list[float] = [ns.x1, ns.y1, ns.z1]
+    p0: list[float] | None = start
+    p1: list[float] | None = end
     if ns.w is not None:             # drawn after the divide, where w > 0
-        p0, p1 = ([c / w for c in p] if w > 0 else None for p, w in ((p0, ns.w[0]), (p1, ns.w[1])))
+        p0 = [c / ns.w[0] for c in start] if ns.w[0] > 0 else None
+        p1 = [c / ns.w[1] for c in end] if ns.w[1] > 0 else None
     span = max(max(c[i] for c in corners) - min(c[i] for c in corners) for i in range(3))
     scale = 20.0 / span if span > 0 and math.isfinite(span) else 1.0
 
-    def at(p):
+    def at(p: Sequence[float]) -> list[float]:
         x, y, z = p
         return [round(scale * (x + _OBLIQUE[0] * z), 6), round(scale * (y + _OBLIQUE[1] * z), 6)]
 
-    def along(a, b, u):
+    def along(a: Sequence[float], b: Sequence[float], u: float) -> list[float]:
         return at([a[i] + u * (b[i] - a[i]) for i in range(3)])
 
-    steps = []
+    steps: list[dict[str, Any]] = []
     if ns.algorithm == "cohen-sutherland-3d":
-        cur = [p0, p1]
+        cur: list[list[float] | None] = [p0, p1]
         for r in table.rows:
             if r["point"] is not None and ns.w is None:
                 cur[int(r["decision"][6])] = _vertex(r["point"])
-            seg = [at(cur[0]), at(cur[1])] if None not in cur else None
+            c0, c1 = cur
+            seg = [at(c0), at(c1)] if c0 is not None and c1 is not None else None
             steps.append({"segment": seg, "mark": [seg[int(r["decision"][6])]] if seg and
                           r["point"] else [],
                           "rule": f"codes {r['code0']} {r['code1']}, AND {r['and']}: "
@@ -448,8 +476,8 @@ def _clip3d(table, ns, where):
     else:
         for r in table.rows:
             u1, u2 = r["u1"], r["u2"]
-            seg = ([along(p0, p1, u1), along(p0, p1, u2)] if None not in (p0, p1) and u1 <= u2
-                   and ns.w is None else None)
+            seg = ([along(p0, p1, u1), along(p0, p1, u2)] if p0 is not None and p1 is not None
+                   and u1 <= u2 and ns.w is None else None)
             t = "parallel" if r["t"] is None else f"t = q/p = {r['t']:.6g}"
             steps.append({"segment": seg, "rule": f"{r['plane']}: p = {r['p']:g}, q = {r['q']:g}, "
                           f"{t}, {r['kind']}: u1 = {u1:.6g}, u2 = {u2:.6g}"})
@@ -464,10 +492,10 @@ def _clip3d(table, ns, where):
             "handles": []}
 
 
-def _z_buffer(table, ns, where):
+def _z_buffer(table: Table, ns: argparse.Namespace, where: Where) -> View:
     """The scene's triangles on its device, the scan line, and at each step the pixel
     written (a write) or marked (a keep)."""
-    steps = []
+    steps: list[dict[str, Any]] = []
     for r in table.rows:
         write = r["result"] == "write"
         steps.append({"pixels": [[r["x"], ns.row]] if write else [], "mark": [[r["x"], ns.row]],
@@ -483,12 +511,12 @@ def _z_buffer(table, ns, where):
 _SPLIT = re.compile(r"split (\d+) by the plane of \d+ into (\d+) and (\d+)")
 
 
-def _depth_sort(table, ns, where):
+def _depth_sort(table: Table, ns: argparse.Namespace, where: Where) -> View:
     """The scene's polygons; at each step the pair compared: S (this step's color)
     and S' (plotted), split pieces drawn as the polygon they came from."""
     polys = [[[float(x), float(y)] for x, y, _ in p] for p in DEPTH_SORT_SCENES[ns.scene]]
     face = list(range(len(polys)))                 # piece number -> its polygon
-    steps = []
+    steps: list[dict[str, Any]] = []
     for r in table.rows:
         s, t = r["S"], r["S'"]
         tried = [f"{k + 1} {r[f'test {k + 1}']}" for k in range(5) if r[f"test {k + 1}"]]
@@ -503,11 +531,11 @@ def _depth_sort(table, ns, where):
             "shapes": [{"kind": "polygon", "points": p} for p in polys], "handles": []}
 
 
-def _floating_horizon(table, ns, where):
+def _floating_horizon(table: Table, ns: argparse.Namespace, where: Where) -> View:
     """Each curve's point at each column: plotted where visible (above the upper or
     below the lower horizon), marked where hidden; the page draws both horizons as
     they stand after the step (``horizon``: the columns that hold them)."""
-    steps = []
+    steps: list[dict[str, Any]] = []
     for r in table.rows:
         at = [r["column"], round(r["y"])]
         seen = r["visible"] != "hidden"
@@ -527,13 +555,13 @@ _SEEN = {"above": "above the upper horizon, visible; it raises the upper",
          "hidden": "between the horizons, hidden"}
 
 
-def _finite_text(x):
+def _finite_text(x: float | None) -> str:
     return "none" if x is None else f"{x:.6g}"
 
 
-def _ray_tracing(table, ns, where):
+def _ray_tracing(table: Table, ns: argparse.Namespace, where: Where) -> View:
     """The pixel whose ray tree the table lists, draggable; each ray's row as a rule."""
-    steps = []
+    steps: list[dict[str, Any]] = []
     for r in table.rows:
         if r["kind"] == "shadow":
             rule = (f"shadow ray of ray {r['parent']} to light {r['light']}: lets through "
@@ -549,10 +577,10 @@ def _ray_tracing(table, ns, where):
             "shapes": [], "handles": [_handle(where, "pixel", ns.x, ns.y, ("x", 0), ("y", 0))]}
 
 
-def _back_face(table, ns, where):
+def _back_face(table: BackFaceTable, ns: argparse.Namespace, where: Where) -> View:
     """The cube's faces on the device: at each step the face tested (this step's
     color), the front faces found before it plotted."""
-    steps = []
+    steps: list[dict[str, Any]] = []
     for r in table.rows:
         front = r["result"] == "front"
         done = [[t, "plotted"] for q in table.rows[:r["face"]] if q["result"] == "front"
@@ -566,11 +594,11 @@ def _back_face(table, ns, where):
             "shapes": shapes, "handles": []}
 
 
-def _shading(table, ns, where):
+def _shading(table: ShadingTable, ns: argparse.Namespace, where: Where) -> View:
     """The sphere's triangles that the scan line crosses; at each step the pixel
     shaded, its triangle filled, and the pixels before it in their gray (the
     ``shade_column``, a linear intensity)."""
-    steps = []
+    steps: list[dict[str, Any]] = []
     for r, k in zip(table.rows, table.triangle_of):
         what = (f"I = {r['l0']:.4g} x {r['I0']:.4g} + {r['l1']:.4g} x {r['I1']:.4g} + "
                 f"{r['l2']:.4g} x {r['I2']:.4g}" if "I0" in r else f"N = {r['N']}, I")
@@ -582,7 +610,7 @@ def _shading(table, ns, where):
             "shapes": shapes, "handles": [], "shade_column": "I"}
 
 
-def _plane_line(plane, width, height):
+def _plane_line(plane: Sequence[float], width: int, height: int) -> list[list[float]]:
     """The plan line A x + B y + D = 0 of a wall's plane cut to the grid [0, width - 1]
     x [0, height - 1]: its two ends."""
     a, b, _, d = plane
@@ -593,12 +621,13 @@ def _plane_line(plane, width, height):
     return [min(ends), max(ends)] if ends else []
 
 
-def _bsp_tree(table, ns, where):
+def _bsp_tree(table: BSPTable, ns: argparse.Namespace, where: Where) -> View:
     """The walls in plan.  Building: the node's splitting plane (a line across the
     grid), its pieces (this step's color), the pieces in front (result color) and
     behind (plotted).  Drawing: the pieces painted so far and this one; the eye is a
     handle."""
-    steps, drawn = [], []
+    steps: list[dict[str, Any]] = []
+    drawn: list[str] = []
     for r in table.rows:
         if r["phase"] == "build":
             n = r["node"]
@@ -628,16 +657,17 @@ def _bsp_tree(table, ns, where):
 POLYGON_COLORS = ("#1c7ed6", "#2b8a3e", "#ae3ec9", "#f59f00")
 
 
-def _polygon_colors(table, pixels):
+def _polygon_colors(table: WarnockTable | ScanLineTable, pixels: Sequence[Sequence[int]]
+                    ) -> list[str]:
     """The color of the polygon that ``table.face`` shows at each pixel (x, y)."""
     return [POLYGON_COLORS[int(table.face[y, x]) % len(POLYGON_COLORS)] for x, y in pixels]
 
 
-def _warnock(table, ns, where):
+def _warnock(table: WarnockTable, ns: argparse.Namespace, where: Where) -> View:
     """The scene's polygons; at each step the area examined (this step's color), the
     pixels its decision paints, and those painted before (each in its polygon's
     color, :data:`POLYGON_COLORS`)."""
-    steps = []
+    steps: list[dict[str, Any]] = []
     for r, pixels in zip(table.rows, table.written):
         x0, y0, x1, y1 = r["x0"] - 0.5, r["y0"] - 0.5, r["x1"] + 0.5, r["y1"] + 0.5
         classes = ", ".join(f"{p} {r[p]}" for p in table.columns[5:-2])
@@ -652,11 +682,11 @@ def _warnock(table, ns, where):
             "handles": []}
 
 
-def _scan_line_visible(table, ns, where):
+def _scan_line_visible(table: ScanLineTable, ns: argparse.Namespace, where: Where) -> View:
     """The scene's polygons and the scan line; at each step the crossing (marked)
     and the span to the next crossing (this step's color), the spans before it in
     their polygons' colors."""
-    steps = []
+    steps: list[dict[str, Any]] = []
     for r in table.rows:
         y = r["y"]
         p = r["edge"].split("(")[1].rstrip(")")
@@ -680,11 +710,11 @@ def _scan_line_visible(table, ns, where):
             "handles": []}
 
 
-def _ray_casting(table, ns, where):
+def _ray_casting(table: RayCastingTable, ns: argparse.Namespace, where: Where) -> View:
     """The z-buffer's triangles and the scan line; at each step the pixel whose ray
     is cast (this step's color, the nearest triangle filled), the pixels before it
     plotted where a triangle was met."""
-    steps = []
+    steps: list[dict[str, Any]] = []
     for r in table.rows:
         hit = r["nearest"] != "none"
         rule = (f"x = {r['x']}: the ray meets {r['hits']}; nearest {r['nearest']} at depth "
@@ -699,12 +729,12 @@ def _ray_casting(table, ns, where):
             "shapes": shapes, "handles": []}
 
 
-def _inbetweens(table, ns, where):
+def _inbetweens(table: Table, ns: argparse.Namespace, where: Where) -> View:
     """Time across (the key frames' interval :data:`TIME_CELLS` cells wide), frame
     number up: the key frames at the corners, each in-between's point, its tick on
     the time line (ticks before it plotted) and the drop from point to tick."""
     scale = TIME_CELLS / (ns.t2 - ns.t1)
-    steps = []
+    steps: list[dict[str, Any]] = []
     for r in table.rows:
         x, j = (r["t"] - ns.t1) * scale, r["j"]
         steps.append({"pixels": [[round(x), 0]], "mark": [[x, j], [x, 0]],
@@ -719,11 +749,11 @@ def _inbetweens(table, ns, where):
                        {"kind": "line", "points": [[0, 0], [TIME_CELLS, 0]]}], "handles": []}
 
 
-def _morph_equalize(table, ns, where):
+def _morph_equalize(table: MorphTable, ns: argparse.Namespace, where: Where) -> View:
     """Both key frames; at each step the vertex pair joined (this step's color) and
     the in-between vertex's pixel, those before plotted; at the last, the
     in-between polygon."""
-    steps = []
+    steps: list[dict[str, Any]] = []
     for r in table.rows:
         a, b = [r["ax"], r["ay"]], [r["bx"], r["by"]]
         new = {"A": " (added to A)", "B": " (added to B)", "-": ""}[r["added"]]
@@ -740,13 +770,16 @@ def _morph_equalize(table, ns, where):
             "shapes": [{"kind": "polygon", "points": s} for s in table.shapes], "handles": []}
 
 
-def _table_only(table, ns, where):
+def _table_only(table: Table, ns: argparse.Namespace, where: Where) -> View:
     """An algorithm with no grid view yet: its table, stepped row by row."""
     return {"before": [], "steps": [{"rule": ""} for _ in table.rows], "bounds": [0, 0, 10, 10],
             "shapes": [], "handles": []}
 
 
-_VIEWS = {"bresenham": _lines, "dda": _lines, "midpoint-circle": _conics,
+#: The view of each algorithm; its table is the Table subclass that algorithm's tracer
+#: returns (chosen by the same name), hence Any for the first argument.
+_VIEWS: dict[str, Callable[[Any, argparse.Namespace, Where], View]] = {
+          "bresenham": _lines, "dda": _lines, "midpoint-circle": _conics,
           "midpoint-ellipse": _conics, "flood-fill": _fills, "boundary-fill": _fills,
           "scan-line-fill": _scan_fill, "cohen-sutherland": _line_clip,
           "liang-barsky": _line_clip, "cyrus-beck": _line_clip,
@@ -770,7 +803,7 @@ ROW_BYTES, CONIC_ROW_BYTES, PIXEL_BYTES, VERTEX_BYTES = 1024, 4096, 256, 24
 COLUMN_BYTES, GRID_POINT_BYTES = 64, 96
 
 
-def _check(nbytes, argument, what, limit_bytes):
+def _check(nbytes: float, argument: str, what: str, limit_bytes: float | None) -> None:
     """:func:`scanline.budget.check` against ``limit_bytes`` (the studio's limit per
     request), saying so in the message; ``None``: the package's own budget."""
     hint = "ask for a smaller case"
@@ -785,7 +818,7 @@ def _check(nbytes, argument, what, limit_bytes):
                                 "on the command line") from None
 
 
-def check_memory(ns, limit_bytes=None):
+def check_memory(ns: argparse.Namespace, limit_bytes: float | None = None) -> None:
     """Refuse (:class:`~scanline.errors.MemoryBudgetError`, naming the argument) a case
     whose view would take more than ``limit_bytes`` (default: the package's memory
     budget), estimated from its sizes before anything is computed.  Sizes the tracer
@@ -933,7 +966,7 @@ def table_of(ns: argparse.Namespace) -> Table:
     return table
 
 
-def _cells(table):
+def _cells(table: Table) -> list[list[Any]]:
     """The rows as lists in column order (a row lacking a column has None there)."""
     cols = table.columns
     get = operator.itemgetter(*cols)
@@ -943,7 +976,7 @@ def _cells(table):
         return [[r.get(c) for c in cols] for r in table.rows]
 
 
-def rows_of(view):
+def rows_of(view: View) -> list[dict[str, Any]]:
     """The table rows of a view as dicts keyed by the column names (the view sends
     them as lists, in column order)."""
     return [dict(zip(view["columns"], r)) for r in view["rows"]]

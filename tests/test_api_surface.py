@@ -45,6 +45,7 @@ COMPLETE = [
     "scanline.visible",
     "scanline.scene",
     "scanline.trace",
+    "scanline.studio",
 ]
 
 

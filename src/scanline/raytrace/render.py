@@ -16,10 +16,29 @@ draws it, pixel for pixel.
 """
 
 from dataclasses import dataclass
+from typing import (TYPE_CHECKING, Any, Callable, Iterable, List, Optional, Sequence, Tuple, Union,
+                    overload)
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
+from ..solids.program import TracerSolids
+
+if TYPE_CHECKING:
+    from ..framebuffer import FrameBuffer
+    from ..lighting.lights import Light
+    from ..lighting.material import Material
+    from ..screen.scene import ScreenScene
+    from ..shading.options import ShadingOptions
+    from ..solids.program import Program
+    from ..solids.render import Hits
+    from ..visible.methods import MethodOptions
+    from ..visible.visibility import Layer
+    from .bvh import BVH
+
+F64 = NDArray[np.float64]
+I64 = NDArray[np.int64]
 
 #: The default depth of the ray tree (levels, the primary ray's included).
 MAX_DEPTH = 5
@@ -37,17 +56,17 @@ class Traced:
     """A screen scene ready for the tracer kernel: the tree over its world facets and
     the per-facet, per-material and per-light tables (the kernel's arguments after
     the samples' own), and those the shadow test reads."""
-    tree: object
-    arguments: tuple
-    lights: np.ndarray
+    tree: "BVH"
+    arguments: Tuple[Any, ...]      # the kernel's arguments: arrays, numbers, tokens
+    lights: F64
     seed: int
     eps: float
-    clear: np.ndarray
-    solids: tuple = ()
-    with_solids: tuple = (0,)
+    clear: F64
+    solids: Union[TracerSolids, Tuple[()]] = ()
+    with_solids: Tuple[Any, ...] = (0,)
 
 
-def material_table(materials, gamma):
+def material_table(materials: Sequence["Material"], gamma: float) -> F64:
     """The shading's material rows (:func:`scanline.shading.buffer.material_rows`)
     with each material's k_r, k_t, refractive index, roughness and bump scale, (M,
     16)."""
@@ -58,7 +77,8 @@ def material_table(materials, gamma):
     return np.ascontiguousarray(np.hstack([material_rows(materials, gamma), extra]))
 
 
-def map_tables(scene, gamma):
+def map_tables(scene: "ScreenScene", gamma: float
+               ) -> Tuple[F64, F64, I64, NDArray[np.float32], I64]:
     """The materials' texture, bump and environment maps as the tracer kernel takes
     them: ``(uvs (G, 3, 2), tangents (G, 6), maps (M, 3, 5), texels, levels)``
     (:data:`scanline._kernels.raytrace.TEXTURE` ...: each map's first row of
@@ -71,7 +91,8 @@ def map_tables(scene, gamma):
     from ..texture.texture import FILTER_CODES, WRAP_CODES
 
     maps = np.full((len(scene.materials), 3, 5), -1, np.int64)
-    parts, where = [], []
+    parts: List[Tuple[NDArray[np.float32], I64]] = []
+    where: List[Tuple[int, int]] = []
     for i, m in enumerate(scene.materials):
         for j, (texture, g) in enumerate(((m.texture, gamma), (m.bump, 1.0))):
             if texture is not None:
@@ -99,7 +120,7 @@ def map_tables(scene, gamma):
             v.kernel_array(texels, np.float32), v.kernel_array(levels, np.int64))
 
 
-def light_table(lights):
+def light_table(lights: Iterable["Light"]) -> Tuple[F64, F64]:
     """The shading's source rows (:func:`scanline.shading.buffer.source_rows`) with an
     area light's corner, edges and samples per side (zeros for the others), (S, 26),
     and the ambient intensity."""
@@ -122,7 +143,9 @@ def light_table(lights):
     return np.ascontiguousarray(np.hstack([rows, area])), ambient
 
 
-def traced(scene, shading, background, max_depth, seed, program=None):
+def traced(scene: "ScreenScene", shading: "ShadingOptions", background: F64, max_depth: int,
+           seed: int,
+           program: Optional["Program"] = None) -> Traced:
     """The :class:`Traced` form of ``scene`` with the shading options ``shading``
     (lights, gamma, the specular term) and the linear ``background`` (3,); ``program``:
     the solids (:class:`scanline.solids.program.Program`) traced with the facets."""
@@ -165,7 +188,7 @@ def traced(scene, shading, background, max_depth, seed, program=None):
         int(seed), eps, clear, solids, with_solids)
 
 
-def primary_rays(scene, xs, ys):
+def primary_rays(scene: "ScreenScene", xs: ArrayLike, ys: ArrayLike) -> Tuple[F64, F64]:
     """The world rays through device points (``xs``, ``ys``) of ``scene``, (P, 3)
     origins and unit directions into the view volume.
 
@@ -180,7 +203,7 @@ def primary_rays(scene, xs, ys):
     clip, scale, offset = scene.mapping
     x = (np.asarray(xs, np.float64) - offset[0]) / scale[0]
     y = (np.asarray(ys, np.float64) - offset[1]) / scale[1]
-    planes = []
+    planes: List[F64] = []
     for row, at in ((clip[0], x), (clip[1], y)):
         p = row[None, :] - at[:, None] * clip[3][None, :]
         p /= np.linalg.norm(p[:, :3] / np.abs(p[:, :3]).max(axis=1, keepdims=True), axis=1,
@@ -202,7 +225,7 @@ def primary_rays(scene, xs, ys):
     return np.ascontiguousarray(origin), np.ascontiguousarray(d)
 
 
-def shadow_test(prepared, twin=False):
+def shadow_test(prepared: Traced, twin: bool = False) -> Callable[[ArrayLike], List[F64]]:
     """The shading's shadow test (:attr:`scanline.shading.ShadingOptions.shadows`) by
     shadow rays through the tree: ``test(points (M, 3))`` -> per non-ambient light,
     the fraction of it that reaches each point
@@ -215,7 +238,7 @@ def shadow_test(prepared, twin=False):
     tree = prepared.tree
     lights = prepared.lights
 
-    def test(points):
+    def test(points: ArrayLike) -> List[F64]:
         pts = v.kernel_array(np.reshape(points, (-1, 3)))
         out = np.empty((len(lights), len(pts)))
         args = (pts, prepared.seed, prepared.eps, lights, tree.bounds, tree.links, tree.table,
@@ -229,7 +252,7 @@ def shadow_test(prepared, twin=False):
     return test
 
 
-def _without_environment(material):
+def _without_environment(material: "Material") -> "Material":
     """``material`` without its environment map (a copy, as ``Material.with_color``
     makes one)."""
     new = object.__new__(type(material))
@@ -238,7 +261,9 @@ def _without_environment(material):
     return new
 
 
-def primary_light(scene, layer, ys, xs, shading, prepared, background, twin=False):
+def primary_light(scene: "ScreenScene", layer: "Layer", ys: I64, xs: I64,
+                  shading: "ShadingOptions",
+                  prepared: Traced, background: F64, twin: bool = False) -> F64:
     """The local intensities (P, 3) of the primary rays' hits at pixels (``xs``, ``ys``)
     of ``layer`` (the ray caster's): the shading stage's own
     (:func:`scanline.shading.compose`: any shading model, textures, depth cueing),
@@ -258,7 +283,18 @@ def primary_light(scene, layer, ys, xs, shading, prepared, background, twin=Fals
     return linear
 
 
-def trace(prepared, origins, directions, firsts, givens, samples, log=None):
+@overload
+def trace(prepared: Traced, origins: F64, directions: F64, firsts: ArrayLike, givens: F64,
+          samples: ArrayLike, log: None = None) -> F64: ...
+
+
+@overload
+def trace(prepared: Traced, origins: F64, directions: F64, firsts: ArrayLike, givens: F64,
+          samples: ArrayLike, log: F64) -> Tuple[F64, int]: ...
+
+
+def trace(prepared: Traced, origins: F64, directions: F64, firsts: ArrayLike, givens: F64,
+          samples: ArrayLike, log: Optional[F64] = None) -> Union[F64, Tuple[F64, int]]:
     """Linear intensities (P, 3) of the samples whose primary rays (``origins``,
     ``directions``) meet the facets ``firsts`` first (-1: none, NaN out), where the
     local intensities are ``givens`` (P, 3), the samples numbered ``samples`` for the
@@ -284,7 +320,8 @@ def trace(prepared, origins, directions, firsts, givens, samples, log=None):
     return out, int(count[0])
 
 
-def shade(fb, scene, layer, shading, options, hits=None):
+def shade(fb: "FrameBuffer", scene: "ScreenScene", layer: "Layer", shading: "ShadingOptions",
+          options: "MethodOptions", hits: Optional["Hits"] = None) -> NDArray[np.int32]:
     """Color the pixels of ``layer`` (the ray-casting method's
     :class:`~scanline.visible.visibility.Layer` of ``scene``) into ``fb`` by tracing
     their rays; ``options``: the :class:`~scanline.visible.MethodOptions`

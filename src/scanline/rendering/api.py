@@ -16,6 +16,7 @@ from dataclasses import replace
 from typing import TYPE_CHECKING, Any, Iterable, Optional, Sequence, Tuple, Union
 
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from ..depthbuffer import DepthBuffer
@@ -29,6 +30,9 @@ from .result import Rendering
 
 if TYPE_CHECKING:
     from ..lighting import AmbientLight, DirectionalLight
+    from ..screen.scene import ScreenScene
+    from ..visible import Fragments, MethodOptions
+    from ..visible.visibility import Layer
 
 #: The modes :func:`render` draws lit surfaces into ("none" shading: every mode).
 MODES = ("L", "RGB", "RGBA")
@@ -303,6 +307,7 @@ def run(fb: FrameBuffer, meshes: Any, camera: Camera, options: RenderOptions,
         depth, pieces = seen.depth, seen.pieces
     solid_map = None
     if solids and METHODS[name].traced:
+        assert hits is not None                  # cast above: solids, a traced method
         facets, depth, solid_map = mark(hits, facets, depth)
     elif solids:
         from ..solids.render import draw
@@ -325,7 +330,7 @@ def run(fb: FrameBuffer, meshes: Any, camera: Camera, options: RenderOptions,
     return Rendering(name, fb, DepthBuffer.holding(depth), facets, scene, pieces, solid_map)
 
 
-def _finer(fb, n, layers):
+def _finer(fb: FrameBuffer, n: int, layers: bool) -> FrameBuffer:
     """A frame buffer ``n`` times finer than ``fb``; with ``layers`` (fragments blend
     over what lies behind them) holding its pixels, each an n x n block."""
     fine = FrameBuffer(fb.width * n, fb.height * n, mode=fb.mode)
@@ -335,7 +340,8 @@ def _finer(fb, n, layers):
     return fine
 
 
-def _resolve(fb, fine, covered, n, gamma):
+def _resolve(fb: FrameBuffer, fine: FrameBuffer, covered: NDArray[np.bool_], n: int,
+             gamma: float) -> None:
     """Each pixel of ``fb`` with a ``covered`` sample the mean of its n x n samples in
     ``fine`` (an uncovered one counting as the pixel's present value), averaged as
     light: supersampling (Hearn & Baker 4-8; 14, area sampling), in one compiled pass
@@ -351,7 +357,9 @@ def _resolve(fb, fine, covered, n, gamma):
                   fb._raster()[0])
 
 
-def _visible(scene, clear, name, options, fallback=None):
+def _visible(scene: "ScreenScene", clear: NDArray[np.bool_], name: str,
+             options: "MethodOptions", fallback: Optional[str] = None
+             ) -> Tuple[str, bool, "ScreenScene", Union["Layer", "Fragments"]]:
     """Run the method ``name`` on the scene's opaque facets (all, for a method that
     resolves transparency itself; ``clear``: the transparent facets): ``(name,
     layered, the scene it ran on, what it found)``.  Where it gives up and

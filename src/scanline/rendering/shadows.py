@@ -4,8 +4,15 @@ when something lies nearer the light along its line of sight than the point itse
 (a depth farther than the map's, by more than a small bias)."""
 
 import math
+from typing import TYPE_CHECKING, Any, Iterable, List, Optional, Tuple
 
 import numpy as np
+from numpy.typing import NDArray
+
+if TYPE_CHECKING:
+    from ..lighting.lights import Light
+    from ..projection import Camera
+    from ..screen.scene import ScreenScene
 
 #: Side of each shadow map, in texels.
 SIZE = 1024
@@ -17,7 +24,8 @@ class ShadowMaps:
     """The shadow maps of ``lights`` (those made with ``shadows=True``) over the
     meshes of a prepared ``scene``; :meth:`visibility` answers per point."""
 
-    def __init__(self, meshes, scene, lights, size=SIZE, bias=BIAS):
+    def __init__(self, meshes: Any, scene: "ScreenScene", lights: Iterable["Light"],
+                 size: int = SIZE, bias: float = BIAS) -> None:
         from ..lighting import AmbientLight, DirectionalLight
         from ..projection import Camera, orthographic, perspective
         from ..screen import prepare
@@ -28,7 +36,7 @@ class ShadowMaps:
         lo, hi = (world.min(axis=0), world.max(axis=0)) if len(world) else (np.zeros(3),) * 2
         center = (lo + hi) / 2
         radius = max(float(np.linalg.norm(hi - lo)) / 2, 1e-9)
-        self.maps = []
+        self.maps: List[Optional[Tuple["Camera", NDArray[np.float64]]]] = []
         for light in (x for x in lights if not isinstance(x, AmbientLight)):
             if not light.shadows:
                 self.maps.append(None)
@@ -50,10 +58,10 @@ class ShadowMaps:
                                                     * 0.5, far=dist + radius))
             self.maps.append((cam, nearest(prepare(meshes, cam, size, size)).depth.copy()))
 
-    def __call__(self, points):
+    def __call__(self, points: NDArray[np.float64]) -> List[NDArray[np.float64]]:
         """Per non-ambient light, 1.0 where ``points`` (M, 3) see it, 0.0 where they
         are in its shadow (1.0 everywhere for lights without shadows)."""
-        out = []
+        out: List[NDArray[np.float64]] = []
         for entry in self.maps:
             if entry is None:
                 out.append(np.ones(len(points)))

@@ -2,7 +2,7 @@
 operators ``|``, ``&`` and ``-`` that build constructive-solid-geometry trees
 (:mod:`scanline.csg`)."""
 
-from typing import TYPE_CHECKING, Optional, Tuple
+from typing import TYPE_CHECKING, Optional, Tuple, TypeGuard
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -118,7 +118,7 @@ class Solid:
         return difference(self, other)
 
 
-def is_solid(value: object) -> bool:
+def is_solid(value: object) -> TypeGuard["Solid"]:
     """Whether ``value`` is a solid (a primitive or a CSG tree).
 
     Parameters

@@ -96,7 +96,8 @@ class MeshSolid(Solid):
         start = np.repeat(off[:-1], sizes - 2)
         k = np.arange(len(first)) - np.repeat(np.cumsum(sizes - 2) - (sizes - 2), sizes - 2)
         tri = np.stack([first, idx[start + k + 1], idx[start + k + 2]], axis=1)
-        return self.mesh.vertices[tri]
+        corners: NDArray[np.float64] = self.mesh.vertices[tri]
+        return corners
 
     def contains(self, points: ArrayLike) -> NDArray[np.bool_]:
         """Whether each point is inside, by ray parity through the same kernels that

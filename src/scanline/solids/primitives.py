@@ -9,7 +9,7 @@ kernels (:mod:`scanline._kernels.solids`) work in these coordinates.
 """
 
 import math
-from typing import TYPE_CHECKING, Any, Optional, Sequence, Union
+from typing import TYPE_CHECKING, Any, Optional, Sequence, Union, cast
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -164,7 +164,8 @@ class Primitive(Solid):
         [[1.0, 0.0, 0.0]]
         """
         p = point_rows(points)
-        return p @ self.inverse[:3, :3].T + self.inverse[:3, 3]
+        u: NDArray[np.float64] = p @ self.inverse[:3, :3].T + self.inverse[:3, 3]
+        return u
 
     def contains(self, points: ArrayLike) -> NDArray[np.bool_]:
         """Whether each point is inside: within the slabs and, where there is a
@@ -187,7 +188,8 @@ class Primitive(Solid):
         [True, False]
         """
         u = self.local(points)
-        inside = ((u >= self.lo) & (u <= self.hi)).all(axis=1)
+        # numpy's stub: all(axis=) may be a scalar; here always (n,)
+        inside = cast(NDArray[np.bool_], ((u >= self.lo) & (u <= self.hi)).all(axis=1))
         if self.quadric is not None:
             h = np.hstack([u, np.ones((len(u), 1))])
             inside &= np.einsum("ni,ij,nj->n", h, self.quadric, h) <= 0
@@ -532,11 +534,12 @@ class Quadric(Primitive):
     def _ellipsoid(self) -> Optional[tuple[NDArray[np.float64], float, NDArray[np.float64]]]:
         """(center, half-axes matrix) when the solid is a bounded ellipsoid, else None."""
         q = self.quadric
+        assert q is not None                      # a Quadric's is always set
         a, b, c = q[:3, :3], q[:3, 3], q[3, 3]
         if not (np.linalg.eigvalsh(a) > 0).all():
             return None
-        center = -np.linalg.solve(a, b)
-        k = b @ -center - c
+        center = -np.asarray(np.linalg.solve(a, b), np.float64)    # floating[Any] to the stubs
+        k: float = b @ -center - c
         return (center, k, a) if k > 0 else None
 
     def bounds(self) -> Bounds:
@@ -589,6 +592,7 @@ class Quadric(Primitive):
         """
         e = self._ellipsoid()
         if e is None:
+            assert self.quadric is not None
             a = self.quadric[:3, :3]
             if (np.linalg.eigvalsh(a) > 0).all():
                 return 0.0

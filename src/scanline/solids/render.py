@@ -14,17 +14,29 @@ test -- whatever ``shading=`` says, as Phong shading of an exact normal.
 """
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any, List, Sequence, Tuple
 
 import numpy as np
+from numpy.typing import NDArray
 
 from ..errors import ArgumentValueError
-from .base import is_solid
+from .base import Solid, is_solid
+
+F64 = NDArray[np.float64]
+I64 = NDArray[np.int64]
+
+if TYPE_CHECKING:
+    from ..framebuffer import FrameBuffer
+    from ..lighting.material import Material
+    from ..screen.scene import ScreenScene
+    from ..shading.options import ShadingOptions
+    from .program import Program
 
 #: The methods that draw solids (they cast rays).
 METHODS = ("ray-casting", "ray-tracing")
 
 
-def split(items):
+def split(items: Any) -> Tuple[Any, List[Solid]]:
     """``items`` (a mesh, a solid, or a list of both) -> (the meshes' list or the
     original object when it holds no solid, the solids' list)."""
     if is_solid(items):
@@ -36,7 +48,7 @@ def split(items):
     return items, []
 
 
-def check_method(method, solids):
+def check_method(method: str, solids: Sequence[Solid]) -> None:
     """Refuse solids for a method that does not cast rays."""
     if solids and method not in METHODS:
         raise ArgumentValueError(
@@ -52,19 +64,20 @@ class Hits:
     unit directions), ``depth`` (device), ``solid`` (the index in the list given),
     ``primitive`` (the program's) and ``materials`` (the primitives'), ``program``
     (:class:`~scanline.solids.program.Program` of the solids' union)."""
-    ys: np.ndarray
-    xs: np.ndarray
-    points: np.ndarray
-    normals: np.ndarray
-    rays: np.ndarray
-    depth: np.ndarray
-    solid: np.ndarray
-    materials: list
-    primitive: np.ndarray
-    program: object
+    ys: NDArray[np.int64]
+    xs: NDArray[np.int64]
+    points: NDArray[np.float64]
+    normals: NDArray[np.float64]
+    rays: NDArray[np.float64]
+    depth: NDArray[np.float64]
+    solid: NDArray[np.int64]
+    materials: List["Material"]
+    primitive: NDArray[np.int64]
+    program: "Program"
 
 
-def pixels(solids, clip, scale, offset, shape):
+def pixels(solids: Sequence[Solid], clip: F64, scale: F64, offset: F64,
+           shape: Tuple[int, ...]) -> Tuple[I64, I64]:
     """The pixels (ys, xs) whose rays may meet the solids: those in the device
     rectangle of their bounding boxes' corners when every corner lies in front of the
     eye (the bounding-rectangle test of Hearn & Baker 13-10), else every pixel."""
@@ -92,7 +105,7 @@ def pixels(solids, clip, scale, offset, shape):
     return ys + y0, xs + x0
 
 
-def cast(scene, solids, depth):
+def cast(scene: "ScreenScene", solids: Sequence[Solid], depth: F64) -> Hits:
     """Cast every pixel's ray of ``scene`` (its device and camera mapping) against
     ``solids``; :class:`Hits` where a solid is nearer than ``depth`` (H, W)."""
     from ..csg import union
@@ -121,7 +134,7 @@ def cast(scene, solids, depth):
                 program.materials, prim, program)
 
 
-def local_light(scene, hits, shading):
+def local_light(scene: "ScreenScene", hits: Hits, shading: "ShadingOptions") -> F64:
     """The illumination model at the hits (linear RGB, (M, 3)), primitive by
     primitive's material (its color decoded with the shading's gamma, as a mesh's);
     unlit colors for ``shading="none"``."""
@@ -143,7 +156,8 @@ def local_light(scene, hits, shading):
     return out
 
 
-def mark(hits, facets, depth):
+def mark(hits: Hits, facets: NDArray[np.int32], depth: F64
+         ) -> Tuple[NDArray[np.int32], F64, I64]:
     """``facets`` (-1 where a solid is seen) and ``depth`` (H, W) with the hits in
     front, and the solid seen at each pixel (-1: none)."""
     seen = np.full(depth.shape, -1, np.int64)
@@ -156,7 +170,9 @@ def mark(hits, facets, depth):
     return facets, depth, seen
 
 
-def draw(fb, scene, solids, shading, facets, depth):
+def draw(fb: "FrameBuffer", scene: "ScreenScene", solids: Sequence[Solid],
+         shading: "ShadingOptions",
+         facets: NDArray[np.int32], depth: F64) -> Tuple[NDArray[np.int32], F64, I64]:
     """Draw ``solids`` over what the method drew of the meshes (``facets``, ``depth``:
     (H, W)) where they are nearer: returns :func:`mark`'s arrays."""
     from ..shading.compose import store

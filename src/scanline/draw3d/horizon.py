@@ -248,6 +248,15 @@ def floating_horizon(fb: "FrameBuffer", z: Surface, x: Optional[ArrayLike] = Non
     Horizon
         The segments drawn, the horizons and each curve's states.
 
+    Raises
+    ------
+    ArgumentTypeError
+        ``fb`` not a FrameBuffer, or ``camera_or_angles`` neither a Camera nor a pair.
+    ArgumentValueError
+        A grid that is not (ny, nx) with ny, nx >= 2, axes that are not increasing, a
+        surface not finite on the grid, an elevation outside (-pi/2, pi/2), an unknown
+        ``curves``, or curves that fold back on themselves in this view.
+
     Notes
     -----
     Wright (1973); Rogers, section 4-2.  The curves of constant y (or x) are

@@ -257,6 +257,15 @@ def wireframe(fb: "FrameBuffer", meshes: Any, camera: Camera,
     ndarray, shape (K, 4)
         The device segments drawn (after clipping), for inspection.
 
+    Raises
+    ------
+    ArgumentTypeError
+        ``fb`` not a FrameBuffer, or ``meshes`` not mesh-like.
+    ArgumentValueError
+        A list of colors of another length than the meshes', ``depth_cue`` that is not
+        True, False or (near, far) in 0..1, depth cueing into a mode other than L, RGB,
+        RGBA, or a line attribute of :func:`scanline.draw.lines` out of its range.
+
     Notes
     -----
     Every edge is clipped in homogeneous coordinates against the view volume before
@@ -481,6 +490,14 @@ def polylines(fb: "FrameBuffer", polylines_: Any, camera: Camera, color: Colors 
     list of ndarray (K, 2)
         The visible pieces drawn, in device coordinates.
 
+    Raises
+    ------
+    ArgumentTypeError
+        ``fb`` not a FrameBuffer.
+    ArgumentValueError
+        Points that are not (N, 3) finite numbers, or a line attribute of
+        :func:`scanline.draw.polylines` out of its range.
+
     Examples
     --------
     World x, y in -1..1 land on device 0..8 of a 9 x 9 frame buffer: x_d = 4 (x + 1).
@@ -598,6 +615,14 @@ def axes(fb: "FrameBuffer", camera: Camera, length: float = 1.0,
     -------
     ndarray (3, 4)
         The device segments of x, y and z.
+
+    Raises
+    ------
+    ArgumentTypeError
+        ``fb`` not a FrameBuffer, or ``length`` not a number.
+    ArgumentValueError
+        ``length`` not finite, or a line attribute of :func:`scanline.draw.lines` out of
+        its range.
 
     Examples
     --------

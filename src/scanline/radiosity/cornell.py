@@ -116,6 +116,13 @@ def cornell_box(scale: float = 1e-3) -> Dict[str, Any]:
         and ``emission`` (one (r, g, b) per mesh, for :func:`scanline.radiosity.solve`)
         and ``camera`` (a :class:`scanline.Camera`: the page's viewpoint).
 
+    Raises
+    ------
+    ArgumentTypeError
+        ``scale`` not a number.
+    ArgumentValueError
+        ``scale`` not positive and finite.
+
     Examples
     --------
     >>> import scanline as sl

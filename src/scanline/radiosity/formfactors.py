@@ -228,6 +228,11 @@ def form_factors(meshes: Any, subdivisions: int = 8, method: str = "hemicube",
         In a closed room every row adds up to 1, and A_i F_ij = A_j F_ji
         (reciprocity), both up to the method's discretization.
 
+    Raises
+    ------
+    ArgumentValueError
+        An unknown ``method``.
+
     Examples
     --------
     >>> import numpy as np, scanline as sl

@@ -323,6 +323,16 @@ def solve(meshes: Any, emission: Any = None, reflectance: Any = None, *,
     -------
     Radiosity
 
+    Raises
+    ------
+    ArgumentTypeError
+        A keyword it does not take, or an argument of the wrong type.
+    ArgumentValueError
+        An unknown ``method`` or ``form_factors`` name, a ``tolerance`` outside 0..1, no
+        patch that emits light, a form-factor matrix of the wrong shape, negative or with
+        rows adding up to more than 1, or a non-positive ``max_iterations`` or
+        ``shooting_group``.
+
     Examples
     --------
     >>> import numpy as np, scanline as sl

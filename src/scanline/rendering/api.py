@@ -165,6 +165,20 @@ def render(fb: FrameBuffer, meshes: Union[Mesh, Iterable[Mesh]], camera: Camera,
     Rendering
         The faces seen, the depth buffer and the prepared scene.
 
+    Raises
+    ------
+    ArgumentTypeError
+        ``fb`` not a FrameBuffer, ``camera`` not a Camera, or a keyword it does not take.
+    ArgumentValueError
+        Lit shading or antialiasing into a mode other than L, RGB, RGBA, an unknown
+        method, shading or specular term, or an option outside its range
+        (:class:`~scanline.visible.MethodOptions`, :class:`~scanline.shading.ShadingOptions`).
+    DepthSortLoopError, BSPTooLargeError
+        The depth sort or the BSP tree gave up on the scene, unless ``fallback`` names a
+        method to draw it instead.
+    MemoryBudgetError
+        A scene or an image too large for the memory budget.
+
     Examples
     --------
     >>> import scanline as sl

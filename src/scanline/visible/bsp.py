@@ -342,6 +342,12 @@ def camera_eye(camera: "Camera", width: int, height: int) -> NDArray[np.float64]
     ndarray (4,)
         The homogeneous eye, scaled so its largest entry is 1 in magnitude.
 
+    Raises
+    ------
+    ArgumentValueError
+        A projection that cannot be inverted in floating point (the viewer's position
+        is then unknown).
+
     Examples
     --------
     A perspective camera at (0, 0, 5): (0, 0, 5, 1), scaled by 1/5.

@@ -163,6 +163,18 @@ def depth_sort(polygons: ScreenPolygons, split_cycles: bool = True,
         The pieces in drawing order, farthest first; a split piece lies in its
         face's plane and keeps its face index (``planes`` are normalized).
 
+    Raises
+    ------
+    ArgumentTypeError
+        ``split_cycles`` not a bool, or ``drawn`` not callable.
+    ArgumentValueError
+        A ``max_pieces`` or ``max_work`` that is not a positive integer.
+    DepthSortLoopError
+        A cycle or an intersection with ``split_cycles=False``, more pieces than
+        ``max_pieces``, or more work than ``max_work``.
+    MemoryBudgetError
+        A ``log`` that would pass :data:`LOG_ROWS` rows.
+
     Notes
     -----
     Hearn & Baker, section 13-6 (Newell, Newell and Sancha 1972).  The polygons are

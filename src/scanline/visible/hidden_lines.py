@@ -53,6 +53,11 @@ def hidden_lines(segments: ArrayLike, depth: ArrayLike, polygons: "ScreenPolygon
     visible_of, hidden_of : ndarray of int64
         The segment each part comes from.
 
+    Raises
+    ------
+    ArgumentValueError
+        Segments and depths that are not (N, 4) and (N, 2) finite numbers of one length.
+
     Notes
     -----
     Hearn & Baker, section 13-10: "the most direct approach ... compare each line to
@@ -174,6 +179,14 @@ def visible_lines(fb: "FrameBuffer", meshes: Any, camera: "Camera", color: Color
     -------
     visible, hidden : ndarray, shape (K, 4)
         The device segments drawn solid and the hidden ones.
+
+    Raises
+    ------
+    ArgumentTypeError
+        ``fb`` not a FrameBuffer, or ``meshes`` not mesh-like.
+    ArgumentValueError
+        ``hidden`` neither "remove" nor "dash", or a line attribute of
+        :func:`scanline.draw.lines` out of its range.
 
     Notes
     -----

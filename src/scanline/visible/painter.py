@@ -28,6 +28,11 @@ def painter(polygons: ScreenPolygons, key: str = "farthest") -> ScreenPolygons:
         The polygons in drawing order (farthest key first; ties keep the input
         order).
 
+    Raises
+    ------
+    ArgumentValueError
+        An unknown ``key``.
+
     Notes
     -----
     This is step 1 of the depth-sorting method (Hearn & Baker, section 13-6) alone:

@@ -3,8 +3,6 @@
 import io
 import os
 import signal
-import subprocess
-import sys
 import textwrap
 import time
 
@@ -16,6 +14,7 @@ from PIL import Image
 import scanline as sl
 from scanline.animation import Animation
 from scanline.animation import render as render_module
+from tests import terminal
 from tests.reference import peer
 
 
@@ -193,7 +192,7 @@ def test_ctrl_c_stops_the_workers(tmp_path):
             except KeyboardInterrupt:
                 sys.exit(130)
     """))
-    proc = subprocess.Popen([sys.executable, str(script)])
+    proc = terminal.python(str(script))
     try:
         workers = set()
         deadline = time.monotonic() + 120

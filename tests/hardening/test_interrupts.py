@@ -3,8 +3,9 @@ command has written its file prints nothing (issue 11, item 5)."""
 
 import signal
 import subprocess
-import sys
 import time
+
+from tests import terminal
 
 LONG = r"""
 import sys, time, numpy as np, scanline as sl
@@ -27,10 +28,8 @@ except KeyboardInterrupt:
 
 
 def _start(code):
-    # SIGINT at its default (a background shell would start the child ignoring it)
-    return subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True,
-                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    return terminal.python("-c", code, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                           text=True)
 
 
 def test_ctrl_c_interrupts_a_long_kernel_call():
@@ -62,9 +61,8 @@ sys.exit(status)
 
 def test_an_interrupt_after_the_file_is_written_prints_nothing(tmp_path):
     out = tmp_path / "x.png"
-    p = subprocess.run([sys.executable, "-c", QUIET.replace("sys.argv[1]", repr(str(out)))],
-                       capture_output=True, text=True, timeout=120,
-                       preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    p = _start(QUIET.replace("sys.argv[1]", repr(str(out))))
+    _, err = p.communicate(timeout=120)
     assert out.exists()
-    assert p.returncode == 0, p.stderr
-    assert "KeyboardInterrupt" not in p.stderr and "Exception ignored" not in p.stderr
+    assert p.returncode == 0, err
+    assert "KeyboardInterrupt" not in err and "Exception ignored" not in err

@@ -17,7 +17,6 @@ import re
 import signal
 import socket
 import subprocess
-import sys
 import threading
 import time
 import urllib.parse
@@ -28,6 +27,7 @@ import pytest
 from scanline.studio import pool as pool_module
 from scanline.studio import server as server_module
 from scanline.studio.server import create_app
+from tests import terminal
 
 #: A valid explorer case that takes many seconds of CPU (11,325 rows of Cox-de Boor on
 #: 50,000 knots), in little memory.
@@ -418,8 +418,8 @@ def test_malformed_bodies_are_400_naming_what_is_wrong(client, path, body, says)
 
 # -- 7. Ctrl-C ------------------------------------------------------------------------------
 def test_ctrl_c_stops_the_server_at_once_with_busy_workers():
-    proc = subprocess.Popen([sys.executable, "-m", "scanline", "studio", "--port", "0"],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    proc = terminal.python("-m", "scanline", "studio", "--port", "0",
+                           stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     workers = []
     try:
         url = None

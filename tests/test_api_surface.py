@@ -36,6 +36,7 @@ COMPLETE = [
     "scanline.radiosity",
     "scanline.screen",
     "scanline.shading",
+    "scanline.animation",
     "scanline.octree",
     "scanline.solids",
     "scanline.draw3d",

@@ -41,7 +41,7 @@ def _direct(fb: FrameBuffer, a: NDArray[Any], name: str) -> Optional[NDArray[np.
     return None
 
 
-def colors(fb: FrameBuffer, color: Optional[Colors], n: int,
+def colors(fb: FrameBuffer, color: Union[Colors, NDArray[Any], None], n: int,
            name: str = "color") -> NDArray[np.uint8]:
     """Pixel values for N primitives, shape (1, channels) or (n, channels).
 

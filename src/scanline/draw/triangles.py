@@ -2,17 +2,30 @@
 (section 13-3) as one batch call, with Gouraud-style color interpolation that is
 correct in perspective (the kernel: :mod:`scanline._kernels.raster3d`)."""
 
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any, Optional, Tuple, Union
+
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from ..depthbuffer import depth_argument
 from ..errors import ArgumentTypeError, ArgumentValueError
 from ._common import target
 
+if TYPE_CHECKING:
+    from .._typing import Colors
+    from ..depthbuffer import DepthBuffer
+    from ..framebuffer import FrameBuffer
+
+#: Float64 kernel arrays: triangles (N, 3, 3), 1/w (N, 3), attributes (N, 3, K).
+_Rows = Tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]
+
 MODES = ("L", "RGB", "RGBA")
 
 
-def _vertices(vertices):
+def _vertices(vertices: ArrayLike) -> NDArray[np.float64]:
     tri = v.real_array("vertices", vertices, "(N, 3, 3)")
     if tri.size == 0:
         tri = tri.reshape(0, 3, 3)
@@ -30,7 +43,8 @@ def _vertices(vertices):
     return v.kernel_array(tri)
 
 
-def _far(tri, q, att):
+def _far(tri: NDArray[np.float64], q: NDArray[np.float64],
+         att: NDArray[np.float64]) -> _Rows:
     """Triangles with a vertex beyond the kernels' exact range clipped to the guard
     square in screen space (:func:`scanline.geometry.guard.triangles`) and cut into
     triangles again; depth, 1/w and the attributes times 1/w are linear on the
@@ -53,7 +67,7 @@ def _far(tri, q, att):
             v.kernel_array(rows[:, :, 4:] / q[:, :, None]))
 
 
-def _inverse_w(w, n):
+def _inverse_w(w: Optional[ArrayLike], n: int) -> NDArray[np.float64]:
     if w is None:
         return np.ones((n, 3))
     a = v.real_array("w", w, "(N, 3)")
@@ -66,7 +80,8 @@ def _inverse_w(w, n):
     return v.kernel_array(1.0 / a)
 
 
-def _vertex_colors(fb, colors, n):
+def _vertex_colors(fb: FrameBuffer, colors: Optional[Union[Colors, NDArray[np.number[Any]]]],
+                   n: int) -> NDArray[np.float64]:
     """Per-vertex channel values (N, 3, C) as float64 0..255."""
     channels = fb._raster()[0].shape[2]
     if isinstance(colors, np.ndarray) and colors.dtype.kind in "fiu" and colors.ndim >= 2 \
@@ -90,8 +105,11 @@ def _vertex_colors(fb, colors, n):
     return v.kernel_array(np.repeat(per_face[:, None, :], 3, axis=1))
 
 
-def rasterize(width, height, tri, q, att, ids, zbuf=None, buf=None, abuf=None, idbuf=None,
-              floor=None, clear=False):
+def rasterize(width: int, height: int, tri: NDArray[np.float64], q: NDArray[np.float64],
+              att: NDArray[np.float64], ids: NDArray[np.int64],
+              zbuf: Optional[NDArray[np.float64]] = None, buf: Optional[NDArray[np.uint8]] = None,
+              abuf: Optional[NDArray[np.float64]] = None, idbuf: Optional[NDArray[np.int32]] = None,
+              floor: Optional[NDArray[np.float64]] = None, clear: bool = False) -> None:
     """Run the triangle kernel on normalized arrays.
 
     ``buf`` given: the attributes (0..255) are rounded into its bytes; else
@@ -140,7 +158,9 @@ def rasterize(width, height, tri, q, att, ids, zbuf=None, buf=None, abuf=None, i
                   zbuf, floor, buf, abuf, idbuf)
 
 
-def triangles(fb, vertices, colors=None, depth=None, *, w=None):
+def triangles(fb: FrameBuffer, vertices: ArrayLike,
+              colors: Optional[Union[Colors, NDArray[np.number[Any]]]] = None,
+              depth: Optional[DepthBuffer] = None, *, w: Optional[ArrayLike] = None) -> None:
     """Fill N triangles, with a depth test against ``depth``, in one compiled call.
 
     Parameters
@@ -162,6 +182,17 @@ def triangles(fb, vertices, colors=None, depth=None, *, w=None):
         The homogeneous w (clip coordinates) of each vertex: colors are then
         interpolated perspective-correctly (linear in the eye's space, not on the
         screen).  Default: 1 (affine interpolation).
+
+    Raises
+    ------
+    ArgumentTypeError
+        When ``fb`` is not a FrameBuffer, ``depth`` not a DepthBuffer, or a colors
+        array of one color per triangle does not hold integers.
+    ArgumentValueError
+        When ``fb``'s mode is not "L", "RGB" or "RGBA"; ``vertices`` is not (N, 3, 3)
+        (or (N, 3, 2)) finite numbers; ``w`` is not (N, 3) finite values > 0;
+        ``colors`` has the wrong length, channels or values outside 0..255; or
+        ``depth`` is not the frame buffer's size.
 
     Notes
     -----

@@ -47,7 +47,8 @@ if TYPE_CHECKING:
 Spec = Optional["Color"]
 #: A region of the curved-area kernels: two half-planes (nx, ny, c, tie) and how they
 #: combine (``BOTH`` or ``EITHER``); integers of any size for a far conic.
-Region = tuple[Union[NDArray[np.int64], Sequence[tuple[int, int, int, int]]], int]
+HalfPlanes = Union[NDArray[np.int64], Sequence[tuple[int, int, int, int]]]
+Region = tuple[HalfPlanes, int]
 #: A run of the ideal conic near the frame: (polyline, closed, start point or None).
 Run = tuple[NDArray[np.float64], bool, Optional[tuple[Fraction, Fraction]]]
 
@@ -355,7 +356,7 @@ def antialiased_outline(fb: FrameBuffer, xc: float, yc: float, rx: float, ry: fl
     from . import antialias as aa
 
     if rx == 0 or ry == 0:                          # a segment, clipped by the guard
-        aa.lines(fb, [[xc - rx, yc - ry, xc + rx, yc + ry]], None if color is None else [color])
+        aa.lines(fb, [[xc - rx, yc - ry, xc + rx, yc + ry]], one(color))
         return
     contours: list[NDArray[np.float64]] = []
     for xy, closed, _ in fc.local_runs(xc, yc, rx, ry, _frame(fb, 3)):
@@ -401,6 +402,12 @@ def spec(color: Optional[Colors], i: int) -> Spec:
     if isinstance(color, list):
         return color[i]
     return color
+
+
+def one(color: Spec) -> Optional[Colors]:
+    """One primitive's color spec as the colors of a batch of one: a list of it (a
+    4-list ``[r, g, b, a]`` stays one color), or None (the default color)."""
+    return None if color is None else [color]
 
 
 def _subset(color: Optional[Colors], idx: NDArray[np.intp]) -> Optional[Colors]:

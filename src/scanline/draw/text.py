@@ -1,7 +1,12 @@
 """Drawing text: ``text`` (notes, syllabus: "Character generation"; Hearn & Baker,
 sections 3-14 and 4-5)."""
 
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any, Dict, Literal, Optional, Tuple, Union, cast
+
 import numpy as np
+from numpy.typing import NDArray
 
 from .. import _validate as v
 from .._kernels._jit import call
@@ -13,17 +18,39 @@ from ..text.layout import codes_of, line_setup, place
 from ..text.style import resolve
 from ._common import target
 
+if TYPE_CHECKING:
+    from .._typing import Angle, Color
+    from ..framebuffer import FrameBuffer
+    from ..text.glyphcache import GlyphImages
+    from ..text.layout import LineSetup, Placement
+    from ..text.style import Align, FontSpec, TextStyle
 
-_ALPHAS = {}
+#: What the one-call path of a resolved style needs (:func:`_fast`), or False.
+_Fast = Union[Tuple["LineSetup", "GlyphImages"], Literal[False]]
 
-#: ``sl.draw.text``'s memo: attribute keywords -> [style, resolved style, (LineSetup,
-#: glyph images) or False]; cleared when it grows past ``glyphcache.MAX_SIZES``.
-_MEMO = {}
+
+class _Memo:
+    """One entry of :data:`_MEMO`: the style given, the resolved style and its
+    :data:`_Fast` (None: not worked out yet)."""
+
+    __slots__ = ("style", "resolved", "fast")
+
+    def __init__(self, style: Optional[TextStyle], resolved: TextStyle) -> None:
+        self.style = style
+        self.resolved = resolved
+        self.fast: Optional[_Fast] = None
+
+
+_ALPHAS: Dict[str, int] = {}
+
+#: ``sl.draw.text``'s memo: attribute keywords -> :class:`_Memo`; cleared when it
+#: grows past ``glyphcache.MAX_SIZES``.
+_MEMO: Dict[Tuple[Any, ...], _Memo] = {}
 
 _REAL = (int, float)
 
 
-def _alpha(color):
+def _alpha(color: Color) -> int:
     """The color's alpha (0..255); integers (gray levels, bits, indices) are opaque."""
     if isinstance(color, (int, np.integer)):
         return 255
@@ -34,7 +61,8 @@ def _alpha(color):
     return rgba(color)[3]
 
 
-def _visible(fb, p):
+def _visible(fb: FrameBuffer, p: Placement
+             ) -> Tuple[NDArray[np.int64], NDArray[np.int64], NDArray[np.int64]]:
     """Glyph ids and origins of the characters that can touch the frame buffer (the
     others are dropped, which also keeps far-away geometry in the coordinate range)."""
     reach = 1.5 * p.font.reach * max(p.sx, p.sy) + 1
@@ -43,9 +71,12 @@ def _visible(fb, p):
     return p.gids[keep], p.ox[keep], p.oy[keep]
 
 
-def _strokes(fb, p, color, antialias):
+def _strokes(fb: FrameBuffer, p: Placement, color: Color, antialias: bool) -> None:
     """Stroke font: every stroke segment of every character in one batch of lines."""
+    from ..text.stroke import StrokeFont     # loaded already: ``font`` is one
+
     font = p.font
+    assert isinstance(font, StrokeFont)     # the caller checked its kind
     gids, ox, oy = _visible(fb, p)
     counts = font.first[gids + 1] - font.first[gids]
     if counts.sum() == 0:
@@ -65,7 +96,8 @@ def _strokes(fb, p, color, antialias):
         lines(fb, np.hstack([a, b]), color=color)
 
 
-def _filled(fb, p, color, value, antialias):
+def _filled(fb: FrameBuffer, p: Placement, color: Color, value: NDArray[np.uint8],
+            antialias: bool) -> None:
     """Outline and bitmap fonts: stamp cached glyph images, or fill the contours of
     glyphs too large to cache."""
     cache = glyphcache.images(p.font, p.matrix, antialias, p.tolerance)
@@ -93,7 +125,9 @@ def _filled(fb, p, color, value, antialias):
          alpha, fb.mode == "P", alpha == 255 and not antialias)
 
 
-def _line(fb, raster, x, y, text, fast, color, value, antialias):
+def _line(fb: FrameBuffer, raster: Tuple[NDArray[np.uint8], bool, int, int], x: float,
+          y: float, text: str, fast: Tuple[LineSetup, GlyphImages], color: Color,
+          value: NDArray[np.uint8], antialias: bool) -> bool:
     """Draw one line of upright text (no newline) with one compiled call; False
     when it must be placed the general way (a glyph not cached yet, a code point
     beyond the font's table), with nothing drawn."""
@@ -101,18 +135,18 @@ def _line(fb, raster, x, y, text, fast, color, value, antialias):
     buf, packed, width, height = raster
     alpha = _alpha(color)
     font = setup.font
-    return call(stamp_line, lambda: _glyph_work(cache.masks, len(text)), buf, layout(packed),
+    return cast(int, call(stamp_line, lambda: _glyph_work(cache.masks, len(text)), buf, layout(packed),
                 width, height, cache.atlas, cache.masks, cache.runs, cache.mask_of,
                 font._table, font.advances, codes_of(text), float(x), float(y), setup.params,
-                value, alpha, fb.mode == "P", alpha == 255 and not antialias) == 0
+                value, alpha, fb.mode == "P", alpha == 255 and not antialias)) == 0
 
 
-def _glyph_work(masks, n):
+def _glyph_work(masks: NDArray[np.int64], n: int) -> int:
     """Work units of stamping ``n`` glyphs: each at most the largest cached mask."""
     return n * (1 + (int((masks[:, 1] * masks[:, 2]).max()) if len(masks) else 0))
 
 
-def _fast(style):
+def _fast(style: TextStyle) -> _Fast:
     """``(LineSetup, glyph images)`` for the one-call path of a resolved style, or
     False (rotated text, paths up and down, the stroke font, uncached sizes)."""
     setup = line_setup(style)
@@ -122,8 +156,13 @@ def _fast(style):
     return False if cache is None else (setup, cache)
 
 
-def text(fb, x, y, text, color=None, font=None, height=None, expansion=None, spacing=None,
-         angle=None, up=None, path=None, align=None, antialias=None, style=None):
+def text(fb: FrameBuffer, x: float, y: float, text: str, color: Optional[Color] = None,
+         font: Optional[FontSpec] = None, height: Optional[float] = None,
+         expansion: Optional[float] = None, spacing: Optional[float] = None,
+         angle: Optional[Angle] = None, up: Optional[Tuple[float, float]] = None,
+         path: Optional[Literal["right", "left", "up", "down"]] = None,
+         align: Optional[Align] = None, antialias: Optional[bool] = None,
+         style: Optional[TextStyle] = None) -> None:
     """Draw a string.
 
     Parameters
@@ -147,6 +186,16 @@ def text(fb, x, y, text, color=None, font=None, height=None, expansion=None, spa
         height in pixels; ``spacing`` a fraction of it; ``angle`` radians.
     style : TextStyle, optional
         Attributes not given as keywords come from it.
+
+    Raises
+    ------
+    ArgumentTypeError
+        When ``fb`` is not a FrameBuffer, ``text`` not a str, ``style`` not a
+        TextStyle, or an attribute of the wrong type.
+    ArgumentValueError
+        For an attribute value :class:`scanline.TextStyle` refuses, a font that is
+        not found, a color that is not one, ``x`` or ``y`` not finite, a string over
+        2**20 characters, or a glyph image larger than the memory allows.
 
     Notes
     -----
@@ -188,6 +237,7 @@ def text(fb, x, y, text, color=None, font=None, height=None, expansion=None, spa
     glyph's bottom edge are outside (the fill's top-left rule), so the letters
     start on row ``y + 1`` and the first row of descenders is row ``y`` itself.
     """
+    key: Optional[Tuple[Any, ...]]
     try:  # (types too: True == 1 and 1.0 == 1, but only one of each pair is valid)
         key = (id(style), font, height, expansion, spacing, angle, up, path, align,
                antialias, type(height), type(expansion), type(spacing), type(angle),
@@ -195,26 +245,26 @@ def text(fb, x, y, text, color=None, font=None, height=None, expansion=None, spa
         memo = _MEMO.get(key)
     except TypeError:  # an unhashable attribute (a list as align): no memo
         key = memo = None
-    if memo is None or memo[0] is not style:
-        memo = [style, resolve(style, font=font, height=height, expansion=expansion,
-                               spacing=spacing, angle=angle, up=up, path=path, align=align,
-                               antialias=antialias), None]
+    if memo is None or memo.style is not style:
+        memo = _Memo(style, resolve(style, font=font, height=height, expansion=expansion,
+                                    spacing=spacing, angle=angle, up=up, path=path,
+                                    align=align, antialias=antialias))
         if key is not None:
             if len(_MEMO) >= glyphcache.MAX_SIZES:
                 _MEMO.clear()
             _MEMO[key] = memo
-    st = memo[1]
+    st = memo.resolved
     raster = target(fb)
     color = color if color is not None else st.color if st.color is not None else fb.foreground
     value = fb.pixel(color)
-    if memo[2] is None:
-        memo[2] = _fast(st)
-    if (memo[2] and type(text) is str and "\n" not in text and type(x) in _REAL
+    if memo.fast is None:
+        memo.fast = _fast(st)
+    if (memo.fast and type(text) is str and "\n" not in text and type(x) in _REAL
             and type(y) in _REAL and -v.COORD_LIMIT <= x <= v.COORD_LIMIT
             and -v.COORD_LIMIT <= y <= v.COORD_LIMIT):
-        if _line(fb, raster, x, y, text, memo[2], color, value, st.antialias):
+        if _line(fb, raster, x, y, text, memo.fast, color, value, st.antialias):
             return
-        memo[2] = None  # the general path may render into a newer cache of the size
+        memo.fast = None  # the general path may render into a newer cache of the size
     p = place(text, x, y, st)
     if len(p.gids) == 0:
         return

@@ -37,11 +37,21 @@ def fill_area(fb: FrameBuffer, color: Optional[Color], style: Optional[FillStyle
     """Fill an area of ``fb`` with ``color`` in ``style``.
 
     ``style`` None (or a solid style) fills directly; any other style object must
-    provide ``paint(fb, color, bbox, draw, outline)``.  ``bbox`` is
+    provide ``paint(fb, color, bbox, draw, outline)`` (anything else, such as the
+    name ``"hatch"``, is an ArgumentTypeError naming ``style``).  ``bbox`` is
     ``(xmin, ymin, xmax, ymax)``, the device pixels (inclusive) that can be covered.
     """
     if style is None or getattr(style, "kind", None) == "solid":
         buf, packed, width, height = target(fb)
         draw(buf, packed, width, height, 0, 0, fb.pixel(color))
+    elif not callable(getattr(style, "paint", None)):
+        from .._validate import _show
+        from ..errors import ArgumentTypeError
+        hint = (f"; for that kind write style=sl.FillStyle({style!r})"
+                if isinstance(style, str) and style in ("solid", "hollow", "pattern", "hatch")
+                else "")
+        raise ArgumentTypeError(f"style must be a FillStyle (sl.FillStyle.hatch(), "
+                                f"sl.FillStyle.pattern(tile) ...) or None for solid, got "
+                                f"{_show(style)}{hint}")
     else:
         style.paint(fb, color, bbox, draw, outline)

@@ -47,6 +47,7 @@ COMPLETE = [
     "scanline.scene",
     "scanline.trace",
     "scanline.studio",
+    "scanline.draw",
 ]
 
 

@@ -22,12 +22,12 @@ polygon, a filled rectangle is the union of those pixels' squares,
 """
 
 import math
-from typing import TYPE_CHECKING, Any, Optional, Union
+from typing import TYPE_CHECKING, Any, Optional, TypeVar, Union
 
 import numpy as np
 
 from .. import _validate as v
-from .._typing import Angle, ArrayLike, Cap, Color, Join, NDArray
+from .._typing import Angle, ArrayLike, Cap, Color, Colors, Dash, Join, NDArray, PenLike
 from ..errors import ArgumentTypeError, ArgumentValueError
 from . import strokes
 from ._common import target
@@ -46,10 +46,14 @@ MIDPOINT_LIMIT = strokes.SEQUENCE_LIMIT
 #: Most sides a regular polygon may have.
 MAX_SIDES = 1 << 20
 
+#: The outline color of one shape (a Color) or of a batch (Colors).
+_C = TypeVar("_C", bound=Optional[Colors])
+
 
 # -- arguments -------------------------------------------------------------------------
 
-def _fill(fb, fill, color):
+def _fill(fb: "FrameBuffer", fill: Union[bool, Color, None], color: _C
+          ) -> tuple[bool, Union[_C, Color, None], bool, Optional[_C]]:
     """``(filled, area_color, outline, outline_color)`` of the ``fill`` / ``color``
     pair: whether the area is filled and in what, whether the outline is drawn and
     in what (None: the foreground).  A fill color is checked here, so that an error
@@ -66,7 +70,7 @@ def _fill(fb, fill, color):
     return True, fill, color is not None, color
 
 
-def _distinct(path):
+def _distinct(path: NDArray[Any]) -> NDArray[Any]:
     """``path`` without repeated consecutive vertices (nor a last one equal to the
     first)."""
     keep = np.ones(len(path), bool)
@@ -77,29 +81,30 @@ def _distinct(path):
     return path
 
 
-def _hollow(fill_style):
+def _hollow(fill_style: Optional["FillStyle"]) -> bool:
     return getattr(fill_style, "kind", None) == "hollow"
 
 
-def _corners(x0, y0, x1, y1):
+def _corners(x0: float, y0: float, x1: float, y1: float) -> tuple[int, int, int, int]:
     """The corner pixels, rounded to pixel centers, as (left, bottom, right, top)."""
     x0, y0 = v.coordinate("x0", x0), v.coordinate("y0", y0)
     x1, y1 = v.coordinate("x1", x1), v.coordinate("y1", y1)
     return min(x0, x1), min(y0, y1), max(x0, x1), max(y0, y1)
 
 
-def _box(x0, y0, x1, y1):
+def _box(x0: int, y0: int, x1: int, y1: int) -> NDArray[np.float64]:
     """The union of the pixels (x0..x1) x (y0..y1) as a counterclockwise polygon."""
     return np.array([(x0 - 0.5, y0 - 0.5), (x1 + 0.5, y0 - 0.5), (x1 + 0.5, y1 + 0.5),
                      (x0 - 0.5, y1 + 0.5)], np.float64)
 
 
-def _ring(x0, y0, x1, y1):
+def _ring(x0: float, y0: float, x1: float, y1: float) -> NDArray[np.float64]:
     """The rectangle's outline path, counterclockwise from the bottom-left pixel."""
     return np.array([(x0, y0), (x1, y0), (x1, y1), (x0, y1)], np.float64)
 
 
-def _draw_outline(fb, path, color, style, antialias):
+def _draw_outline(fb: "FrameBuffer", path: NDArray[np.float64], color: Optional[Colors],
+                  style: Optional["LineStyle"], antialias: bool) -> None:
     """Stroke the closed ``path``; a path of zero width or height is the segment
     between its extreme points, stroked open."""
     lo, hi = path.min(axis=0), path.max(axis=0)
@@ -148,7 +153,7 @@ def point(fb: "FrameBuffer", x: float, y: float, color: Optional[Color] = None) 
     lines(fb, np.array([[x, y, x, y]], np.float64), color)
 
 
-def points(fb: "FrameBuffer", points: ArrayLike, color: Any = None) -> None:
+def points(fb: "FrameBuffer", points: ArrayLike, color: Optional[Colors] = None) -> None:
     """Draw N points in one compiled call.
 
     Parameters
@@ -178,8 +183,8 @@ def rectangle(fb: "FrameBuffer", x0: float, y0: float, x1: float, y1: float,
               color: Optional[Color] = None, fill: Union[bool, Color] = False, *,
               fill_style: Optional["FillStyle"] = None, style: Optional["LineStyle"] = None,
               antialias: bool = False, width: Optional[float] = None, cap: Optional[Cap] = None,
-              join: Optional[Join] = None, miter_limit: Optional[float] = None, dash: Any = None,
-              dash_phase: Optional[float] = None, pen: Any = None) -> None:
+              join: Optional[Join] = None, miter_limit: Optional[float] = None, dash: Optional[Dash] = None,
+              dash_phase: Optional[float] = None, pen: Optional[PenLike] = None) -> None:
     """Draw the axis-aligned rectangle with corner pixels ``(x0, y0)`` and
     ``(x1, y1)``: its outline, its area, or both.
 
@@ -256,11 +261,12 @@ def rectangle(fb: "FrameBuffer", x0: float, y0: float, x1: float, y1: float,
         _draw_outline(fb, _ring(x0, y0, x1, y1), line_color, attrs, antialias)
 
 
-def rectangles(fb: "FrameBuffer", rectangles: ArrayLike, color: Any = None,
-               fill: Any = False, *, style: Optional["LineStyle"] = None,
+def rectangles(fb: "FrameBuffer", rectangles: ArrayLike, color: Optional[Colors] = None,
+               fill: Union[bool, Colors] = False, *, style: Optional["LineStyle"] = None,
                antialias: bool = False, width: Optional[float] = None, cap: Optional[Cap] = None,
                join: Optional[Join] = None, miter_limit: Optional[float] = None,
-               dash: Any = None, dash_phase: Optional[float] = None, pen: Any = None) -> None:
+               dash: Optional[Dash] = None, dash_phase: Optional[float] = None,
+               pen: Optional[PenLike] = None) -> None:
     """Draw N rectangles in one compiled call per kind (areas, outlines).
 
     Parameters
@@ -319,7 +325,7 @@ def rectangles(fb: "FrameBuffer", rectangles: ArrayLike, color: Any = None,
 
 # -- rounded rectangles ------------------------------------------------------------------
 
-def _quadrant(r):
+def _quadrant(r: int) -> NDArray[np.int64]:
     """The midpoint circle's first-quadrant pixels, counterclockwise from (r, 0) to
     (0, r), each once (offsets from the center)."""
     q = strokes._quadrant(r, r)[::-1]
@@ -328,7 +334,7 @@ def _quadrant(r):
     return q[keep].astype(np.int64)
 
 
-def _pixel_path(x0, y0, x1, y1, r):
+def _pixel_path(x0: int, y0: int, x1: int, y1: int, r: int) -> NDArray[np.float64]:
     """The width-1 outline of the rounded rectangle as its pixels' sequence (the
     midpoint circle's quadrants moved to the corners; straight runs between them
     are implied), counterclockwise from (x0 + r, y0)."""
@@ -341,7 +347,7 @@ def _pixel_path(x0, y0, x1, y1, r):
     return _distinct(path).astype(np.float64)
 
 
-def _staircase(x0, y0, x1, y1, r):
+def _staircase(x0: int, y0: int, x1: int, y1: int, r: int) -> NDArray[np.float64]:
     """The filled rounded rectangle as a polygon whose edges lie on pixel borders:
     on each row, every pixel from the outline's left-most to its right-most
     (as :func:`scanline.draw.fill_circle` fills its outline)."""
@@ -362,7 +368,8 @@ def _staircase(x0, y0, x1, y1, r):
     return np.concatenate([right, left])
 
 
-def _arcs(x0, y0, x1, y1, r, radius):
+def _arcs(x0: float, y0: float, x1: float, y1: float, r: float, radius: float
+          ) -> NDArray[np.float64]:
     """The ideal rounded outline: arcs of ``radius`` about the corner centers
     (x0 + r, y0 + r) ... (chords within ``TOLERANCE`` of them), counterclockwise
     from the bottom edge."""
@@ -388,8 +395,8 @@ def rounded_rectangle(fb: "FrameBuffer", x0: float, y0: float, x1: float, y1: fl
                       style: Optional["LineStyle"] = None, antialias: bool = False,
                       width: Optional[float] = None, cap: Optional[Cap] = None,
                       join: Optional[Join] = None, miter_limit: Optional[float] = None,
-                      dash: Any = None, dash_phase: Optional[float] = None,
-                      pen: Any = None) -> None:
+                      dash: Optional[Dash] = None, dash_phase: Optional[float] = None,
+                      pen: Optional[PenLike] = None) -> None:
     """Draw the rectangle with corner pixels ``(x0, y0)`` and ``(x1, y1)`` whose
     corners are rounded with quarter circles of ``radius``.
 
@@ -485,8 +492,46 @@ def regular_polygon_vertices(xc: float, yc: float, r: float, sides: int,
     square is axis-aligned), as in Pillow's ``regular_polygon`` once its y axis is
     flipped.
 
+    Parameters
+    ----------
+    xc, yc : number
+        The center.
+    r : number
+        The radius of the circumscribed circle (>= 0; 0 puts every vertex at the center).
+    sides : int
+        The number of sides, 3 to :data:`MAX_SIDES`.
+    rotation : Angle, optional
+        Turns the polygon counterclockwise about its center (radians, or a string such
+        as ``"30deg"``).
+
+    Returns
+    -------
+    numpy.ndarray
+        (sides, 2) float64, counterclockwise; the coordinates are rounded to a grid of
+        2**-24 pixel, so that cos and sin round-off do not decide which boundary pixels
+        are inside.
+
+    Raises
+    ------
+    ArgumentValueError
+        A negative radius, fewer than 3 or more than :data:`MAX_SIDES` sides, a vertex
+        beyond +-2**30.
+    ArgumentTypeError
+        A non-numeric argument.
+
+    Examples
+    --------
+    A square of circumradius 2: its vertices at -45, 45, 135 and 225 degrees, at
+    2 cos 45deg = sqrt 2 from the center on each axis:
+
     >>> regular_polygon_vertices(0, 0, 2, 4).round(3).tolist()
     [[1.414, -1.414], [1.414, 1.414], [-1.414, 1.414], [-1.414, -1.414]]
+
+    A triangle about (10, 10) pointing up: the apex straight above the center, the base
+    r / 2 below it (sin 30deg = 1/2) and r cos 30deg to each side:
+
+    >>> regular_polygon_vertices(10, 10, 4, 3).round(3).tolist()
+    [[13.464, 8.0], [10.0, 14.0], [6.536, 8.0]]
     """
     xc, yc = v.number("xc", xc), v.number("yc", yc)
     given, r = r, v.number("r", r)
@@ -515,8 +560,8 @@ def regular_polygon(fb: "FrameBuffer", xc: float, yc: float, r: float, sides: in
                     style: Optional["LineStyle"] = None, antialias: bool = False,
                     width: Optional[float] = None, cap: Optional[Cap] = None,
                     join: Optional[Join] = None, miter_limit: Optional[float] = None,
-                    dash: Any = None, dash_phase: Optional[float] = None,
-                    pen: Any = None) -> None:
+                    dash: Optional[Dash] = None, dash_phase: Optional[float] = None,
+                    pen: Optional[PenLike] = None) -> None:
     """Draw the regular polygon of ``sides`` sides inscribed in the circle of radius
     ``r`` about ``(xc, yc)``.
 

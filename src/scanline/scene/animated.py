@@ -90,8 +90,37 @@ def _wrap(path: str, call: Callable[..., _T], *args: Any, **kwargs: Any) -> _T:
 
 # -- targets --------------------------------------------------------------------------------
 def parse_target(text: object, path: str) -> list[_Token]:
-    """``segments[ball].transform[0].translate`` -> ["segments", "ball", "transform", 0,
-    "translate"] (a bracketed name picks the array entry whose ``name`` it is)."""
+    """``segments[ball].transform[0].translate`` -> ["segments", ("name", "ball"),
+    "transform", 0, "translate"] (a bracketed name picks the array entry whose
+    ``name`` it is).
+
+    Parameters
+    ----------
+    text : object
+        A track's ``target``.
+    path : str
+        Its key path, named in error messages.
+
+    Returns
+    -------
+    list
+        Keys (str), indices (int) and ``("name", NAME)`` for ``[NAME]``.
+
+    Raises
+    ------
+    SceneError
+        If ``text`` is not a key path.
+
+    Examples
+    --------
+    >>> from scanline.scene.animated import parse_target
+    >>> parse_target("segments[ball].transform[0].translate", "animation.tracks[0].target")
+    ['segments', ('name', 'ball'), 'transform', 0, 'translate']
+    >>> parse_target("segments[ball] transform", "animation.tracks[0].target")
+    Traceback (most recent call last):
+    ...
+    scanline.scene.files.SceneError: animation.tracks[0].target cannot read the key path 'segments[ball] transform' at ' transform'
+    """
     if not isinstance(text, str) or not text:
         _fail(path, f"must be a key path such as 'segments[ball].transform[0].translate', got {text!r}")
     tokens: list[_Token] = []
@@ -137,7 +166,41 @@ def _step(node: Any, token: _Token, text: str, path: str) -> Any:
 
 def locate(data: dict[str, Any], tokens: list[_Token], text: str,
            path: str) -> tuple[Any, str | int]:
-    """(container, key) of the value at ``tokens`` in ``data``."""
+    """(container, key) of the value at ``tokens`` in ``data``.
+
+    Parameters
+    ----------
+    data : dict
+        Scene data.
+    tokens : list
+        A parsed target (:func:`parse_target`).
+    text : str
+        The target as written, named in error messages.
+    path : str
+        The target's key path, named in error messages.
+
+    Returns
+    -------
+    (dict or list, str or int)
+        The value is ``container[key]``.
+
+    Raises
+    ------
+    SceneError
+        If the scene has no value there, or the target names an entry.
+
+    Examples
+    --------
+    >>> from scanline.scene.animated import locate, parse_target
+    >>> data = {"segments": [{"name": "ball", "transform": [{"translate": [1, 2]}]}]}
+    >>> target = "segments[ball].transform[0].translate"
+    >>> locate(data, parse_target(target, "target"), target, "target")
+    ({'translate': [1, 2]}, 'translate')
+    >>> locate(data, parse_target("segments[box]", "target"), "segments[box]", "target")
+    Traceback (most recent call last):
+    ...
+    scanline.scene.files.SceneError: target 'segments[box]': no entry named 'box'
+    """
     node: Any = data
     for token in tokens[:-1]:
         node = _step(node, token, text, path)

@@ -63,7 +63,37 @@ class SceneError(ArgumentValueError):
 
 
 def format_of(path: "str | os.PathLike[str]", format: str | None = None) -> str:
-    """The format of a file: ``format`` if given, else from the extension."""
+    """The format of a file: ``format`` if given, else from the extension.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The file name.
+    format : {"toml", "json"}, optional
+        The format, when given.
+
+    Returns
+    -------
+    str
+        "toml" or "json".
+
+    Raises
+    ------
+    ArgumentValueError
+        If ``format`` is neither.
+    SceneError
+        If the extension is neither ``.toml`` nor ``.json`` (and no format is given).
+
+    Examples
+    --------
+    >>> from scanline.scene.files import format_of
+    >>> format_of("scene.JSON"), format_of("scene.txt", "toml")
+    ('json', 'toml')
+    >>> format_of("scene.txt")
+    Traceback (most recent call last):
+    ...
+    scanline.scene.files.SceneError: scene.txt: unknown scene file type '.txt'; use .toml or .json
+    """
     if format is not None:
         if format not in ("toml", "json"):
             raise ArgumentValueError(f"format must be 'toml' or 'json', got {format!r}")
@@ -159,7 +189,30 @@ def _no_constant(name: str) -> None:
 def read_text(path: "str | os.PathLike[str]") -> str:
     """The text of a scene file (UTF-8, a byte-order mark allowed), errors naming
     the file.  Only regular files of at most :data:`MAX_FILE_BYTES` are read (a
-    FIFO or a device such as /dev/zero is refused before reading)."""
+    FIFO or a device such as /dev/zero is refused before reading).
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The scene file.
+
+    Returns
+    -------
+    str
+
+    Raises
+    ------
+    SceneError
+        If the file cannot be read, is not a regular file, is too big, or is not
+        UTF-8 (with the line of the first bad byte).
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> from scanline.scene.files import read_text
+    >>> read_text(sl.scene.example("rotation")).splitlines()[0]
+    '# Rotation of an object about a pivot point (xr, yr) (notes, chapter 3, Q.2):'
+    """
     from .._files import read_limited
 
     name = os.fspath(path)

@@ -172,7 +172,23 @@ def _table_path(names: list[str], counts: dict[_Path, int], array: bool) -> _Pat
 
 
 def parse_path(path: str) -> _Path:
-    """``"segments[2].primitives[0].points"`` -> ``("segments", 2, "primitives", 0, "points")``."""
+    """``"segments[2].primitives[0].points"`` -> ``("segments", 2, "primitives", 0, "points")``.
+
+    Parameters
+    ----------
+    path : str
+        A key path as error messages give it.
+
+    Returns
+    -------
+    tuple of str and int
+
+    Examples
+    --------
+    >>> from scanline.scene.locate import parse_path
+    >>> parse_path("segments[2].primitives[0].points")
+    ('segments', 2, 'primitives', 0, 'points')
+    """
     out: list[str | int] = []
     for name, index in re.findall(r"([^.\[\]]+)|\[(\d+)\]", path):
         out.append(int(index) if index else name)
@@ -182,7 +198,34 @@ def parse_path(path: str) -> _Path:
 def line_of(text: str, format: str, path: str) -> int | None:
     """The line where the value at ``path`` (a key-path string) starts, or where its
     nearest enclosing value starts; None if unknown.  One pass over the text, in
-    memory proportional to the path's depth."""
+    memory proportional to the path's depth.
+
+    Parameters
+    ----------
+    text : str
+        The scene file's text (already valid TOML or JSON).
+    format : {"toml", "json"}
+    path : str
+        The key path.
+
+    Returns
+    -------
+    int or None
+        The line, from 1.
+
+    Examples
+    --------
+    >>> from scanline.scene.locate import line_of
+    >>> text = '''version = 1
+    ... [[segments]]
+    ... name = "a"
+    ... primitives = [{type = "polygon", points = [[0, 0]]}]
+    ... '''
+    >>> line_of(text, "toml", "segments[0].primitives[0].points")
+    4
+    >>> line_of(text, "toml", "segments[0].name"), line_of(text, "toml", "canvas")
+    (3, None)
+    """
     keys = parse_path(path)
     reader = None
     try:

@@ -213,7 +213,46 @@ def _call(function: Callable[..., object], *args: Any, **kwargs: Any) -> _Item:
 
 def items(segments: Iterable["Segment"], display_file: "DisplayFile", fb: "FrameBuffer",
           device: RasterDevice, highlight: "Color") -> list[_Item]:
-    """The items of ``segments`` (in drawing order), in drawing order."""
+    """The items of ``segments`` (in drawing order), in drawing order.
+
+    Parameters
+    ----------
+    segments : iterable of Segment
+        Display-file segments in drawing order.
+    display_file : DisplayFile
+        Their display file.
+    fb : FrameBuffer
+        The frame buffer they are drawn on.
+    device : RasterDevice
+        The device on ``fb``.
+    highlight : color
+        The highlight color of highlighted segments.
+
+    Returns
+    -------
+    list of _Item
+        Each with its ``kind`` ("area", "lines", "stroke" or "call"), ``key`` and
+        ``box``.
+
+    Examples
+    --------
+    Two squares and a line: areas, and thin lines:
+
+    >>> import scanline as sl
+    >>> from scanline.display.interpreter import drawing_order
+    >>> scene = sl.scene.Scene({"version": 1, "canvas": {"width": 24, "height": 4,
+    ...     "background": "black"},
+    ...     "segments": [{"name": "a", "primitives": [
+    ...         {"type": "polygon", "points": [[0.5, 0.5], [2.5, 0.5], [2.5, 2.5], [0.5, 2.5]]},
+    ...         {"type": "polyline", "points": [[4, 0], [6, 0]]},
+    ...         {"type": "polygon", "points": [[16.5, 0.5], [18.5, 0.5], [18.5, 2.5],
+    ...                                        [16.5, 2.5]]}]}]})
+    >>> df = scene.display_file
+    >>> fb = sl.FrameBuffer(24, 4)
+    >>> todo = items(drawing_order(df), df, fb, RasterDevice(fb), "magenta")
+    >>> [(it.kind, it.key) for it in todo]
+    [('area', ('area', 'even-odd')), ('lines', ('lines', 0)), ('area', ('area', 'even-odd'))]
+    """
     with np.errstate(all="ignore"):      # overflow -> inf, refused by _extent
         return _items(segments, display_file, fb, device, highlight)
 
@@ -260,6 +299,37 @@ def batches(todo: Iterable[_Item], width: int, height: int) -> list[list[_Item]]
     A grid of :data:`CELL`-pixel cells holds the last batch that paints in each
     cell; an item must be drawn after the last batch in the cells its box covers,
     and joins the first batch of its kind from there on (or starts one).
+
+    Parameters
+    ----------
+    todo : iterable of _Item
+        Items in drawing order (:func:`items`).
+    width, height : int
+        The frame buffer's size.
+
+    Returns
+    -------
+    list of list of _Item
+
+    Examples
+    --------
+    The second square is far from the line drawn before it: it joins the first
+    square's batch.
+
+    >>> import scanline as sl
+    >>> from scanline.display.interpreter import drawing_order
+    >>> scene = sl.scene.Scene({"version": 1, "canvas": {"width": 24, "height": 4,
+    ...     "background": "black"},
+    ...     "segments": [{"name": "a", "primitives": [
+    ...         {"type": "polygon", "points": [[0.5, 0.5], [2.5, 0.5], [2.5, 2.5], [0.5, 2.5]]},
+    ...         {"type": "polyline", "points": [[4, 0], [6, 0]]},
+    ...         {"type": "polygon", "points": [[16.5, 0.5], [18.5, 0.5], [18.5, 2.5],
+    ...                                        [16.5, 2.5]]}]}]})
+    >>> df = scene.display_file
+    >>> fb = sl.FrameBuffer(24, 4)
+    >>> todo = items(drawing_order(df), df, fb, RasterDevice(fb), "magenta")
+    >>> [[it.kind for it in batch] for batch in batches(todo, 24, 4)]
+    [['area', 'area'], ['lines']]
     """
     out: list[list[_Item]] = []
     keys: list[Hashable | None] = []
@@ -328,7 +398,43 @@ def paint(fb: "FrameBuffer", segments: Iterable["Segment"], display_file: "Displ
     """Draw ``segments`` (a display file's segments in drawing order, or a frame's
     from :class:`~scanline.scene.plan.FramePlan`) on ``fb`` as
     :func:`scanline.display.interpret` draws them on a ``RasterDevice(fb,
-    antialias)``."""
+    antialias)``.
+
+    Parameters
+    ----------
+    fb : FrameBuffer
+    segments : iterable of Segment
+        The segments in drawing order.
+    display_file : DisplayFile
+        Their display file.
+    antialias : bool, default False
+    highlight : color, default "magenta"
+        The color of highlighted segments.
+
+    Examples
+    --------
+    The same pixels as the scene's own raster (on the same black background):
+
+    >>> import scanline as sl
+    >>> from scanline.display.interpreter import drawing_order
+    >>> scene = sl.scene.Scene({"version": 1, "canvas": {"width": 24, "height": 4,
+    ...     "background": "black"},
+    ...     "segments": [{"name": "a", "primitives": [
+    ...         {"type": "polygon", "points": [[0.5, 0.5], [2.5, 0.5], [2.5, 2.5], [0.5, 2.5]]},
+    ...         {"type": "polyline", "points": [[4, 0], [6, 0]]},
+    ...         {"type": "polygon", "points": [[16.5, 0.5], [18.5, 0.5], [18.5, 2.5],
+    ...                                        [16.5, 2.5]]}]}]})
+    >>> df = scene.display_file
+    >>> fb = sl.FrameBuffer(24, 4)
+    >>> paint(fb, drawing_order(df), df)
+    >>> print(sl.text_image(fb))
+    ------------------------
+    -##--------------##-----
+    -##--------------##-----
+    ----###-----------------
+    >>> fb.to_array().tolist() == scene.raster().to_array().tolist()
+    True
+    """
     device = RasterDevice(fb, antialias)
     for group in batches(items(segments, display_file, fb, device, highlight), fb.width,
                          fb.height):

@@ -115,7 +115,35 @@ def _call(where: str, function: Callable[..., _T], /, *args: Any, **kwargs: Any)
 
 
 def angle(value: object, path: str) -> float:
-    """An angle given as ``{degrees = x}`` or ``{radians = x}`` -> radians."""
+    """An angle given as ``{degrees = x}`` or ``{radians = x}`` -> radians.
+
+    Parameters
+    ----------
+    value : object
+        The scene's value: a table of one key, ``degrees`` or ``radians``.
+    path : str
+        Its key path, named in error messages.
+
+    Returns
+    -------
+    float
+        The angle in radians.
+
+    Raises
+    ------
+    SceneError
+        If the value does not say its unit, or is not a finite number.
+
+    Examples
+    --------
+    >>> from scanline.scene.schema import angle
+    >>> angle({"degrees": 180}, "angle")
+    3.141592653589793
+    >>> angle(30, "segments[0].primitives[0].angle")
+    Traceback (most recent call last):
+    ...
+    scanline.scene.files.SceneError: segments[0].primitives[0].angle must say its unit: {degrees = 30} or {radians = 0.5}, got 30
+    """
     if isinstance(value, dict) and len(value) == 1 and set(value) <= {"degrees", "radians"}:
         (unit, x), = value.items()
         if isinstance(x, numbers.Real) and not isinstance(x, bool) and math.isfinite(x):
@@ -174,7 +202,34 @@ def _step(step: object, path: str) -> NDArray[np.float64]:
 
 
 def transformation(steps: object, path: str) -> NDArray[np.float64]:
-    """A list of steps, applied in the order listed (the first acts first)."""
+    """A list of steps, applied in the order listed (the first acts first).
+
+    Parameters
+    ----------
+    steps : object
+        The segment's ``transform``: a list of one-key tables (``translate``,
+        ``rotate``, ``scale``, ``reflect``, ``shear``, ``matrix``).
+    path : str
+        Its key path, named in error messages.
+
+    Returns
+    -------
+    numpy.ndarray
+        The 3x3 matrix ``M = S_n ... S_2 S_1`` (column vectors, ``p' = M p``).
+
+    Raises
+    ------
+    SceneError
+        If a step is unknown or its arguments are invalid (naming the step's path).
+
+    Examples
+    --------
+    Scaling by 2 first, then moving 1 to the right, takes (1, 1) to (3, 2):
+
+    >>> from scanline.scene.schema import transformation
+    >>> transformation([{"scale": 2}, {"translate": [1, 0]}], "transform") @ [1, 1, 1]
+    array([3., 2., 1.])
+    """
     m = tf.compose()
     for i, step in enumerate(_list(steps, path)):
         m = tf.compose(_step(step, f"{path}[{i}]"), m)
@@ -188,7 +243,39 @@ def _flag(value: object, path: str) -> bool:
 
 
 class Canvas:
-    """The device: size, background, raster mode, highlight color."""
+    """The device: size, background, raster mode, highlight color.
+
+    Parameters
+    ----------
+    data : object
+        The scene's ``canvas`` table: ``width``, ``height`` (2 to :data:`MAX_SIZE`),
+        ``background``, ``mode``, ``highlight``, ``antialias``.
+    path : str, default "canvas"
+        Its key path, named in error messages.
+
+    Attributes
+    ----------
+    width, height : int
+    background, highlight
+        The colors, checked.
+    mode : str
+        "1", "L", "RGB", "RGBA" or "P".
+    antialias : bool
+    shading : Shading or None
+        The scene's shaded surfaces (set by :func:`build`).
+
+    Raises
+    ------
+    SceneError
+        If a key is unknown or a value invalid.
+
+    Examples
+    --------
+    >>> from scanline.scene.schema import Canvas
+    >>> c = Canvas({"width": 4, "height": 3, "mode": "L"})
+    >>> c.width, c.height, c.mode, c.antialias
+    (4, 3, 'L', False)
+    """
 
     def __init__(self, data: object, path: str = "canvas") -> None:
         from ..display.primitives import color
@@ -213,14 +300,49 @@ class Canvas:
 
     def nbytes(self, three_d: bool = False) -> int:
         """The bytes drawing this canvas takes: its frame buffer, and with
-        ``three_d`` what 3-D surfaces need per pixel (:data:`SURFACE_BYTES_PER_PIXEL`)."""
+        ``three_d`` what 3-D surfaces need per pixel (:data:`SURFACE_BYTES_PER_PIXEL`).
+
+        Parameters
+        ----------
+        three_d : bool, default False
+            Count the z-buffer of 3-D surfaces too.
+
+        Returns
+        -------
+        int
+
+        Examples
+        --------
+        12 pixels of one byte, and with 12 bytes more each for the z-buffer:
+
+        >>> from scanline.scene.schema import Canvas
+        >>> c = Canvas({"width": 4, "height": 3, "mode": "L"})
+        >>> c.nbytes(), c.nbytes(three_d=True)
+        (12, 156)
+        """
         per_pixel = _PIXEL_BYTES[self.mode] + (SURFACE_BYTES_PER_PIXEL if three_d else 0)
         return self.width * self.height * per_pixel
 
     def check_budget(self, three_d: bool = False) -> None:
         """Refuse, before anything is drawn, a canvas whose :meth:`nbytes` passes the
         memory budget (:mod:`scanline.budget`): a SceneError naming
-        ``canvas.width x canvas.height``."""
+        ``canvas.width x canvas.height``.
+
+        Parameters
+        ----------
+        three_d : bool, default False
+            Count the z-buffer of 3-D surfaces too.
+
+        Raises
+        ------
+        SceneError
+            If the canvas does not fit the memory budget.
+
+        Examples
+        --------
+        >>> from scanline.scene.schema import Canvas
+        >>> Canvas({"width": 4, "height": 3}).check_budget(three_d=True)
+        """
         from .. import budget
         from ..errors import MemoryBudgetError
 
@@ -242,7 +364,36 @@ def _size(value: object, path: str) -> int:
 
 def build(data: object, base: str | None = None) -> tuple[Canvas, DisplayFile]:
     """Check scene data (a dict) and build it: returns (Canvas, DisplayFile).  ``base``
-    is the folder that mesh files are named relative to (the scene file's)."""
+    is the folder that mesh files are named relative to (the scene file's).
+
+    Parameters
+    ----------
+    data : object
+        The scene's data as parsed from TOML or JSON.
+    base : str, optional
+        The scene file's folder.
+
+    Returns
+    -------
+    (Canvas, DisplayFile)
+
+    Raises
+    ------
+    SceneError
+        If the data is not a valid scene; the message starts with the key path.
+
+    Examples
+    --------
+    >>> from scanline.scene.schema import build
+    >>> canvas, df = build({"version": 1, "canvas": {"width": 8, "height": 6}, "segments": [
+    ...     {"name": "box", "primitives": [{"type": "polyline", "points": [[0, 0], [7, 5]]}]}]})
+    >>> canvas.width, [s.name for s in df.segments]
+    (8, ['box'])
+    >>> build({"version": 3})
+    Traceback (most recent call last):
+    ...
+    scanline.scene.files.SceneError: version must be 1 or 2 (the schemas this scanline reads), got 3
+    """
     from . import schema3d
 
     keys = {"version", "canvas", "window", "viewports", "segments", "cameras"}

@@ -187,7 +187,32 @@ def _arguments(data: dict[str, Any], path: str,
 
 
 def projection(data: object, path: str) -> "Projection":
-    """A projection table -> a Projection."""
+    """A projection table -> a Projection.
+
+    Parameters
+    ----------
+    data : object
+        A camera's ``projection`` table: ``type`` (one of :data:`PROJECTIONS`) and
+        that projection's keys, angles as ``{degrees = x}`` or ``{radians = x}``.
+    path : str
+        Its key path, named in error messages.
+
+    Returns
+    -------
+    Projection
+
+    Raises
+    ------
+    SceneError
+        If the type is unknown or a key invalid.
+
+    Examples
+    --------
+    >>> from scanline.scene.schema3d import projection
+    >>> p = projection({"type": "isometric"}, "cameras[0].projection")
+    >>> p.name, p.kind
+    ('isometric', 'parallel')
+    """
     from .. import projection as pj
 
     t = schema._table(data, path, set().union(*PROJECTIONS.values()) | {"type"}, ("type",))
@@ -205,7 +230,35 @@ def projection(data: object, path: str) -> "Projection":
 
 
 def cameras(data: object, df: "DisplayFile") -> list[str]:
-    """Build the scene's cameras into the display file; returns their names."""
+    """Build the scene's cameras into the display file; returns their names.
+
+    Parameters
+    ----------
+    data : object
+        The scene's ``cameras``: a list of camera tables (:data:`CAMERA` keys).
+    df : DisplayFile
+        Gets each camera (:meth:`~scanline.DisplayFile.set_camera`).
+
+    Returns
+    -------
+    list of str
+        The cameras' names (``camera0``, ``camera1`` ... where a name is not given).
+
+    Raises
+    ------
+    SceneError
+        If a camera is invalid, a name repeats, or there is no camera.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> from scanline.scene.schema3d import cameras
+    >>> df = sl.DisplayFile()
+    >>> cameras([{"name": "front", "eye": [0, 0, 5], "target": [0, 0, 0]}, {}], df)
+    ['front', 'camera1']
+    >>> type(df.camera("front")).__name__
+    'Camera'
+    """
     from ..projection import Camera
 
     names: list[str] = []
@@ -233,7 +286,33 @@ def cameras(data: object, df: "DisplayFile") -> list[str]:
 
 
 def step(step_: object, path: str) -> NDArray[np.float64]:
-    """One 3-D transformation step -> its 4x4 matrix."""
+    """One 3-D transformation step -> its 4x4 matrix.
+
+    Parameters
+    ----------
+    step_ : object
+        A one-key table: ``translate``, ``rotate`` (an angle with ``axis`` and
+        ``pivot``, or a ``quaternion``), ``scale``, ``reflect``, ``shear`` or
+        ``matrix``.
+    path : str
+        Its key path, named in error messages.
+
+    Returns
+    -------
+    numpy.ndarray
+        The 4x4 matrix (column vectors, ``p' = M p``).
+
+    Raises
+    ------
+    SceneError
+        If the step is unknown or its arguments invalid.
+
+    Examples
+    --------
+    >>> from scanline.scene.schema3d import step
+    >>> step({"translate": [1, 2, 3]}, "transform[0]") @ [0, 0, 0, 1]
+    array([1., 2., 3., 1.])
+    """
     if not isinstance(step_, dict) or len(step_) != 1:
         schema._fail(path, "must be a table with one key: " + ", ".join(_STEPS)
                 + " (e.g. {translate = [1, 0, 2]})")
@@ -305,7 +384,33 @@ def _quaternion_step(a: dict[str, Any], here: str) -> NDArray[np.float64]:
 
 
 def transformation(steps: object, path: str) -> NDArray[np.float64]:
-    """A list of 3-D steps, applied in the order listed (the first acts first)."""
+    """A list of 3-D steps, applied in the order listed (the first acts first).
+
+    Parameters
+    ----------
+    steps : object
+        A primitive's ``transform``: a list of :func:`step` tables.
+    path : str
+        Its key path, named in error messages.
+
+    Returns
+    -------
+    numpy.ndarray
+        The 4x4 matrix ``M = S_n ... S_2 S_1``.
+
+    Raises
+    ------
+    SceneError
+        If a step is invalid (naming its path).
+
+    Examples
+    --------
+    Scaling by 2 first, then moving 1 along x, takes (1, 1, 1) to (3, 2, 2):
+
+    >>> from scanline.scene.schema3d import transformation
+    >>> transformation([{"scale": 2}, {"translate": [1, 0, 0]}], "transform") @ [1, 1, 1, 1]
+    array([3., 2., 2., 1.])
+    """
     m = t3.compose()
     for i, st in enumerate(schema._list(steps, path)):
         m = t3.compose(step(st, f"{path}[{i}]"), m)
@@ -394,7 +499,48 @@ def primitive(kind: str, data: dict[str, Any], path: str, df: "DisplayFile", bac
     transformed by its own 3-D transformation (``segment``, the segment's 2-D one,
     must be the identity).  ``totals`` (the scene's memory so far, see
     :func:`scanline.scene.schema.build`) gets each mesh added, checked against the
-    memory budget."""
+    memory budget.
+
+    Parameters
+    ----------
+    kind : {"mesh", "polyline3d"}
+        The primitive's type.
+    data : dict
+        The primitive's table.
+    path : str
+        Its key path, named in error messages.
+    df : DisplayFile
+        The display file, a segment open and a camera set.
+    background : color
+        The canvas background (depth cueing fades to it).
+    base : str or None
+        The scene file's folder, where mesh files are found.
+    shading : Shading, optional
+        The scene's shading (needed by a mesh with a ``material``).
+    segment : numpy.ndarray, optional
+        The segment's 2-D transformation.
+    totals : dict, optional
+        The scene's memory so far.
+
+    Raises
+    ------
+    SceneError
+        If the primitive is invalid, its mesh cannot be made or read, or the scene's
+        meshes pass the memory budget.
+
+    Examples
+    --------
+    >>> import scanline as sl
+    >>> from scanline.scene.schema3d import primitive
+    >>> df = sl.DisplayFile()
+    >>> df.set_camera(sl.Camera(eye=(0, 0, 5), target=(0, 0, 0)))
+    >>> df.create_segment("cube")
+    >>> primitive("mesh", {"type": "mesh", "generator": "cube"}, "segments[0].primitives[0]",
+    ...           df, "black", None)
+    >>> df.close_segment()
+    >>> [p.kind for p in df.segment("cube").primitives]
+    ['mesh']
+    """
     schema._table(data, path, PRIMITIVES[kind] | {"type"},
              ("points",) if kind == "polyline3d" else ())
     line = {k: x for k, x in data.items() if k in _LINE and k != "color"}

@@ -63,7 +63,34 @@ def _tuples(value: Any) -> Any:
 
 
 def light(data: object, path: str) -> "Light":
-    """A light table -> a light of :mod:`scanline.lighting`."""
+    """A light table -> a light of :mod:`scanline.lighting`.
+
+    Parameters
+    ----------
+    data : object
+        A ``lights`` entry: ``type`` (one of :data:`LIGHTS`) and that light's keys.
+    path : str
+        Its key path, named in error messages.
+
+    Returns
+    -------
+    AmbientLight, DirectionalLight, PointLight, SpotLight or AreaLight
+
+    Raises
+    ------
+    SceneError
+        If the type is unknown, a required key is missing or a value is invalid.
+
+    Examples
+    --------
+    >>> from scanline.scene.shaded import light
+    >>> light({"type": "point", "position": [0, 5, 5]}, "lights[0]").position
+    array([0., 5., 5.])
+    >>> light({"type": "spot", "position": [0, 5, 5]}, "lights[1]")
+    Traceback (most recent call last):
+    ...
+    scanline.scene.files.SceneError: lights[1] needs the key 'direction'
+    """
     t = schema._table(data, path, set().union(*LIGHTS.values()) | {"type"}, ("type",))
     kind = t["type"]
     if not isinstance(kind, str) or kind not in LIGHTS:
@@ -81,7 +108,32 @@ def texture(value: object, path: str, base: str | None = None) -> "Texture":
     """A material's texture key -> a :class:`scanline.Texture`: an image file's name
     (relative to the scene file's folder ``base``), or a table naming a procedural
     texture of :mod:`scanline.texture` and its keywords (``size``, ``seed``,
-    ``filter``, ``wrap`` ...)."""
+    ``filter``, ``wrap`` ...).
+
+    Parameters
+    ----------
+    value : object
+        The material's ``texture`` (or ``bump``) value.
+    path : str
+        Its key path, named in error messages.
+    base : str, optional
+        The scene file's folder.
+
+    Returns
+    -------
+    Texture
+
+    Raises
+    ------
+    SceneError
+        If the value is neither, the file cannot be read, or a keyword is invalid.
+
+    Examples
+    --------
+    >>> from scanline.scene.shaded import texture
+    >>> texture({"procedural": "checker", "size": 8, "squares": 2}, "texture").image.shape
+    (8, 8, 3)
+    """
     import inspect
     import os
 
@@ -105,7 +157,36 @@ def environment(value: object, path: str,
     """A material's ``environment`` key -> a :class:`scanline.texture.CubeMap` for a
     table ``{cube = [+x, -x, +y, -y, +z, -z files] | "cross file", filter = ...}``
     (files relative to the scene file's folder ``base``), else a latitude-longitude
-    texture (:func:`texture`)."""
+    texture (:func:`texture`).
+
+    Parameters
+    ----------
+    value : object
+        The material's ``environment`` value.
+    path : str
+        Its key path, named in error messages.
+    base : str, optional
+        The scene file's folder.
+
+    Returns
+    -------
+    CubeMap or Texture
+
+    Raises
+    ------
+    SceneError
+        If the cube is not six files or one cross image, or a file cannot be read.
+
+    Examples
+    --------
+    >>> from scanline.scene.shaded import environment
+    >>> type(environment({"procedural": "marble", "size": 8}, "environment")).__name__
+    'Texture'
+    >>> environment({"cube": ["sky.png"]}, "materials.glass.environment")
+    Traceback (most recent call last):
+    ...
+    scanline.scene.files.SceneError: materials.glass.environment.cube must be six image files (+x, -x, +y, -y, +z, -z) or one cross image, got 1
+    """
     import os
 
     from ..texture import CubeMap
@@ -134,7 +215,27 @@ class Shading:
     """What a scene's top-level shading keys say: ``lights`` (None: the renderer's
     default), ``materials`` (name -> Material), ``options`` for
     :func:`scanline.render`, and the ``surfaces`` the mesh primitives add.  ``base``:
-    the scene file's folder, where texture files are found."""
+    the scene file's folder, where texture files are found.
+
+    Parameters
+    ----------
+    data : dict
+        The scene's data (its keys :data:`KEYS` are read).
+    base : str, optional
+        The scene file's folder.
+
+    Raises
+    ------
+    SceneError
+        If a light, material, the method or the shading table is invalid.
+
+    Examples
+    --------
+    >>> from scanline.scene.shaded import Shading
+    >>> sh = Shading({"materials": {"red": {"color": "red"}}, "shading": "flat"})
+    >>> sorted(sh.materials), sh.options, sh.lights
+    (['red'], {'method': 'z-buffer', 'shading': 'flat'}, None)
+    """
 
     def __init__(self, data: dict[str, Any], base: str | None = None) -> None:
         self.lights: list[Light] | None = None
@@ -197,7 +298,38 @@ class Shading:
                 emission: object = None, reflectance: object = None) -> None:
         """Add ``mesh`` as a surface of the named ``material`` seen by ``camera``
         (``emission``, ``reflectance``: its radiosity values, None: no light, the
-        material's kd x color)."""
+        material's kd x color).
+
+        Parameters
+        ----------
+        mesh : Mesh
+        material : object
+            The primitive's ``material``: a name in :attr:`materials`.
+        path : str
+            The primitive's key path, named in error messages.
+        camera : Camera
+        emission, reflectance : object, optional
+            The primitive's radiosity values: a number or [r, g, b].
+
+        Raises
+        ------
+        SceneError
+            If ``material`` names no material.
+
+        Examples
+        --------
+        >>> import scanline as sl
+        >>> from scanline.scene.shaded import Shading
+        >>> sh = Shading({"materials": {"red": {"color": "red"}}})
+        >>> camera = sl.Camera(eye=(0, 0, 5), target=(0, 0, 0))
+        >>> sh.surface(sl.mesh.cube(), "red", "segments[0].primitives[0]", camera)
+        >>> len(sh.surfaces)
+        1
+        >>> sh.surface(sl.mesh.cube(), "blue", "segments[1].primitives[0]", camera)
+        Traceback (most recent call last):
+        ...
+        scanline.scene.files.SceneError: segments[1].primitives[0].material names no material: 'blue'; materials: 'red'
+        """
         if not isinstance(material, str) or material not in self.materials:
             schema._fail(f"{path}.material", f"names no material: {material!r}; materials: "
                             + (", ".join(repr(k) for k in self.materials) or
@@ -206,7 +338,24 @@ class Shading:
         self.values.append((path, _tuples(emission), _tuples(reflectance)))
 
     def draw(self, fb: "FrameBuffer") -> None:
-        """Render the surfaces into ``fb``, camera by camera."""
+        """Render the surfaces into ``fb``, camera by camera.
+
+        Parameters
+        ----------
+        fb : FrameBuffer
+
+        Examples
+        --------
+        Without surfaces nothing is drawn:
+
+        >>> import scanline as sl
+        >>> from scanline.scene.shaded import Shading
+        >>> fb = sl.FrameBuffer(3, 2, background="black")
+        >>> Shading({"shading": "flat"}).draw(fb)
+        >>> print(sl.text_image(fb))
+        ---
+        ---
+        """
         from ..rendering import render
 
         by_camera: dict[int, tuple[Camera, list[Mesh], list[lighting.Material]]] = {}
@@ -223,7 +372,7 @@ class Shading:
     def _radiosity(self, fb: "FrameBuffer", table: dict[str, Any]) -> None:
         """Solve the radiosity of every surface together (the light goes from surface
         to surface whatever camera sees them) and draw the solution through each
-        camera."""
+        camera (``table``: the scene's radiosity table)."""
         import copy
 
         from .. import radiosity
@@ -263,7 +412,32 @@ def _triple(name: str, value: object) -> tuple[float, float, float]:
 
 def shading(data: dict[str, Any], base: str | None = None) -> Shading | None:
     """The :class:`Shading` of scene data (a dict), or None when it has no shading
-    key and so no surfaces can be asked for (``base``: the scene file's folder)."""
+    key and so no surfaces can be asked for (``base``: the scene file's folder).
+
+    Parameters
+    ----------
+    data : dict
+        The scene's data.
+    base : str, optional
+        The scene file's folder.
+
+    Returns
+    -------
+    Shading or None
+
+    Raises
+    ------
+    SceneError
+        As :class:`Shading`.
+
+    Examples
+    --------
+    >>> from scanline.scene.shaded import shading
+    >>> shading({"version": 2}) is None
+    True
+    >>> shading({"version": 2, "method": "painter"}).options
+    {'method': 'painter', 'shading': 'gouraud'}
+    """
     if not any(k in data for k in KEYS):
         return None
     return Shading(data, base)

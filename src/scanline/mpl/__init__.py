@@ -48,10 +48,11 @@ The axes, ticks, panes, labels, legends and other artists are left as they are.
 """
 
 from dataclasses import dataclass
-from typing import Literal, Optional, Tuple
+from typing import Iterable, Literal, Optional, Tuple
 
 try:
     from matplotlib.artist import Artist
+    from matplotlib.backend_bases import RendererBase
     from mpl_toolkits.mplot3d import Axes3D
 except ImportError as e:      # pragma: no cover - matplotlib is an optional dependency
     raise ImportError("scanline.mpl works on matplotlib figures: pip install matplotlib "
@@ -60,6 +61,7 @@ except ImportError as e:      # pragma: no cover - matplotlib is an optional dep
 from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError, DepthSortLoopError, ScanlineWarning
 from . import _raster, _scene, _sources, _vector
+from ._sources import Artist3D
 
 __all__ = ["METHODS", "Occlusion", "Drawn", "render_axes"]
 
@@ -108,7 +110,7 @@ class Drawn:
     fell_back: bool = False
 
 
-def _hidden(*args, **kwargs):
+def _hidden(*args: object, **kwargs: object) -> bool:
     """``get_visible`` of an adopted artist: matplotlib neither projects nor draws it
     (its own ``_visible`` flag, which legends copy, stays as it was)."""
     return False
@@ -126,25 +128,26 @@ class Occlusion(Artist):
     changed between draws; :attr:`last` says what the last draw did.
     """
 
-    def __init__(self, ax: "Axes3D", sources, method: str = "vector", flatness: float = 0.05,
+    def __init__(self, ax: "Axes3D", sources: Iterable[Tuple[Artist3D, str]],
+                 method: Literal["vector", "raster"] = "vector", flatness: float = 0.05,
                  samples: int = 2, max_pieces: Optional[int] = None) -> None:
         super().__init__()
         self.axes = ax
         self.sources = list(sources)
-        self.method = method
+        self.method: str = method
         self.flatness = flatness
         self.samples = samples
         self.max_pieces = max_pieces
-        self.last = None
+        self.last: Optional[Drawn] = None
         self.set_in_layout(False)
         self.set_zorder(max(a.get_zorder() for a in (ax.xaxis, ax.yaxis, ax.zaxis)) + 1)
 
-    def _adopt(self):
+    def _adopt(self) -> None:
         for artist, _ in self.sources:
             artist.get_visible = _hidden
             artist.stale = True
 
-    def _release(self):
+    def _release(self) -> None:
         for artist, _ in self.sources:
             if artist.__dict__.get("get_visible") is _hidden:
                 del artist.get_visible
@@ -156,7 +159,7 @@ class Occlusion(Artist):
         self._release()
         super().remove()
 
-    def draw(self, renderer) -> None:
+    def draw(self, renderer: RendererBase) -> None:
         """Draw the adopted artists with the visibility computed for this draw's view
         (and record what was done in :attr:`last`)."""
         if not self.get_visible():
@@ -166,7 +169,7 @@ class Occlusion(Artist):
         samples = _samples(self.samples)
         max_pieces = (None if self.max_pieces is None
                       else v.positive_int("max_pieces", self.max_pieces))
-        ax = self.axes
+        ax: "Axes3D" = self.axes
         M = getattr(ax, "M", None)
         if M is None:
             M = ax.get_proj()
@@ -174,7 +177,7 @@ class Occlusion(Artist):
         scene = _scene.collect(ax, self.sources, M, max(1, int(width)), max(1, int(height)),
                                flatness)
         fell_back = False
-        numbers = None
+        numbers: Optional[_scene.Numbers] = None
         if method == "vector":
             try:
                 numbers = _vector.draw(renderer, scene, self, max_pieces)
@@ -196,7 +199,7 @@ class Occlusion(Artist):
         self.stale = False
 
 
-def _flatness(value):
+def _flatness(value: object) -> float:
     x = v.number("flatness", value)
     if x < 0:
         raise ArgumentValueError(f"flatness must be >= 0 (a fraction of a polygon's size), "
@@ -204,7 +207,7 @@ def _flatness(value):
     return x
 
 
-def _samples(value):
+def _samples(value: object) -> int:
     s = v.positive_int("samples", value)
     if s > 8:
         raise ArgumentValueError(f"samples must be 1 .. 8 (samples x samples per pixel), "

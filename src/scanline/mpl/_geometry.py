@@ -8,9 +8,18 @@ polygon that is not convex (rare: a user's L-shaped face) is cut into triangles 
 Python loop over its vertices.
 """
 
+from typing import Any, List, Optional, Tuple, Union
+
 import numpy as np
+from numpy.typing import NDArray
 
 from ..screen import ScreenPolygons, newell_planes
+
+#: The arrays of :mod:`scanline.mpl`: coordinates, depths and colors; counts, offsets
+#: and indices; masks.
+Floats = NDArray[np.float64]
+Ints = NDArray[np.int64]
+Bools = NDArray[np.bool_]
 
 #: Polygons and triangles whose projected area (square device units) is at most this
 #: are dropped, as :class:`~scanline.visible.ScreenPolygons` drops them.
@@ -20,16 +29,16 @@ MIN_AREA = 1e-9
 PLANAR = 1e-9
 
 
-def _over(op, a):
+def _over(op: np.ufunc, a: NDArray[Any]) -> NDArray[Any]:
     """``a`` (N, K, ...) reduced over its short axis 1 by the ufunc ``op``, one column
     at a time (numpy's reductions over a short axis are several times slower)."""
-    out = a[:, 0].copy()
+    out: NDArray[Any] = a[:, 0].copy()
     for j in range(1, a.shape[1]):
         op(out, a[:, j], out=out)
     return out
 
 
-def _newell(p):
+def _newell(p: Floats) -> Tuple[Floats, Floats]:
     """Newell normals (N, 3) and centroids (N, 3) of polygons ``p`` (N, K, 3)."""
     n = np.zeros((len(p), 3))
     k = p.shape[1]
@@ -41,7 +50,7 @@ def _newell(p):
     return n, _over(np.add, p) / k
 
 
-def _areas(xy):
+def _areas(xy: Floats) -> Floats:
     """Signed areas of polygons ``xy`` (N, K, 2) (> 0 counterclockwise)."""
     k = xy.shape[1]
     s = np.zeros(len(xy))
@@ -51,7 +60,7 @@ def _areas(xy):
     return 0.5 * s
 
 
-def _convex(xy):
+def _convex(xy: Floats) -> Bools:
     """Whether each polygon ``xy`` (N, K, 2) is convex and simple as projected: every
     turn one way (collinear and repeated vertices allowed) and one turn in all (a
     pentagram turns twice)."""
@@ -59,25 +68,25 @@ def _convex(xy):
     f = np.roll(e, -1, axis=1)
     cross = e[..., 0] * f[..., 1] - e[..., 1] * f[..., 0]
     tol = 1e-12 * (_over(np.maximum, np.abs(e).reshape(len(e), -1)) ** 2)[:, None]
-    one_way = (_over(np.logical_and, cross >= -tol) | _over(np.logical_and, cross <= tol))
+    one_way: Bools = (_over(np.logical_and, cross >= -tol) | _over(np.logical_and, cross <= tol))
     if xy.shape[1] <= 4:          # four turns one way: at most one turn in all
         return one_way
     dot = (e * f).sum(axis=2)
-    turning = np.abs(np.arctan2(cross, dot).sum(axis=1))
+    turning: Floats = np.abs(np.arctan2(cross, dot).sum(axis=1))
     return one_way & (np.abs(turning - 2 * np.pi) < 1e-6)
 
 
-def _ear_clip(xy):
+def _ear_clip(xy: Floats) -> Ints:
     """Triangles (T, 3) of vertex indices cutting the simple polygon ``xy`` (K, 2) by
     ear clipping (Meisters 1975); what is left when no ear is found (a
     self-intersecting outline) is fanned."""
     idx = list(range(len(xy)))
     sign = 1.0 if _areas(xy[None])[0] >= 0 else -1.0
-    out = []
+    out: List[Tuple[int, int, int]] = []
 
-    def cross(a, b, c):
-        return sign * ((xy[b, 0] - xy[a, 0]) * (xy[c, 1] - xy[a, 1])
-                       - (xy[b, 1] - xy[a, 1]) * (xy[c, 0] - xy[a, 0]))
+    def cross(a: int, b: int, c: int) -> float:
+        return sign * float((xy[b, 0] - xy[a, 0]) * (xy[c, 1] - xy[a, 1])
+                             - (xy[b, 1] - xy[a, 1]) * (xy[c, 0] - xy[a, 0]))
 
     while len(idx) > 3:
         for i in range(len(idx)):
@@ -96,7 +105,7 @@ def _ear_clip(xy):
     return np.array(out, np.int64).reshape(-1, 3)
 
 
-def simplify(dev, proj, count, eps):
+def simplify(dev: Floats, proj: Floats, count: Ints, eps: float) -> Tuple[Floats, Floats, Ints]:
     """Drop the vertices of polygons (N, K, 3) that lie within ``eps`` (device units)
     of the chord joining their neighbours (and are not next to another such vertex):
     the middle points that ``plot_surface`` puts on the sides of each polygon when it
@@ -146,7 +155,7 @@ def simplify(dev, proj, count, eps):
     return dev[:, :kk], proj[:, :kk], count
 
 
-def _fan_start(xy):
+def _fan_start(xy: Floats) -> Ints:
     """For each polygon ``xy`` (N, K, 2), a vertex from which its fan of triangles
     covers it exactly (every triangle turning as the polygon turns: the vertex sees
     the whole polygon), or -1 where there is none."""
@@ -168,7 +177,8 @@ def _fan_start(xy):
     return start
 
 
-def units(dev, proj, count, flatness):
+def units(dev: Floats, proj: Floats, count: Ints,
+          flatness: float) -> Tuple[Floats, Ints, Ints, Floats]:
     """The convex planar polygons standing for matplotlib's polygons.
 
     Parameters
@@ -195,7 +205,10 @@ def units(dev, proj, count, flatness):
         (in depth) the vertices of each one's source polygon leave its plane: the
         uncertainty of the surface there (0 for planar polygons).
     """
-    out_v, out_n, out_o, out_b = [], [], [], []
+    out_v: List[Floats] = []
+    out_n: List[Ints] = []
+    out_o: List[Ints] = []
+    out_b: List[Floats] = []
     for k in np.unique(count):
         if k < 3:
             continue
@@ -251,23 +264,25 @@ def units(dev, proj, count, flatness):
         ears = cut[(start < 0) & planar[cut]]
         fans = cut[(start >= 0) | ~planar[cut]]
         first = np.maximum(start[(start >= 0) | ~planar[cut]], 0)
-        tris, owner, bent = [], [], []
+        tri_parts: List[Floats] = []
+        owner_parts: List[Ints] = []
+        bent_parts: List[Floats] = []
         if len(fans):
             j = np.arange(1, k - 1)
             idx = np.stack([np.broadcast_to(first[:, None], (len(fans), k - 2)),
                             (first[:, None] + j) % k, (first[:, None] + j + 1) % k], axis=2)
-            tris.append(np.take_along_axis(D[fans][:, None, :, :], idx[..., None], axis=2)
+            tri_parts.append(np.take_along_axis(D[fans][:, None, :, :], idx[..., None], axis=2)
                         .reshape(-1, 3, 3))
-            owner.append(np.repeat(sel[fans], k - 2))
-            bent.append(np.repeat(dz[fans], k - 2))
+            owner_parts.append(np.repeat(sel[fans], k - 2))
+            bent_parts.append(np.repeat(dz[fans], k - 2))
         for i in ears:
             t = _ear_clip(D[i, :, :2])
-            tris.append(D[i][t])
-            owner.append(np.full(len(t), sel[i]))
-            bent.append(np.full(len(t), dz[i]))
-        tris = np.concatenate(tris)
-        owner = np.concatenate(owner)
-        bent = np.concatenate(bent)
+            tri_parts.append(D[i][t])
+            owner_parts.append(np.full(len(t), sel[i]))
+            bent_parts.append(np.full(len(t), dz[i]))
+        tris = np.concatenate(tri_parts)
+        owner = np.concatenate(owner_parts)
+        bent = np.concatenate(bent_parts)
         keep = np.abs(_areas(tris[..., :2])) > MIN_AREA
         out_v.append(tris[keep].reshape(-1, 3))
         out_n.append(np.full(int(keep.sum()), 3, np.int64))
@@ -280,14 +295,15 @@ def units(dev, proj, count, flatness):
     order = np.argsort(owner, kind="stable")
     if (order != np.arange(len(order))).any():
         offsets = np.concatenate([[0], np.cumsum(counts)])
-        c = counts[order]
-        idx = np.repeat(offsets[:-1][order] - np.concatenate([[0], np.cumsum(c)[:-1]]), c) + \
-            np.arange(int(c.sum()))
-        verts, counts, owner, bent = verts[idx], c, owner[order], bent[order]
+        ordered = counts[order]
+        idx = np.repeat(offsets[:-1][order] - np.concatenate([[0], np.cumsum(ordered)[:-1]]),
+                        ordered) + np.arange(int(ordered.sum()))
+        verts, counts, owner, bent = verts[idx], ordered, owner[order], bent[order]
     return verts, counts, owner, bent
 
 
-def screen_polygons(verts, counts, owner, width, height):
+def screen_polygons(verts: Floats, counts: Ints, owner: Ints, width: int,
+                    height: int) -> ScreenPolygons:
     """:class:`~scanline.visible.ScreenPolygons` of the flat convex planar polygons,
     each labeled with its source polygon (``face``), planes by Newell's method
     oriented with C > 0."""
@@ -300,7 +316,7 @@ def screen_polygons(verts, counts, owner, width, height):
                           np.ascontiguousarray(planes), int(width), int(height))
 
 
-def padded(sp, rows=None):
+def padded(sp: ScreenPolygons, rows: Optional[Ints] = None) -> Tuple[Floats, Ints]:
     """The polygons ``rows`` (default all) of ``sp`` as (R, K, 3), the last vertex
     repeated, with their counts."""
     rows = np.arange(len(sp)) if rows is None else rows
@@ -310,7 +326,8 @@ def padded(sp, rows=None):
     return sp.vertices[idx], counts
 
 
-def hidden_points(x, y, z, sp, eps):
+def hidden_points(x: Floats, y: Floats, z: Floats, sp: ScreenPolygons,
+                  eps: Union[float, Floats]) -> Bools:
     """Whether each point (x, y, depth) lies behind a polygon of ``sp`` whose
     projection holds it (its plane's depth there less than ``z - eps``): the
     polygons binned in a grid of cells, each point tested against the polygons of
@@ -382,7 +399,7 @@ def hidden_points(x, y, z, sp, eps):
     return hidden
 
 
-def polylines(parts, of, line_of, scale):
+def polylines(parts: Floats, of: Ints, line_of: Ints, scale: float) -> Tuple[Floats, Ints, Ints]:
     """Join line parts into polylines.
 
     ``parts`` (K, 4) are pieces (x0, y0, x1, y1) of segments ``of`` (K,), in
@@ -407,7 +424,8 @@ def polylines(parts, of, line_of, scale):
     return verts, offsets, line_of[of[firsts]]
 
 
-def original_edges(verts, offsets, owner, src, src_count):
+def original_edges(verts: Floats, offsets: Ints, owner: Ints, src: Floats,
+                   src_count: Ints) -> Bools:
     """Whether each edge of each piece (vertex ``i`` to the next of its piece;
     ``verts`` (V, 2), ``offsets`` (P + 1,)) lies on an edge of the piece's source
     polygon ``src[owner[p]]`` ((N, K, 2), ``src_count`` (N,) vertices each): the
@@ -440,7 +458,7 @@ def original_edges(verts, offsets, owner, src, src_count):
     return on
 
 
-def depth_along(parts, of, segments, depth):
+def depth_along(parts: Floats, of: Ints, segments: Floats, depth: Floats) -> Floats:
     """The depths (K, 2) of the ends of ``parts`` (K, 4) of ``segments`` (depth linear
     along each segment on the screen: a projective map keeps lines straight)."""
     s = segments[of]

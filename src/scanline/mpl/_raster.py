@@ -5,8 +5,13 @@ image placed in the axes; lines and markers tested against the depth buffer at
 image precision and drawn as vector artists over it."""
 
 import math
+from typing import TYPE_CHECKING, Callable, List, Optional, Tuple
 
 import numpy as np
+from matplotlib.backend_bases import RendererBase
+from matplotlib.collections import Collection, LineCollection
+from matplotlib.transforms import BboxBase
+from numpy.typing import NDArray
 from PIL import Image
 
 from .. import draw as sl_draw
@@ -14,6 +19,17 @@ from ..depthbuffer import DepthBuffer
 from ..framebuffer import FrameBuffer
 from . import _geometry as g
 from . import _scene
+from ..screen import ScreenPolygons
+from ._geometry import Bools, Floats, Ints
+from ._scene import Numbers, Scene
+
+if TYPE_CHECKING:
+    from mpl_toolkits.mplot3d import Axes3D
+
+    from . import Occlusion
+
+#: ``hide(x, y, depth)``: whether each device point is hidden.
+_Hide = Callable[[Floats, Floats, Floats], Bools]
 
 #: Depth by which a line or a marker may lie behind the depth buffer and still be
 #: seen (depths run 0 .. 1 over the scene), besides the 3 x 3 pixels' farthest
@@ -21,7 +37,7 @@ from . import _scene
 EPS = 1e-6
 
 
-def _fan(sp, rows):
+def _fan(sp: ScreenPolygons, rows: Ints) -> Tuple[Floats, Ints]:
     """Triangles (T, 3, 3) of the convex polygons ``rows`` of ``sp``, fanned from
     their first vertex, and the polygon of each."""
     poly, counts = g.padded(sp, rows)
@@ -38,13 +54,13 @@ class Frame:
     """The image's pixel grid: ``samples`` x ``samples`` device pixels per image pixel,
     image pixel (0, 0) at display (x0, y0) / ``mag``."""
 
-    def __init__(self, bbox, mag, samples):
+    def __init__(self, bbox: BboxBase, mag: float, samples: int) -> None:
         self.mag, self.s = mag, samples
         self.x0, self.y0 = math.floor(bbox.x0 * mag), math.floor(bbox.y0 * mag)
         self.w = max(1, math.ceil(bbox.x1 * mag) - self.x0)
         self.h = max(1, math.ceil(bbox.y1 * mag) - self.y0)
 
-    def device(self, xy):
+    def device(self, xy: Floats) -> Floats:
         """Display x, y (..., 2) as device coordinates (pixel centers at integers)."""
         out = np.empty_like(xy)
         out[..., 0] = (xy[..., 0] * self.mag - self.x0) * self.s - 0.5
@@ -52,7 +68,8 @@ class Frame:
         return out
 
 
-def _paint(frame, sp, rows, face, depth):
+def _paint(frame: Frame, sp: ScreenPolygons, rows: Ints, face: Floats,
+           depth: DepthBuffer) -> NDArray[np.uint8]:
     """Draw the polygons ``rows`` with a depth test: the RGBA frame buffer's pixels
     (straight alpha, uint8, the top row first)."""
     W, H = frame.w * frame.s, frame.h * frame.s
@@ -68,7 +85,7 @@ def _paint(frame, sp, rows, face, depth):
     return fb.to_array()
 
 
-def _resolve(rgba, s):
+def _resolve(rgba: NDArray[np.uint8], s: int) -> NDArray[np.uint8]:
     """The mean of ``s`` x ``s`` blocks of straight-alpha uint8 RGBA, colors weighted
     by alpha (Pillow's box reduction of the premultiplied image, "RGBa")."""
     if s == 1:
@@ -77,7 +94,7 @@ def _resolve(rgba, s):
     return np.asarray(image.convert("RGBa").reduce(s).convert("RGBA"))
 
 
-def _over(front, back):
+def _over(front: NDArray[np.uint8], back: NDArray[np.uint8]) -> NDArray[np.uint8]:
     """Straight-alpha uint8 ``front`` composited over ``back`` (the nearest veil over
     the opaque surfaces)."""
     f = front.astype(np.float32) / 255
@@ -86,10 +103,11 @@ def _over(front, back):
     a = fa + ba * (1 - fa)
     with np.errstate(invalid="ignore", divide="ignore"):
         rgb = np.where(a > 0, (f[..., :3] * fa + b[..., :3] * ba * (1 - fa)) / a, 0.0)
-    return np.rint(np.concatenate([rgb, a], axis=2) * 255).astype(np.uint8)
+    out: NDArray[np.uint8] = np.rint(np.concatenate([rgb, a], axis=2) * 255).astype(np.uint8)
+    return out
 
 
-def _behind(z, x, y, depth):
+def _behind(z: Floats, x: Floats, y: Floats, depth: Floats) -> Bools:
     """Whether device points lie behind the depth buffer ``z`` at their pixel by more
     than :data:`EPS`, compared with the farthest depth of the pixel's 3 x 3
     neighbourhood (lines on a surface stay seen where rounding or a neighbouring
@@ -112,7 +130,8 @@ def _behind(z, x, y, depth):
     return out
 
 
-def _segment_parts(frame, segments, depth, hide):
+def _segment_parts(frame: Frame, segments: Floats, depth: Floats,
+                   hide: _Hide) -> Tuple[Floats, Ints]:
     """The parts of ``segments`` (display) where ``hide(x, y, z)`` (device) is false,
     sampled at every device pixel along each: ``(parts (K, 4) display, of)``."""
     if not len(segments):
@@ -145,10 +164,12 @@ def _segment_parts(frame, segments, depth, hide):
     return parts, of
 
 
-def draw(renderer, scene, owner, samples, slack):
+def draw(renderer: RendererBase, scene: Scene, owner: "Occlusion", samples: int,
+         slack: float) -> Numbers:
     """Draw the scene by the raster route; returns the numbers for the record."""
     fig = _scene.figure_of(owner)
-    frame = Frame(owner.axes.bbox, renderer.get_image_magnification(), samples)
+    axes: "Axes3D" = owner.axes
+    frame = Frame(axes.bbox, renderer.get_image_magnification(), samples)
     W, H = frame.w * frame.s, frame.h * frame.s
     opaque = scene.opaque
     sp = scene.sp
@@ -164,7 +185,7 @@ def draw(renderer, scene, owner, samples, slack):
         z_veil = np.where(veil_depth.array < z_opaque, veil_depth.array, np.inf)
     im = np.ascontiguousarray(_resolve(image, frame.s)[::-1])   # draw_image: bottom row first
 
-    def clip(artist):
+    def clip(artist: Collection) -> Collection:
         artist.set_figure(fig)
         artist.set_clip_on(owner.get_clip_on())
         artist.set_clip_box(owner.get_clip_box())
@@ -176,7 +197,7 @@ def draw(renderer, scene, owner, samples, slack):
     # polygon outlines in their own edge color (not the face's: those only hide seams)
     stroked = (scene.edge[:, 3] > 0) & (scene.edge_width > 0) & (scene.face[:, 3] > 0) & ~np.all(
         np.abs(scene.edge - scene.face) < 1e-12, axis=1)
-    extra = []
+    extra: List[Tuple[Floats, Floats, Ints]] = []
     if stroked.any():
         rows = np.flatnonzero(stroked)
         k = scene.dev.shape[1]
@@ -192,7 +213,7 @@ def draw(renderer, scene, owner, samples, slack):
         eof = np.broadcast_to(rows[:, None], valid.shape)[valid][ok]
         extra = [(eseg, edep, eof)]
 
-    def hidden_by(zm):
+    def hidden_by(zm: Floats) -> _Hide:
         return lambda x, y, z: _behind(zm, x, y, z)
 
     seen_parts, seen_of = _segment_parts(frame, seg, dep, hidden_by(zmax))
@@ -206,7 +227,8 @@ def draw(renderer, scene, owner, samples, slack):
                                        lambda x, y, z: ~_behind(vmax, x, y, z))
         above, below = (up, seen_of[up_of]), (down, seen_of[down_of])
     scale = max(scene.width, scene.height)
-    under, over = [], []
+    under: List[_scene.Drawing] = []
+    over: List[_scene.Drawing] = []
     if len(below[0]):
         v, o, lines = g.polylines(below[0], below[1], scene.seg_line, scale)
         under += _scene.line_artists(scene, v, o, lines, fig, clip)
@@ -215,7 +237,8 @@ def draw(renderer, scene, owner, samples, slack):
         over.append(_edge_collection(scene, parts, eof[of], clip))
     v, o, lines = g.polylines(above[0], above[1], scene.seg_line, scale)
     over += _scene.line_artists(scene, v, o, lines, fig, clip)
-    seen, veiled = [], []
+    seen: List[Bools] = []
+    veiled: List[Bools] = []
     for pt in scene.points:
         d = pt.device
         xy = frame.device(d[:, :2])
@@ -230,8 +253,8 @@ def draw(renderer, scene, owner, samples, slack):
     for artist in under:
         artist.draw(renderer)
     gc = renderer.new_gc()
-    owner._set_gc_clip(gc)
-    gc.set_clip_rectangle(owner.axes.bbox.frozen())
+    owner._set_gc_clip(gc)  # type: ignore[attr-defined]  # Artist's, absent from its stub
+    gc.set_clip_rectangle(axes.bbox.frozen())
     renderer.draw_image(gc, frame.x0 / frame.mag, frame.y0 / frame.mag, im)
     gc.restore()
     for artist in over:
@@ -240,12 +263,12 @@ def draw(renderer, scene, owner, samples, slack):
             "points hidden": int(sum((~m & ~w).sum() for m, w in zip(seen, veiled)))}
 
 
-def _edge_collection(scene, parts, poly, clip):
+def _edge_collection(scene: Scene, parts: Floats, poly: Ints,
+                     clip: _scene.Clip) -> Collection:
     """The seen parts of polygon outlines, each in its polygon's edge style."""
-    from matplotlib.collections import LineCollection
     from matplotlib.transforms import IdentityTransform
 
-    coll = LineCollection(parts.reshape(-1, 2, 2), colors=scene.edge[poly],
+    coll = LineCollection(list(parts.reshape(-1, 2, 2)), colors=scene.edge[poly],
                           linewidths=scene.edge_width[poly],
                           antialiaseds=scene.antialiased[poly],
                           transform=IdentityTransform())

@@ -4,14 +4,36 @@ and the 2-D matplotlib artists that draw the visible parts of lines and markers.
 """
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any, Callable, List, Optional, Sequence, Tuple, TypedDict, TypeVar, Union
 
 import numpy as np
-from matplotlib.collections import LineCollection, PathCollection
+from matplotlib.artist import Artist
+from matplotlib.collections import Collection, LineCollection, PathCollection
 from matplotlib.lines import Line2D
 from matplotlib.transforms import IdentityTransform
 
+from ..screen import ScreenPolygons
 from . import _geometry as g
 from . import _sources as s
+from ._geometry import Bools, Floats, Ints
+from ._sources import Artist3D, LineStyle
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure, SubFigure
+    from mpl_toolkits.mplot3d import Axes3D
+
+#: The 2-D artists that draw the visible parts.
+Drawing = Union[Line2D, Collection]
+_A = TypeVar("_A", bound=Artist)
+#: What a route's draw did, for :class:`scanline.mpl.Drawn`: both routes count the
+#: markers hidden; the vector route its pieces and the parts of lines hidden, the raster
+#: route its image (width, height) and samples.
+Numbers = TypedDict("Numbers", {"points hidden": int, "segments": int, "pieces": int,
+                                "hidden parts": int, "image": Tuple[int, int],
+                                "samples": int}, total=False)
+#: ``clip(artist)``: the artist set up to draw like the :class:`scanline.mpl.Occlusion`
+#: (its figure and clipping), returned.
+Clip = Callable[[Collection], Collection]
 
 
 #: Vertices within this distance (device units: pixels, or points for vector back
@@ -27,12 +49,12 @@ class LineSource:
     or "edges" (the outlines of polygons that hide nothing, styled per polygon)."""
 
     kind: str
-    artist: object
-    world: list
-    color: np.ndarray = None
-    width: np.ndarray = None
-    antialiased: np.ndarray = None
-    style: list = None
+    artist: Optional[Artist3D]
+    world: List[Floats]
+    color: Floats = field(default_factory=lambda: np.empty((0, 4)))
+    width: Floats = field(default_factory=lambda: np.empty(0))
+    antialiased: Bools = field(default_factory=lambda: np.empty(0, bool))
+    style: List[LineStyle] = field(default_factory=list)
 
 
 @dataclass
@@ -42,13 +64,13 @@ class PointSource:
     (``kind`` "markers")."""
 
     kind: str
-    artist: object
-    world: np.ndarray
-    face: np.ndarray = None
-    edge: np.ndarray = None
-    sizes: np.ndarray = None
-    widths: np.ndarray = None
-    device: np.ndarray = None
+    artist: Artist3D
+    world: Floats
+    face: Floats = field(default_factory=lambda: np.empty((0, 4)))
+    edge: Floats = field(default_factory=lambda: np.empty((0, 4)))
+    sizes: Floats = field(default_factory=lambda: np.empty(0))
+    widths: Floats = field(default_factory=lambda: np.empty(0))
+    device: Floats = field(default_factory=lambda: np.empty((0, 3)))
 
 
 @dataclass
@@ -58,31 +80,32 @@ class Scene:
 
     width: int
     height: int
-    dev: np.ndarray            # (N, K, 3) polygons, padded
-    count: np.ndarray          # (N,)
-    face: np.ndarray           # (N, 4) RGBA
-    edge: np.ndarray           # (N, 4) RGBA
-    edge_width: np.ndarray     # (N,) points
-    antialiased: np.ndarray    # (N,) bool
-    edge_style: list           # (N,) matplotlib dash tuples
-    sp: object                 # ScreenPolygons of the polygons that hide (face alpha > 0)
-    lines: list = field(default_factory=list)
-    segments: np.ndarray = None      # (S, 4) device x0, y0, x1, y1
-    seg_depth: np.ndarray = None     # (S, 2)
-    seg_line: np.ndarray = None      # (S,) global polyline
-    line_source: np.ndarray = None   # (L,) index into lines
-    line_row: np.ndarray = None      # (L,) the polyline's row in its source
-    points: list = field(default_factory=list)
-    bent: np.ndarray = None          # (U,) per unit of sp: depth by which its polygon is bent
-    slack: float = 0.0               # lines count as in front within this depth (see collect)
+    dev: Floats                # (N, K, 3) polygons, padded
+    count: Ints                # (N,)
+    face: Floats               # (N, 4) RGBA
+    edge: Floats               # (N, 4) RGBA
+    edge_width: Floats         # (N,) points
+    antialiased: Bools         # (N,) bool
+    edge_style: List[LineStyle]  # (N,) matplotlib dash tuples
+    sp: ScreenPolygons         # the polygons that hide (face alpha > 0)
+    lines: List[LineSource]
+    segments: Floats           # (S, 4) device x0, y0, x1, y1
+    seg_depth: Floats          # (S, 2)
+    seg_line: Ints             # (S,) global polyline
+    line_source: Ints          # (L,) index into lines
+    line_row: Ints             # (L,) the polyline's row in its source
+    points: List[PointSource]
+    bent: Floats               # (U,) per unit of sp: depth by which its polygon is bent
+    slack: float = 0.0         # lines count as in front within this depth (see collect)
 
     @property
-    def opaque(self):
+    def opaque(self) -> Bools:
         """Whether each unit of ``sp`` hides what is behind it wholly (alpha 1)."""
-        return self.face[self.sp.face, 3] >= 1.0
+        opaque: Bools = self.face[self.sp.face, 3] >= 1.0
+        return opaque
 
 
-def _dash(artist, n):
+def _dash(artist: Artist3D, n: int) -> List[LineStyle]:
     """The line style of each of ``n`` polygons of a collection or a patch."""
     styles = artist.get_linestyle()
     if isinstance(styles, (str, tuple)):
@@ -90,7 +113,8 @@ def _dash(artist, n):
     return [styles[i % len(styles)] for i in range(n)] if len(styles) else [(0, None)] * n
 
 
-def collect(ax, sources, M, width, height, flatness):
+def collect(ax: "Axes3D", sources: Sequence[Tuple[Artist3D, str]], M: Floats, width: int,
+            height: int, flatness: float) -> Scene:
     """Read and project the adopted ``sources`` (visible ones) with the axes' matrix
     ``M``: a :class:`Scene`.
 
@@ -100,7 +124,9 @@ def collect(ax, sources, M, width, height, flatness):
     would be hidden here and there by that amount.  A marker counts as in front of
     a polygon within the polygon's own bend; a line within the bend of nine polygons
     in ten (``slack``: one number for the scene, the test of lines taking one)."""
-    polys, lines, points = [], [], []
+    polys: List[Tuple[Artist3D, s.Polygons]] = []
+    lines: List[LineSource] = []
+    points: List[PointSource] = []
     for artist, kind in sources:
         if not s.shown(artist) or artist.axes is not ax:      # hidden, or removed
             continue
@@ -122,17 +148,17 @@ def collect(ax, sources, M, width, height, flatness):
             if artist.get_marker() not in (None, "None", " ", "") and len(xyz):
                 points.append(PointSource("markers", artist, xyz[s.markevery(artist, len(xyz))]))
         elif kind == "lines":
-            world = s.collection_lines(artist)
+            strands = s.collection_lines(artist)
             if getattr(artist, "_axlim_clip", False):
-                world = [np.where(s.outside_limits(ax, w)[:, None], np.nan, w) for w in world]
-            color, lw, aa, style = s.line_colors(artist, len(world))
-            lines.append(LineSource("lines", artist, world, color, lw, aa, style))
+                strands = [np.where(s.outside_limits(ax, w)[:, None], np.nan, w) for w in strands]
+            color, lw, aa, style = s.line_colors(artist, len(strands))
+            lines.append(LineSource("lines", artist, strands, color, lw, aa, style))
         elif kind == "points":
             xyz, face, edge, sizes, widths = s.points(artist, M)
             if getattr(artist, "_axlim_clip", False):
-                keep = ~s.outside_limits(ax, xyz)
-                xyz, face, edge, sizes, widths = (a[keep] for a in (xyz, face, edge, sizes,
-                                                                    widths))
+                within = ~s.outside_limits(ax, xyz)
+                xyz, face, edge, sizes, widths = (v[within] for v in (xyz, face, edge, sizes,
+                                                                      widths))
             points.append(PointSource("points", artist, xyz, face, edge, sizes, widths))
 
     # polygons, padded to one vertex count
@@ -141,7 +167,8 @@ def collect(ax, sources, M, width, height, flatness):
     world = np.empty((n, k, 3))
     count = np.empty(n, np.int64)
     face, edge = np.empty((n, 4)), np.empty((n, 4))
-    edge_width, aa, edge_style = np.empty(n), np.empty(n, bool), []
+    edge_width, aa = np.empty(n), np.empty(n, bool)
+    edge_style: List[LineStyle] = []
     at = 0
     for artist, p in polys:
         m, kk = len(p), p.xyz.shape[1]
@@ -166,7 +193,7 @@ def collect(ax, sources, M, width, height, flatness):
     line_source = np.repeat(np.arange(len(lines)), [len(src.world) for src in lines])
     line_row = np.concatenate([np.arange(len(src.world)) for src in lines]) if lines else \
         np.empty(0, np.int64)
-    sizes = np.array([len(w) for w in line_world], np.int64)
+    lengths = np.array([len(w) for w in line_world], np.int64)
     lw = np.concatenate(line_world) if line_world else np.empty((0, 3))
     lproj = s.project(ax, M, lw)
     pproj = [s.project(ax, M, pt.world) for pt in points]
@@ -178,7 +205,7 @@ def collect(ax, sources, M, width, height, flatness):
     lo, hi = (float(z.min()), float(z.max())) if len(z) else (0.0, 1.0)
     scale = 1.0 / (hi - lo) if hi > lo else 1.0
 
-    def device(p):
+    def device(p: Floats) -> Floats:
         d = s.to_display(ax, p)
         d[..., 2] = (d[..., 2] - lo) * scale
         return d
@@ -194,7 +221,7 @@ def collect(ax, sources, M, width, height, flatness):
     slack = float(np.percentile(rough, 90)) if len(rough) else 0.0
 
     ldev = device(lproj)
-    ends = np.cumsum(sizes)
+    ends = np.cumsum(lengths)
     seg_a = np.ones(len(ldev), bool)
     seg_a[ends - 1] = False                      # the last point of a polyline starts none
     a = np.flatnonzero(seg_a)
@@ -204,24 +231,27 @@ def collect(ax, sources, M, width, height, flatness):
     segments = np.concatenate([ldev[a, :2], ldev[a + 1, :2]], axis=1) if len(a) else \
         np.empty((0, 4))
     seg_depth = np.stack([ldev[a, 2], ldev[a + 1, 2]], axis=1) if len(a) else np.empty((0, 2))
-    seg_line = np.repeat(np.arange(len(sizes)), sizes)[a] if len(a) else np.empty(0, np.int64)
+    seg_line = np.repeat(np.arange(len(lengths)), lengths)[a] if len(a) else np.empty(0, np.int64)
 
-    for pt, p in zip(points, pproj):
-        pt.device = device(p)
+    for pt, projected in zip(points, pproj):
+        pt.device = device(projected)
     return Scene(int(width), int(height), dev, count, face, edge, edge_width, aa, edge_style,
                  sp, lines, segments, seg_depth, seg_line, line_source, line_row, points,
                  bent, slack)
 
 
-def figure_of(artist):
+def figure_of(artist: Artist) -> Union["Figure", "SubFigure"]:
     """The root figure of ``artist`` (matplotlib >= 3.10 distinguishes subfigures)."""
+    fig: Union["Figure", "SubFigure", None]
     try:
-        return artist.get_figure(root=True)
+        fig = artist.get_figure(root=True)
     except TypeError:                              # matplotlib < 3.10
-        return artist.figure
+        fig = artist.figure
+    assert fig is not None, "an artist being drawn is in a figure"
+    return fig
 
 
-def _like(artist, fig):
+def _like(artist: Artist3D, fig: Union["Figure", "SubFigure"]) -> Line2D:
     """A Line2D drawn in display coordinates with the style of Line3D ``artist``."""
     line = Line2D([], [])
     line.update_from(artist)
@@ -234,12 +264,13 @@ def _like(artist, fig):
     return line
 
 
-def line_artists(scene, verts, offsets, line_of, fig, clip):
+def line_artists(scene: Scene, verts: Floats, offsets: Ints, line_of: Ints,
+                 fig: Union["Figure", "SubFigure"], clip: Clip) -> List[Drawing]:
     """The 2-D artists drawing the joined polylines ``verts`` / ``offsets`` (of the
     scene's polylines ``line_of``): per Line3D a Line2D (its style, the parts
     separated by NaN), per Line3DCollection and per group of outlines a
     LineCollection (per-polyline colors, widths and styles)."""
-    out = []
+    out: List[Drawing] = []
     if not len(line_of):
         return out
     src = scene.line_source[line_of]
@@ -269,11 +300,12 @@ def line_artists(scene, verts, offsets, line_of, fig, clip):
     return out
 
 
-def point_artists(scene, shown_of, fig, clip):
+def point_artists(scene: Scene, shown_of: Sequence[Bools], fig: Union["Figure", "SubFigure"],
+                  clip: Clip) -> List[Drawing]:
     """The 2-D artists drawing the markers kept (``shown_of[i]`` a mask over
     ``scene.points[i]``): a PathCollection like the scatter's, or a Line2D of
     markers only like the line's."""
-    out = []
+    out: List[Drawing] = []
     for pt, keep in zip(scene.points, shown_of):
         if not keep.any():
             continue

@@ -11,18 +11,32 @@ The attributes read are private ones of matplotlib (``_faces``, ``_segments3d``,
 """
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 from matplotlib import colors as mcolors
 from matplotlib.artist import Artist
 from mpl_toolkits.mplot3d import art3d
+from numpy.typing import ArrayLike, DTypeLike, NDArray
+
+from ._geometry import Bools, Floats, Ints
+
+if TYPE_CHECKING:
+    from mpl_toolkits.mplot3d import Axes3D
+
+#: An artist drawn by scanline (one of :data:`KINDS`; mplot3d has no type hints).
+Artist3D = Union[art3d.Poly3DCollection, art3d.Line3DCollection, art3d.Line3D,
+                 art3d.Path3DCollection, art3d.Patch3D]
+#: A line style as matplotlib's artists store it: a name, or (offset, dashes) with
+#: dashes None for a solid line.
+LineStyle = Union[str, Tuple[float, Optional[Sequence[float]]]]
 
 #: The kinds of artist drawn by scanline, by class (subclasses too).
 KINDS = ((art3d.Poly3DCollection, "polygons"), (art3d.Line3DCollection, "lines"),
          (art3d.Line3D, "line"), (art3d.Path3DCollection, "points"), (art3d.Patch3D, "patch"))
 
 
-def kind_of(artist):
+def kind_of(artist: Artist) -> Optional[str]:
     """``"polygons"``, ``"lines"``, ``"line"``, ``"points"``, ``"patch"`` or None (left
     to matplotlib): a Poly3DCollection whose paths carry codes (several subpaths, as
     ``contourf`` makes them) and a PathPatch3D of curves or several subpaths (text)
@@ -38,25 +52,25 @@ def kind_of(artist):
     return None
 
 
-def _simple_codes(codes):
+def _simple_codes(codes: Optional[ArrayLike]) -> bool:
     """Whether path ``codes`` describe one polygon (None, or one MOVETO then LINETOs
     and perhaps CLOSEPOLY)."""
     if codes is None:
         return True
-    codes = np.asarray(codes)
+    a = np.asarray(codes)
     from matplotlib.path import Path
 
-    return bool(len(codes) and codes[0] == Path.MOVETO and np.isin(
-        codes[1:], (Path.LINETO, Path.CLOSEPOLY)).all())
+    return bool(len(a) and a[0] == Path.MOVETO and np.isin(
+        a[1:], (Path.LINETO, Path.CLOSEPOLY)).all())
 
 
-def shown(artist):
+def shown(artist: Artist) -> bool:
     """Whether ``artist`` is visible, by its own flag (``get_visible`` of an adopted
     artist is replaced: see :func:`scanline.mpl.render_axes`)."""
     return Artist.get_visible(artist)
 
 
-def _rgba(values, n):
+def _rgba(values: Any, n: int) -> Optional[Floats]:
     """(n, 4) float RGBA from matplotlib's color array of length 1 or n (0: None)."""
     c = mcolors.to_rgba_array(values) if len(values) else np.empty((0, 4))
     if len(c) == n:
@@ -68,7 +82,7 @@ def _rgba(values, n):
     return np.resize(c, (n, 4))        # matplotlib cycles shorter property lists
 
 
-def _per(values, n, dtype=np.float64):
+def _per(values: ArrayLike, n: int, dtype: DTypeLike = np.float64) -> NDArray[Any]:
     """A per-item property of length 1 or n (cycled as matplotlib does) as n values."""
     a = np.asarray(values, dtype)
     if a.ndim == 0:
@@ -88,18 +102,18 @@ class Polygons:
     antialiasing, and ``same_edge`` (N,) where the edge is drawn in the face's color
     (matplotlib's ``edgecolor="face"`` or equal colors)."""
 
-    xyz: np.ndarray
-    count: np.ndarray
-    face: np.ndarray
-    edge: np.ndarray
-    width: np.ndarray
-    antialiased: np.ndarray
+    xyz: Floats
+    count: Ints
+    face: Floats
+    edge: Floats
+    width: Floats
+    antialiased: Bools
 
-    def __len__(self):
+    def __len__(self) -> int:
         return len(self.count)
 
 
-def _faces_of(coll):
+def _faces_of(coll: "art3d.Poly3DCollection") -> Tuple[Floats, Ints]:
     """(N, K, 3) world vertices and (N,) counts of a Poly3DCollection (matplotlib >= 3.9
     keeps ``_faces`` and ``_invalid_vertices``; earlier ones ``_vec`` and
     ``_segslices``)."""
@@ -133,7 +147,7 @@ def _faces_of(coll):
     return faces, count
 
 
-def polygons(coll):
+def polygons(coll: "art3d.Poly3DCollection") -> Polygons:
     """The polygons of one adopted Poly3DCollection, as matplotlib colors them now."""
     faces, count = _faces_of(coll)
     n = len(count)
@@ -155,7 +169,7 @@ def polygons(coll):
     return Polygons(faces, count, face, edge, width, _per(coll.get_antialiased(), n, bool))
 
 
-def patch(artist):
+def patch(artist: "art3d.Patch3D") -> Polygons:
     """The polygon of an adopted Patch3D (``ax.bar``'s bars, ``pathpatch_2d_to_3d``),
     with its colors (no face where it is not filled)."""
     xyz = np.array([tuple(p) for p in artist._segment3d], np.float64).reshape(-1, 3)
@@ -178,7 +192,7 @@ def patch(artist):
                     np.array([bool(artist.get_antialiased())]))
 
 
-def markevery(line, n):
+def markevery(line: "art3d.Line3D", n: int) -> Ints:
     """The indices of a Line3D's ``n`` points that carry markers (its ``markevery``:
     None, an int, an (int, int) pair, a slice, a list of indices or a mask; the
     fractions of the screen distance matplotlib also takes mark every point)."""
@@ -194,14 +208,15 @@ def markevery(line, n):
     if isinstance(every, slice):
         return idx[every]
     a = np.asarray(every)
+    picked: Ints = idx
     if a.dtype == bool and a.shape == (n,):
-        return idx[a]
-    if a.dtype.kind in "iu" and a.ndim == 1:
-        return idx[a[(a >= -n) & (a < n)]]
-    return idx
+        picked = idx[a]
+    elif a.dtype.kind in "iu" and a.ndim == 1:
+        picked = idx[a[(a >= -n) & (a < n)]]
+    return picked
 
 
-def line_data(line):
+def line_data(line: "art3d.Line3D") -> Floats:
     """(V, 3) world points of a Line3D (NaN where masked)."""
     xs, ys, zs = (np.ma.filled(np.ma.asarray(a, np.float64).ravel(), np.nan)
                   for a in line.get_data_3d())
@@ -211,18 +226,19 @@ def line_data(line):
     return np.stack([xs[:n], ys[:n], zs[:n]], axis=1)
 
 
-def collection_lines(coll):
+def collection_lines(coll: "art3d.Line3DCollection") -> List[Floats]:
     """The polylines of a Line3DCollection: a list of (N_i, 3) world arrays (NaN where
     masked)."""
     segs = coll._segments3d
-    out = []
+    out: List[Floats] = []
     for s in segs:
         a = np.ma.filled(np.ma.asarray(s, np.float64), np.nan).reshape(-1, 3)
         out.append(a)
     return out
 
 
-def line_colors(coll, n):
+def line_colors(coll: "art3d.Line3DCollection", n: int
+                ) -> Tuple[Floats, Floats, Bools, List[LineStyle]]:
     """Per-line RGBA, widths, antialiasing and line styles of a LineCollection."""
     if getattr(coll, "_A", None) is not None:
         coll.update_scalarmappable()
@@ -234,7 +250,8 @@ def line_colors(coll, n):
     return color, _per(coll.get_linewidth(), n), _per(coll.get_antialiased(), n, bool), styles
 
 
-def points(coll, M):
+def points(coll: "art3d.Path3DCollection", M: Floats
+           ) -> Tuple[Floats, Floats, Floats, Floats, Floats]:
     """A Path3DCollection's markers: world offsets (N, 3) in matplotlib's drawing
     order (far to near) and, in that order, face and edge RGBA (depth-shaded as
     matplotlib shades them), sizes and line widths.  Runs the collection's own
@@ -258,7 +275,7 @@ def points(coll, M):
     return xyz[order], face, edge, sizes, widths
 
 
-def project(ax, M, xyz):
+def project(ax: "Axes3D", M: ArrayLike, xyz: ArrayLike) -> Floats:
     """Project world points ``xyz`` (..., 3) by the axes' scales and matrix ``M``:
     (..., 3) of matplotlib's projected x, y (the axes' 2-D data coordinates) and
     depth (greater: farther; matplotlib paints the greatest first)."""
@@ -277,11 +294,11 @@ def project(ax, M, xyz):
     M = np.asarray(M, np.float64)
     with np.errstate(invalid="ignore", divide="ignore"):
         h = flat @ M[:, :3].T + M[:, 3]
-        p = h[:, :3] / h[:, 3:4]
+        p: Floats = h[:, :3] / h[:, 3:4]
     return p.reshape(xyz.shape)
 
 
-def to_display(ax, p):
+def to_display(ax: "Axes3D", p: Floats) -> Floats:
     """Display coordinates (pixels of the canvas, y up; points for vector backends) of
     projected points ``p`` (..., 3): x, y through ``ax.transData``, depth kept."""
     flat = p.reshape(-1, 3)
@@ -299,11 +316,12 @@ def to_display(ax, p):
     return out.reshape(p.shape)
 
 
-def outside_limits(ax, xyz):
+def outside_limits(ax: "Axes3D", xyz: Floats) -> Bools:
     """Whether each world point (..., 3) lies outside the axes' view limits (for the
     artists made with ``axlim_clip=True``)."""
     x0, x1 = sorted(ax.get_xlim())
     y0, y1 = sorted(ax.get_ylim())
     z0, z1 = sorted(ax.get_zlim())
     x, y, z = xyz[..., 0], xyz[..., 1], xyz[..., 2]
-    return (x < x0) | (x > x1) | (y < y0) | (y > y1) | (z < z0) | (z > z1)
+    outside: Bools = (x < x0) | (x > x1) | (y < y0) | (y > y1) | (z < z0) | (z > z1)
+    return outside

@@ -3,14 +3,25 @@ depth-sorting method and drawn as one 2-D path collection in that order; lines c
 where surfaces hide them (visible-line detection); markers hidden by a surface left
 out.  Everything stays a path: SVG and PDF output stay vector."""
 
+from typing import TYPE_CHECKING, Any, Dict, List, Optional, Sequence, Tuple, Union
+
 import numpy as np
-from matplotlib.collections import PathCollection
+from numpy.typing import NDArray
+from matplotlib.backend_bases import RendererBase
+from matplotlib.collections import Collection, PathCollection
 from matplotlib.path import Path
 from matplotlib.transforms import IdentityTransform
 
 from .. import visible
+from ..screen import ScreenPolygons
 from . import _geometry as g
 from . import _scene
+from ._geometry import Bools, Floats, Ints
+from ._scene import Scene
+from ._sources import LineStyle
+
+if TYPE_CHECKING:
+    from . import Occlusion
 
 #: Depth (0 .. 1 over the scene) by which a marker may lie behind a polygon's plane and
 #: still count as in front of it (besides the polygon's bend).
@@ -22,10 +33,10 @@ TILE_WORK = 4_000_000
 _MOVETO, _LINETO = Path.MOVETO, Path.LINETO
 
 
-def _closed_paths(verts, offsets, rows):
+def _closed_paths(verts: Floats, offsets: Ints, rows: Ints) -> List[Path]:
     """Closed matplotlib paths of the flat polygons ``rows`` (x, y of ``verts``)."""
     counts = np.diff(offsets)[rows]
-    out = [None] * len(rows)
+    out: Dict[int, Path] = {}
     make = getattr(Path, "_fast_from_codes_and_verts", None)
     for k in np.unique(counts):
         sel = np.flatnonzero(counts == k)
@@ -39,17 +50,18 @@ def _closed_paths(verts, offsets, rows):
             made = [make(p, template.codes, internals_from=template) for p in xy]
         for i, p in zip(sel.tolist(), made):
             out[i] = p
-    return out
+    return [out[i] for i in range(len(rows))]
 
 
-def _edge_path(xy, on):
+def _edge_path(xy: Floats, on: Bools) -> Path:
     """The open path of the runs of ``on`` edges of the polygon ``xy`` (K, 2) (edge i
     from vertex i to i + 1)."""
     k = len(xy)
     if on.all():
         return Path(np.concatenate([xy, xy[:1]]), closed=True)
     start = int(np.flatnonzero(~on)[0]) + 1        # begin after an edge that is off
-    verts, codes = [], []
+    verts: List[Floats] = []
+    codes: List[np.uint8] = []
     prev = False
     for j in range(start, start + k):
         i = j % k
@@ -63,7 +75,7 @@ def _edge_path(xy, on):
     return Path(np.array(verts), np.array(codes, np.uint8))
 
 
-def pieces_collection(scene, pieces):
+def pieces_collection(scene: Scene, pieces: ScreenPolygons) -> PathCollection:
     """One PathCollection drawing ``pieces`` in order: each piece filled in its source
     polygon's face color, stroked when matplotlib strokes its polygon in the face's
     color (the stroke then only covers seams), or followed by a path of the parts
@@ -82,12 +94,14 @@ def pieces_collection(scene, pieces):
     edgecolors = np.where(same[:, None], face, 0.0)
     widths = np.where(same, width, 0.0)
     aa = scene.antialiased[src]
-    styles = [scene.edge_style[i] for i in src] if len(apart) else None
+    styles: Optional[List[LineStyle]] = None
     if len(apart):
+        styles = [scene.edge_style[i] for i in src]
         on = g.original_edges(pieces.vertices[:, :2], pieces.offsets, src,
                               scene.dev[..., :2], scene.count)
         at = pieces.offsets
-        where, extra = [], []
+        kept: List[int] = []
+        extra: List[Path] = []
         for p in apart.tolist():
             flags = on[at[p]:at[p + 1]]
             if flags.all():
@@ -96,8 +110,8 @@ def pieces_collection(scene, pieces):
                 extra.append(_edge_path(pieces.vertices[at[p]:at[p + 1], :2], flags))
             else:
                 continue
-            where.append(p)
-        where = np.array(where, np.int64)
+            kept.append(p)
+        where = np.array(kept, np.int64)
         # each edge path right after its piece: fills at 2 i, edges at 2 p + 1
         order = np.argsort(np.concatenate([2 * np.arange(n), 2 * where + 1]), kind="stable")
         every = fills + extra
@@ -112,14 +126,17 @@ def pieces_collection(scene, pieces):
     aa = aa[0] if len(aa) and (aa == aa[0]).all() else aa
     coll = PathCollection(paths, facecolors=facecolors, edgecolors=edgecolors,
                           linewidths=widths, antialiaseds=aa, transform=IdentityTransform())
+    # matplotlib's stub omits the (offset, None) of a solid line, which its own
+    # collections store and return (get_linestyle)
     if styles is not None and len({str(s) for s in styles}) > 1:
-        coll.set_linestyle(styles)
+        coll.set_linestyle(styles)  # type: ignore[arg-type]
     elif styles:
-        coll.set_linestyle(styles[0])
+        coll.set_linestyle(styles[0])  # type: ignore[arg-type]
     return coll
 
 
-def hidden_lines(segments, depth, sp):
+def hidden_lines(segments: Floats, depth: Floats, sp: ScreenPolygons
+                 ) -> Tuple[Floats, Ints, Floats, Ints]:
     """:func:`scanline.visible.hidden_lines` of ``segments`` against ``sp``, on tiles
     of segments when they and the polygons are many (each tile against the polygons
     overlapping it): ``(visible, visible_of, hidden, hidden_of)`` in segment order."""
@@ -141,7 +158,7 @@ def hidden_lines(segments, depth, sp):
     cell = np.maximum((b - a) / tiles, 1e-9)
     ij = np.minimum(((mid - a) / cell).astype(np.int64), tiles - 1)
     key = ij[:, 1] * tiles + ij[:, 0]
-    out = [[], [], [], []]
+    out: List[List[NDArray[Any]]] = [[], [], [], []]
     for t in np.unique(key):
         sel = np.flatnonzero(key == t)
         x0, y0 = lo[sel].min(axis=0)
@@ -166,7 +183,7 @@ def hidden_lines(segments, depth, sp):
     return vis[o], vis_of[o], hid[h], hid_of[h]
 
 
-def margins(scene, rows):
+def margins(scene: Scene, rows: Ints) -> Floats:
     """How far behind each polygon ``rows`` of the scene a line or a marker may lie
     and still count as in front of it: its polygon's bend (a surface drawn on
     planes or triangles is uncertain by that much) plus the depth the polygon's
@@ -180,7 +197,7 @@ def margins(scene, rows):
     return EPS + scene.bent[rows] + 0.5 * slope
 
 
-def pushed(scene, rows):
+def pushed(scene: Scene, rows: Ints) -> ScreenPolygons:
     """The polygons ``rows`` of the scene, each moved back (away from the viewer) by
     its :func:`margins`: what the hidden-line test compares lines with."""
     sp = scene.sp.subset(rows)
@@ -193,7 +210,7 @@ def pushed(scene, rows):
     return visible.ScreenPolygons(verts, sp.offsets, sp.face, planes, sp.width, sp.height)
 
 
-def line_parts(scene):
+def line_parts(scene: Scene) -> Tuple[Floats, Ints, Floats, Ints, int]:
     """The parts of the scene's segments in front of every opaque polygon, as
     ``(above, above_of, below, below_of, hidden_count)``: ``below`` those of them behind a
     translucent polygon (drawn before the polygons, so that the polygons veil them),
@@ -208,7 +225,7 @@ def line_parts(scene):
     return above, vis_of[a_of], below, vis_of[b_of], len(hid)
 
 
-def point_masks(scene):
+def point_masks(scene: Scene) -> Tuple[List[Bools], List[Bools]]:
     """For each marker source, the markers seen (not behind an opaque polygon, by more
     than its :func:`margins`) and of them those behind a translucent one."""
     opaque = scene.opaque
@@ -216,7 +233,8 @@ def point_masks(scene):
     sp_o = scene.sp.subset(rows_o)
     rows_t = np.flatnonzero(~opaque)
     sp_t = scene.sp.subset(rows_t) if len(rows_t) else None
-    seen, veiled = [], []
+    seen: List[Bools] = []
+    veiled: List[Bools] = []
     for pt in scene.points:
         d = pt.device
         hid = g.hidden_points(d[:, 0], d[:, 1], d[:, 2], sp_o, margins(scene, rows_o))
@@ -231,12 +249,13 @@ def point_masks(scene):
     return seen, veiled
 
 
-def draw(renderer, scene, owner, max_pieces=None):
+def draw(renderer: RendererBase, scene: Scene, owner: "Occlusion",
+         max_pieces: Optional[int] = None) -> _scene.Numbers:
     """Draw the scene by the vector route; returns the numbers for the record."""
     fig = _scene.figure_of(owner)
     pieces = visible.depth_sort(scene.sp, max_pieces=max_pieces)
 
-    def clip(artist):
+    def clip(artist: Collection) -> Collection:
         artist.set_figure(fig)
         artist.set_clip_on(owner.get_clip_on())
         artist.set_clip_box(owner.get_clip_box())
@@ -249,7 +268,7 @@ def draw(renderer, scene, owner, max_pieces=None):
         coll.set_gid(f"{owner.get_gid()}-pieces")
     above, a_of, below, b_of, hidden = line_parts(scene)
     scale = max(scene.width, scene.height)
-    under = []
+    under: List[_scene.Drawing] = []
     if len(below):
         v, o, lines = g.polylines(below, b_of, scene.seg_line, scale)
         under += _scene.line_artists(scene, v, o, lines, fig, clip)

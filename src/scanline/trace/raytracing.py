@@ -5,7 +5,7 @@ are the log of the tracer kernel itself (:mod:`scanline._kernels.raytrace`), run
 Python on the one sample."""
 
 import math
-from typing import TYPE_CHECKING, Any, Dict, List, Optional, Sequence, Tuple, Union, cast
+from typing import TYPE_CHECKING, Any, Dict, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 from numpy.typing import NDArray
@@ -20,7 +20,6 @@ if TYPE_CHECKING:
     from ..lighting.material import Material
     from ..mesh.mesh import Mesh
     from ..projection.camera import Camera
-    from ..raytrace.bvh import BVH
     from ..raytrace.render import Traced
     from ..screen import ScreenScene
 
@@ -171,7 +170,7 @@ def ray_tracing(x: int = 20, y: int = 11,
     seen = int(layer.ids[y, x])
     first = int(screen.facet[seen]) if seen >= 0 else -1
     light = background_linear(fb, gamma)
-    prepared = traced(screen, shading, light, options.max_depth, options.seed)
+    prepared = traced(screen, shading, light, max_depth, seed)     # options validated them
     origins, directions = primary_rays(screen, np.array([x]), np.array([y]))
     px, py = np.array([x]), np.array([y])
     local = primary_light(screen, layer, py, px, shading, prepared, light, twin=True) \
@@ -248,7 +247,7 @@ def _crossings(prepared: "Traced", screen: "ScreenScene", origin: NDArray[np.flo
     from .._kernels.bvh import inside, moller_trumbore
 
     test, hit = python(moller_trumbore), python(inside)
-    tree = cast("BVH", prepared.tree)      # Traced declares its tree an object
+    tree = prepared.tree
     table = tree.table
     out: List[Tuple[float, int]] = []
     with np.errstate(all="ignore"):

@@ -47,6 +47,16 @@ def _exported(module: object) -> list[str]:
     return list(names)
 
 
+def _defined_here(value: object) -> bool:
+    """Whether a class attribute's function is scanline's own: a base class from
+    elsewhere may define methods in its subclasses (matplotlib's ``Artist`` gives each
+    subclass a ``set`` listing its properties), which that library documents."""
+    func = getattr(value, "__func__", value)
+    if isinstance(value, property):
+        func = value.fget
+    return getattr(func, "__module__", "scanline").startswith("scanline")
+
+
 def _members(module_name: str) -> Iterator[tuple[str, object, str]]:
     """(dotted name, object, kind) for each public name the module exports: the functions
     and classes of scanline it offers (``sl.draw.line`` is ``scanline.draw.line`` wherever
@@ -63,7 +73,7 @@ def _members(module_name: str) -> Iterator[tuple[str, object, str]]:
         if inspect.isclass(obj):
             yield f"{module_name}.{name}", obj, "class"
             for attr, value in vars(obj).items():
-                if attr.startswith("_"):
+                if attr.startswith("_") or not _defined_here(value):
                     continue
                 if isinstance(value, property):
                     yield f"{module_name}.{name}.{attr}", value, "property"

@@ -73,7 +73,7 @@ METHODS = ("vector", "raster")
 class Drawn:
     """What the last draw of an :class:`Occlusion` did.
 
-    Attributes
+    Parameters
     ----------
     method : str
         The route taken ("vector", or "raster", also when the vector route gave up).
@@ -89,13 +89,37 @@ class Drawn:
     hidden_parts : int
         Parts of segments found hidden (vector route).
     points : int
-        Markers tested; ``points_hidden`` of them were hidden.
+        Markers tested.
+    points_hidden : int
+        Those of the ``points`` found hidden.
     image : tuple or None
         The raster route's image size in pixels (width, height).
     fell_back : bool
         The depth sort could not order the polygons in bounded work (a scene of very
         many intersecting polygons) and the raster route drew them instead (with a
         warning).
+
+    Examples
+    --------
+    Two planes through the x axis, tilted opposite ways (z = x/2 and z = -x/2), cross
+    along it: each hides the other on one side, so the depth sort splits one of them
+    there and draws 3 pieces for the 2 polygons; no line or marker was drawn:
+
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt, numpy as np
+    >>> import scanline.mpl
+    >>> fig = plt.figure(figsize=(3, 3))
+    >>> ax = fig.add_subplot(projection="3d")
+    >>> X, Y = np.meshgrid([-1, 1], [-1, 1])
+    >>> _ = ax.plot_surface(X, Y, 0.5 * X)
+    >>> _ = ax.plot_surface(X, Y, -0.5 * X)
+    >>> occlusion = scanline.mpl.render_axes(ax)
+    >>> fig.canvas.draw()
+    >>> d = occlusion.last
+    >>> d.method, d.polygons, d.units, d.pieces, d.segments, d.points, d.fell_back
+    ('vector', 2, 2, 3, 0, 0, False)
+    >>> plt.close(fig)
     """
 
     method: str
@@ -126,6 +150,34 @@ class Occlusion(Artist):
     changes (``view_init``, the mouse, new limits) the next draw is right again.
     Its attributes ``method``, ``flatness``, ``samples`` and ``max_pieces`` may be
     changed between draws; :attr:`last` says what the last draw did.
+
+    Parameters
+    ----------
+    ax : mpl_toolkits.mplot3d.Axes3D
+        The axes whose artists it draws.
+    sources : iterable of (artist, str)
+        The adopted 3-D artists, each with its kind ("polygons", "lines", "line",
+        "points" or "patch"), as :func:`render_axes` collects them.
+    method, flatness, samples, max_pieces
+        As :func:`render_axes` takes them (checked at each draw).
+
+    Examples
+    --------
+    Made by :func:`render_axes`, which adopts the axes' 3-D artists; matplotlib's
+    own drawing of them is switched off until :meth:`remove`:
+
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt, numpy as np
+    >>> import scanline.mpl
+    >>> fig = plt.figure(figsize=(3, 3))
+    >>> ax = fig.add_subplot(projection="3d")
+    >>> X, Y = np.meshgrid([-1, 1], [-1, 1])
+    >>> surface = ax.plot_surface(X, Y, 0.5 * X)
+    >>> occlusion = scanline.mpl.render_axes(ax, method="raster")
+    >>> [kind for _, kind in occlusion.sources], surface.get_visible()
+    (['polygons'], False)
+    >>> plt.close(fig)
     """
 
     def __init__(self, ax: "Axes3D", sources: Iterable[Tuple[Artist3D, str]],
@@ -155,13 +207,57 @@ class Occlusion(Artist):
         self.sources = []
 
     def remove(self) -> None:
-        """Give the artists back to matplotlib (its own drawing) and leave the axes."""
+        """Give the artists back to matplotlib (its own drawing) and leave the axes.
+
+        Examples
+        --------
+        >>> import matplotlib
+        >>> matplotlib.use("Agg")
+        >>> import matplotlib.pyplot as plt, numpy as np
+        >>> import scanline.mpl
+        >>> fig = plt.figure(figsize=(3, 3))
+        >>> ax = fig.add_subplot(projection="3d")
+        >>> X, Y = np.meshgrid([-1, 1], [-1, 1])
+        >>> surface = ax.plot_surface(X, Y, 0.5 * X)
+        >>> occlusion = scanline.mpl.render_axes(ax)
+        >>> occlusion.remove()
+        >>> surface.get_visible(), occlusion in ax.get_children()
+        (True, False)
+        >>> plt.close(fig)
+        """
         self._release()
         super().remove()
 
     def draw(self, renderer: RendererBase) -> None:
         """Draw the adopted artists with the visibility computed for this draw's view
-        (and record what was done in :attr:`last`)."""
+        (and record what was done in :attr:`last`).  matplotlib calls it when the figure
+        is drawn.
+
+        Parameters
+        ----------
+        renderer : matplotlib.backend_bases.RendererBase
+            The figure's renderer (Agg, SVG, PDF ...).
+
+        Examples
+        --------
+        The raster route draws the polygons as one z-buffer image the size of the axes
+        (a 3 x 3 inch figure at 100 dpi is 300 x 300 pixels; the axes take part of it):
+
+        >>> import matplotlib
+        >>> matplotlib.use("Agg")
+        >>> import matplotlib.pyplot as plt, numpy as np
+        >>> import scanline.mpl
+        >>> fig = plt.figure(figsize=(3, 3), dpi=100)
+        >>> ax = fig.add_subplot(projection="3d")
+        >>> X, Y = np.meshgrid([-1, 1], [-1, 1])
+        >>> _ = ax.plot_surface(X, Y, 0.5 * X)
+        >>> occlusion = scanline.mpl.render_axes(ax, method="raster")
+        >>> fig.canvas.draw()                      # calls occlusion.draw(renderer)
+        >>> w, h = occlusion.last.image
+        >>> occlusion.last.method, 0 < w <= 300 and 0 < h <= 300
+        ('raster', True)
+        >>> plt.close(fig)
+        """
         if not self.get_visible():
             return
         method = v.choice("method", self.method, METHODS)

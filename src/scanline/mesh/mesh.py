@@ -10,7 +10,7 @@ faces have n vertices, else as a list.
 
 import os
 from collections.abc import Iterable, Sized
-from typing import TYPE_CHECKING, List, Literal, Optional, Tuple, TypedDict, TypeVar, Union
+from typing import TYPE_CHECKING, List, Literal, Optional, Protocol, Tuple, TypedDict, TypeVar, Union
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -22,7 +22,6 @@ from ..errors import ArgumentTypeError, ArgumentValueError
 from ..transform3d.arrays import finite, real_array
 
 if TYPE_CHECKING:
-    from ..lighting.material import Material
     from .materials import MaterialRecord
     from .tables import PolygonTables
 
@@ -43,6 +42,23 @@ class Flat:
         self.sizes = np.ascontiguousarray(sizes, np.int64).reshape(-1)
 
 
+class SurfaceMaterial(Protocol):
+    """What a mesh's material offers: the reflection coefficients and color of Hearn
+    & Baker section 14-2 (:class:`scanline.lighting.Material` has them; geometry names no
+    lighting class, docs/architecture.md)."""
+
+    @property
+    def ka(self) -> float: ...
+    @property
+    def kd(self) -> float: ...
+    @property
+    def ks(self) -> float: ...
+    @property
+    def shininess(self) -> float: ...
+    @property
+    def color(self) -> NDArray[np.float64]: ...
+
+
 class MeshOptions(TypedDict, total=False):
     """The keywords of :class:`Mesh` that the generators (:func:`~scanline.mesh.sphere`,
     :func:`~scanline.mesh.sweep` ...) pass on to it."""
@@ -50,7 +66,7 @@ class MeshOptions(TypedDict, total=False):
     color_on: Optional[Literal["face", "vertex"]]
     name: Optional[str]
     uv: Optional[ArrayLike]
-    material: Union["Material", "MaterialRecord", None]
+    material: Union["SurfaceMaterial", "MaterialRecord", None]
 
 
 #: Bytes of memory a mesh takes per vertex, per face and per face index while it
@@ -249,7 +265,7 @@ class Mesh:
     colors: Optional[NDArray[np.uint8]]
     color_on: Optional[Literal["face", "vertex"]]
     uv: Optional[NDArray[np.float64]]
-    material: Union["Material", "MaterialRecord", None]
+    material: Union["SurfaceMaterial", "MaterialRecord", None]
     name: Optional[str]
     _edges: Optional[NDArray[np.int64]]
 
@@ -257,7 +273,7 @@ class Mesh:
                  colors: Union[Color, ArrayLike, None] = None, normals: Optional[ArrayLike] = None,
                  color_on: Optional[Literal["face", "vertex"]] = None, name: Optional[str] = None,
                  uv: Optional[ArrayLike] = None,
-                 material: Union["Material", "MaterialRecord", None] = None) -> None:
+                 material: Union["SurfaceMaterial", "MaterialRecord", None] = None) -> None:
         verts = real_array("vertices", vertices, "(V, 3)")
         if verts.ndim == 1 and verts.size == 0:
             verts = verts.reshape(0, 3)

@@ -74,11 +74,13 @@ def _materials(materials: Any, meshes: Sequence["Mesh"]) -> tuple["Material", ..
         default = Material()
         own = tuple(m.material if m.material is not None else default for m in meshes)
         mats = tuple(_from_record(m) if isinstance(m, MaterialRecord) else m for m in own)
+        checked = []
         for i, m in enumerate(mats):
             if not isinstance(m, Material):
                 raise ArgumentTypeError(f"meshes[{i}].material must be a sl.lighting.Material, "
                                         f"got {v._show(m)}")
-        return mats
+            checked.append(m)
+        return tuple(checked)
     if isinstance(materials, Material):
         return (materials,) * n
     if isinstance(materials, (str, bytes)) or not hasattr(materials, "__iter__"):

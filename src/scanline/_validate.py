@@ -196,6 +196,8 @@ def coordinate_array(name: str, value: object, columns: int,
                      radius_columns: Iterable[int] = (), guard: bool = False,
                      far: bool = False) -> NDArray[Any]:
     """Convert an (N, columns) array of primitives to int64, rounding to pixels.
+    Integers in range are only checked, and an int64 C-contiguous array of them is
+    returned itself (the callers only read it).
 
     ``radius_columns`` lists the columns that hold radii, which must be >= 0.
     With ``guard`` (segments: ``columns`` = 4), any finite coordinate is taken: rows
@@ -206,6 +208,14 @@ def coordinate_array(name: str, value: object, columns: int,
     """
     try:
         a = np.asarray(value)
+        if (a.dtype.kind in "iu" and not far and a.ndim == 2 and a.shape[1] == columns
+                and (a.size == 0 or (-COORD_LIMIT <= int(a.min()) and int(a.max()) <= COORD_LIMIT))):
+            # integers in range (the common case of a large batch): two passes and no
+            # conversion; an int64 C-contiguous array comes back as is, not copied
+            # (its callers only read it)
+            for c in radius_columns:
+                _radii(name, a, c)
+            return np.ascontiguousarray(a, np.int64)
         if a.dtype.kind in "iu" or a.dtype == object:
             a = a.astype(np.float64)
     except OverflowError:
@@ -248,16 +258,21 @@ def coordinate_array(name: str, value: object, columns: int,
                 f"range [-{COORD_LIMIT}, {COORD_LIMIT}]"
             )
     for c in radius_columns:
-        if a.size and (a[:, c] < 0).any():
-            row = int(np.argwhere(a[:, c] < 0)[0][0])
-            raise ArgumentValueError(
-                f"{name} column {c} holds radii, which must be >= 0; row {row} is {a[row].tolist()}"
-            )
+        _radii(name, a, c)
     if far:
         return np.ascontiguousarray(a, np.float64)
     half: NDArray[np.float64] = np.add(a, 0.5)
     np.floor(half, out=half)
     return half.astype(np.int64, order="C")
+
+
+def _radii(name: str, a: NDArray[Any], c: int) -> None:
+    """Refuse a negative value in column ``c`` (radii) of the (N, k) array ``a``."""
+    if a.size and (a[:, c] < 0).any():
+        row = int(np.argwhere(a[:, c] < 0)[0][0])
+        raise ArgumentValueError(
+            f"{name} column {c} holds radii, which must be >= 0; row {row} is {a[row].tolist()}"
+        )
 
 
 #: Largest value an int64 holds.

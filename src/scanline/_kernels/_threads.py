@@ -147,14 +147,15 @@ def call_in_bands(kernel, work, *args):
     return None
 
 
-def call_in_chunks(kernel, work, n, args_of):
+def call_in_chunks(kernel, work, n, args_of, parts=None):
     """``kernel(*args_of(lo, hi))`` for consecutive chunks [lo, hi) of range(n), one
     call per thread (one chunk when the ``work`` is at most
-    :data:`~scanline._kernels._jit.TWIN_WORK` units, as in :func:`call_in_bands`).
+    :data:`~scanline._kernels._jit.TWIN_WORK` units, as in :func:`call_in_bands`),
+    or ``parts`` chunks when given (a second pass over the chunks of a first).
     Returns ``[(lo, result), ...]`` in the order of the chunks: a kernel that writes
     its chunk's results to the front of its output slices leaves them for the caller
     to join."""
-    step = min(threads() if work > TWIN_WORK else 1, max(n, 1))
+    step = parts or min(threads() if work > TWIN_WORK else 1, max(n, 1))
     bounds = [n * i // step for i in range(step + 1)]
     results = _together([(kernel, work / step) + tuple(args_of(bounds[i], bounds[i + 1]))
                          for i in range(step)])

@@ -9,6 +9,8 @@ clipping harmless.
 
 import math
 
+import numpy as np
+
 from ._jit import helper, inline, kernel
 from .raster import put, store
 from .spans import strip
@@ -54,7 +56,7 @@ def step_range(u0, su, du, w0, sw, dw, umax, wmax):
     return lo, hi
 
 
-@helper
+@inline
 def bresenham_setup(x0, y0, x1, y1):
     """Name the axes as the notes' algorithm needs them.
 
@@ -144,39 +146,64 @@ def bresenham_checked(buf, layout, width, height, swap, u0, w0, sw, lo, hi, j, p
 
 
 @inline
-def bresenham_flat(buf, width, height, swap, u0, w0, sw, lo, hi, j, p, w_last,
-                   two_dw, two_dw_minus_two_du, color):
-    """The Bresenham loop for unpacked storage, without per-pixel bounds checks:
-    the first and last pixels are checked, and by monotonicity every pixel between
-    them is inside too."""
-    w_first = w0 + sw * j
-    wlim = width if swap else height
-    ulim = height if swap else width
-    if not (0 <= u0 + lo < ulim and 0 <= u0 + hi < ulim and 0 <= w_first < wlim and 0 <= w_last < wlim):
-        return
-    if swap:
-        x, y, ux, uy, wx, wy = w_first, u0 + lo, 0, 1, sw, 0
+def bresenham_walk(flat, k, steps, p, two_dw, two_dw_minus_two_du, su, sv, n, c0, c1, c2, c3):
+    """The Bresenham loop over unpacked storage seen as one flat array: ``steps``
+    pixels of ``n`` channels (1, 3 or 4) from byte ``k``, unchecked (the caller has
+    proved the first and last pixels inside, and the pixels between them are
+    inside by monotonicity).
+
+    A step along the major axis adds ``su`` bytes (one pixel, or one row when y
+    is the major axis), an advance of the minor axis ``sv`` more.  The decision is
+    :func:`bresenham_decide`'s, written as two selects that compile without a
+    branch: a branch on the sign of p_k is mispredicted about once in three pixels
+    of a random line.  The color comes as scalars and one loop is written per
+    channel count, so that the loop holds no array but ``flat`` (each array
+    handed to an inlined helper costs a reference-count increment and decrement,
+    atomic operations that took 30% of the time of a million short lines)."""
+    if n == 1:
+        for _ in range(steps):
+            flat[k] = c0
+            keep = p < 0
+            p += two_dw if keep else two_dw_minus_two_du
+            k += su if keep else su + sv
+    elif n == 3:
+        for _ in range(steps):
+            flat[k] = c0
+            flat[k + 1] = c1
+            flat[k + 2] = c2
+            keep = p < 0
+            p += two_dw if keep else two_dw_minus_two_du
+            k += su if keep else su + sv
     else:
-        x, y, ux, uy, wx, wy = u0 + lo, w_first, 1, 0, 0, sw
-    for _ in range(lo, hi + 1):
-        store(buf, y, x, color)
-        x += ux
-        y += uy
-        p, advance = bresenham_decide(p, two_dw, two_dw_minus_two_du)
-        if advance:
-            x += wx
-            y += wy
+        for _ in range(steps):
+            flat[k] = c0
+            flat[k + 1] = c1
+            flat[k + 2] = c2
+            flat[k + 3] = c3
+            keep = p < 0
+            p += two_dw if keep else two_dw_minus_two_du
+            k += su if keep else su + sv
 
 
 @helper
-def bresenham_line(buf, layout, width, height, x0, y0, x1, y1, color):
-    """Draw the line (x0, y0)-(x1, y1), both endpoints included, with Bresenham's
-    integer decision parameter, clipped exactly to the frame buffer."""
+def channels(colors, i):
+    """Row ``i`` of the (N, n) ``colors`` as four scalars (the missing ones 0)."""
+    n = colors.shape[1]
+    return (colors[i, 0], colors[i, 1] if n > 1 else 0, colors[i, 2] if n > 2 else 0,
+            colors[i, 3] if n > 3 else 0)
+
+
+@inline
+def bresenham_span(x0, y0, x1, y1, width, height, n, row):
+    """The state of :func:`bresenham_walk` for the line (x0, y0)-(x1, y1) clipped
+    exactly to a raster of ``width`` x ``height`` pixels of ``n`` bytes, ``row``
+    bytes per row: ``(k, steps, p, two_dw, two_dw_minus_two_du, su, sv)``, with
+    ``steps`` 0 when no pixel is visible.  Scalars only (see
+    :func:`bresenham_walk`)."""
     swap, u0, w0, du, dw, sw = bresenham_setup(x0, y0, x1, y1)
-    if len(layout) == BYTES and 0 <= min(x0, x1) and max(x0, x1) < width and 0 <= min(y0, y1) and max(y0, y1) < height:
-        # wholly inside: no clipping, no divisions (the values unify with the other
-        # branch's into int64 variables: constants passed straight to the loop would
-        # compile a second specialization of it, one of Literal[int] arguments)
+    if 0 <= min(x0, x1) and max(x0, x1) < width and 0 <= min(y0, y1) and max(y0, y1) < height:
+        # wholly inside (most lines): no clipping, no divisions (the values unify
+        # with the other branch's into int64 variables)
         lo, hi, j, p, w_last = 0, du, 0, 2 * dw - du, w0 + sw * dw
     else:
         if swap:
@@ -184,15 +211,43 @@ def bresenham_line(buf, layout, width, height, x0, y0, x1, y1, color):
         else:
             lo, hi = bresenham_clip(u0, w0, du, dw, sw, width - 1, height - 1)
         if lo > hi:
-            return
+            lo, hi = 0, -1
         j, p = bresenham_state(lo, du, dw)
         w_last = w0 + sw * bresenham_state(hi, du, dw)[0]
-    if len(layout) == PACKED:
-        bresenham_checked(buf, layout, width, height, swap, u0, w0, sw, lo, hi, j, p,
-                          2 * dw, 2 * dw - 2 * du, color)
+    w_first = w0 + sw * j
+    wlim = width if swap else height
+    ulim = height if swap else width
+    if not (lo <= hi and 0 <= u0 + lo < ulim and 0 <= u0 + hi < ulim and 0 <= w_first < wlim
+            and 0 <= w_last < wlim):
+        return 0, 0, p, 2 * dw, 2 * dw - 2 * du, 0, 0
+    if swap:
+        k, su, sv = (u0 + lo) * row + w_first * n, row, sw * n
     else:
-        bresenham_flat(buf, width, height, swap, u0, w0, sw, lo, hi, j, p, w_last,
-                       2 * dw, 2 * dw - 2 * du, color)
+        k, su, sv = w_first * row + (u0 + lo) * n, n, sw * row
+    return k, hi - lo + 1, p, 2 * dw, 2 * dw - 2 * du, su, sv
+
+
+@helper
+def bresenham_line(buf, layout, width, height, x0, y0, x1, y1, colors, ci):
+    """Draw the line (x0, y0)-(x1, y1), both endpoints included, with Bresenham's
+    integer decision parameter, clipped exactly to the frame buffer, in color
+    ``colors[ci]``."""
+    if len(layout) == PACKED:
+        swap, u0, w0, du, dw, sw = bresenham_setup(x0, y0, x1, y1)
+        if swap:
+            lo, hi = bresenham_clip(u0, w0, du, dw, sw, height - 1, width - 1)
+        else:
+            lo, hi = bresenham_clip(u0, w0, du, dw, sw, width - 1, height - 1)
+        if lo <= hi:
+            j, p = bresenham_state(lo, du, dw)
+            bresenham_checked(buf, layout, width, height, swap, u0, w0, sw, lo, hi, j, p,
+                              2 * dw, 2 * dw - 2 * du, colors[ci])
+        return
+    n = buf.shape[2]
+    k, steps, p, a, b, su, sv = bresenham_span(x0, y0, x1, y1, width, height, n,
+                                               buf.shape[1] * n)
+    c0, c1, c2, c3 = channels(colors, ci)
+    bresenham_walk(buf.reshape(-1), k, steps, p, a, b, su, sv, n, c0, c1, c2, c3)
 
 
 @inline
@@ -249,7 +304,8 @@ def draw_line(buf, layout, width, height, x0, y0, x1, y1, color, method):
     if len(method) == DDA:
         dda_line(buf, layout, width, height, x0, y0, x1, y1, color)
     else:
-        bresenham_line(buf, layout, width, height, x0, y0, x1, y1, color)
+        bresenham_line(buf, layout, width, height, x0, y0, x1, y1,
+                       color.reshape(1, color.shape[0]), np.int64(0))   # (not a literal 0)
 
 
 @kernel
@@ -275,12 +331,30 @@ def draw_lines(band, step, buf, layout, width, height, segments, colors, method)
     if rows <= 0:
         return
     view = buf[top:top + rows]
+    if len(layout) == PACKED:
+        for i in range(segments.shape[0]):
+            y0 = segments[i, 1] - top
+            y1 = segments[i, 3] - top
+            if max(y0, y1) >= 0 and min(y0, y1) < rows:
+                bresenham_line(view, layout, width, rows, segments[i, 0], y0, segments[i, 2],
+                               y1, colors, 0 if one else i)
+        return
+    # unpacked storage: the loop hands bresenham_walk no array but the strip's
+    # (an array in any branch of the loop costs reference counting on every line)
+    flat = view.reshape(-1)
+    n = buf.shape[2]
+    row = buf.shape[1] * n
+    c0, c1, c2, c3 = channels(colors, np.int64(0))   # (not a literal 0: compiled once)
     for i in range(segments.shape[0]):
         y0 = segments[i, 1] - top
         y1 = segments[i, 3] - top
-        if max(y0, y1) >= 0 and min(y0, y1) < rows:
-            bresenham_line(view, layout, width, rows, segments[i, 0], y0, segments[i, 2], y1,
-                           colors[0 if one else i])
+        if max(y0, y1) < 0 or min(y0, y1) >= rows:
+            continue
+        if not one:
+            c0, c1, c2, c3 = channels(colors, i)
+        k, steps, p, a, b, su, sv = bresenham_span(segments[i, 0], y0, segments[i, 2], y1,
+                                                   width, rows, n, row)
+        bresenham_walk(flat, k, steps, p, a, b, su, sv, n, c0, c1, c2, c3)
 
 
 @kernel

@@ -64,6 +64,33 @@ def store(buf, y, x, color):
 BAND_SHIFT = 5
 
 
+@inline
+def band_of(y, height):
+    """The band of scan lines of row ``y`` clamped to the raster."""
+    return min(max(y, 0), height - 1) >> BAND_SHIFT
+
+
+@helper
+def band_counts(items, height, lo, hi):
+    """How many of ``items[lo:hi]`` fall in each band (``band_of`` their column 1)."""
+    counts = np.zeros(((height - 1) >> BAND_SHIFT) + 1, np.int64)
+    for i in range(lo, hi):
+        counts[band_of(items[i, 1], height)] += 1
+    return counts
+
+
+@helper
+def band_scatter(items, height, lo, hi, slots, out):
+    """Copy each of ``items[lo:hi]`` to row ``slots[b]`` of ``out``, ``b`` its band,
+    and advance that slot: the second pass of a counting sort, stable."""
+    for i in range(lo, hi):
+        b = band_of(items[i, 1], height)
+        k = slots[b]
+        for c in range(items.shape[1]):   # (a row assignment compiles an error message:
+            out[k, c] = items[i, c]       # seconds of first-call compilation)
+        slots[b] = k + 1
+
+
 @helper
 def band_sorted(items, height):
     """A copy of ``items`` sorted by band of scan lines (``items[:, 1] >> 5``, the y
@@ -73,22 +100,14 @@ def band_sorted(items, height):
     When every primitive of a batch has the same color the drawing order cannot
     change the image, and drawing band by band keeps the rows being written in the
     cache.  The rows are copied (not just indexed) so that reading them stays
-    sequential too.
+    sequential too.  (:func:`scanline.draw._common.band_order` runs the two passes
+    on every core.)
     """
-    bands = ((height - 1) >> BAND_SHIFT) + 1
-    start = np.zeros(bands + 1, np.int64)
-    n = items.shape[0]
-    band = np.empty(n, np.int64)
-    for i in range(n):
-        b = min(max(items[i, 1], 0), height - 1) >> BAND_SHIFT
-        band[i] = b
-        start[b + 1] += 1
-    for b in range(bands):
-        start[b + 1] += start[b]
+    first = np.int64(0)     # (not a literal 0: the passes compile once)
+    counts = band_counts(items, height, first, items.shape[0])
+    slots = np.zeros_like(counts)
+    for b in range(1, counts.shape[0]):
+        slots[b] = slots[b - 1] + counts[b - 1]
     out = np.empty_like(items)
-    for i in range(n):
-        k = start[band[i]]
-        for c in range(items.shape[1]):   # (a row assignment compiles an error message:
-            out[k, c] = items[i, c]       # seconds of first-call compilation)
-        start[band[i]] += 1
+    band_scatter(items, height, first, items.shape[0], slots, out)
     return out

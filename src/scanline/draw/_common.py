@@ -92,12 +92,26 @@ def area_work(width: int, height: int, points: ArrayLike, count: int = 1,
 def band_order(rows: NDArray[np.int64], values: NDArray[np.uint8],
                height: int) -> NDArray[np.int64]:
     """The (N, k) int64 primitive ``rows`` (y in column 1) in order of bands of
-    scan lines (:func:`scanline._kernels.raster.band_sorted`, a counting sort, O(N))
-    when ``values`` holds one color for all, which makes any drawing order give the
-    same image; else ``rows`` as they are.  Drawn band by band, the rows being
-    written stay in the cache; sorted once here, not by each thread's kernel."""
-    if len(values) != 1 or len(rows) < 2:
+    scan lines (the counting sort of :func:`scanline._kernels.raster.band_sorted`,
+    its two passes on every core: each thread counts its chunk's rows per band,
+    then copies them to their slots) when ``values`` holds one color for all, which
+    makes any drawing order give the same image; else ``rows`` as they are.  Drawn
+    band by band, the rows being written stay in the cache; sorted once here, not
+    by each thread's kernel."""
+    n = len(rows)
+    if len(values) != 1 or n < 2:
         return rows
-    from .._kernels._jit import call
-    from .._kernels.raster import band_sorted
-    return cast(NDArray[np.int64], call(band_sorted, len(rows), rows, height))
+    from .._kernels._threads import call_in_chunks
+    from .._kernels.raster import band_counts, band_scatter
+
+    parts = call_in_chunks(band_counts, n, n, lambda lo, hi: (rows, height, lo, hi))
+    counts = np.stack([c for _, c in parts])          # (chunks, bands)
+    # a row's slot: the rows of the bands before its band, then those of its band
+    # in the chunks before its chunk, then those before it in its chunk
+    before = np.cumsum(counts.sum(axis=0)) - counts.sum(axis=0)
+    slots = {lo: before + np.cumsum(counts, axis=0)[t] - counts[t]
+             for t, (lo, _) in enumerate(parts)}
+    out = np.empty_like(rows)
+    call_in_chunks(band_scatter, n, n, lambda lo, hi: (rows, height, lo, hi, slots[lo], out),
+                   parts=len(parts))
+    return out

@@ -195,9 +195,8 @@ def positive_int(name: str, value: object, minimum: int = 1) -> int:
 def coordinate_array(name: str, value: object, columns: int,
                      radius_columns: Iterable[int] = (), guard: bool = False,
                      far: bool = False) -> NDArray[Any]:
-    """Convert an (N, columns) array of primitives to int64, rounding to pixels.
-    Integers in range are only checked, and an int64 C-contiguous array of them is
-    returned itself (the callers only read it).
+    """Convert an (N, columns) array of primitives to int64, rounding to pixels
+    (an integer array in range is only checked: :func:`integers_in_range`).
 
     ``radius_columns`` lists the columns that hold radii, which must be >= 0.
     With ``guard`` (segments: ``columns`` = 4), any finite coordinate is taken: rows
@@ -206,16 +205,13 @@ def coordinate_array(name: str, value: object, columns: int,
     taken and the rows come back as float64, not rounded (conic batches, which
     draw far rows themselves).
     """
+    exact = None if far else integers_in_range(value, columns)
+    if exact is not None:
+        for c in radius_columns:
+            _radii(name, exact, c)
+        return exact
     try:
         a = np.asarray(value)
-        if (a.dtype.kind in "iu" and not far and a.ndim == 2 and a.shape[1] == columns
-                and (a.size == 0 or (-COORD_LIMIT <= int(a.min()) and int(a.max()) <= COORD_LIMIT))):
-            # integers in range (the common case of a large batch): two passes and no
-            # conversion; an int64 C-contiguous array comes back as is, not copied
-            # (its callers only read it)
-            for c in radius_columns:
-                _radii(name, a, c)
-            return np.ascontiguousarray(a, np.int64)
         if a.dtype.kind in "iu" or a.dtype == object:
             a = a.astype(np.float64)
     except OverflowError:
@@ -264,6 +260,20 @@ def coordinate_array(name: str, value: object, columns: int,
     half: NDArray[np.float64] = np.add(a, 0.5)
     np.floor(half, out=half)
     return half.astype(np.int64, order="C")
+
+
+def integers_in_range(value: object, columns: int) -> Optional[NDArray[np.int64]]:
+    """``value`` as an (N, columns) int64 array when it is an integer array of that
+    shape whose values lie within +-COORD_LIMIT (the common case of a large batch:
+    checked in two passes, not converted to floats and back), else None.  An int64
+    C-contiguous array comes back itself, not copied: its callers only read it."""
+    if not isinstance(value, np.ndarray):
+        return None
+    if value.dtype.kind not in "iu" or value.ndim != 2 or value.shape[1] != columns:
+        return None
+    if value.size and not (-COORD_LIMIT <= int(value.min()) and int(value.max()) <= COORD_LIMIT):
+        return None
+    return np.ascontiguousarray(value, np.int64)
 
 
 def _radii(name: str, a: NDArray[Any], c: int) -> None:

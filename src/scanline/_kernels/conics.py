@@ -12,7 +12,7 @@ import math
 import numpy as np
 
 from ._jit import helper, inline, kernel
-from .raster import put, store
+from .raster import channels, put, store, store_flat
 from .spans import strip
 from .variants import BYTES
 
@@ -132,19 +132,37 @@ def circle_run(buf, layout, width, height, xc, yc, x, y, p, end, color):
     return x, y, p
 
 
-@helper
-def circle_inside(buf, width, xc, yc, r, color):
-    """The notes' loop for a circle wholly inside unpacked storage: each of the
-    eight images is written with no bounds checks."""
+@inline
+def circle_walk(flat, base, r, n, row, c0, c1, c2, c3):
+    """The notes' loop for a circle wholly inside unpacked storage, seen as one
+    flat array of ``row`` bytes per row and ``n`` per pixel, with its center at
+    byte ``base``: each of the eight images written with no bounds checks.
+
+    The images on the axes and the diagonal, which :func:`mirror8` plots once, are
+    written twice here, with the same value: the pixels are the same and the loop
+    has no branch on them.  The step is :func:`circle_step`'s with the decision as
+    selects (no branch to mispredict), and the loop holds no array but ``flat``
+    (:func:`scanline._kernels.raster.channels`)."""
     x = 0
     y = r
     p = 1 - r
     while x <= y:
-        for k in range(8):
-            a, b, new = mirror8(k, x, y)
-            if new:
-                store(buf, yc + b, xc + a, color)
-        x, y, p = circle_step(x, y, p)
+        xn = x * n
+        yn = y * n
+        xr = x * row
+        yr = y * row
+        store_flat(flat, base + xn + yr, n, c0, c1, c2, c3)
+        store_flat(flat, base - xn + yr, n, c0, c1, c2, c3)
+        store_flat(flat, base + xn - yr, n, c0, c1, c2, c3)
+        store_flat(flat, base - xn - yr, n, c0, c1, c2, c3)
+        store_flat(flat, base + yn + xr, n, c0, c1, c2, c3)
+        store_flat(flat, base - yn + xr, n, c0, c1, c2, c3)
+        store_flat(flat, base + yn - xr, n, c0, c1, c2, c3)
+        store_flat(flat, base - yn - xr, n, c0, c1, c2, c3)
+        x += 1
+        down = p >= 0
+        y -= 1 if down else 0
+        p += 2 * x + 1 - (2 * y if down else 0)
 
 
 @kernel
@@ -159,7 +177,10 @@ def draw_circle(buf, layout, width, height, xc, yc, r, color):
     if xc + r < 0 or xc - r > width - 1 or yc + r < 0 or yc - r > height - 1:
         return
     if len(layout) == BYTES and xc - r >= 0 and xc + r < width and yc - r >= 0 and yc + r < height:
-        circle_inside(buf, width, xc, yc, r, color)
+        n = buf.shape[2]
+        row = buf.shape[1] * n
+        c0, c1, c2, c3 = channels(color.reshape(1, n), np.int64(0))   # (not a literal 0)
+        circle_walk(buf.reshape(-1), yc * row + xc * n, r, n, row, c0, c1, c2, c3)
         return
     x = np.int64(0)   # (not a literal 0: next_run would be compiled for it too)
     y = r
@@ -186,12 +207,24 @@ def draw_circles(band, step, buf, layout, width, height, circles, colors):
     if rows <= 0:
         return
     view = buf[top:top + rows]
+    flat = view.reshape(-1)
+    n = buf.shape[2]
+    row = buf.shape[1] * n
     one = colors.shape[0] == 1
+    c0, c1, c2, c3 = channels(colors, np.int64(0))   # (not a literal 0: compiled once)
     for i in range(circles.shape[0]):
+        xc = circles[i, 0]
         yc = circles[i, 1] - top
         r = circles[i, 2]
-        if yc + r >= 0 and yc - r < rows:
-            draw_circle(view, layout, width, rows, circles[i, 0], yc, r, colors[0 if one else i])
+        if yc + r < 0 or yc - r >= rows:
+            continue
+        if not one:
+            c0, c1, c2, c3 = channels(colors, i)
+        if (len(layout) == BYTES and xc - r >= 0 and xc + r < width and yc - r >= 0
+                and yc + r < rows):
+            circle_walk(flat, yc * row + xc * n, r, n, row, c0, c1, c2, c3)
+        else:
+            draw_circle(view, layout, width, rows, xc, yc, r, colors[0 if one else i])
 
 
 @kernel

@@ -12,7 +12,7 @@ import math
 import numpy as np
 
 from ._jit import helper, inline, kernel
-from .raster import put, store
+from .raster import channels, put, store
 from .spans import strip
 from .variants import BYTES, PACKED
 
@@ -183,14 +183,6 @@ def bresenham_walk(flat, k, steps, p, two_dw, two_dw_minus_two_du, su, sv, n, c0
             keep = p < 0
             p += two_dw if keep else two_dw_minus_two_du
             k += su if keep else su + sv
-
-
-@helper
-def channels(colors, i):
-    """Row ``i`` of the (N, n) ``colors`` as four scalars (the missing ones 0)."""
-    n = colors.shape[1]
-    return (colors[i, 0], colors[i, 1] if n > 1 else 0, colors[i, 2] if n > 2 else 0,
-            colors[i, 3] if n > 3 else 0)
 
 
 @inline

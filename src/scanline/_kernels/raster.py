@@ -59,6 +59,29 @@ def store(buf, y, x, color):
             buf[y, x, 3] = color[3]
 
 
+@helper
+def channels(colors, i):
+    """Row ``i`` of the (N, n) uint8 ``colors`` as four scalars (the missing ones
+    0): the color of a loop that writes a flat view of unpacked storage
+    (:func:`store_flat`) and holds no array but that view (each array an inlined
+    helper is handed costs an atomic reference-count increment and decrement)."""
+    n = colors.shape[1]
+    return (colors[i, 0], colors[i, 1] if n > 1 else 0, colors[i, 2] if n > 2 else 0,
+            colors[i, 3] if n > 3 else 0)
+
+
+@inline
+def store_flat(flat, k, n, c0, c1, c2, c3):
+    """Write the ``n`` channels (1, 3 or 4) ``c0``.. of one pixel at byte ``k`` of
+    the flat view of unpacked storage, unchecked: the caller has proved it inside."""
+    flat[k] = c0
+    if n > 1:
+        flat[k + 1] = c1
+        flat[k + 2] = c2
+        if n > 3:
+            flat[k + 3] = c3
+
+
 #: Rows per band in ``band_order``: 32 rows of a 2048-pixel RGB raster are 192 KiB,
 #: which stay in a core's L2 cache while the primitives of one band are drawn.
 BAND_SHIFT = 5

@@ -215,6 +215,10 @@ def circles(fb: "FrameBuffer", circles: ArrayLike, color: Optional[Colors] = Non
     -###-----
     """
     attrs = strokes.styled(style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen)
+    if attrs is None and v.integers_in_range(circles, 3) is not None:
+        # integers in range (the common large batch): every row is exact, drawn as is
+        _near_circles(fb, v.coordinate_array("circles", circles, 3, radius_columns=(2,)), color)
+        return
     rows = v.coordinate_array("circles", circles, 3, radius_columns=(2,), far=True)
     rows = np.ascontiguousarray(rows[:, [0, 1, 2, 2]])
     if attrs is not None:
@@ -223,16 +227,19 @@ def circles(fb: "FrameBuffer", circles: ArrayLike, color: Optional[Colors] = Non
                   lambda x, y, a, b, c: _far(fb, x, y, a, b, c, attrs, antialias, True),
                   float(strokes._margin(attrs)))
         return
-    buf, packed, width, height = target(fb)
-
-    def near(arr: NDArray[np.int64], c: Optional[Colors]) -> None:
-        values = colors(fb, c, len(arr))
-        arr = band_order(np.ascontiguousarray(arr[:, :3]), values, height)
-        call_in_bands(k.draw_circles, conic_work(arr[:, 2], arr[:, 2], width, height), buf,
-                      layout(packed), width, height, arr, values)
-
-    far.batch(fb, rows, color, _exact_rows(rows, True), near,
+    far.batch(fb, rows, color, _exact_rows(rows, True),
+              lambda arr, c: _near_circles(fb, arr, c),
               lambda x, y, a, b, c: _far(fb, x, y, a, b, c, None, False, True))
+
+
+def _near_circles(fb: "FrameBuffer", rows: NDArray[np.int64], color: Optional[Colors]) -> None:
+    """The compiled batch of :func:`circles`: int64 rows (xc, yc, r, ...) within the
+    kernels' range."""
+    buf, packed, width, height = target(fb)
+    values = colors(fb, color, len(rows))
+    arr = band_order(np.ascontiguousarray(rows[:, :3]), values, height)
+    call_in_bands(k.draw_circles, conic_work(arr[:, 2], arr[:, 2], width, height), buf,
+                  layout(packed), width, height, arr, values)
 
 
 def conic_work(rx: NDArray[Union[np.int64, np.float64]], ry: NDArray[Union[np.int64, np.float64]],

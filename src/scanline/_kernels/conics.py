@@ -132,7 +132,7 @@ def circle_run(buf, layout, width, height, xc, yc, x, y, p, end, color):
     return x, y, p
 
 
-@inline
+@helper
 def circle_walk(flat, base, r, n, row, c0, c1, c2, c3):
     """The notes' loop for a circle wholly inside unpacked storage, seen as one
     flat array of ``row`` bytes per row and ``n`` per pixel, with its center at

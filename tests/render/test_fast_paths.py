@@ -19,6 +19,7 @@ from scanline._kernels.variants import MODE, token
 from scanline.screen import DevicePolygons, mesh_arrays, prepare
 from scanline.shading import ShadingOptions, barycentrics, encode, intensities
 from scanline.shading.buffer import gamma_tables, shade_buffer
+from scanline.draw.triangles import bin_bands
 from scanline.visible.zbuffer import nearest
 
 
@@ -33,11 +34,7 @@ def draw_in_calls(width, height, tri, att, steps):
     """The COLOR/TEST kernel run as ``steps`` calls (start 0 .. steps - 1), one after
     another: each call draws its own bands."""
     n = len(tri)
-    bands = ((height - 1) >> k.BAND_SHIFT) + 1
-    rows = np.empty((n, 2), np.int64)
-    starts = np.empty(bands + 1, np.int64)
-    order = np.empty(k.band_entries(tri, height), np.int64)
-    k.bin_triangles(tri, height, rows, starts, order)
+    rows, starts, order, _ = bin_bands(tri, height)
     buf = np.zeros((height, width, att.shape[2]), np.uint8)
     zbuf = np.full((height, width), np.inf)
     for start in range(steps):
@@ -66,9 +63,10 @@ def test_threads_split_the_work_without_overlap(monkeypatch):
     calls = []
     real = _threads.call
 
-    def counted(kernel, work, start, step, *args):
-        calls.append((kernel.__name__, start, step))
-        return real(kernel, work, start, step, *args)
+    def counted(kernel, work, *args):
+        if kernel.__name__ == "raster_triangles":      # (the binning runs in chunks too)
+            calls.append((kernel.__name__, args[0], args[1]))
+        return real(kernel, work, *args)
 
     monkeypatch.setattr(_threads, "call", counted)
     rng = np.random.default_rng(8)
@@ -222,13 +220,33 @@ def test_shading_calls_sharing_the_bands_write_every_pixel_once():
     assert (images[0].any(axis=2) == (facets >= 0)).mean() > 0.99
 
 
+@pytest.mark.parametrize("threads", [1, 2, 3])
+def test_binning_lists_each_band_s_triangles_in_input_order(threads, monkeypatch):
+    # the two passes of the counting sort run in chunks, one per thread: whatever the
+    # chunks, band b lists exactly the triangles whose rows meet it, in input order
+    # (found here by numpy from each triangle's lowest and highest y)
+    rng = np.random.default_rng(7)
+    tri = random_triangles(rng, 300_000, 200, 150, 40)
+    tri[::97, :, 1] = np.nan                        # covers no row
+    monkeypatch.setattr(_threads, "threads", lambda: threads)
+    rows, starts, order, area = bin_bands(tri, 150)
+    y = tri[:, :, 1]
+    with np.errstate(invalid="ignore"):
+        first = np.maximum(np.floor(y.min(axis=1)) + 1, 0)
+        last = np.minimum(np.floor(y.max(axis=1)), 149)
+    met = ~np.isnan(first) & (first <= last)
+    assert np.array_equal(rows[met, 0], first[met]) and np.array_equal(rows[met, 1], last[met])
+    for b in range(len(starts) - 1):
+        lo, hi = b * k.BAND, (b + 1) * k.BAND - 1
+        expected = np.flatnonzero(met & (first <= hi) & (last >= lo))
+        assert np.array_equal(order[starts[b]:starts[b + 1]], expected)
+    assert area > 0
+
+
 def test_the_work_estimate_counts_the_boxes():
     tri = np.array([[(0.0, 0.0, 0), (10.0, 0.0, 0), (0.0, 10.0, 0)],
                     [(5.0, 5.0, 0), (5.0, 5.0, 0), (5.0, 5.0, 0)]])
-    rows = np.empty((2, 2), np.int64)
-    starts = np.empty(2, np.int64)
-    order = np.empty(k.band_entries(tri, 20), np.int64)
-    area = k.bin_triangles(tri, 20, rows, starts, order)
+    rows, starts, order, area = bin_bands(tri, 20)
     # rows 1..10 (the bottom edge on row 0 is outside), 11 pixels wide; the point
     # covers no row
     assert area == 10 * 11.0 and rows.tolist() == [[1, 10], [6, 5]]

@@ -42,7 +42,7 @@ from ._jit import helper, inline, kernel
 BAND_SHIFT = 5
 BAND = 1 << BAND_SHIFT
 
-#: The widest box (pixels) the work estimate of :func:`bin_triangles` counts: a
+#: The widest box (pixels) the work estimate of :func:`bin_count` counts: a
 #: triangle's x extent is not clipped to the raster there.
 WIDEST = 4096.0
 
@@ -67,66 +67,47 @@ CLEAR_TEST = 4
 
 
 @kernel
-def bin_triangles(tri, height, rows, starts, order):
-    """Bucket the triangles by band: ``order[starts[b]:starts[b + 1]]`` lists, in
-    input order, the triangles whose rows meet band ``b``; ``rows[t]`` = (first
+def bin_count(tri, height, lo, hi, rows):
+    """The first pass of binning triangles ``lo .. hi - 1`` by band (a counting
+    sort; the chunks of a batch run on every core, and
+    :func:`scanline.draw.triangles.bin_bands` joins them): ``rows[t]`` = (first
     row, last row) of triangle ``t`` clamped to the raster (first > last: none).
-    ``order``'s capacity must be at least the sum over triangles of the bands they
-    meet (:func:`band_entries`; else nothing is listed and -1 is returned: a guess
-    of the capacity spares that pass where it holds).  Returns the summed areas of
-    the triangles' boxes (rows met times their x extent plus one, at most
-    :data:`WIDEST` pixels): the work estimate of :func:`raster_triangles`."""
-    n = tri.shape[0]
-    bands = starts.shape[0] - 1
-    for b in range(bands + 1):
-        starts[b] = 0
+    Returns ``(counts, area)``: how many of the triangles meet each band, and the
+    summed areas of their boxes (rows met times their x extent plus one, at most
+    :data:`WIDEST` pixels), the work estimate of :func:`raster_triangles`."""
+    counts = np.zeros(((height - 1) >> BAND_SHIFT) + 1, np.int64)
     area = 0.0
-    for t in range(n):
-        lo = min(tri[t, 0, 1], tri[t, 1, 1], tri[t, 2, 1])
-        hi = max(tri[t, 0, 1], tri[t, 1, 1], tri[t, 2, 1])
+    for t in range(lo, hi):
+        low = min(tri[t, 0, 1], tri[t, 1, 1], tri[t, 2, 1])
+        high = max(tri[t, 0, 1], tri[t, 1, 1], tri[t, 2, 1])
         r0 = 1
         r1 = 0
-        if lo == lo and hi == hi:            # not NaN
-            flo = max(min(math.floor(lo), height + 1.0), -2.0)
-            fhi = max(min(math.floor(hi), height + 1.0), -2.0)
+        if low == low and high == high:            # not NaN
+            flo = max(min(math.floor(low), height + 1.0), -2.0)
+            fhi = max(min(math.floor(high), height + 1.0), -2.0)
             r0 = max(int(flo) + 1, 0)
             r1 = min(int(fhi), height - 1)
         rows[t, 0] = r0
         rows[t, 1] = r1
         if r0 <= r1:
             for b in range(r0 >> BAND_SHIFT, (r1 >> BAND_SHIFT) + 1):
-                starts[b + 1] += 1
+                counts[b] += 1
             wide = (max(tri[t, 0, 0], tri[t, 1, 0], tri[t, 2, 0])
                     - min(tri[t, 0, 0], tri[t, 1, 0], tri[t, 2, 0]) + 1.0)
             area += (r1 - r0 + 1) * min(wide, WIDEST)
-    for b in range(bands):
-        starts[b + 1] += starts[b]
-    if starts[bands] > order.shape[0]:
-        return -1.0
-    fill = np.empty(bands, np.int64)
-    for b in range(bands):
-        fill[b] = starts[b]
-    for t in range(n):
+    return counts, area
+
+
+@kernel
+def bin_scatter(rows, lo, hi, fill, order):
+    """The second pass: list each of triangles ``lo .. hi - 1`` at ``order[fill[b]]``
+    for every band ``b`` its rows meet, advancing ``fill[b]`` (so each band lists
+    its triangles in input order)."""
+    for t in range(lo, hi):
         if rows[t, 0] <= rows[t, 1]:
             for b in range(rows[t, 0] >> BAND_SHIFT, (rows[t, 1] >> BAND_SHIFT) + 1):
                 order[fill[b]] = t
                 fill[b] += 1
-    return area
-
-
-@kernel
-def band_entries(tri, height):
-    """The number of (triangle, band) pairs :func:`bin_triangles` will list."""
-    total = 0
-    for t in range(tri.shape[0]):
-        lo = min(tri[t, 0, 1], tri[t, 1, 1], tri[t, 2, 1])
-        hi = max(tri[t, 0, 1], tri[t, 1, 1], tri[t, 2, 1])
-        if lo == lo and hi == hi:
-            r0 = max(int(max(min(math.floor(lo), height + 1.0), -2.0)) + 1, 0)
-            r1 = min(int(max(min(math.floor(hi), height + 1.0), -2.0)), height - 1)
-            if r0 <= r1:
-                total += (r1 >> BAND_SHIFT) - (r0 >> BAND_SHIFT) + 1
-    return total
 
 
 @inline
@@ -299,7 +280,7 @@ def raster_triangles(start, step, out, depth, tri, q, att, ids, rows, starts, or
     ``tri`` (N, 3, 3) device x, y, depth per vertex; ``q`` (N, 3) 1/w per vertex;
     ``att`` (N, 3, K) attributes per vertex; ``ids`` (N,) the value each triangle
     writes into ``idbuf``; ``rows``, ``starts``, ``order`` from
-    :func:`bin_triangles`.  Writes ``zbuf`` (H, W) (depth token TEST; PEEL: only
+    :func:`scanline.draw.triangles.bin_bands`.  Writes ``zbuf`` (H, W) (depth token TEST; PEEL: only
     between ``floor`` (H, W) and ``zbuf``; CLEAR_TEST: each band cleared first, with
     ``idbuf``), and ``buf`` (H, W', K) bytes (out COLOR)
     or ``abuf`` (H, W, K) and ``idbuf`` (H, W) (out ATTRIBUTES), or ``idbuf`` alone

@@ -4,6 +4,7 @@ correct in perspective (the kernel: :mod:`scanline._kernels.raster3d`)."""
 
 from __future__ import annotations
 
+import math
 from typing import TYPE_CHECKING, Any, Optional, Tuple, Union
 
 import numpy as np
@@ -25,7 +26,9 @@ _Rows = Tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]
 MODES = ("L", "RGB", "RGBA")
 
 
-def _vertices(vertices: ArrayLike) -> NDArray[np.float64]:
+def _vertices(vertices: ArrayLike) -> Tuple[NDArray[np.float64], float]:
+    """The (N, 3, 3) float64 kernel array of ``vertices`` and the largest magnitude
+    of its values (depths included)."""
     tri = v.real_array("vertices", vertices, "(N, 3, 3)")
     if tri.size == 0:
         tri = tri.reshape(0, 3, 3)
@@ -35,12 +38,15 @@ def _vertices(vertices: ArrayLike) -> NDArray[np.float64]:
             f"device points (or (N, 3, 2) without depth), got shape {tri.shape}")
     if tri.shape[2] == 2:
         tri = np.concatenate([tri, np.zeros(tri.shape[:2] + (1,))], axis=2)
-    if not np.isfinite(tri).all():
+    # finite unless the extremes are not: two passes over contiguous memory, no
+    # temporary (the extremes are NaN where any value is)
+    lo, hi = (float(tri.min()), float(tri.max())) if tri.size else (0.0, 0.0)
+    if not (math.isfinite(lo) and math.isfinite(hi)):
         row = int(np.argwhere(~np.isfinite(tri).all(axis=(1, 2)))[0][0])
         raise ArgumentValueError(
             f"vertices[{row}] = {tri[row].tolist()} is not finite; give finite device "
             "coordinates (clip 3-D geometry first: sl.render does, before the divide)")
-    return v.kernel_array(tri)
+    return v.kernel_array(tri), max(hi, -lo)
 
 
 def _far(tri: NDArray[np.float64], q: NDArray[np.float64],
@@ -54,8 +60,8 @@ def _far(tri: NDArray[np.float64], q: NDArray[np.float64],
     from ..geometry import guard
 
     xy = tri[:, :, :2]
-    if len(tri) == 0 or max(xy.max(), -xy.min()) <= v.COORD_LIMIT:
-        return tri, q, att    # the common case: two reductions, no (N, 3, 2) temporary
+    if max(xy.max(), -xy.min()) <= v.COORD_LIMIT:
+        return tri, q, att
     far = np.abs(xy).max(axis=(1, 2)) > v.COORD_LIMIT
     rows = np.concatenate([tri, q[:, :, None], att * q[:, :, None]], axis=2)
     pieces, owner = guard.triangles(rows[far])
@@ -93,7 +99,7 @@ def _vertex_colors(fb: FrameBuffer, colors: Optional[Union[Colors, NDArray[np.nu
             raise ArgumentValueError(
                 f"per-vertex colors must have {channels} channel(s) for mode {fb.mode!r}, "
                 f"got shape {colors.shape}")
-        if not np.isfinite(a).all() or (a.size and (a.min() < 0 or a.max() > 255)):
+        if a.size and not (0 <= a.min() and a.max() <= 255):     # (NaN fails too)
             raise ArgumentValueError("per-vertex colors must be finite values in 0..255")
         if a.shape[2] == 3 and channels == 4:
             a = np.concatenate([a, np.full((n, 3, 1), 255.0)], axis=2)
@@ -103,6 +109,34 @@ def _vertex_colors(fb: FrameBuffer, colors: Optional[Union[Colors, NDArray[np.nu
     per_face = face_colors(fb, "white" if colors is None else colors, n, "colors")
     per_face = np.broadcast_to(per_face, (n, channels)).astype(np.float64)
     return v.kernel_array(np.repeat(per_face[:, None, :], 3, axis=1))
+
+
+def bin_bands(tri: NDArray[np.float64], height: int
+              ) -> Tuple[NDArray[np.int64], NDArray[np.int64], NDArray[np.int64], float]:
+    """The (N, 3, 3) triangles binned by band of :data:`~scanline._kernels.raster3d.BAND`
+    rows for :func:`~scanline._kernels.raster3d.raster_triangles`: ``(rows, starts,
+    order, area)``, where ``rows[t]`` is triangle ``t``'s first and last raster row
+    (first > last: none), ``order[starts[b]:starts[b + 1]]`` lists the triangles
+    meeting band ``b`` in input order, and ``area`` is the work estimate (the
+    summed areas of their boxes).  A counting sort whose two passes run on every
+    core (:func:`~scanline._kernels.raster3d.bin_count`, then
+    :func:`~scanline._kernels.raster3d.bin_scatter` into the slots the counts give
+    each chunk)."""
+    from .._kernels import raster3d as k
+    from .._kernels._threads import call_in_chunks
+
+    n = len(tri)
+    rows = np.empty((n, 2), np.int64)
+    parts = call_in_chunks(k.bin_count, 4 * n, n, lambda lo, hi: (tri, height, lo, hi, rows))
+    counts = np.stack([c for _, (c, _) in parts])           # (chunks, bands)
+    starts = np.concatenate([[0], np.cumsum(counts.sum(axis=0))])
+    # a chunk's slot in band b: after the band's triangles of the chunks before it
+    fill = {lo: starts[:-1] + np.cumsum(counts, axis=0)[i] - counts[i]
+            for i, (lo, _) in enumerate(parts)}
+    order = np.empty(int(starts[-1]), np.int64)
+    call_in_chunks(k.bin_scatter, 2 * n, n, lambda lo, hi: (rows, lo, hi, fill[lo], order),
+                   parts=len(parts))
+    return rows, starts, order, float(sum(a for _, (_, a) in parts))
 
 
 def rasterize(width: int, height: int, tri: NDArray[np.float64], q: NDArray[np.float64],
@@ -120,20 +154,11 @@ def rasterize(width: int, height: int, tri: NDArray[np.float64], q: NDArray[np.f
     ``zbuf`` pass; ``clear``: ``zbuf`` (and ``idbuf``) are cleared to +inf (-1) by
     the kernel first, on every core (their contents before do not matter)."""
     from .._kernels import raster3d as k
-    from .._kernels._jit import call
     from .._kernels._threads import call_in_bands
     from .._kernels.variants import token
 
     n = len(tri)
-    bands = ((height - 1) >> k.BAND_SHIFT) + 1
-    rows = np.empty((n, 2), np.int64)
-    starts = np.empty(bands + 1, np.int64)
-    # most triangles meet one or two bands: that many entries first, counted if short
-    order = np.empty(2 * n + bands, np.int64)
-    area = call(k.bin_triangles, 4 * n, tri, height, rows, starts, order)
-    if area < 0:
-        order = np.empty(call(k.band_entries, 2 * n, tri, height), np.int64)
-        area = call(k.bin_triangles, 4 * n, tri, height, rows, starts, order)
+    rows, starts, order, area = bin_bands(tri, height)
     kk = att.shape[2]
     if buf is not None:
         out = token(k.COLOR)
@@ -233,14 +258,17 @@ def triangles(fb: FrameBuffer, vertices: ArrayLike,
         raise ArgumentValueError(
             f"sl.draw.triangles draws into modes {', '.join(MODES)}; the frame buffer is "
             f"mode {fb.mode!r} (use sl.draw.polygons for flat fills in any mode)")
-    tri = _vertices(vertices)
+    tri, extent = _vertices(vertices)
     n = len(tri)
     q = _inverse_w(w, n)
     att = _vertex_colors(fb, colors, n)
     zbuf = None if depth is None else depth_argument(fb, depth)
     if n == 0:
         return
-    tri, q, att = _far(tri, q, att)
+    if extent > v.COORD_LIMIT:
+        # (every value, depths included, in range is the common case: x and y alone,
+        # a strided view, took six times as long to check)
+        tri, q, att = _far(tri, q, att)
     buf = fb._raster()[0]
     rasterize(fb.width, fb.height, tri, q, att, np.zeros(len(tri), np.int64), zbuf=zbuf,
               buf=buf)

@@ -77,6 +77,7 @@ def z_buffer(row: int = 4, triangles: Optional[ArrayLike] = None, width: int = W
     from .._kernels import raster3d as k
     from .._kernels._jit import python
     from .._kernels.variants import token
+    from ..draw.triangles import bin_bands
 
     tris = SCENE if triangles is None else v.real_array("triangles", triangles, "(N, 3, 3)")
     if tris.ndim != 3 or tris.shape[1:] != (3, 3) or not np.isfinite(tris).all():
@@ -93,10 +94,7 @@ def z_buffer(row: int = 4, triangles: Optional[ArrayLike] = None, width: int = W
     idbuf = np.full((height, width), -1, np.int64)
     g = np.empty((2, 3))
     draw = python(k.raster_triangle)
-    spans = np.empty((n, 2), np.int64)
-    bands = ((height - 1) >> k.BAND_SHIFT) + 1
-    python(k.bin_triangles)(tri, height, spans, np.empty(bands + 1, np.int64),
-                            np.empty(python(k.band_entries)(tri, height), np.int64))
+    spans = bin_bands(tri, height)[0]
     out, test = token(k.ATTRIBUTES), token(k.TEST)
     dummy_b, dummy_a, dummy_f = np.empty((1, 1, 1), np.uint8), np.empty((height, width, 0)), \
         np.empty((1, 1))

@@ -112,7 +112,7 @@ def _grid(tile: Any) -> list[list[Any]]:
         raise ArgumentValueError(
             f"tile rows must all have the same length, got lengths {[len(r or ()) for r in rows]}"
         )
-    return cast(list[list[Any]], rows)
+    return cast("list[list[Any]]", rows)
 
 
 def _palette(tile: Any) -> tuple[NDArray[np.int32], tuple[Spec, ...], tuple[tuple[int, int], ...]]:

@@ -447,7 +447,7 @@ class FrameBuffer:
         """
         last = self._cache.get(_LAST)
         if last is not None and color is last[0] and name == last[1]:
-            return cast(NDArray[np.uint8], last[2])      # the very object of the last cached call (immutable)
+            return cast("NDArray[np.uint8]", last[2])      # the very object of the last cached call (immutable)
         if color is None:
             color = self.foreground
         # cache exact types only: True == 1 and (1.0, 2) == (1, 2) must not share
@@ -459,7 +459,7 @@ class FrameBuffer:
             hit = self._cache.get(key)
             if hit is not None:
                 self._cache[_LAST] = (color, name, hit)
-                return cast(NDArray[np.uint8], hit)
+                return cast("NDArray[np.uint8]", hit)
         value: Tuple[int, ...]
         if self._mode == "P":
             value = (self._table_index(color, name),)

@@ -83,7 +83,7 @@ def _dash(dash: object) -> Dash:
             f"dash must be None, 'solid', {', '.join(map(repr, LINE_TYPES))}, a 16-bit int "
             f"mask or a sequence of dash and gap lengths; got {v._show(dash)}"
         )
-    given = cast(Sequence[object], dash)
+    given = cast("Sequence[object]", dash)
     if len(given) == 0:
         raise ArgumentValueError("dash lengths must not be empty; use dash=None for a solid line")
     lengths = tuple(v.number(f"dash[{i}]", d) for i, d in enumerate(given))
@@ -205,7 +205,7 @@ class LineStyle:
     'dashed'
     """
 
-    __slots__ = ("_fields",)
+    __slots__ = ("_fields", "_hashed")
 
     _DEFAULTS = {"width": 1, "cap": "butt", "join": "miter", "miter_limit": 10.0,
                  "dash": None, "dash_phase": 0.0, "pen": None}
@@ -275,17 +275,27 @@ class LineStyle:
         clusters receive scenes holding line styles."""
         return LineStyle, tuple(self._fields[name] for name in self._DEFAULTS)
 
-    def _key(self) -> tuple[tuple[str, Any], ...]:
+    def _key(self) -> tuple[int, tuple[tuple[str, Any], ...]]:
+        """(hash, the fields as a tuple), made once: a style is immutable, and the
+        painter of an animation looks up every frame's styles by value."""
+        try:
+            key: tuple[int, tuple[tuple[str, Any], ...]] = object.__getattribute__(self, "_hashed")
+            return key
+        except AttributeError:
+            pass
         pen = self.pen
         if isinstance(pen, np.ndarray):
             pen = (pen.shape, pen.tobytes())
-        return tuple((k, pen if k == "pen" else val) for k, val in self._fields.items())
+        fields = tuple((k, pen if k == "pen" else val) for k, val in self._fields.items())
+        key = (hash(fields), fields)
+        object.__setattr__(self, "_hashed", key)
+        return key
 
     def __eq__(self, other: object) -> bool:
-        return isinstance(other, LineStyle) and self._key() == other._key()
+        return self is other or (isinstance(other, LineStyle) and self._key() == other._key())
 
     def __hash__(self) -> int:
-        return hash(self._key())
+        return self._key()[0]
 
     def __repr__(self) -> str:
         args = []

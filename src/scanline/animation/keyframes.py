@@ -312,20 +312,20 @@ class KeyFrames:
         times, flat = self._keys, self._flat
         hit = bisect.bisect_left(times, t)
         if hit < len(times) and times[hit] == t:
-            return cast(NDArray[np.float64], flat[hit].copy())   # a key time: the key value
+            return cast("NDArray[np.float64]", flat[hit].copy())   # a key time: the key value
         if len(times) == 1 or t < times[0]:
-            return cast(NDArray[np.float64], flat[0].copy())
+            return cast("NDArray[np.float64]", flat[0].copy())
         if t > times[-1]:
-            return cast(NDArray[np.float64], flat[-1].copy())
+            return cast("NDArray[np.float64]", flat[-1].copy())
         k = hit - 1                                 # times[k] < t < times[k + 1]
         s = min(max((t - times[k]) / (times[k + 1] - times[k]), 0.0), 1.0)
         eased = apply(self.ease[k], np.array([s]))
         if self.interpolation == "step":
-            return cast(NDArray[np.float64], (flat[k + 1] if eased[0] >= 1 else flat[k]).copy())
+            return cast("NDArray[np.float64]", (flat[k + 1] if eased[0] >= 1 else flat[k]).copy())
         if self._curve is None:
-            return cast(NDArray[np.float64], flat[k] + eased[0] * (flat[k + 1] - flat[k]))
+            return cast("NDArray[np.float64]", flat[k] + eased[0] * (flat[k + 1] - flat[k]))
         u = min(max(k + float(eased[0]), 0.0), len(flat) - 1.0)
-        return cast(NDArray[np.float64], self._curve.evaluate(np.array([u]))[0])
+        return cast("NDArray[np.float64]", self._curve.evaluate(np.array([u]))[0])
 
     def _evaluate(self, t: NDArray[np.float64]) -> NDArray[np.float64]:
         flat = self._flat

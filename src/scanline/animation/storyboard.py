@@ -36,19 +36,19 @@ def _texts(name: str, value: object, count: int) -> list[str]:
     if isinstance(value, (str, bytes)) or not hasattr(value, "__iter__"):
         raise ArgumentTypeError(f"{name} must be a sequence of strings, one per frame, got "
                                 f"{v._show(value)}")
-    texts = list(cast(Sequence[object], value))
+    texts = list(cast("Sequence[object]", value))
     if len(texts) != count:
         raise ArgumentValueError(f"give one label and caption per frame ({count}), got "
                                  f"{len(texts)} {name}")
     for k, text in enumerate(texts):
         if not isinstance(text, str):
             raise ArgumentTypeError(f"{name}[{k}] must be a string, got {v._show(text)}")
-    return cast(list[str], texts)
+    return cast("list[str]", texts)
 
 
 def panel_size(panel: object, name: str = "panel") -> tuple[int, int]:
     """``panel`` checked: (width, height), integers of at least 16 pixels."""
-    size = cast(Sequence[object], panel)
+    size = cast("Sequence[object]", panel)
     if isinstance(size, (str, bytes)) or not hasattr(size, "__len__") or len(size) != 2:
         raise ArgumentTypeError(f"{name} must be (width, height) in pixels, got {v._show(panel)}")
     return (v.positive_int(f"{name} width", size[0], 16),

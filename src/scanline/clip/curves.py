@@ -218,7 +218,7 @@ def _intervals(value: object) -> list[Sequence[float]]:
             isinstance(i, (list, tuple, np.ndarray)) and len(i) == 2 for i in value):
         raise ArgumentTypeError(f"intervals must be a list of (start, end) angle pairs, as "
                                 f"ellipse() returns, got {v._show(value)}")
-    return cast(list[Sequence[float]], list(value))
+    return cast("list[Sequence[float]]", list(value))
 
 
 def curve(c: Union[Flattenable, Points], window: w.WindowLike, tolerance: float = 0.25,

@@ -50,7 +50,7 @@ def rectangle(window: object, name: str = "window") -> tuple[float, float, float
     if isinstance(spec, (str, bytes)) or not hasattr(spec, "__len__"):
         raise ArgumentTypeError(
             f"{name} must be (xmin, ymin, xmax, ymax), got {v._show(window)}")
-    spec = cast(Sequence[object], spec)
+    spec = cast("Sequence[object]", spec)
     if len(spec) != 4:
         raise ArgumentValueError(
             f"{name} must be a rectangle (xmin, ymin, xmax, ymax) with 4 numbers, got "
@@ -188,4 +188,4 @@ def contains(ring: NDArray[np.float64], pts: NDArray[np.float64]) -> NDArray[np.
     d = np.roll(ring, -1, axis=0) - ring
     cross = (d[None, :, 0] * (pts[:, None, 1] - ring[None, :, 1])
              - d[None, :, 1] * (pts[:, None, 0] - ring[None, :, 0]))
-    return cast(NDArray[np.bool_], (cross >= 0).all(axis=1))
+    return cast("NDArray[np.bool_]", (cross >= 0).all(axis=1))

@@ -83,7 +83,7 @@ def _above_one(spec: object) -> bool:
     0..255)."""
     return type(spec) in (tuple, list) and any(
         isinstance(c, numbers.Integral) and not isinstance(c, bool) and int(c) > 1
-        for c in cast(Sequence[object], spec))
+        for c in cast("Sequence[object]", spec))
 
 
 def in_context(specs: Sequence[_Spec]) -> Sequence[_Spec | Channels]:
@@ -116,7 +116,7 @@ def in_context(specs: Sequence[_Spec]) -> Sequence[_Spec | Channels]:
     """
     if not any(_above_one(s) for s in specs):
         return specs
-    return [Channels(cast(Sequence[int], s)) if type(s) in (tuple, list) else s
+    return [Channels(cast("Sequence[int]", s)) if type(s) in (tuple, list) else s
             for s in specs]
 
 
@@ -224,7 +224,7 @@ def rgba(color: object, name: str = "color") -> RGBA:
         raise ArgumentValueError(f"{name}={color!r}: a gray level must be in 0..255")
     if isinstance(color, (tuple, list)) or hasattr(color, "__array__"):
         try:
-            values = (list(cast(Sequence[Any], color)) if not hasattr(color, "tolist")
+            values = (list(cast("Sequence[Any]", color)) if not hasattr(color, "tolist")
                       else cast(Any, color).tolist())
         except TypeError:
             values = None

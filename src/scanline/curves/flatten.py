@@ -173,7 +173,7 @@ def _flatten(curves: list[Curve], tolerance: float, method: str, name: Callable[
         polylines = _per_curve(points, firsts[np.cumsum(sizes) - sizes])
         for (i, _), poly in zip(members, polylines):
             out[i] = poly
-    return cast(list[NDArray[np.float64]], out)
+    return cast("list[NDArray[np.float64]]", out)
 
 
 def _per_curve(points: NDArray[np.float64], starts: NDArray[np.int64]) -> list[NDArray[np.float64]]:
@@ -228,7 +228,7 @@ def subdivide(segments: ArrayLike, tolerance: float, weighted: bool = True
                                      tolerance * tolerance, MAX_DEPTH, budget)
     if truncated:
         _too_many(tolerance, budget)
-    return cast(NDArray[np.float64], points), cast(NDArray[np.int64], firsts)
+    return cast("NDArray[np.float64]", points), cast("NDArray[np.int64]", firsts)
 
 
 def point_budget(degree: int) -> int:
@@ -344,7 +344,7 @@ def spline_pieces(homogeneous: NDArray[np.float64], knots: NDArray[np.float64], 
     values = np.empty((len(u), homogeneous.shape[1]))
     call(_k.de_boor, len(u) * order ** 2, v.kernel_array(homogeneous), v.kernel_array(knots),
          order, v.kernel_array(u), values)
-    return cast(NDArray[np.float64],
+    return cast("NDArray[np.float64]",
                 np.linalg.solve(collocation[None], values.reshape(len(a), order, -1)))
 
 
@@ -359,7 +359,7 @@ def _segment_distance(p: NDArray[np.float64], a: NDArray[np.float64], b: NDArray
     with np.errstate(invalid="ignore", divide="ignore"):
         t = np.where(len2 > 0, (ap * ab).sum(axis=2) / np.where(len2 > 0, len2, 1), 0.0)
     t = np.clip(t, 0.0, 1.0)
-    return cast(NDArray[np.float64], np.linalg.norm(ap - t[..., None] * ab, axis=2))
+    return cast("NDArray[np.float64]", np.linalg.norm(ap - t[..., None] * ab, axis=2))
 
 
 def _sampled(curve: Curve, tolerance: float) -> NDArray[np.float64]:

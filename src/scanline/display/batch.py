@@ -123,7 +123,7 @@ def areas(prims: Sequence[Primitive], m: NDArray[np.float64], rect: Window,
     pieces = np.split(verts, offsets[1:-1])
     cut = [i for i in range(len(pieces)) if keep[i] and not inside[i]]
     # without counts, clip.polygons returns the list of clipped polygons
-    polygons = cast(list[NDArray[np.float64]], clip.polygons([pieces[i] for i in cut], rect)
+    polygons = cast("list[NDArray[np.float64]]", clip.polygons([pieces[i] for i in cut], rect)
                     if cut else [])
     clipped = dict(zip(cut, polygons))
     out: list[NDArray[np.float64]] = [clipped.get(i, pieces[i]) for i in range(len(pieces))

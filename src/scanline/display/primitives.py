@@ -17,6 +17,7 @@ Attributes are validated when the primitive is made, so that a bad value is repo
 where it was given (the scene loader adds the key path), not when the file is drawn.
 """
 
+import functools
 import math
 import numbers
 from typing import Any, Optional
@@ -247,11 +248,7 @@ class Primitive:
 
     def _moved(self, lin: NDArray[np.float64], t: NDArray[np.float64]) -> dict[str, Any]:
         g = self.geometry
-
-        def move(p: NDArray[np.float64]) -> NDArray[np.float64]:
-            moved: NDArray[np.float64] = p @ lin.T + t
-            return moved
-
+        move = functools.partial(_move, lin.T, t)
         if self.kind in ("polyline3d", "mesh"):   # projected when interpreted
             return g
         if self.kind in ("polyline", "markers"):
@@ -266,6 +263,16 @@ class Primitive:
 
     def __repr__(self) -> str:
         return f"<{self.kind} primitive>"
+
+
+def _move(lin_t: NDArray[np.float64], t: NDArray[np.float64],
+          points: NDArray[np.float64]) -> NDArray[np.float64]:
+    """``points`` (rows) mapped by the linear part whose transpose is ``lin_t``, then
+    moved by ``t``.  (A module-level function: the annotations of a function defined
+    in a method are evaluated at every call, and a subscripted NDArray costs
+    microseconds there.)"""
+    moved: NDArray[np.float64] = points @ lin_t + t
+    return moved
 
 
 def text_frame(height: float, angle: float) -> NDArray[np.float64]:

@@ -65,7 +65,7 @@ _FULL = np.full(1, 255, np.uint8)
 
 def mode_code(fb: FrameBuffer) -> Tuple[int, ...]:
     """The blend kernels' mode token of ``fb`` (:mod:`scanline._kernels.variants`)."""
-    return cast(Tuple[int, ...], MODE[fb.mode])
+    return cast("Tuple[int, ...]", MODE[fb.mode])
 
 
 def table(fb: FrameBuffer) -> NDArray[np.uint8]:

@@ -198,7 +198,7 @@ def filled_ellipses(fb: "FrameBuffer", ellipses: ArrayLike,
 
 def _in_range(arr: NDArray[np.float64]) -> NDArray[np.bool_]:
     """The rows the antialiasing kernels take: every value within +-2**30."""
-    return cast(NDArray[np.bool_], np.abs(arr).max(axis=1, initial=0) <= v.COORD_LIMIT)
+    return cast("NDArray[np.bool_]", np.abs(arr).max(axis=1, initial=0) <= v.COORD_LIMIT)
 
 
 #: The largest vertex magnitude :func:`fills_flat` takes: the coverage arithmetic is

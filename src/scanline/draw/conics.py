@@ -68,7 +68,7 @@ def _exact_rows(arr: NDArray[np.float64], circle: bool) -> NDArray[np.bool_]:
         return ok & (a[:, 2] <= v.COORD_LIMIT)
     with np.errstate(over="ignore"):                   # inf is beyond the limit too
         # (ndarray.max(axis=...) is Any to numpy's stubs)
-        return cast(NDArray[np.bool_], ok & (a[:, 2:].max(axis=1, initial=0) <= ELLIPSE_AXIS_LIMIT)
+        return cast("NDArray[np.bool_]", ok & (a[:, 2:].max(axis=1, initial=0) <= ELLIPSE_AXIS_LIMIT)
                     & (a[:, 2] * a[:, 3] <= ELLIPSE_PRODUCT_LIMIT))
 
 

@@ -70,7 +70,7 @@ def region_work(rx: ArrayLike, ry: ArrayLike, width: int, height: int) -> float:
 
 def _shape(is_circle: bool) -> tuple[int, ...]:
     """The kernels' shape token of a circle or an ellipse."""
-    return cast(Tuple[int, ...], token(k.CIRCLE if is_circle else k.ELLIPSE))
+    return cast("Tuple[int, ...]", token(k.CIRCLE if is_circle else k.ELLIPSE))
 
 
 def _paint(fb: FrameBuffer, color: Optional[Color], style: Optional[FillStyle], xc: int,

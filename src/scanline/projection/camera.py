@@ -148,9 +148,9 @@ def _viewport(value: object) -> tuple[float, float, float, float, float, float]:
         raise ArgumentTypeError(
             "viewport must be (xmin, ymin, zmin, xmax, ymax, zmax) within the unit cube, "
             f"got {v._show(value)}")
-    b = cast(tuple[float, float, float, float, float, float],
+    b = cast("tuple[float, float, float, float, float, float]",
              tuple(v.number(f"viewport[{i}]", c)
-                   for i, c in enumerate(cast(Sequence[object], value))))
+                   for i, c in enumerate(cast("Sequence[object]", value))))
     if not (0.0 <= b[0] < b[3] <= 1.0 and 0.0 <= b[1] < b[4] <= 1.0
             and 0.0 <= b[2] < b[5] <= 1.0):
         raise ArgumentValueError(
@@ -432,7 +432,7 @@ class Camera:
         >>> scale.tolist(), offset.tolist()
         ([100.0, 50.0, 1.0], [0.0, 0.0, 0.0])
         """
-        corners = cast(Sequence[object], box)
+        corners = cast("Sequence[object]", box)
         if isinstance(corners, (str, bytes)) or not hasattr(corners, "__len__") or len(corners) != 4:
             raise ArgumentTypeError(f"box must be (x0, y0, x1, y1), four numbers, got "
                                     f"{v._show(box)}")

@@ -79,9 +79,9 @@ def _window(window: object) -> tuple[float, float, float, float]:
     if isinstance(window, (str, bytes)) or not hasattr(window, "__len__") or len(window) != 4:
         raise ArgumentTypeError(
             f"window must be (xmin, ymin, xmax, ymax) on the view plane, got {v._show(window)}")
-    w = cast(tuple[float, float, float, float],
+    w = cast("tuple[float, float, float, float]",
              tuple(v.number(f"window[{i}]", c)
-                   for i, c in enumerate(cast(Sequence[object], window))))
+                   for i, c in enumerate(cast("Sequence[object]", window))))
     if not (w[0] < w[2] and w[1] < w[3]) or not all(
             math.isfinite(d) and d > 0 for d in (w[2] - w[0], w[3] - w[1])):
         raise ArgumentValueError(
@@ -103,7 +103,7 @@ def frame(direction: ArrayLike, up: ArrayLike, name: str = "direction",
     length = float(np.sqrt(u @ u))
     if not length > 1e-9:
         raise ArgumentValueError(
-            f"{up_name}={v._show(tuple(cast(Iterable[object], up)))} is parallel to the view direction "
+            f"{up_name}={v._show(tuple(cast('Iterable[object]', up)))} is parallel to the view direction "
             f"{v._show(tuple(n.tolist()))}: it gives no up direction on the view plane; "
             "use a view-up vector that is not parallel to it")
     u = u / length
@@ -209,7 +209,7 @@ class Projection:
             from ..transform3d.arrays import matrix4
 
             self.orientation = matrix4("orientation", orientation)
-        pair = cast(Sequence[object], shear)
+        pair = cast("Sequence[object]", shear)
         if isinstance(pair, (str, bytes)) or not hasattr(pair, "__len__") or len(pair) != 2:
             raise ArgumentTypeError(f"shear must be a pair (a, b), got {v._show(shear)}")
         self.shear = (v.number("shear[0]", pair[0]), v.number("shear[1]", pair[1]))
@@ -822,7 +822,7 @@ def parallel(direction: ArrayLike, window: ArrayLike = DEFAULT_WINDOW,
     from ..transform3d.arrays import vector
 
     px, py, pz = vector("direction", direction)
-    shown = v._show(tuple(cast(Iterable[object], direction)))
+    shown = v._show(tuple(cast("Iterable[object]", direction)))
     if pz == 0.0 or not math.isfinite(px / pz) or not math.isfinite(py / pz):
         raise ArgumentValueError(
             f"direction={shown} is parallel (or nearly) to the view "

@@ -158,7 +158,7 @@ def refract(direction: ArrayLike, normal: ArrayLike, n1: float,
     d = _unit("direction", direction)
     n, cos_i = _facing(d, _unit("normal", normal))
     a, b = _index("n1", n1), _index("n2", n2)
-    _, cos_t = cast(Tuple[float, float], python(kernel)(cos_i, a, b))
+    _, cos_t = cast("Tuple[float, float]", python(kernel)(cos_i, a, b))
     if cos_t < 0:
         return None
     out = np.empty(3)

@@ -178,7 +178,7 @@ class FramePlan:
                     # product of affine steps is affine)
                     n, n_inv = self._normalization[vp]
                     out.transformation = _call(f"{path}.transform", tf.compose,
-                                               tf.compose(n, m, n_inv))
+                                               n @ m @ n_inv)
                 if i in self.changed:
                     out.primitives = list(base.primitives)
                     held = scratch.segment("frame").primitives

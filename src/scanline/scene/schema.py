@@ -230,9 +230,11 @@ def transformation(steps: object, path: str) -> NDArray[np.float64]:
     >>> transformation([{"scale": 2}, {"translate": [1, 0]}], "transform") @ [1, 1, 1]
     array([3., 2., 1.])
     """
-    m = tf.compose()
+    m = np.eye(3)
     for i, step in enumerate(_list(steps, path)):
-        m = tf.compose(_step(step, f"{path}[{i}]"), m)
+        # (each step is a finite matrix made by sl.transform: the product needs no
+        # second check, which tf.compose would make of every factor, every frame)
+        m = _step(step, f"{path}[{i}]") @ m
     return m
 
 

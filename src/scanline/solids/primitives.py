@@ -189,7 +189,7 @@ class Primitive(Solid):
         """
         u = self.local(points)
         # numpy's stub: all(axis=) may be a scalar; here always (n,)
-        inside = cast(NDArray[np.bool_], ((u >= self.lo) & (u <= self.hi)).all(axis=1))
+        inside = cast("NDArray[np.bool_]", ((u >= self.lo) & (u <= self.hi)).all(axis=1))
         if self.quadric is not None:
             h = np.hstack([u, np.ones((len(u), 1))])
             inside &= np.einsum("ni,ij,nj->n", h, self.quadric, h) <= 0

@@ -55,7 +55,7 @@ def _height(value: object) -> Optional[float]:
 
 def _angle_from_up(up: object) -> float:
     try:
-        ux, uy = cast(tuple[object, object], up)    # a non-pair raises, caught below
+        ux, uy = cast("tuple[object, object]", up)    # a non-pair raises, caught below
     except (TypeError, ValueError):
         raise ArgumentTypeError(f"up must be a vector (ux, uy), got {v._show(up)}") from None
     ux = v.number("up[0]", ux)

@@ -55,7 +55,7 @@ def _run(method: str, p0: _Point3, p1: _Point3, vol: Volume,
     log = np.full((rows, columns), np.nan)
     ok, ends = k.trace_segment(three_d.method_token(method, vol), start, vol.planes, log)
     used = int(np.sum(~np.isnan(log[:, 0])))
-    return start, bool(ok), cast(NDArray[np.float64], ends), log[:used]
+    return start, bool(ok), cast("NDArray[np.float64]", ends), log[:used]
 
 
 def _volume(volume: Optional[_VolumeArg], w: Optional[Tuple[float, float]]) -> Volume:

@@ -280,7 +280,7 @@ def _axis_points(axis: object) -> tuple[NDArray[np.float64], NDArray[np.float64]
         raise ArgumentTypeError(
             f"axis must be 'x', 'y', 'z' or two points (p1, p2) of the rotation axis, got "
             f"{v._show(axis)}")
-    ends = cast(Sequence[object], axis)
+    ends = cast("Sequence[object]", axis)
     p1 = np.array(vector("axis[0]", ends[0]))
     p2 = np.array(vector("axis[1]", ends[1]))
     if (p1 == p2).all():

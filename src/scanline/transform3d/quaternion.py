@@ -371,7 +371,7 @@ class Quaternion:
                                      "successive axes must differ (e.g. 'zxz' or 'xyz')")
         given: object = [angles] if isinstance(angles, (numbers.Real, str)) else angles
         try:
-            values = list(cast(Iterable[object], given))
+            values = list(cast("Iterable[object]", given))
         except TypeError:
             raise ArgumentTypeError(f"angles must be {len(seq)} angle(s), got "
                                     f"{v._show(angles)}") from None

@@ -78,7 +78,7 @@ def octree(scene: "ScreenScene", options: Optional["MethodOptions"] = None) -> L
     if n == 0:
         return Layer(ids, depth)
     # numpy's stub: all(axis=) may be a scalar; here always (n,)
-    finite = cast(NDArray[np.bool_], np.isfinite(tri).all(axis=(1, 2)))
+    finite = cast("NDArray[np.bool_]", np.isfinite(tri).all(axis=(1, 2)))
     lo = np.where(finite[:, None], tri.min(axis=1), np.inf)
     hi = np.where(finite[:, None], tri.max(axis=1), -np.inf)
     # a hair wider, so that a fragment's depth rounded past its triangle's box still

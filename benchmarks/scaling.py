@@ -18,7 +18,8 @@ Workloads (fixed seeds; the same scenes as the topic benchmarks):
   segments (``animation.py``'s scene, four times the segments), gathered in order
   by ``Animation.images``: ``jobs=N`` worker processes, and a
   ``distributed.LocalCluster`` of N one-thread worker processes (started before the
-  clock, as a user's cluster is).
+  clock, as a user's cluster is), with Dask's default settings and again with the
+  workers' statistical profiler off (``distributed.worker.profile.enabled``).
 
 Threads are set with ``numba.set_num_threads(n)`` (the kernels' bands follow it);
 the processes and workers render with one thread each.  Each cell is the best of
@@ -191,16 +192,23 @@ def main():
                                                                progress=False)),
                                   repeats=repeats, n=n)
         table[name] = (f"{selection[1]} frames 640x480, 240 segments", times)
-        name, times = "frames Dask N", {}
-        for n in steps:
-            with LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                              dashboard_address=None) as cluster, Client(cluster) as client:
-                times[n] = report.add(name, "scanline", f"LocalCluster({n} workers)",
-                                      lambda: list(anim.images(selection, client=client,
-                                                               progress=False)),
-                                      repeats=repeats, n=n)
-        table[name] = (f"{selection[1]} frames, a LocalCluster of N 1-thread workers",
-                       times)
+        import dask
+
+        for name, profile in (("frames Dask N", True), ("frames Dask N, no profiler", False)):
+            times = {}
+            # (each worker samples its own stack every 10 ms for the dashboard unless
+            # distributed.worker.profile.enabled is off: about 6% of a frame here)
+            with dask.config.set({"distributed.worker.profile.enabled": profile}):
+                for n in steps:
+                    with LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
+                                      dashboard_address=None) as cluster, \
+                            Client(cluster) as client:
+                        times[n] = report.add(name, "scanline", f"LocalCluster({n} workers)",
+                                              lambda: list(anim.images(selection, client=client,
+                                                                       progress=False)),
+                                              repeats=repeats, n=n)
+            table[name] = (f"{selection[1]} frames, a LocalCluster of N 1-thread workers"
+                           + ("" if profile else ", the workers' profiler off"), times)
 
     markdown = render_table(table, steps, cores)
     print(markdown)

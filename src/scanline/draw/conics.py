@@ -215,6 +215,7 @@ def circles(fb: "FrameBuffer", circles: ArrayLike, color: Optional[Colors] = Non
     -###-----
     """
     attrs = strokes.styled(style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen)
+    target(fb)                       # (fb is checked before the rows)
     if attrs is None and v.integers_in_range(circles, 3) is not None:
         # integers in range (the common large batch): every row is exact, drawn as is
         _near_circles(fb, v.coordinate_array("circles", circles, 3, radius_columns=(2,)), color)

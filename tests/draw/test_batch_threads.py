@@ -164,3 +164,22 @@ def test_bad_thread_argument_is_refused_by_numba(count):
     """``numba.set_num_threads``, the argument form, refuses 0 and negatives itself."""
     with pytest.raises(ValueError):
         numba.set_num_threads(count)
+
+
+@pytest.mark.parametrize("dtype", [np.int64, np.int32, np.uint16])
+def test_integer_batches_draw_what_their_float_values_draw(dtype):
+    # integers in range skip the float round trip (_validate.integers_in_range): the
+    # pixels must be those of the same values as floats, which the agreement tests
+    # hold against scikit-image and OpenCV; the caller's array is not written
+    rng = np.random.default_rng(11)
+    segs = rng.integers(0, 60, (400, 4)).astype(dtype)
+    rings = np.concatenate([rng.integers(5, 55, (300, 2)), rng.integers(0, 5, (300, 1))],
+                           axis=1).astype(dtype)
+    kept = segs.copy(), rings.copy()
+    for draw, rows in ((sl.draw.lines, segs), (sl.draw.circles, rings)):
+        ints, floats = sl.FrameBuffer(64, 64), sl.FrameBuffer(64, 64)
+        draw(ints, rows, color="white")
+        draw(floats, rows.astype(np.float64), color="white")
+        assert np.array_equal(ints.to_array(), floats.to_array())
+        assert ints.to_array().any()
+    assert np.array_equal(segs, kept[0]) and np.array_equal(rings, kept[1])

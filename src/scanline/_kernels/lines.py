@@ -12,9 +12,9 @@ import math
 import numpy as np
 
 from ._jit import helper, inline, kernel
-from .raster import channels, put, store
+from .raster import channels, put
 from .spans import strip
-from .variants import BYTES, PACKED
+from .variants import PACKED
 
 #: Methods (token lengths, :mod:`scanline._kernels.variants`).
 BRESENHAM = 1
@@ -157,9 +157,10 @@ def bresenham_walk(flat, k, steps, p, two_dw, two_dw_minus_two_du, su, sv, n, c0
     :func:`bresenham_decide`'s, written as two selects that compile without a
     branch: a branch on the sign of p_k is mispredicted about once in three pixels
     of a random line.  The color comes as scalars and one loop is written per
-    channel count, so that the loop holds no array but ``flat`` (each array
-    handed to an inlined helper costs a reference-count increment and decrement,
-    atomic operations that took 30% of the time of a million short lines)."""
+    channel count, so that the per-line loop of :func:`draw_lines` holds no array
+    but ``flat`` (an array used anywhere in that loop, even in a branch not taken,
+    cost a reference-count increment and decrement per line: atomic operations
+    that took 30% of the time of a million short lines)."""
     if n == 1:
         for _ in range(steps):
             flat[k] = c0

@@ -63,8 +63,9 @@ def store(buf, y, x, color):
 def channels(colors, i):
     """Row ``i`` of the (N, n) uint8 ``colors`` as four scalars (the missing ones
     0): the color of a loop that writes a flat view of unpacked storage
-    (:func:`store_flat`) and holds no array but that view (each array an inlined
-    helper is handed costs an atomic reference-count increment and decrement)."""
+    (:func:`store_flat`) and holds no array but that view (each array used in a
+    loop over primitives costs an atomic reference-count increment and decrement
+    per primitive)."""
     n = colors.shape[1]
     return (colors[i, 0], colors[i, 1] if n > 1 else 0, colors[i, 2] if n > 2 else 0,
             colors[i, 3] if n > 3 else 0)

@@ -15,19 +15,22 @@ from tests.reference import peer
 
 
 class _Blocked:
-    """Frame 0 waits until the last frame has been rendered (or 60 s, recording that
-    it never was): a render that only refills behind the oldest chunk never sends the
-    last chunk while the first is out, a streaming one does."""
+    """Frame 0 waits until frame ``until`` (the last, by default) has been rendered (or
+    60 s, recording that it never was), then ``linger`` seconds more: a render that
+    only refills behind the oldest chunk never sends the last chunk while the first
+    is out, a streaming one does."""
 
-    def __init__(self, count):
-        self.count = count
+    def __init__(self, count, until=None, linger=0.0):
+        self.until = count - 1 if until is None else until
+        self.linger = linger
         self.last_done = threading.Event()
         self.saw_last = []
 
     def __call__(self, i):
         if i == 0:
             self.saw_last.append(self.last_done.wait(60))
-        if i == self.count - 1:
+            time.sleep(self.linger)
+        if i == self.until:
             self.last_done.set()
         return np.full((4, 6), i, np.uint8)
 
@@ -45,6 +48,26 @@ def test_a_slow_first_chunk_does_not_hold_the_others_back():
         images = list(Animation(render, frames=count, fps=10).images(client=client))
     assert render.saw_last == [True]
     # in order, whatever order they were rendered in
+    assert [int(np.asarray(im)[0, 0]) for im in images] == list(range(count))
+
+
+def test_chunks_left_when_the_window_fills_with_finished_ones_are_still_sent():
+    """20 frames on 2 workers are 17 chunks, one more than the 16 a render holds in
+    flight or waiting.  The first chunk comes back last, after chunks 1-15 (one
+    worker of two threads: the second thread renders them while the first waits):
+    then none is in flight and 16 wait for their turn, and the 17th must still be
+    sent once they are out (CI, 2026-12-06: a GIF rendered on Dask lacked its last
+    frame when the first chunk was slow)."""
+    distributed = peer("distributed")
+    count = 20
+    parts = render_module.chunks(range(count), 2)
+    assert len(parts) == 17 and list(parts[15]) == [18] and list(parts[16]) == [19]
+    render = _Blocked(count, until=18, linger=0.5)
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=2, processes=False,
+                                  dashboard_address=None) as cluster, \
+            distributed.Client(cluster) as client:
+        images = list(Animation(render, frames=count, fps=10).images(client=client))
+    assert render.saw_last == [True]
     assert [int(np.asarray(im)[0, 0]) for im in images] == list(range(count))
 
 

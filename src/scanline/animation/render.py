@@ -721,6 +721,9 @@ def _dask(render: RenderFunction, indices: Sequence[int], client: Client,
                     images = done.pop(turn)
                     turn += 1
                     yield from images
+                # the frames that waited are out: room for more (all in flight may
+                # have come back with the window full of waiting chunks)
+                refill()
         finally:
             if pending:
                 client.cancel(list(pending))

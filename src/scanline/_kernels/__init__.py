@@ -54,4 +54,13 @@ answer in about 3 s on a 2-core machine with an empty numba cache
    kernel's Python twin (``tests/test_first_use.py`` proves the twins equal the
    compiled kernels); a new entry point also gets a row in
    :data:`scanline.warmup.CALLS`.
+
+Measuring an edit
+-----------------
+numba's on-disk cache of a kernel is keyed by the kernel's own source file, not by
+the files of the helpers it calls: after editing a helper in another module (an
+``@inline`` one especially, whose code is copied into its callers), a kernel loaded
+from the cache still runs the old helper.  An installed package is not affected
+(every file of a new version is new), but before timing or testing an edit in a
+checkout, remove the cache: ``find src -name '*.nb[ic]' -delete``.
 """

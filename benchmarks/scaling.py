@@ -18,8 +18,8 @@ Workloads (fixed seeds; the same scenes as the topic benchmarks):
   segments (``animation.py``'s scene, four times the segments), gathered in order
   by ``Animation.images``: ``jobs=N`` worker processes, and a
   ``distributed.LocalCluster`` of N one-thread worker processes (started before the
-  clock, as a user's cluster is), with Dask's default settings and again with the
-  workers' statistical profiler off (``distributed.worker.profile.enabled``).
+  clock, as a user's cluster is), with Dask's default settings and again started
+  under ``sl.animation.QUIET_WORKERS`` (event-loop tick 1 s, profiler off).
 
 Threads are set with ``numba.set_num_threads(n)`` (the kernels' bands follow it);
 the processes and workers render with one thread each.  Each cell is the best of
@@ -194,11 +194,12 @@ def main():
         table[name] = (f"{selection[1]} frames 640x480, 240 segments", times)
         import dask
 
-        for name, profile in (("frames Dask N", True), ("frames Dask N, no profiler", False)):
+        for name, settings in (("frames Dask N", {}),
+                               ("frames Dask N, quiet workers", sl.animation.QUIET_WORKERS)):
             times = {}
-            # (each worker samples its own stack every 10 ms for the dashboard unless
-            # distributed.worker.profile.enabled is off: about 6% of a frame here)
-            with dask.config.set({"distributed.worker.profile.enabled": profile}):
+            # (a worker's event-loop tick and profiler wake while the frame runs: about
+            # a fifth of a frame with the defaults; docs/animation.md)
+            with dask.config.set(settings):
                 for n in steps:
                     with LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
                                       dashboard_address=None) as cluster, \
@@ -208,7 +209,8 @@ def main():
                                                                        progress=False)),
                                               repeats=repeats, n=n)
             table[name] = (f"{selection[1]} frames, a LocalCluster of N 1-thread workers"
-                           + ("" if profile else ", the workers' profiler off"), times)
+                           + (", started under sl.animation.QUIET_WORKERS" if settings else ""),
+                           times)
 
     markdown = render_table(table, steps, cores)
     print(markdown)

@@ -36,15 +36,15 @@ from .morph import Equalization, beier_neely, equalization, equalize, morph, war
 from .motion import ballistic, bouncing_ball
 from .output import Animation
 from .paths import MotionPath
-from .render import SchedulerUnreachable
+from .render import QUIET_WORKERS, SchedulerUnreachable, worker_environment
 from .rotations import ROTATION_INTERPOLATIONS, RotationKeyFrames
 from .storyboard import contact_sheet
 from .timing import FramePlan, duration_of, frame_count, frames_needed, inbetween_times
 
 __all__ = ["Animation", "Chain", "Drag", "DynamicsError", "EASINGS", "Equalization", "Force",
            "FramePlan", "Gravity", "INTERPOLATIONS", "KeyFrames", "MotionPath", "Particles",
-           "Plane", "ROTATION_INTERPOLATIONS", "Reach", "RotationKeyFrames", "SPACINGS",
+           "Plane", "QUIET_WORKERS", "ROTATION_INTERPOLATIONS", "Reach", "RotationKeyFrames", "SPACINGS",
            "SchedulerUnreachable", "Spring", "Timeline",
            "UnreachableTarget", "ballistic", "beier_neely", "bouncing_ball", "contact_sheet",
            "cubic_bezier", "duration_of", "ease", "equalization", "equalize", "frame_count",
-           "frames_needed", "inbetween_times", "morph", "warp"]
+           "frames_needed", "inbetween_times", "morph", "warp", "worker_environment"]

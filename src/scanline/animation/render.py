@@ -27,7 +27,7 @@ import signal
 import threading
 import time
 import typing
-from types import ModuleType
+from types import MappingProxyType, ModuleType
 from typing import Any, Callable, Generator, Generic, Iterable, Iterator, NoReturn, Sequence, TypeVar
 
 import numpy as np
@@ -52,6 +52,45 @@ RenderFunction = Callable[[int], object]
 
 #: Seconds to wait for a Dask scheduler given by address.
 CONNECT_TIMEOUT = 10.0
+
+#: Dask settings under which a worker's own threads keep out of the frames' way: set
+#: them where the workers start (``with dask.config.set(QUIET_WORKERS):`` around a
+#: ``LocalCluster``, or :func:`worker_environment` for ``dask worker`` processes).
+#: While another thread of a worker waits for the interpreter lock -- the event loop
+#: at each ``tick`` (every 20 ms by default), the statistical profiler at each sample
+#: (every 10 ms) -- every brief release of the lock by the frame's thread (numpy's
+#: fancy indexing, ``arange``, a compiled kernel) wakes it, and it finds the lock
+#: taken again; a frame of the scaling benchmark took 1.2x its time in a plain process
+#: with Dask's defaults and 1.0x with these (``docs/animation.md``).  The tick only
+#: measures how long the event loop was blocked, the monitors feed the dashboard and
+#: the memory limits (checked every 5 s instead of 0.1 s), and the profile only the
+#: dashboard's profile page.
+QUIET_WORKERS: typing.Mapping[str, object] = MappingProxyType({
+    "distributed.admin.tick.interval": "1s",
+    "distributed.worker.profile.enabled": False,
+    "distributed.admin.system-monitor.interval": "5s",
+    "distributed.worker.memory.monitor-interval": "5s",
+})
+
+
+def worker_environment() -> dict[str, str]:
+    """:data:`QUIET_WORKERS` as environment variables, for workers started by
+    ``dask worker`` (or a job script) rather than from this process.
+
+    Returns
+    -------
+    dict
+        Variable name to value, as Dask reads them (``DASK_`` and the setting's
+        path, ``__`` between its parts).
+
+    Examples
+    --------
+    >>> from scanline.animation import worker_environment
+    >>> worker_environment()["DASK_DISTRIBUTED__WORKER__PROFILE__ENABLED"]
+    'False'
+    """
+    return {"DASK_" + key.upper().replace(".", "__").replace("-", "_"): str(value)
+            for key, value in QUIET_WORKERS.items()}
 
 
 class SchedulerUnreachable(ScanlineError):

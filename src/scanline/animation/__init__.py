@@ -43,8 +43,8 @@ from .timing import FramePlan, duration_of, frame_count, frames_needed, inbetwee
 
 __all__ = ["Animation", "Chain", "Drag", "DynamicsError", "EASINGS", "Equalization", "Force",
            "FramePlan", "Gravity", "INTERPOLATIONS", "KeyFrames", "MotionPath", "Particles",
-           "Plane", "QUIET_WORKERS", "ROTATION_INTERPOLATIONS", "Reach", "RotationKeyFrames", "SPACINGS",
-           "SchedulerUnreachable", "Spring", "Timeline",
+           "Plane", "QUIET_WORKERS", "ROTATION_INTERPOLATIONS", "Reach", "RotationKeyFrames",
+           "SPACINGS", "SchedulerUnreachable", "Spring", "Timeline",
            "UnreachableTarget", "ballistic", "beier_neely", "bouncing_ball", "contact_sheet",
            "cubic_bezier", "duration_of", "ease", "equalization", "equalize", "frame_count",
            "frames_needed", "inbetween_times", "morph", "warp", "worker_environment"]

@@ -34,12 +34,11 @@ def draw_in_calls(width, height, tri, att, steps):
     """The COLOR/TEST kernel run as ``steps`` calls (start 0 .. steps - 1), one after
     another: each call draws its own bands."""
     n = len(tri)
-    rows, starts, order, _ = bin_bands(tri, height)
+    bins, _ = bin_bands(tri, np.ones((n, 3)), att, np.zeros(n, np.int64), height)
     buf = np.zeros((height, width, att.shape[2]), np.uint8)
     zbuf = np.full((height, width), np.inf)
     for start in range(steps):
-        k.raster_triangles(start, steps, token(k.COLOR), token(k.TEST), tri, np.ones((n, 3)),
-                           att, np.zeros(n, np.int64), rows, starts, order, zbuf,
+        k.raster_triangles(start, steps, token(k.COLOR), token(k.TEST), *bins, zbuf,
                            np.empty((1, 1)), buf, np.empty((1, 1, 1)),
                            np.empty((1, 1), np.int64))
     return buf, zbuf
@@ -223,33 +222,42 @@ def test_shading_calls_sharing_the_bands_write_every_pixel_once():
 @pytest.mark.parametrize("threads", [1, 2, 3])
 def test_binning_lists_each_band_s_triangles_in_input_order(threads, monkeypatch):
     # the two passes of the counting sort run in chunks, one per thread: whatever the
-    # chunks, band b lists exactly the triangles whose rows meet it, in input order
-    # (found here by numpy from each triangle's lowest and highest y)
+    # chunks, band b holds exactly the triangles whose rows meet it, in input order,
+    # with their 1/w, attributes and ids (found here by numpy from each triangle's
+    # lowest and highest y)
     rng = np.random.default_rng(7)
-    tri = random_triangles(rng, 300_000, 200, 150, 40)
+    n = 300_000
+    tri = random_triangles(rng, n, 200, 150, 40)
     tri[::97, :, 1] = np.nan                        # covers no row
+    q = rng.uniform(0.5, 2, size=(n, 3))
+    att = rng.uniform(0, 255, size=(n, 3, 2))
+    ids = rng.integers(0, 1 << 40, n)
     monkeypatch.setattr(_threads, "threads", lambda: threads)
-    rows, starts, order, area = bin_bands(tri, 150)
+    (ptri, pq, patt, pids, starts), area = bin_bands(tri, q, att, ids, 150)
     y = tri[:, :, 1]
     with np.errstate(invalid="ignore"):
         first = np.maximum(np.floor(y.min(axis=1)) + 1, 0)
         last = np.minimum(np.floor(y.max(axis=1)), 149)
     met = ~np.isnan(first) & (first <= last)
-    assert np.array_equal(rows[met, 0], first[met]) and np.array_equal(rows[met, 1], last[met])
+    assert len(starts) == 150 // k.BAND + 2 and starts[0] == 0
     for b in range(len(starts) - 1):
         lo, hi = b * k.BAND, (b + 1) * k.BAND - 1
         expected = np.flatnonzero(met & (first <= hi) & (last >= lo))
-        assert np.array_equal(order[starts[b]:starts[b + 1]], expected)
-    assert area > 0
+        band = slice(starts[b], starts[b + 1])
+        assert np.array_equal(pids[band], ids[expected])
+        assert np.array_equal(ptri[band], tri[expected])
+        assert np.array_equal(pq[band], q[expected]) and np.array_equal(patt[band], att[expected])
+    assert starts[-1] == len(ptri) and area > 0
 
 
 def test_the_work_estimate_counts_the_boxes():
     tri = np.array([[(0.0, 0.0, 0), (10.0, 0.0, 0), (0.0, 10.0, 0)],
                     [(5.0, 5.0, 0), (5.0, 5.0, 0), (5.0, 5.0, 0)]])
-    rows, starts, order, area = bin_bands(tri, 20)
+    (ptri, _, _, pids, starts), area = bin_bands(tri, np.ones((2, 3)), np.zeros((2, 3, 0)),
+                                                 np.arange(2), 20)
     # rows 1..10 (the bottom edge on row 0 is outside), 11 pixels wide; the point
     # covers no row
-    assert area == 10 * 11.0 and rows.tolist() == [[1, 10], [6, 5]]
+    assert area == 10 * 11.0 and pids.tolist() == [0] and starts.tolist() == [0, 1]
 
 
 @pytest.mark.parametrize("ids_only", [False, True])

@@ -526,7 +526,7 @@ def covered(final, x0, x1, y0, y1):
 def depth_plane(tri, t, g):
     """The depth of triangle ``t`` as a function of the screen, (value at vertex 0,
     d/dx, d/dy) into ``g``, computed as the z-buffer's setup computes it
-    (:func:`scanline._kernels.raster3d.setup`, its first row) so both find the same
+    (:func:`scanline._kernels.raster3d.planes`, its first row) so both find the same
     depths; False where the triangle covers no pixel (zero area, not finite)."""
     x0 = tri[t, 0, 0]
     y0 = tri[t, 0, 1]
@@ -561,13 +561,14 @@ def draw_leaf(tri, entries, e0, e1, px0, px1, py0, py1, z0, z1, ids, depth, fina
         t = entries[e]
         if t < 0 or t >= ntri or not depth_plane(tri, t, g):
             continue
-        low, mid, high = rising(tri, t)
+        low, mid, high = rising(tri[t, 0, 1], tri[t, 1, 1], tri[t, 2, 1])
         r0 = max(int(math.floor(max(tri[t, low, 1], -2.0))) + 1, py0)
         r1 = min(int(math.floor(min(tri[t, high, 1], height + 1.0))), py1)
         xt = tri[t, 0, 0]
         yt = tri[t, 0, 1]
         for y in range(r0, r1 + 1):
-            kl, kr = span_limits(tri, t, y, low, mid, high, width)
+            kl, kr = span_limits(y, tri[t, low, 0], tri[t, low, 1], tri[t, mid, 0],
+                                 tri[t, mid, 1], tri[t, high, 0], tri[t, high, 1], width)
             for x in range(max(kl, px0), min(kr, px1 + 1)):
                 if final[y, x]:
                     continue

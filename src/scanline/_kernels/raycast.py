@@ -18,7 +18,7 @@ import numpy as np
 from numba import prange
 
 from ._jit import kernel, parallel_kernel
-from .raster3d import rising, setup, span_limits
+from .raster3d import planes, rising, span_limits
 
 #: Tile size (pixels, a power of two) and its shift.
 TILE_SHIFT = 4
@@ -89,12 +89,12 @@ def bin_tiles(boxes, tiles_x, starts, order):
 
 @kernel
 def setups(tri, q, att, g, ok, rank):
-    """Every triangle's linear functions (:func:`raster3d.setup`) into ``g`` (N, K +
+    """Every triangle's linear functions (:func:`raster3d.planes`) into ``g`` (N, K +
     2, 3), ``ok[t]`` whether it covers anything, and ``rank[t]`` its vertices by
     rising y."""
+    planes(tri, q, att, np.int64(0), tri.shape[0], g, ok)   # (a literal 0: a second compile)
     for t in range(tri.shape[0]):
-        ok[t] = setup(tri, q, att, t, g[t])
-        low, mid, high = rising(tri, t)
+        low, mid, high = rising(tri[t, 0, 1], tri[t, 1, 1], tri[t, 2, 1])
         rank[t, 0] = low
         rank[t, 1] = mid
         rank[t, 2] = high
@@ -122,7 +122,10 @@ def cast_rays(tri, ids, g, ok, rank, tiles_x, starts, order, zbuf, abuf, idbuf):
                     high = rank[t, 2]
                     if not (tri[t, low, 1] < y and y <= tri[t, high, 1]):
                         continue
-                    kl, kr = span_limits(tri, t, y, low, rank[t, 1], high, width)
+                    mid = rank[t, 1]
+                    kl, kr = span_limits(y, tri[t, low, 0], tri[t, low, 1], tri[t, mid, 0],
+                                         tri[t, mid, 1], tri[t, high, 0], tri[t, high, 1],
+                                         width)
                     if not (kl <= x and x < kr):
                         continue
                     fx = x - tri[t, 0, 0]

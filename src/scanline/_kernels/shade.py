@@ -49,7 +49,7 @@ import math
 import numpy as np
 
 from ._jit import helper, inline, kernel
-from .raster3d import setup
+from .raster3d import SETUP_BATCH, planes
 from .variants import GRAY, RGBA, token
 
 #: Rows per band of :func:`shade_pixels` (the bands are shaded in parallel).
@@ -129,20 +129,26 @@ def encode(value, table, thresholds):
 
 
 @helper
-def table_start(tri, q, bary, t, f, nf, g, table):
-    """The start of row ``t`` of an attribute table: x0, y0 (the triangle's vertex 0)
-    and the (value, d/dx, d/dy) of 1/w, with the rasterizer's functions in ``g``
-    (:func:`~scanline._kernels.raster3d.setup`).  False, the row all NaN, for a
-    triangle that covers no pixel or whose facet ``f`` is not below ``nf``."""
-    if not (setup(tri, q, bary, t, g) and f >= 0 and f < nf):
-        for j in range(table.shape[1]):
-            table[t, j] = math.nan
-        return False
-    table[t, 0] = tri[t, 0, 0]
-    table[t, 1] = tri[t, 0, 1]
-    for c in range(3):
-        table[t, 2 + c] = g[1, c]
-    return True
+def table_starts(tri, q, bary, tface, nf, e0, e1, g, ok, table):
+    """The start of rows ``e0 .. e1 - 1`` of an attribute table: x0, y0 (the
+    triangle's vertex 0) and the (value, d/dx, d/dy) of 1/w, with the rasterizer's
+    functions of triangle ``t`` in ``g[t - e0]``
+    (:func:`~scanline._kernels.raster3d.planes`).  ``ok[t - e0]`` False, the row
+    all NaN, for a triangle that covers no pixel or whose facet is not below
+    ``nf``."""
+    planes(tri, q, bary, e0, e1, g, ok)
+    for t in range(e0, e1):
+        s = t - e0
+        f = tface[t]
+        if not (ok[s] and f >= 0 and f < nf):
+            ok[s] = False
+            for j in range(table.shape[1]):
+                table[t, j] = math.nan
+            continue
+        table[t, 0] = tri[t, 0, 0]
+        table[t, 1] = tri[t, 0, 1]
+        for c in range(3):
+            table[t, 2 + c] = g[s, 1, c]
 
 
 @kernel
@@ -157,18 +163,22 @@ def triangle_attributes(lo, hi, tri, q, bary, tface, world, normals, colors, fro
     the vertex intensities of ``colors`` (5 + 3 x 3).  ``tri``, ``q`` and ``bary``
     (T, 3, 2) as the rasterizer takes them (:mod:`scanline._kernels.raster3d`, the
     barycentrics as the attributes), ``tface`` (T,) the triangles' faces.  The
-    rasterizer's :func:`~scanline._kernels.raster3d.setup` gives the functions of
+    rasterizer's :func:`~scanline._kernels.raster3d.planes` gives the functions of
     1/w, lambda_1 / w and lambda_2 / w; an attribute A is A_0 + lambda_1 (A_1 - A_0)
     + lambda_2 (A_2 - A_0), so its function times 1/w is A_0 (1/w) + (A_1 - A_0)
     (lambda_1 / w) + (A_2 - A_0) (lambda_2 / w).  A triangle that covers no pixel,
     or of no face, gets NaN."""
     nf = front.shape[0]
     kk = (table.shape[1] - 5) // 3
-    g = np.empty((4, 3))
+    g = np.empty((SETUP_BATCH, 4, 3))
+    ok = np.empty(SETUP_BATCH, np.bool_)
     for t in range(lo, hi):
-        f = tface[t]
-        if not table_start(tri, q, bary, t, f, nf, g, table):
+        s = (t - lo) % SETUP_BATCH
+        if s == 0:
+            table_starts(tri, q, bary, tface, nf, t, min(t + SETUP_BATCH, hi), g, ok, table)
+        if not ok[s]:
             continue
+        f = tface[t]
         flip = 1.0 if front[f] else -1.0
         for a in range(kk):
             ch = a % 3
@@ -191,7 +201,7 @@ def triangle_attributes(lo, hi, tri, q, bary, tface, world, normals, colors, fro
             d1 = v1 - v0
             d2 = v2 - v0
             for c in range(3):
-                table[t, 5 + 3 * a + c] = v0 * g[1, c] + d1 * g[2, c] + d2 * g[3, c]
+                table[t, 5 + 3 * a + c] = v0 * g[s, 1, c] + d1 * g[s, 2, c] + d2 * g[s, 3, c]
 
 
 @kernel

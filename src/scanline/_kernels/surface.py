@@ -4,7 +4,7 @@ is the reference; :mod:`scanline.shading.surface` says what is computed).
 
 Per drawn triangle, :func:`attribute_table` makes the screen-space linear functions
 of 1/w and of K attributes times 1/w (the rasterizer's
-:func:`~scanline._kernels.raster3d.setup`); per pixel, :func:`textured_pixels`
+:func:`~scanline._kernels.raster3d.planes`); per pixel, :func:`textured_pixels`
 evaluates them and divides by 1/w's (perspective-correct), so that the texture
 coordinates u, v and their screen derivatives (du/dx = (d(u/w)/dx - u d(1/w)/dx) /
 (1/w), which choose a trilinear texture's levels) are exact for the pixel's point.
@@ -21,8 +21,9 @@ chunked lighting and store this kernel calls.
 import numpy as np
 
 from ._jit import kernel
+from .raster3d import SETUP_BATCH
 from .shade import (BAND, CHUNK, CR, FIELDS, IR, NX, PHONG, PX, light_chunk, light_setup,
-                    store_chunk, table_start, triangle_run)
+                    store_chunk, table_starts, triangle_run)
 from .texture import sample_run
 
 #: Scratch fields after the lighting's: u, v, du/dx, dv/dx, du/dy, dv/dy and w (the
@@ -43,11 +44,15 @@ def attribute_table(lo, hi, tri, q, bary, tface, attributes, k, uv, table):
     or of no facet."""
     nf = min(attributes.shape[0], uv.shape[0])
     k = min(max(k, 0), attributes.shape[2], (table.shape[1] - 11) // 3)
-    g = np.empty((4, 3))
+    g = np.empty((SETUP_BATCH, 4, 3))
+    ok = np.empty(SETUP_BATCH, np.bool_)
     for t in range(lo, hi):
-        f = tface[t]
-        if not table_start(tri, q, bary, t, f, nf, g, table):
+        s = (t - lo) % SETUP_BATCH
+        if s == 0:
+            table_starts(tri, q, bary, tface, nf, t, min(t + SETUP_BATCH, hi), g, ok, table)
+        if not ok[s]:
             continue
+        f = tface[t]
         for a in range(k + 2):
             if a < k:
                 v0 = attributes[f, 0, a]
@@ -58,7 +63,7 @@ def attribute_table(lo, hi, tri, q, bary, tface, attributes, k, uv, table):
                 d1 = uv[f, 1, a - k] - v0
                 d2 = uv[f, 2, a - k] - v0
             for c in range(3):
-                table[t, 5 + 3 * a + c] = v0 * g[1, c] + d1 * g[2, c] + d2 * g[3, c]
+                table[t, 5 + 3 * a + c] = v0 * g[s, 1, c] + d1 * g[s, 2, c] + d2 * g[s, 3, c]
 
 
 @kernel

@@ -62,6 +62,8 @@ def _far(tri: NDArray[np.float64], q: NDArray[np.float64],
     xy = tri[:, :, :2]
     if max(xy.max(), -xy.min()) <= v.COORD_LIMIT:
         return tri, q, att
+    if len(q) == 0:
+        q = np.ones((len(tri), 3))
     far = np.abs(xy).max(axis=(1, 2)) > v.COORD_LIMIT
     rows = np.concatenate([tri, q[:, :, None], att * q[:, :, None]], axis=2)
     pieces, owner = guard.triangles(rows[far])
@@ -74,8 +76,9 @@ def _far(tri: NDArray[np.float64], q: NDArray[np.float64],
 
 
 def _inverse_w(w: Optional[ArrayLike], n: int) -> NDArray[np.float64]:
+    """1/w (N, 3) for the kernels; no rows when ``w`` is None (1 everywhere)."""
     if w is None:
-        return np.ones((n, 3))
+        return np.empty((0, 3))
     a = v.real_array("w", w, "(N, 3)")
     if a.shape != (n, 3):
         raise ArgumentValueError(f"w must have shape ({n}, 3): the clip w of each vertex, "
@@ -111,32 +114,42 @@ def _vertex_colors(fb: FrameBuffer, colors: Optional[Union[Colors, NDArray[np.nu
     return v.kernel_array(np.repeat(per_face[:, None, :], 3, axis=1))
 
 
-def bin_bands(tri: NDArray[np.float64], height: int
-              ) -> Tuple[NDArray[np.int64], NDArray[np.int64], NDArray[np.int64], float]:
-    """The (N, 3, 3) triangles binned by band of :data:`~scanline._kernels.raster3d.BAND`
-    rows for :func:`~scanline._kernels.raster3d.raster_triangles`: ``(rows, starts,
-    order, area)``, where ``rows[t]`` is triangle ``t``'s first and last raster row
-    (first > last: none), ``order[starts[b]:starts[b + 1]]`` lists the triangles
-    meeting band ``b`` in input order, and ``area`` is the work estimate (the
+#: The binned triangles: each band's triangles in input order, their vertices (E, 3,
+#: 3), 1/w (E, 3), attributes (E, 3, K) and ids (E,), and where each band starts
+#: (bands + 1,).
+Bins = Tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64], NDArray[np.int64],
+             NDArray[np.int64]]
+
+
+def bin_bands(tri: NDArray[np.float64], q: NDArray[np.float64], att: NDArray[np.float64],
+              ids: NDArray[np.int64], height: int) -> Tuple[Bins, float]:
+    """The (N, 3, 3) triangles with their 1/w (N, 3; or no rows: 1 everywhere),
+    attributes (N, 3, K) and ids (N,; or none) binned by band of :data:`~scanline._kernels.raster3d.BAND` rows for
+    :func:`~scanline._kernels.raster3d.raster_triangles`: ``((tri, q, att, ids,
+    starts), area)``, where entries ``starts[b] .. starts[b + 1] - 1`` of the four
+    arrays are the triangles meeting band ``b``, in input order (a triangle meeting
+    several bands is copied into each), and ``area`` is the work estimate (the
     summed areas of their boxes).  A counting sort whose two passes run on every
     core (:func:`~scanline._kernels.raster3d.bin_count`, then
-    :func:`~scanline._kernels.raster3d.bin_scatter` into the slots the counts give
-    each chunk)."""
+    :func:`~scanline._kernels.raster3d.bin_pack` into the slots the counts give each
+    chunk)."""
     from .._kernels import raster3d as k
     from .._kernels._threads import call_in_chunks
 
     n = len(tri)
-    rows = np.empty((n, 2), np.int64)
-    parts = call_in_chunks(k.bin_count, 4 * n, n, lambda lo, hi: (tri, height, lo, hi, rows))
+    parts = call_in_chunks(k.bin_count, 4 * n, n, lambda lo, hi: (tri, height, lo, hi))
     counts = np.stack([c for _, (c, _) in parts])           # (chunks, bands)
     starts = np.concatenate([[0], np.cumsum(counts.sum(axis=0))])
     # a chunk's slot in band b: after the band's triangles of the chunks before it
     fill = {lo: starts[:-1] + np.cumsum(counts, axis=0)[i] - counts[i]
             for i, (lo, _) in enumerate(parts)}
-    order = np.empty(int(starts[-1]), np.int64)
-    call_in_chunks(k.bin_scatter, 2 * n, n, lambda lo, hi: (rows, lo, hi, fill[lo], order),
+    e = int(starts[-1])
+    packed = (np.empty((e, 3, 3)), np.empty((e if len(q) else 0, 3)),
+              np.empty((e, 3, att.shape[2])), np.empty(e if len(ids) else 0, np.int64))
+    call_in_chunks(k.bin_pack, (12 + 3 * att.shape[2]) * n, n,
+                   lambda lo, hi: (tri, q, att, ids, height, lo, hi, fill[lo]) + packed,
                    parts=len(parts))
-    return rows, starts, order, float(sum(a for _, (_, a) in parts))
+    return packed + (starts,), float(sum(a for _, (_, a) in parts))
 
 
 def rasterize(width: int, height: int, tri: NDArray[np.float64], q: NDArray[np.float64],
@@ -144,12 +157,14 @@ def rasterize(width: int, height: int, tri: NDArray[np.float64], q: NDArray[np.f
               zbuf: Optional[NDArray[np.float64]] = None, buf: Optional[NDArray[np.uint8]] = None,
               abuf: Optional[NDArray[np.float64]] = None, idbuf: Optional[NDArray[np.int32]] = None,
               floor: Optional[NDArray[np.float64]] = None, clear: bool = False) -> None:
-    """Run the triangle kernel on normalized arrays.
+    """Run the triangle kernel on normalized arrays: ``q`` (N, 3) 1/w, or no rows
+    for 1 everywhere; ``ids`` (N,), or none when ``buf`` is given.
 
     ``buf`` given: the attributes (0..255) are rounded into its bytes; else
     ``abuf`` (H, W, K) float64 and ``idbuf`` (H, W) int32 receive the interpolated
     attributes and ``ids`` (``abuf`` None: ``idbuf`` alone; the attributes are not
-    interpolated, and the work estimate does not count them).  ``zbuf`` None: no depth test (the input order wins);
+    interpolated, and the work estimate does not count them).  ``zbuf`` None: no
+    depth test (the input order wins);
     ``floor`` (H, W): depth peeling, only fragments behind ``floor`` and in front of
     ``zbuf`` pass; ``clear``: ``zbuf`` (and ``idbuf``) are cleared to +inf (-1) by
     the kernel first, on every core (their contents before do not matter)."""
@@ -158,7 +173,7 @@ def rasterize(width: int, height: int, tri: NDArray[np.float64], q: NDArray[np.f
     from .._kernels.variants import token
 
     n = len(tri)
-    rows, starts, order, area = bin_bands(tri, height)
+    bins, area = bin_bands(tri, q, att, ids, height)
     kk = att.shape[2]
     if buf is not None:
         out = token(k.COLOR)
@@ -179,8 +194,7 @@ def rasterize(width: int, height: int, tri: NDArray[np.float64], q: NDArray[np.f
         zbuf = np.empty((height, width))
     # work: the rows of each triangle's box times its width
     work = 20 * n + area * (1 + (kk if len(out) != k.IDS else 0))
-    call_in_bands(k.raster_triangles, work, out, depth, tri, q, att, ids, rows, starts, order,
-                  zbuf, floor, buf, abuf, idbuf)
+    call_in_bands(k.raster_triangles, work, out, depth, *bins, zbuf, floor, buf, abuf, idbuf)
 
 
 def triangles(fb: FrameBuffer, vertices: ArrayLike,
@@ -270,5 +284,4 @@ def triangles(fb: FrameBuffer, vertices: ArrayLike,
         # a strided view, took six times as long to check)
         tri, q, att = _far(tri, q, att)
     buf = fb._raster()[0]
-    rasterize(fb.width, fb.height, tri, q, att, np.zeros(len(tri), np.int64), zbuf=zbuf,
-              buf=buf)
+    rasterize(fb.width, fb.height, tri, q, att, np.empty(0, np.int64), zbuf=zbuf, buf=buf)

@@ -77,7 +77,6 @@ def z_buffer(row: int = 4, triangles: Optional[ArrayLike] = None, width: int = W
     from .._kernels import raster3d as k
     from .._kernels._jit import python
     from .._kernels.variants import token
-    from ..draw.triangles import bin_bands
 
     tris = SCENE if triangles is None else v.real_array("triangles", triangles, "(N, 3, 3)")
     if tris.ndim != 3 or tris.shape[1:] != (3, 3) or not np.isfinite(tris).all():
@@ -92,22 +91,19 @@ def z_buffer(row: int = 4, triangles: Optional[ArrayLike] = None, width: int = W
     ids = np.arange(n, dtype=np.int64)
     zbuf = np.full((height, width), np.inf)
     idbuf = np.full((height, width), -1, np.int64)
-    g = np.empty((2, 3))
     draw = python(k.raster_triangle)
-    spans = bin_bands(tri, height)[0]
     out, test = token(k.ATTRIBUTES), token(k.TEST)
     dummy_b, dummy_a, dummy_f = np.empty((1, 1, 1), np.uint8), np.empty((height, width, 0)), \
         np.empty((1, 1))
     rows: List[Dict[str, Any]] = []
     for t in range(n):
-        if not spans[t, 0] <= row <= spans[t, 1]:
-            continue                              # the triangle's rows miss this one
-        # the triangle's own depths on the row: the same kernel, on a fresh (inf) buffer
+        # the triangle's own depths on the row (none where its rows miss the row): the
+        # same kernel, on a fresh (inf) buffer
         own = np.full((height, width), np.inf)
         mine = np.full((height, width), -1, np.int64)
-        draw(out, test, tri, q, att, ids, t, row, row, g, own, dummy_f, dummy_b, dummy_a, mine)
+        draw(out, test, tri, q, att, ids, t, row, row, own, dummy_f, dummy_b, dummy_a, mine)
         before = zbuf[row].copy()
-        draw(out, test, tri, q, att, ids, t, row, row, g, zbuf, dummy_f, dummy_b, dummy_a,
+        draw(out, test, tri, q, att, ids, t, row, row, zbuf, dummy_f, dummy_b, dummy_a,
              idbuf)
         for x in np.flatnonzero(mine[row] >= 0):
             z = own[row, x]

@@ -3,7 +3,7 @@ its page faults on first touch (a 1920 x 1080 float64 buffer, 16 MB: several
 milliseconds, more than its whole depth test), and a render makes several.
 
 :func:`scratch` is for temporaries that are not handed back (their contents are
-not kept).  :func:`recycled` is for the buffers a render hands back (the depth and
+not kept), :func:`scratch_rows` for those whose length changes from call to call.  :func:`recycled` is for the buffers a render hands back (the depth and
 face buffers of a :class:`~scanline.rendering.Rendering`): the array of the
 previous call is used again only when nothing else holds it any more -- its
 reference count says that only the pool does (a view of it, a
@@ -37,6 +37,20 @@ def scratch(name: str, shape: tuple[int, ...], dtype: DTypeLike = np.float64) ->
     if a is None or a.shape != tuple(shape) or a.dtype != dtype:
         a = kept[name] = np.empty(shape, dtype)
     return a
+
+
+def scratch_rows(name: str, rows: int, shape: tuple[int, ...],
+                 dtype: DTypeLike = np.float64) -> NDArray[Any]:
+    """The first ``rows`` rows of an array with rows of ``shape`` and ``dtype`` kept
+    for the calling thread under ``name`` (contents not kept): grown to the next
+    power of two rows when it is too short, never shrunk, so calls of any length
+    share it.  Only the pages a call writes are ever resident: the kept array costs
+    the memory of the longest call in this thread."""
+    kept = _kept()
+    a = kept.get(name)
+    if a is None or len(a) < rows or a.shape[1:] != tuple(shape) or a.dtype != dtype:
+        a = kept[name] = np.empty((1 << max(rows - 1, 0).bit_length(),) + tuple(shape), dtype)
+    return a[:rows]
 
 
 #: References to an array of the pool that nothing else holds: the pool's dict, the

@@ -278,3 +278,41 @@ def test_a_far_vertex_reaching_the_rasterizer_does_not_crash(ids_only):
     assert set(np.unique(ids)) <= {-1, 0, 1}
     assert np.isfinite(zbuf[ids >= 0]).all()
 
+
+
+def test_kept_rows_grow_and_are_shared_by_calls_of_any_length():
+    from scanline._pool import scratch_rows
+
+    a = scratch_rows("test.rows", 5, (3,))
+    assert a.shape == (5, 3) and a.base is not None and len(a.base) == 8
+    a[:] = 1.0
+    b = scratch_rows("test.rows", 3, (3,))            # shorter: the same memory
+    assert b.shape == (3, 3) and np.shares_memory(a, b)
+    c = scratch_rows("test.rows", 9, (3,))            # longer: grown to 16 rows
+    assert c.shape == (9, 3) and len(c.base) == 16 and not np.shares_memory(a, c)
+    d = scratch_rows("test.rows", 0, (3,), np.int64)  # another dtype: its own
+    assert d.shape == (0, 3) and d.dtype == np.int64
+
+
+def test_a_second_batch_of_another_size_draws_what_it_draws_alone():
+    # the binned triangles are kept between calls: a batch after a longer one (the
+    # kept rows longer than it needs) and after a shorter one draws its own pixels
+    rng = np.random.default_rng(12)
+    w, h = 120, 90
+    big = random_triangles(rng, 2000, w, h, 10.0)
+    small = random_triangles(rng, 300, w, h, 10.0)
+    colors = {len(t): rng.uniform(0, 255, size=(len(t), 3, 3)) for t in (big, small)}
+
+    def draw(tri):
+        fb = sl.FrameBuffer(w, h)
+        depth = sl.DepthBuffer.like(fb)
+        sl.draw.triangles(fb, tri, colors=colors[len(tri)], depth=depth)
+        return fb.to_array(), depth.array.copy()
+
+    alone = draw(small)
+    draw(big)
+    after_big = draw(small)
+    big_after_small = draw(big)
+    assert np.array_equal(alone[0], after_big[0]) and np.array_equal(alone[1], after_big[1])
+    assert np.array_equal(draw(big)[0], big_after_small[0])
+    assert np.isfinite(alone[1]).mean() > 0.2

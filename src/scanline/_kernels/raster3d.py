@@ -197,19 +197,17 @@ def planes(tri, q, att, e0, e1, g, ok):
 def rising(y0, y1, y2):
     """The vertices (0, 1, 2) at heights ``y0``, ``y1``, ``y2`` by rising y (ties keep
     index order, so that the horizontal edge is skipped): ``(low, mid, high)``."""
-    low = 0
-    mid = 1
-    high = 2
-    ylow = y0
-    ymid = y1
-    if ymid < ylow:
-        low, mid = mid, low
-        ylow, ymid = ymid, ylow
-    if y2 < ymid:
-        mid, high = high, mid
-        ymid = y2
-        if ymid < ylow:
-            low, mid = mid, low
+    swap = y1 < y0
+    low = 1 if swap else 0
+    mid = 0 if swap else 1
+    ylow = y1 if swap else y0
+    ymid = y0 if swap else y1
+    swap = y2 < ymid
+    high = mid if swap else 2
+    mid = 2 if swap else mid
+    ymid = y2 if swap else ymid
+    swap = ymid < ylow
+    low, mid = (mid, low) if swap else (low, mid)
     return low, mid, high
 
 
@@ -219,10 +217,12 @@ def span_limits(y, xa, ya, xb, yb, xc, yc, width):
     ``(xa, ya)``, ``(xb, yb)``, ``(xc, yc)`` by rising y, clamped to ``0 ..
     width``."""
     xl = crossing(xa, ya, xc, yc, y)                    # the long edge
-    if y <= yb:
-        xr = crossing(xa, ya, xb, yb, y)
-    else:
-        xr = crossing(xb, yb, xc, yc, y)
+    lower = y <= yb
+    xs = xa if lower else xb
+    ys = ya if lower else yb
+    xe = xb if lower else xc
+    ye = yb if lower else yc
+    xr = crossing(xs, ys, xe, ye, y)
     xl, xr = min(xl, xr), max(xl, xr)
     if not (xl <= xr):                                  # NaN
         return 0, 0
@@ -288,35 +288,34 @@ def raster_entries(out, depth, tri, q, att, ids, e0, e1, lo, hi, zbuf, floor, bu
                 fy = y - y0
                 z = g[s, 0, 0] + g[s, 0, 1] * fx + g[s, 0, 2] * fy   # the left end
                 qs = g[s, 1, 0] + g[s, 1, 1] * fx + g[s, 1, 2] * fy
+                # without a branch on the depth test (random depths mispredict it): every
+                # pixel of the span is written, with its old value where the test fails
                 for x in range(kl, kr):
+                    win = True
                     if len(depth) == TEST or len(depth) == CLEAR_TEST:
-                        if not (z < zbuf[y, x]):
-                            z += dzdx                              # z' = z - A / C
-                            continue
-                        zbuf[y, x] = z
+                        zold = zbuf[y, x]
+                        win = z < zold
+                        zbuf[y, x] = z if win else zold
                     elif len(depth) == PEEL:
-                        if not (z < zbuf[y, x] and z > floor[y, x]):
-                            z += dzdx
-                            continue
-                        zbuf[y, x] = z
+                        zold = zbuf[y, x]
+                        win = (z < zold) & (z > floor[y, x])
+                        zbuf[y, x] = z if win else zold
+                    z += dzdx                                      # z' = z - A / C
+                    if len(out) != COLOR:
+                        idbuf[y, x] = face if win else idbuf[y, x]
                     if len(out) == IDS:
-                        idbuf[y, x] = face
-                        z += dzdx
                         continue
                     i = x - kl
                     r = 1.0 if affine else 1.0 / (qs + dqdx * i)      # a * 1.0 is exact
-                    if len(out) == COLOR:
-                        for c in range(k):
-                            a = (g[s, c + 2, 0] + g[s, c + 2, 1] * (fx + i)
-                                 + g[s, c + 2, 2] * fy) * r
+                    for c in range(k):
+                        a = (g[s, c + 2, 0] + g[s, c + 2, 1] * (fx + i)
+                             + g[s, c + 2, 2] * fy) * r
+                        if len(out) == COLOR:
                             a = min(max(a, 0.0), 255.0)
-                            buf[y, x, c] = np.uint8(int(a + 0.5))
-                    else:
-                        for c in range(k):
-                            abuf[y, x, c] = (g[s, c + 2, 0] + g[s, c + 2, 1] * (fx + i)
-                                             + g[s, c + 2, 2] * fy) * r
-                        idbuf[y, x] = face
-                    z += dzdx
+                            v = np.uint8(int(a + 0.5))
+                            buf[y, x, c] = v if win else buf[y, x, c]
+                        else:
+                            abuf[y, x, c] = a if win else abuf[y, x, c]
 
 
 @kernel

@@ -39,17 +39,26 @@ def scratch(name: str, shape: tuple[int, ...], dtype: DTypeLike = np.float64) ->
     return a
 
 
+#: The largest array :func:`scratch_rows` keeps (bytes): a longer call gets a new
+#: array, not kept, so what a thread holds stays bounded whatever it once drew.
+ROWS_KEPT = 1 << 28
+
+
 def scratch_rows(name: str, rows: int, shape: tuple[int, ...],
                  dtype: DTypeLike = np.float64) -> NDArray[Any]:
     """The first ``rows`` rows of an array with rows of ``shape`` and ``dtype`` kept
     for the calling thread under ``name`` (contents not kept): grown to the next
     power of two rows when it is too short, never shrunk, so calls of any length
     share it.  Only the pages a call writes are ever resident: the kept array costs
-    the memory of the longest call in this thread."""
+    the memory of the longest call in this thread, and one beyond
+    :data:`ROWS_KEPT` bytes is made for the call alone."""
     kept = _kept()
     a = kept.get(name)
     if a is None or len(a) < rows or a.shape[1:] != tuple(shape) or a.dtype != dtype:
-        a = kept[name] = np.empty((1 << max(rows - 1, 0).bit_length(),) + tuple(shape), dtype)
+        grown = (1 << max(rows - 1, 0).bit_length(),) + tuple(shape)
+        if np.prod(grown) * np.dtype(dtype).itemsize > ROWS_KEPT:
+            return np.empty((rows,) + tuple(shape), dtype)
+        a = kept[name] = np.empty(grown, dtype)
     return a[:rows]
 
 

@@ -294,6 +294,17 @@ def test_kept_rows_grow_and_are_shared_by_calls_of_any_length():
     assert d.shape == (0, 3) and d.dtype == np.int64
 
 
+def test_rows_beyond_the_bound_are_not_kept(monkeypatch):
+    from scanline import _pool
+
+    monkeypatch.setattr(_pool, "ROWS_KEPT", 1000)
+    kept = _pool.scratch_rows("test.bound", 10, (3,))          # 16 x 3 x 8 = 384 bytes
+    big = _pool.scratch_rows("test.bound", 100, (3,))          # 128 rows: 3,072 bytes
+    assert big.shape == (100, 3) and big.base is None        # made for the call alone
+    again = _pool.scratch_rows("test.bound", 10, (3,))
+    assert np.shares_memory(kept, again)                     # the kept one stays
+
+
 def test_a_second_batch_of_another_size_draws_what_it_draws_alone():
     # the binned triangles are kept between calls: a batch after a longer one (the
     # kept rows longer than it needs) and after a shorter one draws its own pixels

@@ -118,6 +118,8 @@ def bin_pack(tri, q, att, ids, height, lo, hi, fill, ptri, pq, patt, pids):
         r0, r1 = rows_of(tri[t, 0, 1], tri[t, 1, 1], tri[t, 2, 1], height)
         for b in range(r0 >> BAND_SHIFT, (r1 >> BAND_SHIFT) + 1 if r0 <= r1 else 0):
             e = fill[b]
+            if e >= ptri.shape[0]:
+                continue        # (only if ``tri`` changed since the count: never write out)
             fill[b] = e + 1
             for i in range(3):
                 ptri[e, i, 0] = tri[t, i, 0]

@@ -3,12 +3,13 @@ its page faults on first touch (a 1920 x 1080 float64 buffer, 16 MB: several
 milliseconds, more than its whole depth test), and a render makes several.
 
 :func:`scratch` is for temporaries that are not handed back (their contents are
-not kept), :func:`scratch_rows` for those whose length changes from call to call.  :func:`recycled` is for the buffers a render hands back (the depth and
-face buffers of a :class:`~scanline.rendering.Rendering`): the array of the
-previous call is used again only when nothing else holds it any more -- its
-reference count says that only the pool does (a view of it, a
-:class:`~scanline.depthbuffer.DepthBuffer` or a kept ``Rendering`` each hold a
-reference) -- so a result the caller kept is never written over.
+not kept), :func:`scratch_rows` for those whose length changes from call to call.
+:func:`recycled` is for the buffers a render hands back (the depth and face buffers of
+a :class:`~scanline.rendering.Rendering`): the array of the previous call is used
+again only when nothing else holds it any more -- its reference count says that only
+the pool does (a view of it, a :class:`~scanline.depthbuffer.DepthBuffer` or a kept
+``Rendering`` each hold a reference) -- so a result the caller kept is never written
+over.
 """
 
 import sys

@@ -124,7 +124,8 @@ Bins = Tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64], NDAr
 def bin_bands(tri: NDArray[np.float64], q: NDArray[np.float64], att: NDArray[np.float64],
               ids: NDArray[np.int64], height: int) -> Tuple[Bins, float]:
     """The (N, 3, 3) triangles with their 1/w (N, 3; or no rows: 1 everywhere),
-    attributes (N, 3, K) and ids (N,; or none) binned by band of :data:`~scanline._kernels.raster3d.BAND` rows for
+    attributes (N, 3, K) and ids (N,; or none) binned by band of
+    :data:`~scanline._kernels.raster3d.BAND` rows for
     :func:`~scanline._kernels.raster3d.raster_triangles`: ``((tri, q, att, ids,
     starts), area)``, where entries ``starts[b] .. starts[b + 1] - 1`` of the four
     arrays are the triangles meeting band ``b``, in input order (a triangle meeting

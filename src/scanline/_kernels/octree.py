@@ -18,7 +18,7 @@ import math
 import numpy as np
 
 from ._jit import helper, kernel
-from .raster3d import rising, span_limits
+from .raster3d import frame, linear, rising, span_limits
 
 EMPTY = 0
 FULL = 1
@@ -525,25 +525,15 @@ def covered(final, x0, x1, y0, y1):
 @helper
 def depth_plane(tri, t, g):
     """The depth of triangle ``t`` as a function of the screen, (value at vertex 0,
-    d/dx, d/dy) into ``g``, computed as the z-buffer's setup computes it
-    (:func:`scanline._kernels.raster3d.planes`, its first row) so both find the same
-    depths; False where the triangle covers no pixel (zero area, not finite)."""
-    x0 = tri[t, 0, 0]
-    y0 = tri[t, 0, 1]
-    ex1 = tri[t, 1, 0] - x0
-    ey1 = tri[t, 1, 1] - y0
-    ex2 = tri[t, 2, 0] - x0
-    ey2 = tri[t, 2, 1] - y0
-    area = ex1 * ey2 - ex2 * ey1
-    if not (area != 0.0 and math.isfinite(area)):
+    d/dx, d/dy) into ``g``, by the z-buffer's own steps
+    (:func:`scanline._kernels.raster3d.frame` and ``linear``, the first row of its
+    ``planes``) so both find the same depths; False where the triangle covers no
+    pixel (zero area, not finite)."""
+    ex1, ey1, ex2, ey2, r = frame(tri[t, 0, 0], tri[t, 0, 1], tri[t, 1, 0], tri[t, 1, 1],
+                                  tri[t, 2, 0], tri[t, 2, 1])
+    if r == 0.0:
         return False
-    r = 1.0 / area
-    f0 = tri[t, 0, 2]
-    d1 = tri[t, 1, 2] - f0
-    d2 = tri[t, 2, 2] - f0
-    g[0] = f0
-    g[1] = (d1 * ey2 - d2 * ey1) * r
-    g[2] = (d2 * ex1 - d1 * ex2) * r
+    g[0], g[1], g[2] = linear(tri[t, 0, 2], tri[t, 1, 2], tri[t, 2, 2], ex1, ey1, ex2, ey2, r)
     return math.isfinite(g[0] + g[1] + g[2])
 
 

@@ -142,6 +142,33 @@ def crossing(xlo, ylo, xhi, yhi, y):
     return xlo + ((y - ylo) * (xhi - xlo)) / (yhi - ylo)
 
 
+@inline
+def frame(x0, y0, x1, y1, x2, y2):
+    """The edges from vertex 0 of the triangle ``(x0, y0)``, ``(x1, y1)``, ``(x2,
+    y2)`` and one over the doubled signed area they span: ``(ex1, ey1, ex2, ey2,
+    r)``, with ``r`` = 0 for a triangle that covers no pixel (zero area, or a
+    coordinate that is not finite)."""
+    ex1 = x1 - x0
+    ey1 = y1 - y0
+    ex2 = x2 - x0
+    ey2 = y2 - y0
+    area = ex1 * ey2 - ex2 * ey1
+    if not (area != 0.0 and math.isfinite(area)):
+        return ex1, ey1, ex2, ey2, 0.0
+    return ex1, ey1, ex2, ey2, 1.0 / area
+
+
+@inline
+def linear(f0, f1, f2, ex1, ey1, ex2, ey2, r):
+    """The function of the screen that takes the values ``f0``, ``f1``, ``f2`` at a
+    triangle's vertices (its :func:`frame` ``ex1 .. r``): ``(value at vertex 0,
+    d/dx, d/dy)``; for the depth, the plane A x + B y + C z + D = 0 gives d/dx =
+    -A / C and d/dy = -B / C (Hearn & Baker, section 13-3)."""
+    d1 = f1 - f0
+    d2 = f2 - f0
+    return f0, (d1 * ey2 - d2 * ey1) * r, (d2 * ex1 - d1 * ex2) * r
+
+
 @helper
 def planes(tri, q, att, e0, e1, g, ok):
     """The linear functions of triangles ``e0 .. e1 - 1`` in screen space: row ``j``
@@ -158,17 +185,11 @@ def planes(tri, q, att, e0, e1, g, ok):
     affine = q.shape[0] == 0
     for t in range(e0, e1):
         s = t - e0
-        x0 = tri[t, 0, 0]
-        y0 = tri[t, 0, 1]
-        ex1 = tri[t, 1, 0] - x0
-        ey1 = tri[t, 1, 1] - y0
-        ex2 = tri[t, 2, 0] - x0
-        ey2 = tri[t, 2, 1] - y0
-        area = ex1 * ey2 - ex2 * ey1
-        if not (area != 0.0 and math.isfinite(area)):
+        ex1, ey1, ex2, ey2, r = frame(tri[t, 0, 0], tri[t, 0, 1], tri[t, 1, 0], tri[t, 1, 1],
+                                      tri[t, 2, 0], tri[t, 2, 1])
+        if r == 0.0:
             ok[s] = False
             continue
-        r = 1.0 / area
         q0 = 1.0 if affine else q[t, 0]
         q1 = 1.0 if affine else q[t, 1]
         q2 = 1.0 if affine else q[t, 2]
@@ -186,12 +207,11 @@ def planes(tri, q, att, e0, e1, g, ok):
                 f0 = att[t, 0, j - 2] * q0
                 f1 = att[t, 1, j - 2] * q1
                 f2 = att[t, 2, j - 2] * q2
-            d1 = f1 - f0
-            d2 = f2 - f0
-            g[s, j, 0] = f0
-            g[s, j, 1] = (d1 * ey2 - d2 * ey1) * r          # -A / C for the depth
-            g[s, j, 2] = (d2 * ex1 - d1 * ex2) * r          # -B / C
-            finite += 0.0 * (g[s, j, 0] + g[s, j, 1] + g[s, j, 2])  # NaN if not finite
+            value, gx, gy = linear(f0, f1, f2, ex1, ey1, ex2, ey2, r)
+            g[s, j, 0] = value
+            g[s, j, 1] = gx
+            g[s, j, 2] = gy
+            finite += 0.0 * (value + gx + gy)                # NaN if any is not finite
         ok[s] = finite == 0.0
 
 

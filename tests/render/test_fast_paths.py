@@ -40,7 +40,9 @@ def draw_in_calls(width, height, tri, att, steps):
     for start in range(steps):
         k.raster_triangles(start, steps, token(k.COLOR), token(k.TEST), *bins, zbuf,
                            np.empty((1, 1)), buf, np.empty((1, 1, 1)),
-                           np.empty((1, 1), np.int64))
+                           np.empty((1, 1), np.int64),
+                           np.empty((steps, k.SETUP_BATCH, att.shape[2] + 2, 3)),
+                           np.empty((steps, k.SETUP_BATCH), np.bool_))
     return buf, zbuf
 
 

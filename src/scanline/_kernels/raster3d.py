@@ -76,34 +76,36 @@ def rows_of(y0, y1, y2, height):
     """The first and last raster rows (``0 .. height - 1``) whose scan lines meet the
     triangle whose vertices lie at heights ``y0``, ``y1``, ``y2``: ``ylo < Y <= yhi``
     (first > last: none, also for NaN)."""
-    low = min(y0, y1, y2)
-    high = max(y0, y1, y2)
+    low = min(min(y0, y1), y2)         # (min of two, as elsewhere: one compiled form)
+    high = max(max(y0, y1), y2)
     if not (low == low and high == high):           # NaN
         return 1, 0
-    flo = max(min(math.floor(low), height + 1.0), -2.0)
-    fhi = max(min(math.floor(high), height + 1.0), -2.0)
-    return max(int(flo) + 1, 0), min(int(fhi), height - 1)
+    flo = math.floor(max(min(low, height + 1.0), -2.0))     # (an int, in range)
+    fhi = math.floor(max(min(high, height + 1.0), -2.0))
+    return max(flo + 1, 0), min(fhi, height - 1)
 
 
 @kernel
-def bin_count(tri, height, lo, hi):
+def bin_count(tri, height, lo, hi, counts):
     """The first pass of binning triangles ``lo .. hi - 1`` by band (a counting
     sort; the chunks of a batch run on every core, and
-    :func:`scanline.draw.triangles.bin_bands` joins them).  Returns ``(counts,
-    area)``: how many of the triangles meet each band, and the summed areas of their
-    boxes (rows met times their whole x extent plus one, the extent counted up to
-    :data:`WIDEST` pixels), the work estimate of :func:`raster_triangles`."""
-    counts = np.zeros(((height - 1) >> BAND_SHIFT) + 1, np.int64)
+    :func:`scanline.draw.triangles.bin_bands` joins them): adds to ``counts[b]``
+    (zeros, one per band, made by the caller: numpy's allocation compiled into the
+    kernel costs 0.1 s of a first call) how many of the triangles meet band ``b``,
+    and returns the summed areas of their boxes (rows met times their whole x extent
+    plus one, the extent counted up to :data:`WIDEST` pixels), the work estimate of
+    :func:`raster_triangles`."""
+    bands = counts.shape[0]
     area = 0                # (whole numbers: a float sum made the pass 25% slower)
     for t in range(lo, hi):
         r0, r1 = rows_of(tri[t, 0, 1], tri[t, 1, 1], tri[t, 2, 1], height)
         if r0 <= r1:
-            for b in range(r0 >> BAND_SHIFT, (r1 >> BAND_SHIFT) + 1):
+            for b in range(r0 >> BAND_SHIFT, min((r1 >> BAND_SHIFT) + 1, bands)):
                 counts[b] += 1
-            wide = (max(tri[t, 0, 0], tri[t, 1, 0], tri[t, 2, 0])
-                    - min(tri[t, 0, 0], tri[t, 1, 0], tri[t, 2, 0]))
+            wide = (max(max(tri[t, 0, 0], tri[t, 1, 0]), tri[t, 2, 0])
+                    - min(min(tri[t, 0, 0], tri[t, 1, 0]), tri[t, 2, 0]))
             area += (r1 - r0 + 1) * ((int(wide) if wide < WIDEST else int(WIDEST)) + 1)
-    return counts, area
+    return area
 
 
 @kernel
@@ -111,26 +113,24 @@ def bin_pack(tri, q, att, ids, height, lo, hi, fill, ptri, pq, patt, pids):
     """The second pass: copy each of triangles ``lo .. hi - 1`` -- its vertices,
     1/w, attributes and id -- to entry ``fill[b]`` of ``ptri``, ``pq``, ``patt`` and
     ``pids`` for every band ``b`` its rows meet, advancing ``fill[b]`` (so each band
-    lists its triangles in input order, one after another in memory).  ``pq`` or
-    ``pids`` without rows are left out (1/w = 1 everywhere; no ids needed)."""
-    k = att.shape[2]
+    lists its triangles in input order, one after another in memory).  The arrays
+    come flat, one row a triangle: ``tri`` (N, 9) and ``ptri`` (E, 9), ``q`` (N, 3)
+    and ``pq`` (E, 3), ``att`` (N, 3 K) and ``patt`` (E, 3 K), ``ids`` (N,) and
+    ``pids`` (E,) (a row is then one loop: less to compile); ``pq`` or ``pids``
+    without rows are left out (1/w = 1 everywhere; no ids needed)."""
     for t in range(lo, hi):
-        r0, r1 = rows_of(tri[t, 0, 1], tri[t, 1, 1], tri[t, 2, 1], height)
+        r0, r1 = rows_of(tri[t, 1], tri[t, 4], tri[t, 7], height)
         for b in range(r0 >> BAND_SHIFT, (r1 >> BAND_SHIFT) + 1 if r0 <= r1 else 0):
             e = fill[b]
             if e >= ptri.shape[0]:
                 continue        # (only if ``tri`` changed since the count: never write out)
             fill[b] = e + 1
-            for i in range(3):
-                ptri[e, i, 0] = tri[t, i, 0]
-                ptri[e, i, 1] = tri[t, i, 1]
-                ptri[e, i, 2] = tri[t, i, 2]
-                for c in range(k):
-                    patt[e, i, c] = att[t, i, c]
-            if pq.shape[0] != 0:
-                pq[e, 0] = q[t, 0]
-                pq[e, 1] = q[t, 1]
-                pq[e, 2] = q[t, 2]
+            for j in range(9):
+                ptri[e, j] = tri[t, j]
+            for j in range(patt.shape[1]):
+                patt[e, j] = att[t, j]
+            for j in range(pq.shape[1] if pq.shape[0] != 0 else 0):
+                pq[e, j] = q[t, j]
             if pids.shape[0] != 0:
                 pids[e] = ids[t]
 
@@ -250,8 +250,8 @@ def span_limits(y, xa, ya, xb, yb, xc, yc, width):
         return 0, 0
     xl = min(max(xl, -1.0), width + 1.0)
     xr = min(max(xr, -1.0), width + 1.0)
-    kl = max(int(math.ceil(xl)), 0)
-    kr = min(int(math.ceil(xr)), width)
+    kl = max(math.ceil(xl), 0)                        # (math.ceil gives an int)
+    kr = min(math.ceil(xr), width)
     return kl, kr
 
 
@@ -264,19 +264,19 @@ def raster_triangle(out, depth, tri, q, att, ids, t, r0, r1, zbuf, floor, buf, a
     """Scan-convert triangle ``t`` on its rows within ``r0 .. r1``: the step tables
     run it for one triangle and one row (:mod:`scanline.trace.zbuffer`)."""
     raster_entries(out, depth, tri, q, att, ids, t, t + 1, r0, r1, zbuf, floor, buf, abuf,
-                   idbuf)
+                   idbuf, np.empty((SETUP_BATCH, att.shape[2] + 2, 3)),
+                   np.empty(SETUP_BATCH, np.bool_))
 
 
 @helper
 def raster_entries(out, depth, tri, q, att, ids, e0, e1, lo, hi, zbuf, floor, buf, abuf,
-                   idbuf):
+                   idbuf, g, ok):
     """Scan-convert triangles ``e0 .. e1 - 1``, each on its rows within ``lo .. hi``
     (one band): one call per band, the variants (the tokens ``out`` and ``depth``)
-    folded here, set up in batches (:func:`planes`)."""
+    folded here, set up in batches (:func:`planes`) into ``g`` (:data:`SETUP_BATCH`,
+    K + 2, 3) and ``ok`` (:data:`SETUP_BATCH`,)."""
     height, width = zbuf.shape
     k = att.shape[2]
-    g = np.empty((SETUP_BATCH, k + 2, 3))
-    ok = np.empty(SETUP_BATCH, np.bool_)
     for c0 in range(e0, e1, SETUP_BATCH):
         c1 = min(c0 + SETUP_BATCH, e1)
         planes(tri, q, att, c0, c1, g, ok)
@@ -342,7 +342,7 @@ def raster_entries(out, depth, tri, q, att, ids, e0, e1, lo, hi, zbuf, floor, bu
 
 @kernel
 def raster_triangles(start, step, out, depth, tri, q, att, ids, starts, zbuf, floor, buf,
-                     abuf, idbuf):
+                     abuf, idbuf, g, ok):
     """Draw the binned triangles band by band: the bands ``start``, ``start + step``
     ... (calls with start = 0 .. step - 1 on as many threads share the raster, each
     pixel written by its band's call only).
@@ -354,8 +354,13 @@ def raster_triangles(start, step, out, depth, tri, q, att, ids, starts, zbuf, fl
     starts[b + 1] - 1``.  Writes ``zbuf`` (H, W) (depth token TEST; PEEL: only
     between ``floor`` (H, W) and ``zbuf``; CLEAR_TEST: each band cleared first, with
     ``idbuf``), and ``buf`` (H, W', K) bytes (out COLOR) or ``abuf`` (H, W, K) and
-    ``idbuf`` (H, W) (out ATTRIBUTES), or ``idbuf`` alone (out IDS)."""
+    ``idbuf`` (H, W) (out ATTRIBUTES), or ``idbuf`` alone (out IDS).  ``g`` (T,
+    :data:`SETUP_BATCH`, K + 2, 3) and ``ok`` (T, :data:`SETUP_BATCH`) are the
+    setup's scratch, row ``start % T`` this call's (one row per thread; made by the
+    caller: numpy's allocation compiled into the kernel costs 0.1 s of a first
+    call)."""
     height = zbuf.shape[0]
+    mine = start % g.shape[0]
     bands = starts.shape[0] - 1
     for b in range(start, bands, max(step, 1)):
         lo = b << BAND_SHIFT
@@ -368,5 +373,5 @@ def raster_triangles(start, step, out, depth, tri, q, att, ids, starts, zbuf, fl
                     for x in range(idbuf.shape[1]):
                         idbuf[y, x] = -1
         raster_entries(out, depth, tri, q, att, ids, starts[b], starts[b + 1], lo, hi, zbuf,
-                       floor, buf, abuf, idbuf)
+                       floor, buf, abuf, idbuf, g[mine], ok[mine])
 

@@ -5,7 +5,7 @@ correct in perspective (the kernel: :mod:`scanline._kernels.raster3d`)."""
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Any, Optional, Tuple, Union
+from typing import TYPE_CHECKING, Any, Dict, Optional, Tuple, Union
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -140,8 +140,11 @@ def bin_bands(tri: NDArray[np.float64], q: NDArray[np.float64], att: NDArray[np.
     from .._pool import scratch_rows
 
     n = len(tri)
-    parts = call_in_chunks(k.bin_count, 4 * n, n, lambda lo, hi: (tri, height, lo, hi))
-    counts = np.stack([c for _, (c, _) in parts])           # (chunks, bands)
+    rows: Dict[int, NDArray[np.int64]] = {}
+    bands = ((height - 1) >> k.BAND_SHIFT) + 1
+    parts = call_in_chunks(k.bin_count, 4 * n, n, lambda lo, hi: (
+        tri, height, lo, hi, rows.setdefault(lo, np.zeros(bands, np.int64))))
+    counts = np.stack([rows[lo] for lo, _ in parts])        # (chunks, bands)
     starts = np.concatenate([[0], np.cumsum(counts.sum(axis=0))])
     # a chunk's slot in band b: after the band's triangles of the chunks before it
     fill = {lo: starts[:-1] + np.cumsum(counts, axis=0)[i] - counts[i]
@@ -153,10 +156,13 @@ def bin_bands(tri: NDArray[np.float64], q: NDArray[np.float64], att: NDArray[np.
               scratch_rows("bins.q", e if len(q) else 0, (3,)),
               scratch_rows("bins.att", e, (3, att.shape[2])),
               scratch_rows("bins.ids", e if len(ids) else 0, (), np.int64))
-    call_in_chunks(k.bin_pack, (12 + 3 * att.shape[2]) * n, n,
-                   lambda lo, hi: (tri, q, att, ids, height, lo, hi, fill[lo]) + packed,
-                   parts=len(parts))
-    return packed + (starts,), float(sum(a for _, (_, a) in parts))
+    # flat, one row a triangle (views): a row is then one loop in the kernel
+    kk = att.shape[2]
+    source = (tri.reshape(n, 9), q, att.reshape(n, 3 * kk), ids)
+    flat = (packed[0].reshape(e, 9), packed[1], packed[2].reshape(e, 3 * kk), packed[3])
+    call_in_chunks(k.bin_pack, (12 + 3 * kk) * n, n,
+                   lambda lo, hi: source + (height, lo, hi, fill[lo]) + flat, parts=len(parts))
+    return packed + (starts,), float(sum(a for _, a in parts))
 
 
 def rasterize(width: int, height: int, tri: NDArray[np.float64], q: NDArray[np.float64],
@@ -176,7 +182,7 @@ def rasterize(width: int, height: int, tri: NDArray[np.float64], q: NDArray[np.f
     ``zbuf`` pass; ``clear``: ``zbuf`` (and ``idbuf``) are cleared to +inf (-1) by
     the kernel first, on every core (their contents before do not matter)."""
     from .._kernels import raster3d as k
-    from .._kernels._threads import call_in_bands
+    from .._kernels._threads import call_in_bands, threads
     from .._kernels.variants import token
 
     n = len(tri)
@@ -201,7 +207,10 @@ def rasterize(width: int, height: int, tri: NDArray[np.float64], q: NDArray[np.f
         zbuf = np.empty((height, width))
     # work: the rows of each triangle's box times its width
     work = 20 * n + area * (1 + (kk if len(out) != k.IDS else 0))
-    call_in_bands(k.raster_triangles, work, out, depth, *bins, zbuf, floor, buf, abuf, idbuf)
+    setup = (np.empty((threads(), k.SETUP_BATCH, kk + 2, 3)),
+             np.empty((threads(), k.SETUP_BATCH), np.bool_))       # one row a thread
+    call_in_bands(k.raster_triangles, work, out, depth, *bins, zbuf, floor, buf, abuf, idbuf,
+                  *setup)
 
 
 def triangles(fb: FrameBuffer, vertices: ArrayLike,

@@ -329,3 +329,52 @@ def test_a_second_batch_of_another_size_draws_what_it_draws_alone():
     assert np.array_equal(alone[0], after_big[0]) and np.array_equal(alone[1], after_big[1])
     assert np.array_equal(draw(big)[0], big_after_small[0])
     assert np.isfinite(alone[1]).mean() > 0.2
+
+
+@pytest.mark.parametrize("mode", ["L", "RGB", "RGBA"])
+def test_bands_read_ahead_draw_what_sparse_bands_draw(mode):
+    # one call of 600 triangles in 96 x 70: every band holds more than one triangle per
+    # READ_AHEAD pixels of its width, so its depths and pixels are read ahead; drawn
+    # three at a time no band holds enough: the same pixels and depths either way
+    width, height = 96, 70
+    rng = np.random.default_rng(11)
+    tri = random_triangles(rng, 600, width, height, 9.0)
+    colors = rng.uniform(0, 255, size=(600, 3, 1 if mode == "L" else 3))
+    if mode == "L":
+        colors = colors[:, :, 0]
+    assert 600 / 3 * k.READ_AHEAD >= width > 3 * k.READ_AHEAD
+    results = []
+    for group in (600, 3):
+        fb = sl.FrameBuffer(width, height, mode=mode, background="gray")
+        depth = sl.DepthBuffer.like(fb)
+        depth.array[:, :] = rng.uniform(0.2, 0.8, size=(height, width))  # some fragments lose
+        saved = depth.array.copy() if group == 600 else results[0][2]
+        depth.array[:, :] = saved
+        for lo in range(0, 600, group):
+            sl.draw.triangles(fb, tri[lo:lo + group], colors=colors[lo:lo + group],
+                              depth=depth)
+        results.append((fb.to_array(), depth.array.copy(), saved))
+    (pixels, depths, _), (pixels3, depths3, _) = results
+    assert np.array_equal(pixels, pixels3) and np.array_equal(depths, depths3)
+    drawn = depths < results[0][2]
+    assert 0.2 < drawn.mean() < 0.95           # fragments won and lost against the buffer
+
+
+def test_a_band_is_read_ahead_only_when_it_holds_enough_triangles():
+    # the kernel returns the sum of what it read ahead: the depths (0.5) of every
+    # eighth pixel and the pixels (1) of every sixteenth, row after row of a band
+    width, height = 64, 32                                   # one band
+    rng = np.random.default_rng(5)
+    for n, read in ((width // k.READ_AHEAD, 32 * (8 * 0.5 + 4 * 1)),
+                    (width // k.READ_AHEAD - 1, 0.0)):
+        tri = random_triangles(rng, n, width, 16, 4.0) + [0, 8, 0]    # rows 4 .. 27
+        att = np.zeros((n, 3, 3))
+        bins, _ = bin_bands(tri, np.ones((n, 3)), att, np.zeros(n, np.int64), height)
+        assert list(bins[-1]) == [0, n]
+        got = k.raster_triangles(0, 1, token(k.COLOR), token(k.TEST), *bins,
+                                 np.full((height, width), 0.5), np.empty((1, 1)),
+                                 np.ones((height, width, 3), np.uint8), np.empty((1, 1, 1)),
+                                 np.empty((1, 1), np.int64),
+                                 np.empty((1, k.SETUP_BATCH, 5, 3)),
+                                 np.empty((1, k.SETUP_BATCH), np.bool_))
+        assert got == read

@@ -258,6 +258,17 @@ def span_limits(y, xa, ya, xb, yb, xc, yc, width):
 #: Triangles set up per call of :func:`planes` in :func:`raster_entries`.
 SETUP_BATCH = 64
 
+#: Reading ahead.  A band's triangles reach its rows in scattered order, and a line
+#: of the depth or frame buffer not yet in the core's cache stalls the depth test
+#: that reads it; so :func:`raster_triangles` first reads one value in every cache
+#: line of the band's rows of both, in order, and they stream in at the memory's
+#: speed (the processor's prefetcher).  Measured 2026-12-06, 100k triangles of 50
+#: pixels at 1920 x 1080 on one core after a ``DepthBuffer.clear()``: 36.3 ms
+#: without, 25.9 ms with.  (A band cleared by the kernel, CLEAR_TEST, is in the cache
+#: already.)  A band is read ahead when it holds at least one triangle per this many
+#: pixels of its width: fewer touch too little of it to pay.
+READ_AHEAD = 8
+
 
 @helper
 def raster_triangle(out, depth, tri, q, att, ids, t, r0, r1, zbuf, floor, buf, abuf, idbuf):
@@ -358,20 +369,32 @@ def raster_triangles(start, step, out, depth, tri, q, att, ids, starts, zbuf, fl
     :data:`SETUP_BATCH`, K + 2, 3) and ``ok`` (T, :data:`SETUP_BATCH`) are the
     setup's scratch, row ``start % T`` this call's (one row per thread; made by the
     caller: numpy's allocation compiled into the kernel costs 0.1 s of a first
-    call)."""
-    height = zbuf.shape[0]
+    call).  Returns a number of no meaning: the sum of the values read ahead
+    (:data:`READ_AHEAD`; summed so that the reads are kept)."""
+    height, width = zbuf.shape
     mine = start % g.shape[0]
+    read = 0.0
     bands = starts.shape[0] - 1
     for b in range(start, bands, max(step, 1)):
         lo = b << BAND_SHIFT
         hi = min(lo + BAND - 1, height - 1)
-        if len(depth) == CLEAR_TEST:
-            for y in range(lo, hi + 1):
-                for x in range(zbuf.shape[1]):
+        # a new frame: the band cleared on the core about to draw it; else the band's
+        # lines read in order (READ_AHEAD)
+        ahead = (starts[b + 1] - starts[b]) * READ_AHEAD >= width
+        for y in range(lo, hi + 1):
+            if len(depth) == CLEAR_TEST:
+                for x in range(width):
                     zbuf[y, x] = math.inf
                 if len(out) != COLOR:
                     for x in range(idbuf.shape[1]):
                         idbuf[y, x] = -1
+            elif ahead and len(depth) != NO_TEST:
+                for i in range(width >> 3):                  # 8 float64 a 64-byte line
+                    read += zbuf[y, i << 3]
+            if ahead and len(out) == COLOR:
+                for i in range(buf.shape[1] >> 4):           # 16 pixels: 16 to 64 bytes
+                    read += buf[y, i << 4, 0]
         raster_entries(out, depth, tri, q, att, ids, starts[b], starts[b + 1], lo, hi, zbuf,
                        floor, buf, abuf, idbuf, g[mine], ok[mine])
+    return read
 

@@ -95,11 +95,6 @@ LX, LY, LZ, FL = 21, 22, 23, 24
 NL, BASE, POW, LIT = 25, 26, 27, 28
 FIELDS = 29
 
-#: Fields reused by the store once the lighting is done: the stored values after the
-#: table and one step, and 1 where the climb goes on.
-EV = LX
-EM = NL
-
 #: The largest exponent n_s raised by repeated squaring (larger ones by the power),
 #: and the bits of the exponents raised inside the lighting loop (larger ones in
 #: passes of their own).

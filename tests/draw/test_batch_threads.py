@@ -183,3 +183,41 @@ def test_integer_batches_draw_what_their_float_values_draw(dtype):
         assert np.array_equal(ints.to_array(), floats.to_array())
         assert ints.to_array().any()
     assert np.array_equal(segs, kept[0]) and np.array_equal(rings, kept[1])
+
+
+@pytest.mark.parametrize("threads", [1, 2, 3, 5])
+def test_extremes_split_between_threads_are_numpy_s(threads, monkeypatch):
+    from scanline import _validate as v
+
+    monkeypatch.setattr(_threads, "threads", lambda: threads)
+    monkeypatch.setattr(v, "SPLIT_VALUES", 10)
+    rng = np.random.default_rng(threads)
+    for n in (1, 9, 10, 11, 47, 1000):
+        a = rng.normal(size=(n, 3)) * 1e3
+        assert v.extremes(a) == (a.min(), a.max())
+        assert v.extremes(a[:, ::2]) == (a[:, ::2].min(), a[:, ::2].max())   # strided
+        for at in (0, n // 2, 3 * n - 1):                # a NaN in any part carries
+            b = a.copy()
+            b.flat[at] = np.nan
+            lo, hi = v.extremes(b)
+            assert np.isnan(lo) and np.isnan(hi)
+
+
+def test_a_bad_value_in_any_part_of_a_large_batch_is_refused(monkeypatch):
+    from scanline import _validate as v
+
+    monkeypatch.setattr(_threads, "threads", lambda: 3)
+    monkeypatch.setattr(v, "SPLIT_VALUES", 8)
+    fb = sl.FrameBuffer(20, 10)
+    tri = np.tile([[(1.0, 1.0, 0.5), (15.0, 2.0, 0.5), (5.0, 8.0, 0.5)]], (30, 1, 1))
+    colors = np.full((30, 3, 3), 100.0)
+    sl.draw.triangles(fb, tri, colors=colors)
+    for at, value in ((0, 256.0), (44, -1.0), (269, np.nan)):
+        bad = colors.copy()
+        bad.flat[at] = value
+        with pytest.raises(sl.ArgumentValueError, match="0..255"):
+            sl.draw.triangles(fb, tri, colors=bad)
+    bad = tri.copy()
+    bad[29, 2, 1] = np.inf
+    with pytest.raises(sl.ArgumentValueError, match=r"vertices\[29\].*not finite"):
+        sl.draw.triangles(fb, bad, colors=colors)

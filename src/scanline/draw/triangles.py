@@ -38,9 +38,9 @@ def _vertices(vertices: ArrayLike) -> Tuple[NDArray[np.float64], float]:
             f"device points (or (N, 3, 2) without depth), got shape {tri.shape}")
     if tri.shape[2] == 2:
         tri = np.concatenate([tri, np.zeros(tri.shape[:2] + (1,))], axis=2)
-    # finite unless the extremes are not: two passes over contiguous memory, no
-    # temporary (the extremes are NaN where any value is)
-    lo, hi = (float(tri.min()), float(tri.max())) if tri.size else (0.0, 0.0)
+    # finite unless the extremes are not: passes over contiguous memory, no temporary
+    # (the extremes are NaN where any value is)
+    lo, hi = v.extremes(tri) if tri.size else (0.0, 0.0)
     if not (math.isfinite(lo) and math.isfinite(hi)):
         row = int(np.argwhere(~np.isfinite(tri).all(axis=(1, 2)))[0][0])
         raise ArgumentValueError(
@@ -102,7 +102,8 @@ def _vertex_colors(fb: FrameBuffer, colors: Optional[Union[Colors, NDArray[np.nu
             raise ArgumentValueError(
                 f"per-vertex colors must have {channels} channel(s) for mode {fb.mode!r}, "
                 f"got shape {colors.shape}")
-        if a.size and not (0 <= a.min() and a.max() <= 255):     # (NaN fails too)
+        lo, hi = v.extremes(a) if a.size else (0.0, 0.0)
+        if not (0 <= lo and hi <= 255):                          # (NaN fails too)
             raise ArgumentValueError("per-vertex colors must be finite values in 0..255")
         if a.shape[2] == 3 and channels == 4:
             a = np.concatenate([a, np.full((n, 3, 1), 255.0)], axis=2)

@@ -429,7 +429,7 @@ def counts(name: str, value: object, total: int,
 
 
 #: Values from which :func:`extremes` splits an array between the cores.
-SPLIT_VALUES = 1 << 20
+SPLIT_VALUES = 1 << 18
 
 
 def _min_max(a: NDArray[Any]) -> Tuple[float, float]:

@@ -57,10 +57,9 @@ answer in about 3 s on a 2-core machine with an empty numba cache
 
 Measuring an edit
 -----------------
-numba's on-disk cache of a kernel is keyed by the kernel's own source file, not by
-the files of the helpers it calls: after editing a helper in another module (an
-``@inline`` one especially, whose code is copied into its callers), a kernel loaded
-from the cache still runs the old helper.  An installed package is not affected
-(every file of a new version is new), but before timing or testing an edit in a
-checkout, remove the cache: ``find src -name '*.nb[ic]' -delete``.
+numba keys its on-disk cache of a function by the function's own source file; the
+kernels' cache is keyed instead by the digest of every kernel module
+(:func:`scanline._kernels._jit.sources_stamp`), since a kernel inlines or links
+helpers of other modules: after any edit of a kernel module (or a ``git pull``),
+every kernel is compiled again on its next use instead of running stale code.
 """

@@ -11,6 +11,8 @@ is defined, and the kernels are then compiled uncached in every process, which i
 slower to start but works.
 """
 
+import functools
+import hashlib
 import os
 import signal
 import threading
@@ -37,8 +39,58 @@ def check_thread_setting(environ=os.environ):
 check_thread_setting()
 
 from numba import njit  # noqa: E402  (after the check: numba reads the setting)
+from numba.core import caching  # noqa: E402
 from numba.core.dispatcher import Dispatcher  # noqa: E402
 from numba.core.errors import NumbaWarning  # noqa: E402
+
+#: The folder of the kernel modules.
+_HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+@functools.lru_cache(maxsize=1)
+def sources_stamp(folder=_HERE):
+    """A digest of every kernel module's source (``*.py`` in ``folder``, by name):
+    the key under which numba's on-disk cache keeps each kernel.
+
+    numba keys a cached kernel by its own file alone, so a kernel loaded from the
+    cache would still run the old code of a helper edited in another module (an
+    ``@inline`` one is copied into its callers; a ``@helper`` is linked in) -- in a
+    checkout after an edit or a ``git pull``, stale machine code, even code for a
+    helper's old arguments.  With the digest of all of them, any change to a kernel
+    module recompiles every kernel on its next use (an installed package changes all
+    its files at once anyway).  Computed once per process."""
+    digest = hashlib.sha256()
+    for name in sorted(os.listdir(folder)):
+        if name.endswith(".py"):
+            digest.update(name.encode() + b"\0")
+            with open(os.path.join(folder, name), "rb") as f:
+                digest.update(f.read())
+    return digest.digest()
+
+
+def _whole_package(locator):
+    """numba's cache locator class ``locator``, for the functions of this folder
+    only, with the sources' digest (:func:`sources_stamp`) as their key."""
+    class Locator(locator):
+        @classmethod
+        def from_function(cls, py_func, py_file):
+            if os.path.dirname(os.path.abspath(py_file)) != _HERE:
+                return None
+            return super().from_function(py_func, py_file)
+
+        def get_source_stamp(self):
+            return sources_stamp()
+
+    Locator.__name__ = Locator.__qualname__ = "Kernels" + locator.__name__
+    return Locator
+
+
+# the same places as numba's own locators (its cache folder, the module's
+# __pycache__, the user's cache), tried first, in numba's order
+caching.CacheImpl._locator_classes[:0] = [
+    _whole_package(locator) for locator in (caching.UserProvidedCacheLocator,
+                                            caching.InTreeCacheLocator,
+                                            caching.UserWideCacheLocator)]
 
 
 def _compiled(**options):

@@ -155,7 +155,9 @@ def test_a_mode_compiles_its_own_code_only(tmp_path):
 UNCACHED = r"""
 import numba.core.caching as caching
 from numba import njit
-caching.CacheImpl._locator_classes = []      # no folder numba may write its cache to
+def read_only(self):                         # no folder numba may write its cache to
+    raise PermissionError(13, "read-only", self.get_cache_path())
+caching._CacheLocator.ensure_cache_path = read_only    # (every locator, the kernels' too)
 try:
     njit(cache=True)(lambda x: x)
 except RuntimeError as exc:

@@ -60,7 +60,7 @@ def test_functions_elsewhere_keep_numba_s_own_cache_key(tmp_path):
     module.write_text("def f(x):\n    return x + 1\n")
     namespace = {"__file__": str(module)}
     exec(compile(module.read_text(), str(module), "exec"), namespace)
-    ours = [c for c in _jit.caching.CacheImpl._locator_classes
+    ours = [c for c in _jit._numba("CacheImpl")._locator_classes
             if c.__name__.startswith("Kernels")]
     assert len(ours) == 3
     for locator in ours:

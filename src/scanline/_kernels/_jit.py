@@ -85,12 +85,18 @@ def _whole_package(locator):
     return Locator
 
 
+def _numba(name):
+    """numba's caching class ``name`` (public since numba 0.58, ``_name`` before)."""
+    return getattr(caching, name, None) or getattr(caching, "_" + name, None)
+
+
 # the same places as numba's own locators (its cache folder, the module's
-# __pycache__, the user's cache), tried first, in numba's order
-caching.CacheImpl._locator_classes[:0] = [
-    _whole_package(locator) for locator in (caching.UserProvidedCacheLocator,
-                                            caching.InTreeCacheLocator,
-                                            caching.UserWideCacheLocator)]
+# __pycache__, the user's cache), tried first, in numba's order (if numba's internals
+# moved: its own keys, as before; tests/test_kernel_cache.py would say so)
+_LOCATORS = [_numba(name) for name in ("UserProvidedCacheLocator", "InTreeCacheLocator",
+                                       "UserWideCacheLocator")]
+if _numba("CacheImpl") is not None and all(_LOCATORS):
+    _numba("CacheImpl")._locator_classes[:0] = [_whole_package(c) for c in _LOCATORS]
 
 
 def _compiled(**options):

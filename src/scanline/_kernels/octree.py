@@ -18,7 +18,7 @@ import math
 import numpy as np
 
 from ._jit import helper, kernel
-from .raster3d import frame, linear, rising, span_limits
+from .raster3d import frame, linear, rising, rows_of, span_limits
 
 EMPTY = 0
 FULL = 1
@@ -552,8 +552,9 @@ def draw_leaf(tri, entries, e0, e1, px0, px1, py0, py1, z0, z1, ids, depth, fina
         if t < 0 or t >= ntri or not depth_plane(tri, t, g):
             continue
         low, mid, high = rising(tri[t, 0, 1], tri[t, 1, 1], tri[t, 2, 1])
-        r0 = max(int(math.floor(max(tri[t, low, 1], -2.0))) + 1, py0)
-        r1 = min(int(math.floor(min(tri[t, high, 1], height + 1.0))), py1)
+        r0, r1 = rows_of(tri[t, 0, 1], tri[t, 1, 1], tri[t, 2, 1], height)
+        r0 = max(r0, py0)
+        r1 = min(r1, py1)
         xt = tri[t, 0, 0]
         yt = tri[t, 0, 1]
         for y in range(r0, r1 + 1):

@@ -323,22 +323,30 @@ def raster_entries(out, depth, tri, q, att, ids, e0, e1, lo, hi, zbuf, floor, bu
                 qs = g[s, 1, 0] + g[s, 1, 1] * fx + g[s, 1, 2] * fy
                 # without a branch on the depth test (random depths mispredict it): every
                 # pixel of the span is written, with its old value where the test fails
-                for x in range(kl, kr):
+                # (read before the select: read in its branch, it kept the branch).  The
+                # indices are unsigned: numba then leaves out the wrap-around of negative
+                # indices, a compare and a move per access (they lie in the raster:
+                # span_limits and rows_of clamp them); the teapot's id raster took 5%
+                # less time (measured 2026-12-07)
+                yu = np.uint64(y)
+                for xi in range(kl, kr):
+                    x = np.uint64(xi)
                     win = True
                     if len(depth) == TEST or len(depth) == CLEAR_TEST:
-                        zold = zbuf[y, x]
+                        zold = zbuf[yu, x]
                         win = z < zold
-                        zbuf[y, x] = z if win else zold
+                        zbuf[yu, x] = z if win else zold
                     elif len(depth) == PEEL:
-                        zold = zbuf[y, x]
-                        win = (z < zold) & (z > floor[y, x])
-                        zbuf[y, x] = z if win else zold
+                        zold = zbuf[yu, x]
+                        win = (z < zold) & (z > floor[yu, x])
+                        zbuf[yu, x] = z if win else zold
                     z += dzdx                                      # z' = z - A / C
                     if len(out) != COLOR:
-                        idbuf[y, x] = face if win else idbuf[y, x]
+                        iold = idbuf[yu, x]
+                        idbuf[yu, x] = face if win else iold
                     if len(out) == IDS:
                         continue
-                    i = x - kl
+                    i = xi - kl
                     r = 1.0 if affine else 1.0 / (qs + dqdx * i)      # a * 1.0 is exact
                     for c in range(k):
                         a = (g[s, c + 2, 0] + g[s, c + 2, 1] * (fx + i)
@@ -346,9 +354,11 @@ def raster_entries(out, depth, tri, q, att, ids, e0, e1, lo, hi, zbuf, floor, bu
                         if len(out) == COLOR:
                             a = min(max(a, 0.0), 255.0)
                             v = np.uint8(int(a + 0.5))
-                            buf[y, x, c] = v if win else buf[y, x, c]
+                            old = buf[yu, x, c]
+                            buf[yu, x, c] = v if win else old
                         else:
-                            abuf[y, x, c] = a if win else abuf[y, x, c]
+                            old = abuf[yu, x, c]
+                            abuf[yu, x, c] = a if win else old
 
 
 @kernel

@@ -297,20 +297,19 @@ def shade_row(y, faces, table, tface, face_mat, mats, ambient, sources, far, eye
                 gx = table[t, 21]
             else:
                 d0 = dx = e0 = ex = g0 = gx = 0.0
-            i = n
             for at in range(x, end):
+                i = np.uint64(n + at - x)
                 fx = at - x0
                 r = 1.0 / (q0 + qx * fx)
                 s[i] = (a0 + ax * fx) * r
-                s[CHUNK + i] = (b0 + bx * fx) * r
-                s[2 * CHUNK + i] = (c0 + cx * fx) * r
+                s[np.uint64(CHUNK) + i] = (b0 + bx * fx) * r
+                s[np.uint64(2 * CHUNK) + i] = (c0 + cx * fx) * r
                 if kk > 3:
-                    s[3 * CHUNK + i] = (d0 + dx * fx) * r
-                    s[4 * CHUNK + i] = (e0 + ex * fx) * r
-                    s[5 * CHUNK + i] = (g0 + gx * fx) * r
+                    s[np.uint64(3 * CHUNK) + i] = (d0 + dx * fx) * r
+                    s[np.uint64(4 * CHUNK) + i] = (e0 + ex * fx) * r
+                    s[np.uint64(5 * CHUNK) + i] = (g0 + gx * fx) * r
                 xs[i] = at
                 ms[i] = m
-                i += 1
             if kk > 6:
                 a0 = table[t, 23] + table[t, 25] * fy
                 ax = table[t, 24]
@@ -318,14 +317,13 @@ def shade_row(y, faces, table, tface, face_mat, mats, ambient, sources, far, eye
                 bx = table[t, 27]
                 c0 = table[t, 29] + table[t, 31] * fy
                 cx = table[t, 30]
-                i = n
                 for at in range(x, end):
+                    i = np.uint64(n + at - x)
                     fx = at - x0
                     r = 1.0 / (q0 + qx * fx)
-                    s[CR * CHUNK + i] = (a0 + ax * fx) * r
-                    s[CG * CHUNK + i] = (b0 + bx * fx) * r
-                    s[CB * CHUNK + i] = (c0 + cx * fx) * r
-                    i += 1
+                    s[np.uint64(CR * CHUNK) + i] = (a0 + ax * fx) * r
+                    s[np.uint64(CG * CHUNK) + i] = (b0 + bx * fx) * r
+                    s[np.uint64(CB * CHUNK) + i] = (c0 + cx * fx) * r
             n += end - x
             x = end
         if n == 0:
@@ -343,18 +341,19 @@ def triangle_run(faces, tface, nf, y, x, room):
     run; pixels of no triangle (-1) before it are skipped (start = end = the width
     when none is left)."""
     width = faces.shape[1]
-    while x < width and faces[y, x] < 0:
+    row = np.uint64(y)
+    while x < width and faces[row, np.uint64(x)] < 0:
         x += 1
     if x >= width:
         return width, width, -1, -1
-    t = faces[y, x]
+    t = faces[row, np.uint64(x)]
     f = tface[t] if t < tface.shape[0] else -1
     if f >= nf:
         f = -1
     end = x
     most = min(width, x + room)
-    while end < most and faces[y, end] == t:
-        faces[y, end] = f
+    while end < most and faces[row, np.uint64(end)] == t:
+        faces[row, np.uint64(end)] = f
         end += 1
     return x, end, t, f
 
@@ -368,8 +367,9 @@ def store_chunk(y, n, s, xs, gamma_table, thresholds, raster, shading, mode):
     first = IR if len(shading) == PHONG else 0
     channels = 1 if len(mode) == GRAY else 3
     top = GAMMA_STEPS - 1
+    row = np.uint64(y)
     for i in range(n):
-        at = xs[i]
+        at = np.uint64(xs[i])
         for ch in range(channels):
             if len(mode) == GRAY:
                 value = (0.299 * s[first * CHUNK + i] + 0.587 * s[(first + 1) * CHUNK + i]
@@ -378,14 +378,14 @@ def store_chunk(y, n, s, xs, gamma_table, thresholds, raster, shading, mode):
                 value = s[(first + ch) * CHUNK + i]
             iv = value if value > 0.0 else 0.0
             iv = min(iv, 1.0)
-            e = gamma_table[int(iv * top)]
+            e = gamma_table[np.uint64(int(iv * top))]
             if e < 0:
                 v = encode(value, gamma_table, thresholds)
             else:
-                v = np.uint8(e + (iv >= thresholds[min(e + 1, 256)]))
-            raster[y, at, ch] = v
+                v = np.uint8(e + (iv >= thresholds[np.uint64(min(e + 1, 256))]))
+            raster[row, at, ch] = v
         if len(mode) == RGBA:
-            raster[y, at, 3] = 255
+            raster[row, at, 3] = 255
 
 
 @helper

@@ -194,7 +194,7 @@ def textured_pixels(start, step, faces, table, tface, face_mat, mats, mat_tex, t
                             s[ch * CHUNK + p] += s[(3 + ch) * CHUNK + p]
                 if len(shading) == PHONG:
                     light_chunk(n, s, ms, np.bool_(True), mats, ambient, sources, far, eye,
-                                expo, spec)
+                                expo, spec, np.bool_(False))
                 store_chunk(y, n, s, xs, gamma_table, thresholds, raster, shading, mode)
 
 
@@ -228,7 +228,8 @@ def vertex_light(lo, hi, points, normals, colors, material, mats, ambient, sourc
                     s[(PX + ch) * CHUNK + i] = points[p, ch]
                     s[(NX + ch) * CHUNK + i] = normals[p, ch]
                     s[(CR + ch) * CHUNK + i] = colors[0 if one else p, ch] if part == 0 else 0.0
-            light_chunk(n, s, ms, np.bool_(True), mats, ambient, sources, far, eye, expo, spec)
+            light_chunk(n, s, ms, np.bool_(True), mats, ambient, sources, far, eye, expo, spec,
+                        np.bool_(False))
             for i in range(n):
                 for ch in range(3):
                     value = s[(IR + ch) * CHUNK + i]

@@ -22,7 +22,7 @@ LIGHTS = [sl.lighting.AmbientLight((0.2, 0.15, 0.1)),
           sl.lighting.SpotLight((0, 0, 5), (0, 0, -1), 0.9, angle=0.4, exponent=3)]
 
 
-def scene(parallel=False):
+def scene(parallel=False, mats=None):
     proj = (sl.projection.orthographic(window=(-2, -1.5, 2, 1.5)) if parallel else
             sl.projection.perspective(fov=math.radians(45), near=0.5, far=20))
     cam = sl.Camera(eye=(1.5, 1.0, 5.0), target=(0, 0, 0), projection=proj)
@@ -31,9 +31,11 @@ def scene(parallel=False):
     # a square whose outward normal points away from the viewer: a back face, seen
     back = sl.mesh.Mesh([(-2, -1, 0.3), (-2, 0.2, 0.3), (-1.1, 0.2, 0.3), (-1.1, -1, 0.3)],
                         [(0, 1, 2, 3)])
-    mats = [sl.lighting.Material(ka=0.3, kd=0.6, ks=0.4, shininess=15, color=(200, 120, 60)),
-            sl.lighting.Material(ka=0.2, kd=0.5, ks=0.6, shininess=80, color="teal",
-                                 specular_color=(255, 220, 200))]
+    if mats is None:
+        mats = [sl.lighting.Material(ka=0.3, kd=0.6, ks=0.4, shininess=15,
+                                     color=(200, 120, 60)),
+                sl.lighting.Material(ka=0.2, kd=0.5, ks=0.6, shininess=80, color="teal",
+                                     specular_color=(255, 220, 200))]
     sc = prepare([torus, box, back], cam, W, H, mats + [mats[0]])
     assert not sc.front[sc.facet_mesh == 2].any()
     return sc
@@ -70,6 +72,30 @@ def test_kernel_matches_the_numpy_path(parallel, shading, specular, mode):
     assert (got[:, :want.shape[1]] != want).mean() < 0.01
     if mode == "RGBA":
         assert (got[:, 3] == 255).all()
+
+
+@pytest.mark.parametrize("shininess", [20, 2.5, 300])
+def test_one_exponent_for_every_material(shininess):
+    """One material for every facet: a small whole exponent is raised by squaring inside
+    the lighting loop, a fraction or a whole one of 256 or more by the power in a pass
+    of its own; each is the numpy path's highlight within a stored level."""
+    mat = sl.lighting.Material(ka=0.2, kd=0.5, ks=0.8, shininess=shininess, color="white")
+    sc = scene(mats=[mat, mat])
+    ids = nearest(sc).ids.copy()
+    ys, xs = np.nonzero(ids >= 0)
+    tris = ids[ys, xs]
+    fb = sl.FrameBuffer(W, H)
+    opts = ShadingOptions(model="phong", lights=LIGHTS, specular="phong", gamma=2.2)
+    shade_buffer(sc, fb, ids, opts)
+    got = fb._raster()[0][ys, xs].astype(int)
+    bary = barycentrics(sc, tris, xs.astype(float), ys.astype(float))
+    want = encode(intensities(sc, sc.facet[tris], bary, opts), 2.2)
+    matte = sl.lighting.Material(ka=0.2, kd=0.5, ks=0.0, color="white")
+    plain = scene(mats=[matte, matte])                            # the same triangles
+    dull = encode(intensities(plain, plain.facet[tris], bary, opts), 2.2)
+    assert (want > dull + 2).any(axis=1).sum() >= 3             # a highlight is drawn
+    assert np.abs(got - want).max() <= 1
+    assert (got != want).mean() < 0.01
 
 
 def test_pixels_without_a_face_are_left_alone():

@@ -82,10 +82,10 @@ CHUNK = 128
 #: The scratch fields of a chunk (field f of pixel i at ``f * CHUNK + i``): the
 #: point, the normal, the surface color (a mesh's own colors), the direction to the
 #: viewer, kd S_d, ks S_s, the intensity summed so far, the direction to the light
-#: and its factor f_l, N . L (0 where not lit), the highlight's base s and its power,
-#: and 1 where the highlight counts (else 0), and 1/w (:func:`shade_row` leaves the
-#: point and the normal times 1/w: see :func:`light_chunk`).  Flat and Gouraud
-#: shading interpolate the vertex intensities into the first three.
+#: and its factor f_l, N . L (0 where not lit), the highlight (0 where it does not
+#: count; before the power, its base s), and 1/w (:func:`shade_row` leaves the point
+#: and the normal times 1/w: see :func:`light_chunk`).  Flat and Gouraud shading
+#: interpolate the vertex intensities into the first three.
 PX, PY, PZ = 0, 1, 2
 NX, NY, NZ = 3, 4, 5
 CR, CG, CB = 6, 7, 8
@@ -94,9 +94,9 @@ DR, DG, DB = 12, 13, 14
 SR, SG, SB = 15, 16, 17
 IR, IG, IB = 18, 19, 20
 LX, LY, LZ, FL = 21, 22, 23, 24
-NL, BASE, POW, LIT = 25, 26, 27, 28
-QW = 29
-FIELDS = 30
+NL, POW = 25, 26
+QW = 27
+FIELDS = 28
 
 #: The bits of the whole exponents n_s raised by repeated squaring inside the
 #: lighting loop (larger ones, fractions and exponents that differ between the

@@ -6,7 +6,16 @@ prints one line per variant with the ratio peer time / scanline time, and writes
 JSON record to ``benchmarks/results/<topic>.json``.  Timings are the minimum of
 ``repeats`` warm runs (the first call, which compiles numba kernels, is reported
 apart as ``first_s``); the cyclic garbage collector is off while timing.
+
+Where a machine's speed changes from one moment to the next (a virtual machine
+whose host is busy: the project's 2-core AMD EPYC machine ran the same kernel in 21
+ms and 35 ms within seconds, 2026-12-07), minima taken one after the other compare
+different moments.  :meth:`Report.alternate` then times the variants of a workload
+in turn, one call of each per round, and the ratio of a target is the median of the
+rounds' ratios: each round's calls ran at nearly the same moment.
 """
+
+import statistics
 
 import datetime as _dt
 import gc
@@ -50,6 +59,28 @@ def timed(fn, repeats=3):
     return first, best
 
 
+def alternated(fns, rounds):
+    """``[(first_s, [round times]), ...]`` for the functions ``fns``: each called once
+    (its first call, timed apart), then ``rounds`` rounds of one call of each in turn
+    (the garbage collector off)."""
+    gc.collect()
+    gc.disable()
+    try:
+        out = []
+        for fn in fns:
+            t0 = time.perf_counter()
+            fn()
+            out.append((time.perf_counter() - t0, []))
+        for _ in range(rounds):
+            for fn, (_, times) in zip(fns, out):
+                t0 = time.perf_counter()
+                fn()
+                times.append(time.perf_counter() - t0)
+    finally:
+        gc.enable()
+    return out
+
+
 class Report:
     """Collects the timings of one topic and prints them as they come.
 
@@ -75,6 +106,37 @@ class Report:
               f"  {call}", flush=True)
         return best
 
+    def alternate(self, workload, entries, rounds=15):
+        """Time the ``entries`` ``(library, call, fn, n)`` of one workload in turn
+        (:func:`alternated`) and record each with its rounds' times; returns their best
+        times in seconds."""
+        group = len(self.rows)
+        bests = []
+        for (library, call, _, n), (first, times) in zip(
+                entries, alternated([e[2] for e in entries], rounds)):
+            best = min(times)
+            self.rows.append({"workload": workload, "library": library, "call": call,
+                              "first_s": first, "best_s": best, "n": n,
+                              "rounds_s": times, "alternated": group})
+            print(f"  {workload:<28} {library:<12} {best * 1e3:10.2f} ms  (first "
+                  f"{first * 1e3:.1f} ms, median {statistics.median(times) * 1e3:.2f} ms of "
+                  f"{rounds} rounds in turn)  {call}", flush=True)
+            bests.append(best)
+        return bests
+
+    def _row(self, workload, library):
+        return min((r for r in self.rows if r["workload"] == workload
+                    and r["library"] == library), key=lambda r: r["best_s"])
+
+    def ratio(self, workload, peer, library="scanline"):
+        """peer time / ``library`` time on ``workload``: the median of the rounds'
+        ratios where the two were timed in turn (:meth:`alternate`), else the ratio of
+        their best times."""
+        a, b = self._row(workload, peer), self._row(workload, library)
+        if "alternated" in a and a["alternated"] == b.get("alternated"):
+            return statistics.median(x / y for x, y in zip(a["rounds_s"], b["rounds_s"]))
+        return a["best_s"] / b["best_s"]
+
     def best(self, workload, library):
         """The best time recorded for ``library`` on ``workload``."""
         return min(r["best_s"] for r in self.rows
@@ -82,11 +144,14 @@ class Report:
 
     def target(self, workload, peer, minimum, text):
         """Record the target "peer time / scanline time >= minimum" and print it."""
-        ratio = self.best(workload, peer) / self.best(workload, "scanline")
+        ratio = self.ratio(workload, peer)
         met = ratio >= minimum
         self.targets.append({"workload": workload, "peer": peer, "ratio": ratio,
                              "minimum": minimum, "met": met, "text": text})
-        print(f"  -> {workload}: {peer} time / scanline time = {ratio:.2f}x "
+        how = (" (median of the rounds in turn; best times "
+               f"{self.best(workload, peer) / self.best(workload, 'scanline'):.2f}x)"
+               if "alternated" in self._row(workload, peer) else "")
+        print(f"  -> {workload}: {peer} time / scanline time = {ratio:.2f}x{how} "
               f"(target {text}: {'met' if met else 'NOT met'})", flush=True)
         return ratio
 

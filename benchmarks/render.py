@@ -129,6 +129,7 @@ def main():
     rng = np.random.default_rng(1)
     ctx, renderer = gl_setup()
     scale = 10 if args.quick else 1
+    rounds = 3 if args.quick else 15       # scanline and Mesa in turn (common.alternated)
     for n, size, name in ((1_000_000 // scale, 10, "small"), (100_000 // scale, 50, "medium")):
         tris = random_triangles(rng, n, size)
         colors = rng.uniform(0, 255, size=(n, 3, 3))       # drawn anyway: the same scenes
@@ -142,15 +143,16 @@ def main():
             fb.clear()
             depth.clear()
             sl.draw.triangles(fb, tris, colors=colors, depth=depth)
-        report.add(work, "scanline", "sl.draw.triangles(fb, tris, colors, depth=depth)", ours,
-                   n=n)
+        entries = [("scanline", "sl.draw.triangles(fb, tris, colors, depth=depth)", ours, n)]
         if ctx is not None:
             prog = ctx.program(vertex_shader=GL_GOURAUD[0], fragment_shader=GL_GOURAUD[1])
             prog["size"].value = (W, H)
             run = gl_draw(ctx, prog, np.concatenate([tris, colors], axis=2), "3f 3f",
                           ("position", "color"))
-            report.add(work, "mesa", f"moderngl GL_TRIANGLES on {renderer}, clear to read-back",
-                       run, n=n)
+            entries.append(("mesa", f"moderngl GL_TRIANGLES on {renderer}, clear to read-back",
+                            run, n))
+        report.alternate(work, entries, rounds)
+        if ctx is not None:
             report.target(work, "mesa", 1.0, ">= 1.0: at least as fast as Mesa llvmpipe")
 
     # -- the teapot, Phong-shaded ---------------------------------------------------------
@@ -168,9 +170,8 @@ def main():
         def teapot_ours():
             fb.clear()
             sl.render(fb, teapot, cam, shading="phong", lights=lights, materials=mat)
-        report.add(work, "scanline", 'sl.render(fb, teapot, camera, shading="phong")', teapot_ours)
-        fb.save(os.path.join(os.path.dirname(os.path.abspath(__file__)), "results",
-                             "render-teapot.png"))
+        entries = [("scanline", 'sl.render(fb, teapot, camera, shading="phong")', teapot_ours,
+                    None)]
         if ctx is not None:
             tri = teapot.triangulated()
             f = tri.face_indices.reshape(-1, 3)
@@ -184,7 +185,11 @@ def main():
             prog["eye"].value = cam.eye
             prog["light"].value = tuple(light.direction)
             run = gl_draw(ctx, prog, data, "3f 3f", ("position", "normal"))
-            report.add(work, "mesa", f"moderngl per-pixel Phong on {renderer}", run)
+            entries.append(("mesa", f"moderngl per-pixel Phong on {renderer}", run, None))
+        report.alternate(work, entries, rounds)
+        fb.save(os.path.join(os.path.dirname(os.path.abspath(__file__)), "results",
+                             "render-teapot.png"))
+        if ctx is not None:
             report.target(work, "mesa", 1.0, ">= 1.0: at least as fast as Mesa llvmpipe")
         # antialiased: 2 x 2 supersampling against 4x MSAA (four samples a pixel each;
         # MSAA shades once a pixel, supersampling at every sample)
@@ -194,11 +199,13 @@ def main():
             fb.clear()
             sl.render(fb, teapot, cam, shading="phong", lights=lights, materials=mat,
                       antialias=2)
-        report.add(work_aa, "scanline", 'sl.render(..., shading="phong", antialias=2)',
-                   teapot_aa)
+        entries = [("scanline", 'sl.render(..., shading="phong", antialias=2)', teapot_aa,
+                    None)]
         if ctx is not None:
             run = gl_draw(ctx, prog, data, "3f 3f", ("position", "normal"), samples=4)
-            report.add(work_aa, "mesa", f"moderngl MSAA 4x Phong on {renderer}", run)
+            entries.append(("mesa", f"moderngl MSAA 4x Phong on {renderer}", run, None))
+        report.alternate(work_aa, entries, max(rounds // 3, 3))
+        if ctx is not None:
             report.target(work_aa, "mesa", 0.5, ">= 0.5: report (supersampling shades every "
                           "sample, MSAA once a pixel)")
 

@@ -23,10 +23,13 @@ Workloads (fixed seeds; the same scenes as the topic benchmarks):
 
 Threads are set with ``numba.set_num_threads(n)`` (the kernels' bands follow it);
 the processes and workers render with one thread each.  Each cell is the best of
-``--repeats`` runs (one for the frames) after a first call (which compiles); the
-speed-up is the time at 1 over the time at n.  Counts are 1, 2, 4, ... and the
+5 x ``--repeats`` rounds (``--repeats`` runs for the frames) after a first call
+(which compiles); the speed-up of the frames is the time at 1 over the time at n.  Counts are 1, 2, 4, ... and the
 machine's core count (``os.cpu_count()``); figures for more cores than the machine
-has are never made.
+has are never made.  The thread counts of a workload are timed in turn, a call at
+each count per round (``common.Report.alternate``: a machine whose speed changes
+from moment to moment slows every count alike), and a threaded workload's speed-up
+is the median of the rounds' ratios; its time, the best of the rounds.
 
 Run under the benchmark lock: ``flock /tmp/bench.lock python benchmarks/scaling.py
 [--quick] [--only NAME ...]`` (``--quick``: a tenth of the triangles and rays, 40
@@ -58,6 +61,11 @@ def counts(cores):
         out.append(n)
         n *= 2
     return out + [cores]
+
+
+def threads(n):
+    """"1 thread", "2 threads" ...: the label of a thread count's row."""
+    return f"{n} thread{'s' if n > 1 else ''}"
 
 
 def machine():
@@ -156,6 +164,7 @@ def main():
     parser.add_argument("--repeats", type=int, default=None)
     args = parser.parse_args()
     repeats = args.repeats or (1 if args.quick else 3)
+    rounds = max(repeats, 3) if args.quick else 5 * repeats    # the counts in turn
     cores = os.cpu_count() or 1
     steps = counts(cores)
     report = Report("scaling", quick=args.quick)
@@ -170,15 +179,19 @@ def main():
     for name, (call, run) in threaded(args.quick).items():
         if not wanted(name):
             continue
-        times = {}
-        for n in steps:
-            numba.set_num_threads(min(n, everything))
-            try:
-                times[n] = report.add(name, "scanline", f"{call}, {n} threads", run,
-                                      repeats=repeats, n=n)
-            finally:
-                numba.set_num_threads(everything)
-        table[name] = (call, times)
+
+        def at(n, run=run):
+            def on_n_threads():
+                numba.set_num_threads(min(n, everything))
+                try:
+                    run()
+                finally:
+                    numba.set_num_threads(everything)
+            return on_n_threads
+        bests = report.alternate(name, [(threads(n), f"{call}, {threads(n)}", at(n), n)
+                                        for n in steps], rounds)
+        table[name] = (call, dict(zip(steps, bests)),
+                       {n: report.ratio(name, threads(steps[0]), threads(n)) for n in steps})
 
     if wanted("frames"):
         from distributed import Client, LocalCluster
@@ -191,7 +204,7 @@ def main():
                                   lambda n=n: list(anim.images(selection, jobs=n,
                                                                progress=False)),
                                   repeats=repeats, n=n)
-        table[name] = (f"{selection[1]} frames 640x480, 240 segments", times)
+        table[name] = (f"{selection[1]} frames 640x480, 240 segments", times, None)
         import dask
 
         for name, settings in (("frames Dask N", {}),
@@ -210,7 +223,7 @@ def main():
                                               repeats=repeats, n=n)
             table[name] = (f"{selection[1]} frames, a LocalCluster of N 1-thread workers"
                            + (", started under sl.animation.QUIET_WORKERS" if settings else ""),
-                           times)
+                           times, None)
 
     markdown = render_table(table, steps, cores)
     print(markdown)
@@ -225,9 +238,10 @@ def render_table(table, steps, cores):
             f"{os.getloadavg()[0]:.2f} at the end; seconds (speed-up over 1)\n\n")
     lines = ["| workload | what | " + " | ".join(f"{n}" for n in steps) + " |",
              "|---|---|" + "---:|" * len(steps)]
-    for name, (call, times) in table.items():
+    for name, (call, times, speedups) in table.items():
         one = times[steps[0]]
-        cells = [f"{times[n]:.3f} ({one / times[n]:.2f}x)" for n in steps]
+        cells = [f"{times[n]:.3f} ({(speedups[n] if speedups else one / times[n]):.2f}x)"
+                 for n in steps]
         lines.append(f"| {name} | {call} | " + " | ".join(cells) + " |")
     return head + "\n".join(lines) + "\n"
 

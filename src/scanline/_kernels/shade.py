@@ -53,8 +53,13 @@ from ._jit import helper, inline, kernel
 from .raster3d import SETUP_BATCH, planes
 from .variants import GRAY, RGBA, token
 
-#: Rows per band of :func:`shade_pixels` (the bands are shaded in parallel).
-BAND = 32
+#: Rows per band of :func:`shade_pixels` (the bands are shaded in parallel, every
+#: step-th band by one thread).  Narrow bands share uneven work evenly: with the
+#: teapot's measured cost of each row (2026-12-07, benchmarks' teapot at 1920 x 1080),
+#: 16 threads would each shade at most 1/15.0 of the frame with bands of 8 rows,
+#: against 1/12.8 with 32 (a model: no 16-core machine was at hand); a band costs
+#: nothing of its own, as a row is shaded alone.
+BAND = 8
 
 VERTEX = 1
 PHONG = 2

@@ -137,6 +137,11 @@ class Report:
             return statistics.median(x / y for x, y in zip(a["rounds_s"], b["rounds_s"]))
         return a["best_s"] / b["best_s"]
 
+    def median(self, workload, library):
+        """The median of the rounds of ``library`` on ``workload`` timed in turn
+        (:meth:`alternate`)."""
+        return statistics.median(self._row(workload, library)["rounds_s"])
+
     def best(self, workload, library):
         """The best time recorded for ``library`` on ``workload``."""
         return min(r["best_s"] for r in self.rows

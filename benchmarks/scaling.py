@@ -22,14 +22,15 @@ Workloads (fixed seeds; the same scenes as the topic benchmarks):
   under ``sl.animation.QUIET_WORKERS`` (event-loop tick 1 s, profiler off).
 
 Threads are set with ``numba.set_num_threads(n)`` (the kernels' bands follow it);
-the processes and workers render with one thread each.  Each cell is the best of
-5 x ``--repeats`` rounds (``--repeats`` runs for the frames) after a first call
-(which compiles); the speed-up of the frames is the time at 1 over the time at n.  Counts are 1, 2, 4, ... and the
+the processes and workers render with one thread each.  A threaded workload's cell
+is the median time of 5 x ``--repeats`` rounds after a first call (which compiles);
+the frames' is the best of ``--repeats`` runs (one by default), and their speed-up
+the time at 1 over the time at n.  Counts are 1, 2, 4, ... and the
 machine's core count (``os.cpu_count()``); figures for more cores than the machine
 has are never made.  The thread counts of a workload are timed in turn, a call at
 each count per round (``common.Report.alternate``: a machine whose speed changes
 from moment to moment slows every count alike), and a threaded workload's speed-up
-is the median of the rounds' ratios; its time, the best of the rounds.
+is the median of the rounds' ratios.
 
 Run under the benchmark lock: ``flock /tmp/bench.lock python benchmarks/scaling.py
 [--quick] [--only NAME ...]`` (``--quick``: a tenth of the triangles and rays, 40
@@ -188,9 +189,9 @@ def main():
                 finally:
                     numba.set_num_threads(everything)
             return on_n_threads
-        bests = report.alternate(name, [(threads(n), f"{call}, {threads(n)}", at(n), n)
-                                        for n in steps], rounds)
-        table[name] = (call, dict(zip(steps, bests)),
+        report.alternate(name, [(threads(n), f"{call}, {threads(n)}", at(n), n)
+                                for n in steps], rounds)
+        table[name] = (call, {n: report.median(name, threads(n)) for n in steps},
                        {n: report.ratio(name, threads(steps[0]), threads(n)) for n in steps})
 
     if wanted("frames"):
@@ -235,7 +236,8 @@ def main():
 def render_table(table, steps, cores):
     """The Markdown table: a row per workload, the time and speed-up at each count."""
     head = (f"Scaling on {cores} cores ({machine()}), load average "
-            f"{os.getloadavg()[0]:.2f} at the end; seconds (speed-up over 1)\n\n")
+            f"{os.getloadavg()[0]:.2f} at the end; seconds (speed-up over 1; threaded "
+            f"workloads: medians of the counts timed in turn)\n\n")
     lines = ["| workload | what | " + " | ".join(f"{n}" for n in steps) + " |",
              "|---|---|" + "---:|" * len(steps)]
     for name, (call, times, speedups) in table.items():

@@ -8,7 +8,9 @@
 
 Ratios are peer time / scanline time: above 1 means scanline is faster.  Warm times
 are the best (minimum) of ``--repeats`` runs, after a first call on one primitive
-(timed and reported apart) and an untimed warm-up.  By default numba's on-disk cache
+(timed and reported apart) and an untimed warm-up; the variants of a workload are run
+in turn, one run of each per round, so that their runs share the same stretch of
+time.  By default numba's on-disk cache
 is pointed at an empty temporary folder, so scanline's first calls are genuine JIT
 compilations; afterwards a fresh process (``compile_probe.py``) loads the kernels from
 that cache, which is what every later ``import scanline`` pays.  ``--use-cache`` keeps
@@ -184,8 +186,25 @@ def _timed(fn, *args):
     return time.perf_counter() - t0
 
 
-def time_variant(w, v, repeats, log):
-    """Time variant ``v`` on workload ``w``: first call, warm-up, ``repeats`` runs."""
+def time_variants(w, vs, repeats, log):
+    """Time the variants ``vs`` on workload ``w``: each one's first call and warm-up,
+    then ``repeats`` rounds of one run of each in turn, so that every variant's runs
+    are spread over the same stretch of time (a machine whose speed changes from one
+    moment to the next slows them alike; benchmarks/common.py)."""
+    states = [_set_up(w, v, log) for v in vs]
+    for _ in range(repeats):
+        for state in states:
+            if "runs" in state:
+                state["canvas"].clear()
+                state["runs"].append(_timed(state["v"].draw, state["canvas"], state["data"]))
+    return [state["result"] if "result" in state else
+            _result(w, state["v"], state["n_timed"], state["first"], state["cache"],
+                    state["runs"], state["prepare_s"], log) for state in states]
+
+
+def _set_up(w, v, log):
+    """Variant ``v`` ready to be timed: its canvas and data, its first call (timed)
+    and an untimed warm-up; a variant too slow to repeat is timed once here."""
     n_timed = min(w.n, v.max_timed) if v.max_timed else w.n
     t0 = time.perf_counter()
     canvas = v.canvas(w.width, w.height)
@@ -199,7 +218,7 @@ def time_variant(w, v, repeats, log):
         res = _result(w, v, n_timed, first, None, [first], prepare_s, log)
         if n_timed >= w.sanity_n:  # the sanity check reuses these pixels
             res["_mask"] = canvas.mask()
-        return res
+        return {"v": v, "result": res}
     first = _timed(v.draw, canvas, first_data)
     after = wl.kernel_cache_stats(w.kind, v.kind) if v.library == "scanline" else None
     cache = None
@@ -207,11 +226,8 @@ def time_variant(w, v, repeats, log):
         hits, misses = after[0] - before[0], after[1] - before[1]
         cache = "cache hit" if hits else "compiled" if misses else "compiled earlier in this run"
     v.draw(canvas, warm_data)
-    runs = []
-    for _ in range(repeats):
-        canvas.clear()
-        runs.append(_timed(v.draw, canvas, data))
-    return _result(w, v, n_timed, first, cache, runs, prepare_s, log)
+    return {"v": v, "canvas": canvas, "data": data, "n_timed": n_timed, "first": first,
+            "cache": cache, "prepare_s": prepare_s, "runs": []}
 
 
 def _result(w, v, n_timed, first, cache, runs, prepare_s, log):
@@ -437,7 +453,7 @@ def run(a, cache_dir):
             record.setdefault("skipped", {})[name] = "sl.draw.flood_fill not available"
             continue
         t_w = time.perf_counter()
-        res = [time_variant(w, v, a.repeats, log) for v in vs]
+        res = time_variants(w, vs, a.repeats, log)
         add_ratios(res)
         entry = {"description": w.description, "kind": w.kind, "n": w.n,
                  "canvas": [w.width, w.height], "seed": w.seed, "params": w.params,

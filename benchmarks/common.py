@@ -15,13 +15,12 @@ in turn, one call of each per round, and the ratio of a target is the median of 
 rounds' ratios: each round's calls ran at nearly the same moment.
 """
 
-import statistics
-
 import datetime as _dt
 import gc
 import json
 import os
 import platform
+import statistics
 import sys
 import tempfile
 import time
@@ -108,10 +107,8 @@ class Report:
 
     def alternate(self, workload, entries, rounds=15):
         """Time the ``entries`` ``(library, call, fn, n)`` of one workload in turn
-        (:func:`alternated`) and record each with its rounds' times; returns their best
-        times in seconds."""
+        (:func:`alternated`) and record each with its rounds' times."""
         group = len(self.rows)
-        bests = []
         for (library, call, _, n), (first, times) in zip(
                 entries, alternated([e[2] for e in entries], rounds)):
             best = min(times)
@@ -121,8 +118,6 @@ class Report:
             print(f"  {workload:<28} {library:<12} {best * 1e3:10.2f} ms  (first "
                   f"{first * 1e3:.1f} ms, median {statistics.median(times) * 1e3:.2f} ms of "
                   f"{rounds} rounds in turn)  {call}", flush=True)
-            bests.append(best)
-        return bests
 
     def _row(self, workload, library):
         return min((r for r in self.rows if r["workload"] == workload
@@ -144,8 +139,7 @@ class Report:
 
     def best(self, workload, library):
         """The best time recorded for ``library`` on ``workload``."""
-        return min(r["best_s"] for r in self.rows
-                   if r["workload"] == workload and r["library"] == library)
+        return self._row(workload, library)["best_s"]
 
     def target(self, workload, peer, minimum, text):
         """Record the target "peer time / scanline time >= minimum" and print it."""

@@ -10,11 +10,11 @@ Ratios are peer time / scanline time: above 1 means scanline is faster.  Warm ti
 are the best (minimum) of ``--repeats`` runs, after a first call on one primitive
 (timed and reported apart) and an untimed warm-up; the variants of a workload are run
 in turn, one run of each per round, so that their runs share the same stretch of
-time.  By default numba's on-disk cache
-is pointed at an empty temporary folder, so scanline's first calls are genuine JIT
-compilations; afterwards a fresh process (``compile_probe.py``) loads the kernels from
-that cache, which is what every later ``import scanline`` pays.  ``--use-cache`` keeps
-numba's normal cache instead (faster re-runs; first calls may then be cache loads).
+time.  By default numba's on-disk cache is pointed at an empty temporary folder, so
+scanline's first calls are genuine JIT compilations; afterwards a fresh process
+(``compile_probe.py``) loads the kernels from that cache, which is what every later
+``import scanline`` pays.  ``--use-cache`` keeps numba's normal cache instead (faster
+re-runs; first calls may then be cache loads).
 See benchmarks/README.md for how to read the output.
 """
 

@@ -22,15 +22,15 @@ Workloads (fixed seeds; the same scenes as the topic benchmarks):
   under ``sl.animation.QUIET_WORKERS`` (event-loop tick 1 s, profiler off).
 
 Threads are set with ``numba.set_num_threads(n)`` (the kernels' bands follow it);
-the processes and workers render with one thread each.  A threaded workload's cell
-is the median time of 5 x ``--repeats`` rounds after a first call (which compiles);
-the frames' is the best of ``--repeats`` runs (one by default), and their speed-up
-the time at 1 over the time at n.  Counts are 1, 2, 4, ... and the
+the processes and workers render with one thread each.  The thread counts of a
+workload are timed in turn, a call at each count per round, 5 x ``--repeats``
+rounds after a first call (which compiles) (``common.Report.alternate``: a machine
+whose speed changes from moment to moment slows every count alike); a threaded
+workload's cell is its median time and its speed-up the median of the rounds'
+ratios.  The frames' cell is the best of ``--repeats`` runs (one by default), and
+their speed-up the time at 1 over the time at n.  Counts are 1, 2, 4, ... and the
 machine's core count (``os.cpu_count()``); figures for more cores than the machine
-has are never made.  The thread counts of a workload are timed in turn, a call at
-each count per round (``common.Report.alternate``: a machine whose speed changes
-from moment to moment slows every count alike), and a threaded workload's speed-up
-is the median of the rounds' ratios.
+has are never made.
 
 Run under the benchmark lock: ``flock /tmp/bench.lock python benchmarks/scaling.py
 [--quick] [--only NAME ...]`` (``--quick``: a tenth of the triangles and rays, 40
@@ -48,7 +48,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import HERE, Report, timed  # noqa: E402
+from common import Report  # noqa: E402
 
 import scanline as sl  # noqa: E402
 

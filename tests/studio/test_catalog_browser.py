@@ -8,7 +8,8 @@ the grid shows drawing (pixels in the step colors, not only grid lines, gray
 shapes and handles); the last row's cells are those that ``scanline trace ...
 --format json`` prints for the command shown under the page (run in the test's
 process); no request fails (4xx, 5xx or network), the console has no error or
-warning, and the command shown runs in a shell exactly as shown.  Each explore request's time is printed."""
+warning, and the command shown runs in a shell exactly as shown.  Each explore
+request's time is printed."""
 
 import contextlib
 import io

@@ -381,16 +381,3 @@ def by_group(modes: Sequence[str] = MODES) -> list[list[str]]:
             members[CALLS[name][0]].append(name)
     sizes = {g: sum(1 for n, _, _ in cases(names, modes)) for g, names in members.items()}
     return [members[g] for g in sorted(members, key=lambda g: -sizes[g])]
-
-
-def groups(jobs: int, modes: Sequence[str] = MODES) -> list[list[str]]:
-    """The calls split into ``jobs`` lists of names, whole groups to one list,
-    balanced by the number of calls (so that two processes rarely compile the same
-    kernel)."""
-    parts: list[list[str]] = [[] for _ in range(jobs)]
-    load = [0] * jobs
-    for names in by_group(modes):
-        k = load.index(min(load))
-        parts[k] += names
-        load[k] += sum(1 for _ in cases(names, modes))
-    return [p for p in parts if p]

@@ -26,9 +26,10 @@ def _subprocess(*args, cwd=None):
     return Result(proc.returncode, proc.stdout, _without_notice(proc.stderr))
 
 
-@pytest.fixture
+@pytest.fixture(scope="session")
 def run():
-    """Run ``python -m scanline ARGS...`` in a subprocess; return a :class:`Result`."""
+    """Run ``python -m scanline ARGS...`` in a subprocess; return a :class:`Result`
+    (session-scoped: it holds nothing, so module-scoped fixtures may use it too)."""
     return _subprocess
 
 

@@ -1,31 +1,27 @@
 """``scanline demo``: the gallery, its page and its pictures."""
 
-import contextlib
 import importlib
-import io
 import re
 
 import pytest
 from PIL import Image
 
-from scanline.cli import demo, main
+from scanline.cli import demo
 from scanline.gallery import primitives as figures
 
 
 @pytest.fixture(scope="module")
-def gallery(tmp_path_factory):
-    """Run ``scanline demo`` once (in-process) into a fresh folder."""
-    out = tmp_path_factory.mktemp("demo") / "gallery"
-    stdout = io.StringIO()
-    with contextlib.redirect_stdout(stdout):
-        code = main(["demo", "--out", str(out)])
-    return out, code, stdout.getvalue()
+def gallery(run, tmp_path_factory):
+    """Run ``scanline demo`` once, as a user would: a subprocess in a fresh folder,
+    writing into the default folder; (that folder, the run's :class:`Result`)."""
+    cwd = tmp_path_factory.mktemp("demo")
+    return cwd / demo.DEFAULT_DIR, run("demo", cwd=cwd)
 
 
 def test_demo_writes_every_figure_gallery_and_page(gallery):
-    out, code, stdout = gallery
-    assert code == 0
-    assert str(out) in stdout
+    out, result = gallery
+    assert result.code == 0
+    assert str(out / "index.html") in result.out
     assert len(figures.FIGURES) == 13
     every = demo.all_figures()
     assert every[:13] == list(figures.FIGURES)  # the chapter 2 figures come first
@@ -68,10 +64,9 @@ def test_page_shows_each_figure_with_caption_and_tables(gallery):
     assert r"Bresenham line (20, 10) -\u003e (30, 18)" in explain and 'src="http' not in explain
 
 
-def test_demo_into_the_default_folder(run, tmp_path):
-    result = run("demo", cwd=tmp_path)
+def test_demo_says_what_it_draws(gallery):
+    folder, result = gallery
     assert result.code == 0
-    assert (tmp_path / demo.DEFAULT_DIR / "index.html").is_file()
     # stderr, not a terminal here: what it is doing, then one plain line per figure
     # or animation (item k of n, its name, the time so far) -- nothing else
     n = len(demo.all_figures())
@@ -83,7 +78,6 @@ def test_demo_into_the_default_folder(run, tmp_path):
     assert all(progress) and len(progress) == n + m
     assert [int(p[1]) for p in progress] == list(range(1, n + m + 1))
     assert {int(p[2]) for p in progress} == {n + m}
-    folder = tmp_path / demo.DEFAULT_DIR
     files = {p.stem for p in folder.glob("*.png")} - {"gallery"}
     assert {p[3] for p in progress} == files | {p.name for p in folder.glob("*.gif")}
     times = [float(p[4]) for p in progress]

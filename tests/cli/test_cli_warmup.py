@@ -27,17 +27,14 @@ def test_warmup_makes_every_call_in_two_processes(run):
                         r"with 2 processes\n", result.out)
 
 
-def test_groups_cover_every_call_once_and_balance():
-    parts = warmup.groups(2)
-    names = [name for part in parts for name in part]
+def test_groups_cover_every_call_once_largest_first():
+    groups = warmup.by_group()
+    names = [name for group in groups for name in group]
     assert sorted(names) == sorted(warmup.CALLS)
-    sizes = [sum(1 for _ in warmup.cases(part)) for part in parts]
-    assert max(sizes) - min(sizes) <= max(len(list(warmup.cases(g))) for g in warmup.by_group())
-    # a group of kernels goes to one process only
-    for part in parts:
-        groups = {warmup.CALLS[name][0] for name in part}
-        assert all(warmup.CALLS[n][0] not in groups for other in parts if other is not part
-                   for n in other)
+    # a group is the calls of one group of kernels
+    assert all(len({warmup.CALLS[name][0] for name in group}) == 1 for group in groups)
+    sizes = [sum(1 for _ in warmup.cases(group)) for group in groups]
+    assert sizes == sorted(sizes, reverse=True)
 
 
 @pytest.mark.parametrize("args, fragment", [

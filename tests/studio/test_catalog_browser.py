@@ -46,9 +46,11 @@ COLORED_PIXELS = """() => {
     return n;
 }"""
 
+#: What one step shows, read in one call (one round trip to the browser per step).
 STEP = """() => ({rule: document.getElementById('rule').textContent,
                 current: document.querySelector('table#table tr.current')?.dataset.step,
-                counter: document.getElementById('counter').textContent})"""
+                counter: document.getElementById('counter').textContent,
+                colored: (%s)()})""" % COLORED_PIXELS
 
 
 def _environment():
@@ -114,7 +116,7 @@ def _steps(page, server, name, problems, timings):
             failed.setdefault(f"current row {s['current']}, {s['counter']!r}", []).append(i)
         if not s["rule"].strip():
             failed.setdefault("the rule box is empty", []).append(i)
-        if page.evaluate(COLORED_PIXELS) < 10:
+        if s["colored"] < 10:
             failed.setdefault("the grid shows no drawing", []).append(i)
     problems += [f"{name}: {what} at steps {steps[:5]}{' ...' if len(steps) > 5 else ''} "
                  f"({len(steps)} of {n})" for what, steps in failed.items()]

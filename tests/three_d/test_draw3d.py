@@ -25,7 +25,8 @@ def camera(eye=(2.5, 1.5, 3.0), target=(0, 0, 0)):
 
 def reference_device_segments(mesh, eye, target):
     """The mesh's edges clipped in viewing coordinates (exactly, against the frustum's
-    planes) and projected with gluLookAt / gluPerspective, in device coordinates."""
+    planes) and projected with gluLookAt / gluPerspective, in device coordinates; and
+    which edges are seen (a mask)."""
     view = glu_look_at(eye, target, (0, 1, 0))
     v = np.hstack([mesh.vertices, np.ones((len(mesh.vertices), 1))]) @ view.T
     e = mesh.edges
@@ -37,7 +38,7 @@ def reference_device_segments(mesh, eye, target):
         h = np.hstack([p, np.ones((len(p), 1))]) @ proj.T
         ndc = h[:, :2] / h[:, 3:]
         return (ndc + 1) / 2 * [W - 1, H - 1]
-    return np.hstack([device(clipped[ok, :3]), device(clipped[ok, 3:])])
+    return np.hstack([device(clipped[ok, :3]), device(clipped[ok, 3:])]), ok
 
 
 def rows(a):
@@ -52,7 +53,7 @@ def test_wireframe_is_draw_lines_of_the_clipped_projected_edges(eye):
     mesh = sl.mesh.sphere(1.0, resolution=(16, 8))
     fb = sl.FrameBuffer(W, H)
     segs = sl.draw3d.wireframe(fb, mesh, camera(eye), color="white")
-    ref = reference_device_segments(mesh, eye, (0, 0, 0))
+    ref, _ = reference_device_segments(mesh, eye, (0, 0, 0))
     assert len(segs) == len(ref) > 0
     np.testing.assert_allclose(rows(segs), rows(ref), atol=1e-7)
     fb_ref = sl.FrameBuffer(W, H)
@@ -72,18 +73,14 @@ def test_edges_projected_on_threads_keep_the_order_of_the_edges(monkeypatch):
                         or real(kernel, work, *a))
     mesh = sl.mesh.sphere(1.0, resolution=(160, 80))
     eye = (0.6, 0.3, 1.2)
-    view = glu_look_at(eye, (0, 0, 0), (0, 1, 0))
-    v = np.hstack([mesh.vertices, np.ones((len(mesh.vertices), 1))]) @ view.T
     e = mesh.edges
     assert 20 * len(e) > sl._kernels._jit.TWIN_WORK
-    _, ok = reference_segments(np.hstack([v[e[:, 0], :3], v[e[:, 1], :3]]),
-                               viewing_frustum_planes(FOV, (W - 1) / (H - 1), NEAR, FAR), 3)
+    ref, ok = reference_device_segments(mesh, eye, (0, 0, 0))
     segs, depth, which = sl.draw3d.project_edges(mesh.vertices, e, camera(eye), W, H)
     assert len(chunks) == 3 and sum(chunks) == len(e)
     assert 0 < ok.sum() < len(e)
     assert np.array_equal(which, np.flatnonzero(ok))
-    np.testing.assert_allclose(segs, reference_device_segments(mesh, eye, (0, 0, 0)),
-                               atol=1e-7)
+    np.testing.assert_allclose(segs, ref, atol=1e-7)
     assert depth.shape == (len(segs), 2) and ((0 <= depth) & (depth <= 1)).all()
 
 

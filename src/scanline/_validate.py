@@ -205,10 +205,8 @@ def coordinate_array(name: str, value: object, columns: int,
     taken and the rows come back as float64, not rounded (conic batches, which
     draw far rows themselves).
     """
-    exact = None if far else integers_in_range(value, columns)
+    exact = None if far else exact_coordinates(name, value, columns, radius_columns)
     if exact is not None:
-        for c in radius_columns:
-            _radii(name, exact, c)
         return exact
     try:
         a = np.asarray(value)
@@ -271,9 +269,23 @@ def integers_in_range(value: object, columns: int) -> Optional[NDArray[np.int64]
         return None
     if value.dtype.kind not in "iu" or value.ndim != 2 or value.shape[1] != columns:
         return None
-    if value.size and not (-COORD_LIMIT <= int(value.min()) and int(value.max()) <= COORD_LIMIT):
-        return None
+    if value.size:
+        lo, hi = extremes(value)        # (on every core for a large batch)
+        if not (-COORD_LIMIT <= lo and hi <= COORD_LIMIT):
+            return None
     return np.ascontiguousarray(value, np.int64)
+
+
+def exact_coordinates(name: str, value: object, columns: int,
+                      radius_columns: Iterable[int] = ()) -> Optional[NDArray[np.int64]]:
+    """``value`` as :func:`integers_in_range` gives it, its ``radius_columns``
+    checked (a negative radius is an error naming ``name``), or None when it is not
+    an integer array in range (:func:`coordinate_array` then converts it)."""
+    exact = integers_in_range(value, columns)
+    if exact is not None:
+        for c in radius_columns:
+            _radii(name, exact, c)
+    return exact
 
 
 def _radii(name: str, a: NDArray[Any], c: int) -> None:

@@ -461,3 +461,18 @@ def test_empty_batches_draw_nothing():
     sl.draw.circles(fb, np.zeros((0, 3)))
     sl.draw.ellipses(fb, np.zeros((0, 4)))
     assert not fb.to_array().any()
+
+
+@pytest.mark.parametrize("rows", [
+    np.array([(4, 4, 3), (15, 4, -2)]),                 # integers in the exact range
+    np.array([(4, 4, 3), (15, 4, -2)], np.int32),
+    [(4, 4, 3), (15, 4, -2)],
+    np.array([(4, 4, 3), (15, 4, -2.0)]),               # floats: converted first
+    np.array([(4, 4, 3), (15, 2**40, -2)]),             # beyond the exact range
+    np.concatenate([np.tile([(4, 4, 3)], (300_000, 1)), [(15, 4, -2)]]),  # split between cores
+])
+def test_a_negative_radius_is_refused_naming_its_row(rows):
+    fb = sl.FrameBuffer(30, 10)
+    with pytest.raises(sl.ArgumentValueError, match=r"circles column 2 holds radii.*row (1|300000)"):
+        sl.draw.circles(fb, rows)
+    assert not fb.to_array().any()

@@ -216,9 +216,10 @@ def circles(fb: "FrameBuffer", circles: ArrayLike, color: Optional[Colors] = Non
     """
     attrs = strokes.styled(style, antialias, width, cap, join, miter_limit, dash, dash_phase, pen)
     target(fb)                       # (fb is checked before the rows)
-    if attrs is None and v.integers_in_range(circles, 3) is not None:
+    exact = None if attrs is not None else v.exact_coordinates("circles", circles, 3, (2,))
+    if exact is not None:
         # integers in range (the common large batch): every row is exact, drawn as is
-        _near_circles(fb, v.coordinate_array("circles", circles, 3, radius_columns=(2,)), color)
+        _near_circles(fb, exact, color)
         return
     rows = v.coordinate_array("circles", circles, 3, radius_columns=(2,), far=True)
     rows = np.ascontiguousarray(rows[:, [0, 1, 2, 2]])

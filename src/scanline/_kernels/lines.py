@@ -12,7 +12,7 @@ import math
 import numpy as np
 
 from ._jit import helper, inline, kernel
-from .raster import channels, put
+from .raster import channels, put, store_flat
 from .spans import strip
 from .variants import PACKED
 
@@ -156,34 +156,17 @@ def bresenham_walk(flat, k, steps, p, two_dw, two_dw_minus_two_du, su, sv, n, c0
     is the major axis), an advance of the minor axis ``sv`` more.  The decision is
     :func:`bresenham_decide`'s, written as two selects that compile without a
     branch: a branch on the sign of p_k is mispredicted about once in three pixels
-    of a random line.  The color comes as scalars and one loop is written per
-    channel count, so that the per-line loop of :func:`draw_lines` holds no array
-    but ``flat`` (an array used anywhere in that loop, even in a branch not taken,
-    cost a reference-count increment and decrement per line: atomic operations
-    that took 30% of the time of a million short lines)."""
-    if n == 1:
-        for _ in range(steps):
-            flat[k] = c0
-            keep = p < 0
-            p += two_dw if keep else two_dw_minus_two_du
-            k += su if keep else su + sv
-    elif n == 3:
-        for _ in range(steps):
-            flat[k] = c0
-            flat[k + 1] = c1
-            flat[k + 2] = c2
-            keep = p < 0
-            p += two_dw if keep else two_dw_minus_two_du
-            k += su if keep else su + sv
-    else:
-        for _ in range(steps):
-            flat[k] = c0
-            flat[k + 1] = c1
-            flat[k + 2] = c2
-            flat[k + 3] = c3
-            keep = p < 0
-            p += two_dw if keep else two_dw_minus_two_du
-            k += su if keep else su + sv
+    of a random line.  The pixel is stored by :func:`~scanline._kernels.raster.store_flat`
+    (unsigned offsets, no wrap-around of negative indices).  The color comes as
+    scalars, so that the per-line loop of :func:`draw_lines` holds no array but
+    ``flat`` (an array used anywhere in that loop, even in a branch not taken, cost a
+    reference-count increment and decrement per line: atomic operations that took
+    30% of the time of a million short lines)."""
+    for _ in range(steps):
+        store_flat(flat, k, n, c0, c1, c2, c3)
+        keep = p < 0
+        p += two_dw if keep else two_dw_minus_two_du
+        k += su if keep else su + sv
 
 
 @inline

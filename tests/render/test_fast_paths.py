@@ -42,7 +42,8 @@ def draw_in_calls(width, height, tri, att, steps):
                            np.empty((1, 1)), buf, np.empty((1, 1, 1)),
                            np.empty((1, 1), np.int64),
                            np.empty((steps, k.SETUP_BATCH, att.shape[2] + 2, 3)),
-                           np.empty((steps, k.SETUP_BATCH), np.bool_))
+                           np.empty((steps, k.SETUP_BATCH), np.bool_),
+                           np.empty((steps, 2, k.BAND), np.int64))
     return buf, zbuf
 
 
@@ -376,5 +377,6 @@ def test_a_band_is_read_ahead_only_when_it_holds_enough_triangles():
                                  np.ones((height, width, 3), np.uint8), np.empty((1, 1, 1)),
                                  np.empty((1, 1), np.int64),
                                  np.empty((1, k.SETUP_BATCH, 5, 3)),
-                                 np.empty((1, k.SETUP_BATCH), np.bool_))
+                                 np.empty((1, k.SETUP_BATCH), np.bool_),
+                                 np.empty((1, 2, k.BAND), np.int64))
         assert got == read

@@ -280,16 +280,23 @@ def raster_triangle(out, depth, tri, q, att, ids, t, r0, r1, zbuf, floor, buf, a
     run it for one triangle and one row (:mod:`scanline.trace.zbuffer`)."""
     raster_entries(out, depth, tri, q, att, ids, t, t + 1, r0, r1, zbuf, floor, buf, abuf,
                    idbuf, np.empty((SETUP_BATCH, att.shape[2] + 2, 3)),
-                   np.empty(SETUP_BATCH, np.bool_))
+                   np.empty(SETUP_BATCH, np.bool_), np.empty((2, max(r1 - r0 + 1, 0)), np.int64))
 
 
 @helper
 def raster_entries(out, depth, tri, q, att, ids, e0, e1, lo, hi, zbuf, floor, buf, abuf,
-                   idbuf, g, ok):
+                   idbuf, g, ok, spans):
     """Scan-convert triangles ``e0 .. e1 - 1``, each on its rows within ``lo .. hi``
     (one band): one call per band, the variants (the tokens ``out`` and ``depth``)
     folded here, set up in batches (:func:`planes`) into ``g`` (:data:`SETUP_BATCH`,
-    K + 2, 3) and ``ok`` (:data:`SETUP_BATCH`,)."""
+    K + 2, 3) and ``ok`` (:data:`SETUP_BATCH`,).
+
+    A triangle's spans are found on all its rows first, into ``spans`` (2, at least
+    ``hi - lo + 1``), and then filled: the two divisions of each row's edge crossings
+    no longer wait for the fill of the row before it (each fill ends in a branch the
+    predictor misses, and the division after it started only then).  The same spans:
+    1M small triangles 2%, 100k medium ones 9% and the teapot's z-buffer pass 6% less
+    time on one core (measured 2026-12-07)."""
     height, width = zbuf.shape
     k = att.shape[2]
     for c0 in range(e0, e1, SETUP_BATCH):
@@ -301,7 +308,7 @@ def raster_entries(out, depth, tri, q, att, ids, e0, e1, lo, hi, zbuf, floor, bu
                 continue
             r0, r1 = rows_of(tri[t, 0, 1], tri[t, 1, 1], tri[t, 2, 1], height)
             r0 = max(r0, lo)
-            r1 = min(r1, hi)
+            r1 = min(min(r1, hi), r0 + spans.shape[1] - 1)   # (spans: a band's rows)
             low, mid, high = rising(tri[t, 0, 1], tri[t, 1, 1], tri[t, 2, 1])
             xa = tri[t, low, 0]
             ya = tri[t, low, 1]
@@ -319,6 +326,11 @@ def raster_entries(out, depth, tri, q, att, ids, e0, e1, lo, hi, zbuf, floor, bu
             face = 0 if len(out) == COLOR else ids[t]
             for y in range(r0, r1 + 1):
                 kl, kr = span_limits(y, xa, ya, xb, yb, xc, yc, width)
+                spans[0, y - r0] = kl
+                spans[1, y - r0] = kr
+            for y in range(r0, r1 + 1):
+                kl = spans[0, y - r0]
+                kr = spans[1, y - r0]
                 if kl >= kr:
                     continue
                 fx = kl - x0
@@ -366,7 +378,7 @@ def raster_entries(out, depth, tri, q, att, ids, e0, e1, lo, hi, zbuf, floor, bu
 
 @kernel
 def raster_triangles(start, step, out, depth, tri, q, att, ids, starts, zbuf, floor, buf,
-                     abuf, idbuf, g, ok):
+                     abuf, idbuf, g, ok, spans):
     """Draw the binned triangles band by band: the bands ``start``, ``start + step``
     ... (calls with start = 0 .. step - 1 on as many threads share the raster, each
     pixel written by its band's call only).
@@ -380,9 +392,9 @@ def raster_triangles(start, step, out, depth, tri, q, att, ids, starts, zbuf, fl
     ``idbuf``), and ``buf`` (H, W', K) bytes (out COLOR) or ``abuf`` (H, W, K) and
     ``idbuf`` (H, W) (out ATTRIBUTES), or ``idbuf`` alone (out IDS).  ``g`` (T,
     :data:`SETUP_BATCH`, K + 2, 3) and ``ok`` (T, :data:`SETUP_BATCH`) are the
-    setup's scratch, row ``start % T`` this call's (one row per thread; made by the
-    caller: numpy's allocation compiled into the kernel costs 0.1 s of a first
-    call).  Returns a number of no meaning: the sum of the values read ahead
+    setup's scratch and ``spans`` (T, 2, :data:`BAND`) the spans' (:func:`raster_entries`),
+    row ``start % T`` this call's (one row per thread; made by the caller: numpy's
+    allocation compiled into the kernel costs 0.1 s of a first call).  Returns a number of no meaning: the sum of the values read ahead
     (:data:`READ_AHEAD`; summed so that the reads are kept)."""
     height, width = zbuf.shape
     mine = start % g.shape[0]
@@ -408,6 +420,6 @@ def raster_triangles(start, step, out, depth, tri, q, att, ids, starts, zbuf, fl
                 for i in range(buf.shape[1] >> 4):           # 16 pixels: 16 to 64 bytes
                     read += buf[y, i << 4, 0]
         raster_entries(out, depth, tri, q, att, ids, starts[b], starts[b + 1], lo, hi, zbuf,
-                       floor, buf, abuf, idbuf, g[mine], ok[mine])
+                       floor, buf, abuf, idbuf, g[mine], ok[mine], spans[mine])
     return read
 

@@ -209,7 +209,8 @@ def rasterize(width: int, height: int, tri: NDArray[np.float64], q: NDArray[np.f
     # work: the rows of each triangle's box times its width
     work = 20 * n + area * (1 + (kk if len(out) != k.IDS else 0))
     setup = (np.empty((threads(), k.SETUP_BATCH, kk + 2, 3)),
-             np.empty((threads(), k.SETUP_BATCH), np.bool_))       # one row a thread
+             np.empty((threads(), k.SETUP_BATCH), np.bool_),
+             np.empty((threads(), 2, k.BAND), np.int64))            # one row a thread
     call_in_bands(k.raster_triangles, work, out, depth, *bins, zbuf, floor, buf, abuf, idbuf,
                   *setup)
 

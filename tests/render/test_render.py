@@ -132,6 +132,39 @@ def test_back_face_test_and_culling():
     assert np.array_equal(r1.faces, r2.faces)
 
 
+def test_shared_vertices_projected_once_give_every_face_its_corners():
+    # two meshes (their vertex numbers offset in the joined points), shared vertices:
+    # each facet's device corners and 1/w as the camera's matrices give them per facet
+    meshes = [sl.mesh.cube(2), sl.mesh.cube(1).transformed(sl.transform3d.translation(0, 1.5, 0))]
+    cam = camera((3, 2, 4))
+    scene = prepare(meshes, cam, W, H)
+    clip, scale, offset = scene.mapping
+    world = np.concatenate([m.vertices[m.triangulated().face_indices.reshape(-1, 3)]
+                            for m in meshes])
+    hom = np.concatenate([world, np.ones(world.shape[:2] + (1,))], axis=2) @ clip.T
+    assert scene.whole.all() and np.array_equal(scene.facet, np.arange(len(world)))
+    assert np.allclose(scene.triangles, hom[..., :3] / hom[..., 3:] * scale + offset,
+                       rtol=1e-12, atol=1e-9)
+    assert np.allclose(scene.inv_w, 1 / hom[..., 3], rtol=1e-12)
+
+
+def test_a_face_whose_corner_is_not_a_vertex_is_not_drawn_nor_read_outside():
+    from scanline._kernels.screen import project_faces
+
+    points = 4
+    corners = np.array([[0, 1, 2], [1, 2, points], [-1, 0, 1]], np.int64)
+    eye = np.zeros((points, 3)); dev = np.ones((points, 3))
+    flags = np.ones(points, bool)
+    out = (np.empty(3, bool), np.empty(3, bool), np.empty(3, bool), np.empty((3, 3, 3)),
+           np.empty((3, 3)), np.empty((3, 4)))
+    project_faces(0, 1, corners, eye, dev, np.ones(points), flags, flags,
+                  np.array([0, 0, 1.0, 1.0]), *out)
+    back, inside, good, tri, inv_w, plane = out
+    assert good.tolist() == [True, False, False] and inside.tolist() == [True, False, False]
+    assert np.isnan(tri[1:]).all() and np.isnan(inv_w[1:]).all() and np.isnan(plane[1:]).all()
+    assert (tri[0] == 1).all()
+
+
 def test_triangles_crossing_the_eye_plane_are_clipped_before_the_divide():
     # a floor passing under and behind the eye: nothing mirrored, no giant triangle
     floor = sl.mesh.Mesh([(-50, -1, -50), (50, -1, -50), (50, -1, 50), (-50, -1, 50)],

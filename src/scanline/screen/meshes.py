@@ -131,7 +131,10 @@ class MeshArrays:
     the face is planar (its vertices within 1e-9 of its size of its Newell plane) and
     convex (F,): a polygon method may then take it whole, since a planar convex
     polygon in front of the eye projects to a convex polygon.  The texture
-    coordinates at each facet's vertices (G, 3, 2; None: the mesh has none)."""
+    coordinates at each facet's vertices (G, 3, 2; None: the mesh has none).  The
+    mesh's vertices (V, 3) and each facet's corners among them (G, 3): ``world`` is
+    ``points[corners]``, and a vertex is projected once however many facets share
+    it."""
     world: F64
     vertex_normals: F64
     normals: F64
@@ -142,7 +145,9 @@ class MeshArrays:
     face_centroids: F64
     face_colors: Optional[F64]
     face_planar: NDArray[np.bool_]
-    uv: Optional[F64] = None
+    uv: Optional[F64]
+    points: F64
+    corners: NDArray[np.int64]
 
 
 #: mesh -> (copies of the arrays it was made from, MeshArrays)
@@ -233,6 +238,8 @@ def mesh_arrays(mesh: "Mesh", crease_angle: Optional[float] = CREASE_ANGLE) -> M
     arrays = MeshArrays(world, corner_normals(mesh, crease_angle)[corners], normals, colors,
                         ~(np.abs(normals).sum(axis=1) > 0), facet_face,
                         unit_rows(plane[:, :3]), centroids, face_colors, planar,
-                        None if mesh.uv is None else mesh.uv[f])
+                        None if mesh.uv is None else mesh.uv[f],
+                        np.ascontiguousarray(mesh.vertices, np.float64),
+                        np.ascontiguousarray(f, np.int64))
     _KEPT[mesh] = (tuple(a.copy() if isinstance(a, np.ndarray) else a for a in key), arrays)
     return arrays

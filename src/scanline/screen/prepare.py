@@ -311,7 +311,7 @@ def prepare(meshes: Any, camera: "Camera", width: int, height: int, materials: A
     (10, 2)
     """
     from .._kernels._threads import call_in_bands
-    from .._kernels.screen import project_faces
+    from .._kernels.screen import project_faces, project_points
 
     from ..budget import check
 
@@ -356,17 +356,29 @@ def prepare(meshes: Any, camera: "Camera", width: int, height: int, materials: A
         toward = np.append(np.asarray(camera.projection.prp, np.float64), 1.0)
     else:
         toward = np.append(-_view_direction(camera), 0.0)
+    # each vertex projected once (project_points), then each face from its corners
+    points = _joined([p.points for p in parts], (0, 3))
+    point_base = np.cumsum([0] + [len(p.points) for p in parts])
+    corners = _joined([p.corners + point_base[i] if i else p.corners
+                       for i, p in enumerate(parts)], (0, 3), np.int64)
+    nv = len(points)
+    eye = np.empty((nv, 3))
+    pdev = np.empty((nv, 3))
+    pinv_w = np.empty(nv)
+    pinside = np.empty(nv, np.bool_)
+    pgood = np.empty(nv, np.bool_)
+    call_in_bands(project_points, 40 * nv, points, np.ascontiguousarray(view),
+                  np.ascontiguousarray(clip), np.ascontiguousarray(CLIP_VOLUME.planes),
+                  np.ascontiguousarray(scale, np.float64),
+                  np.ascontiguousarray(offset, np.float64), eye, pdev, pinv_w, pinside, pgood)
     back = np.empty(nf, np.bool_)
     inside = np.empty(nf, np.bool_)
     good = np.empty(nf, np.bool_)
     dev = np.empty((nf, 3, 3))
     inv_w = np.empty((nf, 3))
     planes = np.empty((nf, 4))
-    call_in_bands(project_faces, 40 * nf, np.ascontiguousarray(world),
-                  np.ascontiguousarray(view), toward, np.ascontiguousarray(clip),
-                  np.ascontiguousarray(CLIP_VOLUME.planes),
-                  np.ascontiguousarray(scale, np.float64),
-                  np.ascontiguousarray(offset, np.float64), back, inside, good, dev, inv_w, planes)
+    call_in_bands(project_faces, 20 * nf, corners, eye, pdev, pinv_w, pinside, pgood, toward,
+                  back, inside, good, dev, inv_w, planes)
     culled = back if cull_back_faces else np.zeros(nf, bool)
     kept = ~culled & ~degenerate
     whole = kept & inside

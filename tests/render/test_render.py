@@ -153,7 +153,8 @@ def test_a_face_whose_corner_is_not_a_vertex_is_not_drawn_nor_read_outside():
 
     points = 4
     corners = np.array([[0, 1, 2], [1, 2, points], [-1, 0, 1]], np.int64)
-    eye = np.zeros((points, 3)); dev = np.ones((points, 3))
+    eye = np.zeros((points, 3))
+    dev = np.ones((points, 3))
     flags = np.ones(points, bool)
     out = (np.empty(3, bool), np.empty(3, bool), np.empty(3, bool), np.empty((3, 3, 3)),
            np.empty((3, 3)), np.empty((3, 4)))

@@ -280,7 +280,8 @@ def raster_triangle(out, depth, tri, q, att, ids, t, r0, r1, zbuf, floor, buf, a
     run it for one triangle and one row (:mod:`scanline.trace.zbuffer`)."""
     raster_entries(out, depth, tri, q, att, ids, t, t + 1, r0, r1, zbuf, floor, buf, abuf,
                    idbuf, np.empty((SETUP_BATCH, att.shape[2] + 2, 3)),
-                   np.empty(SETUP_BATCH, np.bool_), np.empty((2, max(r1 - r0 + 1, 0)), np.int64))
+                   np.empty(SETUP_BATCH, np.bool_),
+                   np.empty((2, max(r1 - r0 + 1, 0)), np.int64))
 
 
 @helper
@@ -393,9 +394,10 @@ def raster_triangles(start, step, out, depth, tri, q, att, ids, starts, zbuf, fl
     ``idbuf``), and ``buf`` (H, W', K) bytes (out COLOR) or ``abuf`` (H, W, K) and
     ``idbuf`` (H, W) (out ATTRIBUTES), or ``idbuf`` alone (out IDS).  ``g`` (T,
     :data:`SETUP_BATCH`, K + 2, 3) and ``ok`` (T, :data:`SETUP_BATCH`) are the
-    setup's scratch and ``spans`` (T, 2, :data:`BAND`) the spans' (:func:`raster_entries`),
-    row ``start % T`` this call's (one row per thread; made by the caller: numpy's
-    allocation compiled into the kernel costs 0.1 s of a first call).  Returns a number of no meaning: the sum of the values read ahead
+    setup's scratch and ``spans`` (T, 2, :data:`BAND`) the spans'
+    (:func:`raster_entries`), row ``start % T`` this call's (one row per thread; made
+    by the caller: numpy's allocation compiled into the kernel costs 0.1 s of a first
+    call).  Returns a number of no meaning: the sum of the values read ahead
     (:data:`READ_AHEAD`; summed so that the reads are kept)."""
     height, width = zbuf.shape
     mine = start % g.shape[0]

@@ -16,9 +16,7 @@ ms (0.20 the vertices, 0.44 the faces; cProfile, 2026-12-07).
 
 import math
 
-import numpy as np
-
-from ._jit import inline, kernel
+from ._jit import kernel
 
 
 #: Vertices or triangles per block: calls of :func:`project_points` or
@@ -86,12 +84,7 @@ def project_faces(start, step, corners, eye, pdev, pinv_w, pinside, pgood, towar
             p1 = corners[f, 1]
             p2 = corners[f, 2]
             if not (0 <= p0 < count and 0 <= p1 < count and 0 <= p2 < count):
-                p0 = p1 = p2 = 0            # (nothing is read outside the points)
-                known = False
-            else:
-                known = count > 0
-            if not known:
-                inside[f] = False
+                inside[f] = False           # (nothing is read outside the points)
                 good[f] = False
                 back[f] = False
                 for i in range(3):

@@ -12,7 +12,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from ..depthbuffer import depth_argument
-from ..errors import ArgumentTypeError, ArgumentValueError
+from ..errors import ArgumentValueError
 from ._common import target
 
 if TYPE_CHECKING:

@@ -3,6 +3,7 @@ reference, Gouraud and Phong against their formulas on one triangle, back faces,
 the eye plane, ordered pieces, bad input."""
 
 import math
+import warnings
 
 import numpy as np
 import pytest
@@ -164,6 +165,20 @@ def test_a_face_whose_corner_is_not_a_vertex_is_not_drawn_nor_read_outside():
     assert good.tolist() == [True, False, False] and inside.tolist() == [True, False, False]
     assert np.isnan(tri[1:]).all() and np.isnan(inv_w[1:]).all() and np.isnan(plane[1:]).all()
     assert (tri[0] == 1).all()
+
+
+def test_a_vertex_far_out_renders_without_numpy_warnings():
+    # finite but past what a product of two coordinates holds: the facets through it
+    # are clipped, their normals are not finite, and no RuntimeWarning reaches the user
+    cube = sl.mesh.cube(2)
+    vertices = cube.vertices.copy()
+    vertices[0] = (1e300, -1e300, 1e300)
+    far = sl.mesh.Mesh(vertices, cube.face_indices.reshape(-1, 4))
+    fb = sl.FrameBuffer(W, H)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        r = sl.render(fb, far, camera((3, 2, 4)))
+    assert (r.faces >= 0).any() and np.isfinite(r.scene.triangles).all()
 
 
 def test_triangles_crossing_the_eye_plane_are_clipped_before_the_divide():

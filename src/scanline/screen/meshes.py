@@ -208,10 +208,13 @@ def mesh_arrays(mesh: "Mesh", crease_angle: Optional[float] = CREASE_ANGLE) -> M
     j = np.arange(len(facet_face)) - np.repeat(np.cumsum(sizes - 2) - (sizes - 2), sizes - 2)
     first = off[:-1][facet_face]
     corners = np.stack([first, first + j + 1, first + j + 2], axis=1)
-    normals = unit_rows(np.cross(world[:, 1] - world[:, 0], world[:, 2] - world[:, 0]))
+    # vertices far out (finite, past about 1e150) overflow the products: their normals
+    # come out NaN, and such facets are degenerate (below)
+    with np.errstate(over="ignore", invalid="ignore"):
+        normals = unit_rows(np.cross(world[:, 1] - world[:, 0], world[:, 2] - world[:, 0]))
     points = mesh.vertices[idx]
-    centroids = np.add.reduceat(points, off[:-1], axis=0) / sizes[:, None]
     plane = newell_planes(points, off)
+    centroids = np.add.reduceat(points, off[:-1], axis=0) / sizes[:, None]
     norm = np.linalg.norm(plane[:, :3], axis=1)
     owner = np.repeat(np.arange(mesh.face_count), sizes)
     with np.errstate(over="ignore", invalid="ignore"):

@@ -375,12 +375,15 @@ def newell_planes(verts: NDArray[np.float64], offsets: NDArray[np.int64]) -> NDA
     """
     p, q = verts, verts[_following(offsets)]
     starts = offsets[:-1]
-    n = np.add.reduceat(np.stack([(p[:, 1] - q[:, 1]) * (p[:, 2] + q[:, 2]),
-                                  (p[:, 2] - q[:, 2]) * (p[:, 0] + q[:, 0]),
-                                  (p[:, 0] - q[:, 0]) * (p[:, 1] + q[:, 1])], axis=1),
-                        starts, axis=0)
-    centroid = np.add.reduceat(p, starts, axis=0) / np.diff(offsets)[:, None]
-    return np.concatenate([n, -np.einsum("ij,ij->i", n, centroid)[:, None]], axis=1)
+    # finite vertices far out (past about 1e150) overflow the products: that polygon's
+    # plane is not finite, which its callers test, and numpy's warnings say nothing more
+    with np.errstate(over="ignore", invalid="ignore"):
+        n = np.add.reduceat(np.stack([(p[:, 1] - q[:, 1]) * (p[:, 2] + q[:, 2]),
+                                      (p[:, 2] - q[:, 2]) * (p[:, 0] + q[:, 0]),
+                                      (p[:, 0] - q[:, 0]) * (p[:, 1] + q[:, 1])], axis=1),
+                            starts, axis=0)
+        centroid = np.add.reduceat(p, starts, axis=0) / np.diff(offsets)[:, None]
+        return np.concatenate([n, -np.einsum("ij,ij->i", n, centroid)[:, None]], axis=1)
 
 
 def signed_areas(verts: NDArray[np.float64], offsets: NDArray[np.int64]) -> NDArray[np.float64]:

@@ -38,12 +38,12 @@ def draw_in_calls(width, height, tri, att, steps):
     buf = np.zeros((height, width, att.shape[2]), np.uint8)
     zbuf = np.full((height, width), np.inf)
     for start in range(steps):
-        k.raster_triangles(start, steps, token(k.COLOR), token(k.TEST), *bins, zbuf,
+        k.raster_triangles(start, steps, token(k.COLOR), token(k.TEST), *bins, False, zbuf,
                            np.empty((1, 1)), buf, np.empty((1, 1, 1)),
                            np.empty((1, 1), np.int64),
                            np.empty((steps, k.SETUP_BATCH, att.shape[2] + 2, 3)),
                            np.empty((steps, k.SETUP_BATCH), np.bool_),
-                           np.empty((steps, 2, k.BAND), np.int64))
+                           np.empty((steps, 2, k.BAND), np.int64), np.empty((steps, 0)))
     return buf, zbuf
 
 
@@ -236,7 +236,7 @@ def test_binning_lists_each_band_s_triangles_in_input_order(threads, monkeypatch
     att = rng.uniform(0, 255, size=(n, 3, 2))
     ids = rng.integers(0, 1 << 40, n)
     monkeypatch.setattr(_threads, "threads", lambda: threads)
-    (ptri, pq, patt, pids, starts), area = bin_bands(tri, q, att, ids, 150)
+    (ptri, pq, patt, pids, starts, _), area = bin_bands(tri, q, att, ids, 150)
     y = tri[:, :, 1]
     with np.errstate(invalid="ignore"):
         first = np.maximum(np.floor(y.min(axis=1)) + 1, 0)
@@ -256,7 +256,7 @@ def test_binning_lists_each_band_s_triangles_in_input_order(threads, monkeypatch
 def test_the_work_estimate_counts_the_boxes():
     tri = np.array([[(0.0, 0.0, 0), (10.0, 0.0, 0), (0.0, 10.0, 0)],
                     [(5.0, 5.0, 0), (5.0, 5.0, 0), (5.0, 5.0, 0)]])
-    (ptri, _, _, pids, starts), area = bin_bands(tri, np.ones((2, 3)), np.zeros((2, 3, 0)),
+    (ptri, _, _, pids, starts, _), area = bin_bands(tri, np.ones((2, 3)), np.zeros((2, 3, 0)),
                                                  np.arange(2), 20)
     # rows 1..10 (the bottom edge on row 0 is outside), 11 pixels wide; the point
     # covers no row
@@ -371,12 +371,12 @@ def test_a_band_is_read_ahead_only_when_it_holds_enough_triangles():
         tri = random_triangles(rng, n, width, 16, 4.0) + [0, 8, 0]    # rows 4 .. 27
         att = np.zeros((n, 3, 3))
         bins, _ = bin_bands(tri, np.ones((n, 3)), att, np.zeros(n, np.int64), height)
-        assert list(bins[-1]) == [0, n]
-        got = k.raster_triangles(0, 1, token(k.COLOR), token(k.TEST), *bins,
+        assert list(bins[-2]) == [0, n]
+        got = k.raster_triangles(0, 1, token(k.COLOR), token(k.TEST), *bins, False,
                                  np.full((height, width), 0.5), np.empty((1, 1)),
                                  np.ones((height, width, 3), np.uint8), np.empty((1, 1, 1)),
                                  np.empty((1, 1), np.int64),
                                  np.empty((1, k.SETUP_BATCH, 5, 3)),
                                  np.empty((1, k.SETUP_BATCH), np.bool_),
-                                 np.empty((1, 2, k.BAND), np.int64))
+                                 np.empty((1, 2, k.BAND), np.int64), np.empty((1, 0)))
         assert got == read

@@ -36,6 +36,12 @@ a band reads its triangles from consecutive memory: read in place, a band's
 triangles lie about as many triangles apart as there are bands, every one on cache
 lines of its own, and a million small triangles took three times as long to draw
 (324 ms against 103 ms on one core, the copy 100 ms more, measured 2026-12-06).
+
+Occlusion.  A drawing order can put some triangles last (the z-buffer pass of
+:func:`scanline.visible.zbuffer.nearest` draws the faces turned away from the viewer
+after the others); those are skipped where they lie behind every depth of the tiles
+they meet (:func:`behind`), and exact depth ties go to the smaller id, so the pixels
+stay those of drawing in input order.
 """
 
 import math
@@ -86,22 +92,28 @@ def rows_of(y0, y1, y2, height):
 
 
 @kernel
-def bin_count(tri, height, lo, hi, counts):
-    """The first pass of binning triangles ``lo .. hi - 1`` by band (a counting
-    sort; the chunks of a batch run on every core, and
-    :func:`scanline.draw.triangles.bin_bands` joins them): adds to ``counts[b]``
-    (zeros, one per band, made by the caller: numpy's allocation compiled into the
-    kernel costs 0.1 s of a first call) how many of the triangles meet band ``b``,
-    and returns the summed areas of their boxes (rows met times their whole x extent
-    plus one, the extent counted up to :data:`WIDEST` pixels), the work estimate of
+def bin_count(tri, order, first, height, lo, hi, counts):
+    """The first pass of binning triangles by band (a counting sort; the chunks of a
+    batch run on every core, and :func:`scanline.draw.triangles.bin_bands` joins
+    them): the triangles at positions ``lo .. hi - 1`` of the drawing order
+    ``order`` (position p draws triangle ``order[p]``; no entries: triangle p).  Adds
+    to ``counts[0, b]`` (zeros, (2, bands), made by the caller: numpy's allocation
+    compiled into the kernel costs 0.1 s of a first call) how many of them meet band
+    ``b``, and to ``counts[1, b]`` how many of those lie at position ``first`` or
+    after (the tile-tested triangles, :func:`raster_triangles`); returns the
+    summed areas of their boxes (rows met times their whole x extent plus one, the
+    extent counted up to :data:`WIDEST` pixels), the work estimate of
     :func:`raster_triangles`."""
-    bands = counts.shape[0]
+    bands = counts.shape[1]
     area = 0                # (whole numbers: a float sum made the pass 25% slower)
-    for t in range(lo, hi):
+    for p in range(lo, hi):
+        t = order[p] if order.shape[0] != 0 else p
         r0, r1 = rows_of(tri[t, 0, 1], tri[t, 1, 1], tri[t, 2, 1], height)
         if r0 <= r1:
             for b in range(r0 >> BAND_SHIFT, min((r1 >> BAND_SHIFT) + 1, bands)):
-                counts[b] += 1
+                counts[0, b] += 1
+                if p >= first:
+                    counts[1, b] += 1
             wide = (max(max(tri[t, 0, 0], tri[t, 1, 0]), tri[t, 2, 0])
                     - min(min(tri[t, 0, 0], tri[t, 1, 0]), tri[t, 2, 0]))
             area += (r1 - r0 + 1) * ((int(wide) if wide < WIDEST else int(WIDEST)) + 1)
@@ -109,19 +121,20 @@ def bin_count(tri, height, lo, hi, counts):
 
 
 @kernel
-def bin_pack(tri, q, att, ids, height, lo, hi, fill, ptri, pq, patt, pids):
-    """The second pass: copy each of triangles ``lo .. hi - 1`` -- its vertices,
-    1/w, attributes and id -- to entry ``fill[b]`` of ``ptri``, ``pq``, ``patt`` and
-    ``pids`` for every band ``b`` its rows meet, advancing ``fill[b]`` (so each band
-    lists its triangles in input order, one after another in memory).  The arrays
+def bin_pack(tri, q, att, ids, order, height, lo, hi, fill, ptri, pq, patt, pids):
+    """The second pass: copy each triangle at positions ``lo .. hi - 1`` of the
+    drawing order ``order`` (:func:`bin_count`) -- its vertices, 1/w, attributes and
+    id -- to entry ``fill[b]`` of ``ptri``, ``pq``, ``patt`` and ``pids`` for every
+    band ``b`` its rows meet, advancing ``fill[b]`` (so each band lists its triangles
+    in drawing order, one after another in memory).  The arrays
     come flat, one row a triangle: ``tri`` (N, 9) and ``ptri`` (E, 9), ``q`` (N, 3)
     and ``pq`` (E, 3), ``att`` (N, 3 K) and ``patt`` (E, 3 K), ``ids`` (N,) and
     ``pids`` (E,) (a row is then one loop: less to compile); ``pq`` or ``pids``
     without rows are left out (1/w = 1 everywhere; no ids needed).  The indices are
     unsigned (no wrap-around of negative indices: 2% of a million small triangles'
     time, measured 2026-12-07)."""
-    for t in range(lo, hi):
-        tu = np.uint64(t)
+    for p in range(lo, hi):
+        tu = np.uint64(order[p] if order.shape[0] != 0 else p)
         r0, r1 = rows_of(tri[tu, 1], tri[tu, 4], tri[tu, 7], height)
         for b in range(r0 >> BAND_SHIFT, (r1 >> BAND_SHIFT) + 1 if r0 <= r1 else 0):
             e = fill[b]
@@ -259,6 +272,83 @@ def span_limits(y, xa, ya, xb, yb, xc, yc, width):
     return kl, kr
 
 
+#: Columns per tile of the tile test (a power of two, its shift): a band's rows
+#: times this many columns.
+TILE_SHIFT = 5
+
+#: The unit roundoff of float64 (2^-53), for the bound of :func:`behind`.
+ROUNDOFF = 2.0 ** -53
+
+
+@helper
+def tile_max(zbuf, lo, hi, j):
+    """The largest depth in rows ``lo .. hi`` of tile ``j``'s columns (``j <<``
+    :data:`TILE_SHIFT` on, at most ``1 <<`` :data:`TILE_SHIFT` of them).  Four
+    columns at a time, each with its own running maximum: one maximum carried from
+    pixel to pixel waits on the last at every step."""
+    width = zbuf.shape[1]
+    x0 = j << TILE_SHIFT
+    x1 = min(x0 + (1 << TILE_SHIFT), width)
+    m0 = m1 = m2 = m3 = -math.inf
+    for y in range(lo, hi + 1):
+        row = np.uint64(y)
+        x = x0
+        while x + 4 <= x1:
+            xu = np.uint64(x)
+            a = zbuf[row, xu]
+            b = zbuf[row, xu + np.uint64(1)]
+            c = zbuf[row, xu + np.uint64(2)]
+            d = zbuf[row, xu + np.uint64(3)]
+            m0 = a if a > m0 else m0
+            m1 = b if b > m1 else m1
+            m2 = c if c > m2 else m2
+            m3 = d if d > m3 else m3
+            x += 4
+        while x < x1:
+            a = zbuf[row, np.uint64(x)]
+            m0 = a if a > m0 else m0
+            x += 1
+    return max(max(m0, m1), max(m2, m3))
+
+
+@inline
+def behind(zbuf, tiles, lo, hi, r0, r1, xmin, xmax, x0, y0, g0, gx, gy):
+    """Whether a triangle lies behind every depth of the tiles it meets, so that none
+    of its fragments can win the depth test (the tile test of a hierarchical z-buffer,
+    Greene, Kass & Miller, "Hierarchical Z-buffer visibility", SIGGRAPH 1993, on one
+    level): its rows ``r0 .. r1`` of band ``lo .. hi``, its x extent ``xmin ..
+    xmax``, its depth function ``(g0, gx, gy)`` at ``(x - x0, y - y0)``.
+
+    Exact: the bound is the depth function's least value over the box of the pixels
+    the span loop can reach (columns ``floor(xmin) .. ceil(xmax)``, clamped to the
+    raster), less what rounding can take from the depths the loop computes (its first
+    value is three operations on terms at most ``size``, and each step of ``z' = z -
+    A / C`` one more: at most (steps + 3) unit roundoffs of ``size``, taken twice
+    over); a tile's depths only fall, so the largest depth once found
+    (``tiles[j]``, NaN: not yet) stays an upper bound while the band is drawn.  A
+    triangle skipped this way would have written nothing."""
+    width = zbuf.shape[1]
+    ka = max(math.floor(min(max(xmin, -1.0), width + 1.0)), 0)     # (ints, in range)
+    kb = min(math.ceil(min(max(xmax, -1.0), width + 1.0)), width - 1)
+    if ka > kb:
+        return True
+    fxa = ka - x0
+    fxb = kb - x0
+    fya = r0 - y0
+    fyb = r1 - y0
+    low = g0 + min(gx * fxa, gx * fxb) + min(gy * fya, gy * fyb)
+    size = (abs(g0) + max(abs(gx * fxa), abs(gx * fxb)) + max(abs(gy * fya), abs(gy * fyb)))
+    low -= 2.0 * (kb - ka + 8) * ROUNDOFF * size
+    for j in range(ka >> TILE_SHIFT, (kb >> TILE_SHIFT) + 1):
+        most = tiles[j]
+        if most != most:
+            most = tile_max(zbuf, lo, hi, j)
+            tiles[j] = most
+        if not low > most:
+            return False
+    return True
+
+
 #: Triangles set up per call of :func:`planes` in :func:`raster_entries`.
 SETUP_BATCH = 64
 
@@ -278,19 +368,27 @@ READ_AHEAD = 8
 def raster_triangle(out, depth, tri, q, att, ids, t, r0, r1, zbuf, floor, buf, abuf, idbuf):
     """Scan-convert triangle ``t`` on its rows within ``r0 .. r1``: the step tables
     run it for one triangle and one row (:mod:`scanline.trace.zbuffer`)."""
-    raster_entries(out, depth, tri, q, att, ids, t, t + 1, r0, r1, zbuf, floor, buf, abuf,
-                   idbuf, np.empty((SETUP_BATCH, att.shape[2] + 2, 3)),
+    raster_entries(out, depth, tri, q, att, ids, t, t + 1, t + 1, False, r0, r1, zbuf, floor,
+                   buf, abuf, idbuf, np.empty((SETUP_BATCH, att.shape[2] + 2, 3)),
                    np.empty(SETUP_BATCH, np.bool_),
-                   np.empty((2, max(r1 - r0 + 1, 0)), np.int64))
+                   np.empty((2, max(r1 - r0 + 1, 0)), np.int64), np.empty(0))
 
 
 @helper
-def raster_entries(out, depth, tri, q, att, ids, e0, e1, lo, hi, zbuf, floor, buf, abuf,
-                   idbuf, g, ok, spans):
+def raster_entries(out, depth, tri, q, att, ids, e0, e1, es, ordered, lo, hi, zbuf, floor,
+                   buf, abuf, idbuf, g, ok, spans, tiles):
     """Scan-convert triangles ``e0 .. e1 - 1``, each on its rows within ``lo .. hi``
     (one band): one call per band, the variants (the tokens ``out`` and ``depth``)
     folded here, set up in batches (:func:`planes`) into ``g`` (:data:`SETUP_BATCH`,
     K + 2, 3) and ``ok`` (:data:`SETUP_BATCH`,).
+
+    Triangles ``es`` on are drawn only where they are not :func:`behind` the tiles
+    they meet (``tiles``: the band's tile maxima, NaN where not yet found).
+    ``ordered``: the triangles are not drawn in the order of their ids (an id buffer
+    is written), and a fragment also wins where its depth equals the buffer's and its
+    id is the smaller: each pixel then takes the least (depth, id), which drawing in
+    the order of the ids with ``z < depth`` gives too (the first of equal depths
+    wins), whatever the order they are drawn in.
 
     A triangle's spans are found on all its rows first, into ``spans`` (2, at least
     ``hi - lo + 1``), and then filled: the two divisions of each row's edge crossings
@@ -311,6 +409,13 @@ def raster_entries(out, depth, tri, q, att, ids, e0, e1, lo, hi, zbuf, floor, bu
             r0, r1 = rows_of(tri[t, 0, 1], tri[t, 1, 1], tri[t, 2, 1], height)
             r0 = max(r0, lo)
             r1 = min(min(r1, hi), r0 + spans.shape[1] - 1)   # (spans: a band's rows)
+            x0 = tri[t, 0, 0]
+            y0 = tri[t, 0, 1]
+            if t >= es and behind(zbuf, tiles, lo, hi, r0, r1,
+                                  min(min(x0, tri[t, 1, 0]), tri[t, 2, 0]),
+                                  max(max(x0, tri[t, 1, 0]), tri[t, 2, 0]), x0, y0,
+                                  g[s, 0, 0], g[s, 0, 1], g[s, 0, 2]):
+                continue
             low, mid, high = rising(tri[t, 0, 1], tri[t, 1, 1], tri[t, 2, 1])
             xa = tri[t, low, 0]
             ya = tri[t, low, 1]
@@ -318,14 +423,14 @@ def raster_entries(out, depth, tri, q, att, ids, e0, e1, lo, hi, zbuf, floor, bu
             yb = tri[t, mid, 1]
             xc = tri[t, high, 0]
             yc = tri[t, high, 1]
-            x0 = tri[t, 0, 0]
-            y0 = tri[t, 0, 1]
             dzdx = g[s, 0, 1]
             dqdx = g[s, 1, 1]
             # 1/w = 1 everywhere (no w given): the attributes are linear on the screen,
             # and the division a/w / (1/w) is skipped
             affine = g[s, 1, 0] == 1.0 and dqdx == 0.0 and g[s, 1, 2] == 0.0
             face = 0 if len(out) == COLOR else ids[t]
+            # before es: drawn first, in the order of the ids (no ids: folded away)
+            tie = len(out) != COLOR and ordered and t >= es
             for y in range(r0, r1 + 1):
                 kl, kr = span_limits(y, xa, ya, xb, yb, xc, yc, width)
                 spans[0, y - r0] = kl
@@ -349,9 +454,12 @@ def raster_entries(out, depth, tri, q, att, ids, e0, e1, lo, hi, zbuf, floor, bu
                 for xi in range(kl, kr):
                     x = np.uint64(xi)
                     win = True
+                    iold = idbuf[yu, x] if len(out) != COLOR else 0
                     if len(depth) == TEST or len(depth) == CLEAR_TEST:
                         zold = zbuf[yu, x]
                         win = z < zold
+                        if tie and z == zold:                   # (rare: a branch)
+                            win = face < iold
                         zbuf[yu, x] = z if win else zold
                     elif len(depth) == PEEL:
                         zold = zbuf[yu, x]
@@ -359,7 +467,6 @@ def raster_entries(out, depth, tri, q, att, ids, e0, e1, lo, hi, zbuf, floor, bu
                         zbuf[yu, x] = z if win else zold
                     z += dzdx                                      # z' = z - A / C
                     if len(out) != COLOR:
-                        iold = idbuf[yu, x]
                         idbuf[yu, x] = face if win else iold
                     if len(out) == IDS:
                         continue
@@ -379,8 +486,8 @@ def raster_entries(out, depth, tri, q, att, ids, e0, e1, lo, hi, zbuf, floor, bu
 
 
 @kernel
-def raster_triangles(start, step, out, depth, tri, q, att, ids, starts, zbuf, floor, buf,
-                     abuf, idbuf, g, ok, spans):
+def raster_triangles(start, step, out, depth, tri, q, att, ids, starts, split, ordered, zbuf,
+                     floor, buf, abuf, idbuf, g, ok, spans, tiles):
     """Draw the binned triangles band by band: the bands ``start``, ``start + step``
     ... (calls with start = 0 .. step - 1 on as many threads share the raster, each
     pixel written by its band's call only).
@@ -389,13 +496,17 @@ def raster_triangles(start, step, out, depth, tri, q, att, ids, starts, zbuf, fl
     (or no rows: 1 everywhere); ``att`` (E, 3, K) attributes per vertex; ``ids``
     (E,) the value each triangle writes into ``idbuf`` (not read for out COLOR):
     the entries of :func:`bin_pack`, band ``b``'s triangles at ``starts[b] ..
-    starts[b + 1] - 1``.  Writes ``zbuf`` (H, W) (depth token TEST; PEEL: only
+    starts[b + 1] - 1``, those from ``split[b]`` on drawn only where they are not
+    behind the band's tiles as the triangles before them left them (:func:`behind`;
+    ``split[b]`` = ``starts[b + 1]``: none).  ``ordered``: the entries are not in
+    the order of their ids (:func:`raster_entries`).  Writes ``zbuf`` (H, W) (depth token TEST; PEEL: only
     between ``floor`` (H, W) and ``zbuf``; CLEAR_TEST: each band cleared first, with
     ``idbuf``), and ``buf`` (H, W', K) bytes (out COLOR) or ``abuf`` (H, W, K) and
     ``idbuf`` (H, W) (out ATTRIBUTES), or ``idbuf`` alone (out IDS).  ``g`` (T,
     :data:`SETUP_BATCH`, K + 2, 3) and ``ok`` (T, :data:`SETUP_BATCH`) are the
-    setup's scratch and ``spans`` (T, 2, :data:`BAND`) the spans'
-    (:func:`raster_entries`), row ``start % T`` this call's (one row per thread; made
+    setup's scratch, ``spans`` (T, 2, :data:`BAND`) the spans' (:func:`raster_entries`)
+    and ``tiles`` (T, at least W / 2^:data:`TILE_SHIFT`) the tile maxima's, row
+    ``start % T`` this call's (one row per thread; made
     by the caller: numpy's allocation compiled into the kernel costs 0.1 s of a first
     call).  Returns a number of no meaning: the sum of the values read ahead
     (:data:`READ_AHEAD`; summed so that the reads are kept)."""
@@ -422,7 +533,10 @@ def raster_triangles(start, step, out, depth, tri, q, att, ids, starts, zbuf, fl
             if ahead and len(out) == COLOR:
                 for i in range(buf.shape[1] >> 4):           # 16 pixels: 16 to 64 bytes
                     read += buf[y, i << 4, 0]
-        raster_entries(out, depth, tri, q, att, ids, starts[b], starts[b + 1], lo, hi, zbuf,
-                       floor, buf, abuf, idbuf, g[mine], ok[mine], spans[mine])
+        if split[b] < starts[b + 1]:
+            tiles[mine, :] = math.nan                       # no tile's maximum found yet
+        raster_entries(out, depth, tri, q, att, ids, starts[b], starts[b + 1], split[b],
+                       ordered, lo, hi, zbuf, floor, buf, abuf, idbuf, g[mine], ok[mine],
+                       spans[mine], tiles[mine])
     return read
 

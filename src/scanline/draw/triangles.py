@@ -115,23 +115,27 @@ def _vertex_colors(fb: FrameBuffer, colors: Optional[Union[Colors, NDArray[np.nu
     return v.kernel_array(np.repeat(per_face[:, None, :], 3, axis=1))
 
 
-#: The binned triangles: each band's triangles in input order, their vertices (E, 3,
-#: 3), 1/w (E, 3), attributes (E, 3, K) and ids (E,), and where each band starts
-#: (bands + 1,).
+#: The binned triangles: each band's triangles in drawing order, their vertices (E,
+#: 3, 3), 1/w (E, 3), attributes (E, 3, K) and ids (E,), where each band starts
+#: (bands + 1,) and where its tile-tested triangles start (bands,).
 Bins = Tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64], NDArray[np.int64],
-             NDArray[np.int64]]
+             NDArray[np.int64], NDArray[np.int64]]
 
 
 def bin_bands(tri: NDArray[np.float64], q: NDArray[np.float64], att: NDArray[np.float64],
-              ids: NDArray[np.int64], height: int) -> Tuple[Bins, float]:
+              ids: NDArray[np.int64], height: int, order: Optional[NDArray[np.int64]] = None,
+              first: Optional[int] = None) -> Tuple[Bins, float]:
     """The (N, 3, 3) triangles with their 1/w (N, 3; or no rows: 1 everywhere),
     attributes (N, 3, K) and ids (N,; or none) binned by band of
     :data:`~scanline._kernels.raster3d.BAND` rows for
     :func:`~scanline._kernels.raster3d.raster_triangles`: ``((tri, q, att, ids,
-    starts), area)``, where entries ``starts[b] .. starts[b + 1] - 1`` of the four
-    arrays are the triangles meeting band ``b``, in input order (a triangle meeting
-    several bands is copied into each), and ``area`` is the work estimate (the
-    summed areas of their boxes).  A counting sort whose two passes run on every
+    starts, split), area)``, where entries ``starts[b] .. starts[b + 1] - 1`` of the
+    four arrays are the triangles meeting band ``b``, in drawing order (a triangle
+    meeting several bands is copied into each), and ``area`` is the work estimate
+    (the summed areas of their boxes).  The drawing order is ``order`` (N,), the
+    triangles' numbers (default: input order); the triangles from its position
+    ``first`` on (default: none) are the tile-tested ones, from ``split[b]`` in
+    band ``b``.  A counting sort whose two passes run on every
     core (:func:`~scanline._kernels.raster3d.bin_count`, then
     :func:`~scanline._kernels.raster3d.bin_pack` into the slots the counts give each
     chunk).  The four arrays are kept for the calling thread
@@ -141,12 +145,16 @@ def bin_bands(tri: NDArray[np.float64], q: NDArray[np.float64], att: NDArray[np.
     from .._pool import scratch_rows
 
     n = len(tri)
+    order = np.empty(0, np.int64) if order is None else order
+    first = n if first is None else first
     rows: Dict[int, NDArray[np.int64]] = {}
     bands = ((height - 1) >> k.BAND_SHIFT) + 1
     parts = call_in_chunks(k.bin_count, 4 * n, n, lambda lo, hi: (
-        tri, height, lo, hi, rows.setdefault(lo, np.zeros(bands, np.int64))))
-    counts = np.stack([rows[lo] for lo, _ in parts])        # (chunks, bands)
+        tri, order, first, height, lo, hi, rows.setdefault(lo, np.zeros((2, bands), np.int64))))
+    both = np.stack([rows[lo] for lo, _ in parts])          # (chunks, 2, bands)
+    counts = both[:, 0]
     starts = np.concatenate([[0], np.cumsum(counts.sum(axis=0))])
+    split = starts[1:] - both[:, 1].sum(axis=0)
     # a chunk's slot in band b: after the band's triangles of the chunks before it
     fill = {lo: starts[:-1] + np.cumsum(counts, axis=0)[i] - counts[i]
             for i, (lo, _) in enumerate(parts)}
@@ -159,20 +167,28 @@ def bin_bands(tri: NDArray[np.float64], q: NDArray[np.float64], att: NDArray[np.
               scratch_rows("bins.ids", e if len(ids) else 0, (), np.int64))
     # flat, one row a triangle (views): a row is then one loop in the kernel
     kk = att.shape[2]
-    source = (tri.reshape(n, 9), q, att.reshape(n, 3 * kk), ids)
+    source = (tri.reshape(n, 9), q, att.reshape(n, 3 * kk), ids, order)
     flat = (packed[0].reshape(e, 9), packed[1], packed[2].reshape(e, 3 * kk), packed[3])
     call_in_chunks(k.bin_pack, (12 + 3 * kk) * n, n,
                    lambda lo, hi: source + (height, lo, hi, fill[lo]) + flat, parts=len(parts))
-    return packed + (starts,), float(sum(a for _, a in parts))
+    return packed + (starts, split), float(sum(a for _, a in parts))
 
 
 def rasterize(width: int, height: int, tri: NDArray[np.float64], q: NDArray[np.float64],
               att: NDArray[np.float64], ids: NDArray[np.int64],
               zbuf: Optional[NDArray[np.float64]] = None, buf: Optional[NDArray[np.uint8]] = None,
               abuf: Optional[NDArray[np.float64]] = None, idbuf: Optional[NDArray[np.int32]] = None,
-              floor: Optional[NDArray[np.float64]] = None, clear: bool = False) -> None:
+              floor: Optional[NDArray[np.float64]] = None, clear: bool = False,
+              order: Optional[NDArray[np.int64]] = None, first: Optional[int] = None) -> None:
     """Run the triangle kernel on normalized arrays: ``q`` (N, 3) 1/w, or no rows
     for 1 everywhere; ``ids`` (N,), or none when ``buf`` is given.
+
+    ``order`` (N,): draw the triangles in this order (their numbers), testing those
+    from position ``first`` on against the tiles' depths first
+    (:func:`~scanline._kernels.raster3d.behind`; default none): for an id buffer
+    whose ``ids`` increase with the triangles' numbers, the pixels are then those
+    of drawing in input order (equal depths go to the smaller id,
+    :func:`~scanline._kernels.raster3d.raster_entries`).
 
     ``buf`` given: the attributes (0..255) are rounded into its bytes; else
     ``abuf`` (H, W, K) float64 and ``idbuf`` (H, W) int32 receive the interpolated
@@ -187,7 +203,7 @@ def rasterize(width: int, height: int, tri: NDArray[np.float64], q: NDArray[np.f
     from .._kernels.variants import token
 
     n = len(tri)
-    bins, area = bin_bands(tri, q, att, ids, height)
+    bins, area = bin_bands(tri, q, att, ids, height, order, first)
     kk = att.shape[2]
     if buf is not None:
         out = token(k.COLOR)
@@ -210,9 +226,10 @@ def rasterize(width: int, height: int, tri: NDArray[np.float64], q: NDArray[np.f
     work = 20 * n + area * (1 + (kk if len(out) != k.IDS else 0))
     setup = (np.empty((threads(), k.SETUP_BATCH, kk + 2, 3)),
              np.empty((threads(), k.SETUP_BATCH), np.bool_),
-             np.empty((threads(), 2, k.BAND), np.int64))            # one row a thread
-    call_in_bands(k.raster_triangles, work, out, depth, *bins, zbuf, floor, buf, abuf, idbuf,
-                  *setup)
+             np.empty((threads(), 2, k.BAND), np.int64),            # one row a thread
+             np.empty((threads(), ((width - 1) >> k.TILE_SHIFT) + 1)))
+    call_in_bands(k.raster_triangles, work, out, depth, *bins, order is not None, zbuf, floor,
+                  buf, abuf, idbuf, *setup)
 
 
 def triangles(fb: FrameBuffer, vertices: ArrayLike,

@@ -36,7 +36,16 @@ def nearest(scene: "ScreenScene", zbuf: Optional[NDArray[np.float64]] = None,
     peeling, only fragments strictly behind ``floor`` count.  ``triangles`` and
     ``size`` = (width, height): the scene's triangles mapped to another raster (the
     A-buffer's samples) instead of its own.  ``select``: the numbers of the triangles
-    to draw (default all)."""
+    to draw (default all).
+
+    All of them drawn, without peeling: the triangles facing the viewer are drawn
+    first, and the others only where they are not behind the depths the first left
+    in each tile (:func:`~scanline._kernels.raster3d.behind`): on a closed surface
+    the faces turned away are hidden by the ones facing the viewer, and most are
+    skipped whole.  The pixels are those of drawing in input order (equal depths go
+    to the smaller triangle number, the first drawn).  Back-face culling's idea
+    (Hearn & Baker, section 13-2), kept exact for the surfaces it does not hold
+    for."""
     w, h = size if size is not None else (scene.width, scene.height)
     tri = scene.triangles if triangles is None else triangles
     q = scene.inv_w
@@ -51,10 +60,17 @@ def nearest(scene: "ScreenScene", zbuf: Optional[NDArray[np.float64]] = None,
     else:
         out = np.full((h, w), -1, np.int32)
         depth = zbuf
+    order = first = None
+    if n and ids is None and floor is None:
+        front = scene.front[scene.facet]
+        first = int(np.count_nonzero(front))
+        if 0 < first < n:
+            order = np.concatenate([np.flatnonzero(front), np.flatnonzero(~front)])
     if n:
         rasterize(w, h, np.ascontiguousarray(tri), np.ascontiguousarray(q),
                   np.empty((n, 3, 0)), np.arange(n, dtype=np.int64) if ids is None else ids,
-                  zbuf=depth, idbuf=out, floor=floor, clear=clear)
+                  zbuf=depth, idbuf=out, floor=floor, clear=clear,
+                  order=order, first=first if order is not None else None)
     elif clear:
         out.fill(-1)
         depth.fill(np.inf)

@@ -123,3 +123,32 @@ def test_gamma_tables_encode_like_the_power(gamma):
     want = encode(np.nan_to_num(values, nan=0.0), gamma).astype(int)
     assert np.abs(got - want).max() <= 1
     assert (got == want).mean() > 0.999
+
+
+@pytest.mark.parametrize("gamma", [1.0, 2.2, 0.45, 3.0])
+def test_the_stores_encode_every_intensity_as_the_climb_does(gamma):
+    # the kernel's store takes the table step's value and one up past the step's own
+    # copy of the next threshold; the full climb (encode) is the rule: the same byte
+    # for intensities on every threshold, one unit in the last place either side of
+    # it, near black, out of range and not a number
+    from scanline._kernels import shade as ks
+    from scanline._kernels._jit import python
+    from scanline._kernels.variants import MODE
+
+    table, thresholds = gamma_tables(gamma)
+    edges = thresholds[1:256]
+    rng = np.random.default_rng(5)
+    values = np.concatenate([edges, np.nextafter(edges, -1), np.nextafter(edges, 2),
+                             rng.uniform(-0.05, 1.05, 3000), rng.uniform(0, 1e-3, 500),
+                             [0.0, 1.0, np.nan, np.inf, -np.inf]])
+    n = ks.CHUNK
+    values = np.concatenate([values, np.zeros(-len(values) % (3 * n))]).reshape(-1, 3, n)
+    climb = python(ks.encode)
+    for chunk in values:
+        s = np.zeros(ks.FIELDS * n)
+        s[ks.IR * n:(ks.IR + 3) * n] = chunk.ravel()
+        raster = np.zeros((1, n, 3), np.uint8)
+        ks.store_chunk(0, n, s, np.arange(n), table, thresholds, raster, ks.SHADING["phong"],
+                       MODE["RGB"])
+        want = [[climb(v, table, thresholds) for v in channel] for channel in chunk]
+        assert np.array_equal(raster[0].T, np.array(want, np.uint8))

@@ -93,15 +93,18 @@ def gamma_tables(gamma: float) -> Tuple[NDArray[np.int64], NDArray[np.float64]]:
     ``GAMMA_STEPS`` evenly spaced intensities (-2 - v where the next one is more than
     one value higher: :func:`scanline._kernels.shade.encode` climbs there), and the
     intensity ((v - 1/2) / 255)^gamma from which value v is stored (index 0: -inf,
-    256: inf).  Kept per gamma, read-only."""
+    256: inf), followed by each step's copy of the threshold of its value plus one
+    (index 257 + step: :func:`scanline._kernels.shade.store_chunk` reads it without
+    first reading the step's value).  Kept per gamma, read-only."""
     from .._kernels.shade import GAMMA_STEPS
     from . import encode
 
     table = encode(np.linspace(0.0, 1.0, GAMMA_STEPS), gamma).astype(np.int64)
     table[:-1] = np.where(np.diff(table) > 1, -2 - table[:-1], table[:-1])
-    thresholds = np.empty(257)
+    thresholds = np.empty(257 + GAMMA_STEPS)
     thresholds[0], thresholds[256] = -np.inf, np.inf
     thresholds[1:256] = ((np.arange(1, 256) - 0.5) / 255.0) ** gamma
+    thresholds[257:] = thresholds[np.minimum(np.maximum(table, 0) + 1, 256)]
     table.flags.writeable = thresholds.flags.writeable = False
     return table, thresholds
 

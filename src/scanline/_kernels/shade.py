@@ -348,13 +348,16 @@ def shade_row(y, faces, table, tface, face_mat, mats, ambient, sources, far, eye
         store_chunk(y, n, s, xs, gamma_table, thresholds, raster, shading, mode)
 
 
-@helper
+@inline
 def triangle_run(faces, tface, nf, y, x, room):
     """The next run of row ``y`` of ``faces`` from column ``x`` that one triangle
     covers, at most ``room`` pixels: ``(start, end, t, f)``, the triangle t and its
     facet f (-1 when t has none below ``nf``), which replaces t in ``faces`` along the
     run; pixels of no triangle (-1) before it are skipped (start = end = the width
-    when none is left)."""
+    when none is left).  Inlined: called once a run, about 90,000 times in the
+    teapot's frame, it took the reference counts of its two arrays each time (the
+    shading about 3% less time on one core, in turn in one process, measured
+    2026-12-07)."""
     width = faces.shape[1]
     row = np.uint64(y)
     while x < width and faces[row, np.uint64(x)] < 0:

@@ -129,3 +129,13 @@ def test_the_z_buffer_pass_gives_the_input_order_s_pixels(reverse):
         want = nearest(scene, select=np.arange(len(scene.triangles)))
         assert np.array_equal(got.ids, want.ids) and np.array_equal(got.depth, want.depth)
         assert (got.ids >= 0).sum() > 1000
+
+
+def test_a_drawing_order_without_an_id_buffer_is_refused():
+    # only ids can break the depth ties the way input order would: a frame buffer
+    # (or depth peeling) with a reordered draw is an error, not other pixels
+    tri = soup(np.random.default_rng(1), 4, 20, 20, 5.0, 4)
+    with pytest.raises(ValueError, match="id buffer"):
+        rasterize(20, 20, tri, np.ones((4, 3)), np.zeros((4, 3, 3)), np.arange(4),
+                  zbuf=np.full((20, 20), np.inf), buf=np.zeros((20, 20, 3), np.uint8),
+                  order=np.arange(4)[::-1].copy(), first=2)

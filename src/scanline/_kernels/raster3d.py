@@ -321,12 +321,14 @@ def behind(zbuf, tiles, lo, hi, r0, r1, xmin, xmax, x0, y0, g0, gx, gy):
 
     Exact: the bound is the depth function's least value over the box of the pixels
     the span loop can reach (columns ``floor(xmin) .. ceil(xmax)``, clamped to the
-    raster), less what rounding can take from the depths the loop computes (its first
-    value is three operations on terms at most ``size``, and each step of ``z' = z -
-    A / C`` one more: at most (steps + 3) unit roundoffs of ``size``, taken twice
-    over); a tile's depths only fall, so the largest depth once found
-    (``tiles[j]``, NaN: not yet) stays an upper bound while the band is drawn.  A
-    triangle skipped this way would have written nothing."""
+    raster), less what rounding can take from the depths the loop computes and from
+    the bound itself: the loop's first value is three operations on terms at most
+    ``size``, each step of ``z' = z - A / C`` one more (steps: at most ``kb - ka +
+    1``), the bound three more, so at most ``kb - ka + 7`` unit roundoffs of
+    ``size``, taken as ``kb - ka + 8`` and twice over.  A tile's depths only fall,
+    so the largest depth once found (``tiles[j]``, NaN: not yet) stays an upper
+    bound while the band is drawn.  A triangle skipped this way would have written
+    nothing."""
     width = zbuf.shape[1]
     ka = max(math.floor(min(max(xmin, -1.0), width + 1.0)), 0)     # (ints, in range)
     kb = min(math.ceil(min(max(xmax, -1.0), width + 1.0)), width - 1)
@@ -384,11 +386,12 @@ def raster_entries(out, depth, tri, q, att, ids, e0, e1, es, ordered, lo, hi, zb
 
     Triangles ``es`` on are drawn only where they are not :func:`behind` the tiles
     they meet (``tiles``: the band's tile maxima, NaN where not yet found).
-    ``ordered``: the triangles are not drawn in the order of their ids (an id buffer
-    is written), and a fragment also wins where its depth equals the buffer's and its
-    id is the smaller: each pixel then takes the least (depth, id), which drawing in
-    the order of the ids with ``z < depth`` gives too (the first of equal depths
-    wins), whatever the order they are drawn in.
+    ``ordered``: an id buffer is written, the triangles before ``es`` and those from
+    it each come in the order of their ids, but not the two parts together; a
+    fragment of the later part then also wins where its depth equals the buffer's
+    and its id is the smaller.  Each pixel takes the least (depth, id), which
+    drawing in the order of the ids with ``z < depth`` gives too (the first of equal
+    depths wins).
 
     A triangle's spans are found on all its rows first, into ``spans`` (2, at least
     ``hi - lo + 1``), and then filled: the two divisions of each row's edge crossings
@@ -411,10 +414,14 @@ def raster_entries(out, depth, tri, q, att, ids, e0, e1, es, ordered, lo, hi, zb
             r1 = min(min(r1, hi), r0 + spans.shape[1] - 1)   # (spans: a band's rows)
             x0 = tri[t, 0, 0]
             y0 = tri[t, 0, 1]
-            if t >= es and behind(zbuf, tiles, lo, hi, r0, r1,
-                                  min(min(x0, tri[t, 1, 0]), tri[t, 2, 0]),
-                                  max(max(x0, tri[t, 1, 0]), tri[t, 2, 0]), x0, y0,
-                                  g[s, 0, 0], g[s, 0, 1], g[s, 0, 2]):
+            # the tile test where an id buffer is drawn with a depth test (the other
+            # variants fold it away and compile without it: about 0.9 s of a COLOR
+            # variant's compilation, measured 2026-12-07)
+            if (len(out) != COLOR and (len(depth) == TEST or len(depth) == CLEAR_TEST)
+                    and t >= es and behind(zbuf, tiles, lo, hi, r0, r1,
+                                           min(min(x0, tri[t, 1, 0]), tri[t, 2, 0]),
+                                           max(max(x0, tri[t, 1, 0]), tri[t, 2, 0]), x0, y0,
+                                           g[s, 0, 0], g[s, 0, 1], g[s, 0, 2])):
                 continue
             low, mid, high = rising(tri[t, 0, 1], tri[t, 1, 1], tri[t, 2, 1])
             xa = tri[t, low, 0]
@@ -499,17 +506,17 @@ def raster_triangles(start, step, out, depth, tri, q, att, ids, starts, split, o
     starts[b + 1] - 1``, those from ``split[b]`` on drawn only where they are not
     behind the band's tiles as the triangles before them left them (:func:`behind`;
     ``split[b]`` = ``starts[b + 1]``: none).  ``ordered``: the entries are not in
-    the order of their ids (:func:`raster_entries`).  Writes ``zbuf`` (H, W) (depth token TEST; PEEL: only
-    between ``floor`` (H, W) and ``zbuf``; CLEAR_TEST: each band cleared first, with
-    ``idbuf``), and ``buf`` (H, W', K) bytes (out COLOR) or ``abuf`` (H, W, K) and
-    ``idbuf`` (H, W) (out ATTRIBUTES), or ``idbuf`` alone (out IDS).  ``g`` (T,
-    :data:`SETUP_BATCH`, K + 2, 3) and ``ok`` (T, :data:`SETUP_BATCH`) are the
-    setup's scratch, ``spans`` (T, 2, :data:`BAND`) the spans' (:func:`raster_entries`)
-    and ``tiles`` (T, at least W / 2^:data:`TILE_SHIFT`) the tile maxima's, row
-    ``start % T`` this call's (one row per thread; made
-    by the caller: numpy's allocation compiled into the kernel costs 0.1 s of a first
-    call).  Returns a number of no meaning: the sum of the values read ahead
-    (:data:`READ_AHEAD`; summed so that the reads are kept)."""
+    the order of their ids (:func:`raster_entries`).  Writes ``zbuf`` (H, W) (depth
+    token TEST; PEEL: only between ``floor`` (H, W) and ``zbuf``; CLEAR_TEST: each
+    band cleared first, with ``idbuf``), and ``buf`` (H, W', K) bytes (out COLOR) or
+    ``abuf`` (H, W, K) and ``idbuf`` (H, W) (out ATTRIBUTES), or ``idbuf`` alone
+    (out IDS).  ``g`` (T, :data:`SETUP_BATCH`, K + 2, 3) and ``ok`` (T,
+    :data:`SETUP_BATCH`) are the setup's scratch, ``spans`` (T, 2, :data:`BAND`) the
+    spans' (:func:`raster_entries`) and ``tiles`` (T, at least W /
+    2^:data:`TILE_SHIFT`) the tile maxima's, row ``start % T`` this call's (one row
+    per thread; made by the caller: numpy's allocation compiled into the kernel
+    costs 0.1 s of a first call).  Returns a number of no meaning: the sum of the
+    values read ahead (:data:`READ_AHEAD`; summed so that the reads are kept)."""
     height, width = zbuf.shape
     mine = start % g.shape[0]
     read = 0.0

@@ -186,9 +186,11 @@ def rasterize(width: int, height: int, tri: NDArray[np.float64], q: NDArray[np.f
     ``order`` (N,): draw the triangles in this order (their numbers), testing those
     from position ``first`` on against the tiles' depths first
     (:func:`~scanline._kernels.raster3d.behind`; default none): for an id buffer
-    whose ``ids`` increase with the triangles' numbers, the pixels are then those
-    of drawing in input order (equal depths go to the smaller id,
-    :func:`~scanline._kernels.raster3d.raster_entries`).
+    (``idbuf`` without ``buf``, no ``floor``) whose ``ids`` increase with the
+    triangles' numbers and an ``order`` that lists each part in increasing number,
+    the pixels are then those of drawing in input order (equal depths go to the
+    smaller id, :func:`~scanline._kernels.raster3d.raster_entries`); a ValueError
+    for another buffer, which has no ids to break ties with.
 
     ``buf`` given: the attributes (0..255) are rounded into its bytes; else
     ``abuf`` (H, W, K) float64 and ``idbuf`` (H, W) int32 receive the interpolated
@@ -203,6 +205,9 @@ def rasterize(width: int, height: int, tri: NDArray[np.float64], q: NDArray[np.f
     from .._kernels.variants import token
 
     n = len(tri)
+    if order is not None and (idbuf is None or buf is not None or floor is not None):
+        raise ValueError("a drawing order needs an id buffer to break depth ties with "
+                         "(idbuf, without buf or floor)")
     bins, area = bin_bands(tri, q, att, ids, height, order, first)
     kk = att.shape[2]
     if buf is not None:

@@ -63,14 +63,15 @@ def nearest(scene: "ScreenScene", zbuf: Optional[NDArray[np.float64]] = None,
     order = first = None
     if n and ids is None and floor is None:
         front = scene.front[scene.facet]
-        first = int(np.count_nonzero(front))
-        if 0 < first < n:
+        facing = int(np.count_nonzero(front))
+        if 0 < facing < n:
             order = np.concatenate([np.flatnonzero(front), np.flatnonzero(~front)])
+            first = facing
     if n:
         rasterize(w, h, np.ascontiguousarray(tri), np.ascontiguousarray(q),
                   np.empty((n, 3, 0)), np.arange(n, dtype=np.int64) if ids is None else ids,
                   zbuf=depth, idbuf=out, floor=floor, clear=clear,
-                  order=order, first=first if order is not None else None)
+                  order=order, first=first)
     elif clear:
         out.fill(-1)
         depth.fill(np.inf)

@@ -444,8 +444,23 @@ def counts(name: str, value: object, total: int,
 SPLIT_VALUES = 1 << 18
 
 
+#: Values from which :func:`_min_max` reduces an array block by block (32 MB of
+#: float64, a processor's last-level cache), and the block (1 MB): the maximum then
+#: reads what the minimum just brought into the cache instead of memory again (the
+#: 9M vertex values of a million triangles on two threads: 1.19-1.34x as fast in four
+#: runs in turn in one process, 2026-12-07; below the threshold a part stays cached).
+MIN_MAX_BLOCKED = 1 << 22
+MIN_MAX_BLOCK = 1 << 17
+
+
 def _min_max(a: NDArray[Any]) -> Tuple[float, float]:
-    return float(a.min()), float(a.max())
+    """The least and the largest value of the flat array ``a`` (NaN where it holds
+    one): a large array in one pass over memory, not two (:data:`MIN_MAX_BLOCKED`)."""
+    if a.size < MIN_MAX_BLOCKED:
+        return float(a.min()), float(a.max())
+    found = np.array([(b.min(), b.max()) for b in
+                      (a[i:i + MIN_MAX_BLOCK] for i in range(0, a.size, MIN_MAX_BLOCK))])
+    return float(found[:, 0].min()), float(found[:, 1].max())        # (NaN carries)
 
 
 def extremes(a: NDArray[Any]) -> Tuple[float, float]:

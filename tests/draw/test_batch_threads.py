@@ -185,12 +185,16 @@ def test_integer_batches_draw_what_their_float_values_draw(dtype):
     assert np.array_equal(segs, kept[0]) and np.array_equal(rings, kept[1])
 
 
+@pytest.mark.parametrize("blocks", [False, True])
 @pytest.mark.parametrize("threads", [1, 2, 3, 5])
-def test_extremes_split_between_threads_are_numpy_s(threads, monkeypatch):
+def test_extremes_split_between_threads_are_numpy_s(threads, blocks, monkeypatch):
     from scanline import _validate as v
 
     monkeypatch.setattr(_threads, "threads", lambda: threads)
     monkeypatch.setattr(v, "SPLIT_VALUES", 10)
+    if blocks:                      # each part reduced block by block (a large batch's)
+        monkeypatch.setattr(v, "MIN_MAX_BLOCKED", 8)
+        monkeypatch.setattr(v, "MIN_MAX_BLOCK", 3)
     rng = np.random.default_rng(threads)
     for n in (1, 9, 10, 11, 47, 1000):
         a = rng.normal(size=(n, 3)) * 1e3

@@ -192,3 +192,28 @@ print(calls > 1, _jit._SPENT[conics.draw_ellipse] > _jit.TWIN_TIME,
                           env=env, timeout=600)
     assert proc.returncode == 0, proc.stderr
     assert proc.stdout.split() == ["True", "True", "True"]
+
+
+@pytest.mark.parametrize("name, kernels", [
+    ("render ray-tracing", ["raytrace.trace_all", "raycast.cast_rays"]),
+    ("render ray-tracing maps", ["raytrace.trace_all", "raycast.cast_rays"]),
+    ("radiosity ray-casting", ["formfactors.raycast_rows"]),
+    ("visible depth sort", ["depthsort.depth_sort"])])
+def test_the_slowest_kernels_to_compile_answer_a_first_use_as_python(tmp_path, name, kernels):
+    # kernels that take seconds to compile (declared slow_to_compile) answer the
+    # first-use case as their twins in a fresh environment: none of them is compiled
+    script = f"""
+import importlib
+from scanline import warmup
+mode, code = next((m, c) for n, m, c in warmup.cases([{name!r}]))
+warmup.run_case(mode, code)
+for kernel in {kernels!r}:
+    module, function = kernel.split(".")
+    found = getattr(importlib.import_module("scanline._kernels." + module), function)
+    print(kernel, bool(found.overloads))
+"""
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "cache"), SCANLINE_COMPILE="auto")
+    proc = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                          env=env, timeout=600)
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.split() == [word for k in kernels for word in (k, "False")]

@@ -58,7 +58,7 @@ cells, apart from the wider rows of ``it``.
 
 import numpy as np
 
-from ._jit import helper, kernel
+from ._jit import helper, kernel, slow_to_compile
 from .planecut import plane_part
 from .sort import sort_keys
 from .variants import token
@@ -961,3 +961,9 @@ def depth_sort(pv, fl, it, tag, heap, cells, ent, grid, first, low, cent, dface,
             return status
     st[STATUS] = DONE
     return DONE
+
+
+#: The depth sort and its helpers take about 9 s to compile (benchmarks/compile.py):
+#: its twin sorts a small scene first (the first-use case, 294 faces: two calls, 0.5 s
+#: as Python, past a twin's default time).
+slow_to_compile(depth_sort, 9.0)

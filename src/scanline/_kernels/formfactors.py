@@ -10,7 +10,7 @@ refused by the API layer; a NaN projection fails every comparison and draws noth
 import math
 
 import numpy as np
-from ._jit import helper, kernel
+from ._jit import helper, kernel, slow_to_compile
 from .bvh import STACK, transmittance
 
 
@@ -293,3 +293,9 @@ def raycast_rows(start, step, sources, quads, centre, normal, k, bounds, links, 
             continue
         raycast_row(i, quads, centre, normal, k, bounds, links, table, clear, stack, out[r],
                     column)
+
+
+#: The ray-cast form factors take about 2.2 s to compile (benchmarks/compile.py): the
+#: twin computes a small box's rows first (the first-use case, a Cornell box of
+#: subdivisions=1: 80 calls, 0.3 s as Python, past a twin's default time).
+slow_to_compile(raycast_rows, 2.2)

@@ -17,7 +17,7 @@ import math
 import numpy as np
 from numba import prange
 
-from ._jit import kernel, parallel_kernel
+from ._jit import kernel, parallel_kernel, slow_to_compile
 from .raster3d import planes, rising, span_limits
 
 #: Tile size (pixels, a power of two) and its shift.
@@ -143,3 +143,8 @@ def cast_rays(tri, ids, g, ok, rank, tiles_x, starts, order, zbuf, abuf, idbuf):
                     for c in range(k):
                         abuf[y, x, c] = (g[hit, c + 2, 0] + g[hit, c + 2, 1] * fx
                                          + g[hit, c + 2, 2] * fy) / qx
+
+
+#: The ray caster takes about 2 s to compile (benchmarks/compile.py): its twin answers
+#: a small scene first (0.5 microsecond a work unit as Python, its estimate cautious).
+slow_to_compile(cast_rays, 2.0)

@@ -43,7 +43,7 @@ import math
 
 import numpy as np
 
-from ._jit import helper, kernel
+from ._jit import helper, kernel, slow_to_compile
 from .shade import encode
 from .bvh import STACK, moller_trumbore, nearest, transmittance
 from .csg import code_primitive, first_surface, solid_scratch, solid_transmittance
@@ -595,6 +595,12 @@ def trace_all(start, step, origins, directions, firsts, givens, samples, seed, m
                 _push(rays, top, p, eps, ng, weight, tint, depth + 1, ray, np.int64(REFLECTED), m)
                 top += 1
                 made += 1
+
+
+#: The tracer and its helpers take 5-12 s to compile (benchmarks/compile.py; its maps
+#: the most): its twin answers a small scene first (the first-use cases of
+#: ``render ray-tracing``, 96 x 64 pixels: 0.5-0.8 s as Python).
+slow_to_compile(trace_all, 8.0)
 
 
 @kernel

@@ -6,8 +6,9 @@ Workloads (fixed seeds; the same scenes as the topic benchmarks):
 * ``lines``: 200,000 short lines on 2048 x 2048 (``sl.draw.lines``, a batch call
   whose kernel takes every n-th band of rows on each of n threads).
 * ``circles``: 50,000 circles on 2048 x 2048 (``sl.draw.circles``).
-* ``triangles small`` / ``medium``: 1,000,000 triangles of about 10 pixels /
-  100,000 of about 50 pixels, Gouraud colors, depth test, 1920 x 1080
+* ``triangles small`` / ``medium``: 1,000,000 triangles of 1.7 pixels' mean area /
+  100,000 of 8.5 pixels (``render.random_triangles`` of size 10 / 50), Gouraud colors,
+  depth test, 1920 x 1080
   (``sl.draw.triangles``; as ``render.py``).
 * ``teapot phong``: the Utah teapot at 1920 x 1080, Phong-shaded (``sl.render``; as
   ``render.py``).
@@ -111,8 +112,8 @@ def threaded(quick):
             fb.clear()
             depth.clear()
             sl.draw.triangles(fb, tris, colors=colors, depth=depth)
-        work[f"triangles {name}"] = (f"sl.draw.triangles, {n // 1000}k of ~{size} px, "
-                                     "Gouraud, depth", draw)
+        work[f"triangles {name}"] = (f"sl.draw.triangles, {n // 1000}k of ~{0.17 * size:.1f} "
+                                     "px mean area, Gouraud, depth", draw)
 
     teapot = sl.mesh.teapot(8 if quick else 24).transformed(
         sl.transform3d.rotation(-math.pi / 2, "x"))

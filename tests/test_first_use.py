@@ -217,3 +217,28 @@ for kernel in {kernels!r}:
                           env=env, timeout=600)
     assert proc.returncode == 0, proc.stderr
     assert proc.stdout.split() == [word for k in kernels for word in (k, "False")]
+
+
+def test_a_first_ray_trace_goes_in_parts_with_the_pixels_of_one_call(monkeypatch):
+    # before the tracer is compiled its samples go in parts (the twin's time budget is
+    # checked between them): the parts give the pixels of the compiled single call
+    from scanline._kernels import raytrace
+
+    code = warmup.CALLS["render ray-tracing"][1]
+    whole = outcome("RGB", code, "always")
+    twin = _jit.python(raytrace.trace_all)
+    parts = []
+
+    class Uncompiled:                 # a stand-in: no overloads, so the call is parted
+        overloads = {}
+
+        def __call__(self, *args):
+            parts.append(len(args[2]))
+            with np.errstate(all="ignore"):
+                return twin(*args)
+
+    monkeypatch.setattr(raytrace, "trace_all", Uncompiled())
+    monkeypatch.setattr(_jit, "TWIN_WORK", 20_000)
+    parted = outcome("RGB", code, "auto")
+    assert len(parts) > 3 and len(set(parts[:-1])) == 1
+    np.testing.assert_array_equal(parted[0], whole[0])

@@ -64,6 +64,7 @@ class Traced:
     clear: F64
     solids: Union[TracerSolids, Tuple[()]] = ()
     with_solids: Tuple[Any, ...] = (0,)
+    max_depth: int = MAX_DEPTH
 
 
 def material_table(materials: Sequence["Material"], gamma: float) -> F64:
@@ -185,7 +186,7 @@ def traced(scene: "ScreenScene", shading: "ShadingOptions", background: F64, max
         v.kernel_array(scene.facet_mesh, np.int64), v.kernel_array(scene.front, np.bool_),
         mats, lights, v.kernel_array(ambient), v.kernel_array(background),
         *tables, token(k.WITH if maps_used else k.WITHOUT), solids, with_solids), lights,
-        int(seed), eps, clear, solids, with_solids)
+        int(seed), eps, clear, solids, with_solids, int(max_depth))
 
 
 def primary_rays(scene: "ScreenScene", xs: ArrayLike, ys: ArrayLike) -> Tuple[F64, F64]:
@@ -301,20 +302,34 @@ def trace(prepared: Traced, origins: F64, directions: F64, firsts: ArrayLike, gi
     random numbers; ``log``: a (L, LOG_COLUMNS) array that receives the rays of a
     single sample (Python, the kernel's twin), returned with the number of rows
     written."""
-    from .._kernels._jit import python
+    from .._kernels._jit import TWIN_WORK, python
     from .._kernels._threads import call_in_bands
     from .._kernels import raytrace as k
     from .._kernels.variants import token
 
     out = np.empty((len(origins), 3))
     count = np.zeros(1, np.int64)
-    args = (v.kernel_array(origins), v.kernel_array(directions),
+    rows = (v.kernel_array(origins), v.kernel_array(directions),
             v.kernel_array(firsts, np.int64), v.kernel_array(givens),
-            v.kernel_array(samples, np.int64), *prepared.arguments, out)
+            v.kernel_array(samples, np.int64))
     if log is None:
-        call_in_bands(k.trace_all, 20 * len(origins) * (8 + 6 * len(prepared.lights)), *args,
-                      token(k.WITHOUT), np.zeros((0, k.LOG_COLUMNS)), count)
+        # work units a sample: its rays, shadow rays and their levels
+        each = 20 * (8 + 6 * len(prepared.lights)) * max(1.0, prepared.max_depth / MAX_DEPTH)
+        # A first use (the kernel not compiled) goes in parts of TWIN_WORK units, as the
+        # Python twin where it is small: the estimate cannot see a ray tree's size (a
+        # camera in a box of mirrors and glass took 15 microseconds a unit as Python,
+        # against 2 for the first-use case), and the twin's time budget, checked before
+        # each part, then compiles the kernel for the rest instead of running on.
+        part = max(1, int(TWIN_WORK // each))
+        lo = 0
+        while lo < len(out):
+            hi = len(out) if k.trace_all.overloads else min(len(out), lo + part)
+            call_in_bands(k.trace_all, each * (hi - lo), *(a[lo:hi] for a in rows),
+                          *prepared.arguments, out[lo:hi], token(k.WITHOUT),
+                          np.zeros((0, k.LOG_COLUMNS)), count)
+            lo = hi
         return out
+    args = rows + prepared.arguments + (out,)
     with np.errstate(all="ignore"):
         python(k.trace_all)(0, 1, *args, token(k.WITH), log, count)
     return out, int(count[0])

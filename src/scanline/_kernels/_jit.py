@@ -203,6 +203,23 @@ def call(kernel, work, *args):
         _SPENT[kernel] = spent + time.perf_counter() - t0
 
 
+def first_use_parts(kernel, each, n):
+    """The ranges ``(lo, hi)`` of ``n`` items of ``each`` work units in which to call
+    ``kernel`` (through :func:`call`): one range once it is compiled, and until then
+    parts of :data:`TWIN_WORK` units.  For a kernel whose work estimate can miss by
+    far (the ray tracer's cannot see how deep its ray trees go): a first use runs as
+    the Python twin part by part, and the twin's time budget, checked before each
+    part, compiles the kernel for the rest instead of letting one call run on."""
+    lo = 0
+    while lo < n:
+        if getattr(kernel, "overloads", None):
+            hi = n
+        else:
+            hi = min(n, lo + max(1, int(TWIN_WORK // max(each, 1e-300))))
+        yield lo, hi
+        lo = hi
+
+
 #: Compiled entry points by ``(kernel, types)``: see :func:`call_typed`.
 _ENTRIES = {}
 

@@ -302,7 +302,7 @@ def trace(prepared: Traced, origins: F64, directions: F64, firsts: ArrayLike, gi
     random numbers; ``log``: a (L, LOG_COLUMNS) array that receives the rays of a
     single sample (Python, the kernel's twin), returned with the number of rows
     written."""
-    from .._kernels._jit import TWIN_WORK, python
+    from .._kernels._jit import first_use_parts, python
     from .._kernels._threads import call_in_bands
     from .._kernels import raytrace as k
     from .._kernels.variants import token
@@ -313,21 +313,14 @@ def trace(prepared: Traced, origins: F64, directions: F64, firsts: ArrayLike, gi
             v.kernel_array(firsts, np.int64), v.kernel_array(givens),
             v.kernel_array(samples, np.int64))
     if log is None:
-        # work units a sample: its rays, shadow rays and their levels
+        # work units a sample: its rays, shadow rays and their levels.  The estimate
+        # cannot see a ray tree's size (a camera in a box of mirrors and glass took 15
+        # microseconds a unit as Python, the first-use case 2): a first use goes in parts
         each = 20 * (8 + 6 * len(prepared.lights)) * max(1.0, prepared.max_depth / MAX_DEPTH)
-        # A first use (the kernel not compiled) goes in parts of TWIN_WORK units, as the
-        # Python twin where it is small: the estimate cannot see a ray tree's size (a
-        # camera in a box of mirrors and glass took 15 microseconds a unit as Python,
-        # against 2 for the first-use case), and the twin's time budget, checked before
-        # each part, then compiles the kernel for the rest instead of running on.
-        part = max(1, int(TWIN_WORK // each))
-        lo = 0
-        while lo < len(out):
-            hi = len(out) if k.trace_all.overloads else min(len(out), lo + part)
+        for lo, hi in first_use_parts(k.trace_all, each, len(out)):
             call_in_bands(k.trace_all, each * (hi - lo), *(a[lo:hi] for a in rows),
                           *prepared.arguments, out[lo:hi], token(k.WITHOUT),
                           np.zeros((0, k.LOG_COLUMNS)), count)
-            lo = hi
         return out
     args = rows + prepared.arguments + (out,)
     with np.errstate(all="ignore"):

@@ -2,6 +2,8 @@
 "determine the overlap intervals for scan lines that cross the area").
 """
 
+import numpy as np
+
 from ._jit import inline
 from .raster import put_bit
 from .variants import PACKED
@@ -22,15 +24,21 @@ def span(buf, layout, width, height, y, x0, x1, color):
             put_bit(buf, x, y, color[0])
         return
     # (the channel writes of raster.store, repeated: calling it here made the flood
-    # fill, whose spans come from a big helper, 2.5 times slower)
+    # fill, whose spans come from a big helper, 2.5 times slower).  The indices are
+    # unsigned, the end never below the start (x0 >= 0 here): numba then leaves out
+    # the wrap-around of negative indices, which made LLVM turn the gray loop into
+    # scatters and the color loops into a multiply per pixel; in turn in one process
+    # on one core (2026-12-08), 10k polygons 1.23-1.34x as fast in gray and 1.06-1.08x
+    # in RGB, 100k filled circles 1.19x, the maze's flood fill 1.03x
     n = color.shape[0]
-    for x in range(x0, x1 + 1):
-        buf[y, x, 0] = color[0]
+    row = np.uint64(y)
+    for x in range(np.uint64(x0), np.uint64(max(x1 + 1, x0))):
+        buf[row, x, 0] = color[0]
         if n > 1:
-            buf[y, x, 1] = color[1]
-            buf[y, x, 2] = color[2]
+            buf[row, x, 1] = color[1]
+            buf[row, x, 2] = color[2]
             if n > 3:
-                buf[y, x, 3] = color[3]
+                buf[row, x, 3] = color[3]
 
 
 @inline

@@ -220,11 +220,14 @@ def sort_active(et, active, keys, dirs, n, fkeys, tkeys, titems):
         dirs[i] = et[active[i], 2]
 
 
-@helper
+@inline
 def fill_row(buf, layout, width, height, r, keys, dirs, nact, mask, color):
     """Fill the spans of raster row ``r`` between the sorted crossing keys of the
     active edge list: from a key to the next wherever the winding number so far
-    passes the rule (``winding & mask != 0``)."""
+    passes the rule (``winding & mask != 0``).  Inlined into its one caller: a call
+    a row passed some forty numbers, and 10k polygons took 1.08-1.17x the time in
+    RGB (in turn in one process, one and two threads, 2026-12-08; compiled in the
+    same time, one function fewer)."""
     winding = 0
     for a in range(nact - 1):
         winding += dirs[a]

@@ -11,7 +11,7 @@ the whole state.
 from typing import TYPE_CHECKING, Any, Literal, Optional, Protocol, Union
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import NDArray
 
 from . import _validate as v
 from . import transform as tf

@@ -29,7 +29,7 @@ import signal
 import tempfile
 import threading
 from types import FrameType
-from typing import Any, BinaryIO, Callable, Iterator, List, Optional, Sequence, Tuple, Union, cast
+from typing import Any, BinaryIO, Callable, Iterator, Optional, Sequence, Tuple, Union, cast
 
 import numpy as np
 from PIL import Image

@@ -10,7 +10,7 @@ import numbers
 from typing import Any, Sequence, Union, cast
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import NDArray
 
 from . import _validate as v
 from .errors import ArgumentTypeError, ArgumentValueError

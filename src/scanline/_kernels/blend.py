@@ -36,7 +36,7 @@ import numpy as np
 
 from ._jit import helper, inline, kernel
 from .raster import put_bit
-from .variants import BIT, GRAY, INDEXED, RGB, RGBA
+from .variants import GRAY, INDEXED, RGB, RGBA
 
 
 @helper

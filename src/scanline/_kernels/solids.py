@@ -34,8 +34,6 @@ grad (f o W) = W_lin^T grad f (:func:`surface_normal`).
 
 import math
 
-import numpy as np
-
 from ._jit import helper
 
 #: Kinds of primitives.

@@ -7,7 +7,7 @@ masked pixel takes entry ``i`` of ``lut`` (channel values), ``i`` chosen by the 
 ``i < 0`` leaves the pixel unchanged.
 """
 
-from ._jit import helper, inline, kernel
+from ._jit import inline, kernel
 from .raster import put
 
 

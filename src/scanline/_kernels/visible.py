@@ -12,8 +12,6 @@ see exactly the pixels :func:`scanline.draw.polygons` paints for the object-orde
 methods.  Depth at a pixel center is the plane's, z = -(A x + B y + D) / C.
 """
 
-import math
-
 import numpy as np
 
 from ._jit import helper, kernel, slow_to_compile

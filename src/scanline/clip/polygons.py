@@ -1,6 +1,6 @@
 """Polygon clipping: Sutherland-Hodgman and Weiler-Atherton."""
 
-from typing import Literal, Optional, Union, cast
+from typing import Literal, Optional, Union
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray

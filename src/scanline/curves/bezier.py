@@ -9,7 +9,7 @@ array([2. , 1.5])
 """
 
 from math import comb
-from typing import Literal, Optional, Union
+from typing import Optional, Union
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray

@@ -15,7 +15,7 @@ x in [-3, 3.43], y in [-2, 2], z in [0, 3.15].
 """
 
 from importlib import resources
-from typing import Optional, Sequence, Union
+from typing import Sequence, Union
 
 import numpy as np
 from numpy.typing import NDArray

@@ -23,7 +23,7 @@ refresh; :class:`SVGDevice` writes an SVG document.
 
 import math
 import os
-from typing import TYPE_CHECKING, Any, BinaryIO, Optional, Sequence, Union
+from typing import TYPE_CHECKING, Any, Optional, Sequence, Union
 from xml.sax.saxutils import escape, quoteattr
 
 import numpy as np

@@ -12,7 +12,7 @@ transformation, and the primitives are stored in normalized device coordinates.
 
 import math
 import numbers
-from typing import TYPE_CHECKING, Any, Optional, Sequence, Union
+from typing import TYPE_CHECKING, Any, Optional
 
 import numpy as np
 from numpy.typing import NDArray

@@ -20,7 +20,6 @@ from typing import TYPE_CHECKING, Any, Optional, Sequence
 import numpy as np
 from numpy.typing import NDArray
 
-from .. import _validate as v
 from ..errors import ArgumentTypeError, ArgumentValueError, ScanlineError
 from ..geometry import guard
 from . import batch, pipeline, text, three_d

@@ -1,6 +1,6 @@
 """Argument handling shared by the drawing functions."""
 
-from typing import Any, Optional, Sequence, Tuple, Union, cast
+from typing import Any, Optional, Sequence, Tuple, Union
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray

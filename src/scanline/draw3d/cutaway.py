@@ -28,7 +28,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from .. import _validate as v
 from .._typing import Color
-from ..errors import ArgumentTypeError, ArgumentValueError
+from ..errors import ArgumentValueError
 from ..mesh import Mesh
 from ..mesh.mesh import check_mesh_budget
 from .exploded import _parts

@@ -8,8 +8,6 @@ CSG solid rendered by the octree visible-surface method."""
 
 import math
 
-import numpy as np
-
 import scanline as sl
 
 from scanline.gallery._plot import side_by_side

@@ -5,7 +5,7 @@ image placed in the axes; lines and markers tested against the depth buffer at
 image precision and drawn as vector artists over it."""
 
 import math
-from typing import TYPE_CHECKING, Callable, List, Optional, Tuple
+from typing import TYPE_CHECKING, Callable, List, Tuple
 
 import numpy as np
 from matplotlib.backend_bases import RendererBase

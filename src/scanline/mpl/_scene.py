@@ -4,7 +4,7 @@ and the 2-D matplotlib artists that draw the visible parts of lines and markers.
 """
 
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any, Callable, List, Optional, Sequence, Tuple, TypedDict, TypeVar, Union
+from typing import TYPE_CHECKING, Callable, List, Optional, Sequence, Tuple, TypedDict, TypeVar, Union
 
 import numpy as np
 from matplotlib.artist import Artist

@@ -3,7 +3,7 @@ depth-sorting method and drawn as one 2-D path collection in that order; lines c
 where surfaces hide them (visible-line detection); markers hidden by a surface left
 out.  Everything stays a path: SVG and PDF output stay vector."""
 
-from typing import TYPE_CHECKING, Any, Dict, List, Optional, Sequence, Tuple, Union
+from typing import TYPE_CHECKING, Any, Dict, List, Optional, Tuple
 
 import numpy as np
 from numpy.typing import NDArray

@@ -3,7 +3,6 @@ flattened to a postfix program, the primitives' rows, and one bounding volume
 hierarchy over the triangles of every mesh primitive (Roth 1982: ray casting a CSG
 tree; :mod:`scanline._kernels.csg`)."""
 
-import math
 from typing import TYPE_CHECKING, List, Optional, Tuple
 
 import numpy as np

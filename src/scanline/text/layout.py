@@ -29,7 +29,7 @@ horizontal one to the block.
 """
 
 import math
-from typing import Any, Iterable, Optional, Sequence, Union
+from typing import Any, Iterable, Optional
 
 import numpy as np
 from numpy.typing import NDArray

@@ -14,7 +14,7 @@ import contextlib
 import logging
 import math
 import os
-from typing import Any, Iterator, Optional, Union
+from typing import Any, Iterator, Optional
 
 import numpy as np
 from numpy.typing import NDArray

@@ -299,7 +299,7 @@ def cyrus_beck(x0: float, y0: float, x1: float, y1: float,
                      "t": None if np.isnan(r) else r, "kind": _KINDS[int(kind)],
                      "t_E": u1, "t_L": u2})
     result, line = _result(ok, out)
-    notes = [f"window (counterclockwise): "
+    notes = ["window (counterclockwise): "
              + ", ".join(_vector(*pt) for pt in ring),
              f"D = P1 - P0 = {_vector(dx, dy)}; N_i = outward normal of the edge from "
              "PE_i to the next vertex",

@@ -170,8 +170,6 @@ def flood_fill(x: int, y: int, grid: Union[str, Sequence[str]] = EXAMPLE_GRID,
     """
     from ..draw.seedfill import seed_value
     from .._kernels import seedfill as k
-    from .._kernels._jit import python
-    from .._kernels.variants import layout, token
 
     def ref_of(buf: NDArray[np.uint8], packed: bool, x: int, y: int,
                chars: List[str]) -> NDArray[Any]:

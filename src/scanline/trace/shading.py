@@ -13,7 +13,6 @@ from typing import TYPE_CHECKING, Any, Dict, List, Literal, Tuple
 import numpy as np
 from numpy.typing import NDArray
 
-from .. import _validate as v
 from ..errors import ArgumentValueError
 from .table import Table, _cell
 

@@ -8,7 +8,7 @@ The rows come from the kernel itself: its loop runs as Python
 their classes that the loop found, and the case the test returned."""
 
 import types
-from typing import Any, Callable, Dict, List, Literal, Optional, Tuple
+from typing import Any, Callable, Dict, List, Literal, Tuple
 
 import numpy as np
 from numpy.typing import NDArray

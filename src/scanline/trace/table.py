@@ -4,7 +4,7 @@ import csv
 import io
 import json
 import math
-from typing import Any, Dict, Iterable, List, Optional, Set, Tuple
+from typing import Any, Dict, Iterable, Optional, Set, Tuple
 
 
 def _cell(value: object) -> str:

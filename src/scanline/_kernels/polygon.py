@@ -226,7 +226,7 @@ def fill_row(buf, layout, width, height, r, keys, dirs, nact, mask, color):
     active edge list: from a key to the next wherever the winding number so far
     passes the rule (``winding & mask != 0``).  Inlined into its one caller: a call
     a row passed some forty numbers, and 10k polygons took 1.08-1.17x the time in
-    RGB (in turn in one process, one and two threads, 2026-12-08; compiled in the
+    RGB (in turn in one process, one and two threads, 2026-12-07; compiled in the
     same time, one function fewer)."""
     winding = 0
     for a in range(nact - 1):
@@ -242,7 +242,7 @@ def fill_polygon(buf, layout, width, height, ox, oy, verts, contours, c0, c1, co
     into its one caller: called once a polygon, it took the reference counts of its
     twelve arrays each time (an atomic increment and decrement each), and every
     thread's strip calls it for every polygon; 10k polygons 1.02-1.14x as fast on one
-    thread and 1.07-1.10x on two (in turn in one process, 2026-12-08), compiled in the
+    thread and 1.07-1.10x on two (in turn in one process, 2026-12-07), compiled in the
     same time."""
     n = build_edges(verts, contours, c0, c1, ox, oy, height, et, ef)
     if n == 0:

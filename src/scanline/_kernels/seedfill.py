@@ -198,7 +198,7 @@ def seed_loop(buf, layout, kind, width, height, x0, y0, eight, ref, color, traci
     span is painted here too, by the fill's own painting (its token folds the
     other away): through a helper, a call a span that passed some thirty numbers,
     the flood fill of a 4096 x 4096 maze took 1.10x the time in RGB and 1.27x in gray
-    (in turn in one process, 2026-12-08).
+    (in turn in one process, 2026-12-07).
     """
     todo = np.zeros((height, width), np.uint8)
     ready = np.zeros(height, np.uint8)

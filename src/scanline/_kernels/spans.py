@@ -28,7 +28,7 @@ def span(buf, layout, width, height, y, x0, x1, color):
     # unsigned, the end never below the start (x0 >= 0 here): numba then leaves out
     # the wrap-around of negative indices, which made LLVM turn the gray loop into
     # scatters and the color loops into a multiply per pixel; in turn in one process
-    # on one core (2026-12-08), 10k polygons 1.23-1.34x as fast in gray and 1.06-1.08x
+    # on one core (2026-12-07), 10k polygons 1.23-1.34x as fast in gray and 1.06-1.08x
     # in RGB, 100k filled circles 1.19x, the maze's flood fill 1.03x
     n = color.shape[0]
     row = np.uint64(y)

@@ -151,7 +151,7 @@ def bresenham_checked(buf, layout, width, height, swap, u0, w0, sw, lo, hi, j, p
 
 #: Lines of at most this many pixels end their loop at the last pixel's byte, longer
 #: ones after a count (:func:`bresenham_walk`).  In turn in one process on one core
-#: (2026-12-07): a million short lines (up to 32 pixels) 1.07-1.13x as fast with the
+#: (2026-12-08): a million short lines (up to 32 pixels) 1.07-1.13x as fast with the
 #: loop that ends at the byte, 10,000 long ones (endpoints anywhere on 4096 x 4096)
 #: 0.74-0.79x, hence the count for those.
 SHORT_LINE = 32

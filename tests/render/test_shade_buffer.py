@@ -149,6 +149,69 @@ def test_the_stores_encode_every_intensity_as_the_climb_does(gamma):
         s[ks.IR * n:(ks.IR + 3) * n] = chunk.ravel()
         raster = np.zeros((1, n, 3), np.uint8)
         ks.store_chunk(0, n, s, np.arange(n), table, thresholds, raster, ks.SHADING["phong"],
-                       MODE["RGB"])
-        want = [[climb(v, table, thresholds) for v in channel] for channel in chunk]
-        assert np.array_equal(raster[0].T, np.array(want, np.uint8))
+                       MODE["RGB"], False)
+        want = np.array([[climb(v, table, thresholds) for v in channel] for channel in chunk],
+                        np.uint8)
+        assert np.array_equal(raster[0].T, want)
+        # a gray light's one intensity (the red field) into every channel
+        ks.store_chunk(0, n, s, np.arange(n), table, thresholds, raster, ks.SHADING["phong"],
+                       MODE["RGB"], True)
+        assert np.array_equal(raster[0].T, want[[0, 0, 0]])
+
+
+GRAY_LIGHTS = [sl.lighting.AmbientLight(0.25),
+               sl.lighting.DirectionalLight((0.4, -0.6, -1.0), 0.8),
+               sl.lighting.PointLight((2, 3, 4), 0.7, attenuation=(1, 0.05, 0.01)),
+               sl.lighting.SpotLight((0, 0, 5), (0, 0, -1), 0.9, angle=0.4, exponent=3)]
+
+#: A colored light too faint to change any sum: 1e-300 times a term added to an
+#: intensity of at least the ambient term's (about 0.01) is far below half a unit in
+#: its last place, and the red and green sums gain exact zeros.
+FAINT = sl.lighting.DirectionalLight((0.1, 0.2, -1.0), (0.0, 0.0, 1e-300))
+
+
+@pytest.mark.parametrize("mode", ["L", "RGB", "RGBA"])
+@pytest.mark.parametrize("materials", ["one", "two"])
+def test_a_gray_light_is_summed_once_with_the_same_pixels(mode, materials):
+    """Gray materials under gray lights: the kernel sums one intensity a pixel instead
+    of three and stores its encoding into every channel.  The pixels are exactly
+    those of the three sums (the same lights and FAINT, which makes the light
+    colored without changing a value) and the numpy path's within a stored level."""
+    from scanline._kernels.shade import light_setup
+    from scanline.shading.buffer import material_rows, source_rows
+
+    light = sl.lighting.Material(ka=0.3, kd=0.6, ks=0.4, shininess=15, color=(180, 180, 180))
+    dark = sl.lighting.Material(ka=0.2, kd=0.5, ks=0.6, shininess=40, color=(90, 90, 90),
+                                specular_color=(200, 200, 200))
+    if materials == "one":          # one mesh, one material: the material's terms constant
+        cam = sl.Camera(eye=(1.5, 1.0, 5.0), target=(0, 0, 0),
+                        projection=sl.projection.perspective(fov=math.radians(45), near=0.5,
+                                                             far=20))
+        sc = prepare(sl.mesh.torus(1.0, 0.35, resolution=(20, 10)), cam, W, H, light)
+        assert len(sc.materials) == 1
+    else:
+        sc = scene(mats=[light, dark])
+    ids = nearest(sc).ids
+    ys, xs = np.nonzero(ids >= 0)
+    tris = ids[ys, xs]
+    rows = material_rows(sc.materials)
+    shaded = {}
+    for name, lights in (("gray", GRAY_LIGHTS), ("colored", GRAY_LIGHTS + [FAINT])):
+        sources, ambient = source_rows(lights)
+        assert light_setup(sources, rows, ambient)[2] == (name == "gray")     # the path
+        fb = sl.FrameBuffer(W, H, mode=mode)
+        opts = ShadingOptions(model="phong", lights=lights, specular="phong", gamma=2.2)
+        shade_buffer(sc, fb, ids.copy(), opts)
+        shaded[name] = fb._raster()[0][ys, xs].astype(int)
+    got = shaded["gray"]
+    assert np.array_equal(got, shaded["colored"])
+    bary = barycentrics(sc, tris, xs.astype(float), ys.astype(float))
+    linear = intensities(sc, sc.facet[tris], bary, opts)
+    if mode == "L":
+        want = encode((linear * [0.299, 0.587, 0.114]).sum(axis=1), 2.2)[:, None]
+    else:
+        want = encode(linear, 2.2)
+        assert (got[:, 0] == got[:, 1]).all() and (got[:, 1] == got[:, 2]).all()
+    assert len(np.unique(got[:, 0])) > 50                      # shaded, not one flat value
+    assert np.abs(got[:, :want.shape[1]] - want).max() <= 1
+    assert (got[:, :want.shape[1]] != want).mean() < 0.01

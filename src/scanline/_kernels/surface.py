@@ -88,7 +88,7 @@ def textured_pixels(start, step, faces, table, tface, face_mat, mats, mat_tex, t
     height = faces.shape[0]
     width = faces.shape[1]
     if len(shading) == PHONG:
-        far, expo = light_setup(sources, mats)
+        far, expo = light_setup(sources, mats, ambient)[:2]      # (own colors: not gray)
     else:
         far, expo = np.empty((0, 4)), -1
     s = np.empty(TEX_FIELDS * CHUNK)
@@ -194,8 +194,9 @@ def textured_pixels(start, step, faces, table, tface, face_mat, mats, mat_tex, t
                             s[ch * CHUNK + p] += s[(3 + ch) * CHUNK + p]
                 if len(shading) == PHONG:
                     light_chunk(n, s, ms, np.bool_(True), mats, ambient, sources, far, eye,
-                                expo, spec, np.bool_(False))
-                store_chunk(y, n, s, xs, gamma_table, thresholds, raster, shading, mode)
+                                expo, spec, np.bool_(False), np.bool_(False))
+                store_chunk(y, n, s, xs, gamma_table, thresholds, raster, shading, mode,
+                            np.bool_(False))
 
 
 @kernel
@@ -210,7 +211,7 @@ def vertex_light(lo, hi, points, normals, colors, material, mats, ambient, sourc
     Gouraud's vertex intensities for a textured surface, through the per-pixel
     lighting's :func:`~scanline._kernels.shade.light_chunk`, a chunk of points at a
     time."""
-    far, expo = light_setup(sources, mats)
+    far, expo = light_setup(sources, mats, ambient)[:2]          # (own colors: not gray)
     s = np.empty(TEX_FIELDS * CHUNK)
     ms = np.empty(CHUNK, np.int64)
     nm = mats.shape[0]
@@ -229,7 +230,7 @@ def vertex_light(lo, hi, points, normals, colors, material, mats, ambient, sourc
                     s[(NX + ch) * CHUNK + i] = normals[p, ch]
                     s[(CR + ch) * CHUNK + i] = colors[0 if one else p, ch] if part == 0 else 0.0
             light_chunk(n, s, ms, np.bool_(True), mats, ambient, sources, far, eye, expo, spec,
-                        np.bool_(False))
+                        np.bool_(False), np.bool_(False))
             for i in range(n):
                 for ch in range(3):
                     value = s[(IR + ch) * CHUNK + i]

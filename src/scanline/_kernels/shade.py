@@ -365,7 +365,7 @@ def shade_row(y, faces, table, tface, face_mat, mats, ambient, sources, far, eye
             light_chunk(n, s, ms, own, mats, ambient, sources, far, eye, expo, spec,
                         np.bool_(True), gray and not own)
         store_chunk(y, n, s, xs, gamma_table, thresholds, raster, shading, mode,
-                    len(shading) == PHONG and gray and not own)
+                    gray and not own)
 
 
 @inline
@@ -408,12 +408,13 @@ def store_chunk(y, n, s, xs, gamma_table, thresholds, raster, shading, mode, gra
     teapot's frame 3-5% less time on one core, measured 2026-12-07).  The scratch is
     read at unsigned offsets (the teapot's shading kernel 17.0 -> 16.1 ms on one
     core, measured 2026-12-07; the same in the lighting loops changed nothing).
-    ``gray``: the intensity is field :data:`IR` alone (:func:`light_chunk`), encoded
-    once a pixel and stored into each channel."""
+    ``gray`` with PHONG: the intensity is field :data:`IR` alone (:func:`light_chunk`),
+    encoded once a pixel and stored into each channel."""
     first = IR if len(shading) == PHONG else 0
-    second = first if gray else first + 1
-    third = first if gray else first + 2
-    channels = 1 if len(mode) == GRAY or gray else 3
+    one = gray and len(shading) == PHONG        # (here: the argument stays a value)
+    second = first if one else first + 1
+    third = first if one else first + 2
+    channels = 1 if len(mode) == GRAY or one else 3
     top = GAMMA_STEPS - 1
     row = np.uint64(y)
     for j in range(n):
@@ -435,7 +436,7 @@ def store_chunk(y, n, s, xs, gamma_table, thresholds, raster, shading, mode, gra
             else:
                 v = np.uint8(e + (iv >= thresholds[np.uint64(257) + step]))
             raster[row, at, ch] = v
-            if gray and len(mode) != GRAY:
+            if one and len(mode) != GRAY:
                 raster[row, at, 1] = v
                 raster[row, at, 2] = v
         if len(mode) == RGBA:
